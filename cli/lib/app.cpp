@@ -1,0 +1,228 @@
+#include "cli/lib/app.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "cli/lib/help.h"
+#include "cli/lib/program_file.h"
+#include "cli/lib/report.h"
+#include "cli/lib/trace.h"
+#include "runtime/sim_machine.h"
+#include "runtime/stimuli.h"
+#include "runtime/stimuli_text.h"
+#include "vm/disasm.h"
+#include "vm/image_file.h"
+
+namespace rs::cli {
+
+namespace {
+
+struct Options {
+  std::string file;
+  std::string output;
+  std::string format = "text";
+  std::string trace;  // "", "text" or "json"
+  std::vector<std::string> inputs;
+  std::string stimuliFile;
+  std::uint64_t maxSteps = vm::RunLimits{}.maxSteps;
+  std::string maxTime = "3600";
+  bool strict = false;
+  bool tree = false;
+};
+
+void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags,
+                      const compiler::SourceFile* source) {
+  for (const compiler::Diagnostic& d : diags) err << compiler::render(d, source);
+}
+
+bool hasErrors(const std::vector<compiler::Diagnostic>& diags) {
+  for (const auto& d : diags)
+    if (d.severity == compiler::Severity::Error) return true;
+  return false;
+}
+
+// Stimuli from --stimuli FILE and every --input N=ON@T, in that order.
+bool loadStimuli(const Options& o, runtime::Stimuli& stimuli, std::vector<compiler::Diagnostic>& diags) {
+  const auto add = [&](const runtime::StimuliError& e) {
+    diags.push_back({e.file, {static_cast<std::uint32_t>(e.line), static_cast<std::uint32_t>(e.column)},
+                     compiler::Severity::Error, e.message});
+  };
+  if (!o.stimuliFile.empty()) {
+    runtime::StimuliParse parsed = runtime::loadStimuliFile(o.stimuliFile);
+    for (const auto& e : parsed.errors) add(e);
+    stimuli = std::move(parsed.stimuli);
+  }
+  for (const std::string& arg : o.inputs) {
+    runtime::StimulusArgParse parsed = runtime::parseStimulusArg(arg, "--input");
+    if (parsed.error) add(*parsed.error);
+    if (parsed.change) stimuli.changes.push_back(*parsed.change);
+  }
+  return !hasErrors(diags);
+}
+
+int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& err) {
+  const bool json = o.format == "json";
+  LoadedProgram program = loadProgram(o.file, defaultTarget());
+  const compiler::SourceFile* source = program.source ? &*program.source : nullptr;
+  RunReport report;
+  report.diagnostics = program.diagnostics;
+  runtime::Stimuli stimuli;
+  const runtime::text::SecondsParse maxTime = runtime::text::parseSeconds(o.maxTime);
+  if (!maxTime.error.empty())
+    report.diagnostics.push_back({"--max-time", {}, compiler::Severity::Error, maxTime.error});
+  const bool stimuliOk = loadStimuli(o, stimuli, report.diagnostics);
+  if (!program.ok() || !stimuliOk || !maxTime.error.empty()) {
+    printDiagnostics(err, report.diagnostics, source);
+    if (json) printJsonSummary(out, report);
+    return kCompileError;
+  }
+  printDiagnostics(err, program.diagnostics, source);  // warnings
+
+  const vm::Image& image = *program.image;
+  runtime::SimMachine machine(image.motors, std::move(stimuli));
+  vm::Interpreter interpreter(image, machine);
+  std::optional<TraceWriter> trace;
+  if (!o.trace.empty()) trace.emplace(out, o.trace == "json" ? TraceFormat::Json : TraceFormat::Text);
+  const vm::RunLimits limits{o.maxSteps, maxTime.micros};
+  report.outcome = interpreter.run(limits, trace ? &*trace : nullptr);
+  report.image = &image;
+  report.vm = &interpreter;
+  if (!report.outcome->ok()) {
+    const compiler::Diagnostic d = runtimeDiagnostic(image, *report.outcome, image.sourceName);
+    printDiagnostics(err, {d}, source);
+    report.diagnostics.push_back(d);
+  }
+  if (json) printJsonSummary(out, report);
+  else if (!check || !report.ok()) printTextSummary(out, report);
+  else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", image.sourceName,
+                          report.outcome->steps, vm::formatSeconds(machine.now()));
+  if (!report.outcome->ok()) return kRunFailed;
+  if (check && o.strict && !program.diagnostics.empty()) return kRunFailed;
+  return kOk;
+}
+
+int compileCommand(const Options& o, std::ostream& out, std::ostream& err) {
+  LoadedProgram program = loadProgram(o.file, defaultTarget());
+  printDiagnostics(err, program.diagnostics, program.source ? &*program.source : nullptr);
+  if (!program.ok()) return kCompileError;
+  std::string error;
+  if (!writeFileAtomically(o.output, vm::writeImage(*program.image), error)) {
+    err << fmt::format("{}: error: cannot write: {}\n", o.output, error);
+    return kCompileError;
+  }
+  out << fmt::format("{} -> {} ({} instructions)\n", o.file, o.output, program.image->code.size());
+  return kOk;
+}
+
+int disasmCommand(const Options& o, std::ostream& out, std::ostream& err) {
+  LoadedProgram program = loadProgram(o.file, defaultTarget());
+  printDiagnostics(err, program.diagnostics, program.source ? &*program.source : nullptr);
+  if (!program.ok()) return kCompileError;
+  out << vm::disassemble(*program.image);
+  return kOk;
+}
+
+// tokens / ast: teaching views of the front end; they read source only.
+template <typename Dump>
+int sourceView(const Options& o, std::ostream& out, std::ostream& err, Dump dump) {
+  std::string error;
+  std::optional<std::string> text = readFile(o.file, error);
+  if (!text) {
+    err << fmt::format("{}: error: cannot read file: {}\n", o.file, error);
+    return kCompileError;
+  }
+  if (vm::looksLikeImage(*text)) {
+    err << fmt::format("{}: error: this is a compiled image; try robotsim disasm\n", o.file);
+    return kCompileError;
+  }
+  const compiler::SourceFile source(o.file, std::move(*text));
+  std::vector<compiler::Diagnostic> diags;
+  out << dump(source, diags);
+  printDiagnostics(err, diags, &source);
+  return hasErrors(diags) ? kCompileError : kOk;
+}
+
+int helpCommand(const std::string& topic, std::ostream& out, std::ostream& err) {
+  if (topic.empty()) {
+    out << instructionSummary();
+    return kOk;
+  }
+  if (auto text = instructionHelp(topic)) {
+    out << *text;
+    return kOk;
+  }
+  err << fmt::format("robotsim: error: no instruction named '{}' (robotsim help lists them)\n", topic);
+  return kCompileError;
+}
+
+void addRunOptions(CLI::App* cmd, Options& o) {
+  cmd->add_option("--format", o.format, "Summary format: text or json")->check(CLI::IsMember({"text", "json"}));
+  cmd->add_option("--input", o.inputs, "Input change N=ON@SECONDS or N=OFF@SECONDS (repeatable)");
+  cmd->add_option("--stimuli", o.stimuliFile, "Stimuli file: timed input changes and reactive rules");
+  cmd->add_option("--max-steps", o.maxSteps, "Stop after this many instructions (default 100000000)");
+  cmd->add_option("--max-time", o.maxTime, "Stop at this simulated time in seconds (default 3600)");
+}
+
+}  // namespace
+
+int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CLI::App app{"robotsim: compile, check, run and inspect ROBOTSIM robot programs"};
+  app.name("robotsim");
+  app.require_subcommand(1);
+  Options o;
+  std::string helpTopic;
+
+  CLI::App* run = app.add_subcommand("run", "Run a program (.rsp source or .rsb image) in simulation");
+  run->add_option("file", o.file, "Program source or compiled image")->required();
+  run->add_option("--trace", o.trace, "Print each executed instruction: text (default) or json")
+      ->expected(0, 1)
+      ->default_str("text");
+  addRunOptions(run, o);
+
+  CLI::App* check = app.add_subcommand("check", "Compile, verify and simulate; exit 0 only if all is well");
+  check->add_option("file", o.file, "Program source or compiled image")->required();
+  check->add_flag("--strict", o.strict, "Warnings fail the check too");
+  addRunOptions(check, o);
+
+  CLI::App* compile = app.add_subcommand("compile", "Compile a program to a bytecode image");
+  compile->add_option("file", o.file, "Program source")->required();
+  compile->add_option("-o,--output", o.output, "Image file to write (.rsb)")->required();
+
+  CLI::App* disasm = app.add_subcommand("disasm", "List the bytecode of a program or image");
+  disasm->add_option("file", o.file, "Program source or compiled image")->required();
+
+  CLI::App* tokens = app.add_subcommand("tokens", "Show the tokens the lexer produces");
+  tokens->add_option("file", o.file, "Program source")->required();
+
+  CLI::App* ast = app.add_subcommand("ast", "Show the abstract syntax tree");
+  ast->add_option("file", o.file, "Program source")->required();
+  ast->add_flag("--tree", o.tree, "Also print ANTLR's parse tree");
+
+  CLI::App* help = app.add_subcommand("help", "Explain the instruction set, or one instruction");
+  help->add_option("instruction", helpTopic, "Instruction name, e.g. JMPVAR");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e, out, err);
+    return code == 0 ? kOk : kCompileError;
+  }
+  if (run->parsed() && run->count("--trace") > 0 && o.trace.empty()) o.trace = "text";
+  if (!o.trace.empty() && o.trace != "text" && o.trace != "json") {
+    err << fmt::format("robotsim: error: --trace takes text or json, not '{}'\n", o.trace);
+    return kCompileError;
+  }
+  if (run->parsed()) return runOrCheck(o, false, out, err);
+  if (check->parsed()) return runOrCheck(o, true, out, err);
+  if (compile->parsed()) return compileCommand(o, out, err);
+  if (disasm->parsed()) return disasmCommand(o, out, err);
+  if (tokens->parsed())
+    return sourceView(o, out, err, [](const compiler::SourceFile& s, auto& d) { return compiler::dumpTokens(s, d); });
+  if (ast->parsed())
+    return sourceView(o, out, err, [&](const compiler::SourceFile& s, auto& d) {
+      return compiler::dumpAst(s, defaultTarget(), o.tree, d);
+    });
+  return helpCommand(helpTopic, out, err);
+}
+
+}  // namespace rs::cli

@@ -1,0 +1,95 @@
+#include "cli/lib/program_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+
+#include "stdlib/default_robot.h"
+#include "vm/image_file.h"
+
+namespace rs::cli {
+
+std::optional<std::string> readFile(const std::string& path, std::string& error) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    error = "is a directory";
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = std::strerror(errno);
+    return std::nullopt;
+  }
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxInputBytes) {
+      error = fmt::format("file is larger than {} MiB", kMaxInputBytes >> 20);
+      return std::nullopt;
+    }
+  }
+  if (in.bad()) {
+    error = "read error";
+    return std::nullopt;
+  }
+  return text;
+}
+
+bool writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string& error) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      error = std::strerror(errno);
+      return false;
+    }
+    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    out.flush();
+    if (!out) {
+      error = "write error";
+      std::remove(tmp.c_str());
+      return false;
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    error = ec.message();
+    std::remove(tmp.c_str());
+    return false;
+  }
+  return true;
+}
+
+compiler::Target defaultTarget() {
+  return {std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth};
+}
+
+LoadedProgram loadProgram(const std::string& path, const compiler::Target& target) {
+  LoadedProgram result;
+  std::string error;
+  std::optional<std::string> bytes = readFile(path, error);
+  if (!bytes) {
+    result.diagnostics.push_back({path, {}, compiler::Severity::Error, "cannot read file: " + error});
+    return result;
+  }
+  if (vm::looksLikeImage(*bytes)) {
+    vm::LoadResult loaded = vm::loadImage(*bytes);
+    if (!loaded.error.empty())
+      result.diagnostics.push_back({path, {}, compiler::Severity::Error, loaded.error});
+    else
+      result.image = std::move(loaded.image);
+    return result;
+  }
+  result.source.emplace(path, std::move(*bytes));
+  compiler::CompileResult compiled = compiler::compile(*result.source, target);
+  result.image = std::move(compiled.image);
+  result.diagnostics = std::move(compiled.diagnostics);
+  return result;
+}
+
+}  // namespace rs::cli

@@ -1,0 +1,33 @@
+// Loading what the user named: a `.rsp` source (compiled here) or a `.rsb`
+// image (recognised by its magic number, whatever the file is called).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/compiler.h"
+
+namespace rs::cli {
+
+struct LoadedProgram {
+  std::optional<compiler::SourceFile> source;  // set when FILE was source text
+  std::optional<vm::Image> image;              // set when it compiled / verified
+  std::vector<compiler::Diagnostic> diagnostics;
+  bool ok() const { return image.has_value(); }
+};
+
+inline constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;
+
+/// Reads a whole file; on failure returns nullopt and sets `error`.
+std::optional<std::string> readFile(const std::string& path, std::string& error);
+
+/// Writes all bytes or nothing: a temporary file renamed into place.
+bool writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string& error);
+
+LoadedProgram loadProgram(const std::string& path, const compiler::Target& target);
+
+/// The default machine: the paper's Rhino SCARA (stdlib/default_robot.h).
+compiler::Target defaultTarget();
+
+}  // namespace rs::cli

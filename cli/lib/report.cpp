@@ -1,0 +1,109 @@
+#include "cli/lib/report.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/lib/trace.h"
+
+namespace rs::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string_view reasonText(vm::StopReason r) {
+  switch (r) {
+    case vm::StopReason::End: return "finished";
+    case vm::StopReason::RuntimeError: return "runtime error";
+    case vm::StopReason::Deadlock: return "deadlock";
+    case vm::StopReason::StepLimit: return "step limit";
+    case vm::StopReason::TimeLimit: return "time limit";
+  }
+  return "?";
+}
+
+std::string lampList(std::uint8_t bits) {
+  std::string s;
+  for (int i = 0; i < 8; ++i)
+    if (bits & (1u << i)) s += fmt::format("{}{}", s.empty() ? "" : ", ", i + 1);
+  return s.empty() ? "none" : s;
+}
+
+}  // namespace
+
+bool RunReport::ok() const {
+  if (!outcome || !outcome->ok()) return false;
+  for (const auto& d : diagnostics)
+    if (d.severity == compiler::Severity::Error) return false;
+  return true;
+}
+
+compiler::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {
+  const compiler::Pos pos{image.lines[outcome.index], image.columns[outcome.index]};
+  return {file, pos, compiler::Severity::Error,
+          fmt::format("{}: {} (instruction {})", reasonText(outcome.reason), outcome.message, outcome.index + 1)};
+}
+
+void printTextSummary(std::ostream& out, const RunReport& r) {
+  if (!r.outcome || !r.image || !r.vm) return;
+  const vm::Image& im = *r.image;
+  const vm::Machine& m = r.vm->machine();
+  const vm::RunOutcome& o = *r.outcome;
+  const std::string where = o.ok() ? "" : fmt::format(" at line {}", im.lines[o.index]);
+  out << fmt::format("run of {} on {}: {}{}\n", im.sourceName, im.robotName, reasonText(o.reason), where);
+  out << fmt::format("  simulated time  {} s\n", vm::formatSeconds(m.now()));
+  out << fmt::format("  instructions    {} executed\n", o.steps);
+  std::string motors;
+  const auto pos = m.positions();
+  for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? "  " : "", im.motors[i].letter, pos[i]);
+  out << fmt::format("  motors          {}\n", motors);
+  out << fmt::format("  outputs         {}  (ON: {})\n", lampText(m.outputs()), lampList(m.outputs()));
+  out << fmt::format("  inputs          {}  (ON: {})\n", lampText(m.inputs()), lampList(m.inputs()));
+  std::string vars;
+  for (std::size_t i = 0; i < im.variables.size(); ++i)
+    vars += fmt::format("{}{}={}", i ? "  " : "", im.variables[i], r.vm->variables()[i]);
+  out << fmt::format("  variables       {}\n", vars.empty() ? "none" : vars);
+}
+
+void printJsonSummary(std::ostream& out, const RunReport& r) {
+  Json j;
+  j["status"] = r.ok() ? "ok" : "error";
+  if (r.outcome && r.image && r.vm) {
+    const vm::Image& im = *r.image;
+    const vm::Machine& m = r.vm->machine();
+    j["time"] = static_cast<double>(m.now()) / 1e6;
+    j["steps"] = r.outcome->steps;
+    Json motors = Json::object();
+    const auto pos = m.positions();
+    for (std::size_t i = 0; i < pos.size(); ++i) motors[std::string(1, im.motors[i].letter)] = pos[i];
+    j["motors"] = motors;
+    Json outputs = Json::array(), inputs = Json::array();
+    for (int i = 0; i < 8; ++i) {
+      outputs.push_back(((m.outputs() >> i) & 1) != 0);
+      inputs.push_back(((m.inputs() >> i) & 1) != 0);
+    }
+    j["outputs"] = outputs;
+    j["inputs"] = inputs;
+    Json vars = Json::object();
+    for (std::size_t i = 0; i < im.variables.size(); ++i) vars[im.variables[i]] = r.vm->variables()[i];
+    j["variables"] = vars;
+  } else {
+    j["time"] = 0;
+    j["steps"] = 0;
+    j["motors"] = Json::object();
+    j["outputs"] = Json::array();
+    j["inputs"] = Json::array();
+    j["variables"] = Json::object();
+  }
+  Json diags = Json::array();
+  for (const compiler::Diagnostic& d : r.diagnostics)
+    diags.push_back({{"file", d.file},
+                     {"line", d.pos.line},
+                     {"column", d.pos.col},
+                     {"severity", compiler::severityName(d.severity)},
+                     {"message", d.message}});
+  j["diagnostics"] = diags;
+  out << j.dump() << '\n';
+}
+
+}  // namespace rs::cli

@@ -1,0 +1,73 @@
+#include "cli/lib/trace.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "vm/disasm.h"
+
+namespace rs::cli {
+
+namespace {
+
+// The variable an instruction wrote, if any (SET and ADD write slot b).
+bool writesVariable(const vm::Instr& in) { return in.op == vm::Op::Set || in.op == vm::Op::Add; }
+
+double seconds(vm::Micros t) { return static_cast<double>(t) / 1e6; }
+
+}  // namespace
+
+std::string lampText(std::uint8_t bits) {
+  std::string s(8, '.');
+  for (int i = 0; i < 8; ++i)
+    if (bits & (1u << i)) s[static_cast<std::size_t>(i)] = static_cast<char>('1' + i);
+  return s;
+}
+
+void TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
+  if (format_ == TraceFormat::Text) text(vm, index);
+  else json(vm, index);
+}
+
+void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
+  const vm::Image& im = vm.image();
+  if (!headerDone_) {
+    out_ << fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<30}  {:<8}  {}\n", "time", "instr", "line", "instruction",
+                        "motors", "outputs", "changed");
+    headerDone_ = true;
+  }
+  std::string motors;
+  const auto pos = vm.machine().positions();
+  for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? " " : "", im.motors[i].letter, pos[i]);
+  const vm::Instr& in = im.code[index];
+  const std::string changed =
+      writesVariable(in) ? fmt::format("{}={}", im.variables[in.b], vm.variables()[in.b]) : std::string();
+  std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<30}  {}  {}", vm::formatSeconds(vm.machine().now()),
+                                index + 1, im.lines[index], vm::instructionText(im, index), motors,
+                                lampText(vm.machine().outputs()), changed);
+  while (!row.empty() && row.back() == ' ') row.pop_back();
+  out_ << row << '\n';
+}
+
+void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
+  const vm::Image& im = vm.image();
+  const vm::Instr& in = im.code[index];
+  nlohmann::ordered_json j;
+  j["time"] = seconds(vm.machine().now());
+  j["instr"] = index + 1;
+  j["line"] = im.lines[index];
+  j["op"] = vm::info(in.op).name;
+  j["text"] = vm::instructionText(im, index);
+  nlohmann::ordered_json motors = nlohmann::ordered_json::object();
+  const auto pos = vm.machine().positions();
+  for (std::size_t i = 0; i < pos.size(); ++i) motors[std::string(1, im.motors[i].letter)] = pos[i];
+  j["motors"] = motors;
+  nlohmann::ordered_json outputs = nlohmann::ordered_json::array();
+  for (int i = 0; i < 8; ++i) outputs.push_back(((vm.machine().outputs() >> i) & 1) != 0);
+  j["outputs"] = outputs;
+  nlohmann::ordered_json changed = nlohmann::ordered_json::object();
+  if (writesVariable(in)) changed[im.variables[in.b]] = vm.variables()[in.b];
+  j["changed"] = changed;
+  out_ << j.dump() << '\n';
+}
+
+}  // namespace rs::cli

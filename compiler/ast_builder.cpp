@@ -1,0 +1,390 @@
+#include "compiler/ast_builder.h"
+
+#include <algorithm>
+#include <charconv>
+#include <fmt/format.h>
+
+#include "RobotProgramParser.h"
+
+namespace rs::compiler {
+
+namespace {
+
+using P = rs_grammar::RobotProgramParser;
+
+char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+Pos posOf(const antlr4::Token* t) {
+  return {static_cast<std::uint32_t>(t->getLine()), static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)};
+}
+
+// The written text of a token: a view into the source, not a copy.
+std::string_view textOf(const SourceFile& src, const antlr4::Token* t) {
+  return std::string_view(src.text()).substr(t->getStartIndex(), t->getStopIndex() + 1 - t->getStartIndex());
+}
+
+struct Word {  // one operand as written
+  size_t type;
+  std::string_view text;
+  Pos pos;
+};
+
+}  // namespace
+
+std::string_view operandUsage(vm::Format f) {
+  switch (f) {
+    case vm::Format::None: return "";
+    case vm::Format::MotorVector: return " <value per motor>";
+    case vm::Format::Point: return " <point>";
+    case vm::Format::Target: return " <line>";
+    case vm::Format::InputJump: return " <input> ON|OFF <line>";
+    case vm::Format::Output: return " <output> ON|OFF";
+    case vm::Format::Input: return " <input> ON|OFF";
+    case vm::Format::VarCompare: return " <variable> <|>|= <value> <line>";
+    case vm::Format::VarValue: return " <variable> <value>";
+    case vm::Format::Triple: return " <x> <y> <z>";
+    case vm::Format::Millis: return " <seconds>";
+  }
+  return "";
+}
+
+namespace {
+
+std::size_t operandCount(vm::Format f) {
+  switch (f) {
+    case vm::Format::None: return 0;
+    case vm::Format::Point: case vm::Format::Target: case vm::Format::Millis: return 1;
+    case vm::Format::Output: case vm::Format::Input: case vm::Format::VarValue: return 2;
+    case vm::Format::InputJump: case vm::Format::Triple: return 3;
+    case vm::Format::VarCompare: return 4;
+    case vm::Format::MotorVector: return 0;  // one per motor: checked separately
+  }
+  return 0;
+}
+
+bool isReservedWord(std::string_view w) {
+  return vm::opByName(w).has_value() || sameName(w, "ON") || sameName(w, "OFF") || sameName(w, "POINTS");
+}
+
+class Builder {
+ public:
+  Builder(const SourceFile& src, std::span<const vm::MotorSpec> motors, Diagnostics& d)
+      : src_(src), motors_(motors), diag_(d) {}
+
+  Program build(P::ProgramContext* root);
+
+ private:
+  void line(P::LineContext* line);
+  void instruction(const antlr4::Token* head, const std::vector<Word>& words);
+  void point(const antlr4::Token* head, const std::vector<Word>& words);
+  bool operands(Instruction& in, std::string_view mnemonic, const std::vector<Word>& w);
+  bool checkName(std::string_view what, std::string_view name, Pos pos);
+
+  // Operand readers: each reports what it expected and returns false.
+  bool integer(const Word& w, std::string_view what, Value& out);
+  bool seconds(const Word& w, Value& out);
+  bool name(const Word& w, std::string_view what, std::string_view& out, Pos& pos);
+  bool onOff(const Word& w, bool& out);
+  bool compare(const Word& w, vm::Compare& out);
+  bool jump(const Word& w, JumpRef& out);
+  std::string motorLetters() const;
+
+  const SourceFile& src_;
+  std::span<const vm::MotorSpec> motors_;
+  Diagnostics& diag_;
+  Program program_;
+  bool inPoints_ = false;
+  std::string_view pendingLabel_;
+  Pos pendingLabelPos_;
+};
+
+Program Builder::build(P::ProgramContext* root) {
+  for (P::LineContext* l : root->line()) line(l);
+  if (!pendingLabel_.empty())
+    diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
+  return std::move(program_);
+}
+
+void Builder::line(P::LineContext* l) {
+  std::vector<Word> words;
+  for (P::OperandContext* o : l->operand()) {
+    const antlr4::Token* t = o->getStart();
+    words.push_back({t->getType(), textOf(src_, t), posOf(t)});
+  }
+  if (l->label) {
+    const std::string_view label = textOf(src_, l->label);
+    const Pos pos = posOf(l->label);
+    if (inPoints_) {
+      diag_.error(pos, "points cannot have labels: labels name instructions");
+    } else if (!pendingLabel_.empty()) {
+      diag_.error(pos, fmt::format("label '{}' follows label '{}': an instruction can have only one label", label,
+                                   pendingLabel_));
+    } else if (checkName("a label", label, pos)) {
+      pendingLabel_ = label;
+      pendingLabelPos_ = pos;
+    }
+  }
+  if (!l->head) return;
+  const std::string_view head = textOf(src_, l->head);
+  if (sameName(head, "POINTS") && words.empty()) {
+    if (inPoints_)
+      return diag_.error(posOf(l->head), fmt::format("POINTS appears twice (the section began on line {})",
+                                                     program_.pointsHeader.line));
+    if (!pendingLabel_.empty()) {
+      diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
+      pendingLabel_ = {};
+    }
+    inPoints_ = true;
+    program_.pointsHeader = posOf(l->head);
+    return;
+  }
+  if (inPoints_) return point(l->head, words);
+  instruction(l->head, words);
+}
+
+void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& words) {
+  Instruction in;
+  in.pos = posOf(head);
+  in.number = static_cast<std::uint32_t>(program_.instructions.size() + 1);
+  in.label = pendingLabel_;
+  in.labelPos = pendingLabelPos_;
+  pendingLabel_ = {};
+  const std::string_view mnemonic = textOf(src_, head);
+  if (const auto op = vm::opByName(mnemonic)) {
+    in.op = *op;
+    operands(in, vm::info(*op).name, words);
+  } else {
+    in.known = false;
+    const std::string_view near = closestMnemonic(mnemonic);
+    diag_.error(in.pos, near.empty() ? fmt::format("unknown instruction '{}'", mnemonic)
+                                     : fmt::format("unknown instruction '{}' (did you mean {}?)", mnemonic, near));
+  }
+  program_.instructions.push_back(std::move(in));
+}
+
+void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
+  PointDef p;
+  p.name = textOf(src_, head);
+  p.pos = posOf(head);
+  if (vm::opByName(p.name)) {
+    diag_.error(p.pos, fmt::format("instruction {} after POINTS: instructions come before the POINTS line (line {})",
+                                   p.name, program_.pointsHeader.line));
+    return;
+  }
+  if (!checkName("a point", p.name, p.pos)) return;
+  bool ok = true;
+  for (const Word& w : words) {
+    Value v;
+    ok = integer(w, "an encoder value", v) && ok;
+    p.values.push_back(v);
+  }
+  if (ok && p.values.size() != motors_.size())
+    diag_.error(p.pos, fmt::format("point {} has {} values, expected {} (one per motor: {})", p.name, p.values.size(),
+                                   motors_.size(), motorLetters()));
+  program_.points.push_back(std::move(p));
+}
+
+// Reads the operands of one instruction by its opcode's format.
+bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::vector<Word>& w) {
+  const vm::Format f = vm::info(in.op).format;
+  if (f == vm::Format::MotorVector) {
+    bool ok = true;
+    for (const Word& word : w) {
+      Value v;
+      ok = integer(word, "an encoder value", v) && ok;
+      in.values.push_back(v);
+    }
+    if (ok && w.size() != motors_.size())
+      diag_.error(in.pos, fmt::format("{} expects {} values (one per motor: {}), found {}", mnemonic, motors_.size(),
+                                      motorLetters(), w.size()));
+    return ok;
+  }
+  const std::size_t want = operandCount(f);
+  if (w.size() != want) {
+    const Pos at = w.size() > want ? w[want].pos : in.pos;
+    diag_.error(at, want == 0 ? fmt::format("{} takes no operands, found {}", mnemonic, w.size())
+                              : fmt::format("{} expects {} operand{} ({}{}), found {}", mnemonic, want,
+                                            want == 1 ? "" : "s", mnemonic, operandUsage(f), w.size()));
+    return false;
+  }
+  switch (f) {
+    case vm::Format::None: case vm::Format::MotorVector: return true;
+    case vm::Format::Point: return name(w[0], "a point name", in.name, in.namePos);
+    case vm::Format::Target: return jump(w[0], in.target);
+    case vm::Format::InputJump:
+      return integer(w[0], "an input number", in.io) & onOff(w[1], in.on) & jump(w[2], in.target);
+    case vm::Format::Output:
+      return integer(w[0], "an output number", in.io) & onOff(w[1], in.on);
+    case vm::Format::Input:
+      return integer(w[0], "an input number", in.io) & onOff(w[1], in.on);
+    case vm::Format::VarCompare:
+      return name(w[0], "a variable name", in.name, in.namePos) & compare(w[1], in.compare) &
+             integer(w[2], "a value", in.value) & jump(w[3], in.target);
+    case vm::Format::VarValue:
+      return name(w[0], "a variable name", in.name, in.namePos) & integer(w[1], "a value", in.value);
+    case vm::Format::Triple: {
+      bool ok = true;
+      for (const Word& word : w) {
+        Value v;
+        ok = integer(word, "a number", v) && ok;
+        in.values.push_back(v);
+      }
+      return ok;
+    }
+    case vm::Format::Millis: return seconds(w[0], in.value);
+  }
+  return false;
+}
+
+bool Builder::checkName(std::string_view what, std::string_view name, Pos pos) {
+  if (!isReservedWord(name)) return true;
+  diag_.error(pos, fmt::format("'{}' is a reserved word and cannot name {}", name, what));
+  return false;
+}
+
+bool Builder::integer(const Word& w, std::string_view what, Value& out) {
+  out.pos = w.pos;
+  if (w.type != P::NUMBER) {
+    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, w.text));
+    return false;
+  }
+  if (w.text.find('.') != std::string_view::npos) {
+    diag_.error(w.pos, fmt::format("expected {} (a whole number), found '{}'", what, w.text));
+    return false;
+  }
+  const std::string_view digits = w.text[0] == '+' ? w.text.substr(1) : w.text;
+  std::int32_t v = 0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (ec != std::errc() || end != digits.data() + digits.size()) {
+    diag_.error(w.pos, fmt::format("'{}' does not fit in a 32-bit integer (-2147483648..2147483647)", w.text));
+    return false;
+  }
+  out.number = v;
+  return true;
+}
+
+// Seconds with at most three decimals, converted exactly to milliseconds.
+bool Builder::seconds(const Word& w, Value& out) {
+  out.pos = w.pos;
+  if (w.type != P::NUMBER) {
+    diag_.error(w.pos, fmt::format("expected a number of seconds, found '{}'", w.text));
+    return false;
+  }
+  if (w.text[0] == '-') {
+    diag_.error(w.pos, fmt::format("DELAY cannot be negative, found '{}'", w.text));
+    return false;
+  }
+  const std::string_view t = w.text[0] == '+' ? w.text.substr(1) : w.text;
+  const std::size_t dot = t.find('.');
+  const std::string_view whole = t.substr(0, dot);
+  const std::string_view frac = dot == std::string_view::npos ? std::string_view() : t.substr(dot + 1);
+  if (frac.size() > 3) {
+    diag_.error(w.pos, fmt::format("DELAY counts milliseconds: at most 3 decimals, found '{}'", w.text));
+    return false;
+  }
+  std::int64_t s = 0;
+  const auto r = std::from_chars(whole.data(), whole.data() + whole.size(), s);
+  if (r.ec != std::errc() || s > vm::kMaxDelayMillis / 1000) {
+    diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000, w.text));
+    return false;
+  }
+  std::int64_t ms = s * 1000;
+  for (std::size_t i = 0, scale = 100; i < frac.size(); ++i, scale /= 10) ms += (frac[i] - '0') * static_cast<std::int64_t>(scale);
+  if (ms > vm::kMaxDelayMillis) {
+    diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000, w.text));
+    return false;
+  }
+  out.number = ms;
+  return true;
+}
+
+bool Builder::name(const Word& w, std::string_view what, std::string_view& out, Pos& pos) {
+  pos = w.pos;
+  if (w.type != P::IDENT) {
+    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, w.text));
+    return false;
+  }
+  if (!checkName(what, w.text, w.pos)) return false;
+  out = w.text;
+  return true;
+}
+
+bool Builder::onOff(const Word& w, bool& out) {
+  if (w.type == P::IDENT && (sameName(w.text, "ON") || sameName(w.text, "OFF"))) {
+    out = sameName(w.text, "ON");
+    return true;
+  }
+  diag_.error(w.pos, fmt::format("expected ON or OFF, found '{}'", w.text));
+  return false;
+}
+
+bool Builder::compare(const Word& w, vm::Compare& out) {
+  if (w.type == P::CMP) {
+    out = w.text == "<" ? vm::Compare::Less : w.text == ">" ? vm::Compare::Greater : vm::Compare::Equal;
+    return true;
+  }
+  diag_.error(w.pos, fmt::format("expected a comparison <, > or =, found '{}'", w.text));
+  return false;
+}
+
+bool Builder::jump(const Word& w, JumpRef& out) {
+  out.pos = w.pos;
+  if (w.type == P::IDENT) {
+    if (!checkName("a label", w.text, w.pos)) return false;
+    out.label = w.text;
+    return true;
+  }
+  Value v;
+  if (!integer(w, "a line number or label", v)) return false;
+  if (v.number < 1) {
+    diag_.error(w.pos, fmt::format("line numbers start at 1, found {}", v.number));
+    return false;
+  }
+  out.number = static_cast<std::uint32_t>(v.number);
+  return true;
+}
+
+std::string Builder::motorLetters() const {
+  std::string s;
+  for (const vm::MotorSpec& m : motors_) s += fmt::format("{}{}", s.empty() ? "" : " ", m.letter);
+  return s;
+}
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (upper(a[i - 1]) == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+bool sameName(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return upper(x) == upper(y); });
+}
+
+std::string_view closestMnemonic(std::string_view word) {
+  if (word.size() > 16) return {};
+  std::string_view best;
+  std::size_t bestDistance = 3;  // suggest only near misses
+  for (const vm::OpInfo& op : vm::kOps) {
+    const std::size_t d = editDistance(word, op.name);
+    if (d < bestDistance) bestDistance = d, best = op.name;
+  }
+  return best;
+}
+
+Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, Diagnostics& diagnostics) {
+  Builder b(tree.source(), motors, diagnostics);
+  return b.build(static_cast<P::ProgramContext*>(tree.root()));
+}
+
+}  // namespace rs::compiler

@@ -1,0 +1,27 @@
+// Parse tree -> AST. Checks each line's shape against the opcode table
+// (how many operands, of which kind) and converts numbers, so later passes
+// work on typed operands only.
+#pragma once
+
+#include <span>
+
+#include "compiler/ast.h"
+#include "compiler/diagnostics.h"
+#include "compiler/parse_tree.h"
+#include "vm/image.h"
+
+namespace rs::compiler {
+
+Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, Diagnostics& diagnostics);
+
+/// How an instruction of this format is written, after its mnemonic:
+/// " <input> ON|OFF <line>".
+std::string_view operandUsage(vm::Format format);
+
+/// Case-insensitive equality of ASCII names (keywords, labels, points).
+bool sameName(std::string_view a, std::string_view b);
+
+/// The mnemonic closest to a misspelled one ("MOVX" -> "MOVE"), or empty.
+std::string_view closestMnemonic(std::string_view word);
+
+}  // namespace rs::compiler

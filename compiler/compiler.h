@@ -1,0 +1,39 @@
+// The compiler as a library: source text in, image and diagnostics out.
+// No global state and no exit(): an editor's language server can call it on
+// every keystroke, and a test runner can compile many programs side by side.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/codegen.h"
+#include "compiler/diagnostics.h"
+#include "compiler/source.h"
+#include "vm/image.h"
+
+namespace rs::compiler {
+
+inline constexpr std::size_t kMaxSourceBytes = std::size_t{256} << 20;  // 256 MiB
+
+struct CompileResult {
+  std::optional<vm::Image> image;        // set when there were no errors
+  std::vector<Diagnostic> diagnostics;   // sorted by position
+  bool ok() const { return image.has_value(); }
+};
+
+/// source -> tokens -> ANTLR parse tree -> AST -> checks -> bytecode.
+CompileResult compile(const SourceFile& source, const Target& target);
+
+/// Checks that a source can be lexed at all (size, UTF-8); returns the error.
+std::optional<Diagnostic> checkEncoding(const SourceFile& source);
+
+/// `robotsim tokens`: one line per token the parser sees.
+std::string dumpTokens(const SourceFile& source, std::vector<Diagnostic>& diagnostics);
+
+/// `robotsim ast`: the AST as an indented outline; with `parseTree`, ANTLR's
+/// parse tree in LISP form first.
+std::string dumpAst(const SourceFile& source, const Target& target, bool parseTree,
+                    std::vector<Diagnostic>& diagnostics);
+
+}  // namespace rs::compiler

@@ -1,0 +1,46 @@
+// Diagnostics: errors and warnings with a file, line and column, collected
+// (never thrown) so one run reports everything it finds.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "compiler/source.h"
+
+namespace rs::compiler {
+
+enum class Severity { Error, Warning, Note };
+
+struct Diagnostic {
+  std::string file;
+  Pos pos;
+  Severity severity = Severity::Error;
+  std::string message;
+};
+
+std::string_view severityName(Severity s);
+
+class Diagnostics {
+ public:
+  explicit Diagnostics(std::string file) : file_(std::move(file)) {}
+  void error(Pos pos, std::string message) { add(pos, Severity::Error, std::move(message)); }
+  void warning(Pos pos, std::string message) { add(pos, Severity::Warning, std::move(message)); }
+  void add(Pos pos, Severity s, std::string message);
+
+  bool hasErrors() const { return errors_ > 0; }
+  std::size_t errorCount() const { return errors_; }
+  const std::vector<Diagnostic>& all() const { return list_; }
+  /// Sorted by position (stable), the order they are printed in.
+  std::vector<Diagnostic> sorted() const;
+
+ private:
+  std::string file_;
+  std::vector<Diagnostic> list_;
+  std::size_t errors_ = 0;
+};
+
+/// "file:line:col: error: message", then the source line and a caret under
+/// the column when the source is known.
+std::string render(const Diagnostic& d, const SourceFile* source);
+
+}  // namespace rs::compiler

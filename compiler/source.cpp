@@ -1,0 +1,59 @@
+#include "compiler/source.h"
+
+namespace rs::compiler {
+
+SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
+  lineStarts_.push_back(0);
+  for (std::size_t i = 0; i < text_.size(); ++i)
+    if (text_[i] == '\n' && i + 1 < text_.size()) lineStarts_.push_back(i + 1);
+}
+
+std::string_view SourceFile::line(std::uint32_t number) const {
+  if (number == 0 || number > lineStarts_.size()) return {};
+  const std::size_t start = lineStarts_[number - 1];
+  std::size_t end = text_.find('\n', start);
+  if (end == std::string::npos) end = text_.size();
+  if (end > start && text_[end - 1] == '\r') --end;
+  return std::string_view(text_).substr(start, end - start);
+}
+
+namespace {
+
+// Length of the UTF-8 sequence starting at text[i], or 0 if it is invalid
+// (bad lead byte, bad or missing continuation, overlong form, surrogate,
+// beyond U+10FFFF).
+std::size_t sequenceLength(std::string_view text, std::size_t i) {
+  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char c = b(i);
+  if (c < 0x80) return 1;
+  std::size_t n;
+  std::uint32_t cp;
+  if ((c & 0xE0) == 0xC0) n = 2, cp = c & 0x1F;
+  else if ((c & 0xF0) == 0xE0) n = 3, cp = c & 0x0F;
+  else if ((c & 0xF8) == 0xF0) n = 4, cp = c & 0x07;
+  else return 0;
+  if (i + n > text.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    if ((b(i + k) & 0xC0) != 0x80) return 0;
+    cp = (cp << 6) | (b(i + k) & 0x3F);
+  }
+  static constexpr std::uint32_t kMinForLength[] = {0, 0, 0x80, 0x800, 0x10000};
+  if (cp < kMinForLength[n] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+  return n;
+}
+
+}  // namespace
+
+Utf8Problem findInvalidUtf8(std::string_view text) {
+  Pos pos{1, 1};
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = sequenceLength(text, i);
+    if (n == 0) return {true, pos, static_cast<unsigned char>(text[i])};
+    if (text[i] == '\n') pos = {pos.line + 1, 1};
+    else ++pos.col;
+    i += n;
+  }
+  return {};
+}
+
+}  // namespace rs::compiler

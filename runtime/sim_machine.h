@@ -1,0 +1,103 @@
+// The simulated machine: motors that move at their configured speeds on a
+// virtual clock, eight outputs, and eight inputs driven by the stimuli.
+// Deterministic: the same calls with the same stimuli give the same results
+// on every run. Time is integer microseconds and only moves forward.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "runtime/input_schedule.h"
+#include "runtime/stimuli.h"
+#include "vm/image.h"
+#include "vm/machine.h"
+
+namespace rs::runtime {
+
+/// A motor's latest move: it left `from` at `start` and reaches `to` at
+/// `end`, at its own constant speed. Motors that did not move have
+/// from == to and start == end.
+struct MotorSegment {
+  std::int32_t from = 0;
+  std::int32_t to = 0;
+  vm::Micros start = 0;
+  vm::Micros end = 0;
+};
+
+/// Three accumulated camera values (WINDOW shift, VIEW rotation).
+struct CameraTriple {
+  std::int64_t x = 0;
+  std::int64_t y = 0;
+  std::int64_t z = 0;
+  bool operator==(const CameraTriple&) const = default;
+};
+
+class SimMachine final : public vm::Machine {
+ public:
+  /// Motors start at encoder 0, outputs and inputs OFF, the clock at 0
+  /// (stimuli due at time 0 have already applied).
+  SimMachine(std::vector<vm::MotorSpec> motors, Stimuli stimuli);
+
+  /// Every motor moves at once, each at its own speed; returns when the
+  /// slowest arrives. Fault (no motion) on a wrong target count, a target
+  /// outside a motor's range or a clock overflow.
+  vm::Status moveTo(std::span<const std::int32_t> targets) override;
+  std::span<const std::int32_t> positions() const override { return positions_; }
+
+  /// When the output changes state, the rules for it schedule their inputs.
+  vm::Status setOutput(int output, bool on) override;
+  bool input(int input) override;
+  /// Advances the clock to the first time the input reads `on`; Deadlock if
+  /// no pending change ever makes it so (no output changes while waiting).
+  vm::Status waitFor(int input, bool on) override;
+  vm::Status delay(vm::Micros duration) override;
+
+  /// moveTo(all zeros), at motor speed.
+  vm::Status hardHome() override;
+  /// Every motor back to encoder 0 instantly; outputs, inputs and the clock
+  /// are unchanged.
+  vm::Status reset() override;
+
+  /// Shift the workcell by (x, y, z): adds to the previous shifts.
+  void window(std::int32_t x, std::int32_t y, std::int32_t z) override;
+  /// Rotate the workcell by (x, y, z) degrees: adds up, kept in 0..359.
+  void view(std::int32_t x, std::int32_t y, std::int32_t z) override;
+
+  vm::Micros now() const override { return now_; }
+  std::uint8_t outputs() const override { return outputs_; }
+  std::uint8_t inputs() const override { return inputs_; }
+
+  const std::vector<vm::MotorSpec>& motors() const { return motors_; }
+  /// The latest move of motor `motor` (index in motor-table order).
+  const MotorSegment& segment(std::size_t motor) const { return segments_[motor]; }
+  /// Encoder position of `motor` at time `t`, computed from its latest
+  /// segment, rounded toward the segment's start. Before the segment began
+  /// it answers the segment's start (older moves are not kept); 0 for a
+  /// motor index out of range.
+  std::int32_t positionAt(std::size_t motor, vm::Micros t) const;
+
+  CameraTriple windowShift() const { return windowShift_; }
+  CameraTriple viewRotation() const { return viewRotation_; }
+
+ private:
+  vm::Status checkTargets(std::span<const std::int32_t> targets) const;
+  vm::Micros travelTime(std::size_t motor, std::int32_t target) const;
+  void advanceBy(vm::Micros duration);
+  void fireRules(int output, bool on);
+
+  std::vector<vm::MotorSpec> motors_;
+  std::vector<ReactiveRule> rules_;
+  InputSchedule schedule_;
+  std::vector<std::int32_t> positions_;
+  std::vector<std::int32_t> home_;  // all zeros, for hardHome()
+  std::vector<MotorSegment> segments_;
+  vm::Micros now_ = 0;
+  std::uint8_t outputs_ = 0;
+  std::uint8_t inputs_ = 0;
+  CameraTriple windowShift_;
+  CameraTriple viewRotation_;
+};
+
+}  // namespace rs::runtime

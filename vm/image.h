@@ -1,0 +1,61 @@
+// A compiled program: what the compiler produces, the loader verifies and the
+// interpreter runs. Self-contained: it carries the motor table it was
+// compiled for, so a `.rsb` file runs without its source or robot files.
+// The byte layout of the file form is in docs/bytecode.md.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "vm/opcodes.h"
+
+namespace rs::vm {
+
+enum class JointKind : std::uint8_t { Revolute = 0, Prismatic = 1, Gripper = 2 };
+
+/// One motor as the program sees it: a letter, how far one encoder unit
+/// turns (degrees) or slides (length units), its encoder range and speed.
+struct MotorSpec {
+  char letter = 'A';
+  JointKind kind = JointKind::Revolute;
+  double precision = 1.0;     // degrees or length units per encoder unit
+  std::int32_t min = 0;       // encoder range, inclusive
+  std::int32_t max = 0;
+  std::int32_t speed = 1;     // encoder units per second, > 0
+  bool operator==(const MotorSpec&) const = default;
+};
+
+/// A taught point: one encoder value per motor.
+struct Point {
+  std::string name;
+  std::vector<std::int32_t> values;
+  bool operator==(const Point&) const = default;
+};
+
+/// A label the source gave an instruction (kept for listings and traces).
+struct Label {
+  std::uint32_t index = 0;  // 0-based instruction index
+  std::string name;
+  bool operator==(const Label&) const = default;
+};
+
+inline constexpr std::uint16_t kDefaultCallDepth = 64;
+inline constexpr std::uint16_t kMaxCallDepth = 4096;
+
+struct Image {
+  std::string sourceName;   // file the program came from (for messages)
+  std::string robotName;    // robot the motor table came from
+  std::uint16_t callDepthLimit = kDefaultCallDepth;
+  std::vector<MotorSpec> motors;
+  std::vector<Instr> code;
+  std::vector<std::uint32_t> lines;    // source line of each instruction
+  std::vector<std::uint32_t> columns;  // source column of each mnemonic
+  std::vector<std::int32_t> constants;
+  std::vector<std::string> variables;  // slot -> name
+  std::vector<Point> points;
+  std::vector<Label> labels;          // sorted by index
+  bool operator==(const Image&) const = default;
+};
+
+}  // namespace rs::vm

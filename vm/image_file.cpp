@@ -1,0 +1,267 @@
+#include "vm/image_file.h"
+
+#include <bit>
+#include <cstring>
+#include <fmt/format.h>
+
+#include "vm/verify.h"
+
+namespace rs::vm {
+
+namespace {
+
+constexpr std::size_t kMaxName = 255;
+
+class Writer {
+ public:
+  void u8(std::uint8_t v) { out.push_back(v); }
+  void u16(std::uint16_t v) { le(v, 2); }
+  void u32(std::uint32_t v) { le(v, 4); }
+  void i32(std::int32_t v) { le(static_cast<std::uint32_t>(v), 4); }
+  void f64(double v) { le(std::bit_cast<std::uint64_t>(v), 8); }
+  void str(std::string_view s) {
+    const std::size_t n = std::min(s.size(), kMaxName);
+    u16(static_cast<std::uint16_t>(n));
+    out.insert(out.end(), s.begin(), s.begin() + static_cast<std::ptrdiff_t>(n));
+  }
+  std::vector<std::uint8_t> out;
+
+ private:
+  void le(std::uint64_t v, int bytes) {
+    for (int i = 0; i < bytes; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+  }
+};
+
+// Reads little-endian fields; after the first overrun every read yields 0
+// and `failed` stays set, so decoding code needs no check per field.
+class Reader {
+ public:
+  explicit Reader(std::string_view bytes) : data_(bytes) {}
+  std::uint8_t u8() { return static_cast<std::uint8_t>(le(1)); }
+  std::uint16_t u16() { return static_cast<std::uint16_t>(le(2)); }
+  std::uint32_t u32() { return static_cast<std::uint32_t>(le(4)); }
+  std::int32_t i32() { return static_cast<std::int32_t>(static_cast<std::uint32_t>(le(4))); }
+  double f64() { return std::bit_cast<double>(le(8)); }
+  std::string str() {
+    const std::size_t n = u16();
+    if (n > kMaxName || !need(n)) return fail(fmt::format("string of {} bytes", n)), std::string{};
+    std::string s(data_.substr(pos_, n));
+    pos_ += n;
+    return s;
+  }
+  /// A count of records of at least `minBytes` each: refused if the rest of
+  /// the file cannot hold them (so a hostile count cannot make us allocate).
+  std::size_t count(std::size_t minBytes, std::string_view what) {
+    const std::size_t n = u32();
+    if (failed) return 0;
+    if (n > remaining() / std::max<std::size_t>(minBytes, 1))
+      return fail(fmt::format("{} count {} larger than the file", what, n)), 0;
+    return n;
+  }
+  std::size_t remaining() const { return data_.size() - pos_; }
+  void fail(std::string why) {
+    if (!failed) error = std::move(why);
+    failed = true;
+  }
+  bool failed = false;
+  std::string error;
+
+ private:
+  bool need(std::size_t n) { return !failed && n <= remaining(); }
+  std::uint64_t le(int bytes) {
+    if (!need(static_cast<std::size_t>(bytes))) return fail("unexpected end of file"), 0;
+    std::uint64_t v = 0;
+    for (int i = 0; i < bytes; ++i) v |= std::uint64_t{static_cast<std::uint8_t>(data_[pos_ + i])} << (8 * i);
+    pos_ += static_cast<std::size_t>(bytes);
+    return v;
+  }
+  std::string_view data_;
+  std::size_t pos_ = 0;
+};
+
+bool isIdentifier(std::string_view s) {
+  if (s.empty() || s.size() > 64) return false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    const bool alpha = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_';
+    if (!alpha && !(i > 0 && c >= '0' && c <= '9')) return false;
+  }
+  return true;
+}
+
+void writePayload(Writer& w, const Image& im) {
+  w.str(im.sourceName);
+  w.str(im.robotName);
+  w.u16(im.callDepthLimit);
+  w.u16(0);
+  w.u32(static_cast<std::uint32_t>(im.motors.size()));
+  for (const MotorSpec& m : im.motors) {
+    w.u8(static_cast<std::uint8_t>(m.letter));
+    w.u8(static_cast<std::uint8_t>(m.kind));
+    w.u16(0);
+    w.i32(m.min);
+    w.i32(m.max);
+    w.i32(m.speed);
+    w.f64(m.precision);
+  }
+  w.u32(static_cast<std::uint32_t>(im.code.size()));
+  for (const Instr& in : im.code) {
+    w.u8(static_cast<std::uint8_t>(in.op));
+    w.u8(in.a);
+    w.u16(in.b);
+    w.i32(in.c);
+    w.i32(in.d);
+  }
+  for (std::uint32_t line : im.lines) w.u32(line);
+  for (std::uint32_t col : im.columns) w.u32(col);
+  w.u32(static_cast<std::uint32_t>(im.constants.size()));
+  for (std::int32_t k : im.constants) w.i32(k);
+  w.u32(static_cast<std::uint32_t>(im.variables.size()));
+  for (const std::string& v : im.variables) w.str(v);
+  w.u32(static_cast<std::uint32_t>(im.points.size()));
+  for (const Point& p : im.points) {
+    w.str(p.name);
+    for (std::int32_t v : p.values) w.i32(v);
+  }
+  w.u32(static_cast<std::uint32_t>(im.labels.size()));
+  for (const Label& l : im.labels) {
+    w.u32(l.index);
+    w.str(l.name);
+  }
+}
+
+void readMotors(Reader& r, Image& im) {
+  const std::size_t n = r.count(24, "motor");
+  for (std::size_t i = 0; i < n && !r.failed; ++i) {
+    MotorSpec m;
+    m.letter = static_cast<char>(r.u8());
+    const std::uint8_t kind = r.u8();
+    if (kind > static_cast<std::uint8_t>(JointKind::Gripper)) r.fail(fmt::format("motor {} has joint kind {}", i + 1, kind));
+    m.kind = static_cast<JointKind>(kind);
+    if (r.u16() != 0) r.fail("reserved motor bytes are not zero");
+    m.min = r.i32();
+    m.max = r.i32();
+    m.speed = r.i32();
+    m.precision = r.f64();
+    im.motors.push_back(m);
+  }
+}
+
+void readCode(Reader& r, Image& im) {
+  const std::size_t n = r.count(kInstrBytes + 8, "instruction");
+  im.code.reserve(n);
+  for (std::size_t i = 0; i < n && !r.failed; ++i) {
+    const std::uint8_t op = r.u8();
+    if (op >= kOpCount) r.fail(fmt::format("instruction {}: unknown opcode {}", i + 1, op));
+    Instr in;
+    in.op = static_cast<Op>(op);
+    in.a = r.u8();
+    in.b = r.u16();
+    in.c = r.i32();
+    in.d = r.i32();
+    im.code.push_back(in);
+  }
+  im.lines.reserve(n);
+  for (std::size_t i = 0; i < n && !r.failed; ++i) im.lines.push_back(r.u32());
+  im.columns.reserve(n);
+  for (std::size_t i = 0; i < n && !r.failed; ++i) im.columns.push_back(r.u32());
+}
+
+void readNames(Reader& r, Image& im) {
+  const std::size_t nk = r.count(4, "constant");
+  im.constants.reserve(nk);
+  for (std::size_t i = 0; i < nk && !r.failed; ++i) im.constants.push_back(r.i32());
+  const std::size_t nv = r.count(2, "variable");
+  for (std::size_t i = 0; i < nv && !r.failed; ++i) {
+    im.variables.push_back(r.str());
+    if (!r.failed && !isIdentifier(im.variables.back())) r.fail(fmt::format("variable {} has a bad name", i + 1));
+  }
+  const std::size_t np = r.count(2 + 4 * im.motors.size(), "point");
+  for (std::size_t i = 0; i < np && !r.failed; ++i) {
+    Point p;
+    p.name = r.str();
+    if (!r.failed && !isIdentifier(p.name)) r.fail(fmt::format("point {} has a bad name", i + 1));
+    for (std::size_t m = 0; m < im.motors.size(); ++m) p.values.push_back(r.i32());
+    im.points.push_back(std::move(p));
+  }
+  const std::size_t nl = r.count(6, "label");
+  for (std::size_t i = 0; i < nl && !r.failed; ++i) {
+    Label l;
+    l.index = r.u32();
+    l.name = r.str();
+    if (!r.failed && !isIdentifier(l.name)) r.fail(fmt::format("label {} has a bad name", i + 1));
+    im.labels.push_back(std::move(l));
+  }
+}
+
+}  // namespace
+
+std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
+  // CRC-32 (IEEE 802.3, reflected polynomial 0xEDB88320), table built once.
+  static const auto table = [] {
+    std::array<std::uint32_t, 256> t{};
+    for (std::uint32_t i = 0; i < 256; ++i) {
+      std::uint32_t c = i;
+      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+      t[i] = c;
+    }
+    return t;
+  }();
+  std::uint32_t c = 0xFFFFFFFFu;
+  for (std::size_t i = 0; i < size; ++i) c = table[(c ^ data[i]) & 0xFF] ^ (c >> 8);
+  return c ^ 0xFFFFFFFFu;
+}
+
+std::vector<std::uint8_t> writeImage(const Image& image) {
+  Writer payload;
+  writePayload(payload, image);
+  Writer w;
+  w.out.assign(kImageMagic.begin(), kImageMagic.end());
+  w.u16(kImageVersionMajor);
+  w.u16(kImageVersionMinor);
+  w.u32(static_cast<std::uint32_t>(payload.out.size()));
+  w.u32(crc32(payload.out.data(), payload.out.size()));
+  w.out.insert(w.out.end(), payload.out.begin(), payload.out.end());
+  return w.out;
+}
+
+bool looksLikeImage(std::string_view bytes) {
+  return bytes.size() >= kImageMagic.size() &&
+         std::memcmp(bytes.data(), kImageMagic.data(), kImageMagic.size()) == 0;
+}
+
+LoadResult loadImage(std::string_view bytes) {
+  LoadResult result;
+  if (!looksLikeImage(bytes)) return {{}, "not a robotsim image (bad magic number)"};
+  if (bytes.size() > kMaxImageBytes) return {{}, "image larger than 1 GiB"};
+  Reader header(bytes.substr(kImageMagic.size()));
+  const std::uint16_t major = header.u16();
+  const std::uint16_t minor = header.u16();
+  const std::uint32_t size = header.u32();
+  const std::uint32_t crc = header.u32();
+  if (header.failed) return {{}, "truncated image header"};
+  if (major != kImageVersionMajor)
+    return {{}, fmt::format("image version {}.{} is not supported (this robotsim reads {}.x)", major, minor,
+                            kImageVersionMajor)};
+  const std::string_view payload = bytes.substr(kImageHeaderBytes);
+  if (payload.size() != size)
+    return {{}, fmt::format("image payload is {} bytes, the header says {}", payload.size(), size)};
+  if (crc32(reinterpret_cast<const std::uint8_t*>(payload.data()), payload.size()) != crc)
+    return {{}, "image checksum mismatch (the file is corrupt)"};
+
+  Reader r(payload);
+  Image& im = result.image;
+  im.sourceName = r.str();
+  im.robotName = r.str();
+  im.callDepthLimit = r.u16();
+  if (r.u16() != 0) r.fail("reserved header bytes are not zero");
+  readMotors(r, im);
+  readCode(r, im);
+  readNames(r, im);
+  if (!r.failed && r.remaining() != 0) r.fail(fmt::format("{} unexpected bytes after the last section", r.remaining()));
+  if (r.failed) return {{}, "malformed image: " + r.error};
+  if (VerifyError e = verify(im); !e.message.empty()) return {{}, "image rejected by the verifier: " + e.message};
+  return result;
+}
+
+}  // namespace rs::vm

@@ -1,0 +1,39 @@
+// The file form of an image (`.rsb`): writing, and loading with
+// verification. The byte layout is documented in docs/bytecode.md.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "vm/image.h"
+
+namespace rs::vm {
+
+inline constexpr std::array<std::uint8_t, 8> kImageMagic{0x89, 'R', 'S', 'B', '\r', '\n', 0x1A, '\n'};
+inline constexpr std::uint16_t kImageVersionMajor = 1;
+inline constexpr std::uint16_t kImageVersionMinor = 0;
+inline constexpr std::size_t kImageHeaderBytes = 20;
+inline constexpr std::size_t kMaxImageBytes = std::size_t{1} << 30;  // 1 GiB
+
+/// Serialises an image; same image, same bytes.
+std::vector<std::uint8_t> writeImage(const Image& image);
+
+/// True if the bytes start with the image magic number (whatever the name).
+bool looksLikeImage(std::string_view bytes);
+
+struct LoadResult {
+  Image image;
+  std::string error;  // empty when the image loaded and verified
+};
+
+/// Decodes and verifies. Never trusts a count or an index from the file:
+/// a truncated, corrupt or hostile file gets an error, not undefined
+/// behaviour.
+LoadResult loadImage(std::string_view bytes);
+
+std::uint32_t crc32(const std::uint8_t* data, std::size_t size);
+
+}  // namespace rs::vm
