@@ -68,8 +68,8 @@ bool isReservedWord(std::string_view w) {
 
 class Builder {
  public:
-  Builder(const SourceFile& src, std::span<const vm::MotorSpec> motors, Diagnostics& d)
-      : src_(src), motors_(motors), diag_(d) {}
+  Builder(const SourceFile& src, std::span<const vm::MotorSpec> motors, Diagnostics& d, bool recovered)
+      : src_(src), motors_(motors), diag_(d), recovered_(recovered) {}
 
   Program build(P::ProgramContext* root);
 
@@ -92,6 +92,7 @@ class Builder {
   const SourceFile& src_;
   std::span<const vm::MotorSpec> motors_;
   Diagnostics& diag_;
+  bool recovered_;  // the parser recovered from syntax errors
   Program program_;
   bool inPoints_ = false;
   std::string_view pendingLabel_;
@@ -105,15 +106,28 @@ Program Builder::build(P::ProgramContext* root) {
   return std::move(program_);
 }
 
+// Splits a line's tokens into label, head word and operands. Every child of
+// a LineContext is a token node; after error recovery some are error nodes
+// for tokens the parser skipped (already reported), which are left out.
 void Builder::line(P::LineContext* l) {
-  std::vector<Word> words;
-  for (P::OperandContext* o : l->operand()) {
-    const antlr4::Token* t = o->getStart();
-    words.push_back({t->getType(), textOf(src_, t), posOf(t)});
+  std::vector<const antlr4::Token*> tokens;
+  tokens.reserve(l->children.size());
+  for (antlr4::tree::ParseTree* child : l->children) {
+    if (recovered_ && dynamic_cast<antlr4::tree::ErrorNode*>(child)) continue;
+    tokens.push_back(static_cast<antlr4::tree::TerminalNode*>(child)->getSymbol());
   }
-  if (l->label) {
-    const std::string_view label = textOf(src_, l->label);
-    const Pos pos = posOf(l->label);
+  if (tokens.empty()) return;  // blank line
+  const bool labelled = tokens.size() >= 2 && tokens[1]->getType() == P::COLON;
+  std::size_t next = labelled ? 2 : 0;
+  const antlr4::Token* headToken = nullptr;
+  if (next < tokens.size() && tokens[next]->getType() == P::IDENT) headToken = tokens[next++];
+  std::vector<Word> words;
+  words.reserve(tokens.size() - next);
+  for (; next < tokens.size(); ++next)
+    words.push_back({tokens[next]->getType(), textOf(src_, tokens[next]), posOf(tokens[next])});
+  if (labelled) {
+    const std::string_view label = textOf(src_, tokens[0]);
+    const Pos pos = posOf(tokens[0]);
     if (inPoints_) {
       diag_.error(pos, "points cannot have labels: labels name instructions");
     } else if (!pendingLabel_.empty()) {
@@ -124,22 +138,26 @@ void Builder::line(P::LineContext* l) {
       pendingLabelPos_ = pos;
     }
   }
-  if (!l->head) return;
-  const std::string_view head = textOf(src_, l->head);
+  if (!headToken) {
+    if (labelled && !words.empty())
+      diag_.error(words[0].pos, fmt::format("expected an instruction after the label, found '{}'", words[0].text));
+    return;
+  }
+  const std::string_view head = textOf(src_, headToken);
   if (sameName(head, "POINTS") && words.empty()) {
     if (inPoints_)
-      return diag_.error(posOf(l->head), fmt::format("POINTS appears twice (the section began on line {})",
+      return diag_.error(posOf(headToken), fmt::format("POINTS appears twice (the section began on line {})",
                                                      program_.pointsHeader.line));
     if (!pendingLabel_.empty()) {
       diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
       pendingLabel_ = {};
     }
     inPoints_ = true;
-    program_.pointsHeader = posOf(l->head);
+    program_.pointsHeader = posOf(headToken);
     return;
   }
-  if (inPoints_) return point(l->head, words);
-  instruction(l->head, words);
+  if (inPoints_) return point(headToken, words);
+  instruction(headToken, words);
 }
 
 void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& words) {
@@ -383,7 +401,7 @@ std::string_view closestMnemonic(std::string_view word) {
 }
 
 Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, Diagnostics& diagnostics) {
-  Builder b(tree.source(), motors, diagnostics);
+  Builder b(tree.source(), motors, diagnostics, tree.recovered());
   return b.build(static_cast<P::ProgramContext*>(tree.root()));
 }
 

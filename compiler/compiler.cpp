@@ -44,12 +44,13 @@ std::string dumpTokens(const SourceFile& source, std::vector<Diagnostic>& diagno
   Lexer lexer(source, d);
   std::string out;
   for (;;) {
-    const std::unique_ptr<antlr4::Token> t = lexer.nextToken();
-    const std::string pos = fmt::format("{}:{}", t->getLine(), t->getCharPositionInLine() + 1);
-    const bool shown = t->getType() != antlr4::Token::EOF && t->getType() != rs_grammar::RobotProgramParser::NEWLINE;
-    out += shown ? fmt::format("{:<8} {:<8} {}\n", pos, tokenTypeName(t->getType()), t->getText())
-                 : fmt::format("{:<8} {}\n", pos, tokenTypeName(t->getType()));
-    if (t->getType() == antlr4::Token::EOF) break;
+    const RawToken t = lexer.scan();
+    const std::string pos = fmt::format("{}:{}", t.pos.line, t.pos.col);
+    const bool shown = t.type != antlr4::Token::EOF && t.type != rs_grammar::RobotProgramParser::NEWLINE;
+    out += shown ? fmt::format("{:<8} {:<8} {}\n", pos, tokenTypeName(t.type),
+                               std::string_view(source.text()).substr(t.begin, t.end - t.begin))
+                 : fmt::format("{:<8} {}\n", pos, tokenTypeName(t.type));
+    if (t.type == antlr4::Token::EOF) break;
   }
   diagnostics = d.sorted();
   return out;

@@ -42,12 +42,22 @@ antlr4::TokenFactory<antlr4::CommonToken>* Lexer::getTokenFactory() {
   return antlr4::CommonTokenFactory::DEFAULT.get();
 }
 
-std::unique_ptr<antlr4::Token> Lexer::make(size_t type, std::size_t begin, std::uint32_t col) {
-  auto token = std::make_unique<antlr4::CommonToken>(std::make_pair(this, nullptr), type,
-                                                     antlr4::Token::DEFAULT_CHANNEL, begin, pos_ - 1);
-  token->setText(type == antlr4::Token::EOF ? std::string("<EOF>") : std::string(text_.substr(begin, pos_ - begin)));
-  token->setLine(line_);
-  token->setCharPositionInLine(col - 1);
+void Lexer::fill(antlr4::CommonToken& token, const RawToken& raw, size_t index) {
+  token.setType(raw.type);
+  token.setStartIndex(raw.begin);
+  token.setStopIndex(raw.end - 1);
+  token.setText(raw.type == antlr4::Token::EOF ? std::string("<EOF>")
+                                               : std::string(text_.substr(raw.begin, raw.end - raw.begin)));
+  token.setLine(raw.pos.line);
+  token.setCharPositionInLine(raw.pos.col - 1);
+  token.setTokenIndex(index);
+}
+
+std::unique_ptr<antlr4::Token> Lexer::nextToken() {
+  const RawToken raw = scan();
+  auto token = std::make_unique<antlr4::CommonToken>(std::make_pair(this, nullptr), raw.type,
+                                                     antlr4::Token::DEFAULT_CHANNEL, raw.begin, raw.end - 1);
+  fill(*token, raw, static_cast<size_t>(-1));
   return token;
 }
 
@@ -79,44 +89,101 @@ void Lexer::badCharacter() {
   ++col_;
 }
 
-std::unique_ptr<antlr4::Token> Lexer::nextToken() {
+RawToken Lexer::scan() {
   for (;;) {
     skipBlanksAndComments();
-    const std::size_t begin = pos_;
-    const std::uint32_t col = col_;
-    if (pos_ >= text_.size()) return make(antlr4::Token::EOF, begin, col);
+    RawToken t;
+    t.begin = pos_;
+    t.pos = {line_, col_};
+    if (pos_ >= text_.size()) {
+      t.type = antlr4::Token::EOF;
+      t.end = pos_;
+      return t;
+    }
     const char c = text_[pos_];
     if (c == '\n' || c == '\r') {
       pos_ += c == '\r' ? 2 : 1;  // "\r\n" (a lone '\r' was skipped as blank)
-      auto token = make(P::NEWLINE, begin, col);
+      t.type = P::NEWLINE;
+      t.end = pos_;
       ++line_;
       col_ = 1;
-      return token;
+      return t;
     }
     if (isIdentStart(c)) {
+      t.type = P::IDENT;
       while (pos_ < text_.size() && isIdentPart(text_[pos_])) ++pos_;
     } else if (isDigit(c) || ((c == '+' || c == '-') && pos_ + 1 < text_.size() && isDigit(text_[pos_ + 1]))) {
+      t.type = P::NUMBER;
       ++pos_;
       while (pos_ < text_.size() && isDigit(text_[pos_])) ++pos_;
       if (pos_ + 1 < text_.size() && text_[pos_] == '.' && isDigit(text_[pos_ + 1])) {
         ++pos_;
         while (pos_ < text_.size() && isDigit(text_[pos_])) ++pos_;
       }
-      col_ += static_cast<std::uint32_t>(pos_ - begin);
-      return make(P::NUMBER, begin, col);
     } else if (c == '<' || c == '>' || c == '=') {
+      t.type = P::CMP;
       ++pos_;
     } else if (c == ':') {
+      t.type = P::COLON;
       ++pos_;
-      col_ += 1;
-      return make(P::COLON, begin, col);
     } else {
       badCharacter();
       continue;
     }
-    col_ += static_cast<std::uint32_t>(pos_ - begin);
-    return make(isIdentStart(c) ? P::IDENT : P::CMP, begin, col);
+    t.end = pos_;
+    col_ += static_cast<std::uint32_t>(pos_ - t.begin);  // tokens are ASCII
+    return t;
   }
+}
+
+TokenArray::TokenArray(Lexer& lexer) : lexer_(lexer) {
+  for (;;) {
+    const RawToken raw = lexer.scan();
+    antlr4::CommonToken& token = tokens_.emplace_back(std::make_pair(&lexer, nullptr), raw.type,
+                                                      antlr4::Token::DEFAULT_CHANNEL, raw.begin, raw.end - 1);
+    lexer.fill(token, raw, tokens_.size() - 1);
+    if (raw.type == antlr4::Token::EOF) break;
+  }
+}
+
+antlr4::Token* TokenArray::LT(ssize_t k) {
+  if (k == 0) return nullptr;
+  const ssize_t i = static_cast<ssize_t>(p_) + (k > 0 ? k - 1 : k);
+  if (i < 0) return nullptr;
+  return &tokens_[std::min(static_cast<size_t>(i), tokens_.size() - 1)];
+}
+
+size_t TokenArray::LA(ssize_t i) {
+  const antlr4::Token* t = LT(i);
+  return t ? t->getType() : antlr4::Token::INVALID_TYPE;
+}
+
+antlr4::Token* TokenArray::get(size_t index) const {
+  if (index >= tokens_.size()) throw antlr4::IndexOutOfBoundsException("token index out of range");
+  return const_cast<antlr4::CommonToken*>(&tokens_[index]);
+}
+
+void TokenArray::consume() {
+  if (tokens_[p_].getType() == antlr4::Token::EOF) throw antlr4::IllegalStateException("cannot consume EOF");
+  ++p_;
+}
+
+std::string TokenArray::getText(const antlr4::misc::Interval& interval) {
+  std::string out;
+  if (interval.a < 0 || interval.b < 0) return out;
+  const auto last = std::min(static_cast<size_t>(interval.b), tokens_.size() - 1);
+  for (auto i = static_cast<size_t>(interval.a); i <= last; ++i)
+    if (tokens_[i].getType() != antlr4::Token::EOF) out += tokens_[i].getText();
+  return out;
+}
+
+std::string TokenArray::getText() { return getText(antlr4::misc::Interval(size_t{0}, tokens_.size() - 1)); }
+
+std::string TokenArray::getText(antlr4::RuleContext* ctx) { return getText(ctx->getSourceInterval()); }
+
+std::string TokenArray::getText(antlr4::Token* start, antlr4::Token* stop) {
+  if (!start || !stop) return {};
+  return getText(antlr4::misc::Interval(start->getTokenIndex(), stop->getTokenIndex()));
 }
 
 }  // namespace rs::compiler

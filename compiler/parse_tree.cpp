@@ -40,13 +40,29 @@ class SyntaxErrors final : public antlr4::BaseErrorListener {
 ParseTree::ParseTree(const SourceFile& source, Diagnostics& diagnostics)
     : source_(source),
       lexer_(std::make_unique<Lexer>(source, diagnostics)),
-      tokens_(std::make_unique<antlr4::CommonTokenStream>(lexer_.get())),
+      tokens_(std::make_unique<TokenArray>(*lexer_)),
       parser_(std::make_unique<P>(tokens_.get())) {
-  SyntaxErrors listener(diagnostics);
+  // Two stages, as ANTLR's authors recommend for speed: first SLL
+  // prediction with an error strategy that gives up at the first error (no
+  // recovery bookkeeping on every loop); only a file with a syntax error is
+  // parsed again with full recovery, so that every error gets reported.
   parser_->removeErrorListeners();
-  parser_->addErrorListener(&listener);
-  // SLL prediction is exact for this grammar (it is LL(2)) and faster.
+  parser_->setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
   parser_->getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(antlr4::atn::PredictionMode::SLL);
+  try {
+    root_ = parser_->program();
+    return;
+  } catch (const antlr4::ParseCancellationException&) {
+  }
+  // The token stream keeps every token, so the lexer does not run (or
+  // report its errors) a second time.
+  recovered_ = true;
+  tokens_->seek(0);
+  parser_->reset();
+  SyntaxErrors listener(diagnostics);
+  parser_->addErrorListener(&listener);
+  parser_->setErrorHandler(std::make_shared<antlr4::DefaultErrorStrategy>());
+  parser_->getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(antlr4::atn::PredictionMode::LL);
   root_ = parser_->program();
   parser_->removeErrorListeners();
 }

@@ -9,7 +9,6 @@
 #include "compiler/source.h"
 
 namespace antlr4 {
-class CommonTokenStream;
 class ParserRuleContext;
 }
 namespace rs_grammar {
@@ -19,6 +18,7 @@ class RobotProgramParser;
 namespace rs::compiler {
 
 class Lexer;
+class TokenArray;
 
 class ParseTree {
  public:
@@ -32,15 +32,19 @@ class ParseTree {
   rs_grammar::RobotProgramParser& parser() { return *parser_; }
   /// The root: a RobotProgramParser::ProgramContext.
   antlr4::ParserRuleContext* root() const { return root_; }
+  /// True when the parser met syntax errors and recovered (the tree may
+  /// then hold error nodes).
+  bool recovered() const { return recovered_; }
   /// The tree in LISP form, as ANTLR prints it (for `robotsim ast --tree`).
   std::string toStringTree();
 
  private:
   const SourceFile& source_;
   std::unique_ptr<Lexer> lexer_;
-  std::unique_ptr<antlr4::CommonTokenStream> tokens_;
+  std::unique_ptr<TokenArray> tokens_;
   std::unique_ptr<rs_grammar::RobotProgramParser> parser_;
   antlr4::ParserRuleContext* root_ = nullptr;
+  bool recovered_ = false;
 };
 
 }  // namespace rs::compiler

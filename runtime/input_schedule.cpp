@@ -9,7 +9,8 @@ bool earlier(const InputChange& a, const InputChange& b) { return a.at < b.at; }
 
 void applyChange(const InputChange& change, std::uint8_t& inputs) {
   const auto bit = lineBit(change.input);
-  inputs = change.on ? static_cast<std::uint8_t>(inputs | bit) : static_cast<std::uint8_t>(inputs & ~bit);
+  inputs = change.on ? static_cast<std::uint8_t>(inputs | bit)
+                     : static_cast<std::uint8_t>(inputs & ~bit);
 }
 
 }  // namespace

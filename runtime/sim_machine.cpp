@@ -22,8 +22,10 @@ bool validLine(int n) { return lineBit(n) != 0; }
 const char* onOff(bool on) { return on ? "ON" : "OFF"; }
 
 std::int64_t saturatingAdd(std::int64_t a, std::int64_t b) {
-  if (b > 0 && a > std::numeric_limits<std::int64_t>::max() - b) return std::numeric_limits<std::int64_t>::max();
-  if (b < 0 && a < std::numeric_limits<std::int64_t>::min() - b) return std::numeric_limits<std::int64_t>::min();
+  if (b > 0 && a > std::numeric_limits<std::int64_t>::max() - b)
+    return std::numeric_limits<std::int64_t>::max();
+  if (b < 0 && a < std::numeric_limits<std::int64_t>::min() - b)
+    return std::numeric_limits<std::int64_t>::min();
   return a + b;
 }
 
@@ -56,7 +58,8 @@ Micros SimMachine::travelTime(std::size_t motor, std::int32_t target) const {
 
 Status SimMachine::checkTargets(std::span<const std::int32_t> targets) const {
   if (targets.size() != motors_.size())
-    return Status::fault(fmt::format("move has {} targets for {} motors", targets.size(), motors_.size()));
+    return Status::fault(
+        fmt::format("move has {} targets for {} motors", targets.size(), motors_.size()));
   Micros longest = 0;
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const auto& m = motors_[i];
@@ -108,10 +111,12 @@ Status SimMachine::reset() {
 }
 
 Status SimMachine::setOutput(int output, bool on) {
-  if (!validLine(output)) return Status::fault(fmt::format("output {} does not exist (outputs are 1..8)", output));
+  if (!validLine(output))
+    return Status::fault(fmt::format("output {} does not exist (outputs are 1..8)", output));
   const auto bit = lineBit(output);
   if (((outputs_ & bit) != 0) == on) return Status::ok();  // no change, no rule fires
-  outputs_ = on ? static_cast<std::uint8_t>(outputs_ | bit) : static_cast<std::uint8_t>(outputs_ & ~bit);
+  outputs_ =
+      on ? static_cast<std::uint8_t>(outputs_ | bit) : static_cast<std::uint8_t>(outputs_ & ~bit);
   fireRules(output, on);
   schedule_.applyUntil(now_, inputs_);  // rules with no delay act at once
   return Status::ok();
@@ -120,7 +125,8 @@ Status SimMachine::setOutput(int output, bool on) {
 void SimMachine::fireRules(int output, bool on) {
   for (const auto& rule : rules_)
     if (rule.output == output && rule.outputOn == on)
-      schedule_.schedule({saturatingAdd(now_, std::max<Micros>(rule.delay, 0)), rule.input, rule.inputOn});
+      schedule_.schedule(
+          {saturatingAdd(now_, std::max<Micros>(rule.delay, 0)), rule.input, rule.inputOn});
 }
 
 bool SimMachine::input(int input) {
@@ -129,14 +135,16 @@ bool SimMachine::input(int input) {
 }
 
 Status SimMachine::waitFor(int input, bool on) {
-  if (!validLine(input)) return Status::fault(fmt::format("input {} does not exist (inputs are 1..8)", input));
+  if (!validLine(input))
+    return Status::fault(fmt::format("input {} does not exist (inputs are 1..8)", input));
   if (this->input(input) == on) return Status::ok();
   const auto when = schedule_.whenReads(input, on, inputs_);
   if (!when)
-    return Status::deadlock(fmt::format("input {} never turns {}: {}", input, onOff(on),
-                                        schedule_.hasPendingFor(input)
-                                            ? fmt::format("no scheduled stimulus leaves it {}", onOff(on))
-                                            : std::string("no stimulus is scheduled")));
+    return Status::deadlock(
+        fmt::format("input {} never turns {}: {}", input, onOff(on),
+                    schedule_.hasPendingFor(input)
+                        ? fmt::format("no scheduled stimulus leaves it {}", onOff(on))
+                        : std::string("no stimulus is scheduled")));
   advanceBy(*when - now_);
   return Status::ok();
 }

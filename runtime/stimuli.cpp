@@ -57,7 +57,8 @@ class LineParser {
     const auto token = take(fmt::format("expected '{}' {}", kw, context));
     if (!token) return false;
     if (text::equalsKeyword(token->text, kw)) return true;
-    return fail(*token, fmt::format("expected '{}' {}, got {}", kw, context, text::quoted(token->text)));
+    return fail(*token,
+                fmt::format("expected '{}' {}, got {}", kw, context, text::quoted(token->text)));
   }
 
   // 'on' or 'off'.
@@ -145,8 +146,7 @@ bool parseOptionalDelay(LineParser& p, vm::Micros& delay) {
     return p.fail(*next, fmt::format("expected 'after' or the end of the line, got {}",
                                      text::quoted(next->text)));
   p.skip();
-  return p.seconds(delay, "expected a delay in seconds after 'after'") &&
-         p.atEnd();
+  return p.seconds(delay, "expected a delay in seconds after 'after'") && p.atEnd();
 }
 
 // when := 'when' 'output' N STATE 'then' 'input' N STATE [ 'after' SECONDS ]
@@ -202,7 +202,8 @@ StimuliParse loadStimuliFile(const std::filesystem::path& path) {
     return StimuliParse{{}, {{name, 0, 0, std::move(message)}}};
   };
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) return fileError("is a directory, not a stimuli file");
+  if (std::filesystem::is_directory(path, ec))
+    return fileError("is a directory, not a stimuli file");
   std::ifstream in(path, std::ios::binary);
   if (!in) return fileError("cannot open the stimuli file");
   // Read in chunks up to the limit: a device like /dev/zero must not hang us.

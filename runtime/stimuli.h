@@ -76,7 +76,6 @@ struct StimulusArgParse {
 
 /// Parses the command-line form `N=ON@T` or `N=OFF@T` (e.g. `3=ON@1.5`;
 /// without `@T` the time is 0). `origin` labels the error (its `file`).
-StimulusArgParse parseStimulusArg(std::string_view arg,
-                                  std::string_view origin = "command line");
+StimulusArgParse parseStimulusArg(std::string_view arg, std::string_view origin = "command line");
 
 }  // namespace rs::runtime

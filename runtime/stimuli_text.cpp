@@ -52,9 +52,12 @@ bool equalsKeyword(std::string_view token, std::string_view keyword) {
 std::string quoted(std::string_view token) {
   const bool cut = token.size() > kMaxQuotedBytes;
   std::string out = "'";
-  for (unsigned char c : token.substr(0, kMaxQuotedBytes)) {
-    if (c >= 0x20 && c < 0x7f && c != '\\') out += static_cast<char>(c);
-    else out += fmt::format("\\x{:02x}", c);
+  for (const char ch : token.substr(0, kMaxQuotedBytes)) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20 && c < 0x7f && c != '\\')
+      out += ch;
+    else
+      out += fmt::format("\\x{:02x}", c);
   }
   if (cut) out += "...";
   return out + "'";
@@ -84,13 +87,14 @@ SecondsParse parseSeconds(std::string_view token) {
 
 LineNumberParse parseLineNumber(std::string_view token, std::string_view what) {
   if (!allDigits(token))
-    return {0, fmt::format("expected an {} number 1..{}, got {}", what, vm::kIoCount, quoted(token))};
+    return {0,
+            fmt::format("expected an {} number 1..{}, got {}", what, vm::kIoCount, quoted(token))};
   const auto digits = stripLeadingZeros(token);
   const int value = digits.size() == 1 ? digits[0] - '0' : 0;  // longer is out of range
   if (value < 1 || value > vm::kIoCount)
-    return {0, fmt::format("{} number must be 1..{}, got {}", what, vm::kIoCount,
-                           digits.size() <= kMaxQuotedBytes ? std::string(digits)
-                                                            : quoted(digits))};
+    return {0,
+            fmt::format("{} number must be 1..{}, got {}", what, vm::kIoCount,
+                        digits.size() <= kMaxQuotedBytes ? std::string(digits) : quoted(digits))};
   return {value, {}};
 }
 

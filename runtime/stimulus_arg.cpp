@@ -26,7 +26,8 @@ StimulusArgParse parseStimulusArg(std::string_view arg, std::string_view origin)
   const auto equals = arg.find('=');
   if (equals == std::string_view::npos)
     return failAt(origin, arg.size(), fmt::format("expected '=' after the input number {}", kForm));
-  if (equals == 0) return failAt(origin, 0, fmt::format("expected an input number 1..8 before '=' {}", kForm));
+  if (equals == 0)
+    return failAt(origin, 0, fmt::format("expected an input number 1..8 before '=' {}", kForm));
   const auto number = text::parseLineNumber(arg.substr(0, equals), "input");
   if (!number.error.empty()) return failAt(origin, 0, number.error);
 
@@ -35,8 +36,9 @@ StimulusArgParse parseStimulusArg(std::string_view arg, std::string_view origin)
   const bool on = text::equalsKeyword(state, "on");
   if (!on && !text::equalsKeyword(state, "off"))
     return failAt(origin, equals + 1,
-                  state.empty() ? fmt::format("expected ON or OFF after '=' {}", kForm)
-                                : fmt::format("expected ON or OFF after '=', got {}", text::quoted(state)));
+                  state.empty()
+                      ? fmt::format("expected ON or OFF after '=' {}", kForm)
+                      : fmt::format("expected ON or OFF after '=', got {}", text::quoted(state)));
   if (at == std::string_view::npos) return {InputChange{0, number.value, on}, std::nullopt};
 
   const auto time = arg.substr(at + 1);

@@ -2,7 +2,6 @@
 // rules, waits and deadlocks. Expected values are worked out by hand in the
 // comments (speeds: E 400, D 400, C 300, B 500, A 200 units per second).
 #include <catch2/catch.hpp>
-
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -22,7 +21,9 @@ using Targets = std::vector<std::int32_t>;
 
 constexpr Micros kSecond = 1'000'000;
 
-SimMachine scara(Stimuli stimuli = {}) { return SimMachine(rs::stdlib::rhinoScaraMotors(), std::move(stimuli)); }
+SimMachine scara(Stimuli stimuli = {}) {
+  return SimMachine(rs::stdlib::rhinoScaraMotors(), std::move(stimuli));
+}
 
 Stimuli parsed(std::string_view text) {
   auto result = rs::runtime::parseStimuli(text, "test.stim");
@@ -106,7 +107,7 @@ TEST_CASE("positionAt follows the segment analytically", "[sim][motion]") {
   SECTION("moving down rounds toward the start") {
     REQUIRE(m.moveTo(Targets{-100, 0, 0, 0, 0}));  // 500 u at 400 u/s = 1.25 s
     CHECK(m.now() == 2'250'000);
-    CHECK(m.positionAt(0, 1'000'000 + 3'000) == 399);   // 1.2 units covered -> 1
+    CHECK(m.positionAt(0, 1'000'000 + 3'000) == 399);    // 1.2 units covered -> 1
     CHECK(m.positionAt(0, 1'000'000 + 625'000) == 150);  // halfway: 250 units
     CHECK(m.positionAt(0, 2'249'999) == -99);            // 499.9996 -> 499
     CHECK(m.positionAt(0, 2'250'000) == -100);
@@ -116,7 +117,8 @@ TEST_CASE("positionAt follows the segment analytically", "[sim][motion]") {
 
 TEST_CASE("a long move costs no more than a short one", "[sim][motion]") {
   // 4e9 units at 1 u/s: 4e15 us of virtual time, computed not stepped.
-  const std::vector<rs::vm::MotorSpec> motors{{'Z', rs::vm::JointKind::Prismatic, 1.0, -2'000'000'000, 2'000'000'000, 1}};
+  const std::vector<rs::vm::MotorSpec> motors{
+      {'Z', rs::vm::JointKind::Prismatic, 1.0, -2'000'000'000, 2'000'000'000, 1}};
   SimMachine m(motors, {});
   REQUIRE(m.moveTo(Targets{-2'000'000'000}));
   REQUIRE(m.moveTo(Targets{2'000'000'000}));
@@ -131,8 +133,10 @@ TEST_CASE("targets outside a motor's range are a fault and nothing moves", "[sim
   const auto status = m.moveTo(Targets{1001, 0, 0, 0, 0});
   CHECK(status.code == Status::Code::Fault);
   CHECK(status.message == "motor E target 1001 is outside its range -1000..1000");
-  CHECK(m.moveTo(Targets{0, 0, 0, 0, 121}).message == "motor A target 121 is outside its range 0..120");
-  CHECK(m.moveTo(Targets{0, 0, -351, 0, 0}).message == "motor C target -351 is outside its range -350..350");
+  CHECK(m.moveTo(Targets{0, 0, 0, 0, 121}).message ==
+        "motor A target 121 is outside its range 0..120");
+  CHECK(m.moveTo(Targets{0, 0, -351, 0, 0}).message ==
+        "motor C target -351 is outside its range -350..350");
   CHECK(m.moveTo(Targets{0, 0, 0}).message == "move has 3 targets for 5 motors");
   CHECK(m.now() == 0);
   CHECK(positionsOf(m) == Targets{0, 0, 0, 0, 0});
@@ -254,9 +258,10 @@ TEST_CASE("a reactive rule answers an output after its delay", "[sim][rules]") {
 }
 
 TEST_CASE("rules fire only when the output really changes", "[sim][rules]") {
-  auto m = scara(parsed("when output 1 on then input 3 on\n"
-                        "when output 1 off then input 3 off\n"
-                        "when output 1 on then input 7 on after 1\n"));
+  auto m =
+      scara(parsed("when output 1 on then input 3 on\n"
+                   "when output 1 off then input 3 off\n"
+                   "when output 1 on then input 7 on after 1\n"));
   REQUIRE(m.setOutput(1, true));
   CHECK(m.inputs() == 0b0000'0100);  // no delay: at once
   REQUIRE(m.delay(kSecond));
@@ -272,9 +277,10 @@ TEST_CASE("rules fire only when the output really changes", "[sim][rules]") {
 TEST_CASE("changes due together apply in scheduling order", "[sim][rules]") {
   // Timed first in file order (input 1: on then off = off), then the rule's
   // change scheduled later for the same time (input 2: off then on = on).
-  auto m = scara(parsed("at 1 input 1 on\nat 1 input 1 off\n"
-                        "at 1 input 2 off\n"
-                        "when output 5 on then input 2 on after 0.5\n"));
+  auto m =
+      scara(parsed("at 1 input 1 on\nat 1 input 1 off\n"
+                   "at 1 input 2 off\n"
+                   "when output 5 on then input 2 on after 0.5\n"));
   REQUIRE(m.delay(500'000));
   REQUIRE(m.setOutput(5, true));
   REQUIRE(m.waitFor(2, true));
@@ -283,8 +289,9 @@ TEST_CASE("changes due together apply in scheduling order", "[sim][rules]") {
 }
 
 TEST_CASE("many reactive changes keep their order as the schedule grows", "[sim][rules]") {
-  auto m = scara(parsed("when output 1 on then input 1 on after 0.001\n"
-                        "when output 1 off then input 1 off after 0.001\n"));
+  auto m =
+      scara(parsed("when output 1 on then input 1 on after 0.001\n"
+                   "when output 1 off then input 1 off after 0.001\n"));
   for (int i = 0; i < 1000; ++i) {
     REQUIRE(m.setOutput(1, i % 2 == 0));
     REQUIRE(m.delay(500));

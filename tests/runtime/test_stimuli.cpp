@@ -1,7 +1,6 @@
 // The stimuli file parser and the command-line form: exact microseconds,
 // every bad line reported with its position, no crash on any bytes.
 #include <catch2/catch.hpp>
-
 #include <cstdint>
 #include <random>
 #include <string>
@@ -44,8 +43,10 @@ TEST_CASE("a good stimuli file becomes the model", "[stimuli]") {
       "\tat 0 input 1 on",  // last line without a newline
       "cell.stim");
   CHECK(result.errors.empty());
-  CHECK(result.stimuli.changes == std::vector<InputChange>{{1'500'000, 3, true}, {2'000'000, 3, false}, {0, 1, true}});
-  CHECK(result.stimuli.rules == std::vector<ReactiveRule>{{1, true, 2, true, 500'000}, {4, false, 8, false, 0}});
+  CHECK(result.stimuli.changes ==
+        std::vector<InputChange>{{1'500'000, 3, true}, {2'000'000, 3, false}, {0, 1, true}});
+  CHECK(result.stimuli.rules ==
+        std::vector<ReactiveRule>{{1, true, 2, true, 500'000}, {4, false, 8, false, 0}});
 }
 
 TEST_CASE("an empty file or one of comments is an empty model", "[stimuli]") {
@@ -119,7 +120,8 @@ TEST_CASE("every bad line is reported with its line, column and what was expecte
     CHECK(result.errors[i] == expected[i]);
   }
   // The good lines still count; the bad ones add nothing.
-  CHECK(result.stimuli.changes == std::vector<InputChange>{{1'500'000, 3, true}, {3'000'000, 1, true}});
+  CHECK(result.stimuli.changes ==
+        std::vector<InputChange>{{1'500'000, 3, true}, {3'000'000, 1, true}});
   CHECK(result.stimuli.rules == std::vector<ReactiveRule>{{1, true, 2, true, 500'000}});
 }
 
@@ -128,15 +130,19 @@ TEST_CASE("more bad rules", "[stimuli]") {
         StimuliError{"s.stim", 1, 23, "expected 'input' after 'then', got 'output'"});
   CHECK(onlyError("when output 1 on then input 2") ==
         StimuliError{"s.stim", 1, 30, "expected 'on' or 'off' after the input number"});
-  CHECK(onlyError("when output 1 high then input 2 on") ==
-        StimuliError{"s.stim", 1, 15, "expected 'on' or 'off' after the output number, got 'high'"});
+  CHECK(
+      onlyError("when output 1 high then input 2 on") ==
+      StimuliError{"s.stim", 1, 15, "expected 'on' or 'off' after the output number, got 'high'"});
   CHECK(onlyError("when output 1 on then input 2 on after -0.5") ==
         StimuliError{"s.stim", 1, 40, "time must not be negative, got '-0.5'"});
   CHECK(onlyError("at 1 input 99999999999999999999999 on") ==
         StimuliError{"s.stim", 1, 12, "input number must be 1..8, got 99999999999999999999999"});
-  CHECK(onlyError("at 1. input 1 on").message == "bad time '1.': expected seconds such as 2 or 1.5");
-  CHECK(onlyError("at .5 input 1 on").message == "bad time '.5': expected seconds such as 2 or 1.5");
-  CHECK(onlyError("at 1e3 input 1 on").message == "bad time '1e3': expected seconds such as 2 or 1.5");
+  CHECK(onlyError("at 1. input 1 on").message ==
+        "bad time '1.': expected seconds such as 2 or 1.5");
+  CHECK(onlyError("at .5 input 1 on").message ==
+        "bad time '.5': expected seconds such as 2 or 1.5");
+  CHECK(onlyError("at 1e3 input 1 on").message ==
+        "bad time '1e3': expected seconds such as 2 or 1.5");
 }
 
 TEST_CASE("strange bytes get an error, never a crash", "[stimuli]") {
@@ -144,14 +150,16 @@ TEST_CASE("strange bytes get an error, never a crash", "[stimuli]") {
   CHECK(onlyError("at \0 input 1 on"s) ==
         StimuliError{"s.stim", 1, 4, "bad time '\\x00': expected seconds such as 2 or 1.5"});
   CHECK(onlyError("\xff\xfe at") ==
-        StimuliError{"s.stim", 1, 1, "expected 'at' or 'when' at the start of a line, got '\\xff\\xfe'"});
+        StimuliError{"s.stim", 1, 1,
+                     "expected 'at' or 'when' at the start of a line, got '\\xff\\xfe'"});
   CHECK(onlyError("at 1 input 1 \xc3\xb6n").message ==
         "expected 'on' or 'off' after the input number, got '\\xc3\\xb6n'");
 
   SECTION("a huge line is cut short in the message") {
     const auto error = onlyError("at 1 input 1 " + std::string(1'000'000, 'x'));
     CHECK(error.column == 14);
-    CHECK(error.message == "expected 'on' or 'off' after the input number, got '" + std::string(40, 'x') + "...'");
+    CHECK(error.message ==
+          "expected 'on' or 'off' after the input number, got '" + std::string(40, 'x') + "...'");
   }
   SECTION("random bytes") {
     std::mt19937 random(12345);  // seeded: the same bytes on every run
@@ -161,7 +169,8 @@ TEST_CASE("strange bytes get an error, never a crash", "[stimuli]") {
       std::string text;
       for (int i = 0; i < 64; ++i) {
         const int b = byte(random);
-        text += b < 128 ? alphabet[static_cast<std::size_t>(b) % alphabet.size()] : static_cast<char>(b);
+        text += b < 128 ? alphabet[static_cast<std::size_t>(b) % alphabet.size()]
+                        : static_cast<char>(b);
       }
       const auto result = parseStimuli(text, "fuzz");
       for (const auto& e : result.errors) {
@@ -188,14 +197,18 @@ TEST_CASE("bad command-line stimuli say where and what", "[stimuli][cli]") {
     return *parsed.error;
   };
   CHECK(errorOf("9=ON") == StimuliError{"--input", 1, 1, "input number must be 1..8, got 9"});
-  CHECK(errorOf("3=MAYBE@1") == StimuliError{"--input", 1, 3, "expected ON or OFF after '=', got 'MAYBE'"});
+  CHECK(errorOf("3=MAYBE@1") ==
+        StimuliError{"--input", 1, 3, "expected ON or OFF after '=', got 'MAYBE'"});
   CHECK(errorOf("3=ON@") == StimuliError{"--input", 1, 6, "expected a time in seconds after '@'"});
   CHECK(errorOf("3=ON@1.5.2") ==
         StimuliError{"--input", 1, 6, "bad time '1.5.2': expected seconds such as 2 or 1.5"});
   CHECK(errorOf("3") ==
-        StimuliError{"--input", 1, 2, "expected '=' after the input number (the form is N=ON@T or N=OFF@T, e.g. 3=ON@1.5)"});
-  CHECK(errorOf("=ON") ==
-        StimuliError{"--input", 1, 1, "expected an input number 1..8 before '=' (the form is N=ON@T or N=OFF@T, e.g. 3=ON@1.5)"});
+        StimuliError{
+            "--input", 1, 2,
+            "expected '=' after the input number (the form is N=ON@T or N=OFF@T, e.g. 3=ON@1.5)"});
+  CHECK(errorOf("=ON") == StimuliError{"--input", 1, 1,
+                                       "expected an input number 1..8 before '=' (the form is "
+                                       "N=ON@T or N=OFF@T, e.g. 3=ON@1.5)"});
   CHECK(errorOf("3=@1").column == 3);
   CHECK(errorOf("").column == 1);
 }
@@ -203,7 +216,8 @@ TEST_CASE("bad command-line stimuli say where and what", "[stimuli][cli]") {
 TEST_CASE("an unreadable stimuli file is one error", "[stimuli]") {
   const auto missing = rs::runtime::loadStimuliFile("/nonexistent/dir/cell.stim");
   REQUIRE(missing.errors.size() == 1);
-  CHECK(missing.errors[0] == StimuliError{"/nonexistent/dir/cell.stim", 0, 0, "cannot open the stimuli file"});
+  CHECK(missing.errors[0] ==
+        StimuliError{"/nonexistent/dir/cell.stim", 0, 0, "cannot open the stimuli file"});
   const auto dir = rs::runtime::loadStimuliFile("/");
   REQUIRE(dir.errors.size() == 1);
   CHECK(dir.errors[0].message == "is a directory, not a stimuli file");
