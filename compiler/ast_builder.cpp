@@ -62,6 +62,8 @@ std::size_t operandCount(vm::Format f) {
   return 0;
 }
 
+constexpr std::size_t kMaxNameLength = 64;  // as the image format allows
+
 bool isReservedWord(std::string_view w) {
   return vm::opByName(w).has_value() || sameName(w, "ON") || sameName(w, "OFF") || sameName(w, "POINTS");
 }
@@ -117,14 +119,21 @@ void Builder::line(P::LineContext* l) {
     tokens.push_back(static_cast<antlr4::tree::TerminalNode*>(child)->getSymbol());
   }
   if (tokens.empty()) return;  // blank line
+  if (tokens[0]->getType() != P::IDENT)
+    return diag_.error(posOf(tokens[0]), fmt::format("unexpected '{}': a line starts with an instruction, a label "
+                                                     "or a point name", textOf(src_, tokens[0])));
   const bool labelled = tokens.size() >= 2 && tokens[1]->getType() == P::COLON;
   std::size_t next = labelled ? 2 : 0;
   const antlr4::Token* headToken = nullptr;
   if (next < tokens.size() && tokens[next]->getType() == P::IDENT) headToken = tokens[next++];
   std::vector<Word> words;
   words.reserve(tokens.size() - next);
-  for (; next < tokens.size(); ++next)
+  for (; next < tokens.size(); ++next) {
+    if (tokens[next]->getType() == P::COLON)
+      return diag_.error(posOf(tokens[next]),
+                         "unexpected ':': a label is a name followed by ':' at the start of a line");
     words.push_back({tokens[next]->getType(), textOf(src_, tokens[next]), posOf(tokens[next])});
+  }
   if (labelled) {
     const std::string_view label = textOf(src_, tokens[0]);
     const Pos pos = posOf(tokens[0]);
@@ -139,8 +148,10 @@ void Builder::line(P::LineContext* l) {
     }
   }
   if (!headToken) {
-    if (labelled && !words.empty())
+    if (labelled && !words.empty()) {
       diag_.error(words[0].pos, fmt::format("expected an instruction after the label, found '{}'", words[0].text));
+      pendingLabel_ = {};
+    }
     return;
   }
   const std::string_view head = textOf(src_, headToken);
@@ -196,6 +207,7 @@ void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
     ok = integer(w, "an encoder value", v) && ok;
     p.values.push_back(v);
   }
+  if (!ok) p.values.clear();
   if (ok && p.values.size() != motors_.size())
     diag_.error(p.pos, fmt::format("point {} has {} values, expected {} (one per motor: {})", p.name, p.values.size(),
                                    motors_.size(), motorLetters()));
@@ -212,6 +224,7 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
       ok = integer(word, "an encoder value", v) && ok;
       in.values.push_back(v);
     }
+    if (!ok) in.values.clear();  // later checks skip an operand list with errors
     if (ok && w.size() != motors_.size())
       diag_.error(in.pos, fmt::format("{} expects {} values (one per motor: {}), found {}", mnemonic, motors_.size(),
                                       motorLetters(), w.size()));
@@ -247,6 +260,7 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
         ok = integer(word, "a number", v) && ok;
         in.values.push_back(v);
       }
+      if (!ok) in.values.clear();
       return ok;
     }
     case vm::Format::Millis: return seconds(w[0], in.value);
@@ -255,13 +269,18 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
 }
 
 bool Builder::checkName(std::string_view what, std::string_view name, Pos pos) {
+  if (name.size() > kMaxNameLength) {
+    diag_.error(pos, fmt::format("'{}...' is too long for {}: names have at most {} characters", name.substr(0, 16),
+                                 what, kMaxNameLength));
+    return false;
+  }
   if (!isReservedWord(name)) return true;
   diag_.error(pos, fmt::format("'{}' is a reserved word and cannot name {}", name, what));
   return false;
 }
 
+// Sets out.pos only on success: later checks skip operands without one.
 bool Builder::integer(const Word& w, std::string_view what, Value& out) {
-  out.pos = w.pos;
   if (w.type != P::NUMBER) {
     diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, w.text));
     return false;
@@ -278,6 +297,7 @@ bool Builder::integer(const Word& w, std::string_view what, Value& out) {
     return false;
   }
   out.number = v;
+  out.pos = w.pos;
   return true;
 }
 
@@ -322,7 +342,9 @@ bool Builder::name(const Word& w, std::string_view what, std::string_view& out, 
     diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, w.text));
     return false;
   }
-  if (!checkName(what, w.text, w.pos)) return false;
+  // "a variable name" -> "a variable" for checkName's "cannot name ..."
+  const std::string_view noun = what.substr(0, what.size() - (what.ends_with(" name") ? 5 : 0));
+  if (!checkName(noun, w.text, w.pos)) return false;
   out = w.text;
   return true;
 }

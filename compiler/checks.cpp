@@ -214,22 +214,27 @@ std::vector<bool> Checker::reachable(const std::vector<std::uint32_t>& starts) c
 
 void Checker::analyseFlow() {
   const auto& code = program_.instructions;
-  if (code.empty() || diag_.hasErrors()) return;  // targets may be unresolved
+  std::vector<std::uint32_t> subroutines;
+  for (std::size_t i = 0; i < code.size(); ++i)
+    if (code[i].known && code[i].op == vm::Op::Gosub) subroutines.push_back(res_.target[i]);
+  const bool targetsResolved = !diag_.hasErrors();
+  // Reachability needs every jump target; with errors, only the check that
+  // does not: a RETURN in a program without any GOSUB.
+  if (subroutines.empty() || targetsResolved) {
+    const std::vector<bool> inSubroutine = reachable(subroutines);
+    for (std::size_t i = 0; i < code.size(); ++i) {
+      if (!code[i].known || code[i].op != vm::Op::Return || inSubroutine[i]) continue;
+      diag_.error(code[i].pos, subroutines.empty() ? std::string("RETURN without any GOSUB in the program")
+                                                   : std::string("RETURN that no GOSUB can reach"));
+    }
+  }
+  if (code.empty() || !targetsResolved) return;
   const std::vector<bool> live = reachable({0});
-  for (std::size_t i = 0; i < code.size(); ++i) {
-    if (live[i] || (i > 0 && !live[i - 1])) continue;
+  for (std::size_t i = 1; i < code.size(); ++i) {
+    if (live[i] || !live[i - 1]) continue;
     const Instruction& before = code[i - 1];
     diag_.warning(code[i].pos, fmt::format("unreachable code: nothing jumps here and {} on line {} does not continue",
                                            vm::info(before.op).name, before.pos.line));
-  }
-  std::vector<std::uint32_t> subroutines;
-  for (std::size_t i = 0; i < code.size(); ++i)
-    if (code[i].op == vm::Op::Gosub) subroutines.push_back(res_.target[i]);
-  const std::vector<bool> inSubroutine = reachable(subroutines);
-  for (std::size_t i = 0; i < code.size(); ++i) {
-    if (code[i].op != vm::Op::Return || inSubroutine[i]) continue;
-    diag_.error(code[i].pos, subroutines.empty() ? std::string("RETURN without any GOSUB in the program")
-                                                 : std::string("RETURN that no GOSUB can reach"));
   }
 }
 

@@ -32,16 +32,33 @@ std::string render(const Diagnostic& d, const SourceFile* source) {
                                              severityName(d.severity), d.message)
                                : fmt::format("{}: {}: {}\n", d.file, severityName(d.severity), d.message);
   if (!source || d.pos.line == 0 || d.pos.line > source->lineCount()) return out;
-  const std::string_view line = source->line(d.pos.line);
-  out += fmt::format("  {}\n  ", line);
-  // Walk code points up to the column; keep tabs so the caret lines up.
+  const DisplayLine shown = displayLine(source->line(d.pos.line), d.pos.col);
+  out += fmt::format("  {}\n  {}^\n", shown.text, shown.caretIndent);
+  return out;
+}
+
+DisplayLine displayLine(std::string_view line, std::uint32_t caretCol) {
+  constexpr std::uint32_t kWidth = 100;  // columns of context shown at most
+  const std::uint32_t first = caretCol > kWidth / 2 ? caretCol - kWidth / 2 : 1;
+  DisplayLine out;
+  if (first > 1) out.text = "...", out.caretIndent = "   ";
   std::uint32_t col = 1;
-  for (std::size_t i = 0; i < line.size() && col < d.pos.col; ++i) {
-    if ((static_cast<unsigned char>(line[i]) & 0xC0) == 0x80) continue;
-    out += line[i] == '\t' ? '\t' : ' ';
+  for (std::size_t i = 0; i < line.size() && col < first + kWidth;) {
+    std::size_t n = utf8SequenceLength(line, i);
+    const auto c = static_cast<unsigned char>(line[i]);
+    // Control characters and bytes that are not UTF-8 print as U+FFFD, one
+    // column each, so the caret still lines up and no raw bytes reach a
+    // terminal.
+    const bool printable = n > 1 || (n == 1 && (c >= 0x20 || c == '\t') && c != 0x7F);
+    if (n == 0) n = 1;
+    if (col >= first) {
+      out.text += printable ? std::string(line.substr(i, n)) : std::string("\xEF\xBF\xBD");
+      if (col < caretCol) out.caretIndent += c == '\t' ? '\t' : ' ';
+    }
+    i += n;
     ++col;
   }
-  out += "^\n";
+  if (col >= first + kWidth) out.text += "...";
   return out;
 }
 

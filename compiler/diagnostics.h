@@ -39,6 +39,15 @@ class Diagnostics {
   std::size_t errors_ = 0;
 };
 
+/// A source line made safe to print, cut to a window around the caret
+/// column, and the blanks (spaces, or tabs where the line has them) that
+/// put a caret under that column.
+struct DisplayLine {
+  std::string text;
+  std::string caretIndent;
+};
+DisplayLine displayLine(std::string_view line, std::uint32_t caretCol);
+
 /// "file:line:col: error: message", then the source line and a caret under
 /// the column when the source is known.
 std::string render(const Diagnostic& d, const SourceFile* source);

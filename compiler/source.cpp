@@ -17,12 +17,7 @@ std::string_view SourceFile::line(std::uint32_t number) const {
   return std::string_view(text_).substr(start, end - start);
 }
 
-namespace {
-
-// Length of the UTF-8 sequence starting at text[i], or 0 if it is invalid
-// (bad lead byte, bad or missing continuation, overlong form, surrogate,
-// beyond U+10FFFF).
-std::size_t sequenceLength(std::string_view text, std::size_t i) {
+std::size_t utf8SequenceLength(std::string_view text, std::size_t i) {
   const auto b = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
   const unsigned char c = b(i);
   if (c < 0x80) return 1;
@@ -42,12 +37,10 @@ std::size_t sequenceLength(std::string_view text, std::size_t i) {
   return n;
 }
 
-}  // namespace
-
 Utf8Problem findInvalidUtf8(std::string_view text) {
   Pos pos{1, 1};
   for (std::size_t i = 0; i < text.size();) {
-    const std::size_t n = sequenceLength(text, i);
+    const std::size_t n = utf8SequenceLength(text, i);
     if (n == 0) return {true, pos, static_cast<unsigned char>(text[i])};
     if (text[i] == '\n') pos = {pos.line + 1, 1};
     else ++pos.col;

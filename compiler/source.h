@@ -41,4 +41,9 @@ struct Utf8Problem {
 };
 Utf8Problem findInvalidUtf8(std::string_view text);
 
+/// Length of the valid UTF-8 sequence starting at text[i], or 0 if the
+/// bytes there are not valid UTF-8 (bad lead or continuation byte,
+/// overlong form, surrogate, beyond U+10FFFF).
+std::size_t utf8SequenceLength(std::string_view text, std::size_t i);
+
 }  // namespace rs::compiler

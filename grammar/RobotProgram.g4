@@ -14,13 +14,13 @@ grammar RobotProgram;
 
 program : line (NEWLINE line)* EOF ;
 
-// A line's words are plain tokens, with no rule or label per operand: the
-// AST builder walks them in order. The first word is a label when a colon
-// follows it ("loop: ADD N 1"), else the head word. (Token labels such as
-// `head=IDENT` would make the generated code dynamic_cast on every word;
-// an operand rule would add a tree node per word. Both were measured.)
-// Written this way the rule is LL(1): no adaptive prediction per line.
-line    : (IDENT (COLON IDENT?)? (NUMBER | IDENT | CMP)*)? ;
+// A line is a sequence of words. Which words may stand where (a label is
+// a name followed by ':' at the start of a line, then a head word, then
+// operands) is checked when the parse tree becomes the AST: there a
+// message can name exactly what was expected, and an error never costs
+// more than its own line. (A rule per word would add a tree node per
+// word, token labels a dynamic_cast per word; both were measured.)
+line    : (IDENT | NUMBER | CMP | COLON)* ;
 
 IDENT   : [A-Za-z_] [A-Za-z0-9_]* ;
 NUMBER  : [+-]? [0-9]+ ('.' [0-9]+)? ;

@@ -107,7 +107,9 @@ RunOutcome Interpreter::run(const RunLimits& limits, StepObserver* observer) {
         machineCall = false;
         break;
       case Op::Add:
-        if (__builtin_add_overflow(vars[in.b], in.c, &vars[in.b]))
+        if (std::int32_t sum; !__builtin_add_overflow(vars[in.b], in.c, &sum))
+          vars[in.b] = sum;
+        else
           return stop(StopReason::RuntimeError,
                       fmt::format("ADD overflows variable {} (values are 32-bit)", image_.variables[in.b]), at, steps);
         machineCall = false;

@@ -31,8 +31,11 @@ void TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
 void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
   const vm::Image& im = vm.image();
   if (!headerDone_) {
-    out_ << fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<30}  {:<8}  {}\n", "time", "instr", "line", "instruction",
-                        "motors", "outputs", "changed");
+    // Wide enough for every motor at the longest value its range allows.
+    for (const vm::MotorSpec& m : im.motors)
+      motorsWidth_ += 3 + std::max(fmt::formatted_size("{}", m.min), fmt::formatted_size("{}", m.max));
+    out_ << fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {:<8}  {}\n", "time", "instr", "line", "instruction",
+                        "motors", motorsWidth_, "outputs", "changed");
     headerDone_ = true;
   }
   std::string motors;
@@ -41,8 +44,8 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
   const vm::Instr& in = im.code[index];
   const std::string changed =
       writesVariable(in) ? fmt::format("{}={}", im.variables[in.b], vm.variables()[in.b]) : std::string();
-  std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<30}  {}  {}", vm::formatSeconds(vm.machine().now()),
-                                index + 1, im.lines[index], vm::instructionText(im, index), motors,
+  std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}", vm::formatSeconds(vm.machine().now()),
+                                index + 1, im.lines[index], vm::instructionText(im, index), motors, motorsWidth_,
                                 lampText(vm.machine().outputs()), changed);
   while (!row.empty() && row.back() == ' ') row.pop_back();
   out_ << row << '\n';

@@ -21,6 +21,7 @@ class TraceWriter final : public vm::StepObserver {
   std::ostream& out_;
   TraceFormat format_;
   bool headerDone_ = false;
+  std::size_t motorsWidth_ = 0;
 };
 
 /// "1.3....." : the digit of each line that is ON, '.' for OFF.

@@ -1,0 +1,330 @@
+#include "bench/benchmarks.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string_view>
+
+#include "bench/generate.h"
+#include "bench/timing.h"
+#include "cli/lib/program_file.h"
+#include "compiler/compiler.h"
+#include "runtime/sim_machine.h"
+#include "vm/image_file.h"
+#include "vm/interpreter.h"
+#include "vm/verify.h"
+
+namespace rs::bench {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr long kLoopIterations = 10'000'000;
+
+// --- printing ----------------------------------------------------------------
+
+void progress(std::string_view what) {
+  fmt::print("  ... {}\n", what);
+  std::fflush(stdout);
+}
+
+std::string millis(double seconds) { return fmt::format("{:9.2f} ms", seconds * 1e3); }
+
+// Wall best and median, then CPU best (user + system) in brackets.
+void row(std::string_view what, const Samples& s, std::string_view extra = {}) {
+  fmt::print("  {:<40} best {}  median {}  [cpu {}]{}{}\n", what, millis(s.best()), millis(s.median()),
+             millis(s.cpuBest()), extra.empty() ? "" : "  ", extra);
+}
+
+// "0.85 (target <= 1: met)" or "4.20 (target <= 3: missed by 40%)".
+std::string verdict(double ratio, double target) {
+  const std::string outcome =
+      ratio <= target ? std::string("met") : fmt::format("missed by {:.0f}%", (ratio / target - 1) * 100);
+  return fmt::format("{:.2f} (target <= {}: {})", ratio, target, outcome);
+}
+
+json toJson(const Samples& s) {
+  return {{"best_s", s.best()},
+          {"median_s", s.median()},
+          {"cpu_best_s", s.cpuBest()},
+          {"samples_s", s.seconds},
+          {"cpu_samples_s", s.cpuSeconds}};
+}
+
+// --- helpers -------------------------------------------------------------------
+
+std::string writeInput(const Options& options, const std::string& name, const std::string& text) {
+  std::filesystem::create_directories(options.workDir);
+  const std::string path = (std::filesystem::path(options.workDir) / name).string();
+  std::ofstream file(path, std::ios::binary | std::ios::trunc);
+  file.write(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!file.flush()) throw std::runtime_error("cannot write " + path);
+  return path;
+}
+
+vm::Image compileOrThrow(const compiler::SourceFile& source, const compiler::Target& target) {
+  compiler::CompileResult result = compiler::compile(source, target);
+  if (!result.ok()) {
+    const std::string first = result.diagnostics.empty() ? "no diagnostic" : result.diagnostics.front().message;
+    throw std::runtime_error(fmt::format("{} did not compile: {}", source.name(), first));
+  }
+  return std::move(*result.image);
+}
+
+std::size_t slotOf(const vm::Image& image, std::string_view name) {
+  for (std::size_t i = 0; i < image.variables.size(); ++i)
+    if (image.variables[i] == name) return i;
+  throw std::runtime_error(fmt::format("no variable {} in the image", name));
+}
+
+bool canRun(const std::vector<std::string>& argv) {
+  try {
+    return runProcess(argv).exitCode == 0;
+  } catch (const std::runtime_error&) {
+    return false;
+  }
+}
+
+// --- 1. VM dispatch ----------------------------------------------------------------
+
+// Times Interpreter::run alone (compiled and verified once, a fresh machine
+// per run) and checks that the loop really counted to the end.
+Measurement vmLoop(const vm::Image& image, std::uint64_t& steps) {
+  return [&image, &steps, n = slotOf(image, "N")] {
+    vm::RunLimits limits;
+    limits.maxSteps = 3 * static_cast<std::uint64_t>(kLoopIterations);
+    runtime::SimMachine machine(image.motors, runtime::Stimuli{});
+    vm::Interpreter interpreter(image, machine);
+    const Stopwatch clock;
+    const vm::RunOutcome outcome = interpreter.run(limits);
+    const Sample sample = clock.stop();
+    if (!outcome.ok() || interpreter.variables()[n] != kLoopIterations)
+      throw std::runtime_error(
+          fmt::format("the VM loop stopped early ({}): N = {}", outcome.message, interpreter.variables()[n]));
+    steps = outcome.steps;
+    return sample;
+  };
+}
+
+}  // namespace
+
+json benchDispatch(const Options& options) {
+  fmt::print("\n[1] VM dispatch: SET/ADD/JMPVAR loop, {} iterations\n", kLoopIterations);
+  const compiler::SourceFile source("dispatch.rsp",
+                                    fmt::format("SET N 0\nloop: ADD N 1\nJMPVAR N < {} loop\nEND\n", kLoopIterations));
+  const vm::Image image = compileOrThrow(source, cli::defaultTarget());
+  if (const vm::VerifyError e = vm::verify(image); !e.message.empty())
+    throw std::runtime_error("the dispatch image does not verify: " + e.message);
+
+  std::uint64_t steps = 0;
+  std::vector<Measurement> runs{vmLoop(image, steps)};
+  const bool lua = canRun({options.lua, "-v"});
+  if (lua) {
+    runs.push_back(
+        processMeasurement({options.lua, writeInput(options, "dispatch.lua", luaCountedLoop(kLoopIterations))}));
+    runs.push_back(processMeasurement({options.lua, writeInput(options, "empty.lua", "")}));
+  }
+  progress(fmt::format("interleaved, 1 warm-up + {} rounds: Interpreter::run in-process{}", options.reps,
+                       lua ? fmt::format(", {0} loop, {0} empty script (processes)", options.lua) : ""));
+  const std::vector<Samples> s = interleave(runs, options.reps);
+  const Samples& ours = s[0];
+  row("robotsim VM (in-process run)", ours,
+      fmt::format("{} steps, {:.2f} ns/instruction", steps, ours.best() * 1e9 / static_cast<double>(steps)));
+  json out = {{"iterations", kLoopIterations}, {"steps", steps}, {"ours", toJson(ours)}};
+  if (!lua) {
+    fmt::print("  Lua comparison skipped: cannot run {}\n", options.lua);
+    out["lua_skipped"] = true;
+    return out;
+  }
+  const Samples& luaRaw = s[1];
+  const Samples& luaEmpty = s[2];
+  const double netBest = luaRaw.best() - luaEmpty.best();
+  const double netMedian = luaRaw.median() - luaEmpty.median();
+  row("lua5.4 loop (whole process, raw)", luaRaw);
+  row("lua5.4 empty script (startup)", luaEmpty);
+  fmt::print("  {:<40} best {}  median {}\n", "lua5.4 loop minus startup", millis(netBest), millis(netMedian));
+  const double ratio = ours.best() / netBest;
+  const double ratioRaw = ours.best() / luaRaw.best();
+  fmt::print("  ratio ours / Lua, startup subtracted (best) {}\n", verdict(ratio, 1));
+  fmt::print("  ratio ours / Lua, raw process (best)        {:.2f}\n", ratioRaw);
+  fmt::print("  ratio ours / Lua, startup subtracted (median) {:.2f}\n", ours.median() / netMedian);
+  const double ratioCpu = ours.cpuBest() / (luaRaw.cpuBest() - luaEmpty.cpuBest());
+  fmt::print("  ratio ours / Lua, startup subtracted (CPU)  {:.2f}\n", ratioCpu);
+  out["lua_raw"] = toJson(luaRaw);
+  out["lua_empty"] = toJson(luaEmpty);
+  out["lua_corrected"] = {{"best_s", netBest}, {"median_s", netMedian}};
+  out["ratio_corrected"] = ratio;
+  out["ratio_corrected_median"] = ours.median() / netMedian;
+  out["ratio_raw"] = ratioRaw;
+  out["ratio_corrected_cpu"] = ratioCpu;
+  out["target_ratio"] = 1.0;
+  out["target_met"] = ratio <= 1.0;
+  return out;
+}
+
+namespace {
+
+// --- 2. compile throughput ----------------------------------------------------------
+
+struct SizeResult {
+  std::string label;
+  GeneratedProgram program;
+  std::string path;
+  Samples inProcess;
+  Samples process;
+  long maxRssKiB = 0;
+  std::size_t imageBytes = 0;
+};
+
+std::vector<std::string> compileCommand(const Options& options, const SizeResult& r) {
+  const auto out = std::filesystem::path(options.workDir) / fmt::format("compile-{}.rsb", r.label);
+  return {options.robotsim, "compile", r.path, "-o", out.string()};
+}
+
+// compile() in-process (source already in memory) and `robotsim compile`
+// as a process, interleaved.
+SizeResult measureSize(const Options& options, std::string label, std::size_t instructions) {
+  SizeResult r{std::move(label), robotProgram(instructions), {}, {}, {}, 0, 0};
+  r.path = writeInput(options, fmt::format("compile-{}.rsp", r.label), r.program.text);
+  const compiler::SourceFile source(r.path, r.program.text);
+  const compiler::Target target = cli::defaultTarget();
+  const vm::Image image = compileOrThrow(source, target);
+  if (image.code.size() != instructions)
+    throw std::runtime_error(
+        fmt::format("{}: {} instructions compiled, expected {}", r.path, image.code.size(), instructions));
+  r.imageBytes = vm::writeImage(image).size();
+
+  const Measurement inProcess = [&] {
+    const Stopwatch clock;
+    const compiler::CompileResult result = compiler::compile(source, target);
+    const Sample sample = clock.stop();
+    if (!result.ok()) throw std::runtime_error(r.path + " stopped compiling");
+    return sample;  // the image is freed after the clock stopped
+  };
+  progress(
+      fmt::format("{} instructions ({} lines, {:.1f} MB), 1 warm-up + {} rounds: compile() in-process, "
+                  "robotsim compile (process)",
+                  instructions, r.program.lines, static_cast<double>(r.program.text.size()) / 1e6, options.reps));
+  const std::vector<Samples> s =
+      interleave({inProcess, processMeasurement(compileCommand(options, r), &r.maxRssKiB)}, options.reps);
+  r.inProcess = s[0];
+  r.process = s[1];
+  return r;
+}
+
+std::string perSecond(std::size_t lines, const Samples& s) {
+  return fmt::format("{:.2f} M lines/s", static_cast<double>(lines) / s.best() / 1e6);
+}
+
+json sizeJson(const SizeResult& r) {
+  const double lines = static_cast<double>(r.program.lines);
+  return {
+      {"label", r.label},
+      {"instructions", r.program.instructions},
+      {"lines", r.program.lines},
+      {"bytes", r.program.text.size()},
+      {"in_process", toJson(r.inProcess)},
+      {"in_process_lines_per_s", lines / r.inProcess.best()},
+      {"process", toJson(r.process)},
+      {"process_lines_per_s", lines / r.process.best()},
+      {"process_max_rss_kib", r.maxRssKiB},
+      {"image_bytes", r.imageBytes},
+      {"image_bytes_per_instruction", static_cast<double>(r.imageBytes) / static_cast<double>(r.program.instructions)}};
+}
+
+}  // namespace
+
+json benchCompile(const Options& options) {
+  fmt::print("\n[2] Compile throughput: generated programs, every instruction kind\n");
+  std::vector<SizeResult> sizes;
+  sizes.push_back(measureSize(options, "10k", 10'000));
+  sizes.push_back(measureSize(options, "100k", 100'000));
+  sizes.push_back(measureSize(options, "1M", 1'000'000));
+
+  json out = {{"sizes", json::array()}};
+  for (const SizeResult& r : sizes) {
+    row(fmt::format("compile() {:>7} instr, {:>7} lines", r.program.instructions, r.program.lines), r.inProcess,
+        perSecond(r.program.lines, r.inProcess));
+    row(fmt::format("robotsim compile {:>7} instr (process)", r.program.instructions), r.process,
+        perSecond(r.program.lines, r.process));
+    out["sizes"].push_back(sizeJson(r));
+  }
+  const auto growth = [&](const SizeResult& big, const SizeResult& small, bool process) {
+    return process ? big.process.best() / small.process.best() : big.inProcess.best() / small.inProcess.best();
+  };
+  fmt::print(
+      "  growth (best, linear = 10): in-process 100k/10k {:.1f}, 1M/100k {:.1f}; "
+      "process 100k/10k {:.1f}, 1M/100k {:.1f}\n",
+      growth(sizes[1], sizes[0], false), growth(sizes[2], sizes[1], false), growth(sizes[1], sizes[0], true),
+      growth(sizes[2], sizes[1], true));
+  out["growth"] = {{"in_process_100k_over_10k", growth(sizes[1], sizes[0], false)},
+                   {"in_process_1m_over_100k", growth(sizes[2], sizes[1], false)},
+                   {"process_100k_over_10k", growth(sizes[1], sizes[0], true)},
+                   {"process_1m_over_100k", growth(sizes[2], sizes[1], true)}};
+
+  const SizeResult& big = sizes[2];
+  const double perInstr = static_cast<double>(big.imageBytes) / static_cast<double>(big.program.instructions);
+  fmt::print("  image: {:.1f} bytes per instruction ({} bytes for {} instructions)\n", perInstr, big.imageBytes,
+             big.program.instructions);
+  fmt::print("  peak RSS of robotsim compile on {} instructions: {:.1f} MiB\n", big.program.instructions,
+             static_cast<double>(big.maxRssKiB) / 1024);
+  out["image_bytes_per_instruction_1m"] = perInstr;
+  out["compile_1m_max_rss_kib"] = big.maxRssKiB;
+
+  const SizeResult& mid = sizes[1];
+  if (!canRun({options.luac, "-v"})) {
+    fmt::print("  luac comparison skipped: cannot run {}\n", options.luac);
+    out["luac_skipped"] = true;
+    return out;
+  }
+  const std::string chunk = writeInput(options, "compile-100k.lua", luaChunk(mid.program.lines));
+  progress(fmt::format("1 warm-up + {} rounds: robotsim compile 100k and {} -p on {} lines of Lua (processes)",
+                       options.reps, options.luac, mid.program.lines));
+  const std::vector<Samples> s =
+      interleave({processMeasurement(compileCommand(options, mid)), processMeasurement({options.luac, "-p", chunk})},
+                 options.reps);
+  row(fmt::format("robotsim compile {:>7} lines (process)", mid.program.lines), s[0],
+      perSecond(mid.program.lines, s[0]));
+  row(fmt::format("luac5.4 -p       {:>7} lines (process)", mid.program.lines), s[1],
+      perSecond(mid.program.lines, s[1]));
+  const double ratio = s[0].best() / s[1].best();
+  fmt::print("  ratio robotsim compile / luac -p (best)   {}\n", verdict(ratio, 3));
+  fmt::print("  ratio robotsim compile / luac -p (median) {:.2f}\n", s[0].median() / s[1].median());
+  fmt::print("  ratio robotsim compile / luac -p (CPU)    {:.2f}\n", s[0].cpuBest() / s[1].cpuBest());
+  out["luac_pair"] = {{"lines", mid.program.lines}, {"robotsim", toJson(s[0])}, {"luac", toJson(s[1])}};
+  out["ratio_100k_over_luac"] = ratio;
+  out["ratio_100k_over_luac_median"] = s[0].median() / s[1].median();
+  out["ratio_100k_over_luac_cpu"] = s[0].cpuBest() / s[1].cpuBest();
+  out["target_ratio"] = 3.0;
+  out["target_met"] = ratio <= 3.0;
+  return out;
+}
+
+json benchStartup(const Options& options) {
+  fmt::print("\n[3] Startup: robotsim check, whole process\n");
+  const GeneratedProgram program = robotProgramOfLines(1000);
+  const std::string path = writeInput(options, "startup-1000.rsp", program.text);
+  progress(
+      fmt::format("1 warm-up + {} rounds: robotsim help (the process floor), robotsim check on {} lines "
+                  "({} instructions)",
+                  options.reps, program.lines, program.instructions));
+  const std::vector<Samples> s = interleave(
+      {processMeasurement({options.robotsim, "help"}), processMeasurement({options.robotsim, "check", path})},
+      options.reps);
+  const Samples& floor = s[0];
+  const Samples& check = s[1];
+  row("robotsim help", floor);
+  row(fmt::format("robotsim check {} lines", program.lines), check);
+  const double ms = check.best() * 1e3;
+  fmt::print("  robotsim check, best {:.2f} ms (target <= 20 ms: {})\n", ms,
+             ms <= 20 ? std::string("met") : fmt::format("missed by {:.0f}%", (ms / 20 - 1) * 100));
+  return {{"lines", program.lines}, {"instructions", program.instructions},
+          {"help", toJson(floor)},  {"check", toJson(check)},
+          {"target_s", 0.020},      {"target_met", check.best() <= 0.020}};
+}
+
+}  // namespace rs::bench

@@ -1,0 +1,35 @@
+// The four benchmarks of `make bench`. Each prints readable lines to stdout
+// (a progress line before every long measurement) and fills its part of the
+// machine-readable summary. None of them is a test: a missed target is
+// reported, not failed; a measurement that cannot be trusted (a program
+// that did not compile, a loop that did not count) throws.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace rs::bench {
+
+struct Options {
+  int reps = 5;
+  std::string robotsim = "robotsim";  // the CLI binary
+  std::string lua = "lua5.4";
+  std::string luac = "luac5.4";
+  std::string workDir = "bench-work";  // generated inputs go here
+  std::string jsonPath;                // empty: no summary file
+};
+
+/// VM dispatch: a 10,000,000-iteration SET/ADD/JMPVAR loop run in-process,
+/// against the same loop in a `lua5.4` process (startup subtracted).
+nlohmann::json benchDispatch(const Options& options);
+
+/// Compile throughput at 10k, 100k and 1M instructions, in-process and as a
+/// `robotsim compile` process, and `luac5.4 -p` on a Lua file of the same
+/// line count as the 100k program. Also image bytes per instruction and the
+/// peak RSS of compiling 1M instructions.
+nlohmann::json benchCompile(const Options& options);
+
+/// Startup: `robotsim check` on a 1,000-line program, whole process.
+nlohmann::json benchStartup(const Options& options);
+
+}  // namespace rs::bench

@@ -1,0 +1,311 @@
+// The example programs (examples/*.rsp): each one runs in-process through
+// the `robotsim run` command and its JSON summary must match values worked
+// out BY HAND from the program text and the default robot's motor speeds
+// (stdlib/default_robot.cpp):
+//
+//   motor  range           speed         so: 1 s is ...
+//   E      -1000..1000     400 u/s       400 units
+//   D       -550..550      400 u/s       400 units
+//   C       -350..350      300 u/s       300 units
+//   B       -700..700      500 u/s       500 units
+//   A          0..120      200 u/s       200 units (open -> closed: 0.6 s)
+//
+// A move lasts as long as its slowest motor: ceil(|delta| * 10^6 / speed)
+// microseconds. The derivation of every expected value is in the comments.
+// Also checked: together the examples use all 20 instructions.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/lib/app.h"
+#include "cli/lib/program_file.h"
+#include "compiler/compiler.h"
+#include "vm/opcodes.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+const fs::path kExamples = fs::path(ROBOTSIM_SOURCE_DIR) / "examples";
+
+struct Expected {
+  std::int64_t micros;                                     // simulated time
+  std::uint64_t steps;                                     // instructions executed
+  std::array<int, 5> motors;                               // E D C B A
+  std::array<bool, 8> outputs;                             // output 1 first
+  std::array<bool, 8> inputs;                              // input 1 first
+  std::vector<std::pair<std::string, int>> variables;      // in slot order
+};
+
+struct Result {
+  int exit = -1;
+  std::string out;
+  std::string err;
+};
+
+Result robotsim(std::vector<std::string> args) {
+  args.insert(args.begin(), "robotsim");
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  Result r;
+  r.exit = rs::cli::runCommand(static_cast<int>(argv.size()), argv.data(), out, err);
+  r.out = out.str();
+  r.err = err.str();
+  return r;
+}
+
+// `robotsim run examples/NAME.rsp --format=json [--stimuli examples/STIM]`
+Json runExample(const std::string& name, const std::string& stimuli = {}) {
+  std::vector<std::string> args{"run", (kExamples / name).string(), "--format=json"};
+  if (!stimuli.empty()) {
+    args.push_back("--stimuli");
+    args.push_back((kExamples / stimuli).string());
+  }
+  const Result r = robotsim(args);
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit == rs::cli::kOk);
+  REQUIRE(r.err.empty());  // no warnings either: examples are clean
+  return Json::parse(r.out);
+}
+
+void checkSummary(const Json& j, const Expected& e) {
+  CAPTURE(j.dump());
+  CHECK(j.at("status") == "ok");
+  CHECK(j.at("diagnostics").empty());
+  // The summary prints seconds as a double; the clock counts microseconds.
+  CHECK(std::llround(j.at("time").get<double>() * 1e6) == e.micros);
+  CHECK(j.at("steps").get<std::uint64_t>() == e.steps);
+  const std::array<const char*, 5> letters{"E", "D", "C", "B", "A"};
+  REQUIRE(j.at("motors").size() == letters.size());
+  for (std::size_t i = 0; i < letters.size(); ++i) {
+    INFO("motor " << letters[i]);
+    CHECK(j.at("motors").at(letters[i]).get<int>() == e.motors[i]);
+  }
+  for (std::size_t i = 0; i < 8; ++i) {
+    INFO("line " << i + 1);
+    CHECK(j.at("outputs").at(i).get<bool>() == e.outputs[i]);
+    CHECK(j.at("inputs").at(i).get<bool>() == e.inputs[i]);
+  }
+  const Json& vars = j.at("variables");
+  REQUIRE(vars.size() == e.variables.size());
+  for (const auto& [name, value] : e.variables) {
+    INFO("variable " << name);
+    REQUIRE(vars.contains(name));
+    CHECK(vars.at(name).get<int>() == value);
+  }
+}
+
+constexpr std::array<bool, 8> kNone{};
+
+std::vector<fs::path> exampleSources() {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(kExamples))
+    if (entry.path().extension() == ".rsp") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace
+
+TEST_CASE("example first_moves: absolute and relative moves", "[examples]") {
+  // MOVETO 400 200 0 0 0       from 0: E 400/400 = 1 s, D 200/400 = 0.5 s   -> 1 s
+  // MOVETO 400 200 -300 500 0  C 300/300 = 1 s, B 500/500 = 1 s             -> 1 s   (2)
+  // MOVE -800 0 0 0 120        E 400 -> -400: 800/400 = 2 s, A 120/200 = 0.6 -> 2 s   (4)
+  // MOVE 0 -400 300 -500 -120  D 200 -> -200: 1 s; C -300 -> 0: 1 s;
+  //                            B 500 -> 0: 1 s; A 120 -> 0: 0.6 s          -> 1 s   (5)
+  // MOVE 0 0 100 0 0           C 100/300 s = 333333.3 us, rounded up to 333334 us
+  // END                        total 5 s + 333334 us; 6 instructions
+  // Final: E -400, D 200 - 400 = -200, C -300 + 300 + 100 = 100, B 0, A 0.
+  checkSummary(runExample("first_moves.rsp"), {5'333'334, 6, {-400, -200, 100, 0, 0}, kNone, kNone, {}});
+}
+
+TEST_CASE("example counted_loop: SET, ADD and JMPVAR with <, > and =", "[examples]") {
+  // Loop 1 (instr 2..4) runs 5 times: COUNT 1..5, leaves when COUNT = 5.
+  //   Each MOVE 100 0 0 0 0: E 100/400 = 0.25 s  -> 1.25 s, E = 500.
+  //   Steps: SET (1) + 5 * 3 = 16.
+  // Loop 2 (down: MOVE, ADD, JMPVAR >) runs 5 times: COUNT 4..0.
+  //   Each MOVE 0 0 0 -100 0: B 100/500 = 0.2 s  -> 1.0 s, B = -500.
+  //   Steps: 5 * 3 = 15 (31).
+  // SET POS 500: 1 step (32).
+  // Loop 3 (back: JMPVAR =, MOVE, ADD, GOTO): POS 500 -> 250 -> 0, two full
+  //   passes of 4 steps, then the test jumps to done: 9 steps (41).
+  //   Each MOVE -250 0 0 0 0: E 250/400 = 0.625 s -> 1.25 s, E = 0.
+  // END (42). Time 1.25 + 1.0 + 1.25 = 3.5 s.
+  // Variables in order of first appearance: COUNT, POS.
+  checkSummary(runExample("counted_loop.rsp"),
+               {3'500'000, 42, {0, 0, 0, -500, 0}, kNone, kNone, {{"COUNT", 0}, {"POS", 0}}});
+}
+
+TEST_CASE("example nested_subroutines: GOSUB three levels deep", "[examples]") {
+  // One "serve" (GOSUB serve included):
+  //   GOSUB serve, GOSUB pick, MOVE C -150 (0.5 s), GOSUB grip, MOVE A +120
+  //   (0.6 s), ADD GRIPS, RETURN, MOVE C +150 (0.5 s), RETURN, MOVE D +200
+  //   (0.5 s), GOSUB drop, MOVE C -150 (0.5 s), MOVE A -120 (0.6 s), MOVE C
+  //   +150 (0.5 s), RETURN, MOVE D -200 (0.5 s), RETURN
+  //   = 17 steps, 0.5+0.6+0.5+0.5+0.5+0.6+0.5+0.5 = 4.2 s; every motor ends
+  //   where it started.
+  // Main: serve (17, 4.2 s), MOVE E +400 (1 step, 400/400 = 1 s), serve
+  //   (17, 4.2 s), HRDHOME from E=400 (1 step, 1 s), END (1 step).
+  // Steps 17 + 1 + 17 + 1 + 1 = 37; time 4.2 + 1 + 4.2 + 1 = 10.4 s.
+  // GRIPS counts one grip per serve: 2.
+  checkSummary(runExample("nested_subroutines.rsp"), {10'400'000, 37, {0, 0, 0, 0, 0}, kNone, kNone, {{"GRIPS", 2}}});
+}
+
+TEST_CASE("example soft_home: SETSOFT and GOSOFT", "[examples]") {
+  // GOSOFT before any SETSOFT: soft home 0 0 0 0 0 = where we are: 0 s.
+  // SETSOFT 200 -100 150 0 0: no motion, 0 s.
+  // GOSOFT: E 200/400 = 0.5, D 100/400 = 0.25, C 150/300 = 0.5      -> 0.5 s
+  // MOVEP BIN_A (600 -100 150 250 0): E 400/400 = 1, B 250/500 = 0.5 -> 1 s
+  // GOSOFT back: same distances                                     -> 1 s
+  // MOVEP BIN_B (-200 -300 150 -250 0): E 400 -> 1, D 200 -> 0.5,
+  //   B 250 -> 0.5                                                  -> 1 s
+  // GOSOFT back                                                     -> 1 s
+  // SETSOFT -200 100 150 0 0: 0 s.
+  // GOSOFT from (200 -100 150 0 0): E 400 -> 1, D 200 -> 0.5        -> 1 s
+  // HRDHOME from (-200 100 150 0 0): E 0.5, D 0.25, C 0.5           -> 0.5 s
+  // END. Time 0.5 + 4 * 1 + 1 + 0.5 = 6 s; 11 instructions, no variables.
+  checkSummary(runExample("soft_home.rsp"), {6'000'000, 11, {0, 0, 0, 0, 0}, kNone, kNone, {}});
+}
+
+TEST_CASE("example workcell_view: WINDOW, VIEW, DELAY, RESET, HRDHOME", "[examples]") {
+  // WINDOW, VIEW: no time.
+  // MOVETO 800 -400 0 0 0: E 800/400 = 2 s, D 400/400 = 1 s       -> 2 s
+  // DELAY 1.5 (3.5), VIEW (0), DELAY 0.25 (3.75)
+  // RESET: motors back to 0 instantly, no time (3.75)
+  // DELAY 1 (4.75)
+  // MOVETO 0 300 -300 0 120: D 300/400 = 0.75, C 300/300 = 1,
+  //   A 120/200 = 0.6                                              -> 1 s (5.75)
+  // HRDHOME: the same distances back                               -> 1 s (6.75)
+  // WINDOW, VIEW, END: no time. 13 instructions, each runs once.
+  checkSummary(runExample("workcell_view.rsp"), {6'750'000, 13, {0, 0, 0, 0, 0}, kNone, kNone, {}});
+}
+
+TEST_CASE("example sensor_branching: JMPIN polling and branching", "[examples]") {
+  // Stimuli: input 3 ON at 0, OFF at 4, ON at 8; input 1 ON at 1, 5 and 8,
+  // OFF whenever output 1 turns ON; input 4 (STOP) ON at 14.
+  // Poll = JMPIN 4, JMPIN 1, DELAY 0.5, GOTO: 4 steps, 0.5 s.
+  // Take = JMPIN 4, JMPIN 1 (jumps): 2 steps.
+  // Large part: MOVEP PICK, MOVE close, OUTSIG ON, OUTSIG OFF, JMPIN 3
+  //   (jumps), MOVEP LARGE_BIN, ADD, MOVE open, GOTO = 9 steps.
+  // Small part: ... JMPIN 3 (falls through), MOVEP SMALL_BIN, ADD, GOTO
+  //   release, MOVE open, GOTO = 10 steps.
+  // Moves: PICK from home: D 300/400 = 0.75, C 200/300 = 0.67  -> 0.75 s
+  //        PICK from a bin (+-500 -200 0 0 0): E 500/400 = 1.25,
+  //          D 500/400 = 1.25, C 0.67                         -> 1.25 s
+  //        PICK (A=120) to a bin: the same                    -> 1.25 s
+  //        close / open the gripper: 120/200                  -> 0.6 s
+  //        HRDHOME from LARGE_BIN: E 1.25, D 0.5              -> 1.25 s
+  // t=0    poll (4 steps) -> 0.5; poll (8) -> 1.0
+  // t=1.0  part 1 there (ON at 1): take (10); large: 0.75 + 0.6 + 1.25 + 0.6
+  //        = 3.2 s -> 4.2 (19 steps); input 1 OFF at 2.35.
+  // t=4.2  poll (23) -> 4.7; poll (27) -> 5.2
+  // t=5.2  part 2 (ON at 5, small since 4): take (29); small: 1.25 + 0.6 +
+  //        1.25 + 0.6 = 3.7 s -> 8.9 (39 steps)
+  // t=8.9  part 3 (ON at 8, large): take (41); large: 1.25 + 0.6 + 1.25 +
+  //        0.6 = 3.7 s -> 12.6 (50 steps)
+  // t=12.6 poll (54) -> 13.1; poll (58) -> 13.6; poll (62) -> 14.1
+  // t=14.1 STOP seen: JMPIN 4 jumps (63); HRDHOME 1.25 s -> 15.35 (64); END (65)
+  // Final inputs: 1 OFF (taken), 3 ON (since 8), 4 ON. Outputs all OFF.
+  checkSummary(runExample("sensor_branching.rsp", "sensor_branching.stim"),
+               {15'350'000, 65, {0, 0, 0, 0, 0}, kNone, {false, false, true, true, false, false, false, false},
+                {{"SMALL_PARTS", 1}, {"LARGE_PARTS", 2}}});
+}
+
+TEST_CASE("example pick_and_place: WAITFOR/OUTSIG handshakes (the README demo)", "[examples]") {
+  // Stimuli: input 1 ON 1.5 s after output 1 turns ON, OFF when output 2
+  // turns ON; input 2 ON at 0, OFF when output 3 turns ON and ON again 8 s
+  // later.
+  // Moves: MOVEP ABOVE_PICK from home (400 -200 0 250 0): E 1 s, D 0.5,
+  //          B 0.5 -> 1 s; from ABOVE_PRESS: E 800/400 = 2 s -> 2 s
+  //        MOVEP ABOVE_PRESS (-400 200 0 -250 120) from ABOVE_PICK with A=120:
+  //          E 800/400 = 2 s, D 1 s, B 1 s -> 2 s
+  //        MOVE C -+150: 0.5 s; gripper 120: 0.6 s.
+  // Cycle k starts at s_k (OUTSIG 1 ON): WAITFOR 1 -> s_k + 1.5;
+  //   pick: MOVEP + 0.5 + 0.6 + 0.5; MOVEP ABOVE_PRESS 2 s;
+  //   WAITFOR 2 ON; place 0.5 + 0.6 + 0.5 = 1.6 s; OUTSIG 3 ON at p_k.
+  // Cycle 1: s=0, part at 1.5, ABOVE_PICK 2.5, lifted 4.1, over the press
+  //   6.1, press ready (since 0), placed p1 = 7.7; press ready again 15.7.
+  // Cycle 2: s=7.7, part 9.2, ABOVE_PICK 11.2, lifted 12.8, press 14.8,
+  //   waits until 15.7, placed p2 = 17.3; press ready again 25.3.
+  // Cycle 3: s=17.3, part 18.8, ABOVE_PICK 20.8, lifted 22.4, press 24.4,
+  //   waits until 25.3, placed p3 = 26.9; press ready again 34.9.
+  // HRDHOME from ABOVE_PRESS (A=0): E 400/400 = 1 s -> 27.9;
+  // WAITFOR 2 ON -> 34.9; END.
+  // Steps: SET, HRDHOME (2) + 3 cycles of instructions 3..20 (18 each: 54)
+  //   + HRDHOME, WAITFOR, END (3) = 59.
+  // Final: motors 0, outputs all OFF, input 1 OFF (the third part was taken
+  //   at 21.9 and the conveyor was not restarted), input 2 ON; PARTS = 3.
+  checkSummary(runExample("pick_and_place.rsp", "pick_and_place.stim"),
+               {34'900'000, 59, {0, 0, 0, 0, 0}, kNone, {false, true, false, false, false, false, false, false},
+                {{"PARTS", 3}}});
+}
+
+TEST_CASE("example pick_and_place: the readable text summary of the demo", "[examples]") {
+  const Result r = robotsim({"run", (kExamples / "pick_and_place.rsp").string(), "--stimuli",
+                             (kExamples / "pick_and_place.stim").string()});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit == rs::cli::kOk);
+  CHECK(r.err.empty());
+  CHECK(r.out.find(": finished\n") != std::string::npos);
+  CHECK(r.out.find("simulated time  34.900 s") != std::string::npos);
+  CHECK(r.out.find("instructions    59 executed") != std::string::npos);
+  CHECK(r.out.find("motors          E=0  D=0  C=0  B=0  A=0") != std::string::npos);
+  CHECK(r.out.find("variables       PARTS=3") != std::string::npos);
+}
+
+TEST_CASE("example pick_and_place deadlocks without its stimuli", "[examples]") {
+  // Without the conveyor nothing ever turns input 1 ON: the first WAITFOR
+  // (instruction 4, source line 21) is a deadlock at time 0, after 4 steps.
+  const Result r = robotsim({"run", (kExamples / "pick_and_place.rsp").string(), "--format=json"});
+  CHECK(r.exit == rs::cli::kRunFailed);
+  const Json j = Json::parse(r.out);
+  CHECK(j.at("status") == "error");
+  CHECK(j.at("steps") == 4);
+  REQUIRE(j.at("diagnostics").size() == 1);
+  CHECK(j.at("diagnostics")[0].at("line") == 21);
+  CHECK(j.at("diagnostics")[0].at("message").get<std::string>().rfind("deadlock: input 1 never turns ON", 0) == 0);
+}
+
+TEST_CASE("every example has a summary test above", "[examples]") {
+  const std::set<std::string> tested{"first_moves.rsp",   "counted_loop.rsp",       "nested_subroutines.rsp",
+                                     "soft_home.rsp",     "workcell_view.rsp",      "sensor_branching.rsp",
+                                     "pick_and_place.rsp"};
+  std::set<std::string> found;
+  for (const fs::path& p : exampleSources()) found.insert(p.filename().string());
+  CHECK(found == tested);
+}
+
+TEST_CASE("the examples together use all 20 instructions", "[examples]") {
+  std::set<rs::vm::Op> used;
+  for (const fs::path& path : exampleSources()) {
+    INFO(path.string());
+    std::string error;
+    std::optional<std::string> text = rs::cli::readFile(path.string(), error);
+    REQUIRE(text);
+    const rs::compiler::SourceFile source(path.string(), std::move(*text));
+    const rs::compiler::CompileResult compiled = rs::compiler::compile(source, rs::cli::defaultTarget());
+    REQUIRE(compiled.ok());
+    CHECK(compiled.diagnostics.empty());
+    for (const rs::vm::Instr& in : compiled.image->code) used.insert(in.op);
+  }
+  for (const rs::vm::OpInfo& op : rs::vm::kOps) {
+    INFO("instruction " << op.name << " is used by no example");
+    CHECK(used.count(op.op) == 1);
+  }
+  CHECK(used.size() == rs::vm::kOpCount);
+}

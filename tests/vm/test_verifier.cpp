@@ -1,0 +1,505 @@
+// The image file loader and the verifier: round trips, and every kind of
+// damaged or hostile image. The file layout (vm/image_file.cpp):
+//
+//   header  0..7 magic, 8..9 major, 10..11 minor, 12..15 payload size,
+//           16..19 CRC-32 of the payload
+//   payload str sourceName, str robotName, u16 call depth, u16 reserved,
+//           u32 motor count, motors (24 bytes each), u32 instruction count,
+//           instructions (12 bytes each), lines, columns, constants,
+//           variables, points, labels
+//   (str = u16 length + bytes; all little-endian)
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "compiler/compiler.h"
+#include "runtime/sim_machine.h"
+#include "stdlib/default_robot.h"
+#include "vm/disasm.h"
+#include "vm/image_file.h"
+#include "vm/interpreter.h"
+#include "vm/verify.h"
+
+namespace {
+
+using rs::vm::Image;
+using rs::vm::Instr;
+using rs::vm::Op;
+using Bytes = std::vector<std::uint8_t>;
+
+constexpr std::size_t kHeader = rs::vm::kImageHeaderBytes;
+
+rs::compiler::Target rhino() { return {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth}; }
+
+Image compileOk(const std::string& text, const std::string& name = "v.rsp") {
+  const rs::compiler::SourceFile source(name, text);
+  rs::compiler::CompileResult r = rs::compiler::compile(source, rhino());
+  INFO(text);
+  REQUIRE(r.ok());
+  return std::move(*r.image);
+}
+
+// Ten instructions with every operand format the checks below poke at:
+//   1 MOVETO (constants 0..4)  2 MOVEP P1  3 SET N  4 JMPVAR -> 6
+//   5 OUTSIG  6 JMPIN -> 8  7 WINDOW (constants 5..7)  8 DELAY
+//   9 GOTO -> 10  10 END
+const std::string kSample =
+    "MOVETO 1 2 3 4 5\n"
+    "MOVEP P1\n"
+    "SET N 1\n"
+    "JMPVAR N < 3 6\n"
+    "OUTSIG 1 ON\n"
+    "JMPIN 2 ON 8\n"
+    "WINDOW 1 2 3\n"
+    "DELAY 0.5\n"
+    "GOTO done\n"
+    "done: END\n"
+    "POINTS\n"
+    "P1 1 2 3 4 5\n";
+
+Image sample() { return compileOk(kSample); }
+
+// The smallest sound image: one END on the default motors.
+Image tiny() {
+  Image im;
+  im.sourceName = "tiny.rsp";
+  im.robotName = "rhino-scara";
+  im.motors = rs::stdlib::rhinoScaraMotors();
+  im.code = {Instr{Op::End, 0, 0, 0, 0}};
+  im.lines = {1};
+  im.columns = {1};
+  return im;
+}
+
+std::string_view view(const Bytes& b) { return {reinterpret_cast<const char*>(b.data()), b.size()}; }
+
+std::string loadError(const Bytes& b) { return rs::vm::loadImage(view(b)).error; }
+std::string loadError(const Image& im) { return loadError(rs::vm::writeImage(im)); }
+
+std::uint32_t u32At(const Bytes& b, std::size_t at) {
+  return std::uint32_t{b[at]} | std::uint32_t{b[at + 1]} << 8 | std::uint32_t{b[at + 2]} << 16 |
+         std::uint32_t{b[at + 3]} << 24;
+}
+void putU16(Bytes& b, std::size_t at, std::uint16_t v) {
+  for (int i = 0; i < 2; ++i) b[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v >> (8 * i));
+}
+void putU32(Bytes& b, std::size_t at, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) b[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v >> (8 * i));
+}
+
+// Makes the header agree with the payload again (size and CRC), so that a
+// change to the payload reaches the decoder and the verifier.
+void fixHeader(Bytes& b) {
+  putU32(b, 12, static_cast<std::uint32_t>(b.size() - kHeader));
+  putU32(b, 16, rs::vm::crc32(b.data() + kHeader, b.size() - kHeader));
+}
+
+// File offsets of the counts, for an image whose names are known.
+std::size_t motorCountOffset(const Image& im) { return kHeader + 2 + im.sourceName.size() + 2 + im.robotName.size() + 4; }
+std::size_t codeCountOffset(const Image& im) { return motorCountOffset(im) + 4 + 24 * im.motors.size(); }
+std::size_t constantCountOffset(const Image& im) { return codeCountOffset(im) + 4 + 20 * im.code.size(); }
+
+bool printable(const std::string& s) {
+  for (char c : s)
+    if (c < 0x20 || c > 0x7E) return false;
+  return true;
+}
+
+// Whatever an accepted image holds, it must verify, list and run without
+// crashing (the interpreter trusts the verifier for every index).
+void exerciseAccepted(const Image& im) {
+  REQUIRE(rs::vm::verify(im).message.empty());
+  const std::string listing = rs::vm::disassemble(im);
+  CHECK(!listing.empty());
+  rs::runtime::SimMachine machine(im.motors, {});
+  rs::vm::Interpreter vm(im, machine);
+  const rs::vm::RunOutcome o = vm.run(rs::vm::RunLimits{200, 100 * 1'000'000LL});
+  CHECK(o.index < im.code.size());
+}
+
+}  // namespace
+
+TEST_CASE("write then load gives back the same image", "[verifier]") {
+  const std::vector<std::string> programs = {
+      kSample,
+      "END\n",
+      "start: SET Count 0\nloop: ADD count 1\nJMPVAR COUNT < 10 loop\nGOSUB sub\nEND\nsub: MOVEP Home\nRETURN\n"
+      "POINTS\nHome 0 0 0 0 0\nPick -1000 550 -350 700 120\n",
+      "MOVE 1 2 3 4 5\nVIEW -1 -2 -3\nSETSOFT 0 0 0 0 120\nGOSOFT\nHRDHOME\nRESET\nWAITFOR 8 OFF\nEND\n",
+  };
+  for (const std::string& text : programs) {
+    INFO(text);
+    const Image im = compileOk(text);
+    const Bytes bytes = rs::vm::writeImage(im);
+    const rs::vm::LoadResult loaded = rs::vm::loadImage(view(bytes));
+    REQUIRE(loaded.error.empty());
+    CHECK(loaded.image == im);
+    // Same image, same bytes.
+    CHECK(rs::vm::writeImage(loaded.image) == bytes);
+    CHECK(rs::vm::looksLikeImage(view(bytes)));
+  }
+}
+
+TEST_CASE("the header of an image is laid out as documented", "[verifier]") {
+  const Bytes b = rs::vm::writeImage(tiny());
+  REQUIRE(b.size() > kHeader);
+  CHECK(Bytes(b.begin(), b.begin() + 8) == Bytes{0x89, 'R', 'S', 'B', '\r', '\n', 0x1A, '\n'});
+  CHECK(b[8] == 1);   // major, little-endian
+  CHECK(b[9] == 0);
+  CHECK(b[10] == 0);  // minor
+  CHECK(b[11] == 0);
+  CHECK(u32At(b, 12) == b.size() - kHeader);
+  CHECK(u32At(b, 16) == rs::vm::crc32(b.data() + kHeader, b.size() - kHeader));
+  // CRC-32 of "123456789" is the well-known check value.
+  const std::string check = "123456789";
+  CHECK(rs::vm::crc32(reinterpret_cast<const std::uint8_t*>(check.data()), check.size()) == 0xCBF43926u);
+}
+
+// BUG (reported): the compiler accepts names of any length, but the image
+// loader only accepts names of at most 64 characters (and the writer cuts
+// them at 255 bytes), so `robotsim compile` writes images that
+// `robotsim run` then rejects as malformed.
+TEST_CASE("every image the compiler produces loads back", "[verifier]") {
+  const std::string var(65, 'V');
+  const std::string label(300, 'L');
+  for (const std::string& text : {"SET " + var + " 1\nEND\n", label + ": SET N 1\nEND\n"}) {
+    INFO(text.substr(0, 20) << "...");
+    const Image im = compileOk(text);
+    const rs::vm::LoadResult loaded = rs::vm::loadImage(view(rs::vm::writeImage(im)));
+    CHECK(loaded.error == "");
+    CHECK(loaded.image == im);
+  }
+}
+
+TEST_CASE("an image cut short at any length is rejected", "[verifier]") {
+  const Bytes full = rs::vm::writeImage(sample());
+  for (std::size_t n = 0; n < full.size(); ++n) {
+    const Bytes cut(full.begin(), full.begin() + static_cast<std::ptrdiff_t>(n));
+    const std::string e = loadError(cut);
+    INFO("length " << n);
+    if (n < 8) REQUIRE(e == "not a robotsim image (bad magic number)");
+    else if (n < kHeader) REQUIRE(e == "truncated image header");
+    else
+      REQUIRE(e == "image payload is " + std::to_string(n - kHeader) + " bytes, the header says " +
+                       std::to_string(full.size() - kHeader));
+  }
+}
+
+TEST_CASE("a payload cut short with a matching header is rejected by the decoder", "[verifier]") {
+  const Bytes full = rs::vm::writeImage(sample());
+  for (std::size_t n = kHeader; n < full.size(); ++n) {
+    Bytes cut(full.begin(), full.begin() + static_cast<std::ptrdiff_t>(n));
+    fixHeader(cut);
+    const std::string e = loadError(cut);
+    INFO("length " << n << ": " << e);
+    REQUIRE(e.rfind("malformed image: ", 0) == 0);
+  }
+  // Cut right after the two names and the call depth: the reserved u16 is missing.
+  Bytes cut(full.begin(), full.begin() + static_cast<std::ptrdiff_t>(kHeader + 2 + 5 + 2 + 11 + 2));
+  fixHeader(cut);
+  CHECK(loadError(cut) == "malformed image: unexpected end of file");
+}
+
+TEST_CASE("flipping any single bit of an image is detected", "[verifier]") {
+  const Image original = sample();
+  const Bytes good = rs::vm::writeImage(original);
+  std::vector<std::string> problems;
+  std::size_t minorAccepted = 0;
+  for (std::size_t bit = 0; bit < good.size() * 8; ++bit) {
+    Bytes b = good;
+    b[bit / 8] ^= static_cast<std::uint8_t>(1u << (bit % 8));
+    const rs::vm::LoadResult r = rs::vm::loadImage(view(b));
+    const std::size_t byte = bit / 8;
+    if (byte == 10 || byte == 11) {
+      // The minor version is not covered by the CRC and any 1.x is read:
+      // the image loads unchanged.
+      if (r.error.empty() && r.image == original) ++minorAccepted;
+      else problems.push_back("minor version bit " + std::to_string(bit) + ": " + r.error);
+      continue;
+    }
+    if (r.error.empty()) problems.push_back("bit " + std::to_string(bit) + " accepted");
+    else if (byte >= kHeader && r.error != "image checksum mismatch (the file is corrupt)")
+      problems.push_back("payload bit " + std::to_string(bit) + ": " + r.error);
+  }
+  INFO((problems.empty() ? std::string() : problems.front()));
+  CHECK(problems.empty());
+  CHECK(minorAccepted == 16);
+}
+
+TEST_CASE("hostile payloads with a correct CRC: rejected clearly, or sound", "[verifier]") {
+  // Every bit of the payload flipped, then size and CRC fixed: the decoder
+  // and verifier see the damage. Each result is either a clear error or an
+  // image that verifies, disassembles and runs.
+  for (const Image& original : {sample(), compileOk("loop: ADD N 1\nJMPVAR N < 3 loop\nGOSUB s\nEND\ns: RETURN\n")}) {
+    const Bytes good = rs::vm::writeImage(original);
+    std::size_t accepted = 0, rejected = 0;
+    std::vector<std::string> unclear;
+    for (std::size_t bit = kHeader * 8; bit < good.size() * 8; ++bit) {
+      Bytes b = good;
+      b[bit / 8] ^= static_cast<std::uint8_t>(1u << (bit % 8));
+      fixHeader(b);
+      const rs::vm::LoadResult r = rs::vm::loadImage(view(b));
+      if (!r.error.empty()) {
+        ++rejected;
+        const bool known = r.error.rfind("malformed image: ", 0) == 0 ||
+                           r.error.rfind("image rejected by the verifier: ", 0) == 0;
+        if (!known || !printable(r.error)) unclear.push_back(r.error);
+        continue;
+      }
+      ++accepted;
+      exerciseAccepted(r.image);
+    }
+    INFO((unclear.empty() ? std::string() : unclear.front()));
+    CHECK(unclear.empty());
+    CHECK(rejected > 0);
+    CHECK(accepted > 0);  // e.g. a changed constant or a renamed variable
+  }
+}
+
+TEST_CASE("header errors have exact messages", "[verifier]") {
+  const Bytes good = rs::vm::writeImage(tiny());
+  SECTION("bad magic") {
+    Bytes b = good;
+    b[1] = 'X';
+    CHECK(loadError(b) == "not a robotsim image (bad magic number)");
+    CHECK(loadError(Bytes{}) == "not a robotsim image (bad magic number)");
+    CHECK_FALSE(rs::vm::looksLikeImage(view(b)));
+  }
+  SECTION("wrong major version") {
+    Bytes b = good;
+    putU16(b, 8, 2);
+    putU16(b, 10, 7);
+    CHECK(loadError(b) == "image version 2.7 is not supported (this robotsim reads 1.x)");
+    putU16(b, 8, 0);
+    CHECK(loadError(b) == "image version 0.7 is not supported (this robotsim reads 1.x)");
+  }
+  SECTION("payload size disagrees") {
+    Bytes b = good;
+    b.push_back(0);
+    CHECK(loadError(b) == "image payload is " + std::to_string(good.size() - kHeader + 1) + " bytes, the header says " +
+                              std::to_string(good.size() - kHeader));
+  }
+  SECTION("checksum") {
+    Bytes b = good;
+    b[16] ^= 1;
+    CHECK(loadError(b) == "image checksum mismatch (the file is corrupt)");
+  }
+  SECTION("trailing bytes inside the payload") {
+    Bytes b = good;
+    b.push_back(0);
+    b.push_back(0);
+    fixHeader(b);
+    CHECK(loadError(b) == "malformed image: 2 unexpected bytes after the last section");
+  }
+}
+
+TEST_CASE("decoder errors have exact messages", "[verifier]") {
+  const Image im = tiny();
+  const Bytes good = rs::vm::writeImage(im);
+  SECTION("reserved header bytes") {
+    Bytes b = good;
+    b[motorCountOffset(im) - 1] = 1;
+    fixHeader(b);
+    CHECK(loadError(b) == "malformed image: reserved header bytes are not zero");
+  }
+  SECTION("reserved motor bytes") {
+    Bytes b = good;
+    b[motorCountOffset(im) + 4 + 2] = 1;
+    fixHeader(b);
+    CHECK(loadError(b) == "malformed image: reserved motor bytes are not zero");
+  }
+  SECTION("joint kind") {
+    Bytes b = good;
+    b[motorCountOffset(im) + 4 + 1] = 3;
+    fixHeader(b);
+    CHECK(loadError(b) == "malformed image: motor 1 has joint kind 3");
+  }
+  SECTION("a name longer than 255 bytes") {
+    Bytes b = good;
+    putU16(b, kHeader, 300);
+    fixHeader(b);
+    CHECK(loadError(b) == "malformed image: string of 300 bytes");
+  }
+  SECTION("unknown opcode") {
+    Image bad = im;
+    bad.code[0].op = static_cast<Op>(20);
+    CHECK(loadError(bad) == "malformed image: instruction 1: unknown opcode 20");
+    bad.code[0].op = static_cast<Op>(255);
+    CHECK(loadError(bad) == "malformed image: instruction 1: unknown opcode 255");
+    CHECK(rs::vm::verify(bad).message == "instruction 1: unknown opcode 255");
+  }
+  SECTION("bad names") {
+    Image bad = compileOk("SET N 1\nMOVEP P\nEND\nPOINTS\nP 0 0 0 0 0\n");
+    bad.variables[0] = "1N";
+    CHECK(loadError(bad) == "malformed image: variable 1 has a bad name");
+    bad = compileOk("SET N 1\nMOVEP P\nEND\nPOINTS\nP 0 0 0 0 0\n");
+    bad.points[0].name = "";
+    CHECK(loadError(bad) == "malformed image: point 1 has a bad name");
+    bad = compileOk("x: END\n");
+    bad.labels[0].name = "a b";
+    CHECK(loadError(bad) == "malformed image: label 1 has a bad name");
+  }
+}
+
+TEST_CASE("huge counts are refused before anything is allocated", "[verifier]") {
+  const Image im = sample();
+  const Bytes good = rs::vm::writeImage(im);
+  const auto start = std::chrono::steady_clock::now();
+  struct Case {
+    std::size_t offset;
+    const char* what;
+  };
+  const Case cases[] = {{motorCountOffset(im), "motor"}, {codeCountOffset(im), "instruction"},
+                        {constantCountOffset(im), "constant"}};
+  for (const Case& c : cases) {
+    // Sanity: the offset really holds the count.
+    REQUIRE(u32At(good, motorCountOffset(im)) == im.motors.size());
+    REQUIRE(u32At(good, codeCountOffset(im)) == im.code.size());
+    REQUIRE(u32At(good, constantCountOffset(im)) == im.constants.size());
+    for (std::uint32_t count : {0xFFFFFFFFu, 0x80000000u, 1'000'000u}) {
+      Bytes b = good;
+      putU32(b, c.offset, count);
+      fixHeader(b);
+      CHECK(loadError(b) == "malformed image: " + std::string(c.what) + " count " + std::to_string(count) +
+                                " larger than the file");
+    }
+  }
+  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(2));
+}
+
+TEST_CASE("verifier: jump targets", "[verifier]") {
+  Image im = sample();
+  REQUIRE(loadError(im) == "");
+  Image bad = im;
+  bad.code[8].d = 10;
+  CHECK(loadError(bad) == "image rejected by the verifier: instruction 9 (GOTO): jump target 10 outside the code");
+  bad.code[8].d = -1;
+  CHECK(loadError(bad) == "image rejected by the verifier: instruction 9 (GOTO): jump target -1 outside the code");
+  bad = im;
+  bad.code[3].d = 99;
+  CHECK(loadError(bad) == "image rejected by the verifier: instruction 4 (JMPVAR): jump target 99 outside the code");
+  bad = im;
+  bad.code[5].d = std::numeric_limits<std::int32_t>::max();
+  CHECK(loadError(bad) ==
+        "image rejected by the verifier: instruction 6 (JMPIN): jump target 2147483647 outside the code");
+  // The last instruction is a valid target.
+  bad = im;
+  bad.code[8].d = 9;
+  CHECK(loadError(bad) == "");
+}
+
+TEST_CASE("verifier: operands", "[verifier]") {
+  const Image im = sample();
+  const auto rejected = [&](auto change, const std::string& message) {
+    Image bad = im;
+    change(bad);
+    INFO(message);
+    CHECK(loadError(bad) == "image rejected by the verifier: " + message);
+    CHECK(rs::vm::verify(bad).message == message);
+  };
+  rejected([](Image& b) { b.code[9].a = 1; }, "instruction 10 (END): unused operand fields are not zero");
+  rejected([](Image& b) { b.code[8].c = 1; }, "instruction 9 (GOTO): unused operand fields are not zero");
+  rejected([](Image& b) { b.code[4].d = 1; }, "instruction 5 (OUTSIG): unused operand fields are not zero");
+  rejected([](Image& b) { b.code[0].a = 1; }, "instruction 1 (MOVETO): unused operand fields are not zero");
+  rejected([](Image& b) { b.code[1].c = 1; }, "instruction 2 (MOVEP): unused operand fields are not zero");
+  rejected([](Image& b) { b.code[2].d = 1; }, "instruction 3 (SET): unused operand fields are not zero");
+  rejected([](Image& b) { b.code[7].b = 1; }, "instruction 8 (DELAY): unused operand fields are not zero");
+  rejected([](Image& b) { b.code[5].c = 1; }, "instruction 6 (JMPIN): unused operand fields are not zero");
+  rejected([](Image& b) { b.code[4].a = 9; }, "instruction 5 (OUTSIG): line 9 outside 1..8");
+  rejected([](Image& b) { b.code[4].a = 0; }, "instruction 5 (OUTSIG): line 0 outside 1..8");
+  rejected([](Image& b) { b.code[4].b = 2; }, "instruction 5 (OUTSIG): state 2 is neither ON nor OFF");
+  rejected([](Image& b) { b.code[5].a = 9; }, "instruction 6 (JMPIN): input 9 outside 1..8");
+  rejected([](Image& b) { b.code[5].b = 7; }, "instruction 6 (JMPIN): state 7 is neither ON nor OFF");
+  rejected([](Image& b) { b.code[0].c = 4; }, "instruction 1 (MOVETO): constant index 4 out of bounds");
+  rejected([](Image& b) { b.code[0].c = -1; }, "instruction 1 (MOVETO): constant index -1 out of bounds");
+  rejected([](Image& b) { b.code[6].c = 6; }, "instruction 7 (WINDOW): constant index 6 out of bounds");
+  rejected([](Image& b) { b.code[0].b = 4; }, "instruction 1 (MOVETO): moves 4 motors, the image has 5");
+  rejected([](Image& b) { b.constants[0] = 5000; }, "instruction 1 (MOVETO): motor E target 5000 outside its range");
+  rejected([](Image& b) { b.code[1].b = 1; }, "instruction 2 (MOVEP): point index 1 out of bounds");
+  rejected([](Image& b) { b.code[2].b = 1; }, "instruction 3 (SET): variable slot 1 out of bounds");
+  rejected([](Image& b) { b.code[3].a = 3; }, "instruction 4 (JMPVAR): comparison 3 unknown");
+  rejected([](Image& b) { b.code[7].c = -1; }, "instruction 8 (DELAY): delay -1 ms out of range");
+  rejected([](Image& b) { b.code[7].c = 86'400'001; }, "instruction 8 (DELAY): delay 86400001 ms out of range");
+}
+
+TEST_CASE("verifier: points, tables and labels", "[verifier]") {
+  const Image im = sample();
+  Image bad = im;
+  bad.points[0].values[4] = 121;
+  CHECK(loadError(bad) == "image rejected by the verifier: point P1 value 121 outside motor A range");
+  // A point with the wrong arity cannot even be written consistently (the
+  // file stores one value per motor); the verifier names it.
+  bad = im;
+  bad.points[0].values.pop_back();
+  CHECK(rs::vm::verify(bad).message == "point P1 has 4 values for 5 motors");
+  CHECK(loadError(bad) != "");
+
+  bad = tiny();
+  bad.code.clear();
+  bad.lines.clear();
+  bad.columns.clear();
+  CHECK(loadError(bad) == "image rejected by the verifier: the image has no code");
+  bad = tiny();
+  bad.lines.clear();
+  CHECK(rs::vm::verify(bad).message == "line table has 0 entries for 1 instructions");
+  bad = tiny();
+  bad.lines[0] = 0;
+  CHECK(loadError(bad) == "image rejected by the verifier: instruction 1 has no source position");
+  bad = tiny();
+  bad.callDepthLimit = 0;
+  CHECK(loadError(bad) == "image rejected by the verifier: call depth limit 0 outside 1..4096");
+  bad.callDepthLimit = 4097;
+  CHECK(loadError(bad) == "image rejected by the verifier: call depth limit 4097 outside 1..4096");
+
+  bad = compileOk("a: SET N 1\nb: END\n");
+  bad.labels[1].index = 2;
+  CHECK(loadError(bad) == "image rejected by the verifier: label b outside the code");
+  bad = compileOk("a: SET N 1\nb: END\n");
+  std::swap(bad.labels[0], bad.labels[1]);
+  CHECK(loadError(bad) == "image rejected by the verifier: labels are not sorted");
+}
+
+TEST_CASE("verifier: motor table", "[verifier]") {
+  const auto rejected = [](auto change, const std::string& message) {
+    Image bad = tiny();
+    change(bad);
+    INFO(message);
+    CHECK(loadError(bad) == "image rejected by the verifier: " + message);
+  };
+  rejected([](Image& b) { b.motors.clear(); }, "motor table has 0 motors (1..26 allowed)");
+  rejected(
+      [](Image& b) {
+        b.motors.clear();
+        for (char c = 'A'; c <= 'Z'; ++c) b.motors.push_back({c, rs::vm::JointKind::Revolute, 1.0, -1, 1, 1});
+        b.motors.push_back({'A', rs::vm::JointKind::Revolute, 1.0, -1, 1, 1});
+      },
+      "motor table has 27 motors (1..26 allowed)");
+  rejected([](Image& b) { b.motors[1].letter = 'E'; }, "motor letter E appears twice");
+  rejected([](Image& b) { b.motors[0].letter = 'e'; }, "motor 1 has no letter A..Z");
+  rejected([](Image& b) { b.motors[4].letter = '@'; }, "motor 5 has no letter A..Z");
+  rejected(
+      [](Image& b) {
+        b.motors[2].min = 10;
+        b.motors[2].max = -10;
+      },
+      "motor C range 10..-10 is empty");
+  rejected([](Image& b) { b.motors[3].speed = 0; }, "motor B speed 0 is not positive");
+  rejected([](Image& b) { b.motors[3].speed = -5; }, "motor B speed -5 is not positive");
+  rejected([](Image& b) { b.motors[4].precision = 0.0; }, "motor A precision is not a positive number");
+  rejected([](Image& b) { b.motors[4].precision = std::nan(""); }, "motor A precision is not a positive number");
+  rejected([](Image& b) { b.motors[4].precision = std::numeric_limits<double>::infinity(); },
+           "motor A precision is not a positive number");
+  Image kind = tiny();
+  kind.motors[0].kind = static_cast<rs::vm::JointKind>(3);
+  CHECK(rs::vm::verify(kind).message == "motor E has an unknown joint kind");
+  // 26 motors are fine.
+  Image many = tiny();
+  many.motors.clear();
+  for (char c = 'A'; c <= 'Z'; ++c) many.motors.push_back({c, rs::vm::JointKind::Revolute, 1.0, -1, 1, 1});
+  CHECK(loadError(many) == "");
+}
