@@ -6,6 +6,7 @@
 #include "cli/lib/help.h"
 #include "cli/lib/program_file.h"
 #include "cli/lib/report.h"
+#include "cli/lib/robot_commands.h"
 #include "cli/lib/trace.h"
 #include "runtime/sim_machine.h"
 #include "runtime/stimuli.h"
@@ -214,6 +215,26 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   ast->add_option("file", o.file, "Program source")->required();
   ast->add_flag("--tree", o.tree, "Also print ANTLR's parse tree");
 
+  RobotQuery rq;
+  const auto robotArgs = [&](CLI::App* cmd) {
+    cmd->add_option("robot", rq.robot, "Robot description file (.rsd) or library name, e.g. scorobot")->required();
+    cmd->add_option("--lib", rq.libDirs, "Also look up names in this directory (repeatable)")->expected(1)->take_all();
+    cmd->add_flag("--json", rq.json, "Print one JSON object");
+  };
+  CLI::App* table = app.add_subcommand("table", "Print a robot's D-H table (the paper's TABLE, Fig. 6)");
+  robotArgs(table);
+  CLI::App* matrix =
+      app.add_subcommand("matrix", "Print the matrix taking frame J coordinates to frame I (the paper's MATRIX)");
+  robotArgs(matrix);
+  matrix->add_option("i", rq.from, "Frame I (0 = base)")->required();
+  matrix->add_option("j", rq.to, "Frame J")->required();
+  matrix->add_option("--theta", rq.theta, "Joint values v,v,... (degrees; a prismatic joint's d)");
+  matrix->add_option("--encoders", rq.encoders, "Encoder counts v,v,... (default: the home position)");
+  CLI::App* where = app.add_subcommand("where", "Print the tool centre point for given encoder values");
+  robotArgs(where);
+  where->add_option("--theta", rq.theta, "Joint values v,v,... (degrees; a prismatic joint's d)");
+  where->add_option("--encoders", rq.encoders, "Encoder counts v,v,... (default: the home position)");
+
   CLI::App* help = app.add_subcommand("help", "Explain the instruction set, or one instruction");
   help->add_option("instruction", helpTopic, "Instruction name, e.g. JMPVAR");
 
@@ -237,6 +258,9 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
     return sourceView(o, out, err, [&](const compiler::SourceFile& s, auto& d) {
       return compiler::dumpAst(s, defaultTarget(), o.tree, d);
     });
+  if (table->parsed()) return tableCommand(rq, out, err);
+  if (matrix->parsed()) return matrixCommand(rq, out, err);
+  if (where->parsed()) return whereCommand(rq, out, err);
   return helpCommand(helpTopic, out, err);
 }
 

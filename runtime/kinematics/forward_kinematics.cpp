@@ -6,13 +6,10 @@ namespace rs::kinematics {
 
 namespace {
 
-// One joint's step: A_i from the precomputed cos/sin of α (and of θ for a
-// prismatic joint), and F_0_i = F_0_{i-1} · A_i using A_i's structure:
-// with X, Y, Z the columns of F_0_{i-1} and v = −sinθ X + cosθ Y,
-//   x_i = cosθ X + sinθ Y,  y_i = cosα v + sinα Z,  z_i = −sinα v + cosα Z,
-//   o_i = o_{i-1} + a x_i + d Z.
-void step(const Joint& joint, double q, const Eigen::Isometry3d& previous, Eigen::Isometry3d& A,
-          Eigen::Isometry3d& current) {
+// A_i = F_{i-1}_i for joint variable q, from the precomputed cos/sin of α
+// (and of θ for a prismatic joint). Joints do not depend on each other
+// here, so the CPU overlaps their sine/cosine work.
+void fillA(const Joint& joint, double q, Eigen::Isometry3d& A) {
   double ct = joint.cosTheta, st = joint.sinTheta, d = q;
   if (joint.type() == JointType::Revolute) {
     sinCosDegrees(q, st, ct);
@@ -24,16 +21,24 @@ void step(const Joint& joint, double q, const Eigen::Isometry3d& previous, Eigen
   m.col(1).head<3>() = Eigen::Vector3d(-ca * st, ca * ct, sa);
   m.col(2).head<3>() = Eigen::Vector3d(sa * st, -sa * ct, ca);
   m.col(3).head<3>() = Eigen::Vector3d(a * ct, a * st, d);
+}
 
+// F_0_i = F_0_{i-1} · A_i, using A_i's structure. With X, Y, Z, o the
+// columns of F_0_{i-1} and v = cosθ Y − sinθ X:
+//   x_i = cosθ X + sinθ Y,  y_i = cosα v + sinα Z,  z_i = cosα Z − sinα v,
+//   o_i = o + a cosθ X + a sinθ Y + d Z.
+// The bottom row stays (0 0 0 1).
+void chain(const Eigen::Isometry3d& previous, const Eigen::Isometry3d& A, Eigen::Isometry3d& current) {
   const auto& P = previous.matrix();
+  const auto& m = A.matrix();
+  const double ct = m(0, 0), st = m(1, 0), sa = m(2, 1), ca = m(2, 2);
   const Eigen::Vector3d X = P.col(0).head<3>(), Y = P.col(1).head<3>(), Z = P.col(2).head<3>();
-  const Eigen::Vector3d x = ct * X + st * Y;
   const Eigen::Vector3d v = ct * Y - st * X;
   auto& F = current.matrix();
-  F.col(0).head<3>() = x;
+  F.col(0).head<3>() = ct * X + st * Y;
   F.col(1).head<3>() = ca * v + sa * Z;
   F.col(2).head<3>() = ca * Z - sa * v;
-  F.col(3).head<3>() = P.col(3).head<3>() + a * x + d * Z;
+  F.col(3).head<3>() = P.col(3).head<3>() + m(0, 3) * X + m(1, 3) * Y + m(2, 3) * Z;
 }
 
 }  // namespace
@@ -42,7 +47,10 @@ bool forwardKinematics(const ChainModel& model, ChainData& data, std::span<const
   const auto n = static_cast<std::size_t>(model.size());
   if (q.size() != n || data.A.size() != n + 1 || data.F_0_i.size() != n + 1) return false;
   for (std::size_t i = 1; i <= n; ++i) {
-    step(model.joints()[i - 1], q[i - 1], data.F_0_i[i - 1], data.A[i], data.F_0_i[i]);
+    fillA(model.joints()[i - 1], q[i - 1], data.A[i]);
+  }
+  for (std::size_t i = 1; i <= n; ++i) {
+    chain(data.F_0_i[i - 1], data.A[i], data.F_0_i[i]);
   }
   return true;
 }

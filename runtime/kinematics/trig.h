@@ -23,14 +23,19 @@ inline constexpr double kCosTaylor[] = {1.0, -1.0 / 2, 1.0 / 24, -1.0 / 720, 1.0
 // clang-format on
 
 /// sin and cos of x radians for |x| <= π/4: Taylor series to x^15 and
-/// x^16 (Horner in x²), whose first omitted terms are below 5e-17.
+/// x^16, whose first omitted terms are below 5e-17. Evaluated in powers of
+/// t = x² by Estrin's scheme (pairs, then pairs of pairs), which keeps the
+/// chain of dependent multiplications short.
 inline void sinCosReduced(double x, double& s, double& c) {
-  const double x2 = x * x;
-  double ps = 0.0, pc = 0.0;
-  for (int k = 7; k >= 0; --k) ps = ps * x2 + kSinTaylor[k];
-  for (int k = 8; k >= 0; --k) pc = pc * x2 + kCosTaylor[k];
-  s = x * ps;
-  c = pc;
+  const double t = x * x, t2 = t * t, t4 = t2 * t2;
+  const auto& S = kSinTaylor;
+  const auto& C = kCosTaylor;
+  const double s03 = (S[0] + S[1] * t) + t2 * (S[2] + S[3] * t);
+  const double s47 = (S[4] + S[5] * t) + t2 * (S[6] + S[7] * t);
+  const double c03 = (C[0] + C[1] * t) + t2 * (C[2] + C[3] * t);
+  const double c47 = (C[4] + C[5] * t) + t2 * (C[6] + C[7] * t);
+  s = x * (s03 + t4 * s47);
+  c = c03 + t4 * (c47 + t4 * C[8]);
 }
 
 /// s = sin(degrees), c = cos(degrees), within a few ulp of the exact values
@@ -42,8 +47,11 @@ inline void sinCosDegrees(double degrees, double& s, double& c) {
     c = std::cos(degrees * kDegToRad);
     return;
   }
-  const double quarter = std::round(degrees / 90.0);
-  const double reduced = degrees - 90.0 * quarter;  // exact, in [-45, 45]
+  // Round to the nearest quarter turn by adding and removing 1.5·2^52 (no
+  // libm call; valid below 2^51, and compilers keep it without -ffast-math).
+  constexpr double kRound = 6755399441055744.0;
+  const double quarter = (degrees * (1.0 / 90.0) + kRound) - kRound;
+  const double reduced = degrees - 90.0 * quarter;  // exact, about [-45, 45]
   double rs, rc;
   sinCosReduced(reduced * kDegToRad, rs, rc);
   switch (static_cast<std::int64_t>(quarter) & 3) {

@@ -334,9 +334,9 @@ TEST_CASE("syntax errors: a line must start with a name", "[compiler]") {
   expectDiagnostics("END\n10 MOVE 0 0 0 0 0\n",
                     {err(2, 1, "unexpected '10': a line starts with an instruction, a label or a point name")});
   expectDiagnostics("END\n< END\n", {err(2, 1, "unexpected '<': a line starts with an instruction, a label or a point name")});
-  // docs/language.md: "unexpected ':': a label is a name followed by ':' at
-  // the start of a line" is for a ':' that does not follow a first name.
-  expectDiagnostics("END\n: END\n", {err(2, 1, "unexpected ':': a label is a name followed by ':' at the start of a line")});
+  // docs/language.md: a ':' that starts a line gets the first message, a
+  // ':' after the first word of the instruction the second.
+  expectDiagnostics("END\n: END\n", {err(2, 1, "unexpected ':': a line starts with an instruction, a label or a point name")});
   expectDiagnostics("END\nSET N : 3\n", {err(2, 7, "unexpected ':': a label is a name followed by ':' at the start of a line")});
   expectDiagnostics("END\nPOINTS\n5 0 0\n", {err(3, 1, "unexpected '5': a line starts with an instruction, a label or a point name")});
 }

@@ -1,0 +1,227 @@
+#include "cli/lib/robot_commands.h"
+
+#include <charconv>
+#include <cmath>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/lib/app.h"
+#include "compiler/library.h"
+#include "runtime/kinematics/chain_data.h"
+#include "runtime/kinematics/forward_kinematics.h"
+#include "runtime/kinematics/joint_values.h"
+
+namespace rs::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::optional<workcell::Robot> loadRobot(const RobotQuery& q, std::ostream& err) {
+  compiler::Library library(compiler::librarySearchPath(q.libDirs));
+  std::optional<workcell::Robot> robot = library.robot(q.robot);
+  for (const compiler::Diagnostic& d : library.diagnostics()) err << compiler::render(d, library.source(d.file));
+  return robot;
+}
+
+// "76,72,-90" -> numbers; an error names the bad item.
+bool parseList(const std::string& text, std::string_view option, std::vector<double>& out, std::ostream& err) {
+  std::size_t start = 0;
+  for (int item = 1;; ++item) {
+    const std::size_t comma = text.find(',', start);
+    const std::string piece = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    double v = 0;
+    const char* first = piece.data() + (!piece.empty() && piece[0] == '+' ? 1 : 0);
+    const auto [ptr, ec] = std::from_chars(first, piece.data() + piece.size(), v);
+    if (piece.empty() || ec != std::errc() || ptr != piece.data() + piece.size() || !std::isfinite(v)) {
+      err << fmt::format("robotsim: error: {}: value {} '{}' is not a number\n", option, item, piece);
+      return false;
+    }
+    out.push_back(v);
+    if (comma == std::string::npos) return true;
+    start = comma + 1;
+  }
+}
+
+// Joint values q from --theta, --encoders, or home when neither is given.
+bool jointValues(const RobotQuery& q, const workcell::Robot& robot, std::vector<double>& values, std::ostream& err) {
+  const kinematics::ChainModel& chain = *robot.chain;
+  const auto n = static_cast<std::size_t>(chain.size());
+  values.assign(n, 0.0);
+  if (!q.theta.empty() && !q.encoders.empty()) {
+    err << "robotsim: error: give --theta or --encoders, not both\n";
+    return false;
+  }
+  std::vector<double> list;
+  if (!q.theta.empty()) {
+    if (!parseList(q.theta, "--theta", list, err)) return false;
+    if (list.size() != n) {
+      err << fmt::format("robotsim: error: --theta needs {} values (one per joint), found {}\n", n, list.size());
+      return false;
+    }
+    values = list;
+    return true;
+  }
+  if (!q.encoders.empty()) {
+    if (!parseList(q.encoders, "--encoders", list, err)) return false;
+    const std::size_t motors = n + (robot.hasGripper ? 1 : 0);
+    if (list.size() != n && list.size() != motors) {
+      err << fmt::format("robotsim: error: --encoders needs {} values (one per joint{}), found {}\n", n,
+                         robot.hasGripper ? ", the gripper's optional" : "", list.size());
+      return false;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const workcell::JointSpec& j = robot.joints[i];
+      if (list[i] < j.min || list[i] > j.max) {
+        err << fmt::format("robotsim: error: --encoders: joint {} ({}) value {} is outside its range {}..{}\n", i + 1,
+                           j.letter, formatNumber(list[i]), j.min, j.max);
+        return false;
+      }
+    }
+    list.resize(n);
+    return kinematics::jointValuesFromEncoders(chain, std::span<const double>(list), values);
+  }
+  for (std::size_t i = 0; i < n; ++i) values[i] = chain.joint(static_cast<int>(i + 1)).home;
+  return true;
+}
+
+Json matrixJson(const Eigen::Isometry3d& m) {
+  Json rows = Json::array();
+  for (int r = 0; r < 4; ++r) {
+    Json row = Json::array();
+    for (int c = 0; c < 4; ++c) {
+      const double v = m.matrix()(r, c);
+      row.push_back(std::abs(v) < 5e-13 ? 0.0 : v);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string matrixText(const Eigen::Isometry3d& m) {
+  std::string out;
+  for (int r = 0; r < 4; ++r) {
+    out += "  ";
+    for (int c = 0; c < 4; ++c) out += fmt::format("{:>12}", fmt::format("{:.4f}", m.matrix()(r, c) + 0.0));
+    out += '\n';
+  }
+  // "-0.0000" would read as a sign where there is none.
+  for (std::size_t p = out.find("-0.0000"); p != std::string::npos; p = out.find("-0.0000", p))
+    out.replace(p, 7, " 0.0000");
+  return out;
+}
+
+}  // namespace
+
+std::string formatNumber(double v) {
+  if (std::abs(v) < 5e-5) return "0";
+  std::string s = fmt::format("{:.4f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
+  const std::optional<workcell::Robot> robot = loadRobot(q, err);
+  if (!robot) return kCompileError;
+  const std::vector<kinematics::DhRow> rows = robot->chain->table();
+  if (q.json) {
+    Json j;
+    j["robot"] = robot->name;
+    Json list = Json::array();
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const kinematics::DhRow& r = rows[i];
+      list.push_back({{"axis", i + 1},
+                      {"type", kinematics::jointTypeName(r.type)},
+                      {"theta", std::stod(formatNumber(r.theta))},
+                      {"alpha", std::stod(formatNumber(r.alpha))},
+                      {"a", std::stod(formatNumber(r.a))},
+                      {"d", std::stod(formatNumber(r.d))},
+                      {"home", std::stod(formatNumber(r.home()))}});
+    }
+    j["rows"] = list;
+    out << j.dump() << '\n';
+    return kOk;
+  }
+  out << fmt::format("KINEMATIC PARAMETERS: {} (standard D-H; degrees and length units)\n", robot->name);
+  out << fmt::format("{:<6}{:<11}{:>10}{:>10}{:>10}{:>10}{:>10}\n", "AXIS", "TYPE", "theta", "alpha", "a", "d", "home");
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const kinematics::DhRow& r = rows[i];
+    const bool revolute = r.type == kinematics::JointType::Revolute;
+    out << fmt::format("{:<6}{:<11}{:>10}{:>10}{:>10}{:>10}{:>10}\n", i + 1, kinematics::jointTypeName(r.type),
+                       revolute ? fmt::format("theta{}", i + 1) : formatNumber(r.theta), formatNumber(r.alpha),
+                       formatNumber(r.a), revolute ? formatNumber(r.d) : fmt::format("d{}", i + 1),
+                       formatNumber(r.home()));
+  }
+  return kOk;
+}
+
+int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
+  const std::optional<workcell::Robot> robot = loadRobot(q, err);
+  if (!robot) return kCompileError;
+  const kinematics::ChainModel& chain = *robot->chain;
+  const int n = chain.size();
+  if (q.from < 0 || q.from > n || q.to < 0 || q.to > n) {
+    err << fmt::format("robotsim: error: frames are numbered 0..{} for {}, got {} and {}\n", n, robot->name, q.from, q.to);
+    return kCompileError;
+  }
+  std::vector<double> values;
+  if (!jointValues(q, *robot, values, err)) return kCompileError;
+  kinematics::ChainData data(chain);
+  kinematics::forwardKinematics(chain, data, values);
+  const Eigen::Isometry3d m = *kinematics::transform(chain, data, q.from, q.to);
+  if (q.json) {
+    Json j;
+    j["from"] = q.from;
+    j["to"] = q.to;
+    j["matrix"] = matrixJson(m);
+    out << j.dump() << '\n';
+    return kOk;
+  }
+  out << fmt::format("TRANSFORMATION MATRIX T_{}^{} of {} (coordinates in frame {} to frame {}):\n", q.to, q.from,
+                     robot->name, q.to, q.from);
+  out << matrixText(m);
+  std::string joints;
+  for (int i = 1; i <= n; ++i)
+    joints += fmt::format("{}{}{} = {}", i > 1 ? "  " : "",
+                          chain.joint(i).type() == kinematics::JointType::Revolute ? "theta" : "d", i,
+                          formatNumber(values[static_cast<std::size_t>(i - 1)]));
+  out << joints << '\n';
+  return kOk;
+}
+
+int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
+  const std::optional<workcell::Robot> robot = loadRobot(q, err);
+  if (!robot) return kCompileError;
+  const kinematics::ChainModel& chain = *robot->chain;
+  std::vector<double> values;
+  if (!jointValues(q, *robot, values, err)) return kCompileError;
+  kinematics::ChainData data(chain);
+  kinematics::forwardKinematics(chain, data, values);
+  const Eigen::Isometry3d tool = kinematics::toolPose(chain, data);
+  const Eigen::Vector3d p = tool.translation();
+  // Roll, pitch, yaw: rotations about x, y, z applied in that order (R = Rz Ry Rx).
+  const Eigen::Matrix3d r = tool.linear();
+  const double pitch = std::asin(std::clamp(-r(2, 0), -1.0, 1.0));
+  const double roll = std::atan2(r(2, 1), r(2, 2)), yaw = std::atan2(r(1, 0), r(0, 0));
+  const double deg = 180.0 / M_PI;
+  if (q.json) {
+    Json j;
+    j["robot"] = robot->name;
+    j["position"] = {std::stod(formatNumber(p.x())), std::stod(formatNumber(p.y())), std::stod(formatNumber(p.z()))};
+    j["rpy"] = {std::stod(formatNumber(roll * deg)), std::stod(formatNumber(pitch * deg)),
+                std::stod(formatNumber(yaw * deg))};
+    j["matrix"] = matrixJson(tool);
+    out << j.dump() << '\n';
+    return kOk;
+  }
+  out << fmt::format("{}: tool centre point at ({}, {}, {})\n", robot->name, formatNumber(p.x()), formatNumber(p.y()),
+                     formatNumber(p.z()));
+  out << fmt::format("  normal n   ({}, {}, {})\n", formatNumber(r(0, 0)), formatNumber(r(1, 0)), formatNumber(r(2, 0)));
+  out << fmt::format("  approach a ({}, {}, {})\n", formatNumber(r(0, 2)), formatNumber(r(1, 2)), formatNumber(r(2, 2)));
+  out << fmt::format("  roll {}  pitch {}  yaw {} (degrees, R = Rz(yaw) Ry(pitch) Rx(roll))\n", formatNumber(roll * deg),
+                     formatNumber(pitch * deg), formatNumber(yaw * deg));
+  return kOk;
+}
+
+}  // namespace rs::cli

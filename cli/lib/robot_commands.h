@@ -1,0 +1,28 @@
+// The DESIGN ROBOT inspection commands: `robotsim table` (the paper's TABLE,
+// Fig. 6), `robotsim matrix` (MATRIX, Fig. 7) and `robotsim where` (the tool
+// centre point for given encoder values).
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rs::cli {
+
+struct RobotQuery {
+  std::string robot;                 // file or library name
+  std::vector<std::string> libDirs;  // --lib
+  bool json = false;
+  int from = 0, to = 0;              // matrix I J
+  std::string theta;                 // "v,v,..." joint values (degrees or d)
+  std::string encoders;              // "v,v,..." encoder counts
+};
+
+int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err);
+int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err);
+int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err);
+
+/// 4 decimals at most, trailing zeros dropped, never "-0": "90", "-469.4629".
+std::string formatNumber(double v);
+
+}  // namespace rs::cli

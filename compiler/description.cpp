@@ -1,0 +1,442 @@
+#include "compiler/description.h"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "RobotModelLexer.h"
+#include "RobotModelParser.h"
+#include "compiler/ast_builder.h"
+#include "compiler/compiler.h"
+
+namespace rs::compiler {
+
+namespace {
+
+using MP = rs_grammar::RobotModelParser;
+using workcell::Color;
+
+constexpr std::array<std::string_view, 16> kColorNames{
+    "BLACK",    "BLUE",      "GREEN",      "CYAN",      "RED",      "MAGENTA",      "BROWN",  "LIGHTGRAY",
+    "DARKGRAY", "LIGHTBLUE", "LIGHTGREEN", "LIGHTCYAN", "LIGHTRED", "LIGHTMAGENTA", "YELLOW", "WHITE"};
+
+constexpr double kMaxCoordinate = 1e9;
+
+struct Word {
+  size_t type;
+  std::string text;
+  Pos pos;
+};
+
+// Reads one line's words left to right. Each reader reports what it
+// expected at the word it stopped on (or at the end of the line) and
+// returns false; the caller then drops the rest of the line, so one slip
+// gives one message.
+class Cursor {
+ public:
+  Cursor(const std::vector<Word>& words, Pos lineEnd, Diagnostics& d) : w_(words), end_(lineEnd), diag_(d) {}
+
+  bool atEnd() const { return i_ >= w_.size(); }
+  const Word& peek() const { return w_[i_]; }
+  Pos pos() const { return atEnd() ? end_ : w_[i_].pos; }
+
+  bool keyword(std::string_view kw) {
+    if (atEnd() || peek().type != MP::NAME || !sameName(peek().text, kw)) return false;
+    ++i_;
+    return true;
+  }
+
+  bool fail(std::string_view what) {
+    diag_.error(pos(), atEnd() ? fmt::format("expected {} before the end of the line", what)
+                               : fmt::format("expected {}, found '{}'", what, peek().text));
+    return false;
+  }
+
+  bool number(double& out, std::string_view what) {
+    if (atEnd() || peek().type != MP::NUMBER) return fail(what);
+    const std::string& t = peek().text;
+    const char* first = t.data() + (t[0] == '+' ? 1 : 0);
+    const auto [ptr, ec] = std::from_chars(first, t.data() + t.size(), out);
+    if (ec != std::errc() || ptr != t.data() + t.size() || !std::isfinite(out) || std::abs(out) > kMaxCoordinate)
+      return fail(fmt::format("{} (at most {:g} in size)", what, kMaxCoordinate));
+    ++i_;
+    return true;
+  }
+
+  bool integer(std::int32_t& out, std::string_view what) {
+    double v = 0;
+    const Pos at = pos();
+    if (!number(v, what)) return false;
+    if (v != std::floor(v) || v < -2147483648.0 || v > 2147483647.0) {
+      diag_.error(at, fmt::format("expected {} (a whole number), found '{}'", what, w_[i_ - 1].text));
+      return false;
+    }
+    out = static_cast<std::int32_t>(v);
+    return true;
+  }
+
+  bool point(Point3& out, std::string_view what) {
+    out.pos = pos();
+    for (int k = 0; k < 3; ++k)
+      if (!number(out.v[k], fmt::format("{} ({} coordinate)", what, "xyz"[k]))) return false;
+    return true;
+  }
+
+  bool name(NameRef& out, std::string_view what) {
+    if (atEnd() || peek().type != MP::NAME) return fail(what);
+    out = {peek().text, peek().pos};
+    ++i_;
+    return true;
+  }
+
+  bool letter(char& out, Pos& at) {
+    at = pos();
+    if (atEnd() || peek().type != MP::NAME || peek().text.size() != 1 || !std::isalpha(static_cast<unsigned char>(peek().text[0])))
+      return fail("a motor letter A..Z");
+    out = static_cast<char>(std::toupper(static_cast<unsigned char>(peek().text[0])));
+    ++i_;
+    return true;
+  }
+
+  bool onOff(bool& out) {
+    if (keyword("ON")) return out = true, true;
+    if (keyword("OFF")) return out = false, true;
+    return fail("ON or OFF");
+  }
+
+  bool color(Color& out) {
+    if (!atEnd()) {
+      if (auto c = colorByName(peek().text)) {
+        out = *c;
+        ++i_;
+        return true;
+      }
+    }
+    return fail("a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15");
+  }
+
+  bool axis(int& out) {
+    for (int k = 0; k < 3; ++k)
+      if (keyword(std::string_view("XYZ").substr(static_cast<std::size_t>(k), 1))) return out = k, true;
+    return fail("an axis X, Y or Z");
+  }
+
+ private:
+  const std::vector<Word>& w_;
+  std::size_t i_ = 0;
+  Pos end_;
+  Diagnostics& diag_;
+};
+
+enum class Block { None, Link, Object, Gripper, Robot, Workcell };
+
+std::string_view blockName(Block b) {
+  switch (b) {
+    case Block::Link: return "LINK";
+    case Block::Object: return "OBJECT";
+    case Block::Gripper: return "GRIPPER";
+    case Block::Robot: return "ROBOT";
+    case Block::Workcell: return "WORKCELL";
+    case Block::None: break;
+  }
+  return "";
+}
+
+Eigen::Matrix3d axisRotation(int axis, double degrees) {
+  return Eigen::AngleAxisd(degrees * M_PI / 180.0, Eigen::Vector3d::Unit(axis)).toRotationMatrix();
+}
+
+class Parser {
+ public:
+  Parser(DescriptionFile& file, Diagnostics& d) : f_(file), diag_(d) {}
+  void line(const std::vector<Word>& words, Pos lineEnd);
+  void finish();
+
+ private:
+  void open(Cursor& c, const Word& head);
+  bool shapeClause(Cursor& c, ShapeDef& shape);
+  bool gripperClause(Cursor& c, GripperDef& g);
+  bool robotClause(Cursor& c, RobotDef& r);
+  bool workcellClause(Cursor& c, WorkcellDef& w);
+  bool motorClause(Cursor& c, char& letter, Pos& letterPos, double& precision, std::int32_t& min, std::int32_t& max,
+                   Pos& rangePos, std::int32_t& speed, bool* hasLetter, bool* hasPrecision, bool* hasRange);
+
+  DescriptionFile& f_;
+  Diagnostics& diag_;
+  Block block_ = Block::None;
+  Pos blockPos_;
+  Color color_ = Color::White;
+};
+
+void Parser::line(const std::vector<Word>& words, Pos lineEnd) {
+  if (words.empty()) return;
+  for (const Word& w : words)
+    if (w.type == MP::OTHER) return diag_.error(w.pos, fmt::format("unexpected character '{}'", w.text));
+  Cursor c(words, lineEnd, diag_);
+  if (block_ == Block::None) return open(c, words[0]);
+  if (c.keyword("END")) {
+    if (!c.atEnd()) diag_.error(c.pos(), fmt::format("END takes nothing after it, found '{}'", c.peek().text));
+    block_ = Block::None;
+    return;
+  }
+  while (!c.atEnd()) {
+    bool ok = false;
+    switch (block_) {
+      case Block::Link: ok = shapeClause(c, f_.links.back()); break;
+      case Block::Object: ok = shapeClause(c, f_.objects.back()); break;
+      case Block::Gripper: ok = gripperClause(c, f_.grippers.back()); break;
+      case Block::Robot: ok = robotClause(c, f_.robots.back()); break;
+      case Block::Workcell: ok = workcellClause(c, f_.workcells.back()); break;
+      case Block::None: break;
+    }
+    if (!ok) return;
+  }
+}
+
+void Parser::open(Cursor& c, const Word& head) {
+  static constexpr std::array<Block, 5> kinds{Block::Link, Block::Object, Block::Gripper, Block::Robot, Block::Workcell};
+  Block kind = Block::None;
+  for (Block k : kinds)
+    if (c.keyword(blockName(k))) kind = k;
+  if (kind == Block::None) {
+    diag_.error(head.pos, fmt::format("expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found '{}'", head.text));
+    return;
+  }
+  NameRef name;
+  if (!c.name(name, fmt::format("a name for the {}", blockName(kind)))) return;
+  if (!c.atEnd()) {
+    diag_.error(c.pos(), fmt::format("unexpected '{}' after the {} name (statements go on the next lines)",
+                                     c.peek().text, blockName(kind)));
+  }
+  block_ = kind;
+  blockPos_ = head.pos;
+  color_ = Color::White;
+  switch (kind) {
+    case Block::Link: f_.links.push_back({name.name, head.pos, {}}); break;
+    case Block::Object: f_.objects.push_back({name.name, head.pos, {}}); break;
+    case Block::Gripper: f_.grippers.push_back({}), f_.grippers.back().name = name.name, f_.grippers.back().pos = head.pos; break;
+    case Block::Robot: f_.robots.push_back({}), f_.robots.back().name = name.name, f_.robots.back().pos = head.pos; break;
+    case Block::Workcell: f_.workcells.push_back({name.name, head.pos, {}}); break;
+    case Block::None: break;
+  }
+}
+
+void Parser::finish() {
+  if (block_ != Block::None)
+    diag_.error(blockPos_, fmt::format("{} has no END", blockName(block_)));
+}
+
+// LINE, BOX, ROTATE, MOVE, COLOR: the DESIGN LINK / DESIGN OBJECT commands.
+bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
+  if (c.keyword("LINE")) {
+    Point3 a, b;
+    if (!c.point(a, "the LINE's first endpoint") || !c.point(b, "the LINE's second endpoint")) return false;
+    Color color = color_;
+    if (c.keyword("COLOR") && !c.color(color)) return false;
+    shape.segments.push_back({a.v, b.v, color});
+    return true;
+  }
+  if (c.keyword("BOX")) {
+    static constexpr std::array<std::string_view, 6> kEdges{"left", "right", "top", "bottom", "front", "back"};
+    double e[6];
+    for (int k = 0; k < 6; ++k)
+      if (!c.number(e[k], fmt::format("the BOX's {} edge", kEdges[static_cast<std::size_t>(k)]))) return false;
+    Color color = color_;
+    if (c.keyword("COLOR") && !c.color(color)) return false;
+    // x from left to right, y from bottom to top, z from back to front.
+    const double xs[2] = {e[0], e[1]}, ys[2] = {e[3], e[2]}, zs[2] = {e[5], e[4]};
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        shape.segments.push_back({{xs[0], ys[i], zs[j]}, {xs[1], ys[i], zs[j]}, color});
+        shape.segments.push_back({{xs[i], ys[0], zs[j]}, {xs[i], ys[1], zs[j]}, color});
+        shape.segments.push_back({{xs[i], ys[j], zs[0]}, {xs[i], ys[j], zs[1]}, color});
+      }
+    return true;
+  }
+  if (c.keyword("ROTATE")) {
+    int axis = 0;
+    double degrees = 0;
+    if (!c.axis(axis) || !c.number(degrees, "an angle in degrees")) return false;
+    const Eigen::Matrix3d r = axisRotation(axis, degrees);
+    for (workcell::Segment& s : shape.segments) s.a = r * s.a, s.b = r * s.b;
+    return true;
+  }
+  if (c.keyword("MOVE")) {
+    Point3 d;
+    if (!c.point(d, "a displacement")) return false;
+    for (workcell::Segment& s : shape.segments) s.a += d.v, s.b += d.v;
+    return true;
+  }
+  if (c.keyword("COLOR")) return c.color(color_);
+  return c.fail("LINE, BOX, ROTATE, MOVE, COLOR or END");
+}
+
+// LETTER, PRECISION, RANGE, SPEED: shared by GRIPPER and JOINT.
+bool Parser::motorClause(Cursor& c, char& letter, Pos& letterPos, double& precision, std::int32_t& min,
+                         std::int32_t& max, Pos& rangePos, std::int32_t& speed, bool* hasLetter, bool* hasPrecision,
+                         bool* hasRange) {
+  if (c.keyword("LETTER")) return *hasLetter = true, c.letter(letter, letterPos);
+  if (c.keyword("PRECISION")) {
+    const Pos at = c.pos();
+    if (!c.number(precision, "a precision (degrees or length units per encoder unit)")) return false;
+    if (precision <= 0) {
+      diag_.error(at, "a precision must be greater than 0");
+      return false;
+    }
+    return *hasPrecision = true;
+  }
+  if (c.keyword("RANGE")) {
+    rangePos = c.pos();
+    if (!c.integer(min, "the minimum encoder value") || !c.integer(max, "the maximum encoder value")) return false;
+    if (min > max) {
+      diag_.error(rangePos, fmt::format("range {}..{} is empty: the minimum is greater than the maximum", min, max));
+      return false;
+    }
+    return *hasRange = true;
+  }
+  if (c.keyword("SPEED")) {
+    const Pos at = c.pos();
+    if (!c.integer(speed, "a speed in encoder units per second")) return false;
+    if (speed <= 0) {
+      diag_.error(at, "a speed must be greater than 0");
+      return false;
+    }
+    return true;
+  }
+  return false;
+}
+
+bool Parser::gripperClause(Cursor& c, GripperDef& g) {
+  if (c.keyword("BASE")) return c.name(g.base, "the gripper's base link");
+  if (c.keyword("FINGERS")) return c.name(g.finger2, "the first finger link") && c.name(g.finger3, "the second finger link");
+  const auto twoPoints = [&](Point3 (&p)[2], bool& has, std::string_view what) {
+    has = true;
+    return c.point(p[0], fmt::format("the {}'s start point", what)) && c.point(p[1], fmt::format("the {}'s end point", what));
+  };
+  if (c.keyword("AXIS2")) return twoPoints(g.axis2, g.hasAxis2, "axis r2");
+  if (c.keyword("AXIS3")) return twoPoints(g.axis3, g.hasAxis3, "axis r3");
+  if (c.keyword("NORMAL")) return twoPoints(g.normal, g.hasNormal, "normal vector");
+  if (c.keyword("APPROACH")) return twoPoints(g.approach, g.hasApproach, "approach vector");
+  bool hasLetter = false, hasPrecision = false, hasRange = false;
+  const std::size_t before = diag_.errorCount();
+  if (motorClause(c, g.letter, g.letterPos, g.precision, g.min, g.max, g.rangePos, g.speed, &hasLetter, &hasPrecision,
+                  &hasRange))
+    return true;
+  if (diag_.errorCount() > before) return false;
+  return c.fail("BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, AXIS2, AXIS3, NORMAL, APPROACH or END");
+}
+
+bool Parser::robotClause(Cursor& c, RobotDef& r) {
+  if (c.keyword("LINK")) {
+    r.links.push_back({});
+    return c.name(r.links.back().link, "a link name");
+  }
+  if (c.keyword("FRAME")) return true;  // introduces ORIGIN, XAXIS, ZAXIS
+  for (auto [kw, member] : {std::pair{"ORIGIN", &RobotLinkDef::origin}, std::pair{"XAXIS", &RobotLinkDef::xPoint},
+                            std::pair{"ZAXIS", &RobotLinkDef::zPoint}}) {
+    if (!c.keyword(kw)) continue;
+    if (r.links.empty()) {
+      diag_.error(c.pos(), fmt::format("{} before any LINK: a frame belongs to the LINK before it", kw));
+      return false;
+    }
+    r.links.back().hasFrame = true;
+    return c.point(r.links.back().*member, fmt::format("the frame's {} point", kw));
+  }
+  if (c.keyword("JOINT")) {
+    JointDef j;
+    j.pos = c.pos();
+    std::int32_t n = 0;
+    if (!c.integer(n, "a joint number")) return false;
+    j.number = n;
+    if (c.keyword("REVOLUTE")) j.spec.type = kinematics::JointType::Revolute;
+    else if (c.keyword("PRISMATIC")) j.spec.type = kinematics::JointType::Prismatic;
+    else return c.fail("REVOLUTE or PRISMATIC");
+    r.joints.push_back(j);
+    return true;
+  }
+  if (c.keyword("COUPLING")) {
+    if (r.joints.empty()) return c.fail("a JOINT before COUPLING");
+    return c.onOff(r.joints.back().spec.coupling);
+  }
+  if (c.keyword("GRIPPER")) return c.name(r.gripper, "a gripper name");
+  if (!r.joints.empty()) {
+    JointDef& j = r.joints.back();
+    Pos letterPos;
+    const std::size_t before = diag_.errorCount();
+    if (motorClause(c, j.spec.letter, letterPos, j.spec.precision, j.spec.min, j.spec.max, j.rangePos, j.spec.speed,
+                    &j.hasLetter, &j.hasPrecision, &j.hasRange))
+      return true;
+    if (diag_.errorCount() > before) return false;
+  }
+  return c.fail("LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, GRIPPER or END");
+}
+
+bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
+  const bool robot = c.keyword("ROBOT");
+  if (robot || c.keyword("OBJECT")) {
+    PlacementDef p;
+    p.isRobot = robot;
+    if (!c.name(p.what, robot ? "a robot name" : "an object name")) return false;
+    w.placements.push_back(p);
+    return true;
+  }
+  if (w.placements.empty()) return c.fail("ROBOT, OBJECT or END");
+  PlacementDef& p = w.placements.back();
+  if (c.keyword("AT")) {
+    Point3 at;
+    if (!c.point(at, "a position")) return false;
+    p.at = at.v;
+    return true;
+  }
+  if (c.keyword("ROTATE")) {
+    int axis = 0;
+    double degrees = 0;
+    if (!c.axis(axis) || !c.number(degrees, "an angle in degrees")) return false;
+    p.rotation = axisRotation(axis, degrees) * p.rotation;
+    return true;
+  }
+  return c.fail("ROBOT, OBJECT, AT, ROTATE or END");
+}
+
+}  // namespace
+
+std::optional<workcell::Color> colorByName(std::string_view word) {
+  for (std::size_t i = 0; i < kColorNames.size(); ++i)
+    if (sameName(word, kColorNames[i]) || word == std::to_string(i)) return static_cast<Color>(i);
+  return std::nullopt;
+}
+
+std::string_view colorName(workcell::Color color) { return kColorNames[static_cast<std::size_t>(color)]; }
+
+DescriptionFile parseDescription(std::unique_ptr<SourceFile> source, Diagnostics& diagnostics) {
+  DescriptionFile file;
+  file.source = std::move(source);
+  if (auto bad = checkEncoding(*file.source)) {
+    diagnostics.add(bad->pos, bad->severity, bad->message);
+    return file;
+  }
+  antlr4::ANTLRInputStream input(file.source->text());
+  rs_grammar::RobotModelLexer lexer(&input);
+  lexer.removeErrorListeners();  // OTHER matches any character: no lexer errors
+  antlr4::CommonTokenStream tokens(&lexer);
+  MP parser(&tokens);
+  parser.removeErrorListeners();  // the grammar accepts any words on a line
+  MP::DescriptionContext* root = parser.description();
+  Parser p(file, diagnostics);
+  for (MP::LineContext* l : root->line()) {
+    std::vector<Word> words;
+    for (antlr4::tree::ParseTree* child : l->children) {
+      const antlr4::Token* t = static_cast<antlr4::tree::TerminalNode*>(child)->getSymbol();
+      words.push_back({t->getType(), t->getText(),
+                       {static_cast<std::uint32_t>(t->getLine()), static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)}});
+    }
+    const Pos end = words.empty() ? Pos{} : Pos{words.back().pos.line,
+                                              words.back().pos.col + static_cast<std::uint32_t>(words.back().text.size())};
+    p.line(words, end);
+  }
+  p.finish();
+  return file;
+}
+
+}  // namespace rs::compiler

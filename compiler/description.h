@@ -1,0 +1,100 @@
+// Robot and workcell descriptions (.rsd), first stage: one file parsed into
+// its definitions (links, objects, grippers, robots, workcells), every
+// statement checked for shape. Names are resolved later, across files, by
+// the library (library.h). Syntax: docs/models.md.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "compiler/diagnostics.h"
+#include "compiler/source.h"
+#include "runtime/workcell/model.h"
+
+namespace rs::compiler {
+
+struct NameRef {
+  std::string name;
+  Pos pos;
+};
+
+/// Three numbers and where the first was written.
+struct Point3 {
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  Pos pos;
+};
+
+struct ShapeDef {  // LINK or OBJECT
+  std::string name;
+  Pos pos;
+  std::vector<workcell::Segment> segments;
+};
+
+struct GripperDef {
+  std::string name;
+  Pos pos;
+  NameRef base, finger2, finger3;
+  char letter = 0;
+  Pos letterPos;
+  double precision = 0;
+  std::int32_t min = 0, max = 0;
+  Pos rangePos;
+  std::int32_t speed = 200;
+  Point3 axis2[2], axis3[2], normal[2], approach[2];  // two points each
+  bool hasAxis2 = false, hasAxis3 = false, hasNormal = false, hasApproach = false;
+};
+
+struct RobotLinkDef {
+  NameRef link;
+  Point3 origin, xPoint, zPoint;  // FRAME ORIGIN .. XAXIS .. ZAXIS ..
+  bool hasFrame = false;
+};
+
+struct JointDef {
+  int number = 0;
+  Pos pos;
+  workcell::JointSpec spec;
+  bool hasLetter = false, hasPrecision = false, hasRange = false;
+  Pos rangePos;
+};
+
+struct RobotDef {
+  std::string name;
+  Pos pos;
+  std::vector<RobotLinkDef> links;
+  std::vector<JointDef> joints;
+  NameRef gripper;  // empty name: none
+};
+
+struct PlacementDef {
+  bool isRobot = true;
+  NameRef what;
+  Eigen::Vector3d at = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // ROTATE clauses, in order
+};
+
+struct WorkcellDef {
+  std::string name;
+  Pos pos;
+  std::vector<PlacementDef> placements;
+};
+
+/// Everything one file defines, in the order written.
+struct DescriptionFile {
+  std::unique_ptr<SourceFile> source;
+  std::vector<ShapeDef> links, objects;
+  std::vector<GripperDef> grippers;
+  std::vector<RobotDef> robots;
+  std::vector<WorkcellDef> workcells;
+};
+
+/// Parses one description; every error goes to `diagnostics`.
+DescriptionFile parseDescription(std::unique_ptr<SourceFile> source, Diagnostics& diagnostics);
+
+/// Colour by EGA name ("LIGHTRED") or number ("12").
+std::optional<workcell::Color> colorByName(std::string_view word);
+std::string_view colorName(workcell::Color color);
+
+}  // namespace rs::compiler

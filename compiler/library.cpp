@@ -1,0 +1,381 @@
+#include "compiler/library.h"
+
+#include <cstdlib>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+
+#include "runtime/kinematics/chain_model.h"
+#include "runtime/kinematics/frame.h"
+
+namespace rs::compiler {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::size_t kMaxDescriptionBytes = std::size_t{64} << 20;
+
+std::string_view kindName(int kind) {
+  static constexpr std::string_view names[] = {"link", "object", "gripper", "robot", "workcell"};
+  return names[kind];
+}
+
+std::string_view kindFolder(int kind) {
+  static constexpr std::string_view folders[] = {"links", "objects", "grippers", "robots", "workcells"};
+  return folders[kind];
+}
+
+template <typename Def>
+const Def* findIn(const std::vector<Def>& defs, const std::string& name) {
+  for (const Def& d : defs)
+    if (d.name == name) return &d;
+  return nullptr;
+}
+
+template <typename Def>
+const std::vector<Def>& defsOf(const DescriptionFile& f);
+template <> const std::vector<GripperDef>& defsOf(const DescriptionFile& f) { return f.grippers; }
+template <> const std::vector<RobotDef>& defsOf(const DescriptionFile& f) { return f.robots; }
+
+// Objects share ShapeDef with links, so they need their own accessor.
+const ShapeDef* findShape(const DescriptionFile& f, bool object, const std::string& name) {
+  return findIn(object ? f.objects : f.links, name);
+}
+
+Pos frameErrorPos(const RobotDef& def, const NameRef& gripperRef, int index) {
+  if (index >= 0 && static_cast<std::size_t>(index) < def.links.size()) {
+    const RobotLinkDef& l = def.links[static_cast<std::size_t>(index)];
+    return l.hasFrame ? l.origin.pos : l.link.pos;
+  }
+  return gripperRef.name.empty() ? def.pos : gripperRef.pos;
+}
+
+}  // namespace
+
+std::vector<fs::path> librarySearchPath(const std::vector<std::string>& libDirs) {
+  std::vector<fs::path> path{fs::path(ROBOTSIM_STDLIB_DIR)};
+  for (const std::string& d : libDirs) path.emplace_back(d);
+  if (const char* env = std::getenv("ROBOTSIM_PATH")) {
+    std::stringstream entries(env);
+    for (std::string e; std::getline(entries, e, ':');)
+      if (!e.empty()) path.emplace_back(e);
+  }
+  return path;
+}
+
+Library::Library(std::vector<fs::path> searchPath) : searchPath_(std::move(searchPath)) {}
+
+bool Library::hasErrors() const {
+  for (const Diagnostic& d : diagnostics_)
+    if (d.severity == Severity::Error) return true;
+  return false;
+}
+
+const SourceFile* Library::source(const std::string& file) const {
+  for (const auto& f : files_)
+    if (f->source && f->source->name() == file) return f->source.get();
+  return nullptr;
+}
+
+void Library::error(const DescriptionFile& file, Pos pos, std::string message) {
+  diagnostics_.push_back({file.source->name(), pos, Severity::Error, std::move(message)});
+}
+
+// Reads and parses a file once; later loads of the same path reuse it.
+const DescriptionFile* Library::load(const fs::path& path) {
+  std::error_code ec;
+  const std::string key = fs::weakly_canonical(path, ec).string();
+  if (auto it = byPath_.find(key); it != byPath_.end()) return it->second;
+  std::ifstream in(path, std::ios::binary);
+  if (!in || fs::is_directory(path, ec)) {
+    diagnostics_.push_back({path.string(), {}, Severity::Error, "cannot read description file"});
+    return nullptr;
+  }
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxDescriptionBytes) {
+      diagnostics_.push_back({path.string(), {}, Severity::Error, "description file larger than 64 MiB"});
+      return nullptr;
+    }
+  }
+  Diagnostics d(path.string());
+  auto file = std::make_unique<DescriptionFile>(parseDescription(std::make_unique<SourceFile>(path.string(), text), d));
+  for (const Diagnostic& diag : d.sorted()) diagnostics_.push_back(diag);
+  files_.push_back(std::move(file));
+  byPath_[key] = files_.back().get();
+  return files_.back().get();
+}
+
+// A definition by name: in `first` (the referring file), then in every file
+// loaded so far, then as NAME.rsd on the search path (directly or in the
+// kind's folder: links/, grippers/, robots/, objects/, workcells/).
+template <typename Def>
+const Def* Library::find(Kind kind, const std::string& name, const DescriptionFile* first) {
+  const bool object = kind == Kind::Object;
+  const auto lookIn = [&](const DescriptionFile& f) -> const Def* {
+    if constexpr (std::is_same_v<Def, ShapeDef>) return findShape(f, object, name);
+    else return findIn(defsOf<Def>(f), name);
+  };
+  if (first)
+    if (const Def* d = lookIn(*first)) return d;
+  for (const auto& f : files_)
+    if (const Def* d = lookIn(*f)) return d;
+  for (const fs::path& dir : searchPath_) {
+    for (const fs::path& candidate : {dir / (name + ".rsd"), dir / kindFolder(static_cast<int>(kind)) / (name + ".rsd")}) {
+      std::error_code ec;
+      if (!fs::is_regular_file(candidate, ec)) continue;
+      if (const DescriptionFile* f = load(candidate))
+        if (const Def* d = lookIn(*f)) return d;
+    }
+  }
+  return nullptr;
+}
+
+std::optional<workcell::Shape> Library::shape(Kind kind, const NameRef& ref, const DescriptionFile& from) {
+  const ShapeDef* def = find<ShapeDef>(kind, ref.name, &from);
+  if (!def) {
+    error(from, ref.pos, fmt::format("unknown {} '{}': not defined in this file, and no {}.rsd on the library path",
+                                     kindName(static_cast<int>(kind)), ref.name, ref.name));
+    return std::nullopt;
+  }
+  return workcell::Shape{def->name, def->segments};
+}
+
+std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const DescriptionFile& from) {
+  const GripperDef* def = find<GripperDef>(Kind::Gripper, ref.name, &from);
+  if (!def) {
+    error(from, ref.pos, fmt::format("unknown gripper '{}': not defined in this file, and no {}.rsd on the library path",
+                                     ref.name, ref.name));
+    return std::nullopt;
+  }
+  const DescriptionFile* home = nullptr;  // the file that defines it, for its messages
+  for (const auto& f : files_)
+    for (const GripperDef& g : f->grippers)
+      if (&g == def) home = f.get();
+  const DescriptionFile& at = home ? *home : from;
+  bool ok = true;
+  const auto need = [&](bool present, std::string_view what) {
+    if (!present) error(at, def->pos, fmt::format("gripper '{}' has no {}", def->name, what)), ok = false;
+  };
+  need(!def->base.name.empty(), "BASE link");
+  need(!def->finger2.name.empty(), "FINGERS");
+  need(def->letter != 0, "LETTER");
+  need(def->precision > 0, "PRECISION");
+  need(def->rangePos.line != 0, "RANGE");
+  need(def->hasAxis2, "AXIS2 (finger 2's rotation axis r2)");
+  need(def->hasAxis3, "AXIS3 (finger 3's rotation axis r3)");
+  need(def->hasNormal, "NORMAL vector");
+  need(def->hasApproach, "APPROACH vector");
+  if (!ok) return std::nullopt;
+  workcell::Gripper g;
+  g.name = def->name;
+  auto base = shape(Kind::Link, def->base, at);
+  auto f2 = shape(Kind::Link, def->finger2, at);
+  auto f3 = shape(Kind::Link, def->finger3, at);
+  if (!base || !f2 || !f3) return std::nullopt;
+  g.base = std::move(*base), g.finger2 = std::move(*f2), g.finger3 = std::move(*f3);
+  g.letter = def->letter, g.min = def->min, g.max = def->max, g.speed = def->speed;
+  const kinematics::GripperPoints points{def->axis2[0].v, def->axis2[1].v, def->axis3[0].v,  def->axis3[1].v,
+                                         def->normal[0].v, def->normal[1].v, def->approach[0].v, def->approach[1].v};
+  kinematics::Result<kinematics::GripperModel> model = kinematics::makeGripper(points, def->precision);
+  for (const kinematics::KinematicsError& e : model.errors) {
+    const Pos pos = e.kind == kinematics::ErrorKind::TcpMismatch ? def->approach[0].pos : def->normal[0].pos;
+    error(at, pos, fmt::format("gripper '{}': {}", def->name, e.message));
+  }
+  if (!model.ok()) return std::nullopt;
+  g.model = *model.value;
+  return g;
+}
+
+std::optional<workcell::Robot> Library::buildRobot(const RobotDef& def, const DescriptionFile& from) {
+  workcell::Robot robot;
+  robot.name = def.name;
+  bool ok = true;
+  if (def.links.empty()) error(from, def.pos, fmt::format("robot '{}' has no LINK", def.name)), ok = false;
+  for (std::size_t i = 0; i < def.links.size(); ++i) {
+    const RobotLinkDef& l = def.links[i];
+    auto s = shape(Kind::Link, l.link, from);
+    if (!s) ok = false;
+    else robot.links.push_back(std::move(*s));
+    if (!l.hasFrame) {
+      error(from, l.link.pos, fmt::format("link '{}' has no FRAME (ORIGIN, XAXIS and ZAXIS points)", l.link.name));
+      ok = false;
+      continue;
+    }
+    auto frame = kinematics::frameFromPoints(l.origin.v, l.xPoint.v, l.zPoint.v, {}, static_cast<int>(i));
+    for (const auto& e : frame.errors) error(from, l.origin.pos, fmt::format("link '{}': {}", l.link.name, e.message));
+    if (frame.ok()) robot.frames.push_back(*frame.value);
+    else ok = false;
+  }
+  if (!def.gripper.name.empty()) {
+    auto g = gripper(def.gripper, from);
+    if (!g) ok = false;
+    else robot.hasGripper = true, robot.gripper = std::move(*g), robot.frames.push_back(robot.gripper.model.F_G_E);
+  }
+  // Joints: numbered 1, 2, 3 ... in order, each with its motor data.
+  for (std::size_t i = 0; i < def.joints.size(); ++i) {
+    const JointDef& j = def.joints[i];
+    if (j.number != static_cast<int>(i + 1))
+      error(from, j.pos, fmt::format("joints are numbered in order: expected JOINT {}, found JOINT {}", i + 1, j.number)), ok = false;
+    for (auto [present, what] : {std::pair{j.hasLetter, "LETTER"}, std::pair{j.hasPrecision, "PRECISION"},
+                                 std::pair{j.hasRange, "RANGE"}})
+      if (!present) error(from, j.pos, fmt::format("JOINT {} has no {}", j.number, what)), ok = false;
+    robot.joints.push_back(j.spec);
+  }
+  const std::size_t frames = def.links.size() + (def.gripper.name.empty() ? 0 : 1);
+  if (ok && def.joints.size() + 1 != frames)
+    error(from, def.pos, fmt::format("robot '{}' has {} link{}{} and so needs {} joint{}, found {}", def.name,
+                                     def.links.size(), def.links.size() == 1 ? "" : "s",
+                                     def.gripper.name.empty() ? "" : " and a gripper", frames - 1,
+                                     frames - 1 == 1 ? "" : "s", def.joints.size())),
+        ok = false;
+  // Motor letters are unique across the arm and the gripper.
+  std::string letters;
+  for (std::size_t i = 0; i < def.joints.size(); ++i) {
+    if (letters.find(def.joints[i].spec.letter) != std::string::npos && def.joints[i].hasLetter)
+      error(from, def.joints[i].pos, fmt::format("motor letter {} is used twice", def.joints[i].spec.letter)), ok = false;
+    letters += def.joints[i].spec.letter;
+  }
+  if (robot.hasGripper && letters.find(robot.gripper.letter) != std::string::npos)
+    error(from, def.gripper.pos, fmt::format("the gripper's motor letter {} is also a joint's", robot.gripper.letter)),
+        ok = false;
+  if (!ok) return std::nullopt;
+
+  std::vector<kinematics::JointType> types;
+  std::vector<kinematics::JointDrive> drives;
+  for (const workcell::JointSpec& j : robot.joints) {
+    types.push_back(j.type);
+    drives.push_back({j.precision, -1, j.coupling});
+  }
+  auto chain = kinematics::ChainModel::fromFrames(robot.frames, types, drives);
+  for (const kinematics::KinematicsError& e : chain.errors) {
+    const bool jointError = e.kind == kinematics::ErrorKind::BadCoupling || e.kind == kinematics::ErrorKind::BadPrecision;
+    const Pos pos = jointError && e.index >= 1 && static_cast<std::size_t>(e.index) <= def.joints.size()
+                        ? def.joints[static_cast<std::size_t>(e.index - 1)].pos
+                        : frameErrorPos(def, def.gripper, e.index);
+    error(from, pos, fmt::format("robot '{}': {}", def.name, e.message));
+  }
+  if (!chain.ok()) return std::nullopt;
+  robot.chain = std::move(chain.value);
+  return robot;
+}
+
+std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def, const DescriptionFile& from) {
+  workcell::Workcell cell;
+  cell.name = def.name;
+  bool ok = true;
+  for (const PlacementDef& p : def.placements) {
+    if (p.isRobot) {
+      const RobotDef* r = find<RobotDef>(Kind::Robot, p.what.name, &from);
+      if (!r) {
+        error(from, p.what.pos, fmt::format("unknown robot '{}': not defined in this file, and no {}.rsd on the "
+                                            "library path", p.what.name, p.what.name));
+        ok = false;
+        continue;
+      }
+      const DescriptionFile* home = &from;
+      for (const auto& f : files_)
+        for (const RobotDef& rd : f->robots)
+          if (&rd == r) home = f.get();
+      auto robot = buildRobot(*r, *home);
+      if (!robot) {
+        ok = false;
+        continue;
+      }
+      // The origin of link 0 goes to AT, turned by the ROTATE clauses.
+      const Eigen::Vector3d o0 = robot->frames[0].translation();
+      Eigen::Isometry3d place = Eigen::Isometry3d::Identity();
+      place.linear() = p.rotation;
+      place.translation() = p.at - p.rotation * o0;
+      cell.robots.push_back({std::move(*robot), place});
+    } else {
+      auto s = shape(Kind::Object, p.what, from);
+      if (!s) {
+        ok = false;
+        continue;
+      }
+      // The lowest, left-most, front-most corner goes to AT.
+      Eigen::Vector3d corner(0, 0, 0);
+      if (!s->segments.empty()) {
+        corner = s->segments[0].a;
+        for (const workcell::Segment& seg : s->segments)
+          for (const Eigen::Vector3d& q : {seg.a, seg.b}) {
+            corner.x() = std::min(corner.x(), q.x());
+            corner.y() = std::min(corner.y(), q.y());
+            corner.z() = std::max(corner.z(), q.z());
+          }
+      }
+      Eigen::Isometry3d place = Eigen::Isometry3d::Identity();
+      place.linear() = p.rotation;
+      place.translation() = p.at - p.rotation * corner;
+      cell.objects.push_back({std::move(*s), place});
+    }
+  }
+  if (ok && cell.robots.empty() && cell.objects.empty())
+    error(from, def.pos, fmt::format("workcell '{}' places no robot and no object", def.name)), ok = false;
+  if (!ok) return std::nullopt;
+  return cell;
+}
+
+// A file path if it names an existing file, else a library name.
+const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kind) {
+  std::error_code ec;
+  if (fs::exists(fileOrName, ec)) return load(fileOrName);
+  for (const fs::path& dir : searchPath_)
+    for (const fs::path& candidate :
+         {dir / (fileOrName + ".rsd"), dir / kindFolder(static_cast<int>(kind)) / (fileOrName + ".rsd")})
+      if (fs::is_regular_file(candidate, ec)) return load(candidate);
+  diagnostics_.push_back({fileOrName, {}, Severity::Error,
+                          fmt::format("no such file, and no {} of that name on the library path", kindName(static_cast<int>(kind)))});
+  return nullptr;
+}
+
+std::optional<workcell::Robot> Library::robot(const std::string& fileOrName) {
+  const DescriptionFile* f = loadRoot(fileOrName, Kind::Robot);
+  if (!f || hasErrors()) return std::nullopt;
+  if (f->robots.empty()) {
+    diagnostics_.push_back({f->source->name(), {}, Severity::Error, "the file defines no ROBOT"});
+    return std::nullopt;
+  }
+  auto r = buildRobot(f->robots.front(), *f);
+  return hasErrors() ? std::nullopt : std::move(r);
+}
+
+std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrName) {
+  const DescriptionFile* f = loadRoot(fileOrName, Kind::Workcell);
+  if (!f || hasErrors()) return std::nullopt;
+  std::optional<workcell::Workcell> cell;
+  if (!f->workcells.empty()) {
+    cell = buildWorkcell(f->workcells.front(), *f);
+  } else if (!f->robots.empty()) {
+    WorkcellDef alone{f->robots.front().name, f->robots.front().pos, {}};
+    PlacementDef p;
+    p.what = {f->robots.front().name, f->robots.front().pos};
+    p.at = Eigen::Vector3d::Zero();
+    alone.placements.push_back(p);
+    cell = buildWorkcell(alone, *f);
+    // Alone, the robot stays where it was drawn.
+    if (cell) cell->robots.front().F_world_design = Eigen::Isometry3d::Identity();
+  } else {
+    diagnostics_.push_back({f->source->name(), {}, Severity::Error, "the file defines no WORKCELL and no ROBOT"});
+  }
+  return hasErrors() ? std::nullopt : std::move(cell);
+}
+
+std::vector<vm::MotorSpec> motorTable(const workcell::Robot& robot) {
+  std::vector<vm::MotorSpec> motors;
+  for (const workcell::JointSpec& j : robot.joints)
+    motors.push_back({j.letter,
+                      j.type == kinematics::JointType::Revolute ? vm::JointKind::Revolute : vm::JointKind::Prismatic,
+                      j.precision, j.min, j.max, j.speed});
+  if (robot.hasGripper) {
+    const workcell::Gripper& g = robot.gripper;
+    motors.push_back({g.letter, vm::JointKind::Gripper, g.model.precision, g.min, g.max, g.speed});
+  }
+  return motors;
+}
+
+}  // namespace rs::compiler

@@ -1,0 +1,61 @@
+// Robot and workcell descriptions, second stage: names resolved across
+// files and the library search path, then each robot built (frames, D-H
+// table, chain model) and each workcell placed. Every error from every file
+// is collected, with the file it belongs to.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/description.h"
+#include "runtime/workcell/model.h"
+#include "vm/image.h"
+
+namespace rs::compiler {
+
+/// Where names are looked up after the file itself: the project's stdlib/,
+/// then --lib directories, then the ROBOTSIM_PATH entries (colon-separated).
+std::vector<std::filesystem::path> librarySearchPath(const std::vector<std::string>& libDirs);
+
+class Library {
+ public:
+  explicit Library(std::vector<std::filesystem::path> searchPath);
+
+  /// A robot from a description file (its first ROBOT) or a library name.
+  std::optional<workcell::Robot> robot(const std::string& fileOrName);
+  /// A workcell from a file (its first WORKCELL, or else its first ROBOT
+  /// placed alone at the origin) or a library name.
+  std::optional<workcell::Workcell> workcell(const std::string& fileOrName);
+
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+  bool hasErrors() const;
+  /// The source of a diagnostic's file, for rendering; null if unknown.
+  const SourceFile* source(const std::string& file) const;
+
+ private:
+  enum class Kind { Link, Object, Gripper, Robot, Workcell };
+  const DescriptionFile* load(const std::filesystem::path& path);
+  const DescriptionFile* loadRoot(const std::string& fileOrName, Kind kind);
+  template <typename Def>
+  const Def* find(Kind kind, const std::string& name, const DescriptionFile* first);
+  std::optional<workcell::Shape> shape(Kind kind, const NameRef& ref, const DescriptionFile& from);
+  std::optional<workcell::Gripper> gripper(const NameRef& ref, const DescriptionFile& from);
+  std::optional<workcell::Robot> buildRobot(const RobotDef& def, const DescriptionFile& from);
+  std::optional<workcell::Workcell> buildWorkcell(const WorkcellDef& def, const DescriptionFile& from);
+  void error(const DescriptionFile& file, Pos pos, std::string message);
+
+  std::vector<std::filesystem::path> searchPath_;
+  std::vector<std::unique_ptr<DescriptionFile>> files_;  // in load order
+  std::map<std::string, const DescriptionFile*> byPath_;
+  std::vector<Diagnostic> diagnostics_;
+};
+
+/// The motor table a program sees on a robot: arm joints in order, then
+/// the gripper's motor.
+std::vector<vm::MotorSpec> motorTable(const workcell::Robot& robot);
+
+}  // namespace rs::compiler
