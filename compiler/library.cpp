@@ -324,10 +324,13 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
 const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kind) {
   std::error_code ec;
   if (fs::exists(fileOrName, ec)) return load(fileOrName);
-  for (const fs::path& dir : searchPath_)
-    for (const fs::path& candidate :
-         {dir / (fileOrName + ".rsd"), dir / kindFolder(static_cast<int>(kind)) / (fileOrName + ".rsd")})
+  // The kind's own folder first; a workcell may also be a lone robot.
+  for (const fs::path& dir : searchPath_) {
+    std::vector<fs::path> candidates{dir / (fileOrName + ".rsd"), dir / kindFolder(static_cast<int>(kind)) / (fileOrName + ".rsd")};
+    if (kind == Kind::Workcell) candidates.push_back(dir / kindFolder(static_cast<int>(Kind::Robot)) / (fileOrName + ".rsd"));
+    for (const fs::path& candidate : candidates)
       if (fs::is_regular_file(candidate, ec)) return load(candidate);
+  }
   diagnostics_.push_back({fileOrName, {}, Severity::Error,
                           fmt::format("no such file, and no {} of that name on the library path", kindName(static_cast<int>(kind)))});
   return nullptr;

@@ -55,6 +55,7 @@ struct Image {
   std::vector<std::string> variables;  // slot -> name
   std::vector<Point> points;
   std::vector<Label> labels;          // sorted by index
+  std::vector<std::uint8_t> cell;     // the workcell compiled in, opaque to the VM (may be empty)
   bool operator==(const Image&) const = default;
 };
 

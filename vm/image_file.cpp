@@ -128,6 +128,8 @@ void writePayload(Writer& w, const Image& im) {
     w.u32(l.index);
     w.str(l.name);
   }
+  w.u32(static_cast<std::uint32_t>(im.cell.size()));
+  w.out.insert(w.out.end(), im.cell.begin(), im.cell.end());
 }
 
 void readMotors(Reader& r, Image& im) {
@@ -192,6 +194,10 @@ void readNames(Reader& r, Image& im) {
     if (!r.failed && !isIdentifier(l.name)) r.fail(fmt::format("label {} has a bad name", i + 1));
     im.labels.push_back(std::move(l));
   }
+  // The cell section is opaque here; runtime/workcell decodes and checks it.
+  const std::size_t nc = r.count(1, "cell byte");
+  im.cell.reserve(nc);
+  for (std::size_t i = 0; i < nc && !r.failed; ++i) im.cell.push_back(r.u8());
 }
 
 }  // namespace

@@ -8,7 +8,10 @@
 #include "cli/lib/report.h"
 #include "cli/lib/robot_commands.h"
 #include "cli/lib/trace.h"
+#include "compiler/library.h"
 #include "runtime/sim_machine.h"
+#include "runtime/workcell/cell_file.h"
+#include "runtime/workcell/tool_tracker.h"
 #include "runtime/stimuli.h"
 #include "runtime/stimuli_text.h"
 #include "vm/disasm.h"
@@ -29,14 +32,36 @@ struct Options {
   std::string maxTime = "3600";
   bool strict = false;
   bool tree = false;
+  std::string cell;                  // --cell
+  std::vector<std::string> libDirs;  // --lib
 };
 
-void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags,
-                      const compiler::SourceFile* source) {
-  // A stimuli error names its own file: show program lines only under
-  // diagnostics about the program.
-  for (const compiler::Diagnostic& d : diags)
-    err << compiler::render(d, source && d.file == source->name() ? source : nullptr);
+// The program, compiled for --cell's robot when given; the image then
+// carries the cell.
+LoadedProgram loadWithCell(const Options& o) {
+  if (o.cell.empty()) return loadProgram(o.file, defaultTarget());
+  auto library = std::make_shared<compiler::Library>(compiler::librarySearchPath(o.libDirs));
+  std::optional<workcell::Workcell> cell = library->workcell(o.cell);
+  if (!cell || cell->robots.empty()) {
+    LoadedProgram failed;
+    failed.descriptions = library;
+    failed.diagnostics = library->diagnostics();
+    if (cell) failed.diagnostics.push_back({o.cell, {}, compiler::Severity::Error, "the workcell has no robot to run the program"});
+    return failed;
+  }
+  LoadedProgram program = loadProgram(o.file, cellTarget(*cell));
+  program.descriptions = library;
+  if (program.image && !program.source) {
+    program.image.reset();
+    program.diagnostics.push_back({o.file, {}, compiler::Severity::Error,
+                                   "--cell applies to program sources: a compiled image carries its own cell"});
+  }
+  if (program.image) program.image->cell = workcell::encodeCell(*cell);
+  return program;
+}
+
+void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags, const LoadedProgram& program) {
+  for (const compiler::Diagnostic& d : diags) err << compiler::render(d, program.sourceOf(d.file));
 }
 
 bool hasErrors(const std::vector<compiler::Diagnostic>& diags) {
@@ -78,9 +103,18 @@ bool loadStimuli(const Options& o, runtime::Stimuli& stimuli, std::vector<compil
 
 int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& err) {
   const bool json = o.format == "json";
-  LoadedProgram program = loadProgram(o.file, defaultTarget());
+  LoadedProgram program = loadWithCell(o);
   if (check && o.strict) promoteWarnings(program);
-  const compiler::SourceFile* source = program.source ? &*program.source : nullptr;
+  std::optional<workcell::Workcell> cell;
+  if (program.image && !program.image->cell.empty()) {
+    workcell::CellDecode decoded = workcell::decodeCell(program.image->cell);
+    if (!decoded.cell)
+      program.diagnostics.push_back({o.file, {}, compiler::Severity::Error, "image rejected: " + decoded.error});
+    else if (decoded.cell->robots.empty())
+      program.diagnostics.push_back({o.file, {}, compiler::Severity::Error, "image rejected: its cell has no robot"});
+    if (!decoded.cell || decoded.cell->robots.empty()) program.image.reset();
+    cell = std::move(decoded.cell);
+  }
   RunReport report;
   report.diagnostics = program.diagnostics;
   runtime::Stimuli stimuli;
@@ -89,24 +123,27 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
     report.diagnostics.push_back({"--max-time", {}, compiler::Severity::Error, maxTime.error});
   const bool stimuliOk = loadStimuli(o, stimuli, report.diagnostics);
   if (!program.ok() || !stimuliOk || !maxTime.error.empty()) {
-    printDiagnostics(err, report.diagnostics, source);
+    printDiagnostics(err, report.diagnostics, program);
     if (json) printJsonSummary(out, report);
     return kCompileError;
   }
-  printDiagnostics(err, program.diagnostics, source);  // warnings
+  printDiagnostics(err, program.diagnostics, program);  // warnings
 
   const vm::Image& image = *program.image;
   runtime::SimMachine machine(image.motors, std::move(stimuli));
   vm::Interpreter interpreter(image, machine);
+  std::optional<workcell::ToolTracker> tool;
+  if (cell) tool.emplace(cell->robots.front());
+  report.tool = tool ? &*tool : nullptr;
   std::optional<TraceWriter> trace;
-  if (!o.trace.empty()) trace.emplace(out, o.trace == "json" ? TraceFormat::Json : TraceFormat::Text);
+  if (!o.trace.empty()) trace.emplace(out, o.trace == "json" ? TraceFormat::Json : TraceFormat::Text, report.tool);
   const vm::RunLimits limits{o.maxSteps, maxTime.micros};
   report.outcome = interpreter.run(limits, trace ? &*trace : nullptr);
   report.image = &image;
   report.vm = &interpreter;
   if (!report.outcome->ok()) {
     const compiler::Diagnostic d = runtimeDiagnostic(image, *report.outcome, image.sourceName);
-    printDiagnostics(err, {d}, source);
+    printDiagnostics(err, {d}, program);
     report.diagnostics.push_back(d);
   }
   if (json) printJsonSummary(out, report);
@@ -118,8 +155,8 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
 }
 
 int compileCommand(const Options& o, std::ostream& out, std::ostream& err) {
-  LoadedProgram program = loadProgram(o.file, defaultTarget());
-  printDiagnostics(err, program.diagnostics, program.source ? &*program.source : nullptr);
+  LoadedProgram program = loadWithCell(o);
+  printDiagnostics(err, program.diagnostics, program);
   if (!program.ok()) return kCompileError;
   std::string error;
   if (!writeFileAtomically(o.output, vm::writeImage(*program.image), error)) {
@@ -131,8 +168,8 @@ int compileCommand(const Options& o, std::ostream& out, std::ostream& err) {
 }
 
 int disasmCommand(const Options& o, std::ostream& out, std::ostream& err) {
-  LoadedProgram program = loadProgram(o.file, defaultTarget());
-  printDiagnostics(err, program.diagnostics, program.source ? &*program.source : nullptr);
+  LoadedProgram program = loadWithCell(o);
+  printDiagnostics(err, program.diagnostics, program);
   if (!program.ok()) return kCompileError;
   out << vm::disassemble(*program.image);
   return kOk;
@@ -154,7 +191,7 @@ int sourceView(const Options& o, std::ostream& out, std::ostream& err, Dump dump
   const compiler::SourceFile source(o.file, std::move(*text));
   std::vector<compiler::Diagnostic> diags;
   out << dump(source, diags);
-  printDiagnostics(err, diags, &source);
+  for (const compiler::Diagnostic& d : diags) err << compiler::render(d, &source);
   return hasErrors(diags) ? kCompileError : kOk;
 }
 
@@ -171,7 +208,15 @@ int helpCommand(const std::string& topic, std::ostream& out, std::ostream& err) 
   return kCompileError;
 }
 
+void addCellOptions(CLI::App* cmd, Options& o) {
+  cmd->add_option("--cell", o.cell, "Workcell (or robot) description file or library name to run on");
+  cmd->add_option("--lib", o.libDirs, "Also look up description names in this directory (repeatable)")
+      ->expected(1)
+      ->take_all();
+}
+
 void addRunOptions(CLI::App* cmd, Options& o) {
+  addCellOptions(cmd, o);
   cmd->add_option("--format", o.format, "Summary format: text or json")->check(CLI::IsMember({"text", "json"}));
   cmd->add_option("--input", o.inputs, "Input change N=ON@SECONDS or N=OFF@SECONDS (repeatable)")
       ->expected(1)
@@ -204,9 +249,11 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   CLI::App* compile = app.add_subcommand("compile", "Compile a program to a bytecode image");
   compile->add_option("file", o.file, "Program source")->required();
   compile->add_option("-o,--output", o.output, "Image file to write (.rsb)")->required();
+  addCellOptions(compile, o);
 
   CLI::App* disasm = app.add_subcommand("disasm", "List the bytecode of a program or image");
   disasm->add_option("file", o.file, "Program source or compiled image")->required();
+  addCellOptions(disasm, o);
 
   CLI::App* tokens = app.add_subcommand("tokens", "Show the tokens the lexer produces");
   tokens->add_option("file", o.file, "Program source")->required();

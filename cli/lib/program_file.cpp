@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fstream>
 
+#include "compiler/library.h"
 #include "stdlib/default_robot.h"
 #include "vm/image_file.h"
 
@@ -67,6 +68,16 @@ bool writeFileAtomically(const std::string& path, const std::vector<std::uint8_t
 
 compiler::Target defaultTarget() {
   return {std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth};
+}
+
+const compiler::SourceFile* LoadedProgram::sourceOf(const std::string& file) const {
+  if (source && source->name() == file) return &*source;
+  return descriptions ? descriptions->source(file) : nullptr;
+}
+
+compiler::Target cellTarget(const workcell::Workcell& cell) {
+  const workcell::Robot& robot = cell.robots.front().robot;
+  return {robot.name, compiler::motorTable(robot), vm::kDefaultCallDepth};
 }
 
 LoadedProgram loadProgram(const std::string& path, const compiler::Target& target) {

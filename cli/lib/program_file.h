@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "compiler/compiler.h"
+#include "compiler/library.h"
+#include "runtime/workcell/model.h"
 
 namespace rs::cli {
 
@@ -14,7 +16,11 @@ struct LoadedProgram {
   std::optional<compiler::SourceFile> source;  // set when FILE was source text
   std::optional<vm::Image> image;              // set when it compiled / verified
   std::vector<compiler::Diagnostic> diagnostics;
+  /// The description files read for --cell, kept for their source lines.
+  std::shared_ptr<const compiler::Library> descriptions;
   bool ok() const { return image.has_value(); }
+  /// The source text of a diagnostic's file, if it was read.
+  const compiler::SourceFile* sourceOf(const std::string& file) const;
 };
 
 inline constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;
@@ -29,5 +35,8 @@ LoadedProgram loadProgram(const std::string& path, const compiler::Target& targe
 
 /// The default machine: the paper's Rhino SCARA (stdlib/default_robot.h).
 compiler::Target defaultTarget();
+
+/// The machine of a workcell: its first robot's motors (arm, then gripper).
+compiler::Target cellTarget(const workcell::Workcell& cell);
 
 }  // namespace rs::cli

@@ -57,6 +57,7 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   const auto pos = m.positions();
   for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? "  " : "", im.motors[i].letter, pos[i]);
   out << fmt::format("  motors          {}\n", motors);
+  if (r.tool) out << fmt::format("  tool centre     {}\n", pointText(r.tool->tcp(pos)));
   out << fmt::format("  outputs         {}  (ON: {})\n", lampText(m.outputs()), lampList(m.outputs()));
   out << fmt::format("  inputs          {}  (ON: {})\n", lampText(m.inputs()), lampList(m.inputs()));
   std::string vars;
@@ -77,6 +78,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     const auto pos = m.positions();
     for (std::size_t i = 0; i < pos.size(); ++i) motors[std::string(1, im.motors[i].letter)] = pos[i];
     j["motors"] = motors;
+    if (r.tool) j["tcp"] = roundedPoint(r.tool->tcp(pos));
     Json outputs = Json::array(), inputs = Json::array();
     for (int i = 0; i < 8; ++i) {
       outputs.push_back(((m.outputs() >> i) & 1) != 0);

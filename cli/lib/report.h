@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "compiler/diagnostics.h"
+#include "runtime/workcell/tool_tracker.h"
 #include "vm/interpreter.h"
 
 namespace rs::cli {
@@ -16,6 +17,7 @@ struct RunReport {
   std::optional<vm::RunOutcome> outcome;
   const vm::Image* image = nullptr;
   const vm::Interpreter* vm = nullptr;
+  workcell::ToolTracker* tool = nullptr;  // set when the program ran on a workcell
   std::vector<compiler::Diagnostic> diagnostics;  // compile + runtime
   bool ok() const;
 };

@@ -16,6 +16,22 @@ double seconds(vm::Micros t) { return static_cast<double>(t) / 1e6; }
 
 }  // namespace
 
+std::string pointText(const std::array<double, 3>& p) {
+  const auto num = [](double v) {
+    std::string s = fmt::format("{:.2f}", v);
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s == "-0" ? std::string("0") : s;
+  };
+  return fmt::format("({}, {}, {})", num(p[0]), num(p[1]), num(p[2]));
+}
+
+std::array<double, 3> roundedPoint(const std::array<double, 3>& p) {
+  std::array<double, 3> r{};
+  for (std::size_t i = 0; i < 3; ++i) r[i] = std::round(p[i] * 1e4) / 1e4 + 0.0;
+  return r;
+}
+
 std::string lampText(std::uint8_t bits) {
   std::string s(8, '.');
   for (int i = 0; i < 8; ++i)
@@ -34,8 +50,9 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
     // Wide enough for every motor at the longest value its range allows.
     for (const vm::MotorSpec& m : im.motors)
       motorsWidth_ += 3 + std::max(fmt::formatted_size("{}", m.min), fmt::formatted_size("{}", m.max));
-    out_ << fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {:<8}  {}\n", "time", "instr", "line", "instruction",
-                        "motors", motorsWidth_, "outputs", "changed");
+    out_ << fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {:<8}  {}{}\n", "time", "instr", "line", "instruction",
+                        "motors", motorsWidth_, "outputs", tool_ ? fmt::format("{:<28}  ", "tool centre point") : "",
+                        "changed");
     headerDone_ = true;
   }
   std::string motors;
@@ -44,9 +61,10 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
   const vm::Instr& in = im.code[index];
   const std::string changed =
       writesVariable(in) ? fmt::format("{}={}", im.variables[in.b], vm.variables()[in.b]) : std::string();
-  std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}", vm::formatSeconds(vm.machine().now()),
+  const std::string tcp = tool_ ? fmt::format("{:<28}  ", pointText(tool_->tcp(pos))) : std::string();
+  std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}{}", vm::formatSeconds(vm.machine().now()),
                                 index + 1, im.lines[index], vm::instructionText(im, index), motors, motorsWidth_,
-                                lampText(vm.machine().outputs()), changed);
+                                lampText(vm.machine().outputs()), tcp, changed);
   while (!row.empty() && row.back() == ' ') row.pop_back();
   out_ << row << '\n';
 }
@@ -67,6 +85,7 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   nlohmann::ordered_json outputs = nlohmann::ordered_json::array();
   for (int i = 0; i < 8; ++i) outputs.push_back(((vm.machine().outputs() >> i) & 1) != 0);
   j["outputs"] = outputs;
+  if (tool_) j["tcp"] = roundedPoint(tool_->tcp(pos));
   nlohmann::ordered_json changed = nlohmann::ordered_json::object();
   if (writesVariable(in)) changed[im.variables[in.b]] = vm.variables()[in.b];
   j["changed"] = changed;

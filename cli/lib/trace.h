@@ -4,6 +4,7 @@
 
 #include <ostream>
 
+#include "runtime/workcell/tool_tracker.h"
 #include "vm/interpreter.h"
 
 namespace rs::cli {
@@ -12,7 +13,9 @@ enum class TraceFormat { Text, Json };
 
 class TraceWriter final : public vm::StepObserver {
  public:
-  TraceWriter(std::ostream& out, TraceFormat format) : out_(out), format_(format) {}
+  /// With a tool tracker, each line also shows the tool centre point.
+  TraceWriter(std::ostream& out, TraceFormat format, workcell::ToolTracker* tool = nullptr)
+      : out_(out), format_(format), tool_(tool) {}
   void afterStep(const vm::Interpreter& vm, std::uint32_t index) override;
 
  private:
@@ -20,11 +23,17 @@ class TraceWriter final : public vm::StepObserver {
   void json(const vm::Interpreter& vm, std::uint32_t index);
   std::ostream& out_;
   TraceFormat format_;
+  workcell::ToolTracker* tool_;
   bool headerDone_ = false;
   std::size_t motorsWidth_ = 0;
 };
 
 /// "1.3....." : the digit of each line that is ON, '.' for OFF.
 std::string lampText(std::uint8_t bits);
+
+/// "(757, 0, 1397)": a point with at most 2 decimals per coordinate.
+std::string pointText(const std::array<double, 3>& p);
+/// The same rounded to 4 decimals, for JSON.
+std::array<double, 3> roundedPoint(const std::array<double, 3>& p);
 
 }  // namespace rs::cli

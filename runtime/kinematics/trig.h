@@ -52,13 +52,13 @@ inline void sinCosDegrees(double degrees, double& s, double& c) {
   constexpr double kRound = 6755399441055744.0;
   const double quarter = (degrees * (1.0 / 90.0) + kRound) - kRound;
   const double reduced = degrees - 90.0 * quarter;  // exact, about [-45, 45]
-  double rs, rc;
-  sinCosReduced(reduced * kDegToRad, rs, rc);
+  double sr, cr;
+  sinCosReduced(reduced * kDegToRad, sr, cr);
   switch (static_cast<std::int64_t>(quarter) & 3) {
-    case 0: s = rs, c = rc; break;
-    case 1: s = rc, c = -rs; break;
-    case 2: s = -rs, c = -rc; break;
-    default: s = -rc, c = rs; break;
+    case 0: s = sr, c = cr; break;
+    case 1: s = cr, c = -sr; break;
+    case 2: s = -sr, c = -cr; break;
+    default: s = -cr, c = sr; break;
   }
 }
 

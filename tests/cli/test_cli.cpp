@@ -13,7 +13,10 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.h"
+#include "compiler/compiler.h"
 #include "compiler/source.h"
+#include "stdlib/default_robot.h"
+#include "vm/image_file.h"
 
 namespace {
 
@@ -148,6 +151,8 @@ TEST_CASE("cli: check", "[cli]") {
     CHECK(r.err == warn + ":2:1: warning: unreachable code: nothing jumps here and END on line 1 does not continue\n"
                           "  END\n"
                           "  ^\n");
+    // docs/cli.md (options table and exit codes): --strict with only
+    // warnings exits 1.
     CHECK(runCli({"check", warn, "--strict"}).code == 1);
   }
   SECTION("stimuli make a WAITFOR pass") {
@@ -392,7 +397,7 @@ TEST_CASE("cli: unreadable and unsuitable files give a clean error and exit 2", 
   }
 }
 
-// BUG (reported): a binary file is reported as invalid UTF-8 (good), but the
+// Regression (a bug these tests found, fixed since): a binary file is reported as invalid UTF-8 (good), but the
 // diagnostic then prints the offending "source line" verbatim: raw binary
 // bytes, including terminal control characters, go to stderr.
 TEST_CASE("cli: a 5 MB binary file gives a clean, printable error", "[cli]") {
@@ -434,7 +439,7 @@ TEST_CASE("cli: --input errors", "[cli]") {
   }
 }
 
-// BUG (reported): errors in --input and in a --stimuli file are rendered
+// Regression (a bug these tests found, fixed since): errors in --input and in a --stimuli file are rendered
 // with the PROGRAM's source line (same line number) and a caret under it,
 // as if the error were in the program.
 TEST_CASE("cli: stimulus errors are not shown against the program's source", "[cli]") {
@@ -492,7 +497,7 @@ TEST_CASE("cli: --max-steps and --max-time", "[cli]") {
   }
 }
 
-// BUG (reported): "--max-steps -1" is accepted and wraps to 2^64-1, so the
+// Regression (a bug these tests found, fixed since): "--max-steps -1" is accepted and wraps to 2^64-1, so the
 // step limit is silently switched off (an endless loop then runs forever).
 // A program that ends is used here so that the test cannot hang.
 TEST_CASE("cli: a negative --max-steps is a usage error", "[cli]") {
@@ -500,4 +505,38 @@ TEST_CASE("cli: a negative --max-steps is a usage error", "[cli]") {
   const std::string f = dir.write("end.rsp", "END\n");
   CHECK(runCli({"run", f, "--max-steps", "-1"}).code == 2);
   CHECK(runCli({"check", f, "--max-steps", "-5"}).code == 2);
+}
+
+// BUG (open): file names are not always UTF-8 (Linux allows any bytes), and
+// the source name stored in an image is cut at 255 bytes, possibly inside a
+// UTF-8 sequence. --format=json then puts the raw name into "file" and
+// nlohmann::json::dump throws type_error 316: the robotsim process aborts
+// (exit 134). Reproduction: robotsim run $'\xff.rsp' --format=json
+TEST_CASE("cli: --format=json survives file names that are not UTF-8", "[cli]") {
+  TempDir dir;
+  CliResult r;
+  SECTION("a missing file") {
+    REQUIRE_NOTHROW(r = runCli({"run", dir.file("\xFF.rsp"), "--format=json"}));
+    CHECK(r.code == 2);
+    CHECK(json::accept(r.out));
+  }
+  SECTION("a program with a warning") {
+    const std::string f = dir.write("\xFD.rsp", "END\nEND\n");
+    REQUIRE_NOTHROW(r = runCli({"check", f, "--format=json"}));
+    CHECK(r.code == 0);
+    CHECK(json::accept(r.out));
+  }
+  SECTION("an image whose 255-byte source name ends inside a UTF-8 sequence") {
+    // 254 ASCII bytes, then the two bytes of an e-acute: the cut keeps 0xC3.
+    const std::string name = std::string(254, 'a') + "\xC3\xA9.rsp";
+    const rs::compiler::CompileResult compiled = rs::compiler::compile(
+        rs::compiler::SourceFile(name, "MOVE 0 0 0 0 -1\n"),
+        {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth});
+    REQUIRE(compiled.ok());
+    const std::vector<std::uint8_t> bytes = rs::vm::writeImage(*compiled.image);
+    const std::string image = dir.write("cut.rsb", std::string(bytes.begin(), bytes.end()));
+    REQUIRE_NOTHROW(r = runCli({"run", image, "--format=json"}));
+    CHECK(r.code == 1);
+    CHECK(json::accept(r.out));
+  }
 }

@@ -153,7 +153,7 @@ TEST_CASE("wrong operand types", "[compiler]") {
                      err(2, 14, "expected a line number or label (a whole number), found '2.5'")});
 }
 
-// BUG (reported): an input/output operand that is not a whole number is
+// Regression (a bug these tests found, fixed since): an input/output operand that is not a whole number is
 // reported twice: once as what it is, then again as "input 0 is outside
 // 1..8" at the same position (the failed operand is checked as if it were
 // 0). The same happens to a bad MOVETO value when 0 is outside the motor's
@@ -341,7 +341,7 @@ TEST_CASE("syntax errors: a line must start with a name", "[compiler]") {
   expectDiagnostics("END\nPOINTS\n5 0 0\n", {err(3, 1, "unexpected '5': a line starts with an instruction, a label or a point name")});
 }
 
-// BUG (reported): a syntax error on the FIRST line makes the parser drop the
+// Regression (a bug these tests found, fixed since): a syntax error on the FIRST line makes the parser drop the
 // whole file. The compiler then reports "the program has no instructions"
 // (false: line 3 is END) and misses the error on line 2.
 TEST_CASE("a syntax error on the first line does not hide the rest of the file", "[compiler]") {
@@ -400,7 +400,7 @@ TEST_CASE("many errors in one file are all reported, sorted by position", "[comp
                            err(11, 1, "point 'P1' is already defined on line 10")});
 }
 
-// BUG (reported): the control-flow checks are skipped as soon as any other
+// Regression (a bug these tests found, fixed since): the control-flow checks are skipped as soon as any other
 // error exists, so a RETURN in a program that has no GOSUB at all (which
 // needs no resolved jump target to see) is only reported once the other
 // errors are fixed.

@@ -97,7 +97,7 @@ TEST_CASE("golden: disasm of the compiled image equals disasm of the source", "[
   CHECK(relative(r.out) == rs::testing::readBytes(kGoldenDir + "handshake.disasm"));
 }
 
-// BUG (reported): the lexer does not advance the column over a comment, so
+// Regression (a bug these tests found, fixed since): the lexer does not advance the column over a comment, so
 // the NEWLINE that ends a commented line is reported at the column where
 // the comment starts (here 1:5 instead of 1:9).
 TEST_CASE("tokens: the NEWLINE after a comment is at the line break", "[golden]") {

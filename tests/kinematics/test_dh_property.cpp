@@ -5,6 +5,7 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -81,7 +82,7 @@ std::vector<Isometry3d> asDescribed(const std::vector<Isometry3d>& frames, Rando
 double angleGap(double a, double b) { return std::abs(rs::kinematics::normalizeDegrees(a - b)); }
 
 double rowGap(const DhRow& x, const DhRow& y) {
-  if (x.type != y.type) return INFINITY;
+  if (x.type != y.type) return std::numeric_limits<double>::infinity();
   return std::max({angleGap(x.theta, y.theta), angleGap(x.alpha, y.alpha), std::abs(x.a - y.a), std::abs(x.d - y.d)});
 }
 

@@ -332,7 +332,7 @@ TEST_CASE("ADD adds, and overflow is a runtime error", "[vm]") {
   }
 }
 
-// BUG (reported): the failing ADD leaves the wrapped-around result in the
+// Regression (a bug these tests found, fixed since): the failing ADD leaves the wrapped-around result in the
 // variable (__builtin_add_overflow stores it), so the summary after the
 // error shows N=-2147483648, a value the program never computed. A failed
 // MOVE, by contrast, leaves the motors where they were.

@@ -160,20 +160,40 @@ TEST_CASE("the header of an image is laid out as documented", "[verifier]") {
   CHECK(rs::vm::crc32(reinterpret_cast<const std::uint8_t*>(check.data()), check.size()) == 0xCBF43926u);
 }
 
-// BUG (reported): the compiler accepts names of any length, but the image
-// loader only accepts names of at most 64 characters (and the writer cuts
-// them at 255 bytes), so `robotsim compile` writes images that
-// `robotsim run` then rejects as malformed.
+// Regression (a bug these tests found, fixed since): the compiler accepted
+// names of any length, but the loader only accepts names of at most 64
+// characters, so `robotsim compile` wrote images that `robotsim run` then
+// rejected as malformed. Now: 64 characters round-trip, 65 do not compile.
 TEST_CASE("every image the compiler produces loads back", "[verifier]") {
-  const std::string var(65, 'V');
-  const std::string label(300, 'L');
-  for (const std::string& text : {"SET " + var + " 1\nEND\n", label + ": SET N 1\nEND\n"}) {
-    INFO(text.substr(0, 20) << "...");
-    const Image im = compileOk(text);
-    const rs::vm::LoadResult loaded = rs::vm::loadImage(view(rs::vm::writeImage(im)));
-    CHECK(loaded.error == "");
-    CHECK(loaded.image == im);
+  const std::string n64(64, 'N');
+  const Image im = compileOk(n64 + ": SET " + n64 + " 1\nMOVEP " + n64 + "\nEND\nPOINTS\n" + n64 + " 0 0 0 0 0\n");
+  REQUIRE(im.variables == std::vector<std::string>{n64});
+  const rs::vm::LoadResult loaded = rs::vm::loadImage(view(rs::vm::writeImage(im)));
+  CHECK(loaded.error == "");
+  CHECK(loaded.image == im);
+
+  const std::string n65(65, 'V');
+  for (const std::string& text : {"SET " + n65 + " 1\nEND\n", n65 + ": SET N 1\nEND\n",
+                                  "MOVEP " + n65 + "\nEND\nPOINTS\n" + n65 + " 0 0 0 0 0\n"}) {
+    INFO(text);
+    const rs::compiler::CompileResult r = rs::compiler::compile(rs::compiler::SourceFile("v.rsp", text), rhino());
+    CHECK_FALSE(r.ok());
   }
+  const rs::compiler::CompileResult r =
+      rs::compiler::compile(rs::compiler::SourceFile("v.rsp", "SET " + n65 + " 1\nEND\n"), rhino());
+  REQUIRE(r.diagnostics.size() == 1);
+  CHECK(r.diagnostics[0].pos == rs::compiler::Pos{1, 5});
+  CHECK(r.diagnostics[0].message ==
+        "'VVVVVVVVVVVVVVVV...' is too long for a variable: names have at most 64 characters");
+}
+
+// docs/bytecode.md: the writer cuts strings (the source name) at 255 bytes.
+TEST_CASE("a source name longer than 255 bytes is cut, the image still loads", "[verifier]") {
+  Image im = tiny();
+  im.sourceName = std::string(300, 's');
+  const rs::vm::LoadResult loaded = rs::vm::loadImage(view(rs::vm::writeImage(im)));
+  REQUIRE(loaded.error == "");
+  CHECK(loaded.image.sourceName == std::string(255, 's'));
 }
 
 TEST_CASE("an image cut short at any length is rejected", "[verifier]") {
