@@ -68,7 +68,10 @@ void Lexer::skipBlanksAndComments() {
       ++pos_, ++col_;
     } else if (c == ';') {
       // Comments may hold any UTF-8: columns count characters, not bytes.
-      for (; pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r'; ++pos_)
+      // A lone CR is blank space (see below), so only LF or CR LF end a comment.
+      for (; pos_ < text_.size() && text_[pos_] != '\n' &&
+             !(text_[pos_] == '\r' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '\n');
+           ++pos_)
         if ((static_cast<unsigned char>(text_[pos_]) & 0xC0) != 0x80) ++col_;
     } else if (c == '\r' && (pos_ + 1 >= text_.size() || text_[pos_ + 1] != '\n')) {
       ++pos_, ++col_;  // a lone CR is blank space, not a line break

@@ -105,7 +105,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
                      {"severity", compiler::severityName(d.severity)},
                      {"message", d.message}});
   j["diagnostics"] = diags;
-  out << j.dump() << '\n';
+  out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
 }
 
 }  // namespace rs::cli

@@ -140,7 +140,7 @@ int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
                       {"home", std::stod(formatNumber(r.home()))}});
     }
     j["rows"] = list;
-    out << j.dump() << '\n';
+    out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     return kOk;
   }
   out << fmt::format("KINEMATIC PARAMETERS: {} (standard D-H; degrees and length units)\n", robot->name);
@@ -175,7 +175,7 @@ int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     j["from"] = q.from;
     j["to"] = q.to;
     j["matrix"] = matrixJson(m);
-    out << j.dump() << '\n';
+    out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     return kOk;
   }
   out << fmt::format("TRANSFORMATION MATRIX T_{}^{} of {} (coordinates in frame {} to frame {}):\n", q.to, q.from,
@@ -212,7 +212,7 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     j["rpy"] = {std::stod(formatNumber(roll * deg)), std::stod(formatNumber(pitch * deg)),
                 std::stod(formatNumber(yaw * deg))};
     j["matrix"] = matrixJson(tool);
-    out << j.dump() << '\n';
+    out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     return kOk;
   }
   out << fmt::format("{}: tool centre point at ({}, {}, {})\n", robot->name, formatNumber(p.x()), formatNumber(p.y()),

@@ -151,9 +151,12 @@ TEST_CASE("cli: check", "[cli]") {
     CHECK(r.err == warn + ":2:1: warning: unreachable code: nothing jumps here and END on line 1 does not continue\n"
                           "  END\n"
                           "  ^\n");
-    // docs/cli.md (options table and exit codes): --strict with only
-    // warnings exits 1.
-    CHECK(runCli({"check", warn, "--strict"}).code == 1);
+    // docs/cli.md (options table and exit codes): --strict makes the
+    // warning an error, so nothing runs and the exit is 2.
+    const CliResult strict = runCli({"check", warn, "--strict"});
+    CHECK(strict.code == 2);
+    CHECK(strict.err.find(":2:1: error: unreachable code") != std::string::npos);
+    CHECK(strict.err.find("[--strict]") != std::string::npos);
   }
   SECTION("stimuli make a WAITFOR pass") {
     const std::string wait = dir.write("wait.rsp", "WAITFOR 3 ON\nEND\n");
