@@ -211,16 +211,14 @@ int helpCommand(const std::string& topic, std::ostream& out, std::ostream& err) 
 void addCellOptions(CLI::App* cmd, Options& o) {
   cmd->add_option("--cell", o.cell, "Workcell (or robot) description file or library name to run on");
   cmd->add_option("--lib", o.libDirs, "Also look up description names in this directory (repeatable)")
-      ->expected(1)
-      ->take_all();
+      ->allow_extra_args(false);
 }
 
 void addRunOptions(CLI::App* cmd, Options& o) {
   addCellOptions(cmd, o);
   cmd->add_option("--format", o.format, "Summary format: text or json")->check(CLI::IsMember({"text", "json"}));
   cmd->add_option("--input", o.inputs, "Input change N=ON@SECONDS or N=OFF@SECONDS (repeatable)")
-      ->expected(1)
-      ->take_all();
+      ->allow_extra_args(false);
   cmd->add_option("--stimuli", o.stimuliFile, "Stimuli file: timed input changes and reactive rules");
   cmd->add_option("--max-steps", o.maxSteps, "Stop after this many instructions (default 100000000)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 62));
@@ -265,7 +263,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   RobotQuery rq;
   const auto robotArgs = [&](CLI::App* cmd) {
     cmd->add_option("robot", rq.robot, "Robot description file (.rsd) or library name, e.g. scorobot")->required();
-    cmd->add_option("--lib", rq.libDirs, "Also look up names in this directory (repeatable)")->expected(1)->take_all();
+    cmd->add_option("--lib", rq.libDirs, "Also look up names in this directory (repeatable)")->allow_extra_args(false);
     cmd->add_flag("--json", rq.json, "Print one JSON object");
   };
   CLI::App* table = app.add_subcommand("table", "Print a robot's D-H table (the paper's TABLE, Fig. 6)");
