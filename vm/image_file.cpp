@@ -4,80 +4,16 @@
 #include <cstring>
 #include <fmt/format.h>
 
+#include "vm/byte_io.h"
 #include "vm/verify.h"
 
 namespace rs::vm {
 
 namespace {
 
-constexpr std::size_t kMaxName = 255;
 
-class Writer {
- public:
-  void u8(std::uint8_t v) { out.push_back(v); }
-  void u16(std::uint16_t v) { le(v, 2); }
-  void u32(std::uint32_t v) { le(v, 4); }
-  void i32(std::int32_t v) { le(static_cast<std::uint32_t>(v), 4); }
-  void f64(double v) { le(std::bit_cast<std::uint64_t>(v), 8); }
-  void str(std::string_view s) {
-    const std::size_t n = std::min(s.size(), kMaxName);
-    u16(static_cast<std::uint16_t>(n));
-    out.insert(out.end(), s.begin(), s.begin() + static_cast<std::ptrdiff_t>(n));
-  }
-  std::vector<std::uint8_t> out;
-
- private:
-  void le(std::uint64_t v, int bytes) {
-    for (int i = 0; i < bytes; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-  }
-};
-
-// Reads little-endian fields; after the first overrun every read yields 0
-// and `failed` stays set, so decoding code needs no check per field.
-class Reader {
- public:
-  explicit Reader(std::string_view bytes) : data_(bytes) {}
-  std::uint8_t u8() { return static_cast<std::uint8_t>(le(1)); }
-  std::uint16_t u16() { return static_cast<std::uint16_t>(le(2)); }
-  std::uint32_t u32() { return static_cast<std::uint32_t>(le(4)); }
-  std::int32_t i32() { return static_cast<std::int32_t>(static_cast<std::uint32_t>(le(4))); }
-  double f64() { return std::bit_cast<double>(le(8)); }
-  std::string str() {
-    const std::size_t n = u16();
-    if (n > kMaxName || !need(n)) return fail(fmt::format("string of {} bytes", n)), std::string{};
-    std::string s(data_.substr(pos_, n));
-    pos_ += n;
-    return s;
-  }
-  /// A count of records of at least `minBytes` each: refused if the rest of
-  /// the file cannot hold them (so a hostile count cannot make us allocate).
-  std::size_t count(std::size_t minBytes, std::string_view what) {
-    const std::size_t n = u32();
-    if (failed) return 0;
-    if (n > remaining() / std::max<std::size_t>(minBytes, 1))
-      return fail(fmt::format("{} count {} larger than the file", what, n)), 0;
-    return n;
-  }
-  std::size_t remaining() const { return data_.size() - pos_; }
-  void fail(std::string why) {
-    if (!failed) error = std::move(why);
-    failed = true;
-  }
-  bool failed = false;
-  std::string error;
-
- private:
-  bool need(std::size_t n) { return !failed && n <= remaining(); }
-  std::uint64_t le(int bytes) {
-    if (!need(static_cast<std::size_t>(bytes))) return fail("unexpected end of file"), 0;
-    std::uint64_t v = 0;
-    for (int i = 0; i < bytes; ++i) v |= std::uint64_t{static_cast<std::uint8_t>(data_[pos_ + i])} << (8 * i);
-    pos_ += static_cast<std::size_t>(bytes);
-    return v;
-  }
-  std::string_view data_;
-  std::size_t pos_ = 0;
-};
+using Writer = ByteWriter;
+using Reader = ByteReader;
 
 bool isIdentifier(std::string_view s) {
   if (s.empty() || s.size() > 64) return false;
@@ -129,7 +65,7 @@ void writePayload(Writer& w, const Image& im) {
     w.str(l.name);
   }
   w.u32(static_cast<std::uint32_t>(im.cell.size()));
-  w.out.insert(w.out.end(), im.cell.begin(), im.cell.end());
+  w.bytes(im.cell);
 }
 
 void readMotors(Reader& r, Image& im) {

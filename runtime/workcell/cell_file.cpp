@@ -1,6 +1,7 @@
 #include "runtime/workcell/cell_file.h"
 
-#include <bit>
+#include "vm/byte_io.h"
+
 #include <cmath>
 #include <fmt/format.h>
 
@@ -10,20 +11,9 @@ namespace {
 
 constexpr std::uint32_t kCellMagic = 0x4C435352;  // "RSCL"
 constexpr std::uint16_t kCellVersion = 1;
-constexpr std::size_t kMaxName = 255;
-
-class Out {
+// The image's byte writer and reader, with the cell's compound fields.
+class Out : public vm::ByteWriter {
  public:
-  void u8(std::uint8_t v) { bytes.push_back(v); }
-  void u16(std::uint16_t v) { le(v, 2); }
-  void u32(std::uint32_t v) { le(v, 4); }
-  void i32(std::int32_t v) { le(static_cast<std::uint32_t>(v), 4); }
-  void f64(double v) { le(std::bit_cast<std::uint64_t>(v), 8); }
-  void str(const std::string& s) {
-    const std::size_t n = std::min(s.size(), kMaxName);
-    u16(static_cast<std::uint16_t>(n));
-    bytes.insert(bytes.end(), s.begin(), s.begin() + static_cast<std::ptrdiff_t>(n));
-  }
   void vec(const Eigen::Vector3d& v) { f64(v.x()), f64(v.y()), f64(v.z()); }
   void pose(const Eigen::Isometry3d& p) {
     for (int r = 0; r < 3; ++r)
@@ -34,48 +24,25 @@ class Out {
     u32(static_cast<std::uint32_t>(s.segments.size()));
     for (const Segment& seg : s.segments) vec(seg.a), vec(seg.b), u8(static_cast<std::uint8_t>(seg.color));
   }
-  std::vector<std::uint8_t> bytes;
-
- private:
-  void le(std::uint64_t v, int n) {
-    for (int i = 0; i < n; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-  }
 };
 
-// Like the image reader: after the first problem every read yields zero
-// and the first message is kept.
-class In {
+class In : public vm::ByteReader {
  public:
-  explicit In(std::span<const std::uint8_t> b) : b_(b) {}
-  std::uint8_t u8() { return static_cast<std::uint8_t>(le(1)); }
-  std::uint16_t u16() { return static_cast<std::uint16_t>(le(2)); }
-  std::uint32_t u32() { return static_cast<std::uint32_t>(le(4)); }
-  std::int32_t i32() { return static_cast<std::int32_t>(static_cast<std::uint32_t>(le(4))); }
-  double f64() {
-    const double v = std::bit_cast<double>(le(8));
+  explicit In(std::span<const std::uint8_t> b)
+      : ByteReader(std::string_view(reinterpret_cast<const char*>(b.data()), b.size()), "cell section") {}
+  double number() {
+    const double v = f64();
     if (!std::isfinite(v) || std::abs(v) > 1e12) fail("a number that is not finite or too large");
     return v;
   }
-  std::string str() {
-    const std::size_t n = u16();
-    if (n > kMaxName || n > b_.size() - p_) return fail("a string past the end"), std::string();
-    std::string s(reinterpret_cast<const char*>(b_.data()) + p_, n);
-    p_ += n;
-    return s;
-  }
-  std::size_t count(std::size_t minBytes, std::string_view what) {
-    const std::size_t n = u32();
-    if (!failed && n > (b_.size() - p_) / minBytes) fail(fmt::format("{} count {} larger than the data", what, n));
-    return failed ? 0 : n;
-  }
   Eigen::Vector3d vec() {
-    const double x = f64(), y = f64(), z = f64();
+    const double x = number(), y = number(), z = number();
     return {x, y, z};
   }
   Eigen::Isometry3d pose() {
     Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
     for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 4; ++c) p.matrix()(r, c) = f64();
+      for (int c = 0; c < 4; ++c) p.matrix()(r, c) = number();
     const Eigen::Matrix3d rtr = p.linear().transpose() * p.linear();
     if (!failed && (!rtr.isIdentity(1e-6) || p.linear().determinant() < 0)) fail("a placement that is not a rotation");
     return p;
@@ -100,24 +67,7 @@ class In {
     if (c < 'A' || c > 'Z') fail("a motor letter outside A..Z");
     return c;
   }
-  void fail(std::string why) {
-    if (!failed) error = std::move(why);
-    failed = true;
-  }
-  bool atEnd() const { return p_ == b_.size(); }
-  bool failed = false;
-  std::string error;
-
- private:
-  std::uint64_t le(int n) {
-    if (failed || static_cast<std::size_t>(n) > b_.size() - p_) return fail("unexpected end of the cell section"), 0;
-    std::uint64_t v = 0;
-    for (int i = 0; i < n; ++i) v |= std::uint64_t{b_[p_ + static_cast<std::size_t>(i)]} << (8 * i);
-    p_ += static_cast<std::size_t>(n);
-    return v;
-  }
-  std::span<const std::uint8_t> b_;
-  std::size_t p_ = 0;
+  bool atEnd() const { return remaining() == 0; }
 };
 
 void writeRobot(Out& o, const Robot& r) {
@@ -156,7 +106,7 @@ std::optional<Robot> readRobot(In& in) {
     j.type = static_cast<kinematics::JointType>(type);
     j.letter = in.letter();
     j.coupling = in.u8() != 0;
-    j.precision = in.f64(), j.min = in.i32(), j.max = in.i32(), j.speed = in.i32();
+    j.precision = in.number(), j.min = in.i32(), j.max = in.i32(), j.speed = in.i32();
     if (!in.failed && (j.min > j.max || j.speed <= 0 || j.precision <= 0)) in.fail("a joint with a bad range, speed or precision");
     r.joints.push_back(j);
   }
@@ -165,7 +115,7 @@ std::optional<Robot> readRobot(In& in) {
     Gripper& g = r.gripper;
     g.name = in.str(), g.base = in.shape(), g.finger2 = in.shape(), g.finger3 = in.shape();
     g.letter = in.letter(), g.min = in.i32(), g.max = in.i32(), g.speed = in.i32();
-    g.model.precision = in.f64();
+    g.model.precision = in.number();
     g.model.r2.point = in.vec(), g.model.r2.direction = in.vec();
     g.model.r3.point = in.vec(), g.model.r3.direction = in.vec();
     g.model.F_G_E = in.pose();
@@ -199,7 +149,7 @@ std::vector<std::uint8_t> encodeCell(const Workcell& cell) {
   for (const PlacedRobot& r : cell.robots) writeRobot(o, r.robot), o.pose(r.F_world_design);
   o.u32(static_cast<std::uint32_t>(cell.objects.size()));
   for (const PlacedObject& ob : cell.objects) o.shape(ob.shape), o.pose(ob.F_world_design);
-  return o.bytes;
+  return o.out;
 }
 
 CellDecode decodeCell(std::span<const std::uint8_t> bytes) {

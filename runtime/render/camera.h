@@ -1,0 +1,69 @@
+// The camera of the paper's WORKCELL screen: VIEWPOINT/VIEW turns the image
+// about x, y and z, WINDOW shifts the workcell, zoom scales it, AXES ON/OFF
+// shows the link frames. Orthographic, like the paper's wireframes.
+//
+// World coordinates are the descriptions' (y up, z towards the viewer at
+// VIEW 0 0 0, so VIEW 0 0 0 is the paper's front view of its graph-paper
+// drawings). A world point p lands on pixel (u, v) by
+//
+//   r = R · (p + window − center)      R = Rx(view.x) · Ry(view.y) · Rz(view.z)
+//   u = width/2 + s·r.x                s = zoom · 0.45 · min(width, height) / radius
+//   v = height/2 − s·r.y               (pixel rows grow downwards)
+//
+// so the image is turned about z first, then y, then x, all about the
+// fixed axes of the screen (x right, y up, z out): dragging sideways turns
+// the workcell about its vertical like a turntable, dragging up and down
+// tilts it towards the viewer. `center` and `radius` are the fit: the
+// sphere around the workcell's bounding box at its placed pose, so that at
+// zoom 1 every view of it fits the picture with a margin. The HTML page
+// uses exactly this formula (runtime/render/page_script.cpp).
+#pragma once
+
+#include <Eigen/Geometry>
+
+namespace rs::render {
+
+/// The paper's default is the front view (VIEW 0 0 0); a still without
+/// --view looks from above and to the right, which shows all three axes.
+inline constexpr double kDefaultView[3] = {25.0, -35.0, 0.0};
+
+struct Camera {
+  Eigen::Vector3d view{kDefaultView[0], kDefaultView[1], kDefaultView[2]};  ///< degrees about x, y, z
+  Eigen::Vector3d window = Eigen::Vector3d::Zero();                         ///< shift of the workcell
+  double zoom = 1.0;                                                        ///< > 0; 2 = twice as large
+  bool axes = false;                                                        ///< draw the link frames
+  int width = 1024, height = 768;                                           ///< pixels
+};
+
+/// The sphere the picture is fitted to.
+struct Fit {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double radius = 1.0;  ///< > 0
+};
+
+/// The sphere through the corners of `box` (radius 1 for an empty or
+/// point-sized box).
+Fit fitBox(const Eigen::AlignedBox3d& box);
+
+/// Rx(x)·Ry(y)·Rz(z) for angles in degrees, exact at multiples of 90.
+Eigen::Matrix3d viewRotation(const Eigen::Vector3d& degrees);
+
+/// The map from world points to pixels (see the file comment).
+class Projection {
+ public:
+  Projection(const Camera& camera, const Fit& fit);
+
+  Eigen::Vector2d operator()(const Eigen::Vector3d& p) const {
+    const Eigen::Vector3d r = M_ * p + t_;
+    return {r.x(), r.y()};
+  }
+  /// Pixels per world unit.
+  double scale() const { return scale_; }
+
+ private:
+  Eigen::Matrix3d M_;  // rows: u, v, depth
+  Eigen::Vector3d t_;
+  double scale_ = 1.0;
+};
+
+}  // namespace rs::render

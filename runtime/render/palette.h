@@ -1,0 +1,34 @@
+// The paper's 16 EGA colours as RGB, and their names: one table for the
+// stills, the line dumps and the HTML animation.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+#include "runtime/workcell/model.h"
+
+namespace rs::render {
+
+struct Rgb {
+  std::uint8_t r = 0, g = 0, b = 0;
+  bool operator==(const Rgb&) const = default;
+};
+
+/// The standard EGA palette, indexed by workcell::Color.
+inline constexpr std::array<Rgb, 16> kEga = {{
+    {0x00, 0x00, 0x00}, {0x00, 0x00, 0xAA}, {0x00, 0xAA, 0x00}, {0x00, 0xAA, 0xAA},
+    {0xAA, 0x00, 0x00}, {0xAA, 0x00, 0xAA}, {0xAA, 0x55, 0x00}, {0xAA, 0xAA, 0xAA},
+    {0x55, 0x55, 0x55}, {0x55, 0x55, 0xFF}, {0x55, 0xFF, 0x55}, {0x55, 0xFF, 0xFF},
+    {0xFF, 0x55, 0x55}, {0xFF, 0x55, 0xFF}, {0xFF, 0xFF, 0x55}, {0xFF, 0xFF, 0xFF},
+}};
+
+/// The picture's background: darker than every EGA colour but BLACK.
+inline constexpr Rgb kBackground = {0x10, 0x12, 0x1C};
+
+inline Rgb rgb(workcell::Color c) { return kEga[static_cast<std::size_t>(c) & 15]; }
+
+/// "LIGHTRED", as the description language spells it.
+std::string_view colorName(workcell::Color c);
+
+}  // namespace rs::render

@@ -1,0 +1,106 @@
+#include "runtime/render/picture.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "runtime/render/palette.h"
+
+namespace rs::render {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+const std::string& ownerName(const Part& part, const workcell::Workcell& cell) {
+  return part.kind == PartKind::Object ? cell.objects[static_cast<std::size_t>(part.owner)].shape.name
+                                       : cell.robots[static_cast<std::size_t>(part.owner)].robot.name;
+}
+
+// Nine decimals, and never "-0.000000000".
+std::string number(double v) {
+  std::string s = fmt::format("{:.9f}", v);
+  if (s.find_first_not_of("-0.") == std::string::npos) return fmt::format("{:.9f}", 0.0);
+  return s;
+}
+
+}  // namespace
+
+std::string partName(const Part& part) {
+  switch (part.kind) {
+    case PartKind::Link: return fmt::format("link{}", part.index);
+    case PartKind::GripperBase: return "gripper";
+    case PartKind::Finger2: return "finger2";
+    case PartKind::Finger3: return "finger3";
+    case PartKind::Object: return "object";
+    case PartKind::Axis: return fmt::format("axis{}-{}", part.index, "xyz"[part.axis & 3]);
+  }
+  return "?";
+}
+
+std::string robotLegend(const workcell::Robot& robot, std::span<const std::int32_t> encoders) {
+  std::string text = robot.name + " ";
+  for (std::size_t i = 0; i < encoders.size(); ++i) {
+    const char letter = i < robot.joints.size() ? robot.joints[i].letter : robot.gripper.letter;
+    text += fmt::format(" {}={}", letter, encoders[i]);
+  }
+  return text;
+}
+
+Picture makePicture(const CellPoser& poser, const Camera& camera, const Fit& fit, const Caption& caption) {
+  const Projection project(camera, fit);
+  Picture picture;
+  picture.width = camera.width;
+  picture.height = camera.height;
+  std::vector<Line3> lines;
+  poser.lines(lines, camera.axes ? 0.08 * fit.radius : 0.0);
+  picture.lines.reserve(lines.size());
+  for (const Line3& l : lines) picture.lines.push_back({project(l.a), project(l.b), l.color, l.part});
+  const workcell::Workcell& cell = poser.cell();
+  std::string title = caption.title;
+  if (caption.seconds) title += fmt::format("{}t = {:.3f} s", title.empty() ? "" : "   ", *caption.seconds);
+  if (!title.empty()) picture.legend.push_back(title);
+  for (std::size_t r = 0; r < cell.robots.size(); ++r) {
+    const workcell::Robot& robot = cell.robots[r].robot;
+    if (robot.chain && (robot.chain->size() > 0 || robot.hasGripper))
+      picture.tools.push_back({static_cast<int>(r), project(poser.tool(r))});
+    picture.legend.push_back(robotLegend(robot, poser.encoders(r)));
+  }
+  return picture;
+}
+
+void dumpText(std::ostream& out, const Picture& picture, const workcell::Workcell& cell) {
+  out << fmt::format("# robotsim lines: {} {} {}x{}\n", cell.name, picture.lines.size(), picture.width,
+                     picture.height);
+  for (const Line2& l : picture.lines)
+    out << fmt::format("{} {} {} {} {} {} {} {} {}\n", l.part.kind == PartKind::Object ? "object" : "robot",
+                       l.part.owner, ownerName(l.part, cell), partName(l.part), colorName(l.color), number(l.a.x()),
+                       number(l.a.y()), number(l.b.x()), number(l.b.y()));
+  for (const ToolMark& t : picture.tools)
+    out << fmt::format("tool {} {} {} {}\n", t.robot, cell.robots[static_cast<std::size_t>(t.robot)].robot.name,
+                       number(t.at.x()), number(t.at.y()));
+}
+
+void dumpJson(std::ostream& out, const Picture& picture, const workcell::Workcell& cell) {
+  Json lines = Json::array(), tools = Json::array();
+  for (const Line2& l : picture.lines)
+    lines.push_back({{"owner", l.part.kind == PartKind::Object ? "object" : "robot"},
+                     {"index", l.part.owner},
+                     {"name", ownerName(l.part, cell)},
+                     {"part", partName(l.part)},
+                     {"color", colorName(l.color)},
+                     {"a", {l.a.x(), l.a.y()}},
+                     {"b", {l.b.x(), l.b.y()}}});
+  for (const ToolMark& t : picture.tools)
+    tools.push_back({{"robot", t.robot},
+                     {"name", cell.robots[static_cast<std::size_t>(t.robot)].robot.name},
+                     {"at", {t.at.x(), t.at.y()}}});
+  const Json doc = {{"cell", cell.name},
+                    {"width", picture.width},
+                    {"height", picture.height},
+                    {"lines", lines},
+                    {"tools", tools},
+                    {"legend", picture.legend}};
+  out << doc.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
+}
+
+}  // namespace rs::render

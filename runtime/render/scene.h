@@ -1,0 +1,93 @@
+// The workcell's lines in world coordinates for given motor positions: the
+// paper's drawing rule. Each link is drawn at home in design coordinates
+// and moves with its frame i:
+//
+//   p_world = F_world_i(q) · F_world_i(home)⁻¹ · F_world_design · p
+//
+// (link 0 never moves). The gripper's base moves with the end-effector
+// frame n the same way; a finger point is first turned by its finger
+// transform (in design coordinates), then moved like the base. Objects
+// stay where the workcell placed them.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "runtime/kinematics/chain_data.h"
+#include "runtime/workcell/model.h"
+
+namespace rs::render {
+
+/// What a line belongs to: for dumps, tests and the HTML page.
+enum class PartKind : std::uint8_t { Link, GripperBase, Finger2, Finger3, Object, Axis };
+
+struct Part {
+  PartKind kind = PartKind::Link;
+  int owner = 0;  ///< robot index (object index for Object)
+  int index = 0;  ///< link number; frame number for Axis
+  int axis = 0;   ///< Axis only: 0 = x, 1 = y, 2 = z
+};
+
+/// One line of the picture in world coordinates.
+struct Line3 {
+  Eigen::Vector3d a, b;
+  workcell::Color color = workcell::Color::White;
+  Part part;
+};
+
+/// Colours of the drawn link frames (AXES ON): x, y, z.
+inline constexpr workcell::Color kAxisColors[3] = {workcell::Color::LightRed, workcell::Color::LightGreen,
+                                                   workcell::Color::LightBlue};
+
+/// Poses the robots of a workcell and lists its lines. Holds one
+/// kinematics workspace per robot, built once; posing does not allocate.
+class CellPoser {
+ public:
+  /// `cell` must outlive the poser. Every robot starts at home.
+  explicit CellPoser(const workcell::Workcell& cell);
+
+  const workcell::Workcell& cell() const { return *cell_; }
+  /// Motors of robot `robot` as a program sees them (arm joints, then the
+  /// gripper); missing trailing values count as 0.
+  void setEncoders(std::size_t robot, std::span<const std::int32_t> encoders);
+  std::span<const std::int32_t> encoders(std::size_t robot) const { return robots_[robot].encoders; }
+
+  /// Every line: each robot's links, gripper base and fingers, then the
+  /// objects; with `axisLength` > 0 also each robot's frames 0..n.
+  void lines(std::vector<Line3>& out, double axisLength = 0.0) const;
+
+  /// Frame i (0..n) of robot `robot` in the world, at the current pose.
+  const Eigen::Isometry3d& frame(std::size_t robot, std::size_t i) const { return robots_[robot].F_world_i[i]; }
+  std::size_t frameCount(std::size_t robot) const { return robots_[robot].F_world_i.size(); }
+  /// Origin of the last frame: the tool centre point when there is a gripper.
+  Eigen::Vector3d tool(std::size_t robot) const { return robots_[robot].F_world_i.back().translation(); }
+
+  /// Bounding box of every line at home (the fit of every picture).
+  Eigen::AlignedBox3d homeBounds() const { return homeBounds_; }
+
+  /// F_world_i(home)⁻¹ · F_world_design for frame i: takes design points
+  /// into frame i's coordinates (what the HTML page's model stores).
+  const Eigen::Isometry3d& designInFrame(std::size_t robot, std::size_t i) const {
+    return robots_[robot].M[i];
+  }
+
+ private:
+  struct RobotState {
+    std::optional<kinematics::ChainModel> chain;  // placed in the world
+    std::optional<kinematics::ChainData> data;
+    std::vector<Eigen::Isometry3d> M;          // F_world_i(home)⁻¹ · F_world_design
+    std::vector<Eigen::Isometry3d> F_world_i;  // current pose, frames 0..n
+    std::vector<std::int32_t> encoders;
+    std::vector<double> q;
+  };
+  void pose(std::size_t robot);
+
+  const workcell::Workcell* cell_;
+  std::vector<RobotState> robots_;
+  Eigen::AlignedBox3d homeBounds_;
+};
+
+}  // namespace rs::render

@@ -1,0 +1,572 @@
+// Errors in robot and workcell descriptions (.rsd, docs/models.md "Errors"):
+// each case is a small file in a scratch directory and the exact
+// diagnostics (file, line, column, message) the library reports for it, in
+// one run. Columns were counted by hand (1-based, in characters).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "compiler/library.h"
+#include "tests/models/models_support.h"
+
+namespace {
+
+using rs::compiler::Library;
+using rs::testing::diagnosticList;
+using rs::testing::lines;
+using rs::testing::runCli;
+using rs::testing::TempDir;
+using Strings = std::vector<std::string>;
+
+// Diagnostics of loading `root` as a robot, the scratch directory being the
+// whole search path (no stdlib: nothing there can interfere).
+Strings robotErrors(const TempDir& dir, const std::string& root) {
+  Library lib({dir.path()});
+  const auto robot = lib.robot(dir.file(root));
+  Strings d = diagnosticList(lib.diagnostics(), dir.path().string());
+  if (!d.empty()) CHECK_FALSE(robot);
+  return d;
+}
+
+Strings workcellErrors(const TempDir& dir, const std::string& root) {
+  Library lib({dir.path()});
+  const auto cell = lib.workcell(dir.file(root));
+  Strings d = diagnosticList(lib.diagnostics(), dir.path().string());
+  if (!d.empty()) CHECK_FALSE(cell);
+  return d;
+}
+
+const std::string kBase = lines({
+    "LINK base",                 // 1
+    "  LINE 0 0 0 0 0 1",        // 2
+    "END",                       // 3
+});
+
+// A complete gripper on lines 1..9 and its palm link on lines 10..12; the
+// tool centre point is the origin, n = +x, a = -z.
+const Strings kGripperLines{
+    "GRIPPER hand",                      // 1
+    "  BASE palm",                       // 2
+    "  FINGERS palm palm",               // 3
+    "  LETTER A",                        // 4
+    "  PRECISION 0.5",                   // 5
+    "  RANGE 0 40",                      // 6
+    "  AXIS2 0 -1 0  1 -1 0",            // 7
+    "  AXIS3 0 1 0  -1 1 0",             // 8
+    "  NORMAL 0 0 0  1 0 0",             // 9
+    "  APPROACH 0 0 0  0 0 -1",          // 10
+    "END",                               // 11
+    "LINK palm",                         // 12
+    "  LINE 0 0 0 0 0 1",                // 13
+    "END",                               // 14
+};
+
+// A one-link robot carrying `hand`, after the gripper (starts on line 15).
+const Strings kHandRobotLines{
+    "ROBOT r",                                               // 15
+    "  LINK palm FRAME ORIGIN 0 0 10 XAXIS 1 0 10 ZAXIS 0 0 11",  // 16
+    "  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10",  // 17
+    "  GRIPPER hand",                                        // 18
+    "END",                                                   // 19
+};
+
+std::string gripperFile(Strings gripper) {
+  gripper.insert(gripper.end(), kHandRobotLines.begin(), kHandRobotLines.end());
+  return lines(gripper);
+}
+
+}  // namespace
+
+TEST_CASE("description: every statement-level error of a file, in one run", "[models]") {
+  TempDir dir;
+  dir.write("p.rsd", lines({
+                         "stray words here",                          // 1
+                         "LINK a extra",                              // 2
+                         "  SPIN 1 2 3",                              // 3
+                         "  LINE 0 0 0 1 1",                          // 4
+                         "  LINE 0 0 0 1 1 x",                        // 5
+                         "  BOX 1 2 3 4 5 6 COLOR PURPLE",            // 6
+                         "  BOX 1 2 3 4 5 6 COLOR 16",                // 7
+                         "  COLOR 16",                                // 8
+                         "  ROTATE W 90",                             // 9
+                         "  ROTATE Z",                                // 10
+                         "  MOVE 1 2",                                // 11
+                         "  LINE 0 0 0 1 1 1 # x",                    // 12
+                         "  LINE 0 0 0 1 1 2000000000",               // 13
+                         "END foo",                                   // 14
+                         "OBJECT o",                                  // 15
+                         "  LINK x",                                  // 16
+                         "  BOX 1 2 3",                               // 17
+                         "END",                                       // 18
+                         "GRIPPER g",                                 // 19
+                         "  GRASP",                                   // 20
+                         "  LETTER 5",                                // 21
+                         "  LETTER AB",                               // 22
+                         "  PRECISION 0",                             // 23
+                         "  PRECISION -0.5",                          // 24
+                         "  SPEED 0",                                 // 25
+                         "  SPEED -5",                                // 26
+                         "  RANGE 10 5",                              // 27
+                         "  RANGE 0 1.5",                             // 28
+                         "  FINGERS f1",                              // 29
+                         "  NORMAL 0 0 0 1 0",                        // 30
+                         "END",                                       // 31
+                         "ROBOT r",                                   // 32
+                         "  JOINT one REVOLUTE",                      // 33
+                         "  JOINT 1 TWISTY",                          // 34
+                         "  JOINT 1.5 REVOLUTE",                      // 35
+                         "  LINK l FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",  // 36
+                         "  JOINT 1 REVOLUTE LETTER F PRECISION 0",  // 37
+                         "  SPEED 0",                                 // 38
+                         "  PRECISION -1",                            // 39
+                         "  COUPLING MAYBE",                          // 40
+                         "  WOBBLE",                                  // 41
+                         "  LINK",                                    // 42
+                         "  GRIPPER 9",                               // 43
+                         "END",                                       // 44
+                         "WORKCELL w",                                // 45
+                         "  AT 1 2 3",                                // 46
+                         "  ROBOT r AT 1 2",                          // 47
+                         "  ROBOT r SPIN",                            // 48
+                         "  OBJECT 7",                                // 49
+                         "  ROBOT r ROTATE Q 5",                      // 50
+                         "END",                                       // 51
+                         "END",                                       // 52
+                         "LINK",                                      // 53
+                         "LINK b",                                    // 54
+                         "  LINE 0 0 0 1 1 1",                        // 55
+                     }));
+  const std::string colour = "a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15";
+  const std::string robotStatements =
+      "LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, GRIPPER or END";
+  const Strings expected{
+      "p.rsd:1:1: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found 'stray'",
+      "p.rsd:2:8: unexpected 'extra' after the LINK name (statements go on the next lines)",
+      "p.rsd:3:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'SPIN'",
+      "p.rsd:4:17: expected the LINE's second endpoint (z coordinate) before the end of the line",
+      "p.rsd:5:18: expected the LINE's second endpoint (z coordinate), found 'x'",
+      "p.rsd:6:25: expected " + colour + ", found 'PURPLE'",
+      "p.rsd:7:25: expected " + colour + ", found '16'",
+      "p.rsd:8:9: expected " + colour + ", found '16'",
+      "p.rsd:9:10: expected an axis X, Y or Z, found 'W'",
+      "p.rsd:10:11: expected an angle in degrees before the end of the line",
+      "p.rsd:11:11: expected a displacement (z coordinate) before the end of the line",
+      "p.rsd:12:20: unexpected character '#'",
+      "p.rsd:13:18: expected the LINE's second endpoint (z coordinate) (at most 1e+09 in size), found '2000000000'",
+      "p.rsd:14:5: END takes nothing after it, found 'foo'",
+      "p.rsd:16:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'LINK'",
+      "p.rsd:17:12: expected the BOX's bottom edge before the end of the line",
+      "p.rsd:20:3: expected BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, AXIS2, AXIS3, NORMAL, APPROACH or END, "
+      "found 'GRASP'",
+      "p.rsd:21:10: expected a motor letter A..Z, found '5'",
+      "p.rsd:22:10: expected a motor letter A..Z, found 'AB'",
+      "p.rsd:23:13: a precision must be greater than 0",
+      "p.rsd:24:13: a precision must be greater than 0",
+      "p.rsd:25:9: a speed must be greater than 0",
+      "p.rsd:26:9: a speed must be greater than 0",
+      "p.rsd:27:9: range 10..5 is empty: the minimum is greater than the maximum",
+      "p.rsd:28:11: expected the maximum encoder value (a whole number), found '1.5'",
+      "p.rsd:29:13: expected the second finger link before the end of the line",
+      "p.rsd:30:19: expected the normal vector's end point (z coordinate) before the end of the line",
+      "p.rsd:33:9: expected a joint number, found 'one'",
+      "p.rsd:34:11: expected REVOLUTE or PRISMATIC, found 'TWISTY'",
+      "p.rsd:35:9: expected a joint number (a whole number), found '1.5'",
+      "p.rsd:37:39: a precision must be greater than 0",
+      "p.rsd:38:9: a speed must be greater than 0",
+      "p.rsd:39:13: a precision must be greater than 0",
+      "p.rsd:40:12: expected ON or OFF, found 'MAYBE'",
+      "p.rsd:41:3: expected " + robotStatements + ", found 'WOBBLE'",
+      "p.rsd:42:7: expected a link name before the end of the line",
+      "p.rsd:43:11: expected a gripper name, found '9'",
+      "p.rsd:46:3: expected ROBOT, OBJECT or END, found 'AT'",
+      "p.rsd:47:17: expected a position (z coordinate) before the end of the line",
+      "p.rsd:48:11: expected ROBOT, OBJECT, AT, ROTATE or END, found 'SPIN'",
+      "p.rsd:49:10: expected an object name, found '7'",
+      "p.rsd:50:18: expected an axis X, Y or Z, found 'Q'",
+      "p.rsd:52:1: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found 'END'",
+      "p.rsd:53:5: expected a name for the LINK before the end of the line",
+      "p.rsd:54:1: LINK has no END",
+  };
+  CHECK(robotErrors(dir, "p.rsd") == expected);
+}
+
+TEST_CASE("description: the CLI prints each error with its source line and a caret", "[models]") {
+  TempDir dir;
+  const std::string file = dir.write("r.rsd", lines({"LINK a", "  BOX 1 2 3 4 5 6 COLOR PURPLE", "END"}));
+  const auto r = runCli({"table", file});
+  CHECK(r.code == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err == file + ":2:25: error: expected a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a "
+                        "number 0..15, found 'PURPLE'\n"
+                        "  BOX 1 2 3 4 5 6 COLOR PURPLE\n"
+                        "                        ^\n");
+}
+
+TEST_CASE("description: invalid UTF-8 and unexpected characters", "[models]") {
+  TempDir dir;
+  SECTION("an invalid byte is an error at its position") {
+    dir.write("u.rsd", lines({"LINK a", "  LINE 0 0 0 1 1 1 ; caf\xC3", "END"}));
+    CHECK(robotErrors(dir, "u.rsd") == Strings{"u.rsd:2:25: invalid UTF-8 (byte 0xC3): programs are UTF-8 text"});
+  }
+  SECTION("a stray byte after valid multi-byte text counts columns in characters") {
+    dir.write("u.rsd", lines({"; d\xC3\xA9j\xC3\xA0", "LINK \xC3\xA9t\xC3\xA9 \xFF", "END"}));
+    CHECK(robotErrors(dir, "u.rsd") == Strings{"u.rsd:2:10: invalid UTF-8 (byte 0xFF): programs are UTF-8 text"});
+  }
+  SECTION("a valid non-ASCII character is an unexpected character, counted in characters") {
+    dir.write("u.rsd", lines({"LINK a", "  LINE 0 0 0 \xC3\xA9 1 1", "  LINE 0 0 0 1 1 1 @", "END"}));
+    CHECK(robotErrors(dir, "u.rsd") ==
+          Strings{"u.rsd:2:14: unexpected character '\xC3\xA9'", "u.rsd:3:20: unexpected character '@'"});
+  }
+}
+
+TEST_CASE("description: unknown names", "[models]") {
+  TempDir dir;
+  SECTION("a link that is neither in the file nor on the path") {
+    dir.write("r.rsd", kBase + lines({
+                                    "ROBOT r",                                                 // 4
+                                    "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",  // 5
+                                    "  LINK nowhere FRAME ORIGIN 1 0 0 XAXIS 2 0 0 ZAXIS 1 0 1",  // 6
+                                    "  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10",   // 7
+                                    "END",
+                                }));
+    CHECK(robotErrors(dir, "r.rsd") ==
+          Strings{"r.rsd:6:8: unknown link 'nowhere': not defined in this file, and no nowhere.rsd on the library path"});
+    SECTION("a file of that name that defines something else does not count") {
+      dir.write("nowhere.rsd", lines({"OBJECT nowhere", "  LINE 0 0 0 1 1 1", "END"}));
+      CHECK(robotErrors(dir, "r.rsd") ==
+            Strings{"r.rsd:6:8: unknown link 'nowhere': not defined in this file, and no nowhere.rsd on the library "
+                    "path"});
+    }
+  }
+  SECTION("a gripper") {
+    dir.write("r.rsd", kBase + lines({
+                                    "ROBOT r",                                                 // 4
+                                    "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",  // 5
+                                    "  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10",   // 6
+                                    "  GRIPPER hand",                                         // 7
+                                    "END",
+                                }));
+    CHECK(robotErrors(dir, "r.rsd") ==
+          Strings{"r.rsd:7:11: unknown gripper 'hand': not defined in this file, and no hand.rsd on the library path"});
+  }
+  SECTION("a robot and an object in a WORKCELL, both reported") {
+    dir.write("w.rsd", lines({"WORKCELL w", "  ROBOT ghost AT 0 0 0", "  OBJECT phantom AT 1 2 3", "END"}));
+    CHECK(workcellErrors(dir, "w.rsd") ==
+          Strings{"w.rsd:2:9: unknown robot 'ghost': not defined in this file, and no ghost.rsd on the library path",
+                  "w.rsd:3:10: unknown object 'phantom': not defined in this file, and no phantom.rsd on the library "
+                  "path"});
+  }
+  SECTION("a file or library name that does not exist") {
+    Library lib({dir.path()});
+    CHECK_FALSE(lib.robot("no-such-robot"));
+    CHECK(diagnosticList(lib.diagnostics(), dir.path().string()) ==
+          Strings{"no-such-robot:0:0: no such file, and no robot of that name on the library path"});
+  }
+}
+
+TEST_CASE("description: link frames", "[models]") {
+  TempDir dir;
+  const auto robot = [&](const std::string& frame1) {
+    dir.write("r.rsd", kBase + lines({
+                                    "ROBOT r",                                                 // 4
+                                    "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",  // 5
+                                    "  LINK base" + frame1,                                   // 6
+                                    "  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10",   // 7
+                                    "END",
+                                }));
+    return robotErrors(dir, "r.rsd");
+  };
+  SECTION("a link without FRAME") {
+    CHECK(robot("") == Strings{"r.rsd:6:8: link 'base' has no FRAME (ORIGIN, XAXIS and ZAXIS points)"});
+  }
+  SECTION("axes not perpendicular") {
+    // x = +X, z = (1, 0, 1)/sqrt 2: 45 degrees apart.
+    CHECK(robot(" FRAME ORIGIN 0 0 5 XAXIS 1 0 5 ZAXIS 1 0 6") ==
+          Strings{"r.rsd:6:26: link 'base': x axis and z axis are not perpendicular (the angle between them is 45 "
+                  "degrees)"});
+  }
+  SECTION("a zero-length axis") {
+    CHECK(robot(" FRAME ORIGIN 0 0 5 XAXIS 0 0 5 ZAXIS 0 0 6") ==
+          Strings{"r.rsd:6:26: link 'base': x axis has zero length"});
+    CHECK(robot(" FRAME ORIGIN 0 0 5 XAXIS 1 0 5 ZAXIS 0 0 5") ==
+          Strings{"r.rsd:6:26: link 'base': z axis has zero length"});
+  }
+  SECTION("x1 not perpendicular to z0 (D-H rule)") {
+    // x1 = (1, 0, 1)/sqrt 2 makes 45 degrees with z0 = +Z; z1 = (-1, 0, 1)/sqrt 2.
+    CHECK(robot(" FRAME ORIGIN 0 0 5 XAXIS 1 0 6 ZAXIS -1 0 6") ==
+          Strings{"r.rsd:6:26: robot 'r': x1 is not perpendicular to z0 (the angle between them is 45 degrees), as "
+                  "the D-H convention requires"});
+  }
+  SECTION("x1 not meeting z0 (D-H rule)") {
+    // x1 runs along +X through (0, 50, 5): 50 from the z0 axis.
+    CHECK(robot(" FRAME ORIGIN 0 50 5 XAXIS 1 50 5 ZAXIS 0 50 6") ==
+          Strings{"r.rsd:6:26: robot 'r': x1 does not meet z0 (they pass 50 apart), as the D-H convention requires"});
+  }
+  SECTION("a frame statement before any LINK") {
+    dir.write("r.rsd", lines({"ROBOT r", "  XAXIS 1 0 0", "END"}));
+    // The message is about the keyword, so it points at the keyword.
+    CHECK(robotErrors(dir, "r.rsd") == Strings{"r.rsd:2:3: XAXIS before any LINK: a frame belongs to the LINK before it"});
+  }
+}
+
+TEST_CASE("description: a FRAME missing its XAXIS or ZAXIS point is an error, not the design origin", "[models]") {
+  // ORIGIN 5 0 0 with ZAXIS 5 0 1 and no XAXIS: the x point must not
+  // silently default to (0, 0, 0) (which would give x = -X and be accepted).
+  TempDir dir;
+  dir.write("r.rsd", kBase + lines({
+                                  "ROBOT r",                                                 // 4
+                                  "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",  // 5
+                                  "  LINK base FRAME ORIGIN 5 0 0 ZAXIS 5 0 1",             // 6
+                                  "  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10",   // 7
+                                  "END",
+                              }));
+  const Strings d = robotErrors(dir, "r.rsd");
+  REQUIRE(d.size() == 1);
+  CHECK(d[0].rfind("r.rsd:6:", 0) == 0);
+  CHECK(d[0].find("XAXIS") != std::string::npos);
+}
+
+TEST_CASE("description: joints", "[models]") {
+  TempDir dir;
+  const auto robot = [&](const Strings& joints, int links = 3) {
+    Strings ls{"ROBOT r"};  // 4
+    for (int i = 0; i < links; ++i)
+      ls.push_back("  LINK base FRAME ORIGIN " + std::to_string(i) + " 0 0 XAXIS 9 0 0 ZAXIS " + std::to_string(i) +
+                   " 0 1");  // 5, 6, 7
+    ls.insert(ls.end(), joints.begin(), joints.end());
+    ls.push_back("END");
+    dir.write("r.rsd", kBase + lines(ls));
+    return robotErrors(dir, "r.rsd");
+  };
+  SECTION("numbers out of order") {
+    CHECK(robot({"  JOINT 2 REVOLUTE LETTER P PRECISION 1 RANGE -10 10",
+                 "  JOINT 1 REVOLUTE LETTER Q PRECISION 1 RANGE -10 10"}) ==
+          Strings{"r.rsd:8:9: joints are numbered in order: expected JOINT 1, found JOINT 2",
+                  "r.rsd:9:9: joints are numbered in order: expected JOINT 2, found JOINT 1"});
+  }
+  SECTION("a joint without LETTER, PRECISION and RANGE") {
+    CHECK(robot({"  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10", "  JOINT 2 PRISMATIC"}) ==
+          Strings{"r.rsd:9:9: JOINT 2 has no LETTER", "r.rsd:9:9: JOINT 2 has no PRECISION",
+                  "r.rsd:9:9: JOINT 2 has no RANGE"});
+  }
+  SECTION("joint statements spread over several lines") {
+    CHECK(robot({"  JOINT 1 REVOLUTE", "  LETTER P", "  PRECISION 1", "  RANGE -10 10", "  COUPLING OFF",
+                 "  SPEED 10", "  JOINT 2 REVOLUTE", "  LETTER Q PRECISION 1 RANGE -10 10"})
+              .empty());
+  }
+  SECTION("a joint count that does not match the links") {
+    CHECK(robot({"  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10"}) ==
+          Strings{"r.rsd:4:1: robot 'r' has 3 links and so needs 2 joints, found 1"});
+    CHECK(robot({"  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10"}, 1) ==
+          Strings{"r.rsd:4:1: robot 'r' has 1 link and so needs 0 joints, found 1"});
+  }
+  SECTION("a motor letter used twice") {
+    CHECK(robot({"  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10",
+                 "  JOINT 2 REVOLUTE LETTER p PRECISION 1 RANGE -10 10"}) ==
+          Strings{"r.rsd:9:9: motor letter P is used twice"});
+  }
+  SECTION("COUPLING before any JOINT") {
+    CHECK(robot({"  COUPLING ON"}) == Strings{"r.rsd:8:12: expected a JOINT before COUPLING, found 'ON'"});
+  }
+  SECTION("LETTER before any JOINT names the problem") {
+    const Strings d = robot({"  LETTER P"});
+    REQUIRE(d.size() == 1);
+    CHECK(d[0].rfind("r.rsd:8:3: ", 0) == 0);
+    // "expected LINK, ..., LETTER, ..., found 'LETTER'" contradicts itself.
+    CHECK(d[0].find("found 'LETTER'") == std::string::npos);
+  }
+  SECTION("a joint without LETTER does not also clash with another joint's letter A") {
+    CHECK(robot({"  JOINT 1 REVOLUTE PRECISION 1 RANGE -10 10", "  JOINT 2 REVOLUTE LETTER A PRECISION 1 RANGE -10 10"}) ==
+          Strings{"r.rsd:8:9: JOINT 1 has no LETTER"});
+  }
+}
+
+TEST_CASE("description: grippers", "[models]") {
+  TempDir dir;
+  SECTION("the reference gripper is sound") {
+    dir.write("g.rsd", gripperFile(kGripperLines));
+    CHECK(robotErrors(dir, "g.rsd").empty());
+  }
+  SECTION("each missing part is reported") {
+    const std::vector<std::pair<std::size_t, std::string>> parts{
+        {1, "BASE link"},
+        {2, "FINGERS"},
+        {3, "LETTER"},
+        {4, "PRECISION"},
+        {5, "RANGE"},
+        {6, "AXIS2 (finger 2's rotation axis r2)"},
+        {7, "AXIS3 (finger 3's rotation axis r3)"},
+        {8, "NORMAL vector"},
+        {9, "APPROACH vector"},
+    };
+    for (const auto& [line, what] : parts) {
+      Strings g = kGripperLines;
+      g.erase(g.begin() + static_cast<std::ptrdiff_t>(line));
+      dir.write("g.rsd", gripperFile(g));
+      INFO("without " << kGripperLines[line]);
+      CHECK(robotErrors(dir, "g.rsd") == Strings{"g.rsd:1:1: gripper 'hand' has no " + what});
+    }
+  }
+  SECTION("an empty gripper lacks everything, all reported") {
+    Strings g{"GRIPPER hand", "END", "LINK palm", "  LINE 0 0 0 0 0 1", "END"};
+    while (g.size() < 14) g.push_back("");
+    dir.write("g.rsd", gripperFile(g));
+    CHECK(robotErrors(dir, "g.rsd") == Strings{"g.rsd:1:1: gripper 'hand' has no BASE link",
+                                               "g.rsd:1:1: gripper 'hand' has no FINGERS",
+                                               "g.rsd:1:1: gripper 'hand' has no LETTER",
+                                               "g.rsd:1:1: gripper 'hand' has no PRECISION",
+                                               "g.rsd:1:1: gripper 'hand' has no RANGE",
+                                               "g.rsd:1:1: gripper 'hand' has no AXIS2 (finger 2's rotation axis r2)",
+                                               "g.rsd:1:1: gripper 'hand' has no AXIS3 (finger 3's rotation axis r3)",
+                                               "g.rsd:1:1: gripper 'hand' has no NORMAL vector",
+                                               "g.rsd:1:1: gripper 'hand' has no APPROACH vector"});
+  }
+  SECTION("an approach vector that does not start at the normal vector's start") {
+    Strings g = kGripperLines;
+    g[9] = "  APPROACH 0 0 1  0 0 -1";
+    dir.write("g.rsd", gripperFile(g));
+    CHECK(robotErrors(dir, "g.rsd") ==
+          Strings{"g.rsd:10:12: gripper 'hand': the approach vector starts at (0, 0, 1), not at the normal vector's "
+                  "start (0, 0, 0): both must start at the tool centre point"});
+  }
+  SECTION("normal and approach not perpendicular") {
+    Strings g = kGripperLines;
+    g[9] = "  APPROACH 0 0 0  1 0 1";
+    dir.write("g.rsd", gripperFile(g));
+    CHECK(robotErrors(dir, "g.rsd") ==
+          Strings{"g.rsd:9:10: gripper 'hand': the normal vector and the approach vector are not perpendicular (the "
+                  "angle between them is 45 degrees)"});
+  }
+  SECTION("a zero-length AXIS2 is reported on the AXIS2 line") {
+    Strings g = kGripperLines;
+    g[6] = "  AXIS2 0 -1 0  0 -1 0";
+    dir.write("g.rsd", gripperFile(g));
+    CHECK(robotErrors(dir, "g.rsd") == Strings{"g.rsd:7:9: gripper 'hand': axis r2 has zero length"});
+  }
+  SECTION("the gripper's letter equal to a joint's") {
+    Strings g = kGripperLines;
+    g[3] = "  LETTER P";
+    dir.write("g.rsd", gripperFile(g));
+    CHECK(robotErrors(dir, "g.rsd") == Strings{"g.rsd:18:11: the gripper's motor letter P is also a joint's"});
+  }
+  SECTION("a joint without LETTER does not clash with the gripper's letter A") {
+    Strings robot = kHandRobotLines;
+    robot[2] = "  JOINT 1 REVOLUTE PRECISION 1 RANGE -10 10";
+    Strings g = kGripperLines;
+    g.insert(g.end(), robot.begin(), robot.end());
+    dir.write("g.rsd", lines(g));
+    CHECK(robotErrors(dir, "g.rsd") == Strings{"g.rsd:17:9: JOINT 1 has no LETTER"});
+  }
+  SECTION("joint count with a gripper") {
+    Strings robot = kHandRobotLines;
+    robot.insert(robot.begin() + 2, "  LINK palm FRAME ORIGIN 0 0 20 XAXIS 1 0 20 ZAXIS 0 0 21");
+    Strings g = kGripperLines;
+    g.insert(g.end(), robot.begin(), robot.end());
+    dir.write("g.rsd", lines(g));
+    CHECK(robotErrors(dir, "g.rsd") ==
+          Strings{"g.rsd:15:1: robot 'r' has 2 links and a gripper and so needs 2 joints, found 1"});
+  }
+}
+
+TEST_CASE("description: a workcell that places nothing", "[models]") {
+  TempDir dir;
+  dir.write("w.rsd", lines({"; nothing here", "WORKCELL empty", "END"}));
+  CHECK(workcellErrors(dir, "w.rsd") == Strings{"w.rsd:2:1: workcell 'empty' places no robot and no object"});
+}
+
+TEST_CASE("description: errors in several files are reported together", "[models]") {
+  TempDir dir;
+  // wobbly.rsd and hand.rsd are found on the search path; each has its own
+  // mistakes, and the robot file has one of its own.
+  dir.write("wobbly.rsd", lines({
+                              "LINK wobbly",                     // 1
+                              "  LINE 0 0 0 0 0 1 COLOR MAUVE",  // 2
+                              "  SHEAR 2",                       // 3
+                              "END",
+                          }));
+  Strings hand = kGripperLines;
+  hand[6] = "  AXIS2 0 -1 0  1 -1";  // missing a coordinate
+  hand.resize(14);
+  dir.write("hand.rsd", lines(hand));
+  dir.write("r.rsd", kBase + lines({
+                                  "ROBOT r",                                                        // 4
+                                  "  LINK base FRAME ORIGIN 0 0 10 XAXIS 1 0 10 ZAXIS 0 0 11",      // 5
+                                  "  LINK wobbly FRAME ORIGIN 0 0 10 XAXIS 1 0 10 ZAXIS 0 0 11",    // 6
+                                  "  JOINT 1 REVOLUTE LETTER P PRECISION 1",                        // 7
+                                  "  JOINT 2 REVOLUTE LETTER Q PRECISION 1 RANGE -10 10",           // 8
+                                  "  GRIPPER hand",                                                 // 9
+                                  "END",
+                              }));
+  const Strings expected{
+      "wobbly.rsd:2:26: expected a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15, found "
+      "'MAUVE'",
+      "wobbly.rsd:3:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'SHEAR'",
+      "hand.rsd:7:21: expected the axis r2's end point (z coordinate) before the end of the line",
+      "r.rsd:7:9: JOINT 1 has no RANGE",
+  };
+  CHECK(robotErrors(dir, "r.rsd") == expected);
+}
+
+TEST_CASE("description: a file's own statement errors do not hide the errors of the files it uses", "[models]") {
+  // docs/models.md: "Every error of every file is reported in one run".
+  TempDir dir;
+  dir.write("wobbly.rsd", lines({"LINK wobbly", "  SHEAR 2", "END"}));
+  dir.write("r.rsd", lines({
+                         "LINK base",                                                    // 1
+                         "  LINE 0 0 0 0 0 1 COLOR MAUVE",                               // 2
+                         "END",                                                          // 3
+                         "ROBOT r",                                                      // 4
+                         "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",       // 5
+                         "  LINK wobbly FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",     // 6
+                         "  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10",         // 7
+                         "END",
+                     }));
+  const Strings d = robotErrors(dir, "r.rsd");
+  CHECK(std::find(d.begin(), d.end(),
+                  "r.rsd:2:26: expected a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15, "
+                  "found 'MAUVE'") != d.end());
+  CHECK(std::find(d.begin(), d.end(), "wobbly.rsd:2:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'SHEAR'") !=
+        d.end());
+}
+
+TEST_CASE("description: one slip gives one message, also in a file loaded by name", "[models]") {
+  // A bad PRECISION or RANGE is reported where it is written; the part it
+  // belongs to should not also be reported as missing it.
+  TempDir dir;
+  Strings hand = kGripperLines;
+  hand[4] = "  PRECISION 0";
+  hand.resize(14);
+  dir.write("hand.rsd", lines(hand));
+  dir.write("r.rsd", kBase + lines({
+                                  "ROBOT r",                                                    // 4
+                                  "  LINK base FRAME ORIGIN 0 0 10 XAXIS 1 0 10 ZAXIS 0 0 11",  // 5
+                                  "  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10",      // 6
+                                  "  GRIPPER hand",                                            // 7
+                                  "END",
+                              }));
+  CHECK(robotErrors(dir, "r.rsd") == Strings{"hand.rsd:5:13: a precision must be greater than 0"});
+
+  dir.write("arm.rsd", kBase + lines({
+                                    "ROBOT arm",                                               // 4
+                                    "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",  // 5
+                                    "  LINK base FRAME ORIGIN 0 0 5 XAXIS 1 0 5 ZAXIS 0 0 6",  // 6
+                                    "  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE 10 -10",   // 7
+                                    "END",
+                                }));
+  dir.write("w.rsd", lines({"WORKCELL w", "  ROBOT arm", "END"}));
+  CHECK(workcellErrors(dir, "w.rsd") ==
+        Strings{"arm.rsd:7:47: range 10..-10 is empty: the minimum is greater than the maximum"});
+}
+
+TEST_CASE("description: a LINK header without a name gives one message, not one per line", "[models]") {
+  TempDir dir;
+  dir.write("r.rsd", lines({
+                         "LINK",                  // 1
+                         "  LINE 0 0 0 1 1 1",    // 2
+                         "  BOX 1 2 3 4 5 6",     // 3
+                         "END",                   // 4
+                     }));
+  CHECK(robotErrors(dir, "r.rsd") == Strings{"r.rsd:1:5: expected a name for the LINK before the end of the line"});
+}
