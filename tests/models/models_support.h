@@ -37,6 +37,12 @@ inline std::vector<std::string> diagnosticList(const std::vector<rs::compiler::D
   return out;
 }
 
+inline std::string joined(const std::vector<std::string>& items) {
+  std::string s;
+  for (const std::string& i : items) s += i + '\n';
+  return s;
+}
+
 /// Sets (or, with nullopt, unsets) ROBOTSIM_PATH; puts it back on exit.
 class ScopedRobotsimPath {
  public:

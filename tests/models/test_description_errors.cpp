@@ -200,8 +200,8 @@ TEST_CASE("description: the CLI prints each error with its source line and a car
   CHECK(r.out.empty());
   CHECK(r.err == file + ":2:25: error: expected a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a "
                         "number 0..15, found 'PURPLE'\n"
-                        "  BOX 1 2 3 4 5 6 COLOR PURPLE\n"
-                        "                        ^\n");
+                        "  BOX 1 2 3 4 5 6 COLOR PURPLE\n" +
+                        std::string(2 + 24, ' ') + "^\n");
 }
 
 TEST_CASE("description: invalid UTF-8 and unexpected characters", "[models]") {

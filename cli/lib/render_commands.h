@@ -1,0 +1,53 @@
+// `robotsim render` (a still of a workcell, at its placed pose or at a
+// moment of a program's run: PNG, SVG or a dump of the projected lines) and
+// `robotsim animate` (a self-contained HTML page replaying a run).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace rs::cli {
+
+/// The most steps `animate` records unless --max-steps says otherwise.
+inline constexpr std::uint64_t kAnimateMaxSteps = 1'000'000;
+
+struct RenderOptions {
+  std::string cell;                  // render: positional; animate: --cell
+  std::string program;               // render: --program; animate: positional
+  std::string at;                    // render --at SECONDS
+  std::string output;                // -o
+  std::string view, window, size;    // "x,y,z", "x,y,z", "WxH"
+  double zoom = 1.0;
+  bool axes = false;
+  std::string dump;                  // --dump-lines: "", "text" or "json"
+  std::vector<std::string> libDirs;  // --lib
+  std::vector<std::string> inputs;   // --input N=ON@T
+  std::string stimuliFile;           // --stimuli
+  std::uint64_t maxSteps = 0;        // 0: the command's default
+  std::string maxTime = "3600";
+};
+
+int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err);
+int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err);
+
+/// Adds both subcommands to `app`; after app.parse, run() answers the exit
+/// code when one of them was chosen.
+class RenderCommands {
+ public:
+  explicit RenderCommands(CLI::App& app);
+  std::optional<int> run(std::ostream& out, std::ostream& err) const;
+
+ private:
+  RenderOptions o_;
+  CLI::App* render_ = nullptr;
+  CLI::App* animate_ = nullptr;
+};
+
+}  // namespace rs::cli

@@ -1,0 +1,201 @@
+#include "runtime/render/animation.h"
+
+#include <fmt/format.h>
+
+#include "runtime/render/page.h"
+#include "runtime/render/scene.h"
+
+namespace rs::render {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Column-major 3x4: the x, y, z axes, then the origin.
+Json matrix(const Eigen::Isometry3d& F) {
+  Json m = Json::array();
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r) m.push_back(F.matrix()(r, c));
+  return m;
+}
+
+Json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+// A shape's lines in the coordinates of the frame it moves with.
+Json part(std::string_view kind, int index, std::size_t frame, const workcell::Shape& shape,
+          const Eigen::Isometry3d& M) {
+  Json pts = Json::array(), colors = Json::array();
+  for (const workcell::Segment& s : shape.segments) {
+    const Eigen::Vector3d a = M * s.a, b = M * s.b;
+    for (double v : {a.x(), a.y(), a.z(), b.x(), b.y(), b.z()}) pts.push_back(v);
+    colors.push_back(static_cast<int>(s.color));
+  }
+  return {{"kind", kind}, {"index", index}, {"frame", frame}, {"pts", pts}, {"colors", colors}};
+}
+
+// A finger's axis in frame n's coordinates: [point, direction].
+Json axis(const kinematics::Line& line, const Eigen::Isometry3d& M) {
+  const Eigen::Vector3d p = M * line.point, d = M.linear() * line.direction;
+  return {p.x(), p.y(), p.z(), d.x(), d.y(), d.z()};
+}
+
+Json robotModel(const CellPoser& poser, std::size_t r, bool runsProgram) {
+  const workcell::Robot& robot = poser.cell().robots[r].robot;
+  const std::size_t last = poser.frameCount(r) - 1;
+  Json joints = Json::array();
+  if (robot.chain)
+    for (const kinematics::Joint& j : robot.chain->joints())
+      joints.push_back({{"revolute", j.type() == kinematics::JointType::Revolute},
+                        {"theta", j.dh.theta},
+                        {"d", j.dh.d},
+                        {"a", j.dh.a},
+                        {"alpha", j.dh.alpha},
+                        {"home", j.home},
+                        {"precision", j.precision},
+                        {"encoder", j.encoder},
+                        {"coupling", j.coupling}});
+  Json parts = Json::array();
+  for (std::size_t i = 0; i < robot.links.size(); ++i) {
+    const std::size_t f = std::min(i, last);
+    parts.push_back(part("link", static_cast<int>(i), f, robot.links[i], poser.designInFrame(r, f)));
+  }
+  Json gripper = nullptr;
+  if (robot.hasGripper) {
+    const Eigen::Isometry3d& M = poser.designInFrame(r, last);
+    parts.push_back(part("gripper", static_cast<int>(last), last, robot.gripper.base, M));
+    parts.push_back(part("finger2", static_cast<int>(last), last, robot.gripper.finger2, M));
+    parts.push_back(part("finger3", static_cast<int>(last), last, robot.gripper.finger3, M));
+    gripper = {{"motor", last},
+               {"precision", robot.gripper.model.precision},
+               {"axis2", axis(robot.gripper.model.r2, M)},
+               {"axis3", axis(robot.gripper.model.r3, M)}};
+  }
+  std::string letters;
+  for (const workcell::JointSpec& j : robot.joints) letters += j.letter;
+  if (robot.hasGripper) letters += robot.gripper.letter;
+  return {{"name", robot.name},
+          {"letters", letters},
+          {"program", runsProgram},
+          {"tool", robot.chain && (robot.chain->size() > 0 || robot.hasGripper)},
+          {"base", matrix(poser.frame(r, 0))},
+          {"joints", joints},
+          {"parts", parts},
+          {"gripper", gripper}};
+}
+
+Json runModel(const RunRecording& rec, const std::string& outcome) {
+  Json motors = Json::array();
+  for (const vm::MotorSpec& m : rec.motors)
+    motors.push_back({{"letter", std::string(1, m.letter)},
+                      {"kind", m.kind == vm::JointKind::Gripper     ? "gripper"
+                               : m.kind == vm::JointKind::Prismatic ? "prismatic"
+                                                                    : "revolute"},
+                      {"min", m.min},
+                      {"max", m.max},
+                      {"speed", m.speed}});
+  Json index = Json::array(), start = Json::array(), stop = Json::array();
+  for (const StepRecord& s : rec.steps) index.push_back(s.index), start.push_back(s.start), stop.push_back(s.end);
+  Json moves = Json::array();
+  for (const std::vector<MotorMove>& list : rec.moves) {
+    Json step = Json::array(), from = Json::array(), to = Json::array(), t0 = Json::array(), t1 = Json::array();
+    for (const MotorMove& m : list)
+      step.push_back(m.step), from.push_back(m.from), to.push_back(m.to), t0.push_back(m.start), t1.push_back(m.end);
+    moves.push_back({{"step", step}, {"from", from}, {"to", to}, {"start", t0}, {"end", t1}});
+  }
+  Json outStep = Json::array(), outMask = Json::array();
+  for (const OutputChange& o : rec.outputs) outStep.push_back(o.step), outMask.push_back(o.outputs);
+  Json camStep = Json::array(), camView = Json::array(), camWindow = Json::array();
+  for (const CameraChange& c : rec.cameras) {
+    camStep.push_back(c.step);
+    for (std::int64_t v : {c.view.x, c.view.y, c.view.z}) camView.push_back(v);
+    for (std::int64_t v : {c.window.x, c.window.y, c.window.z}) camWindow.push_back(v);
+  }
+  Json inAt = Json::array(), inMask = Json::array();
+  for (const InputLevel& l : rec.inputs) inAt.push_back(l.at), inMask.push_back(l.inputs);
+  return {{"end", rec.end},
+          {"outcome", outcome},
+          {"motors", motors},
+          {"index", index},
+          {"start", start},
+          {"stop", stop},
+          {"moves", moves},
+          {"outputs", {{"step", outStep}, {"mask", outMask}}},
+          {"cameras", {{"step", camStep}, {"view", camView}, {"window", camWindow}}},
+          {"inputs", {{"at", inAt}, {"mask", inMask}}}};
+}
+
+std::string escapeHtml(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Json animationModel(const AnimationInput& input) {
+  const workcell::Workcell& cell = *input.cell;
+  const CellPoser poser(cell);
+  const Fit fit = fitBox(poser.homeBounds());
+  Json robots = Json::array();
+  for (std::size_t r = 0; r < cell.robots.size(); ++r) robots.push_back(robotModel(poser, r, r == 0));
+  Json objects = Json::array();
+  for (std::size_t o = 0; o < cell.objects.size(); ++o)
+    objects.push_back(part("object", static_cast<int>(o), 0, cell.objects[o].shape, cell.objects[o].F_world_design));
+  for (std::size_t o = 0; o < cell.objects.size(); ++o) objects[o]["name"] = cell.objects[o].shape.name;
+  return {{"title", fmt::format("{} on {}", input.listing.name, cell.name)},
+          {"cell", cell.name},
+          {"fit", {{"center", vec(fit.center)}, {"radius", fit.radius}}},
+          {"camera",
+           {{"view", vec(input.camera.view)},
+            {"window", vec(input.camera.window)},
+            {"zoom", input.camera.zoom},
+            {"axes", input.camera.axes}}},
+          {"robots", robots},
+          {"objects", objects},
+          {"program", {{"name", input.listing.name}, {"lines", input.listing.lines}, {"lineOf", input.listing.lineOf}}},
+          {"run", runModel(*input.run, input.outcome)}};
+}
+
+// The model goes into a <script type="application/json">; every '<' is
+// written as \u003c so that no text in it can close or comment the element.
+std::string animationHtml(const AnimationInput& input) {
+  const Json model = animationModel(input);
+  std::string json = model.dump(-1, ' ', false, Json::error_handler_t::replace);
+  std::string safe;
+  safe.reserve(json.size());
+  for (char c : json) {
+    if (c == '<') safe += "\\u003c";
+    else safe += c;
+  }
+  std::string html;
+  html.reserve(safe.size() + pageScript().size() + pageStyle().size() + 4096);
+  html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  html +=
+      "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; "
+      "style-src 'unsafe-inline'; script-src 'unsafe-inline'; img-src data:\">\n";
+  html += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
+  html += "<title>robotsim: " + escapeHtml(model["title"].get<std::string>()) + "</title>\n";
+  html += "<style>\n";
+  html += pageStyle();
+  html += "</style>\n</head>\n<body>\n";
+  html += page::kBody;
+  html += "<script type=\"application/json\" id=\"robotsim-model\">";
+  html += safe;
+  html += "</script>\n<script>\n";
+  html += pageScript();
+  html += "</script>\n</body>\n</html>\n";
+  return html;
+}
+
+std::string_view pageScript() { return page::kScript; }
+std::string_view pageStyle() { return page::kStyle; }
+
+}  // namespace rs::render

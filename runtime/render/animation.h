@@ -1,0 +1,53 @@
+// The HTML animation of a run: one self-contained page (no network, every
+// script and style inlined) that replays a RunRecording on the workcell.
+//
+// Why the page does the kinematics itself: it embeds the workcell as a
+// compact model (each robot's D-H chain and motor drives, each link's lines
+// in its own frame's coordinates, the gripper's finger axes) and the run as
+// its steps and motor segments, and computes every frame from those, like
+// SimMachine and CellPoser do. The file grows with the number of lines and
+// steps, not with the run's duration times the frame rate (as precomputed
+// keyframes would); any moment can be scrubbed to exactly; the mouse camera
+// and AXES cost nothing extra; and the page's maths is checked against
+// `robotsim render --dump-lines` in the browser test.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "runtime/render/camera.h"
+#include "runtime/render/recording.h"
+#include "runtime/workcell/model.h"
+
+namespace rs::render {
+
+/// The program as the page lists it.
+struct Listing {
+  std::string name;                 ///< file name shown in the title
+  std::vector<std::string> lines;   ///< the source text's lines (or a disassembly)
+  std::vector<std::uint32_t> lineOf;  ///< 1-based listing line of each instruction
+};
+
+struct AnimationInput {
+  const workcell::Workcell* cell = nullptr;  ///< its first robot ran the program
+  const RunRecording* run = nullptr;
+  Listing listing;
+  Camera camera;         ///< the starting camera (width/height are ignored)
+  std::string outcome;   ///< how the run stopped, for people ("" = END)
+};
+
+/// The page's data: {"title", "cell", "fit", "camera", "robots", "objects",
+/// "program", "run"} (the schema is described in docs/render.md).
+nlohmann::ordered_json animationModel(const AnimationInput& input);
+
+/// The whole HTML page.
+std::string animationHtml(const AnimationInput& input);
+
+/// The page's parts, for tests that check the script separately.
+std::string_view pageScript();
+std::string_view pageStyle();
+
+}  // namespace rs::render

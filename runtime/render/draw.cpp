@@ -1,0 +1,192 @@
+#include "runtime/render/draw.h"
+
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstring>
+#include <memory>
+
+#include "runtime/render/palette.h"
+
+namespace rs::render {
+
+namespace {
+
+constexpr double kLineWidth = 1.25;     // pixels
+constexpr double kToolRadius = 5.0;     // pixels
+constexpr double kLegendSize = 13.0;    // font size, pixels
+constexpr double kLegendMargin = 10.0;  // pixels
+
+struct SurfaceDeleter {
+  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+};
+struct ContextDeleter {
+  void operator()(cairo_t* c) const { cairo_destroy(c); }
+};
+using Surface = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
+using Context = std::unique_ptr<cairo_t, ContextDeleter>;
+
+void setColor(cairo_t* cr, Rgb c, double alpha = 1.0) {
+  cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
+}
+
+// One path and one stroke per colour: 16 strokes however many lines.
+void drawLines(cairo_t* cr, const Picture& picture) {
+  std::array<std::vector<const Line2*>, 16> byColor;
+  for (const Line2& l : picture.lines) byColor[static_cast<std::size_t>(l.color) & 15].push_back(&l);
+  cairo_set_line_width(cr, kLineWidth);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (std::size_t c = 0; c < byColor.size(); ++c) {
+    if (byColor[c].empty()) continue;
+    for (const Line2* l : byColor[c]) {
+      cairo_move_to(cr, l->a.x(), l->a.y());
+      cairo_line_to(cr, l->b.x(), l->b.y());
+    }
+    setColor(cr, kEga[c]);
+    cairo_stroke(cr);
+  }
+}
+
+// The tool centre point: a white ring with a cross.
+void drawTools(cairo_t* cr, const Picture& picture) {
+  cairo_set_line_width(cr, 1.5);
+  for (const ToolMark& t : picture.tools) {
+    const double x = t.at.x(), y = t.at.y(), r = kToolRadius;
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, x, y, r, 0, 6.283185307179586);
+    cairo_move_to(cr, x - 2 * r, y);
+    cairo_line_to(cr, x + 2 * r, y);
+    cairo_move_to(cr, x, y - 2 * r);
+    cairo_line_to(cr, x, y + 2 * r);
+  }
+  setColor(cr, kEga[15]);
+  cairo_stroke(cr);
+}
+
+void drawLegend(cairo_t* cr, const Picture& picture) {
+  if (picture.legend.empty()) return;
+  cairo_select_font_face(cr, "monospace", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, kLegendSize);
+  cairo_font_extents_t font;
+  cairo_font_extents(cr, &font);
+  double width = 0;
+  for (const std::string& line : picture.legend) {
+    cairo_text_extents_t ext;
+    cairo_text_extents(cr, line.c_str(), &ext);
+    width = std::max(width, ext.x_advance);
+  }
+  const double pad = 6, lineHeight = font.height;
+  cairo_rectangle(cr, kLegendMargin - pad, kLegendMargin - pad, width + 2 * pad,
+                  lineHeight * static_cast<double>(picture.legend.size()) + 2 * pad);
+  setColor(cr, kBackground, 0.8);
+  cairo_fill(cr);
+  setColor(cr, kEga[7]);
+  double y = kLegendMargin + font.ascent;
+  for (const std::string& line : picture.legend) {
+    cairo_move_to(cr, kLegendMargin, y);
+    cairo_show_text(cr, line.c_str());
+    y += lineHeight;
+  }
+}
+
+void draw(cairo_t* cr, const Picture& picture) {
+  setColor(cr, kBackground);
+  cairo_paint(cr);
+  drawLines(cr, picture);
+  drawTools(cr, picture);
+  drawLegend(cr, picture);
+}
+
+cairo_status_t appendBytes(void* closure, const unsigned char* data, unsigned int length) {
+  auto* out = static_cast<std::vector<std::uint8_t>*>(closure);
+  out->insert(out->end(), data, data + length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+struct Reader {
+  const std::vector<std::uint8_t>* in;
+  std::size_t at = 0;
+};
+
+cairo_status_t readBytes(void* closure, unsigned char* data, unsigned int length) {
+  auto* r = static_cast<Reader*>(closure);
+  if (r->in->size() - r->at < length) return CAIRO_STATUS_READ_ERROR;
+  std::memcpy(data, r->in->data() + r->at, length);
+  r->at += length;
+  return CAIRO_STATUS_SUCCESS;
+}
+
+Encoded failed(cairo_status_t status) { return {{}, std::string("cairo: ") + cairo_status_to_string(status)}; }
+
+}  // namespace
+
+std::optional<ImageFormat> formatFromPath(std::string_view path) {
+  if (path.size() < 4) return std::nullopt;
+  std::string ext(path.substr(path.size() - 4));
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".png") return ImageFormat::Png;
+  if (ext == ".svg") return ImageFormat::Svg;
+  return std::nullopt;
+}
+
+Encoded encodePicture(const Picture& picture, ImageFormat format) {
+  if (picture.width <= 0 || picture.height <= 0 || picture.width > 16384 || picture.height > 16384)
+    return {{}, "image size out of range (1..16384 pixels)"};
+  Encoded result;
+  Surface surface(format == ImageFormat::Png
+                      ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, picture.width, picture.height)
+                      : cairo_svg_surface_create_for_stream(appendBytes, &result.bytes, picture.width, picture.height));
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return failed(cairo_surface_status(surface.get()));
+  {
+    Context cr(cairo_create(surface.get()));
+    draw(cr.get(), picture);
+    if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) return failed(cairo_status(cr.get()));
+  }
+  if (format == ImageFormat::Png) {
+    const cairo_status_t status = cairo_surface_write_to_png_stream(surface.get(), appendBytes, &result.bytes);
+    if (status != CAIRO_STATUS_SUCCESS) return failed(status);
+  } else {
+    cairo_surface_finish(surface.get());
+    if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
+      return failed(cairo_surface_status(surface.get()));
+  }
+  return result;
+}
+
+Decoded decodePng(const std::vector<std::uint8_t>& png) {
+  Reader reader{&png};
+  Surface surface(cairo_image_surface_create_from_png_stream(readBytes, &reader));
+  Decoded out;
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
+    out.error = std::string("cairo: ") + cairo_status_to_string(cairo_surface_status(surface.get()));
+    return out;
+  }
+  cairo_surface_flush(surface.get());
+  const cairo_format_t format = cairo_image_surface_get_format(surface.get());
+  if (format != CAIRO_FORMAT_RGB24 && format != CAIRO_FORMAT_ARGB32) {
+    out.error = "unsupported PNG pixel format";
+    return out;
+  }
+  out.width = cairo_image_surface_get_width(surface.get());
+  out.height = cairo_image_surface_get_height(surface.get());
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  const unsigned char* data = cairo_image_surface_get_data(surface.get());
+  out.rgb.resize(static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height) * 3);
+  std::size_t k = 0;
+  for (int y = 0; y < out.height; ++y) {
+    const unsigned char* row = data + static_cast<std::ptrdiff_t>(y) * stride;
+    for (int x = 0; x < out.width; ++x) {
+      std::uint32_t px;
+      std::memcpy(&px, row + 4 * x, 4);  // native-endian 0xAARRGGBB
+      out.rgb[k++] = static_cast<std::uint8_t>(px >> 16);
+      out.rgb[k++] = static_cast<std::uint8_t>(px >> 8);
+      out.rgb[k++] = static_cast<std::uint8_t>(px);
+    }
+  }
+  return out;
+}
+
+}  // namespace rs::render

@@ -1,0 +1,39 @@
+// Drawing a Picture with cairo: one drawing code for PNG and SVG (cairo
+// rasterises with anti-aliasing and writes both). The bytes come back in
+// memory; the caller writes the file (all or nothing).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "runtime/render/picture.h"
+
+namespace rs::render {
+
+enum class ImageFormat : std::uint8_t { Png, Svg };
+
+/// From the file name: ".png" or ".svg" (any case); nothing otherwise.
+std::optional<ImageFormat> formatFromPath(std::string_view path);
+
+struct Encoded {
+  std::vector<std::uint8_t> bytes;
+  std::string error;  ///< set when bytes is empty
+};
+
+/// The picture as a PNG or SVG file's bytes.
+Encoded encodePicture(const Picture& picture, ImageFormat format);
+
+/// A decoded image, 8-bit RGB per pixel (for tests and tools).
+struct Decoded {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;  ///< width·height·3 bytes, rows top down
+  std::string error;
+};
+
+/// Decodes PNG bytes with cairo.
+Decoded decodePng(const std::vector<std::uint8_t>& png);
+
+}  // namespace rs::render
