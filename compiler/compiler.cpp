@@ -10,14 +10,14 @@
 
 namespace rs::compiler {
 
-std::optional<Diagnostic> checkEncoding(const SourceFile& source) {
+std::optional<Diagnostic> checkEncoding(const SourceFile& source, std::string_view what) {
   if (source.text().size() > kMaxSourceBytes)
     return Diagnostic{source.name(), {}, Severity::Error,
                       fmt::format("file is {} bytes; the limit is {} MiB", source.text().size(), kMaxSourceBytes >> 20)};
   const Utf8Problem bad = findInvalidUtf8(source.text());
   if (!bad.found) return std::nullopt;
   return Diagnostic{source.name(), bad.pos, Severity::Error,
-                    fmt::format("invalid UTF-8 (byte 0x{:02X}): programs are UTF-8 text", bad.byte)};
+                    fmt::format("invalid UTF-8 (byte 0x{:02X}): {} are UTF-8 text", bad.byte, what)};
 }
 
 CompileResult compile(const SourceFile& source, const Target& target) {

@@ -26,7 +26,8 @@ struct CompileResult {
 CompileResult compile(const SourceFile& source, const Target& target);
 
 /// Checks that a source can be lexed at all (size, UTF-8); returns the error.
-std::optional<Diagnostic> checkEncoding(const SourceFile& source);
+/// `what` names the kind of file in the message ("programs are UTF-8 text").
+std::optional<Diagnostic> checkEncoding(const SourceFile& source, std::string_view what = "programs");
 
 /// `robotsim tokens`: one line per token the parser sees.
 std::string dumpTokens(const SourceFile& source, std::vector<Diagnostic>& diagnostics);

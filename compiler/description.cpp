@@ -203,9 +203,11 @@ void Parser::open(Cursor& c, const Word& head) {
     diag_.error(head.pos, fmt::format("expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found '{}'", head.text));
     return;
   }
+  // Without a name the block still opens (the error is reported), so the
+  // lines inside it are read as what they are, not as stray text.
   NameRef name;
-  if (!c.name(name, fmt::format("a name for the {}", blockName(kind)))) return;
-  if (!c.atEnd()) {
+  if (!c.name(name, fmt::format("a name for the {}", blockName(kind)))) {
+  } else if (!c.atEnd()) {
     diag_.error(c.pos(), fmt::format("unexpected '{}' after the {} name (statements go on the next lines)",
                                      c.peek().text, blockName(kind)));
   }
@@ -276,24 +278,28 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
 bool Parser::motorClause(Cursor& c, char& letter, Pos& letterPos, double& precision, std::int32_t& min,
                          std::int32_t& max, Pos& rangePos, std::int32_t& speed, bool* hasLetter, bool* hasPrecision,
                          bool* hasRange) {
+  // has* is set as soon as the keyword is seen: a bad value is reported
+  // once, not again as "missing".
   if (c.keyword("LETTER")) return *hasLetter = true, c.letter(letter, letterPos);
   if (c.keyword("PRECISION")) {
+    *hasPrecision = true;
     const Pos at = c.pos();
     if (!c.number(precision, "a precision (degrees or length units per encoder unit)")) return false;
     if (precision <= 0) {
       diag_.error(at, "a precision must be greater than 0");
       return false;
     }
-    return *hasPrecision = true;
+    return true;
   }
   if (c.keyword("RANGE")) {
+    *hasRange = true;
     rangePos = c.pos();
     if (!c.integer(min, "the minimum encoder value") || !c.integer(max, "the maximum encoder value")) return false;
     if (min > max) {
       diag_.error(rangePos, fmt::format("range {}..{} is empty: the minimum is greater than the maximum", min, max));
       return false;
     }
-    return *hasRange = true;
+    return true;
   }
   if (c.keyword("SPEED")) {
     const Pos at = c.pos();
@@ -318,10 +324,9 @@ bool Parser::gripperClause(Cursor& c, GripperDef& g) {
   if (c.keyword("AXIS3")) return twoPoints(g.axis3, g.hasAxis3, "axis r3");
   if (c.keyword("NORMAL")) return twoPoints(g.normal, g.hasNormal, "normal vector");
   if (c.keyword("APPROACH")) return twoPoints(g.approach, g.hasApproach, "approach vector");
-  bool hasLetter = false, hasPrecision = false, hasRange = false;
   const std::size_t before = diag_.errorCount();
-  if (motorClause(c, g.letter, g.letterPos, g.precision, g.min, g.max, g.rangePos, g.speed, &hasLetter, &hasPrecision,
-                  &hasRange))
+  if (motorClause(c, g.letter, g.letterPos, g.precision, g.min, g.max, g.rangePos, g.speed, &g.hasLetter,
+                  &g.hasPrecision, &g.hasRange))
     return true;
   if (diag_.errorCount() > before) return false;
   return c.fail("BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, AXIS2, AXIS3, NORMAL, APPROACH or END");
@@ -333,14 +338,16 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
     return c.name(r.links.back().link, "a link name");
   }
   if (c.keyword("FRAME")) return true;  // introduces ORIGIN, XAXIS, ZAXIS
-  for (auto [kw, member] : {std::pair{"ORIGIN", &RobotLinkDef::origin}, std::pair{"XAXIS", &RobotLinkDef::xPoint},
-                            std::pair{"ZAXIS", &RobotLinkDef::zPoint}}) {
+  for (auto [kw, member, has] : {std::tuple{"ORIGIN", &RobotLinkDef::origin, &RobotLinkDef::hasOrigin},
+                                 std::tuple{"XAXIS", &RobotLinkDef::xPoint, &RobotLinkDef::hasX},
+                                 std::tuple{"ZAXIS", &RobotLinkDef::zPoint, &RobotLinkDef::hasZ}}) {
+    const Pos at = c.pos();
     if (!c.keyword(kw)) continue;
     if (r.links.empty()) {
-      diag_.error(c.pos(), fmt::format("{} before any LINK: a frame belongs to the LINK before it", kw));
+      diag_.error(at, fmt::format("{} before any LINK: a frame belongs to the LINK before it", kw));
       return false;
     }
-    r.links.back().hasFrame = true;
+    r.links.back().*has = true;
     return c.point(r.links.back().*member, fmt::format("the frame's {} point", kw));
   }
   if (c.keyword("JOINT")) {
@@ -360,7 +367,13 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
     return c.onOff(r.joints.back().spec.coupling);
   }
   if (c.keyword("GRIPPER")) return c.name(r.gripper, "a gripper name");
-  if (!r.joints.empty()) {
+  if (r.joints.empty()) {
+    for (std::string_view kw : {"LETTER", "PRECISION", "RANGE", "SPEED"})
+      if (!c.atEnd() && sameName(c.peek().text, kw)) {
+        diag_.error(c.pos(), fmt::format("{} before any JOINT: motor settings belong to the JOINT before them", kw));
+        return false;
+      }
+  } else {
     JointDef& j = r.joints.back();
     Pos letterPos;
     const std::size_t before = diag_.errorCount();
@@ -412,7 +425,7 @@ std::string_view colorName(workcell::Color color) { return kColorNames[static_ca
 DescriptionFile parseDescription(std::unique_ptr<SourceFile> source, Diagnostics& diagnostics) {
   DescriptionFile file;
   file.source = std::move(source);
-  if (auto bad = checkEncoding(*file.source)) {
+  if (auto bad = checkEncoding(*file.source, "descriptions")) {
     diagnostics.add(bad->pos, bad->severity, bad->message);
     return file;
   }

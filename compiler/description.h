@@ -38,6 +38,7 @@ struct GripperDef {
   NameRef base, finger2, finger3;
   char letter = 0;
   Pos letterPos;
+  bool hasLetter = false, hasPrecision = false, hasRange = false;
   double precision = 0;
   std::int32_t min = 0, max = 0;
   Pos rangePos;
@@ -49,7 +50,8 @@ struct GripperDef {
 struct RobotLinkDef {
   NameRef link;
   Point3 origin, xPoint, zPoint;  // FRAME ORIGIN .. XAXIS .. ZAXIS ..
-  bool hasFrame = false;
+  bool hasOrigin = false, hasX = false, hasZ = false;
+  bool hasFrame() const { return hasOrigin || hasX || hasZ; }
 };
 
 struct JointDef {

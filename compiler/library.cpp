@@ -46,7 +46,7 @@ const ShapeDef* findShape(const DescriptionFile& f, bool object, const std::stri
 Pos frameErrorPos(const RobotDef& def, const NameRef& gripperRef, int index) {
   if (index >= 0 && static_cast<std::size_t>(index) < def.links.size()) {
     const RobotLinkDef& l = def.links[static_cast<std::size_t>(index)];
-    return l.hasFrame ? l.origin.pos : l.link.pos;
+    return l.hasOrigin ? l.origin.pos : l.link.pos;
   }
   return gripperRef.name.empty() ? def.pos : gripperRef.pos;
 }
@@ -162,14 +162,15 @@ std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const Desc
   };
   need(!def->base.name.empty(), "BASE link");
   need(!def->finger2.name.empty(), "FINGERS");
-  need(def->letter != 0, "LETTER");
-  need(def->precision > 0, "PRECISION");
-  need(def->rangePos.line != 0, "RANGE");
+  need(def->hasLetter, "LETTER");
+  need(def->hasPrecision, "PRECISION");
+  need(def->hasRange, "RANGE");
   need(def->hasAxis2, "AXIS2 (finger 2's rotation axis r2)");
   need(def->hasAxis3, "AXIS3 (finger 3's rotation axis r3)");
   need(def->hasNormal, "NORMAL vector");
   need(def->hasApproach, "APPROACH vector");
-  if (!ok) return std::nullopt;
+  // A bad PRECISION value was reported where it was written.
+  if (!ok || def->precision <= 0) return std::nullopt;
   workcell::Gripper g;
   g.name = def->name;
   auto base = shape(Kind::Link, def->base, at);
@@ -182,7 +183,12 @@ std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const Desc
                                          def->normal[0].v, def->normal[1].v, def->approach[0].v, def->approach[1].v};
   kinematics::Result<kinematics::GripperModel> model = kinematics::makeGripper(points, def->precision);
   for (const kinematics::KinematicsError& e : model.errors) {
-    const Pos pos = e.kind == kinematics::ErrorKind::TcpMismatch ? def->approach[0].pos : def->normal[0].pos;
+    // The kinematics core names the part in its message; point at its line.
+    const auto names = [&](std::string_view part) { return e.message.find(part) != std::string::npos; };
+    const Pos pos = names("axis r2")                               ? def->axis2[0].pos
+                    : names("axis r3")                             ? def->axis3[0].pos
+                    : e.kind == kinematics::ErrorKind::TcpMismatch ? def->approach[0].pos
+                                                                   : def->normal[0].pos;
     error(at, pos, fmt::format("gripper '{}': {}", def->name, e.message));
   }
   if (!model.ok()) return std::nullopt;
@@ -194,14 +200,22 @@ std::optional<workcell::Robot> Library::buildRobot(const RobotDef& def, const De
   workcell::Robot robot;
   robot.name = def.name;
   bool ok = true;
-  if (def.links.empty()) error(from, def.pos, fmt::format("robot '{}' has no LINK", def.name)), ok = false;
+  // (Not repeated when a LINK line already failed to parse.)
+  if (def.links.empty()) {
+    if (!hasErrors()) error(from, def.pos, fmt::format("robot '{}' has no LINK", def.name));
+    ok = false;
+  }
   for (std::size_t i = 0; i < def.links.size(); ++i) {
     const RobotLinkDef& l = def.links[i];
     auto s = shape(Kind::Link, l.link, from);
     if (!s) ok = false;
     else robot.links.push_back(std::move(*s));
-    if (!l.hasFrame) {
-      error(from, l.link.pos, fmt::format("link '{}' has no FRAME (ORIGIN, XAXIS and ZAXIS points)", l.link.name));
+    if (!l.hasOrigin || !l.hasX || !l.hasZ) {
+      const char* missing = !l.hasFrame() ? "FRAME (ORIGIN, XAXIS and ZAXIS points)"
+                            : !l.hasOrigin ? "ORIGIN point in its FRAME"
+                            : !l.hasX      ? "XAXIS point in its FRAME"
+                                           : "ZAXIS point in its FRAME";
+      error(from, l.link.pos, fmt::format("link '{}' has no {}", l.link.name, missing));
       ok = false;
       continue;
     }
@@ -226,7 +240,7 @@ std::optional<workcell::Robot> Library::buildRobot(const RobotDef& def, const De
     robot.joints.push_back(j.spec);
   }
   const std::size_t frames = def.links.size() + (def.gripper.name.empty() ? 0 : 1);
-  if (ok && def.joints.size() + 1 != frames)
+  if (ok && !hasErrors() && def.joints.size() + 1 != frames)
     error(from, def.pos, fmt::format("robot '{}' has {} link{}{} and so needs {} joint{}, found {}", def.name,
                                      def.links.size(), def.links.size() == 1 ? "" : "s",
                                      def.gripper.name.empty() ? "" : " and a gripper", frames - 1,
@@ -235,14 +249,15 @@ std::optional<workcell::Robot> Library::buildRobot(const RobotDef& def, const De
   // Motor letters are unique across the arm and the gripper.
   std::string letters;
   for (std::size_t i = 0; i < def.joints.size(); ++i) {
-    if (letters.find(def.joints[i].spec.letter) != std::string::npos && def.joints[i].hasLetter)
+    if (!def.joints[i].hasLetter) continue;  // reported above
+    if (letters.find(def.joints[i].spec.letter) != std::string::npos)
       error(from, def.joints[i].pos, fmt::format("motor letter {} is used twice", def.joints[i].spec.letter)), ok = false;
     letters += def.joints[i].spec.letter;
   }
   if (robot.hasGripper && letters.find(robot.gripper.letter) != std::string::npos)
     error(from, def.gripper.pos, fmt::format("the gripper's motor letter {} is also a joint's", robot.gripper.letter)),
         ok = false;
-  if (!ok) return std::nullopt;
+  if (!ok || hasErrors()) return std::nullopt;
 
   std::vector<kinematics::JointType> types;
   std::vector<kinematics::JointDrive> drives;
@@ -320,6 +335,26 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
   return cell;
 }
 
+// When a file has errors, nothing is built from it (that would only add
+// follow-on messages), but the files it names are still read, so their own
+// errors are reported in the same run.
+void Library::readReferences(const DescriptionFile& f) {
+  for (const RobotDef& r : f.robots) {
+    for (const RobotLinkDef& l : r.links) find<ShapeDef>(Kind::Link, l.link.name, &f);
+    if (!r.gripper.name.empty())
+      if (const GripperDef* g = find<GripperDef>(Kind::Gripper, r.gripper.name, &f))
+        for (const NameRef* part : {&g->base, &g->finger2, &g->finger3}) find<ShapeDef>(Kind::Link, part->name, &f);
+  }
+  for (const WorkcellDef& w : f.workcells)
+    for (const PlacementDef& p : w.placements) {
+      if (!p.isRobot) {
+        find<ShapeDef>(Kind::Object, p.what.name, &f);
+      } else if (const RobotDef* r = find<RobotDef>(Kind::Robot, p.what.name, &f)) {
+        for (const RobotLinkDef& l : r->links) find<ShapeDef>(Kind::Link, l.link.name, &f);
+      }
+    }
+}
+
 // A file path if it names an existing file, else a library name.
 const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kind) {
   std::error_code ec;
@@ -337,10 +372,13 @@ const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kin
 }
 
 std::optional<workcell::Robot> Library::robot(const std::string& fileOrName) {
+  // Build even when the root file has errors, so the files it uses are
+  // read and their errors reported too; only an error-free build returns.
   const DescriptionFile* f = loadRoot(fileOrName, Kind::Robot);
-  if (!f || hasErrors()) return std::nullopt;
+  if (!f) return std::nullopt;
+  if (hasErrors()) return readReferences(*f), std::nullopt;
   if (f->robots.empty()) {
-    diagnostics_.push_back({f->source->name(), {}, Severity::Error, "the file defines no ROBOT"});
+    if (!hasErrors()) diagnostics_.push_back({f->source->name(), {}, Severity::Error, "the file defines no ROBOT"});
     return std::nullopt;
   }
   auto r = buildRobot(f->robots.front(), *f);
@@ -349,7 +387,8 @@ std::optional<workcell::Robot> Library::robot(const std::string& fileOrName) {
 
 std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrName) {
   const DescriptionFile* f = loadRoot(fileOrName, Kind::Workcell);
-  if (!f || hasErrors()) return std::nullopt;
+  if (!f) return std::nullopt;
+  if (hasErrors()) return readReferences(*f), std::nullopt;
   std::optional<workcell::Workcell> cell;
   if (!f->workcells.empty()) {
     cell = buildWorkcell(f->workcells.front(), *f);
@@ -362,7 +401,7 @@ std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrNam
     cell = buildWorkcell(alone, *f);
     // Alone, the robot stays where it was drawn.
     if (cell) cell->robots.front().F_world_design = Eigen::Isometry3d::Identity();
-  } else {
+  } else if (!hasErrors()) {
     diagnostics_.push_back({f->source->name(), {}, Severity::Error, "the file defines no WORKCELL and no ROBOT"});
   }
   return hasErrors() ? std::nullopt : std::move(cell);

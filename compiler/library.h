@@ -40,6 +40,7 @@ class Library {
   enum class Kind { Link, Object, Gripper, Robot, Workcell };
   const DescriptionFile* load(const std::filesystem::path& path);
   const DescriptionFile* loadRoot(const std::string& fileOrName, Kind kind);
+  void readReferences(const DescriptionFile& f);
   template <typename Def>
   const Def* find(Kind kind, const std::string& name, const DescriptionFile* first);
   std::optional<workcell::Shape> shape(Kind kind, const NameRef& ref, const DescriptionFile& from);

@@ -13,7 +13,7 @@ grammar RobotModel;
 
 description : line (NEWLINE line)* EOF ;
 
-line        : (NAME | NUMBER)* ;
+line        : (NAME | NUMBER | OTHER)* ;
 
 // Names may hold '-' and '.' after the first character: "rhino-scara".
 NAME        : [A-Za-z_] [A-Za-z0-9_.\-]* ;

@@ -70,6 +70,18 @@ bool hasErrors(const std::vector<compiler::Diagnostic>& diags) {
   return false;
 }
 
+// The workcell an image carries, checked against the image itself: the
+// cell's robot must have exactly the motors the program was compiled for.
+std::string decodeImageCell(const vm::Image& image, std::optional<workcell::Workcell>& cell) {
+  workcell::CellDecode decoded = workcell::decodeCell(image.cell);
+  if (!decoded.cell) return decoded.error;
+  if (decoded.cell->robots.empty()) return "its cell has no robot";
+  if (compiler::motorTable(decoded.cell->robots.front().robot) != image.motors)
+    return "its cell's robot does not match its motor table";
+  cell = std::move(decoded.cell);
+  return {};
+}
+
 // --strict: a warning fails the check like an error, before anything runs.
 void promoteWarnings(LoadedProgram& program) {
   bool promoted = false;
@@ -107,13 +119,11 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
   if (check && o.strict) promoteWarnings(program);
   std::optional<workcell::Workcell> cell;
   if (program.image && !program.image->cell.empty()) {
-    workcell::CellDecode decoded = workcell::decodeCell(program.image->cell);
-    if (!decoded.cell)
-      program.diagnostics.push_back({o.file, {}, compiler::Severity::Error, "image rejected: " + decoded.error});
-    else if (decoded.cell->robots.empty())
-      program.diagnostics.push_back({o.file, {}, compiler::Severity::Error, "image rejected: its cell has no robot"});
-    if (!decoded.cell || decoded.cell->robots.empty()) program.image.reset();
-    cell = std::move(decoded.cell);
+    std::string error = decodeImageCell(*program.image, cell);
+    if (!error.empty()) {
+      program.diagnostics.push_back({o.file, {}, compiler::Severity::Error, "image rejected: " + error});
+      program.image.reset();
+    }
   }
   RunReport report;
   report.diagnostics = program.diagnostics;

@@ -42,6 +42,8 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
 class RenderCommands {
  public:
   explicit RenderCommands(CLI::App& app);
+  RenderCommands(const RenderCommands&) = delete;  // the app holds pointers into it
+  RenderCommands& operator=(const RenderCommands&) = delete;
   std::optional<int> run(std::ostream& out, std::ostream& err) const;
 
  private:

@@ -205,12 +205,17 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
   const double pitch = std::asin(std::clamp(-r(2, 0), -1.0, 1.0));
   const double roll = std::atan2(r(2, 1), r(2, 2)), yaw = std::atan2(r(1, 0), r(0, 0));
   const double deg = 180.0 / M_PI;
+  // atan2 gives -180 or 180 by the sign of a zero; report (-180, 180].
+  const auto angle = [&](double radians) {
+    const double d = radians * deg;
+    return d <= -180.0 + 1e-9 ? 180.0 : d;
+  };
   if (q.json) {
     Json j;
     j["robot"] = robot->name;
     j["position"] = {std::stod(formatNumber(p.x())), std::stod(formatNumber(p.y())), std::stod(formatNumber(p.z()))};
-    j["rpy"] = {std::stod(formatNumber(roll * deg)), std::stod(formatNumber(pitch * deg)),
-                std::stod(formatNumber(yaw * deg))};
+    j["rpy"] = {std::stod(formatNumber(angle(roll))), std::stod(formatNumber(angle(pitch))),
+                std::stod(formatNumber(angle(yaw)))};
     j["matrix"] = matrixJson(tool);
     out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     return kOk;
@@ -219,8 +224,8 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
                      formatNumber(p.z()));
   out << fmt::format("  normal n   ({}, {}, {})\n", formatNumber(r(0, 0)), formatNumber(r(1, 0)), formatNumber(r(2, 0)));
   out << fmt::format("  approach a ({}, {}, {})\n", formatNumber(r(0, 2)), formatNumber(r(1, 2)), formatNumber(r(2, 2)));
-  out << fmt::format("  roll {}  pitch {}  yaw {} (degrees, R = Rz(yaw) Ry(pitch) Rx(roll))\n", formatNumber(roll * deg),
-                     formatNumber(pitch * deg), formatNumber(yaw * deg));
+  out << fmt::format("  roll {}  pitch {}  yaw {} (degrees, R = Rz(yaw) Ry(pitch) Rx(roll))\n", formatNumber(angle(roll)),
+                     formatNumber(angle(pitch)), formatNumber(angle(yaw)));
   return kOk;
 }
 

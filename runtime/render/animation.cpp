@@ -143,7 +143,7 @@ std::string escapeHtml(std::string_view text) {
 Json animationModel(const AnimationInput& input) {
   const workcell::Workcell& cell = *input.cell;
   const CellPoser poser(cell);
-  const Fit fit = fitBox(poser.homeBounds());
+  const Fit fit = fitView(poser.homePoints(), input.camera);
   Json robots = Json::array();
   for (std::size_t r = 0; r < cell.robots.size(); ++r) robots.push_back(robotModel(poser, r, r == 0));
   Json objects = Json::array();

@@ -1,15 +1,28 @@
 #include "runtime/render/camera.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "runtime/kinematics/trig.h"
 
 namespace rs::render {
 
-Fit fitBox(const Eigen::AlignedBox3d& box) {
-  if (box.isEmpty()) return {};
-  const double radius = 0.5 * box.diagonal().norm();
-  return {box.center(), radius > 1e-9 ? radius : 1.0};
+// The points' bounding box in view coordinates gives the centre (turned
+// back into the world) and the scale s that fits it; the radius is the
+// one for which the camera formula gives s at zoom 1.
+Fit fitView(std::span<const Eigen::Vector3d> points, const Camera& camera) {
+  if (points.empty()) return {};
+  const Eigen::Matrix3d R = viewRotation(camera.view);
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3d& p : points) box.extend(R * p);
+  const Eigen::Vector3d size = box.sizes();
+  const double W = camera.width, H = camera.height;
+  double s = std::numeric_limits<double>::infinity();
+  if (size.x() > 1e-9 * (1 + box.max().cwiseAbs().maxCoeff())) s = std::min(s, 0.9 * W / size.x());
+  if (size.y() > 1e-9 * (1 + box.max().cwiseAbs().maxCoeff())) s = std::min(s, 0.9 * H / size.y());
+  const double unit = 0.45 * std::min(W, H);
+  return {R.transpose() * box.center(), std::isfinite(s) ? unit / s : 1.0};
 }
 
 Eigen::Matrix3d viewRotation(const Eigen::Vector3d& degrees) {

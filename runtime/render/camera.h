@@ -13,13 +13,15 @@
 // so the image is turned about z first, then y, then x, all about the
 // fixed axes of the screen (x right, y up, z out): dragging sideways turns
 // the workcell about its vertical like a turntable, dragging up and down
-// tilts it towards the viewer. `center` and `radius` are the fit: the
-// sphere around the workcell's bounding box at its placed pose, so that at
-// zoom 1 every view of it fits the picture with a margin. The HTML page
-// uses exactly this formula (runtime/render/page_script.cpp).
+// tilts it towards the viewer. `center` and `radius` are the fit (fitView):
+// chosen once for the starting view so that the workcell at its placed pose
+// fills 90% of the picture at zoom 1; turning the view or running the
+// program does not change them, so nothing jumps. The HTML page uses
+// exactly this formula (runtime/render/page_script.cpp).
 #pragma once
 
 #include <Eigen/Geometry>
+#include <span>
 
 namespace rs::render {
 
@@ -35,15 +37,18 @@ struct Camera {
   int width = 1024, height = 768;                                           ///< pixels
 };
 
-/// The sphere the picture is fitted to.
+/// What the picture is fitted to: `center` lands in the middle of the
+/// picture, and `radius` world units span 0.45·min(width, height) pixels.
 struct Fit {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   double radius = 1.0;  ///< > 0
 };
 
-/// The sphere through the corners of `box` (radius 1 for an empty or
-/// point-sized box).
-Fit fitBox(const Eigen::AlignedBox3d& box);
+/// The fit that centres `points` in camera.width x camera.height as seen
+/// through camera.view and makes them fill 90% of it in the tighter
+/// direction (zoom and window are not used). {origin, 1} when there are no
+/// points; a single point gets radius 1.
+Fit fitView(std::span<const Eigen::Vector3d> points, const Camera& camera);
 
 /// Rx(x)·Ry(y)·Rz(z) for angles in degrees, exact at multiples of 90.
 Eigen::Matrix3d viewRotation(const Eigen::Vector3d& degrees);

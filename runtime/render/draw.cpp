@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "runtime/render/palette.h"
+#include "runtime/render/png.h"
 
 namespace rs::render {
 
@@ -33,19 +34,35 @@ void setColor(cairo_t* cr, Rgb c, double alpha = 1.0) {
   cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
 }
 
-// One path and one stroke per colour: 16 strokes however many lines.
-void drawLines(cairo_t* cr, const Picture& picture) {
-  std::array<std::vector<const Line2*>, 16> byColor;
-  for (const Line2& l : picture.lines) byColor[static_cast<std::size_t>(l.color) & 15].push_back(&l);
+// For pixels, each line is its own stroke, in the description's order:
+// cairo's tessellator then never holds thousands of edges at once, which
+// halves the time for 5,000 lines. For SVG, one path per colour keeps the
+// file small. Butt caps: square ones cost half as much again.
+void drawLines(cairo_t* cr, const Picture& picture, bool pathPerColor) {
   cairo_set_line_width(cr, kLineWidth);
-  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  for (std::size_t c = 0; c < byColor.size(); ++c) {
-    if (byColor[c].empty()) continue;
-    for (const Line2* l : byColor[c]) {
-      cairo_move_to(cr, l->a.x(), l->a.y());
-      cairo_line_to(cr, l->b.x(), l->b.y());
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  if (pathPerColor) {
+    std::array<std::vector<const Line2*>, 16> byColor;
+    for (const Line2& l : picture.lines) byColor[static_cast<std::size_t>(l.color) & 15].push_back(&l);
+    for (std::size_t c = 0; c < byColor.size(); ++c) {
+      if (byColor[c].empty()) continue;
+      for (const Line2* l : byColor[c]) {
+        cairo_move_to(cr, l->a.x(), l->a.y());
+        cairo_line_to(cr, l->b.x(), l->b.y());
+      }
+      setColor(cr, kEga[c]);
+      cairo_stroke(cr);
     }
-    setColor(cr, kEga[c]);
+    return;
+  }
+  int color = -1;
+  for (const Line2& l : picture.lines) {
+    if (const int c = static_cast<int>(l.color) & 15; c != color) {
+      setColor(cr, kEga[static_cast<std::size_t>(c)]);
+      color = c;
+    }
+    cairo_move_to(cr, l.a.x(), l.a.y());
+    cairo_line_to(cr, l.b.x(), l.b.y());
     cairo_stroke(cr);
   }
 }
@@ -92,10 +109,10 @@ void drawLegend(cairo_t* cr, const Picture& picture) {
   }
 }
 
-void draw(cairo_t* cr, const Picture& picture) {
+void draw(cairo_t* cr, const Picture& picture, bool vector) {
   setColor(cr, kBackground);
   cairo_paint(cr);
-  drawLines(cr, picture);
+  drawLines(cr, picture, vector);
   drawTools(cr, picture);
   drawLegend(cr, picture);
 }
@@ -142,12 +159,24 @@ Encoded encodePicture(const Picture& picture, ImageFormat format) {
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return failed(cairo_surface_status(surface.get()));
   {
     Context cr(cairo_create(surface.get()));
-    draw(cr.get(), picture);
+    draw(cr.get(), picture, format == ImageFormat::Svg);
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) return failed(cairo_status(cr.get()));
   }
   if (format == ImageFormat::Png) {
-    const cairo_status_t status = cairo_surface_write_to_png_stream(surface.get(), appendBytes, &result.bytes);
-    if (status != CAIRO_STATUS_SUCCESS) return failed(status);
+    cairo_surface_flush(surface.get());
+    const unsigned char* data = cairo_image_surface_get_data(surface.get());
+    const int stride = cairo_image_surface_get_stride(surface.get());
+    result.bytes = encodePng(picture.width, picture.height, [&](int y, std::uint8_t* rgb) {
+      const unsigned char* row = data + static_cast<std::ptrdiff_t>(y) * stride;
+      for (int x = 0; x < picture.width; ++x, rgb += 3) {
+        std::uint32_t px;
+        std::memcpy(&px, row + 4 * x, 4);  // native-endian 0x00RRGGBB
+        rgb[0] = static_cast<std::uint8_t>(px >> 16);
+        rgb[1] = static_cast<std::uint8_t>(px >> 8);
+        rgb[2] = static_cast<std::uint8_t>(px);
+      }
+    });
+    if (result.bytes.empty()) return {{}, "zlib: cannot compress the image"};
   } else {
     cairo_surface_finish(surface.get());
     if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)

@@ -16,6 +16,7 @@ Moment runToMoment(const vm::Image& image, runtime::Stimuli stimuli, vm::Micros 
   m.encoders.resize(image.motors.size());
   for (std::size_t i = 0; i < m.encoders.size(); ++i)
     m.encoders[i] = m.outcome.ok() ? machine.positions()[i] : machine.positionAt(i, at);
+  m.clock = machine.now();
   m.view = machine.viewRotation();
   m.window = machine.windowShift();
   return m;

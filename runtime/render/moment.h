@@ -19,6 +19,7 @@ struct Moment {
   std::vector<std::int32_t> encoders;  ///< every motor at `at`
   runtime::CameraTriple view, window;  ///< VIEW and WINDOW executed up to `at`
   vm::RunOutcome outcome;              ///< how the run stopped
+  vm::Micros clock = 0;                ///< the clock when it stopped
   /// False when the run failed (runtime error, deadlock, step limit) at or
   /// before `at`; reaching `at` (the time limit) or END is success.
   bool reached = false;

@@ -9,7 +9,7 @@ const std::string_view kStyle = R"CSS(
 * { box-sizing: border-box; }
 html, body { margin: 0; height: 100%; background: var(--bg); color: var(--text);
              font: 13px/1.35 ui-monospace, "DejaVu Sans Mono", Menlo, Consolas, monospace; }
-#app { display: grid; height: 100vh; grid-template-columns: 1fr 340px; grid-template-rows: 1fr auto; }
+#app { display: grid; height: 100vh; grid-template-columns: 1fr 380px; grid-template-rows: 1fr auto; }
 #view { position: relative; min-width: 0; min-height: 0; overflow: hidden; }
 #cell { display: block; width: 100%; height: 100%; cursor: grab; touch-action: none; }
 #cell.dragging { cursor: grabbing; }
@@ -26,7 +26,10 @@ html, body { margin: 0; height: 100%; background: var(--bg); color: var(--text);
 #listing li.current .n { color: var(--accent); }
 #motors { margin: 0 12px; border-collapse: collapse; width: calc(100% - 24px); }
 #motors td { padding: 1px 4px; }
+#motors td.m b { color: #fff; }
+#motors td.m span { color: var(--dim); }
 #motors td.v { text-align: right; color: #fff; width: 7ch; }
+#motors td.r { width: 45%; }
 #motors .bar { height: 6px; background: var(--line); position: relative; }
 #motors .bar i { position: absolute; top: 0; bottom: 0; width: 2px; background: var(--accent); }
 .lamps { display: flex; gap: 5px; margin: 0 12px; }

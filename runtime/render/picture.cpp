@@ -51,12 +51,16 @@ Picture makePicture(const CellPoser& poser, const Camera& camera, const Fit& fit
   Picture picture;
   picture.width = camera.width;
   picture.height = camera.height;
+  picture.camera = camera;
+  picture.fit = fit;
   std::vector<Line3> lines;
   poser.lines(lines, camera.axes ? 0.08 * fit.radius : 0.0);
   picture.lines.reserve(lines.size());
   for (const Line3& l : lines) picture.lines.push_back({project(l.a), project(l.b), l.color, l.part});
   const workcell::Workcell& cell = poser.cell();
-  std::string title = caption.title;
+  // A robot alone is its own workcell: its name needs saying only once.
+  const bool robotAlone = cell.robots.size() == 1 && cell.robots.front().robot.name == caption.title;
+  std::string title = robotAlone ? "" : caption.title;
   if (caption.seconds) title += fmt::format("{}t = {:.3f} s", title.empty() ? "" : "   ", *caption.seconds);
   if (!title.empty()) picture.legend.push_back(title);
   for (std::size_t r = 0; r < cell.robots.size(); ++r) {
@@ -69,8 +73,12 @@ Picture makePicture(const CellPoser& poser, const Camera& camera, const Fit& fit
 }
 
 void dumpText(std::ostream& out, const Picture& picture, const workcell::Workcell& cell) {
-  out << fmt::format("# robotsim lines: {} {} {}x{}\n", cell.name, picture.lines.size(), picture.width,
+  const Camera& c = picture.camera;
+  out << fmt::format("# robotsim lines: cell {} lines {} size {}x{}\n", cell.name, picture.lines.size(), picture.width,
                      picture.height);
+  out << fmt::format("# camera: view {} {} {} window {} {} {} zoom {} axes {} fit {} {} {} radius {}\n", c.view.x(),
+                     c.view.y(), c.view.z(), c.window.x(), c.window.y(), c.window.z(), c.zoom, c.axes ? "on" : "off",
+                     picture.fit.center.x(), picture.fit.center.y(), picture.fit.center.z(), picture.fit.radius);
   for (const Line2& l : picture.lines)
     out << fmt::format("{} {} {} {} {} {} {} {} {}\n", l.part.kind == PartKind::Object ? "object" : "robot",
                        l.part.owner, ownerName(l.part, cell), partName(l.part), colorName(l.color), number(l.a.x()),
@@ -94,9 +102,17 @@ void dumpJson(std::ostream& out, const Picture& picture, const workcell::Workcel
     tools.push_back({{"robot", t.robot},
                      {"name", cell.robots[static_cast<std::size_t>(t.robot)].robot.name},
                      {"at", {t.at.x(), t.at.y()}}});
+  const Camera& c = picture.camera;
   const Json doc = {{"cell", cell.name},
                     {"width", picture.width},
                     {"height", picture.height},
+                    {"camera",
+                     {{"view", {c.view.x(), c.view.y(), c.view.z()}},
+                      {"window", {c.window.x(), c.window.y(), c.window.z()}},
+                      {"zoom", c.zoom},
+                      {"axes", c.axes}}},
+                    {"fit", {{"center", {picture.fit.center.x(), picture.fit.center.y(), picture.fit.center.z()}},
+                             {"radius", picture.fit.radius}}},
                     {"lines", lines},
                     {"tools", tools},
                     {"legend", picture.legend}};

@@ -29,6 +29,8 @@ struct ToolMark {
 
 struct Picture {
   int width = 1024, height = 768;
+  Camera camera;  ///< what it was projected with
+  Fit fit;
   std::vector<Line2> lines;
   std::vector<ToolMark> tools;
   std::vector<std::string> legend;  ///< text lines, top left
@@ -51,7 +53,8 @@ std::string robotLegend(const workcell::Robot& robot, std::span<const std::int32
 /// "link3", "gripper", "finger2", "finger3", "object", "axis2-z".
 std::string partName(const Part& part);
 
-/// The golden-test dump: a header, then one row per line
+/// The golden-test dump: two header lines (the cell, the line count, the
+/// camera and the fit), then one row per line
 ///   robot 0 scorobot link1 LIGHTBLUE u1 v1 u2 v2
 ///   object 2 block object YELLOW u1 v1 u2 v2
 /// then one row per tool centre point: `tool 0 scorobot u v`. Nine decimals.

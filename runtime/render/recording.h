@@ -41,7 +41,8 @@ struct CameraChange {
   runtime::CameraTriple view, window;
 };
 
-/// The input mask from time `at` on.
+/// The input mask from time `at` on (after every instruction that ran at
+/// `at`: when several run at one instant, they all show the last one's).
 struct InputLevel {
   vm::Micros at = 0;
   std::uint8_t inputs = 0;

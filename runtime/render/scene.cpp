@@ -45,7 +45,8 @@ CellPoser::CellPoser(const workcell::Workcell& cell) : cell_(&cell), robots_(cel
   }
   std::vector<Line3> home;
   lines(home);
-  for (const Line3& l : home) homeBounds_.extend(l.a), homeBounds_.extend(l.b);
+  homePoints_.reserve(2 * home.size());
+  for (const Line3& l : home) homePoints_.push_back(l.a), homePoints_.push_back(l.b);
 }
 
 void CellPoser::setEncoders(std::size_t robot, std::span<const std::int32_t> encoders) {

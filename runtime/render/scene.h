@@ -65,8 +65,8 @@ class CellPoser {
   /// Origin of the last frame: the tool centre point when there is a gripper.
   Eigen::Vector3d tool(std::size_t robot) const { return robots_[robot].F_world_i.back().translation(); }
 
-  /// Bounding box of every line at home (the fit of every picture).
-  Eigen::AlignedBox3d homeBounds() const { return homeBounds_; }
+  /// Both ends of every line at home (what pictures are fitted to).
+  std::span<const Eigen::Vector3d> homePoints() const { return homePoints_; }
 
   /// F_world_i(home)⁻¹ · F_world_design for frame i: takes design points
   /// into frame i's coordinates (what the HTML page's model stores).
@@ -87,7 +87,7 @@ class CellPoser {
 
   const workcell::Workcell* cell_;
   std::vector<RobotState> robots_;
-  Eigen::AlignedBox3d homeBounds_;
+  std::vector<Eigen::Vector3d> homePoints_;
 };
 
 }  // namespace rs::render

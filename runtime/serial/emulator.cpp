@@ -1,6 +1,7 @@
 #include "runtime/serial/emulator.h"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <poll.h>
 #include <pty.h>
 #include <unistd.h>
@@ -10,7 +11,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fmt/format.h>
 
 #include "runtime/serial/serial_port.h"
 
@@ -142,8 +142,7 @@ void EmulatorEngine::advance(Micros now) {
   lastAdvance_ = now;
   const bool mark3 = config_.settings.dialect == Dialect::Mark3;
   for (EmulatedMotor& m : motors_) {
-    const std::int64_t toGo =
-        mark3 ? m.registerSteps : (m.running ? std::int64_t{m.destination} - m.position : 0);
+    const std::int64_t toGo = mark3 ? m.registerSteps : (m.running ? std::int64_t{m.destination} - m.position : 0);
     if (toGo == 0) {
       m.carry = 0;
       m.running = false;
@@ -158,8 +157,10 @@ void EmulatorEngine::advance(Micros now) {
     }
     const std::int64_t moved = toGo > 0 ? steps : -steps;
     m.position = static_cast<std::int32_t>(m.position + moved);
-    if (mark3) m.registerSteps = static_cast<int>(m.registerSteps - moved);
-    else if (m.position == m.destination) m.running = false;
+    if (mark3)
+      m.registerSteps = static_cast<int>(m.registerSteps - moved);
+    else if (m.position == m.destination)
+      m.running = false;
   }
   if (homing_ && std::none_of(motors_.begin(), motors_.end(), [](const EmulatedMotor& m) { return m.running; })) {
     homing_ = false;
@@ -197,8 +198,10 @@ void EmulatorEngine::execute(std::string command, Micros now) {
     event("hang-up: the port is closed");
     return;
   }
-  if (config_.settings.dialect == Dialect::Mark3) executeMark3(upper(command), now);
-  else executeMark4(upper(command), now);
+  if (config_.settings.dialect == Dialect::Mark3)
+    executeMark3(upper(command), now);
+  else
+    executeMark4(upper(command), now);
 }
 
 void EmulatorEngine::reply(std::string bytes, Micros now) {
@@ -240,8 +243,10 @@ std::uint8_t EmulatorEngine::inquiryBits(char command) const {
     const BitSource& src = s.inputs[static_cast<std::size_t>(line)];
     if (src.command != command) continue;
     const bool on = (inputs_ >> line) & 1;
-    if (on == s.inputsActiveLow) bits &= ~(1u << src.bit);
-    else bits |= 1u << src.bit;
+    if (on == s.inputsActiveLow)
+      bits &= ~(1u << src.bit);
+    else
+      bits |= 1u << src.bit;
   }
   return static_cast<std::uint8_t>(bits);
 }
@@ -252,7 +257,7 @@ void EmulatorEngine::executeMark3(const std::string& c, Micros now) {
     long n = 0;
     if (c.size() == 2 && c[1] == '?') {
       const int r = config_.settings.signedRemaining ? std::clamp(m.registerSteps, -32, 95)
-                                                      : std::min(std::abs(m.registerSteps), 95);
+                                                     : std::min(std::abs(m.registerSteps), 95);
       reply(std::string(1, static_cast<char>(32 + r)), now);
     } else if (c.size() == 2 && c[1] == 'X') {
       m.registerSteps = 0;
@@ -277,11 +282,16 @@ void EmulatorEngine::executeMark3(const std::string& c, Micros now) {
     event(fmt::format("output {} {}", line, on ? "ON" : "OFF"));
   };
   long d = 0;
-  if (c == "I" || c == "J" || c == "K") reply(std::string(1, static_cast<char>(32 + inquiryBits(c[0]))), now);
-  else if (c == "L") setOutput(1, true);
-  else if (c == "M") setOutput(1, false);
-  else if (c == "N") setOutput(2, true);
-  else if (c == "O") setOutput(2, false);
+  if (c == "I" || c == "J" || c == "K")
+    reply(std::string(1, static_cast<char>(32 + inquiryBits(c[0]))), now);
+  else if (c == "L")
+    setOutput(1, true);
+  else if (c == "M")
+    setOutput(1, false);
+  else if (c == "N")
+    setOutput(2, true);
+  else if (c == "O")
+    setOutput(2, false);
   else if (c.size() > 1 && c[0] == 'P' && parseLong(c.substr(1), d) && d >= 0 && d <= 255) {
     const auto next = static_cast<std::uint8_t>((outputs_ & 0x03) | (d & 0xFC));
     for (int line = 3; line <= 8; ++line)
@@ -334,8 +344,10 @@ void EmulatorEngine::executeMark4(const std::string& c, Micros now) {
     EmulatedMotor* m = motorArg(1);
     if (m && numberArg(2, -kMark4Limit, kMark4Limit, v)) {
       const long d = name == "PD" ? v : m->position + v;
-      if (d < -kMark4Limit || d > kMark4Limit) mark4Error(11, fmt::format("{}: destination out of bounds", c));
-      else m->destination = static_cast<std::int32_t>(d);
+      if (d < -kMark4Limit || d > kMark4Limit)
+        mark4Error(11, fmt::format("{}: destination out of bounds", c));
+      else
+        m->destination = static_cast<std::int32_t>(d);
     }
   } else if (name == "MS") {
     if (EmulatedMotor* m = motorArg(1)) m->running = m->destination != m->position;
@@ -413,9 +425,12 @@ std::string EmulatorEngine::statusLine() const {
   const auto moving = [&](const EmulatedMotor& m) {
     return config_.settings.dialect == Dialect::Mark3 ? m.registerSteps != 0 : m.running;
   };
-  for (const EmulatedMotor& m : motors_) {
-    const bool shown = m.used || m.position != 0 || moving(m);
-    if (!shown) continue;
+  // The robot's motors in its order, then any other port that moved.
+  std::vector<char> letters = order_;
+  for (const EmulatedMotor& m : motors_)
+    if (!m.used && (m.position != 0 || moving(m))) letters.push_back(m.letter);
+  for (const char letter : letters) {
+    const EmulatedMotor& m = motors_[static_cast<std::size_t>(letter - 'A')];
     line += fmt::format("  {}{:+d}{}{}", m.letter, m.position, moving(m) ? "*" : "", switchClosed(m.letter) ? "h" : "");
   }
   const auto lines = [](std::uint8_t mask) {
@@ -495,9 +510,12 @@ bool PtyEmulator::pump(Micros wait, int extraFd) {
   std::size_t done = 0;
   while (master_ >= 0 && done < out.size()) {
     const ssize_t w = ::write(master_, out.data() + done, out.size() - done);
-    if (w > 0) done += static_cast<std::size_t>(w);
-    else if (w < 0 && errno == EINTR) continue;
-    else break;  // the host is not reading: the answer is lost, as on a real line
+    if (w > 0)
+      done += static_cast<std::size_t>(w);
+    else if (w < 0 && errno == EINTR)
+      continue;
+    else
+      break;  // the host is not reading: the answer is lost, as on a real line
   }
   if (engine_.hungUp()) hangUp();
   return extra;

@@ -47,39 +47,39 @@ struct FaultPlan {
 
 struct EmulatorConfig {
   RhinoSettings settings = defaultSettings(Dialect::Mark3);  // dialect and assumptions to play
-  std::vector<vm::MotorSpec> motors;  // the robot: letters, step rates (speed), ranges
-  double rateScale = 1.0;             // every step rate multiplied by this
-  Micros latency = 5'000;             // an answer's delay (the notes: 5-15 ms)
-  int switchWidth = 20;               // a switch is closed while |position| <= this
-  std::array<std::int32_t, 8> start{};  // where motors A..H start
+  std::vector<vm::MotorSpec> motors;                         // the robot: letters, step rates (speed), ranges
+  double rateScale = 1.0;                                    // every step rate multiplied by this
+  Micros latency = 5'000;                                    // an answer's delay (the notes: 5-15 ms)
+  int switchWidth = 20;                                      // a switch is closed while |position| <= this
+  std::array<std::int32_t, 8> start{};                       // where motors A..H start
   FaultPlan fault;
 };
 
-inline constexpr int kEmulatedMotors = 8;     // A..H
+inline constexpr int kEmulatedMotors = 8;              // A..H
 inline constexpr std::int32_t kDefaultStepRate = 300;  // steps/s of a port the robot does not use
 
 struct EmulatedMotor {
   char letter = 'A';
-  bool used = false;              // the robot has this motor
-  double rate = kDefaultStepRate; // steps per second
-  std::int32_t position = 0;      // encoder count
-  int registerSteps = 0;          // Mark III: signed steps still to go
-  std::int32_t destination = 0;   // Mark IV: PD / PR
-  bool running = false;           // Mark IV: started and not there yet
-  double carry = 0;               // part of a step already earned
+  bool used = false;                 // the robot has this motor
+  double rate = kDefaultStepRate;    // steps per second
+  std::int32_t position = 0;         // encoder count
+  int registerSteps = 0;             // Mark III: signed steps still to go
+  std::int32_t destination = 0;      // Mark IV: PD / PR
+  bool running = false;              // Mark IV: started and not there yet
+  double carry = 0;                  // part of a step already earned
   std::optional<bool> forcedSwitch;  // set by "switch L open|closed"
 };
 
 struct EmulatorSnapshot {
   std::array<EmulatedMotor, kEmulatedMotors> motors;
-  std::vector<char> order;        // the robot's letters, in its order
+  std::vector<char> order;  // the robot's letters, in its order
   std::uint8_t outputs = 0;
   std::uint8_t inputs = 0;
   std::uint64_t commands = 0;
   bool faultActive = false;
   FaultKind fault = FaultKind::None;
   bool hungUp = false;
-  bool hostMode = false;          // Mark IV: TH seen
+  bool hostMode = false;  // Mark IV: TH seen
 };
 
 class EmulatorEngine {

@@ -23,13 +23,15 @@ static_assert(std::atomic<int>::is_always_lock_free);
 
 extern "C" void onInterrupt(int) {
   if (!gInterrupted.exchange(true)) return;
+  static const char stopped[] = "\nrobotsim: interrupted twice: stop written to the controller, exiting\n";
+  static const char plain[] = "\nrobotsim: interrupted twice, exiting\n";
   const int fd = gStopFd.load();
   if (fd >= 0) {
     const ssize_t ignored = ::write(fd, gStopBytes, gStopLength.load());
     (void)ignored;
   }
-  static const char message[] = "\nrobotsim: interrupted twice: stop written to the controller, exiting\n";
-  const ssize_t ignored = ::write(STDERR_FILENO, message, sizeof message - 1);
+  const ssize_t ignored =
+      fd >= 0 ? ::write(STDERR_FILENO, stopped, sizeof stopped - 1) : ::write(STDERR_FILENO, plain, sizeof plain - 1);
   (void)ignored;
   ::_exit(130);
 }

@@ -15,8 +15,10 @@ namespace {
 
 using vm::Status;
 
-constexpr int kRegisterMin = -128;
-constexpr int kRegisterMax = 127;
+// The register holds a signed byte (-128..127) [S], but one 7-bit answer
+// byte can only report 32 + 0..95 steps: never have more to go than that.
+constexpr int kReportable = 95;
+constexpr int kSignedReportableMin = -32;  // remaining=signed: 0x00 is 32 steps back
 
 // One motor during a move: steps not yet sent, steps sent and not yet done
 // (the controller's register, as we believe it), when it last progressed.
@@ -63,7 +65,8 @@ class Mark3 final : public Controller {
         positions[i] = static_cast<std::int32_t>(targets[i] - t.left - t.outstanding);
         if (t.left != 0 && std::abs(t.outstanding) < cfg_.refill)
           if (auto st = sendChunk(i, t); !st) return st;
-        if (t.left == 0 && t.outstanding == 0) t.active = false;
+        if (t.left == 0 && t.outstanding == 0)
+          t.active = false;
         else if (s_.now() - t.lastProgress > cfg_.stallTimeout)
           return stalled(i, t);
       }
@@ -127,7 +130,7 @@ class Mark3 final : public Controller {
       sent.push_back(command);
       if (Status st = s_.sendUnchecked(command); !st && ok) {
         ok = false;
-        failure = st.message;
+        failure = s_.portGone() ? "the port is gone" : st.message;
       }
     }
     return stopReport(sent, ok, failure);
@@ -135,10 +138,11 @@ class Mark3 final : public Controller {
 
  private:
   // The next chunk, kept so that the register (steps still to go plus the
-  // new ones) stays within a signed byte.
+  // new ones) stays within a signed byte and within what "m?" can report.
   Status sendChunk(std::size_t i, Track& t) {
     std::int64_t c = std::clamp<std::int64_t>(t.left, -cfg_.chunk, cfg_.chunk);
-    c = std::clamp<std::int64_t>(c, kRegisterMin - t.outstanding, kRegisterMax - t.outstanding);
+    const int lowest = cfg_.signedRemaining ? kSignedReportableMin : -kReportable;
+    c = std::clamp<std::int64_t>(c, lowest - t.outstanding, kReportable - t.outstanding);
     if (c == 0) return Status::ok();
     if (auto st = s_.send(fmt::format("{}{:+d}", motors_[i].letter, c)); !st) return st;
     t.left -= c;
@@ -161,8 +165,7 @@ class Mark3 final : public Controller {
     }
     const bool sameWay = remaining == 0 || (remaining < 0) == (t.outstanding < 0);
     if (!sameWay || std::abs(remaining) > std::abs(t.outstanding))
-      return s_.garbage(command, {&b, 1},
-                        fmt::format("at most {} steps to go, as sent", std::abs(t.outstanding)));
+      return s_.garbage(command, {&b, 1}, fmt::format("at most {} steps to go, as sent", std::abs(t.outstanding)));
     if (remaining != t.outstanding) t.lastProgress = s_.now();
     t.outstanding = remaining;
     return Status::ok();
@@ -237,8 +240,8 @@ class Mark3 final : public Controller {
         return Status::fault(fmt::format("motor {}: home switch not found within {} steps", m.letter, budget));
       if (s_.now() - t.lastProgress > cfg_.stallTimeout) return stalled(i, t);
       if (s_.now() > deadline)
-        return Status::fault(fmt::format("HRDHOME took longer than {} s (motor {})",
-                                         vm::formatSeconds(cfg_.homeTimeout), m.letter));
+        return Status::fault(
+            fmt::format("HRDHOME took longer than {} s (motor {})", vm::formatSeconds(cfg_.homeTimeout), m.letter));
     }
     if (auto st = s_.send(fmt::format("{}X", m.letter)); !st) return st;
     positions[i] = 0;

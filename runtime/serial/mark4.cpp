@@ -69,8 +69,8 @@ class Mark4 final : public Controller {
   std::string refuse(std::span<const std::int32_t> targets) const override {
     for (std::size_t i = 0; i < targets.size(); ++i)
       if (std::abs(targets[i]) > kMaxDestination)
-        return fmt::format("motor {} target {} is beyond what a Mark IV accepts (-32767..32767)",
-                           motors_[i].letter, targets[i]);
+        return fmt::format("motor {} target {} is beyond what a Mark IV accepts (-32767..32767)", motors_[i].letter,
+                           targets[i]);
     return {};
   }
 
@@ -100,8 +100,8 @@ class Mark4 final : public Controller {
     if (auto st = readPositions(positions, nullptr); !st) return st;
     for (std::size_t i = 0; i < motors_.size(); ++i)
       if (std::abs(positions[i]) > cfg_.tolerance)
-        return Status::fault(fmt::format("after the hard home motor {} reads {}, not 0", motors_[i].letter,
-                                         positions[i]));
+        return Status::fault(
+            fmt::format("after the hard home motor {} reads {}, not 0", motors_[i].letter, positions[i]));
     return Status::ok();
   }
 
@@ -119,7 +119,7 @@ class Mark4 final : public Controller {
 
   std::string stopAll() override {
     const Status st = s_.sendUnchecked("MA");
-    return stopReport({"MA"}, static_cast<bool>(st), st.message);
+    return stopReport({"MA"}, static_cast<bool>(st), s_.portGone() ? "the port is gone" : st.message);
   }
 
  private:

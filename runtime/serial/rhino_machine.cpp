@@ -77,8 +77,9 @@ Status RhinoMachine::moveTo(std::span<const std::int32_t> targets) {
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const vm::MotorSpec& m = motors_[i];
     if (targets[i] < m.min || targets[i] > m.max)
-      return Status::fault(fmt::format("motor {} target {} is outside its range {}..{}: nothing was sent to the controller",
-                                       m.letter, targets[i], m.min, m.max));
+      return Status::fault(
+          fmt::format("motor {} target {} is outside its range {}..{}: nothing was sent to the controller", m.letter,
+                      targets[i], m.min, m.max));
   }
   if (std::string refused = controller_->refuse(targets); !refused.empty())
     return Status::fault(refused + ": nothing was sent to the controller");

@@ -78,7 +78,8 @@ IoResult LoggedLink::write(std::span<const std::uint8_t> bytes, Micros timeout) 
 
 IoResult LoggedLink::read(std::span<std::uint8_t> buffer, Micros timeout) {
   IoResult r = inner_.read(buffer, timeout);
-  if (r) log_.received(clock_.now(), buffer.first(r.count));
+  if (r)
+    log_.received(clock_.now(), buffer.first(r.count));
   else if (r.kind == IoResult::Kind::Closed || r.kind == IoResult::Kind::Error)
     log_.event(clock_.now(), r.message);
   return r;

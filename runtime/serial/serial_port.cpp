@@ -2,9 +2,12 @@
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <linux/serial.h>
 #include <poll.h>
 #include <sys/ioctl.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -13,7 +16,6 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
-#include <fmt/format.h>
 
 namespace rs::serial {
 namespace {
@@ -24,11 +26,11 @@ struct BaudEntry {
 };
 
 constexpr BaudEntry kBauds[] = {
-    {50, B50},         {75, B75},           {110, B110},         {134, B134},         {150, B150},
-    {200, B200},       {300, B300},         {600, B600},         {1200, B1200},       {1800, B1800},
-    {2400, B2400},     {4800, B4800},       {9600, B9600},       {19200, B19200},     {38400, B38400},
-    {57600, B57600},   {115200, B115200},   {230400, B230400},   {460800, B460800},   {500000, B500000},
-    {576000, B576000}, {921600, B921600},   {1000000, B1000000}, {1152000, B1152000}, {1500000, B1500000},
+    {50, B50},           {75, B75},           {110, B110},         {134, B134},         {150, B150},
+    {200, B200},         {300, B300},         {600, B600},         {1200, B1200},       {1800, B1800},
+    {2400, B2400},       {4800, B4800},       {9600, B9600},       {19200, B19200},     {38400, B38400},
+    {57600, B57600},     {115200, B115200},   {230400, B230400},   {460800, B460800},   {500000, B500000},
+    {576000, B576000},   {921600, B921600},   {1000000, B1000000}, {1152000, B1152000}, {1500000, B1500000},
     {2000000, B2000000}, {2500000, B2500000}, {3000000, B3000000}, {3500000, B3500000}, {4000000, B4000000},
 };
 
@@ -39,8 +41,7 @@ const BaudEntry* findBaud(int baud) {
 }
 
 std::int64_t steadyMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(
-             std::chrono::steady_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
 
@@ -58,6 +59,34 @@ int waitFor(int fd, short events, Micros timeout) {
     if (n == 0) return 0;
     if (errno != EINTR) return -1;
   }
+}
+
+// POSIX lets tcsetattr() fail (or succeed) with only some changes made, and
+// Linux pseudo-terminals refuse some flag changes with EINVAL even when the
+// flags are already so: what counts is what reads back.
+bool sameSettings(const termios& a, const termios& b) {
+  const tcflag_t c = CSIZE | PARENB | PARODD | CSTOPB | CRTSCTS | CLOCAL | CREAD;
+  const tcflag_t i = IXON | IXOFF | IXANY | INPCK | ISTRIP | ICRNL | INLCR | IGNCR | PARMRK | IGNPAR;
+  const tcflag_t l = ICANON | ECHO | ECHONL | ISIG | IEXTEN;
+  return (a.c_cflag & c) == (b.c_cflag & c) && (a.c_iflag & i) == (b.c_iflag & i) &&
+         (a.c_lflag & l) == (b.c_lflag & l) && (a.c_oflag & OPOST) == (b.c_oflag & OPOST) &&
+         ::cfgetispeed(&a) == ::cfgetispeed(&b) && ::cfgetospeed(&a) == ::cfgetospeed(&b) &&
+         a.c_cc[VMIN] == b.c_cc[VMIN] && a.c_cc[VTIME] == b.c_cc[VTIME];
+}
+
+bool apply(int fd, const termios& wanted) {
+  if (::tcsetattr(fd, TCSANOW, &wanted) == 0) {
+    termios got{};
+    return ::tcgetattr(fd, &got) == 0 && sameSettings(got, wanted);
+  }
+  termios got{};
+  return ::tcgetattr(fd, &got) == 0 && sameSettings(got, wanted);
+}
+
+// UNIX98 pseudo-terminal slaves (/dev/pts/N) have majors 136..143.
+bool pseudoTerminal(int fd) {
+  struct stat st {};
+  return ::fstat(fd, &st) == 0 && major(st.st_rdev) >= 136 && major(st.st_rdev) <= 143;
 }
 
 tcflag_t sizeFlag(int bits) {
@@ -104,8 +133,17 @@ std::string configureTerminal(int fd, const LineSettings& s) {
   t.c_cc[VTIME] = 0;
   if (::cfsetispeed(&t, baud->code) != 0 || ::cfsetospeed(&t, baud->code) != 0)
     return fmt::format("cannot set {} baud: {}", s.baud, std::strerror(errno));
-  if (::tcsetattr(fd, TCSANOW, &t) != 0) return fmt::format("cannot apply the line settings: {}", std::strerror(errno));
-  return {};
+  if (apply(fd, t)) return {};
+  const std::string why = std::strerror(errno);
+  // A pseudo-terminal (the emulator) has no wire: data bits and parity
+  // mean nothing there, and some kernels refuse them. Raw 8-bit is enough.
+  if (pseudoTerminal(fd)) {
+    t.c_cflag &= ~static_cast<tcflag_t>(CSIZE | PARENB | PARODD | CSTOPB | CRTSCTS);
+    t.c_cflag |= CS8;
+    t.c_iflag &= ~static_cast<tcflag_t>(INPCK);
+    if (apply(fd, t)) return {};
+  }
+  return fmt::format("cannot apply the line settings ({}): {}", describe(s), why);
 }
 
 std::unique_ptr<SerialPort> SerialPort::open(const std::string& path, const LineSettings& settings,
@@ -175,8 +213,7 @@ IoResult SerialPort::read(std::span<std::uint8_t> buffer, Micros timeout) {
     if (n == 0) return IoResult::closed(fmt::format("{}: the port hung up", path_));
     if (errno == EINTR) continue;
     if (errno == EAGAIN || errno == EWOULDBLOCK) {
-      if (ready & (POLLHUP | POLLERR | POLLNVAL))
-        return IoResult::closed(fmt::format("{}: the port hung up", path_));
+      if (ready & (POLLHUP | POLLERR | POLLNVAL)) return IoResult::closed(fmt::format("{}: the port hung up", path_));
       return IoResult::timeout();
     }
     if (errno == EIO || errno == ENXIO || errno == ENODEV)

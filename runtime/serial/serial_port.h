@@ -33,8 +33,7 @@ class SerialPort final : public Link {
  public:
   /// Opens `path` (O_NOCTTY, exclusive), applies `settings` in raw mode and
   /// drops whatever was waiting. Null with `error` set on failure.
-  static std::unique_ptr<SerialPort> open(const std::string& path, const LineSettings& settings,
-                                          std::string& error);
+  static std::unique_ptr<SerialPort> open(const std::string& path, const LineSettings& settings, std::string& error);
   ~SerialPort() override;
   SerialPort(const SerialPort&) = delete;
   SerialPort& operator=(const SerialPort&) = delete;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 namespace rs::serial {
 namespace {
@@ -28,15 +29,16 @@ vm::Status Session::ioFailure(const IoResult& r, std::string_view command, bool 
   switch (r.kind) {
     case IoResult::Kind::Ok: return vm::Status::ok();
     case IoResult::Kind::Timeout:
-      message = writing ? fmt::format("the serial line to {} is blocked: \"{}\" could not be sent within {} s",
-                                      device_, escapeBytes(bytesOf(command)), vm::formatSeconds(settings_.timeout))
+      message = writing ? fmt::format("the serial line to {} is blocked: \"{}\" could not be sent within {} s", device_,
+                                      escapeBytes(bytesOf(command)), vm::formatSeconds(settings_.timeout))
                         : fmt::format("no reply from the controller to \"{}\" within {} s (timeout)",
                                       escapeBytes(bytesOf(command)), vm::formatSeconds(settings_.timeout));
       break;
     case IoResult::Kind::Closed:
       gone_ = true;
-      message = fmt::format("the serial port hung up (the controller is gone) at \"{}\": {}",
-                            escapeBytes(bytesOf(command)), r.message);
+      message = fmt::format("the serial port {} hung up at \"{}\" (the controller is gone)", device_,
+                            escapeBytes(bytesOf(command)));
+      note(r.message);
       break;
     case IoResult::Kind::Error:
       message = fmt::format("serial I/O error at \"{}\": {}", escapeBytes(bytesOf(command)), r.message);
@@ -47,11 +49,11 @@ vm::Status Session::ioFailure(const IoResult& r, std::string_view command, bool 
 }
 
 vm::Status Session::garbage(std::string_view command, std::span<const std::uint8_t> reply, std::string_view expected) {
-  std::string message =
-      reply.empty() ? fmt::format("garbage from the controller: \"{}\" was answered out of range (expected {})",
-                                  escapeBytes(bytesOf(command)), expected)
-                    : fmt::format("garbage from the controller: \"{}\" was answered with \"{}\" (expected {})",
-                                  escapeBytes(bytesOf(command)), escapeBytes(reply), expected);
+  std::string message = reply.empty()
+                            ? fmt::format("garbage from the controller: \"{}\" was answered out of range (expected {})",
+                                          escapeBytes(bytesOf(command)), expected)
+                            : fmt::format("garbage from the controller: \"{}\" was answered with \"{}\" (expected {})",
+                                          escapeBytes(bytesOf(command)), escapeBytes(reply), expected);
   note(message);
   return vm::Status::fault(std::move(message));
 }
@@ -71,14 +73,14 @@ vm::Status Session::sendUnchecked(std::string_view command) {
 // Anything waiting before a question is an answer to nothing: the line is
 // out of step with the controller. Mark IV may trail a LF after its CR.
 vm::Status Session::expectQuiet(std::string_view command) {
+  std::vector<std::uint8_t> got = std::exchange(unread_, {});
   std::array<std::uint8_t, 64> buf{};
   const IoResult r = link_.read(buf, 0);
-  if (r.kind == IoResult::Kind::Timeout) return vm::Status::ok();
-  if (!r) return ioFailure(r, command, false);
-  const auto got = std::span<const std::uint8_t>(buf).first(r.count);
+  if (!r && r.kind != IoResult::Kind::Timeout) return ioFailure(r, command, false);
+  if (r) got.insert(got.end(), buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(r.count));
   const bool whitespace = settings_.dialect == Dialect::Mark4 &&
                           std::all_of(got.begin(), got.end(), [](std::uint8_t b) { return b == '\r' || b == '\n'; });
-  if (whitespace) return vm::Status::ok();
+  if (got.empty() || whitespace) return vm::Status::ok();
   std::string message = fmt::format("garbage from the controller: \"{}\" arrived unasked before \"{}\"",
                                     escapeBytes(got), escapeBytes(bytesOf(command)));
   note(message);
@@ -101,23 +103,28 @@ vm::Status Session::queryNumber(std::string_view command, long& value) {
   const Micros deadline = clock_.now() + settings_.timeout;
   std::vector<std::uint8_t> reply;
   for (;;) {
-    std::array<std::uint8_t, 1> buf{};  // one at a time: never read past the CR
+    std::array<std::uint8_t, 32> buf{};
     const IoResult r = link_.read(buf, std::max<Micros>(deadline - clock_.now(), 0));
     if (!r) {
       if (r.kind == IoResult::Kind::Timeout && !reply.empty())
         return garbage(command, reply, "a decimal number ended by CR; the CR never came");
       return ioFailure(r, command, false);
     }
-    if (buf[0] == '\n' && reply.empty()) continue;  // LF left over from CR LF
-    if (buf[0] == '\r') break;
-    reply.push_back(buf[0]);
+    reply.insert(reply.end(), buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(r.count));
+    while (!reply.empty() && reply.front() == '\n') reply.erase(reply.begin());  // LF left from CR LF
+    const auto cr = std::find(reply.begin(), reply.end(), '\r');
+    if (cr != reply.end()) {
+      unread_.assign(cr + 1, reply.end());
+      reply.erase(cr, reply.end());
+      break;
+    }
     if (reply.size() > 12) return garbage(command, reply, "a decimal number ended by CR");
   }
   std::size_t i = 0;
   while (i < reply.size() && reply[i] == ' ') ++i;
   const bool negative = i < reply.size() && reply[i] == '-';
   if (negative || (i < reply.size() && reply[i] == '+')) ++i;
-  if (i == reply.size()) return garbage(command, reply, "a decimal number ended by CR");
+  if (i == reply.size() || reply.size() - i > 10) return garbage(command, reply, "a decimal number ended by CR");
   long v = 0;
   for (; i < reply.size(); ++i) {
     if (reply[i] < '0' || reply[i] > '9') return garbage(command, reply, "a decimal number ended by CR");
@@ -141,7 +148,7 @@ std::string stopReport(const std::vector<std::string>& sent, bool allOk, const s
   std::string list;
   for (const std::string& c : sent) list += (list.empty() ? "" : " ") + c;
   if (allOk) return fmt::format("stop sent to every motor ({})", list);
-  return fmt::format("stop could NOT be sent to every motor ({}: {}): switch the controller off", list, failure);
+  return fmt::format("stop could NOT be sent to every motor ({}): {}; switch the controller off", list, failure);
 }
 
 }  // namespace rs::serial

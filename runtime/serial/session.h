@@ -17,6 +17,7 @@
 #include "runtime/serial/serial_log.h"
 #include "runtime/serial/settings.h"
 #include "vm/image.h"
+#include "vm/interpreter.h"  // formatSeconds
 #include "vm/machine.h"
 
 namespace rs::serial {
@@ -24,8 +25,7 @@ namespace rs::serial {
 class Session {
  public:
   /// `log` and `interrupt` may be null. All must outlive the session.
-  Session(Link& link, Clock& clock, const RhinoSettings& settings, SerialLog* log,
-          const std::atomic<bool>* interrupt)
+  Session(Link& link, Clock& clock, const RhinoSettings& settings, SerialLog* log, const std::atomic<bool>* interrupt)
       : link_(link), clock_(clock), settings_(settings), log_(log), interrupt_(interrupt) {}
 
   /// Sends `command` and the line end; refuses once Ctrl-C was pressed.
@@ -62,6 +62,7 @@ class Session {
   const RhinoSettings& settings_;
   SerialLog* log_;
   const std::atomic<bool>* interrupt_;
+  std::vector<std::uint8_t> unread_;  // bytes that came after a Mark IV answer's CR
   std::string device_ = "the controller";
   bool gone_ = false;
 };

@@ -150,30 +150,44 @@ std::string applySetting(RhinoSettings& s, std::string_view rawKey, std::string_
   const std::string v = lower(value);
   int n = 0;
   if (key == "baud") {
-    if (!parseInt(value, 1, 4'000'000, n) || !supportedBaud(n)) return bad(key, value, "a standard baud rate (9600, 19200, ...)");
+    if (!parseInt(value, 1, 4'000'000, n) || !supportedBaud(n))
+      return bad(key, value, "a standard baud rate (9600, 19200, ...)");
     s.line.baud = n;
   } else if (key == "data-bits") {
     if (!parseInt(value, 5, 8, n)) return bad(key, value, "5, 6, 7 or 8");
     s.line.dataBits = n;
   } else if (key == "parity") {
-    if (v == "none" || v == "n") s.line.parity = Parity::None;
-    else if (v == "even" || v == "e") s.line.parity = Parity::Even;
-    else if (v == "odd" || v == "o") s.line.parity = Parity::Odd;
-    else return bad(key, value, "none, even or odd");
+    if (v == "none" || v == "n")
+      s.line.parity = Parity::None;
+    else if (v == "even" || v == "e")
+      s.line.parity = Parity::Even;
+    else if (v == "odd" || v == "o")
+      s.line.parity = Parity::Odd;
+    else
+      return bad(key, value, "none, even or odd");
   } else if (key == "stop-bits") {
     if (!parseInt(value, 1, 2, n)) return bad(key, value, "1 or 2");
     s.line.stopBits = n;
   } else if (key == "flow") {
-    if (v == "none") s.line.flow = FlowControl::None;
-    else if (v == "rtscts") s.line.flow = FlowControl::RtsCts;
-    else if (v == "xonxoff") s.line.flow = FlowControl::XonXoff;
-    else return bad(key, value, "none, rtscts or xonxoff");
+    if (v == "none")
+      s.line.flow = FlowControl::None;
+    else if (v == "rtscts")
+      s.line.flow = FlowControl::RtsCts;
+    else if (v == "xonxoff")
+      s.line.flow = FlowControl::XonXoff;
+    else
+      return bad(key, value, "none, rtscts or xonxoff");
   } else if (key == "line-end") {
-    if (v == "cr") s.lineEnd = LineEnd::Cr;
-    else if (v == "crlf") s.lineEnd = LineEnd::CrLf;
-    else if (v == "lfcr") s.lineEnd = LineEnd::LfCr;
-    else if (v == "lf") s.lineEnd = LineEnd::Lf;
-    else return bad(key, value, "cr, crlf, lfcr or lf");
+    if (v == "cr")
+      s.lineEnd = LineEnd::Cr;
+    else if (v == "crlf")
+      s.lineEnd = LineEnd::CrLf;
+    else if (v == "lfcr")
+      s.lineEnd = LineEnd::LfCr;
+    else if (v == "lf")
+      s.lineEnd = LineEnd::Lf;
+    else
+      return bad(key, value, "cr, crlf, lfcr or lf");
   } else if (key == "timeout") {
     if (!parseSeconds(value, s.timeout)) return bad(key, value, "seconds > 0");
   } else if (key == "poll") {
@@ -189,17 +203,23 @@ std::string applySetting(RhinoSettings& s, std::string_view rawKey, std::string_
     if (!parseInt(value, 0, 127, n)) return bad(key, value, "0..127 steps");
     s.refill = n;
   } else if (key == "remaining") {
-    if (v == "magnitude") s.signedRemaining = false;
-    else if (v == "signed") s.signedRemaining = true;
-    else return bad(key, value, "magnitude or signed");
+    if (v == "magnitude")
+      s.signedRemaining = false;
+    else if (v == "signed")
+      s.signedRemaining = true;
+    else
+      return bad(key, value, "magnitude or signed");
   } else if (const int m = indexedKey(key, "switch.", "", 'A', 'H'); m >= 0) {
     if (!parseBitSource(value, s.switches[static_cast<std::size_t>(m)])) return bad(key, value, "I0..K5 or none");
   } else if (const int i = indexedKey(key, "input.", "", '1', '8'); i >= 0) {
     if (!parseBitSource(value, s.inputs[static_cast<std::size_t>(i)])) return bad(key, value, "I0..K5 or none");
   } else if (key == "input-active") {
-    if (v == "low") s.inputsActiveLow = true;
-    else if (v == "high") s.inputsActiveLow = false;
-    else return bad(key, value, "low or high");
+    if (v == "low")
+      s.inputsActiveLow = true;
+    else if (v == "high")
+      s.inputsActiveLow = false;
+    else
+      return bad(key, value, "low or high");
   } else if (const int on = indexedKey(key, "output.", ".on", '1', '8'); on >= 0) {
     if (!validTemplate(value)) return bad(key, value, "a command, optionally with {n} and {port}");
     s.outputOn[static_cast<std::size_t>(on)] = std::string(value);
@@ -210,7 +230,8 @@ std::string applySetting(RhinoSettings& s, std::string_view rawKey, std::string_
     std::string order;
     for (const char c : value) {
       const char up = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-      if (up < 'A' || up > 'H' || order.find(up) != std::string::npos) return bad(key, value, "distinct motor letters A..H");
+      if (up < 'A' || up > 'H' || order.find(up) != std::string::npos)
+        return bad(key, value, "distinct motor letters A..H");
       order += up;
     }
     s.homeOrder = order;
@@ -218,13 +239,19 @@ std::string applySetting(RhinoSettings& s, std::string_view rawKey, std::string_
     if (!parseInt(value, 0, 1'000'000, n)) return bad(key, value, "0..1000000 steps (0: the motor's range)");
     s.homeSearch = n;
   } else if (key == "home-direction") {
-    if (value == "-" || v == "negative") s.homeDirection = -1;
-    else if (value == "+" || v == "positive") s.homeDirection = 1;
-    else return bad(key, value, "- or +");
+    if (value == "-" || v == "negative")
+      s.homeDirection = -1;
+    else if (value == "+" || v == "positive")
+      s.homeDirection = 1;
+    else
+      return bad(key, value, "- or +");
   } else if (key == "start") {
-    if (v == "mi") s.coordinated = false;
-    else if (v == "mc") s.coordinated = true;
-    else return bad(key, value, "MI or MC");
+    if (v == "mi")
+      s.coordinated = false;
+    else if (v == "mc")
+      s.coordinated = true;
+    else
+      return bad(key, value, "MI or MC");
   } else if (key == "tolerance") {
     if (!parseInt(value, 0, 32767, n)) return bad(key, value, "0..32767 encoder units");
     s.tolerance = n;
@@ -278,7 +305,8 @@ std::vector<std::pair<std::string, std::string>> listSettings(const RhinoSetting
       {"remaining", s.signedRemaining ? "signed" : "magnitude"},
   };
   for (int m = 0; m < 8; ++m)
-    out.emplace_back(fmt::format("switch.{}", static_cast<char>('A' + m)), bitSourceText(s.switches[static_cast<std::size_t>(m)]));
+    out.emplace_back(fmt::format("switch.{}", static_cast<char>('A' + m)),
+                     bitSourceText(s.switches[static_cast<std::size_t>(m)]));
   for (int i = 0; i < 8; ++i)
     out.emplace_back(fmt::format("input.{}", i + 1), bitSourceText(s.inputs[static_cast<std::size_t>(i)]));
   out.emplace_back("input-active", s.inputsActiveLow ? "low" : "high");

@@ -41,28 +41,28 @@ struct RhinoSettings {
   LineSettings line;
   LineEnd lineEnd = LineEnd::Cr;
 
-  Micros timeout = 500'000;           // a reply must start and end within this
-  Micros pollInterval = 10'000;       // between status polls
-  Micros stallTimeout = 5'000'000;    // a moving motor that makes no progress this long has stalled
-  Micros homeTimeout = 120'000'000;   // the whole of HRDHOME
+  Micros timeout = 500'000;          // a reply must start and end within this
+  Micros pollInterval = 10'000;      // between status polls
+  Micros stallTimeout = 5'000'000;   // a moving motor that makes no progress this long has stalled
+  Micros homeTimeout = 120'000'000;  // the whole of HRDHOME
 
   // --- Mark III -------------------------------------------------------------
-  int chunk = 40;                     // steps per move command (1..127)
-  int refill = 15;                    // send the next chunk when fewer steps remain
-  bool signedRemaining = false;       // "<m>?" reply: 32 + |remaining| (false) or 32 + remaining
-  std::array<BitSource, 8> switches;  // home switch of motors A..H
-  std::array<BitSource, 8> inputs;    // inputs 1..8
-  bool inputsActiveLow = true;        // a 0 bit reads as input ON
-  std::array<std::string, 8> outputOn;   // command templates: {n} line, {port} all outputs 0..255
+  int chunk = 40;                       // steps per move command (1..127)
+  int refill = 15;                      // send the next chunk when fewer steps remain
+  bool signedRemaining = false;         // "<m>?" reply: 32 + |remaining| (false) or 32 + remaining
+  std::array<BitSource, 8> switches;    // home switch of motors A..H
+  std::array<BitSource, 8> inputs;      // inputs 1..8
+  bool inputsActiveLow = true;          // a 0 bit reads as input ON
+  std::array<std::string, 8> outputOn;  // command templates: {n} line, {port} all outputs 0..255
   std::array<std::string, 8> outputOff;
-  std::string homeOrder;              // letters; empty: motor-table order
-  int homeSearch = 0;                 // steps to look for a switch; 0: the motor's whole range
-  int homeDirection = -1;             // when the tracked position is 0: -1 or +1
+  std::string homeOrder;   // letters; empty: motor-table order
+  int homeSearch = 0;      // steps to look for a switch; 0: the motor's whole range
+  int homeDirection = -1;  // when the tracked position is 0: -1 or +1
 
   // --- Mark IV --------------------------------------------------------------
-  bool coordinated = false;           // start moves with MC instead of MI
-  int tolerance = 10;                 // |read-back position - target| allowed after a move
-  bool checkErrors = true;            // read the error stack (SE) after every move and home
+  bool coordinated = false;  // start moves with MC instead of MI
+  int tolerance = 10;        // |read-back position - target| allowed after a move
+  bool checkErrors = true;   // read the error stack (SE) after every move and home
 };
 
 /// The defaults for a dialect (Mark IV: odd/even parity as the Mark III,

@@ -2,6 +2,7 @@
 // derived D-H table is the published one. The expected tables below are
 // written from the sources each .rsd file cites (the paper's Table 6,
 // Schilling, Craig, Paul/Scheinman, Spong), not from robotsim's output.
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -155,9 +156,10 @@ M4 chainProduct(const std::vector<Row>& table, const std::vector<double>& q) {
 }
 
 std::string joined(const std::vector<double>& q) {
-  std::string s;
-  for (double v : q) s += (s.empty() ? "" : ",") + std::to_string(v);
-  return s;
+  std::ostringstream s;
+  s.precision(17);
+  for (std::size_t i = 0; i < q.size(); ++i) s << (i ? "," : "") << q[i];
+  return s.str();
 }
 
 void checkMatrix(const std::string& robot, const std::vector<double>& q) {
@@ -277,6 +279,12 @@ TEST_CASE("PUMA 560's T_6^0 is the product of its published D-H matrices", "[lib
 
 TEST_CASE("Stanford arm's T_6^0, prismatic boom included, is the published product", "[library]") {
   checkMatrix("stanford-arm", {15, 70, 350, -30, 45, 80});
+}
+
+TEST_CASE("The other library arms' base-to-tool matrices are their published products", "[library]") {
+  checkMatrix("rhino-scara", {40, -75, 95, 120});
+  checkMatrix("rhino-xr3", {-35, -60, 110, -25, 70});
+  checkMatrix("gantry", {320, 655, 910});
 }
 
 TEST_CASE("Rhino SCARA's motors are the paper's Table 6, then the gripper", "[library]") {

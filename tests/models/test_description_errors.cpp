@@ -5,9 +5,12 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
+#include "compiler/description.h"
 #include "compiler/library.h"
 #include "tests/models/models_support.h"
 
@@ -93,7 +96,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
                          "  ROTATE W 90",                             // 9
                          "  ROTATE Z",                                // 10
                          "  MOVE 1 2",                                // 11
-                         "  LINE 0 0 0 1 1 1 # x",                    // 12
+                         "  LINE 0 0 0 1 1 1 COLOR",                  // 12
                          "  LINE 0 0 0 1 1 2000000000",               // 13
                          "END foo",                                   // 14
                          "OBJECT o",                                  // 15
@@ -153,7 +156,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       "p.rsd:9:10: expected an axis X, Y or Z, found 'W'",
       "p.rsd:10:11: expected an angle in degrees before the end of the line",
       "p.rsd:11:11: expected a displacement (z coordinate) before the end of the line",
-      "p.rsd:12:20: unexpected character '#'",
+      "p.rsd:12:25: expected " + colour + " before the end of the line",
       "p.rsd:13:18: expected the LINE's second endpoint (z coordinate) (at most 1e+09 in size), found '2000000000'",
       "p.rsd:14:5: END takes nothing after it, found 'foo'",
       "p.rsd:16:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'LINK'",
@@ -186,8 +189,11 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       "p.rsd:49:10: expected an object name, found '7'",
       "p.rsd:50:18: expected an axis X, Y or Z, found 'Q'",
       "p.rsd:52:1: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found 'END'",
+      // A LINK without a name still opens its block (so what follows is
+      // read as its contents, not as stray text); that block has no END.
+      "p.rsd:53:1: LINK has no END",
       "p.rsd:53:5: expected a name for the LINK before the end of the line",
-      "p.rsd:54:1: LINK has no END",
+      "p.rsd:54:1: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'LINK'",
   };
   CHECK(robotErrors(dir, "p.rsd") == expected);
 }
@@ -200,24 +206,68 @@ TEST_CASE("description: the CLI prints each error with its source line and a car
   CHECK(r.out.empty());
   CHECK(r.err == file + ":2:25: error: expected a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a "
                         "number 0..15, found 'PURPLE'\n"
-                        "  BOX 1 2 3 4 5 6 COLOR PURPLE\n" +
+                        "    BOX 1 2 3 4 5 6 COLOR PURPLE\n" +
                         std::string(2 + 24, ' ') + "^\n");
 }
 
-TEST_CASE("description: invalid UTF-8 and unexpected characters", "[models]") {
+TEST_CASE("description: invalid UTF-8", "[models]") {
   TempDir dir;
   SECTION("an invalid byte is an error at its position") {
     dir.write("u.rsd", lines({"LINK a", "  LINE 0 0 0 1 1 1 ; caf\xC3", "END"}));
-    CHECK(robotErrors(dir, "u.rsd") == Strings{"u.rsd:2:25: invalid UTF-8 (byte 0xC3): programs are UTF-8 text"});
+    CHECK(robotErrors(dir, "u.rsd") == Strings{"u.rsd:2:25: invalid UTF-8 (byte 0xC3): descriptions are UTF-8 text"});
   }
   SECTION("a stray byte after valid multi-byte text counts columns in characters") {
     dir.write("u.rsd", lines({"; d\xC3\xA9j\xC3\xA0", "LINK \xC3\xA9t\xC3\xA9 \xFF", "END"}));
-    CHECK(robotErrors(dir, "u.rsd") == Strings{"u.rsd:2:10: invalid UTF-8 (byte 0xFF): programs are UTF-8 text"});
+    CHECK(robotErrors(dir, "u.rsd") == Strings{"u.rsd:2:10: invalid UTF-8 (byte 0xFF): descriptions are UTF-8 text"});
   }
-  SECTION("a valid non-ASCII character is an unexpected character, counted in characters") {
-    dir.write("u.rsd", lines({"LINK a", "  LINE 0 0 0 \xC3\xA9 1 1", "  LINE 0 0 0 1 1 1 @", "END"}));
-    CHECK(robotErrors(dir, "u.rsd") ==
-          Strings{"u.rsd:2:14: unexpected character '\xC3\xA9'", "u.rsd:3:20: unexpected character '@'"});
+}
+
+namespace {
+
+// Diagnostics and segment count of one file parsed alone.
+std::pair<Strings, std::size_t> parsed(const std::string& text) {
+  rs::compiler::Diagnostics d("x.rsd");
+  const auto f = rs::compiler::parseDescription(std::make_unique<rs::compiler::SourceFile>("x.rsd", text), d);
+  Strings out;
+  for (const auto& diag : d.sorted()) out.push_back(fmt::format("{}:{}: {}", diag.pos.line, diag.pos.col, diag.message));
+  std::size_t segments = 0;
+  for (const auto& l : f.links) segments += l.segments.size();
+  return {out, segments};
+}
+
+void expectOneLoss(const std::pair<Strings, std::size_t>& got, const Strings& diagnostics) {
+  CHECK(got.first == diagnostics);
+  CHECK(got.second == 1);  // the good LINE's segment
+}
+
+}  // namespace
+
+TEST_CASE("description: an unexpected character is reported wherever it is, and no other line is lost", "[models]") {
+  // Each file has one bad line (dropped, with one message) and one good
+  // LINE whose segment must survive.
+  SECTION("followed by a name") {
+    expectOneLoss(parsed(lines({"LINK a", "  LINE 0 0 0 1 1 1 # x", "  LINE 0 0 0 2 2 2", "END"})),
+                  Strings{"2:20: unexpected character '#'"});
+  }
+  SECTION("at the end of a line") {
+    expectOneLoss(parsed(lines({"LINK a", "  LINE 0 0 0 1 1 1 @", "  LINE 0 0 0 2 2 2", "END"})),
+                  Strings{"2:20: unexpected character '@'"});
+  }
+  SECTION("followed by a number") {
+    expectOneLoss(parsed(lines({"LINK a", "  LINE 0 0 0 1 1 @ 1", "  LINE 0 0 0 2 2 2", "END"})),
+                  Strings{"2:18: unexpected character '@'"});
+  }
+  SECTION("where a colour should be") {
+    expectOneLoss(parsed(lines({"LINK a", "  BOX 1 2 3 4 5 6 COLOR @", "  LINE 0 0 0 2 2 2", "END"})),
+                  Strings{"2:25: unexpected character '@'"});
+  }
+  SECTION("alone on a line between blocks") {
+    expectOneLoss(parsed(lines({"LINK a", "  LINE 0 0 0 2 2 2", "END", "@", "LINK b", "END"})),
+                  Strings{"4:1: unexpected character '@'"});
+  }
+  SECTION("a valid non-ASCII character, columns counted in characters") {
+    expectOneLoss(parsed(lines({"LINK a", "  LINE 0 0 0 \xC3\xA9 1 1", "  LINE 0 0 0 2 2 2", "END"})),
+                  Strings{"2:14: unexpected character '\xC3\xA9'"});
   }
 }
 
@@ -305,27 +355,45 @@ TEST_CASE("description: link frames", "[models]") {
           Strings{"r.rsd:6:26: robot 'r': x1 does not meet z0 (they pass 50 apart), as the D-H convention requires"});
   }
   SECTION("a frame statement before any LINK") {
-    dir.write("r.rsd", lines({"ROBOT r", "  XAXIS 1 0 0", "END"}));
     // The message is about the keyword, so it points at the keyword.
-    CHECK(robotErrors(dir, "r.rsd") == Strings{"r.rsd:2:3: XAXIS before any LINK: a frame belongs to the LINK before it"});
+    for (const std::string kw : {"ORIGIN", "XAXIS", "ZAXIS"}) {
+      dir.write("r.rsd", lines({"ROBOT r", "  " + kw + " 1 0 0", "END"}));
+      CHECK(robotErrors(dir, "r.rsd") ==
+            Strings{"r.rsd:2:3: " + kw + " before any LINK: a frame belongs to the LINK before it"});
+    }
   }
 }
 
-TEST_CASE("description: a FRAME missing its XAXIS or ZAXIS point is an error, not the design origin", "[models]") {
-  // ORIGIN 5 0 0 with ZAXIS 5 0 1 and no XAXIS: the x point must not
-  // silently default to (0, 0, 0) (which would give x = -X and be accepted).
+TEST_CASE("description: a FRAME missing ORIGIN, XAXIS or ZAXIS is reported as such", "[models]") {
+  // The complete frame ORIGIN 5 0 0 XAXIS 6 0 0 ZAXIS 5 0 1 is sound (a1 = 5).
+  // A missing point must not silently become (0, 0, 0): without XAXIS the
+  // x axis would point from (5, 0, 0) to the origin (-X) and be accepted;
+  // without ORIGIN or ZAXIS the message would be about perpendicular axes.
   TempDir dir;
-  dir.write("r.rsd", kBase + lines({
-                                  "ROBOT r",                                                 // 4
-                                  "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",  // 5
-                                  "  LINK base FRAME ORIGIN 5 0 0 ZAXIS 5 0 1",             // 6
-                                  "  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10",   // 7
-                                  "END",
-                              }));
-  const Strings d = robotErrors(dir, "r.rsd");
-  REQUIRE(d.size() == 1);
-  CHECK(d[0].rfind("r.rsd:6:", 0) == 0);
-  CHECK(d[0].find("XAXIS") != std::string::npos);
+  for (const auto& [missing, frame] : std::vector<std::pair<std::string, std::string>>{
+           {"", "ORIGIN 5 0 0 XAXIS 6 0 0 ZAXIS 5 0 1"},
+           {"ORIGIN", "XAXIS 6 0 0 ZAXIS 5 0 1"},
+           {"XAXIS", "ORIGIN 5 0 0 ZAXIS 5 0 1"},
+           {"ZAXIS", "ORIGIN 5 0 0 XAXIS 6 0 0"},
+       }) {
+    dir.write("r.rsd", kBase + lines({
+                                    "ROBOT r",                                                 // 4
+                                    "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",  // 5
+                                    "  LINK base FRAME " + frame,                             // 6
+                                    "  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10",   // 7
+                                    "END",
+                                }));
+    const Strings d = robotErrors(dir, "r.rsd");
+    INFO("without " << missing << ": " << rs::testing::joined(d));
+    if (missing.empty()) {
+      CHECK(d.empty());
+      continue;
+    }
+    CHECK(d.size() == 1);
+    if (d.size() != 1) continue;
+    CHECK(d[0].rfind("r.rsd:6:", 0) == 0);
+    CHECK(d[0].find(missing) != std::string::npos);
+  }
 }
 
 TEST_CASE("description: joints", "[models]") {

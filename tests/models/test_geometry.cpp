@@ -239,19 +239,20 @@ struct Statement {
 std::vector<std::pair<std::string, std::vector<Statement>>> shapeStatements(const std::string& path) {
   std::ifstream in(path);
   std::vector<std::pair<std::string, std::vector<Statement>>> blocks;
-  bool inShape = false;
+  bool inBlock = false, inShape = false;
   for (std::string line; std::getline(in, line);) {
     const std::string code = line.substr(0, line.find(';'));
     std::istringstream words(code);
     std::string first, name;
     if (!(words >> first)) continue;
     for (char& ch : first) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-    if (!inShape && (first == "LINK" || first == "OBJECT")) {
+    if (!inBlock) {
+      inBlock = true;
+      inShape = first == "LINK" || first == "OBJECT";
       words >> name;
-      blocks.push_back({name, {}});
-      inShape = true;
+      if (inShape) blocks.push_back({name, {}});
     } else if (first == "END") {
-      inShape = false;
+      inBlock = inShape = false;
     } else if (inShape) {
       const DescriptionFile one = parse(lines({"LINK t", code, "END"}));
       blocks.back().second.push_back({first, code, one.links.empty() ? std::vector<Segment>{} : one.links[0].segments});
@@ -265,16 +266,24 @@ std::vector<std::pair<std::string, std::vector<Statement>>> shapeStatements(cons
 TEST_CASE("geometry: stdlib scorobot's boxes enclose the lines they are drawn around", "[models]") {
   // A BOX is "left right top bottom front back", with y up (bottom..top)
   // and z front/back (docs/models.md). The SCOROBOT file's links are drawn
-  // with z up (its D-H frames rise along z: the shoulder at z = 1220), so a
-  // link's LINE (its centre line) must lie inside that link's boxes.
+  // with z up (its D-H frames rise along z: the shoulder at z = 1220), so it
+  // turns its boxes up with ROTATE X 90, which (x, y, z) -> (x, -z, y); a
+  // link's LINE (its centre line, written after the ROTATE) must then lie
+  // inside that link's turned boxes.
   const std::string path = std::string(ROBOTSIM_SOURCE_DIR) + "/stdlib/robots/scorobot.rsd";
   for (const auto& [link, statements] : shapeStatements(path)) {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
-    bool hasBox = false;
-    for (const Statement& s : statements)
+    std::vector<Eigen::Vector3d> corners;
+    for (const Statement& s : statements) {
       if (s.keyword == "BOX")
-        for (const Segment& g : s.segments) lo = lo.cwiseMin(g.a).cwiseMin(g.b), hi = hi.cwiseMax(g.a).cwiseMax(g.b), hasBox = true;
-    if (!hasBox) continue;
+        for (const Segment& g : s.segments) corners.push_back(g.a), corners.push_back(g.b);
+      if (s.keyword == "ROTATE") {
+        REQUIRE(s.text.find("ROTATE X 90") != std::string::npos);  // the only turn this file uses
+        for (Eigen::Vector3d& c : corners) c = Eigen::Vector3d(c.x(), -c.z(), c.y());
+      }
+    }
+    if (corners.empty()) continue;
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+    for (const Eigen::Vector3d& c : corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
     for (const Statement& s : statements) {
       if (s.keyword != "LINE") continue;
       for (const Segment& g : s.segments)

@@ -1,0 +1,368 @@
+#include "cli/lib/render_commands.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "cli/lib/app.h"
+#include "cli/lib/program_file.h"
+#include "cli/lib/report.h"
+#include "compiler/library.h"
+#include "runtime/render/animation.h"
+#include "runtime/render/draw.h"
+#include "runtime/render/moment.h"
+#include "runtime/render/picture.h"
+#include "runtime/render/recording.h"
+#include "runtime/sim_machine.h"
+#include "runtime/stimuli.h"
+#include "runtime/stimuli_text.h"
+#include "runtime/workcell/cell_file.h"
+#include "vm/disasm.h"
+
+namespace rs::cli {
+
+namespace {
+
+// ---- options ----------------------------------------------------------------
+
+bool parseNumber(std::string_view text, double& v) {
+  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  return !text.empty() && ec == std::errc() && ptr == text.data() + text.size() && std::isfinite(v);
+}
+
+// "25,-35,0" -> (25, -35, 0).
+bool parseTriple(const std::string& text, std::string_view option, Eigen::Vector3d& v, std::ostream& err) {
+  std::size_t start = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t comma = text.find(',', start);
+    const bool last = i == 2;
+    if ((comma == std::string::npos) != last ||
+        !parseNumber(std::string_view(text).substr(start, last ? std::string::npos : comma - start), v[i]) ||
+        std::abs(v[i]) > 1e9) {
+      err << fmt::format("robotsim: error: {} takes three numbers X,Y,Z, not '{}'\n", option, text);
+      return false;
+    }
+    start = comma + 1;
+  }
+  return true;
+}
+
+bool parseSize(const std::string& text, int& width, int& height, std::ostream& err) {
+  const std::size_t x = text.find('x');
+  int w = 0, h = 0;
+  const auto whole = [](std::string_view s, int& v) {
+    const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    return !s.empty() && ec == std::errc() && ptr == s.data() + s.size();
+  };
+  if (x == std::string::npos || !whole(std::string_view(text).substr(0, x), w) ||
+      !whole(std::string_view(text).substr(x + 1), h) || w < 16 || h < 16 || w > 16384 || h > 16384) {
+    err << fmt::format("robotsim: error: --size takes WIDTHxHEIGHT in pixels (16..16384), not '{}'\n", text);
+    return false;
+  }
+  width = w, height = h;
+  return true;
+}
+
+// The starting camera from --view, --window, --zoom, --axes, --size.
+bool cameraFrom(const RenderOptions& o, render::Camera& camera, std::ostream& err) {
+  if (!o.view.empty() && !parseTriple(o.view, "--view", camera.view, err)) return false;
+  if (!o.window.empty() && !parseTriple(o.window, "--window", camera.window, err)) return false;
+  if (!o.size.empty() && !parseSize(o.size, camera.width, camera.height, err)) return false;
+  if (!(o.zoom > 0) || !std::isfinite(o.zoom) || o.zoom > 1e6) {
+    err << fmt::format("robotsim: error: --zoom takes a number above 0, not {}\n", o.zoom);
+    return false;
+  }
+  camera.zoom = o.zoom;
+  camera.axes = o.axes;
+  return true;
+}
+
+// ---- inputs -----------------------------------------------------------------
+
+void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags, const LoadedProgram& program) {
+  for (const compiler::Diagnostic& d : diags) err << compiler::render(d, program.sourceOf(d.file));
+}
+
+bool hasErrors(const std::vector<compiler::Diagnostic>& diags) {
+  for (const auto& d : diags)
+    if (d.severity == compiler::Severity::Error) return true;
+  return false;
+}
+
+// A workcell and, when asked for, a program compiled for its first robot.
+struct Loaded {
+  std::optional<workcell::Workcell> cell;
+  LoadedProgram program;
+  bool ok = false;
+};
+
+bool sameMotors(const vm::Image& image, const workcell::Workcell& cell) {
+  return !cell.robots.empty() && image.motors == compiler::motorTable(cell.robots.front().robot);
+}
+
+// CELL (a file or library name) and PROG (a source or an image). Without
+// CELL, an image's own cell is used. Every problem is printed.
+Loaded load(const RenderOptions& o, bool wantProgram, std::ostream& err) {
+  Loaded l;
+  auto library = std::make_shared<compiler::Library>(compiler::librarySearchPath(o.libDirs));
+  l.program.descriptions = library;
+  if (!o.cell.empty()) {
+    l.cell = library->workcell(o.cell);
+    printDiagnostics(err, library->diagnostics(), l.program);
+    if (!l.cell) return l;
+  }
+  if (!wantProgram) {
+    l.ok = true;
+    return l;
+  }
+  if (l.cell && l.cell->robots.empty()) {
+    err << fmt::format("{}: error: the workcell has no robot to run the program\n", o.cell);
+    return l;
+  }
+  LoadedProgram program = loadProgram(o.program, l.cell ? cellTarget(*l.cell) : defaultTarget());
+  program.descriptions = library;
+  l.program = std::move(program);
+  printDiagnostics(err, l.program.diagnostics, l.program);
+  if (!l.program.ok() || hasErrors(l.program.diagnostics)) return l;
+  const vm::Image& image = *l.program.image;
+  if (!l.program.source) {  // a compiled image
+    if (!l.cell && !image.cell.empty()) {
+      workcell::CellDecode decoded = workcell::decodeCell(image.cell);
+      if (!decoded.cell) {
+        err << fmt::format("{}: error: image rejected: {}\n", o.program, decoded.error);
+        return l;
+      }
+      l.cell = std::move(decoded.cell);
+    }
+    if (!l.cell) {
+      err << fmt::format("{}: error: the image carries no workcell; give one with --cell\n", o.program);
+      return l;
+    }
+    if (!sameMotors(image, *l.cell)) {
+      err << fmt::format("{}: error: the image was compiled for robot '{}', whose motors differ from those of '{}'\n",
+                         o.program, image.robotName, l.cell->robots.empty() ? l.cell->name : l.cell->robots.front().robot.name);
+      return l;
+    }
+  } else if (!l.cell) {
+    err << "robotsim: error: which workcell? give it with --cell CELL\n";
+    return l;
+  }
+  l.ok = true;
+  return l;
+}
+
+// Stimuli from --stimuli FILE and every --input N=ON@T, in that order.
+bool loadStimuli(const RenderOptions& o, runtime::Stimuli& stimuli, std::ostream& err) {
+  bool ok = true;
+  const auto report = [&](const runtime::StimuliError& e) {
+    err << compiler::render({e.file, {static_cast<std::uint32_t>(e.line), static_cast<std::uint32_t>(e.column)},
+                             compiler::Severity::Error, e.message},
+                            nullptr);
+    ok = false;
+  };
+  if (!o.stimuliFile.empty()) {
+    runtime::StimuliParse parsed = runtime::loadStimuliFile(o.stimuliFile);
+    for (const auto& e : parsed.errors) report(e);
+    stimuli = std::move(parsed.stimuli);
+  }
+  for (const std::string& arg : o.inputs) {
+    runtime::StimulusArgParse parsed = runtime::parseStimulusArg(arg, "--input");
+    if (parsed.error) report(*parsed.error);
+    if (parsed.change) stimuli.changes.push_back(*parsed.change);
+  }
+  return ok;
+}
+
+bool seconds(const std::string& text, std::string_view option, vm::Micros& micros, std::ostream& err) {
+  const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(text);
+  if (!parsed.error.empty()) {
+    err << fmt::format("robotsim: error: {}: {}\n", option, parsed.error);
+    return false;
+  }
+  micros = parsed.micros;
+  return true;
+}
+
+bool write(const std::string& path, std::vector<std::uint8_t> bytes, std::ostream& err) {
+  std::string error;
+  if (writeFileAtomically(path, bytes, error)) return true;
+  err << fmt::format("{}: error: cannot write: {}\n", path, error);
+  return false;
+}
+
+std::string baseName(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// The page's listing: the source's lines, or the disassembly of an image.
+render::Listing listing(const LoadedProgram& program) {
+  const vm::Image& image = *program.image;
+  render::Listing l;
+  l.name = baseName(program.source ? program.source->name() : image.sourceName);
+  if (program.source) {
+    for (std::uint32_t n = 1; n <= program.source->lineCount(); ++n) l.lines.emplace_back(program.source->line(n));
+    l.lineOf = image.lines;
+  } else {
+    for (std::uint32_t i = 0; i < image.code.size(); ++i) {
+      l.lines.push_back(fmt::format("{:04}  {}", i + 1, vm::instructionText(image, i)));
+      l.lineOf.push_back(i + 1);
+    }
+  }
+  return l;
+}
+
+}  // namespace
+
+// ---- render -------------------------------------------------------------------
+
+int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) {
+  render::Camera camera;
+  if (!cameraFrom(o, camera, err)) return kCompileError;
+  std::optional<render::ImageFormat> format;
+  if (!o.output.empty() && !(format = render::formatFromPath(o.output))) {
+    err << fmt::format("robotsim: error: -o {}: the file name must end in .png or .svg\n", o.output);
+    return kCompileError;
+  }
+  if (o.output.empty() && o.dump.empty()) {
+    err << "robotsim: error: give -o FILE.png|FILE.svg, or --dump-lines\n";
+    return kCompileError;
+  }
+  if (!o.at.empty() && o.program.empty()) {
+    err << "robotsim: error: --at needs --program\n";
+    return kCompileError;
+  }
+  vm::Micros at = 0, maxTime = 0;
+  if (!o.at.empty() && !seconds(o.at, "--at", at, err)) return kCompileError;
+  if (!seconds(o.maxTime, "--max-time", maxTime, err)) return kCompileError;
+  runtime::Stimuli stimuli;
+  if (!loadStimuli(o, stimuli, err)) return kCompileError;
+  Loaded loaded = load(o, !o.program.empty(), err);
+  if (!loaded.ok) return kCompileError;
+
+  const workcell::Workcell& cell = *loaded.cell;
+  render::CellPoser poser(cell);
+  const render::Fit fit = render::fitView(poser.homePoints(), camera);  // for the starting view
+  render::Caption caption{cell.name, std::nullopt};
+  if (!o.program.empty()) {
+    const vm::Image& image = *loaded.program.image;
+    const std::uint64_t maxSteps = o.maxSteps ? o.maxSteps : vm::RunLimits{}.maxSteps;
+    const render::Moment m = render::runToMoment(image, std::move(stimuli), o.at.empty() ? maxTime : at, maxSteps);
+    if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
+      const compiler::Diagnostic d = runtimeDiagnostic(image, m.outcome, image.sourceName);
+      err << compiler::render(d, loaded.program.sourceOf(d.file));
+      if (m.reached) err << "robotsim: note: the program did not end within --max-time; pick a moment with --at\n";
+      return kRunFailed;
+    }
+    poser.setEncoders(0, m.encoders);
+    camera.view += Eigen::Vector3d(m.view.x, m.view.y, m.view.z);
+    camera.window += Eigen::Vector3d(m.window.x, m.window.y, m.window.z);
+    caption.title = fmt::format("{} on {}", baseName(o.program), cell.name);
+    caption.seconds = static_cast<double>(o.at.empty() ? m.clock : at) / 1e6;
+  }
+  const render::Picture picture = render::makePicture(poser, camera, fit, caption);
+  if (o.dump == "json") render::dumpJson(out, picture, cell);
+  else if (!o.dump.empty()) render::dumpText(out, picture, cell);
+  if (format) {
+    render::Encoded encoded = render::encodePicture(picture, *format);
+    if (encoded.bytes.empty()) {
+      err << fmt::format("{}: error: {}\n", o.output, encoded.error);
+      return kCompileError;
+    }
+    if (!write(o.output, std::move(encoded.bytes), err)) return kCompileError;
+  }
+  return kOk;
+}
+
+// ---- animate ------------------------------------------------------------------
+
+int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) {
+  render::Camera camera;
+  if (!cameraFrom(o, camera, err)) return kCompileError;
+  vm::Micros maxTime = 0;
+  if (!seconds(o.maxTime, "--max-time", maxTime, err)) return kCompileError;
+  runtime::Stimuli stimuli;
+  if (!loadStimuli(o, stimuli, err)) return kCompileError;
+  Loaded loaded = load(o, true, err);
+  if (!loaded.ok) return kCompileError;
+
+  const vm::Image& image = *loaded.program.image;
+  runtime::SimMachine machine(image.motors, stimuli);
+  vm::Interpreter interpreter(image, machine);
+  render::RunRecorder recorder(machine);
+  const vm::RunLimits limits{o.maxSteps ? o.maxSteps : kAnimateMaxSteps, maxTime};
+  const vm::RunOutcome outcome = interpreter.run(limits, &recorder);
+  const render::RunRecording recording = recorder.finish(outcome, stimuli);
+
+  render::AnimationInput input;
+  input.cell = &*loaded.cell;
+  input.run = &recording;
+  input.listing = listing(loaded.program);
+  input.camera = camera;
+  if (!outcome.ok()) {
+    const compiler::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
+    err << compiler::render(d, loaded.program.sourceOf(d.file));
+    input.outcome = d.pos.line ? fmt::format("line {}: {}", d.pos.line, d.message) : d.message;
+  }
+  const std::string html = render::animationHtml(input);
+  if (!write(o.output, std::vector<std::uint8_t>(html.begin(), html.end()), err)) return kCompileError;
+  out << fmt::format("{} -> {} ({} instructions executed, {} s simulated)\n", o.program, o.output,
+                     recording.steps.size(), vm::formatSeconds(recording.end));
+  return outcome.ok() ? kOk : kRunFailed;
+}
+
+// ---- registration ---------------------------------------------------------------
+
+namespace {
+
+void addCommon(CLI::App* cmd, RenderOptions& o) {
+  cmd->add_option("--view", o.view, "Turn the image about x, y, z by RX,RY,RZ degrees (default 25,-35,0)");
+  cmd->add_option("--window", o.window, "Shift the workcell by X,Y,Z (its own length units)");
+  cmd->add_option("--zoom", o.zoom, "Magnify (1 = the workcell fits the picture)");
+  cmd->add_flag("--axes", o.axes, "Draw each link's coordinate frame (the paper's AXES ON)");
+  cmd->add_option("--lib", o.libDirs, "Also look up description names in this directory (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_option("--input", o.inputs, "Input change N=ON@SECONDS or N=OFF@SECONDS (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_option("--stimuli", o.stimuliFile, "Stimuli file: timed input changes and reactive rules");
+  cmd->add_option("--max-steps", o.maxSteps, "Stop the run after this many instructions")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 62));
+  cmd->add_option("--max-time", o.maxTime, "Stop the run at this simulated time in seconds (default 3600)");
+}
+
+}  // namespace
+
+RenderCommands::RenderCommands(CLI::App& app) {
+  render_ = app.add_subcommand("render", "Draw a workcell (PNG or SVG), at its placed pose or during a run");
+  render_->add_option("cell", o_.cell, "Workcell (or robot) description file or library name")->required();
+  render_->add_option("--program", o_.program, "Run this program on the workcell's first robot");
+  render_->add_option("--at", o_.at, "The moment of the run to draw, in seconds (default: its end)");
+  render_->add_option("-o,--output", o_.output, "Picture to write: FILE.png or FILE.svg");
+  render_->add_option("--size", o_.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
+  render_->add_flag("--dump-lines{text}", o_.dump, "Print the projected 2-D lines: --dump-lines (text) or =json");
+  addCommon(render_, o_);
+
+  animate_ = app.add_subcommand("animate", "Write a self-contained HTML page that replays a program's run");
+  animate_->add_option("program", o_.program, "Program source (.rsp) or compiled image (.rsb)")->required();
+  animate_->add_option("--cell", o_.cell, "Workcell (or robot) to run on (an image may carry its own)");
+  animate_->add_option("-o,--output", o_.output, "HTML file to write")->required();
+  addCommon(animate_, o_);
+}
+
+std::optional<int> RenderCommands::run(std::ostream& out, std::ostream& err) const {
+  if (render_->parsed()) {
+    if (!o_.dump.empty() && o_.dump != "text" && o_.dump != "json") {
+      err << fmt::format("robotsim: error: --dump-lines takes text or json, not '{}'\n", o_.dump);
+      return kCompileError;
+    }
+    return renderCommand(o_, out, err);
+  }
+  if (animate_->parsed()) return animateCommand(o_, out, err);
+  return std::nullopt;
+}
+
+}  // namespace rs::cli

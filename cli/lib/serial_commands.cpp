@@ -1,0 +1,456 @@
+#include "cli/lib/serial_commands.h"
+
+#include <fmt/format.h>
+#include <poll.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli/lib/app.h"
+#include "cli/lib/program_file.h"
+#include "compiler/library.h"
+#include "runtime/serial/emulator.h"
+#include "runtime/serial/interrupt.h"
+#include "runtime/serial/rhino_machine.h"
+#include "runtime/serial/serial_port.h"
+#include "stdlib/default_robot.h"
+
+namespace rs::cli {
+namespace {
+
+using serial::Dialect;
+using serial::RhinoSettings;
+
+// Defaults for the dialect, then the settings file, then each --serial-set.
+bool buildSettings(const std::string& dialectText, const std::string& file, const std::vector<std::string>& sets,
+                   RhinoSettings& settings, std::string& error) {
+  Dialect dialect = Dialect::Mark3;
+  if (!serial::parseDialect(dialectText, dialect)) {
+    error = fmt::format("unknown dialect '{}' (mark3 or mark4)", dialectText);
+    return false;
+  }
+  settings = serial::defaultSettings(dialect);
+  if (!file.empty()) {
+    std::optional<std::string> text = readFile(file, error);
+    if (!text) {
+      error = fmt::format("{}: cannot read serial settings: {}", file, error);
+      return false;
+    }
+    error = serial::applySettingsText(settings, *text, file);
+    if (!error.empty()) {
+      if (error.back() == '\n') error.pop_back();
+      return false;
+    }
+  }
+  for (const std::string& s : sets) {
+    error = serial::applySettingArg(settings, s);
+    if (!error.empty()) return false;
+  }
+  return true;
+}
+
+// Everything a serial run owns besides the machine, in the order it must be
+// torn down (last member first): the log link, the port, the log, the
+// clock, and last the Ctrl-C handler.
+struct Connection {
+  std::unique_ptr<serial::InterruptGuard> guard;
+  serial::SteadyClock clock;
+  std::unique_ptr<serial::SerialLog> log;
+  std::unique_ptr<serial::SerialPort> port;
+  std::unique_ptr<serial::LoggedLink> logged;
+};
+
+// The bytes a second Ctrl-C writes from the signal handler.
+std::string emergencyStop(const RhinoSettings& s, const std::vector<vm::MotorSpec>& motors) {
+  const std::string_view end = serial::lineEndBytes(s.lineEnd);
+  if (s.dialect == Dialect::Mark4) return fmt::format("MA{}", end);
+  std::string bytes;
+  for (const vm::MotorSpec& m : motors) bytes += fmt::format("{}X{}", m.letter, end);
+  return bytes;
+}
+
+std::string helpSettingsList() {
+  std::string keys;
+  for (const auto& [key, value] : serial::listSettings(serial::defaultSettings(Dialect::Mark3))) {
+    if (key.rfind("switch.", 0) == 0 && key != "switch.A") continue;
+    if (key.rfind("input.", 0) == 0 && key != "input.1") continue;
+    if (key.rfind("output.", 0) == 0 && key != "output.1.on" && key != "output.1.off") continue;
+    keys += (keys.empty() ? "" : ", ") + key;
+  }
+  return keys;
+}
+
+// --serial-set KEY=VALUE is checked while the command line is parsed.
+CLI::Validator settingValidator() {
+  return CLI::Validator(
+      [](std::string& arg) {
+        RhinoSettings scratch = serial::defaultSettings(Dialect::Mark3);
+        return serial::applySettingArg(scratch, arg);
+      },
+      "KEY=VALUE");
+}
+
+}  // namespace
+
+void addSerialOptions(CLI::App* cmd, SerialOptions& o) {
+  CLI::Option* device =
+      cmd->add_option("--device", o.device,
+                      "Run on a Rhino controller on this serial device, in lock-step (robotsim ports lists them)");
+  cmd->add_option("--dialect", o.dialect, "Controller protocol: mark3 (default) or mark4")
+      ->check(CLI::IsMember({"mark3", "mark4"}))
+      ->needs(device);
+  cmd->add_option("--log-serial", o.logFile, "Write every serial byte each way, with timestamps, to FILE")
+      ->needs(device);
+  cmd->add_option("--serial-set", o.settings,
+                  "Override a serial setting KEY=VALUE (repeatable; keys: " + helpSettingsList() + ", ...)")
+      ->allow_extra_args(false)
+      ->check(settingValidator())
+      ->needs(device);
+  cmd->add_option("--serial-config", o.settingsFile, "Serial settings file: one KEY = VALUE per line")->needs(device);
+  for (const char* name : {"--stimuli", "--input"})
+    if (CLI::Option* stimuli = cmd->get_option_no_throw(name)) device->excludes(stimuli);
+}
+
+std::unique_ptr<vm::Machine> openRhino(const SerialOptions& o, const std::vector<vm::MotorSpec>& motors,
+                                       vm::Micros maxTime, std::string& error) {
+  RhinoSettings settings;
+  if (!buildSettings(o.dialect, o.settingsFile, o.settings, settings, error)) return nullptr;
+  auto conn = std::make_shared<Connection>();
+  if (!o.logFile.empty()) {
+    conn->log = serial::SerialLog::create(o.logFile, error);
+    if (!conn->log) return nullptr;
+  }
+  conn->port = serial::SerialPort::open(o.device, settings.line, error);
+  if (!conn->port) {
+    if (conn->log) conn->log->comment("cannot open: " + error);
+    return nullptr;
+  }
+  conn->guard = std::make_unique<serial::InterruptGuard>();
+  conn->guard->setEmergencyStop(conn->port->fd(), emergencyStop(settings, motors));
+  serial::Link* link = conn->port.get();
+  if (conn->log) {
+    conn->logged = std::make_unique<serial::LoggedLink>(*conn->port, *conn->log, conn->clock);
+    link = conn->logged.get();
+  }
+  auto machine = std::make_unique<serial::RhinoMachine>(motors, settings, *link, conn->clock, conn->log.get(),
+                                                        &conn->guard->flag());
+  machine->keepAlive(conn);
+  machine->setWaitLimit(maxTime);
+  if (vm::Status st = machine->open(); !st) {
+    error = st.message;
+    return nullptr;
+  }
+  return machine;
+}
+
+// --- robotsim ports --------------------------------------------------------------
+
+CLI::App* addPortsCommand(CLI::App& app, PortsOptions& o) {
+  CLI::App* cmd = app.add_subcommand("ports", "List the serial devices a Rhino controller may be on");
+  cmd->add_flag("--all", o.all, "Also list /dev/ttyS* nodes with no UART behind them");
+  cmd->add_flag("--json", o.json, "Print one JSON object");
+  cmd->add_option("--dev", o.root, "Look in this directory instead of /dev");
+  return cmd;
+}
+
+int portsCommand(const PortsOptions& o, std::ostream& out, std::ostream&) {
+  std::vector<serial::PortInfo> ports = serial::listPorts(o.root);
+  std::size_t hidden = 0;
+  if (!o.all) {
+    const auto before = ports.size();
+    std::erase_if(ports, [](const serial::PortInfo& p) { return !p.likely; });
+    hidden = before - ports.size();
+  }
+  if (o.json) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& p : ports) list.push_back({{"path", p.path}, {"note", p.note}, {"likely", p.likely}});
+    out << nlohmann::json{{"ports", list}, {"hidden", hidden}}.dump() << '\n';
+    return kOk;
+  }
+  if (ports.empty()) {
+    out << fmt::format(
+        "No serial devices found (looked for {0}/serial/by-id/*, {0}/ttyUSB*, {0}/ttyACM*, {0}/ttyS*{1}).\n"
+        "Plug in the controller's USB-serial adapter, or try the serial path without a robot:\n"
+        "  robotsim emulate      (prints a device to pass to robotsim run --device)\n",
+        o.root, hidden ? fmt::format("; {} ttyS nodes without a UART hidden, --all shows them", hidden) : "");
+    return kOk;
+  }
+  std::size_t width = 0;
+  for (const auto& p : ports) width = std::max(width, p.path.size());
+  out << "Serial devices (use one with robotsim run --device):\n";
+  for (const auto& p : ports) out << fmt::format("  {:<{}}  {}\n", p.path, width, p.note);
+  if (hidden) out << fmt::format("({} /dev/ttyS* nodes without a UART not shown; --all lists them)\n", hidden);
+  return kOk;
+}
+
+// --- robotsim emulate --------------------------------------------------------------
+
+CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "emulate", "Play a Rhino controller on a pseudo-terminal: run programs with --device on it, no robot needed");
+  cmd->footer(
+      "Console commands (standard input or --script, one per line):\n"
+      "  in N on|off              set input N (1..8)\n"
+      "  switch L open|closed|auto  force motor L's home switch, or let position decide\n"
+      "  fault KIND [after N]     start a fault: silence, garbage, slow, hangup; 'fault off' ends it\n"
+      "  status                   print the whole state\n"
+      "  wait SECONDS             pause the script\n"
+      "  quit                     stop the emulator\n"
+      "See docs/serial.md, \"The emulator\".");
+  cmd->add_option("--dialect", o.dialect, "Controller to play: mark3 (default) or mark4")
+      ->check(CLI::IsMember({"mark3", "mark4"}));
+  cmd->add_option("--robot", o.robot, "Robot whose motors to emulate: library name or .rsd file (default rhino-scara)");
+  cmd->add_option("--lib", o.libDirs, "Also look up robot names in this directory (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_option("--speed", o.speed, "Multiply every motor's step rate (default 1: the robot's speeds)")
+      ->check(CLI::Range(0.01, 1000.0));
+  cmd->add_option("--latency", o.latency, "Seconds before each answer (default 0.005)")->check(CLI::Range(0.0, 10.0));
+  cmd->add_option("--switch-width", o.switchWidth, "A home switch is closed within this many steps of 0 (default 20)")
+      ->check(CLI::Range(0, 10000));
+  cmd->add_option("--start", o.start, "Where motors start, e.g. E=120,D=-40 (default all 0)");
+  cmd->add_option("--fault", o.fault, "Inject a fault: silence, garbage, slow or hangup")
+      ->check(CLI::IsMember({"none", "silence", "garbage", "slow", "hangup"}));
+  cmd->add_option("--fault-after", o.faultAfter, "Serve this many commands normally first (default 0)");
+  cmd->add_option("--slow-delay", o.slowDelay, "With --fault slow: seconds each answer is late (default 2)")
+      ->check(CLI::Range(0.0, 3600.0));
+  cmd->add_option("--script", o.script, "Run console commands from FILE (with 'wait SECONDS' between them)");
+  cmd->add_option("--serial-set", o.settings, "Play a different assumption KEY=VALUE, as for run (repeatable)")
+      ->allow_extra_args(false)
+      ->check(settingValidator());
+  cmd->add_option("--serial-config", o.settingsFile, "Serial settings file, as for run");
+  cmd->add_option("--link", o.link, "Also make this symbolic link to the device (e.g. /tmp/rhino)");
+  cmd->add_option("--duration", o.duration, "Stop after this many seconds (default: run until Ctrl-C or quit)")
+      ->check(CLI::Range(0.0, 1e7));
+  cmd->add_flag("--no-stdin", o.noStdin, "Do not read console commands from standard input");
+  cmd->add_flag("-q,--quiet", o.quiet, "No status line and no event lines");
+  cmd->add_flag("-v,--verbose", o.verbose, "Print every command the host sends");
+  return cmd;
+}
+
+namespace {
+
+struct EmulatorSession {
+  serial::PtyEmulator& emu;
+  std::ostream& out;
+  bool quit = false;
+  vm::Micros waitUntil = 0;  // script: next line not before
+};
+
+// One console line: "" when fine, else what is wrong.
+std::string consoleCommand(EmulatorSession& s, const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> w;
+  for (std::string word; in >> word;) {
+    if (word[0] == '#') break;
+    w.push_back(word);
+  }
+  if (w.empty()) return {};
+  const std::string& verb = w[0];
+  if (verb == "quit" || verb == "exit") {
+    s.quit = true;
+  } else if (verb == "help") {
+    s.out << "in N on|off | switch L open|closed|auto | fault KIND [after N] | fault off | status | wait S | quit\n";
+  } else if (verb == "in" && w.size() == 3 && (w[2] == "on" || w[2] == "off") && w[1].size() == 1 && w[1][0] >= '1' &&
+             w[1][0] <= '8') {
+    s.emu.setInput(w[1][0] - '0', w[2] == "on");
+    s.out << fmt::format("input {} {}\n", w[1], w[2] == "on" ? "ON" : "OFF");
+  } else if (verb == "switch" && w.size() == 3 && w[1].size() == 1 && std::toupper(w[1][0]) >= 'A' &&
+             std::toupper(w[1][0]) <= 'H' && (w[2] == "open" || w[2] == "closed" || w[2] == "auto")) {
+    const char letter = static_cast<char>(std::toupper(w[1][0]));
+    s.emu.forceSwitch(letter, w[2] == "auto" ? std::nullopt : std::optional<bool>(w[2] == "closed"));
+    s.out << fmt::format("switch {} {}\n", letter, w[2]);
+  } else if (verb == "fault" && (w.size() == 2 || (w.size() == 4 && w[2] == "after"))) {
+    serial::FaultPlan plan;
+    if (!serial::parseFault(w[1], plan.kind)) return "fault takes silence, garbage, slow, hangup or off";
+    if (w.size() == 4) {
+      try {
+        plan.after = std::stoull(w[3]);
+      } catch (const std::exception&) {
+        return "fault KIND after N: N is a number of commands";
+      }
+    }
+    s.emu.setFault(plan);
+  } else if (verb == "status") {
+    const serial::EmulatorSnapshot snap = s.emu.snapshot();
+    s.out << s.emu.statusLine() << '\n';
+    for (const serial::EmulatedMotor& m : snap.motors)
+      s.out << fmt::format("  motor {}: position {}, step rate {}/s{}\n", m.letter, m.position, std::lround(m.rate),
+                           m.used ? "" : " (not in the robot)");
+  } else if (verb == "wait" && w.size() == 2) {
+    char* end = nullptr;
+    const double sec = std::strtod(w[1].c_str(), &end);
+    if (end != w[1].c_str() + w[1].size() || !(sec >= 0) || sec > 1e6) return "wait takes seconds";
+    s.waitUntil = s.emu.now() + static_cast<vm::Micros>(std::llround(sec * 1e6));
+  } else {
+    return fmt::format("unknown command '{}' (type help)", line);
+  }
+  return {};
+}
+
+bool parseStart(const std::string& text, std::array<std::int32_t, 8>& start, std::string& error) {
+  std::istringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    const std::size_t eq = item.find('=');
+    const char letter = item.empty() ? 0 : static_cast<char>(std::toupper(item[0]));
+    if (eq != 1 || letter < 'A' || letter > 'H') {
+      error = fmt::format("--start: '{}' is not L=N (motor letter A..H, encoder count)", item);
+      return false;
+    }
+    try {
+      std::size_t used = 0;
+      const long v = std::stol(item.substr(2), &used);
+      if (used != item.size() - 2 || v < -1'000'000 || v > 1'000'000) throw std::out_of_range("range");
+      start[static_cast<std::size_t>(letter - 'A')] = static_cast<std::int32_t>(v);
+    } catch (const std::exception&) {
+      error = fmt::format("--start: '{}' is not L=N with N in -1000000..1000000", item);
+      return false;
+    }
+  }
+  return true;
+}
+
+std::string motorList(const std::vector<vm::MotorSpec>& motors) {
+  std::string s;
+  for (const vm::MotorSpec& m : motors) s += fmt::format("{}{} {}/s", s.empty() ? "" : ", ", m.letter, m.speed);
+  return s;
+}
+
+}  // namespace
+
+int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err) {
+  serial::EmulatorConfig config;
+  std::string error;
+  if (!buildSettings(o.dialect, o.settingsFile, o.settings, config.settings, error)) {
+    err << "robotsim: error: " << error << '\n';
+    return kCompileError;
+  }
+  if (o.robot == stdlib::rhinoScaraName()) {
+    config.motors = stdlib::rhinoScaraMotors();
+  } else {
+    compiler::Library library(compiler::librarySearchPath(o.libDirs));
+    std::optional<workcell::Robot> robot = library.robot(o.robot);
+    for (const compiler::Diagnostic& d : library.diagnostics()) err << compiler::render(d, library.source(d.file));
+    if (!robot) return kCompileError;
+    config.motors = compiler::motorTable(*robot);
+  }
+  for (const vm::MotorSpec& m : config.motors)
+    if (m.letter < 'A' || m.letter > 'H') {
+      err << fmt::format("robotsim: error: motor {}: a Rhino controller has motors A..H only\n", m.letter);
+      return kCompileError;
+    }
+  if (!parseStart(o.start, config.start, error)) {
+    err << "robotsim: error: " << error << '\n';
+    return kCompileError;
+  }
+  config.rateScale = o.speed;
+  config.latency = static_cast<vm::Micros>(std::llround(o.latency * 1e6));
+  config.switchWidth = o.switchWidth;
+  serial::parseFault(o.fault, config.fault.kind);
+  config.fault.after = o.faultAfter;
+  config.fault.slowDelay = static_cast<vm::Micros>(std::llround(o.slowDelay * 1e6));
+  std::vector<std::string> script;
+  if (!o.script.empty()) {
+    std::optional<std::string> text = readFile(o.script, error);
+    if (!text) {
+      err << fmt::format("{}: error: cannot read the script: {}\n", o.script, error);
+      return kCompileError;
+    }
+    std::istringstream lines(*text);
+    for (std::string line; std::getline(lines, line);) script.push_back(line);
+  }
+
+  std::unique_ptr<serial::PtyEmulator> emu = serial::PtyEmulator::open(config, error);
+  if (!emu) {
+    err << "robotsim: error: " << error << '\n';
+    return kRunFailed;
+  }
+  if (!o.link.empty()) {
+    std::error_code ec;
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(o.link, ec)))
+      std::filesystem::remove(o.link, ec);  // a stale link from an earlier run; never a file
+    std::filesystem::create_symlink(emu->path(), o.link, ec);
+    if (ec) err << fmt::format("robotsim: warning: cannot make the link {}: {}\n", o.link, ec.message());
+  }
+  const std::string dialect(serial::dialectName(config.settings.dialect));
+  out << fmt::format("Rhino {} controller emulator on {}{}\n", dialect == "mark3" ? "Mark III" : "Mark IV", emu->path(),
+                     o.link.empty() ? "" : " (also " + o.link + ")");
+  out << fmt::format("robot {}: motors {}; line {}\n", o.robot, motorList(config.motors),
+                     describe(config.settings.line));
+  out << fmt::format("connect: robotsim run PROGRAM --device {} --dialect {}\n", o.link.empty() ? emu->path() : o.link,
+                     dialect);
+  if (config.fault.kind != serial::FaultKind::None)
+    out << fmt::format("fault: {} after {} commands\n", serial::faultName(config.fault.kind), config.fault.after);
+  out << (o.noStdin ? "Ctrl-C quits.\n" : "Type 'help' for commands; Ctrl-C or 'quit' stops.\n");
+  out.flush();
+
+  serial::InterruptGuard guard;
+  EmulatorSession session{*emu, out};
+  const bool statusLine = !o.quiet && &out == &std::cout && ::isatty(STDOUT_FILENO);
+  bool stdinOpen = !o.noStdin;
+  std::string typed;
+  std::size_t scriptLine = 0;
+  std::size_t printed = 0;  // commands already echoed (--verbose)
+  vm::Micros lastStatus = -1'000'000;
+  const vm::Micros end = o.duration > 0 ? emu->now() + static_cast<vm::Micros>(std::llround(o.duration * 1e6)) : 0;
+  const auto clearStatus = [&] {
+    if (statusLine) out << "\r\x1b[K";
+  };
+  while (!guard.flag() && !session.quit && !(end && emu->now() >= end)) {
+    if (emu->pump(20'000, stdinOpen ? STDIN_FILENO : -1)) {
+      char buf[512];
+      const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
+      if (n <= 0)
+        stdinOpen = false;  // EOF: keep emulating (it may run in the background)
+      else
+        typed.append(buf, static_cast<std::size_t>(n));
+    }
+    for (std::size_t nl; (nl = typed.find('\n')) != std::string::npos;) {
+      clearStatus();
+      if (std::string e = consoleCommand(session, typed.substr(0, nl)); !e.empty()) out << e << '\n';
+      typed.erase(0, nl + 1);
+    }
+    while (scriptLine < script.size() && emu->now() >= session.waitUntil && !session.quit) {
+      clearStatus();
+      if (std::string e = consoleCommand(session, script[scriptLine]); !e.empty())
+        out << fmt::format("{}:{}: {}\n", o.script, scriptLine + 1, e);
+      ++scriptLine;
+    }
+    if (o.verbose) {
+      const std::vector<std::string> got = emu->received();
+      for (; printed < got.size(); ++printed) {
+        clearStatus();
+        out << "host: " << got[printed] << '\n';
+      }
+    }
+    if (!o.quiet)
+      for (const std::string& e : emu->takeEvents()) {
+        clearStatus();
+        out << e << '\n';
+      }
+    if (emu->hungUp()) {
+      clearStatus();
+      out << "The emulator hung up as asked (--fault hangup); start it again to reconnect.\n";
+      break;
+    }
+    if (statusLine && emu->now() - lastStatus >= 100'000) {
+      out << '\r' << emu->statusLine() << "\x1b[K";
+      out.flush();
+      lastStatus = emu->now();
+    }
+    out.flush();
+  }
+  clearStatus();
+  out << "emulator stopped: " << emu->statusLine() << '\n';
+  if (!o.link.empty()) {
+    std::error_code ec;
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(o.link, ec))) std::filesystem::remove(o.link, ec);
+  }
+  return kOk;
+}
+
+}  // namespace rs::cli

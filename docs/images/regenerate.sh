@@ -1,0 +1,24 @@
+#!/bin/sh
+# Regenerates the pictures in docs/images with `robotsim render`: one PNG of
+# each library robot (stdlib/robots/*.rsd) at its home pose, and one of each
+# library workcell (stdlib/workcells/*.rsd). Run it after a robot or the
+# renderer changes, and commit the result:
+#
+#   docs/images/regenerate.sh BUILD/robotsim
+#
+# (the build's `docs-images` target runs it). Deterministic: the same robotsim
+# and the same descriptions give the same files.
+set -eu
+robotsim=${1:?usage: regenerate.sh PATH/TO/robotsim}
+here=$(cd "$(dirname "$0")" && pwd)
+stdlib=$(cd "$here/../../stdlib" && pwd)
+for file in "$stdlib"/robots/*.rsd; do
+  name=$(basename "$file" .rsd)
+  "$robotsim" render "$name" --size 800x600 -o "$here/robot-$name.png"
+  echo "docs/images/robot-$name.png"
+done
+for file in "$stdlib"/workcells/*.rsd; do
+  name=$(basename "$file" .rsd)
+  "$robotsim" render "$name" --size 800x600 -o "$here/cell-$name.png"
+  echo "docs/images/cell-$name.png"
+done

@@ -1,0 +1,222 @@
+// The animation page in a real browser: Debian's chromium, headless, driven
+// by playwright-core. Starts everything it needs (robotsim, the browser),
+// touches nothing but loopback/file:// and stops within --timeout seconds.
+//
+//   node tests/browser/animation_test.mjs --robotsim BUILD/robotsim [--out DIR]
+//        [--chromium /usr/bin/chromium] [--timeout 120]
+//
+// Checks: the page loads without fetching anything, its canvas is drawn,
+// its projection equals `robotsim render --dump-lines` to 1e-6 px, dragging
+// turns the picture, the wheel zooms, Play advances the time and the
+// highlighted line, the lamps follow the outputs. Saves DIR/animation.png.
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { parseArgs } from 'node:util';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const source = path.resolve(here, '../..');
+const { values: opt } = parseArgs({
+  options: {
+    robotsim: { type: 'string' },
+    out: { type: 'string' },
+    chromium: { type: 'string', default: '/usr/bin/chromium' },
+    timeout: { type: 'string', default: '120' },
+  },
+});
+if (!opt.robotsim) fail('usage: animation_test.mjs --robotsim PATH [--out DIR] [--chromium PATH] [--timeout S]');
+
+function fail(message) {
+  console.error('FAIL: ' + message);
+  process.exit(1);
+}
+let checks = 0;
+function check(ok, what, detail = '') {
+  if (!ok) throw new Error(what + (detail ? ': ' + detail : ''));
+  checks++;
+  console.log('ok   ' + what + (detail ? '  (' + detail + ')' : ''));
+}
+
+const { chromium } = await import('playwright-core').catch(() =>
+  fail('playwright-core is missing: run `npm ci --prefix tests/browser` (see tests/browser/README.md)'));
+if (!fs.existsSync(opt.chromium)) fail(`no browser at ${opt.chromium}: install Debian's chromium`);
+
+const out = opt.out ? path.resolve(opt.out) : fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-browser-'));
+fs.mkdirSync(out, { recursive: true });
+const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-chromium-'));
+let context = null;
+const deadline = setTimeout(async () => {
+  console.error(`FAIL: timed out after ${opt.timeout} s`);
+  try { await context?.close(); } catch {}
+  fs.rmSync(profile, { recursive: true, force: true });
+  process.exit(1);
+}, Number(opt.timeout) * 1000);
+
+// ---- the page and the reference picture, from robotsim itself
+const examples = path.join(source, 'examples');
+const html = path.join(out, 'run.html');
+const robotsim = (args) => execFileSync(opt.robotsim, args, { encoding: 'utf8', timeout: 30000 });
+robotsim(['animate', path.join(examples, 'pick_and_place.rsp'), '--cell', 'scara-pick',
+          '--stimuli', path.join(examples, 'pick_and_place.stim'), '-o', html]);
+// Moments to compare the page's projection with render's: pick_and_place
+// (the slide C and the gripper A move) and workcell_view (VIEW and WINDOW).
+const AT = 2.5;  // seconds: MOVEP ABOVE_PICK is under way
+const stills = (program, cell, times, extra = []) => times.map((t) => ({
+  t,
+  still: JSON.parse(robotsim(['render', cell, '--program', path.join(examples, program), ...extra, '--at', String(t),
+                              '--dump-lines=json'])),
+}));
+const pickStills = stills('pick_and_place.rsp', 'scara-pick', [AT, 4.2, 6.2, 20],
+                          ['--stimuli', path.join(examples, 'pick_and_place.stim')]);
+const still = pickStills[0].still;
+const viewHtml = path.join(out, 'view.html');
+robotsim(['animate', path.join(examples, 'workcell_view.rsp'), '--cell', 'scara-pick', '-o', viewHtml]);
+const viewStills = stills('workcell_view.rsp', 'scara-pick', [1, 3, 3.6, 5]);
+
+// Largest difference between the page's lines and tools and render's.
+function difference(mine, reference) {
+  if (mine.lines.length !== reference.lines.length) return Infinity;
+  let worst = 0;
+  reference.lines.forEach((l, i) => {
+    const p = mine.lines[i], q = [l.a[0], l.a[1], l.b[0], l.b[1]];
+    for (let k = 0; k < 4; k++) worst = Math.max(worst, Math.abs(p[k] - q[k]));
+  });
+  reference.tools.forEach((t, i) => {
+    worst = Math.max(worst, Math.abs(mine.tools[i][0] - t.at[0]), Math.abs(mine.tools[i][1] - t.at[1]));
+  });
+  return worst;
+}
+const encodersOf = (reference) => reference.legend[1].split(/\s+/).slice(1).map((w) => Number(w.split('=')[1]));
+
+try {
+  context = await chromium.launchPersistentContext(profile, {
+    executablePath: opt.chromium,
+    headless: true,
+    viewport: { width: 1280, height: 800 },
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
+           '--disable-component-update', '--disable-sync'],
+  });
+  const page = context.pages()[0] ?? await context.newPage();
+  const requests = [], errors = [];
+  page.on('request', (r) => requests.push(r.url()));
+  page.on('pageerror', (e) => errors.push(e.message));
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  const url = 'file://' + html;
+  await page.goto(url);
+  await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  check(errors.length === 0, 'the page runs without errors', errors.join('; '));
+
+  // ---- the canvas is drawn: many non-background pixels, in several EGA colours
+  const pixels = () => page.evaluate(() => {
+    const c = document.getElementById('cell'), d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let drawn = 0, hash = 0;
+    const colours = new Set();
+    for (let i = 0; i < d.length; i += 4) {
+      if (d[i] !== 0x10 || d[i + 1] !== 0x12 || d[i + 2] !== 0x1c) drawn++;
+      if (d[i] % 0x55 === 0 && d[i + 1] % 0x55 === 0 && d[i + 2] % 0x55 === 0) colours.add(d[i] * 65536 + d[i + 1] * 256 + d[i + 2]);
+      hash = (hash * 31 + d[i] + 7 * d[i + 1] + 13 * d[i + 2]) >>> 0;
+    }
+    return { drawn, hash, colours: colours.size, width: c.width, height: c.height };
+  });
+  const first = await pixels();
+  check(first.width > 500 && first.height > 400, 'the canvas fills the view', `${first.width}x${first.height}`);
+  check(first.drawn > 2000, 'the canvas is drawn', `${first.drawn} pixels`);
+  check(first.colours >= 4, 'in several EGA colours', `${first.colours}`);
+
+  // ---- the page's kinematics and camera equal robotsim render's
+  const compare = async (list) => {
+    for (const { t, still: reference } of list) {
+      const mine = await page.evaluate((us) => window.robotsim.project(us, 1024, 768), t * 1e6);
+      const worst = difference(mine, reference);
+      check(worst <= 1e-6, `the page projects like render --at ${t}`,
+            `${mine.lines.length} lines, largest difference ${worst.toExponential(2)} px`);
+      check(JSON.stringify(mine.encoders) === JSON.stringify(encodersOf(reference)), `  with the same encoder counts`,
+            mine.encoders.join(' '));
+    }
+  };
+  await compare(pickStills);
+  const legend = encodersOf(still);
+
+  // ---- dragging turns the picture; the wheel zooms
+  const box = await page.locator('#cell').boundingBox();
+  const cx = box.x + box.width / 2, cy = box.y + box.height / 2;
+  await page.mouse.move(cx, cy);
+  await page.mouse.down();
+  for (let i = 1; i <= 10; i++) await page.mouse.move(cx + 12 * i, cy + 4 * i);
+  await page.mouse.up();
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const dragged = await pixels();
+  const user = (await page.evaluate(() => window.robotsim.state)).user;
+  check(user.ry === 60 && user.rx === 20, 'dragging turns the view', `ry ${user.ry}, rx ${user.rx}`);
+  check(dragged.hash !== first.hash, 'the picture changed after the drag');
+  await page.mouse.wheel(0, -240);
+  await page.waitForFunction(() => window.robotsim.state.user.zoom > 1.2, null, { timeout: 5000 });
+  check(true, 'the wheel zooms in', (await page.evaluate(() => window.robotsim.state.user.zoom)).toFixed(3));
+
+  // ---- Play: the time and the highlighted line advance
+  const before = await page.evaluate(() => window.robotsim.state);
+  const currentLi = () => page.evaluate(() => {
+    const li = document.querySelector('#listing li.current');
+    return li ? Number(li.querySelector('.n').textContent) : 0;
+  });
+  const lineBefore = await currentLi();
+  check(before.t === 0 && !before.playing, 'the page starts paused at 0 s');
+  check(lineBefore === before.line && lineBefore > 0, 'the first instruction under way is highlighted', `line ${lineBefore}`);
+  await page.click('#play');
+  await page.waitForFunction((line) => window.robotsim.state.line !== line && window.robotsim.state.t > 1.2e6,
+                             lineBefore, { timeout: 15000 });
+  const during = await page.evaluate(() => window.robotsim.state);
+  const lineDuring = await currentLi();
+  check(during.playing, 'Play plays', `t = ${(during.t / 1e6).toFixed(3)} s`);
+  check(lineDuring === during.line && lineDuring !== lineBefore, 'the highlighted line advances',
+        `line ${lineBefore} -> ${lineDuring}`);
+  const timeText = await page.textContent('#time');
+  check(/^\d+\.\d{3} \/ 34\.900 s$/.test(timeText) && timeText !== '0.000 / 34.900 s', 'the time display advances', timeText);
+  await page.click('#play');
+  check(!(await page.evaluate(() => window.robotsim.state.playing)), 'Pause pauses');
+
+  // ---- scrubbing, speed, lamps and motors
+  await page.evaluate(() => window.robotsim.setTime(1.0e6));  // OUTSIG 1 ON, waiting for the part
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const lamps = await page.evaluate(() => ({
+    outputs: [...document.querySelectorAll('#outputs .lamp')].map((l) => l.classList.contains('on')),
+    state: window.robotsim.state,
+  }));
+  check(lamps.outputs[0] && lamps.state.outputs === 1, 'output 1 is lit while the conveyor runs');
+  await page.selectOption('#speed', '10');
+  check((await page.evaluate(() => window.robotsim.state.speed)) === 10, 'the speed control sets 10x');
+  await page.evaluate(() => window.robotsim.setTime(2.5e6));
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const motors = await page.$$eval('#motors td.v', (tds) => tds.map((td) => Number(td.textContent)));
+  check(JSON.stringify(motors) === JSON.stringify(legend), 'the motor table shows the encoder counts', motors.join(' '));
+
+  // ---- double-click goes back to the starting view; a screenshot for people
+  await page.dblclick('#cell');
+  const reset = (await page.evaluate(() => window.robotsim.state)).user;
+  check(reset.rx === 0 && reset.ry === 0 && reset.zoom === 1, 'double-click resets the view');
+  await page.evaluate(() => { window.robotsim.setTime(6.2e6); });
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const shot = path.join(out, 'animation.png');
+  await page.screenshot({ path: shot });
+  check(fs.statSync(shot).size > 10000, 'screenshot saved', shot);
+
+  // ---- a program's VIEW and WINDOW turn and shift the page's camera as render's
+  await page.goto('file://' + viewHtml);
+  await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
+  await compare(viewStills);
+
+  const foreign = requests.filter((u) => u !== url && u !== 'file://' + viewHtml && !u.startsWith('data:'));
+  check(foreign.length === 0, 'nothing but the page itself was requested', foreign.join(' '));
+  check(errors.length === 0, 'no errors on the way', errors.join('; '));
+  console.log(`PASS: ${checks} checks`);
+} catch (e) {
+  console.error('FAIL: ' + e.message);
+  process.exitCode = 1;
+} finally {
+  clearTimeout(deadline);
+  await context?.close();
+  fs.rmSync(profile, { recursive: true, force: true });
+}

@@ -1,0 +1,69 @@
+// The animation's frame time in Chromium (not a test: it prints numbers for
+// docs/render.md). Makes the page with `robotsim animate`, plays it in
+// headless Debian chromium and reads the page's own statistics: the
+// intervals between requestAnimationFrame timestamps while playing, and the
+// time each frame's drawing took (kinematics, projection, canvas calls).
+//
+//   node tests/browser/frame_bench.mjs --robotsim BUILD/robotsim
+//        --cell DIR/bench-cell.rsd --program DIR/bench.rsp [--seconds 8]
+//
+// render_bench (runtime/render/bench) writes the 5,000-line cell and program.
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { parseArgs } from 'node:util';
+import { chromium } from 'playwright-core';
+
+const { values: opt } = parseArgs({
+  options: {
+    robotsim: { type: 'string' },
+    cell: { type: 'string' },
+    program: { type: 'string' },
+    seconds: { type: 'string', default: '8' },
+    chromium: { type: 'string', default: '/usr/bin/chromium' },
+  },
+});
+if (!opt.robotsim || !opt.cell || !opt.program) {
+  console.error('usage: frame_bench.mjs --robotsim PATH --cell FILE --program FILE [--seconds S]');
+  process.exit(2);
+}
+const work = fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-frames-'));
+const html = path.join(work, 'bench.html');
+execFileSync(opt.robotsim, ['animate', opt.program, '--cell', opt.cell, '-o', html], { stdio: 'inherit' });
+const context = await chromium.launchPersistentContext(path.join(work, 'profile'), {
+  executablePath: opt.chromium,
+  headless: true,
+  viewport: { width: 1364, height: 800 },
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
+         '--disable-component-update', '--disable-sync'],
+});
+try {
+  const page = context.pages()[0] ?? await context.newPage();
+  await page.goto('file://' + html);
+  await page.waitForFunction(() => window.robotsim !== undefined);
+  const info = await page.evaluate(() => {
+    const c = document.getElementById('cell');
+    let lines = 0;
+    for (const r of window.robotsim.model.robots) for (const p of r.parts) lines += p.colors.length;
+    for (const o of window.robotsim.model.objects) lines += o.colors.length;
+    return { lines, width: c.clientWidth, height: c.clientHeight };
+  });
+  const f = (x) => x.toFixed(2);
+  console.log(`frame_bench: ${info.lines} lines, canvas ${info.width}x${info.height} CSS px, ${opt.seconds} s of playback each`);
+  // Two passes: as a user sees it, then with each frame's rasterising forced
+  // inside the timed draw (a pixel read back), which shows the full cost.
+  for (const flush of [false, true]) {
+    await page.evaluate((on) => { window.robotsim.flush = on; window.robotsim.setTime(0); window.robotsim.play(); }, flush);
+    await page.waitForTimeout(1000);  // warm up: JIT, first frames
+    await page.evaluate(() => window.robotsim.resetStats());
+    await page.waitForTimeout(Number(opt.seconds) * 1000);
+    const s = await page.evaluate(() => { window.robotsim.pause(); return window.robotsim.stats(); });
+    console.log(flush ? ' with rasterising in the draw time:' : ' as played:');
+    console.log(`  rAF interval  mean ${f(s.interval.mean)}  p50 ${f(s.interval.p50)}  p95 ${f(s.interval.p95)}  max ${f(s.interval.max)} ms  (${s.interval.count} frames, ${f(1000 / s.interval.mean)} fps)`);
+    console.log(`  draw          mean ${f(s.draw.mean)}  p50 ${f(s.draw.p50)}  p95 ${f(s.draw.p95)}  max ${f(s.draw.max)} ms`);
+  }
+} finally {
+  await context.close();
+  fs.rmSync(work, { recursive: true, force: true });
+}

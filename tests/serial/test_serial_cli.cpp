@@ -1,0 +1,128 @@
+// The serial commands through `robotsim` itself (in-process): run --device
+// on the emulator, the errors a user meets, ports, emulate.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "stdlib/default_robot.h"
+#include "tests/cli/cli_support.h"
+#include "tests/serial/serial_support.h"
+
+namespace {
+
+using namespace rs::serial;
+using rs::testing::runCli;
+using rs::testing::TempDir;
+
+const char* const kProgram =
+    "SET N 3\n"
+    "MOVETO 200 -100 50 20 60\n"
+    "OUTSIG 1 ON\n"
+    "MOVE -50 10 0 0 -20\n"
+    "JMPIN 4 ON done\n"
+    "ADD N 1\n"
+    "done: HRDHOME\n"
+    "END\n";
+
+nlohmann::json summary(const std::string& out) {
+  const auto start = out.rfind("\n{");
+  return nlohmann::json::parse(start == std::string::npos ? out : out.substr(start + 1));
+}
+
+std::unique_ptr<PtyEmulator> emulator(Dialect d, FaultKind fault = FaultKind::None) {
+  EmulatorConfig c;
+  c.settings = defaultSettings(d);
+  c.motors = rs::stdlib::rhinoScaraMotors();  // the default robot
+  c.rateScale = 5;
+  c.fault = {fault, 4, 3'000'000};
+  std::string error;
+  auto emu = PtyEmulator::open(c, error);
+  REQUIRE(emu);
+  emu->start();
+  return emu;
+}
+
+}  // namespace
+
+TEST_CASE("robotsim run --device ends like robotsim run, and logs the bytes", "[serial]") {
+  TempDir dir;
+  const std::string prog = dir.write("prog.rsp", kProgram);
+  const auto sim = runCli({"run", prog, "--format", "json"});
+  REQUIRE(sim.code == 0);
+  for (const char* dialect : {"mark3", "mark4"}) {
+    auto emu = emulator(std::string(dialect) == "mark3" ? Dialect::Mark3 : Dialect::Mark4);
+    const std::string log = (dir.path() / (std::string(dialect) + ".log")).string();
+    const auto real = runCli({"run", prog, "--format", "json", "--device", emu->path(), "--dialect", dialect,
+                              "--log-serial", log, "--serial-set", "timeout=0.3"});
+    INFO(real.err);
+    REQUIRE(real.code == 0);
+    const auto a = summary(sim.out);
+    const auto b = summary(real.out);
+    CHECK(a["motors"] == b["motors"]);
+    CHECK(a["outputs"] == b["outputs"]);
+    CHECK(a["variables"] == b["variables"]);
+    std::ifstream in(log);
+    std::string first;
+    std::getline(in, first);
+    CHECK_THAT(first, Catch::StartsWith(std::string("# robotsim serial log: ") + dialect + " on /dev/"));
+  }
+}
+
+TEST_CASE("robotsim run --device: a failing controller exits 1 after stopping the motors", "[serial]") {
+  TempDir dir;
+  const std::string prog = dir.write("prog.rsp", kProgram);
+  auto emu = emulator(Dialect::Mark3, FaultKind::Silence);
+  const auto r = runCli({"run", prog, "--device", emu->path(), "--serial-set", "timeout=0.2"});
+  CHECK(r.code == 1);
+  CHECK_THAT(r.err, Catch::Contains("error: runtime error: no reply from the controller to"));
+  CHECK_THAT(r.err, Catch::Contains("stop sent to every motor (EX DX CX BX AX)"));
+}
+
+TEST_CASE("robotsim run --device: usage errors", "[serial]") {
+  TempDir dir;
+  const std::string prog = dir.write("prog.rsp", kProgram);
+  const auto missing = runCli({"run", prog, "--device", "/nonexistent/ttyUSB0"});
+  CHECK(missing.code == 1);
+  CHECK(missing.err == "robotsim: error: cannot open /nonexistent/ttyUSB0: No such file or directory\n");
+  CHECK(runCli({"run", prog, "--log-serial", "x.log"}).code == 2);  // needs --device
+  CHECK(runCli({"run", prog, "--device", "/dev/null", "--input", "1=ON"}).code ==
+        2);  // inputs come from the controller
+  CHECK(runCli({"run", prog, "--device", "/dev/null", "--dialect", "mark5"}).code == 2);
+  const auto bad = runCli({"run", prog, "--device", "/dev/null", "--serial-set", "chunk=500"});
+  CHECK(bad.code == 2);
+  CHECK_THAT(bad.err, Catch::Contains("chunk=500: expected 1..127 steps"));
+  const auto notTty = runCli({"check", prog, "--device", "/dev/null"});
+  CHECK(notTty.code == 1);
+  CHECK_THAT(notTty.err, Catch::Contains("/dev/null is not a serial device"));
+}
+
+TEST_CASE("robotsim ports says when there are none", "[serial]") {
+  TempDir dir;
+  const auto none = runCli({"ports", "--dev", dir.path().string()});
+  CHECK(none.code == 0);
+  CHECK_THAT(none.out, Catch::StartsWith("No serial devices found"));
+  CHECK_THAT(none.out, Catch::Contains("robotsim emulate"));
+  std::ofstream(dir.path() / "ttyUSB0") << "";
+  const auto one = runCli({"ports", "--dev", dir.path().string()});
+  CHECK_THAT(one.out, Catch::Contains("ttyUSB0  USB serial adapter"));
+  const auto json = runCli({"ports", "--dev", dir.path().string(), "--json"});
+  CHECK(nlohmann::json::parse(json.out)["ports"].size() == 1);
+}
+
+TEST_CASE("robotsim emulate runs a script and stops", "[serial]") {
+  TempDir dir;
+  const std::string script = dir.write("io.txt", "in 3 on\nswitch E open\nbogus\nwait 0.05\nquit\n");
+  const auto r = runCli({"emulate", "--no-stdin", "--script", script, "--duration", "5"});
+  CHECK(r.code == 0);
+  CHECK_THAT(r.out, Catch::StartsWith("Rhino Mark III controller emulator on /dev/"));
+  CHECK_THAT(r.out, Catch::Contains("input 3 ON"));
+  CHECK_THAT(r.out, Catch::Contains(script + ":3: unknown command 'bogus' (type help)"));
+  CHECK_THAT(r.out, Catch::Contains("emulator stopped: mark3"));
+  CHECK_THAT(r.out, Catch::Contains("in ..3....."));
+  const auto mark4 =
+      runCli({"emulate", "--no-stdin", "--dialect", "mark4", "--robot", "rhino-xr3", "--duration", "0.1"});
+  CHECK(mark4.code == 0);
+  CHECK_THAT(mark4.out, Catch::Contains("Mark IV"));
+  CHECK_THAT(mark4.out, Catch::Contains("F 300/s"));
+  CHECK(runCli({"emulate", "--robot", "no-such-robot", "--no-stdin"}).code == 2);
+  CHECK(runCli({"emulate", "--start", "Z=5", "--no-stdin"}).code == 2);
+}
