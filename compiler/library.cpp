@@ -358,7 +358,7 @@ void Library::readReferences(const DescriptionFile& f) {
 // A file path if it names an existing file, else a library name.
 const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kind) {
   std::error_code ec;
-  if (fs::exists(fileOrName, ec)) return load(fileOrName);
+  if (fs::is_regular_file(fileOrName, ec)) return load(fileOrName);
   // The kind's own folder first; a workcell may also be a lone robot.
   for (const fs::path& dir : searchPath_) {
     std::vector<fs::path> candidates{dir / (fileOrName + ".rsd"), dir / kindFolder(static_cast<int>(kind)) / (fileOrName + ".rsd")};

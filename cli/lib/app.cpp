@@ -7,6 +7,7 @@
 #include "cli/lib/program_file.h"
 #include "cli/lib/report.h"
 #include "cli/lib/robot_commands.h"
+#include "cli/lib/serial_commands.h"
 #include "cli/lib/trace.h"
 #include "compiler/library.h"
 #include "runtime/sim_machine.h"
@@ -34,6 +35,7 @@ struct Options {
   bool tree = false;
   std::string cell;                  // --cell
   std::vector<std::string> libDirs;  // --lib
+  SerialOptions serial;              // --device, --dialect, --log-serial, ...
 };
 
 // The program, compiled for --cell's robot when given; the image then
@@ -140,14 +142,24 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
   printDiagnostics(err, program.diagnostics, program);  // warnings
 
   const vm::Image& image = *program.image;
-  runtime::SimMachine machine(image.motors, std::move(stimuli));
-  vm::Interpreter interpreter(image, machine);
+  const vm::RunLimits limits{o.maxSteps, maxTime.micros};
+  std::unique_ptr<vm::Machine> machine;
+  if (o.serial.active()) {
+    std::string error;
+    machine = openRhino(o.serial, image.motors, limits.maxTime, error);
+    if (!machine) {
+      err << fmt::format("robotsim: error: {}\n", error);
+      return kRunFailed;
+    }
+  } else {
+    machine = std::make_unique<runtime::SimMachine>(image.motors, std::move(stimuli));
+  }
+  vm::Interpreter interpreter(image, *machine);
   std::optional<workcell::ToolTracker> tool;
   if (cell) tool.emplace(cell->robots.front());
   report.tool = tool ? &*tool : nullptr;
   std::optional<TraceWriter> trace;
   if (!o.trace.empty()) trace.emplace(out, o.trace == "json" ? TraceFormat::Json : TraceFormat::Text, report.tool);
-  const vm::RunLimits limits{o.maxSteps, maxTime.micros};
   report.outcome = interpreter.run(limits, trace ? &*trace : nullptr);
   report.image = &image;
   report.vm = &interpreter;
@@ -159,7 +171,7 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);
   else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", image.sourceName,
-                          report.outcome->steps, vm::formatSeconds(machine.now()));
+                          report.outcome->steps, vm::formatSeconds(machine->now()));
   if (!report.outcome->ok()) return kRunFailed;
   return kOk;
 }
@@ -248,11 +260,13 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   run->add_option("file", o.file, "Program source or compiled image")->required();
   run->add_flag("--trace{text}", o.trace, "Print each executed instruction: --trace (text) or --trace=json");
   addRunOptions(run, o);
+  addSerialOptions(run, o.serial);
 
   CLI::App* check = app.add_subcommand("check", "Compile, verify and simulate; exit 0 only if all is well");
   check->add_option("file", o.file, "Program source or compiled image")->required();
   check->add_flag("--strict", o.strict, "Warnings fail the check too");
   addRunOptions(check, o);
+  addSerialOptions(check, o.serial);
 
   CLI::App* compile = app.add_subcommand("compile", "Compile a program to a bytecode image");
   compile->add_option("file", o.file, "Program source")->required();
@@ -290,6 +304,11 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   where->add_option("--theta", rq.theta, "Joint values v,v,... (degrees; a prismatic joint's d)");
   where->add_option("--encoders", rq.encoders, "Encoder counts v,v,... (default: the home position)");
 
+  PortsOptions portsOptions;
+  CLI::App* ports = addPortsCommand(app, portsOptions);
+  EmulateOptions emulateOptions;
+  CLI::App* emulate = addEmulateCommand(app, emulateOptions);
+
   CLI::App* help = app.add_subcommand("help", "Explain the instruction set, or one instruction");
   help->add_option("instruction", helpTopic, "Instruction name, e.g. JMPVAR");
 
@@ -316,6 +335,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   if (table->parsed()) return tableCommand(rq, out, err);
   if (matrix->parsed()) return matrixCommand(rq, out, err);
   if (where->parsed()) return whereCommand(rq, out, err);
+  if (ports->parsed()) return portsCommand(portsOptions, out, err);
+  if (emulate->parsed()) return emulateCommand(emulateOptions, out, err);
   return helpCommand(helpTopic, out, err);
 }
 

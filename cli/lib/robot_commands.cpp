@@ -203,7 +203,13 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
   // Roll, pitch, yaw: rotations about x, y, z applied in that order (R = Rz Ry Rx).
   const Eigen::Matrix3d r = tool.linear();
   const double pitch = std::asin(std::clamp(-r(2, 0), -1.0, 1.0));
-  const double roll = std::atan2(r(2, 1), r(2, 2)), yaw = std::atan2(r(1, 0), r(0, 0));
+  double roll = std::atan2(r(2, 1), r(2, 2)), yaw = std::atan2(r(1, 0), r(0, 0));
+  // At pitch ±90 degrees roll and yaw turn about the same axis (gimbal
+  // lock): only their sum or difference is defined, so yaw is taken as 0.
+  if (std::abs(r(2, 0)) > 1.0 - 1e-9) {
+    yaw = 0.0;
+    roll = std::atan2(-r(1, 2), r(1, 1));
+  }
   const double deg = 180.0 / M_PI;
   // atan2 gives -180 or 180 by the sign of a zero; report (-180, 180].
   const auto angle = [&](double radians) {

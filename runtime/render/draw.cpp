@@ -219,3 +219,8 @@ Decoded decodePng(const std::vector<std::uint8_t>& png) {
 }
 
 }  // namespace rs::render
+
+// fontconfig, behind cairo's text, keeps its caches for the life of the
+// process by design; LeakSanitizer would report them at the exit of every
+// program that draws a legend. (Read only when LeakSanitizer is linked in.)
+extern "C" const char* __lsan_default_suppressions() { return "leak:libfontconfig.so\n"; }

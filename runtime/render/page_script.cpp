@@ -466,9 +466,10 @@ const std::string_view kScript = R"JS('use strict';
   window.robotsim = {
     model,
     get state() {
+      const st = stateAt(S.k, S.t, { enc: new Int32Array(motorCount), view: [0, 0, 0], window: [0, 0, 0] });
       return { t: S.t, step: S.k, index: S.k >= 0 ? run.index[S.k] : -1, line: currentLine(), playing: S.playing,
-               encoders: Array.from(current.enc), outputs: current.outputs, inputs: current.inputs,
-               user: { ...S.user }, speed: S.speed };
+               encoders: Array.from(st.enc), outputs: st.outputs, inputs: st.inputs, view: st.view,
+               window: st.window, user: { ...S.user }, speed: S.speed };
     },
     play, pause, setTime, stepBy,
     setSpeed(v) { S.speed = v; },
