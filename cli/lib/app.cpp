@@ -155,6 +155,7 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
     machine = std::make_unique<runtime::SimMachine>(image.motors, std::move(stimuli));
   }
   vm::Interpreter interpreter(image, *machine);
+  report.realTime = o.serial.active();
   std::optional<workcell::ToolTracker> tool;
   if (cell) tool.emplace(cell->robots.front());
   report.tool = tool ? &*tool : nullptr;

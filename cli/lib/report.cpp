@@ -51,7 +51,7 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   const vm::RunOutcome& o = *r.outcome;
   const std::string where = o.ok() ? "" : fmt::format(" at line {}", im.lines[o.index]);
   out << fmt::format("run of {} on {}: {}{}\n", im.sourceName, im.robotName, reasonText(o.reason), where);
-  out << fmt::format("  simulated time  {} s\n", vm::formatSeconds(m.now()));
+  out << fmt::format("  {}  {} s\n", r.realTime ? "elapsed time   " : "simulated time", vm::formatSeconds(m.now()));
   out << fmt::format("  instructions    {} executed\n", o.steps);
   std::string motors;
   const auto pos = m.positions();

@@ -18,6 +18,7 @@ struct RunReport {
   const vm::Image* image = nullptr;
   const vm::Interpreter* vm = nullptr;
   workcell::ToolTracker* tool = nullptr;  // set when the program ran on a workcell
+  bool realTime = false;                  // ran on a real controller: the clock is wall time
   std::vector<compiler::Diagnostic> diagnostics;  // compile + runtime
   bool ok() const;
 };
