@@ -109,14 +109,19 @@ std::vector<Samples> interleave(const std::vector<Measurement>& measurements, in
   return samples;
 }
 
-Measurement processMeasurement(std::vector<std::string> argv, long* maxRssKiB) {
-  return [argv = std::move(argv), maxRssKiB] {
+Measurement processMeasurement(std::vector<std::string> argv) {
+  return [argv = std::move(argv)] {
     const ProcessRun run = runProcess(argv);
     if (run.exitCode != 0)
       throw std::runtime_error(fmt::format("`{}` failed (exit {})", commandLine(argv), run.exitCode));
-    if (maxRssKiB) *maxRssKiB = std::max(*maxRssKiB, run.maxRssKiB);
     return Sample{run.seconds, run.cpuSeconds};
   };
+}
+
+long selfPeakRssKiB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;
 }
 
 }  // namespace rs::bench

@@ -43,8 +43,14 @@ struct ProcessRun {
   double seconds = 0;     // wall time from spawn to reaped
   double cpuSeconds = 0;  // user + system time of the child
   int exitCode = -1;      // -1 when it did not exit normally (signal)
-  long maxRssKiB = 0;     // peak resident set size of the child
+  long maxRssKiB = 0;     // peak resident set size, as wait4 reports it (below)
 };
+
+// About ProcessRun::maxRssKiB: posix_spawn's child shares the driver's
+// memory until it calls exec, and Linux then records that memory's peak as
+// the child's. wait4 thus reports max(child's peak, driver's peak so far):
+// it is the child's own only when larger than selfPeakRssKiB() was.
+long selfPeakRssKiB();
 
 /// Runs argv[0] (searched in PATH when it has no slash) with stdin, stdout
 /// and stderr on /dev/null and waits for it. Throws std::runtime_error when
@@ -63,8 +69,7 @@ std::vector<Samples> interleave(const std::vector<Measurement>& measurements, in
 
 /// A measurement that runs a process (runProcess) and throws
 /// std::runtime_error, naming the command, if it exits non-zero: a benchmark
-/// must not silently time a failure. With `maxRssKiB`, keeps there the
-/// largest peak RSS seen.
-Measurement processMeasurement(std::vector<std::string> argv, long* maxRssKiB = nullptr);
+/// must not silently time a failure.
+Measurement processMeasurement(std::vector<std::string> argv);
 
 }  // namespace rs::bench

@@ -8,13 +8,26 @@ packages=(
   antlr4 libantlr4-runtime-dev default-jre-headless
   libeigen3-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
   libmimalloc-dev lua5.4 xxd
+  libcairo2-dev chromium fonts-liberation nodejs npm
 )
+
+# The browser test's driver (playwright-core, pinned in package-lock.json).
+install_node_modules() {
+  if [ ! -d tests/browser/node_modules/playwright-core ]; then
+    echo "setup: npm ci in tests/browser" >&2
+    npm ci --prefix tests/browser --no-audit --no-fund >/dev/null
+  fi
+}
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+cd "$(dirname "$0")/.."
+if [ ${#missing[@]} -eq 0 ]; then
+  install_node_modules
+  exit 0
+fi
 
 echo "setup: installing ${missing[*]}" >&2
 sudo=""
@@ -22,3 +35,4 @@ sudo=""
 export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+install_node_modules

@@ -5,6 +5,7 @@
 
 #include "cli/lib/help.h"
 #include "cli/lib/program_file.h"
+#include "cli/lib/render_commands.h"
 #include "cli/lib/report.h"
 #include "cli/lib/robot_commands.h"
 #include "cli/lib/serial_commands.h"
@@ -310,6 +311,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   EmulateOptions emulateOptions;
   CLI::App* emulate = addEmulateCommand(app, emulateOptions);
 
+  const RenderCommands renderCommands(app);  // render, animate
   CLI::App* help = app.add_subcommand("help", "Explain the instruction set, or one instruction");
   help->add_option("instruction", helpTopic, "Instruction name, e.g. JMPVAR");
 
@@ -323,6 +325,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
     err << fmt::format("robotsim: error: --trace takes text or json, not '{}'\n", o.trace);
     return kCompileError;
   }
+  if (const std::optional<int> code = renderCommands.run(out, err)) return *code;
   if (run->parsed()) return runOrCheck(o, false, out, err);
   if (check->parsed()) return runOrCheck(o, true, out, err);
   if (compile->parsed()) return compileCommand(o, out, err);

@@ -1,8 +1,8 @@
 #include "cli/lib/render_commands.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -144,7 +144,8 @@ Loaded load(const RenderOptions& o, bool wantProgram, std::ostream& err) {
     }
     if (!sameMotors(image, *l.cell)) {
       err << fmt::format("{}: error: the image was compiled for robot '{}', whose motors differ from those of '{}'\n",
-                         o.program, image.robotName, l.cell->robots.empty() ? l.cell->name : l.cell->robots.front().robot.name);
+                         o.program, image.robotName,
+                         l.cell->robots.empty() ? l.cell->name : l.cell->robots.front().robot.name);
       return l;
     }
   } else if (!l.cell) {
@@ -159,8 +160,10 @@ Loaded load(const RenderOptions& o, bool wantProgram, std::ostream& err) {
 bool loadStimuli(const RenderOptions& o, runtime::Stimuli& stimuli, std::ostream& err) {
   bool ok = true;
   const auto report = [&](const runtime::StimuliError& e) {
-    err << compiler::render({e.file, {static_cast<std::uint32_t>(e.line), static_cast<std::uint32_t>(e.column)},
-                             compiler::Severity::Error, e.message},
+    err << compiler::render({e.file,
+                             {static_cast<std::uint32_t>(e.line), static_cast<std::uint32_t>(e.column)},
+                             compiler::Severity::Error,
+                             e.message},
                             nullptr);
     ok = false;
   };
@@ -265,8 +268,10 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     caption.seconds = static_cast<double>(o.at.empty() ? m.clock : at) / 1e6;
   }
   const render::Picture picture = render::makePicture(poser, camera, fit, caption);
-  if (o.dump == "json") render::dumpJson(out, picture, cell);
-  else if (!o.dump.empty()) render::dumpText(out, picture, cell);
+  if (o.dump == "json")
+    render::dumpJson(out, picture, cell);
+  else if (!o.dump.empty())
+    render::dumpText(out, picture, cell);
   if (format) {
     render::Encoded encoded = render::encodePicture(picture, *format);
     if (encoded.bytes.empty()) {

@@ -19,11 +19,11 @@ namespace rs::cli {
 inline constexpr std::uint64_t kAnimateMaxSteps = 1'000'000;
 
 struct RenderOptions {
-  std::string cell;                  // render: positional; animate: --cell
-  std::string program;               // render: --program; animate: positional
-  std::string at;                    // render --at SECONDS
-  std::string output;                // -o
-  std::string view, window, size;    // "x,y,z", "x,y,z", "WxH"
+  std::string cell;                // render: positional; animate: --cell
+  std::string program;             // render: --program; animate: positional
+  std::string at;                  // render --at SECONDS
+  std::string output;              // -o
+  std::string view, window, size;  // "x,y,z", "x,y,z", "WxH"
   double zoom = 1.0;
   bool axes = false;
   std::string dump;                  // --dump-lines: "", "text" or "json"

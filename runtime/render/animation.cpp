@@ -172,8 +172,10 @@ std::string animationHtml(const AnimationInput& input) {
   std::string safe;
   safe.reserve(json.size());
   for (char c : json) {
-    if (c == '<') safe += "\\u003c";
-    else safe += c;
+    if (c == '<')
+      safe += "\\u003c";
+    else
+      safe += c;
   }
   std::string html;
   html.reserve(safe.size() + pageScript().size() + pageStyle().size() + 4096);

@@ -13,10 +13,9 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "runtime/render/camera.h"
 #include "runtime/render/recording.h"
@@ -26,8 +25,8 @@ namespace rs::render {
 
 /// The program as the page lists it.
 struct Listing {
-  std::string name;                 ///< file name shown in the title
-  std::vector<std::string> lines;   ///< the source text's lines (or a disassembly)
+  std::string name;                   ///< file name shown in the title
+  std::vector<std::string> lines;     ///< the source text's lines (or a disassembly)
   std::vector<std::uint32_t> lineOf;  ///< 1-based listing line of each instruction
 };
 
@@ -35,8 +34,8 @@ struct AnimationInput {
   const workcell::Workcell* cell = nullptr;  ///< its first robot ran the program
   const RunRecording* run = nullptr;
   Listing listing;
-  Camera camera;         ///< the starting camera (width/height are ignored)
-  std::string outcome;   ///< how the run stopped, for people ("" = END)
+  Camera camera;        ///< the starting camera (width/height are ignored)
+  std::string outcome;  ///< how the run stopped, for people ("" = END)
 };
 
 /// The page's data: {"title", "cell", "fit", "camera", "robots", "objects",

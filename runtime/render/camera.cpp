@@ -8,6 +8,14 @@
 
 namespace rs::render {
 
+namespace {
+
+// How much of the picture the workcell may fill: a little less in height,
+// to leave the legend room above it.
+constexpr double kFitWidth = 0.9, kFitHeight = 0.84;
+
+}  // namespace
+
 // The points' bounding box in view coordinates gives the centre (turned
 // back into the world) and the scale s that fits it; the radius is the
 // one for which the camera formula gives s at zoom 1.
@@ -19,8 +27,8 @@ Fit fitView(std::span<const Eigen::Vector3d> points, const Camera& camera) {
   const Eigen::Vector3d size = box.sizes();
   const double W = camera.width, H = camera.height;
   double s = std::numeric_limits<double>::infinity();
-  if (size.x() > 1e-9 * (1 + box.max().cwiseAbs().maxCoeff())) s = std::min(s, 0.9 * W / size.x());
-  if (size.y() > 1e-9 * (1 + box.max().cwiseAbs().maxCoeff())) s = std::min(s, 0.9 * H / size.y());
+  if (size.x() > 1e-9 * (1 + box.max().cwiseAbs().maxCoeff())) s = std::min(s, kFitWidth * W / size.x());
+  if (size.y() > 1e-9 * (1 + box.max().cwiseAbs().maxCoeff())) s = std::min(s, kFitHeight * H / size.y());
   const double unit = 0.45 * std::min(W, H);
   return {R.transpose() * box.center(), std::isfinite(s) ? unit / s : 1.0};
 }

@@ -15,9 +15,10 @@
 // the workcell about its vertical like a turntable, dragging up and down
 // tilts it towards the viewer. `center` and `radius` are the fit (fitView):
 // chosen once for the starting view so that the workcell at its placed pose
-// fills 90% of the picture at zoom 1; turning the view or running the
-// program does not change them, so nothing jumps. The HTML page uses
-// exactly this formula (runtime/render/page_script.cpp).
+// fills 90% of the picture's width or 84% of its height (room for the
+// legend) at zoom 1; turning the view or running the program does not
+// change them, so nothing jumps. The HTML page uses exactly this formula
+// (runtime/render/page_script.cpp).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -45,9 +46,9 @@ struct Fit {
 };
 
 /// The fit that centres `points` in camera.width x camera.height as seen
-/// through camera.view and makes them fill 90% of it in the tighter
-/// direction (zoom and window are not used). {origin, 1} when there are no
-/// points; a single point gets radius 1.
+/// through camera.view and makes them fill 90% of its width or 84% of its
+/// height, whichever is tighter (zoom and window are not used). {origin, 1}
+/// when there are no points; a single point gets radius 1.
 Fit fitView(std::span<const Eigen::Vector3d> points, const Camera& camera);
 
 /// Rx(x)·Ry(y)·Rz(z) for angles in degrees, exact at multiples of 90.

@@ -35,9 +35,10 @@ void setColor(cairo_t* cr, Rgb c, double alpha = 1.0) {
 }
 
 // For pixels, each line is its own stroke, in the description's order:
-// cairo's tessellator then never holds thousands of edges at once, which
-// halves the time for 5,000 lines. For SVG, one path per colour keeps the
-// file small. Butt caps: square ones cost half as much again.
+// cairo's tessellator then never holds thousands of edges at once (for
+// 5,000 lines, a quarter of the time of one path per colour; see
+// docs/render.md). For SVG, one path per colour keeps the file small. Butt
+// caps: square ones cost half as much again.
 void drawLines(cairo_t* cr, const Picture& picture, bool pathPerColor) {
   cairo_set_line_width(cr, kLineWidth);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
@@ -143,7 +144,8 @@ Encoded failed(cairo_status_t status) { return {{}, std::string("cairo: ") + cai
 std::optional<ImageFormat> formatFromPath(std::string_view path) {
   if (path.size() < 4) return std::nullopt;
   std::string ext(path.substr(path.size() - 4));
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext == ".png") return ImageFormat::Png;
   if (ext == ".svg") return ImageFormat::Svg;
   return std::nullopt;
@@ -179,8 +181,7 @@ Encoded encodePicture(const Picture& picture, ImageFormat format) {
     if (result.bytes.empty()) return {{}, "zlib: cannot compress the image"};
   } else {
     cairo_surface_finish(surface.get());
-    if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
-      return failed(cairo_surface_status(surface.get()));
+    if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return failed(cairo_surface_status(surface.get()));
   }
   return result;
 }

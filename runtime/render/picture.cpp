@@ -1,6 +1,7 @@
 #include "runtime/render/picture.h"
 
 #include <fmt/format.h>
+
 #include <nlohmann/json.hpp>
 
 #include "runtime/render/palette.h"
@@ -111,8 +112,9 @@ void dumpJson(std::ostream& out, const Picture& picture, const workcell::Workcel
                       {"window", {c.window.x(), c.window.y(), c.window.z()}},
                       {"zoom", c.zoom},
                       {"axes", c.axes}}},
-                    {"fit", {{"center", {picture.fit.center.x(), picture.fit.center.y(), picture.fit.center.z()}},
-                             {"radius", picture.fit.radius}}},
+                    {"fit",
+                     {{"center", {picture.fit.center.x(), picture.fit.center.y(), picture.fit.center.z()}},
+                      {"radius", picture.fit.radius}}},
                     {"lines", lines},
                     {"tools", tools},
                     {"legend", picture.legend}};

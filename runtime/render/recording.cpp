@@ -24,8 +24,8 @@ vm::Micros later(vm::Micros t, vm::Micros delay) {
 // The last element whose `step` is <= step, by binary search; null if none.
 template <typename T>
 const T* lastUpTo(const std::vector<T>& items, std::size_t step) {
-  auto it = std::upper_bound(items.begin(), items.end(), step,
-                             [](std::size_t s, const T& item) { return s < item.step; });
+  auto it =
+      std::upper_bound(items.begin(), items.end(), step, [](std::size_t s, const T& item) { return s < item.step; });
   return it == items.begin() ? nullptr : &*(it - 1);
 }
 
@@ -114,7 +114,8 @@ RunRecording RunRecorder::finish(const vm::RunOutcome& outcome, const runtime::S
   for (std::size_t k = 0; k < inputsAtEnd_.size() && consistent; ++k) {
     const vm::Micros t = rec_.steps[k].end;
     if (k + 1 < inputsAtEnd_.size() && rec_.steps[k + 1].end == t) continue;
-    auto it = std::upper_bound(levels.begin(), levels.end(), t, [](vm::Micros v, const InputLevel& l) { return v < l.at; });
+    auto it =
+        std::upper_bound(levels.begin(), levels.end(), t, [](vm::Micros v, const InputLevel& l) { return v < l.at; });
     consistent = (it - 1)->inputs == inputsAtEnd_[k];
   }
   if (consistent) {

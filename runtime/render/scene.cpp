@@ -40,8 +40,7 @@ CellPoser::CellPoser(const workcell::Workcell& cell) : cell_(&cell), robots_(cel
     s.encoders.assign(motors, 0);
     s.q.assign(frames - 1, 0.0);
     pose(r);
-    for (std::size_t i = 0; i < frames; ++i)
-      s.M[i] = s.F_world_i[i].inverse(Eigen::Isometry) * placed.F_world_design;
+    for (std::size_t i = 0; i < frames; ++i) s.M[i] = s.F_world_i[i].inverse(Eigen::Isometry) * placed.F_world_design;
   }
   std::vector<Line3> home;
   lines(home);

@@ -70,9 +70,7 @@ class CellPoser {
 
   /// F_world_i(home)⁻¹ · F_world_design for frame i: takes design points
   /// into frame i's coordinates (what the HTML page's model stores).
-  const Eigen::Isometry3d& designInFrame(std::size_t robot, std::size_t i) const {
-    return robots_[robot].M[i];
-  }
+  const Eigen::Isometry3d& designInFrame(std::size_t robot, std::size_t i) const { return robots_[robot].M[i]; }
 
  private:
   struct RobotState {

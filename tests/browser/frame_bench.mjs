@@ -34,7 +34,7 @@ execFileSync(opt.robotsim, ['animate', opt.program, '--cell', opt.cell, '-o', ht
 const context = await chromium.launchPersistentContext(path.join(work, 'profile'), {
   executablePath: opt.chromium,
   headless: true,
-  viewport: { width: 1364, height: 800 },
+  viewport: { width: 1404, height: 800 },  // a 1024-pixel-wide canvas
   args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
          '--disable-component-update', '--disable-sync'],
 });

@@ -9,7 +9,6 @@
 // every motor, 60 s simulated). Not a test: it prints numbers
 // (docs/render.md).
 #include <fmt/format.h>
-
 #include <time.h>
 
 #include <algorithm>
@@ -125,7 +124,8 @@ Stats time(int reps, F&& f) {
 }
 
 void print(const char* what, const Stats& s, const std::string& extra = {}) {
-  fmt::print("  {:<22} {:7.2f} {:7.2f}   {:7.2f} {:7.2f}   {}\n", what, s.best, s.median, s.cpuBest, s.cpuMedian, extra);
+  fmt::print("  {:<22} {:7.2f} {:7.2f}   {:7.2f} {:7.2f}   {}\n", what, s.best, s.median, s.cpuBest, s.cpuMedian,
+             extra);
 }
 
 }  // namespace
@@ -135,8 +135,10 @@ int main(int argc, char** argv) {
   std::filesystem::path dir = std::filesystem::temp_directory_path() / "robotsim-render-bench";
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--reps") reps = std::max(1, std::atoi(argv[i + 1]));
-    else if (a == "--workdir") dir = argv[i + 1];
+    if (a == "--reps")
+      reps = std::max(1, std::atoi(argv[i + 1]));
+    else if (a == "--workdir")
+      dir = argv[i + 1];
   }
   std::filesystem::create_directories(dir);
   const auto cellPath = dir / "bench-cell.rsd", programPath = dir / "bench.rsp";
@@ -175,9 +177,9 @@ int main(int argc, char** argv) {
   std::size_t encoded = 0;
   const Stats pngOnly = time(reps, [&] {
     encoded = rs::render::encodePng(1024, 768, [&](int y, std::uint8_t* rgb) {
-      gray[static_cast<std::size_t>(y)] = 0xFF;  // a little structure per row
-      std::copy(gray.begin(), gray.end(), rgb);
-    }).size();
+                gray[static_cast<std::size_t>(y)] = 0xFF;  // a little structure per row
+                std::copy(gray.begin(), gray.end(), rgb);
+              }).size();
   });
   fmt::print("render_bench: {} lines, 1024x768; ms: wall best, median; CPU best, median ({} runs)\n", lines, reps);
   print("pose + project", project);

@@ -1,0 +1,55 @@
+// Forward-kinematics benchmark (issue 3, "Tests and numbers"): ns per call
+// of forwardKinematics on a 6-axis arm (the PUMA 560's D-H table), with a
+// preallocated ChainData and fixed-size Eigen types: nothing allocates in
+// the loop. Run by `make bench`; figures go to docs/performance.md.
+#include <chrono>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "runtime/kinematics/chain_data.h"
+#include "runtime/kinematics/chain_model.h"
+#include "runtime/kinematics/forward_kinematics.h"
+
+namespace {
+
+namespace kin = rs::kinematics;
+
+// PUMA 560 in standard D-H (Craig's table shifted one row; stdlib/robots/puma560.rsd).
+kin::ChainModel puma560() {
+  const kin::JointType R = kin::JointType::Revolute;
+  const std::vector<kin::DhRow> table{{R, 0, -90, 0, 0},     {R, 0, 0, 431.8, 0}, {R, 0, -90, 20.32, 149.09},
+                                      {R, 0, 90, 0, 433.07}, {R, 0, -90, 0, 0},   {R, 0, 0, 0, 56.25}};
+  const std::vector<kin::JointDrive> drives(table.size());
+  return *kin::ChainModel::fromDh(Eigen::Isometry3d::Identity(), table, drives).value;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const long calls = argc > 1 ? std::atol(argv[1]) : 5'000'000;
+  const int reps = argc > 2 ? std::atoi(argv[2]) : 5;
+  const kin::ChainModel model = puma560();
+  kin::ChainData data(model);
+  // 1024 joint vectors made up front (fixed seed), so the loop only computes.
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> angle(-170.0, 170.0);
+  std::vector<double> q(1024 * 6);
+  for (double& v : q) v = angle(rng);
+
+  std::printf("forward kinematics, 6-axis arm (PUMA 560 D-H), %ld calls per run, best of %d\n", calls, reps);
+  double best = 1e300, checksum = 0;
+  for (int r = 0; r < reps; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    for (long i = 0; i < calls; ++i) {
+      const std::span<const double> qi(q.data() + (i & 1023) * 6, 6);
+      kin::forwardKinematics(model, data, qi);
+      checksum += data.F_0_i[6](0, 3);  // keeps the work observable
+    }
+    const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+    best = std::min(best, ns / static_cast<double>(calls));
+  }
+  std::printf("  %.1f ns per call (checksum %.6g)\n", best, checksum);
+  std::printf("  target <= 100 ns per call: %s\n", best <= 100.0 ? "met" : "missed");
+  return 0;
+}

@@ -1,0 +1,53 @@
+// Helpers shared by the renderer tests: library workcells, programs
+// compiled for them, and the stdlib robots by name.
+#pragma once
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/lib/program_file.h"
+#include "compiler/library.h"
+#include "runtime/workcell/model.h"
+#include "tests/cli/cli_support.h"
+
+namespace rendertest {
+
+inline const std::string kSourceDir = ROBOTSIM_SOURCE_DIR;
+
+/// A workcell (or a robot standing where it was drawn) from the library.
+inline rs::workcell::Workcell cell(const std::string& name) {
+  rs::compiler::Library library(rs::compiler::librarySearchPath({}));
+  std::optional<rs::workcell::Workcell> c = library.workcell(name);
+  for (const auto& d : library.diagnostics()) INFO(d.message);
+  REQUIRE(c);
+  return *c;
+}
+
+/// The names of stdlib/robots/*.rsd, sorted.
+inline std::vector<std::string> libraryRobots() {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(kSourceDir + "/stdlib/robots"))
+    if (entry.path().extension() == ".rsd") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/// A program source compiled for the first robot of `c`.
+inline rs::vm::Image compile(const std::string& path, const rs::workcell::Workcell& c) {
+  rs::cli::LoadedProgram p = rs::cli::loadProgram(path, rs::cli::cellTarget(c));
+  for (const auto& d : p.diagnostics) INFO(d.message);
+  REQUIRE(p.image);
+  return *p.image;
+}
+
+/// A program given as text, written to a scratch file and compiled.
+inline rs::vm::Image compileText(const std::string& text, const rs::workcell::Workcell& c) {
+  const rs::testing::TempDir dir;
+  return compile(dir.write("program.rsp", text), c);
+}
+
+}  // namespace rendertest

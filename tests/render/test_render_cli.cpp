@@ -1,0 +1,176 @@
+// `robotsim render` and `robotsim animate` end to end, in-process.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "render_test_util.h"
+#include "runtime/render/draw.h"
+
+using rs::testing::readBytes;
+using rs::testing::runCli;
+using rs::testing::TempDir;
+
+namespace {
+
+const std::string kExamples = rendertest::kSourceDir + "/examples/";
+
+// The model a page embeds, parsed back.
+nlohmann::json pageModel(const std::string& html) {
+  const std::string open = "<script type=\"application/json\" id=\"robotsim-model\">";
+  const std::size_t a = html.find(open);
+  REQUIRE(a != std::string::npos);
+  const std::size_t b = html.find("</script>", a);
+  REQUIRE(b != std::string::npos);
+  return nlohmann::json::parse(html.substr(a + open.size(), b - a - open.size()));
+}
+
+}  // namespace
+
+TEST_CASE("render writes a PNG and an SVG of a library workcell", "[render][cli]") {
+  const TempDir dir;
+  const auto png = runCli({"render", "scara-pick", "-o", dir.file("cell.png")});
+  INFO(png.err);
+  REQUIRE(png.code == 0);
+  const std::string bytes = readBytes(dir.file("cell.png"));
+  const rs::render::Decoded d = rs::render::decodePng({bytes.begin(), bytes.end()});
+  CHECK(d.error.empty());
+  CHECK(d.width == 1024);
+  CHECK(d.height == 768);
+  REQUIRE(runCli({"render", "scara-pick", "--size", "320x200", "-o", dir.file("small.PNG")}).code == 0);
+  const std::string small = readBytes(dir.file("small.PNG"));
+  CHECK(rs::render::decodePng({small.begin(), small.end()}).width == 320);
+  REQUIRE(runCli({"render", "scara-pick", "--axes", "--view", "0,90,0", "-o", dir.file("cell.svg")}).code == 0);
+  CHECK(readBytes(dir.file("cell.svg")).rfind("<?xml", 0) == 0);
+}
+
+TEST_CASE("render --dump-lines prints the same lines as text and JSON", "[render][cli]") {
+  const auto text = runCli({"render", "puma-cell", "--dump-lines", "--view", "10,20,30", "--zoom", "1.5"});
+  const auto json = runCli({"render", "puma-cell", "--dump-lines=json", "--view", "10,20,30", "--zoom", "1.5"});
+  REQUIRE(text.code == 0);
+  REQUIRE(json.code == 0);
+  const auto doc = nlohmann::json::parse(json.out);
+  std::istringstream rows(text.out);
+  std::string row;
+  std::size_t n = 0;
+  while (std::getline(rows, row))
+    if (row.rfind("robot ", 0) == 0 || row.rfind("object ", 0) == 0) {
+      std::istringstream words(row);
+      std::string owner, index, name, part, color;
+      double u1, v1, u2, v2;
+      words >> owner >> index >> name >> part >> color >> u1 >> v1 >> u2 >> v2;
+      const auto& l = doc["lines"].at(n++);
+      CHECK(l["part"] == part);
+      CHECK(l["color"] == color);
+      CHECK(l["a"][0].get<double>() == Approx(u1).margin(1e-8));
+      CHECK(l["b"][1].get<double>() == Approx(v2).margin(1e-8));
+    }
+  CHECK(n == doc["lines"].size());
+  CHECK(doc["camera"]["zoom"] == 1.5);
+  CHECK(doc["tools"].size() == 1);
+}
+
+TEST_CASE("render --program --at draws a moment of the run", "[render][cli]") {
+  // first_moves.rsp: MOVETO 400 200 0 0 0 takes 1 s (E at 400 units/s).
+  const auto half =
+      runCli({"render", "scara-pick", "--program", kExamples + "first_moves.rsp", "--at", "0.5", "--dump-lines=json"});
+  INFO(half.err);
+  REQUIRE(half.code == 0);
+  const auto doc = nlohmann::json::parse(half.out);
+  CHECK(doc["legend"][0] == "first_moves.rsp on scara-pick   t = 0.500 s");
+  CHECK(doc["legend"][1] == "rhino-scara  E=200 D=200 C=0 B=0 A=0");
+  // Without --at: the end of the run.
+  const auto end = runCli({"render", "scara-pick", "--program", kExamples + "first_moves.rsp", "--dump-lines=json"});
+  REQUIRE(end.code == 0);
+  CHECK(nlohmann::json::parse(end.out)["legend"][0] == "first_moves.rsp on scara-pick   t = 5.333 s");
+  // VIEW and WINDOW executed by the program change the camera from then on.
+  const auto viewed =
+      runCli({"render", "scara-pick", "--program", kExamples + "workcell_view.rsp", "--at", "3", "--dump-lines=json"});
+  REQUIRE(viewed.code == 0);
+  const auto cam = nlohmann::json::parse(viewed.out)["camera"];
+  CHECK(cam["view"] == nlohmann::json::array({25.0 + 30, -35.0, 45.0}));
+  CHECK(cam["window"] == nlohmann::json::array({0.0, -100.0, 50.0}));
+}
+
+TEST_CASE("render and animate reject bad options and inputs clearly", "[render][cli]") {
+  const TempDir dir;
+  const auto expectError = [](const std::vector<std::string>& args, int code, const std::string& message) {
+    const auto r = runCli(args);
+    INFO(r.err);
+    CHECK(r.code == code);
+    CHECK(r.err.find(message) != std::string::npos);
+  };
+  expectError({"render", "scara-pick", "--view", "1,2", "--dump-lines"}, 2, "--view takes three numbers");
+  expectError({"render", "scara-pick", "--window", "a,b,c", "--dump-lines"}, 2, "--window takes three numbers");
+  expectError({"render", "scara-pick", "--zoom", "0", "--dump-lines"}, 2, "--zoom takes a number above 0");
+  expectError({"render", "scara-pick", "--size", "10x10", "--dump-lines"}, 2, "--size takes");
+  expectError({"render", "scara-pick", "-o", dir.file("x.jpg")}, 2, "must end in .png or .svg");
+  expectError({"render", "scara-pick"}, 2, "give -o");
+  expectError({"render", "scara-pick", "--at", "1", "--dump-lines"}, 2, "--at needs --program");
+  expectError({"render", "no-such-cell", "--dump-lines"}, 2, "no-such-cell");
+  expectError({"render", "scara-pick", "--dump-lines=xml"}, 2, "--dump-lines takes text or json");
+  expectError({"render", "scara-pick", "--program", kExamples + "first_moves.rsp", "--at", "-1", "--dump-lines"}, 2,
+              "--at");
+  expectError({"animate", kExamples + "first_moves.rsp", "-o", dir.file("x.html")}, 2, "--cell");
+  expectError({"render", "scara-pick", "-o", dir.file("missing/dir/x.png")}, 2, "cannot write");
+  CHECK_FALSE(std::filesystem::exists(dir.file("x.jpg")));
+  CHECK_FALSE(std::filesystem::exists(dir.file("x.html")));
+  // A run that fails before the moment asked for.
+  const std::string stuck = dir.write("stuck.rsp", "MOVE 100 0 0 0 0\nWAITFOR 3 ON\nEND\n");
+  expectError({"render", "scara-pick", "--program", stuck, "--at", "5", "--dump-lines"}, 1, "never turns ON");
+}
+
+TEST_CASE("animate writes one self-contained page with the run in it", "[render][cli]") {
+  const TempDir dir;
+  const auto r = runCli({"animate", kExamples + "pick_and_place.rsp", "--cell", "scara-pick", "--stimuli",
+                         kExamples + "pick_and_place.stim", "-o", dir.file("run.html")});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("59 instructions executed") != std::string::npos);
+  const std::string html = readBytes(dir.file("run.html"));
+  CHECK(html.rfind("<!DOCTYPE html>", 0) == 0);
+  // Nothing to fetch: no external references, and a policy that forbids them.
+  for (const char* ref : {" src=", " href=", "http://", "https://", "@import", "url("})
+    CHECK(html.find(ref) == std::string::npos);
+  CHECK(html.find("default-src 'none'") != std::string::npos);
+  const auto model = pageModel(html);
+  CHECK(model["cell"] == "scara-pick");
+  CHECK(model["robots"].size() == 1);
+  CHECK(model["objects"].size() == 5);
+  CHECK(model["run"]["index"].size() == 59);
+  CHECK(model["run"]["end"] == 34'900'000);
+  CHECK(model["run"]["motors"].size() == 5);
+  CHECK(model["run"]["outcome"] == "");
+  CHECK(model["program"]["lines"].size() > 30);
+  CHECK(model["run"]["inputs"]["at"].size() > 3);
+}
+
+TEST_CASE("animate keeps a failed run up to the failure and says why", "[render][cli]") {
+  const TempDir dir;
+  const std::string stuck = dir.write("stuck.rsp", "MOVE 100 0 0 0 0\nWAITFOR 3 ON\nEND\n");
+  const auto r = runCli({"animate", stuck, "--cell", "scara-pick", "-o", dir.file("run.html")});
+  CHECK(r.code == 1);
+  CHECK(r.err.find("never turns ON") != std::string::npos);
+  const auto model = pageModel(readBytes(dir.file("run.html")));
+  CHECK(model["run"]["index"].size() == 2);
+  CHECK(model["run"]["outcome"].get<std::string>().find("line 2:") == 0);
+}
+
+TEST_CASE("animate's listing: the source, or the disassembly of an image", "[render][cli]") {
+  const TempDir dir;
+  // A </script> in a comment must not end the page's data.
+  const std::string prog = dir.write("p.rsp", "; </script><script>alert(1)</script>\nMOVE 10 0 0 0 0\nEND\n");
+  REQUIRE(runCli({"animate", prog, "--cell", "scara-pick", "-o", dir.file("a.html")}).code == 0);
+  const std::string html = readBytes(dir.file("a.html"));
+  CHECK(html.find("alert(1)</script>") == std::string::npos);
+  const auto model = pageModel(html);
+  CHECK(model["program"]["lines"][0] == "; </script><script>alert(1)</script>");
+  CHECK(model["program"]["lineOf"] == nlohmann::json::array({2, 3}));
+  // An image carries its cell: no --cell needed.
+  REQUIRE(runCli({"compile", prog, "--cell", "scara-pick", "-o", dir.file("p.rsb")}).code == 0);
+  const auto r = runCli({"animate", dir.file("p.rsb"), "-o", dir.file("b.html")});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto image = pageModel(readBytes(dir.file("b.html")));
+  CHECK(image["program"]["lines"].size() == 2);
+  CHECK(image["program"]["lines"][0].get<std::string>().find("MOVE") != std::string::npos);
+  CHECK(image["cell"] == "scara-pick");
+}
