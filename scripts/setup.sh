@@ -8,7 +8,7 @@ packages=(
   antlr4 libantlr4-runtime-dev default-jre-headless
   libeigen3-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
   libmimalloc-dev lua5.4 xxd
-  libcairo2-dev chromium fonts-liberation nodejs npm
+  libcairo2-dev chromium fonts-liberation
 )
 
 # The browser test's driver (playwright-core, pinned in package-lock.json).
@@ -23,6 +23,10 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# Node.js may come from elsewhere than Debian's packages (with its own npm,
+# which Debian's npm package conflicts with): ask apt only when a command is missing.
+command -v node >/dev/null 2>&1 || missing+=(nodejs)
+command -v npm >/dev/null 2>&1 || missing+=(npm)
 cd "$(dirname "$0")/.."
 if [ ${#missing[@]} -eq 0 ]; then
   install_node_modules
