@@ -56,7 +56,7 @@ std::string commandLine(const std::vector<std::string>& argv) {
   return line;
 }
 
-// posix_spawn's file actions and attributes, released on every path.
+// posix_spawn's file actions (stdio on /dev/null), released on every path.
 struct SpawnSetup {
   posix_spawn_file_actions_t actions{};
   SpawnSetup() {

@@ -63,16 +63,6 @@ LoadedProgram loadWithCell(const Options& o) {
   return program;
 }
 
-void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags, const LoadedProgram& program) {
-  for (const compiler::Diagnostic& d : diags) err << compiler::render(d, program.sourceOf(d.file));
-}
-
-bool hasErrors(const std::vector<compiler::Diagnostic>& diags) {
-  for (const auto& d : diags)
-    if (d.severity == compiler::Severity::Error) return true;
-  return false;
-}
-
 // The workcell an image carries, checked against the image itself: the
 // cell's robot must have exactly the motors the program was compiled for.
 std::string decodeImageCell(const vm::Image& image, std::optional<workcell::Workcell>& cell) {

@@ -75,6 +75,16 @@ const compiler::SourceFile* LoadedProgram::sourceOf(const std::string& file) con
   return descriptions ? descriptions->source(file) : nullptr;
 }
 
+void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags, const LoadedProgram& program) {
+  for (const compiler::Diagnostic& d : diags) err << compiler::render(d, program.sourceOf(d.file));
+}
+
+bool hasErrors(const std::vector<compiler::Diagnostic>& diags) {
+  for (const auto& d : diags)
+    if (d.severity == compiler::Severity::Error) return true;
+  return false;
+}
+
 compiler::Target cellTarget(const workcell::Workcell& cell) {
   const workcell::Robot& robot = cell.robots.front().robot;
   return {robot.name, compiler::motorTable(robot), vm::kDefaultCallDepth};

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,10 @@ std::optional<std::string> readFile(const std::string& path, std::string& error)
 bool writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string& error);
 
 LoadedProgram loadProgram(const std::string& path, const compiler::Target& target);
+
+/// Every diagnostic, each under its own file's source line when known.
+void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags, const LoadedProgram& program);
+bool hasErrors(const std::vector<compiler::Diagnostic>& diags);
 
 /// The default machine: the paper's Rhino SCARA (stdlib/default_robot.h).
 compiler::Target defaultTarget();

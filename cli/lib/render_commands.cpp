@@ -83,16 +83,6 @@ bool cameraFrom(const RenderOptions& o, render::Camera& camera, std::ostream& er
 
 // ---- inputs -----------------------------------------------------------------
 
-void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags, const LoadedProgram& program) {
-  for (const compiler::Diagnostic& d : diags) err << compiler::render(d, program.sourceOf(d.file));
-}
-
-bool hasErrors(const std::vector<compiler::Diagnostic>& diags) {
-  for (const auto& d : diags)
-    if (d.severity == compiler::Severity::Error) return true;
-  return false;
-}
-
 // A workcell and, when asked for, a program compiled for its first robot.
 struct Loaded {
   std::optional<workcell::Workcell> cell;
