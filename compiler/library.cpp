@@ -134,6 +134,17 @@ const Def* Library::find(Kind kind, const std::string& name, const DescriptionFi
   return nullptr;
 }
 
+// The loaded file that holds `def` (messages about a definition point into
+// its own file), or `fallback`.
+template <typename Def>
+const DescriptionFile& Library::definingFile(const std::vector<Def>& (*defs)(const DescriptionFile&), const Def* def,
+                                             const DescriptionFile& fallback) const {
+  for (const auto& f : files_)
+    for (const Def& d : defs(*f))
+      if (&d == def) return *f;
+  return fallback;
+}
+
 std::optional<workcell::Shape> Library::shape(Kind kind, const NameRef& ref, const DescriptionFile& from) {
   const ShapeDef* def = find<ShapeDef>(kind, ref.name, &from);
   if (!def) {
@@ -151,11 +162,7 @@ std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const Desc
                                      ref.name, ref.name));
     return std::nullopt;
   }
-  const DescriptionFile* home = nullptr;  // the file that defines it, for its messages
-  for (const auto& f : files_)
-    for (const GripperDef& g : f->grippers)
-      if (&g == def) home = f.get();
-  const DescriptionFile& at = home ? *home : from;
+  const DescriptionFile& at = definingFile(defsOf<GripperDef>, def, from);  // for its messages
   bool ok = true;
   const auto need = [&](bool present, std::string_view what) {
     if (!present) error(at, def->pos, fmt::format("gripper '{}' has no {}", def->name, what)), ok = false;
@@ -291,11 +298,7 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
         ok = false;
         continue;
       }
-      const DescriptionFile* home = &from;
-      for (const auto& f : files_)
-        for (const RobotDef& rd : f->robots)
-          if (&rd == r) home = f.get();
-      auto robot = buildRobot(*r, *home);
+      auto robot = buildRobot(*r, definingFile(defsOf<RobotDef>, r, from));
       if (!robot) {
         ok = false;
         continue;

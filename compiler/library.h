@@ -42,6 +42,9 @@ class Library {
   const DescriptionFile* loadRoot(const std::string& fileOrName, Kind kind);
   void readReferences(const DescriptionFile& f);
   template <typename Def>
+  const DescriptionFile& definingFile(const std::vector<Def>& (*defs)(const DescriptionFile&), const Def* def,
+                                      const DescriptionFile& fallback) const;
+  template <typename Def>
   const Def* find(Kind kind, const std::string& name, const DescriptionFile* first);
   std::optional<workcell::Shape> shape(Kind kind, const NameRef& ref, const DescriptionFile& from);
   std::optional<workcell::Gripper> gripper(const NameRef& ref, const DescriptionFile& from);

@@ -63,18 +63,6 @@ LoadedProgram loadWithCell(const Options& o) {
   return program;
 }
 
-// The workcell an image carries, checked against the image itself: the
-// cell's robot must have exactly the motors the program was compiled for.
-std::string decodeImageCell(const vm::Image& image, std::optional<workcell::Workcell>& cell) {
-  workcell::CellDecode decoded = workcell::decodeCell(image.cell);
-  if (!decoded.cell) return decoded.error;
-  if (decoded.cell->robots.empty()) return "its cell has no robot";
-  if (compiler::motorTable(decoded.cell->robots.front().robot) != image.motors)
-    return "its cell's robot does not match its motor table";
-  cell = std::move(decoded.cell);
-  return {};
-}
-
 // --strict: a warning fails the check like an error, before anything runs.
 void promoteWarnings(LoadedProgram& program) {
   bool promoted = false;
@@ -85,25 +73,6 @@ void promoteWarnings(LoadedProgram& program) {
       promoted = true;
     }
   if (promoted) program.image.reset();
-}
-
-// Stimuli from --stimuli FILE and every --input N=ON@T, in that order.
-bool loadStimuli(const Options& o, runtime::Stimuli& stimuli, std::vector<compiler::Diagnostic>& diags) {
-  const auto add = [&](const runtime::StimuliError& e) {
-    diags.push_back({e.file, {static_cast<std::uint32_t>(e.line), static_cast<std::uint32_t>(e.column)},
-                     compiler::Severity::Error, e.message});
-  };
-  if (!o.stimuliFile.empty()) {
-    runtime::StimuliParse parsed = runtime::loadStimuliFile(o.stimuliFile);
-    for (const auto& e : parsed.errors) add(e);
-    stimuli = std::move(parsed.stimuli);
-  }
-  for (const std::string& arg : o.inputs) {
-    runtime::StimulusArgParse parsed = runtime::parseStimulusArg(arg, "--input");
-    if (parsed.error) add(*parsed.error);
-    if (parsed.change) stimuli.changes.push_back(*parsed.change);
-  }
-  return !hasErrors(diags);
 }
 
 int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& err) {
@@ -124,7 +93,7 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
   const runtime::text::SecondsParse maxTime = runtime::text::parseSeconds(o.maxTime);
   if (!maxTime.error.empty())
     report.diagnostics.push_back({"--max-time", {}, compiler::Severity::Error, maxTime.error});
-  const bool stimuliOk = loadStimuli(o, stimuli, report.diagnostics);
+  const bool stimuliOk = loadStimuli(o.stimuliFile, o.inputs, stimuli, report.diagnostics);
   if (!program.ok() || !stimuliOk || !maxTime.error.empty()) {
     printDiagnostics(err, report.diagnostics, program);
     if (json) printJsonSummary(out, report);

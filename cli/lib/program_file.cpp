@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "compiler/library.h"
+#include "runtime/workcell/cell_file.h"
 #include "stdlib/default_robot.h"
 #include "vm/image_file.h"
 
@@ -83,6 +84,37 @@ bool hasErrors(const std::vector<compiler::Diagnostic>& diags) {
   for (const auto& d : diags)
     if (d.severity == compiler::Severity::Error) return true;
   return false;
+}
+
+bool loadStimuli(const std::string& file, const std::vector<std::string>& inputs, runtime::Stimuli& stimuli,
+                 std::vector<compiler::Diagnostic>& diags) {
+  bool ok = true;
+  const auto add = [&](const runtime::StimuliError& e) {
+    diags.push_back({e.file, {static_cast<std::uint32_t>(e.line), static_cast<std::uint32_t>(e.column)},
+                     compiler::Severity::Error, e.message});
+    ok = false;
+  };
+  if (!file.empty()) {
+    runtime::StimuliParse parsed = runtime::loadStimuliFile(file);
+    for (const auto& e : parsed.errors) add(e);
+    stimuli = std::move(parsed.stimuli);
+  }
+  for (const std::string& arg : inputs) {
+    runtime::StimulusArgParse parsed = runtime::parseStimulusArg(arg, "--input");
+    if (parsed.error) add(*parsed.error);
+    if (parsed.change) stimuli.changes.push_back(*parsed.change);
+  }
+  return ok;
+}
+
+std::string decodeImageCell(const vm::Image& image, std::optional<workcell::Workcell>& cell) {
+  workcell::CellDecode decoded = workcell::decodeCell(image.cell);
+  if (!decoded.cell) return decoded.error;
+  if (decoded.cell->robots.empty()) return "its cell has no robot";
+  if (compiler::motorTable(decoded.cell->robots.front().robot) != image.motors)
+    return "its cell's robot does not match its motor table";
+  cell = std::move(decoded.cell);
+  return {};
 }
 
 compiler::Target cellTarget(const workcell::Workcell& cell) {

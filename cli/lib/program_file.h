@@ -9,6 +9,7 @@
 
 #include "compiler/compiler.h"
 #include "compiler/library.h"
+#include "runtime/stimuli.h"
 #include "runtime/workcell/model.h"
 
 namespace rs::cli {
@@ -37,6 +38,15 @@ LoadedProgram loadProgram(const std::string& path, const compiler::Target& targe
 /// Every diagnostic, each under its own file's source line when known.
 void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags, const LoadedProgram& program);
 bool hasErrors(const std::vector<compiler::Diagnostic>& diags);
+
+/// Stimuli from a stimuli file (when named) and the --input changes, in
+/// that order; every error becomes a diagnostic. False on any error.
+bool loadStimuli(const std::string& file, const std::vector<std::string>& inputs, runtime::Stimuli& stimuli,
+                 std::vector<compiler::Diagnostic>& diags);
+
+/// The workcell an image carries, checked against the image itself (its
+/// robot must have exactly the image's motors); an error message, or empty.
+std::string decodeImageCell(const vm::Image& image, std::optional<workcell::Workcell>& cell);
 
 /// The default machine: the paper's Rhino SCARA (stdlib/default_robot.h).
 compiler::Target defaultTarget();

@@ -121,12 +121,10 @@ Loaded load(const RenderOptions& o, bool wantProgram, std::ostream& err) {
   const vm::Image& image = *l.program.image;
   if (!l.program.source) {  // a compiled image
     if (!l.cell && !image.cell.empty()) {
-      workcell::CellDecode decoded = workcell::decodeCell(image.cell);
-      if (!decoded.cell) {
-        err << fmt::format("{}: error: image rejected: {}\n", o.program, decoded.error);
+      if (const std::string error = decodeImageCell(image, l.cell); !error.empty()) {
+        err << fmt::format("{}: error: image rejected: {}\n", o.program, error);
         return l;
       }
-      l.cell = std::move(decoded.cell);
     }
     if (!l.cell) {
       err << fmt::format("{}: error: the image carries no workcell; give one with --cell\n", o.program);
@@ -146,27 +144,11 @@ Loaded load(const RenderOptions& o, bool wantProgram, std::ostream& err) {
   return l;
 }
 
-// Stimuli from --stimuli FILE and every --input N=ON@T, in that order.
-bool loadStimuli(const RenderOptions& o, runtime::Stimuli& stimuli, std::ostream& err) {
-  bool ok = true;
-  const auto report = [&](const runtime::StimuliError& e) {
-    err << compiler::render({e.file,
-                             {static_cast<std::uint32_t>(e.line), static_cast<std::uint32_t>(e.column)},
-                             compiler::Severity::Error,
-                             e.message},
-                            nullptr);
-    ok = false;
-  };
-  if (!o.stimuliFile.empty()) {
-    runtime::StimuliParse parsed = runtime::loadStimuliFile(o.stimuliFile);
-    for (const auto& e : parsed.errors) report(e);
-    stimuli = std::move(parsed.stimuli);
-  }
-  for (const std::string& arg : o.inputs) {
-    runtime::StimulusArgParse parsed = runtime::parseStimulusArg(arg, "--input");
-    if (parsed.error) report(*parsed.error);
-    if (parsed.change) stimuli.changes.push_back(*parsed.change);
-  }
+// Stimuli from --stimuli FILE and every --input, each problem printed.
+bool stimuliFrom(const RenderOptions& o, runtime::Stimuli& stimuli, std::ostream& err) {
+  std::vector<compiler::Diagnostic> diags;
+  const bool ok = loadStimuli(o.stimuliFile, o.inputs, stimuli, diags);
+  for (const compiler::Diagnostic& d : diags) err << compiler::render(d, nullptr);
   return ok;
 }
 
@@ -233,7 +215,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   if (!o.at.empty() && !seconds(o.at, "--at", at, err)) return kCompileError;
   if (!seconds(o.maxTime, "--max-time", maxTime, err)) return kCompileError;
   runtime::Stimuli stimuli;
-  if (!loadStimuli(o, stimuli, err)) return kCompileError;
+  if (!stimuliFrom(o, stimuli, err)) return kCompileError;
   Loaded loaded = load(o, !o.program.empty(), err);
   if (!loaded.ok) return kCompileError;
 
@@ -281,7 +263,7 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   vm::Micros maxTime = 0;
   if (!seconds(o.maxTime, "--max-time", maxTime, err)) return kCompileError;
   runtime::Stimuli stimuli;
-  if (!loadStimuli(o, stimuli, err)) return kCompileError;
+  if (!stimuliFrom(o, stimuli, err)) return kCompileError;
   Loaded loaded = load(o, true, err);
   if (!loaded.ok) return kCompileError;
 
