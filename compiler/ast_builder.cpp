@@ -70,13 +70,18 @@ bool isReservedWord(std::string_view w) {
 
 class Builder {
  public:
-  Builder(const SourceFile& src, std::span<const vm::MotorSpec> motors, Diagnostics& d, bool recovered)
-      : src_(src), motors_(motors), diag_(d), recovered_(recovered) {}
+  Builder(const SourceFile& src, std::span<const vm::MotorSpec> motors, Diagnostics& d)
+      : src_(src), motors_(motors), diag_(d) {
+    // One instruction per line at most: reserving for that touches no
+    // memory the program does not use, and saves the copies of growth.
+    program_.instructions.reserve(src.lineCount());
+  }
 
-  Program build(P::ProgramContext* root);
+  /// `recovered`: the parser met syntax errors on this line (already reported).
+  void line(P::LineContext* line, bool recovered);
+  Program finish();
 
  private:
-  void line(P::LineContext* line);
   void instruction(const antlr4::Token* head, const std::vector<Word>& words);
   void point(const antlr4::Token* head, const std::vector<Word>& words);
   bool operands(Instruction& in, std::string_view mnemonic, const std::vector<Word>& w);
@@ -94,15 +99,15 @@ class Builder {
   const SourceFile& src_;
   std::span<const vm::MotorSpec> motors_;
   Diagnostics& diag_;
-  bool recovered_;  // the parser recovered from syntax errors
   Program program_;
+  std::vector<const antlr4::Token*> tokens_;  // of the current line (kept for its capacity)
+  std::vector<Word> words_;
   bool inPoints_ = false;
   std::string_view pendingLabel_;
   Pos pendingLabelPos_;
 };
 
-Program Builder::build(P::ProgramContext* root) {
-  for (P::LineContext* l : root->line()) line(l);
+Program Builder::finish() {
   if (!pendingLabel_.empty())
     diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
   return std::move(program_);
@@ -111,11 +116,11 @@ Program Builder::build(P::ProgramContext* root) {
 // Splits a line's tokens into label, head word and operands. Every child of
 // a LineContext is a token node; after error recovery some are error nodes
 // for tokens the parser skipped (already reported), which are left out.
-void Builder::line(P::LineContext* l) {
-  std::vector<const antlr4::Token*> tokens;
-  tokens.reserve(l->children.size());
+void Builder::line(P::LineContext* l, bool recovered) {
+  std::vector<const antlr4::Token*>& tokens = tokens_;
+  tokens.clear();
   for (antlr4::tree::ParseTree* child : l->children) {
-    if (recovered_ && dynamic_cast<antlr4::tree::ErrorNode*>(child)) continue;
+    if (recovered && dynamic_cast<antlr4::tree::ErrorNode*>(child)) continue;
     tokens.push_back(static_cast<antlr4::tree::TerminalNode*>(child)->getSymbol());
   }
   if (tokens.empty()) return;  // blank line
@@ -126,8 +131,8 @@ void Builder::line(P::LineContext* l) {
   std::size_t next = labelled ? 2 : 0;
   const antlr4::Token* headToken = nullptr;
   if (next < tokens.size() && tokens[next]->getType() == P::IDENT) headToken = tokens[next++];
-  std::vector<Word> words;
-  words.reserve(tokens.size() - next);
+  std::vector<Word>& words = words_;
+  words.clear();
   for (; next < tokens.size(); ++next) {
     if (tokens[next]->getType() == P::COLON)
       return diag_.error(posOf(tokens[next]),
@@ -423,8 +428,16 @@ std::string_view closestMnemonic(std::string_view word) {
 }
 
 Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, Diagnostics& diagnostics) {
-  Builder b(tree.source(), motors, diagnostics, tree.recovered());
-  return b.build(static_cast<P::ProgramContext*>(tree.root()));
+  Builder b(tree.source(), motors, diagnostics);
+  for (P::LineContext* l : static_cast<P::ProgramContext*>(tree.root())->line()) b.line(l, tree.recovered());
+  return b.finish();
+}
+
+Program buildAst(const SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
+                 Diagnostics& diagnostics) {
+  Builder b(source, motors, diagnostics);
+  while (antlr4::ParserRuleContext* l = parser.next()) b.line(static_cast<P::LineContext*>(l), parser.recovered());
+  return b.finish();
 }
 
 }  // namespace rs::compiler

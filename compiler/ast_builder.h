@@ -12,7 +12,11 @@
 
 namespace rs::compiler {
 
+/// From the whole file's parse tree (`robotsim ast`).
 Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, Diagnostics& diagnostics);
+/// From each line's parse tree in turn (the compiler): the same AST.
+Program buildAst(const SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
+                 Diagnostics& diagnostics);
 
 /// How an instruction of this format is written, after its mnemonic:
 /// " <input> ON|OFF <line>".

@@ -27,8 +27,8 @@ CompileResult compile(const SourceFile& source, const Target& target) {
     return result;
   }
   Diagnostics diagnostics(source.name());
-  ParseTree tree(source, diagnostics);
-  const Program program = buildAst(tree, target.motors, diagnostics);
+  LineParser parser(source, diagnostics);
+  const Program program = buildAst(source, parser, target.motors, diagnostics);
   const Resolution resolution = check(program, target.motors, diagnostics);
   if (!diagnostics.hasErrors()) result.image = generate(program, resolution, target, source.name());
   result.diagnostics = diagnostics.sorted();

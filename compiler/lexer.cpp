@@ -42,23 +42,8 @@ antlr4::TokenFactory<antlr4::CommonToken>* Lexer::getTokenFactory() {
   return antlr4::CommonTokenFactory::DEFAULT.get();
 }
 
-void Lexer::fill(antlr4::CommonToken& token, const RawToken& raw, size_t index) {
-  token.setType(raw.type);
-  token.setStartIndex(raw.begin);
-  token.setStopIndex(raw.end - 1);
-  token.setText(raw.type == antlr4::Token::EOF ? std::string("<EOF>")
-                                               : std::string(text_.substr(raw.begin, raw.end - raw.begin)));
-  token.setLine(raw.pos.line);
-  token.setCharPositionInLine(raw.pos.col - 1);
-  token.setTokenIndex(index);
-}
-
 std::unique_ptr<antlr4::Token> Lexer::nextToken() {
-  const RawToken raw = scan();
-  auto token = std::make_unique<antlr4::CommonToken>(std::make_pair(this, nullptr), raw.type,
-                                                     antlr4::Token::DEFAULT_CHANNEL, raw.begin, raw.end - 1);
-  fill(*token, raw, static_cast<size_t>(-1));
-  return token;
+  return std::make_unique<SourceToken>(text_, scan(), pulled_++);
 }
 
 void Lexer::skipBlanksAndComments() {
@@ -141,13 +126,31 @@ RawToken Lexer::scan() {
   }
 }
 
-TokenArray::TokenArray(Lexer& lexer) : lexer_(lexer) {
+std::string SourceToken::getText() const {
+  if (type_ == kEof) return "<EOF>";
+  return std::string(source_ + begin_, end_ - begin_);
+}
+
+std::string SourceToken::toString() const {
+  // The shape of antlr4::CommonToken::toString(), for ANTLR's own messages.
+  return fmt::format("[@{},{}:{}='{}',<{}>,{}:{}]", index_, begin_, static_cast<long long>(end_) - 1, getText(),
+                     static_cast<long long>(getType()), line_, col_ - 1);
+}
+
+TokenArray::TokenArray(Lexer& lexer, std::string_view source, Mode mode)
+    : lexer_(lexer), source_(source), mode_(mode) {
+  if (mode == Mode::WholeFile) tokens_.reserve(source.size() / 4 + 1);
+  fill();
+}
+
+void TokenArray::fill() {
+  base_ += tokens_.size();
+  tokens_.clear();
+  p_ = 0;
   for (;;) {
-    const RawToken raw = lexer.scan();
-    antlr4::CommonToken& token = tokens_.emplace_back(std::make_pair(&lexer, nullptr), raw.type,
-                                                      antlr4::Token::DEFAULT_CHANNEL, raw.begin, raw.end - 1);
-    lexer.fill(token, raw, tokens_.size() - 1);
-    if (raw.type == antlr4::Token::EOF) break;
+    const RawToken raw = lexer_.scan();
+    tokens_.emplace_back(source_, raw, base_ + tokens_.size());
+    if (raw.type == antlr4::Token::EOF || (mode_ == Mode::OneLine && raw.type == P::NEWLINE)) break;
   }
 }
 
@@ -164,25 +167,42 @@ size_t TokenArray::LA(ssize_t i) {
 }
 
 antlr4::Token* TokenArray::get(size_t index) const {
-  if (index >= tokens_.size()) throw antlr4::IndexOutOfBoundsException("token index out of range");
-  return const_cast<antlr4::CommonToken*>(&tokens_[index]);
+  if (index < base_ || index - base_ >= tokens_.size())
+    throw antlr4::IndexOutOfBoundsException("token index out of range");
+  return const_cast<SourceToken*>(&tokens_[index - base_]);
+}
+
+void TokenArray::seek(size_t index) {
+  // Only within the tokens held: ANTLR seeks back to where prediction began.
+  p_ = std::min(index < base_ ? 0 : index - base_, tokens_.size() - 1);
 }
 
 void TokenArray::consume() {
   if (tokens_[p_].getType() == antlr4::Token::EOF) throw antlr4::IllegalStateException("cannot consume EOF");
+  // The parser itself never goes past a line's NEWLINE in OneLine mode:
+  // its tree points into this line's tokens. nextLine() moves on.
+  if (mode_ == Mode::OneLine && p_ + 1 == tokens_.size())
+    throw antlr4::IllegalStateException("cannot consume past the end of the line");
   ++p_;
+}
+
+bool TokenArray::nextLine() {
+  if (mode_ != Mode::OneLine || tokens_.back().getType() == antlr4::Token::EOF) return false;
+  fill();
+  return true;
 }
 
 std::string TokenArray::getText(const antlr4::misc::Interval& interval) {
   std::string out;
   if (interval.a < 0 || interval.b < 0) return out;
-  const auto last = std::min(static_cast<size_t>(interval.b), tokens_.size() - 1);
-  for (auto i = static_cast<size_t>(interval.a); i <= last; ++i)
-    if (tokens_[i].getType() != antlr4::Token::EOF) out += tokens_[i].getText();
+  const auto first = std::max(static_cast<size_t>(interval.a), base_);
+  const auto last = std::min(static_cast<size_t>(interval.b), size() - 1);
+  for (auto i = first; i <= last; ++i)
+    if (tokens_[i - base_].getType() != antlr4::Token::EOF) out += tokens_[i - base_].getText();
   return out;
 }
 
-std::string TokenArray::getText() { return getText(antlr4::misc::Interval(size_t{0}, tokens_.size() - 1)); }
+std::string TokenArray::getText() { return getText(antlr4::misc::Interval(base_, size() - 1)); }
 
 std::string TokenArray::getText(antlr4::RuleContext* ctx) { return getText(ctx->getSourceInterval()); }
 

@@ -10,6 +10,7 @@
 #include <deque>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "compiler/diagnostics.h"
 #include "compiler/source.h"
@@ -22,6 +23,33 @@ struct RawToken {
   std::size_t begin = 0;  // byte offsets into the source, end exclusive
   std::size_t end = 0;
   Pos pos;
+};
+
+/// A token as the parser sees it: 32 bytes, no copy of its text (getText()
+/// reads the source), so a line's tokens fit in a cache line or two.
+class SourceToken final : public antlr4::Token {
+ public:
+  SourceToken(std::string_view source, const RawToken& raw, size_t index)
+      : source_(source.data()), begin_(static_cast<std::uint32_t>(raw.begin)),
+        end_(static_cast<std::uint32_t>(raw.end)), line_(raw.pos.line), col_(raw.pos.col),
+        index_(static_cast<std::uint32_t>(index)), type_(static_cast<std::uint32_t>(raw.type)) {}
+
+  std::string getText() const override;
+  size_t getType() const override { return type_ == kEof ? antlr4::Token::EOF : type_; }
+  size_t getLine() const override { return line_; }
+  size_t getCharPositionInLine() const override { return col_ - 1; }
+  size_t getChannel() const override { return antlr4::Token::DEFAULT_CHANNEL; }
+  size_t getTokenIndex() const override { return index_; }
+  size_t getStartIndex() const override { return begin_; }
+  size_t getStopIndex() const override { return end_ - 1; }
+  antlr4::TokenSource* getTokenSource() const override { return nullptr; }
+  antlr4::CharStream* getInputStream() const override { return nullptr; }
+  std::string toString() const override;
+
+ private:
+  static constexpr std::uint32_t kEof = 0xFFFFFFFF;  // antlr4::Token::EOF, narrowed
+  const char* source_;
+  std::uint32_t begin_, end_, line_, col_, index_, type_;
 };
 
 class Lexer final : public antlr4::TokenSource {
@@ -40,8 +68,6 @@ class Lexer final : public antlr4::TokenSource {
   std::string getSourceName() override { return source_.name(); }
   antlr4::TokenFactory<antlr4::CommonToken>* getTokenFactory() override;
 
-  /// Fills `token` (a fresh CommonToken) from a raw token.
-  void fill(antlr4::CommonToken& token, const RawToken& raw, size_t index);
 
  private:
   void skipBlanksAndComments();
@@ -53,14 +79,23 @@ class Lexer final : public antlr4::TokenSource {
   std::size_t pos_ = 0;
   std::uint32_t line_ = 1;
   std::uint32_t col_ = 1;
+  size_t pulled_ = 0;  // tokens handed out by nextToken()
 };
 
-/// The whole file lexed up front into one contiguous store, served to the
-/// parser through ANTLR's TokenStream interface: no per-token allocation,
-/// no buffering logic on every consume().
+/// The lexer's tokens served to the parser through ANTLR's TokenStream
+/// interface, from one contiguous store: no per-token allocation, no
+/// buffering logic on every consume(). Two ways to hold them:
+///  - WholeFile: every token of the file, for a parse tree of the whole
+///    program (`robotsim ast --tree`);
+///  - OneLine: the tokens of the current line only, up to and including its
+///    NEWLINE (or EOF); consuming that last token lexes the next line into
+///    the same store. The compiler parses this way, so its memory does not
+///    grow with the file (see LineParser in parse_tree.h).
+/// Token indices are those of the whole file in both.
 class TokenArray final : public antlr4::TokenStream {
  public:
-  explicit TokenArray(Lexer& lexer);
+  enum class Mode { WholeFile, OneLine };
+  TokenArray(Lexer& lexer, std::string_view source, Mode mode);
 
   antlr4::Token* LT(ssize_t k) override;
   antlr4::Token* get(size_t index) const override;
@@ -73,15 +108,25 @@ class TokenArray final : public antlr4::TokenStream {
   size_t LA(ssize_t i) override;
   ssize_t mark() override { return 0; }
   void release(ssize_t) override {}
-  size_t index() override { return p_; }
-  void seek(size_t index) override { p_ = std::min(index, tokens_.size() - 1); }
-  size_t size() override { return tokens_.size(); }
+  size_t index() override { return base_ + p_; }
+  void seek(size_t index) override;
+  size_t size() override { return base_ + tokens_.size(); }
   std::string getSourceName() const override { return lexer_.getSourceName(); }
 
+  /// OneLine mode: drops the current line's tokens and lexes the next line.
+  /// False (and nothing changes) at the last line, or in WholeFile mode.
+  bool nextLine();
+
  private:
+  /// Appends tokens up to the next NEWLINE or EOF (OneLine) or the end (WholeFile).
+  void fill();
+
   Lexer& lexer_;
-  std::deque<antlr4::CommonToken> tokens_;  // deque: stable addresses
-  size_t p_ = 0;
+  std::string_view source_;
+  Mode mode_;
+  std::vector<SourceToken> tokens_;  // never reallocated while the parser holds pointers (see fill)
+  size_t base_ = 0;                  // file index of tokens_[0]
+  size_t p_ = 0;                     // current token, relative to base_
 };
 
 /// Token type name as the grammar spells it ("IDENT", "NUMBER", ...).

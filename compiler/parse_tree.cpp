@@ -7,8 +7,6 @@
 
 namespace rs::compiler {
 
-namespace {
-
 using P = rs_grammar::RobotProgramParser;
 
 // Turns an ANTLR syntax error into a diagnostic (see the constructor for
@@ -26,6 +24,8 @@ class SyntaxErrors final : public antlr4::BaseErrorListener {
   Diagnostics& diagnostics_;
 };
 
+namespace {
+
 // The grammar accepts any sequence of words on a line, so the recovery
 // bookkeeping ANTLR's default strategy does before every loop iteration
 // (sync() copies an IntervalSet each time: 16% of a compile) can never
@@ -36,29 +36,69 @@ class NoLoopSync final : public antlr4::DefaultErrorStrategy {
   void sync(antlr4::Parser*) override {}
 };
 
+// The grammar accepts any sequence of words on a line, so the parser meets
+// an error only if the grammar and the lexer ever disagree; the listener
+// still turns that into a diagnostic rather than a crash.
+void configure(P& parser, SyntaxErrors& listener) {
+  parser.removeErrorListeners();
+  parser.addErrorListener(&listener);
+  parser.setErrorHandler(std::make_shared<NoLoopSync>());
+  // SLL prediction: exact for this LL(1) grammar, and the fastest mode.
+  parser.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(antlr4::atn::PredictionMode::SLL);
+}
+
 }  // namespace
 
 ParseTree::ParseTree(const SourceFile& source, Diagnostics& diagnostics)
     : source_(source),
       lexer_(std::make_unique<Lexer>(source, diagnostics)),
-      tokens_(std::make_unique<TokenArray>(*lexer_)),
+      tokens_(std::make_unique<TokenArray>(*lexer_, source.text(), TokenArray::Mode::WholeFile)),
       parser_(std::make_unique<P>(tokens_.get())) {
-  // The grammar accepts any sequence of words on a line, so the parser
-  // meets an error only if the grammar and the lexer ever disagree; the
-  // listener still turns that into a diagnostic rather than a crash.
   const std::size_t errorsBefore = diagnostics.errorCount();
   SyntaxErrors listener(diagnostics);
-  parser_->removeErrorListeners();
-  parser_->addErrorListener(&listener);
-  parser_->setErrorHandler(std::make_shared<NoLoopSync>());
-  // SLL prediction: exact for this LL(1) grammar, and the fastest mode.
-  parser_->getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(antlr4::atn::PredictionMode::SLL);
+  configure(*parser_, listener);
   root_ = parser_->program();
   recovered_ = diagnostics.errorCount() > errorsBefore;
   parser_->removeErrorListeners();
 }
 
 ParseTree::~ParseTree() = default;
+
+LineParser::LineParser(const SourceFile& source, Diagnostics& diagnostics)
+    : diagnostics_(diagnostics),
+      lexer_(std::make_unique<Lexer>(source, diagnostics)),
+      tokens_(std::make_unique<TokenArray>(*lexer_, source.text(), TokenArray::Mode::OneLine)),
+      listener_(std::make_unique<SyntaxErrors>(diagnostics)),
+      parser_(std::make_unique<P>(tokens_.get())) {
+  configure(*parser_, *listener_);
+}
+
+LineParser::~LineParser() = default;
+
+antlr4::ParserRuleContext* LineParser::next() {
+  for (;;) {
+    parser_->getTreeTracker().reset();  // the previous line's tree
+    // `line` stops before its NEWLINE or EOF (the lexer makes no other
+    // token the rule does not take).
+    if (started_ && !tokens_->nextLine()) return nullptr;
+    started_ = true;
+    const std::size_t errorsBefore = diagnostics_.errorCount();
+    try {
+      antlr4::ParserRuleContext* line = parser_->line();
+      recovered_ = diagnostics_.errorCount() > errorsBefore;
+      return line;
+    } catch (const antlr4::IllegalStateException&) {
+      // Error recovery tried to go past the line's end (the error itself
+      // was reported): the line is dropped, and parsing goes on.
+      if (diagnostics_.errorCount() == errorsBefore) {
+        const antlr4::Token* t = tokens_->LT(1);
+        diagnostics_.error({static_cast<std::uint32_t>(t->getLine()),
+                            static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)},
+                           "syntax error: this line cannot be parsed");
+      }
+    }
+  }
+}
 
 std::string ParseTree::toStringTree() {
   return root_->toStringTree(parser_.get());

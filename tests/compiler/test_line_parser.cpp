@@ -1,0 +1,204 @@
+// The compiler parses one line at a time (LineParser over a OneLine
+// TokenArray); `robotsim ast --tree` parses the whole file at once
+// (ParseTree). Both must give the same AST and the same diagnostics for
+// every input, good or bad; and the one-line token store must hold only
+// its line and refuse to be walked past it.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "RobotProgramParser.h"
+#include "compiler/ast_builder.h"
+#include "compiler/lexer.h"
+#include "compiler/parse_tree.h"
+#include "stdlib/default_robot.h"
+
+namespace {
+
+using namespace rs::compiler;
+using P = rs_grammar::RobotProgramParser;
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Every field of every node, written out: two ASTs are equal when these are.
+std::string describe(const Program& p) {
+  std::ostringstream o;
+  auto pos = [&](Pos x) { o << '@' << x.line << ':' << x.col << ' '; };
+  auto values = [&](const std::vector<Value>& vs) {
+    for (const Value& v : vs) o << v.number << ' ', pos(v.pos);
+  };
+  for (const Instruction& in : p.instructions) {
+    o << '#' << in.number << ' ';
+    pos(in.pos);
+    o << static_cast<int>(in.op) << ' ' << in.known << " label=" << in.label << ' ';
+    pos(in.labelPos);
+    values(in.values);
+    o << "io=" << in.io.number << ' ';
+    pos(in.io.pos);
+    o << in.on << ' ' << static_cast<int>(in.compare) << " name=" << in.name << ' ';
+    pos(in.namePos);
+    o << "value=" << in.value.number << ' ';
+    pos(in.value.pos);
+    o << "target=" << in.target.number << '/' << in.target.label << ' ';
+    pos(in.target.pos);
+    o << '\n';
+  }
+  o << "POINTS ";
+  pos(p.pointsHeader);
+  o << '\n';
+  for (const PointDef& pt : p.points) {
+    o << pt.name << ' ';
+    pos(pt.pos);
+    values(pt.values);
+    o << '\n';
+  }
+  return o.str();
+}
+
+std::string describe(const std::vector<Diagnostic>& ds) {
+  std::ostringstream o;
+  for (const Diagnostic& d : ds)
+    o << d.pos.line << ':' << d.pos.col << ' ' << severityName(d.severity) << ' ' << d.message << '\n';
+  return o.str();
+}
+
+struct Both {
+  std::string wholeAst, lineAst, wholeDiagnostics, lineDiagnostics;
+};
+
+Both parseBothWays(const std::string& name, const std::string& text) {
+  const SourceFile source(name, text);
+  const auto motors = rs::stdlib::rhinoScaraMotors();
+  Both b;
+  {
+    Diagnostics d(name);
+    ParseTree tree(source, d);
+    b.wholeAst = describe(buildAst(tree, motors, d));
+    b.wholeDiagnostics = describe(d.sorted());
+  }
+  {
+    Diagnostics d(name);
+    LineParser parser(source, d);
+    b.lineAst = describe(buildAst(source, parser, motors, d));
+    b.lineDiagnostics = describe(d.sorted());
+  }
+  return b;
+}
+
+}  // namespace
+
+TEST_CASE("line-by-line parsing gives the whole-file AST for every example", "[compiler][parser]") {
+  for (const char* example : {"counted_loop", "first_moves", "nested_subroutines", "pick_and_place",
+                              "sensor_branching", "soft_home", "workcell_view"}) {
+    INFO(example);
+    const std::string text = readFile(std::string(ROBOTSIM_SOURCE_DIR) + "/examples/" + example + ".rsp");
+    REQUIRE(text.size() > 50);
+    const Both b = parseBothWays(example, text);
+    CHECK(b.lineAst == b.wholeAst);
+    CHECK(b.lineDiagnostics == b.wholeDiagnostics);
+    CHECK(b.lineAst.find("#5 ") != std::string::npos);  // a real program was described
+  }
+}
+
+TEST_CASE("line-by-line parsing gives the whole-file AST and errors for bad input", "[compiler][parser]") {
+  const std::vector<std::string> programs = {
+      "",
+      "\n\n\n",
+      "END",                                   // no final newline
+      "MOVE 1 2 3 4 5\r\nEND\r\n",             // CR LF
+      "a: b: MOVE 1 2 3 4 5\nEND\n",           // two labels
+      "MOVE 1 2 : 3\nGOTO nowhere\nEND\n",     // stray colon, missing label
+      "3 MOVE\n< > =\nMOVX 1\nEND\n",          // bad line starts, unknown instruction
+      "MOVE 1 2 3 4 5 ; comment ; more\n\tEND\nPOINTS\nP1 1 2 3 4 5\nP2 1 2\nPOINTS\n",
+      "SET N 1\nADD N 99999999999\nJMPVAR N > x 1\nDELAY 1.2345\nEND\nlabel:\n",
+      "END\n@#$\nMOVE + 1\n\xC3\xA9 END\n",     // characters the lexer rejects
+  };
+  for (const std::string& text : programs) {
+    INFO(text);
+    const Both b = parseBothWays("bad.rsp", text);
+    CHECK(b.lineAst == b.wholeAst);
+    CHECK(b.lineDiagnostics == b.wholeDiagnostics);
+  }
+}
+
+TEST_CASE("a OneLine token array holds one line and is not walked past it", "[compiler][parser]") {
+  const std::string text = "MOVE 1 -2\nloop: END\n";
+  const SourceFile source("t.rsp", text);
+  Diagnostics d("t.rsp");
+  Lexer lexer(source, d);
+  TokenArray tokens(lexer, source.text(), TokenArray::Mode::OneLine);
+
+  REQUIRE(tokens.LA(1) == P::IDENT);
+  CHECK(tokens.LT(1)->getText() == "MOVE");
+  CHECK(tokens.size() == 4);  // MOVE 1 -2 NEWLINE: this line only
+  tokens.consume();
+  CHECK(tokens.LT(1)->getText() == "1");
+  CHECK(tokens.LT(2)->getText() == "-2");
+  CHECK(tokens.LT(-1)->getText() == "MOVE");
+  tokens.consume();
+  tokens.consume();
+  REQUIRE(tokens.LA(1) == P::NEWLINE);
+  CHECK(tokens.LA(2) == P::NEWLINE);  // lookahead stops at the line's end
+  CHECK_THROWS_AS(tokens.consume(), antlr4::IllegalStateException);
+
+  REQUIRE(tokens.nextLine());
+  const antlr4::Token* label = tokens.LT(1);
+  CHECK(label->getText() == "loop");
+  CHECK(label->getTokenIndex() == 4);  // indices count the whole file
+  CHECK(label->getLine() == 2);
+  CHECK(label->getCharPositionInLine() == 0);
+  CHECK(label->getStartIndex() == 10);
+  CHECK(label->getStopIndex() == 13);
+  CHECK(tokens.index() == 4);
+  CHECK_THROWS_AS(tokens.get(0), antlr4::IndexOutOfBoundsException);  // the first line is gone
+  CHECK(tokens.get(5)->getType() == P::COLON);
+  CHECK(tokens.getText() == "loop:END\n");
+
+  REQUIRE(tokens.nextLine());  // the empty last line: EOF only
+  CHECK(tokens.LA(1) == antlr4::Token::EOF);
+  CHECK(tokens.LT(1)->getText() == "<EOF>");
+  CHECK(tokens.LT(1)->getTokenIndex() == 8);
+  CHECK_THROWS_AS(tokens.consume(), antlr4::IllegalStateException);
+  CHECK_FALSE(tokens.nextLine());
+  CHECK(tokens.LA(1) == antlr4::Token::EOF);
+}
+
+TEST_CASE("a WholeFile token array holds every token and seeks anywhere", "[compiler][parser]") {
+  const std::string text = "GOTO 1\nEND";
+  const SourceFile source("t.rsp", text);
+  Diagnostics d("t.rsp");
+  Lexer lexer(source, d);
+  TokenArray tokens(lexer, source.text(), TokenArray::Mode::WholeFile);
+  CHECK(tokens.size() == 5);  // GOTO 1 NEWLINE END EOF
+  tokens.seek(3);
+  CHECK(tokens.LT(1)->getText() == "END");
+  CHECK(tokens.LT(1)->toString() == "[@3,7:9='END',<1>,2:0]");
+  CHECK_FALSE(tokens.nextLine());
+  tokens.consume();
+  CHECK(tokens.LA(1) == antlr4::Token::EOF);
+  CHECK(tokens.get(1)->getText() == "1");
+  CHECK(tokens.getText() == "GOTO1\nEND");
+}
+
+TEST_CASE("a parser token is small and carries no copy of its text", "[compiler][parser]") {
+  STATIC_REQUIRE(sizeof(SourceToken) <= 40);
+  const std::string text = "WAITFOR 3 ON";
+  RawToken raw;
+  raw.type = P::NUMBER;
+  raw.begin = 8;
+  raw.end = 9;
+  raw.pos = {1, 9};
+  const SourceToken t(text, raw, 7);
+  CHECK(t.getText() == "3");
+  CHECK(t.getType() == P::NUMBER);
+  CHECK(t.getTokenIndex() == 7);
+  CHECK(t.getCharPositionInLine() == 8);
+}
