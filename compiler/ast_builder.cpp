@@ -177,9 +177,9 @@ void Builder::line(P::LineContext* l, bool recovered) {
 }
 
 void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& words) {
-  Instruction in;
+  Instruction& in = program_.instructions.emplace_back();  // built in place: it is 160 bytes
   in.pos = posOf(head);
-  in.number = static_cast<std::uint32_t>(program_.instructions.size() + 1);
+  in.number = static_cast<std::uint32_t>(program_.instructions.size());
   in.label = pendingLabel_;
   in.labelPos = pendingLabelPos_;
   pendingLabel_ = {};
@@ -193,7 +193,6 @@ void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& wo
     diag_.error(in.pos, near.empty() ? fmt::format("unknown instruction '{}'", mnemonic)
                                      : fmt::format("unknown instruction '{}' (did you mean {}?)", mnemonic, near));
   }
-  program_.instructions.push_back(std::move(in));
 }
 
 void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
@@ -207,6 +206,7 @@ void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
   }
   if (!checkName("a point", p.name, p.pos)) return;
   bool ok = true;
+  p.values.reserve(words.size());
   for (const Word& w : words) {
     Value v;
     ok = integer(w, "an encoder value", v) && ok;
@@ -224,6 +224,7 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
   const vm::Format f = vm::info(in.op).format;
   if (f == vm::Format::MotorVector) {
     bool ok = true;
+    in.values.reserve(w.size());
     for (const Word& word : w) {
       Value v;
       ok = integer(word, "an encoder value", v) && ok;
@@ -260,6 +261,7 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
       return name(w[0], "a variable name", in.name, in.namePos) & integer(w[1], "a value", in.value);
     case vm::Format::Triple: {
       bool ok = true;
+      in.values.reserve(w.size());
       for (const Word& word : w) {
         Value v;
         ok = integer(word, "a number", v) && ok;

@@ -4,19 +4,30 @@
 #include <string>
 #include <unordered_map>
 
+#include "compiler/ast_builder.h"
+
 namespace rs::compiler {
 
 namespace {
 
 constexpr std::size_t kMaxSlots = 65535;
 
-// Names are case-insensitive, like keywords: the key is the upper-case form.
-std::string key(std::string_view name) {
-  std::string k(name);
-  for (char& c : k)
-    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-  return k;
-}
+// Names are case-insensitive, like keywords. The tables key on the name as
+// written (a view into the source, which outlives them), hashed and compared
+// without regard to ASCII case: no copy per lookup.
+char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+struct CaseInsensitiveHash {
+  std::size_t operator()(std::string_view s) const {
+    std::uint64_t h = 14695981039346656037ull;  // FNV-1a
+    for (char c : s) h = (h ^ static_cast<unsigned char>(upper(c))) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+struct CaseInsensitiveEqual {
+  bool operator()(std::string_view a, std::string_view b) const { return sameName(a, b); }
+};
 
 struct Named {
   std::uint32_t index;
@@ -60,7 +71,8 @@ class Checker {
   std::span<const vm::MotorSpec> motors_;
   Diagnostics& diag_;
   Resolution res_;
-  std::unordered_map<std::string, Named> labels_, points_, variables_;
+  using NameTable = std::unordered_map<std::string_view, Named, CaseInsensitiveHash, CaseInsensitiveEqual>;
+  NameTable labels_, points_, variables_;
   std::vector<bool> assigned_;        // per slot: some SET or ADD writes it
   std::vector<Pos> firstRead_;        // per slot: first JMPVAR, for the warning
 };
@@ -68,7 +80,7 @@ class Checker {
 void Checker::collectLabels() {
   for (const Instruction& in : program_.instructions) {
     if (in.label.empty()) continue;
-    const auto [it, fresh] = labels_.try_emplace(key(in.label), Named{in.number - 1, in.labelPos});
+    const auto [it, fresh] = labels_.try_emplace(in.label, Named{in.number - 1, in.labelPos});
     if (!fresh)
       diag_.error(in.labelPos, fmt::format("label '{}' is already defined on line {}", in.label, it->second.pos.line));
   }
@@ -77,7 +89,7 @@ void Checker::collectLabels() {
 void Checker::collectPoints() {
   for (std::size_t i = 0; i < program_.points.size(); ++i) {
     const PointDef& p = program_.points[i];
-    const auto [it, fresh] = points_.try_emplace(key(p.name), Named{static_cast<std::uint32_t>(i), p.pos});
+    const auto [it, fresh] = points_.try_emplace(p.name, Named{static_cast<std::uint32_t>(i), p.pos});
     if (!fresh) diag_.error(p.pos, fmt::format("point '{}' is already defined on line {}", p.name, it->second.pos.line));
     if (p.values.size() != motors_.size()) continue;  // arity already reported
     for (std::size_t m = 0; m < motors_.size(); ++m) {
@@ -117,7 +129,7 @@ void Checker::resolveJump(const Instruction& in) {
   if (t.pos.line == 0) return;  // operand was malformed, already reported
   const std::size_t n = program_.instructions.size();
   if (!t.label.empty()) {
-    const auto it = labels_.find(key(t.label));
+    const auto it = labels_.find(t.label);
     if (it == labels_.end()) return diag_.error(t.pos, fmt::format("undefined label '{}'", t.label));
     res_.target[in.number - 1] = it->second.index;
     return;
@@ -131,14 +143,14 @@ void Checker::resolveJump(const Instruction& in) {
 
 void Checker::resolvePoint(const Instruction& in) {
   if (in.name.empty()) return;
-  const auto it = points_.find(key(in.name));
+  const auto it = points_.find(in.name);
   if (it == points_.end()) return diag_.error(in.namePos, fmt::format("undefined point '{}'", in.name));
   res_.slot[in.number - 1] = static_cast<std::uint16_t>(it->second.index);
 }
 
 void Checker::resolveVariable(const Instruction& in) {
   if (in.name.empty()) return;
-  auto [it, fresh] = variables_.try_emplace(key(in.name), Named{static_cast<std::uint32_t>(res_.variables.size()), in.namePos});
+  auto [it, fresh] = variables_.try_emplace(in.name, Named{static_cast<std::uint32_t>(res_.variables.size()), in.namePos});
   if (fresh) {
     if (res_.variables.size() == kMaxSlots) return diag_.error(in.namePos, "more than 65535 variables");
     res_.variables.push_back(in.name);

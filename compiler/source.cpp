@@ -1,11 +1,18 @@
 #include "compiler/source.h"
 
+#include <cstring>
+
 namespace rs::compiler {
 
 SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
   lineStarts_.push_back(0);
-  for (std::size_t i = 0; i < text_.size(); ++i)
-    if (text_[i] == '\n' && i + 1 < text_.size()) lineStarts_.push_back(i + 1);
+  const char* const begin = text_.data();
+  const char* const end = begin + text_.size();
+  // memchr: the library's vectorised search, much faster than a byte loop.
+  for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p))));) {
+    if (++p == end) break;
+    lineStarts_.push_back(static_cast<std::size_t>(p - begin));
+  }
 }
 
 std::string_view SourceFile::line(std::uint32_t number) const {
@@ -37,13 +44,32 @@ std::size_t utf8SequenceLength(std::string_view text, std::size_t i) {
   return n;
 }
 
-Utf8Problem findInvalidUtf8(std::string_view text) {
+namespace {
+
+// Where byte `at` is, when every byte before it is valid UTF-8: columns
+// count characters (lead bytes), as the lexer's do.
+Pos positionOf(std::string_view text, std::size_t at) {
   Pos pos{1, 1};
-  for (std::size_t i = 0; i < text.size();) {
-    const std::size_t n = utf8SequenceLength(text, i);
-    if (n == 0) return {true, pos, static_cast<unsigned char>(text[i])};
+  for (std::size_t i = 0; i < at; ++i) {
     if (text[i] == '\n') pos = {pos.line + 1, 1};
-    else ++pos.col;
+    else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) ++pos.col;
+  }
+  return pos;
+}
+
+}  // namespace
+
+Utf8Problem findInvalidUtf8(std::string_view text) {
+  constexpr std::uint64_t kHighBits = 0x8080808080808080ull;
+  for (std::size_t i = 0; i < text.size();) {
+    // Programs are mostly ASCII: skip it eight bytes at a time.
+    std::uint64_t word;
+    if (i + 8 <= text.size() && (std::memcpy(&word, text.data() + i, 8), (word & kHighBits) == 0)) {
+      i += 8;
+      continue;
+    }
+    const std::size_t n = utf8SequenceLength(text, i);
+    if (n == 0) return {true, positionOf(text, i), static_cast<unsigned char>(text[i])};
     i += n;
   }
   return {};

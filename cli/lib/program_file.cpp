@@ -26,6 +26,10 @@ std::optional<std::string> readFile(const std::string& path, std::string& error)
     return std::nullopt;
   }
   std::string text;
+  // Regular files: one allocation of the right size (growing by doubling
+  // would copy a large program several times). Pipes and devices: as read.
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size <= kMaxInputBytes) text.reserve(static_cast<std::size_t>(size));
   char buffer[1 << 16];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
