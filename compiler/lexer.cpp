@@ -162,6 +162,7 @@ antlr4::Token* TokenArray::LT(ssize_t k) {
 }
 
 size_t TokenArray::LA(ssize_t i) {
+  if (i == 1) return tokens_[p_].getType();  // the parser asks this before every word
   const antlr4::Token* t = LT(i);
   return t ? t->getType() : antlr4::Token::INVALID_TYPE;
 }
