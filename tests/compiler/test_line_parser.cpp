@@ -202,3 +202,30 @@ TEST_CASE("a parser token is small and carries no copy of its text", "[compiler]
   CHECK(t.getTokenIndex() == 7);
   CHECK(t.getCharPositionInLine() == 8);
 }
+
+TEST_CASE("line-by-line and whole-file parsing agree on 500 random programs", "[compiler][parser]") {
+  // Words from every token type, keywords in both cases, bad characters and
+  // line breaks of both kinds; a fixed seed keeps the test reproducible.
+  const std::vector<std::string> words = {
+      "MOVE", "moveto", "MOVEP", "GOTO", "jmpin", "OUTSIG", "JMPVAR", "GOSUB", "RETURN", "WAITFOR", "ADD",
+      "RESET", "WINDOW", "VIEW", "DELAY", "HRDHOME", "SETSOFT", "GOSOFT", "SET", "END", "POINTS", "ON", "off",
+      "n", "loop", "P1", "0", "1", "-5", "+7", "100", "2.5", "99999999999", ":", "<", ">", "=", "; note",
+      "@", "\t", "\n", "\n", "\n", "\r\n", "\r"};
+  std::uint32_t x = 2026;
+  auto next = [&x](std::size_t n) { return static_cast<std::size_t>((x = x * 1664525u + 1013904223u) >> 8) % n; };
+  int withInstructions = 0, withErrors = 0;
+  for (int program = 0; program < 500; ++program) {
+    std::string text;
+    const std::size_t length = next(60);
+    for (std::size_t i = 0; i < length; ++i) text += words[next(words.size())] + (next(3) ? " " : "");
+    INFO(text);
+    const Both b = parseBothWays("random.rsp", text);
+    REQUIRE(b.lineAst == b.wholeAst);
+    REQUIRE(b.lineDiagnostics == b.wholeDiagnostics);
+    withInstructions += b.lineAst.find("#1 ") != std::string::npos;
+    withErrors += !b.lineDiagnostics.empty();
+  }
+  // The programs exercised both paths: real instructions, and errors.
+  CHECK(withInstructions > 250);
+  CHECK(withErrors > 250);
+}
