@@ -21,6 +21,9 @@ class ToolTracker {
   /// TCP in world coordinates for the given motor positions (arm joints
   /// first; a trailing gripper value is ignored).
   std::array<double, 3> tcp(std::span<const std::int32_t> encoders);
+  /// The end-effector frame (the last frame: origin at the tool centre
+  /// point) in world coordinates, for the same motor positions.
+  Eigen::Isometry3d frame(std::span<const std::int32_t> encoders);
 
  private:
   kinematics::ChainModel chain_;  // placed in the world

@@ -1,0 +1,18 @@
+#include "runtime/grasp_observer.h"
+
+namespace rs::runtime {
+
+void GraspObserver::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
+  const auto after = vm.machine().positions();
+  change_.reset();
+  if (vm.image().code[index].op == vm::Op::Reset) {
+    if (const auto held = grasping_.held()) change_ = workcell::GraspChange{*held, false};
+    grasping_.reset();
+  } else {
+    change_ = grasping_.step(before_, after);
+  }
+  before_.assign(after.begin(), after.end());
+  if (next_) next_->afterStep(vm, index);
+}
+
+}  // namespace rs::runtime

@@ -1,0 +1,174 @@
+// Objects in the gripper (DESIGN.md "Objects", runtime/workcell/grasp.h),
+// on the library's gantry cell, where everything can be checked by hand:
+// the gantry's motors are Cartesian, 0.1 mm per unit, so its tool centre
+// point is (500 + X/10, 200 - Y/10, 400 + Z/10) (stdlib/robots/gantry.rsd,
+// stdlib/workcells/gantry-cell.rsd), and a block placed AT x y z occupies
+// x..x+40, y..y+40, z-40..z. The cell's objects: 0 pallet, 1 block
+// (x 200..240, y 30..70, z 660..700), 2 block (x 280..320), 3 pallet.
+#include <catch2/catch.hpp>
+
+#include <optional>
+#include <vector>
+
+#include "../render/render_test_util.h"
+#include "runtime/grasp_observer.h"
+#include "runtime/sim_machine.h"
+#include "runtime/workcell/grasp.h"
+
+namespace {
+
+using rs::workcell::GraspChange;
+
+// After every step: the motors, what the step did to the hold, and where
+// each object is then.
+struct StepView {
+  std::vector<std::int32_t> motors;
+  std::optional<GraspChange> change;
+  std::vector<Eigen::Vector3d> corner;  // each object's design origin in the world
+};
+
+class Collect final : public rs::vm::StepObserver {
+ public:
+  Collect(rs::runtime::GraspObserver*& grasp, std::size_t objects) : grasp_(grasp), objects_(objects) {}
+  void afterStep(const rs::vm::Interpreter& vm, std::uint32_t) override {
+    StepView v;
+    const auto pos = vm.machine().positions();
+    v.motors.assign(pos.begin(), pos.end());
+    v.change = grasp_->lastChange();
+    for (std::size_t o = 0; o < objects_; ++o)
+      v.corner.push_back(grasp_->grasping().objectPose(o, pos) * Eigen::Vector3d::Zero());
+    steps.push_back(v);
+  }
+  std::vector<StepView> steps;
+
+ private:
+  rs::runtime::GraspObserver*& grasp_;
+  std::size_t objects_;
+};
+
+std::vector<StepView> run(const rs::workcell::Workcell& cell, const std::string& program) {
+  const rs::vm::Image image = rendertest::compileText(program, cell);
+  rs::runtime::SimMachine machine(image.motors, {});
+  rs::vm::Interpreter vm(image, machine);
+  rs::workcell::Grasping grasping(cell);
+  rs::runtime::GraspObserver* self = nullptr;
+  Collect collect(self, cell.objects.size());
+  rs::runtime::GraspObserver observer(grasping, machine.positions(), &collect);
+  self = &observer;
+  const rs::vm::RunOutcome outcome = vm.run({}, &observer);
+  REQUIRE(outcome.ok());
+  return collect.steps;
+}
+
+// The block's placement origin is its design (0, 0, 0): world (x, y, z - 40)
+// for a block placed AT x y z.
+Eigen::Vector3d block1At(double dx, double dy, double dz) { return {200 + dx, 30 + dy, 660 + dz}; }
+
+void checkNear(const Eigen::Vector3d& got, const Eigen::Vector3d& want) {
+  INFO("got (" << got.x() << ", " << got.y() << ", " << got.z() << ") want (" << want.x() << ", " << want.y()
+               << ", " << want.z() << ")");
+  CHECK((got - want).norm() < 1e-6);
+}
+
+}  // namespace
+
+TEST_CASE("the tool centre point of the gantry is where the hand formula says", "[runtime][grasp]") {
+  const rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
+  rs::workcell::ToolTracker tool(cell.robots.front());
+  const std::vector<std::int32_t> motors = {-2800, 2800, 1500, 0};
+  const Eigen::Isometry3d F = tool.frame(motors);
+  checkNear(F.translation(), {220, 50, 680});
+  // The approach vector (z of the end-effector frame) points down, n along +x.
+  checkNear(F.linear().col(2), {0, -1, 0});
+  checkNear(F.linear().col(0), {1, 0, 0});
+}
+
+TEST_CASE("a closing gripper takes the block at its tool centre point and carries it", "[runtime][grasp]") {
+  const rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
+  const std::vector<StepView> s = run(cell,
+                                      "MOVETO -2800 2800 1500 0\n"    // TCP (220, 50, 680): block 1's centre
+                                      "MOVE 0 0 0 100\n"              // close
+                                      "MOVETO -2800 2800 0 100\n"     // lift 150: TCP y 200
+                                      "MOVETO 2300 -2200 0 100\n"     // carry: TCP (730, 200, 180)
+                                      "MOVETO 2300 -2200 1500 100\n"  // lower: TCP (730, 50, 180)
+                                      "MOVE 0 0 0 -100\n"             // open
+                                      "MOVETO 0 0 0 0\n"              // away
+                                      "END\n");
+  REQUIRE(s.size() == 8);
+  CHECK_FALSE(s[0].change);
+  checkNear(s[0].corner[1], block1At(0, 0, 0));
+  REQUIRE(s[1].change);
+  CHECK(s[1].change->object == 1);
+  CHECK(s[1].change->held);
+  checkNear(s[1].corner[1], block1At(0, 0, 0));  // taking it does not move it
+  checkNear(s[2].corner[1], block1At(0, 150, 0));
+  checkNear(s[3].corner[1], block1At(510, 150, -500));
+  checkNear(s[4].corner[1], block1At(510, 0, -500));
+  REQUIRE(s[5].change);
+  CHECK(s[5].change->object == 1);
+  CHECK_FALSE(s[5].change->held);
+  checkNear(s[6].corner[1], block1At(510, 0, -500));  // it stays where it was let go
+  // Nothing else moved.
+  for (const StepView& v : s) {
+    checkNear(v.corner[0], s[0].corner[0]);
+    checkNear(v.corner[2], s[0].corner[2]);
+    checkNear(v.corner[3], s[0].corner[3]);
+  }
+}
+
+TEST_CASE("an empty gripper, a closed gripper pushed into a block, and RESET", "[runtime][grasp]") {
+  const rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
+  const std::vector<StepView> s = run(cell,
+                                      "MOVE 0 0 0 100\n"             // closes at home, in the air: nothing
+                                      "MOVETO -2800 2800 1500 100\n"  // closed, into block 1: not taken
+                                      "MOVETO -2800 2800 1500 0\n"    // opens: holds nothing to let go
+                                      "MOVETO -2800 2800 1500 80\n"  // closes there: taken
+                                      "MOVETO 0 2800 0 80\n"         // carried: +280 x, +150 y
+                                      "RESET\n"                      // everything back
+                                      "MOVE 0 0 0 80\n"              // closes at home: nothing
+                                      "MOVETO -2800 2800 1500 80\n"  // comes closed: nothing
+                                      "END\n");
+  REQUIRE(s.size() == 9);
+  CHECK_FALSE(s[0].change);
+  CHECK_FALSE(s[1].change);
+  CHECK_FALSE(s[2].change);
+  REQUIRE(s[3].change);
+  CHECK(s[3].change->object == 1);
+  checkNear(s[4].corner[1], block1At(280, 150, 0));
+  REQUIRE(s[5].change);  // RESET lets go
+  CHECK_FALSE(s[5].change->held);
+  checkNear(s[5].corner[1], block1At(0, 0, 0));
+  CHECK_FALSE(s[6].change);
+  CHECK_FALSE(s[7].change);
+  checkNear(s[7].corner[1], block1At(0, 0, 0));
+}
+
+TEST_CASE("opening while moving lets go where the move starts; nested boxes give the smaller", "[runtime][grasp]") {
+  rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
+  // A fifth object: a crate around block 1 (x 150..290, y 0..120, z 620..740).
+  rs::workcell::PlacedObject crate;
+  crate.shape.name = "crate";
+  crate.shape.segments.push_back({{150, 0, 620}, {290, 120, 740}, rs::workcell::Color::White});
+  cell.objects.push_back(crate);
+  const std::vector<StepView> s = run(cell,
+                                      "MOVETO -2800 2800 1500 0\n"
+                                      "MOVE 0 0 0 100\n"          // inside block 1 and the crate: the block
+                                      "MOVE 1000 0 -1000 -100\n"  // opens while moving: let go at the start
+                                      "MOVETO -2500 2800 1000 100\n"  // TCP (250, 100, 680): the crate only
+                                      "MOVE 0 0 -1000 0\n"            // lift the crate by 100
+                                      "END\n");
+  REQUIRE(s.size() == 6);
+  REQUIRE(s[1].change);
+  CHECK(s[1].change->object == 1);
+  REQUIRE(s[2].change);
+  CHECK_FALSE(s[2].change->held);
+  checkNear(s[2].corner[1], block1At(0, 0, 0));
+  REQUIRE(s[3].change);
+  CHECK(s[3].change->object == 4);
+  CHECK_FALSE(s[4].change);
+  // The crate is drawn in world coordinates (identity placement): its
+  // origin moves with the lift, from (0, 0, 0) to (0, 100, 0).
+  checkNear(s[3].corner[4], {0, 0, 0});
+  checkNear(s[4].corner[4], {0, 100, 0});
+  checkNear(s[4].corner[1], block1At(0, 0, 0));
+}
