@@ -20,6 +20,8 @@ class GraspObserver final : public vm::StepObserver {
       : grasping_(grasping), before_(start.begin(), start.end()), next_(next) {}
 
   void afterStep(const vm::Interpreter& vm, std::uint32_t index) override;
+  /// The observer called after this one (it may ask lastChange()).
+  void setNext(vm::StepObserver* next) { next_ = next; }
 
   /// What the latest step did to the hold, if anything.
   const std::optional<workcell::GraspChange>& lastChange() const { return change_; }

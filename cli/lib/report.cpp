@@ -29,6 +29,26 @@ std::string lampList(std::uint8_t bits) {
   return s.empty() ? "none" : s;
 }
 
+// Each object at the end of the run: where its AT corner is, and whether
+// the gripper holds it or it was moved.
+struct ObjectEnd {
+  std::string_view name;
+  Eigen::Vector3d at;
+  bool held, moved;
+};
+
+std::vector<ObjectEnd> objectEnds(const RunReport& r, std::span<const std::int32_t> motors) {
+  std::vector<ObjectEnd> ends;
+  if (!r.grasping || !r.cell) return ends;
+  for (std::size_t o = 0; o < r.cell->objects.size(); ++o) {
+    const Eigen::Isometry3d pose = r.grasping->objectPose(o, motors);
+    const Eigen::Vector3d at = r.grasping->anchor(o, pose);
+    const Eigen::Vector3d placed = r.grasping->anchor(o, r.cell->objects[o].F_world_design);
+    ends.push_back({r.cell->objects[o].shape.name, at, r.grasping->held() == o, (at - placed).norm() > 1e-9});
+  }
+  return ends;
+}
+
 }  // namespace
 
 bool RunReport::ok() const {
@@ -58,6 +78,12 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? "  " : "", im.motors[i].letter, pos[i]);
   out << fmt::format("  motors          {}\n", motors);
   if (r.tool) out << fmt::format("  tool centre     {}\n", pointText(r.tool->tcp(pos)));
+  const std::vector<ObjectEnd> objects = objectEnds(r, pos);
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    const ObjectEnd& e = objects[o];
+    out << fmt::format("  {:<15} {} at {}{}\n", fmt::format("object {}", o + 1), e.name,
+                       pointText({e.at.x(), e.at.y(), e.at.z()}), e.held ? ", held" : e.moved ? ", moved" : "");
+  }
   out << fmt::format("  outputs         {}  (ON: {})\n", lampText(m.outputs()), lampList(m.outputs()));
   out << fmt::format("  inputs          {}  (ON: {})\n", lampText(m.inputs()), lampList(m.inputs()));
   std::string vars;
@@ -79,6 +105,13 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     for (std::size_t i = 0; i < pos.size(); ++i) motors[std::string(1, im.motors[i].letter)] = pos[i];
     j["motors"] = motors;
     if (r.tool) j["tcp"] = roundedPoint(r.tool->tcp(pos));
+    if (r.grasping && r.cell) {
+      Json objects = Json::array();
+      for (const ObjectEnd& e : objectEnds(r, pos))
+        objects.push_back({{"name", e.name}, {"at", roundedPoint({e.at.x(), e.at.y(), e.at.z()})}, {"held", e.held},
+                           {"moved", e.moved}});
+      j["objects"] = objects;
+    }
     Json outputs = Json::array(), inputs = Json::array();
     for (int i = 0; i < 8; ++i) {
       outputs.push_back(((m.outputs() >> i) & 1) != 0);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "compiler/diagnostics.h"
+#include "runtime/workcell/grasp.h"
 #include "runtime/workcell/tool_tracker.h"
 #include "vm/interpreter.h"
 
@@ -18,6 +19,8 @@ struct RunReport {
   const vm::Image* image = nullptr;
   const vm::Interpreter* vm = nullptr;
   workcell::ToolTracker* tool = nullptr;  // set when the program ran on a workcell
+  workcell::Grasping* grasping = nullptr;  // likewise: where its objects ended
+  const workcell::Workcell* cell = nullptr;
   bool realTime = false;                  // ran on a real controller: the clock is wall time
   std::vector<compiler::Diagnostic> diagnostics;  // compile + runtime
   bool ok() const;

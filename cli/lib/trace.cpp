@@ -39,6 +39,11 @@ std::string lampText(std::uint8_t bits) {
   return s;
 }
 
+std::string graspText(const workcell::GraspChange& change, const workcell::Workcell& cell) {
+  return fmt::format("{} {} (object {})", change.held ? "takes" : "lets go of", cell.objects[change.object].shape.name,
+                     change.object + 1);
+}
+
 void TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
   if (format_ == TraceFormat::Text) text(vm, index);
   else json(vm, index);
@@ -59,8 +64,10 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
   const auto pos = vm.machine().positions();
   for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? " " : "", im.motors[i].letter, pos[i]);
   const vm::Instr& in = im.code[index];
-  const std::string changed =
+  std::string changed =
       writesVariable(in) ? fmt::format("{}={}", im.variables[in.b], vm.variables()[in.b]) : std::string();
+  if (grasp_ && cell_ && grasp_->lastChange())
+    changed += (changed.empty() ? "" : "  ") + graspText(*grasp_->lastChange(), *cell_);
   const std::string tcp = tool_ ? fmt::format("{:<28}  ", pointText(tool_->tcp(pos))) : std::string();
   std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}{}", vm::formatSeconds(vm.machine().now()),
                                 index + 1, im.lines[index], vm::instructionText(im, index), motors, motorsWidth_,
@@ -89,6 +96,10 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   nlohmann::ordered_json changed = nlohmann::ordered_json::object();
   if (writesVariable(in)) changed[im.variables[in.b]] = vm.variables()[in.b];
   j["changed"] = changed;
+  if (grasp_ && cell_ && grasp_->lastChange()) {
+    const workcell::GraspChange& g = *grasp_->lastChange();
+    j["grasp"] = {{"object", g.object + 1}, {"name", cell_->objects[g.object].shape.name}, {"held", g.held}};
+  }
   out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
 }
 

@@ -4,6 +4,7 @@
 
 #include <ostream>
 
+#include "runtime/grasp_observer.h"
 #include "runtime/workcell/tool_tracker.h"
 #include "vm/interpreter.h"
 
@@ -13,9 +14,12 @@ enum class TraceFormat { Text, Json };
 
 class TraceWriter final : public vm::StepObserver {
  public:
-  /// With a tool tracker, each line also shows the tool centre point.
-  TraceWriter(std::ostream& out, TraceFormat format, workcell::ToolTracker* tool = nullptr)
-      : out_(out), format_(format), tool_(tool) {}
+  /// With a tool tracker, each line also shows the tool centre point; with
+  /// a grasp observer (which must call this writer after itself), the steps
+  /// that take or let go of an object say so.
+  TraceWriter(std::ostream& out, TraceFormat format, workcell::ToolTracker* tool = nullptr,
+              const runtime::GraspObserver* grasp = nullptr, const workcell::Workcell* cell = nullptr)
+      : out_(out), format_(format), tool_(tool), grasp_(grasp), cell_(cell) {}
   void afterStep(const vm::Interpreter& vm, std::uint32_t index) override;
 
  private:
@@ -24,9 +28,14 @@ class TraceWriter final : public vm::StepObserver {
   std::ostream& out_;
   TraceFormat format_;
   workcell::ToolTracker* tool_;
+  const runtime::GraspObserver* grasp_;
+  const workcell::Workcell* cell_;
   bool headerDone_ = false;
   std::size_t motorsWidth_ = 0;
 };
+
+/// "takes block (object 2)", "lets go of block (object 2)".
+std::string graspText(const workcell::GraspChange& change, const workcell::Workcell& cell);
 
 /// "1.3....." : the digit of each line that is ON, '.' for OFF.
 std::string lampText(std::uint8_t bits);

@@ -83,7 +83,22 @@ Json robotModel(const CellPoser& poser, std::size_t r, bool runsProgram) {
           {"gripper", gripper}};
 }
 
-Json runModel(const RunRecording& rec, const std::string& outcome) {
+// The grasp events as parallel arrays. Each pose is given as the page
+// applies it to the object's pts (world coordinates at its placement P):
+// a take's F_E_object · P⁻¹ (into the end-effector frame), a let-go's
+// F_world_object · P⁻¹ (identity when the object is back at P).
+Json graspModel(const RunRecording& rec, const workcell::Workcell& cell) {
+  Json step = Json::array(), at = Json::array(), object = Json::array(), held = Json::array(), pose = Json::array();
+  for (const GraspEvent& g : rec.grasps) {
+    if (g.object >= cell.objects.size()) continue;  // never expected: the recorder saw this cell
+    step.push_back(g.step), at.push_back(g.at), object.push_back(g.object), held.push_back(g.held);
+    const Eigen::Isometry3d P_inv = cell.objects[g.object].F_world_design.inverse(Eigen::Isometry);
+    for (const auto& v : matrix(g.pose * P_inv)) pose.push_back(v);
+  }
+  return {{"step", step}, {"at", at}, {"object", object}, {"held", held}, {"pose", pose}};
+}
+
+Json runModel(const RunRecording& rec, const workcell::Workcell& cell, const std::string& outcome) {
   Json motors = Json::array();
   for (const vm::MotorSpec& m : rec.motors)
     motors.push_back({{"letter", std::string(1, m.letter)},
@@ -121,7 +136,8 @@ Json runModel(const RunRecording& rec, const std::string& outcome) {
           {"moves", moves},
           {"outputs", {{"step", outStep}, {"mask", outMask}}},
           {"cameras", {{"step", camStep}, {"view", camView}, {"window", camWindow}}},
-          {"inputs", {{"at", inAt}, {"mask", inMask}}}};
+          {"inputs", {{"at", inAt}, {"mask", inMask}}},
+          {"grasps", graspModel(rec, cell)}};
 }
 
 std::string escapeHtml(std::string_view text) {
@@ -161,7 +177,7 @@ Json animationModel(const AnimationInput& input) {
           {"robots", robots},
           {"objects", objects},
           {"program", {{"name", input.listing.name}, {"lines", input.listing.lines}, {"lineOf", input.listing.lineOf}}},
-          {"run", runModel(*input.run, input.outcome)}};
+          {"run", runModel(*input.run, cell, input.outcome)}};
 }
 
 // The model goes into a <script type="application/json">; every '<' is

@@ -39,7 +39,13 @@ struct AnimationInput {
 };
 
 /// The page's data: {"title", "cell", "fit", "camera", "robots", "objects",
-/// "program", "run"} (the schema is described in docs/render.md).
+/// "program", "run"} (the schema is described in docs/render.md). Objects
+/// the gripper carries: "run"."grasps" holds the run's GraspEvents as
+/// parallel arrays "step", "at" (µs), "object" (index in "objects"),
+/// "held", and "pose" (12 numbers per event, a 3x4 column-major matrix
+/// that applies to the object's "pts", which are world coordinates at its
+/// placement P: F_E_object · P⁻¹ for a take, to be followed by the first
+/// robot's last frame F_world_E(t); F_world_object · P⁻¹ for a let-go).
 nlohmann::ordered_json animationModel(const AnimationInput& input);
 
 /// The whole HTML page.

@@ -9,6 +9,13 @@
 //              through one 3x4 matrix per part (view · frame [· finger])
 //           -> one canvas path and one stroke per EGA colour.
 //
+// Objects: an object's lines are stored in world coordinates at its
+// placement. The run's grasp events (run.grasps) move it: after a take,
+// its lines go through the program robot's last frame F_world_E(t) times
+// the recorded F_E_object (composed with the placement's inverse); after a
+// let-go, through the recorded resting pose; before its first event it is
+// where the workcell placed it.
+//
 // The camera formula is runtime/render/camera.h's. window.robotsim exposes
 // the state, the projection and frame-time statistics to tests and benches.
 #include "runtime/render/page.h"
@@ -128,6 +135,22 @@ const std::string_view kScript = R"JS('use strict';
   }
   for (const o of model.objects) { preparePart(o); allParts.push(o); }
 
+  // Each object's grasp events (in step order), and its two matrices.
+  const carrier = model.robots.find((r) => r.program) || null;
+  for (const o of model.objects) {
+    o.grasps = { step: [], at: [], held: [], pose: [] };
+    o.W = affine();  // F_world_E(t) · pose while carried
+    o.T = affine();  // view · the above
+  }
+  if (carrier) {
+    const g = run.grasps;
+    g.object.forEach((obj, e) => {
+      const list = model.objects[obj].grasps;
+      list.step.push(g.step[e]); list.at.push(g.at[e]); list.held.push(g.held[e]);
+      list.pose.push(Float64Array.from(g.pose.slice(12 * e, 12 * e + 12)));
+    });
+  }
+
   function poseRobot(r, enc) {
     const n = r.n, q = r.q;
     for (let k = 0; k < n; k++) {
@@ -152,10 +175,22 @@ const std::string_view kScript = R"JS('use strict';
       out[j + 1] = b * x + e * y + h * z + ty;
     }
   }
+  // The map from object o's stored pts to the world at step k, time t, or
+  // null while it is where the workcell placed it. The event in force is
+  // the last one of a step up to k that had happened by t (a take at its
+  // step's end, a let-go at its step's start): so stepping to the
+  // instruction before an opening move still shows the object held.
+  function objectPose(o, k, t) {
+    const g = o.grasps;
+    let e = k < 0 ? -1 : lastUpTo(g.step, k);
+    while (e >= 0 && g.at[e] > t) e--;
+    if (e < 0) return null;
+    return g.held[e] ? multiply(carrier.F[carrier.n], g.pose[e], o.W) : g.pose[e];
+  }
   // Poses every robot for the motor counts `enc` and fills every part's
-  // screen coordinates for the view matrix V.
+  // screen coordinates for the view matrix V; objects at step k, time t.
   const tmp = affine();
-  function projectAll(V, enc) {
+  function projectAll(V, enc, k, t) {
     for (const r of model.robots) {
       const e = r.program ? enc : r.zero;
       poseRobot(r, e);
@@ -170,7 +205,10 @@ const std::string_view kScript = R"JS('use strict';
         }
       }
     }
-    for (const o of model.objects) projectPart(V, o);
+    for (const o of model.objects) {
+      const P = objectPose(o, k, t);
+      projectPart(P ? multiply(V, P, o.T) : V, o);
+    }
   }
   function apply(T, x, y, z) {
     return [T[0] * x + T[3] * y + T[6] * z + T[9], T[1] * x + T[4] * y + T[7] * z + T[10]];
@@ -270,7 +308,7 @@ const std::string_view kScript = R"JS('use strict';
     stateAt(S.k, S.t, current);
     const cam = cameraFor(current, S.user);
     viewMatrix(cam.view, cam.window, cam.zoom, S.W, S.H, V);
-    projectAll(V, current.enc);
+    projectAll(V, current.enc, S.k, S.t);
     ctx.fillStyle = BACKGROUND;
     ctx.fillRect(0, 0, S.W, S.H);
     // One device pixel: Skia then draws hairlines, ten times faster than
@@ -477,10 +515,10 @@ const std::string_view kScript = R"JS('use strict';
     // program's VIEW/WINDOW, no mouse; lines in `robotsim render
     // --dump-lines` order, then the tool centre points.
     project(t, width, height) {
-      const st = stateAt(stepAt(t), t, { enc: new Int32Array(motorCount), view: [0, 0, 0], window: [0, 0, 0] });
+      const k = stepAt(t), st = stateAt(k, t, { enc: new Int32Array(motorCount), view: [0, 0, 0], window: [0, 0, 0] });
       const cam = cameraFor(st, { rx: 0, ry: 0, zoom: 1 });
       const M = viewMatrix(cam.view, cam.window, cam.zoom, width, height, affine());
-      projectAll(M, st.enc);
+      projectAll(M, st.enc, k, t);
       const lines = [], tools = [];
       for (const r of model.robots) {
         for (const p of r.parts) for (let j = 0; j < 4 * p.count; j += 4) lines.push(Array.from(p.screen.slice(j, j + 4)));

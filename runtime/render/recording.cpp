@@ -31,8 +31,9 @@ const T* lastUpTo(const std::vector<T>& items, std::size_t step) {
 
 }  // namespace
 
-RunRecorder::RunRecorder(const runtime::SimMachine& machine)
+RunRecorder::RunRecorder(const runtime::SimMachine& machine, const runtime::GraspObserver* grasp)
     : machine_(machine),
+      grasp_(grasp),
       lastSegment_(machine.motors().size()),
       lastPosition_(machine.positions().begin(), machine.positions().end()),
       lastOutputs_(machine.outputs()),
@@ -44,7 +45,19 @@ RunRecorder::RunRecorder(const runtime::SimMachine& machine)
   for (std::size_t m = 0; m < lastSegment_.size(); ++m) lastSegment_[m] = machine.segment(m);
 }
 
-void RunRecorder::afterStep(const vm::Interpreter&, std::uint32_t index) { record(index); }
+// The grasp observer has already seen this step (the recorder is its
+// `next`); the instruction that stops a run early (finish) never reaches
+// it, so it is not asked there.
+void RunRecorder::afterStep(const vm::Interpreter&, std::uint32_t index) {
+  record(index);
+  if (!grasp_ || !grasp_->lastChange()) return;
+  const workcell::GraspChange& c = *grasp_->lastChange();
+  const auto step = static_cast<std::uint32_t>(rec_.steps.size() - 1);
+  const StepRecord& s = rec_.steps.back();
+  const workcell::Grasping& g = grasp_->grasping();
+  rec_.grasps.push_back({step, c.held ? s.end : s.start, c.object, c.held,
+                         c.held ? g.heldOffset() : g.restingPose(c.object)});
+}
 
 // A motor whose segment changed moved, jumped (RESET) or was asked to stay
 // where it was; only the first two are kept.

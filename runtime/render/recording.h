@@ -1,14 +1,16 @@
 // A run as data: every executed instruction with the clock before and after
 // it, each motor's moves (SimMachine's segments), the output and camera
-// changes, and the inputs over time. What the HTML animation replays, and
+// changes, the inputs over time, and what the gripper took and let go. What the HTML animation replays, and
 // enough to answer "where was everything at time t" exactly as SimMachine
 // would (positionAt's integer rounding included).
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "runtime/grasp_observer.h"
 #include "runtime/sim_machine.h"
 #include "runtime/stimuli.h"
 #include "vm/interpreter.h"
@@ -48,6 +50,22 @@ struct InputLevel {
   std::uint8_t inputs = 0;
 };
 
+/// The first robot's gripper took (`held`) or let go of object `object`
+/// (an index in Workcell::objects) during step `step` (runtime/workcell/
+/// grasp.h). A take happens at the end of the closing move, `at` = the
+/// step's end, and `pose` is F_E_object: the object's placement in the
+/// end-effector frame, which it keeps until let go. A let-go happens as the
+/// opening move (or RESET) begins, `at` = the step's start, and `pose` is
+/// F_world_object, where the object rests from then on (its workcell
+/// placement after RESET).
+struct GraspEvent {
+  std::uint32_t step = 0;
+  vm::Micros at = 0;
+  std::size_t object = 0;
+  bool held = false;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+};
+
 struct RunRecording {
   std::vector<vm::MotorSpec> motors;
   std::vector<StepRecord> steps;
@@ -55,14 +73,17 @@ struct RunRecording {
   std::vector<OutputChange> outputs;
   std::vector<CameraChange> cameras;
   std::vector<InputLevel> inputs;  ///< starts at time 0
+  std::vector<GraspEvent> grasps;  ///< in step order; empty without a gripper
   vm::Micros end = 0;              ///< the clock when the run stopped
 };
 
 /// Records a run on `machine` (which must outlive it): pass it to
-/// Interpreter::run, then call finish.
+/// Interpreter::run, then call finish. To record grasps too, chain it after
+/// a GraspObserver (the one passed here, as that observer's `next`): it
+/// reads the observer's lastChange() after every step.
 class RunRecorder final : public vm::StepObserver {
  public:
-  explicit RunRecorder(const runtime::SimMachine& machine);
+  explicit RunRecorder(const runtime::SimMachine& machine, const runtime::GraspObserver* grasp = nullptr);
   void afterStep(const vm::Interpreter& vm, std::uint32_t index) override;
 
   /// Completes the recording: the instruction that stopped a run early (a
@@ -74,6 +95,7 @@ class RunRecorder final : public vm::StepObserver {
   void record(std::uint32_t index);
 
   const runtime::SimMachine& machine_;
+  const runtime::GraspObserver* grasp_;
   RunRecording rec_;
   std::vector<runtime::MotorSegment> lastSegment_;
   std::vector<std::int32_t> lastPosition_;

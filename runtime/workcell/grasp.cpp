@@ -76,4 +76,10 @@ Eigen::Isometry3d Grasping::objectPose(std::size_t o, std::span<const std::int32
   return resting_[o];
 }
 
+Eigen::Vector3d Grasping::anchor(std::size_t o, const Eigen::Isometry3d& pose) const {
+  const Eigen::AlignedBox3d& b = boxes_[o];
+  if (b.isEmpty()) return pose.translation();
+  return pose * Eigen::Vector3d(b.min().x(), b.min().y(), b.max().z());
+}
+
 }  // namespace rs::workcell

@@ -56,6 +56,10 @@ class Grasping {
   Eigen::Isometry3d objectPose(std::size_t o, std::span<const std::int32_t> encoders);
   /// The same for an object that is not held (where it rests now).
   const Eigen::Isometry3d& restingPose(std::size_t o) const { return resting_[o]; }
+  /// The corner of object `o` that a workcell's `OBJECT name AT x y z`
+  /// places (least x, least y, greatest z of its drawing), in the world,
+  /// for the object at `pose`: an object never moved answers its AT point.
+  Eigen::Vector3d anchor(std::size_t o, const Eigen::Isometry3d& pose) const;
 
  private:
   std::optional<std::size_t> objectAt(const Eigen::Vector3d& point) const;

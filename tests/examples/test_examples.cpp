@@ -33,6 +33,7 @@
 #include "cli/lib/app.h"
 #include "cli/lib/program_file.h"
 #include "compiler/compiler.h"
+#include "compiler/library.h"
 #include "vm/opcodes.h"
 
 namespace {
@@ -281,10 +282,63 @@ TEST_CASE("example pick_and_place deadlocks without its stimuli", "[examples]") 
   CHECK(j.at("diagnostics")[0].at("message").get<std::string>().rfind("deadlock: input 1 never turns ON", 0) == 0);
 }
 
+TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pallet", "[examples]") {
+  // The gantry cell (stdlib/workcells/gantry-cell.rsd, stdlib/robots/gantry.rsd):
+  // motors X Z Y A; X and Z 1000 u/s, Y 800 u/s, A 200 u/s.
+  // MOVETO -2800 2800 0 0     X 2.8 s, Z 2.8 s                           ->  2.8     (1)
+  // GOSUB pick: MOVE Y +1500  1.875 s; MOVE A +100 0.5 s; MOVE Y -1500
+  //             1.875 s; RETURN                                          ->  7.05    (6)
+  // MOVETO 1700 -2200 0 100   X 4500: 4.5 s, Z 5000: 5 s                 -> 12.05    (7)
+  // GOSUB place: 1.875 + 0.5 + 1.875                                     -> 16.3     (12)
+  // MOVETO -2000 2800 0 0     X 3700: 3.7 s, Z 5 s (A already 0)         -> 21.3     (13)
+  // GOSUB pick                                                           -> 25.55    (18)
+  // MOVETO 2700 -2200 0 100   X 4700: 4.7 s, Z 5 s                       -> 30.55    (19)
+  // GOSUB place                                                          -> 34.8     (24)
+  // HRDHOME                   X 2700: 2.7 s, Z 2200: 2.2 s               -> 37.5     (25)
+  // END                                                                              (26)
+  // Block 1 (placed AT 200 30 700) is taken with the TCP at (220, 50, 680)
+  // and let go at (670, 50, 180): moved by (450, 0, -500), AT corner
+  // (650, 30, 200). Block 2 (AT 280 30 700): from (300, 50, 680) to
+  // (770, 50, 180), by (470, 0, -500): (750, 30, 200). The pallets stay.
+  const Result r = robotsim({"run", (kExamples / "gantry_pick.rsp").string(), "--cell", "gantry-cell", "--format=json"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit == rs::cli::kOk);
+  REQUIRE(r.err.empty());
+  const Json j = Json::parse(r.out);
+  CHECK(j.at("status") == "ok");
+  CHECK(std::llround(j.at("time").get<double>() * 1e6) == 37'500'000);
+  CHECK(j.at("steps") == 26);
+  CHECK(j.at("motors") == Json::parse(R"({"X": 0, "Z": 0, "Y": 0, "A": 0})"));
+  const Json want = Json::parse(R"([
+    {"name": "pallet", "at": [150.0, 0.0, 760.0], "held": false, "moved": false},
+    {"name": "block",  "at": [650.0, 30.0, 200.0], "held": false, "moved": true},
+    {"name": "block",  "at": [750.0, 30.0, 200.0], "held": false, "moved": true},
+    {"name": "pallet", "at": [610.0, 0.0, 260.0], "held": false, "moved": false}])");
+  CHECK(j.at("objects") == want);
+}
+
+TEST_CASE("example gantry_pick: the trace says when the gripper takes and lets go", "[examples]") {
+  const Result r = robotsim({"run", (kExamples / "gantry_pick.rsp").string(), "--cell", "gantry-cell", "--trace"});
+  REQUIRE(r.exit == rs::cli::kOk);
+  std::vector<std::string> events;
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    const auto at = line.find("takes block");
+    const auto go = line.find("lets go of block");
+    if (at != std::string::npos) events.push_back(line.substr(0, 10) + " " + line.substr(at));
+    if (go != std::string::npos) events.push_back(line.substr(0, 10) + " " + line.substr(go));
+  }
+  // pick 1: down ends 4.675, close ends 5.175; place 1: 12.05 + 1.875 = 13.925, open ends 14.425;
+  // pick 2: 21.3 + 1.875 = 23.175, close ends 23.675; place 2: 30.55 + 1.875 = 32.425, open ends 32.925.
+  const std::vector<std::string> want = {"     5.175 takes block (object 2)", "    14.425 lets go of block (object 2)",
+                                         "    23.675 takes block (object 3)", "    32.925 lets go of block (object 3)"};
+  CHECK(events == want);
+}
+
 TEST_CASE("every example has a summary test above", "[examples]") {
   const std::set<std::string> tested{"first_moves.rsp",   "counted_loop.rsp",       "nested_subroutines.rsp",
                                      "soft_home.rsp",     "workcell_view.rsp",      "sensor_branching.rsp",
-                                     "pick_and_place.rsp"};
+                                     "pick_and_place.rsp", "gantry_pick.rsp"};
   std::set<std::string> found;
   for (const fs::path& p : exampleSources()) found.insert(p.filename().string());
   CHECK(found == tested);
@@ -298,7 +352,13 @@ TEST_CASE("the examples together use all 20 instructions", "[examples]") {
     std::optional<std::string> text = rs::cli::readFile(path.string(), error);
     REQUIRE(text);
     const rs::compiler::SourceFile source(path.string(), std::move(*text));
-    const rs::compiler::CompileResult compiled = rs::compiler::compile(source, rs::cli::defaultTarget());
+    // gantry_pick runs on the gantry cell; the others on the default robot.
+    const bool gantry = path.filename() == "gantry_pick.rsp";
+    rs::compiler::Library library(rs::compiler::librarySearchPath({}));
+    const std::optional<rs::workcell::Workcell> cell = gantry ? library.workcell("gantry-cell") : std::nullopt;
+    REQUIRE(cell.has_value() == gantry);
+    const rs::compiler::CompileResult compiled =
+        rs::compiler::compile(source, gantry ? rs::cli::cellTarget(*cell) : rs::cli::defaultTarget());
     REQUIRE(compiled.ok());
     CHECK(compiled.diagnostics.empty());
     for (const rs::vm::Instr& in : compiled.image->code) used.insert(in.op);
