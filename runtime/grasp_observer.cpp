@@ -9,7 +9,7 @@ void GraspObserver::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
     if (const auto held = grasping_.held()) change_ = workcell::GraspChange{*held, false};
     grasping_.reset();
   } else {
-    change_ = grasping_.step(before_, after);
+    change_ = grasping_.step(before_, after, !takeUntil_ || vm.machine().now() <= *takeUntil_);
   }
   before_.assign(after.begin(), after.end());
   if (next_) next_->afterStep(vm, index);

@@ -22,6 +22,9 @@ class GraspObserver final : public vm::StepObserver {
   void afterStep(const vm::Interpreter& vm, std::uint32_t index) override;
   /// The observer called after this one (it may ask lastChange()).
   void setNext(vm::StepObserver* next) { next_ = next; }
+  /// A step that ends after `t` takes nothing (a still at `t` shows a
+  /// closing move that has not ended; letting go happens at a move's start).
+  void takeNothingEndingAfter(vm::Micros t) { takeUntil_ = t; }
 
   /// What the latest step did to the hold, if anything.
   const std::optional<workcell::GraspChange>& lastChange() const { return change_; }
@@ -32,6 +35,7 @@ class GraspObserver final : public vm::StepObserver {
   std::vector<std::int32_t> before_;
   vm::StepObserver* next_;
   std::optional<workcell::GraspChange> change_;
+  std::optional<vm::Micros> takeUntil_;
 };
 
 }  // namespace rs::runtime

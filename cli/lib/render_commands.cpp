@@ -11,6 +11,7 @@
 #include "cli/lib/program_file.h"
 #include "cli/lib/report.h"
 #include "compiler/library.h"
+#include "runtime/grasp_observer.h"
 #include "runtime/render/animation.h"
 #include "runtime/render/draw.h"
 #include "runtime/render/moment.h"
@@ -226,7 +227,8 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   if (!o.program.empty()) {
     const vm::Image& image = *loaded.program.image;
     const std::uint64_t maxSteps = o.maxSteps ? o.maxSteps : vm::RunLimits{}.maxSteps;
-    const render::Moment m = render::runToMoment(image, std::move(stimuli), o.at.empty() ? maxTime : at, maxSteps);
+    const render::Moment m =
+        render::runToMoment(image, std::move(stimuli), o.at.empty() ? maxTime : at, maxSteps, &cell);
     if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
       const compiler::Diagnostic d = runtimeDiagnostic(image, m.outcome, image.sourceName);
       err << compiler::render(d, loaded.program.sourceOf(d.file));
@@ -234,6 +236,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
       return kRunFailed;
     }
     poser.setEncoders(0, m.encoders);
+    for (std::size_t i = 0; i < m.objects.size(); ++i) poser.setObjectPose(i, m.objects[i]);
     camera.view += Eigen::Vector3d(m.view.x, m.view.y, m.view.z);
     camera.window += Eigen::Vector3d(m.window.x, m.window.y, m.window.z);
     caption.title = fmt::format("{} on {}", baseName(o.program), cell.name);
@@ -270,13 +273,24 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   const vm::Image& image = *loaded.program.image;
   runtime::SimMachine machine(image.motors, stimuli);
   vm::Interpreter interpreter(image, machine);
-  render::RunRecorder recorder(machine);
+  // Objects in the gripper: Grasping follows the first robot's motors and
+  // the recorder, called after it, records what each step took or let go.
+  const workcell::Workcell& cell = *loaded.cell;
+  std::optional<workcell::Grasping> grasping;
+  std::optional<runtime::GraspObserver> grasp;
+  if (!cell.robots.empty() && cell.robots.front().robot.hasGripper) {
+    grasping.emplace(cell);
+    grasp.emplace(*grasping, machine.positions());
+  }
+  render::RunRecorder recorder(machine, grasp ? &*grasp : nullptr);
+  if (grasp) grasp->setNext(&recorder);
+  vm::StepObserver* observer = grasp ? static_cast<vm::StepObserver*>(&*grasp) : &recorder;
   const vm::RunLimits limits{o.maxSteps ? o.maxSteps : kAnimateMaxSteps, maxTime};
-  const vm::RunOutcome outcome = interpreter.run(limits, &recorder);
+  const vm::RunOutcome outcome = interpreter.run(limits, observer);
   const render::RunRecording recording = recorder.finish(outcome, stimuli);
 
   render::AnimationInput input;
-  input.cell = &*loaded.cell;
+  input.cell = &cell;
   input.run = &recording;
   input.listing = listing(loaded.program);
   input.camera = camera;

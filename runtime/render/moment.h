@@ -4,11 +4,13 @@
 // stateAt on a full recording, without keeping one.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <vector>
 
 #include "runtime/sim_machine.h"
 #include "runtime/stimuli.h"
+#include "runtime/workcell/model.h"
 #include "vm/image.h"
 #include "vm/interpreter.h"
 
@@ -23,10 +25,14 @@ struct Moment {
   /// False when the run failed (runtime error, deadlock, step limit) at or
   /// before `at`; reaching `at` (the time limit) or END is success.
   bool reached = false;
+  /// With a workcell: each object's placement (F_world_design) at `at`,
+  /// carried by the gripper or resting (runtime/workcell/grasp.h).
+  std::vector<Eigen::Isometry3d> objects;
 };
 
-/// Runs `image` (verified) with `stimuli` until the clock passes `at`.
+/// Runs `image` (verified) with `stimuli` until the clock passes `at`; on
+/// `cell` (its first robot runs the program) the objects follow the gripper.
 Moment runToMoment(const vm::Image& image, runtime::Stimuli stimuli, vm::Micros at,
-                   std::uint64_t maxSteps = vm::RunLimits{}.maxSteps);
+                   std::uint64_t maxSteps = vm::RunLimits{}.maxSteps, const workcell::Workcell* cell = nullptr);
 
 }  // namespace rs::render

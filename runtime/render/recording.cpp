@@ -55,8 +55,8 @@ void RunRecorder::afterStep(const vm::Interpreter&, std::uint32_t index) {
   const auto step = static_cast<std::uint32_t>(rec_.steps.size() - 1);
   const StepRecord& s = rec_.steps.back();
   const workcell::Grasping& g = grasp_->grasping();
-  rec_.grasps.push_back({step, c.held ? s.end : s.start, c.object, c.held,
-                         c.held ? g.heldOffset() : g.restingPose(c.object)});
+  rec_.grasps.push_back(
+      {step, c.held ? s.end : s.start, c.object, c.held, c.held ? g.heldOffset() : g.restingPose(c.object)});
 }
 
 // A motor whose segment changed moved, jumped (RESET) or was asked to stay

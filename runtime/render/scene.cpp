@@ -23,6 +23,7 @@ void addAxes(std::vector<Line3>& out, const Eigen::Isometry3d& F, int robot, int
 }  // namespace
 
 CellPoser::CellPoser(const workcell::Workcell& cell) : cell_(&cell), robots_(cell.robots.size()) {
+  for (const workcell::PlacedObject& o : cell.objects) objects_.push_back(o.F_world_design);
   for (std::size_t r = 0; r < robots_.size(); ++r) {
     const workcell::PlacedRobot& placed = cell.robots[r];
     RobotState& s = robots_[r];
@@ -87,7 +88,7 @@ void CellPoser::lines(std::vector<Line3>& out, double axisLength) const {
   }
   for (std::size_t o = 0; o < cell_->objects.size(); ++o) {
     const workcell::PlacedObject& object = cell_->objects[o];
-    addShape(out, object.shape, object.F_world_design, {PartKind::Object, static_cast<int>(o), 0});
+    addShape(out, object.shape, objects_[o], {PartKind::Object, static_cast<int>(o), 0});
   }
 }
 

@@ -7,7 +7,7 @@
 // (link 0 never moves). The gripper's base moves with the end-effector
 // frame n the same way; a finger point is first turned by its finger
 // transform (in design coordinates), then moved like the base. Objects
-// stay where the workcell placed them.
+// are drawn where the workcell placed them, or where setObjectPose says.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -54,6 +54,9 @@ class CellPoser {
   /// gripper); missing trailing values count as 0.
   void setEncoders(std::size_t robot, std::span<const std::int32_t> encoders);
   std::span<const std::int32_t> encoders(std::size_t robot) const { return robots_[robot].encoders; }
+  /// Where object `o` is drawn (F_world_design of its lines): where the
+  /// workcell placed it until set, e.g. to where a gripper carried it.
+  void setObjectPose(std::size_t o, const Eigen::Isometry3d& pose) { objects_[o] = pose; }
 
   /// Every line: each robot's links, gripper base and fingers, then the
   /// objects; with `axisLength` > 0 also each robot's frames 0..n.
@@ -85,6 +88,7 @@ class CellPoser {
 
   const workcell::Workcell* cell_;
   std::vector<RobotState> robots_;
+  std::vector<Eigen::Isometry3d> objects_;  // F_world_design of each object
   std::vector<Eigen::Vector3d> homePoints_;
 };
 

@@ -44,7 +44,8 @@ std::optional<std::size_t> Grasping::objectAt(const Eigen::Vector3d& point) cons
   return best;
 }
 
-std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, std::span<const std::int32_t> after) {
+std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
+                                          bool mayTake) {
   if (!tool_ || gripperMotor_ >= before.size() || gripperMotor_ >= after.size()) return std::nullopt;
   const std::int32_t from = before[gripperMotor_], to = after[gripperMotor_];
   if (from == to) return std::nullopt;
@@ -57,7 +58,7 @@ std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, 
     held_.reset();
     return GraspChange{o, false};
   }
-  if (held_) return std::nullopt;  // closing further on what it holds
+  if (held_ || !mayTake) return std::nullopt;  // closing further on what it holds
   const Eigen::Isometry3d F_world_E = tool_->frame(after);
   const std::optional<std::size_t> o = objectAt(F_world_E.translation());
   if (!o) return std::nullopt;

@@ -42,8 +42,11 @@ class Grasping {
   explicit Grasping(const Workcell& cell, std::size_t robot = 0);
 
   /// One step of the program moved the robot's motors (arm joints, then
-  /// the gripper, as a program sees them) from `before` to `after`.
-  std::optional<GraspChange> step(std::span<const std::int32_t> before, std::span<const std::int32_t> after);
+  /// the gripper, as a program sees them) from `before` to `after`. With
+  /// `mayTake` false a closing move takes nothing: a still of a moment
+  /// during a closing move, which has not ended yet.
+  std::optional<GraspChange> step(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
+                                  bool mayTake = true);
   /// RESET: nothing held, every object back at its placement.
   void reset();
 

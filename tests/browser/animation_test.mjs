@@ -8,7 +8,8 @@
 // Checks: the page loads without fetching anything, its canvas is drawn,
 // its projection equals `robotsim render --dump-lines` to 1e-6 px, dragging
 // turns the picture, the wheel zooms, Play advances the time and the
-// highlighted line, the lamps follow the outputs. Saves DIR/animation.png.
+// highlighted line, the lamps follow the outputs, a block the gripper
+// carries moves with it and the others stay. Saves DIR/animation.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
@@ -65,7 +66,7 @@ robotsim(['animate', path.join(examples, 'pick_and_place.rsp'), '--cell', 'scara
 const AT = 2.5;  // seconds: MOVEP ABOVE_PICK is under way
 const stills = (program, cell, times, extra = []) => times.map((t) => ({
   t,
-  still: JSON.parse(robotsim(['render', cell, '--program', path.join(examples, program), ...extra, '--at', String(t),
+  still: JSON.parse(robotsim(['render', cell, '--program', path.resolve(examples, program), ...extra, '--at', String(t),
                               '--dump-lines=json'])),
 }));
 const pickStills = stills('pick_and_place.rsp', 'scara-pick', [AT, 4.2, 6.2, 20],
@@ -74,6 +75,17 @@ const still = pickStills[0].still;
 const viewHtml = path.join(out, 'view.html');
 robotsim(['animate', path.join(examples, 'workcell_view.rsp'), '--cell', 'scara-pick', '-o', viewHtml]);
 const viewStills = stills('workcell_view.rsp', 'scara-pick', [1, 3, 3.6, 5]);
+// The gantry pick-and-place of tests/runtime/test_grasp.cpp: the gripper
+// takes block 1 (object 1) at 3.3 s, at the end of its closing move, carries
+// it, and lets go at 12.15 s, as its opening move starts; then leaves.
+const gantryProgram = path.join(out, 'gantry_carry.rsp');
+fs.writeFileSync(gantryProgram, ['MOVETO -2800 2800 1500 0', 'MOVE 0 0 0 100', 'MOVETO -2800 2800 0 100',
+                                 'MOVETO 2300 -2200 0 100', 'MOVETO 2300 -2200 1500 100', 'MOVE 0 0 0 -100',
+                                 'MOVETO 0 0 0 0', 'END', ''].join('\n'));
+const gantryHtml = path.join(out, 'gantry.html');
+robotsim(['animate', gantryProgram, '--cell', 'gantry-cell', '-o', gantryHtml]);
+const GANTRY_AT = { before: 2, closing: 3.1, carrying: 8, opening: 12.4, away: 14 };  // seconds
+const gantryStills = stills(gantryProgram, 'gantry-cell', Object.values(GANTRY_AT));
 
 // Largest difference between the page's lines and tools and render's.
 function difference(mine, reference) {
@@ -208,7 +220,51 @@ try {
   await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
   await compare(viewStills);
 
-  const foreign = requests.filter((u) => u !== url && u !== 'file://' + viewHtml && !u.startsWith('data:'));
+  // ---- the carried block moves with the gripper; the other block does not
+  await page.goto('file://' + gantryHtml);
+  await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
+  await compare(gantryStills);
+  // Object o's lines in project()'s list: after every robot part's, then
+  // the objects' in order. Their mean screen point stands for the object.
+  const gantry = await page.evaluate((times) => {
+    const m = window.robotsim.model;
+    let first = 0;
+    for (const r of m.robots) for (const p of r.parts) first += p.colors.length;
+    const range = m.objects.map((o) => { const at = first; first += o.colors.length; return [at, o.colors.length]; });
+    const at = {};
+    for (const [name, t] of Object.entries(times)) {
+      const { lines, tools } = window.robotsim.project(t * 1e6, 1024, 768);
+      at[name] = {
+        tool: tools[0],
+        objects: range.map(([a, n]) => {
+          let u = 0, v = 0;
+          for (let i = a; i < a + n; i++) { u += lines[i][0] + lines[i][2]; v += lines[i][1] + lines[i][3]; }
+          return [u / (2 * n), v / (2 * n)];
+        }),
+      };
+    }
+    return { names: m.objects.map((o) => o.name), at };
+  }, GANTRY_AT);
+  const moved = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1]);
+  const G = gantry.at;
+  check(gantry.names[1] === 'block' && gantry.names[2] === 'block', 'the gantry cell has its two blocks',
+        gantry.names.join(' '));
+  check(moved(G.before.objects[1], G.closing.objects[1]) < 1e-9, 'a closing gripper has not taken the block yet');
+  const carried = moved(G.before.objects[1], G.carrying.objects[1]);
+  check(carried > 50, 'the carried block moves with the gripper', `${carried.toFixed(1)} px at ${GANTRY_AT.carrying} s`);
+  // The gantry only translates and the projection is affine: the block
+  // moves on screen exactly as the tool centre point does.
+  const offset = (o, t) => [o[0] - t[0], o[1] - t[1]];
+  check(moved(offset(G.closing.objects[1], G.closing.tool), offset(G.carrying.objects[1], G.carrying.tool)) < 1e-6,
+        '  as the tool centre point does');
+  check(moved(G.opening.objects[1], G.away.objects[1]) < 1e-9 && moved(G.opening.tool, G.away.tool) > 50,
+        'once let go, it stays where it was put');
+  check(moved(G.opening.objects[1], G.before.objects[1]) > 50, '  away from where it started');
+  const othersStill = Object.keys(GANTRY_AT).every((k) => [0, 2, 3].every((o) => moved(G[k].objects[o], G.before.objects[o]) < 1e-9));
+  check(othersStill, 'the other block and the pallets do not move');
+
+  const foreign = requests.filter((u) => u !== url && u !== 'file://' + viewHtml && u !== 'file://' + gantryHtml &&
+                                         !u.startsWith('data:'));
   check(foreign.length === 0, 'nothing but the page itself was requested', foreign.join(' '));
   check(errors.length === 0, 'no errors on the way', errors.join('; '));
   console.log(`PASS: ${checks} checks`);

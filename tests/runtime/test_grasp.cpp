@@ -12,6 +12,7 @@
 
 #include "../render/render_test_util.h"
 #include "runtime/grasp_observer.h"
+#include "runtime/render/moment.h"
 #include "runtime/sim_machine.h"
 #include "runtime/workcell/grasp.h"
 
@@ -171,4 +172,29 @@ TEST_CASE("opening while moving lets go where the move starts; nested boxes give
   checkNear(s[3].corner[4], {0, 0, 0});
   checkNear(s[4].corner[4], {0, 100, 0});
   checkNear(s[4].corner[1], block1At(0, 0, 0));
+}
+
+TEST_CASE("a still of a moment shows the block where the gripper has it then", "[runtime][grasp][render]") {
+  // examples/gantry_pick.rsp; its timeline is derived in tests/examples/test_examples.cpp:
+  //   4.675 .. 5.175  close on block 1 (taken at 5.175)
+  //   5.175 .. 7.05   up: Y 1500 -> 0 at 800 u/s
+  //   7.05  .. 12.05  MOVETO 1700 -2200 0 100: X -2800 -> 1700, Z 2800 -> -2200, both 1000 u/s
+  //  13.925 .. 14.425 open (let go at 13.925, TCP (670, 50, 180))
+  // The block's design origin is its corner (x, y, z - 40) = TCP - (20, 20, 20) while held.
+  const rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
+  const rs::vm::Image image = rendertest::compile(rendertest::kSourceDir + "/examples/gantry_pick.rsp", cell);
+  const auto blockAt = [&](double seconds) {
+    const rs::render::Moment m =
+        rs::render::runToMoment(image, {}, static_cast<rs::vm::Micros>(seconds * 1e6), rs::vm::RunLimits{}.maxSteps, &cell);
+    REQUIRE(m.reached);
+    REQUIRE(m.objects.size() == 4);
+    checkNear(m.objects[2] * Eigen::Vector3d::Zero(), {280, 30, 660});  // block 2 has not moved yet
+    return Eigen::Vector3d(m.objects[1] * Eigen::Vector3d::Zero());
+  };
+  checkNear(blockAt(5.0), block1At(0, 0, 0));    // closing: not taken yet
+  checkNear(blockAt(6.0), {200, 96, 660});       // 0.825 s up: Y 840, TCP y 116
+  checkNear(blockAt(10.0), {495, 180, 365});     // 2.95 s along: X 150, Z -150: TCP (515, 200, 385)
+  checkNear(blockAt(14.0), {650, 30, 160});      // opening: let go at its start
+  // Without a cell the moment has no objects.
+  CHECK(rs::render::runToMoment(image, {}, 10'000'000).objects.empty());
 }
