@@ -299,6 +299,10 @@ bool Parser::motorClause(Cursor& c, char& letter, Pos& letterPos, double& precis
       diag_.error(rangePos, fmt::format("range {}..{} is empty: the minimum is greater than the maximum", min, max));
       return false;
     }
+    if (min > 0 || max < 0) {
+      diag_.error(rangePos, fmt::format("range {}..{} must include 0: every motor starts at encoder 0 (home)", min, max));
+      return false;
+    }
     return true;
   }
   if (c.keyword("SPEED")) {

@@ -21,6 +21,8 @@ std::string checkMotors(const Image& image) {
       if (image.motors[j].letter == m.letter) return fmt::format("motor letter {} appears twice", m.letter);
     if (m.kind > JointKind::Gripper) return fmt::format("motor {} has an unknown joint kind", m.letter);
     if (m.min > m.max) return fmt::format("motor {} range {}..{} is empty", m.letter, m.min, m.max);
+    if (m.min > 0 || m.max < 0)
+      return fmt::format("motor {} range {}..{} does not include 0, where every motor starts", m.letter, m.min, m.max);
     if (m.speed <= 0) return fmt::format("motor {} speed {} is not positive", m.letter, m.speed);
     if (!(m.precision > 0.0 && m.precision < 1e9))
       return fmt::format("motor {} precision is not a positive number", m.letter);

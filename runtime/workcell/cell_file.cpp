@@ -107,7 +107,7 @@ std::optional<Robot> readRobot(In& in) {
     j.letter = in.letter();
     j.coupling = in.u8() != 0;
     j.precision = in.number(), j.min = in.i32(), j.max = in.i32(), j.speed = in.i32();
-    if (!in.failed && (j.min > j.max || j.speed <= 0 || j.precision <= 0)) in.fail("a joint with a bad range, speed or precision");
+    if (!in.failed && (j.min > j.max || j.min > 0 || j.max < 0 || j.speed <= 0 || j.precision <= 0)) in.fail("a joint with a bad range, speed or precision");
     r.joints.push_back(j);
   }
   r.hasGripper = in.u8() != 0;
@@ -119,7 +119,7 @@ std::optional<Robot> readRobot(In& in) {
     g.model.r2.point = in.vec(), g.model.r2.direction = in.vec();
     g.model.r3.point = in.vec(), g.model.r3.direction = in.vec();
     g.model.F_G_E = in.pose();
-    if (!in.failed && (g.min > g.max || g.speed <= 0 || g.model.precision <= 0)) in.fail("a gripper with a bad range");
+    if (!in.failed && (g.min > g.max || g.min > 0 || g.max < 0 || g.speed <= 0 || g.model.precision <= 0)) in.fail("a gripper with a bad range");
   }
   if (in.failed) return std::nullopt;
   if (r.frames.size() != r.joints.size() + 1 || r.links.empty()) {

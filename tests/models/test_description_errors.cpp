@@ -626,6 +626,17 @@ TEST_CASE("description: one slip gives one message, also in a file loaded by nam
   dir.write("w.rsd", lines({"WORKCELL w", "  ROBOT arm", "END"}));
   CHECK(workcellErrors(dir, "w.rsd") ==
         Strings{"arm.rsd:7:47: range 10..-10 is empty: the minimum is greater than the maximum"});
+
+  // Every motor starts at encoder 0, so a range must include it.
+  dir.write("arm.rsd", kBase + lines({
+                                    "ROBOT arm",                                               // 4
+                                    "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",  // 5
+                                    "  LINK base FRAME ORIGIN 0 0 5 XAXIS 1 0 5 ZAXIS 0 0 6",  // 6
+                                    "  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE 10 100",   // 7
+                                    "END",
+                                }));
+  CHECK(workcellErrors(dir, "w.rsd") ==
+        Strings{"arm.rsd:7:47: range 10..100 must include 0: every motor starts at encoder 0 (home)"});
 }
 
 TEST_CASE("description: a LINK header without a name gives one message, not one per line", "[models]") {

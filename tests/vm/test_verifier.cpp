@@ -508,6 +508,13 @@ TEST_CASE("verifier: motor table", "[verifier]") {
         b.motors[2].max = -10;
       },
       "motor C range 10..-10 is empty");
+  rejected(
+      [](Image& b) {
+        b.motors[2].min = 10;
+        b.motors[2].max = 20;
+      },
+      "motor C range 10..20 does not include 0, where every motor starts");
+  rejected([](Image& b) { b.motors[1].max = -1; }, "motor D range -550..-1 does not include 0, where every motor starts");
   rejected([](Image& b) { b.motors[3].speed = 0; }, "motor B speed 0 is not positive");
   rejected([](Image& b) { b.motors[3].speed = -5; }, "motor B speed -5 is not positive");
   rejected([](Image& b) { b.motors[4].precision = 0.0; }, "motor A precision is not a positive number");
