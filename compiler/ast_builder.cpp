@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "RobotProgramParser.h"
+#include "vm/ascii.h"
 
 namespace rs::compiler {
 
@@ -12,7 +13,8 @@ namespace {
 
 using P = rs_grammar::RobotProgramParser;
 
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+using vm::asciiUpper;
+using vm::sameName;
 
 Pos posOf(const antlr4::Token* t) {
   return {static_cast<std::uint32_t>(t->getLine()), static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)};
@@ -405,7 +407,7 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
     row[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
       const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (upper(a[i - 1]) == b[j - 1] ? 0 : 1)});
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (asciiUpper(a[i - 1]) == b[j - 1] ? 0 : 1)});
       diag = up;
     }
   }
@@ -414,9 +416,6 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 
 }  // namespace
 
-bool sameName(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return upper(x) == upper(y); });
-}
 
 std::string_view closestMnemonic(std::string_view word) {
   if (word.size() > 16) return {};

@@ -22,8 +22,6 @@ Program buildAst(const SourceFile& source, LineParser& parser, std::span<const v
 /// " <input> ON|OFF <line>".
 std::string_view operandUsage(vm::Format format);
 
-/// Case-insensitive equality of ASCII names (keywords, labels, points).
-bool sameName(std::string_view a, std::string_view b);
 
 /// The mnemonic closest to a misspelled one ("MOVX" -> "MOVE"), or empty.
 std::string_view closestMnemonic(std::string_view word);

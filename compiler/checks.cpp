@@ -4,7 +4,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "compiler/ast_builder.h"
+#include "vm/ascii.h"
 
 namespace rs::compiler {
 
@@ -15,18 +15,16 @@ constexpr std::size_t kMaxSlots = 65535;
 // Names are case-insensitive, like keywords. The tables key on the name as
 // written (a view into the source, which outlives them), hashed and compared
 // without regard to ASCII case: no copy per lookup.
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
-
 struct CaseInsensitiveHash {
   std::size_t operator()(std::string_view s) const {
     std::uint64_t h = 14695981039346656037ull;  // FNV-1a
-    for (char c : s) h = (h ^ static_cast<unsigned char>(upper(c))) * 1099511628211ull;
+    for (char c : s) h = (h ^ static_cast<unsigned char>(vm::asciiUpper(c))) * 1099511628211ull;
     return static_cast<std::size_t>(h);
   }
 };
 
 struct CaseInsensitiveEqual {
-  bool operator()(std::string_view a, std::string_view b) const { return sameName(a, b); }
+  bool operator()(std::string_view a, std::string_view b) const { return vm::sameName(a, b); }
 };
 
 struct Named {

@@ -7,7 +7,7 @@
 
 #include "RobotModelLexer.h"
 #include "RobotModelParser.h"
-#include "compiler/ast_builder.h"
+#include "vm/ascii.h"
 #include "compiler/compiler.h"
 
 namespace rs::compiler {
@@ -42,7 +42,7 @@ class Cursor {
   Pos pos() const { return atEnd() ? end_ : w_[i_].pos; }
 
   bool keyword(std::string_view kw) {
-    if (atEnd() || peek().type != MP::NAME || !sameName(peek().text, kw)) return false;
+    if (atEnd() || peek().type != MP::NAME || !vm::sameName(peek().text, kw)) return false;
     ++i_;
     return true;
   }
@@ -94,7 +94,7 @@ class Cursor {
     at = pos();
     if (atEnd() || peek().type != MP::NAME || peek().text.size() != 1 || !std::isalpha(static_cast<unsigned char>(peek().text[0])))
       return fail("a motor letter A..Z");
-    out = static_cast<char>(std::toupper(static_cast<unsigned char>(peek().text[0])));
+    out = vm::asciiUpper(peek().text[0]);
     ++i_;
     return true;
   }
@@ -373,7 +373,7 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
   if (c.keyword("GRIPPER")) return c.name(r.gripper, "a gripper name");
   if (r.joints.empty()) {
     for (std::string_view kw : {"LETTER", "PRECISION", "RANGE", "SPEED"})
-      if (!c.atEnd() && sameName(c.peek().text, kw)) {
+      if (!c.atEnd() && vm::sameName(c.peek().text, kw)) {
         diag_.error(c.pos(), fmt::format("{} before any JOINT: motor settings belong to the JOINT before them", kw));
         return false;
       }
@@ -420,7 +420,7 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
 
 std::optional<workcell::Color> colorByName(std::string_view word) {
   for (std::size_t i = 0; i < kColorNames.size(); ++i)
-    if (sameName(word, kColorNames[i]) || word == std::to_string(i)) return static_cast<Color>(i);
+    if (vm::sameName(word, kColorNames[i]) || word == std::to_string(i)) return static_cast<Color>(i);
   return std::nullopt;
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "runtime/stimuli.h"
+#include "vm/ascii.h"
 #include "vm/opcodes.h"
 
 namespace rs::runtime::text {
@@ -18,8 +19,6 @@ bool allDigits(std::string_view s) {
     if (!isDigit(c)) return false;
   return !s.empty();
 }
-
-char lowerAscii(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
 
 std::string_view stripLeadingZeros(std::string_view digits) {
   while (digits.size() > 1 && digits.front() == '0') digits.remove_prefix(1);
@@ -42,12 +41,7 @@ bool looksLikeSeconds(std::string_view token) {
 
 }  // namespace
 
-bool equalsKeyword(std::string_view token, std::string_view keyword) {
-  if (token.size() != keyword.size()) return false;
-  for (std::size_t i = 0; i < token.size(); ++i)
-    if (lowerAscii(token[i]) != lowerAscii(keyword[i])) return false;
-  return true;
-}
+bool equalsKeyword(std::string_view token, std::string_view keyword) { return vm::sameName(token, keyword); }
 
 std::string quoted(std::string_view token) {
   const bool cut = token.size() > kMaxQuotedBytes;

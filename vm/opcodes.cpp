@@ -2,11 +2,11 @@
 
 #include <cstdint>
 
+#include "vm/ascii.h"
+
 namespace rs::vm {
 
 namespace {
-
-constexpr char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
 
 // A name of up to 8 characters packed into one integer, upper-cased: the
 // lookup compares 20 integers instead of 20 strings (it runs for every
@@ -14,7 +14,7 @@ constexpr char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>
 constexpr std::uint64_t packUpper(std::string_view name) {
   std::uint64_t key = 0;
   for (std::size_t i = 0; i < name.size(); ++i)
-    key |= std::uint64_t{static_cast<unsigned char>(upper(name[i]))} << (8 * i);
+    key |= std::uint64_t{static_cast<unsigned char>(asciiUpper(name[i]))} << (8 * i);
   return key;
 }
 
