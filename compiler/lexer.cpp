@@ -14,13 +14,6 @@ bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isIdentStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
 bool isIdentPart(char c) { return isIdentStart(c) || isDigit(c); }
 
-std::size_t utf8Length(unsigned char lead) {
-  if (lead < 0x80) return 1;
-  if ((lead & 0xE0) == 0xC0) return 2;
-  if ((lead & 0xF0) == 0xE0) return 3;
-  return 4;
-}
-
 }  // namespace
 
 std::string_view tokenTypeName(size_t type) {
@@ -68,7 +61,7 @@ void Lexer::skipBlanksAndComments() {
 
 void Lexer::badCharacter() {
   const auto c = static_cast<unsigned char>(text_[pos_]);
-  const std::size_t n = std::min(utf8Length(c), text_.size() - pos_);
+  const std::size_t n = std::max<std::size_t>(utf8SequenceLength(text_, pos_), 1);  // the source is valid UTF-8
   std::string shown = (c >= 0x20 && c < 0x7F) || c >= 0x80 ? fmt::format("'{}'", text_.substr(pos_, n))
                                                            : fmt::format("U+{:04X}", static_cast<unsigned>(c));
   if ((c == '+' || c == '-') && !(pos_ + 1 < text_.size() && isDigit(text_[pos_ + 1])))

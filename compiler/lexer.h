@@ -7,7 +7,6 @@
 
 #include <antlr4-runtime.h>
 
-#include <deque>
 #include <memory>
 #include <string>
 #include <vector>

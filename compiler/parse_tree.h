@@ -37,7 +37,6 @@ class ParseTree {
   ParseTree& operator=(const ParseTree&) = delete;
 
   const SourceFile& source() const { return source_; }
-  rs_grammar::RobotProgramParser& parser() { return *parser_; }
   /// The root: a RobotProgramParser::ProgramContext.
   antlr4::ParserRuleContext* root() const { return root_; }
   /// True when the parser met syntax errors and recovered (the tree may

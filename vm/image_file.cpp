@@ -1,6 +1,5 @@
 #include "vm/image_file.h"
 
-#include <bit>
 #include <cstring>
 #include <fmt/format.h>
 
@@ -12,9 +11,6 @@ namespace rs::vm {
 namespace {
 
 
-using Writer = ByteWriter;
-using Reader = ByteReader;
-
 bool isIdentifier(std::string_view s) {
   if (s.empty() || s.size() > 64) return false;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -25,7 +21,7 @@ bool isIdentifier(std::string_view s) {
   return true;
 }
 
-void writePayload(Writer& w, const Image& im) {
+void writePayload(ByteWriter& w, const Image& im) {
   w.str(im.sourceName);
   w.str(im.robotName);
   w.u16(im.callDepthLimit);
@@ -68,7 +64,7 @@ void writePayload(Writer& w, const Image& im) {
   w.bytes(im.cell);
 }
 
-void readMotors(Reader& r, Image& im) {
+void readMotors(ByteReader& r, Image& im) {
   const std::size_t n = r.count(24, "motor");
   for (std::size_t i = 0; i < n && !r.failed; ++i) {
     MotorSpec m;
@@ -85,7 +81,7 @@ void readMotors(Reader& r, Image& im) {
   }
 }
 
-void readCode(Reader& r, Image& im) {
+void readCode(ByteReader& r, Image& im) {
   const std::size_t n = r.count(kInstrBytes + 8, "instruction");
   im.code.reserve(n);
   for (std::size_t i = 0; i < n && !r.failed; ++i) {
@@ -105,7 +101,7 @@ void readCode(Reader& r, Image& im) {
   for (std::size_t i = 0; i < n && !r.failed; ++i) im.columns.push_back(r.u32());
 }
 
-void readNames(Reader& r, Image& im) {
+void readNames(ByteReader& r, Image& im) {
   const std::size_t nk = r.count(4, "constant");
   im.constants.reserve(nk);
   for (std::size_t i = 0; i < nk && !r.failed; ++i) im.constants.push_back(r.i32());
@@ -167,12 +163,12 @@ std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
 std::vector<std::uint8_t> writeImage(const Image& image) {
   // The payload is written after room for the header, which is filled in
   // last (it holds the payload's size and CRC): no copy of the payload.
-  Writer w;
+  ByteWriter w;
   w.out.reserve(kImageHeaderBytes + 64 + image.code.size() * 20 + image.constants.size() * 4 + image.cell.size());
   w.out.resize(kImageHeaderBytes);
   writePayload(w, image);
   const std::size_t size = w.out.size() - kImageHeaderBytes;
-  Writer header;
+  ByteWriter header;
   header.out.assign(kImageMagic.begin(), kImageMagic.end());
   header.u16(kImageVersionMajor);
   header.u16(kImageVersionMinor);
@@ -191,7 +187,7 @@ LoadResult loadImage(std::string_view bytes) {
   LoadResult result;
   if (!looksLikeImage(bytes)) return {{}, "not a robotsim image (bad magic number)"};
   if (bytes.size() > kMaxImageBytes) return {{}, "image larger than 1 GiB"};
-  Reader header(bytes.substr(kImageMagic.size()));
+  ByteReader header(bytes.substr(kImageMagic.size()));
   const std::uint16_t major = header.u16();
   const std::uint16_t minor = header.u16();
   const std::uint32_t size = header.u32();
@@ -206,7 +202,7 @@ LoadResult loadImage(std::string_view bytes) {
   if (crc32(reinterpret_cast<const std::uint8_t*>(payload.data()), payload.size()) != crc)
     return {{}, "image checksum mismatch (the file is corrupt)"};
 
-  Reader r(payload);
+  ByteReader r(payload);
   Image& im = result.image;
   im.sourceName = r.str();
   im.robotName = r.str();
