@@ -5,6 +5,12 @@
 
 namespace rs::compiler {
 
+bool hasErrors(std::span<const Diagnostic> diagnostics) {
+  for (const Diagnostic& d : diagnostics)
+    if (d.severity == Severity::Error) return true;
+  return false;
+}
+
 std::string_view severityName(Severity s) {
   switch (s) {
     case Severity::Error: return "error";

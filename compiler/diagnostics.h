@@ -2,6 +2,7 @@
 // (never thrown) so one run reports everything it finds.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,9 @@ struct Diagnostic {
 };
 
 std::string_view severityName(Severity s);
+
+/// True when any of them is an error (warnings do not count).
+bool hasErrors(std::span<const Diagnostic> diagnostics);
 
 class Diagnostics {
  public:

@@ -66,11 +66,7 @@ std::vector<fs::path> librarySearchPath(const std::vector<std::string>& libDirs)
 
 Library::Library(std::vector<fs::path> searchPath) : searchPath_(std::move(searchPath)) {}
 
-bool Library::hasErrors() const {
-  for (const Diagnostic& d : diagnostics_)
-    if (d.severity == Severity::Error) return true;
-  return false;
-}
+bool Library::hasErrors() const { return compiler::hasErrors(diagnostics_); }
 
 const SourceFile* Library::source(const std::string& file) const {
   for (const auto& f : files_)
@@ -315,20 +311,9 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
         ok = false;
         continue;
       }
-      // The lowest, left-most, front-most corner goes to AT.
-      Eigen::Vector3d corner(0, 0, 0);
-      if (!s->segments.empty()) {
-        corner = s->segments[0].a;
-        for (const workcell::Segment& seg : s->segments)
-          for (const Eigen::Vector3d& q : {seg.a, seg.b}) {
-            corner.x() = std::min(corner.x(), q.x());
-            corner.y() = std::min(corner.y(), q.y());
-            corner.z() = std::max(corner.z(), q.z());
-          }
-      }
       Eigen::Isometry3d place = Eigen::Isometry3d::Identity();
       place.linear() = p.rotation;
-      place.translation() = p.at - p.rotation * corner;
+      place.translation() = p.at - p.rotation * workcell::atCorner(*s);
       cell.objects.push_back({std::move(*s), place});
     }
   }
@@ -381,7 +366,7 @@ std::optional<workcell::Robot> Library::robot(const std::string& fileOrName) {
   if (!f) return std::nullopt;
   if (hasErrors()) return readReferences(*f), std::nullopt;
   if (f->robots.empty()) {
-    if (!hasErrors()) diagnostics_.push_back({f->source->name(), {}, Severity::Error, "the file defines no ROBOT"});
+    diagnostics_.push_back({f->source->name(), {}, Severity::Error, "the file defines no ROBOT"});
     return std::nullopt;
   }
   auto r = buildRobot(f->robots.front(), *f);
@@ -404,7 +389,7 @@ std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrNam
     cell = buildWorkcell(alone, *f);
     // Alone, the robot stays where it was drawn.
     if (cell) cell->robots.front().F_world_design = Eigen::Isometry3d::Identity();
-  } else if (!hasErrors()) {
+  } else {
     diagnostics_.push_back({f->source->name(), {}, Severity::Error, "the file defines no WORKCELL and no ROBOT"});
   }
   return hasErrors() ? std::nullopt : std::move(cell);

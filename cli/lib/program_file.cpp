@@ -84,12 +84,6 @@ void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>
   for (const compiler::Diagnostic& d : diags) err << compiler::render(d, program.sourceOf(d.file));
 }
 
-bool hasErrors(const std::vector<compiler::Diagnostic>& diags) {
-  for (const auto& d : diags)
-    if (d.severity == compiler::Severity::Error) return true;
-  return false;
-}
-
 bool loadStimuli(const std::string& file, const std::vector<std::string>& inputs, runtime::Stimuli& stimuli,
                  std::vector<compiler::Diagnostic>& diags) {
   bool ok = true;

@@ -37,7 +37,6 @@ LoadedProgram loadProgram(const std::string& path, const compiler::Target& targe
 
 /// Every diagnostic, each under its own file's source line when known.
 void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags, const LoadedProgram& program);
-bool hasErrors(const std::vector<compiler::Diagnostic>& diags);
 
 /// Stimuli from a stimuli file (when named) and the --input changes, in
 /// that order; every error becomes a diagnostic. False on any error.

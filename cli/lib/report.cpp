@@ -41,10 +41,10 @@ std::vector<ObjectEnd> objectEnds(const RunReport& r, std::span<const std::int32
   std::vector<ObjectEnd> ends;
   if (!r.grasping || !r.cell) return ends;
   for (std::size_t o = 0; o < r.cell->objects.size(); ++o) {
+    const workcell::PlacedObject& placed = r.cell->objects[o];
     const Eigen::Isometry3d pose = r.grasping->objectPose(o, motors);
-    const Eigen::Vector3d at = r.grasping->anchor(o, pose);
-    const Eigen::Vector3d placed = r.grasping->anchor(o, r.cell->objects[o].F_world_design);
-    ends.push_back({r.cell->objects[o].shape.name, at, r.grasping->held() == o, (at - placed).norm() > 1e-9});
+    const bool moved = (pose.matrix() - placed.F_world_design.matrix()).cwiseAbs().maxCoeff() > 1e-9;
+    ends.push_back({placed.shape.name, pose * workcell::atCorner(placed.shape), r.grasping->held() == o, moved});
   }
   return ends;
 }
@@ -52,10 +52,7 @@ std::vector<ObjectEnd> objectEnds(const RunReport& r, std::span<const std::int32
 }  // namespace
 
 bool RunReport::ok() const {
-  if (!outcome || !outcome->ok()) return false;
-  for (const auto& d : diagnostics)
-    if (d.severity == compiler::Severity::Error) return false;
-  return true;
+  return outcome && outcome->ok() && !compiler::hasErrors(diagnostics);
 }
 
 compiler::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {

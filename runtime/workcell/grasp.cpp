@@ -8,12 +8,6 @@ namespace {
 // block's top face grips it); the slack absorbs rounding in the kinematics.
 constexpr double kInsideSlack = 1e-6;
 
-Eigen::AlignedBox3d boundsOf(const Shape& shape) {
-  Eigen::AlignedBox3d box;  // empty
-  for (const Segment& s : shape.segments) box.extend(s.a), box.extend(s.b);
-  return box;
-}
-
 }  // namespace
 
 Grasping::Grasping(const Workcell& cell, std::size_t robot) : cell_(&cell) {
@@ -26,8 +20,6 @@ Grasping::Grasping(const Workcell& cell, std::size_t robot) : cell_(&cell) {
   if (!placed.robot.hasGripper || !placed.robot.chain) return;
   tool_.emplace(placed);
   gripperMotor_ = static_cast<std::size_t>(placed.robot.chain->size());
-  closedEnd_ = placed.robot.gripper.max;
-  openEnd_ = placed.robot.gripper.min;
 }
 
 std::optional<std::size_t> Grasping::objectAt(const Eigen::Vector3d& point) const {
@@ -49,7 +41,7 @@ std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, 
   if (!tool_ || gripperMotor_ >= before.size() || gripperMotor_ >= after.size()) return std::nullopt;
   const std::int32_t from = before[gripperMotor_], to = after[gripperMotor_];
   if (from == to) return std::nullopt;
-  const bool closing = (closedEnd_ >= openEnd_) ? to > from : to < from;
+  const bool closing = to > from;  // RANGE max is closed (min <= max always)
   if (!closing) {
     if (!held_) return std::nullopt;
     // Let go where the object is as the opening begins.
@@ -75,12 +67,6 @@ void Grasping::reset() {
 Eigen::Isometry3d Grasping::objectPose(std::size_t o, std::span<const std::int32_t> encoders) {
   if (held_ && *held_ == o && tool_) return tool_->frame(encoders) * offset_;
   return resting_[o];
-}
-
-Eigen::Vector3d Grasping::anchor(std::size_t o, const Eigen::Isometry3d& pose) const {
-  const Eigen::AlignedBox3d& b = boxes_[o];
-  if (b.isEmpty()) return pose.translation();
-  return pose * Eigen::Vector3d(b.min().x(), b.min().y(), b.max().z());
 }
 
 }  // namespace rs::workcell

@@ -59,10 +59,6 @@ class Grasping {
   Eigen::Isometry3d objectPose(std::size_t o, std::span<const std::int32_t> encoders);
   /// The same for an object that is not held (where it rests now).
   const Eigen::Isometry3d& restingPose(std::size_t o) const { return resting_[o]; }
-  /// The corner of object `o` that a workcell's `OBJECT name AT x y z`
-  /// places (least x, least y, greatest z of its drawing), in the world,
-  /// for the object at `pose`: an object never moved answers its AT point.
-  Eigen::Vector3d anchor(std::size_t o, const Eigen::Isometry3d& pose) const;
 
  private:
   std::optional<std::size_t> objectAt(const Eigen::Vector3d& point) const;
@@ -70,7 +66,6 @@ class Grasping {
   const Workcell* cell_;
   std::optional<ToolTracker> tool_;  // empty: the robot has no gripper
   std::size_t gripperMotor_ = 0;
-  std::int32_t closedEnd_ = 0, openEnd_ = 0;
   std::vector<Eigen::Isometry3d> resting_;
   std::vector<Eigen::AlignedBox3d> boxes_;  // in each object's design coordinates
   std::optional<std::size_t> held_;

@@ -75,6 +75,22 @@ struct PlacedRobot {
   Eigen::Isometry3d F_world_design = Eigen::Isometry3d::Identity();
 };
 
+/// The bounds of a shape's lines (empty for a shape without lines).
+inline Eigen::AlignedBox3d boundsOf(const Shape& shape) {
+  Eigen::AlignedBox3d box;
+  for (const Segment& s : shape.segments) box.extend(s.a), box.extend(s.b);
+  return box;
+}
+
+/// The corner of a shape that a workcell's `OBJECT name AT x y z` puts at
+/// the point: least x, least y, greatest z of its lines (the origin for a
+/// shape without lines).
+inline Eigen::Vector3d atCorner(const Shape& shape) {
+  const Eigen::AlignedBox3d b = boundsOf(shape);
+  if (b.isEmpty()) return Eigen::Vector3d::Zero();
+  return {b.min().x(), b.min().y(), b.max().z()};
+}
+
 struct PlacedObject {
   Shape shape;
   Eigen::Isometry3d F_world_design = Eigen::Isometry3d::Identity();
