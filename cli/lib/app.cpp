@@ -39,21 +39,28 @@ struct Options {
   SerialOptions serial;              // --device, --dialect, --log-serial, ...
 };
 
+// --cell's workcell from the library (with --lib), its library kept in
+// `into` for messages; nullopt, with the diagnostics in `into`, when it
+// cannot be loaded or has no robot to run a program.
+std::optional<workcell::Workcell> openCell(const Options& o, LoadedProgram& into) {
+  auto library = std::make_shared<compiler::Library>(compiler::librarySearchPath(o.libDirs));
+  into.descriptions = library;
+  std::optional<workcell::Workcell> cell = library->workcell(o.cell);
+  if (cell && !cell->robots.empty()) return cell;
+  into.diagnostics = library->diagnostics();
+  if (cell) into.diagnostics.push_back({o.cell, {}, compiler::Severity::Error, "the workcell has no robot to run the program"});
+  return std::nullopt;
+}
+
 // The program, compiled for --cell's robot when given; the image then
 // carries the cell.
 LoadedProgram loadWithCell(const Options& o) {
   if (o.cell.empty()) return loadProgram(o.file, defaultTarget());
-  auto library = std::make_shared<compiler::Library>(compiler::librarySearchPath(o.libDirs));
-  std::optional<workcell::Workcell> cell = library->workcell(o.cell);
-  if (!cell || cell->robots.empty()) {
-    LoadedProgram failed;
-    failed.descriptions = library;
-    failed.diagnostics = library->diagnostics();
-    if (cell) failed.diagnostics.push_back({o.cell, {}, compiler::Severity::Error, "the workcell has no robot to run the program"});
-    return failed;
-  }
+  LoadedProgram failed;
+  const std::optional<workcell::Workcell> cell = openCell(o, failed);
+  if (!cell) return failed;
   LoadedProgram program = loadProgram(o.file, cellTarget(*cell));
-  program.descriptions = library;
+  program.descriptions = failed.descriptions;
   if (program.image && !program.source) {
     program.image.reset();
     program.diagnostics.push_back({o.file, {}, compiler::Severity::Error,
@@ -185,7 +192,7 @@ int sourceView(const Options& o, std::ostream& out, std::ostream& err, Dump dump
   std::vector<compiler::Diagnostic> diags;
   out << dump(source, diags);
   for (const compiler::Diagnostic& d : diags) err << compiler::render(d, &source);
-  return hasErrors(diags) ? kCompileError : kOk;
+  return compiler::hasErrors(diags) ? kCompileError : kOk;
 }
 
 int helpCommand(const std::string& topic, std::ostream& out, std::ostream& err) {
@@ -254,6 +261,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   CLI::App* ast = app.add_subcommand("ast", "Show the abstract syntax tree");
   ast->add_option("file", o.file, "Program source")->required();
   ast->add_flag("--tree", o.tree, "Also print ANTLR's parse tree");
+  addCellOptions(ast, o);
 
   RobotQuery rq;
   const auto robotArgs = [&](CLI::App* cmd) {
@@ -301,10 +309,22 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   if (disasm->parsed()) return disasmCommand(o, out, err);
   if (tokens->parsed())
     return sourceView(o, out, err, [](const compiler::SourceFile& s, auto& d) { return compiler::dumpTokens(s, d); });
-  if (ast->parsed())
+  if (ast->parsed()) {
+    // Operand counts are checked against the robot: --cell's, or the default.
+    compiler::Target target = defaultTarget();
+    if (!o.cell.empty()) {
+      LoadedProgram descriptions;
+      const std::optional<workcell::Workcell> cell = openCell(o, descriptions);
+      if (!cell) {
+        printDiagnostics(err, descriptions.diagnostics, descriptions);
+        return kCompileError;
+      }
+      target = cellTarget(*cell);
+    }
     return sourceView(o, out, err, [&](const compiler::SourceFile& s, auto& d) {
-      return compiler::dumpAst(s, defaultTarget(), o.tree, d);
+      return compiler::dumpAst(s, target, o.tree, d);
     });
+  }
   if (table->parsed()) return tableCommand(rq, out, err);
   if (matrix->parsed()) return matrixCommand(rq, out, err);
   if (where->parsed()) return whereCommand(rq, out, err);

@@ -198,6 +198,16 @@ TEST_CASE("cli: compile, disasm, tokens, ast, help exit codes", "[cli]") {
     const std::string lexBad = dir.write("lex.rsp", "END @\n");
     CHECK(runCli({"tokens", lexBad}).code == 2);
     CHECK(runCli({"ast", lexBad}).code == 2);
+    // Operand counts follow --cell's robot: the gantry has four motors, the default robot five.
+    const std::string four = dir.write("four.rsp", "MOVE 1 2 3 4\nEND\n");
+    CHECK(runCli({"ast", four, "--cell", "gantry-cell"}).code == 0);
+    const CliResult five = runCli({"ast", four});
+    CHECK(five.code == 2);
+    CHECK(five.err.find("four.rsp:1:1: error: MOVE expects 5 values (one per motor: E D C B A), found 4") !=
+          std::string::npos);
+    const CliResult noCell = runCli({"ast", four, "--cell", "no-such-cell"});
+    CHECK(noCell.code == 2);
+    CHECK(noCell.err.find("no-such-cell") != std::string::npos);
     REQUIRE(runCli({"compile", good, "-o", image}).code == 0);
     const CliResult t = runCli({"tokens", image});
     CHECK(t.code == 2);
