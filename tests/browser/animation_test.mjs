@@ -166,7 +166,8 @@ try {
   check(dragged.hash !== first.hash, 'the picture changed after the drag');
   await page.mouse.wheel(0, -240);
   await page.waitForFunction(() => window.robotsim.state.user.zoom > 1.2, null, { timeout: 5000 });
-  check(true, 'the wheel zooms in', (await page.evaluate(() => window.robotsim.state.user.zoom)).toFixed(3));
+  const zoom = await page.evaluate(() => window.robotsim.state.user.zoom);
+  check(zoom > 1.2, 'the wheel zooms in', zoom.toFixed(3));
 
   // ---- Play: the time and the highlighted line advance
   const before = await page.evaluate(() => window.robotsim.state);

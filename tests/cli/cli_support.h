@@ -4,7 +4,10 @@
 
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
+
 #include <atomic>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -71,6 +74,16 @@ class TempDir {
 inline std::string readBytes(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+}
+
+/// With ROBOTSIM_UPDATE_GOLDEN set, writes `actual` to the golden file
+/// `path` and fails the check, so that an update run can never pass as a
+/// test run; returns true then. Otherwise returns false (compare as usual).
+inline bool rewriteGolden(const std::string& path, const std::string& actual) {
+  if (!std::getenv("ROBOTSIM_UPDATE_GOLDEN")) return false;
+  std::ofstream(path, std::ios::binary) << actual;
+  FAIL_CHECK("rewrote " << path << ": review the diff, then run again without ROBOTSIM_UPDATE_GOLDEN");
+  return true;
 }
 
 }  // namespace rs::testing

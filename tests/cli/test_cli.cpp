@@ -520,7 +520,7 @@ TEST_CASE("cli: a negative --max-steps is a usage error", "[cli]") {
   CHECK(runCli({"check", f, "--max-steps", "-5"}).code == 2);
 }
 
-// BUG (open): file names are not always UTF-8 (Linux allows any bytes), and
+// Regression (a bug these tests found, fixed since): file names are not always UTF-8 (Linux allows any bytes), and
 // the source name stored in an image is cut at 255 bytes, possibly inside a
 // UTF-8 sequence. --format=json then puts the raw name into "file" and
 // nlohmann::json::dump throws type_error 316: the robotsim process aborts

@@ -55,10 +55,7 @@ void checkGolden(const std::string& name, const std::vector<std::string>& args) 
   INFO(name << ": " << r.err);
   CHECK(r.code == 0);
   CHECK(r.err.empty());
-  if (std::getenv("ROBOTSIM_UPDATE_GOLDEN")) {
-    std::ofstream(kDir + name, std::ios::binary) << r.out;
-    return;
-  }
+  if (rs::testing::rewriteGolden(kDir + name, r.out)) return;
   const std::string expected = rs::testing::readBytes(kDir + name);
   REQUIRE_FALSE(expected.empty());
   CHECK(r.out == expected);

@@ -10,7 +10,6 @@
 //   (str = u16 length + bytes; all little-endian)
 #include <catch2/catch.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -366,10 +365,11 @@ TEST_CASE("decoder errors have exact messages", "[verifier]") {
   }
 }
 
+// No timing here (timed unit tests flake on a shared machine): a count that
+// did allocate would fail the ASan+UBSan run (allocation-size-too-big).
 TEST_CASE("huge counts are refused before anything is allocated", "[verifier]") {
   const Image im = sample();
   const Bytes good = rs::vm::writeImage(im);
-  const auto start = std::chrono::steady_clock::now();
   struct Case {
     std::size_t offset;
     const char* what;
@@ -389,7 +389,6 @@ TEST_CASE("huge counts are refused before anything is allocated", "[verifier]") 
                                 " larger than the file");
     }
   }
-  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(2));
 }
 
 TEST_CASE("verifier: jump targets", "[verifier]") {
