@@ -91,6 +91,9 @@ class Builder {
 
   // Operand readers: each reports what it expected and returns false.
   bool integer(const Word& w, std::string_view what, Value& out);
+  /// Every word as an integer (each bad one reported); on any error `out`
+  /// is left empty, so later checks skip the operand list.
+  bool integers(const std::vector<Word>& words, std::string_view what, std::vector<Value>& out);
   bool seconds(const Word& w, Value& out);
   bool name(const Word& w, std::string_view what, std::string_view& out, Pos& pos);
   bool onOff(const Word& w, bool& out);
@@ -207,14 +210,7 @@ void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
     return;
   }
   if (!checkName("a point", p.name, p.pos)) return;
-  bool ok = true;
-  p.values.reserve(words.size());
-  for (const Word& w : words) {
-    Value v;
-    ok = integer(w, "an encoder value", v) && ok;
-    p.values.push_back(v);
-  }
-  if (!ok) p.values.clear();
+  const bool ok = integers(words, "an encoder value", p.values);
   if (ok && p.values.size() != motors_.size())
     diag_.error(p.pos, fmt::format("point {} has {} values, expected {} (one per motor: {})", p.name, p.values.size(),
                                    motors_.size(), motorLetters()));
@@ -225,14 +221,7 @@ void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
 bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::vector<Word>& w) {
   const vm::Format f = vm::info(in.op).format;
   if (f == vm::Format::MotorVector) {
-    bool ok = true;
-    in.values.reserve(w.size());
-    for (const Word& word : w) {
-      Value v;
-      ok = integer(word, "an encoder value", v) && ok;
-      in.values.push_back(v);
-    }
-    if (!ok) in.values.clear();  // later checks skip an operand list with errors
+    const bool ok = integers(w, "an encoder value", in.values);
     if (ok && w.size() != motors_.size())
       diag_.error(in.pos, fmt::format("{} expects {} values (one per motor: {}), found {}", mnemonic, motors_.size(),
                                       motorLetters(), w.size()));
@@ -261,17 +250,7 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
              integer(w[2], "a value", in.value) & jump(w[3], in.target);
     case vm::Format::VarValue:
       return name(w[0], "a variable name", in.name, in.namePos) & integer(w[1], "a value", in.value);
-    case vm::Format::Triple: {
-      bool ok = true;
-      in.values.reserve(w.size());
-      for (const Word& word : w) {
-        Value v;
-        ok = integer(word, "a number", v) && ok;
-        in.values.push_back(v);
-      }
-      if (!ok) in.values.clear();
-      return ok;
-    }
+    case vm::Format::Triple: return integers(w, "a number", in.values);
     case vm::Format::Millis: return seconds(w[0], in.value);
   }
   return false;
@@ -308,6 +287,18 @@ bool Builder::integer(const Word& w, std::string_view what, Value& out) {
   out.number = v;
   out.pos = w.pos;
   return true;
+}
+
+bool Builder::integers(const std::vector<Word>& words, std::string_view what, std::vector<Value>& out) {
+  bool ok = true;
+  out.reserve(words.size());
+  for (const Word& w : words) {
+    Value v;
+    ok = integer(w, what, v) && ok;
+    out.push_back(v);
+  }
+  if (!ok) out.clear();
+  return ok;
 }
 
 // Seconds with at most three decimals, converted exactly to milliseconds.

@@ -101,15 +101,7 @@ void Checker::collectPoints() {
 }
 
 void Checker::instruction(const Instruction& in) {
-  switch (vm::info(in.op).format) {
-    case vm::Format::Target:
-    case vm::Format::InputJump:
-    case vm::Format::VarCompare:
-      resolveJump(in);
-      break;
-    default:
-      break;
-  }
+  if (vm::info(in.op).flags & vm::kJumps) resolveJump(in);
   switch (vm::info(in.op).format) {
     case vm::Format::Point: resolvePoint(in); break;
     case vm::Format::VarCompare:
