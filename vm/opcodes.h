@@ -71,7 +71,6 @@ enum OpFlag : std::uint8_t {
   kFallsThrough = 1 << 0,  // the next instruction may run after this one
                            // (for GOSUB: once the subroutine returns)
   kJumps = 1 << 1,         // d is a jump target
-  kMotion = 1 << 2,        // moves motors (takes virtual time)
 };
 
 struct OpInfo {
@@ -85,9 +84,9 @@ struct OpInfo {
 inline constexpr std::uint8_t kFT = kFallsThrough;
 
 inline constexpr std::array<OpInfo, kOpCount> kOps{{
-    {Op::Move, "MOVE", Format::MotorVector, kFT | kMotion, "move every motor by a relative number of encoder units"},
-    {Op::MoveTo, "MOVETO", Format::MotorVector, kFT | kMotion, "move every motor to an absolute encoder position"},
-    {Op::MoveP, "MOVEP", Format::Point, kFT | kMotion, "move every motor to a taught point"},
+    {Op::Move, "MOVE", Format::MotorVector, kFT, "move every motor by a relative number of encoder units"},
+    {Op::MoveTo, "MOVETO", Format::MotorVector, kFT, "move every motor to an absolute encoder position"},
+    {Op::MoveP, "MOVEP", Format::Point, kFT, "move every motor to a taught point"},
     {Op::Goto, "GOTO", Format::Target, kJumps, "jump unconditionally"},
     {Op::JmpIn, "JMPIN", Format::InputJump, kFT | kJumps, "jump if an input is ON (or OFF)"},
     {Op::OutSig, "OUTSIG", Format::Output, kFT, "switch an output ON or OFF"},
@@ -100,9 +99,9 @@ inline constexpr std::array<OpInfo, kOpCount> kOps{{
     {Op::Window, "WINDOW", Format::Triple, kFT, "shift the view of the workcell in x, y, z"},
     {Op::View, "VIEW", Format::Triple, kFT, "rotate the view of the workcell about x, y, z"},
     {Op::Delay, "DELAY", Format::Millis, kFT, "wait a number of seconds"},
-    {Op::HrdHome, "HRDHOME", Format::None, kFT | kMotion, "move every motor to encoder position 0"},
+    {Op::HrdHome, "HRDHOME", Format::None, kFT, "move every motor to encoder position 0"},
     {Op::SetSoft, "SETSOFT", Format::MotorVector, kFT, "set the software home position"},
-    {Op::GoSoft, "GOSOFT", Format::None, kFT | kMotion, "move every motor to the software home position"},
+    {Op::GoSoft, "GOSOFT", Format::None, kFT, "move every motor to the software home position"},
     {Op::Set, "SET", Format::VarValue, kFT, "assign a value to a variable"},
     {Op::End, "END", Format::None, 0, "end the program"},
 }};
