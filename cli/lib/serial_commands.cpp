@@ -5,10 +5,12 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "cli/lib/app.h"
@@ -18,6 +20,7 @@
 #include "runtime/serial/interrupt.h"
 #include "runtime/serial/rhino_machine.h"
 #include "runtime/serial/serial_port.h"
+#include "runtime/stimuli_text.h"
 #include "stdlib/default_robot.h"
 
 namespace rs::cli {
@@ -26,15 +29,25 @@ namespace {
 using serial::Dialect;
 using serial::RhinoSettings;
 
+// A whole number in lo..hi: an optional '+' (or a '-' for a signed type),
+// digits, and nothing else ("5x", "1e3", "" and "-1" for a count are not).
+template <typename T>
+std::optional<T> parseWhole(std::string_view token, T lo, T hi) {
+  if (token.starts_with('+')) {
+    token.remove_prefix(1);
+    if (token.starts_with('-')) return std::nullopt;
+  }
+  T v{};
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
+  if (ec != std::errc{} || end != token.data() + token.size() || v < lo || v > hi) return std::nullopt;
+  return v;
+}
+
 // Defaults for the dialect, then the settings file, then each --serial-set.
+// `dialectText` is "mark3" or "mark4": CLI11 checks --dialect.
 bool buildSettings(const std::string& dialectText, const std::string& file, const std::vector<std::string>& sets,
                    RhinoSettings& settings, std::string& error) {
-  Dialect dialect = Dialect::Mark3;
-  if (!serial::parseDialect(dialectText, dialect)) {
-    error = fmt::format("unknown dialect '{}' (mark3 or mark4)", dialectText);
-    return false;
-  }
-  settings = serial::defaultSettings(dialect);
+  settings = serial::defaultSettings(dialectText == "mark4" ? Dialect::Mark4 : Dialect::Mark3);
   if (!file.empty()) {
     std::optional<std::string> text = readFile(file, error);
     if (!text) {
@@ -67,10 +80,11 @@ struct Connection {
 
 // The bytes a second Ctrl-C writes from the signal handler.
 std::string emergencyStop(const RhinoSettings& s, const std::vector<vm::MotorSpec>& motors) {
-  const std::string_view end = serial::lineEndBytes(s.lineEnd);
-  if (s.dialect == Dialect::Mark4) return fmt::format("MA{}", end);
   std::string bytes;
-  for (const vm::MotorSpec& m : motors) bytes += fmt::format("{}X{}", m.letter, end);
+  for (const std::string& c : serial::stopCommands(s.dialect, motors)) {
+    bytes += c;
+    bytes += serial::lineEndBytes(s.lineEnd);
+  }
   return bytes;
 }
 
@@ -234,6 +248,9 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
 
 namespace {
 
+// `fault KIND after N` counts from now: far below where the count wraps.
+constexpr std::uint64_t kMaxFaultAfter = 1'000'000'000'000;
+
 struct EmulatorSession {
   serial::PtyEmulator& emu;
   std::ostream& out;
@@ -268,11 +285,11 @@ std::string consoleCommand(EmulatorSession& s, const std::string& line) {
     serial::FaultPlan plan;
     if (!serial::parseFault(w[1], plan.kind)) return "fault takes silence, garbage, slow, hangup or off";
     if (w.size() == 4) {
-      try {
-        plan.after = std::stoull(w[3]);
-      } catch (const std::exception&) {
-        return "fault KIND after N: N is a number of commands";
-      }
+      const auto after = parseWhole<std::uint64_t>(w[3], 0, kMaxFaultAfter);
+      if (!after)
+        return fmt::format("fault KIND after N: N is a whole number of commands 0..{}, not {}", kMaxFaultAfter,
+                           runtime::text::quoted(w[3]));
+      plan.after = *after;
     }
     s.emu.setFault(plan);
   } else if (verb == "status") {
@@ -282,10 +299,9 @@ std::string consoleCommand(EmulatorSession& s, const std::string& line) {
       s.out << fmt::format("  motor {}: position {}, step rate {}/s{}\n", m.letter, m.position, std::lround(m.rate),
                            m.used ? "" : " (not in the robot)");
   } else if (verb == "wait" && w.size() == 2) {
-    char* end = nullptr;
-    const double sec = std::strtod(w[1].c_str(), &end);
-    if (end != w[1].c_str() + w[1].size() || !(sec >= 0) || sec > 1e6) return "wait takes seconds";
-    s.waitUntil = s.emu.now() + static_cast<vm::Micros>(std::llround(sec * 1e6));
+    const runtime::text::SecondsParse sec = runtime::text::parseSeconds(w[1]);
+    if (!sec.error.empty()) return "wait: " + sec.error;
+    s.waitUntil = s.emu.now() + sec.micros;
   } else {
     return fmt::format("unknown command '{}' (type help)", line);
   }
@@ -301,15 +317,12 @@ bool parseStart(const std::string& text, std::array<std::int32_t, 8>& start, std
       error = fmt::format("--start: '{}' is not L=N (motor letter A..H, encoder count)", item);
       return false;
     }
-    try {
-      std::size_t used = 0;
-      const long v = std::stol(item.substr(2), &used);
-      if (used != item.size() - 2 || v < -1'000'000 || v > 1'000'000) throw std::out_of_range("range");
-      start[static_cast<std::size_t>(letter - 'A')] = static_cast<std::int32_t>(v);
-    } catch (const std::exception&) {
+    const auto v = parseWhole<std::int32_t>(std::string_view(item).substr(2), -1'000'000, 1'000'000);
+    if (!v) {
       error = fmt::format("--start: '{}' is not L=N with N in -1000000..1000000", item);
       return false;
     }
+    start[static_cast<std::size_t>(letter - 'A')] = *v;
   }
   return true;
 }
@@ -338,11 +351,10 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
     if (!robot) return kCompileError;
     config.motors = compiler::motorTable(*robot);
   }
-  for (const vm::MotorSpec& m : config.motors)
-    if (m.letter < 'A' || m.letter > 'H') {
-      err << fmt::format("robotsim: error: motor {}: a Rhino controller has motors A..H only\n", m.letter);
-      return kCompileError;
-    }
+  if (std::string e = serial::unsupportedMotor(config.settings.dialect, config.motors); !e.empty()) {
+    err << "robotsim: error: " << e << '\n';
+    return kCompileError;
+  }
   if (!parseStart(o.start, config.start, error)) {
     err << "robotsim: error: " << error << '\n';
     return kCompileError;
@@ -377,7 +389,7 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
     if (ec) err << fmt::format("robotsim: warning: cannot make the link {}: {}\n", o.link, ec.message());
   }
   const std::string dialect(serial::dialectName(config.settings.dialect));
-  out << fmt::format("Rhino {} controller emulator on {}{}\n", dialect == "mark3" ? "Mark III" : "Mark IV", emu->path(),
+  out << fmt::format("Rhino {} controller emulator on {}{}\n", serial::dialectTitle(config.settings.dialect), emu->path(),
                      o.link.empty() ? "" : " (also " + o.link + ")");
   out << fmt::format("robot {}: motors {}; line {}\n", o.robot, motorList(config.motors),
                      describe(config.settings.line));
@@ -394,7 +406,7 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
   bool stdinOpen = !o.noStdin;
   std::string typed;
   std::size_t scriptLine = 0;
-  std::size_t printed = 0;  // commands already echoed (--verbose)
+  std::uint64_t echoed = 0;  // commands received and already echoed (--verbose)
   vm::Micros lastStatus = -1'000'000;
   const vm::Micros end = o.duration > 0 ? emu->now() + static_cast<vm::Micros>(std::llround(o.duration * 1e6)) : 0;
   const auto clearStatus = [&] {
@@ -420,13 +432,11 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
         out << fmt::format("{}:{}: {}\n", o.script, scriptLine + 1, e);
       ++scriptLine;
     }
-    if (o.verbose) {
-      const std::vector<std::string> got = emu->received();
-      for (; printed < got.size(); ++printed) {
+    if (o.verbose)
+      for (const std::string& c : emu->receivedSince(echoed)) {
         clearStatus();
-        out << "host: " << got[printed] << '\n';
+        out << "host: " << c << '\n';
       }
-    }
     if (!o.quiet)
       for (const std::string& e : emu->takeEvents()) {
         clearStatus();

@@ -4,14 +4,10 @@
 #include "runtime/serial/link.h"
 
 namespace rs::serial {
-namespace {
-
 std::int64_t steadyMicros() {
   return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
-
-}  // namespace
 
 SteadyClock::SteadyClock() : origin_(steadyMicros()) {}
 

@@ -112,6 +112,15 @@ void EmulatorEngine::event(std::string text) {
   if (events_.size() < 1000) events_.push_back(std::move(text));
 }
 
+// received_ holds the last commands_ - received_.size() .. commands_ - 1.
+std::vector<std::string> EmulatorEngine::receivedSince(std::uint64_t& seen) const {
+  const std::uint64_t firstKept = commands_ - received_.size();
+  const std::uint64_t from = std::max(seen, firstKept);
+  seen = commands_;
+  if (from >= commands_) return {};
+  return {received_.begin() + static_cast<std::ptrdiff_t>(from - firstKept), received_.end()};
+}
+
 std::vector<std::string> EmulatorEngine::takeEvents() { return std::exchange(events_, {}); }
 
 bool EmulatorEngine::faultActive() const {
@@ -562,6 +571,11 @@ EmulatorSnapshot PtyEmulator::snapshot() {
 std::vector<std::string> PtyEmulator::received() {
   std::lock_guard lock(mutex_);
   return {engine_.received().begin(), engine_.received().end()};
+}
+
+std::vector<std::string> PtyEmulator::receivedSince(std::uint64_t& seen) {
+  std::lock_guard lock(mutex_);
+  return engine_.receivedSince(seen);
 }
 
 std::vector<std::string> PtyEmulator::takeEvents() {

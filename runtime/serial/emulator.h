@@ -103,6 +103,9 @@ class EmulatorEngine {
   EmulatorSnapshot snapshot() const;
   /// Every command received, in order (at most the last 100000).
   const std::deque<std::string>& received() const { return received_; }
+  /// The commands received after the first `seen` (those still kept), in
+  /// order; `seen` becomes the number received so far. Start from 0.
+  std::vector<std::string> receivedSince(std::uint64_t& seen) const;
   /// Console lines since the last call ("output 1 ON", "unknown command").
   std::vector<std::string> takeEvents();
   /// One line: motors, outputs, inputs, commands, fault.
@@ -167,6 +170,8 @@ class PtyEmulator {
   void setFault(FaultPlan plan);
   EmulatorSnapshot snapshot();
   std::vector<std::string> received();
+  /// EmulatorEngine::receivedSince, for --verbose: no copy of the rest.
+  std::vector<std::string> receivedSince(std::uint64_t& seen);
   std::vector<std::string> takeEvents();
   std::string statusLine();
   Micros now() const { return clock_.now(); }

@@ -55,6 +55,10 @@ class Clock {
   virtual void sleepFor(Micros duration) = 0;
 };
 
+/// std::chrono::steady_clock in microseconds (its own epoch): the one
+/// reading of the wall clock, for SteadyClock and the port's deadlines.
+std::int64_t steadyMicros();
+
 /// The wall clock (std::chrono::steady_clock), zero when it was made.
 class SteadyClock final : public Clock {
  public:

@@ -35,9 +35,7 @@ class Mark3 final : public Controller {
       : s_(session), cfg_(session.settings()), motors_(motors) {}
 
   Status begin(std::span<std::int32_t>) override {
-    for (const vm::MotorSpec& m : motors_)
-      if (m.letter < 'A' || m.letter > 'H')
-        return Status::fault(fmt::format("motor {}: a Mark III controller has motors A..H only", m.letter));
+    if (std::string e = unsupportedMotor(Dialect::Mark3, motors_); !e.empty()) return Status::fault(e);
     // First contact: the switch inquiry must answer one good byte.
     std::uint8_t bits = 0;
     return readBits('I', bits);
@@ -121,20 +119,7 @@ class Mark3 final : public Controller {
     return s_.send(command);
   }
 
-  std::string stopAll() override {
-    std::vector<std::string> sent;
-    bool ok = true;
-    std::string failure;
-    for (const vm::MotorSpec& m : motors_) {
-      const std::string command = fmt::format("{}X", m.letter);
-      sent.push_back(command);
-      if (Status st = s_.sendUnchecked(command); !st && ok) {
-        ok = false;
-        failure = s_.portGone() ? "the port is gone" : st.message;
-      }
-    }
-    return stopReport(sent, ok, failure);
-  }
+  std::string stopAll() override { return sendStop(s_, stopCommands(Dialect::Mark3, motors_)); }
 
  private:
   // The next chunk, kept so that the register (steps still to go plus the

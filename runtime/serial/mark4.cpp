@@ -51,9 +51,7 @@ class Mark4 final : public Controller {
       : s_(session), cfg_(session.settings()), motors_(motors) {}
 
   Status begin(std::span<std::int32_t> positions) override {
-    for (const vm::MotorSpec& m : motors_)
-      if (m.letter < 'A' || m.letter > 'H')
-        return Status::fault(fmt::format("motor {}: a Mark IV controller has motors A..H only", m.letter));
+    if (std::string e = unsupportedMotor(Dialect::Mark4, motors_); !e.empty()) return Status::fault(e);
     if (auto st = s_.send("TH"); !st) return st;
     // Old errors are not ours: empty the stack (it holds a few at most).
     for (int k = 0;; ++k) {
@@ -117,10 +115,7 @@ class Mark4 final : public Controller {
     return s_.send(fmt::format("OB,{},{}", line, on ? 1 : 0));
   }
 
-  std::string stopAll() override {
-    const Status st = s_.sendUnchecked("MA");
-    return stopReport({"MA"}, static_cast<bool>(st), s_.portGone() ? "the port is gone" : st.message);
-  }
+  std::string stopAll() override { return sendStop(s_, stopCommands(Dialect::Mark4, motors_)); }
 
  private:
   // SA until 0. A move with no change in the motors' read-back positions

@@ -40,12 +40,10 @@ Status RhinoMachine::open() {
     for (const vm::MotorSpec& m : motors_) motors += fmt::format(" {} {}..{}", m.letter, m.min, m.max);
     log_->comment("motors:" + motors);
   }
-  origin_ = clock_.now();
   if (Status st = controller_->begin(positions_); !st) {
     // Nothing has moved yet, but a controller that answers wrongly may be
     // doing anything: stop it all the same.
-    return fail(Status::fault(fmt::format("no working {} controller on {}: {}",
-                                          settings_.dialect == Dialect::Mark3 ? "Mark III" : "Mark IV",
+    return fail(Status::fault(fmt::format("no working {} controller on {}: {}", dialectTitle(settings_.dialect),
                                           session_.device(), st.message)));
   }
   start_ = positions_;

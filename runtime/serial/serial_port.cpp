@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
 #include <cstring>
 #include <filesystem>
 
@@ -40,25 +39,18 @@ const BaudEntry* findBaud(int baud) {
   return nullptr;
 }
 
-std::int64_t steadyMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
-
-// Waits until `fd` is ready for `events` or `timeout` (us) passes. Retries
-// after a signal with the time that is left. Returns the revents, 0 on a
-// timeout, -1 on error (errno set).
+// Waits until `fd` is ready for `events` or `timeout` (us) passes. Returns
+// the revents, 0 on a timeout or when a signal interrupted the wait (Ctrl-C:
+// the interrupt guard installs its handler without SA_RESTART so that the
+// caller gets to look at the flag now, not at the timeout), -1 on error
+// (errno set).
 int waitFor(int fd, short events, Micros timeout) {
-  const std::int64_t deadline = steadyMicros() + std::max<Micros>(timeout, 0);
-  for (;;) {
-    const std::int64_t left = std::max<std::int64_t>(deadline - steadyMicros(), 0);
-    pollfd p{fd, events, 0};
-    const int ms = static_cast<int>(std::min<std::int64_t>((left + 999) / 1000, 1'000'000));
-    const int n = ::poll(&p, 1, ms);
-    if (n > 0) return p.revents;
-    if (n == 0) return 0;
-    if (errno != EINTR) return -1;
-  }
+  pollfd p{fd, events, 0};
+  const int ms = static_cast<int>(std::min<std::int64_t>((std::max<Micros>(timeout, 0) + 999) / 1000, 1'000'000));
+  const int n = ::poll(&p, 1, ms);
+  if (n > 0) return p.revents;
+  if (n == 0 || errno == EINTR) return 0;
+  return -1;
 }
 
 // POSIX lets tcsetattr() fail (or succeed) with only some changes made, and
@@ -75,10 +67,7 @@ bool sameSettings(const termios& a, const termios& b) {
 }
 
 bool apply(int fd, const termios& wanted) {
-  if (::tcsetattr(fd, TCSANOW, &wanted) == 0) {
-    termios got{};
-    return ::tcgetattr(fd, &got) == 0 && sameSettings(got, wanted);
-  }
+  ::tcsetattr(fd, TCSANOW, &wanted);  // its result says little: see above
   termios got{};
   return ::tcgetattr(fd, &got) == 0 && sameSettings(got, wanted);
 }
@@ -195,6 +184,7 @@ IoResult SerialPort::write(std::span<const std::uint8_t> bytes, Micros timeout) 
       return IoResult::error(fmt::format("{}: write failed: {}", path_, std::strerror(errno)));
     }
     const int ready = waitFor(fd_, POLLOUT, deadline - steadyMicros());
+    if (ready == 0 && steadyMicros() < deadline) continue;  // a signal: part of a line cannot be taken back
     if (ready == 0) return IoResult::timeout();
     if (ready < 0) return IoResult::error(fmt::format("{}: poll failed: {}", path_, std::strerror(errno)));
     if ((ready & (POLLHUP | POLLERR | POLLNVAL)) && !(ready & POLLOUT))
@@ -203,6 +193,8 @@ IoResult SerialPort::write(std::span<const std::uint8_t> bytes, Micros timeout) 
   return IoResult::ok(done);
 }
 
+// A signal ends the wait early with a timeout: the Session looks at the
+// Ctrl-C flag and reads again with the time that is left.
 IoResult SerialPort::read(std::span<std::uint8_t> buffer, Micros timeout) {
   const int ready = waitFor(fd_, POLLIN, timeout);
   if (ready == 0) return IoResult::timeout();

@@ -24,11 +24,15 @@ void Session::note(std::string_view text) {
   if (log_) log_->event(clock_.now(), text);
 }
 
+// A read that timed out because Ctrl-C cut the wait short is an
+// interruption, not a silent controller.
 vm::Status Session::ioFailure(const IoResult& r, std::string_view command, bool writing) {
   std::string message;
   switch (r.kind) {
     case IoResult::Kind::Ok: return vm::Status::ok();
     case IoResult::Kind::Timeout:
+      if (!writing)
+        if (auto s = checkInterrupt(); !s) return s;
       message = writing ? fmt::format("the serial line to {} is blocked: \"{}\" could not be sent within {} s", device_,
                                       escapeBytes(bytesOf(command)), vm::formatSeconds(settings_.timeout))
                         : fmt::format("no reply from the controller to \"{}\" within {} s (timeout)",
@@ -60,7 +64,19 @@ vm::Status Session::garbage(std::string_view command, std::span<const std::uint8
 
 vm::Status Session::send(std::string_view command) {
   if (auto s = checkInterrupt(); !s) return s;
-  return sendUnchecked(command);
+  const vm::Status st = sendUnchecked(command);
+  if (!st)
+    if (auto s = checkInterrupt(); !s) return s;  // Ctrl-C while the line was blocked
+  return st;
+}
+
+// A link read ends early with nothing when a signal cuts its wait short
+// (SerialPort): read again with the time left, unless it was Ctrl-C.
+IoResult Session::readBy(std::span<std::uint8_t> buffer, Micros deadline) {
+  for (;;) {
+    IoResult r = link_.read(buffer, std::max<Micros>(deadline - clock_.now(), 0));
+    if (r.kind != IoResult::Kind::Timeout || clock_.now() >= deadline || !checkInterrupt()) return r;
+  }
 }
 
 vm::Status Session::sendUnchecked(std::string_view command) {
@@ -91,7 +107,7 @@ vm::Status Session::queryByte(std::string_view command, std::uint8_t& reply) {
   if (auto s = expectQuiet(command); !s) return s;
   if (auto s = send(command); !s) return s;
   std::array<std::uint8_t, 1> buf{};
-  const IoResult r = link_.read(buf, settings_.timeout);
+  const IoResult r = readBy(buf, clock_.now() + settings_.timeout);
   if (!r) return ioFailure(r, command, false);
   reply = buf[0];
   return vm::Status::ok();
@@ -104,9 +120,9 @@ vm::Status Session::queryNumber(std::string_view command, long& value) {
   std::vector<std::uint8_t> reply;
   for (;;) {
     std::array<std::uint8_t, 32> buf{};
-    const IoResult r = link_.read(buf, std::max<Micros>(deadline - clock_.now(), 0));
+    const IoResult r = readBy(buf, deadline);
     if (!r) {
-      if (r.kind == IoResult::Kind::Timeout && !reply.empty())
+      if (r.kind == IoResult::Kind::Timeout && !reply.empty() && checkInterrupt())
         return garbage(command, reply, "a decimal number ended by CR; the CR never came");
       return ioFailure(r, command, false);
     }
@@ -144,11 +160,30 @@ vm::Status Session::pause(Micros duration) {
   }
 }
 
-std::string stopReport(const std::vector<std::string>& sent, bool allOk, const std::string& failure) {
+std::vector<std::string> stopCommands(Dialect d, const std::vector<vm::MotorSpec>& motors) {
+  if (d == Dialect::Mark4) return {"MA"};
+  std::vector<std::string> commands;
+  for (const vm::MotorSpec& m : motors) commands.push_back(fmt::format("{}X", m.letter));
+  return commands;
+}
+
+std::string sendStop(Session& session, const std::vector<std::string>& commands) {
   std::string list;
-  for (const std::string& c : sent) list += (list.empty() ? "" : " ") + c;
-  if (allOk) return fmt::format("stop sent to every motor ({})", list);
+  std::string failure;
+  for (const std::string& c : commands) {
+    list += (list.empty() ? "" : " ") + c;
+    if (vm::Status st = session.sendUnchecked(c); !st && failure.empty())
+      failure = session.portGone() ? "the port is gone" : st.message;
+  }
+  if (failure.empty()) return fmt::format("stop sent to every motor ({})", list);
   return fmt::format("stop could NOT be sent to every motor ({}): {}; switch the controller off", list, failure);
+}
+
+std::string unsupportedMotor(Dialect d, const std::vector<vm::MotorSpec>& motors) {
+  for (const vm::MotorSpec& m : motors)
+    if (m.letter < 'A' || m.letter > 'H')
+      return fmt::format("motor {}: a {} controller has motors A..H only", m.letter, dialectTitle(d));
+  return {};
 }
 
 }  // namespace rs::serial

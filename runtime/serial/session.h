@@ -56,6 +56,7 @@ class Session {
  private:
   vm::Status ioFailure(const IoResult& r, std::string_view command, bool writing);
   vm::Status expectQuiet(std::string_view command);
+  IoResult readBy(std::span<std::uint8_t> buffer, Micros deadline);
 
   Link& link_;
   Clock& clock_;
@@ -93,7 +94,15 @@ class Controller {
 std::unique_ptr<Controller> makeMark3(Session& session, const std::vector<vm::MotorSpec>& motors);
 std::unique_ptr<Controller> makeMark4(Session& session, const std::vector<vm::MotorSpec>& motors);
 
-/// "a stop command to every motor" results, shared by both dialects.
-std::string stopReport(const std::vector<std::string>& sent, bool allOk, const std::string& failure);
+/// The commands that stop every motor, one per line: Mark III "<m>X" for
+/// each motor, Mark IV "MA". The one list for stopAll() and for the bytes a
+/// second Ctrl-C writes from the signal handler.
+std::vector<std::string> stopCommands(Dialect d, const std::vector<vm::MotorSpec>& motors);
+/// Sends every stop command, even after Ctrl-C and after a failed one;
+/// returns what was done, for the error message (Controller::stopAll).
+std::string sendStop(Session& session, const std::vector<std::string>& commands);
+/// "" when every motor is one a Rhino controller has (A..H), else which one
+/// is not ("motor Z: a Mark III controller has motors A..H only").
+std::string unsupportedMotor(Dialect d, const std::vector<vm::MotorSpec>& motors);
 
 }  // namespace rs::serial

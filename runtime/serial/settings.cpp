@@ -106,12 +106,7 @@ std::string bad(std::string_view key, std::string_view value, std::string_view e
 
 std::string_view dialectName(Dialect d) { return d == Dialect::Mark3 ? "mark3" : "mark4"; }
 
-bool parseDialect(std::string_view text, Dialect& out) {
-  const std::string v = lower(text);
-  if (v == "mark3" || v == "markiii" || v == "iii" || v == "3") return out = Dialect::Mark3, true;
-  if (v == "mark4" || v == "markiv" || v == "iv" || v == "4") return out = Dialect::Mark4, true;
-  return false;
-}
+std::string_view dialectTitle(Dialect d) { return d == Dialect::Mark3 ? "Mark III" : "Mark IV"; }
 
 std::string_view lineEndBytes(LineEnd e) {
   switch (e) {
@@ -200,7 +195,8 @@ std::string applySetting(RhinoSettings& s, std::string_view rawKey, std::string_
     if (!parseInt(value, 1, 127, n)) return bad(key, value, "1..127 steps");
     s.chunk = n;
   } else if (key == "refill") {
-    if (!parseInt(value, 0, 127, n)) return bad(key, value, "0..127 steps");
+    // 0 would never send the next chunk: |steps to go| < 0 never holds.
+    if (!parseInt(value, 1, 127, n)) return bad(key, value, "1..127 steps (0 would stall every long move)");
     s.refill = n;
   } else if (key == "remaining") {
     if (v == "magnitude")

@@ -19,8 +19,8 @@ enum class Dialect : std::uint8_t { Mark3, Mark4 };
 
 /// "mark3" / "mark4".
 std::string_view dialectName(Dialect d);
-/// Parses "mark3", "mark4" (also "iii", "iv", "3", "4"); false if unknown.
-bool parseDialect(std::string_view text, Dialect& out);
+/// "Mark III" / "Mark IV", for messages.
+std::string_view dialectTitle(Dialect d);
 
 /// What ends each command line the host sends.
 enum class LineEnd : std::uint8_t { Cr, CrLf, LfCr, Lf };
@@ -48,7 +48,7 @@ struct RhinoSettings {
 
   // --- Mark III -------------------------------------------------------------
   int chunk = 40;                       // steps per move command (1..127)
-  int refill = 15;                      // send the next chunk when fewer steps remain
+  int refill = 15;                      // send the next chunk when fewer steps remain (1..127)
   bool signedRemaining = false;         // "<m>?" reply: 32 + |remaining| (false) or 32 + remaining
   std::array<BitSource, 8> switches;    // home switch of motors A..H
   std::array<BitSource, 8> inputs;      // inputs 1..8

@@ -126,3 +126,32 @@ TEST_CASE("robotsim emulate runs a script and stops", "[serial]") {
   CHECK(runCli({"emulate", "--robot", "no-such-robot", "--no-stdin"}).code == 2);
   CHECK(runCli({"emulate", "--start", "Z=5", "--no-stdin"}).code == 2);
 }
+
+TEST_CASE("robotsim emulate: console numbers are whole numbers, read strictly", "[serial]") {
+  TempDir dir;
+  const std::string script = dir.write("nums.txt",
+                                       "fault silence after -1\n"
+                                       "fault silence after 5x\n"
+                                       "fault silence after 99999999999999999999\n"
+                                       "wait 1x\n"
+                                       "wait -1\n"
+                                       "fault slow after +3\n"
+                                       "wait 0.01\n"
+                                       "quit\n");
+  const auto r = runCli({"emulate", "--no-stdin", "--script", script, "--duration", "5"});
+  CHECK(r.code == 0);
+  const std::string bad = "fault KIND after N: N is a whole number of commands 0..1000000000000, not ";
+  CHECK_THAT(r.out, Catch::Contains(script + ":1: " + bad + "'-1'"));
+  CHECK_THAT(r.out, Catch::Contains(script + ":2: " + bad + "'5x'"));
+  CHECK_THAT(r.out, Catch::Contains(script + ":3: " + bad + "'99999999999999999999'"));
+  CHECK_THAT(r.out, Catch::Contains(script + ":4: wait: bad time '1x'"));
+  CHECK_THAT(r.out, Catch::Contains(script + ":5: wait: time must not be negative, got '-1'"));
+  CHECK_THAT(r.out, Catch::Contains("fault slow armed"));  // line 6: '+3' is 3
+  CHECK_THAT(r.out, Catch::Contains("emulator stopped"));
+  CHECK(r.out.find(script + ":6:") == std::string::npos);
+  const auto start = runCli({"emulate", "--start", "E=5x", "--no-stdin"});
+  CHECK(start.code == 2);
+  CHECK_THAT(start.err, Catch::Contains("--start: 'E=5x' is not L=N with N in -1000000..1000000"));
+  CHECK(runCli({"emulate", "--start", "E=+-5", "--no-stdin"}).code == 2);
+  CHECK(runCli({"emulate", "--start", "E=+5,D=-40", "--no-stdin", "--duration", "0.05"}).code == 0);
+}

@@ -4,8 +4,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <pthread.h>
+
 #include <atomic>
 #include <chrono>
+#include <thread>
 
 #include "runtime/serial/interrupt.h"
 #include "tests/serial/serial_support.h"
@@ -131,6 +134,43 @@ TEST_CASE("Ctrl-C during a long move on a pty stops the motors within a poll", "
   CHECK(snap.motors[4].position > 0);
   CHECK(snap.motors[4].position < 900);
   CHECK(machine.positions()[0] > 0);  // the last count the controller reported
+  guard.clear();
+}
+
+TEST_CASE("Ctrl-C while a read waits on a silent controller ends the wait at once", "[serial]") {
+  const auto motors = twoMotors();
+  RhinoSettings settings = testSettings(Dialect::Mark3);
+  settings.timeout = 10'000'000;  // the read would wait 10 s for an answer
+  std::string error;
+  auto emu = PtyEmulator::open(emulatorFor(settings, motors), error);
+  REQUIRE(emu);
+  emu->start();
+  auto port = SerialPort::open(emu->path(), settings.line, error);
+  REQUIRE(port);
+  SteadyClock clock;
+  InterruptGuard guard;
+  RhinoMachine machine(motors, settings, *port, clock, nullptr, &guard.flag());
+  REQUIRE(machine.open());
+  emu->setFault({FaultKind::Silence, 1, 0});  // obeys "E+40", never answers "E?"
+  // The signal goes to this thread, blocked in poll(), not to the presser.
+  const pthread_t reader = ::pthread_self();
+  std::atomic<std::int64_t> pressedAt{0};
+  std::thread presser([&] {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+    while (emu->snapshot().commands < 3 && std::chrono::steady_clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // well into the read's wait
+    pressedAt = std::chrono::steady_clock::now().time_since_epoch().count();
+    ::pthread_kill(reader, SIGINT);
+  });
+  const std::vector<std::int32_t> target{900, 0};
+  const vm::Status st = machine.moveTo(target);
+  const auto returned = std::chrono::steady_clock::now().time_since_epoch();
+  presser.join();
+  const double seconds =
+      std::chrono::duration<double>(returned - std::chrono::steady_clock::duration(pressedAt.load())).count();
+  CHECK_THAT(st.message, Catch::StartsWith("interrupted (Ctrl-C); stop sent to every motor (EX AX)"));
+  CHECK(seconds < 1.0);  // at the key, not at the 10 s timeout
   guard.clear();
 }
 

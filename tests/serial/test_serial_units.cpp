@@ -44,6 +44,12 @@ TEST_CASE("serial settings: defaults, overrides, errors", "[serial]") {
   CHECK(applySettingArg(s, "output.3.on=P{n}+").empty());
   CHECK(applySettingArg(s, "baud=12345") == "baud=12345: expected a standard baud rate (9600, 19200, ...)");
   CHECK(applySettingArg(s, "chunk=200") == "chunk=200: expected 1..127 steps");
+  // refill=0 would stall every long Mark III move (no chunk after the first).
+  CHECK(applySettingArg(s, "refill=0") == "refill=0: expected 1..127 steps (0 would stall every long move)");
+  CHECK(applySettingArg(s, "refill=128") == "refill=128: expected 1..127 steps (0 would stall every long move)");
+  CHECK(s.refill == 15);
+  CHECK(applySettingArg(s, "refill=1").empty());
+  CHECK(s.refill == 1);
   CHECK(applySettingArg(s, "output.1.on={x}") == "output.1.on={x}: expected a command, optionally with {n} and {port}");
   CHECK_THAT(applySettingArg(s, "nonsense=1"), Catch::StartsWith("unknown serial setting 'nonsense'"));
   CHECK(applySettingArg(s, "chunk") == "serial setting 'chunk': expected KEY=VALUE");
@@ -151,6 +157,40 @@ TEST_CASE("emulator faults start after N commands", "[serial]") {
   CHECK(parseFault("hangup", k));
   CHECK(k == FaultKind::Hangup);
   CHECK_FALSE(parseFault("fire", k));
+}
+
+TEST_CASE("emulator: the commands received since last time, past the cap", "[serial]") {
+  EmulatorConfig c = emulatorFor(defaultSettings(Dialect::Mark3), twoMotors());
+  EmulatorEngine e(c);
+  std::uint64_t seen = 0;
+  CHECK(e.receivedSince(seen).empty());
+  e.receive(bytes("I\rE+5\rE?\r"), 0);
+  CHECK(e.receivedSince(seen) == std::vector<std::string>{"I", "E+5", "E?"});
+  CHECK(seen == 3);
+  CHECK(e.receivedSince(seen).empty());
+  e.receive(bytes("J\r"), 0);
+  CHECK(e.receivedSince(seen) == std::vector<std::string>{"J"});
+  // The engine keeps the last 100000 commands; the count goes on past them.
+  std::string many;
+  for (int i = 0; i < 100'005; ++i) many += "K\r";
+  e.receive(bytes(many), 0);
+  const std::vector<std::string> next = e.receivedSince(seen);
+  CHECK(next.size() == 100'000);
+  CHECK(seen == 100'009);
+  e.receive(bytes("I\r"), 0);
+  CHECK(e.receivedSince(seen) == std::vector<std::string>{"I"});
+  CHECK(e.received().size() == 100'000);
+}
+
+TEST_CASE("stop commands and motor letters, one list per dialect", "[serial]") {
+  const auto motors = twoMotors();
+  CHECK(stopCommands(Dialect::Mark3, motors) == std::vector<std::string>{"EX", "AX"});
+  CHECK(stopCommands(Dialect::Mark4, motors) == std::vector<std::string>{"MA"});
+  CHECK(unsupportedMotor(Dialect::Mark3, motors).empty());
+  std::vector<vm::MotorSpec> bad = motors;
+  bad[1].letter = 'J';
+  CHECK(unsupportedMotor(Dialect::Mark3, bad) == "motor J: a Mark III controller has motors A..H only");
+  CHECK(unsupportedMotor(Dialect::Mark4, bad) == "motor J: a Mark IV controller has motors A..H only");
 }
 
 TEST_CASE("the port list looks where serial devices are", "[serial]") {
