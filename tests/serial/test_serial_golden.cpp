@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "tests/cli/cli_support.h"
 #include "tests/serial/serial_support.h"
 
 namespace {
@@ -59,14 +60,9 @@ std::string transcript(Dialect d, const char* program, std::array<std::int32_t, 
 
 void checkGolden(const std::string& name, const std::string& actual) {
   const std::string path = goldenPath(name);
-  if (std::getenv("ROBOTSIM_UPDATE_GOLDEN")) {
-    std::ofstream(path, std::ios::binary) << actual;
-    WARN("rewrote " << path);
-    return;
-  }
-  std::ifstream in(path, std::ios::binary);
-  REQUIRE(in);
-  const std::string expected((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (rs::testing::rewriteGolden(path, actual)) return;
+  const std::string expected = rs::testing::readBytes(path);
+  REQUIRE_FALSE(expected.empty());
   CHECK(actual == expected);
 }
 
