@@ -34,6 +34,7 @@
 #include "cli/lib/program_file.h"
 #include "compiler/compiler.h"
 #include "compiler/library.h"
+#include "tests/cli/cli_support.h"
 #include "vm/opcodes.h"
 
 namespace {
@@ -52,23 +53,9 @@ struct Expected {
   std::vector<std::pair<std::string, int>> variables;      // in slot order
 };
 
-struct Result {
-  int exit = -1;
-  std::string out;
-  std::string err;
-};
+using Result = rs::testing::CliResult;
 
-Result robotsim(std::vector<std::string> args) {
-  args.insert(args.begin(), "robotsim");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  Result r;
-  r.exit = rs::cli::runCommand(static_cast<int>(argv.size()), argv.data(), out, err);
-  r.out = out.str();
-  r.err = err.str();
-  return r;
-}
+Result robotsim(const std::vector<std::string>& args) { return rs::testing::runCli(args); }
 
 // `robotsim run examples/NAME.rsp --format=json [--stimuli examples/STIM]`
 Json runExample(const std::string& name, const std::string& stimuli = {}) {
@@ -79,7 +66,7 @@ Json runExample(const std::string& name, const std::string& stimuli = {}) {
   }
   const Result r = robotsim(args);
   INFO("stderr: " << r.err);
-  REQUIRE(r.exit == rs::cli::kOk);
+  REQUIRE(r.code == rs::cli::kOk);
   REQUIRE(r.err.empty());  // no warnings either: examples are clean
   return Json::parse(r.out);
 }
@@ -260,7 +247,7 @@ TEST_CASE("example pick_and_place: the readable text summary of the demo", "[exa
   const Result r = robotsim({"run", (kExamples / "pick_and_place.rsp").string(), "--stimuli",
                              (kExamples / "pick_and_place.stim").string()});
   INFO(r.out << r.err);
-  REQUIRE(r.exit == rs::cli::kOk);
+  REQUIRE(r.code == rs::cli::kOk);
   CHECK(r.err.empty());
   CHECK(r.out.find(": finished\n") != std::string::npos);
   CHECK(r.out.find("simulated time  34.900 s") != std::string::npos);
@@ -273,7 +260,7 @@ TEST_CASE("example pick_and_place deadlocks without its stimuli", "[examples]") 
   // Without the conveyor nothing ever turns input 1 ON: the first WAITFOR
   // (instruction 4, source line 21) is a deadlock at time 0, after 4 steps.
   const Result r = robotsim({"run", (kExamples / "pick_and_place.rsp").string(), "--format=json"});
-  CHECK(r.exit == rs::cli::kRunFailed);
+  CHECK(r.code == rs::cli::kRunFailed);
   const Json j = Json::parse(r.out);
   CHECK(j.at("status") == "error");
   CHECK(j.at("steps") == 4);
@@ -302,7 +289,7 @@ TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pal
   // (770, 50, 180), by (470, 0, -500): (750, 30, 200). The pallets stay.
   const Result r = robotsim({"run", (kExamples / "gantry_pick.rsp").string(), "--cell", "gantry-cell", "--format=json"});
   INFO("stderr: " << r.err);
-  REQUIRE(r.exit == rs::cli::kOk);
+  REQUIRE(r.code == rs::cli::kOk);
   REQUIRE(r.err.empty());
   const Json j = Json::parse(r.out);
   CHECK(j.at("status") == "ok");
@@ -319,7 +306,7 @@ TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pal
 
 TEST_CASE("example gantry_pick: the trace says when the gripper takes and lets go", "[examples]") {
   const Result r = robotsim({"run", (kExamples / "gantry_pick.rsp").string(), "--cell", "gantry-cell", "--trace"});
-  REQUIRE(r.exit == rs::cli::kOk);
+  REQUIRE(r.code == rs::cli::kOk);
   std::vector<std::string> events;
   std::istringstream lines(r.out);
   for (std::string line; std::getline(lines, line);) {

@@ -19,6 +19,7 @@
 #include "compiler/library.h"
 #include "runtime/kinematics/gripper.h"
 #include "stdlib/default_robot.h"
+#include "tests/cli/cli_support.h"
 
 namespace {
 
@@ -26,21 +27,8 @@ namespace fs = std::filesystem;
 
 const fs::path kStdlib = fs::path(ROBOTSIM_SOURCE_DIR) / "stdlib";
 
-struct Cli {
-  int code = -1;
-  std::string out, err;
-};
-
-Cli robotsim(const std::vector<std::string>& args) {
-  std::vector<const char*> argv{"robotsim"};
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  argv.push_back(nullptr);
-  std::ostringstream out, err;
-  Cli r;
-  r.code = rs::cli::runCommand(static_cast<int>(argv.size() - 1), argv.data(), out, err);
-  r.out = out.str(), r.err = err.str();
-  return r;
-}
+using rs::testing::runCli;
+using Scratch = rs::testing::TempDir;
 
 std::vector<fs::path> rsdFiles(const fs::path& dir) {
   std::vector<fs::path> files;
@@ -56,22 +44,6 @@ std::string diagnosticsText(const rs::compiler::Library& lib) {
   return text;
 }
 
-// A scratch directory for description files the tests write.
-struct Scratch {
-  fs::path dir;
-  Scratch() {
-    dir = fs::temp_directory_path() / ("robotsim-library-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir / name) << text;
-    return (dir / name).string();
-  }
-};
 
 // ---- the published tables ---------------------------------------------------
 
@@ -163,7 +135,7 @@ std::string joined(const std::vector<double>& q) {
 }
 
 void checkMatrix(const std::string& robot, const std::vector<double>& q) {
-  const Cli r = robotsim({"matrix", robot, "0", std::to_string(q.size()), "--theta", joined(q), "--json"});
+  const rs::testing::CliResult r = runCli({"matrix", robot, "0", std::to_string(q.size()), "--theta", joined(q), "--json"});
   INFO(r.err);
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
@@ -251,7 +223,7 @@ TEST_CASE("Every stdlib object and gripper is found by name", "[library]") {
 TEST_CASE("Each library robot's table is its published D-H table", "[library]") {
   for (const auto& [name, expected] : publishedTables()) {
     INFO(name);
-    const Cli r = robotsim({"table", name, "--json"});
+    const rs::testing::CliResult r = runCli({"table", name, "--json"});
     INFO(r.err);
     REQUIRE(r.code == 0);
     const auto j = nlohmann::json::parse(r.out);
