@@ -15,4 +15,16 @@ void GraspObserver::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
   if (next_) next_->afterStep(vm, index);
 }
 
+ObjectsInGripper::ObjectsInGripper(const workcell::Workcell* cell, std::span<const std::int32_t> start) {
+  if (!cell) return;
+  grasping_.emplace(*cell);
+  observer_.emplace(*grasping_, start);
+}
+
+vm::StepObserver* ObjectsInGripper::chain(vm::StepObserver* next) {
+  if (!observer_) return next;
+  observer_->setNext(next);
+  return &*observer_;
+}
+
 }  // namespace rs::runtime

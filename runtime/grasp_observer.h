@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "runtime/workcell/grasp.h"
@@ -36,6 +37,35 @@ class GraspObserver final : public vm::StepObserver {
   vm::StepObserver* next_;
   std::optional<workcell::GraspChange> change_;
   std::optional<vm::Micros> takeUntil_;
+};
+
+/// The objects a workcell's first robot carries in its gripper during a run:
+/// owns the workcell::Grasping and the GraspObserver that drives it, the
+/// setup every runner of a program on a workcell needs. Without a cell it
+/// holds nothing: chain() hands back `next` and the accessors answer null.
+/// A robot without a gripper holds nothing either (Grasping never takes).
+///
+///   ObjectsInGripper objects(cell, machine.positions());
+///   RunRecorder recorder(machine, objects.observer());
+///   interpreter.run(limits, objects.chain(&recorder));
+class ObjectsInGripper {
+ public:
+  /// `cell` (may be null) must outlive this; the motors start at `start`.
+  ObjectsInGripper(const workcell::Workcell* cell, std::span<const std::int32_t> start);
+  ObjectsInGripper(const ObjectsInGripper&) = delete;  // the observer refers to the Grasping
+  ObjectsInGripper& operator=(const ObjectsInGripper&) = delete;
+
+  /// The observer to run with: the grasp observer, which then calls `next`
+  /// (may be null) after every step; `next` itself when there is no cell.
+  vm::StepObserver* chain(vm::StepObserver* next);
+  /// The hold and the objects' poses; null without a cell.
+  workcell::Grasping* grasping() { return grasping_ ? &*grasping_ : nullptr; }
+  /// What each step did to the hold (for a trace or a recorder); null without a cell.
+  GraspObserver* observer() { return observer_ ? &*observer_ : nullptr; }
+
+ private:
+  std::optional<workcell::Grasping> grasping_;
+  std::optional<GraspObserver> observer_;
 };
 
 }  // namespace rs::runtime

@@ -91,13 +91,16 @@ Status SimMachine::moveTo(std::span<const std::int32_t> targets) {
 // rounded toward the start, and exactly at `to` from `end` on (end - start is
 // the rounded-up travel time). elapsed * speed <= |delta| * 10^6 + speed: no
 // overflow.
-std::int32_t SimMachine::positionAt(std::size_t motor, Micros t) const {
-  if (motor >= segments_.size()) return 0;
-  const auto& s = segments_[motor];
+std::int32_t positionAt(const MotorSegment& s, std::int32_t speed, Micros t) {
   if (t <= s.start) return s.from;
   if (t >= s.end) return s.to;
-  const std::int64_t covered = (t - s.start) * motors_[motor].speed / kMicrosPerSecond;
+  const std::int64_t covered = (t - s.start) * speed / kMicrosPerSecond;
   return static_cast<std::int32_t>(s.to > s.from ? s.from + covered : s.from - covered);
+}
+
+std::int32_t SimMachine::positionAt(std::size_t motor, Micros t) const {
+  if (motor >= segments_.size()) return 0;
+  return runtime::positionAt(segments_[motor], motors_[motor].speed, t);
 }
 
 Status SimMachine::hardHome() { return moveTo(home_); }

@@ -24,7 +24,13 @@ struct MotorSegment {
   std::int32_t to = 0;
   vm::Micros start = 0;
   vm::Micros end = 0;
+  bool operator==(const MotorSegment&) const = default;
 };
+
+/// Encoder position at time `t` of a motor that runs `segment` at `speed`
+/// units per second: `from` until the start, `to` from the end, and in
+/// between the units covered so far, rounded toward `from`.
+std::int32_t positionAt(const MotorSegment& segment, std::int32_t speed, vm::Micros t);
 
 /// Three accumulated camera values (WINDOW shift, VIEW rotation).
 struct CameraTriple {
@@ -72,8 +78,8 @@ class SimMachine final : public vm::Machine {
   const std::vector<vm::MotorSpec>& motors() const { return motors_; }
   /// The latest move of motor `motor` (index in motor-table order).
   const MotorSegment& segment(std::size_t motor) const { return segments_[motor]; }
-  /// Encoder position of `motor` at time `t`, computed from its latest
-  /// segment, rounded toward the segment's start. Before the segment began
+  /// Encoder position of `motor` at time `t`: runtime::positionAt of its
+  /// latest segment at the motor's speed. Before the segment began
   /// it answers the segment's start (older moves are not kept); 0 for a
   /// motor index out of range.
   std::int32_t positionAt(std::size_t motor, vm::Micros t) const;

@@ -124,21 +124,17 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
   vm::Interpreter interpreter(image, *machine);
   report.realTime = o.serial.active();
   std::optional<workcell::ToolTracker> tool;
-  std::optional<workcell::Grasping> grasping;
-  if (cell) tool.emplace(cell->robots.front()), grasping.emplace(*cell);
+  if (cell) tool.emplace(cell->robots.front());
+  runtime::ObjectsInGripper objects(cell ? &*cell : nullptr, machine->positions());
   report.tool = tool ? &*tool : nullptr;
-  report.grasping = grasping ? &*grasping : nullptr;
+  report.grasping = objects.grasping();
   report.cell = cell ? &*cell : nullptr;
   // Observers in a chain: the objects follow the gripper first, then the trace shows the step.
-  std::optional<runtime::GraspObserver> grasp;
   std::optional<TraceWriter> trace;
-  if (grasping) grasp.emplace(*grasping, machine->positions());
   if (!o.trace.empty())
-    trace.emplace(out, o.trace == "json" ? TraceFormat::Json : TraceFormat::Text, report.tool,
-                  grasp ? &*grasp : nullptr, report.cell);
-  vm::StepObserver* observer = trace ? &*trace : nullptr;
-  if (grasp) grasp->setNext(observer), observer = &*grasp;
-  report.outcome = interpreter.run(limits, observer);
+    trace.emplace(out, o.trace == "json" ? TraceFormat::Json : TraceFormat::Text, report.tool, objects.observer(),
+                  report.cell);
+  report.outcome = interpreter.run(limits, objects.chain(trace ? &*trace : nullptr));
   report.image = &image;
   report.vm = &interpreter;
   if (!report.outcome->ok()) {

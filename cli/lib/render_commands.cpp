@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -192,6 +194,28 @@ render::Listing listing(const LoadedProgram& program) {
   return l;
 }
 
+// The first option given to `render` that only a run uses, when there is
+// no --program to run ("" when none). --max-time counts when it differs
+// from its default.
+std::string_view withoutProgram(const RenderOptions& o) {
+  if (!o.program.empty()) return "";
+  if (!o.at.empty()) return "--at";
+  if (!o.inputs.empty()) return "--input";
+  if (!o.stimuliFile.empty()) return "--stimuli";
+  if (o.maxSteps != 0) return "--max-steps";
+  if (o.maxTime != RenderOptions{}.maxTime) return "--max-time";
+  return "";
+}
+
+// "run.html", "RUN.HTML": what animate writes.
+bool endsWithHtml(std::string_view path) {
+  constexpr std::string_view kSuffix = ".html";
+  if (path.size() < kSuffix.size()) return false;
+  const std::string_view end = path.substr(path.size() - kSuffix.size());
+  return std::equal(end.begin(), end.end(), kSuffix.begin(),
+                    [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
+}
+
 }  // namespace
 
 // ---- render -------------------------------------------------------------------
@@ -208,8 +232,12 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     err << "robotsim: error: give -o FILE.png|FILE.svg, or --dump-lines\n";
     return kCompileError;
   }
-  if (!o.at.empty() && o.program.empty()) {
-    err << "robotsim: error: --at needs --program\n";
+  if (!o.dump.empty() && o.dump != "text" && o.dump != "json") {
+    err << fmt::format("robotsim: error: --dump-lines takes text or json, not '{}'\n", o.dump);
+    return kCompileError;
+  }
+  if (const std::string_view runOption = withoutProgram(o); !runOption.empty()) {
+    err << fmt::format("robotsim: error: {} needs --program\n", runOption);
     return kCompileError;
   }
   vm::Micros at = 0, maxTime = 0;
@@ -261,6 +289,10 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
 // ---- animate ------------------------------------------------------------------
 
 int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) {
+  if (!endsWithHtml(o.output)) {
+    err << fmt::format("robotsim: error: -o {}: the page's file name must end in .html\n", o.output);
+    return kCompileError;
+  }
   render::Camera camera;
   if (!cameraFrom(o, camera, err)) return kCompileError;
   vm::Micros maxTime = 0;
@@ -273,20 +305,13 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   const vm::Image& image = *loaded.program.image;
   runtime::SimMachine machine(image.motors, stimuli);
   vm::Interpreter interpreter(image, machine);
-  // Objects in the gripper: Grasping follows the first robot's motors and
-  // the recorder, called after it, records what each step took or let go.
+  // The objects follow the first robot's gripper; the recorder, called
+  // after them, records what each step took or let go.
   const workcell::Workcell& cell = *loaded.cell;
-  std::optional<workcell::Grasping> grasping;
-  std::optional<runtime::GraspObserver> grasp;
-  if (!cell.robots.empty() && cell.robots.front().robot.hasGripper) {
-    grasping.emplace(cell);
-    grasp.emplace(*grasping, machine.positions());
-  }
-  render::RunRecorder recorder(machine, grasp ? &*grasp : nullptr);
-  if (grasp) grasp->setNext(&recorder);
-  vm::StepObserver* observer = grasp ? static_cast<vm::StepObserver*>(&*grasp) : &recorder;
+  runtime::ObjectsInGripper objects(&cell, machine.positions());
+  render::RunRecorder recorder(machine, objects.observer());
   const vm::RunLimits limits{o.maxSteps ? o.maxSteps : kAnimateMaxSteps, maxTime};
-  const vm::RunOutcome outcome = interpreter.run(limits, observer);
+  const vm::RunOutcome outcome = interpreter.run(limits, objects.chain(&recorder));
   const render::RunRecording recording = recorder.finish(outcome, stimuli);
 
   render::AnimationInput input;
@@ -345,13 +370,7 @@ RenderCommands::RenderCommands(CLI::App& app) {
 }
 
 std::optional<int> RenderCommands::run(std::ostream& out, std::ostream& err) const {
-  if (render_->parsed()) {
-    if (!o_.dump.empty() && o_.dump != "text" && o_.dump != "json") {
-      err << fmt::format("robotsim: error: --dump-lines takes text or json, not '{}'\n", o_.dump);
-      return kCompileError;
-    }
-    return renderCommand(o_, out, err);
-  }
+  if (render_->parsed()) return renderCommand(o_, out, err);
   if (animate_->parsed()) return animateCommand(o_, out, err);
   return std::nullopt;
 }

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include "runtime/render/draw.h"
 #include "runtime/render/page.h"
+#include "runtime/render/palette.h"
 #include "runtime/render/scene.h"
 
 namespace rs::render {
@@ -76,7 +78,7 @@ Json robotModel(const CellPoser& poser, std::size_t r, bool runsProgram) {
   return {{"name", robot.name},
           {"letters", letters},
           {"program", runsProgram},
-          {"tool", robot.chain && (robot.chain->size() > 0 || robot.hasGripper)},
+          {"tool", poser.hasToolMark(r)},
           {"base", matrix(poser.frame(r, 0))},
           {"joints", joints},
           {"parts", parts},
@@ -140,6 +142,23 @@ Json runModel(const RunRecording& rec, const workcell::Workcell& cell, const std
           {"grasps", graspModel(rec, cell)}};
 }
 
+std::string cssColor(Rgb c) { return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b); }
+
+// What the stills draw with (palette.h, scene.h, draw.h), so that the page
+// draws the same.
+Json styleModel() {
+  Json palette = Json::array(), axisColors = Json::array();
+  for (const Rgb& c : kEga) palette.push_back(cssColor(c));
+  for (const workcell::Color c : kAxisColors) axisColors.push_back(static_cast<int>(c));
+  return {{"palette", palette},
+          {"background", cssColor(kBackground)},
+          {"axisColors", axisColors},
+          {"axisLength", kAxisLength},
+          {"toolRadius", kToolRadius},
+          {"toolLineWidth", kToolLineWidth},
+          {"toolColor", static_cast<int>(kToolColor)}};
+}
+
 std::string escapeHtml(std::string_view text) {
   std::string out;
   for (char c : text) {
@@ -174,6 +193,7 @@ Json animationModel(const AnimationInput& input) {
             {"window", vec(input.camera.window)},
             {"zoom", input.camera.zoom},
             {"axes", input.camera.axes}}},
+          {"style", styleModel()},
           {"robots", robots},
           {"objects", objects},
           {"program", {{"name", input.listing.name}, {"lines", input.listing.lines}, {"lineOf", input.listing.lineOf}}},

@@ -34,12 +34,21 @@ struct AnimationInput {
   const workcell::Workcell* cell = nullptr;  ///< its first robot ran the program
   const RunRecording* run = nullptr;
   Listing listing;
-  Camera camera;        ///< the starting camera (width/height are ignored)
+  /// The starting camera. Its width x height (animate: the default
+  /// 1024x768) choose the fit, as for a still of that size; the page keeps
+  /// that fit at any window size, scaled to the window's smaller side.
+  Camera camera;
   std::string outcome;  ///< how the run stopped, for people ("" = END)
 };
 
-/// The page's data: {"title", "cell", "fit", "camera", "robots", "objects",
-/// "program", "run"} (the schema is described in docs/render.md). Objects
+/// The page's data: {"title", "cell", "fit", "camera", "style", "robots",
+/// "objects", "program", "run"} (the schema is described in docs/render.md).
+/// "style" is what the stills draw with, so that the page draws the same:
+/// "palette" (the 16 EGA colours as "#rrggbb", kEga), "background"
+/// (kBackground), "axisColors" (palette indices of x, y, z, kAxisColors),
+/// "axisLength" (fraction of the fit radius, kAxisLength), "toolRadius",
+/// "toolLineWidth" (pixels) and "toolColor" (a palette index) of the tool
+/// centre point's mark (draw.h). Objects
 /// the gripper carries: "run"."grasps" holds the run's GraspEvents as
 /// parallel arrays "step", "at" (µs), "object" (index in "objects"),
 /// "held", and "pose" (12 numbers per event, a 3x4 column-major matrix

@@ -17,7 +17,6 @@ namespace rs::render {
 namespace {
 
 constexpr double kLineWidth = 1.25;     // pixels
-constexpr double kToolRadius = 5.0;     // pixels
 constexpr double kLegendSize = 13.0;    // font size, pixels
 constexpr double kLegendMargin = 10.0;  // pixels
 
@@ -70,7 +69,7 @@ void drawLines(cairo_t* cr, const Picture& picture, bool pathPerColor) {
 
 // The tool centre point: a white ring with a cross.
 void drawTools(cairo_t* cr, const Picture& picture) {
-  cairo_set_line_width(cr, 1.5);
+  cairo_set_line_width(cr, kToolLineWidth);
   for (const ToolMark& t : picture.tools) {
     const double x = t.at.x(), y = t.at.y(), r = kToolRadius;
     cairo_new_sub_path(cr);
@@ -80,7 +79,7 @@ void drawTools(cairo_t* cr, const Picture& picture) {
     cairo_move_to(cr, x, y - 2 * r);
     cairo_line_to(cr, x, y + 2 * r);
   }
-  setColor(cr, kEga[15]);
+  setColor(cr, rgb(kToolColor));
   cairo_stroke(cr);
 }
 

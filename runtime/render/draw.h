@@ -13,6 +13,12 @@
 
 namespace rs::render {
 
+/// The tool centre point's mark: a ring of this radius (pixels) with a
+/// cross twice as long, stroked this wide in this colour.
+inline constexpr double kToolRadius = 5.0;
+inline constexpr double kToolLineWidth = 1.5;
+inline constexpr workcell::Color kToolColor = workcell::Color::White;
+
 enum class ImageFormat : std::uint8_t { Png, Svg };
 
 /// From the file name: ".png" or ".svg" (any case); nothing otherwise.

@@ -1,7 +1,5 @@
 #include "runtime/render/moment.h"
 
-#include <optional>
-
 #include "runtime/grasp_observer.h"
 
 namespace rs::render {
@@ -14,22 +12,17 @@ Moment runToMoment(const vm::Image& image, runtime::Stimuli stimuli, vm::Micros 
                    const workcell::Workcell* cell) {
   runtime::SimMachine machine(image.motors, std::move(stimuli));
   vm::Interpreter interpreter(image, machine);
-  std::optional<workcell::Grasping> grasping;
-  std::optional<runtime::GraspObserver> grasp;
-  if (cell) {
-    grasping.emplace(*cell);
-    grasp.emplace(*grasping, machine.positions());
-    grasp->takeNothingEndingAfter(at);
-  }
+  runtime::ObjectsInGripper objects(cell, machine.positions());
+  if (objects.observer()) objects.observer()->takeNothingEndingAfter(at);
   Moment m;
   m.at = at;
-  m.outcome = interpreter.run({maxSteps, at}, grasp ? &*grasp : nullptr);
+  m.outcome = interpreter.run({maxSteps, at}, objects.chain(nullptr));
   m.reached = m.outcome.ok() || (m.outcome.reason == vm::StopReason::TimeLimit && machine.now() > at);
   m.encoders.resize(image.motors.size());
   for (std::size_t i = 0; i < m.encoders.size(); ++i)
     m.encoders[i] = m.outcome.ok() ? machine.positions()[i] : machine.positionAt(i, at);
   m.clock = machine.now();
-  if (grasping)
+  if (workcell::Grasping* grasping = objects.grasping())
     for (std::size_t o = 0; o < cell->objects.size(); ++o) m.objects.push_back(grasping->objectPose(o, m.encoders));
   m.view = machine.viewRotation();
   m.window = machine.windowShift();

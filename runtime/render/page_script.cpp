@@ -28,10 +28,8 @@ const std::string_view kScript = R"JS('use strict';
   const run = model.run;
   const steps = run.index.length;
   const motorCount = run.motors.length;
-  const EGA = ['#000000', '#0000aa', '#00aa00', '#00aaaa', '#aa0000', '#aa00aa', '#aa5500', '#aaaaaa',
-               '#555555', '#5555ff', '#55ff55', '#55ffff', '#ff5555', '#ff55ff', '#ffff55', '#ffffff'];
-  const BACKGROUND = '#10121c';
-  const AXIS_COLORS = [12, 10, 9];  // x LIGHTRED, y LIGHTGREEN, z LIGHTBLUE
+  const style = model.style;  // the stills' colours and marks (palette.h, scene.h, draw.h)
+  const EGA = style.palette;
 
   // ---- Maths. An affine map is a Float64Array(12), column-major: the
   // images of the x, y and z axes, then of the origin (Eigen's layout).
@@ -281,7 +279,7 @@ const std::string_view kScript = R"JS('use strict';
     }
   }
   function strokeAxesAndTools(V, axes) {
-    const L = 0.08 * model.fit.radius;
+    const L = style.axisLength * model.fit.radius;
     for (const r of model.robots) {
       if (axes) {
         for (let k = 0; k < 3; k++) {
@@ -291,16 +289,17 @@ const std::string_view kScript = R"JS('use strict';
             const e = apply(V, F[9] + L * F[3 * k], F[10] + L * F[3 * k + 1], F[11] + L * F[3 * k + 2]);
             ctx.moveTo(o[0], o[1]); ctx.lineTo(e[0], e[1]);
           }
-          ctx.strokeStyle = EGA[AXIS_COLORS[k]]; ctx.stroke();
+          ctx.strokeStyle = EGA[style.axisColors[k]]; ctx.stroke();
         }
       }
       if (r.tool) {
-        const F = r.F[r.n], p = apply(V, F[9], F[10], F[11]), R = 5;
+        const F = r.F[r.n], p = apply(V, F[9], F[10], F[11]), R = style.toolRadius;
         ctx.beginPath();
         ctx.arc(p[0], p[1], R, 0, 2 * Math.PI);
         ctx.moveTo(p[0] - 2 * R, p[1]); ctx.lineTo(p[0] + 2 * R, p[1]);
         ctx.moveTo(p[0], p[1] - 2 * R); ctx.lineTo(p[0], p[1] + 2 * R);
-        ctx.lineWidth = 1.5; ctx.strokeStyle = EGA[15]; ctx.stroke(); ctx.lineWidth = S.hairline;
+        ctx.lineWidth = style.toolLineWidth; ctx.strokeStyle = EGA[style.toolColor]; ctx.stroke();
+        ctx.lineWidth = S.hairline;
       }
     }
   }
@@ -309,7 +308,7 @@ const std::string_view kScript = R"JS('use strict';
     const cam = cameraFor(current, S.user);
     viewMatrix(cam.view, cam.window, cam.zoom, S.W, S.H, V);
     projectAll(V, current.enc, S.k, S.t);
-    ctx.fillStyle = BACKGROUND;
+    ctx.fillStyle = style.background;
     ctx.fillRect(0, 0, S.W, S.H);
     // One device pixel: Skia then draws hairlines, ten times faster than
     // stroking 5,000 wider lines (docs/render.md).

@@ -55,7 +55,7 @@ Picture makePicture(const CellPoser& poser, const Camera& camera, const Fit& fit
   picture.camera = camera;
   picture.fit = fit;
   std::vector<Line3> lines;
-  poser.lines(lines, camera.axes ? 0.08 * fit.radius : 0.0);
+  poser.lines(lines, camera.axes ? kAxisLength * fit.radius : 0.0);
   picture.lines.reserve(lines.size());
   for (const Line3& l : lines) picture.lines.push_back({project(l.a), project(l.b), l.color, l.part});
   const workcell::Workcell& cell = poser.cell();
@@ -66,8 +66,7 @@ Picture makePicture(const CellPoser& poser, const Camera& camera, const Fit& fit
   if (!title.empty()) picture.legend.push_back(title);
   for (std::size_t r = 0; r < cell.robots.size(); ++r) {
     const workcell::Robot& robot = cell.robots[r].robot;
-    if (robot.chain && (robot.chain->size() > 0 || robot.hasGripper))
-      picture.tools.push_back({static_cast<int>(r), project(poser.tool(r))});
+    if (poser.hasToolMark(r)) picture.tools.push_back({static_cast<int>(r), project(poser.tool(r))});
     picture.legend.push_back(robotLegend(robot, poser.encoders(r)));
   }
   return picture;

@@ -10,12 +10,6 @@ namespace rs::render {
 
 namespace {
 
-constexpr vm::Micros kMicrosPerSecond = 1'000'000;
-
-bool sameSegment(const runtime::MotorSegment& a, const runtime::MotorSegment& b) {
-  return a.from == b.from && a.to == b.to && a.start == b.start && a.end == b.end;
-}
-
 vm::Micros later(vm::Micros t, vm::Micros delay) {
   delay = std::max<vm::Micros>(delay, 0);
   return t > std::numeric_limits<vm::Micros>::max() - delay ? std::numeric_limits<vm::Micros>::max() : t + delay;
@@ -67,7 +61,7 @@ void RunRecorder::record(std::uint32_t index) {
   rec_.steps.push_back({index, lastNow_, now});
   for (std::size_t m = 0; m < lastSegment_.size(); ++m) {
     const runtime::MotorSegment& s = machine_.segment(m);
-    if (sameSegment(s, lastSegment_[m])) continue;
+    if (s == lastSegment_[m]) continue;
     lastSegment_[m] = s;
     if (s.from != s.to || s.to != lastPosition_[m]) rec_.moves[m].push_back({step, s.from, s.to, s.start, s.end});
     lastPosition_[m] = s.to;
@@ -142,10 +136,7 @@ RunRecording RunRecorder::finish(const vm::RunOutcome& outcome, const runtime::S
 }
 
 std::int32_t positionAt(const MotorMove& move, std::int32_t speed, vm::Micros t) {
-  if (t <= move.start) return move.from;
-  if (t >= move.end) return move.to;
-  const std::int64_t covered = (t - move.start) * speed / kMicrosPerSecond;
-  return static_cast<std::int32_t>(move.to > move.from ? move.from + covered : move.from - covered);
+  return runtime::positionAt({move.from, move.to, move.start, move.end}, speed, t);
 }
 
 RunState stateAtStep(const RunRecording& rec, std::size_t step, vm::Micros t) {

@@ -126,7 +126,7 @@ RunState stateAt(const RunRecording& rec, vm::Micros t);
 /// The state after step `step`'s effects, seen at time t (its start..end).
 RunState stateAtStep(const RunRecording& rec, std::size_t step, vm::Micros t);
 
-/// SimMachine::positionAt for one recorded move.
+/// runtime::positionAt (what SimMachine answers) for one recorded move.
 std::int32_t positionAt(const MotorMove& move, std::int32_t speed, vm::Micros t);
 
 }  // namespace rs::render

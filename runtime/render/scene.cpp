@@ -63,6 +63,11 @@ void CellPoser::pose(std::size_t robot) {
   for (std::size_t i = 0; i < s.F_world_i.size(); ++i) s.F_world_i[i] = s.chain->F_world_0() * s.data->F_0_i[i];
 }
 
+bool CellPoser::hasToolMark(std::size_t robot) const {
+  const workcell::Robot& r = cell_->robots[robot].robot;
+  return r.chain && (r.chain->size() > 0 || r.hasGripper);
+}
+
 void CellPoser::lines(std::vector<Line3>& out, double axisLength) const {
   out.clear();
   for (std::size_t r = 0; r < robots_.size(); ++r) {

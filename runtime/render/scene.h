@@ -41,6 +41,8 @@ struct Line3 {
 /// Colours of the drawn link frames (AXES ON): x, y, z.
 inline constexpr workcell::Color kAxisColors[3] = {workcell::Color::LightRed, workcell::Color::LightGreen,
                                                    workcell::Color::LightBlue};
+/// Length of each drawn frame axis, as a fraction of the fitted radius.
+inline constexpr double kAxisLength = 0.08;
 
 /// Poses the robots of a workcell and lists its lines. Holds one
 /// kinematics workspace per robot, built once; posing does not allocate.
@@ -67,6 +69,9 @@ class CellPoser {
   std::size_t frameCount(std::size_t robot) const { return robots_[robot].F_world_i.size(); }
   /// Origin of the last frame: the tool centre point when there is a gripper.
   Eigen::Vector3d tool(std::size_t robot) const { return robots_[robot].F_world_i.back().translation(); }
+  /// Whether pictures mark robot `robot`'s tool centre point: it has a
+  /// chain with a joint or a gripper (a bare base has no tool).
+  bool hasToolMark(std::size_t robot) const;
 
   /// Both ends of every line at home (what pictures are fitted to).
   std::span<const Eigen::Vector3d> homePoints() const { return homePoints_; }

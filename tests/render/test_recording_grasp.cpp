@@ -118,6 +118,39 @@ TEST_CASE("RESET lets go at its instant and puts the object back", "[render][gra
   checkNear(rec.grasps[1].pose.matrix(), translation(200, 30, 660));  // its placement
 }
 
+TEST_CASE("ObjectsInGripper chains the grasp observer before the next one", "[render][grasp]") {
+  const rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
+  const rs::vm::Image image = rendertest::compileText(kPickAndPlace, cell);
+  rs::runtime::SimMachine machine(image.motors, {});
+  rs::vm::Interpreter vm(image, machine);
+  rs::runtime::ObjectsInGripper objects(&cell, machine.positions());
+  REQUIRE(objects.grasping());
+  REQUIRE(objects.observer());
+  rs::render::RunRecorder recorder(machine, objects.observer());
+  rs::vm::StepObserver* first = objects.chain(&recorder);
+  CHECK(first == objects.observer());
+  const rs::vm::RunOutcome outcome = vm.run({}, first);
+  REQUIRE(outcome.ok());
+  const RunRecording rec = recorder.finish(outcome, {});
+  const RunRecording byHand = record(kPickAndPlace, true);
+  REQUIRE(rec.grasps.size() == byHand.grasps.size());
+  for (std::size_t i = 0; i < rec.grasps.size(); ++i) {
+    CHECK(rec.grasps[i].step == byHand.grasps[i].step);
+    CHECK(rec.grasps[i].held == byHand.grasps[i].held);
+  }
+  CHECK_FALSE(objects.grasping()->held());  // let go at step 5
+}
+
+TEST_CASE("ObjectsInGripper without a workcell is no observer at all", "[render][grasp]") {
+  rs::runtime::ObjectsInGripper none(nullptr, {});
+  CHECK(none.grasping() == nullptr);
+  CHECK(none.observer() == nullptr);
+  CHECK(none.chain(nullptr) == nullptr);
+  rs::runtime::SimMachine machine({}, {});
+  rs::render::RunRecorder recorder(machine);
+  CHECK(none.chain(&recorder) == &recorder);
+}
+
 TEST_CASE("a recorder without a grasp observer records no grasps", "[render][grasp]") {
   const RunRecording rec = record(kPickAndPlace, false);
   CHECK(rec.steps.size() == 8);

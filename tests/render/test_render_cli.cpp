@@ -1,9 +1,13 @@
 // `robotsim render` and `robotsim animate` end to end, in-process.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
+#include "cli/lib/render_commands.h"
 #include "render_test_util.h"
+#include "runtime/render/animation.h"
 #include "runtime/render/draw.h"
+#include "runtime/render/scene.h"
 
 using rs::testing::readBytes;
 using rs::testing::runCli;
@@ -105,17 +109,36 @@ TEST_CASE("render and animate reject bad options and inputs clearly", "[render][
   expectError({"render", "scara-pick", "-o", dir.file("x.jpg")}, 2, "must end in .png or .svg");
   expectError({"render", "scara-pick"}, 2, "give -o");
   expectError({"render", "scara-pick", "--at", "1", "--dump-lines"}, 2, "--at needs --program");
+  // Every option of a run needs the run.
+  expectError({"render", "scara-pick", "--input", "1=ON@0", "--dump-lines"}, 2, "--input needs --program");
+  expectError({"render", "scara-pick", "--stimuli", kExamples + "pick_and_place.stim", "--dump-lines"}, 2,
+              "--stimuli needs --program");
+  expectError({"render", "scara-pick", "--max-steps", "5", "--dump-lines"}, 2, "--max-steps needs --program");
+  expectError({"render", "scara-pick", "--max-time", "5", "--dump-lines"}, 2, "--max-time needs --program");
   expectError({"render", "no-such-cell", "--dump-lines"}, 2, "no-such-cell");
   expectError({"render", "scara-pick", "--dump-lines=xml"}, 2, "--dump-lines takes text or json");
   expectError({"render", "scara-pick", "--program", kExamples + "first_moves.rsp", "--at", "-1", "--dump-lines"}, 2,
               "--at");
   expectError({"animate", kExamples + "first_moves.rsp", "-o", dir.file("x.html")}, 2, "--cell");
+  expectError({"animate", kExamples + "first_moves.rsp", "--cell", "scara-pick", "-o", dir.file("x.png")}, 2,
+              "must end in .html");
+  CHECK_FALSE(std::filesystem::exists(dir.file("x.png")));
   expectError({"render", "scara-pick", "-o", dir.file("missing/dir/x.png")}, 2, "cannot write");
   CHECK_FALSE(std::filesystem::exists(dir.file("x.jpg")));
   CHECK_FALSE(std::filesystem::exists(dir.file("x.html")));
   // A run that fails before the moment asked for.
   const std::string stuck = dir.write("stuck.rsp", "MOVE 100 0 0 0 0\nWAITFOR 3 ON\nEND\n");
   expectError({"render", "scara-pick", "--program", stuck, "--at", "5", "--dump-lines"}, 1, "never turns ON");
+}
+
+TEST_CASE("renderCommand itself checks --dump-lines' value", "[render][cli]") {
+  rs::cli::RenderOptions o;
+  o.cell = "scara-pick";
+  o.dump = "xml";
+  std::ostringstream out, err;
+  CHECK(rs::cli::renderCommand(o, out, err) == 2);
+  CHECK(err.str().find("--dump-lines takes text or json, not 'xml'") != std::string::npos);
+  CHECK(out.str().empty());
 }
 
 TEST_CASE("animate writes one self-contained page with the run in it", "[render][cli]") {
@@ -141,6 +164,32 @@ TEST_CASE("animate writes one self-contained page with the run in it", "[render]
   CHECK(model["run"]["outcome"] == "");
   CHECK(model["program"]["lines"].size() > 30);
   CHECK(model["run"]["inputs"]["at"].size() > 3);
+}
+
+// The page draws with the stills' colours and marks, taken from the C++
+// constants, and the script keeps no copy of them.
+TEST_CASE("animate's page model carries the stills' style", "[render][cli]") {
+  const TempDir dir;
+  const std::string prog = dir.write("p.rsp", "MOVE 10 0 0 0 0\nEND\n");
+  REQUIRE(runCli({"animate", prog, "--cell", "scara-pick", "-o", dir.file("RUN.HTML")}).code == 0);
+  const std::string html = readBytes(dir.file("RUN.HTML"));
+  const auto style = pageModel(html)["style"];
+  REQUIRE(style["palette"].size() == 16);
+  CHECK(style["palette"][0] == "#000000");
+  CHECK(style["palette"][6] == "#aa5500");
+  CHECK(style["palette"][12] == "#ff5555");
+  CHECK(style["palette"][15] == "#ffffff");
+  CHECK(style["background"] == "#10121c");
+  CHECK(style["axisColors"] == nlohmann::json::array({12, 10, 9}));
+  CHECK(style["axisLength"] == rs::render::kAxisLength);
+  CHECK(style["toolRadius"] == rs::render::kToolRadius);
+  CHECK(style["toolLineWidth"] == rs::render::kToolLineWidth);
+  CHECK(style["toolColor"] == 15);
+  const std::string_view script = rs::render::pageScript();
+  for (const char* copy : {"#10121c", "#aa5500", "0.08", "R = 5", "lineWidth = 1.5"}) {
+    INFO(copy);
+    CHECK(script.find(copy) == std::string_view::npos);
+  }
 }
 
 TEST_CASE("animate keeps a failed run up to the failure and says why", "[render][cli]") {

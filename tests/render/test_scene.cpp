@@ -7,6 +7,7 @@
 #include "render_test_util.h"
 #include "runtime/kinematics/forward_kinematics.h"
 #include "runtime/kinematics/joint_values.h"
+#include "runtime/render/picture.h"
 #include "runtime/render/scene.h"
 #include "runtime/workcell/tool_tracker.h"
 
@@ -143,6 +144,17 @@ TEST_CASE("Closing the gripper turns only the fingers, about their axes", "[rend
   }
   CHECK(fingerLines > 0);
   CHECK(moved > 0);
+}
+
+TEST_CASE("A robot with a joint or a gripper has a tool mark, a bare one has none", "[render]") {
+  rs::workcell::Workcell cell = rendertest::cell("scorobot");
+  CHECK(CellPoser(cell).hasToolMark(0));
+  CHECK(rs::render::makePicture(CellPoser(cell), {}, {}, {}).tools.size() == 1);
+  cell.robots[0].robot.chain.reset();
+  cell.robots[0].robot.hasGripper = false;
+  const CellPoser bare(cell);
+  CHECK_FALSE(bare.hasToolMark(0));
+  CHECK(rs::render::makePicture(bare, {}, {}, {}).tools.empty());
 }
 
 TEST_CASE("AXES ON adds three lines per frame, 0..n, in x/y/z colours", "[render]") {
