@@ -195,15 +195,14 @@ render::Listing listing(const LoadedProgram& program) {
 }
 
 // The first option given to `render` that only a run uses, when there is
-// no --program to run ("" when none). --max-time counts when it differs
-// from its default.
+// no --program to run ("" when none).
 std::string_view withoutProgram(const RenderOptions& o) {
   if (!o.program.empty()) return "";
   if (!o.at.empty()) return "--at";
   if (!o.inputs.empty()) return "--input";
   if (!o.stimuliFile.empty()) return "--stimuli";
   if (o.maxSteps != 0) return "--max-steps";
-  if (o.maxTime != RenderOptions{}.maxTime) return "--max-time";
+  if (!o.maxTime.empty()) return "--max-time";
   return "";
 }
 
@@ -240,9 +239,9 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     err << fmt::format("robotsim: error: {} needs --program\n", runOption);
     return kCompileError;
   }
-  vm::Micros at = 0, maxTime = 0;
+  vm::Micros at = 0, maxTime = vm::RunLimits{}.maxTime;
   if (!o.at.empty() && !seconds(o.at, "--at", at, err)) return kCompileError;
-  if (!seconds(o.maxTime, "--max-time", maxTime, err)) return kCompileError;
+  if (!o.maxTime.empty() && !seconds(o.maxTime, "--max-time", maxTime, err)) return kCompileError;
   runtime::Stimuli stimuli;
   if (!stimuliFrom(o, stimuli, err)) return kCompileError;
   Loaded loaded = load(o, !o.program.empty(), err);
@@ -295,8 +294,8 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   }
   render::Camera camera;
   if (!cameraFrom(o, camera, err)) return kCompileError;
-  vm::Micros maxTime = 0;
-  if (!seconds(o.maxTime, "--max-time", maxTime, err)) return kCompileError;
+  vm::Micros maxTime = vm::RunLimits{}.maxTime;
+  if (!o.maxTime.empty() && !seconds(o.maxTime, "--max-time", maxTime, err)) return kCompileError;
   runtime::Stimuli stimuli;
   if (!stimuliFrom(o, stimuli, err)) return kCompileError;
   Loaded loaded = load(o, true, err);

@@ -31,7 +31,7 @@ struct RenderOptions {
   std::vector<std::string> inputs;   // --input N=ON@T
   std::string stimuliFile;           // --stimuli
   std::uint64_t maxSteps = 0;        // 0: the command's default
-  std::string maxTime = "3600";
+  std::string maxTime;  // empty: not given (3600 s)
 };
 
 int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err);

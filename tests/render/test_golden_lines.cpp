@@ -75,25 +75,19 @@ void compare(const std::string& actual, const std::string& expected) {
   }
 }
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using rs::testing::readBytes;
 
 }  // namespace
 
 TEST_CASE("Every library robot projects to its reference lines", "[render][golden]") {
-  const bool update = std::getenv("ROBOTSIM_UPDATE_GOLDEN") != nullptr;
   for (const std::string& robot : rendertest::libraryRobots())
     for (const bool poseb : {false, true}) {
       const std::string path = kGoldenDir + robot + (poseb ? ".b.lines" : ".home.lines");
       INFO(path);
       const std::string actual = dump(robot, poseb);
-      if (update) std::ofstream(path) << actual;
+      if (rs::testing::rewriteGolden(path, actual)) continue;
       REQUIRE(std::filesystem::exists(path));
-      compare(actual, readFile(path));
+      compare(actual, readBytes(path));
     }
 }
 
@@ -158,7 +152,7 @@ TEST_CASE("scorobot.b.lines agrees with the paper's D-H table and the camera for
     move[i + 1] = mul(T, rigidInverse(H));
   }
 
-  const std::string golden = readFile(kGoldenDir + "scorobot.b.lines");
+  const std::string golden = readBytes(kGoldenDir + "scorobot.b.lines");
   const auto rows = split(golden, '\n');
   const auto cam = split(rows.at(1), ' ');
   // "# camera: view 25 -35 0 window 0 0 0 zoom 1 axes on fit cx cy cz radius r"

@@ -115,6 +115,8 @@ TEST_CASE("render and animate reject bad options and inputs clearly", "[render][
               "--stimuli needs --program");
   expectError({"render", "scara-pick", "--max-steps", "5", "--dump-lines"}, 2, "--max-steps needs --program");
   expectError({"render", "scara-pick", "--max-time", "5", "--dump-lines"}, 2, "--max-time needs --program");
+  // Even the default's value, when given.
+  expectError({"render", "scara-pick", "--max-time", "3600", "--dump-lines"}, 2, "--max-time needs --program");
   expectError({"render", "no-such-cell", "--dump-lines"}, 2, "no-such-cell");
   expectError({"render", "scara-pick", "--dump-lines=xml"}, 2, "--dump-lines takes text or json");
   expectError({"render", "scara-pick", "--program", kExamples + "first_moves.rsp", "--at", "-1", "--dump-lines"}, 2,
