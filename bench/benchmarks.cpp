@@ -66,7 +66,7 @@ std::string writeInput(const Options& options, const std::string& name, const st
   return path;
 }
 
-vm::Image compileOrThrow(const compiler::SourceFile& source, const compiler::Target& target) {
+vm::Image compileOrThrow(const diag::SourceFile& source, const compiler::Target& target) {
   compiler::CompileResult result = compiler::compile(source, target);
   if (!result.ok()) {
     const std::string first = result.diagnostics.empty() ? "no diagnostic" : result.diagnostics.front().message;
@@ -114,7 +114,7 @@ Measurement vmLoop(const vm::Image& image, std::uint64_t& steps) {
 
 json benchDispatch(const Options& options) {
   fmt::print("\n[1] VM dispatch: SET/ADD/JMPVAR loop, {} iterations\n", kLoopIterations);
-  const compiler::SourceFile source("dispatch.rsp",
+  const diag::SourceFile source("dispatch.rsp",
                                     fmt::format("SET N 0\nloop: ADD N 1\nJMPVAR N < {} loop\nEND\n", kLoopIterations));
   const vm::Image image = compileOrThrow(source, cli::defaultTarget());
   if (const vm::VerifyError e = vm::verify(image); !e.message.empty())
@@ -205,7 +205,7 @@ SizeResult prepareSize(const Options& options, std::string label, std::size_t in
 // compile() in-process (source already in memory) and `robotsim compile`
 // as a process, interleaved.
 void measureSize(const Options& options, SizeResult& r) {
-  const compiler::SourceFile source(r.path, r.program.text);
+  const diag::SourceFile source(r.path, r.program.text);
   const compiler::Target target = cli::defaultTarget();
   const vm::Image image = compileOrThrow(source, target);
   if (image.code.size() != r.program.instructions)

@@ -7,9 +7,9 @@
 #include <random>
 #include <vector>
 
-#include "runtime/kinematics/chain_data.h"
-#include "runtime/kinematics/chain_model.h"
-#include "runtime/kinematics/forward_kinematics.h"
+#include "model/kinematics/chain_data.h"
+#include "model/kinematics/chain_model.h"
+#include "model/kinematics/forward_kinematics.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "RobotProgramParser.h"
-#include "vm/ascii.h"
+#include "base/ascii.h"
 
 namespace rs::compiler {
 
@@ -13,22 +13,22 @@ namespace {
 
 using P = rs_grammar::RobotProgramParser;
 
-using vm::asciiUpper;
-using vm::sameName;
+using base::asciiUpper;
+using base::sameName;
 
-Pos posOf(const antlr4::Token* t) {
+diag::Pos posOf(const antlr4::Token* t) {
   return {static_cast<std::uint32_t>(t->getLine()), static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)};
 }
 
 // The written text of a token: a view into the source, not a copy.
-std::string_view textOf(const SourceFile& src, const antlr4::Token* t) {
+std::string_view textOf(const diag::SourceFile& src, const antlr4::Token* t) {
   return std::string_view(src.text()).substr(t->getStartIndex(), t->getStopIndex() + 1 - t->getStartIndex());
 }
 
 struct Word {  // one operand as written
   size_t type;
   std::string_view text;
-  Pos pos;
+  diag::Pos pos;
 };
 
 }  // namespace
@@ -72,7 +72,7 @@ bool isReservedWord(std::string_view w) {
 
 class Builder {
  public:
-  Builder(const SourceFile& src, std::span<const vm::MotorSpec> motors, Diagnostics& d)
+  Builder(const diag::SourceFile& src, std::span<const vm::MotorSpec> motors, diag::Diagnostics& d)
       : src_(src), motors_(motors), diag_(d) {
     // One instruction per line at most: reserving for that touches no
     // memory the program does not use, and saves the copies of growth.
@@ -87,7 +87,7 @@ class Builder {
   void instruction(const antlr4::Token* head, const std::vector<Word>& words);
   void point(const antlr4::Token* head, const std::vector<Word>& words);
   bool operands(Instruction& in, std::string_view mnemonic, const std::vector<Word>& w);
-  bool checkName(std::string_view what, std::string_view name, Pos pos);
+  bool checkName(std::string_view what, std::string_view name, diag::Pos pos);
 
   // Operand readers: each reports what it expected and returns false.
   bool integer(const Word& w, std::string_view what, Value& out);
@@ -95,21 +95,21 @@ class Builder {
   /// is left empty, so later checks skip the operand list.
   bool integers(const std::vector<Word>& words, std::string_view what, std::vector<Value>& out);
   bool seconds(const Word& w, Value& out);
-  bool name(const Word& w, std::string_view what, std::string_view& out, Pos& pos);
+  bool name(const Word& w, std::string_view what, std::string_view& out, diag::Pos& pos);
   bool onOff(const Word& w, bool& out);
   bool compare(const Word& w, vm::Compare& out);
   bool jump(const Word& w, JumpRef& out);
   std::string motorLetters() const;
 
-  const SourceFile& src_;
+  const diag::SourceFile& src_;
   std::span<const vm::MotorSpec> motors_;
-  Diagnostics& diag_;
+  diag::Diagnostics& diag_;
   Program program_;
   std::vector<const antlr4::Token*> tokens_;  // of the current line (kept for its capacity)
   std::vector<Word> words_;
   bool inPoints_ = false;
   std::string_view pendingLabel_;
-  Pos pendingLabelPos_;
+  diag::Pos pendingLabelPos_;
 };
 
 Program Builder::finish() {
@@ -146,7 +146,7 @@ void Builder::line(P::LineContext* l, bool recovered) {
   }
   if (labelled) {
     const std::string_view label = textOf(src_, tokens[0]);
-    const Pos pos = posOf(tokens[0]);
+    const diag::Pos pos = posOf(tokens[0]);
     if (inPoints_) {
       diag_.error(pos, "points cannot have labels: labels name instructions");
     } else if (!pendingLabel_.empty()) {
@@ -229,7 +229,7 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
   }
   const std::size_t want = operandCount(f);
   if (w.size() != want) {
-    const Pos at = w.size() > want ? w[want].pos : in.pos;
+    const diag::Pos at = w.size() > want ? w[want].pos : in.pos;
     diag_.error(at, want == 0 ? fmt::format("{} takes no operands, found {}", mnemonic, w.size())
                               : fmt::format("{} expects {} operand{} ({}{}), found {}", mnemonic, want,
                                             want == 1 ? "" : "s", mnemonic, operandUsage(f), w.size()));
@@ -256,7 +256,7 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
   return false;
 }
 
-bool Builder::checkName(std::string_view what, std::string_view name, Pos pos) {
+bool Builder::checkName(std::string_view what, std::string_view name, diag::Pos pos) {
   if (name.size() > kMaxNameLength) {
     diag_.error(pos, fmt::format("'{}...' is too long for {}: names have at most {} characters", name.substr(0, 16),
                                  what, kMaxNameLength));
@@ -336,7 +336,7 @@ bool Builder::seconds(const Word& w, Value& out) {
   return true;
 }
 
-bool Builder::name(const Word& w, std::string_view what, std::string_view& out, Pos& pos) {
+bool Builder::name(const Word& w, std::string_view what, std::string_view& out, diag::Pos& pos) {
   pos = w.pos;
   if (w.type != P::IDENT) {
     diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, w.text));
@@ -419,14 +419,14 @@ std::string_view closestMnemonic(std::string_view word) {
   return best;
 }
 
-Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, Diagnostics& diagnostics) {
+Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics) {
   Builder b(tree.source(), motors, diagnostics);
   for (P::LineContext* l : static_cast<P::ProgramContext*>(tree.root())->line()) b.line(l, tree.recovered());
   return b.finish();
 }
 
-Program buildAst(const SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
-                 Diagnostics& diagnostics) {
+Program buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
+                 diag::Diagnostics& diagnostics) {
   Builder b(source, motors, diagnostics);
   while (antlr4::ParserRuleContext* l = parser.next()) b.line(static_cast<P::LineContext*>(l), parser.recovered());
   return b.finish();

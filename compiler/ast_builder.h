@@ -6,17 +6,17 @@
 #include <span>
 
 #include "compiler/ast.h"
-#include "compiler/diagnostics.h"
+#include "diag/diagnostic.h"
 #include "compiler/parse_tree.h"
 #include "vm/image.h"
 
 namespace rs::compiler {
 
 /// From the whole file's parse tree (`robotsim ast`).
-Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, Diagnostics& diagnostics);
+Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics);
 /// From each line's parse tree in turn (the compiler): the same AST.
-Program buildAst(const SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
-                 Diagnostics& diagnostics);
+Program buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
+                 diag::Diagnostics& diagnostics);
 
 /// How an instruction of this format is written, after its mnemonic:
 /// " <input> ON|OFF <line>".

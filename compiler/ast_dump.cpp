@@ -10,7 +10,7 @@ namespace rs::compiler {
 
 namespace {
 
-std::string pos(Pos p) { return fmt::format("{}:{}", p.line, p.col); }
+std::string pos(diag::Pos p) { return fmt::format("{}:{}", p.line, p.col); }
 
 std::string valueList(const std::vector<Value>& values) {
   std::string s;
@@ -46,13 +46,13 @@ std::string operands(const Instruction& in) {
 
 }  // namespace
 
-std::string dumpAst(const SourceFile& source, const Target& target, bool parseTree,
-                    std::vector<Diagnostic>& diagnostics) {
+std::string dumpAst(const diag::SourceFile& source, const Target& target, bool parseTree,
+                    std::vector<diag::Diagnostic>& diagnostics) {
   if (auto bad = checkEncoding(source)) {
     diagnostics.push_back(std::move(*bad));
     return {};
   }
-  Diagnostics d(source.name());
+  diag::Diagnostics d(source.name());
   ParseTree tree(source, d);
   std::string out;
   if (parseTree) out += "parse tree:\n" + tree.toStringTree() + "\n\n";

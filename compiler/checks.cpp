@@ -4,7 +4,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "vm/ascii.h"
+#include "base/ascii.h"
 
 namespace rs::compiler {
 
@@ -18,23 +18,23 @@ constexpr std::size_t kMaxSlots = 65535;
 struct CaseInsensitiveHash {
   std::size_t operator()(std::string_view s) const {
     std::uint64_t h = 14695981039346656037ull;  // FNV-1a
-    for (char c : s) h = (h ^ static_cast<unsigned char>(vm::asciiUpper(c))) * 1099511628211ull;
+    for (char c : s) h = (h ^ static_cast<unsigned char>(base::asciiUpper(c))) * 1099511628211ull;
     return static_cast<std::size_t>(h);
   }
 };
 
 struct CaseInsensitiveEqual {
-  bool operator()(std::string_view a, std::string_view b) const { return vm::sameName(a, b); }
+  bool operator()(std::string_view a, std::string_view b) const { return base::sameName(a, b); }
 };
 
 struct Named {
   std::uint32_t index;
-  Pos pos;
+  diag::Pos pos;
 };
 
 class Checker {
  public:
-  Checker(const Program& p, std::span<const vm::MotorSpec> motors, Diagnostics& d)
+  Checker(const Program& p, std::span<const vm::MotorSpec> motors, diag::Diagnostics& d)
       : program_(p), motors_(motors), diag_(d) {
     const std::size_t n = p.instructions.size();
     res_.target.assign(n, 0);
@@ -67,12 +67,12 @@ class Checker {
 
   const Program& program_;
   std::span<const vm::MotorSpec> motors_;
-  Diagnostics& diag_;
+  diag::Diagnostics& diag_;
   Resolution res_;
   using NameTable = std::unordered_map<std::string_view, Named, CaseInsensitiveHash, CaseInsensitiveEqual>;
   NameTable labels_, points_, variables_;
   std::vector<bool> assigned_;        // per slot: some SET or ADD writes it
-  std::vector<Pos> firstRead_;        // per slot: first JMPVAR, for the warning
+  std::vector<diag::Pos> firstRead_;        // per slot: first JMPVAR, for the warning
 };
 
 void Checker::collectLabels() {
@@ -242,7 +242,7 @@ void Checker::analyseFlow() {
 
 }  // namespace
 
-Resolution check(const Program& program, std::span<const vm::MotorSpec> motors, Diagnostics& diagnostics) {
+Resolution check(const Program& program, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics) {
   return Checker(program, motors, diagnostics).run();
 }
 

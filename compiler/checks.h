@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "compiler/ast.h"
-#include "compiler/diagnostics.h"
+#include "diag/diagnostic.h"
 #include "vm/image.h"
 
 namespace rs::compiler {
@@ -18,6 +18,6 @@ struct Resolution {
   std::vector<std::string_view> variables;    // slot -> name, first spelling
 };
 
-Resolution check(const Program& program, std::span<const vm::MotorSpec> motors, Diagnostics& diagnostics);
+Resolution check(const Program& program, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics);
 
 }  // namespace rs::compiler

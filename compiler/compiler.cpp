@@ -10,23 +10,23 @@
 
 namespace rs::compiler {
 
-std::optional<Diagnostic> checkEncoding(const SourceFile& source, std::string_view what) {
+std::optional<diag::Diagnostic> checkEncoding(const diag::SourceFile& source, std::string_view what) {
   if (source.text().size() > kMaxSourceBytes)
-    return Diagnostic{source.name(), {}, Severity::Error,
+    return diag::Diagnostic{source.name(), {}, diag::Severity::Error,
                       fmt::format("file is {} bytes; the limit is {} MiB", source.text().size(), kMaxSourceBytes >> 20)};
-  const Utf8Problem bad = findInvalidUtf8(source.text());
+  const diag::Utf8Problem bad = diag::findInvalidUtf8(source.text());
   if (!bad.found) return std::nullopt;
-  return Diagnostic{source.name(), bad.pos, Severity::Error,
+  return diag::Diagnostic{source.name(), bad.pos, diag::Severity::Error,
                     fmt::format("invalid UTF-8 (byte 0x{:02X}): {} are UTF-8 text", bad.byte, what)};
 }
 
-CompileResult compile(const SourceFile& source, const Target& target) {
+CompileResult compile(const diag::SourceFile& source, const Target& target) {
   CompileResult result;
   if (auto bad = checkEncoding(source)) {
     result.diagnostics.push_back(std::move(*bad));
     return result;
   }
-  Diagnostics diagnostics(source.name());
+  diag::Diagnostics diagnostics(source.name());
   LineParser parser(source, diagnostics);
   const Program program = buildAst(source, parser, target.motors, diagnostics);
   const Resolution resolution = check(program, target.motors, diagnostics);
@@ -35,12 +35,12 @@ CompileResult compile(const SourceFile& source, const Target& target) {
   return result;
 }
 
-std::string dumpTokens(const SourceFile& source, std::vector<Diagnostic>& diagnostics) {
+std::string dumpTokens(const diag::SourceFile& source, std::vector<diag::Diagnostic>& diagnostics) {
   if (auto bad = checkEncoding(source)) {
     diagnostics.push_back(std::move(*bad));
     return {};
   }
-  Diagnostics d(source.name());
+  diag::Diagnostics d(source.name());
   Lexer lexer(source, d);
   std::string out;
   for (;;) {

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "compiler/codegen.h"
-#include "compiler/diagnostics.h"
-#include "compiler/source.h"
+#include "diag/diagnostic.h"
+#include "diag/source_file.h"
 #include "vm/image.h"
 
 namespace rs::compiler {
@@ -18,23 +18,23 @@ inline constexpr std::size_t kMaxSourceBytes = std::size_t{256} << 20;  // 256 M
 
 struct CompileResult {
   std::optional<vm::Image> image;        // set when there were no errors
-  std::vector<Diagnostic> diagnostics;   // sorted by position
+  std::vector<diag::Diagnostic> diagnostics;   // sorted by position
   bool ok() const { return image.has_value(); }
 };
 
 /// source -> tokens -> ANTLR parse tree -> AST -> checks -> bytecode.
-CompileResult compile(const SourceFile& source, const Target& target);
+CompileResult compile(const diag::SourceFile& source, const Target& target);
 
 /// Checks that a source can be lexed at all (size, UTF-8); returns the error.
 /// `what` names the kind of file in the message ("programs are UTF-8 text").
-std::optional<Diagnostic> checkEncoding(const SourceFile& source, std::string_view what = "programs");
+std::optional<diag::Diagnostic> checkEncoding(const diag::SourceFile& source, std::string_view what = "programs");
 
 /// `robotsim tokens`: one line per token the parser sees.
-std::string dumpTokens(const SourceFile& source, std::vector<Diagnostic>& diagnostics);
+std::string dumpTokens(const diag::SourceFile& source, std::vector<diag::Diagnostic>& diagnostics);
 
 /// `robotsim ast`: the AST as an indented outline; with `parseTree`, ANTLR's
 /// parse tree in LISP form first.
-std::string dumpAst(const SourceFile& source, const Target& target, bool parseTree,
-                    std::vector<Diagnostic>& diagnostics);
+std::string dumpAst(const diag::SourceFile& source, const Target& target, bool parseTree,
+                    std::vector<diag::Diagnostic>& diagnostics);
 
 }  // namespace rs::compiler

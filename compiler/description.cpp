@@ -7,7 +7,7 @@
 
 #include "RobotModelLexer.h"
 #include "RobotModelParser.h"
-#include "vm/ascii.h"
+#include "base/ascii.h"
 #include "compiler/compiler.h"
 
 namespace rs::compiler {
@@ -26,7 +26,7 @@ constexpr double kMaxCoordinate = 1e9;
 struct Word {
   size_t type;
   std::string text;
-  Pos pos;
+  diag::Pos pos;
 };
 
 // Reads one line's words left to right. Each reader reports what it
@@ -35,14 +35,14 @@ struct Word {
 // gives one message.
 class Cursor {
  public:
-  Cursor(const std::vector<Word>& words, Pos lineEnd, Diagnostics& d) : w_(words), end_(lineEnd), diag_(d) {}
+  Cursor(const std::vector<Word>& words, diag::Pos lineEnd, diag::Diagnostics& d) : w_(words), end_(lineEnd), diag_(d) {}
 
   bool atEnd() const { return i_ >= w_.size(); }
   const Word& peek() const { return w_[i_]; }
-  Pos pos() const { return atEnd() ? end_ : w_[i_].pos; }
+  diag::Pos pos() const { return atEnd() ? end_ : w_[i_].pos; }
 
   bool keyword(std::string_view kw) {
-    if (atEnd() || peek().type != MP::NAME || !vm::sameName(peek().text, kw)) return false;
+    if (atEnd() || peek().type != MP::NAME || !base::sameName(peek().text, kw)) return false;
     ++i_;
     return true;
   }
@@ -66,7 +66,7 @@ class Cursor {
 
   bool integer(std::int32_t& out, std::string_view what) {
     double v = 0;
-    const Pos at = pos();
+    const diag::Pos at = pos();
     if (!number(v, what)) return false;
     if (v != std::floor(v) || v < -2147483648.0 || v > 2147483647.0) {
       diag_.error(at, fmt::format("expected {} (a whole number), found '{}'", what, w_[i_ - 1].text));
@@ -90,11 +90,11 @@ class Cursor {
     return true;
   }
 
-  bool letter(char& out, Pos& at) {
+  bool letter(char& out, diag::Pos& at) {
     at = pos();
     if (atEnd() || peek().type != MP::NAME || peek().text.size() != 1 || !std::isalpha(static_cast<unsigned char>(peek().text[0])))
       return fail("a motor letter A..Z");
-    out = vm::asciiUpper(peek().text[0]);
+    out = base::asciiUpper(peek().text[0]);
     ++i_;
     return true;
   }
@@ -125,8 +125,8 @@ class Cursor {
  private:
   const std::vector<Word>& w_;
   std::size_t i_ = 0;
-  Pos end_;
-  Diagnostics& diag_;
+  diag::Pos end_;
+  diag::Diagnostics& diag_;
 };
 
 enum class Block { None, Link, Object, Gripper, Robot, Workcell };
@@ -149,8 +149,8 @@ Eigen::Matrix3d axisRotation(int axis, double degrees) {
 
 class Parser {
  public:
-  Parser(DescriptionFile& file, Diagnostics& d) : f_(file), diag_(d) {}
-  void line(const std::vector<Word>& words, Pos lineEnd);
+  Parser(DescriptionFile& file, diag::Diagnostics& d) : f_(file), diag_(d) {}
+  void line(const std::vector<Word>& words, diag::Pos lineEnd);
   void finish();
 
  private:
@@ -159,17 +159,17 @@ class Parser {
   bool gripperClause(Cursor& c, GripperDef& g);
   bool robotClause(Cursor& c, RobotDef& r);
   bool workcellClause(Cursor& c, WorkcellDef& w);
-  bool motorClause(Cursor& c, char& letter, Pos& letterPos, double& precision, std::int32_t& min, std::int32_t& max,
-                   Pos& rangePos, std::int32_t& speed, bool* hasLetter, bool* hasPrecision, bool* hasRange);
+  bool motorClause(Cursor& c, char& letter, diag::Pos& letterPos, double& precision, std::int32_t& min, std::int32_t& max,
+                   diag::Pos& rangePos, std::int32_t& speed, bool* hasLetter, bool* hasPrecision, bool* hasRange);
 
   DescriptionFile& f_;
-  Diagnostics& diag_;
+  diag::Diagnostics& diag_;
   Block block_ = Block::None;
-  Pos blockPos_;
+  diag::Pos blockPos_;
   Color color_ = Color::White;
 };
 
-void Parser::line(const std::vector<Word>& words, Pos lineEnd) {
+void Parser::line(const std::vector<Word>& words, diag::Pos lineEnd) {
   if (words.empty()) return;
   for (const Word& w : words)
     if (w.type == MP::OTHER) return diag_.error(w.pos, fmt::format("unexpected character '{}'", w.text));
@@ -275,15 +275,15 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
 }
 
 // LETTER, PRECISION, RANGE, SPEED: shared by GRIPPER and JOINT.
-bool Parser::motorClause(Cursor& c, char& letter, Pos& letterPos, double& precision, std::int32_t& min,
-                         std::int32_t& max, Pos& rangePos, std::int32_t& speed, bool* hasLetter, bool* hasPrecision,
+bool Parser::motorClause(Cursor& c, char& letter, diag::Pos& letterPos, double& precision, std::int32_t& min,
+                         std::int32_t& max, diag::Pos& rangePos, std::int32_t& speed, bool* hasLetter, bool* hasPrecision,
                          bool* hasRange) {
   // has* is set as soon as the keyword is seen: a bad value is reported
   // once, not again as "missing".
   if (c.keyword("LETTER")) return *hasLetter = true, c.letter(letter, letterPos);
   if (c.keyword("PRECISION")) {
     *hasPrecision = true;
-    const Pos at = c.pos();
+    const diag::Pos at = c.pos();
     if (!c.number(precision, "a precision (degrees or length units per encoder unit)")) return false;
     if (precision <= 0) {
       diag_.error(at, "a precision must be greater than 0");
@@ -306,7 +306,7 @@ bool Parser::motorClause(Cursor& c, char& letter, Pos& letterPos, double& precis
     return true;
   }
   if (c.keyword("SPEED")) {
-    const Pos at = c.pos();
+    const diag::Pos at = c.pos();
     if (!c.integer(speed, "a speed in encoder units per second")) return false;
     if (speed <= 0) {
       diag_.error(at, "a speed must be greater than 0");
@@ -345,7 +345,7 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
   for (auto [kw, member, has] : {std::tuple{"ORIGIN", &RobotLinkDef::origin, &RobotLinkDef::hasOrigin},
                                  std::tuple{"XAXIS", &RobotLinkDef::xPoint, &RobotLinkDef::hasX},
                                  std::tuple{"ZAXIS", &RobotLinkDef::zPoint, &RobotLinkDef::hasZ}}) {
-    const Pos at = c.pos();
+    const diag::Pos at = c.pos();
     if (!c.keyword(kw)) continue;
     if (r.links.empty()) {
       diag_.error(at, fmt::format("{} before any LINK: a frame belongs to the LINK before it", kw));
@@ -373,13 +373,13 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
   if (c.keyword("GRIPPER")) return c.name(r.gripper, "a gripper name");
   if (r.joints.empty()) {
     for (std::string_view kw : {"LETTER", "PRECISION", "RANGE", "SPEED"})
-      if (!c.atEnd() && vm::sameName(c.peek().text, kw)) {
+      if (!c.atEnd() && base::sameName(c.peek().text, kw)) {
         diag_.error(c.pos(), fmt::format("{} before any JOINT: motor settings belong to the JOINT before them", kw));
         return false;
       }
   } else {
     JointDef& j = r.joints.back();
-    Pos letterPos;
+    diag::Pos letterPos;
     const std::size_t before = diag_.errorCount();
     if (motorClause(c, j.spec.letter, letterPos, j.spec.precision, j.spec.min, j.spec.max, j.rangePos, j.spec.speed,
                     &j.hasLetter, &j.hasPrecision, &j.hasRange))
@@ -420,13 +420,13 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
 
 std::optional<workcell::Color> colorByName(std::string_view word) {
   for (std::size_t i = 0; i < kColorNames.size(); ++i)
-    if (vm::sameName(word, kColorNames[i]) || word == std::to_string(i)) return static_cast<Color>(i);
+    if (base::sameName(word, kColorNames[i]) || word == std::to_string(i)) return static_cast<Color>(i);
   return std::nullopt;
 }
 
 std::string_view colorName(workcell::Color color) { return kColorNames[static_cast<std::size_t>(color)]; }
 
-DescriptionFile parseDescription(std::unique_ptr<SourceFile> source, Diagnostics& diagnostics) {
+DescriptionFile parseDescription(std::unique_ptr<diag::SourceFile> source, diag::Diagnostics& diagnostics) {
   DescriptionFile file;
   file.source = std::move(source);
   if (auto bad = checkEncoding(*file.source, "descriptions")) {
@@ -448,7 +448,7 @@ DescriptionFile parseDescription(std::unique_ptr<SourceFile> source, Diagnostics
       words.push_back({t->getType(), t->getText(),
                        {static_cast<std::uint32_t>(t->getLine()), static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)}});
     }
-    const Pos end = words.empty() ? Pos{} : Pos{words.back().pos.line,
+    const diag::Pos end = words.empty() ? diag::Pos{} : diag::Pos{words.back().pos.line,
                                               words.back().pos.col + static_cast<std::uint32_t>(words.back().text.size())};
     p.line(words, end);
   }

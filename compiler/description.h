@@ -9,39 +9,39 @@
 #include <string>
 #include <vector>
 
-#include "compiler/diagnostics.h"
-#include "compiler/source.h"
-#include "runtime/workcell/model.h"
+#include "diag/diagnostic.h"
+#include "diag/source_file.h"
+#include "model/workcell/model.h"
 
 namespace rs::compiler {
 
 struct NameRef {
   std::string name;
-  Pos pos;
+  diag::Pos pos;
 };
 
 /// Three numbers and where the first was written.
 struct Point3 {
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
-  Pos pos;
+  diag::Pos pos;
 };
 
 struct ShapeDef {  // LINK or OBJECT
   std::string name;
-  Pos pos;
+  diag::Pos pos;
   std::vector<workcell::Segment> segments;
 };
 
 struct GripperDef {
   std::string name;
-  Pos pos;
+  diag::Pos pos;
   NameRef base, finger2, finger3;
   char letter = 0;
-  Pos letterPos;
+  diag::Pos letterPos;
   bool hasLetter = false, hasPrecision = false, hasRange = false;
   double precision = 0;
   std::int32_t min = 0, max = 0;
-  Pos rangePos;
+  diag::Pos rangePos;
   std::int32_t speed = 200;
   Point3 axis2[2], axis3[2], normal[2], approach[2];  // two points each
   bool hasAxis2 = false, hasAxis3 = false, hasNormal = false, hasApproach = false;
@@ -56,15 +56,15 @@ struct RobotLinkDef {
 
 struct JointDef {
   int number = 0;
-  Pos pos;
+  diag::Pos pos;
   workcell::JointSpec spec;
   bool hasLetter = false, hasPrecision = false, hasRange = false;
-  Pos rangePos;
+  diag::Pos rangePos;
 };
 
 struct RobotDef {
   std::string name;
-  Pos pos;
+  diag::Pos pos;
   std::vector<RobotLinkDef> links;
   std::vector<JointDef> joints;
   NameRef gripper;  // empty name: none
@@ -79,13 +79,13 @@ struct PlacementDef {
 
 struct WorkcellDef {
   std::string name;
-  Pos pos;
+  diag::Pos pos;
   std::vector<PlacementDef> placements;
 };
 
 /// Everything one file defines, in the order written.
 struct DescriptionFile {
-  std::unique_ptr<SourceFile> source;
+  std::unique_ptr<diag::SourceFile> source;
   std::vector<ShapeDef> links, objects;
   std::vector<GripperDef> grippers;
   std::vector<RobotDef> robots;
@@ -93,7 +93,7 @@ struct DescriptionFile {
 };
 
 /// Parses one description; every error goes to `diagnostics`.
-DescriptionFile parseDescription(std::unique_ptr<SourceFile> source, Diagnostics& diagnostics);
+DescriptionFile parseDescription(std::unique_ptr<diag::SourceFile> source, diag::Diagnostics& diagnostics);
 
 /// Colour by EGA name ("LIGHTRED") or number ("12").
 std::optional<workcell::Color> colorByName(std::string_view word);

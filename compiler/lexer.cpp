@@ -28,7 +28,7 @@ std::string_view tokenTypeName(size_t type) {
   }
 }
 
-Lexer::Lexer(const SourceFile& source, Diagnostics& diagnostics)
+Lexer::Lexer(const diag::SourceFile& source, diag::Diagnostics& diagnostics)
     : source_(source), diagnostics_(diagnostics), text_(source.text()) {}
 
 antlr4::TokenFactory<antlr4::CommonToken>* Lexer::getTokenFactory() {
@@ -61,7 +61,7 @@ void Lexer::skipBlanksAndComments() {
 
 void Lexer::badCharacter() {
   const auto c = static_cast<unsigned char>(text_[pos_]);
-  const std::size_t n = std::max<std::size_t>(utf8SequenceLength(text_, pos_), 1);  // the source is valid UTF-8
+  const std::size_t n = std::max<std::size_t>(diag::utf8SequenceLength(text_, pos_), 1);  // the source is valid UTF-8
   std::string shown = (c >= 0x20 && c < 0x7F) || c >= 0x80 ? fmt::format("'{}'", text_.substr(pos_, n))
                                                            : fmt::format("U+{:04X}", static_cast<unsigned>(c));
   if ((c == '+' || c == '-') && !(pos_ + 1 < text_.size() && isDigit(text_[pos_ + 1])))

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "compiler/diagnostics.h"
-#include "compiler/source.h"
+#include "diag/diagnostic.h"
+#include "diag/source_file.h"
 
 namespace rs::compiler {
 
@@ -21,7 +21,7 @@ struct RawToken {
   size_t type = 0;
   std::size_t begin = 0;  // byte offsets into the source, end exclusive
   std::size_t end = 0;
-  Pos pos;
+  diag::Pos pos;
 };
 
 /// A token as the parser sees it: 32 bytes, no copy of its text (getText()
@@ -54,7 +54,7 @@ class SourceToken final : public antlr4::Token {
 class Lexer final : public antlr4::TokenSource {
  public:
   /// The source must be valid UTF-8 (see findInvalidUtf8) and outlive the lexer.
-  Lexer(const SourceFile& source, Diagnostics& diagnostics);
+  Lexer(const diag::SourceFile& source, diag::Diagnostics& diagnostics);
 
   /// The next token; EOF (again and again) at the end.
   RawToken scan();
@@ -72,8 +72,8 @@ class Lexer final : public antlr4::TokenSource {
   void skipBlanksAndComments();
   void badCharacter();
 
-  const SourceFile& source_;
-  Diagnostics& diagnostics_;
+  const diag::SourceFile& source_;
+  diag::Diagnostics& diagnostics_;
   std::string_view text_;
   std::size_t pos_ = 0;
   std::uint32_t line_ = 1;

@@ -1,12 +1,14 @@
 #include "compiler/library.h"
 
+#include "base/file_io.h"
+
 #include <cstdlib>
 #include <fmt/format.h>
 #include <fstream>
 #include <sstream>
 
-#include "runtime/kinematics/chain_model.h"
-#include "runtime/kinematics/frame.h"
+#include "model/kinematics/chain_model.h"
+#include "model/kinematics/frame.h"
 
 namespace rs::compiler {
 
@@ -43,7 +45,7 @@ const ShapeDef* findShape(const DescriptionFile& f, bool object, const std::stri
   return findIn(object ? f.objects : f.links, name);
 }
 
-Pos frameErrorPos(const RobotDef& def, const NameRef& gripperRef, int index) {
+diag::Pos frameErrorPos(const RobotDef& def, const NameRef& gripperRef, int index) {
   if (index >= 0 && static_cast<std::size_t>(index) < def.links.size()) {
     const RobotLinkDef& l = def.links[static_cast<std::size_t>(index)];
     return l.hasOrigin ? l.origin.pos : l.link.pos;
@@ -66,16 +68,16 @@ std::vector<fs::path> librarySearchPath(const std::vector<std::string>& libDirs)
 
 Library::Library(std::vector<fs::path> searchPath) : searchPath_(std::move(searchPath)) {}
 
-bool Library::hasErrors() const { return compiler::hasErrors(diagnostics_); }
+bool Library::hasErrors() const { return diag::hasErrors(diagnostics_); }
 
-const SourceFile* Library::source(const std::string& file) const {
+const diag::SourceFile* Library::source(const std::string& file) const {
   for (const auto& f : files_)
     if (f->source && f->source->name() == file) return f->source.get();
   return nullptr;
 }
 
-void Library::error(const DescriptionFile& file, Pos pos, std::string message) {
-  diagnostics_.push_back({file.source->name(), pos, Severity::Error, std::move(message)});
+void Library::error(const DescriptionFile& file, diag::Pos pos, std::string message) {
+  diagnostics_.push_back({file.source->name(), pos, diag::Severity::Error, std::move(message)});
 }
 
 // Reads and parses a file once; later loads of the same path reuse it.
@@ -83,23 +85,16 @@ const DescriptionFile* Library::load(const fs::path& path) {
   std::error_code ec;
   const std::string key = fs::weakly_canonical(path, ec).string();
   if (auto it = byPath_.find(key); it != byPath_.end()) return it->second;
-  std::ifstream in(path, std::ios::binary);
-  if (!in || fs::is_directory(path, ec)) {
-    diagnostics_.push_back({path.string(), {}, Severity::Error, "cannot read description file"});
+  base::FileRead read = base::readFile(path.string(), kMaxDescriptionBytes);
+  if (!read.bytes) {
+    diagnostics_.push_back(
+        {path.string(), {}, diag::Severity::Error, "cannot read description file: " + read.error});
     return nullptr;
   }
-  std::string text;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxDescriptionBytes) {
-      diagnostics_.push_back({path.string(), {}, Severity::Error, "description file larger than 64 MiB"});
-      return nullptr;
-    }
-  }
-  Diagnostics d(path.string());
-  auto file = std::make_unique<DescriptionFile>(parseDescription(std::make_unique<SourceFile>(path.string(), text), d));
-  for (const Diagnostic& diag : d.sorted()) diagnostics_.push_back(diag);
+  diag::Diagnostics d(path.string());
+  auto file = std::make_unique<DescriptionFile>(
+      parseDescription(std::make_unique<diag::SourceFile>(path.string(), std::move(*read.bytes)), d));
+  for (const diag::Diagnostic& diag : d.sorted()) diagnostics_.push_back(diag);
   files_.push_back(std::move(file));
   byPath_[key] = files_.back().get();
   return files_.back().get();
@@ -188,7 +183,7 @@ std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const Desc
   for (const kinematics::KinematicsError& e : model.errors) {
     // The kinematics core names the part in its message; point at its line.
     const auto names = [&](std::string_view part) { return e.message.find(part) != std::string::npos; };
-    const Pos pos = names("axis r2")                               ? def->axis2[0].pos
+    const diag::Pos pos = names("axis r2")                               ? def->axis2[0].pos
                     : names("axis r3")                             ? def->axis3[0].pos
                     : e.kind == kinematics::ErrorKind::TcpMismatch ? def->approach[0].pos
                                                                    : def->normal[0].pos;
@@ -271,7 +266,7 @@ std::optional<workcell::Robot> Library::buildRobot(const RobotDef& def, const De
   auto chain = kinematics::ChainModel::fromFrames(robot.frames, types, drives);
   for (const kinematics::KinematicsError& e : chain.errors) {
     const bool jointError = e.kind == kinematics::ErrorKind::BadCoupling || e.kind == kinematics::ErrorKind::BadPrecision;
-    const Pos pos = jointError && e.index >= 1 && static_cast<std::size_t>(e.index) <= def.joints.size()
+    const diag::Pos pos = jointError && e.index >= 1 && static_cast<std::size_t>(e.index) <= def.joints.size()
                         ? def.joints[static_cast<std::size_t>(e.index - 1)].pos
                         : frameErrorPos(def, def.gripper, e.index);
     error(from, pos, fmt::format("robot '{}': {}", def.name, e.message));
@@ -354,7 +349,7 @@ const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kin
     for (const fs::path& candidate : candidates)
       if (fs::is_regular_file(candidate, ec)) return load(candidate);
   }
-  diagnostics_.push_back({fileOrName, {}, Severity::Error,
+  diagnostics_.push_back({fileOrName, {}, diag::Severity::Error,
                           fmt::format("no such file, and no {} of that name on the library path", kindName(static_cast<int>(kind)))});
   return nullptr;
 }
@@ -366,7 +361,7 @@ std::optional<workcell::Robot> Library::robot(const std::string& fileOrName) {
   if (!f) return std::nullopt;
   if (hasErrors()) return readReferences(*f), std::nullopt;
   if (f->robots.empty()) {
-    diagnostics_.push_back({f->source->name(), {}, Severity::Error, "the file defines no ROBOT"});
+    diagnostics_.push_back({f->source->name(), {}, diag::Severity::Error, "the file defines no ROBOT"});
     return std::nullopt;
   }
   auto r = buildRobot(f->robots.front(), *f);
@@ -390,7 +385,7 @@ std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrNam
     // Alone, the robot stays where it was drawn.
     if (cell) cell->robots.front().F_world_design = Eigen::Isometry3d::Identity();
   } else {
-    diagnostics_.push_back({f->source->name(), {}, Severity::Error, "the file defines no WORKCELL and no ROBOT"});
+    diagnostics_.push_back({f->source->name(), {}, diag::Severity::Error, "the file defines no WORKCELL and no ROBOT"});
   }
   return hasErrors() ? std::nullopt : std::move(cell);
 }

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "compiler/description.h"
-#include "runtime/workcell/model.h"
+#include "model/workcell/model.h"
 #include "vm/image.h"
 
 namespace rs::compiler {
@@ -31,10 +31,10 @@ class Library {
   /// placed alone at the origin) or a library name.
   std::optional<workcell::Workcell> workcell(const std::string& fileOrName);
 
-  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+  const std::vector<diag::Diagnostic>& diagnostics() const { return diagnostics_; }
   bool hasErrors() const;
   /// The source of a diagnostic's file, for rendering; null if unknown.
-  const SourceFile* source(const std::string& file) const;
+  const diag::SourceFile* source(const std::string& file) const;
 
  private:
   enum class Kind { Link, Object, Gripper, Robot, Workcell };
@@ -50,12 +50,12 @@ class Library {
   std::optional<workcell::Gripper> gripper(const NameRef& ref, const DescriptionFile& from);
   std::optional<workcell::Robot> buildRobot(const RobotDef& def, const DescriptionFile& from);
   std::optional<workcell::Workcell> buildWorkcell(const WorkcellDef& def, const DescriptionFile& from);
-  void error(const DescriptionFile& file, Pos pos, std::string message);
+  void error(const DescriptionFile& file, diag::Pos pos, std::string message);
 
   std::vector<std::filesystem::path> searchPath_;
   std::vector<std::unique_ptr<DescriptionFile>> files_;  // in load order
   std::map<std::string, const DescriptionFile*> byPath_;
-  std::vector<Diagnostic> diagnostics_;
+  std::vector<diag::Diagnostic> diagnostics_;
 };
 
 /// The motor table a program sees on a robot: arm joints in order, then

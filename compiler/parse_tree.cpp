@@ -13,15 +13,15 @@ using P = rs_grammar::RobotProgramParser;
 // why there should never be one).
 class SyntaxErrors final : public antlr4::BaseErrorListener {
  public:
-  explicit SyntaxErrors(Diagnostics& d) : diagnostics_(d) {}
+  explicit SyntaxErrors(diag::Diagnostics& d) : diagnostics_(d) {}
   void syntaxError(antlr4::Recognizer*, antlr4::Token* token, size_t line, size_t col, const std::string&,
                    std::exception_ptr) override {
-    const Pos pos{static_cast<std::uint32_t>(line), static_cast<std::uint32_t>(col + 1)};
+    const diag::Pos pos{static_cast<std::uint32_t>(line), static_cast<std::uint32_t>(col + 1)};
     diagnostics_.error(pos, token ? fmt::format("unexpected '{}'", token->getText()) : std::string("syntax error"));
   }
 
  private:
-  Diagnostics& diagnostics_;
+  diag::Diagnostics& diagnostics_;
 };
 
 namespace {
@@ -60,7 +60,7 @@ void configure(P& parser, SyntaxErrors& listener) {
 
 }  // namespace
 
-ParseTree::ParseTree(const SourceFile& source, Diagnostics& diagnostics)
+ParseTree::ParseTree(const diag::SourceFile& source, diag::Diagnostics& diagnostics)
     : source_(source),
       lexer_(std::make_unique<Lexer>(source, diagnostics)),
       tokens_(std::make_unique<TokenArray>(*lexer_, source.text(), TokenArray::Mode::WholeFile)),
@@ -75,7 +75,7 @@ ParseTree::ParseTree(const SourceFile& source, Diagnostics& diagnostics)
 
 ParseTree::~ParseTree() = default;
 
-LineParser::LineParser(const SourceFile& source, Diagnostics& diagnostics)
+LineParser::LineParser(const diag::SourceFile& source, diag::Diagnostics& diagnostics)
     : diagnostics_(diagnostics),
       lexer_(std::make_unique<Lexer>(source, diagnostics)),
       tokens_(std::make_unique<TokenArray>(*lexer_, source.text(), TokenArray::Mode::OneLine)),

@@ -12,8 +12,8 @@
 
 #include <memory>
 
-#include "compiler/diagnostics.h"
-#include "compiler/source.h"
+#include "diag/diagnostic.h"
+#include "diag/source_file.h"
 
 namespace antlr4 {
 class ParserRuleContext;
@@ -31,12 +31,12 @@ class SyntaxErrors;
 class ParseTree {
  public:
   /// Parses `source` (valid UTF-8); errors go to `diagnostics`.
-  ParseTree(const SourceFile& source, Diagnostics& diagnostics);
+  ParseTree(const diag::SourceFile& source, diag::Diagnostics& diagnostics);
   ~ParseTree();
   ParseTree(const ParseTree&) = delete;
   ParseTree& operator=(const ParseTree&) = delete;
 
-  const SourceFile& source() const { return source_; }
+  const diag::SourceFile& source() const { return source_; }
   /// The root: a RobotProgramParser::ProgramContext.
   antlr4::ParserRuleContext* root() const { return root_; }
   /// True when the parser met syntax errors and recovered (the tree may
@@ -46,7 +46,7 @@ class ParseTree {
   std::string toStringTree();
 
  private:
-  const SourceFile& source_;
+  const diag::SourceFile& source_;
   std::unique_ptr<Lexer> lexer_;
   std::unique_ptr<TokenArray> tokens_;
   std::unique_ptr<rs_grammar::RobotProgramParser> parser_;
@@ -57,7 +57,7 @@ class ParseTree {
 class LineParser {
  public:
   /// Parses `source` (valid UTF-8) line by line; errors go to `diagnostics`.
-  LineParser(const SourceFile& source, Diagnostics& diagnostics);
+  LineParser(const diag::SourceFile& source, diag::Diagnostics& diagnostics);
   ~LineParser();
   LineParser(const LineParser&) = delete;
   LineParser& operator=(const LineParser&) = delete;
@@ -70,7 +70,7 @@ class LineParser {
   bool recovered() const { return recovered_; }
 
  private:
-  Diagnostics& diagnostics_;
+  diag::Diagnostics& diagnostics_;
   std::unique_ptr<Lexer> lexer_;
   std::unique_ptr<TokenArray> tokens_;
   std::unique_ptr<SyntaxErrors> listener_;

@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-#include "runtime/workcell/grasp.h"
+#include "model/workcell/grasp.h"
 #include "vm/interpreter.h"
 
 namespace rs::runtime {

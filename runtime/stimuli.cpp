@@ -10,6 +10,8 @@
 // parser goes on with the next line, so one run reports every bad line.
 #include "runtime/stimuli.h"
 
+#include "base/file_io.h"
+
 #include <fmt/format.h>
 
 #include <climits>
@@ -201,21 +203,9 @@ StimuliParse loadStimuliFile(const std::filesystem::path& path) {
   const auto fileError = [&](std::string message) {
     return StimuliParse{{}, {{name, 0, 0, std::move(message)}}};
   };
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    return fileError("is a directory, not a stimuli file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return fileError("cannot open the stimuli file");
-  // Read in chunks up to the limit: a device like /dev/zero must not hang us.
-  std::string text;
-  char chunk[1 << 16];
-  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
-    text.append(chunk, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxFileBytes)
-      return fileError(fmt::format("stimuli file is larger than {} bytes", kMaxFileBytes));
-  }
-  if (in.bad()) return fileError("cannot read the stimuli file");
-  return parseStimuli(text, name);
+  const base::FileRead read = base::readFile(name, kMaxFileBytes);
+  if (!read.bytes) return fileError("cannot read the stimuli file: " + read.error);
+  return parseStimuli(*read.bytes, name);
 }
 
 }  // namespace rs::runtime

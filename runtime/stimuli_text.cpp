@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "runtime/stimuli.h"
-#include "vm/ascii.h"
+#include "base/ascii.h"
 #include "vm/opcodes.h"
 
 namespace rs::runtime::text {
@@ -41,7 +41,7 @@ bool looksLikeSeconds(std::string_view token) {
 
 }  // namespace
 
-bool equalsKeyword(std::string_view token, std::string_view keyword) { return vm::sameName(token, keyword); }
+bool equalsKeyword(std::string_view token, std::string_view keyword) { return base::sameName(token, keyword); }
 
 std::string quoted(std::string_view token) {
   const bool cut = token.size() > kMaxQuotedBytes;

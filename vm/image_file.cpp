@@ -3,13 +3,15 @@
 #include <cstring>
 #include <fmt/format.h>
 
-#include "vm/byte_io.h"
+#include "base/byte_io.h"
 #include "vm/verify.h"
 
 namespace rs::vm {
 
 namespace {
 
+using base::ByteReader;
+using base::ByteWriter;
 
 bool isIdentifier(std::string_view s) {
   if (s.empty() || s.size() > 64) return false;

@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-#include "vm/ascii.h"
+#include "base/ascii.h"
 
 namespace rs::vm {
 
@@ -14,7 +14,7 @@ namespace {
 constexpr std::uint64_t packUpper(std::string_view name) {
   std::uint64_t key = 0;
   for (std::size_t i = 0; i < name.size(); ++i)
-    key |= std::uint64_t{static_cast<unsigned char>(asciiUpper(name[i]))} << (8 * i);
+    key |= std::uint64_t{static_cast<unsigned char>(base::asciiUpper(name[i]))} << (8 * i);
   return key;
 }
 

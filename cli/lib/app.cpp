@@ -12,8 +12,8 @@
 #include "cli/lib/trace.h"
 #include "compiler/library.h"
 #include "runtime/sim_machine.h"
-#include "runtime/workcell/cell_file.h"
-#include "runtime/workcell/tool_tracker.h"
+#include "model/workcell/cell_file.h"
+#include "model/workcell/tool_tracker.h"
 #include "runtime/stimuli.h"
 #include "runtime/stimuli_text.h"
 #include "vm/disasm.h"
@@ -48,7 +48,7 @@ std::optional<workcell::Workcell> openCell(const Options& o, LoadedProgram& into
   std::optional<workcell::Workcell> cell = library->workcell(o.cell);
   if (cell && !cell->robots.empty()) return cell;
   into.diagnostics = library->diagnostics();
-  if (cell) into.diagnostics.push_back({o.cell, {}, compiler::Severity::Error, "the workcell has no robot to run the program"});
+  if (cell) into.diagnostics.push_back({o.cell, {}, diag::Severity::Error, "the workcell has no robot to run the program"});
   return std::nullopt;
 }
 
@@ -63,7 +63,7 @@ LoadedProgram loadWithCell(const Options& o) {
   program.descriptions = failed.descriptions;
   if (program.image && !program.source) {
     program.image.reset();
-    program.diagnostics.push_back({o.file, {}, compiler::Severity::Error,
+    program.diagnostics.push_back({o.file, {}, diag::Severity::Error,
                                    "--cell applies to program sources: a compiled image carries its own cell"});
   }
   if (program.image) program.image->cell = workcell::encodeCell(*cell);
@@ -73,9 +73,9 @@ LoadedProgram loadWithCell(const Options& o) {
 // --strict: a warning fails the check like an error, before anything runs.
 void promoteWarnings(LoadedProgram& program) {
   bool promoted = false;
-  for (compiler::Diagnostic& d : program.diagnostics)
-    if (d.severity == compiler::Severity::Warning) {
-      d.severity = compiler::Severity::Error;
+  for (diag::Diagnostic& d : program.diagnostics)
+    if (d.severity == diag::Severity::Warning) {
+      d.severity = diag::Severity::Error;
       d.message += " [--strict]";
       promoted = true;
     }
@@ -90,7 +90,7 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
   if (program.image && !program.image->cell.empty()) {
     std::string error = decodeImageCell(*program.image, cell);
     if (!error.empty()) {
-      program.diagnostics.push_back({o.file, {}, compiler::Severity::Error, "image rejected: " + error});
+      program.diagnostics.push_back({o.file, {}, diag::Severity::Error, "image rejected: " + error});
       program.image.reset();
     }
   }
@@ -99,12 +99,12 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
   runtime::Stimuli stimuli;
   const runtime::text::SecondsParse maxTime = runtime::text::parseSeconds(o.maxTime);
   if (!maxTime.error.empty())
-    report.diagnostics.push_back({"--max-time", {}, compiler::Severity::Error, maxTime.error});
+    report.diagnostics.push_back({"--max-time", {}, diag::Severity::Error, maxTime.error});
   const bool stimuliOk = loadStimuli(o.stimuliFile, o.inputs, stimuli, report.diagnostics);
   if (!program.ok() || !stimuliOk || !maxTime.error.empty()) {
     printDiagnostics(err, report.diagnostics, program);
     if (json) printJsonSummary(out, report);
-    return kCompileError;
+    return kExitBadInput;
   }
   printDiagnostics(err, program.diagnostics, program);  // warnings
 
@@ -116,7 +116,7 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
     machine = openRhino(o.serial, image.motors, limits.maxTime, error);
     if (!machine) {
       err << fmt::format("robotsim: error: {}\n", error);
-      return kRunFailed;
+      return kExitRunFailed;
     }
   } else {
     machine = std::make_unique<runtime::SimMachine>(image.motors, std::move(stimuli));
@@ -138,7 +138,7 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
   report.image = &image;
   report.vm = &interpreter;
   if (!report.outcome->ok()) {
-    const compiler::Diagnostic d = runtimeDiagnostic(image, *report.outcome, image.sourceName);
+    const diag::Diagnostic d = runtimeDiagnostic(image, *report.outcome, image.sourceName);
     printDiagnostics(err, {d}, program);
     report.diagnostics.push_back(d);
   }
@@ -146,62 +146,61 @@ int runOrCheck(const Options& o, bool check, std::ostream& out, std::ostream& er
   else if (!check || !report.ok()) printTextSummary(out, report);
   else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", image.sourceName,
                           report.outcome->steps, vm::formatSeconds(machine->now()));
-  if (!report.outcome->ok()) return kRunFailed;
-  return kOk;
+  if (!report.outcome->ok()) return kExitRunFailed;
+  return kExitOk;
 }
 
 int compileCommand(const Options& o, std::ostream& out, std::ostream& err) {
   LoadedProgram program = loadWithCell(o);
   printDiagnostics(err, program.diagnostics, program);
-  if (!program.ok()) return kCompileError;
+  if (!program.ok()) return kExitBadInput;
   std::string error;
-  if (!writeFileAtomically(o.output, vm::writeImage(*program.image), error)) {
+  if (!base::writeFileAtomically(o.output, vm::writeImage(*program.image), error)) {
     err << fmt::format("{}: error: cannot write: {}\n", o.output, error);
-    return kCompileError;
+    return kExitBadInput;
   }
   out << fmt::format("{} -> {} ({} instructions)\n", o.file, o.output, program.image->code.size());
-  return kOk;
+  return kExitOk;
 }
 
 int disasmCommand(const Options& o, std::ostream& out, std::ostream& err) {
   LoadedProgram program = loadWithCell(o);
   printDiagnostics(err, program.diagnostics, program);
-  if (!program.ok()) return kCompileError;
+  if (!program.ok()) return kExitBadInput;
   out << vm::disassemble(*program.image);
-  return kOk;
+  return kExitOk;
 }
 
 // tokens / ast: teaching views of the front end; they read source only.
 template <typename Dump>
 int sourceView(const Options& o, std::ostream& out, std::ostream& err, Dump dump) {
-  std::string error;
-  std::optional<std::string> text = readFile(o.file, error);
-  if (!text) {
-    err << fmt::format("{}: error: cannot read file: {}\n", o.file, error);
-    return kCompileError;
+  base::FileRead text = base::readFile(o.file, kMaxInputBytes);
+  if (!text.bytes) {
+    err << fmt::format("{}: error: cannot read file: {}\n", o.file, text.error);
+    return kExitBadInput;
   }
-  if (vm::looksLikeImage(*text)) {
+  if (vm::looksLikeImage(*text.bytes)) {
     err << fmt::format("{}: error: this is a compiled image; try robotsim disasm\n", o.file);
-    return kCompileError;
+    return kExitBadInput;
   }
-  const compiler::SourceFile source(o.file, std::move(*text));
-  std::vector<compiler::Diagnostic> diags;
+  const diag::SourceFile source(o.file, std::move(*text.bytes));
+  std::vector<diag::Diagnostic> diags;
   out << dump(source, diags);
-  for (const compiler::Diagnostic& d : diags) err << compiler::render(d, &source);
-  return compiler::hasErrors(diags) ? kCompileError : kOk;
+  for (const diag::Diagnostic& d : diags) err << diag::render(d, &source);
+  return diag::hasErrors(diags) ? kExitBadInput : kExitOk;
 }
 
 int helpCommand(const std::string& topic, std::ostream& out, std::ostream& err) {
   if (topic.empty()) {
     out << instructionSummary();
-    return kOk;
+    return kExitOk;
   }
   if (auto text = instructionHelp(topic)) {
     out << *text;
-    return kOk;
+    return kExitOk;
   }
   err << fmt::format("robotsim: error: no instruction named '{}' (robotsim help lists them)\n", topic);
-  return kCompileError;
+  return kExitBadInput;
 }
 
 void addCellOptions(CLI::App* cmd, Options& o) {
@@ -292,11 +291,11 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e, out, err);
-    return code == 0 ? kOk : kCompileError;
+    return code == 0 ? kExitOk : kExitBadInput;
   }
   if (!o.trace.empty() && o.trace != "text" && o.trace != "json") {
     err << fmt::format("robotsim: error: --trace takes text or json, not '{}'\n", o.trace);
-    return kCompileError;
+    return kExitBadInput;
   }
   if (const std::optional<int> code = renderCommands.run(out, err)) return *code;
   if (run->parsed()) return runOrCheck(o, false, out, err);
@@ -304,7 +303,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   if (compile->parsed()) return compileCommand(o, out, err);
   if (disasm->parsed()) return disasmCommand(o, out, err);
   if (tokens->parsed())
-    return sourceView(o, out, err, [](const compiler::SourceFile& s, auto& d) { return compiler::dumpTokens(s, d); });
+    return sourceView(o, out, err, [](const diag::SourceFile& s, auto& d) { return compiler::dumpTokens(s, d); });
   if (ast->parsed()) {
     // Operand counts are checked against the robot: --cell's, or the default.
     compiler::Target target = defaultTarget();
@@ -313,11 +312,11 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
       const std::optional<workcell::Workcell> cell = openCell(o, descriptions);
       if (!cell) {
         printDiagnostics(err, descriptions.diagnostics, descriptions);
-        return kCompileError;
+        return kExitBadInput;
       }
       target = cellTarget(*cell);
     }
-    return sourceView(o, out, err, [&](const compiler::SourceFile& s, auto& d) {
+    return sourceView(o, out, err, [&](const diag::SourceFile& s, auto& d) {
       return compiler::dumpAst(s, target, o.tree, d);
     });
   }

@@ -3,14 +3,9 @@
 
 #include <ostream>
 
-namespace rs::cli {
+#include "cli/lib/exit_codes.h"
 
-/// Exit codes, documented in docs/cli.md.
-enum Exit : int {
-  kOk = 0,
-  kRunFailed = 1,      // runtime error, deadlock, step or time limit
-  kCompileError = 2,   // compile error, unreadable or corrupt input, bad usage
-};
+namespace rs::cli {
 
 int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
 

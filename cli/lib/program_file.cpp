@@ -7,89 +7,33 @@
 #include <fmt/format.h>
 #include <fstream>
 
+#include "base/file_io.h"
 #include "compiler/library.h"
-#include "runtime/workcell/cell_file.h"
+#include "model/workcell/cell_file.h"
 #include "stdlib/default_robot.h"
 #include "vm/image_file.h"
 
 namespace rs::cli {
 
-std::optional<std::string> readFile(const std::string& path, std::string& error) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    error = "is a directory";
-    return std::nullopt;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = std::strerror(errno);
-    return std::nullopt;
-  }
-  std::string text;
-  // Regular files: one allocation of the right size (growing by doubling
-  // would copy a large program several times). Pipes and devices: as read.
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec && size <= kMaxInputBytes) text.reserve(static_cast<std::size_t>(size));
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxInputBytes) {
-      error = fmt::format("file is larger than {} MiB", kMaxInputBytes >> 20);
-      return std::nullopt;
-    }
-  }
-  if (in.bad()) {
-    error = "read error";
-    return std::nullopt;
-  }
-  return text;
-}
-
-bool writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string& error) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      error = std::strerror(errno);
-      return false;
-    }
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) {
-      error = "write error";
-      std::remove(tmp.c_str());
-      return false;
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    error = ec.message();
-    std::remove(tmp.c_str());
-    return false;
-  }
-  return true;
-}
-
 compiler::Target defaultTarget() {
   return {std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth};
 }
 
-const compiler::SourceFile* LoadedProgram::sourceOf(const std::string& file) const {
+const diag::SourceFile* LoadedProgram::sourceOf(const std::string& file) const {
   if (source && source->name() == file) return &*source;
   return descriptions ? descriptions->source(file) : nullptr;
 }
 
-void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags, const LoadedProgram& program) {
-  for (const compiler::Diagnostic& d : diags) err << compiler::render(d, program.sourceOf(d.file));
+void printDiagnostics(std::ostream& err, const std::vector<diag::Diagnostic>& diags, const LoadedProgram& program) {
+  for (const diag::Diagnostic& d : diags) err << diag::render(d, program.sourceOf(d.file));
 }
 
 bool loadStimuli(const std::string& file, const std::vector<std::string>& inputs, runtime::Stimuli& stimuli,
-                 std::vector<compiler::Diagnostic>& diags) {
+                 std::vector<diag::Diagnostic>& diags) {
   bool ok = true;
   const auto add = [&](const runtime::StimuliError& e) {
     diags.push_back({e.file, {static_cast<std::uint32_t>(e.line), static_cast<std::uint32_t>(e.column)},
-                     compiler::Severity::Error, e.message});
+                     diag::Severity::Error, e.message});
     ok = false;
   };
   if (!file.empty()) {
@@ -122,16 +66,16 @@ compiler::Target cellTarget(const workcell::Workcell& cell) {
 
 LoadedProgram loadProgram(const std::string& path, const compiler::Target& target) {
   LoadedProgram result;
-  std::string error;
-  std::optional<std::string> bytes = readFile(path, error);
-  if (!bytes) {
-    result.diagnostics.push_back({path, {}, compiler::Severity::Error, "cannot read file: " + error});
+  base::FileRead read = base::readFile(path, kMaxInputBytes);
+  if (!read.bytes) {
+    result.diagnostics.push_back({path, {}, diag::Severity::Error, "cannot read file: " + read.error});
     return result;
   }
+  std::optional<std::string>& bytes = read.bytes;
   if (vm::looksLikeImage(*bytes)) {
     vm::LoadResult loaded = vm::loadImage(*bytes);
     if (!loaded.error.empty())
-      result.diagnostics.push_back({path, {}, compiler::Severity::Error, loaded.error});
+      result.diagnostics.push_back({path, {}, diag::Severity::Error, loaded.error});
     else
       result.image = std::move(loaded.image);
     return result;

@@ -7,41 +7,36 @@
 #include <string>
 #include <vector>
 
+#include "base/file_io.h"
 #include "compiler/compiler.h"
 #include "compiler/library.h"
 #include "runtime/stimuli.h"
-#include "runtime/workcell/model.h"
+#include "model/workcell/model.h"
 
 namespace rs::cli {
 
 struct LoadedProgram {
-  std::optional<compiler::SourceFile> source;  // set when FILE was source text
+  std::optional<diag::SourceFile> source;  // set when FILE was source text
   std::optional<vm::Image> image;              // set when it compiled / verified
-  std::vector<compiler::Diagnostic> diagnostics;
+  std::vector<diag::Diagnostic> diagnostics;
   /// The description files read for --cell, kept for their source lines.
   std::shared_ptr<const compiler::Library> descriptions;
   bool ok() const { return image.has_value(); }
   /// The source text of a diagnostic's file, if it was read.
-  const compiler::SourceFile* sourceOf(const std::string& file) const;
+  const diag::SourceFile* sourceOf(const std::string& file) const;
 };
 
 inline constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;
 
-/// Reads a whole file; on failure returns nullopt and sets `error`.
-std::optional<std::string> readFile(const std::string& path, std::string& error);
-
-/// Writes all bytes or nothing: a temporary file renamed into place.
-bool writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string& error);
-
 LoadedProgram loadProgram(const std::string& path, const compiler::Target& target);
 
 /// Every diagnostic, each under its own file's source line when known.
-void printDiagnostics(std::ostream& err, const std::vector<compiler::Diagnostic>& diags, const LoadedProgram& program);
+void printDiagnostics(std::ostream& err, const std::vector<diag::Diagnostic>& diags, const LoadedProgram& program);
 
 /// Stimuli from a stimuli file (when named) and the --input changes, in
 /// that order; every error becomes a diagnostic. False on any error.
 bool loadStimuli(const std::string& file, const std::vector<std::string>& inputs, runtime::Stimuli& stimuli,
-                 std::vector<compiler::Diagnostic>& diags);
+                 std::vector<diag::Diagnostic>& diags);
 
 /// The workcell an image carries, checked against the image itself (its
 /// robot must have exactly the image's motors); an error message, or empty.

@@ -22,7 +22,7 @@
 #include "runtime/sim_machine.h"
 #include "runtime/stimuli.h"
 #include "runtime/stimuli_text.h"
-#include "runtime/workcell/cell_file.h"
+#include "model/workcell/cell_file.h"
 #include "vm/disasm.h"
 
 namespace rs::cli {
@@ -149,9 +149,9 @@ Loaded load(const RenderOptions& o, bool wantProgram, std::ostream& err) {
 
 // Stimuli from --stimuli FILE and every --input, each problem printed.
 bool stimuliFrom(const RenderOptions& o, runtime::Stimuli& stimuli, std::ostream& err) {
-  std::vector<compiler::Diagnostic> diags;
+  std::vector<diag::Diagnostic> diags;
   const bool ok = loadStimuli(o.stimuliFile, o.inputs, stimuli, diags);
-  for (const compiler::Diagnostic& d : diags) err << compiler::render(d, nullptr);
+  for (const diag::Diagnostic& d : diags) err << diag::render(d, nullptr);
   return ok;
 }
 
@@ -167,7 +167,7 @@ bool seconds(const std::string& text, std::string_view option, vm::Micros& micro
 
 bool write(const std::string& path, std::vector<std::uint8_t> bytes, std::ostream& err) {
   std::string error;
-  if (writeFileAtomically(path, bytes, error)) return true;
+  if (base::writeFileAtomically(path, bytes, error)) return true;
   err << fmt::format("{}: error: cannot write: {}\n", path, error);
   return false;
 }
@@ -221,31 +221,31 @@ bool endsWithHtml(std::string_view path) {
 
 int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   render::Camera camera;
-  if (!cameraFrom(o, camera, err)) return kCompileError;
+  if (!cameraFrom(o, camera, err)) return kExitBadInput;
   std::optional<render::ImageFormat> format;
   if (!o.output.empty() && !(format = render::formatFromPath(o.output))) {
     err << fmt::format("robotsim: error: -o {}: the file name must end in .png or .svg\n", o.output);
-    return kCompileError;
+    return kExitBadInput;
   }
   if (o.output.empty() && o.dump.empty()) {
     err << "robotsim: error: give -o FILE.png|FILE.svg, or --dump-lines\n";
-    return kCompileError;
+    return kExitBadInput;
   }
   if (!o.dump.empty() && o.dump != "text" && o.dump != "json") {
     err << fmt::format("robotsim: error: --dump-lines takes text or json, not '{}'\n", o.dump);
-    return kCompileError;
+    return kExitBadInput;
   }
   if (const std::string_view runOption = withoutProgram(o); !runOption.empty()) {
     err << fmt::format("robotsim: error: {} needs --program\n", runOption);
-    return kCompileError;
+    return kExitBadInput;
   }
   vm::Micros at = 0, maxTime = vm::RunLimits{}.maxTime;
-  if (!o.at.empty() && !seconds(o.at, "--at", at, err)) return kCompileError;
-  if (!o.maxTime.empty() && !seconds(o.maxTime, "--max-time", maxTime, err)) return kCompileError;
+  if (!o.at.empty() && !seconds(o.at, "--at", at, err)) return kExitBadInput;
+  if (!o.maxTime.empty() && !seconds(o.maxTime, "--max-time", maxTime, err)) return kExitBadInput;
   runtime::Stimuli stimuli;
-  if (!stimuliFrom(o, stimuli, err)) return kCompileError;
+  if (!stimuliFrom(o, stimuli, err)) return kExitBadInput;
   Loaded loaded = load(o, !o.program.empty(), err);
-  if (!loaded.ok) return kCompileError;
+  if (!loaded.ok) return kExitBadInput;
 
   const workcell::Workcell& cell = *loaded.cell;
   render::CellPoser poser(cell);
@@ -257,10 +257,10 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     const render::Moment m =
         render::runToMoment(image, std::move(stimuli), o.at.empty() ? maxTime : at, maxSteps, &cell);
     if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
-      const compiler::Diagnostic d = runtimeDiagnostic(image, m.outcome, image.sourceName);
-      err << compiler::render(d, loaded.program.sourceOf(d.file));
+      const diag::Diagnostic d = runtimeDiagnostic(image, m.outcome, image.sourceName);
+      err << diag::render(d, loaded.program.sourceOf(d.file));
       if (m.reached) err << "robotsim: note: the program did not end within --max-time; pick a moment with --at\n";
-      return kRunFailed;
+      return kExitRunFailed;
     }
     poser.setEncoders(0, m.encoders);
     for (std::size_t i = 0; i < m.objects.size(); ++i) poser.setObjectPose(i, m.objects[i]);
@@ -278,11 +278,11 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     render::Encoded encoded = render::encodePicture(picture, *format);
     if (encoded.bytes.empty()) {
       err << fmt::format("{}: error: {}\n", o.output, encoded.error);
-      return kCompileError;
+      return kExitBadInput;
     }
-    if (!write(o.output, std::move(encoded.bytes), err)) return kCompileError;
+    if (!write(o.output, std::move(encoded.bytes), err)) return kExitBadInput;
   }
-  return kOk;
+  return kExitOk;
 }
 
 // ---- animate ------------------------------------------------------------------
@@ -290,16 +290,16 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
 int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   if (!endsWithHtml(o.output)) {
     err << fmt::format("robotsim: error: -o {}: the page's file name must end in .html\n", o.output);
-    return kCompileError;
+    return kExitBadInput;
   }
   render::Camera camera;
-  if (!cameraFrom(o, camera, err)) return kCompileError;
+  if (!cameraFrom(o, camera, err)) return kExitBadInput;
   vm::Micros maxTime = vm::RunLimits{}.maxTime;
-  if (!o.maxTime.empty() && !seconds(o.maxTime, "--max-time", maxTime, err)) return kCompileError;
+  if (!o.maxTime.empty() && !seconds(o.maxTime, "--max-time", maxTime, err)) return kExitBadInput;
   runtime::Stimuli stimuli;
-  if (!stimuliFrom(o, stimuli, err)) return kCompileError;
+  if (!stimuliFrom(o, stimuli, err)) return kExitBadInput;
   Loaded loaded = load(o, true, err);
-  if (!loaded.ok) return kCompileError;
+  if (!loaded.ok) return kExitBadInput;
 
   const vm::Image& image = *loaded.program.image;
   runtime::SimMachine machine(image.motors, stimuli);
@@ -319,15 +319,15 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   input.listing = listing(loaded.program);
   input.camera = camera;
   if (!outcome.ok()) {
-    const compiler::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
-    err << compiler::render(d, loaded.program.sourceOf(d.file));
+    const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
+    err << diag::render(d, loaded.program.sourceOf(d.file));
     input.outcome = d.pos.line ? fmt::format("line {}: {}", d.pos.line, d.message) : d.message;
   }
   const std::string html = render::animationHtml(input);
-  if (!write(o.output, std::vector<std::uint8_t>(html.begin(), html.end()), err)) return kCompileError;
+  if (!write(o.output, std::vector<std::uint8_t>(html.begin(), html.end()), err)) return kExitBadInput;
   out << fmt::format("{} -> {} ({} instructions executed, {} s simulated)\n", o.program, o.output,
                      recording.steps.size(), vm::formatSeconds(recording.end));
-  return outcome.ok() ? kOk : kRunFailed;
+  return outcome.ok() ? kExitOk : kExitRunFailed;
 }
 
 // ---- registration ---------------------------------------------------------------

@@ -52,12 +52,12 @@ std::vector<ObjectEnd> objectEnds(const RunReport& r, std::span<const std::int32
 }  // namespace
 
 bool RunReport::ok() const {
-  return outcome && outcome->ok() && !compiler::hasErrors(diagnostics);
+  return outcome && outcome->ok() && !diag::hasErrors(diagnostics);
 }
 
-compiler::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {
-  const compiler::Pos pos{image.lines[outcome.index], image.columns[outcome.index]};
-  return {file, pos, compiler::Severity::Error,
+diag::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {
+  const diag::Pos pos{image.lines[outcome.index], image.columns[outcome.index]};
+  return {file, pos, diag::Severity::Error,
           fmt::format("{}: {} (instruction {})", reasonText(outcome.reason), outcome.message, outcome.index + 1)};
 }
 
@@ -128,11 +128,11 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     j["variables"] = Json::object();
   }
   Json diags = Json::array();
-  for (const compiler::Diagnostic& d : r.diagnostics)
+  for (const diag::Diagnostic& d : r.diagnostics)
     diags.push_back({{"file", d.file},
                      {"line", d.pos.line},
                      {"column", d.pos.col},
-                     {"severity", compiler::severityName(d.severity)},
+                     {"severity", diag::severityName(d.severity)},
                      {"message", d.message}});
   j["diagnostics"] = diags;
   out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';

@@ -5,9 +5,9 @@
 #include <ostream>
 #include <vector>
 
-#include "compiler/diagnostics.h"
-#include "runtime/workcell/grasp.h"
-#include "runtime/workcell/tool_tracker.h"
+#include "diag/diagnostic.h"
+#include "model/workcell/grasp.h"
+#include "model/workcell/tool_tracker.h"
 #include "vm/interpreter.h"
 
 namespace rs::cli {
@@ -22,7 +22,7 @@ struct RunReport {
   workcell::Grasping* grasping = nullptr;  // likewise: where its objects ended
   const workcell::Workcell* cell = nullptr;
   bool realTime = false;                  // ran on a real controller: the clock is wall time
-  std::vector<compiler::Diagnostic> diagnostics;  // compile + runtime
+  std::vector<diag::Diagnostic> diagnostics;  // compile + runtime
   bool ok() const;
 };
 
@@ -30,6 +30,6 @@ void printTextSummary(std::ostream& out, const RunReport& report);
 void printJsonSummary(std::ostream& out, const RunReport& report);
 
 /// A runtime stop as a diagnostic at the instruction's source position.
-compiler::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file);
+diag::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file);
 
 }  // namespace rs::cli

@@ -7,9 +7,9 @@
 
 #include "cli/lib/app.h"
 #include "compiler/library.h"
-#include "runtime/kinematics/chain_data.h"
-#include "runtime/kinematics/forward_kinematics.h"
-#include "runtime/kinematics/joint_values.h"
+#include "model/kinematics/chain_data.h"
+#include "model/kinematics/forward_kinematics.h"
+#include "model/kinematics/joint_values.h"
 
 namespace rs::cli {
 
@@ -20,7 +20,7 @@ using Json = nlohmann::ordered_json;
 std::optional<workcell::Robot> loadRobot(const RobotQuery& q, std::ostream& err) {
   compiler::Library library(compiler::librarySearchPath(q.libDirs));
   std::optional<workcell::Robot> robot = library.robot(q.robot);
-  for (const compiler::Diagnostic& d : library.diagnostics()) err << compiler::render(d, library.source(d.file));
+  for (const diag::Diagnostic& d : library.diagnostics()) err << diag::render(d, library.source(d.file));
   return robot;
 }
 
@@ -123,7 +123,7 @@ std::string formatNumber(double v) {
 
 int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
   const std::optional<workcell::Robot> robot = loadRobot(q, err);
-  if (!robot) return kCompileError;
+  if (!robot) return kExitBadInput;
   const std::vector<kinematics::DhRow> rows = robot->chain->table();
   if (q.json) {
     Json j;
@@ -141,7 +141,7 @@ int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     }
     j["rows"] = list;
     out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
-    return kOk;
+    return kExitOk;
   }
   out << fmt::format("KINEMATIC PARAMETERS: {} (standard D-H; degrees and length units)\n", robot->name);
   out << fmt::format("{:<6}{:<11}{:>10}{:>10}{:>10}{:>10}{:>10}\n", "AXIS", "TYPE", "theta", "alpha", "a", "d", "home");
@@ -153,20 +153,20 @@ int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
                        formatNumber(r.a), revolute ? formatNumber(r.d) : fmt::format("d{}", i + 1),
                        formatNumber(r.home()));
   }
-  return kOk;
+  return kExitOk;
 }
 
 int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
   const std::optional<workcell::Robot> robot = loadRobot(q, err);
-  if (!robot) return kCompileError;
+  if (!robot) return kExitBadInput;
   const kinematics::ChainModel& chain = *robot->chain;
   const int n = chain.size();
   if (q.from < 0 || q.from > n || q.to < 0 || q.to > n) {
     err << fmt::format("robotsim: error: frames are numbered 0..{} for {}, got {} and {}\n", n, robot->name, q.from, q.to);
-    return kCompileError;
+    return kExitBadInput;
   }
   std::vector<double> values;
-  if (!jointValues(q, *robot, values, err)) return kCompileError;
+  if (!jointValues(q, *robot, values, err)) return kExitBadInput;
   kinematics::ChainData data(chain);
   kinematics::forwardKinematics(chain, data, values);
   const Eigen::Isometry3d m = *kinematics::transform(chain, data, q.from, q.to);
@@ -176,7 +176,7 @@ int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     j["to"] = q.to;
     j["matrix"] = matrixJson(m);
     out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
-    return kOk;
+    return kExitOk;
   }
   out << fmt::format("TRANSFORMATION MATRIX T_{}^{} of {} (coordinates in frame {} to frame {}):\n", q.to, q.from,
                      robot->name, q.to, q.from);
@@ -187,15 +187,15 @@ int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
                           chain.joint(i).type() == kinematics::JointType::Revolute ? "theta" : "d", i,
                           formatNumber(values[static_cast<std::size_t>(i - 1)]));
   out << joints << '\n';
-  return kOk;
+  return kExitOk;
 }
 
 int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
   const std::optional<workcell::Robot> robot = loadRobot(q, err);
-  if (!robot) return kCompileError;
+  if (!robot) return kExitBadInput;
   const kinematics::ChainModel& chain = *robot->chain;
   std::vector<double> values;
-  if (!jointValues(q, *robot, values, err)) return kCompileError;
+  if (!jointValues(q, *robot, values, err)) return kExitBadInput;
   kinematics::ChainData data(chain);
   kinematics::forwardKinematics(chain, data, values);
   const Eigen::Isometry3d tool = kinematics::toolPose(chain, data);
@@ -224,7 +224,7 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
                 std::stod(formatNumber(angle(yaw)))};
     j["matrix"] = matrixJson(tool);
     out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
-    return kOk;
+    return kExitOk;
   }
   out << fmt::format("{}: tool centre point at ({}, {}, {})\n", robot->name, formatNumber(p.x()), formatNumber(p.y()),
                      formatNumber(p.z()));
@@ -232,7 +232,7 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
   out << fmt::format("  approach a ({}, {}, {})\n", formatNumber(r(0, 2)), formatNumber(r(1, 2)), formatNumber(r(2, 2)));
   out << fmt::format("  roll {}  pitch {}  yaw {} (degrees, R = Rz(yaw) Ry(pitch) Rx(roll))\n", formatNumber(angle(roll)),
                      formatNumber(angle(pitch)), formatNumber(angle(yaw)));
-  return kOk;
+  return kExitOk;
 }
 
 }  // namespace rs::cli

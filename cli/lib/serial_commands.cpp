@@ -49,12 +49,12 @@ bool buildSettings(const std::string& dialectText, const std::string& file, cons
                    RhinoSettings& settings, std::string& error) {
   settings = serial::defaultSettings(dialectText == "mark4" ? Dialect::Mark4 : Dialect::Mark3);
   if (!file.empty()) {
-    std::optional<std::string> text = readFile(file, error);
-    if (!text) {
-      error = fmt::format("{}: cannot read serial settings: {}", file, error);
+    const base::FileRead text = base::readFile(file, kMaxInputBytes);
+    if (!text.bytes) {
+      error = fmt::format("{}: cannot read serial settings: {}", file, text.error);
       return false;
     }
-    error = serial::applySettingsText(settings, *text, file);
+    error = serial::applySettingsText(settings, *text.bytes, file);
     if (!error.empty()) {
       if (error.back() == '\n') error.pop_back();
       return false;
@@ -184,7 +184,7 @@ int portsCommand(const PortsOptions& o, std::ostream& out, std::ostream&) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& p : ports) list.push_back({{"path", p.path}, {"note", p.note}, {"likely", p.likely}});
     out << nlohmann::json{{"ports", list}, {"hidden", hidden}}.dump() << '\n';
-    return kOk;
+    return kExitOk;
   }
   if (ports.empty()) {
     out << fmt::format(
@@ -192,14 +192,14 @@ int portsCommand(const PortsOptions& o, std::ostream& out, std::ostream&) {
         "Plug in the controller's USB-serial adapter, or try the serial path without a robot:\n"
         "  robotsim emulate      (prints a device to pass to robotsim run --device)\n",
         o.root, hidden ? fmt::format("; {} ttyS nodes without a UART hidden, --all shows them", hidden) : "");
-    return kOk;
+    return kExitOk;
   }
   std::size_t width = 0;
   for (const auto& p : ports) width = std::max(width, p.path.size());
   out << "Serial devices (use one with robotsim run --device):\n";
   for (const auto& p : ports) out << fmt::format("  {:<{}}  {}\n", p.path, width, p.note);
   if (hidden) out << fmt::format("({} /dev/ttyS* nodes without a UART not shown; --all lists them)\n", hidden);
-  return kOk;
+  return kExitOk;
 }
 
 // --- robotsim emulate --------------------------------------------------------------
@@ -340,24 +340,24 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
   std::string error;
   if (!buildSettings(o.dialect, o.settingsFile, o.settings, config.settings, error)) {
     err << "robotsim: error: " << error << '\n';
-    return kCompileError;
+    return kExitBadInput;
   }
   if (o.robot == stdlib::rhinoScaraName()) {
     config.motors = stdlib::rhinoScaraMotors();
   } else {
     compiler::Library library(compiler::librarySearchPath(o.libDirs));
     std::optional<workcell::Robot> robot = library.robot(o.robot);
-    for (const compiler::Diagnostic& d : library.diagnostics()) err << compiler::render(d, library.source(d.file));
-    if (!robot) return kCompileError;
+    for (const diag::Diagnostic& d : library.diagnostics()) err << diag::render(d, library.source(d.file));
+    if (!robot) return kExitBadInput;
     config.motors = compiler::motorTable(*robot);
   }
   if (std::string e = serial::unsupportedMotor(config.settings.dialect, config.motors); !e.empty()) {
     err << "robotsim: error: " << e << '\n';
-    return kCompileError;
+    return kExitBadInput;
   }
   if (!parseStart(o.start, config.start, error)) {
     err << "robotsim: error: " << error << '\n';
-    return kCompileError;
+    return kExitBadInput;
   }
   config.rateScale = o.speed;
   config.latency = static_cast<vm::Micros>(std::llround(o.latency * 1e6));
@@ -367,19 +367,19 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
   config.fault.slowDelay = static_cast<vm::Micros>(std::llround(o.slowDelay * 1e6));
   std::vector<std::string> script;
   if (!o.script.empty()) {
-    std::optional<std::string> text = readFile(o.script, error);
-    if (!text) {
-      err << fmt::format("{}: error: cannot read the script: {}\n", o.script, error);
-      return kCompileError;
+    const base::FileRead text = base::readFile(o.script, kMaxInputBytes);
+    if (!text.bytes) {
+      err << fmt::format("{}: error: cannot read the script: {}\n", o.script, text.error);
+      return kExitBadInput;
     }
-    std::istringstream lines(*text);
+    std::istringstream lines(*text.bytes);
     for (std::string line; std::getline(lines, line);) script.push_back(line);
   }
 
   std::unique_ptr<serial::PtyEmulator> emu = serial::PtyEmulator::open(config, error);
   if (!emu) {
     err << "robotsim: error: " << error << '\n';
-    return kRunFailed;
+    return kExitRunFailed;
   }
   if (!o.link.empty()) {
     std::error_code ec;
@@ -460,7 +460,7 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
     std::error_code ec;
     if (std::filesystem::is_symlink(std::filesystem::symlink_status(o.link, ec))) std::filesystem::remove(o.link, ec);
   }
-  return kOk;
+  return kExitOk;
 }
 
 }  // namespace rs::cli

@@ -5,7 +5,7 @@
 #include <ostream>
 
 #include "runtime/grasp_observer.h"
-#include "runtime/workcell/tool_tracker.h"
+#include "model/workcell/tool_tracker.h"
 #include "vm/interpreter.h"
 
 namespace rs::cli {

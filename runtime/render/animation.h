@@ -19,7 +19,7 @@
 
 #include "runtime/render/camera.h"
 #include "runtime/render/recording.h"
-#include "runtime/workcell/model.h"
+#include "model/workcell/model.h"
 
 namespace rs::render {
 

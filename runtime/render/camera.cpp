@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "runtime/kinematics/trig.h"
+#include "model/kinematics/trig.h"
 
 namespace rs::render {
 

@@ -10,7 +10,7 @@
 
 #include "runtime/sim_machine.h"
 #include "runtime/stimuli.h"
-#include "runtime/workcell/model.h"
+#include "model/workcell/model.h"
 #include "vm/image.h"
 #include "vm/interpreter.h"
 
@@ -26,7 +26,7 @@ struct Moment {
   /// before `at`; reaching `at` (the time limit) or END is success.
   bool reached = false;
   /// With a workcell: each object's placement (F_world_design) at `at`,
-  /// carried by the gripper or resting (runtime/workcell/grasp.h).
+  /// carried by the gripper or resting (model/workcell/grasp.h).
   std::vector<Eigen::Isometry3d> objects;
 };
 

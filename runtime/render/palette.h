@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "runtime/workcell/model.h"
+#include "model/workcell/model.h"
 
 namespace rs::render {
 

@@ -51,7 +51,7 @@ struct InputLevel {
 };
 
 /// The first robot's gripper took (`held`) or let go of object `object`
-/// (an index in Workcell::objects) during step `step` (runtime/workcell/
+/// (an index in Workcell::objects) during step `step` (model/workcell/
 /// grasp.h). A take happens at the end of the closing move, `at` = the
 /// step's end, and `pose` is F_E_object: the object's placement in the
 /// end-effector frame, which it keeps until let go. A let-go happens as the

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "runtime/kinematics/forward_kinematics.h"
-#include "runtime/kinematics/gripper.h"
-#include "runtime/kinematics/joint_values.h"
+#include "model/kinematics/forward_kinematics.h"
+#include "model/kinematics/gripper.h"
+#include "model/kinematics/joint_values.h"
 
 namespace rs::render {
 

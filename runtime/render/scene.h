@@ -16,8 +16,8 @@
 #include <span>
 #include <vector>
 
-#include "runtime/kinematics/chain_data.h"
-#include "runtime/workcell/model.h"
+#include "model/kinematics/chain_data.h"
+#include "model/workcell/model.h"
 
 namespace rs::render {
 

@@ -14,7 +14,7 @@
 
 #include "tests/cli/cli_support.h"
 #include "compiler/compiler.h"
-#include "compiler/source.h"
+#include "diag/source_file.h"
 #include "stdlib/default_robot.h"
 #include "vm/image_file.h"
 
@@ -42,12 +42,12 @@ constexpr const char* kRuntimeError =
     "  MOVE 600 0 0 0 0\n"
     "END\n";
 
-constexpr const char* kCompileError = "END\nGOTO 9\n";
+constexpr const char* kExitBadInput = "END\nGOTO 9\n";
 
 // True if `s` is valid UTF-8 and has no control characters except newline
 // and tab: safe to print on a terminal.
 bool cleanText(const std::string& s) {
-  if (rs::compiler::findInvalidUtf8(s).found) return false;
+  if (rs::diag::findInvalidUtf8(s).found) return false;
   for (char c : s)
     if ((static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') || c == 0x7F) return false;
   return true;
@@ -101,7 +101,7 @@ TEST_CASE("cli: exit codes of run", "[cli]") {
   CHECK(ok.code == 0);
   CHECK(ok.err.empty());
   CHECK(runCli({"run", dir.write("rt.rsp", kRuntimeError)}).code == 1);
-  CHECK(runCli({"run", dir.write("bad.rsp", kCompileError)}).code == 2);
+  CHECK(runCli({"run", dir.write("bad.rsp", kExitBadInput)}).code == 2);
   CHECK(runCli({"run", dir.write("dl.rsp", "WAITFOR 1 ON\nEND\n")}).code == 1);
   CHECK(runCli({"run", dir.file("missing.rsp")}).code == 2);
 }
@@ -131,7 +131,7 @@ TEST_CASE("cli: check", "[cli]") {
     CHECK(r.err.empty());
   }
   SECTION("a program that does not compile") {
-    const std::string bad = dir.write("bad.rsp", kCompileError);
+    const std::string bad = dir.write("bad.rsp", kExitBadInput);
     const CliResult r = runCli({"check", bad});
     CHECK(r.code == 2);
     CHECK(r.out.empty());
@@ -168,7 +168,7 @@ TEST_CASE("cli: check", "[cli]") {
 TEST_CASE("cli: compile, disasm, tokens, ast, help exit codes", "[cli]") {
   TempDir dir;
   const std::string good = dir.write("good.rsp", kGood);
-  const std::string bad = dir.write("bad.rsp", kCompileError);
+  const std::string bad = dir.write("bad.rsp", kExitBadInput);
   const std::string image = dir.file("good.rsb");
   SECTION("compile") {
     const CliResult r = runCli({"compile", good, "-o", image});
@@ -323,7 +323,7 @@ TEST_CASE("cli: --format=json summary", "[cli]") {
           "deadlock: input 2 never turns ON: no stimulus is scheduled (instruction 2)");
   }
   SECTION("a compile error") {
-    const std::string f = dir.write("bad.rsp", kCompileError);
+    const std::string f = dir.write("bad.rsp", kExitBadInput);
     const CliResult r = runCli({"run", f, "--format=json"});
     CHECK(r.code == 2);
     const json j = parseJson(r.out);
@@ -543,7 +543,7 @@ TEST_CASE("cli: --format=json survives file names that are not UTF-8", "[cli]") 
     // 254 ASCII bytes, then the two bytes of an e-acute: the cut keeps 0xC3.
     const std::string name = std::string(254, 'a') + "\xC3\xA9.rsp";
     const rs::compiler::CompileResult compiled = rs::compiler::compile(
-        rs::compiler::SourceFile(name, "MOVE 0 0 0 0 -1\n"),
+        rs::diag::SourceFile(name, "MOVE 0 0 0 0 -1\n"),
         {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth});
     REQUIRE(compiled.ok());
     const std::vector<std::uint8_t> bytes = rs::vm::writeImage(*compiled.image);

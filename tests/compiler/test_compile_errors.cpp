@@ -13,15 +13,15 @@
 #include <vector>
 
 #include "compiler/compiler.h"
-#include "compiler/diagnostics.h"
+#include "diag/diagnostic.h"
 #include "stdlib/default_robot.h"
 
 namespace {
 
 using rs::compiler::CompileResult;
-using rs::compiler::Diagnostic;
-using rs::compiler::Severity;
-using rs::compiler::SourceFile;
+using rs::diag::Diagnostic;
+using rs::diag::Severity;
+using rs::diag::SourceFile;
 using rs::compiler::Target;
 
 Target rhino() { return {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth}; }
@@ -45,7 +45,7 @@ Want warn(std::uint32_t line, std::uint32_t col, std::string message) {
   return {Severity::Warning, line, col, std::move(message)};
 }
 
-std::string severityText(Severity s) { return std::string(rs::compiler::severityName(s)); }
+std::string severityText(Severity s) { return std::string(rs::diag::severityName(s)); }
 
 // One line per diagnostic, "line:col: severity: message": comparing the
 // whole list as text checks count, order and every field at once, and a
@@ -410,7 +410,7 @@ TEST_CASE("RETURN without any GOSUB is reported alongside other errors", "[compi
 }
 
 TEST_CASE("render: GNU format, the source line and a caret", "[compiler]") {
-  using rs::compiler::render;
+  using rs::diag::render;
   {
     const SourceFile source("prog.rsp", "END\nGOTO 9\n");
     const CompileResult r = rs::compiler::compile(source, rhino());
@@ -429,7 +429,7 @@ TEST_CASE("render: GNU format, the source line and a caret", "[compiler]") {
     const SourceFile source("tab.rsp", "\tGOTO 9\r\n");
     const CompileResult r = rs::compiler::compile(source, rhino());
     REQUIRE(r.diagnostics.size() == 1);
-    CHECK(r.diagnostics[0].pos == rs::compiler::Pos{1, 7});
+    CHECK(r.diagnostics[0].pos == rs::diag::Pos{1, 7});
     CHECK(render(r.diagnostics[0], &source) ==
           "tab.rsp:1:7: error: line number 9 does not exist (the program has 1 instruction)\n"
           "  \tGOTO 9\n"

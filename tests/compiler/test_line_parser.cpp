@@ -19,6 +19,7 @@
 namespace {
 
 using namespace rs::compiler;
+namespace diag = rs::diag;
 using P = rs_grammar::RobotProgramParser;
 
 std::string readFile(const std::string& path) {
@@ -31,7 +32,7 @@ std::string readFile(const std::string& path) {
 // Every field of every node, written out: two ASTs are equal when these are.
 std::string describe(const Program& p) {
   std::ostringstream o;
-  auto pos = [&](Pos x) { o << '@' << x.line << ':' << x.col << ' '; };
+  auto pos = [&](diag::Pos x) { o << '@' << x.line << ':' << x.col << ' '; };
   auto values = [&](const std::vector<Value>& vs) {
     for (const Value& v : vs) o << v.number << ' ', pos(v.pos);
   };
@@ -63,9 +64,9 @@ std::string describe(const Program& p) {
   return o.str();
 }
 
-std::string describe(const std::vector<Diagnostic>& ds) {
+std::string describe(const std::vector<diag::Diagnostic>& ds) {
   std::ostringstream o;
-  for (const Diagnostic& d : ds)
+  for (const diag::Diagnostic& d : ds)
     o << d.pos.line << ':' << d.pos.col << ' ' << severityName(d.severity) << ' ' << d.message << '\n';
   return o.str();
 }
@@ -75,17 +76,17 @@ struct Both {
 };
 
 Both parseBothWays(const std::string& name, const std::string& text) {
-  const SourceFile source(name, text);
+  const diag::SourceFile source(name, text);
   const auto motors = rs::stdlib::rhinoScaraMotors();
   Both b;
   {
-    Diagnostics d(name);
+    diag::Diagnostics d(name);
     ParseTree tree(source, d);
     b.wholeAst = describe(buildAst(tree, motors, d));
     b.wholeDiagnostics = describe(d.sorted());
   }
   {
-    Diagnostics d(name);
+    diag::Diagnostics d(name);
     LineParser parser(source, d);
     b.lineAst = describe(buildAst(source, parser, motors, d));
     b.lineDiagnostics = describe(d.sorted());
@@ -131,8 +132,8 @@ TEST_CASE("line-by-line parsing gives the whole-file AST and errors for bad inpu
 
 TEST_CASE("a OneLine token array holds one line and is not walked past it", "[compiler][parser]") {
   const std::string text = "MOVE 1 -2\nloop: END\n";
-  const SourceFile source("t.rsp", text);
-  Diagnostics d("t.rsp");
+  const diag::SourceFile source("t.rsp", text);
+  diag::Diagnostics d("t.rsp");
   Lexer lexer(source, d);
   TokenArray tokens(lexer, source.text(), TokenArray::Mode::OneLine);
 
@@ -173,8 +174,8 @@ TEST_CASE("a OneLine token array holds one line and is not walked past it", "[co
 
 TEST_CASE("a WholeFile token array holds every token and seeks anywhere", "[compiler][parser]") {
   const std::string text = "GOTO 1\nEND";
-  const SourceFile source("t.rsp", text);
-  Diagnostics d("t.rsp");
+  const diag::SourceFile source("t.rsp", text);
+  diag::Diagnostics d("t.rsp");
   Lexer lexer(source, d);
   TokenArray tokens(lexer, source.text(), TokenArray::Mode::WholeFile);
   CHECK(tokens.size() == 5);  // GOTO 1 NEWLINE END EOF

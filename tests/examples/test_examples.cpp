@@ -66,7 +66,7 @@ Json runExample(const std::string& name, const std::string& stimuli = {}) {
   }
   const Result r = robotsim(args);
   INFO("stderr: " << r.err);
-  REQUIRE(r.code == rs::cli::kOk);
+  REQUIRE(r.code == rs::cli::kExitOk);
   REQUIRE(r.err.empty());  // no warnings either: examples are clean
   return Json::parse(r.out);
 }
@@ -247,7 +247,7 @@ TEST_CASE("example pick_and_place: the readable text summary of the demo", "[exa
   const Result r = robotsim({"run", (kExamples / "pick_and_place.rsp").string(), "--stimuli",
                              (kExamples / "pick_and_place.stim").string()});
   INFO(r.out << r.err);
-  REQUIRE(r.code == rs::cli::kOk);
+  REQUIRE(r.code == rs::cli::kExitOk);
   CHECK(r.err.empty());
   CHECK(r.out.find(": finished\n") != std::string::npos);
   CHECK(r.out.find("simulated time  34.900 s") != std::string::npos);
@@ -260,7 +260,7 @@ TEST_CASE("example pick_and_place deadlocks without its stimuli", "[examples]") 
   // Without the conveyor nothing ever turns input 1 ON: the first WAITFOR
   // (instruction 4, source line 21) is a deadlock at time 0, after 4 steps.
   const Result r = robotsim({"run", (kExamples / "pick_and_place.rsp").string(), "--format=json"});
-  CHECK(r.code == rs::cli::kRunFailed);
+  CHECK(r.code == rs::cli::kExitRunFailed);
   const Json j = Json::parse(r.out);
   CHECK(j.at("status") == "error");
   CHECK(j.at("steps") == 4);
@@ -289,7 +289,7 @@ TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pal
   // (770, 50, 180), by (470, 0, -500): (750, 30, 200). The pallets stay.
   const Result r = robotsim({"run", (kExamples / "gantry_pick.rsp").string(), "--cell", "gantry-cell", "--format=json"});
   INFO("stderr: " << r.err);
-  REQUIRE(r.code == rs::cli::kOk);
+  REQUIRE(r.code == rs::cli::kExitOk);
   REQUIRE(r.err.empty());
   const Json j = Json::parse(r.out);
   CHECK(j.at("status") == "ok");
@@ -306,7 +306,7 @@ TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pal
 
 TEST_CASE("example gantry_pick: the trace says when the gripper takes and lets go", "[examples]") {
   const Result r = robotsim({"run", (kExamples / "gantry_pick.rsp").string(), "--cell", "gantry-cell", "--trace"});
-  REQUIRE(r.code == rs::cli::kOk);
+  REQUIRE(r.code == rs::cli::kExitOk);
   std::vector<std::string> events;
   std::istringstream lines(r.out);
   for (std::string line; std::getline(lines, line);) {
@@ -335,10 +335,9 @@ TEST_CASE("the examples together use all 20 instructions", "[examples]") {
   std::set<rs::vm::Op> used;
   for (const fs::path& path : exampleSources()) {
     INFO(path.string());
-    std::string error;
-    std::optional<std::string> text = rs::cli::readFile(path.string(), error);
-    REQUIRE(text);
-    const rs::compiler::SourceFile source(path.string(), std::move(*text));
+    rs::base::FileRead text = rs::base::readFile(path.string(), rs::cli::kMaxInputBytes);
+    REQUIRE(text.bytes);
+    const rs::diag::SourceFile source(path.string(), std::move(*text.bytes));
     // gantry_pick runs on the gantry cell; the others on the default robot.
     const bool gantry = path.filename() == "gantry_pick.rsp";
     rs::compiler::Library library(rs::compiler::librarySearchPath({}));

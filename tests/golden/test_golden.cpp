@@ -98,8 +98,8 @@ TEST_CASE("golden: disasm of the compiled image equals disasm of the source", "[
 // the NEWLINE that ends a commented line is reported at the column where
 // the comment starts (here 1:5 instead of 1:9).
 TEST_CASE("tokens: the NEWLINE after a comment is at the line break", "[golden]") {
-  const rs::compiler::SourceFile source("c.rsp", "END ; hi\nEND\n");
-  std::vector<rs::compiler::Diagnostic> diags;
+  const rs::diag::SourceFile source("c.rsp", "END ; hi\nEND\n");
+  std::vector<rs::diag::Diagnostic> diags;
   CHECK(rs::compiler::dumpTokens(source, diags) ==
         "1:1      IDENT    END\n"
         "1:9      NEWLINE\n"

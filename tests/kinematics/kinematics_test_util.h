@@ -5,9 +5,9 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
-#include "runtime/kinematics/chain_data.h"
-#include "runtime/kinematics/chain_model.h"
-#include "runtime/kinematics/frame.h"
+#include "model/kinematics/chain_data.h"
+#include "model/kinematics/chain_model.h"
+#include "model/kinematics/frame.h"
 
 namespace kintest {
 

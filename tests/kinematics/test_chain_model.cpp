@@ -3,7 +3,7 @@
 #include <limits>
 #include <vector>
 
-#include "runtime/kinematics/chain_model.h"
+#include "model/kinematics/chain_model.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <vector>
 
-#include "runtime/kinematics/dh_derive.h"
+#include "model/kinematics/dh_derive.h"
 #include "tests/kinematics/kinematics_test_util.h"
 
 namespace {

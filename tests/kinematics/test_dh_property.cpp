@@ -10,9 +10,9 @@
 #include <random>
 #include <vector>
 
-#include "runtime/kinematics/angles.h"
-#include "runtime/kinematics/dh_derive.h"
-#include "runtime/kinematics/forward_kinematics.h"
+#include "model/kinematics/angles.h"
+#include "model/kinematics/dh_derive.h"
+#include "model/kinematics/forward_kinematics.h"
 #include "tests/kinematics/kinematics_test_util.h"
 
 namespace {

@@ -8,8 +8,8 @@
 #include <numbers>
 #include <vector>
 
-#include "runtime/kinematics/forward_kinematics.h"
-#include "runtime/kinematics/joint_values.h"
+#include "model/kinematics/forward_kinematics.h"
+#include "model/kinematics/joint_values.h"
 #include "tests/kinematics/kinematics_test_util.h"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "runtime/kinematics/frame.h"
+#include "model/kinematics/frame.h"
 
 namespace {
 

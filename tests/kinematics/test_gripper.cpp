@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "runtime/kinematics/gripper.h"
+#include "model/kinematics/gripper.h"
 
 namespace {
 

@@ -4,8 +4,8 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
-#include "runtime/kinematics/dh_derive.h"
-#include "runtime/kinematics/forward_kinematics.h"
+#include "model/kinematics/dh_derive.h"
+#include "model/kinematics/forward_kinematics.h"
 #include "tests/kinematics/kinematics_test_util.h"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <random>
 
-#include "runtime/kinematics/trig.h"
+#include "model/kinematics/trig.h"
 
 using rs::kinematics::sinCosDegrees;
 

@@ -17,7 +17,7 @@
 
 #include "cli/lib/app.h"
 #include "compiler/library.h"
-#include "runtime/kinematics/gripper.h"
+#include "model/kinematics/gripper.h"
 #include "stdlib/default_robot.h"
 #include "tests/cli/cli_support.h"
 

@@ -24,15 +24,15 @@ inline std::string lines(const std::vector<std::string>& ls) {
 
 /// "file:line:col: message" for every diagnostic, with `dir/` removed from
 /// file names so expectations stay short.
-inline std::vector<std::string> diagnosticList(const std::vector<rs::compiler::Diagnostic>& diags,
+inline std::vector<std::string> diagnosticList(const std::vector<rs::diag::Diagnostic>& diags,
                                                const std::string& dir) {
   std::vector<std::string> out;
-  for (const rs::compiler::Diagnostic& d : diags) {
+  for (const rs::diag::Diagnostic& d : diags) {
     std::string file = d.file;
     const std::string prefix = dir + "/";
     if (file.rfind(prefix, 0) == 0) file.erase(0, prefix.size());
     out.push_back(fmt::format("{}:{}:{}: {}{}", file, d.pos.line, d.pos.col,
-                              d.severity == rs::compiler::Severity::Error ? "" : "(not an error) ", d.message));
+                              d.severity == rs::diag::Severity::Error ? "" : "(not an error) ", d.message));
   }
   return out;
 }

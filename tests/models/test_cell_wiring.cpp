@@ -24,8 +24,8 @@
 #include <nlohmann/json.hpp>
 
 #include "compiler/library.h"
-#include "runtime/workcell/cell_file.h"
-#include "runtime/workcell/tool_tracker.h"
+#include "model/workcell/cell_file.h"
+#include "model/workcell/tool_tracker.h"
 #include "tests/models/models_support.h"
 #include "vm/image_file.h"
 

@@ -226,8 +226,8 @@ namespace {
 
 // Diagnostics and segment count of one file parsed alone.
 std::pair<Strings, std::size_t> parsed(const std::string& text) {
-  rs::compiler::Diagnostics d("x.rsd");
-  const auto f = rs::compiler::parseDescription(std::make_unique<rs::compiler::SourceFile>("x.rsd", text), d);
+  rs::diag::Diagnostics d("x.rsd");
+  const auto f = rs::compiler::parseDescription(std::make_unique<rs::diag::SourceFile>("x.rsd", text), d);
   Strings out;
   for (const auto& diag : d.sorted()) out.push_back(fmt::format("{}:{}: {}", diag.pos.line, diag.pos.col, diag.message));
   std::size_t segments = 0;

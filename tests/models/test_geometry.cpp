@@ -24,8 +24,8 @@
 namespace {
 
 using rs::compiler::DescriptionFile;
-using rs::compiler::Diagnostics;
-using rs::compiler::SourceFile;
+using rs::diag::Diagnostics;
+using rs::diag::SourceFile;
 using rs::testing::lines;
 using rs::workcell::Color;
 using rs::workcell::Segment;

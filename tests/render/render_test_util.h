@@ -11,7 +11,7 @@
 
 #include "cli/lib/program_file.h"
 #include "compiler/library.h"
-#include "runtime/workcell/model.h"
+#include "model/workcell/model.h"
 #include "tests/cli/cli_support.h"
 
 namespace rendertest {

@@ -5,11 +5,11 @@
 #include <random>
 
 #include "render_test_util.h"
-#include "runtime/kinematics/forward_kinematics.h"
-#include "runtime/kinematics/joint_values.h"
+#include "model/kinematics/forward_kinematics.h"
+#include "model/kinematics/joint_values.h"
 #include "runtime/render/picture.h"
 #include "runtime/render/scene.h"
-#include "runtime/workcell/tool_tracker.h"
+#include "model/workcell/tool_tracker.h"
 
 using rs::render::CellPoser;
 using rs::render::Line3;

@@ -1,4 +1,4 @@
-// Objects in the gripper (DESIGN.md "Objects", runtime/workcell/grasp.h),
+// Objects in the gripper (DESIGN.md "Objects", model/workcell/grasp.h),
 // on the library's gantry cell, where everything can be checked by hand:
 // the gantry's motors are Cartesian, 0.1 mm per unit, so its tool centre
 // point is (500 + X/10, 200 - Y/10, 400 + Z/10) (stdlib/robots/gantry.rsd,
@@ -14,7 +14,7 @@
 #include "runtime/grasp_observer.h"
 #include "runtime/render/moment.h"
 #include "runtime/sim_machine.h"
-#include "runtime/workcell/grasp.h"
+#include "model/workcell/grasp.h"
 
 namespace {
 

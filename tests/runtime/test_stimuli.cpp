@@ -217,8 +217,8 @@ TEST_CASE("an unreadable stimuli file is one error", "[stimuli]") {
   const auto missing = rs::runtime::loadStimuliFile("/nonexistent/dir/cell.stim");
   REQUIRE(missing.errors.size() == 1);
   CHECK(missing.errors[0] ==
-        StimuliError{"/nonexistent/dir/cell.stim", 0, 0, "cannot open the stimuli file"});
+        StimuliError{"/nonexistent/dir/cell.stim", 0, 0, "cannot read the stimuli file: No such file or directory"});
   const auto dir = rs::runtime::loadStimuliFile("/");
   REQUIRE(dir.errors.size() == 1);
-  CHECK(dir.errors[0].message == "is a directory, not a stimuli file");
+  CHECK(dir.errors[0].message == "cannot read the stimuli file: is a directory");
 }

@@ -25,7 +25,7 @@ inline std::vector<vm::MotorSpec> twoMotors() {
 }
 
 inline vm::Image compileFor(const std::string& text, const std::vector<vm::MotorSpec>& motors) {
-  const compiler::SourceFile source("test.rsp", text);
+  const diag::SourceFile source("test.rsp", text);
   compiler::CompileResult r = compiler::compile(source, {"test-robot", motors, vm::kDefaultCallDepth});
   INFO(text);
   for (const auto& d : r.diagnostics) INFO(d.message);

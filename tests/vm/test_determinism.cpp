@@ -133,8 +133,8 @@ TEST_CASE("compiling twice gives identical image bytes", "[vm][determinism]") {
 
   // And through the library, from two separate SourceFiles.
   const rs::compiler::Target target{"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth};
-  const auto once = rs::compiler::compile(rs::compiler::SourceFile(prog, kProgram), target);
-  const auto twice = rs::compiler::compile(rs::compiler::SourceFile(prog, kProgram), target);
+  const auto once = rs::compiler::compile(rs::diag::SourceFile(prog, kProgram), target);
+  const auto twice = rs::compiler::compile(rs::diag::SourceFile(prog, kProgram), target);
   REQUIRE(once.ok());
   REQUIRE(twice.ok());
   const std::vector<std::uint8_t> bytes = rs::vm::writeImage(*once.image);

@@ -71,7 +71,7 @@ struct Run {
 };
 
 rs::vm::Image compileOk(const std::string& text, const Target& target = rhino()) {
-  const rs::compiler::SourceFile source("vm.rsp", text);
+  const rs::diag::SourceFile source("vm.rsp", text);
   const rs::compiler::CompileResult r = rs::compiler::compile(source, target);
   INFO("program:\n" << text);
   for (const auto& d : r.diagnostics) INFO(d.pos.line << ':' << d.pos.col << ": " << d.message);

@@ -36,7 +36,7 @@ constexpr std::size_t kHeader = rs::vm::kImageHeaderBytes;
 rs::compiler::Target rhino() { return {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth}; }
 
 Image compileOk(const std::string& text, const std::string& name = "v.rsp") {
-  const rs::compiler::SourceFile source(name, text);
+  const rs::diag::SourceFile source(name, text);
   rs::compiler::CompileResult r = rs::compiler::compile(source, rhino());
   INFO(text);
   REQUIRE(r.ok());
@@ -175,13 +175,13 @@ TEST_CASE("every image the compiler produces loads back", "[verifier]") {
   for (const std::string& text : {"SET " + n65 + " 1\nEND\n", n65 + ": SET N 1\nEND\n",
                                   "MOVEP " + n65 + "\nEND\nPOINTS\n" + n65 + " 0 0 0 0 0\n"}) {
     INFO(text);
-    const rs::compiler::CompileResult r = rs::compiler::compile(rs::compiler::SourceFile("v.rsp", text), rhino());
+    const rs::compiler::CompileResult r = rs::compiler::compile(rs::diag::SourceFile("v.rsp", text), rhino());
     CHECK_FALSE(r.ok());
   }
   const rs::compiler::CompileResult r =
-      rs::compiler::compile(rs::compiler::SourceFile("v.rsp", "SET " + n65 + " 1\nEND\n"), rhino());
+      rs::compiler::compile(rs::diag::SourceFile("v.rsp", "SET " + n65 + " 1\nEND\n"), rhino());
   REQUIRE(r.diagnostics.size() == 1);
-  CHECK(r.diagnostics[0].pos == rs::compiler::Pos{1, 5});
+  CHECK(r.diagnostics[0].pos == rs::diag::Pos{1, 5});
   CHECK(r.diagnostics[0].message ==
         "'VVVVVVVVVVVVVVVV...' is too long for a variable: names have at most 64 characters");
 }

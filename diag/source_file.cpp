@@ -1,0 +1,78 @@
+#include "diag/source_file.h"
+
+#include <cstring>
+
+namespace rs::diag {
+
+SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
+  lineStarts_.push_back(0);
+  const char* const begin = text_.data();
+  const char* const end = begin + text_.size();
+  // memchr: the library's vectorised search, much faster than a byte loop.
+  for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p))));) {
+    if (++p == end) break;
+    lineStarts_.push_back(static_cast<std::size_t>(p - begin));
+  }
+}
+
+std::string_view SourceFile::line(std::uint32_t number) const {
+  if (number == 0 || number > lineStarts_.size()) return {};
+  const std::size_t start = lineStarts_[number - 1];
+  std::size_t end = text_.find('\n', start);
+  if (end == std::string::npos) end = text_.size();
+  if (end > start && text_[end - 1] == '\r') --end;
+  return std::string_view(text_).substr(start, end - start);
+}
+
+std::size_t utf8SequenceLength(std::string_view text, std::size_t i) {
+  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char c = b(i);
+  if (c < 0x80) return 1;
+  std::size_t n;
+  std::uint32_t cp;
+  if ((c & 0xE0) == 0xC0) n = 2, cp = c & 0x1F;
+  else if ((c & 0xF0) == 0xE0) n = 3, cp = c & 0x0F;
+  else if ((c & 0xF8) == 0xF0) n = 4, cp = c & 0x07;
+  else return 0;
+  if (i + n > text.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    if ((b(i + k) & 0xC0) != 0x80) return 0;
+    cp = (cp << 6) | (b(i + k) & 0x3F);
+  }
+  static constexpr std::uint32_t kMinForLength[] = {0, 0, 0x80, 0x800, 0x10000};
+  if (cp < kMinForLength[n] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+  return n;
+}
+
+namespace {
+
+// Where byte `at` is, when every byte before it is valid UTF-8: columns
+// count characters (lead bytes), as the lexer's do.
+Pos positionOf(std::string_view text, std::size_t at) {
+  Pos pos{1, 1};
+  for (std::size_t i = 0; i < at; ++i) {
+    if (text[i] == '\n') pos = {pos.line + 1, 1};
+    else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) ++pos.col;
+  }
+  return pos;
+}
+
+}  // namespace
+
+Utf8Problem findInvalidUtf8(std::string_view text) {
+  constexpr std::uint64_t kHighBits = 0x8080808080808080ull;
+  for (std::size_t i = 0; i < text.size();) {
+    // Programs are mostly ASCII: skip it eight bytes at a time.
+    std::uint64_t word;
+    if (i + 8 <= text.size() && (std::memcpy(&word, text.data() + i, 8), (word & kHighBits) == 0)) {
+      i += 8;
+      continue;
+    }
+    const std::size_t n = utf8SequenceLength(text, i);
+    if (n == 0) return {true, positionOf(text, i), static_cast<unsigned char>(text[i])};
+    i += n;
+  }
+  return {};
+}
+
+}  // namespace rs::diag

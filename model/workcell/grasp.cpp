@@ -1,0 +1,72 @@
+#include "model/workcell/grasp.h"
+
+namespace rs::workcell {
+
+namespace {
+
+// Points on a face of the box count as inside (a tool centre point on a
+// block's top face grips it); the slack absorbs rounding in the kinematics.
+constexpr double kInsideSlack = 1e-6;
+
+}  // namespace
+
+Grasping::Grasping(const Workcell& cell, std::size_t robot) : cell_(&cell) {
+  for (const PlacedObject& o : cell.objects) {
+    resting_.push_back(o.F_world_design);
+    boxes_.push_back(boundsOf(o.shape));
+  }
+  if (robot >= cell.robots.size()) return;
+  const PlacedRobot& placed = cell.robots[robot];
+  if (!placed.robot.hasGripper || !placed.robot.chain) return;
+  tool_.emplace(placed);
+  gripperMotor_ = static_cast<std::size_t>(placed.robot.chain->size());
+}
+
+std::optional<std::size_t> Grasping::objectAt(const Eigen::Vector3d& point) const {
+  std::optional<std::size_t> best;
+  double bestVolume = 0;
+  for (std::size_t o = 0; o < boxes_.size(); ++o) {
+    if (boxes_[o].isEmpty()) continue;
+    const Eigen::Vector3d local = resting_[o].inverse(Eigen::Isometry) * point;
+    const Eigen::AlignedBox3d slack(boxes_[o].min().array() - kInsideSlack, boxes_[o].max().array() + kInsideSlack);
+    if (!slack.contains(local)) continue;
+    const double volume = boxes_[o].volume();
+    if (!best || volume < bestVolume) best = o, bestVolume = volume;  // strict: the first of equals
+  }
+  return best;
+}
+
+std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
+                                          bool mayTake) {
+  if (!tool_ || gripperMotor_ >= before.size() || gripperMotor_ >= after.size()) return std::nullopt;
+  const std::int32_t from = before[gripperMotor_], to = after[gripperMotor_];
+  if (from == to) return std::nullopt;
+  const bool closing = to > from;  // RANGE max is closed (min <= max always)
+  if (!closing) {
+    if (!held_) return std::nullopt;
+    // Let go where the object is as the opening begins.
+    const std::size_t o = *held_;
+    resting_[o] = tool_->frame(before) * offset_;
+    held_.reset();
+    return GraspChange{o, false};
+  }
+  if (held_ || !mayTake) return std::nullopt;  // closing further on what it holds
+  const Eigen::Isometry3d F_world_E = tool_->frame(after);
+  const std::optional<std::size_t> o = objectAt(F_world_E.translation());
+  if (!o) return std::nullopt;
+  held_ = o;
+  offset_ = F_world_E.inverse(Eigen::Isometry) * resting_[*o];
+  return GraspChange{*o, true};
+}
+
+void Grasping::reset() {
+  held_.reset();
+  for (std::size_t o = 0; o < resting_.size(); ++o) resting_[o] = cell_->objects[o].F_world_design;
+}
+
+Eigen::Isometry3d Grasping::objectPose(std::size_t o, std::span<const std::int32_t> encoders) {
+  if (held_ && *held_ == o && tool_) return tool_->frame(encoders) * offset_;
+  return resting_[o];
+}
+
+}  // namespace rs::workcell

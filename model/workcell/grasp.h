@@ -1,0 +1,75 @@
+// Objects in the gripper (DESIGN.md, "Objects"): a closed gripper whose
+// tool centre point lies inside an object holds it; the object moves with
+// the gripper until it opens; RESET puts every object back where the
+// workcell placed it.
+//
+// When is a gripper closed? Its motor's RANGE runs from open (min) to
+// closed (max). A move that turns the gripper motor towards max closes the
+// gripper; one that turns it towards min opens it. So:
+//  - at the end of a closing move, the gripper takes the object whose box
+//    (the bounds of its lines) holds the tool centre point, the smallest
+//    such box when boxes nest (a block on a table, not the table);
+//  - at the start of an opening move, it lets go: the object stays where it
+//    is at that moment (there is no gravity in the workcell);
+//  - in between, the object keeps its pose relative to the end-effector
+//    frame: F_world_object = F_world_E(q) · F_E_object.
+// A closing move with nothing at the tool centre point holds nothing, and a
+// closed gripper moved into an object does not take it (it was not closing
+// there). Decided here; documented in docs/models.md.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "model/workcell/model.h"
+#include "model/workcell/tool_tracker.h"
+
+namespace rs::workcell {
+
+/// What a step did to the gripper's hold.
+struct GraspChange {
+  std::size_t object = 0;  ///< index in Workcell::objects
+  bool held = false;       ///< true: taken; false: let go
+};
+
+class Grasping {
+ public:
+  /// Tracks robot `robot` of `cell` (both must outlive this). A robot
+  /// without a gripper never holds anything.
+  explicit Grasping(const Workcell& cell, std::size_t robot = 0);
+
+  /// One step of the program moved the robot's motors (arm joints, then
+  /// the gripper, as a program sees them) from `before` to `after`. With
+  /// `mayTake` false a closing move takes nothing: a still of a moment
+  /// during a closing move, which has not ended yet.
+  std::optional<GraspChange> step(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
+                                  bool mayTake = true);
+  /// RESET: nothing held, every object back at its placement.
+  void reset();
+
+  std::optional<std::size_t> held() const { return held_; }
+  /// F_E_object of the held object (meaningful while something is held).
+  const Eigen::Isometry3d& heldOffset() const { return offset_; }
+  /// Object `o`'s placement (F_world_design of its drawing) with the
+  /// robot's motors at `encoders`: where it rests, or where the gripper
+  /// carries it.
+  Eigen::Isometry3d objectPose(std::size_t o, std::span<const std::int32_t> encoders);
+  /// The same for an object that is not held (where it rests now).
+  const Eigen::Isometry3d& restingPose(std::size_t o) const { return resting_[o]; }
+
+ private:
+  std::optional<std::size_t> objectAt(const Eigen::Vector3d& point) const;
+
+  const Workcell* cell_;
+  std::optional<ToolTracker> tool_;  // empty: the robot has no gripper
+  std::size_t gripperMotor_ = 0;
+  std::vector<Eigen::Isometry3d> resting_;
+  std::vector<Eigen::AlignedBox3d> boxes_;  // in each object's design coordinates
+  std::optional<std::size_t> held_;
+  Eigen::Isometry3d offset_ = Eigen::Isometry3d::Identity();
+};
+
+}  // namespace rs::workcell

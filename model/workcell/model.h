@@ -1,0 +1,105 @@
+// The workcell model: what a description (.rsd) compiles to. Geometry is
+// kept as the paper's DESIGN module drew it: every line in global (design)
+// coordinates at the robot's home position; the kinematic chain says how
+// each link's drawing moves when its joints do.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/kinematics/chain_model.h"
+#include "model/kinematics/frame.h"
+#include "model/kinematics/gripper.h"
+
+namespace rs::workcell {
+
+/// The 16 colours of the EGA palette, by number 0..15.
+enum class Color : std::uint8_t {
+  Black, Blue, Green, Cyan, Red, Magenta, Brown, LightGray,
+  DarkGray, LightBlue, LightGreen, LightCyan, LightRed, LightMagenta, Yellow, White,
+};
+
+/// One wireframe line, in design coordinates.
+struct Segment {
+  Eigen::Vector3d a = Eigen::Vector3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  Color color = Color::White;
+};
+
+/// A link or an object: a named collection of lines.
+struct Shape {
+  std::string name;
+  std::vector<Segment> segments;
+};
+
+/// A gripper: a base and two fingers that turn about r2 and r3 as it
+/// closes, its motor, and its end-effector frame (normal n = x, approach
+/// a = z, origin at the tool centre point). Drawn in the design coordinates
+/// of the robot that carries it.
+struct Gripper {
+  std::string name;
+  Shape base, finger2, finger3;
+  char letter = 'A';
+  std::int32_t min = 0, max = 0;  // min = open, max = closed
+  std::int32_t speed = 200;
+  kinematics::GripperModel model;  // r2, r3, F_G_E, precision
+};
+
+struct JointSpec {
+  kinematics::JointType type = kinematics::JointType::Revolute;
+  char letter = 'A';
+  double precision = 1.0;  // degrees or length units per encoder unit
+  std::int32_t min = 0, max = 0;
+  bool coupling = false;
+  std::int32_t speed = 400;  // encoder units per second
+};
+
+/// A robot: links 0..n in order (0 = base) with their home frames F_design_i,
+/// joints 1..n, and optionally a gripper whose n/a vectors give the last
+/// frame. The chain is derived (D-H) from the frames when the robot is built.
+struct Robot {
+  std::string name;
+  std::vector<Shape> links;
+  std::vector<Eigen::Isometry3d> frames;  // F_design_i of each link, then the gripper's
+  std::vector<JointSpec> joints;
+  bool hasGripper = false;
+  Gripper gripper;
+  std::optional<kinematics::ChainModel> chain;  // derived; frames in design coordinates
+};
+
+struct PlacedRobot {
+  Robot robot;
+  Eigen::Isometry3d F_world_design = Eigen::Isometry3d::Identity();
+};
+
+/// The bounds of a shape's lines (empty for a shape without lines).
+inline Eigen::AlignedBox3d boundsOf(const Shape& shape) {
+  Eigen::AlignedBox3d box;
+  for (const Segment& s : shape.segments) box.extend(s.a), box.extend(s.b);
+  return box;
+}
+
+/// The corner of a shape that a workcell's `OBJECT name AT x y z` puts at
+/// the point: least x, least y, greatest z of its lines (the origin for a
+/// shape without lines).
+inline Eigen::Vector3d atCorner(const Shape& shape) {
+  const Eigen::AlignedBox3d b = boundsOf(shape);
+  if (b.isEmpty()) return Eigen::Vector3d::Zero();
+  return {b.min().x(), b.min().y(), b.max().z()};
+}
+
+struct PlacedObject {
+  Shape shape;
+  Eigen::Isometry3d F_world_design = Eigen::Isometry3d::Identity();
+};
+
+struct Workcell {
+  std::string name;
+  std::vector<PlacedRobot> robots;
+  std::vector<PlacedObject> objects;
+};
+
+}  // namespace rs::workcell

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The layer check (scripts/check-layers.sh) passes on the tree, and fails
+# on copies of it with an include planted that points up, or sideways into
+# a layer that is not allowed, naming the file, the line and the layers.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+check="$root/scripts/check-layers.sh"
+bash "$check" "$root"
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+copy() {
+  rm -rf "$work/tree" && mkdir -p "$work/tree"
+  (cd "$root" && find base diag model vm stdlib compiler runtime cli bench tests scripts \
+     -path tests/browser/node_modules -prune -o \( -name '*.h' -o -name '*.cpp' -o -name '*.txt' -o -name '*.sh' \) \
+     -type f -print | tar cf - -T -) | tar xf - -C "$work/tree"
+}
+expect_failure() {  # FILE LINE-TO-PLANT EXPECTED-TEXT
+  copy
+  echo "$2" >> "$work/tree/$1"
+  if out=$(bash "$check" "$work/tree" 2>&1); then
+    echo "FAIL: the check passed with '$2' planted in $1" >&2; exit 1
+  fi
+  if ! grep -qF "$3" <<<"$out"; then
+    echo "FAIL: expected '$3' in:" >&2; echo "$out" >&2; exit 1
+  fi
+  echo "ok: '$2' in $1 is refused"
+}
+expect_failure vm/opcodes.cpp '#include "compiler/compiler.h"' \
+  'vm/opcodes.cpp:'
+expect_failure vm/opcodes.cpp '#include "compiler/compiler.h"' \
+  'vm includes "compiler/compiler.h" of layer compiler, which vm may not include'
+expect_failure model/kinematics/frame.cpp '#include "model/workcell/model.h"' \
+  'model/kinematics includes "model/workcell/model.h" of layer model/workcell'
+expect_failure runtime/sim_machine.cpp '#include "runtime/render/scene.h"' \
+  'runtime includes "runtime/render/scene.h" of layer runtime/render'
+expect_failure diag/diagnostic.cpp '#include "../vm/opcodes.h"' \
+  'diag includes "vm/opcodes.h" of layer vm'
+expect_failure compiler/lexer.cpp '#include "nowhere.h"' \
+  'include "nowhere.h" names no file of the tree'
+echo "layers: every planted upward include was caught"
