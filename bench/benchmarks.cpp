@@ -10,11 +10,10 @@
 
 #include "bench/generate.h"
 #include "bench/timing.h"
-#include "cli/lib/program_file.h"
 #include "compiler/compiler.h"
-#include "runtime/sim_machine.h"
+#include "launch/program.h"
+#include "runtime/run.h"
 #include "vm/image_file.h"
-#include "vm/interpreter.h"
 #include "vm/verify.h"
 
 namespace rs::bench {
@@ -91,20 +90,22 @@ bool canRun(const std::vector<std::string>& argv) {
 
 // --- 1. VM dispatch ----------------------------------------------------------------
 
-// Times Interpreter::run alone (compiled and verified once, a fresh machine
-// per run) and checks that the loop really counted to the end.
-Measurement vmLoop(const vm::Image& image, std::uint64_t& steps) {
-  return [&image, &steps, n = slotOf(image, "N")] {
-    vm::RunLimits limits;
-    limits.maxSteps = 3 * static_cast<std::uint64_t>(kLoopIterations);
-    runtime::SimMachine machine(image.motors, runtime::Stimuli{});
-    vm::Interpreter interpreter(image, machine);
+// Times Run::runToEnd alone (compiled and verified once, a fresh run per
+// measurement) and checks that the loop really counted to the end. The
+// loop takes no simulated time, so the clock-standing-still limit is off.
+Measurement vmLoop(const std::shared_ptr<const vm::Image>& image, std::uint64_t& steps) {
+  return [image, &steps, n = slotOf(*image, "N")] {
+    runtime::RunSpec spec;
+    spec.image = image;
+    spec.limits.maxSteps = 3 * static_cast<std::uint64_t>(kLoopIterations);
+    spec.limits.maxStepsPerInstant = 0;
+    runtime::Run run(std::move(spec));
     const Stopwatch clock;
-    const vm::RunOutcome outcome = interpreter.run(limits);
+    const vm::RunOutcome outcome = run.runToEnd();
     const Sample sample = clock.stop();
-    if (!outcome.ok() || interpreter.variables()[n] != kLoopIterations)
-      throw std::runtime_error(
-          fmt::format("the VM loop stopped early ({}): N = {}", outcome.message, interpreter.variables()[n]));
+    const std::int32_t counted = run.interpreter().variables()[n];
+    if (!outcome.ok() || counted != kLoopIterations)
+      throw std::runtime_error(fmt::format("the VM loop stopped early ({}): N = {}", outcome.message, counted));
     steps = outcome.steps;
     return sample;
   };
@@ -116,8 +117,8 @@ json benchDispatch(const Options& options) {
   fmt::print("\n[1] VM dispatch: SET/ADD/JMPVAR loop, {} iterations\n", kLoopIterations);
   const diag::SourceFile source("dispatch.rsp",
                                     fmt::format("SET N 0\nloop: ADD N 1\nJMPVAR N < {} loop\nEND\n", kLoopIterations));
-  const vm::Image image = compileOrThrow(source, cli::defaultTarget());
-  if (const vm::VerifyError e = vm::verify(image); !e.message.empty())
+  const auto image = std::make_shared<const vm::Image>(compileOrThrow(source, launch::defaultTarget()));
+  if (const vm::VerifyError e = vm::verify(*image); !e.message.empty())
     throw std::runtime_error("the dispatch image does not verify: " + e.message);
 
   std::uint64_t steps = 0;
@@ -128,7 +129,7 @@ json benchDispatch(const Options& options) {
         processMeasurement({options.lua, writeInput(options, "dispatch.lua", luaCountedLoop(kLoopIterations))}));
     runs.push_back(processMeasurement({options.lua, writeInput(options, "empty.lua", "")}));
   }
-  progress(fmt::format("interleaved, 1 warm-up + {} rounds: Interpreter::run in-process{}", options.reps,
+  progress(fmt::format("interleaved, 1 warm-up + {} rounds: Run::runToEnd in-process{}", options.reps,
                        lua ? fmt::format(", {0} loop, {0} empty script (processes)", options.lua) : ""));
   const std::vector<Samples> s = interleave(runs, options.reps);
   const Samples& ours = s[0];
@@ -206,7 +207,7 @@ SizeResult prepareSize(const Options& options, std::string label, std::size_t in
 // as a process, interleaved.
 void measureSize(const Options& options, SizeResult& r) {
   const diag::SourceFile source(r.path, r.program.text);
-  const compiler::Target target = cli::defaultTarget();
+  const compiler::Target target = launch::defaultTarget();
   const vm::Image image = compileOrThrow(source, target);
   if (image.code.size() != r.program.instructions)
     throw std::runtime_error(

@@ -31,39 +31,6 @@ struct Word {  // one operand as written
   diag::Pos pos;
 };
 
-}  // namespace
-
-std::string_view operandUsage(vm::Format f) {
-  switch (f) {
-    case vm::Format::None: return "";
-    case vm::Format::MotorVector: return " <value per motor>";
-    case vm::Format::Point: return " <point>";
-    case vm::Format::Target: return " <line>";
-    case vm::Format::InputJump: return " <input> ON|OFF <line>";
-    case vm::Format::Output: return " <output> ON|OFF";
-    case vm::Format::Input: return " <input> ON|OFF";
-    case vm::Format::VarCompare: return " <variable> <|>|= <value> <line>";
-    case vm::Format::VarValue: return " <variable> <value>";
-    case vm::Format::Triple: return " <x> <y> <z>";
-    case vm::Format::Millis: return " <seconds>";
-  }
-  return "";
-}
-
-namespace {
-
-std::size_t operandCount(vm::Format f) {
-  switch (f) {
-    case vm::Format::None: return 0;
-    case vm::Format::Point: case vm::Format::Target: case vm::Format::Millis: return 1;
-    case vm::Format::Output: case vm::Format::Input: case vm::Format::VarValue: return 2;
-    case vm::Format::InputJump: case vm::Format::Triple: return 3;
-    case vm::Format::VarCompare: return 4;
-    case vm::Format::MotorVector: return 0;  // one per motor: checked separately
-  }
-  return 0;
-}
-
 constexpr std::size_t kMaxNameLength = 64;  // as the image format allows
 
 bool isReservedWord(std::string_view w) {
@@ -227,12 +194,12 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
                                       motorLetters(), w.size()));
     return ok;
   }
-  const std::size_t want = operandCount(f);
+  const std::size_t want = vm::info(f).operands;
   if (w.size() != want) {
     const diag::Pos at = w.size() > want ? w[want].pos : in.pos;
     diag_.error(at, want == 0 ? fmt::format("{} takes no operands, found {}", mnemonic, w.size())
                               : fmt::format("{} expects {} operand{} ({}{}), found {}", mnemonic, want,
-                                            want == 1 ? "" : "s", mnemonic, operandUsage(f), w.size()));
+                                            want == 1 ? "" : "s", mnemonic, vm::info(f).usage, w.size()));
     return false;
   }
   switch (f) {

@@ -18,10 +18,6 @@ Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, diag::D
 Program buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
                  diag::Diagnostics& diagnostics);
 
-/// How an instruction of this format is written, after its mnemonic:
-/// " <input> ON|OFF <line>".
-std::string_view operandUsage(vm::Format format);
-
 
 /// The mnemonic closest to a misspelled one ("MOVX" -> "MOVE"), or empty.
 std::string_view closestMnemonic(std::string_view word);

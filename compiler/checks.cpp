@@ -172,7 +172,7 @@ void Checker::checkTargets(const Instruction& in) {
   for (std::size_t m = 0; m < motors_.size(); ++m) {
     const vm::MotorSpec& spec = motors_[m];
     const Value& v = in.values[m];
-    if (in.op == vm::Op::Move) {
+    if (vm::has(in.op, vm::kRelative)) {
       const std::int64_t span = std::int64_t{spec.max} - spec.min;
       if (v.number > span || -v.number > span)
         diag_.error(v.pos, fmt::format("MOVE by {} can never keep motor {} within its range {}..{}", v.number,

@@ -37,9 +37,11 @@ std::string render(const Diagnostic& d, const SourceFile* source) {
   std::string out = d.pos.line ? fmt::format("{}:{}:{}: {}: {}\n", d.file, d.pos.line, d.pos.col,
                                              severityName(d.severity), d.message)
                                : fmt::format("{}: {}: {}\n", d.file, severityName(d.severity), d.message);
-  if (!source || d.pos.line == 0 || d.pos.line > source->lineCount()) return out;
-  const DisplayLine shown = displayLine(source->line(d.pos.line), d.pos.col);
-  out += fmt::format("  {}\n  {}^\n", shown.text, shown.caretIndent);
+  if (source && d.pos.line != 0 && d.pos.line <= source->lineCount()) {
+    const DisplayLine shown = displayLine(source->line(d.pos.line), d.pos.col);
+    out += fmt::format("  {}\n  {}^\n", shown.text, shown.caretIndent);
+  }
+  if (!d.hint.empty()) out += fmt::format("  hint: {}\n", d.hint);
   return out;
 }
 

@@ -21,7 +21,10 @@ struct Diagnostic {
   std::string message;  ///< a sentence without the position
   /// Stable, for tools and editors: which check found it ("undefined-label"),
   /// the same across releases and wordings.
-  std::string_view code;
+  std::string_view code = {};
+  /// How to get past it, when the tool knows ("allow more with
+  /// --max-steps N"); printed on its own line after the source line.
+  std::string hint = {};
 };
 
 std::string_view severityName(Severity s);

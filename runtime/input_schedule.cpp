@@ -3,58 +3,64 @@
 #include <algorithm>
 
 namespace rs::runtime {
-namespace {
 
-bool earlier(const InputChange& a, const InputChange& b) { return a.at < b.at; }
-
-void applyChange(const InputChange& change, std::uint8_t& inputs) {
-  const auto bit = lineBit(change.input);
-  inputs = change.on ? static_cast<std::uint8_t>(inputs | bit)
-                     : static_cast<std::uint8_t>(inputs & ~bit);
-}
-
-}  // namespace
-
-InputSchedule::InputSchedule(std::span<const InputChange> timed, std::size_t room) {
-  pending_.reserve(timed.size() + room);
+InputSchedule::InputSchedule(std::span<const InputChange> timed) {
+  auto sorted = std::make_shared<std::vector<InputChange>>();
+  sorted->reserve(timed.size());
   for (const auto& change : timed)
-    if (lineBit(change.input) != 0) pending_.push_back(change);
+    if (lineBit(change.input) != 0) sorted->push_back(change);
   // Stable: equal times keep file order.
-  std::stable_sort(pending_.begin(), pending_.end(), earlier);
+  std::stable_sort(sorted->begin(), sorted->end(),
+                   [](const InputChange& a, const InputChange& b) { return a.at < b.at; });
+  timed_ = std::move(sorted);
 }
 
-void InputSchedule::schedule(const InputChange& change) {
-  if (lineBit(change.input) == 0) return;
-  if (pending_.size() == pending_.capacity()) dropApplied();
-  // upper_bound: after every change already due at the same time.
-  const auto at = std::upper_bound(pending_.begin() + static_cast<std::ptrdiff_t>(next_),
-                                   pending_.end(), change, earlier);
-  pending_.insert(at, change);
+bool InputSchedule::schedule(const InputChange& change) {
+  if (lineBit(change.input) == 0) return true;
+  if (reactive_.size() >= kMaxPendingReactive) return false;
+  reactive_.insert(reactive_.end(), Pending{change.at, nextSeq_++, change.input, change.on});
+  return true;
 }
 
-void InputSchedule::applyUntil(vm::Micros t, std::uint8_t& inputs) {
-  while (next_ < pending_.size() && pending_[next_].at <= t) applyChange(pending_[next_++], inputs);
+// Visits the pending changes in effect order: (time, input, on).
+template <typename Visit>
+void InputSchedule::forEachPending(Visit&& visit) const {
+  std::size_t t = nextTimed_;
+  auto r = reactive_.begin();
+  while (t < timed_->size() || r != reactive_.end()) {
+    const bool timedFirst = t < timed_->size() && (r == reactive_.end() || (*timed_)[t].at <= r->at);
+    const InputChange c = timedFirst ? (*timed_)[t++] : InputChange{r->at, r->input, r->on};
+    if (!timedFirst) ++r;
+    const bool more = t < timed_->size() || r != reactive_.end();
+    const vm::Micros nextAt = !more ? c.at
+                              : (t < timed_->size() && (r == reactive_.end() || (*timed_)[t].at <= r->at))
+                                  ? (*timed_)[t].at
+                                  : r->at;
+    if (!visit(c, !more || nextAt != c.at)) return;
+  }
 }
 
 std::optional<vm::Micros> InputSchedule::whenReads(int input, bool on, std::uint8_t inputs) const {
   bool reads = (inputs & lineBit(input)) != 0;
-  for (std::size_t i = next_; i < pending_.size(); ++i) {
-    if (pending_[i].input == input) reads = pending_[i].on;
-    const bool lastAtThisTime = i + 1 == pending_.size() || pending_[i + 1].at != pending_[i].at;
-    if (lastAtThisTime && reads == on) return pending_[i].at;
-  }
-  return std::nullopt;
+  std::optional<vm::Micros> when;
+  forEachPending([&](const InputChange& c, bool lastAtThisTime) {
+    if (c.input == input) reads = c.on;
+    if (lastAtThisTime && reads == on) {
+      when = c.at;
+      return false;
+    }
+    return true;
+  });
+  return when;
 }
 
 bool InputSchedule::hasPendingFor(int input) const {
-  return std::any_of(pending_.begin() + static_cast<std::ptrdiff_t>(next_), pending_.end(),
-                     [input](const InputChange& c) { return c.input == input; });
-}
-
-// Reuses the room of applied changes before the vector would have to grow.
-void InputSchedule::dropApplied() {
-  pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(next_));
-  next_ = 0;
+  bool found = false;
+  forEachPending([&](const InputChange& c, bool) {
+    found = c.input == input;
+    return !found;
+  });
+  return found;
 }
 
 }  // namespace rs::runtime

@@ -1,5 +1,7 @@
 #include "runtime/sim_machine.h"
 
+#include "vm/interpreter.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -14,9 +16,6 @@ using vm::Status;
 
 constexpr Micros kMicrosPerSecond = 1'000'000;
 constexpr Micros kClockLimit = std::numeric_limits<Micros>::max();
-// Reactive changes that fit before the schedule first has to grow.
-constexpr std::size_t kReactiveRoom = 64;
-
 bool validLine(int n) { return lineBit(n) != 0; }
 
 const char* onOff(bool on) { return on ? "ON" : "OFF"; }
@@ -40,11 +39,30 @@ std::int64_t addDegrees(std::int64_t angle, std::int32_t by) {
 SimMachine::SimMachine(std::vector<vm::MotorSpec> motors, Stimuli stimuli)
     : motors_(std::move(motors)),
       rules_(std::move(stimuli.rules)),
-      schedule_(stimuli.changes, kReactiveRoom),
+      schedule_(stimuli.changes),
       positions_(motors_.size(), 0),
       home_(motors_.size(), 0),
       segments_(motors_.size()) {
   schedule_.applyUntil(now_, inputs_);
+}
+
+// Applies the stimuli due by now, telling the listener of each change.
+void SimMachine::applyInputs() {
+  if (inputListener_)
+    schedule_.applyUntil(now_, inputs_, inputListener_);
+  else
+    schedule_.applyUntil(now_, inputs_);
+}
+
+SimMachine::State SimMachine::state() const {
+  return {positions_, segments_, now_, outputs_, inputs_, windowShift_, viewRotation_, schedule_.state()};
+}
+
+void SimMachine::restore(const State& s) {
+  positions_ = s.positions, segments_ = s.segments, now_ = s.now;
+  outputs_ = s.outputs, inputs_ = s.inputs;
+  windowShift_ = s.windowShift, viewRotation_ = s.viewRotation;
+  schedule_.restore(s.schedule);
 }
 
 // ceil(|delta| * 1 s / speed). |delta| < 2^32, so |delta| * 10^6 < 2^53:
@@ -118,22 +136,27 @@ Status SimMachine::setOutput(int output, bool on) {
     return Status::fault(fmt::format("output {} does not exist (outputs are 1..8)", output));
   const auto bit = lineBit(output);
   if (((outputs_ & bit) != 0) == on) return Status::ok();  // no change, no rule fires
-  outputs_ =
-      on ? static_cast<std::uint8_t>(outputs_ | bit) : static_cast<std::uint8_t>(outputs_ & ~bit);
-  fireRules(output, on);
-  schedule_.applyUntil(now_, inputs_);  // rules with no delay act at once
+  outputs_ = withLine(outputs_, output, on);
+  Status fired = fireRules(output, on);
+  applyInputs();  // rules with no delay act at once
+  return fired;
+}
+
+Status SimMachine::fireRules(int output, bool on) {
+  for (const auto& rule : rules_) {
+    if (rule.output != output || rule.outputOn != on) continue;
+    if (!schedule_.schedule({saturatingAdd(now_, std::max<Micros>(rule.delay, 0)), rule.input, rule.inputOn}))
+      return Status::fault(fmt::format(
+          "the stimuli rule {}'when output {} {} then input {} {} after {}' has {} input changes waiting to happen: "
+          "output {} switches faster than the rule's delay",
+          rule.line ? fmt::format("of line {} ", rule.line) : std::string(), rule.output, onOff(rule.outputOn),
+          rule.input, onOff(rule.inputOn), vm::formatSeconds(rule.delay), kMaxPendingReactive, output));
+  }
   return Status::ok();
 }
 
-void SimMachine::fireRules(int output, bool on) {
-  for (const auto& rule : rules_)
-    if (rule.output == output && rule.outputOn == on)
-      schedule_.schedule(
-          {saturatingAdd(now_, std::max<Micros>(rule.delay, 0)), rule.input, rule.inputOn});
-}
-
 bool SimMachine::input(int input) {
-  schedule_.applyUntil(now_, inputs_);
+  applyInputs();
   return (inputs_ & lineBit(input)) != 0;
 }
 
@@ -162,7 +185,7 @@ Status SimMachine::delay(Micros duration) {
 // The one place the clock moves: inputs always match now().
 void SimMachine::advanceBy(Micros duration) {
   now_ += duration;
-  schedule_.applyUntil(now_, inputs_);
+  applyInputs();
 }
 
 void SimMachine::window(std::int32_t x, std::int32_t y, std::int32_t z) {

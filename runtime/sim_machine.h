@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -52,7 +53,9 @@ class SimMachine final : public vm::Machine {
   vm::Status moveTo(std::span<const std::int32_t> targets) override;
   std::span<const std::int32_t> positions() const override { return positions_; }
 
-  /// When the output changes state, the rules for it schedule their inputs.
+  /// When the output changes state, the rules for it schedule their inputs;
+  /// Fault when a rule would leave more than kMaxPendingReactive changes
+  /// waiting (an output switched faster than the rule's delay).
   vm::Status setOutput(int output, bool on) override;
   bool input(int input) override;
   /// Advances the clock to the first time the input reads `on`; Deadlock if
@@ -87,11 +90,29 @@ class SimMachine final : public vm::Machine {
   CameraTriple windowShift() const { return windowShift_; }
   CameraTriple viewRotation() const { return viewRotation_; }
 
+  /// Called with (time, inputs after) whenever the input mask changes, at
+  /// the time of the stimulus (which may fall inside a move or a DELAY).
+  void onInputChange(std::function<void(vm::Micros, std::uint8_t)> listener) { inputListener_ = std::move(listener); }
+
+  /// Everything that changes during a run, for snapshots.
+  struct State {
+    std::vector<std::int32_t> positions;
+    std::vector<MotorSegment> segments;
+    vm::Micros now = 0;
+    std::uint8_t outputs = 0, inputs = 0;
+    CameraTriple windowShift, viewRotation;
+    InputSchedule::State schedule;
+    bool operator==(const State&) const = default;
+  };
+  State state() const;
+  void restore(const State& state);
+
  private:
   vm::Status checkTargets(std::span<const std::int32_t> targets) const;
   vm::Micros travelTime(std::size_t motor, std::int32_t target) const;
   void advanceBy(vm::Micros duration);
-  void fireRules(int output, bool on);
+  vm::Status fireRules(int output, bool on);
+  void applyInputs();
 
   std::vector<vm::MotorSpec> motors_;
   std::vector<ReactiveRule> rules_;
@@ -104,6 +125,7 @@ class SimMachine final : public vm::Machine {
   std::uint8_t inputs_ = 0;
   CameraTriple windowShift_;
   CameraTriple viewRotation_;
+  std::function<void(vm::Micros, std::uint8_t)> inputListener_;
 };
 
 }  // namespace rs::runtime

@@ -189,9 +189,11 @@ StimuliParse parseStimuli(std::string_view text, std::string_view fileName) {
     ++lineNo;
     const auto newline = text.find('\n');
     const auto line = text.substr(0, newline);
+    const std::size_t rulesBefore = result.stimuli.rules.size();
     if (auto failure = parseLine(line, result.stimuli))
       result.errors.push_back({std::string(fileName), clampToInt(lineNo),
                                clampToInt(failure->offset + 1), std::move(failure->message)});
+    if (result.stimuli.rules.size() > rulesBefore) result.stimuli.rules.back().line = clampToInt(lineNo);
     if (newline == std::string_view::npos) break;
     text.remove_prefix(newline + 1);
   }

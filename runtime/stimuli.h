@@ -33,6 +33,7 @@ struct ReactiveRule {
   int input = 1;
   bool inputOn = true;
   vm::Micros delay = 0;
+  int line = 0;  ///< where the stimuli file wrote it (0: not from a file)
   bool operator==(const ReactiveRule&) const = default;
 };
 

@@ -1,6 +1,12 @@
 // The interpreter: runs a verified image against a Machine. Variables live
 // in slots, the call stack is bounded, and every way a run can stop (END,
-// a runtime error, a deadlock, the step or time limit) is an outcome value.
+// a runtime error, a deadlock, a limit) is an outcome value. A run can be
+// resumed: `run` goes on from where the last call paused, so a debugger,
+// a test runner or a teach pendant can step, run to a breakpoint or to a
+// simulated time, look, and go on. Its whole state is a value
+// (`InterpreterState`) that can be saved and put back.
+//
+// Only the run layer (runtime/run.h) constructs an interpreter.
 #pragma once
 
 #include <cstdint>
@@ -16,32 +22,68 @@ namespace rs::vm {
 struct RunLimits {
   std::uint64_t maxSteps = 100'000'000;        // instructions executed
   Micros maxTime = Micros{3600} * 1'000'000;   // simulated time
+  /// Instructions in a row while the clock stands still (a loop that never
+  /// moves, waits or delays); 0 = no limit.
+  std::uint64_t maxStepsPerInstant = 10'000'000;
 };
 
 enum class StopReason : std::uint8_t {
-  End,          // END, or ran past the last instruction
-  RuntimeError, // bad value, call stack overflow, machine fault
-  Deadlock,     // WAITFOR that nothing will satisfy
+  End,           // END, or ran past the last instruction
+  RuntimeError,  // bad value, call stack overflow, machine fault
+  Deadlock,      // WAITFOR that nothing will satisfy
   StepLimit,
   TimeLimit,
+  InstantLimit,  // maxStepsPerInstant instructions without the clock moving
+  Paused,        // a pause point was reached: the run can go on
 };
 
 struct RunOutcome {
   StopReason reason = StopReason::End;
-  std::string message;     // empty for End
-  std::uint32_t index = 0; // 0-based instruction that stopped the run
+  std::string message;     // empty for End and Paused
+  std::uint32_t index = 0; // 0-based instruction that stopped the run (Paused: the next one to run)
   std::uint64_t steps = 0; // instructions executed
   bool ok() const { return reason == StopReason::End; }
+  bool paused() const { return reason == StopReason::Paused; }
+  bool operator==(const RunOutcome&) const = default;
+};
+
+/// Where a resumed run pauses, besides finishing. Every condition is
+/// checked at no cost when unset.
+struct PausePoints {
+  /// Pause once this many instructions have run in all (not per call).
+  std::uint64_t atSteps = UINT64_MAX;
+  /// Pause right after the instruction that takes the clock past this
+  /// time; instructions that run at exactly this time still run.
+  Micros afterTime = INT64_MAX;
+  /// One byte per instruction, non-zero: pause before running it (but not
+  /// before the first instruction of a call, so a run can leave a
+  /// breakpoint it stands on). Empty: none.
+  std::span<const std::uint8_t> before;
+};
+
+/// Everything that changes while a program runs, apart from the machine.
+struct InterpreterState {
+  std::uint32_t pc = 0;        ///< next instruction (0-based)
+  std::uint64_t steps = 0;     ///< instructions executed so far
+  std::uint64_t stillSince = 0;  ///< `steps` when the clock last moved
+  Micros clockSeen = 0;        ///< the clock then
+  std::vector<std::int32_t> variables;
+  std::vector<std::uint32_t> callStack;  ///< return addresses, innermost last
+  std::vector<std::int32_t> softHome;
+  bool finished = false;
+  RunOutcome outcome;          ///< how it finished (when `finished`)
+  bool operator==(const InterpreterState&) const = default;
 };
 
 class Interpreter;
 
 /// Called after every executed instruction when set (tracing, recording,
-/// later a step debugger). One check per instruction when unset.
+/// a debugger's conditions). One check per instruction when unset.
 class StepObserver {
  public:
   virtual ~StepObserver() = default;
-  virtual void afterStep(const Interpreter& vm, std::uint32_t index) = 0;
+  /// Return true to pause the run after this step.
+  virtual bool afterStep(const Interpreter& vm, std::uint32_t index) = 0;
 };
 
 class Interpreter {
@@ -49,23 +91,33 @@ class Interpreter {
   /// `image` must have passed verify(); both must outlive the interpreter.
   Interpreter(const Image& image, Machine& machine);
 
-  RunOutcome run(const RunLimits& limits, StepObserver* observer = nullptr);
+  /// Runs from where the last call stopped until the program ends, fails,
+  /// hits a limit, or reaches a pause point. After an outcome other than
+  /// Paused the run is finished and further calls return at once.
+  RunOutcome run(const RunLimits& limits, StepObserver* observer = nullptr, const PausePoints& pause = {});
 
   const Image& image() const { return image_; }
   Machine& machine() const { return machine_; }
-  std::span<const std::int32_t> variables() const { return vars_; }
-  std::size_t callDepth() const { return callStack_.size(); }
+  std::span<const std::int32_t> variables() const { return state_.variables; }
+  std::span<const std::uint32_t> callStack() const { return state_.callStack; }
+  std::size_t callDepth() const { return state_.callStack.size(); }
+  std::uint32_t pc() const { return state_.pc; }
+  std::uint64_t steps() const { return state_.steps; }
+  bool finished() const { return state_.finished; }
+
+  const InterpreterState& state() const { return state_; }
+  /// Puts back a state saved from this interpreter (the machine's state is
+  /// the caller's to put back).
+  void restore(const InterpreterState& state) { state_ = state; }
 
  private:
   Status move(const Instr& in);
   Status moveTo(std::span<const std::int32_t> targets);
-  std::string rangeError(std::span<const std::int32_t> targets) const;
+  RunOutcome finish(StopReason reason, std::string message, std::uint32_t index);
 
   const Image& image_;
   Machine& machine_;
-  std::vector<std::int32_t> vars_;
-  std::vector<std::uint32_t> callStack_;
-  std::vector<std::int32_t> softHome_;
+  InterpreterState state_;
   std::vector<std::int32_t> target_;  // scratch, sized once
 };
 

@@ -66,11 +66,42 @@ enum class Format : std::uint8_t {
   Millis,        // c = milliseconds, 0 .. kMaxDelayMillis
 };
 
-/// Flags: how an opcode affects control flow.
+/// What a format looks like in source: how many operands it takes and the
+/// usage text of `robotsim help` and the compiler's arity messages.
+struct FormatInfo {
+  Format format;
+  std::string_view name;  ///< as docs/bytecode.md names it
+  std::uint8_t operands;  ///< written operands; a MotorVector takes one per motor instead
+  std::string_view usage;  ///< after the mnemonic, e.g. " <input> ON|OFF <line>"
+};
+
+inline constexpr std::size_t kFormatCount = static_cast<std::size_t>(Format::Millis) + 1;
+
+inline constexpr std::array<FormatInfo, kFormatCount> kFormats{{
+    {Format::None, "None", 0, ""},
+    {Format::MotorVector, "MotorVector", 0, " <value per motor>"},
+    {Format::Point, "Point", 1, " <point>"},
+    {Format::Target, "Target", 1, " <line>"},
+    {Format::InputJump, "InputJump", 3, " <input> ON|OFF <line>"},
+    {Format::Output, "Output", 2, " <output> ON|OFF"},
+    {Format::Input, "Input", 2, " <input> ON|OFF"},
+    {Format::VarCompare, "VarCompare", 4, " <variable> <|>|= <value> <line>"},
+    {Format::VarValue, "VarValue", 2, " <variable> <value>"},
+    {Format::Triple, "Triple", 3, " <x> <y> <z>"},
+    {Format::Millis, "Millis", 1, " <seconds>"},
+}};
+
+constexpr const FormatInfo& info(Format f) { return kFormats[static_cast<std::size_t>(f)]; }
+
+/// Flags: how an opcode affects control flow, the motors and the variables.
 enum OpFlag : std::uint8_t {
   kFallsThrough = 1 << 0,  // the next instruction may run after this one
                            // (for GOSUB: once the subroutine returns)
   kJumps = 1 << 1,         // d is a jump target
+  kMovesMotors = 1 << 2,   // may change motor positions (a move, a homing, RESET)
+  kRelative = 1 << 3,      // its motor values are offsets from where the motors are, not targets
+  kWritesVariable = 1 << 4,  // writes variable slot b
+  kUsesMachine = 1 << 5,   // acts on the machine: may fail, may take time
 };
 
 struct OpInfo {
@@ -79,42 +110,90 @@ struct OpInfo {
   Format format;
   std::uint8_t flags;
   std::string_view meaning;  // one line, for `robotsim help` and listings
+  std::string_view detail;   // `robotsim help NAME`: what the paper leaves open, as robotsim decides it
+  std::string_view example;  // one line of source
 };
 
 inline constexpr std::uint8_t kFT = kFallsThrough;
+inline constexpr std::uint8_t kMach = kUsesMachine;
 
 inline constexpr std::array<OpInfo, kOpCount> kOps{{
-    {Op::Move, "MOVE", Format::MotorVector, kFT, "move every motor by a relative number of encoder units"},
-    {Op::MoveTo, "MOVETO", Format::MotorVector, kFT, "move every motor to an absolute encoder position"},
-    {Op::MoveP, "MOVEP", Format::Point, kFT, "move every motor to a taught point"},
-    {Op::Goto, "GOTO", Format::Target, kJumps, "jump unconditionally"},
-    {Op::JmpIn, "JMPIN", Format::InputJump, kFT | kJumps, "jump if an input is ON (or OFF)"},
-    {Op::OutSig, "OUTSIG", Format::Output, kFT, "switch an output ON or OFF"},
-    {Op::JmpVar, "JMPVAR", Format::VarCompare, kFT | kJumps, "jump if a variable compares true with a value"},
-    {Op::Gosub, "GOSUB", Format::Target, kFT | kJumps, "call a subroutine"},
-    {Op::Return, "RETURN", Format::None, 0, "return from a subroutine"},
-    {Op::WaitFor, "WAITFOR", Format::Input, kFT, "wait until an input is ON (or OFF)"},
-    {Op::Add, "ADD", Format::VarValue, kFT, "add a value to a variable"},
-    {Op::Reset, "RESET", Format::None, kFT, "put the workcell back where it started"},
-    {Op::Window, "WINDOW", Format::Triple, kFT, "shift the view of the workcell in x, y, z"},
-    {Op::View, "VIEW", Format::Triple, kFT, "rotate the view of the workcell about x, y, z"},
-    {Op::Delay, "DELAY", Format::Millis, kFT, "wait a number of seconds"},
-    {Op::HrdHome, "HRDHOME", Format::None, kFT, "move every motor to encoder position 0"},
-    {Op::SetSoft, "SETSOFT", Format::MotorVector, kFT, "set the software home position"},
-    {Op::GoSoft, "GOSOFT", Format::None, kFT, "move every motor to the software home position"},
-    {Op::Set, "SET", Format::VarValue, kFT, "assign a value to a variable"},
-    {Op::End, "END", Format::None, 0, "end the program"},
+    {Op::Move, "MOVE", Format::MotorVector, kFT | kMach | kMovesMotors | kRelative,
+     "move every motor by a relative number of encoder units",
+     "Values are encoder units, one per motor in the robot's order (E D C B A on the default Rhino SCARA). "
+     "Each motor moves at its own speed; the instruction ends when the last one arrives.",
+     "MOVE 100 -50 0 0 0"},
+    {Op::MoveTo, "MOVETO", Format::MotorVector, kFT | kMach | kMovesMotors,
+     "move every motor to an absolute encoder position",
+     "Targets are absolute encoder positions; each must lie in its motor's range.", "MOVETO 0 200 -100 0 120"},
+    {Op::MoveP, "MOVEP", Format::Point, kFT | kMach | kMovesMotors, "move every motor to a taught point",
+     "The point is defined after the POINTS line of the same file.", "MOVEP PICK"},
+    {Op::Goto, "GOTO", Format::Target, kJumps, "jump unconditionally",
+     "The line is an instruction number (1 = first instruction) or a label.", "GOTO loop"},
+    {Op::JmpIn, "JMPIN", Format::InputJump, kFT | kJumps, "jump if an input is ON (or OFF)",
+     "Reads input 1..8 now; jumps if it is in the given state, else continues.", "JMPIN 3 ON done"},
+    {Op::OutSig, "OUTSIG", Format::Output, kFT | kMach, "switch an output ON or OFF",
+     "Outputs are numbered 1..8 and start OFF.", "OUTSIG 1 ON"},
+    {Op::JmpVar, "JMPVAR", Format::VarCompare, kFT | kJumps, "jump if a variable compares true with a value",
+     "Variables are 32-bit integers that start at 0; compares with <, > or =.", "JMPVAR N < 10 loop"},
+    {Op::Gosub, "GOSUB", Format::Target, kFT | kJumps, "call a subroutine",
+     "Calls nest up to 64 deep; deeper is a runtime error.", "GOSUB pick"},
+    {Op::Return, "RETURN", Format::None, 0, "return from a subroutine",
+     "Returns to the instruction after the last GOSUB.", "RETURN"},
+    {Op::WaitFor, "WAITFOR", Format::Input, kFT | kMach, "wait until an input is ON (or OFF)",
+     "Waits (in simulated time) until the input is in the state; a wait nothing can end is a deadlock error.",
+     "WAITFOR 2 ON"},
+    {Op::Add, "ADD", Format::VarValue, kFT | kWritesVariable, "add a value to a variable",
+     "A negative value subtracts; overflowing 32 bits is a runtime error.", "ADD N -1"},
+    {Op::Reset, "RESET", Format::None, kFT | kMach | kMovesMotors, "put the workcell back where it started",
+     "Every motor goes back to where the run started, instantly; outputs and variables are kept.", "RESET"},
+    {Op::Window, "WINDOW", Format::Triple, kFT | kMach, "shift the view of the workcell in x, y, z",
+     "Shifts the view of the workcell by x, y, z (whole numbers).", "WINDOW 0 -100 0"},
+    {Op::View, "VIEW", Format::Triple, kFT | kMach, "rotate the view of the workcell about x, y, z",
+     "Rotates the view of the workcell by x, y, z degrees (whole numbers).", "VIEW 30 0 45"},
+    {Op::Delay, "DELAY", Format::Millis, kFT | kMach, "wait a number of seconds",
+     "Seconds, with up to three decimals (milliseconds); at most one day.", "DELAY 0.25"},
+    {Op::HrdHome, "HRDHOME", Format::None, kFT | kMach | kMovesMotors, "move every motor to encoder position 0",
+     "Every motor moves to encoder position 0 at its speed.", "HRDHOME"},
+    {Op::SetSoft, "SETSOFT", Format::MotorVector, kFT, "set the software home position",
+     "One value per motor, each within its range; takes no time.", "SETSOFT 0 100 0 0 0"},
+    {Op::GoSoft, "GOSOFT", Format::None, kFT | kMach | kMovesMotors,
+     "move every motor to the software home position",
+     "Moves to the SETSOFT position (all zeros before any SETSOFT).", "GOSOFT"},
+    {Op::Set, "SET", Format::VarValue, kFT | kWritesVariable, "assign a value to a variable",
+     "Assigns a whole number to a variable.", "SET N 0"},
+    {Op::End, "END", Format::None, 0, "end the program", "Ends the run. Running past the last instruction ends it too.",
+     "END"},
 }};
 
-// The table is indexed by opcode: keep it in enum order.
-consteval bool opTableInOrder() {
+// The tables are indexed by opcode and by format: keep them in enum order.
+consteval bool tablesInOrder() {
   for (std::size_t i = 0; i < kOps.size(); ++i)
     if (static_cast<std::size_t>(kOps[i].op) != i) return false;
+  for (std::size_t i = 0; i < kFormats.size(); ++i)
+    if (static_cast<std::size_t>(kFormats[i].format) != i) return false;
   return true;
 }
-static_assert(opTableInOrder(), "kOps must list opcodes in enum order");
+static_assert(tablesInOrder(), "kOps and kFormats must list their entries in enum order");
+
+// The flags must agree with the formats: a relative opcode moves motors by a
+// motor vector; only a VarValue writes a variable; every help text is there.
+consteval bool flagsAgree() {
+  for (const OpInfo& op : kOps) {
+    if ((op.flags & kRelative) && (!(op.flags & kMovesMotors) || op.format != Format::MotorVector)) return false;
+    if (((op.flags & kWritesVariable) != 0) != (op.format == Format::VarValue)) return false;
+    if (((op.flags & kJumps) != 0) != (op.format == Format::Target || op.format == Format::InputJump ||
+                                       op.format == Format::VarCompare))
+      return false;
+    if ((op.flags & kMovesMotors) && !(op.flags & kUsesMachine)) return false;
+    if (op.meaning.empty() || op.detail.empty() || op.example.empty()) return false;
+  }
+  return true;
+}
+static_assert(flagsAgree(), "an opcode's flags contradict its format, or it lacks a help text");
 
 constexpr const OpInfo& info(Op op) { return kOps[static_cast<std::size_t>(op)]; }
+constexpr bool has(Op op, OpFlag flag) { return (info(op).flags & flag) != 0; }
 
 /// Finds an opcode by mnemonic, ignoring case ("moveto", "MoveTo").
 std::optional<Op> opByName(std::string_view name);

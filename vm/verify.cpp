@@ -49,7 +49,7 @@ std::string checkOperands(const Image& image, const Instr& in) {
       if (in.b != image.motors.size())
         return fmt::format("moves {} motors, the image has {}", in.b, image.motors.size());
       if (!constants(in.c, in.b)) return fmt::format("constant index {} out of bounds", in.c);
-      if (in.op != Op::Move)
+      if (!has(in.op, kRelative))
         for (std::size_t i = 0; i < in.b; ++i)
           if (!inRange(image.motors[i], image.constants[in.c + i]))
             return fmt::format("motor {} target {} outside its range", image.motors[i].letter,

@@ -9,20 +9,16 @@
 #include <cmath>
 #include <sstream>
 
-#include "cli/lib/app.h"
-#include "cli/lib/program_file.h"
+#include "base/file_io.h"
+#include "cli/lib/exit_codes.h"
+#include "cli/lib/options.h"
 #include "cli/lib/report.h"
-#include "compiler/library.h"
-#include "runtime/grasp_observer.h"
 #include "runtime/render/animation.h"
 #include "runtime/render/draw.h"
 #include "runtime/render/moment.h"
 #include "runtime/render/picture.h"
-#include "runtime/render/recording.h"
-#include "runtime/sim_machine.h"
-#include "runtime/stimuli.h"
+#include "runtime/run.h"
 #include "runtime/stimuli_text.h"
-#include "model/workcell/cell_file.h"
 #include "vm/disasm.h"
 
 namespace rs::cli {
@@ -86,75 +82,6 @@ bool cameraFrom(const RenderOptions& o, render::Camera& camera, std::ostream& er
 
 // ---- inputs -----------------------------------------------------------------
 
-// A workcell and, when asked for, a program compiled for its first robot.
-struct Loaded {
-  std::optional<workcell::Workcell> cell;
-  LoadedProgram program;
-  bool ok = false;
-};
-
-bool sameMotors(const vm::Image& image, const workcell::Workcell& cell) {
-  return !cell.robots.empty() && image.motors == compiler::motorTable(cell.robots.front().robot);
-}
-
-// CELL (a file or library name) and PROG (a source or an image). Without
-// CELL, an image's own cell is used. Every problem is printed.
-Loaded load(const RenderOptions& o, bool wantProgram, std::ostream& err) {
-  Loaded l;
-  auto library = std::make_shared<compiler::Library>(compiler::librarySearchPath(o.libDirs));
-  l.program.descriptions = library;
-  if (!o.cell.empty()) {
-    l.cell = library->workcell(o.cell);
-    printDiagnostics(err, library->diagnostics(), l.program);
-    if (!l.cell) return l;
-  }
-  if (!wantProgram) {
-    l.ok = true;
-    return l;
-  }
-  if (l.cell && l.cell->robots.empty()) {
-    err << fmt::format("{}: error: the workcell has no robot to run the program\n", o.cell);
-    return l;
-  }
-  LoadedProgram program = loadProgram(o.program, l.cell ? cellTarget(*l.cell) : defaultTarget());
-  program.descriptions = library;
-  l.program = std::move(program);
-  printDiagnostics(err, l.program.diagnostics, l.program);
-  if (!l.program.ok() || hasErrors(l.program.diagnostics)) return l;
-  const vm::Image& image = *l.program.image;
-  if (!l.program.source) {  // a compiled image
-    if (!l.cell && !image.cell.empty()) {
-      if (const std::string error = decodeImageCell(image, l.cell); !error.empty()) {
-        err << fmt::format("{}: error: image rejected: {}\n", o.program, error);
-        return l;
-      }
-    }
-    if (!l.cell) {
-      err << fmt::format("{}: error: the image carries no workcell; give one with --cell\n", o.program);
-      return l;
-    }
-    if (!sameMotors(image, *l.cell)) {
-      err << fmt::format("{}: error: the image was compiled for robot '{}', whose motors differ from those of '{}'\n",
-                         o.program, image.robotName,
-                         l.cell->robots.empty() ? l.cell->name : l.cell->robots.front().robot.name);
-      return l;
-    }
-  } else if (!l.cell) {
-    err << "robotsim: error: which workcell? give it with --cell CELL\n";
-    return l;
-  }
-  l.ok = true;
-  return l;
-}
-
-// Stimuli from --stimuli FILE and every --input, each problem printed.
-bool stimuliFrom(const RenderOptions& o, runtime::Stimuli& stimuli, std::ostream& err) {
-  std::vector<diag::Diagnostic> diags;
-  const bool ok = loadStimuli(o.stimuliFile, o.inputs, stimuli, diags);
-  for (const diag::Diagnostic& d : diags) err << diag::render(d, nullptr);
-  return ok;
-}
-
 bool seconds(const std::string& text, std::string_view option, vm::Micros& micros, std::ostream& err) {
   const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(text);
   if (!parsed.error.empty()) {
@@ -178,7 +105,7 @@ std::string baseName(const std::string& path) {
 }
 
 // The page's listing: the source's lines, or the disassembly of an image.
-render::Listing listing(const LoadedProgram& program) {
+render::Listing listing(const launch::LoadedProgram& program) {
   const vm::Image& image = *program.image;
   render::Listing l;
   l.name = baseName(program.source ? program.source->name() : image.sourceName);
@@ -197,13 +124,25 @@ render::Listing listing(const LoadedProgram& program) {
 // The first option given to `render` that only a run uses, when there is
 // no --program to run ("" when none).
 std::string_view withoutProgram(const RenderOptions& o) {
-  if (!o.program.empty()) return "";
+  if (!o.program.file.empty()) return "";
   if (!o.at.empty()) return "--at";
-  if (!o.inputs.empty()) return "--input";
-  if (!o.stimuliFile.empty()) return "--stimuli";
-  if (o.maxSteps != 0) return "--max-steps";
-  if (!o.maxTime.empty()) return "--max-time";
-  return "";
+  return o.run.firstGiven();
+}
+
+// The program's run on the workcell, every problem of the program and of
+// the run's options printed (all of them, so that one call reports every
+// mistake); null when anything is wrong. `maxTime`, when set, overrides
+// --max-time.
+std::unique_ptr<runtime::Run> prepare(const launch::LoadedProgram& program, const RenderOptions& o,
+                                      std::uint64_t defaultMaxSteps, std::optional<vm::Micros> maxTime,
+                                      std::ostream& err, bool log = false) {
+  std::vector<diag::Diagnostic> diags = program.diagnostics;
+  std::optional<runtime::RunSpec> spec = launch::prepareRun(program, o.run, diags, defaultMaxSteps);
+  launch::printDiagnostics(err, diags, program);
+  if (!spec || !program.ok()) return nullptr;
+  if (maxTime) spec->limits.maxTime = *maxTime;
+  spec->log = log;
+  return std::make_unique<runtime::Run>(std::move(*spec));
 }
 
 // "run.html", "RUN.HTML": what animate writes.
@@ -239,26 +178,32 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     err << fmt::format("robotsim: error: {} needs --program\n", runOption);
     return kExitBadInput;
   }
-  vm::Micros at = 0, maxTime = vm::RunLimits{}.maxTime;
+  vm::Micros at = 0;
   if (!o.at.empty() && !seconds(o.at, "--at", at, err)) return kExitBadInput;
-  if (!o.maxTime.empty() && !seconds(o.maxTime, "--max-time", maxTime, err)) return kExitBadInput;
-  runtime::Stimuli stimuli;
-  if (!stimuliFrom(o, stimuli, err)) return kExitBadInput;
-  Loaded loaded = load(o, !o.program.empty(), err);
-  if (!loaded.ok) return kExitBadInput;
+  launch::LoadedProgram loaded;
+  if (o.program.file.empty()) {
+    loaded.cell = launch::loadCell(o.program, loaded);
+    launch::printDiagnostics(err, loaded.diagnostics, loaded);
+    if (!loaded.cell || diag::hasErrors(loaded.diagnostics)) return kExitBadInput;
+  } else {
+    loaded = launch::loadProgramToDraw(o.program);
+  }
+
+  // With --at the run needs to go on only until then.
+  std::unique_ptr<runtime::Run> run;
+  if (!o.program.file.empty() &&
+      !(run = prepare(loaded, o, vm::RunLimits{}.maxSteps, o.at.empty() ? std::nullopt : std::optional(at), err)))
+    return kExitBadInput;
 
   const workcell::Workcell& cell = *loaded.cell;
   render::CellPoser poser(cell);
   const render::Fit fit = render::fitView(poser.homePoints(), camera);  // for the starting view
   render::Caption caption{cell.name, std::nullopt};
-  if (!o.program.empty()) {
-    const vm::Image& image = *loaded.program.image;
-    const std::uint64_t maxSteps = o.maxSteps ? o.maxSteps : vm::RunLimits{}.maxSteps;
-    const render::Moment m =
-        render::runToMoment(image, std::move(stimuli), o.at.empty() ? maxTime : at, maxSteps, &cell);
+  if (run) {
+    const render::Moment m = render::momentOf(*run, o.at.empty() ? INT64_MAX : at);
     if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
-      const diag::Diagnostic d = runtimeDiagnostic(image, m.outcome, image.sourceName);
-      err << diag::render(d, loaded.program.sourceOf(d.file));
+      const vm::Image& image = run->image();
+      launch::printDiagnostics(err, {runtimeDiagnostic(image, m.outcome, image.sourceName)}, loaded);
       if (m.reached) err << "robotsim: note: the program did not end within --max-time; pick a moment with --at\n";
       return kExitRunFailed;
     }
@@ -266,7 +211,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     for (std::size_t i = 0; i < m.objects.size(); ++i) poser.setObjectPose(i, m.objects[i]);
     camera.view += Eigen::Vector3d(m.view.x, m.view.y, m.view.z);
     camera.window += Eigen::Vector3d(m.window.x, m.window.y, m.window.z);
-    caption.title = fmt::format("{} on {}", baseName(o.program), cell.name);
+    caption.title = fmt::format("{} on {}", baseName(o.program.file), cell.name);
     caption.seconds = static_cast<double>(o.at.empty() ? m.clock : at) / 1e6;
   }
   const render::Picture picture = render::makePicture(poser, camera, fit, caption);
@@ -294,38 +239,26 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   }
   render::Camera camera;
   if (!cameraFrom(o, camera, err)) return kExitBadInput;
-  vm::Micros maxTime = vm::RunLimits{}.maxTime;
-  if (!o.maxTime.empty() && !seconds(o.maxTime, "--max-time", maxTime, err)) return kExitBadInput;
-  runtime::Stimuli stimuli;
-  if (!stimuliFrom(o, stimuli, err)) return kExitBadInput;
-  Loaded loaded = load(o, true, err);
-  if (!loaded.ok) return kExitBadInput;
-
-  const vm::Image& image = *loaded.program.image;
-  runtime::SimMachine machine(image.motors, stimuli);
-  vm::Interpreter interpreter(image, machine);
-  // The objects follow the first robot's gripper; the recorder, called
-  // after them, records what each step took or let go.
-  const workcell::Workcell& cell = *loaded.cell;
-  runtime::ObjectsInGripper objects(&cell, machine.positions());
-  render::RunRecorder recorder(machine, objects.observer());
-  const vm::RunLimits limits{o.maxSteps ? o.maxSteps : kAnimateMaxSteps, maxTime};
-  const vm::RunOutcome outcome = interpreter.run(limits, objects.chain(&recorder));
-  const render::RunRecording recording = recorder.finish(outcome, stimuli);
+  const launch::LoadedProgram loaded = launch::loadProgramToDraw(o.program);
+  std::unique_ptr<runtime::Run> run = prepare(loaded, o, kAnimateMaxSteps, std::nullopt, err, /*log=*/true);
+  if (!run) return kExitBadInput;
+  const vm::RunOutcome outcome = run->runToEnd();
+  const runtime::RunLog& recording = *run->log();
 
   render::AnimationInput input;
-  input.cell = &cell;
+  input.cell = loaded.cell.get();
   input.run = &recording;
-  input.listing = listing(loaded.program);
+  input.listing = listing(loaded);
   input.camera = camera;
   if (!outcome.ok()) {
+    const vm::Image& image = run->image();
     const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
-    err << diag::render(d, loaded.program.sourceOf(d.file));
+    launch::printDiagnostics(err, {d}, loaded);
     input.outcome = d.pos.line ? fmt::format("line {}: {}", d.pos.line, d.message) : d.message;
   }
   const std::string html = render::animationHtml(input);
   if (!write(o.output, std::vector<std::uint8_t>(html.begin(), html.end()), err)) return kExitBadInput;
-  out << fmt::format("{} -> {} ({} instructions executed, {} s simulated)\n", o.program, o.output,
+  out << fmt::format("{} -> {} ({} instructions executed, {} s simulated)\n", o.program.file, o.output,
                      recording.steps.size(), vm::formatSeconds(recording.end));
   return outcome.ok() ? kExitOk : kExitRunFailed;
 }
@@ -334,38 +267,32 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
 
 namespace {
 
-void addCommon(CLI::App* cmd, RenderOptions& o) {
+void addCommon(CLI::App* cmd, RenderOptions& o, const std::string& maxStepsDefault) {
   cmd->add_option("--view", o.view, "Turn the image about x, y, z by RX,RY,RZ degrees (default 25,-35,0)");
   cmd->add_option("--window", o.window, "Shift the workcell by X,Y,Z (its own length units)");
   cmd->add_option("--zoom", o.zoom, "Magnify (1 = the workcell fits the picture)");
   cmd->add_flag("--axes", o.axes, "Draw each link's coordinate frame (the paper's AXES ON)");
-  cmd->add_option("--lib", o.libDirs, "Also look up description names in this directory (repeatable)")
-      ->allow_extra_args(false);
-  cmd->add_option("--input", o.inputs, "Input change N=ON@SECONDS or N=OFF@SECONDS (repeatable)")
-      ->allow_extra_args(false);
-  cmd->add_option("--stimuli", o.stimuliFile, "Stimuli file: timed input changes and reactive rules");
-  cmd->add_option("--max-steps", o.maxSteps, "Stop the run after this many instructions")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 62));
-  cmd->add_option("--max-time", o.maxTime, "Stop the run at this simulated time in seconds (default 3600)");
+  addLibOption(cmd, o.program);
+  addRunOptions(cmd, o.run, maxStepsDefault);
 }
 
 }  // namespace
 
 RenderCommands::RenderCommands(CLI::App& app) {
   render_ = app.add_subcommand("render", "Draw a workcell (PNG or SVG), at its placed pose or during a run");
-  render_->add_option("cell", o_.cell, "Workcell (or robot) description file or library name")->required();
-  render_->add_option("--program", o_.program, "Run this program on the workcell's first robot");
+  render_->add_option("cell", o_.program.cell, "Workcell (or robot) description file or library name")->required();
+  render_->add_option("--program", o_.program.file, "Run this program on the workcell's first robot");
   render_->add_option("--at", o_.at, "The moment of the run to draw, in seconds (default: its end)");
   render_->add_option("-o,--output", o_.output, "Picture to write: FILE.png or FILE.svg");
   render_->add_option("--size", o_.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
   render_->add_flag("--dump-lines{text}", o_.dump, "Print the projected 2-D lines: --dump-lines (text) or =json");
-  addCommon(render_, o_);
+  addCommon(render_, o_, std::to_string(vm::RunLimits{}.maxSteps));
 
   animate_ = app.add_subcommand("animate", "Write a self-contained HTML page that replays a program's run");
-  animate_->add_option("program", o_.program, "Program source (.rsp) or compiled image (.rsb)")->required();
-  animate_->add_option("--cell", o_.cell, "Workcell (or robot) to run on (an image may carry its own)");
+  animate_->add_option("program", o_.program.file, "Program source (.rsp) or compiled image (.rsb)")->required();
+  animate_->add_option("--cell", o_.program.cell, "Workcell (or robot) to run on (an image may carry its own)");
   animate_->add_option("-o,--output", o_.output, "HTML file to write")->required();
-  addCommon(animate_, o_);
+  addCommon(animate_, o_, std::to_string(kAnimateMaxSteps));
 }
 
 std::optional<int> RenderCommands::run(std::ostream& out, std::ostream& err) const {

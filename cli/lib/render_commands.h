@@ -9,6 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "launch/program.h"
+#include "launch/run_request.h"
+
 namespace CLI {
 class App;
 }
@@ -19,19 +22,16 @@ namespace rs::cli {
 inline constexpr std::uint64_t kAnimateMaxSteps = 1'000'000;
 
 struct RenderOptions {
-  std::string cell;                // render: positional; animate: --cell
-  std::string program;             // render: --program; animate: positional
+  /// file: render --program, animate's positional; cell: render's
+  /// positional, animate --cell; --lib.
+  launch::ProgramRequest program;
+  launch::RunRequest run;          // --input, --stimuli, --max-steps, --max-time
   std::string at;                  // render --at SECONDS
   std::string output;              // -o
   std::string view, window, size;  // "x,y,z", "x,y,z", "WxH"
   double zoom = 1.0;
   bool axes = false;
-  std::string dump;                  // --dump-lines: "", "text" or "json"
-  std::vector<std::string> libDirs;  // --lib
-  std::vector<std::string> inputs;   // --input N=ON@T
-  std::string stimuliFile;           // --stimuli
-  std::uint64_t maxSteps = 0;        // 0: the command's default
-  std::string maxTime;  // empty: not given (3600 s)
+  std::string dump;  // --dump-lines: "", "text" or "json"
 };
 
 int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err);

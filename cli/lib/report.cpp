@@ -18,6 +18,8 @@ std::string_view reasonText(vm::StopReason r) {
     case vm::StopReason::Deadlock: return "deadlock";
     case vm::StopReason::StepLimit: return "step limit";
     case vm::StopReason::TimeLimit: return "time limit";
+    case vm::StopReason::InstantLimit: return "clock standing still";
+    case vm::StopReason::Paused: return "paused";
   }
   return "?";
 }
@@ -29,43 +31,46 @@ std::string lampList(std::uint8_t bits) {
   return s.empty() ? "none" : s;
 }
 
-// Each object at the end of the run: where its AT corner is, and whether
-// the gripper holds it or it was moved.
-struct ObjectEnd {
-  std::string_view name;
-  Eigen::Vector3d at;
-  bool held, moved;
-};
+}  // namespace
 
-std::vector<ObjectEnd> objectEnds(const RunReport& r, std::span<const std::int32_t> motors) {
-  std::vector<ObjectEnd> ends;
-  if (!r.grasping || !r.cell) return ends;
-  for (std::size_t o = 0; o < r.cell->objects.size(); ++o) {
-    const workcell::PlacedObject& placed = r.cell->objects[o];
-    const Eigen::Isometry3d pose = r.grasping->objectPose(o, motors);
-    const bool moved = (pose.matrix() - placed.F_world_design.matrix()).cwiseAbs().maxCoeff() > 1e-9;
-    ends.push_back({placed.shape.name, pose * workcell::atCorner(placed.shape), r.grasping->held() == o, moved});
+bool RunReport::ok() const {
+  return run && run->outcome() && run->outcome()->ok() && !diag::hasErrors(diagnostics);
+}
+
+namespace {
+
+// How to get past a stop, where the command line can help.
+std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) {
+  switch (outcome.reason) {
+    case vm::StopReason::StepLimit: return "allow more with --max-steps N";
+    case vm::StopReason::TimeLimit: return "allow more with --max-time SECONDS";
+    case vm::StopReason::Deadlock: return "inputs change only by --input N=ON@SECONDS or a --stimuli file";
+    case vm::StopReason::InstantLimit: return "give the loop a DELAY, a move or a WAITFOR, or a way out";
+    case vm::StopReason::RuntimeError:
+      // The main program ran on into a subroutine: its END is missing.
+      if (image.code[outcome.index].op == vm::Op::Return)  // its one failure: an empty call stack
+        return "did the program run on into a subroutine? an END before the subroutine stops it there";
+      return "";
+    case vm::StopReason::End:
+    case vm::StopReason::Paused: return "";
   }
-  return ends;
+  return "";
 }
 
 }  // namespace
 
-bool RunReport::ok() const {
-  return outcome && outcome->ok() && !diag::hasErrors(diagnostics);
-}
-
 diag::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {
   const diag::Pos pos{image.lines[outcome.index], image.columns[outcome.index]};
   return {file, pos, diag::Severity::Error,
-          fmt::format("{}: {} (instruction {})", reasonText(outcome.reason), outcome.message, outcome.index + 1)};
+          fmt::format("{}: {} (instruction {})", reasonText(outcome.reason), outcome.message, outcome.index + 1), {},
+          std::string(hintFor(image, outcome))};
 }
 
 void printTextSummary(std::ostream& out, const RunReport& r) {
-  if (!r.outcome || !r.image || !r.vm) return;
-  const vm::Image& im = *r.image;
-  const vm::Machine& m = r.vm->machine();
-  const vm::RunOutcome& o = *r.outcome;
+  if (!r.run || !r.run->outcome()) return;
+  const vm::Image& im = r.run->image();
+  const vm::Machine& m = r.run->machine();
+  const vm::RunOutcome o = *r.run->outcome();
   const std::string where = o.ok() ? "" : fmt::format(" at line {}", im.lines[o.index]);
   out << fmt::format("run of {} on {}: {}{}\n", im.sourceName, im.robotName, reasonText(o.reason), where);
   out << fmt::format("  {}  {} s\n", r.realTime ? "elapsed time   " : "simulated time", vm::formatSeconds(m.now()));
@@ -74,10 +79,10 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   const auto pos = m.positions();
   for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? "  " : "", im.motors[i].letter, pos[i]);
   out << fmt::format("  motors          {}\n", motors);
-  if (r.tool) out << fmt::format("  tool centre     {}\n", pointText(r.tool->tcp(pos)));
-  const std::vector<ObjectEnd> objects = objectEnds(r, pos);
+  if (const auto tcp = r.run->tcp()) out << fmt::format("  tool centre     {}\n", pointText(*tcp));
+  const std::vector<runtime::ObjectView> objects = r.run->objects();
   for (std::size_t o = 0; o < objects.size(); ++o) {
-    const ObjectEnd& e = objects[o];
+    const runtime::ObjectView& e = objects[o];
     out << fmt::format("  {:<15} {} at {}{}\n", fmt::format("object {}", o + 1), e.name,
                        pointText({e.at.x(), e.at.y(), e.at.z()}), e.held ? ", held" : e.moved ? ", moved" : "");
   }
@@ -85,26 +90,26 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   out << fmt::format("  inputs          {}  (ON: {})\n", lampText(m.inputs()), lampList(m.inputs()));
   std::string vars;
   for (std::size_t i = 0; i < im.variables.size(); ++i)
-    vars += fmt::format("{}{}={}", i ? "  " : "", im.variables[i], r.vm->variables()[i]);
+    vars += fmt::format("{}{}={}", i ? "  " : "", im.variables[i], r.run->interpreter().variables()[i]);
   out << fmt::format("  variables       {}\n", vars.empty() ? "none" : vars);
 }
 
 void printJsonSummary(std::ostream& out, const RunReport& r) {
   Json j;
   j["status"] = r.ok() ? "ok" : "error";
-  if (r.outcome && r.image && r.vm) {
-    const vm::Image& im = *r.image;
-    const vm::Machine& m = r.vm->machine();
+  if (r.run && r.run->outcome()) {
+    const vm::Image& im = r.run->image();
+    const vm::Machine& m = r.run->machine();
     j["time"] = static_cast<double>(m.now()) / 1e6;
-    j["steps"] = r.outcome->steps;
+    j["steps"] = r.run->outcome()->steps;
     Json motors = Json::object();
     const auto pos = m.positions();
     for (std::size_t i = 0; i < pos.size(); ++i) motors[std::string(1, im.motors[i].letter)] = pos[i];
     j["motors"] = motors;
-    if (r.tool) j["tcp"] = roundedPoint(r.tool->tcp(pos));
-    if (r.grasping && r.cell) {
+    if (const auto tcp = r.run->tcp()) j["tcp"] = roundedPoint(*tcp);
+    if (r.run->cell()) {
       Json objects = Json::array();
-      for (const ObjectEnd& e : objectEnds(r, pos))
+      for (const runtime::ObjectView& e : r.run->objects())
         objects.push_back({{"name", e.name}, {"at", roundedPoint({e.at.x(), e.at.y(), e.at.z()})}, {"held", e.held},
                            {"moved", e.moved}});
       j["objects"] = objects;
@@ -117,7 +122,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     j["outputs"] = outputs;
     j["inputs"] = inputs;
     Json vars = Json::object();
-    for (std::size_t i = 0; i < im.variables.size(); ++i) vars[im.variables[i]] = r.vm->variables()[i];
+    for (std::size_t i = 0; i < im.variables.size(); ++i) vars[im.variables[i]] = r.run->interpreter().variables()[i];
     j["variables"] = vars;
   } else {
     j["time"] = 0;
@@ -128,12 +133,16 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     j["variables"] = Json::object();
   }
   Json diags = Json::array();
-  for (const diag::Diagnostic& d : r.diagnostics)
-    diags.push_back({{"file", d.file},
-                     {"line", d.pos.line},
-                     {"column", d.pos.col},
-                     {"severity", diag::severityName(d.severity)},
-                     {"message", d.message}});
+  for (const diag::Diagnostic& d : r.diagnostics) {
+    Json one = {{"file", d.file},
+                {"line", d.pos.line},
+                {"column", d.pos.col},
+                {"severity", diag::severityName(d.severity)},
+                {"message", d.message}};
+    if (!d.code.empty()) one["code"] = d.code;
+    if (!d.hint.empty()) one["hint"] = d.hint;
+    diags.push_back(std::move(one));
+  }
   j["diagnostics"] = diags;
   out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
 }

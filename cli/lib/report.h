@@ -6,22 +6,16 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
-#include "model/workcell/grasp.h"
-#include "model/workcell/tool_tracker.h"
+#include "runtime/run.h"
 #include "vm/interpreter.h"
 
 namespace rs::cli {
 
-/// What a run left behind; `outcome` is empty when nothing ran (the program
-/// did not compile or load).
+/// What a run left behind; `run` is null when nothing ran (the program did
+/// not compile or load), and its outcome is set once it finished.
 struct RunReport {
-  std::optional<vm::RunOutcome> outcome;
-  const vm::Image* image = nullptr;
-  const vm::Interpreter* vm = nullptr;
-  workcell::ToolTracker* tool = nullptr;  // set when the program ran on a workcell
-  workcell::Grasping* grasping = nullptr;  // likewise: where its objects ended
-  const workcell::Workcell* cell = nullptr;
-  bool realTime = false;                  // ran on a real controller: the clock is wall time
+  const runtime::Run* run = nullptr;
+  bool realTime = false;                      // ran on a real controller: the clock is wall time
   std::vector<diag::Diagnostic> diagnostics;  // compile + runtime
   bool ok() const;
 };

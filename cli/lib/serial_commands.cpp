@@ -13,9 +13,11 @@
 #include <optional>
 #include <sstream>
 
+#include "base/file_io.h"
 #include "cli/lib/app.h"
-#include "cli/lib/program_file.h"
 #include "compiler/library.h"
+#include "launch/program.h"
+#include "launch/rhino.h"
 #include "runtime/serial/emulator.h"
 #include "runtime/serial/interrupt.h"
 #include "runtime/serial/rhino_machine.h"
@@ -43,51 +45,6 @@ std::optional<T> parseWhole(std::string_view token, T lo, T hi) {
   return v;
 }
 
-// Defaults for the dialect, then the settings file, then each --serial-set.
-// `dialectText` is "mark3" or "mark4": CLI11 checks --dialect.
-bool buildSettings(const std::string& dialectText, const std::string& file, const std::vector<std::string>& sets,
-                   RhinoSettings& settings, std::string& error) {
-  settings = serial::defaultSettings(dialectText == "mark4" ? Dialect::Mark4 : Dialect::Mark3);
-  if (!file.empty()) {
-    const base::FileRead text = base::readFile(file, kMaxInputBytes);
-    if (!text.bytes) {
-      error = fmt::format("{}: cannot read serial settings: {}", file, text.error);
-      return false;
-    }
-    error = serial::applySettingsText(settings, *text.bytes, file);
-    if (!error.empty()) {
-      if (error.back() == '\n') error.pop_back();
-      return false;
-    }
-  }
-  for (const std::string& s : sets) {
-    error = serial::applySettingArg(settings, s);
-    if (!error.empty()) return false;
-  }
-  return true;
-}
-
-// Everything a serial run owns besides the machine, in the order it must be
-// torn down (last member first): the log link, the port, the log, the
-// clock, and last the Ctrl-C handler.
-struct Connection {
-  std::unique_ptr<serial::InterruptGuard> guard;
-  serial::SteadyClock clock;
-  std::unique_ptr<serial::SerialLog> log;
-  std::unique_ptr<serial::SerialPort> port;
-  std::unique_ptr<serial::LoggedLink> logged;
-};
-
-// The bytes a second Ctrl-C writes from the signal handler.
-std::string emergencyStop(const RhinoSettings& s, const std::vector<vm::MotorSpec>& motors) {
-  std::string bytes;
-  for (const std::string& c : serial::stopCommands(s.dialect, motors)) {
-    bytes += c;
-    bytes += serial::lineEndBytes(s.lineEnd);
-  }
-  return bytes;
-}
-
 std::string helpSettingsList() {
   std::string keys;
   for (const auto& [key, value] : serial::listSettings(serial::defaultSettings(Dialect::Mark3))) {
@@ -111,7 +68,7 @@ CLI::Validator settingValidator() {
 
 }  // namespace
 
-void addSerialOptions(CLI::App* cmd, SerialOptions& o) {
+void addSerialOptions(CLI::App* cmd, launch::SerialRequest& o) {
   CLI::Option* device =
       cmd->add_option("--device", o.device,
                       "Run on a Rhino controller on this serial device, in lock-step (robotsim ports lists them)");
@@ -128,38 +85,6 @@ void addSerialOptions(CLI::App* cmd, SerialOptions& o) {
   cmd->add_option("--serial-config", o.settingsFile, "Serial settings file: one KEY = VALUE per line")->needs(device);
   for (const char* name : {"--stimuli", "--input"})
     if (CLI::Option* stimuli = cmd->get_option_no_throw(name)) device->excludes(stimuli);
-}
-
-std::unique_ptr<vm::Machine> openRhino(const SerialOptions& o, const std::vector<vm::MotorSpec>& motors,
-                                       vm::Micros maxTime, std::string& error) {
-  RhinoSettings settings;
-  if (!buildSettings(o.dialect, o.settingsFile, o.settings, settings, error)) return nullptr;
-  auto conn = std::make_shared<Connection>();
-  if (!o.logFile.empty()) {
-    conn->log = serial::SerialLog::create(o.logFile, error);
-    if (!conn->log) return nullptr;
-  }
-  conn->port = serial::SerialPort::open(o.device, settings.line, error);
-  if (!conn->port) {
-    if (conn->log) conn->log->comment("cannot open: " + error);
-    return nullptr;
-  }
-  conn->guard = std::make_unique<serial::InterruptGuard>();
-  conn->guard->setEmergencyStop(conn->port->fd(), emergencyStop(settings, motors));
-  serial::Link* link = conn->port.get();
-  if (conn->log) {
-    conn->logged = std::make_unique<serial::LoggedLink>(*conn->port, *conn->log, conn->clock);
-    link = conn->logged.get();
-  }
-  auto machine = std::make_unique<serial::RhinoMachine>(motors, settings, *link, conn->clock, conn->log.get(),
-                                                        &conn->guard->flag());
-  machine->keepAlive(conn);
-  machine->setWaitLimit(maxTime);
-  if (vm::Status st = machine->open(); !st) {
-    error = st.message;
-    return nullptr;
-  }
-  return machine;
 }
 
 // --- robotsim ports --------------------------------------------------------------
@@ -338,7 +263,7 @@ std::string motorList(const std::vector<vm::MotorSpec>& motors) {
 int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err) {
   serial::EmulatorConfig config;
   std::string error;
-  if (!buildSettings(o.dialect, o.settingsFile, o.settings, config.settings, error)) {
+  if (!launch::buildSettings(o.dialect, o.settingsFile, o.settings, config.settings, error)) {
     err << "robotsim: error: " << error << '\n';
     return kExitBadInput;
   }
@@ -367,7 +292,7 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
   config.fault.slowDelay = static_cast<vm::Micros>(std::llround(o.slowDelay * 1e6));
   std::vector<std::string> script;
   if (!o.script.empty()) {
-    const base::FileRead text = base::readFile(o.script, kMaxInputBytes);
+    const base::FileRead text = base::readFile(o.script, launch::kMaxInputBytes);
     if (!text.bytes) {
       err << fmt::format("{}: error: cannot read the script: {}\n", o.script, text.error);
       return kExitBadInput;

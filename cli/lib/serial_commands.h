@@ -9,8 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "vm/image.h"
-#include "vm/machine.h"
+#include "launch/rhino.h"
 
 namespace CLI {
 class App;
@@ -18,26 +17,11 @@ class App;
 
 namespace rs::cli {
 
-/// run/check: --device, --dialect, --log-serial, --serial-set, --serial-config.
-struct SerialOptions {
-  std::string device;  // empty: simulation
-  std::string dialect = "mark3";
-  std::string logFile;
-  std::vector<std::string> settings;  // KEY=VALUE
-  std::string settingsFile;
-  bool active() const { return !device.empty(); }
-};
-
-/// Adds the options to `cmd`. Call it after the stimuli options are added:
+/// run/check: adds --device, --dialect, --log-serial, --serial-set and
+/// --serial-config to `cmd`. Call it after the stimuli options are added:
 /// --device then excludes --stimuli and --input (inputs come from the
 /// controller), and the other serial options need --device.
-void addSerialOptions(CLI::App* cmd, SerialOptions& o);
-
-/// Opens the port, installs the Ctrl-C handler (until the machine goes),
-/// makes first contact. Null with `error` set when anything fails; the
-/// message is ready for "robotsim: error: " + error. `maxTime` bounds WAITFOR.
-std::unique_ptr<vm::Machine> openRhino(const SerialOptions& o, const std::vector<vm::MotorSpec>& motors,
-                                       vm::Micros maxTime, std::string& error);
+void addSerialOptions(CLI::App* cmd, launch::SerialRequest& o);
 
 struct PortsOptions {
   bool all = false;  // also /dev/ttyS* nodes with no UART behind them

@@ -9,8 +9,8 @@ namespace rs::cli {
 
 namespace {
 
-// The variable an instruction wrote, if any (SET and ADD write slot b).
-bool writesVariable(const vm::Instr& in) { return in.op == vm::Op::Set || in.op == vm::Op::Add; }
+// The variable an instruction wrote, if any (slot b).
+bool writesVariable(const vm::Instr& in) { return vm::has(in.op, vm::kWritesVariable); }
 
 double seconds(vm::Micros t) { return static_cast<double>(t) / 1e6; }
 
@@ -39,14 +39,25 @@ std::string lampText(std::uint8_t bits) {
   return s;
 }
 
-std::string graspText(const workcell::GraspChange& change, const workcell::Workcell& cell) {
-  return fmt::format("{} {} (object {})", change.held ? "takes" : "lets go of", cell.objects[change.object].shape.name,
-                     change.object + 1);
+std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell& cell) {
+  return fmt::format("{} {} (object {})", event.held ? "takes" : "lets go of", cell.objects[event.object].shape.name,
+                     event.object + 1);
 }
 
-void TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
+TraceWriter::TraceWriter(std::ostream& out, TraceFormat format, const runtime::Run& run)
+    : out_(out), format_(format), run_(run), graspsSeen_(run.world() ? run.world()->eventCount() : 0) {}
+
+const runtime::GraspEvent* TraceWriter::newGrasp() {
+  const runtime::World* world = run_.world();
+  if (!world || world->eventCount() == graspsSeen_) return nullptr;
+  graspsSeen_ = world->eventCount();
+  return &world->lastEvent();
+}
+
+bool TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
   if (format_ == TraceFormat::Text) text(vm, index);
   else json(vm, index);
+  return false;
 }
 
 void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
@@ -56,7 +67,7 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
     for (const vm::MotorSpec& m : im.motors)
       motorsWidth_ += 3 + std::max(fmt::formatted_size("{}", m.min), fmt::formatted_size("{}", m.max));
     out_ << fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {:<8}  {}{}\n", "time", "instr", "line", "instruction",
-                        "motors", motorsWidth_, "outputs", tool_ ? fmt::format("{:<28}  ", "tool centre point") : "",
+                        "motors", motorsWidth_, "outputs", run_.world() ? fmt::format("{:<28}  ", "tool centre point") : "",
                         "changed");
     headerDone_ = true;
   }
@@ -66,9 +77,10 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
   const vm::Instr& in = im.code[index];
   std::string changed =
       writesVariable(in) ? fmt::format("{}={}", im.variables[in.b], vm.variables()[in.b]) : std::string();
-  if (grasp_ && cell_ && grasp_->lastChange())
-    changed += (changed.empty() ? "" : "  ") + graspText(*grasp_->lastChange(), *cell_);
-  const std::string tcp = tool_ ? fmt::format("{:<28}  ", pointText(tool_->tcp(pos))) : std::string();
+  if (const runtime::GraspEvent* g = newGrasp())
+    changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.world()->cell());
+  const std::optional<std::array<double, 3>> tool = run_.world() ? run_.world()->tcp(pos) : std::nullopt;
+  const std::string tcp = tool ? fmt::format("{:<28}  ", pointText(*tool)) : std::string();
   std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}{}", vm::formatSeconds(vm.machine().now()),
                                 index + 1, im.lines[index], vm::instructionText(im, index), motors, motorsWidth_,
                                 lampText(vm.machine().outputs()), tcp, changed);
@@ -92,14 +104,14 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   nlohmann::ordered_json outputs = nlohmann::ordered_json::array();
   for (int i = 0; i < 8; ++i) outputs.push_back(((vm.machine().outputs() >> i) & 1) != 0);
   j["outputs"] = outputs;
-  if (tool_) j["tcp"] = roundedPoint(tool_->tcp(pos));
+  if (const runtime::World* world = run_.world())
+    if (const auto tool = world->tcp(pos)) j["tcp"] = roundedPoint(*tool);
   nlohmann::ordered_json changed = nlohmann::ordered_json::object();
   if (writesVariable(in)) changed[im.variables[in.b]] = vm.variables()[in.b];
   j["changed"] = changed;
-  if (grasp_ && cell_ && grasp_->lastChange()) {
-    const workcell::GraspChange& g = *grasp_->lastChange();
-    j["grasp"] = {{"object", g.object + 1}, {"name", cell_->objects[g.object].shape.name}, {"held", g.held}};
-  }
+  if (const runtime::GraspEvent* g = newGrasp())
+    j["grasp"] = {{"object", g->object + 1}, {"name", run_.world()->cell().objects[g->object].shape.name},
+                  {"held", g->held}};
   out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
 }
 

@@ -4,8 +4,7 @@
 
 #include <ostream>
 
-#include "runtime/grasp_observer.h"
-#include "model/workcell/tool_tracker.h"
+#include "runtime/run.h"
 #include "vm/interpreter.h"
 
 namespace rs::cli {
@@ -14,28 +13,27 @@ enum class TraceFormat { Text, Json };
 
 class TraceWriter final : public vm::StepObserver {
  public:
-  /// With a tool tracker, each line also shows the tool centre point; with
-  /// a grasp observer (which must call this writer after itself), the steps
-  /// that take or let go of an object say so.
-  TraceWriter(std::ostream& out, TraceFormat format, workcell::ToolTracker* tool = nullptr,
-              const runtime::GraspObserver* grasp = nullptr, const workcell::Workcell* cell = nullptr)
-      : out_(out), format_(format), tool_(tool), grasp_(grasp), cell_(cell) {}
-  void afterStep(const vm::Interpreter& vm, std::uint32_t index) override;
+  /// Traces `run` (which must outlive the writer: pass the writer to its
+  /// observe()). On a workcell each line also shows the tool centre point,
+  /// and the steps that take or let go of an object say so.
+  TraceWriter(std::ostream& out, TraceFormat format, const runtime::Run& run);
+  bool afterStep(const vm::Interpreter& vm, std::uint32_t index) override;
 
  private:
   void text(const vm::Interpreter& vm, std::uint32_t index);
   void json(const vm::Interpreter& vm, std::uint32_t index);
+  /// The take or let-go of the step just run, if any.
+  const runtime::GraspEvent* newGrasp();
   std::ostream& out_;
   TraceFormat format_;
-  workcell::ToolTracker* tool_;
-  const runtime::GraspObserver* grasp_;
-  const workcell::Workcell* cell_;
+  const runtime::Run& run_;
+  std::uint64_t graspsSeen_ = 0;
   bool headerDone_ = false;
   std::size_t motorsWidth_ = 0;
 };
 
 /// "takes block (object 2)", "lets go of block (object 2)".
-std::string graspText(const workcell::GraspChange& change, const workcell::Workcell& cell);
+std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell& cell);
 
 /// "1.3....." : the digit of each line that is ON, '.' for OFF.
 std::string lampText(std::uint8_t bits);

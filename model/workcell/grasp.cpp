@@ -64,6 +64,10 @@ void Grasping::reset() {
   for (std::size_t o = 0; o < resting_.size(); ++o) resting_[o] = cell_->objects[o].F_world_design;
 }
 
+Eigen::Isometry3d Grasping::toolFrame(std::span<const std::int32_t> encoders) {
+  return tool_ ? tool_->frame(encoders) : Eigen::Isometry3d::Identity();
+}
+
 Eigen::Isometry3d Grasping::objectPose(std::size_t o, std::span<const std::int32_t> encoders) {
   if (held_ && *held_ == o && tool_) return tool_->frame(encoders) * offset_;
   return resting_[o];

@@ -59,6 +59,24 @@ class Grasping {
   Eigen::Isometry3d objectPose(std::size_t o, std::span<const std::int32_t> encoders);
   /// The same for an object that is not held (where it rests now).
   const Eigen::Isometry3d& restingPose(std::size_t o) const { return resting_[o]; }
+  /// The end-effector frame in the world for the robot's motors (identity
+  /// for a robot without a gripper).
+  Eigen::Isometry3d toolFrame(std::span<const std::int32_t> encoders);
+
+  /// What a grasp changes, for snapshots of a run.
+  struct State {
+    std::optional<std::size_t> held;
+    Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
+    std::vector<Eigen::Isometry3d> resting;
+    bool operator==(const State& o) const {  // exact: a restored run must be bit for bit the same
+      if (held != o.held || offset.matrix() != o.offset.matrix() || resting.size() != o.resting.size()) return false;
+      for (std::size_t i = 0; i < resting.size(); ++i)
+        if (resting[i].matrix() != o.resting[i].matrix()) return false;
+      return true;
+    }
+  };
+  State state() const { return {held_, offset_, resting_}; }
+  void restore(const State& s) { held_ = s.held, offset_ = s.offset, resting_ = s.resting; }
 
  private:
   std::optional<std::size_t> objectAt(const Eigen::Vector3d& point) const;

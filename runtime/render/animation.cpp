@@ -89,18 +89,19 @@ Json robotModel(const CellPoser& poser, std::size_t r, bool runsProgram) {
 // applies it to the object's pts (world coordinates at its placement P):
 // a take's F_E_object · P⁻¹ (into the end-effector frame), a let-go's
 // F_world_object · P⁻¹ (identity when the object is back at P).
-Json graspModel(const RunRecording& rec, const workcell::Workcell& cell) {
+Json graspModel(const runtime::RunLog& rec, const workcell::Workcell& cell) {
   Json step = Json::array(), at = Json::array(), object = Json::array(), held = Json::array(), pose = Json::array();
-  for (const GraspEvent& g : rec.grasps) {
-    if (g.object >= cell.objects.size()) continue;  // never expected: the recorder saw this cell
-    step.push_back(g.step), at.push_back(g.at), object.push_back(g.object), held.push_back(g.held);
+  for (const runtime::GraspRecord& record : rec.grasps) {
+    const runtime::GraspEvent& g = record.event;
+    if (g.object >= cell.objects.size()) continue;  // never expected: the log saw this cell
+    step.push_back(record.step), at.push_back(g.at), object.push_back(g.object), held.push_back(g.held);
     const Eigen::Isometry3d P_inv = cell.objects[g.object].F_world_design.inverse(Eigen::Isometry);
     for (const auto& v : matrix(g.pose * P_inv)) pose.push_back(v);
   }
   return {{"step", step}, {"at", at}, {"object", object}, {"held", held}, {"pose", pose}};
 }
 
-Json runModel(const RunRecording& rec, const workcell::Workcell& cell, const std::string& outcome) {
+Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const std::string& outcome) {
   Json motors = Json::array();
   for (const vm::MotorSpec& m : rec.motors)
     motors.push_back({{"letter", std::string(1, m.letter)},
@@ -111,24 +112,24 @@ Json runModel(const RunRecording& rec, const workcell::Workcell& cell, const std
                       {"max", m.max},
                       {"speed", m.speed}});
   Json index = Json::array(), start = Json::array(), stop = Json::array();
-  for (const StepRecord& s : rec.steps) index.push_back(s.index), start.push_back(s.start), stop.push_back(s.end);
+  for (const runtime::StepRecord& s : rec.steps) index.push_back(s.index), start.push_back(s.start), stop.push_back(s.end);
   Json moves = Json::array();
-  for (const std::vector<MotorMove>& list : rec.moves) {
+  for (const std::vector<runtime::MotorMove>& list : rec.moves) {
     Json step = Json::array(), from = Json::array(), to = Json::array(), t0 = Json::array(), t1 = Json::array();
-    for (const MotorMove& m : list)
+    for (const runtime::MotorMove& m : list)
       step.push_back(m.step), from.push_back(m.from), to.push_back(m.to), t0.push_back(m.start), t1.push_back(m.end);
     moves.push_back({{"step", step}, {"from", from}, {"to", to}, {"start", t0}, {"end", t1}});
   }
   Json outStep = Json::array(), outMask = Json::array();
-  for (const OutputChange& o : rec.outputs) outStep.push_back(o.step), outMask.push_back(o.outputs);
+  for (const runtime::OutputChange& o : rec.outputs) outStep.push_back(o.step), outMask.push_back(o.outputs);
   Json camStep = Json::array(), camView = Json::array(), camWindow = Json::array();
-  for (const CameraChange& c : rec.cameras) {
+  for (const runtime::CameraChange& c : rec.cameras) {
     camStep.push_back(c.step);
     for (std::int64_t v : {c.view.x, c.view.y, c.view.z}) camView.push_back(v);
     for (std::int64_t v : {c.window.x, c.window.y, c.window.z}) camWindow.push_back(v);
   }
   Json inAt = Json::array(), inMask = Json::array();
-  for (const InputLevel& l : rec.inputs) inAt.push_back(l.at), inMask.push_back(l.inputs);
+  for (const runtime::InputLevel& l : rec.inputs) inAt.push_back(l.at), inMask.push_back(l.inputs);
   return {{"end", rec.end},
           {"outcome", outcome},
           {"motors", motors},

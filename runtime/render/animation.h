@@ -1,5 +1,5 @@
 // The HTML animation of a run: one self-contained page (no network, every
-// script and style inlined) that replays a RunRecording on the workcell.
+// script and style inlined) that replays a run's log (runtime::RunLog) on the workcell.
 //
 // Why the page does the kinematics itself: it embeds the workcell as a
 // compact model (each robot's D-H chain and motor drives, each link's lines
@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "runtime/render/camera.h"
-#include "runtime/render/recording.h"
+#include "runtime/run_log.h"
 #include "model/workcell/model.h"
 
 namespace rs::render {
@@ -32,7 +32,7 @@ struct Listing {
 
 struct AnimationInput {
   const workcell::Workcell* cell = nullptr;  ///< its first robot ran the program
-  const RunRecording* run = nullptr;
+  const runtime::RunLog* run = nullptr;
   Listing listing;
   /// The starting camera. Its width x height (animate: the default
   /// 1024x768) choose the fit, as for a still of that size; the page keeps
@@ -49,7 +49,7 @@ struct AnimationInput {
 /// "axisLength" (fraction of the fit radius, kAxisLength), "toolRadius",
 /// "toolLineWidth" (pixels) and "toolColor" (a palette index) of the tool
 /// centre point's mark (draw.h). Objects
-/// the gripper carries: "run"."grasps" holds the run's GraspEvents as
+/// the gripper carries: "run"."grasps" holds the run's grasp records as
 /// parallel arrays "step", "at" (µs), "object" (index in "objects"),
 /// "held", and "pose" (12 numbers per event, a 3x4 column-major matrix
 /// that applies to the object's "pts", which are world coordinates at its

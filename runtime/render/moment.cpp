@@ -1,31 +1,24 @@
 #include "runtime/render/moment.h"
 
-#include "runtime/grasp_observer.h"
-
 namespace rs::render {
 
-// With the time limit set to `at`, the run stops right after the first
-// instruction that takes the clock past it; the instructions that take no
-// time at `at` itself (a VIEW, an OUTSIG) have run. The motors' segments
-// then describe the move in progress at `at`, if any.
-Moment runToMoment(const vm::Image& image, runtime::Stimuli stimuli, vm::Micros at, std::uint64_t maxSteps,
-                   const workcell::Workcell* cell) {
-  runtime::SimMachine machine(image.motors, std::move(stimuli));
-  vm::Interpreter interpreter(image, machine);
-  runtime::ObjectsInGripper objects(cell, machine.positions());
-  if (objects.observer()) objects.observer()->takeNothingEndingAfter(at);
+// The run pauses right after the first instruction that takes the clock
+// past `at` (or stops there at its time limit); the instructions that take
+// no time at `at` itself have run. The motors' segments then describe the
+// move in progress at `at`, if any.
+Moment momentOf(runtime::Run& run, vm::Micros at) {
   Moment m;
   m.at = at;
-  m.outcome = interpreter.run({maxSteps, at}, objects.chain(nullptr));
-  m.reached = m.outcome.ok() || (m.outcome.reason == vm::StopReason::TimeLimit && machine.now() > at);
-  m.encoders.resize(image.motors.size());
-  for (std::size_t i = 0; i < m.encoders.size(); ++i)
-    m.encoders[i] = m.outcome.ok() ? machine.positions()[i] : machine.positionAt(i, at);
-  m.clock = machine.now();
-  if (workcell::Grasping* grasping = objects.grasping())
-    for (std::size_t o = 0; o < cell->objects.size(); ++o) m.objects.push_back(grasping->objectPose(o, m.encoders));
-  m.view = machine.viewRotation();
-  m.window = machine.windowShift();
+  m.outcome = run.runUntilTime(at);
+  m.clock = run.clock();
+  m.reached = m.outcome.ok() || (m.outcome.paused() && run.pauseCause() == runtime::PauseCause::Time) ||
+              (m.outcome.reason == vm::StopReason::TimeLimit && m.clock > at);
+  m.encoders = run.motorsAt(at);
+  for (const runtime::ObjectView& o : run.objects(at)) m.objects.push_back(o.pose);
+  if (const runtime::SimMachine* sim = run.sim()) {
+    m.view = sim->viewRotation();
+    m.window = sim->windowShift();
+  }
   return m;
 }
 

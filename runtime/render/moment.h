@@ -1,18 +1,14 @@
-// A moment of a program's run, for a still: run the program until its
-// clock passes the moment, then read each motor's position at that time
-// from its last segment (SimMachine is analytic). The same answer as
-// stateAt on a full recording, without keeping one.
+// A moment of a program's run, for a still: run until the clock passes the
+// moment, then read each motor's position at that time from its last
+// segment (the simulated machine is analytic). The same answer as stateAt
+// on the run's log, without keeping one.
 #pragma once
 
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <vector>
 
-#include "runtime/sim_machine.h"
-#include "runtime/stimuli.h"
-#include "model/workcell/model.h"
-#include "vm/image.h"
-#include "vm/interpreter.h"
+#include "runtime/run.h"
 
 namespace rs::render {
 
@@ -23,16 +19,17 @@ struct Moment {
   vm::RunOutcome outcome;              ///< how the run stopped
   vm::Micros clock = 0;                ///< the clock when it stopped
   /// False when the run failed (runtime error, deadlock, step limit) at or
-  /// before `at`; reaching `at` (the time limit) or END is success.
+  /// before `at`; reaching `at` (a pause there, or the time limit past it)
+  /// or END is success.
   bool reached = false;
   /// With a workcell: each object's placement (F_world_design) at `at`,
-  /// carried by the gripper or resting (model/workcell/grasp.h).
+  /// carried by the gripper or resting (runtime/world.h).
   std::vector<Eigen::Isometry3d> objects;
 };
 
-/// Runs `image` (verified) with `stimuli` until the clock passes `at`; on
-/// `cell` (its first robot runs the program) the objects follow the gripper.
-Moment runToMoment(const vm::Image& image, runtime::Stimuli stimuli, vm::Micros at,
-                   std::uint64_t maxSteps = vm::RunLimits{}.maxSteps, const workcell::Workcell* cell = nullptr);
+/// Runs `run` (on the simulated machine) until its clock passes `at`, and
+/// reads everything at `at`. A closing move still under way at `at` has not
+/// taken anything yet.
+Moment momentOf(runtime::Run& run, vm::Micros at);
 
 }  // namespace rs::render

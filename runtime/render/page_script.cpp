@@ -212,7 +212,7 @@ const std::string_view kScript = R"JS('use strict';
     return [T[0] * x + T[3] * y + T[6] * z + T[9], T[1] * x + T[4] * y + T[7] * z + T[10]];
   }
 
-  // ---- The run: state at step k, time t (recording.cpp's stateAtStep).
+  // ---- The run: state at step k, time t (runtime/run_log.cpp's stateAtStep).
   function lastUpTo(list, k) {  // index of the last entry <= k in a sorted list, or -1
     let lo = 0, hi = list.length;
     while (lo < hi) { const mid = (lo + hi) >> 1; if (list[mid] <= k) lo = mid + 1; else hi = mid; }

@@ -42,7 +42,7 @@ constexpr const char* kRuntimeError =
     "  MOVE 600 0 0 0 0\n"
     "END\n";
 
-constexpr const char* kExitBadInput = "END\nGOTO 9\n";
+constexpr const char* kBadProgram = "END\nGOTO 9\n";
 
 // True if `s` is valid UTF-8 and has no control characters except newline
 // and tab: safe to print on a terminal.
@@ -84,7 +84,9 @@ void checkSummaryShape(const json& j) {
   REQUIRE(j["diagnostics"].is_array());
   for (const auto& d : j["diagnostics"]) {
     REQUIRE(d.is_object());
-    CHECK(d.size() == 5);
+    // Five fields always; "code" and "hint" when there is one.
+    CHECK(d.size() == std::size_t{5} + d.contains("code") + d.contains("hint"));
+    if (d.contains("hint")) CHECK(d["hint"].is_string());
     CHECK(d["file"].is_string());
     CHECK(d["line"].is_number_unsigned());
     CHECK(d["column"].is_number_unsigned());
@@ -101,7 +103,7 @@ TEST_CASE("cli: exit codes of run", "[cli]") {
   CHECK(ok.code == 0);
   CHECK(ok.err.empty());
   CHECK(runCli({"run", dir.write("rt.rsp", kRuntimeError)}).code == 1);
-  CHECK(runCli({"run", dir.write("bad.rsp", kExitBadInput)}).code == 2);
+  CHECK(runCli({"run", dir.write("bad.rsp", kBadProgram)}).code == 2);
   CHECK(runCli({"run", dir.write("dl.rsp", "WAITFOR 1 ON\nEND\n")}).code == 1);
   CHECK(runCli({"run", dir.file("missing.rsp")}).code == 2);
 }
@@ -131,7 +133,7 @@ TEST_CASE("cli: check", "[cli]") {
     CHECK(r.err.empty());
   }
   SECTION("a program that does not compile") {
-    const std::string bad = dir.write("bad.rsp", kExitBadInput);
+    const std::string bad = dir.write("bad.rsp", kBadProgram);
     const CliResult r = runCli({"check", bad});
     CHECK(r.code == 2);
     CHECK(r.out.empty());
@@ -168,7 +170,7 @@ TEST_CASE("cli: check", "[cli]") {
 TEST_CASE("cli: compile, disasm, tokens, ast, help exit codes", "[cli]") {
   TempDir dir;
   const std::string good = dir.write("good.rsp", kGood);
-  const std::string bad = dir.write("bad.rsp", kExitBadInput);
+  const std::string bad = dir.write("bad.rsp", kBadProgram);
   const std::string image = dir.file("good.rsb");
   SECTION("compile") {
     const CliResult r = runCli({"compile", good, "-o", image});
@@ -321,9 +323,10 @@ TEST_CASE("cli: --format=json summary", "[cli]") {
     CHECK(j["diagnostics"][0]["column"] == 1);
     CHECK(j["diagnostics"][0]["message"] ==
           "deadlock: input 2 never turns ON: no stimulus is scheduled (instruction 2)");
+    CHECK(j["diagnostics"][0]["hint"] == "inputs change only by --input N=ON@SECONDS or a --stimuli file");
   }
   SECTION("a compile error") {
-    const std::string f = dir.write("bad.rsp", kExitBadInput);
+    const std::string f = dir.write("bad.rsp", kBadProgram);
     const CliResult r = runCli({"run", f, "--format=json"});
     CHECK(r.code == 2);
     const json j = parseJson(r.out);

@@ -30,8 +30,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/file_io.h"
 #include "cli/lib/app.h"
-#include "cli/lib/program_file.h"
+#include "cli/lib/exit_codes.h"
+#include "launch/program.h"
 #include "compiler/compiler.h"
 #include "compiler/library.h"
 #include "tests/cli/cli_support.h"
@@ -335,7 +337,7 @@ TEST_CASE("the examples together use all 20 instructions", "[examples]") {
   std::set<rs::vm::Op> used;
   for (const fs::path& path : exampleSources()) {
     INFO(path.string());
-    rs::base::FileRead text = rs::base::readFile(path.string(), rs::cli::kMaxInputBytes);
+    rs::base::FileRead text = rs::base::readFile(path.string(), rs::launch::kMaxInputBytes);
     REQUIRE(text.bytes);
     const rs::diag::SourceFile source(path.string(), std::move(*text.bytes));
     // gantry_pick runs on the gantry cell; the others on the default robot.
@@ -344,7 +346,7 @@ TEST_CASE("the examples together use all 20 instructions", "[examples]") {
     const std::optional<rs::workcell::Workcell> cell = gantry ? library.workcell("gantry-cell") : std::nullopt;
     REQUIRE(cell.has_value() == gantry);
     const rs::compiler::CompileResult compiled =
-        rs::compiler::compile(source, gantry ? rs::cli::cellTarget(*cell) : rs::cli::defaultTarget());
+        rs::compiler::compile(source, gantry ? rs::launch::cellTarget(*cell) : rs::launch::defaultTarget());
     REQUIRE(compiled.ok());
     CHECK(compiled.diagnostics.empty());
     for (const rs::vm::Instr& in : compiled.image->code) used.insert(in.op);

@@ -9,9 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "cli/lib/program_file.h"
+#include <memory>
+
+#include "base/file_io.h"
+#include "compiler/compiler.h"
 #include "compiler/library.h"
+#include "launch/program.h"
 #include "model/workcell/model.h"
+#include "runtime/run.h"
 #include "tests/cli/cli_support.h"
 
 namespace rendertest {
@@ -38,10 +43,25 @@ inline std::vector<std::string> libraryRobots() {
 
 /// A program source compiled for the first robot of `c`.
 inline rs::vm::Image compile(const std::string& path, const rs::workcell::Workcell& c) {
-  rs::cli::LoadedProgram p = rs::cli::loadProgram(path, rs::cli::cellTarget(c));
+  const rs::base::FileRead text = rs::base::readFile(path, rs::launch::kMaxInputBytes);
+  INFO(text.error);
+  REQUIRE(text.bytes);
+  const rs::diag::SourceFile source(path, *text.bytes);
+  rs::compiler::CompileResult p = rs::compiler::compile(source, rs::launch::cellTarget(c));
   for (const auto& d : p.diagnostics) INFO(d.message);
   REQUIRE(p.image);
   return *p.image;
+}
+
+/// A run of `image` on the simulated machine, on `c` (a copy; may be null).
+inline std::unique_ptr<rs::runtime::Run> runOf(const rs::vm::Image& image, const rs::workcell::Workcell* c,
+                                               rs::runtime::Stimuli stimuli = {}, bool log = false) {
+  rs::runtime::RunSpec spec;
+  spec.image = std::make_shared<const rs::vm::Image>(image);
+  if (c) spec.cell = std::make_shared<const rs::workcell::Workcell>(*c);
+  spec.stimuli = std::move(stimuli);
+  spec.log = log;
+  return std::make_unique<rs::runtime::Run>(std::move(spec));
 }
 
 /// A program given as text, written to a scratch file and compiled.

@@ -1,13 +1,13 @@
-// RunRecorder and stateAt: a recorded run answers "where was everything at
-// time t" exactly as the machine itself would (runToMoment), inputs
+// RunLog and stateAt: a logged run answers "where was everything at time t"
+// exactly as the machine itself would (momentOf a fresh run), inputs
 // included, and keeps what the animation shows (steps, outputs, camera).
 #include <catch2/catch.hpp>
 
 #include "render_test_util.h"
 #include "runtime/render/moment.h"
-#include "runtime/render/recording.h"
+#include "runtime/run_log.h"
 
-using rs::render::RunRecording;
+using rs::runtime::RunLog;
 using rs::vm::Micros;
 
 namespace {
@@ -15,17 +15,15 @@ namespace {
 constexpr Micros kSecond = 1'000'000;
 
 struct Recorded {
-  RunRecording rec;
+  RunLog rec;
   rs::vm::RunOutcome outcome;
 };
 
 Recorded record(const rs::vm::Image& image, const rs::runtime::Stimuli& stimuli) {
-  rs::runtime::SimMachine machine(image.motors, stimuli);
-  rs::vm::Interpreter vm(image, machine);
-  rs::render::RunRecorder recorder(machine);
+  const auto run = rendertest::runOf(image, nullptr, stimuli, /*log=*/true);
   Recorded r;
-  r.outcome = vm.run({}, &recorder);
-  r.rec = recorder.finish(r.outcome, stimuli);
+  r.outcome = run->runToEnd();
+  r.rec = *run->log();
   return r;
 }
 
@@ -38,8 +36,8 @@ void checkAgainstMachine(const rs::vm::Image& image, const rs::runtime::Stimuli&
   for (const Micros t : times) {
     if (t < 0) continue;
     INFO("t = " << t);
-    const rs::render::RunState state = rs::render::stateAt(r.rec, t);
-    const rs::render::Moment m = rs::render::runToMoment(image, stimuli, t);
+    const rs::runtime::RunState state = rs::runtime::stateAt(r.rec, t);
+    const rs::render::Moment m = rs::render::momentOf(*rendertest::runOf(image, nullptr, stimuli), t);
     REQUIRE(m.reached);
     CHECK(state.encoders == m.encoders);
     CHECK(state.view == m.view);
@@ -63,7 +61,7 @@ TEST_CASE("VIEW, WINDOW, outputs and RESET are recorded at their steps", "[rende
       "VIEW 10 0 0\nMOVETO 400 0 0 0 0\nOUTSIG 2 ON\nWINDOW 0 5 0\nRESET\nDELAY 1\nEND\n", cell);
   const Recorded r = record(image, {});
   REQUIRE(r.outcome.ok());
-  const RunRecording& rec = r.rec;
+  const RunLog& rec = r.rec;
   REQUIRE(rec.steps.size() == 7);
   CHECK(rec.steps[1].start == 0);
   CHECK(rec.steps[1].end == kSecond);  // E: 400 units at 400/s
@@ -82,12 +80,12 @@ TEST_CASE("VIEW, WINDOW, outputs and RESET are recorded at their steps", "[rende
   for (std::size_t m = 1; m < rec.moves.size(); ++m) CHECK(rec.moves[m].empty());
   // Half-way through the move, and at its end (where the instructions that
   // take no time have all run: the state after RESET).
-  CHECK(rs::render::stateAt(rec, kSecond / 2).encoders[0] == 200);
-  CHECK(rs::render::stateAt(rec, kSecond / 2).step == std::optional<std::size_t>(1));
-  CHECK(rs::render::stateAt(rec, kSecond).encoders[0] == 0);
-  CHECK(rs::render::stateAt(rec, kSecond).step == std::optional<std::size_t>(5));
+  CHECK(rs::runtime::stateAt(rec, kSecond / 2).encoders[0] == 200);
+  CHECK(rs::runtime::stateAt(rec, kSecond / 2).step == std::optional<std::size_t>(1));
+  CHECK(rs::runtime::stateAt(rec, kSecond).encoders[0] == 0);
+  CHECK(rs::runtime::stateAt(rec, kSecond).step == std::optional<std::size_t>(5));
   // Step by step, as the page's buttons do: after OUTSIG, E is still at 400.
-  const rs::render::RunState afterOut = rs::render::stateAtStep(rec, 2, kSecond);
+  const rs::runtime::RunState afterOut = rs::runtime::stateAtStep(rec, 2, kSecond);
   CHECK(afterOut.encoders[0] == 400);
   CHECK(afterOut.outputs == 0b10);
   CHECK(afterOut.window == rs::runtime::CameraTriple{});
@@ -108,8 +106,8 @@ TEST_CASE("Inputs change at their stimulus times, even inside a DELAY", "[render
     CHECK(r.rec.inputs[i].at == expected[i].first);
     CHECK(r.rec.inputs[i].inputs == expected[i].second);
   }
-  CHECK(rs::render::stateAt(r.rec, 2 * kSecond - 1).inputs == 0b010);
-  CHECK(rs::render::stateAt(r.rec, 2 * kSecond).inputs == 0b110);
+  CHECK(rs::runtime::stateAt(r.rec, 2 * kSecond - 1).inputs == 0b010);
+  CHECK(rs::runtime::stateAt(r.rec, 2 * kSecond).inputs == 0b110);
 }
 
 TEST_CASE("The instruction that stops a run is the recording's last step", "[render]") {
@@ -120,14 +118,14 @@ TEST_CASE("The instruction that stops a run is the recording's last step", "[ren
   REQUIRE(r.rec.steps.size() == 2);
   CHECK(r.rec.steps.back().index == 1);
   CHECK(r.rec.steps.back().start == r.rec.steps.back().end);
-  const rs::render::Moment m = rs::render::runToMoment(image, {}, 10 * kSecond);
+  const rs::render::Moment m = rs::render::momentOf(*rendertest::runOf(image, nullptr), 10 * kSecond);
   CHECK_FALSE(m.reached);
 }
 
 TEST_CASE("one positionAt for the machine and the recording, segments compared by value", "[render]") {
   const rs::runtime::MotorSegment up{0, 7, 0, 2'333'334};
   CHECK(rs::runtime::positionAt(up, 3, 999'999) == 2);
-  CHECK(rs::runtime::positionAt({7, 0, 0, 2'333'334}, 3, 999'999) == 5);
+  CHECK(rs::runtime::positionAt(rs::runtime::MotorSegment{7, 0, 0, 2'333'334}, 3, 999'999) == 5);
   CHECK(rs::runtime::positionAt(up, 3, -5) == 0);
   CHECK(rs::runtime::positionAt(up, 3, 9'000'000) == 7);
   CHECK(up == rs::runtime::MotorSegment{0, 7, 0, 2'333'334});
@@ -142,10 +140,10 @@ TEST_CASE("one positionAt for the machine and the recording, segments compared b
 }
 
 TEST_CASE("positionAt rounds toward the segment's start, as SimMachine does", "[render]") {
-  const rs::render::MotorMove up{0, 0, 7, 0, 2'333'334}, down{0, 7, 0, 0, 2'333'334};
-  CHECK(rs::render::positionAt(up, 3, 1'000'000) == 3);
-  CHECK(rs::render::positionAt(up, 3, 999'999) == 2);
-  CHECK(rs::render::positionAt(down, 3, 999'999) == 5);
-  CHECK(rs::render::positionAt(up, 3, -5) == 0);
-  CHECK(rs::render::positionAt(up, 3, 9'000'000) == 7);
+  const rs::runtime::MotorMove up{0, 0, 7, 0, 2'333'334}, down{0, 7, 0, 0, 2'333'334};
+  CHECK(rs::runtime::positionAt(up, 3, 1'000'000) == 3);
+  CHECK(rs::runtime::positionAt(up, 3, 999'999) == 2);
+  CHECK(rs::runtime::positionAt(down, 3, 999'999) == 5);
+  CHECK(rs::runtime::positionAt(up, 3, -5) == 0);
+  CHECK(rs::runtime::positionAt(up, 3, 9'000'000) == 7);
 }

@@ -12,11 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "render_test_util.h"
-#include "runtime/grasp_observer.h"
-#include "runtime/render/recording.h"
+#include "runtime/run_log.h"
 
-using rs::render::GraspEvent;
-using rs::render::RunRecording;
+using rs::runtime::RunLog;
 using rs::vm::Micros;
 
 namespace {
@@ -33,18 +31,13 @@ const char* const kPickAndPlace =
     "MOVETO 0 0 0 0\n"              // 6: X 2300 (2.3 s): 12.65 .. 14.95 s
     "END\n";
 
-RunRecording record(const std::string& program, bool withGrasps) {
+// The run's log, on the gantry cell (or, without grasps, on no workcell:
+// the same motors, no world).
+RunLog record(const std::string& program, bool withGrasps) {
   const rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
-  const rs::vm::Image image = rendertest::compileText(program, cell);
-  rs::runtime::SimMachine machine(image.motors, {});
-  rs::vm::Interpreter vm(image, machine);
-  rs::workcell::Grasping grasping(cell);
-  rs::runtime::GraspObserver grasp(grasping, machine.positions());
-  rs::render::RunRecorder recorder(machine, withGrasps ? &grasp : nullptr);
-  grasp.setNext(&recorder);
-  const rs::vm::RunOutcome outcome = vm.run({}, &grasp);
-  REQUIRE(outcome.ok());
-  return recorder.finish(outcome, {});
+  const auto run = rendertest::runOf(rendertest::compileText(program, cell), withGrasps ? &cell : nullptr, {}, true);
+  REQUIRE(run->runToEnd().ok());
+  return *run->log();
 }
 
 void checkNear(const Eigen::Matrix4d& got, const Eigen::Matrix4d& want) {
@@ -74,19 +67,19 @@ Eigen::Matrix4d blockInHand() {
 }  // namespace
 
 TEST_CASE("a recorded run keeps what the gripper took and let go, when and where", "[render][grasp]") {
-  const RunRecording rec = record(kPickAndPlace, true);
+  const RunLog rec = record(kPickAndPlace, true);
   REQUIRE(rec.steps.size() == 8);
   CHECK(rec.steps[1].end == 3300 * kMs);
   CHECK(rec.steps[5].start == 12150 * kMs);
   REQUIRE(rec.grasps.size() == 2);
-  const GraspEvent& take = rec.grasps[0];
-  CHECK(take.step == 1);
+  const rs::runtime::GraspEvent& take = rec.grasps[0].event;
+  CHECK(rec.grasps[0].step == 1);
   CHECK(take.at == 3300 * kMs);  // the end of the closing move
   CHECK(take.object == 1);
   CHECK(take.held);
   checkNear(take.pose.matrix(), blockInHand());
-  const GraspEvent& release = rec.grasps[1];
-  CHECK(release.step == 5);
+  const rs::runtime::GraspEvent& release = rec.grasps[1].event;
+  CHECK(rec.grasps[1].step == 5);
   CHECK(release.at == 12150 * kMs);  // the start of the opening move
   CHECK(release.object == 1);
   CHECK_FALSE(release.held);
@@ -96,7 +89,7 @@ TEST_CASE("a recorded run keeps what the gripper took and let go, when and where
 }
 
 TEST_CASE("RESET lets go at its instant and puts the object back", "[render][grasp]") {
-  const RunRecording rec = record(
+  const RunLog rec = record(
       "MOVE 0 0 0 100\n"              // 0: closes in the air (0.5 s): nothing
       "MOVETO -2800 2800 1500 100\n"  // 1: 0.5 .. 3.3 s, closed into block 1: not taken
       "MOVETO -2800 2800 1500 0\n"    // 2: opens, 3.3 .. 3.8 s: nothing to let go
@@ -107,52 +100,19 @@ TEST_CASE("RESET lets go at its instant and puts the object back", "[render][gra
       true);
   REQUIRE(rec.grasps.size() == 2);
   CHECK(rec.grasps[0].step == 3);
-  CHECK(rec.grasps[0].at == 4200 * kMs);
-  CHECK(rec.grasps[0].object == 1);
-  CHECK(rec.grasps[0].held);
-  checkNear(rec.grasps[0].pose.matrix(), blockInHand());
+  CHECK(rec.grasps[0].event.at == 4200 * kMs);
+  CHECK(rec.grasps[0].event.object == 1);
+  CHECK(rec.grasps[0].event.held);
+  checkNear(rec.grasps[0].event.pose.matrix(), blockInHand());
   CHECK(rec.grasps[1].step == 5);
-  CHECK(rec.grasps[1].at == 7000 * kMs);
-  CHECK(rec.grasps[1].object == 1);
-  CHECK_FALSE(rec.grasps[1].held);
-  checkNear(rec.grasps[1].pose.matrix(), translation(200, 30, 660));  // its placement
+  CHECK(rec.grasps[1].event.at == 7000 * kMs);
+  CHECK(rec.grasps[1].event.object == 1);
+  CHECK_FALSE(rec.grasps[1].event.held);
+  checkNear(rec.grasps[1].event.pose.matrix(), translation(200, 30, 660));  // its placement
 }
 
-TEST_CASE("ObjectsInGripper chains the grasp observer before the next one", "[render][grasp]") {
-  const rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
-  const rs::vm::Image image = rendertest::compileText(kPickAndPlace, cell);
-  rs::runtime::SimMachine machine(image.motors, {});
-  rs::vm::Interpreter vm(image, machine);
-  rs::runtime::ObjectsInGripper objects(&cell, machine.positions());
-  REQUIRE(objects.grasping());
-  REQUIRE(objects.observer());
-  rs::render::RunRecorder recorder(machine, objects.observer());
-  rs::vm::StepObserver* first = objects.chain(&recorder);
-  CHECK(first == objects.observer());
-  const rs::vm::RunOutcome outcome = vm.run({}, first);
-  REQUIRE(outcome.ok());
-  const RunRecording rec = recorder.finish(outcome, {});
-  const RunRecording byHand = record(kPickAndPlace, true);
-  REQUIRE(rec.grasps.size() == byHand.grasps.size());
-  for (std::size_t i = 0; i < rec.grasps.size(); ++i) {
-    CHECK(rec.grasps[i].step == byHand.grasps[i].step);
-    CHECK(rec.grasps[i].held == byHand.grasps[i].held);
-  }
-  CHECK_FALSE(objects.grasping()->held());  // let go at step 5
-}
-
-TEST_CASE("ObjectsInGripper without a workcell is no observer at all", "[render][grasp]") {
-  rs::runtime::ObjectsInGripper none(nullptr, {});
-  CHECK(none.grasping() == nullptr);
-  CHECK(none.observer() == nullptr);
-  CHECK(none.chain(nullptr) == nullptr);
-  rs::runtime::SimMachine machine({}, {});
-  rs::render::RunRecorder recorder(machine);
-  CHECK(none.chain(&recorder) == &recorder);
-}
-
-TEST_CASE("a recorder without a grasp observer records no grasps", "[render][grasp]") {
-  const RunRecording rec = record(kPickAndPlace, false);
+TEST_CASE("a run without a workcell logs no grasps", "[render][grasp]") {
+  const RunLog rec = record(kPickAndPlace, false);
   CHECK(rec.steps.size() == 8);
   CHECK(rec.grasps.empty());
 }

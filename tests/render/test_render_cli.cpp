@@ -135,7 +135,7 @@ TEST_CASE("render and animate reject bad options and inputs clearly", "[render][
 
 TEST_CASE("renderCommand itself checks --dump-lines' value", "[render][cli]") {
   rs::cli::RenderOptions o;
-  o.cell = "scara-pick";
+  o.program.cell = "scara-pick";
   o.dump = "xml";
   std::ostringstream out, err;
   CHECK(rs::cli::renderCommand(o, out, err) == 2);

@@ -11,52 +11,50 @@
 #include <vector>
 
 #include "../render/render_test_util.h"
-#include "runtime/grasp_observer.h"
-#include "runtime/render/moment.h"
-#include "runtime/sim_machine.h"
 #include "model/workcell/grasp.h"
+#include "runtime/render/moment.h"
+#include "runtime/run.h"
 
 namespace {
 
-using rs::workcell::GraspChange;
+using rs::runtime::GraspEvent;
 
 // After every step: the motors, what the step did to the hold, and where
 // each object is then.
 struct StepView {
   std::vector<std::int32_t> motors;
-  std::optional<GraspChange> change;
+  std::optional<GraspEvent> change;
   std::vector<Eigen::Vector3d> corner;  // each object's design origin in the world
 };
 
 class Collect final : public rs::vm::StepObserver {
  public:
-  Collect(rs::runtime::GraspObserver*& grasp, std::size_t objects) : grasp_(grasp), objects_(objects) {}
-  void afterStep(const rs::vm::Interpreter& vm, std::uint32_t) override {
+  explicit Collect(const rs::runtime::Run& run) : run_(run) {}
+  bool afterStep(const rs::vm::Interpreter& vm, std::uint32_t) override {
     StepView v;
     const auto pos = vm.machine().positions();
     v.motors.assign(pos.begin(), pos.end());
-    v.change = grasp_->lastChange();
-    for (std::size_t o = 0; o < objects_; ++o)
-      v.corner.push_back(grasp_->grasping().objectPose(o, pos) * Eigen::Vector3d::Zero());
+    const rs::runtime::World& world = *run_.world();
+    if (world.eventCount() != seen_) v.change = world.lastEvent();
+    seen_ = world.eventCount();
+    for (std::size_t o = 0; o < world.cell().objects.size(); ++o)
+      v.corner.push_back(world.objectPose(o, pos) * Eigen::Vector3d::Zero());
     steps.push_back(v);
+    return false;
   }
   std::vector<StepView> steps;
 
  private:
-  rs::runtime::GraspObserver*& grasp_;
-  std::size_t objects_;
+  const rs::runtime::Run& run_;
+  std::uint64_t seen_ = 0;
 };
 
 std::vector<StepView> run(const rs::workcell::Workcell& cell, const std::string& program) {
-  const rs::vm::Image image = rendertest::compileText(program, cell);
-  rs::runtime::SimMachine machine(image.motors, {});
-  rs::vm::Interpreter vm(image, machine);
-  rs::workcell::Grasping grasping(cell);
-  rs::runtime::GraspObserver* self = nullptr;
-  Collect collect(self, cell.objects.size());
-  rs::runtime::GraspObserver observer(grasping, machine.positions(), &collect);
-  self = &observer;
-  const rs::vm::RunOutcome outcome = vm.run({}, &observer);
+  const auto r = rendertest::runOf(rendertest::compileText(program, cell), &cell);
+  REQUIRE(r->world());
+  Collect collect(*r);
+  r->observe(collect);
+  const rs::vm::RunOutcome outcome = r->runToEnd();
   REQUIRE(outcome.ok());
   return collect.steps;
 }
@@ -185,7 +183,7 @@ TEST_CASE("a still of a moment shows the block where the gripper has it then", "
   const rs::vm::Image image = rendertest::compile(rendertest::kSourceDir + "/examples/gantry_pick.rsp", cell);
   const auto blockAt = [&](double seconds) {
     const rs::render::Moment m =
-        rs::render::runToMoment(image, {}, static_cast<rs::vm::Micros>(seconds * 1e6), rs::vm::RunLimits{}.maxSteps, &cell);
+        rs::render::momentOf(*rendertest::runOf(image, &cell), static_cast<rs::vm::Micros>(seconds * 1e6));
     REQUIRE(m.reached);
     REQUIRE(m.objects.size() == 4);
     checkNear(m.objects[2] * Eigen::Vector3d::Zero(), {280, 30, 660});  // block 2 has not moved yet
@@ -196,5 +194,5 @@ TEST_CASE("a still of a moment shows the block where the gripper has it then", "
   checkNear(blockAt(10.0), {495, 180, 365});     // 2.95 s along: X 150, Z -150: TCP (515, 200, 385)
   checkNear(blockAt(14.0), {650, 30, 160});      // opening: let go at its start
   // Without a cell the moment has no objects.
-  CHECK(rs::render::runToMoment(image, {}, 10'000'000).objects.empty());
+  CHECK(rs::render::momentOf(*rendertest::runOf(image, nullptr), 10'000'000).objects.empty());
 }

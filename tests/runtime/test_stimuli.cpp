@@ -46,7 +46,7 @@ TEST_CASE("a good stimuli file becomes the model", "[stimuli]") {
   CHECK(result.stimuli.changes ==
         std::vector<InputChange>{{1'500'000, 3, true}, {2'000'000, 3, false}, {0, 1, true}});
   CHECK(result.stimuli.rules ==
-        std::vector<ReactiveRule>{{1, true, 2, true, 500'000}, {4, false, 8, false, 0}});
+        std::vector<ReactiveRule>{{1, true, 2, true, 500'000, 5}, {4, false, 8, false, 0, 6}});  // lines 5 and 6
 }
 
 TEST_CASE("an empty file or one of comments is an empty model", "[stimuli]") {
@@ -122,7 +122,7 @@ TEST_CASE("every bad line is reported with its line, column and what was expecte
   // The good lines still count; the bad ones add nothing.
   CHECK(result.stimuli.changes ==
         std::vector<InputChange>{{1'500'000, 3, true}, {3'000'000, 1, true}});
-  CHECK(result.stimuli.rules == std::vector<ReactiveRule>{{1, true, 2, true, 500'000}});
+  CHECK(result.stimuli.rules == std::vector<ReactiveRule>{{1, true, 2, true, 500'000, 19}});  // line 19
 }
 
 TEST_CASE("more bad rules", "[stimuli]") {

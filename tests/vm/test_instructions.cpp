@@ -43,11 +43,12 @@ Target rhino() { return {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::
 // right after it ran.
 class Recorder final : public rs::vm::StepObserver {
  public:
-  void afterStep(const rs::vm::Interpreter& vm, std::uint32_t index) override {
+  bool afterStep(const rs::vm::Interpreter& vm, std::uint32_t index) override {
     indices.push_back(index);
     times.push_back(vm.machine().now());
     const auto p = vm.machine().positions();
     positions.emplace_back(p.begin(), p.end());
+    return false;
   }
   std::vector<std::uint32_t> indices;
   std::vector<Micros> times;

@@ -1,0 +1,28 @@
+#include "cli/lib/options.h"
+
+#include <CLI/CLI.hpp>
+
+namespace rs::cli {
+
+void addCellOptions(CLI::App* cmd, launch::ProgramRequest& request) {
+  cmd->add_option("--cell", request.cell, "Workcell (or robot) description file or library name to run on");
+  addLibOption(cmd, request);
+}
+
+void addLibOption(CLI::App* cmd, launch::ProgramRequest& request) {
+  cmd->add_option("--lib", request.libDirs, "Also look up description names in this directory (repeatable)")
+      ->allow_extra_args(false);
+}
+
+void addRunOptions(CLI::App* cmd, launch::RunRequest& request, const std::string& maxStepsDefault) {
+  cmd->add_option("--input", request.inputs, "Input change N=ON@SECONDS or N=OFF@SECONDS (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_option("--stimuli", request.stimuliFile, "Stimuli file: timed input changes and reactive rules");
+  cmd->add_option_function<std::uint64_t>(
+         "--max-steps", [&request](const std::uint64_t& n) { request.maxSteps = n; },
+         "Stop after this many instructions (default " + maxStepsDefault + ")")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 62));
+  cmd->add_option("--max-time", request.maxTime, "Stop at this simulated time in seconds (default 3600)");
+}
+
+}  // namespace rs::cli

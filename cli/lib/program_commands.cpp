@@ -1,0 +1,82 @@
+#include "cli/lib/program_commands.h"
+
+#include <fmt/format.h>
+
+#include "base/file_io.h"
+#include "cli/lib/exit_codes.h"
+#include "compiler/compiler.h"
+#include "vm/disasm.h"
+#include "vm/image_file.h"
+
+namespace rs::cli {
+
+namespace {
+
+// tokens / ast: teaching views of the front end; they read source only.
+template <typename Dump>
+int sourceView(const std::string& file, std::ostream& out, std::ostream& err, Dump dump) {
+  base::FileRead text = base::readFile(file, launch::kMaxInputBytes);
+  if (!text.bytes) {
+    err << fmt::format("{}: error: cannot read file: {}\n", file, text.error);
+    return kExitBadInput;
+  }
+  if (vm::looksLikeImage(*text.bytes)) {
+    err << fmt::format("{}: error: this is a compiled image; try robotsim disasm\n", file);
+    return kExitBadInput;
+  }
+  const diag::SourceFile source(file, std::move(*text.bytes));
+  std::vector<diag::Diagnostic> diags;
+  out << dump(source, diags);
+  for (const diag::Diagnostic& d : diags) err << diag::render(d, &source);
+  return diag::hasErrors(diags) ? kExitBadInput : kExitOk;
+}
+
+}  // namespace
+
+int compileCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err) {
+  const launch::LoadedProgram program = launch::loadProgram(o.program);
+  launch::printDiagnostics(err, program.diagnostics, program);
+  if (!program.ok()) return kExitBadInput;
+  std::string error;
+  if (!base::writeFileAtomically(o.output, vm::writeImage(*program.image), error)) {
+    err << fmt::format("{}: error: cannot write: {}\n", o.output, error);
+    return kExitBadInput;
+  }
+  out << fmt::format("{} -> {} ({} instructions)\n", o.program.file, o.output, program.image->code.size());
+  return kExitOk;
+}
+
+int disasmCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err) {
+  const launch::LoadedProgram program = launch::loadProgram(o.program);
+  launch::printDiagnostics(err, program.diagnostics, program);
+  if (!program.ok()) return kExitBadInput;
+  out << vm::disassemble(*program.image);
+  return kExitOk;
+}
+
+int tokensCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err) {
+  return sourceView(o.program.file, out, err,
+                    [](const diag::SourceFile& s, auto& d) { return compiler::dumpTokens(s, d); });
+}
+
+// Operand counts are checked against the robot: --cell's, or the default.
+int astCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err) {
+  compiler::Target target = launch::defaultTarget();
+  if (!o.program.cell.empty()) {
+    launch::LoadedProgram descriptions;
+    const std::shared_ptr<const workcell::Workcell> cell = launch::loadCell(o.program, descriptions);
+    if (cell && cell->robots.empty())
+      descriptions.diagnostics.push_back(
+          {o.program.cell, {}, diag::Severity::Error, "the workcell has no robot to run the program"});
+    if (!cell || diag::hasErrors(descriptions.diagnostics)) {
+      launch::printDiagnostics(err, descriptions.diagnostics, descriptions);
+      return kExitBadInput;
+    }
+    target = launch::cellTarget(*cell);
+  }
+  return sourceView(o.program.file, out, err, [&](const diag::SourceFile& s, auto& d) {
+    return compiler::dumpAst(s, target, o.tree, d);
+  });
+}
+
+}  // namespace rs::cli

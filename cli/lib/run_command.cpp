@@ -1,0 +1,77 @@
+#include "cli/lib/run_command.h"
+
+#include <fmt/format.h>
+
+#include "cli/lib/exit_codes.h"
+#include "cli/lib/report.h"
+#include "cli/lib/trace.h"
+#include "runtime/run.h"
+
+namespace rs::cli {
+
+namespace {
+
+// --strict: a warning fails the check like an error, before anything runs.
+void promoteWarnings(launch::LoadedProgram& program) {
+  bool promoted = false;
+  for (diag::Diagnostic& d : program.diagnostics)
+    if (d.severity == diag::Severity::Warning) {
+      d.severity = diag::Severity::Error;
+      d.message += " [--strict]";
+      promoted = true;
+    }
+  if (promoted) program.image.reset();
+}
+
+}  // namespace
+
+int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err) {
+  const bool json = o.format == "json";
+  launch::LoadedProgram program = launch::loadProgram(o.program);
+  if (check && o.strict) promoteWarnings(program);
+  RunReport report;
+  report.diagnostics = program.diagnostics;
+  // The stimuli and limits are checked even when the program did not
+  // compile, so that one run reports every mistake.
+  const std::optional<runtime::RunSpec> spec = launch::prepareRun(program, o.run, report.diagnostics);
+  if (!spec || !program.ok()) {
+    launch::printDiagnostics(err, report.diagnostics, program);
+    if (json) printJsonSummary(out, report);
+    return kExitBadInput;
+  }
+  launch::printDiagnostics(err, program.diagnostics, program);  // warnings
+
+  std::unique_ptr<runtime::Run> run;
+  if (o.serial.active()) {
+    std::string error;
+    std::unique_ptr<vm::Machine> rhino = launch::openRhino(o.serial, spec->image->motors, spec->limits.maxTime, error);
+    if (!rhino) {
+      err << fmt::format("robotsim: error: {}\n", error);
+      return kExitRunFailed;
+    }
+    run = std::make_unique<runtime::Run>(*spec, std::move(rhino));
+  } else {
+    run = std::make_unique<runtime::Run>(*spec);
+  }
+  report.realTime = o.serial.active();
+  std::optional<TraceWriter> trace;
+  if (!o.trace.empty()) {
+    trace.emplace(out, o.trace == "json" ? TraceFormat::Json : TraceFormat::Text, *run);
+    run->observe(*trace);
+  }
+  const vm::RunOutcome outcome = run->runToEnd();
+  report.run = run.get();
+  const vm::Image& image = run->image();
+  if (!outcome.ok()) {
+    const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
+    launch::printDiagnostics(err, {d}, program);
+    report.diagnostics.push_back(d);
+  }
+  if (json) printJsonSummary(out, report);
+  else if (!check || !report.ok()) printTextSummary(out, report);
+  else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", image.sourceName, outcome.steps,
+                          vm::formatSeconds(run->clock()));
+  return outcome.ok() ? kExitOk : kExitRunFailed;
+}
+
+}  // namespace rs::cli

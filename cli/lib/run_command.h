@@ -1,0 +1,26 @@
+// `robotsim run` and `robotsim check`: load the program, prepare its run,
+// run it (in simulation or on a Rhino), trace it, print the summary.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include "launch/program.h"
+#include "launch/rhino.h"
+#include "launch/run_request.h"
+
+namespace rs::cli {
+
+struct RunCommandOptions {
+  launch::ProgramRequest program;
+  launch::RunRequest run;
+  launch::SerialRequest serial;
+  std::string format = "text";  // summary: text or json
+  std::string trace;            // "", "text" or "json"
+  bool strict = false;          // check: warnings fail too
+};
+
+/// run (`check` false) or check; returns the exit code.
+int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err);
+
+}  // namespace rs::cli

@@ -1,0 +1,152 @@
+#include "launch/program.h"
+
+#include <fmt/format.h>
+
+#include <ostream>
+
+#include "base/file_io.h"
+#include "model/workcell/cell_file.h"
+#include "stdlib/default_robot.h"
+#include "vm/image_file.h"
+
+namespace rs::launch {
+
+namespace {
+
+diag::Diagnostic wholeFileError(const std::string& file, std::string message) {
+  return {file, {}, diag::Severity::Error, std::move(message)};
+}
+
+// The workcell an image carries, checked against the image itself (its
+// robot must have exactly the image's motors); an error message, or empty.
+std::string decodeImageCell(const vm::Image& image, std::shared_ptr<const workcell::Workcell>& cell) {
+  workcell::CellDecode decoded = workcell::decodeCell(image.cell);
+  if (!decoded.cell) return decoded.error;
+  if (decoded.cell->robots.empty()) return "its cell has no robot";
+  if (compiler::motorTable(decoded.cell->robots.front().robot) != image.motors)
+    return "its cell's robot does not match its motor table";
+  cell = std::make_shared<const workcell::Workcell>(std::move(*decoded.cell));
+  return {};
+}
+
+// Reads FILE and compiles it for `target`, or loads and verifies it when it
+// is an image.
+void readProgram(const std::string& path, const compiler::Target& target, LoadedProgram& into) {
+  base::FileRead read = base::readFile(path, kMaxInputBytes);
+  if (!read.bytes) {
+    into.diagnostics.push_back(wholeFileError(path, "cannot read file: " + read.error));
+    return;
+  }
+  if (vm::looksLikeImage(*read.bytes)) {
+    vm::LoadResult loaded = vm::loadImage(*read.bytes);
+    if (!loaded.error.empty())
+      into.diagnostics.push_back(wholeFileError(path, loaded.error));
+    else
+      into.image = std::make_shared<const vm::Image>(std::move(loaded.image));
+    return;
+  }
+  into.source.emplace(path, std::move(*read.bytes));
+  compiler::CompileResult compiled = compiler::compile(*into.source, target);
+  for (diag::Diagnostic& d : compiled.diagnostics) into.diagnostics.push_back(std::move(d));
+  if (compiled.image) into.image = std::make_shared<const vm::Image>(std::move(*compiled.image));
+}
+
+bool sameMotors(const vm::Image& image, const workcell::Workcell& cell) {
+  return !cell.robots.empty() && image.motors == compiler::motorTable(cell.robots.front().robot);
+}
+
+}  // namespace
+
+compiler::Target defaultTarget() {
+  return {std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth};
+}
+
+compiler::Target cellTarget(const workcell::Workcell& cell) {
+  const workcell::Robot& robot = cell.robots.front().robot;
+  return {robot.name, compiler::motorTable(robot), vm::kDefaultCallDepth};
+}
+
+const diag::SourceFile* LoadedProgram::sourceOf(const std::string& file) const {
+  if (source && source->name() == file) return &*source;
+  return descriptions ? descriptions->source(file) : nullptr;
+}
+
+void printDiagnostics(std::ostream& err, const std::vector<diag::Diagnostic>& diags, const LoadedProgram& program) {
+  for (const diag::Diagnostic& d : diags) err << diag::render(d, program.sourceOf(d.file));
+}
+
+std::shared_ptr<const workcell::Workcell> loadCell(const ProgramRequest& request, LoadedProgram& into) {
+  auto library = std::make_shared<compiler::Library>(compiler::librarySearchPath(request.libDirs));
+  into.descriptions = library;
+  std::optional<workcell::Workcell> cell = library->workcell(request.cell);
+  for (const diag::Diagnostic& d : library->diagnostics()) into.diagnostics.push_back(d);
+  if (!cell) return nullptr;
+  return std::make_shared<const workcell::Workcell>(std::move(*cell));
+}
+
+LoadedProgram loadProgram(const ProgramRequest& request) {
+  LoadedProgram program;
+  if (request.cell.empty()) {
+    readProgram(request.file, defaultTarget(), program);
+  } else {
+    program.cell = loadCell(request, program);
+    if (!program.cell) return program;
+    if (program.cell->robots.empty()) {
+      program.diagnostics.push_back(wholeFileError(request.cell, "the workcell has no robot to run the program"));
+      return program;
+    }
+    readProgram(request.file, cellTarget(*program.cell), program);
+    if (program.image && !program.source) {
+      program.image.reset();
+      program.diagnostics.push_back(
+          wholeFileError(request.file, "--cell applies to program sources: a compiled image carries its own cell"));
+    }
+    if (program.image) {
+      auto withCell = std::make_shared<vm::Image>(*program.image);
+      withCell->cell = workcell::encodeCell(*program.cell);
+      program.image = std::move(withCell);
+    }
+    return program;
+  }
+  if (program.image && !program.image->cell.empty()) {
+    if (const std::string error = decodeImageCell(*program.image, program.cell); !error.empty()) {
+      program.diagnostics.push_back(wholeFileError(request.file, "image rejected: " + error));
+      program.image.reset();
+    }
+  }
+  return program;
+}
+
+LoadedProgram loadProgramToDraw(const ProgramRequest& request) {
+  LoadedProgram program;
+  if (!request.cell.empty()) {
+    program.cell = loadCell(request, program);
+    if (!program.cell) return program;
+    if (program.cell->robots.empty()) {
+      program.diagnostics.push_back(wholeFileError(request.cell, "the workcell has no robot to run the program"));
+      return program;
+    }
+  }
+  readProgram(request.file, program.cell ? cellTarget(*program.cell) : defaultTarget(), program);
+  if (!program.ok()) return program;
+  const vm::Image& image = *program.image;
+  if (program.source) {
+    if (!program.cell) program.diagnostics.push_back(wholeFileError("robotsim", "which workcell? give it with --cell CELL"));
+  } else {
+    if (!program.cell && !image.cell.empty()) {
+      if (const std::string error = decodeImageCell(image, program.cell); !error.empty())
+        program.diagnostics.push_back(wholeFileError(request.file, "image rejected: " + error));
+    } else if (!program.cell) {
+      program.diagnostics.push_back(
+          wholeFileError(request.file, "the image carries no workcell; give one with --cell"));
+    } else if (!sameMotors(image, *program.cell)) {
+      program.diagnostics.push_back(wholeFileError(
+          request.file, fmt::format("the image was compiled for robot '{}', whose motors differ from those of '{}'",
+                                    image.robotName, program.cell->robots.front().robot.name)));
+    }
+  }
+  if (!program.ok()) program.image.reset();
+  return program;
+}
+
+}  // namespace rs::launch

@@ -1,0 +1,66 @@
+// From the files a user names to a program ready to run: the program
+// (a `.rsp` source, compiled here, or a `.rsb` image, recognised by its
+// magic number whatever the file is called), the workcell it runs on
+// (`--cell`, or the one an image carries), and every diagnostic, each
+// with its file's text for the caret. The one place `--cell` is loaded.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/compiler.h"
+#include "compiler/library.h"
+#include "diag/diagnostic.h"
+#include "model/workcell/model.h"
+#include "vm/image.h"
+
+namespace rs::launch {
+
+/// Programs and description files are refused over this size, from their
+/// size, before they are read.
+inline constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;
+
+/// What the user named.
+struct ProgramRequest {
+  std::string file;                  ///< program source or image
+  std::string cell;                  ///< --cell: workcell or robot, file or library name ("" = none)
+  std::vector<std::string> libDirs;  ///< --lib
+};
+
+struct LoadedProgram {
+  std::optional<diag::SourceFile> source;          ///< set when the file was source text
+  std::shared_ptr<const vm::Image> image;          ///< set when it compiled / verified
+  std::shared_ptr<const workcell::Workcell> cell;  ///< what it runs on, if a workcell
+  std::vector<diag::Diagnostic> diagnostics;
+  /// The description files read for --cell, kept for their source lines.
+  std::shared_ptr<const compiler::Library> descriptions;
+  bool ok() const { return image != nullptr && !diag::hasErrors(diagnostics); }
+  /// The source text of a diagnostic's file, if it was read.
+  const diag::SourceFile* sourceOf(const std::string& file) const;
+};
+
+/// run, check, compile, disasm: the program compiled for --cell's first
+/// robot (the image then carries the cell) or for the default robot; an
+/// image runs on the cell it carries, and refuses --cell.
+LoadedProgram loadProgram(const ProgramRequest& request);
+
+/// render, animate: the same, except that an image may be drawn on the
+/// --cell given (its robot must have the image's motors), and a program
+/// needs a workcell (--cell, or one its image carries).
+LoadedProgram loadProgramToDraw(const ProgramRequest& request);
+
+/// --cell's workcell alone (render without a program, ast); its problems
+/// go to `into`, whose descriptions keep the files' text.
+std::shared_ptr<const workcell::Workcell> loadCell(const ProgramRequest& request, LoadedProgram& into);
+
+/// The default machine: the paper's Rhino SCARA (stdlib/default_robot.h).
+compiler::Target defaultTarget();
+/// The machine of a workcell: its first robot's motors (arm, then gripper).
+compiler::Target cellTarget(const workcell::Workcell& cell);
+
+/// Every diagnostic, each under its own file's source line when known.
+void printDiagnostics(std::ostream& err, const std::vector<diag::Diagnostic>& diags, const LoadedProgram& program);
+
+}  // namespace rs::launch

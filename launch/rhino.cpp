@@ -1,0 +1,96 @@
+#include "launch/rhino.h"
+
+#include <fmt/format.h>
+
+#include "base/file_io.h"
+#include "launch/program.h"
+#include "runtime/serial/interrupt.h"
+#include "runtime/serial/rhino_machine.h"
+#include "runtime/serial/serial_log.h"
+#include "runtime/serial/serial_port.h"
+
+namespace rs::launch {
+
+namespace {
+
+using serial::Dialect;
+using serial::RhinoSettings;
+
+// Everything a serial run owns besides the machine, in the order it must be
+// torn down (last member first): the log link, the port, the log, the
+// clock, and last the Ctrl-C handler.
+struct Connection {
+  std::unique_ptr<serial::InterruptGuard> guard;
+  serial::SteadyClock clock;
+  std::unique_ptr<serial::SerialLog> log;
+  std::unique_ptr<serial::SerialPort> port;
+  std::unique_ptr<serial::LoggedLink> logged;
+};
+
+// The bytes a second Ctrl-C writes from the signal handler.
+std::string emergencyStop(const RhinoSettings& s, const std::vector<vm::MotorSpec>& motors) {
+  std::string bytes;
+  for (const std::string& c : serial::stopCommands(s.dialect, motors)) {
+    bytes += c;
+    bytes += serial::lineEndBytes(s.lineEnd);
+  }
+  return bytes;
+}
+
+}  // namespace
+
+bool buildSettings(const std::string& dialectText, const std::string& file, const std::vector<std::string>& sets,
+                   RhinoSettings& settings, std::string& error) {
+  settings = serial::defaultSettings(dialectText == "mark4" ? Dialect::Mark4 : Dialect::Mark3);
+  if (!file.empty()) {
+    const base::FileRead text = base::readFile(file, kMaxInputBytes);
+    if (!text.bytes) {
+      error = fmt::format("{}: cannot read serial settings: {}", file, text.error);
+      return false;
+    }
+    error = serial::applySettingsText(settings, *text.bytes, file);
+    if (!error.empty()) {
+      if (error.back() == '\n') error.pop_back();
+      return false;
+    }
+  }
+  for (const std::string& s : sets) {
+    error = serial::applySettingArg(settings, s);
+    if (!error.empty()) return false;
+  }
+  return true;
+}
+
+std::unique_ptr<vm::Machine> openRhino(const SerialRequest& o, const std::vector<vm::MotorSpec>& motors,
+                                       vm::Micros maxTime, std::string& error) {
+  RhinoSettings settings;
+  if (!buildSettings(o.dialect, o.settingsFile, o.settings, settings, error)) return nullptr;
+  auto conn = std::make_shared<Connection>();
+  if (!o.logFile.empty()) {
+    conn->log = serial::SerialLog::create(o.logFile, error);
+    if (!conn->log) return nullptr;
+  }
+  conn->port = serial::SerialPort::open(o.device, settings.line, error);
+  if (!conn->port) {
+    if (conn->log) conn->log->comment("cannot open: " + error);
+    return nullptr;
+  }
+  conn->guard = std::make_unique<serial::InterruptGuard>();
+  conn->guard->setEmergencyStop(conn->port->fd(), emergencyStop(settings, motors));
+  serial::Link* link = conn->port.get();
+  if (conn->log) {
+    conn->logged = std::make_unique<serial::LoggedLink>(*conn->port, *conn->log, conn->clock);
+    link = conn->logged.get();
+  }
+  auto machine = std::make_unique<serial::RhinoMachine>(motors, settings, *link, conn->clock, conn->log.get(),
+                                                        &conn->guard->flag());
+  machine->keepAlive(conn);
+  machine->setWaitLimit(maxTime);
+  if (vm::Status st = machine->open(); !st) {
+    error = st.message;
+    return nullptr;
+  }
+  return machine;
+}
+
+}  // namespace rs::launch

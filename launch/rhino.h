@@ -1,0 +1,39 @@
+// A real Rhino controller (or `robotsim emulate`) as the machine of a run:
+// the serial options of run and check, the settings they build, and the
+// port, log and Ctrl-C handler a serial run owns. Everything that speaks
+// the protocol is in runtime/serial; this file only puts it together.
+// docs/serial.md is the user's guide.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "runtime/serial/settings.h"
+#include "vm/image.h"
+#include "vm/machine.h"
+
+namespace rs::launch {
+
+/// --device, --dialect, --log-serial, --serial-set, --serial-config.
+struct SerialRequest {
+  std::string device;  ///< empty: simulation
+  std::string dialect = "mark3";
+  std::string logFile;
+  std::vector<std::string> settings;  ///< KEY=VALUE
+  std::string settingsFile;
+  bool active() const { return !device.empty(); }
+};
+
+/// Defaults for the dialect ("mark3" or "mark4"), then the settings file,
+/// then each KEY=VALUE; false with `error` set when any is bad.
+bool buildSettings(const std::string& dialect, const std::string& file, const std::vector<std::string>& sets,
+                   serial::RhinoSettings& settings, std::string& error);
+
+/// Opens the port, installs the Ctrl-C handler (until the machine goes),
+/// makes first contact. Null with `error` set when anything fails; the
+/// message is ready for "robotsim: error: " + error. `maxTime` bounds WAITFOR.
+std::unique_ptr<vm::Machine> openRhino(const SerialRequest& request, const std::vector<vm::MotorSpec>& motors,
+                                       vm::Micros maxTime, std::string& error);
+
+}  // namespace rs::launch

@@ -1,0 +1,56 @@
+#include "launch/run_request.h"
+
+#include "runtime/stimuli_text.h"
+
+namespace rs::launch {
+
+std::string_view RunRequest::firstGiven() const {
+  if (!inputs.empty()) return "--input";
+  if (!stimuliFile.empty()) return "--stimuli";
+  if (maxSteps) return "--max-steps";
+  if (!maxTime.empty()) return "--max-time";
+  return "";
+}
+
+bool loadStimuli(const RunRequest& request, runtime::Stimuli& stimuli, std::vector<diag::Diagnostic>& diags) {
+  bool ok = true;
+  const auto add = [&](const runtime::StimuliError& e) {
+    diags.push_back({e.file, {static_cast<std::uint32_t>(e.line), static_cast<std::uint32_t>(e.column)},
+                     diag::Severity::Error, e.message});
+    ok = false;
+  };
+  if (!request.stimuliFile.empty()) {
+    runtime::StimuliParse parsed = runtime::loadStimuliFile(request.stimuliFile);
+    for (const auto& e : parsed.errors) add(e);
+    stimuli = std::move(parsed.stimuli);
+  }
+  for (const std::string& arg : request.inputs) {
+    runtime::StimulusArgParse parsed = runtime::parseStimulusArg(arg, "--input");
+    if (parsed.error) add(*parsed.error);
+    if (parsed.change) stimuli.changes.push_back(*parsed.change);
+  }
+  return ok;
+}
+
+std::optional<vm::Micros> maxTimeOf(const RunRequest& request, std::vector<diag::Diagnostic>& diags) {
+  if (request.maxTime.empty()) return vm::RunLimits{}.maxTime;
+  const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(request.maxTime);
+  if (parsed.error.empty()) return parsed.micros;
+  diags.push_back({"--max-time", {}, diag::Severity::Error, parsed.error});
+  return std::nullopt;
+}
+
+std::optional<runtime::RunSpec> prepareRun(const LoadedProgram& program, const RunRequest& request,
+                                           std::vector<diag::Diagnostic>& diags, std::uint64_t defaultMaxSteps) {
+  runtime::RunSpec spec;
+  spec.image = program.image;
+  spec.cell = program.cell;
+  const std::optional<vm::Micros> maxTime = maxTimeOf(request, diags);
+  const bool stimuliOk = loadStimuli(request, spec.stimuli, diags);
+  if (!maxTime || !stimuliOk || !program.image) return std::nullopt;
+  spec.limits.maxSteps = request.maxSteps.value_or(defaultMaxSteps);
+  spec.limits.maxTime = *maxTime;
+  return spec;
+}
+
+}  // namespace rs::launch

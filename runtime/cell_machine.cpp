@@ -1,0 +1,31 @@
+#include "runtime/cell_machine.h"
+
+#include <algorithm>
+
+namespace rs::runtime {
+
+template <typename Move>
+vm::Status CellMachine::moveAndReact(Move&& move) {
+  const auto positions = motion_.positions();
+  std::copy(positions.begin(), positions.end(), before_.begin());
+  const vm::Micros start = motion_.now();
+  vm::Status status = move();
+  if (status) world_.moved(before_, motion_.positions(), start, motion_.now());
+  return status;
+}
+
+vm::Status CellMachine::moveTo(std::span<const std::int32_t> targets) {
+  return moveAndReact([&] { return motion_.moveTo(targets); });
+}
+
+vm::Status CellMachine::hardHome() {
+  return moveAndReact([&] { return motion_.hardHome(); });
+}
+
+vm::Status CellMachine::reset() {
+  vm::Status status = motion_.reset();
+  if (status) world_.reset(motion_.now());
+  return status;
+}
+
+}  // namespace rs::runtime

@@ -1,0 +1,136 @@
+#include "runtime/run_log.h"
+
+#include <algorithm>
+
+namespace rs::runtime {
+
+namespace {
+
+// The last element whose `step` is <= step, by binary search; null if none.
+template <typename T>
+const T* lastUpTo(const std::vector<T>& items, std::size_t step) {
+  auto it =
+      std::upper_bound(items.begin(), items.end(), step, [](std::size_t s, const T& item) { return s < item.step; });
+  return it == items.begin() ? nullptr : &*(it - 1);
+}
+
+}  // namespace
+
+RunLog::Mark RunLog::mark() const {
+  Mark m{steps.size(), outputs.size(), cameras.size(), inputs.size(), grasps.size(), {}, end};
+  for (const auto& list : moves) m.moves.push_back(list.size());
+  return m;
+}
+
+void RunLog::cutTo(const Mark& m) {
+  steps.resize(m.steps), outputs.resize(m.outputs), cameras.resize(m.cameras);
+  inputs.resize(m.inputs), grasps.resize(m.grasps);
+  for (std::size_t i = 0; i < moves.size() && i < m.moves.size(); ++i) moves[i].resize(m.moves[i]);
+  end = m.end;
+}
+
+RunLogger::RunLogger(SimMachine& machine, const World* world) : machine_(machine), world_(world) {
+  log_.motors = machine.motors();
+  log_.moves.resize(log_.motors.size());
+  log_.inputs.push_back({machine.now(), machine.inputs()});
+  takeStateOf(machine);
+  // Inputs change at stimulus times, which may fall inside a DELAY or a
+  // move: the machine says when, as it applies them. Several changes at one
+  // time leave one level, the last.
+  machine.onInputChange([this](vm::Micros at, std::uint8_t mask) {
+    std::vector<InputLevel>& levels = log_.inputs;
+    if (levels.back().at == at) {
+      levels.back().inputs = mask;
+      if (levels.size() > 1 && levels[levels.size() - 2].inputs == mask) levels.pop_back();
+    } else {
+      levels.push_back({at, mask});
+    }
+  });
+}
+
+void RunLogger::takeStateOf(const SimMachine& machine) {
+  lastSegment_.resize(machine.motors().size());
+  for (std::size_t m = 0; m < lastSegment_.size(); ++m) lastSegment_[m] = machine.segment(m);
+  lastPosition_.assign(machine.positions().begin(), machine.positions().end());
+  lastOutputs_ = machine.outputs();
+  lastView_ = machine.viewRotation();
+  lastWindow_ = machine.windowShift();
+  lastNow_ = machine.now();
+  graspsSeen_ = world_ ? world_->eventCount() : 0;
+}
+
+// A motor whose segment changed moved, jumped (RESET) or was asked to stay
+// where it was; only the first two are kept.
+void RunLogger::afterStep(std::uint32_t index) {
+  const auto step = static_cast<std::uint32_t>(log_.steps.size());
+  const vm::Micros now = machine_.now();
+  log_.steps.push_back({index, lastNow_, now});
+  for (std::size_t m = 0; m < lastSegment_.size(); ++m) {
+    const MotorSegment& s = machine_.segment(m);
+    if (s == lastSegment_[m]) continue;
+    lastSegment_[m] = s;
+    if (s.from != s.to || s.to != lastPosition_[m]) log_.moves[m].push_back({step, s.from, s.to, s.start, s.end});
+    lastPosition_[m] = s.to;
+  }
+  if (const std::uint8_t outputs = machine_.outputs(); outputs != lastOutputs_) {
+    log_.outputs.push_back({step, outputs});
+    lastOutputs_ = outputs;
+  }
+  if (!(machine_.viewRotation() == lastView_) || !(machine_.windowShift() == lastWindow_)) {
+    lastView_ = machine_.viewRotation();
+    lastWindow_ = machine_.windowShift();
+    log_.cameras.push_back({step, lastView_, lastWindow_});
+  }
+  if (world_ && world_->eventCount() != graspsSeen_) {
+    graspsSeen_ = world_->eventCount();
+    log_.grasps.push_back({step, world_->lastEvent()});
+  }
+  lastNow_ = now;
+  log_.end = now;
+}
+
+void RunLogger::finish(const vm::RunOutcome& outcome) {
+  if (!outcome.ok() && outcome.reason != vm::StopReason::StepLimit && outcome.reason != vm::StopReason::InstantLimit &&
+      !outcome.paused())
+    afterStep(outcome.index);
+  log_.end = machine_.now();
+}
+
+void RunLogger::restore(const RunLog::Mark& mark, const SimMachine& machine) {
+  log_.cutTo(mark);
+  takeStateOf(machine);
+}
+
+std::int32_t positionAt(const MotorMove& move, std::int32_t speed, vm::Micros t) {
+  return positionAt(MotorSegment{move.from, move.to, move.start, move.end}, speed, t);
+}
+
+RunState stateAtStep(const RunLog& log, std::size_t step, vm::Micros t) {
+  RunState s;
+  s.step = step;
+  s.encoders.assign(log.motors.size(), 0);
+  for (std::size_t m = 0; m < log.motors.size(); ++m)
+    if (const MotorMove* move = lastUpTo(log.moves[m], step)) s.encoders[m] = positionAt(*move, log.motors[m].speed, t);
+  if (const OutputChange* o = lastUpTo(log.outputs, step)) s.outputs = o->outputs;
+  if (const CameraChange* c = lastUpTo(log.cameras, step)) s.view = c->view, s.window = c->window;
+  auto level = std::upper_bound(log.inputs.begin(), log.inputs.end(), t,
+                                [](vm::Micros v, const InputLevel& l) { return v < l.at; });
+  if (level != log.inputs.begin()) s.inputs = (level - 1)->inputs;
+  return s;
+}
+
+RunState stateAt(const RunLog& log, vm::Micros t) {
+  auto it = std::upper_bound(log.steps.begin(), log.steps.end(), t,
+                             [](vm::Micros v, const StepRecord& s) { return v < s.start; });
+  if (it == log.steps.begin()) {
+    RunState s = stateAtStep(log, 0, t);  // nothing ran yet: home, no outputs
+    s.step.reset();
+    s.encoders.assign(log.motors.size(), 0);
+    s.outputs = 0;
+    s.view = s.window = {};
+    return s;
+  }
+  return stateAtStep(log, static_cast<std::size_t>(it - log.steps.begin() - 1), t);
+}
+
+}  // namespace rs::runtime

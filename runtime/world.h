@@ -1,0 +1,85 @@
+// The simulated world around the robot that runs the program: the
+// workcell's objects and what the gripper holds. It reacts to what the
+// machine does — a move of the gripper motor, RESET — by the rule of
+// model/workcell/grasp.h (take at the end of a closing move, let go at the
+// start of an opening one, RESET puts everything back). Traces, the
+// recording and the summary only look at it.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "model/workcell/grasp.h"
+#include "model/workcell/model.h"
+#include "model/workcell/tool_tracker.h"
+#include "vm/machine.h"
+
+namespace rs::runtime {
+
+/// The gripper took (`held`) or let go of object `object` (an index in
+/// Workcell::objects). A take happens at the end of the closing move
+/// (`at`), and `pose` is F_E_object, which the object keeps until let go;
+/// a let-go happens as the opening move (or RESET) begins, and `pose` is
+/// F_world_object, where the object rests from then on.
+struct GraspEvent {
+  vm::Micros at = 0;
+  std::size_t object = 0;
+  bool held = false;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+};
+
+class World {
+ public:
+  /// The first robot of `cell` (which must outlive the world) runs the program.
+  explicit World(const workcell::Workcell& cell);
+
+  /// The motors moved from `before` to `after`, from `start` to `end`.
+  void moved(std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
+             vm::Micros end);
+  /// RESET at time `at`: nothing held, every object where the cell placed it.
+  void reset(vm::Micros at);
+
+  /// Counts every take and let-go so far: an observer that remembers the
+  /// count sees whether the last step changed the hold.
+  std::uint64_t eventCount() const { return state_.events; }
+  /// The latest take or let-go (meaningful once eventCount() > 0).
+  const GraspEvent& lastEvent() const { return state_.last; }
+
+  const workcell::Workcell& cell() const { return cell_; }
+  std::optional<std::size_t> held() const { return grasping_.held(); }
+  /// When the object held now was taken (the end of its closing move).
+  vm::Micros heldSince() const { return state_.heldSince; }
+  /// Object `o`'s placement (F_world_design) at time `at` with the robot's
+  /// motors at `encoders`: carried by the gripper, or resting. A take that
+  /// happens after `at` (a closing move still under way) has not happened yet.
+  Eigen::Isometry3d objectPose(std::size_t o, std::span<const std::int32_t> encoders,
+                               vm::Micros at = INT64_MAX) const;
+  /// The tool centre point in world coordinates, when the robot has a chain.
+  std::optional<std::array<double, 3>> tcp(std::span<const std::int32_t> encoders) const;
+
+  struct State {
+    workcell::Grasping::State grasp;
+    vm::Micros heldSince = 0;
+    std::uint64_t events = 0;
+    GraspEvent last;
+    bool operator==(const State& o) const {
+      return grasp == o.grasp && heldSince == o.heldSince && events == o.events && last.at == o.last.at &&
+             last.object == o.last.object && last.held == o.last.held && last.pose.matrix() == o.last.pose.matrix();
+    }
+  };
+  State state() const;
+  void restore(const State& state);
+
+ private:
+  const workcell::Workcell& cell_;
+  // Scratch workspaces of the kinematics: asking where something is does
+  // not change the world.
+  mutable workcell::Grasping grasping_;
+  mutable std::optional<workcell::ToolTracker> tool_;
+  State state_;  // all but the grasp, which grasping_ keeps
+};
+
+}  // namespace rs::runtime
