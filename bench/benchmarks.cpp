@@ -12,7 +12,7 @@
 #include "bench/timing.h"
 #include "compiler/compiler.h"
 #include "launch/program.h"
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 #include "vm/image_file.h"
 #include "vm/verify.h"
 

@@ -11,7 +11,7 @@
 
 #include "diag/diagnostic.h"
 #include "launch/program.h"
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 #include "runtime/stimuli.h"
 
 namespace rs::launch {

@@ -92,6 +92,8 @@ RunOutcome Interpreter::run(const RunLimits& limits, StepObserver* observer, con
   InterpreterState& st = state_;
   const Instr* const code = image_.code.data();
   const std::uint32_t size = static_cast<std::uint32_t>(image_.code.size());
+  // The instruction the run ends on: END, or the last one when it runs past it.
+  std::uint32_t endIndex = size == 0 ? 0 : size - 1;
   const std::int32_t* const k = image_.constants.data();
   std::int32_t* const vars = st.variables.data();
   const std::uint8_t* const before = pause.before.size() == size ? pause.before.data() : nullptr;
@@ -196,6 +198,7 @@ RunOutcome Interpreter::run(const RunLimits& limits, StepObserver* observer, con
         break;
       case Op::End:
         pc = size;
+        endIndex = at;
         break;
     }
     bool pauseNow = false;
@@ -221,7 +224,7 @@ RunOutcome Interpreter::run(const RunLimits& limits, StepObserver* observer, con
     }
     if (pauseNow || (before && pc < size && before[pc])) return pauseAt(pc);
   }
-  return stop(StopReason::End, {}, pc == 0 ? 0 : pc - 1);
+  return stop(StopReason::End, {}, endIndex);
 }
 
 }  // namespace rs::vm

@@ -17,7 +17,7 @@
 #include "runtime/render/draw.h"
 #include "runtime/render/moment.h"
 #include "runtime/render/picture.h"
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 #include "runtime/stimuli_text.h"
 #include "vm/disasm.h"
 

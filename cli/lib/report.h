@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 #include "vm/interpreter.h"
 
 namespace rs::cli {

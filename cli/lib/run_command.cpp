@@ -5,7 +5,7 @@
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/report.h"
 #include "cli/lib/trace.h"
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 
 namespace rs::cli {
 

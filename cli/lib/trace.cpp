@@ -45,14 +45,7 @@ std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell
 }
 
 TraceWriter::TraceWriter(std::ostream& out, TraceFormat format, const runtime::Run& run)
-    : out_(out), format_(format), run_(run), graspsSeen_(run.world() ? run.world()->eventCount() : 0) {}
-
-const runtime::GraspEvent* TraceWriter::newGrasp() {
-  const runtime::World* world = run_.world();
-  if (!world || world->eventCount() == graspsSeen_) return nullptr;
-  graspsSeen_ = world->eventCount();
-  return &world->lastEvent();
-}
+    : out_(out), format_(format), run_(run) {}
 
 bool TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
   if (format_ == TraceFormat::Text) text(vm, index);
@@ -77,7 +70,7 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
   const vm::Instr& in = im.code[index];
   std::string changed =
       writesVariable(in) ? fmt::format("{}={}", im.variables[in.b], vm.variables()[in.b]) : std::string();
-  if (const runtime::GraspEvent* g = newGrasp())
+  if (const runtime::GraspEvent* g = run_.graspOfLastStep())
     changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.world()->cell());
   const std::optional<std::array<double, 3>> tool = run_.world() ? run_.world()->tcp(pos) : std::nullopt;
   const std::string tcp = tool ? fmt::format("{:<28}  ", pointText(*tool)) : std::string();
@@ -109,7 +102,7 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   nlohmann::ordered_json changed = nlohmann::ordered_json::object();
   if (writesVariable(in)) changed[im.variables[in.b]] = vm.variables()[in.b];
   j["changed"] = changed;
-  if (const runtime::GraspEvent* g = newGrasp())
+  if (const runtime::GraspEvent* g = run_.graspOfLastStep())
     j["grasp"] = {{"object", g->object + 1}, {"name", run_.world()->cell().objects[g->object].shape.name},
                   {"held", g->held}};
   out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';

@@ -4,7 +4,7 @@
 
 #include <ostream>
 
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 #include "vm/interpreter.h"
 
 namespace rs::cli {
@@ -22,12 +22,9 @@ class TraceWriter final : public vm::StepObserver {
  private:
   void text(const vm::Interpreter& vm, std::uint32_t index);
   void json(const vm::Interpreter& vm, std::uint32_t index);
-  /// The take or let-go of the step just run, if any.
-  const runtime::GraspEvent* newGrasp();
   std::ostream& out_;
   TraceFormat format_;
   const runtime::Run& run_;
-  std::uint64_t graspsSeen_ = 0;
   bool headerDone_ = false;
   std::size_t motorsWidth_ = 0;
 };

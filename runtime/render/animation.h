@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "runtime/render/camera.h"
-#include "runtime/run_log.h"
+#include "runtime/run/run_log.h"
 #include "model/workcell/model.h"
 
 namespace rs::render {

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 
 namespace rs::render {
 

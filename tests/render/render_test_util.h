@@ -16,7 +16,7 @@
 #include "compiler/library.h"
 #include "launch/program.h"
 #include "model/workcell/model.h"
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 #include "tests/cli/cli_support.h"
 
 namespace rendertest {

@@ -5,7 +5,7 @@
 
 #include "render_test_util.h"
 #include "runtime/render/moment.h"
-#include "runtime/run_log.h"
+#include "runtime/run/run_log.h"
 
 using rs::runtime::RunLog;
 using rs::vm::Micros;

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render_test_util.h"
-#include "runtime/run_log.h"
+#include "runtime/run/run_log.h"
 
 using rs::runtime::RunLog;
 using rs::vm::Micros;

@@ -13,7 +13,7 @@
 #include "../render/render_test_util.h"
 #include "model/workcell/grasp.h"
 #include "runtime/render/moment.h"
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 
 namespace {
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "compiler/compiler.h"
+#include "runtime/run/run.h"
 #include "runtime/serial/emulator.h"
 #include "runtime/serial/rhino_machine.h"
 #include "runtime/serial/serial_log.h"
@@ -76,13 +77,18 @@ struct RunResult {
   std::vector<std::int32_t> variables;
 };
 
-inline RunResult runOn(const vm::Image& image, vm::Machine& machine) {
-  vm::Interpreter vm(image, machine);
+/// A run of `image` (with no stimuli) on `machine`, which the caller keeps.
+inline RunResult runOn(const vm::Image& image, vm::Machine& machine, vm::RunLimits limits = {1'000'000, 600'000'000}) {
+  runtime::RunSpec spec;
+  spec.image = std::make_shared<const vm::Image>(image);
+  spec.limits = limits;
+  runtime::Run run(std::move(spec), machine);
   RunResult r;
-  r.outcome = vm.run(vm::RunLimits{1'000'000, 600'000'000});
+  r.outcome = run.runToEnd();
   r.positions.assign(machine.positions().begin(), machine.positions().end());
   r.outputs = machine.outputs();
-  r.variables.assign(vm.variables().begin(), vm.variables().end());
+  const auto vars = run.interpreter().variables();
+  r.variables.assign(vars.begin(), vars.end());
   return r;
 }
 

@@ -42,8 +42,7 @@ FaultRun runWithFault(Dialect d, FaultKind kind, std::uint64_t after) {
   {
     RhinoMachine machine(motors, settings, logged, clock, &log);
     REQUIRE(machine.open());
-    vm::Interpreter interpreter(image, machine);
-    r.outcome = interpreter.run({});
+    r.outcome = runOn(image, machine, {}).outcome;
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // Let the emulator take in the last bytes (the stops) before looking.

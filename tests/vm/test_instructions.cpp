@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "compiler/compiler.h"
-#include "runtime/sim_machine.h"
+#include "runtime/run/run.h"
 #include "runtime/stimuli.h"
 #include "stdlib/default_robot.h"
 #include "vm/interpreter.h"
@@ -57,7 +57,8 @@ class Recorder final : public rs::vm::StepObserver {
 
 struct Run {
   rs::vm::Image image;
-  std::unique_ptr<SimMachine> machine;
+  std::unique_ptr<rs::runtime::Run> run;
+  const SimMachine* machine = nullptr;  // the run's
   rs::vm::RunOutcome outcome;
   Values vars;
   Recorder trace;
@@ -84,10 +85,16 @@ Run runImage(rs::vm::Image image, Stimuli stimuli = {}, RunLimits limits = {}) {
   Run r;
   r.image = std::move(image);
   REQUIRE(rs::vm::verify(r.image).message.empty());
-  r.machine = std::make_unique<SimMachine>(r.image.motors, std::move(stimuli));
-  rs::vm::Interpreter vm(r.image, *r.machine);
-  r.outcome = vm.run(limits, &r.trace);
-  r.vars.assign(vm.variables().begin(), vm.variables().end());
+  rs::runtime::RunSpec spec;
+  spec.image = std::make_shared<const rs::vm::Image>(r.image);
+  spec.stimuli = std::move(stimuli);
+  spec.limits = limits;
+  r.run = std::make_unique<rs::runtime::Run>(std::move(spec));
+  r.machine = r.run->sim();
+  r.run->observe(r.trace);
+  r.outcome = r.run->runToEnd();
+  const auto vars = r.run->interpreter().variables();
+  r.vars.assign(vars.begin(), vars.end());
   return r;
 }
 

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "compiler/compiler.h"
-#include "runtime/sim_machine.h"
+#include "runtime/run/run.h"
 #include "stdlib/default_robot.h"
 #include "vm/disasm.h"
 #include "vm/image_file.h"
@@ -115,9 +115,11 @@ void exerciseAccepted(const Image& im) {
   REQUIRE(rs::vm::verify(im).message.empty());
   const std::string listing = rs::vm::disassemble(im);
   CHECK(!listing.empty());
-  rs::runtime::SimMachine machine(im.motors, {});
-  rs::vm::Interpreter vm(im, machine);
-  const rs::vm::RunOutcome o = vm.run(rs::vm::RunLimits{200, 100 * 1'000'000LL});
+  rs::runtime::RunSpec spec;
+  spec.image = std::make_shared<const Image>(im);
+  spec.limits = rs::vm::RunLimits{200, 100 * 1'000'000LL};
+  rs::runtime::Run run(std::move(spec));
+  const rs::vm::RunOutcome o = run.runToEnd();
   CHECK(o.index < im.code.size());
 }
 

@@ -21,7 +21,7 @@
 
 #include "model/workcell/model.h"
 #include "runtime/cell_machine.h"
-#include "runtime/run_log.h"
+#include "runtime/run/run_log.h"
 #include "runtime/sim_machine.h"
 #include "runtime/stimuli.h"
 #include "runtime/world.h"
@@ -99,6 +99,8 @@ class Run {
   /// On another machine (a real controller): no snapshots, no log; the
   /// spec's stimuli are not used.
   Run(RunSpec spec, std::unique_ptr<vm::Machine> machine);
+  /// The same on a machine the caller keeps (it must outlive the run).
+  Run(RunSpec spec, vm::Machine& machine);
   Run(const Run&) = delete;
   Run& operator=(const Run&) = delete;
   ~Run();
@@ -115,6 +117,11 @@ class Run {
   vm::RunOutcome runUntil(const RunUntil& until);
   vm::RunOutcome runUntilTime(vm::Micros t);
   vm::RunOutcome runUntilLine(std::uint32_t line);
+  /// Before the instruction a label names (as the source spells it, any
+  /// case); nullopt, without running, when the program has no such label.
+  std::optional<vm::RunOutcome> runUntilLabel(std::string_view label);
+  /// The instruction a label names, any case.
+  std::optional<std::uint32_t> labelInstruction(std::string_view label) const;
   /// Why the last call paused.
   PauseCause pauseCause() const { return cause_; }
   /// Makes a running call pause soon (from any thread).
@@ -132,6 +139,9 @@ class Run {
   std::vector<std::int32_t> motorsAt(vm::Micros t) const;
   std::optional<std::array<double, 3>> tcp() const;
   std::vector<ObjectView> objects(vm::Micros at = INT64_MAX) const;
+  /// The take or let-go of the step just run, or null (what a trace shows
+  /// beside the step; right after a restore, null).
+  const GraspEvent* graspOfLastStep() const { return lastStepGrasped_ ? &world_->lastEvent() : nullptr; }
 
   bool canSnapshot() const { return sim_ != nullptr; }
   /// The whole state (the simulated machine only: check canSnapshot()).
@@ -156,11 +166,11 @@ class Run {
 
  private:
   class Observers;
-  void build(std::unique_ptr<vm::Machine> motion);
+  void build(vm::Machine& motion);
   PauseCause causeOf(const vm::RunOutcome& outcome, const RunUntil& until, std::uint64_t sliceEnd) const;
 
   RunSpec spec_;
-  std::unique_ptr<vm::Machine> motion_;   // moves the motors
+  std::unique_ptr<vm::Machine> motion_;   // moves the motors, when the run owns them
   SimMachine* sim_ = nullptr;             // motion_, when simulated
   std::optional<World> world_;
   std::optional<CellMachine> cellMachine_;
@@ -169,6 +179,8 @@ class Run {
   std::unique_ptr<vm::Interpreter> interpreter_;
   std::unique_ptr<Observers> observers_;
   std::vector<std::uint8_t> breakpoints_;  // scratch for RunUntil's instructions and lines
+  std::uint64_t graspEventsSeen_ = 0;  // the world's event count before the step being run
+  bool lastStepGrasped_ = false;
   std::atomic<bool> pauseRequested_ = false;
   PauseCause cause_ = PauseCause::None;
 };

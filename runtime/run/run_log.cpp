@@ -1,4 +1,4 @@
-#include "runtime/run_log.h"
+#include "runtime/run/run_log.h"
 
 #include <algorithm>
 

@@ -1,4 +1,6 @@
-#include "runtime/run.h"
+#include "runtime/run/run.h"
+
+#include "base/ascii.h"
 
 #include <algorithm>
 
@@ -18,13 +20,17 @@ class Run::Observers final : public vm::StepObserver {
  public:
   explicit Observers(Run& run) : run_(run) {}
   bool afterStep(const vm::Interpreter& vm, std::uint32_t index) override {
+    if (run_.world_) {
+      run_.lastStepGrasped_ = run_.world_->eventCount() != run_.graspEventsSeen_;
+      run_.graspEventsSeen_ = run_.world_->eventCount();
+    }
     if (run_.logger_) run_.logger_->afterStep(index);
     bool pause = false;
     for (vm::StepObserver* o : added) pause |= o->afterStep(vm, index);
     if (when && (*when)(run_)) conditionMet = true, pause = true;
     return pause;
   }
-  bool any() const { return run_.logger_ || !added.empty() || when; }
+  bool any() const { return run_.world_ || run_.logger_ || !added.empty() || when; }
 
   std::vector<vm::StepObserver*> added;
   const std::function<bool(const Run&)>* when = nullptr;
@@ -37,12 +43,19 @@ class Run::Observers final : public vm::StepObserver {
 Run::Run(RunSpec spec) : spec_(std::move(spec)) {
   auto sim = std::make_unique<SimMachine>(spec_.image->motors, spec_.stimuli);
   sim_ = sim.get();
-  build(std::move(sim));
+  motion_ = std::move(sim);
+  build(*motion_);
 }
 
 Run::Run(RunSpec spec, std::unique_ptr<vm::Machine> machine) : spec_(std::move(spec)) {
   spec_.log = false;
-  build(std::move(machine));
+  motion_ = std::move(machine);
+  build(*motion_);
+}
+
+Run::Run(RunSpec spec, vm::Machine& machine) : spec_(std::move(spec)) {
+  spec_.log = false;
+  build(machine);
 }
 
 Run::~Run() = default;
@@ -51,12 +64,11 @@ Run::~Run() = default;
 // machine call (the cell machine stands in front of the motion machine), so
 // by the time any observer hears of a step, the hold has changed; the log
 // then records the step, and the observers added (a trace) see both.
-void Run::build(std::unique_ptr<vm::Machine> motion) {
-  motion_ = std::move(motion);
-  front_ = motion_.get();
+void Run::build(vm::Machine& motion) {
+  front_ = &motion;
   if (spec_.cell) {
     world_.emplace(*spec_.cell);
-    cellMachine_.emplace(*motion_, *world_);
+    cellMachine_.emplace(motion, *world_);
     front_ = &*cellMachine_;
   }
   if (spec_.log && sim_) logger_.emplace(*sim_, world());
@@ -87,6 +99,20 @@ vm::RunOutcome Run::runUntilTime(vm::Micros t) {
 vm::RunOutcome Run::runUntilLine(std::uint32_t line) {
   RunUntil until;
   until.lines.push_back(line);
+  return runUntil(until);
+}
+
+std::optional<std::uint32_t> Run::labelInstruction(std::string_view label) const {
+  for (const vm::Label& l : spec_.image->labels)
+    if (base::sameName(l.name, label)) return l.index;
+  return std::nullopt;
+}
+
+std::optional<vm::RunOutcome> Run::runUntilLabel(std::string_view label) {
+  const std::optional<std::uint32_t> at = labelInstruction(label);
+  if (!at) return std::nullopt;
+  RunUntil until;
+  until.instructions.push_back(*at);
   return runUntil(until);
 }
 
@@ -203,6 +229,8 @@ void Run::restore(const RunSnapshot& s) {
   interpreter_->restore(s.vm);
   if (sim_) sim_->restore(s.machine);
   if (world_ && s.world) world_->restore(*s.world);
+  graspEventsSeen_ = world_ ? world_->eventCount() : 0;
+  lastStepGrasped_ = false;
   if (logger_ && s.log && sim_) logger_->restore(*s.log, *sim_);
   cause_ = PauseCause::None;
 }
