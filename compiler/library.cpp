@@ -181,12 +181,11 @@ std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const Desc
                                          def->normal[0].v, def->normal[1].v, def->approach[0].v, def->approach[1].v};
   kinematics::Result<kinematics::GripperModel> model = kinematics::makeGripper(points, def->precision);
   for (const kinematics::KinematicsError& e : model.errors) {
-    // The kinematics core names the part in its message; point at its line.
-    const auto names = [&](std::string_view part) { return e.message.find(part) != std::string::npos; };
-    const diag::Pos pos = names("axis r2")                               ? def->axis2[0].pos
-                    : names("axis r3")                             ? def->axis3[0].pos
-                    : e.kind == kinematics::ErrorKind::TcpMismatch ? def->approach[0].pos
-                                                                   : def->normal[0].pos;
+    // The kinematics core says which vector the error is about; point at its line.
+    const diag::Pos pos = e.index == kinematics::kGripperAxis2      ? def->axis2[0].pos
+                          : e.index == kinematics::kGripperAxis3    ? def->axis3[0].pos
+                          : e.index == kinematics::kGripperApproach ? def->approach[0].pos
+                                                                    : def->normal[0].pos;
     error(at, pos, fmt::format("gripper '{}': {}", def->name, e.message));
   }
   if (!model.ok()) return std::nullopt;

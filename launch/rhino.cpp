@@ -40,40 +40,44 @@ std::string emergencyStop(const RhinoSettings& s, const std::vector<vm::MotorSpe
 }  // namespace
 
 bool buildSettings(const std::string& dialectText, const std::string& file, const std::vector<std::string>& sets,
-                   RhinoSettings& settings, std::string& error) {
+                   RhinoSettings& settings, std::vector<diag::Diagnostic>& diags) {
   settings = serial::defaultSettings(dialectText == "mark4" ? Dialect::Mark4 : Dialect::Mark3);
+  const std::size_t before = diags.size();
   if (!file.empty()) {
     const base::FileRead text = base::readFile(file, kMaxInputBytes);
     if (!text.bytes) {
-      error = fmt::format("{}: cannot read serial settings: {}", file, text.error);
-      return false;
-    }
-    error = serial::applySettingsText(settings, *text.bytes, file);
-    if (!error.empty()) {
-      if (error.back() == '\n') error.pop_back();
-      return false;
+      diags.push_back({file, {}, diag::Severity::Error, "cannot read serial settings: " + text.error});
+    } else {
+      for (diag::Diagnostic& d : serial::applySettingsText(settings, *text.bytes, file)) diags.push_back(std::move(d));
     }
   }
-  for (const std::string& s : sets) {
-    error = serial::applySettingArg(settings, s);
-    if (!error.empty()) return false;
-  }
-  return true;
+  for (const std::string& s : sets)
+    if (std::string error = serial::applySettingArg(settings, s); !error.empty())
+      diags.push_back({"--serial-set", {}, diag::Severity::Error, std::move(error)});
+  return diags.size() == before;
 }
 
 std::unique_ptr<vm::Machine> openRhino(const SerialRequest& o, const std::vector<vm::MotorSpec>& motors,
-                                       vm::Micros maxTime, std::string& error) {
+                                       vm::Micros maxTime, std::vector<diag::Diagnostic>& diags) {
   RhinoSettings settings;
-  if (!buildSettings(o.dialect, o.settingsFile, o.settings, settings, error)) return nullptr;
+  if (!buildSettings(o.dialect, o.settingsFile, o.settings, settings, diags)) return nullptr;
+  std::string error;
+  // What the system refused (the device, the log file, the controller's
+  // answer) has no place in a file: "robotsim: error: ...", the message
+  // naming the path.
+  const auto failed = [&] {
+    diags.push_back({"robotsim", {}, diag::Severity::Error, error});
+    return nullptr;
+  };
   auto conn = std::make_shared<Connection>();
   if (!o.logFile.empty()) {
     conn->log = serial::SerialLog::create(o.logFile, error);
-    if (!conn->log) return nullptr;
+    if (!conn->log) return failed();
   }
   conn->port = serial::SerialPort::open(o.device, settings.line, error);
   if (!conn->port) {
     if (conn->log) conn->log->comment("cannot open: " + error);
-    return nullptr;
+    return failed();
   }
   conn->guard = std::make_unique<serial::InterruptGuard>();
   conn->guard->setEmergencyStop(conn->port->fd(), emergencyStop(settings, motors));
@@ -88,7 +92,7 @@ std::unique_ptr<vm::Machine> openRhino(const SerialRequest& o, const std::vector
   machine->setWaitLimit(maxTime);
   if (vm::Status st = machine->open(); !st) {
     error = st.message;
-    return nullptr;
+    return failed();
   }
   return machine;
 }

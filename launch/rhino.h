@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "diag/diagnostic.h"
 #include "runtime/serial/settings.h"
 #include "vm/image.h"
 #include "vm/machine.h"
@@ -26,14 +27,14 @@ struct SerialRequest {
 };
 
 /// Defaults for the dialect ("mark3" or "mark4"), then the settings file,
-/// then each KEY=VALUE; false with `error` set when any is bad.
+/// then each KEY=VALUE; false, with every problem in `diags`, when any is bad.
 bool buildSettings(const std::string& dialect, const std::string& file, const std::vector<std::string>& sets,
-                   serial::RhinoSettings& settings, std::string& error);
+                   serial::RhinoSettings& settings, std::vector<diag::Diagnostic>& diags);
 
 /// Opens the port, installs the Ctrl-C handler (until the machine goes),
-/// makes first contact. Null with `error` set when anything fails; the
-/// message is ready for "robotsim: error: " + error. `maxTime` bounds WAITFOR.
+/// makes first contact. Null, with the problems in `diags`, when anything
+/// fails. `maxTime` bounds WAITFOR.
 std::unique_ptr<vm::Machine> openRhino(const SerialRequest& request, const std::vector<vm::MotorSpec>& motors,
-                                       vm::Micros maxTime, std::string& error);
+                                       vm::Micros maxTime, std::vector<diag::Diagnostic>& diags);
 
 }  // namespace rs::launch

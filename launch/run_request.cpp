@@ -14,9 +14,8 @@ std::string_view RunRequest::firstGiven() const {
 
 bool loadStimuli(const RunRequest& request, runtime::Stimuli& stimuli, std::vector<diag::Diagnostic>& diags) {
   bool ok = true;
-  const auto add = [&](const runtime::StimuliError& e) {
-    diags.push_back({e.file, {static_cast<std::uint32_t>(e.line), static_cast<std::uint32_t>(e.column)},
-                     diag::Severity::Error, e.message});
+  const auto add = [&](const diag::Diagnostic& e) {
+    diags.push_back(e);
     ok = false;
   };
   if (!request.stimuliFile.empty()) {

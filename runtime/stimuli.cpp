@@ -24,7 +24,7 @@ namespace {
 
 constexpr std::size_t kMaxFileBytes = 64u << 20;  // far beyond any real stimuli file
 
-int clampToInt(std::size_t n) { return n > INT_MAX ? INT_MAX : static_cast<int>(n); }
+std::uint32_t clampToU32(std::size_t n) { return n > UINT32_MAX ? UINT32_MAX : static_cast<std::uint32_t>(n); }
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -191,9 +191,9 @@ StimuliParse parseStimuli(std::string_view text, std::string_view fileName) {
     const auto line = text.substr(0, newline);
     const std::size_t rulesBefore = result.stimuli.rules.size();
     if (auto failure = parseLine(line, result.stimuli))
-      result.errors.push_back({std::string(fileName), clampToInt(lineNo),
-                               clampToInt(failure->offset + 1), std::move(failure->message)});
-    if (result.stimuli.rules.size() > rulesBefore) result.stimuli.rules.back().line = clampToInt(lineNo);
+      result.errors.push_back({std::string(fileName), {clampToU32(lineNo), clampToU32(failure->offset + 1)},
+                               diag::Severity::Error, std::move(failure->message)});
+    if (result.stimuli.rules.size() > rulesBefore) result.stimuli.rules.back().line = clampToU32(lineNo);
     if (newline == std::string_view::npos) break;
     text.remove_prefix(newline + 1);
   }
@@ -203,7 +203,7 @@ StimuliParse parseStimuli(std::string_view text, std::string_view fileName) {
 StimuliParse loadStimuliFile(const std::filesystem::path& path) {
   const auto name = path.string();
   const auto fileError = [&](std::string message) {
-    return StimuliParse{{}, {{name, 0, 0, std::move(message)}}};
+    return StimuliParse{{}, {{name, {}, diag::Severity::Error, std::move(message)}}};
   };
   const base::FileRead read = base::readFile(name, kMaxFileBytes);
   if (!read.bytes) return fileError("cannot read the stimuli file: " + read.error);

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "diag/diagnostic.h"
 #include "vm/machine.h"
 
 namespace rs::runtime {
@@ -33,7 +34,7 @@ struct ReactiveRule {
   int input = 1;
   bool inputOn = true;
   vm::Micros delay = 0;
-  int line = 0;  ///< where the stimuli file wrote it (0: not from a file)
+  std::uint32_t line = 0;  ///< where the stimuli file wrote it (0: not from a file)
   bool operator==(const ReactiveRule&) const = default;
 };
 
@@ -45,21 +46,13 @@ struct Stimuli {
   bool operator==(const Stimuli&) const = default;
 };
 
-/// One bad line or argument. Line and column are 1-based and count bytes;
-/// both are 0 when the error concerns the whole file (it cannot be read).
-struct StimuliError {
-  std::string file;
-  int line = 0;
-  int column = 0;
-  std::string message;
-  bool operator==(const StimuliError&) const = default;
-};
-
 /// A parsed stimuli file: the model of every good line, and one error per
 /// bad line (all of them, in line order). Bad lines add nothing to the model.
 struct StimuliParse {
   Stimuli stimuli;
-  std::vector<StimuliError> errors;
+  /// One error per bad line: line and column 1-based, counting bytes; line
+  /// 0 when the whole file is at fault (it cannot be read).
+  std::vector<diag::Diagnostic> errors;
 };
 
 /// Parses stimuli text (any bytes). `fileName` only labels the errors.
@@ -72,7 +65,7 @@ StimuliParse loadStimuliFile(const std::filesystem::path& path);
 /// One command-line stimulus: exactly one of the two is set.
 struct StimulusArgParse {
   std::optional<InputChange> change;
-  std::optional<StimuliError> error;  // line 1, column within the argument
+  std::optional<diag::Diagnostic> error;  // line 1, column within the argument
 };
 
 /// Parses the command-line form `N=ON@T` or `N=OFF@T` (e.g. `3=ON@1.5`;

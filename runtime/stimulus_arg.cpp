@@ -16,8 +16,8 @@ namespace {
 constexpr std::string_view kForm = "(the form is N=ON@T or N=OFF@T, e.g. 3=ON@1.5)";
 
 StimulusArgParse failAt(std::string_view origin, std::size_t offset, std::string message) {
-  const int column = offset >= INT_MAX ? INT_MAX : static_cast<int>(offset) + 1;
-  return {std::nullopt, StimuliError{std::string(origin), 1, column, std::move(message)}};
+  const std::uint32_t column = offset >= UINT32_MAX ? UINT32_MAX : static_cast<std::uint32_t>(offset) + 1;
+  return {std::nullopt, diag::Diagnostic{std::string(origin), {1, column}, diag::Severity::Error, std::move(message)}};
 }
 
 }  // namespace

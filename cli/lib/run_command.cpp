@@ -43,12 +43,11 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
 
   std::unique_ptr<runtime::Run> run;
   if (o.serial.active()) {
-    std::string error;
-    std::unique_ptr<vm::Machine> rhino = launch::openRhino(o.serial, spec->image->motors, spec->limits.maxTime, error);
-    if (!rhino) {
-      err << fmt::format("robotsim: error: {}\n", error);
-      return kExitRunFailed;
-    }
+    std::vector<diag::Diagnostic> problems;
+    std::unique_ptr<vm::Machine> rhino =
+        launch::openRhino(o.serial, spec->image->motors, spec->limits.maxTime, problems);
+    launch::printDiagnostics(err, problems, program);
+    if (!rhino) return kExitRunFailed;
     run = std::make_unique<runtime::Run>(*spec, std::move(rhino));
   } else {
     run = std::make_unique<runtime::Run>(*spec);

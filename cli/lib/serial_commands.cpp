@@ -262,11 +262,12 @@ std::string motorList(const std::vector<vm::MotorSpec>& motors) {
 
 int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err) {
   serial::EmulatorConfig config;
-  std::string error;
-  if (!launch::buildSettings(o.dialect, o.settingsFile, o.settings, config.settings, error)) {
-    err << "robotsim: error: " << error << '\n';
+  std::vector<diag::Diagnostic> problems;
+  if (!launch::buildSettings(o.dialect, o.settingsFile, o.settings, config.settings, problems)) {
+    for (const diag::Diagnostic& d : problems) err << diag::render(d, nullptr);
     return kExitBadInput;
   }
+  std::string error;
   if (o.robot == stdlib::rhinoScaraName()) {
     config.motors = stdlib::rhinoScaraMotors();
   } else {

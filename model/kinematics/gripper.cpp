@@ -8,9 +8,13 @@ namespace rs::kinematics {
 
 namespace {
 
+// The errors of one part, each marked with the part it is about.
 template <class T>
-void take(Result<T>& part, std::vector<KinematicsError>& errors) {
-  errors.insert(errors.end(), part.errors.begin(), part.errors.end());
+void take(Result<T>& part, GripperPart which, std::vector<KinematicsError>& errors) {
+  for (KinematicsError e : part.errors) {
+    e.index = which;
+    errors.push_back(std::move(e));
+  }
 }
 
 std::string point(const Eigen::Vector3d& p) { return fmt::format("({:g}, {:g}, {:g})", p.x(), p.y(), p.z()); }
@@ -21,20 +25,20 @@ Result<GripperModel> makeGripper(const GripperPoints& points, double precision, 
   Result<GripperModel> result;
   auto r2 = lineThrough(points.r2From, points.r2To, "axis r2", tol);
   auto r3 = lineThrough(points.r3From, points.r3To, "axis r3", tol);
-  take(r2, result.errors);
-  take(r3, result.errors);
+  take(r2, kGripperAxis2, result.errors);
+  take(r3, kGripperAxis3, result.errors);
   const Eigen::Vector3d tcp = points.normalFrom;
   if (tcp.allFinite() && points.approachFrom.allFinite() && (points.approachFrom - tcp).norm() > tol.distance) {
-    result.errors.push_back({ErrorKind::TcpMismatch, -1,
+    result.errors.push_back({ErrorKind::TcpMismatch, kGripperApproach,
                              fmt::format("the approach vector starts at {}, not at the normal vector's start {}: "
                                          "both must start at the tool centre point",
                                          point(points.approachFrom), point(tcp))});
   }
   auto frame = frameFromAxes(tcp, points.normalTo - tcp, points.approachTo - points.approachFrom, tol, -1,
                              {"the normal vector", "the approach vector"});
-  take(frame, result.errors);
+  take(frame, kGripperNormal, result.errors);
   if (!std::isfinite(precision) || precision == 0.0) {
-    result.errors.push_back({ErrorKind::BadPrecision, -1,
+    result.errors.push_back({ErrorKind::BadPrecision, kGripperWhole,
                              fmt::format("the gripper has precision {}, but it must be a non-zero number", precision)});
   }
   if (result.errors.empty()) result.value = GripperModel{*r2.value, *r3.value, *frame.value, precision};

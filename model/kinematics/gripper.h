@@ -33,10 +33,20 @@ struct GripperModel {
   double precision = 1.0;                                   ///< degrees of finger rotation per encoder count
 };
 
-/// Builds a gripper. Errors (index -1): a degenerate or non-finite axis,
-/// n not perpendicular to a, an approach vector that does not start at the
-/// normal vector's start (within tol.distance), a precision of zero or not
-/// finite.
+/// Which of a gripper's vectors an error is about: its KinematicsError::index,
+/// so that a reader points at the line that gave the vector.
+enum GripperPart : int {
+  kGripperWhole = -1,     ///< the precision
+  kGripperNormal = 0,     ///< the normal vector (and the frame n and a make)
+  kGripperApproach = 1,   ///< the approach vector's start
+  kGripperAxis2 = 2,      ///< finger 2's axis r2
+  kGripperAxis3 = 3,      ///< finger 3's axis r3
+};
+
+/// Builds a gripper. Errors (their index a GripperPart): a degenerate or
+/// non-finite axis, n not perpendicular to a, an approach vector that does
+/// not start at the normal vector's start (within tol.distance), a
+/// precision of zero or not finite.
 Result<GripperModel> makeGripper(const GripperPoints& points, double precision, const Tolerances& tol = {});
 
 /// Where the fingers are relative to the gripper base: the motions, in G,

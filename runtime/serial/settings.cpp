@@ -265,21 +265,26 @@ std::string applySettingArg(RhinoSettings& s, std::string_view arg) {
   return applySetting(s, arg.substr(0, eq), arg.substr(eq + 1));
 }
 
-std::string applySettingsText(RhinoSettings& s, std::string_view text, std::string_view name) {
-  std::string errors;
-  int lineNo = 0;
+std::vector<diag::Diagnostic> applySettingsText(RhinoSettings& s, std::string_view text, std::string_view name) {
+  std::vector<diag::Diagnostic> errors;
+  std::uint32_t lineNo = 0;
   while (!text.empty()) {
     const std::size_t nl = text.find('\n');
-    std::string_view line = text.substr(0, nl);
+    const std::string_view whole = text.substr(0, nl);
+    std::string_view line = whole;
     text = nl == std::string_view::npos ? std::string_view{} : text.substr(nl + 1);
-    ++lineNo;
+    if (lineNo < UINT32_MAX) ++lineNo;
     if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
     line = trim(line);
     if (line.empty()) continue;
     const std::size_t eq = line.find('=');
     const std::string e = eq == std::string_view::npos ? std::string("expected key = value")
                                                        : applySetting(s, line.substr(0, eq), line.substr(eq + 1));
-    if (!e.empty()) errors += fmt::format("{}:{}: {}\n", name, lineNo, e);
+    if (e.empty()) continue;
+    // The column of the key: where the trimmed line starts in the whole one.
+    const std::size_t offset = static_cast<std::size_t>(line.data() - whole.data());
+    const std::uint32_t col = offset >= UINT32_MAX ? UINT32_MAX : static_cast<std::uint32_t>(offset) + 1;
+    errors.push_back({std::string(name), {lineNo, col}, diag::Severity::Error, e});
   }
   return errors;
 }

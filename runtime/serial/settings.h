@@ -5,6 +5,7 @@
 // key for `--serial-set KEY=VALUE`; the table is in docs/serial.md.
 #pragma once
 
+#include "diag/diagnostic.h"
 #include <array>
 #include <string>
 #include <string_view>
@@ -74,8 +75,8 @@ std::string applySetting(RhinoSettings& s, std::string_view key, std::string_vie
 /// Applies "KEY=VALUE" (the --serial-set form).
 std::string applySettingArg(RhinoSettings& s, std::string_view arg);
 /// Applies a settings file's text: one `key = value` per line, `#` comments.
-/// Errors are "NAME:LINE: message", one per bad line, newline-separated.
-std::string applySettingsText(RhinoSettings& s, std::string_view text, std::string_view name);
+/// One error per bad line, at the key's line and column (`name` is its file).
+std::vector<diag::Diagnostic> applySettingsText(RhinoSettings& s, std::string_view text, std::string_view name);
 
 /// Every key with its current value, in documentation order.
 std::vector<std::pair<std::string, std::string>> listSettings(const RhinoSettings& s);

@@ -69,7 +69,7 @@ TEST_CASE("gripper errors", "[kinematics]") {
   offTcp.approachTo = {1, 0, -70};
   auto result = makeGripper(offTcp, 0.5);
   REQUIRE(result.errors.size() == 1);
-  CHECK(result.errors[0] == KinematicsError{ErrorKind::TcpMismatch, -1,
+  CHECK(result.errors[0] == KinematicsError{ErrorKind::TcpMismatch, rs::kinematics::kGripperApproach,
                                             "the approach vector starts at (1, 0, -60), not at the normal vector's "
                                             "start (0, 0, -60): both must start at the tool centre point"});
 
@@ -78,7 +78,7 @@ TEST_CASE("gripper errors", "[kinematics]") {
   result = makeGripper(slanted, 0.5);
   REQUIRE(result.errors.size() == 1);
   CHECK(result.errors[0] ==
-        KinematicsError{ErrorKind::AxesNotPerpendicular, -1,
+        KinematicsError{ErrorKind::AxesNotPerpendicular, rs::kinematics::kGripperNormal,
                         "the normal vector and the approach vector are not perpendicular (the angle between them is "
                         "45 degrees)"});
 
@@ -86,7 +86,7 @@ TEST_CASE("gripper errors", "[kinematics]") {
   degenerate.r3To = degenerate.r3From;
   result = makeGripper(degenerate, 0);
   REQUIRE(result.errors.size() == 2);
-  CHECK(result.errors[0] == KinematicsError{ErrorKind::DegenerateAxis, -1, "axis r3 has zero length"});
+  CHECK(result.errors[0] == KinematicsError{ErrorKind::DegenerateAxis, rs::kinematics::kGripperAxis3, "axis r3 has zero length"});
   CHECK(result.errors[1] ==
-        KinematicsError{ErrorKind::BadPrecision, -1, "the gripper has precision 0, but it must be a non-zero number"});
+        KinematicsError{ErrorKind::BadPrecision, rs::kinematics::kGripperWhole, "the gripper has precision 0, but it must be a non-zero number"});
 }

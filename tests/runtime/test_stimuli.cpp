@@ -14,10 +14,23 @@ using rs::runtime::InputChange;
 using rs::runtime::parseStimuli;
 using rs::runtime::parseStimulusArg;
 using rs::runtime::ReactiveRule;
-using rs::runtime::StimuliError;
+using rs::diag::Diagnostic;
+
+// What a stimuli error must say, compared with the diagnostic the parser gave.
+struct StimuliError {
+  std::string file;
+  std::uint32_t line = 0;
+  std::uint32_t column = 0;
+  std::string message;
+};
+
+bool operator==(const Diagnostic& d, const StimuliError& e) {
+  return d.file == e.file && d.pos.line == e.line && d.pos.col == e.column && d.message == e.message &&
+         d.severity == rs::diag::Severity::Error;
+}
 
 // The one error of a one-line file.
-StimuliError onlyError(std::string_view text) {
+Diagnostic onlyError(std::string_view text) {
   const auto result = parseStimuli(text, "s.stim");
   REQUIRE(result.errors.size() == 1);
   return result.errors[0];
@@ -157,7 +170,7 @@ TEST_CASE("strange bytes get an error, never a crash", "[stimuli]") {
 
   SECTION("a huge line is cut short in the message") {
     const auto error = onlyError("at 1 input 1 " + std::string(1'000'000, 'x'));
-    CHECK(error.column == 14);
+    CHECK(error.pos.col == 14);
     CHECK(error.message ==
           "expected 'on' or 'off' after the input number, got '" + std::string(40, 'x') + "...'");
   }
@@ -174,8 +187,8 @@ TEST_CASE("strange bytes get an error, never a crash", "[stimuli]") {
       }
       const auto result = parseStimuli(text, "fuzz");
       for (const auto& e : result.errors) {
-        CHECK(e.line >= 1);
-        CHECK(e.column >= 1);
+        CHECK(e.pos.line >= 1);
+        CHECK(e.pos.col >= 1);
         CHECK_FALSE(e.message.empty());
       }
     }
@@ -209,8 +222,8 @@ TEST_CASE("bad command-line stimuli say where and what", "[stimuli][cli]") {
   CHECK(errorOf("=ON") == StimuliError{"--input", 1, 1,
                                        "expected an input number 1..8 before '=' (the form is "
                                        "N=ON@T or N=OFF@T, e.g. 3=ON@1.5)"});
-  CHECK(errorOf("3=@1").column == 3);
-  CHECK(errorOf("").column == 1);
+  CHECK(errorOf("3=@1").pos.col == 3);
+  CHECK(errorOf("").pos.col == 1);
 }
 
 TEST_CASE("an unreadable stimuli file is one error", "[stimuli]") {
