@@ -11,6 +11,7 @@
 #include "bench/generate.h"
 #include "bench/timing.h"
 #include "compiler/compiler.h"
+#include "compiler/library.h"
 #include "launch/program.h"
 #include "runtime/run/run.h"
 #include "vm/image_file.h"
@@ -343,6 +344,97 @@ json benchStartup(const Options& options) {
   return {{"lines", program.lines}, {"instructions", program.instructions},
           {"help", toJson(floor)},  {"check", toJson(check)},
           {"target_s", 0.020},      {"target_met", check.best() <= 0.020}};
+}
+
+// --- 4. Run snapshots ------------------------------------------------------------
+
+namespace {
+
+constexpr int kSnapshotLoops = 20'000;
+constexpr std::uint64_t kSnapshotEvery = 300;
+
+// A run of the snapshot program on scara-pick, keeping a log.
+std::unique_ptr<runtime::Run> snapshotRun(const std::shared_ptr<const vm::Image>& image,
+                                          const std::shared_ptr<const workcell::Workcell>& cell) {
+  runtime::RunSpec spec;
+  spec.image = image;
+  spec.cell = cell;
+  spec.log = true;
+  spec.limits.maxTime = vm::Micros{1} << 50;  // simulated time is not what is measured
+  return std::make_unique<runtime::Run>(std::move(spec));
+}
+
+}  // namespace
+
+json benchSnapshot(const Options& options) {
+  fmt::print("\n[4] Run snapshots: a {}-loop program on scara-pick, logged\n", kSnapshotLoops);
+  compiler::Library library(compiler::librarySearchPath({}));
+  const std::optional<workcell::Workcell> found = library.workcell("scara-pick");
+  if (!found) throw std::runtime_error("the library has no scara-pick workcell");
+  const auto cell = std::make_shared<const workcell::Workcell>(*found);
+  const diag::SourceFile source(
+      "snapshot.rsp", fmt::format("SET N 0\nloop: ADD N 1\nMOVE 10 0 0 0 0\nMOVE -10 0 0 0 60\nGOSUB sub\n"
+                                  "MOVE 0 0 0 0 -60\nJMPVAR N < {} loop\nEND\nsub: OUTSIG 1 ON\nOUTSIG 1 OFF\nRETURN\n",
+                                  kSnapshotLoops));
+  const auto image = std::make_shared<const vm::Image>(compileOrThrow(source, launch::cellTarget(*cell)));
+  std::uint64_t steps = 0, snapshots = 0;
+  const Measurement plain = [&] {
+    auto run = snapshotRun(image, cell);
+    const Stopwatch clock;
+    const vm::RunOutcome outcome = run->runToEnd();
+    const Sample sample = clock.stop();
+    if (!outcome.ok()) throw std::runtime_error("the snapshot program failed: " + outcome.message);
+    steps = outcome.steps;
+    return sample;
+  };
+  const Measurement withSnapshots = [&] {
+    auto run = snapshotRun(image, cell);
+    runtime::RunSnapshot last;
+    std::uint64_t taken = 0;
+    const Stopwatch clock;
+    while (!run->finished()) {
+      last = run->snapshot();
+      ++taken;
+      run->step(kSnapshotEvery);
+    }
+    const Sample sample = clock.stop();
+    if (!run->outcome()->ok() || last.vm.steps == 0) throw std::runtime_error("the snapshot run failed");
+    snapshots = taken;
+    return sample;
+  };
+  // Restoring: back to the middle of the run, 10,000 times.
+  const Measurement restores = [&] {
+    auto run = snapshotRun(image, cell);
+    run->step(steps / 2);
+    const runtime::RunSnapshot middle = run->snapshot();
+    run->runToEnd();
+    const Stopwatch clock;
+    for (int i = 0; i < 10'000; ++i) run->restore(middle);
+    const Sample sample = clock.stop();
+    if (!(run->snapshot() == middle)) throw std::runtime_error("a restored run is not where it was");
+    return sample;
+  };
+  progress(fmt::format("interleaved, 1 warm-up + {} rounds: to the end, with a snapshot every {} steps, 10,000 "
+                       "restores",
+                       options.reps, kSnapshotEvery));
+  const std::vector<Samples> s = interleave({plain, withSnapshots, restores}, options.reps);
+  const double perStep = s[0].best() * 1e9 / static_cast<double>(steps);
+  const double perSnapshot = (s[1].best() - s[0].best()) * 1e9 / static_cast<double>(snapshots);
+  const double perRestore = s[2].best() * 1e9 / 10'000;
+  row("run to the end", s[0], fmt::format("{} steps, {:.1f} ns/step", steps, perStep));
+  row(fmt::format("snapshot every {} steps", kSnapshotEvery), s[1],
+      fmt::format("{} snapshots, {:+.1f} % time", snapshots, (s[1].best() / s[0].best() - 1) * 100));
+  row("10,000 restores", s[2]);
+  fmt::print("  one snapshot {:.0f} ns (the time of {:.1f} steps), one restore {:.0f} ns\n", perSnapshot,
+             perSnapshot / perStep, perRestore);
+  return {{"steps", steps},
+          {"snapshots", snapshots},
+          {"plain", toJson(s[0])},
+          {"with_snapshots", toJson(s[1])},
+          {"restores", toJson(s[2])},
+          {"ns_per_step", perStep},
+          {"ns_per_snapshot", perSnapshot},
+          {"ns_per_restore", perRestore}};
 }
 
 }  // namespace rs::bench

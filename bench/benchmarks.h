@@ -1,4 +1,4 @@
-// The four benchmarks of `make bench`. Each prints readable lines to stdout
+// The benchmarks of `make bench`. Each prints readable lines to stdout
 // (a progress line before every long measurement) and fills its part of the
 // machine-readable summary. None of them is a test: a missed target is
 // reported, not failed; a measurement that cannot be trusted (a program
@@ -31,5 +31,10 @@ nlohmann::json benchCompile(const Options& options);
 
 /// Startup: `robotsim check` on a 1,000-line program, whole process.
 nlohmann::json benchStartup(const Options& options);
+
+/// Run snapshots: a run on the library's scara-pick cell (moves, a
+/// subroutine, outputs, a log), to the end without snapshots and with one
+/// every 300 instructions; the cost of one snapshot and one restore.
+nlohmann::json benchSnapshot(const Options& options);
 
 }  // namespace rs::bench

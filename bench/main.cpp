@@ -20,7 +20,7 @@ namespace {
 using rs::bench::Options;
 
 constexpr std::string_view kUsage =
-    "usage: robotsim_bench [--reps N] [--json FILE] [--only dispatch|compile|startup]\n"
+    "usage: robotsim_bench [--reps N] [--json FILE] [--only dispatch|compile|startup|snapshot]\n"
     "                      [--robotsim PATH] [--lua PATH] [--luac PATH] [--workdir DIR]\n";
 
 std::string firstLine(const std::string& path, std::string_view prefix = {}) {
@@ -76,8 +76,8 @@ bool parse(int argc, char** argv, Options& o, std::string& only) {
     std::cerr << "robotsim_bench: --reps must be at least 1\n";
     return false;
   }
-  if (!only.empty() && only != "dispatch" && only != "compile" && only != "startup") {
-    std::cerr << "robotsim_bench: --only takes dispatch, compile or startup\n";
+  if (!only.empty() && only != "dispatch" && only != "compile" && only != "startup" && only != "snapshot") {
+    std::cerr << "robotsim_bench: --only takes dispatch, compile, startup or snapshot\n";
     return false;
   }
   return true;
@@ -106,6 +106,7 @@ int main(int argc, char** argv) {
     if (only.empty() || only == "dispatch") summary["dispatch"] = rs::bench::benchDispatch(options);
     if (only.empty() || only == "compile") summary["compile"] = rs::bench::benchCompile(options);
     if (only.empty() || only == "startup") summary["startup"] = rs::bench::benchStartup(options);
+    if (only.empty() || only == "snapshot") summary["snapshot"] = rs::bench::benchSnapshot(options);
   } catch (const std::exception& e) {
     std::fflush(stdout);
     std::cerr << "robotsim_bench: error: " << e.what() << "\n";

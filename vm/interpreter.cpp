@@ -89,6 +89,12 @@ RunOutcome Interpreter::finish(StopReason reason, std::string message, std::uint
 // the breakpoints; the clock is looked at only after a machine call.
 RunOutcome Interpreter::run(const RunLimits& limits, StepObserver* observer, const PausePoints& pause) {
   if (state_.finished) return state_.outcome;
+  if (observer || pause.before.size() == image_.code.size()) return loop<true>(limits, observer, pause);
+  return loop<false>(limits, nullptr, pause);
+}
+
+template <bool kWatched>
+RunOutcome Interpreter::loop(const RunLimits& limits, StepObserver* observer, const PausePoints& pause) {
   InterpreterState& st = state_;
   const Instr* const code = image_.code.data();
   const std::uint32_t size = static_cast<std::uint32_t>(image_.code.size());
@@ -201,7 +207,7 @@ RunOutcome Interpreter::run(const RunLimits& limits, StepObserver* observer, con
         endIndex = at;
         break;
     }
-    bool pauseNow = false;
+    [[maybe_unused]] bool pauseNow = false;
     if (machineCall) {
       if (!status)
         return stop(status.code == Status::Code::Deadlock ? StopReason::Deadlock : StopReason::RuntimeError,
@@ -216,13 +222,18 @@ RunOutcome Interpreter::run(const RunLimits& limits, StepObserver* observer, con
         st.clockSeen = now, st.stillSince = steps;
         check = nextCheck();
       }
-      pauseNow = now > pause.afterTime;
+      if (now > pause.afterTime) {
+        if constexpr (!kWatched) return pauseAt(pc);
+        pauseNow = true;
+      }
     }
-    if (observer) {
-      st.pc = pc, st.steps = steps;  // what the observer sees
-      pauseNow |= observer->afterStep(*this, at);
+    if constexpr (kWatched) {
+      if (observer) {
+        st.pc = pc, st.steps = steps;  // what the observer sees
+        pauseNow |= observer->afterStep(*this, at);
+      }
+      if (pauseNow || (before && pc < size && before[pc])) return pauseAt(pc);
     }
-    if (pauseNow || (before && pc < size && before[pc])) return pauseAt(pc);
   }
   return stop(StopReason::End, {}, endIndex);
 }

@@ -114,6 +114,10 @@ class Interpreter {
   Status move(const Instr& in);
   Status moveTo(std::span<const std::int32_t> targets);
   RunOutcome finish(StopReason reason, std::string message, std::uint32_t index);
+  /// The dispatch loop; `kWatched`: with an observer or breakpoints (the
+  /// loop without them checks nothing per step beyond one step count).
+  template <bool kWatched>
+  RunOutcome loop(const RunLimits& limits, StepObserver* observer, const PausePoints& pause);
 
   const Image& image_;
   Machine& machine_;
