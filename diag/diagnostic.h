@@ -21,7 +21,7 @@ struct Diagnostic {
   std::string message;  ///< a sentence without the position
   /// Stable, for tools and editors: which check found it ("undefined-label"),
   /// the same across releases and wordings.
-  std::string_view code;
+  std::string_view code = {};
 };
 
 std::string_view severityName(Severity s);
