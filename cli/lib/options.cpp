@@ -5,7 +5,8 @@
 namespace rs::cli {
 
 void addCellOptions(CLI::App* cmd, launch::ProgramRequest& request) {
-  cmd->add_option("--cell", request.cell, "Workcell (or robot) description file or library name to run on");
+  cmd->add_option("--cell", request.cell,
+                  "Workcell (or robot) description file or library name to run on (an image carries its own)");
   addLibOption(cmd, request);
 }
 

@@ -272,7 +272,6 @@ void addCommon(CLI::App* cmd, RenderOptions& o, const std::string& maxStepsDefau
   cmd->add_option("--window", o.window, "Shift the workcell by X,Y,Z (its own length units)");
   cmd->add_option("--zoom", o.zoom, "Magnify (1 = the workcell fits the picture)");
   cmd->add_flag("--axes", o.axes, "Draw each link's coordinate frame (the paper's AXES ON)");
-  addLibOption(cmd, o.program);
   addRunOptions(cmd, o.run, maxStepsDefault);
 }
 
@@ -286,11 +285,12 @@ RenderCommands::RenderCommands(CLI::App& app) {
   render_->add_option("-o,--output", o_.output, "Picture to write: FILE.png or FILE.svg");
   render_->add_option("--size", o_.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
   render_->add_flag("--dump-lines{text}", o_.dump, "Print the projected 2-D lines: --dump-lines (text) or =json");
+  addLibOption(render_, o_.program);
   addCommon(render_, o_, std::to_string(vm::RunLimits{}.maxSteps));
 
   animate_ = app.add_subcommand("animate", "Write a self-contained HTML page that replays a program's run");
   animate_->add_option("program", o_.program.file, "Program source (.rsp) or compiled image (.rsb)")->required();
-  animate_->add_option("--cell", o_.program.cell, "Workcell (or robot) to run on (an image may carry its own)");
+  addCellOptions(animate_, o_.program);
   animate_->add_option("-o,--output", o_.output, "HTML file to write")->required();
   addCommon(animate_, o_, std::to_string(kAnimateMaxSteps));
 }
