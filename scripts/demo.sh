@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs the demo: a pick-and-place
-# program on the simulated Rhino SCARA, with its input handshakes played by
-# a stimuli file, then prints the run summary.
+# Installs what building needs, builds the robotsim command (only it), and
+# runs the demo: a pick-and-place program on the simulated Rhino SCARA, with
+# its input handshakes played by a stimuli file, then the run summary.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+bash scripts/build.sh robotsim
 echo
 ./build/robotsim run examples/pick_and_place.rsp --stimuli examples/pick_and_place.stim
