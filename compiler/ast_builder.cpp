@@ -1,5 +1,7 @@
 #include "compiler/ast_builder.h"
 
+#include "base/near_names.h"
+
 #include <algorithm>
 #include <charconv>
 #include <fmt/format.h>
@@ -357,33 +359,13 @@ std::string Builder::motorLetters() const {
   return s;
 }
 
-std::size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (asciiUpper(a[i - 1]) == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-
 }  // namespace
 
 
 std::string_view closestMnemonic(std::string_view word) {
-  if (word.size() > 16) return {};
-  std::string_view best;
-  std::size_t bestDistance = 3;  // suggest only near misses
-  for (const vm::OpInfo& op : vm::kOps) {
-    const std::size_t d = editDistance(word, op.name);
-    if (d < bestDistance) bestDistance = d, best = op.name;
-  }
-  return best;
+  std::vector<std::string_view> names;
+  for (const vm::OpInfo& op : vm::kOps) names.push_back(op.name);
+  return base::nearestName(word, names);
 }
 
 Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics) {

@@ -1,5 +1,7 @@
 #include "launch/program.h"
 
+#include "base/ascii.h"
+
 #include <fmt/format.h>
 
 #include <ostream>
@@ -29,6 +31,12 @@ std::string decodeImageCell(const vm::Image& image, std::shared_ptr<const workce
   return {};
 }
 
+// "prog.rsb", "PROG.RSB": what a compiled image is usually called.
+bool endsWithImageSuffix(std::string_view path) {
+  constexpr std::string_view kSuffix = ".rsb";
+  return path.size() >= kSuffix.size() && base::sameName(path.substr(path.size() - kSuffix.size()), kSuffix);
+}
+
 // Reads FILE and compiles it for `target`, or loads and verifies it when it
 // is an image.
 void readProgram(const std::string& path, const compiler::Target& target, LoadedProgram& into) {
@@ -45,6 +53,10 @@ void readProgram(const std::string& path, const compiler::Target& target, Loaded
       into.image = std::make_shared<const vm::Image>(std::move(loaded.image));
     return;
   }
+  if (endsWithImageSuffix(path))
+    into.diagnostics.push_back({path, {}, diag::Severity::Note,
+                                "this is not a compiled image (it does not start with the image magic number); "
+                                "compiling it as source"});
   into.source.emplace(path, std::move(*read.bytes));
   compiler::CompileResult compiled = compiler::compile(*into.source, target);
   for (diag::Diagnostic& d : compiled.diagnostics) into.diagnostics.push_back(std::move(d));

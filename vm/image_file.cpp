@@ -195,6 +195,8 @@ LoadResult loadImage(std::string_view bytes) {
   const std::uint32_t size = header.u32();
   const std::uint32_t crc = header.u32();
   if (header.failed) return {{}, "truncated image header"};
+  // No robotsim ever wrote a version 0: the header is damaged, not new.
+  if (major == 0) return {{}, fmt::format("corrupt image header (version {}.{}: robotsim images start at 1.0)", major, minor)};
   if (major != kImageVersionMajor)
     return {{}, fmt::format("image version {}.{} is not supported (this robotsim reads {}.x)", major, minor,
                             kImageVersionMajor)};

@@ -2,7 +2,11 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <optional>
+
+#include "base/near_names.h"
 #include "cli/lib/help.h"
 #include "cli/lib/options.h"
 #include "cli/lib/program_commands.h"
@@ -40,6 +44,27 @@ void addRunLikeOptions(CLI::App* cmd, RunCommandOptions& o) {
   cmd->add_option("--format", o.format, "Summary format: text or json")->check(CLI::IsMember({"text", "json"}));
   addRunOptions(cmd, o.run);
   addSerialOptions(cmd, o.serial);
+}
+
+// "robotsim frobnicate": CLI11 would only say that a subcommand is required.
+std::optional<int> unknownCommand(CLI::App& app, int argc, const char* const* argv, std::ostream& err) {
+  if (argc < 2 || argv[1][0] == '-' || argv[1][0] == '\0') return std::nullopt;
+  const std::string_view word = argv[1];
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    if (sub->get_name() == word) return std::nullopt;
+    names.push_back(sub->get_name());
+  }
+  std::string shown;  // the word as typed, control bytes escaped
+  for (const char c : word.substr(0, 64))
+    shown += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? fmt::format("\\x{:02x}", static_cast<unsigned char>(c))
+                                                               : std::string(1, c);
+  if (word.size() > 64) shown += "...";
+  const std::string_view near = base::nearestName(word, names);
+  err << fmt::format("robotsim: error: unknown command '{}'{}\n", shown,
+                     near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near));
+  err << fmt::format("  commands: {}\n  robotsim --help says what each does\n", fmt::join(names, ", "));
+  return kExitBadInput;
 }
 
 }  // namespace
@@ -102,6 +127,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   CLI::App* help = app.add_subcommand("help", "Explain the instruction set, or one instruction");
   help->add_option("instruction", helpTopic, "Instruction name, e.g. JMPVAR");
 
+  if (const std::optional<int> code = unknownCommand(app, argc, argv, err)) return *code;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -556,3 +556,31 @@ TEST_CASE("cli: --format=json survives file names that are not UTF-8", "[cli]") 
     CHECK(json::accept(r.out));
   }
 }
+
+TEST_CASE("cli: an unknown command is named, with the nearest one and the list", "[cli]") {
+  const CliResult typo = runCli({"chekc", "prog.rsp"});
+  CHECK(typo.code == 2);
+  CHECK(typo.out.empty());
+  CHECK(typo.err.rfind("robotsim: error: unknown command 'chekc' (did you mean 'check'?)\n", 0) == 0);
+  CHECK(typo.err.find("  commands: run, check, compile,") != std::string::npos);
+  const CliResult far = runCli({"frobnicate"});
+  CHECK(far.code == 2);
+  CHECK(far.err.rfind("robotsim: error: unknown command 'frobnicate'\n", 0) == 0);
+  // What a user typed is shown with its control bytes escaped.
+  const CliResult control = runCli({"\x1b]0;x\x07"});
+  CHECK(control.err.rfind("robotsim: error: unknown command '\\x1b]0;x\\x07'\n", 0) == 0);
+  // Options before the command and real commands are CLI11's to parse.
+  CHECK(runCli({"--help"}).code == 0);
+  CHECK(runCli({"run"}).err.find("unknown command") == std::string::npos);
+}
+
+TEST_CASE("cli: a text file named .rsb is compiled as source, with a note that says so", "[cli]") {
+  TempDir dir;
+  const std::string f = dir.write("prog.rsb", "SET N 1\nEND\n");
+  const CliResult r = runCli({"check", f});
+  CHECK(r.code == 0);
+  CHECK(r.err == f + ": note: this is not a compiled image (it does not start with the image magic number); "
+                     "compiling it as source\n");
+  // The same text named .rsp gets no note.
+  CHECK(runCli({"check", dir.write("prog.rsp", "SET N 1\nEND\n")}).err.empty());
+}

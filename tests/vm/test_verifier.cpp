@@ -297,7 +297,7 @@ TEST_CASE("header errors have exact messages", "[verifier]") {
     putU16(b, 10, 7);
     CHECK(loadError(b) == "image version 2.7 is not supported (this robotsim reads 1.x)");
     putU16(b, 8, 0);
-    CHECK(loadError(b) == "image version 0.7 is not supported (this robotsim reads 1.x)");
+    CHECK(loadError(b) == "corrupt image header (version 0.7: robotsim images start at 1.0)");
   }
   SECTION("payload size disagrees") {
     Bytes b = good;
