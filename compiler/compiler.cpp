@@ -15,9 +15,14 @@ std::optional<diag::Diagnostic> checkEncoding(const diag::SourceFile& source, st
     return diag::Diagnostic{source.name(), {}, diag::Severity::Error,
                       fmt::format("file is {} bytes; the limit is {} MiB", source.text().size(), kMaxSourceBytes >> 20)};
   const diag::Utf8Problem bad = diag::findInvalidUtf8(source.text());
-  if (!bad.found) return std::nullopt;
-  return diag::Diagnostic{source.name(), bad.pos, diag::Severity::Error,
-                    fmt::format("invalid UTF-8 (byte 0x{:02X}): {} are UTF-8 text", bad.byte, what)};
+  if (bad.found)
+    return diag::Diagnostic{source.name(), bad.pos, diag::Severity::Error,
+                            fmt::format("invalid UTF-8 (byte 0x{:02X}): {} are UTF-8 text", bad.byte, what)};
+  const diag::LoneCarriageReturn cr = source.findLoneCarriageReturn();
+  if (!cr.found) return std::nullopt;
+  return diag::Diagnostic{source.name(), cr.pos, diag::Severity::Error,
+                          "a carriage return without a line feed (old Mac line ends?): lines end in LF or CR LF",
+                          {}, "save the file with Unix (LF) or Windows (CR LF) line ends"};
 }
 
 CompileResult compile(const diag::SourceFile& source, const Target& target) {

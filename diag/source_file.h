@@ -17,8 +17,23 @@ struct Pos {
   bool operator==(const Pos&) const = default;
 };
 
+/// Text without the UTF-8 byte-order mark some editors (on Windows) put at
+/// the start of a file: it is not part of the first line.
+constexpr std::string_view withoutByteOrderMark(std::string_view text) {
+  constexpr std::string_view kMark = "\xEF\xBB\xBF";
+  return text.substr(0, kMark.size()) == kMark ? text.substr(kMark.size()) : text;
+}
+
+/// Where the first carriage return that is not followed by a line feed is
+/// (old Mac line ends, or a stray one), if any.
+struct LoneCarriageReturn {
+  bool found = false;
+  Pos pos;
+};
+
 class SourceFile {
  public:
+  /// A leading byte-order mark is dropped (withoutByteOrderMark).
   SourceFile(std::string name, std::string text);
 
   const std::string& name() const { return name_; }
@@ -26,6 +41,7 @@ class SourceFile {
   std::uint32_t lineCount() const { return static_cast<std::uint32_t>(lineStarts_.size()); }
   /// The text of a line (1-based), without its line break.
   std::string_view line(std::uint32_t number) const;
+  LoneCarriageReturn findLoneCarriageReturn() const;
 
  private:
   std::string name_;

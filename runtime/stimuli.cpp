@@ -184,6 +184,7 @@ std::optional<Failure> parseLine(std::string_view line, Stimuli& out) {
 
 StimuliParse parseStimuli(std::string_view text, std::string_view fileName) {
   StimuliParse result;
+  text = diag::withoutByteOrderMark(text);
   std::size_t lineNo = 0;
   while (true) {
     ++lineNo;

@@ -267,6 +267,7 @@ std::string applySettingArg(RhinoSettings& s, std::string_view arg) {
 
 std::vector<diag::Diagnostic> applySettingsText(RhinoSettings& s, std::string_view text, std::string_view name) {
   std::vector<diag::Diagnostic> errors;
+  text = diag::withoutByteOrderMark(text);
   std::uint32_t lineNo = 0;
   while (!text.empty()) {
     const std::size_t nl = text.find('\n');

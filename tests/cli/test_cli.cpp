@@ -584,3 +584,26 @@ TEST_CASE("cli: a text file named .rsb is compiled as source, with a note that s
   // The same text named .rsp gets no note.
   CHECK(runCli({"check", dir.write("prog.rsp", "SET N 1\nEND\n")}).err.empty());
 }
+
+TEST_CASE("cli: a byte-order mark is ignored, a lone carriage return refused where it is", "[cli]") {
+  TempDir dir;
+  const std::string bom = "\xEF\xBB\xBF";
+  const std::string prog = dir.write("bom.rsp", bom + "SET N 1\nWAITFOR 1 ON\nEND\n");
+  const std::string stim = dir.write("bom.stim", bom + "at 1 input 1 on\n");
+  const CliResult r = runCli({"check", prog, "--stimuli", stim});
+  INFO(r.err);
+  CHECK(r.code == 0);
+  CHECK(r.err.empty());
+  const std::string robot = dir.write("bom.rsd", bom + "ROBOT x\n");
+  const CliResult d = runCli({"table", robot});
+  CHECK(d.err.rfind(robot + ":1:1: error: ROBOT has no END", 0) == 0);  // not "unexpected character"
+
+  const std::string mac = dir.write("mac.rsp", "SET N 1\rEND\r");
+  const CliResult m = runCli({"check", mac});
+  CHECK(m.code == 2);
+  CHECK(m.err.rfind(mac + ":1:8: error: a carriage return without a line feed (old Mac line ends?): lines end in "
+                          "LF or CR LF\n",
+                    0) == 0);
+  CHECK(m.err.find("  hint: save the file with Unix (LF) or Windows (CR LF) line ends\n") != std::string::npos);
+  CHECK(runCli({"check", dir.write("dos.rsp", "SET N 1\r\nEND\r\n")}).code == 0);
+}

@@ -324,10 +324,13 @@ TEST_CASE("lexical errors: stray characters and signs", "[compiler]") {
 // end, so a comment runs on to the LF. The lexer ends the comment at the
 // lone CR and compiles what follows it: here "END ; old\rGOTO 1" gives
 // "END takes no operands, found 2".
-TEST_CASE("a lone CR inside a comment does not end the comment", "[compiler]") {
-  expectDiagnostics("END ; old\rGOTO 1\n", {});
-  // Outside a comment a lone CR is a blank between words.
-  expectDiagnostics("SET N\r1\nEND\n", {});
+TEST_CASE("a lone CR is refused where it is, in a comment or between words", "[compiler]") {
+  // Old Mac line ends would otherwise run every line into the first one's
+  // comment, or make one long line of words: neither is what the author meant.
+  const std::string message = "a carriage return without a line feed (old Mac line ends?): lines end in LF or CR LF";
+  expectDiagnostics("END ; old\rGOTO 1\n", {err(1, 10, message)});
+  expectDiagnostics("SET N\r1\nEND\n", {err(1, 6, message)});
+  expectDiagnostics("SET N 1\r\nEND ; \xC3\xA9t\xC3\xA9\r\r\n", {err(2, 10, message)});  // columns count characters
 }
 
 TEST_CASE("syntax errors: a line must start with a name", "[compiler]") {
