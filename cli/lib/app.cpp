@@ -14,6 +14,7 @@
 #include "cli/lib/robot_commands.h"
 #include "cli/lib/run_command.h"
 #include "cli/lib/serial_commands.h"
+#include "cli/lib/test_command.h"
 
 namespace rs::cli {
 
@@ -123,6 +124,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   CLI::App* emulate = addEmulateCommand(app, emulateOptions);
 
   const RenderCommands renderCommands(app);  // render, animate
+  TestOptions testOptions;
+  CLI::App* test = addTestCommand(app, testOptions);
   std::string helpTopic;
   CLI::App* help = app.add_subcommand("help", "Explain the instruction set, or one instruction");
   help->add_option("instruction", helpTopic, "Instruction name, e.g. JMPVAR");
@@ -139,6 +142,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
     return kExitBadInput;
   }
   if (const std::optional<int> code = renderCommands.run(out, err)) return *code;
+  if (test->parsed()) return testCommand(testOptions, out, err);
   if (run->parsed()) return runOrCheck(ro, false, out, err);
   if (check->parsed()) return runOrCheck(ro, true, out, err);
   if (compile->parsed()) return compileCommand(po, out, err);

@@ -1,0 +1,340 @@
+#include "testrun/expectation.h"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+
+#include "base/ascii.h"
+#include "runtime/stimuli_text.h"
+
+namespace rs::testrun {
+
+namespace {
+
+struct Word {
+  std::string_view text;
+  std::uint32_t col = 0;
+};
+
+bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// Columns count characters (UTF-8 sequences), as the compiler's do.
+std::uint32_t columnOf(std::string_view line, std::size_t offset) {
+  std::uint32_t col = 1;
+  for (std::size_t i = 0; i < offset && i < line.size(); i += std::max<std::size_t>(diag::utf8SequenceLength(line, i), 1))
+    ++col;
+  return col;
+}
+
+std::vector<Word> wordsOf(std::string_view line, std::size_t from) {
+  std::vector<Word> words;
+  std::size_t i = from;
+  while (i < line.size()) {
+    while (i < line.size() && blank(line[i])) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && !blank(line[i])) ++i;
+    if (i > start) words.push_back({line.substr(start, i - start), columnOf(line, start)});
+  }
+  return words;
+}
+
+bool is(const Word& w, std::string_view keyword) { return base::sameName(w.text, keyword); }
+
+// One `; expect:` or `; test:` line, word by word; the first problem is
+// its error, at the word that caused it.
+class LineReader {
+ public:
+  LineReader(std::vector<Word> words, std::uint32_t line, std::uint32_t endCol)
+      : words_(std::move(words)), line_(line), endCol_(endCol) {}
+
+  bool done() const { return next_ >= words_.size(); }
+  const Word* peek() const { return done() ? nullptr : &words_[next_]; }
+  bool accept(std::string_view keyword) {
+    if (done() || !is(words_[next_], keyword)) return false;
+    ++next_;
+    return true;
+  }
+  std::optional<Word> take(std::string_view what) {
+    if (done()) return fail(fmt::format("expected {}", what)), std::nullopt;
+    return words_[next_++];
+  }
+  bool keyword(std::string_view keyword) {
+    if (accept(keyword)) return true;
+    fail(done() ? fmt::format("expected '{}'", keyword)
+                : fmt::format("expected '{}', got '{}'", keyword, words_[next_].text));
+    return false;
+  }
+  bool integer(std::string_view what, std::int64_t& v, std::int64_t lo, std::int64_t hi) {
+    const std::optional<Word> w = take(what);
+    if (!w) return false;
+    const auto [ptr, ec] = std::from_chars(w->text.data(), w->text.data() + w->text.size(), v);
+    if (ec != std::errc() || ptr != w->text.data() + w->text.size() || v < lo || v > hi) {
+      --next_;
+      return fail(fmt::format("expected {} ({}..{}), got '{}'", what, lo, hi, w->text));
+    }
+    return true;
+  }
+  bool real(std::string_view what, double& v) {
+    const std::optional<Word> w = take(what);
+    if (!w) return false;
+    const auto [ptr, ec] = std::from_chars(w->text.data(), w->text.data() + w->text.size(), v);
+    if (ec != std::errc() || ptr != w->text.data() + w->text.size() || !std::isfinite(v) || std::abs(v) > 1e12) {
+      --next_;
+      return fail(fmt::format("expected {} (a number), got '{}'", what, w->text));
+    }
+    return true;
+  }
+  bool seconds(std::string_view what, vm::Micros& micros) {
+    const std::optional<Word> w = take(what);
+    if (!w) return false;
+    const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(w->text);
+    if (!parsed.error.empty()) return failAt(w->col, parsed.error);
+    micros = parsed.micros;
+    return true;
+  }
+  bool onOff(bool& on) {
+    if (accept("on")) return on = true, true;
+    if (accept("off")) return on = false, true;
+    return fail(done() ? "expected ON or OFF" : fmt::format("expected ON or OFF, got '{}'", words_[next_].text));
+  }
+  bool end() {
+    if (done()) return true;
+    return fail(fmt::format("unexpected '{}' after the end of the expectation", words_[next_].text));
+  }
+  bool fail(std::string message) { return failAt(done() ? endCol_ : words_[next_].col, std::move(message)); }
+  bool failAt(std::uint32_t col, std::string message) {
+    if (!error_) error_ = diag::Diagnostic{{}, {line_, col}, diag::Severity::Error, std::move(message)};
+    return false;
+  }
+  std::optional<diag::Diagnostic>& error() { return error_; }
+
+ private:
+  std::vector<Word> words_;
+  std::size_t next_ = 0;
+  std::uint32_t line_;
+  std::uint32_t endCol_;
+  std::optional<diag::Diagnostic> error_;
+};
+
+constexpr std::string_view kSubjects =
+    "finished, deadlock, step limit, time limit, clock standing still, runtime error, time, motors, output, input, "
+    "variable, tcp, object";
+
+bool status(LineReader& r, Expectation& e) {
+  e.kind = ExpectKind::Status;
+  if (r.accept("finished")) return e.reason = vm::StopReason::End, true;
+  if (r.accept("deadlock")) return e.reason = vm::StopReason::Deadlock, true;
+  if (r.accept("step")) return e.reason = vm::StopReason::StepLimit, r.keyword("limit");
+  if (r.accept("clock")) return e.reason = vm::StopReason::InstantLimit, r.keyword("standing") && r.keyword("still");
+  if (r.accept("runtime")) {
+    e.reason = vm::StopReason::RuntimeError;
+    if (!r.keyword("error")) return false;
+    if (!r.accept("at")) return true;
+    std::int64_t line = 0;
+    if (!r.keyword("line") || !r.integer("a line number", line, 1, UINT32_MAX)) return false;
+    e.line = static_cast<std::uint32_t>(line);
+    return true;
+  }
+  return false;
+}
+
+// at T | during A..B (optional)
+bool moment(LineReader& r, Expectation& e) {
+  if (r.accept("at")) {
+    vm::Micros t = 0;
+    if (!r.seconds("a time in seconds", t)) return false;
+    e.at = t;
+    return true;
+  }
+  if (!r.accept("during")) return true;
+  const std::optional<Word> w = r.take("a window A..B in seconds");
+  if (!w) return false;
+  const std::size_t dots = w->text.find("..");
+  const runtime::text::SecondsParse a = runtime::text::parseSeconds(w->text.substr(0, dots));
+  const runtime::text::SecondsParse b =
+      runtime::text::parseSeconds(dots == std::string_view::npos ? std::string_view() : w->text.substr(dots + 2));
+  if (dots == std::string_view::npos || !a.error.empty() || !b.error.empty() || b.micros < a.micros)
+    return r.failAt(w->col, fmt::format("expected a window A..B in seconds with A <= B (e.g. 2..5.5), got '{}'", w->text));
+  e.during = {a.micros, b.micros};
+  return true;
+}
+
+bool withinNumber(LineReader& r, double& tolerance) { return !r.accept("within") || r.real("a tolerance", tolerance); }
+
+bool expectation(LineReader& r, Expectation& e) {
+  const Word* first = r.peek();
+  if (!first) return r.fail(fmt::format("expected what to expect: {}", kSubjects));
+  if (status(r, e)) return r.end();
+  if (r.error()) return false;
+  if (r.accept("time")) {
+    e.kind = ExpectKind::Time;
+    if (r.accept("<=")) e.compare = Compare::AtMost;
+    else if (r.accept(">=")) e.compare = Compare::AtLeast;
+    else if (r.accept("=")) e.compare = Compare::Equal;
+    else if (r.accept("limit")) return e.kind = ExpectKind::Status, e.reason = vm::StopReason::TimeLimit, r.end();
+    else return r.fail("expected <=, >= or = after 'time'");
+    return r.seconds("a time in seconds", e.micros) && r.end();
+  }
+  if (r.accept("motors")) {
+    e.kind = ExpectKind::Motors;
+    while (const Word* w = r.peek()) {
+      if (is(*w, "within")) break;
+      const std::size_t eq = w->text.find('=');
+      std::int32_t v = 0;
+      const char* begin = w->text.data() + eq + 1;
+      const char* end = w->text.data() + w->text.size();
+      const auto parsed = eq == 1 ? std::from_chars(begin, end, v) : std::from_chars_result{begin, std::errc::invalid_argument};
+      if (eq != 1 || parsed.ec != std::errc() || parsed.ptr != end)
+        return r.fail(fmt::format("expected a motor and its encoder value, e.g. E=100, got '{}'", w->text));
+      e.motors.emplace_back(base::asciiUpper(w->text[0]), v);
+      r.take("");
+    }
+    if (e.motors.empty()) return r.fail("expected at least one motor and its value, e.g. E=100");
+    double within = 0;
+    if (!withinNumber(r, within)) return false;
+    if (within < 0 || within > 1e9 || within != std::floor(within))
+      return r.fail("the tolerance of motors is a whole number of encoder units");
+    e.within = static_cast<std::int32_t>(within);
+    return r.end();
+  }
+  if (r.accept("output") || r.accept("input")) {
+    const bool output = is(*first, "output");
+    e.kind = output ? ExpectKind::Output : ExpectKind::Input;
+    std::int64_t n = 0;
+    if (!r.integer(output ? "an output number" : "an input number", n, 1, 8)) return false;
+    e.number = static_cast<int>(n);
+    if (output && r.accept("pulses")) {
+      e.kind = ExpectKind::Pulses;
+      std::int64_t k = 0;
+      if (!r.integer("a number of pulses", k, 0, UINT32_MAX)) return false;
+      e.count = static_cast<std::uint32_t>(k);
+      if (!r.accept("times") && !r.accept("time")) return r.fail("expected 'times' after the number of pulses");
+      return r.end();
+    }
+    return r.onOff(e.on) && moment(r, e) && r.end();
+  }
+  if (r.accept("variable")) {
+    e.kind = ExpectKind::Variable;
+    const std::optional<Word> name = r.take("a variable name");
+    if (!name) return false;
+    e.name = name->text;
+    std::int64_t v = 0;
+    return r.keyword("=") && r.integer("a value", v, INT32_MIN, INT32_MAX) && (e.value = static_cast<std::int32_t>(v), r.end());
+  }
+  if (r.accept("tcp")) {
+    e.kind = ExpectKind::Tcp;
+    return r.real("x", e.point[0]) && r.real("y", e.point[1]) && r.real("z", e.point[2]) &&
+           withinNumber(r, e.tolerance) && r.end();
+  }
+  if (r.accept("object")) {
+    const std::optional<Word> name = r.take("an object name");
+    if (!name) return false;
+    e.name = name->text;
+    if (r.accept("at")) {
+      e.kind = ExpectKind::ObjectAt;
+      return r.real("x", e.point[0]) && r.real("y", e.point[1]) && r.real("z", e.point[2]) &&
+             withinNumber(r, e.tolerance) && r.end();
+    }
+    e.kind = ExpectKind::ObjectHeld;
+    e.on = !r.accept("not");
+    return r.keyword("held") && r.end();
+  }
+  return r.fail(fmt::format("unknown expectation '{}': expect one of {}", first->text, kSubjects));
+}
+
+bool setting(LineReader& r, TestSettings& s) {
+  const Word* first = r.peek();
+  if (!first) return r.fail("expected a setting: cell, stimuli, input, max-time or max-steps");
+  const auto value = [&](std::string_view what, std::string& into) {
+    const std::optional<Word> w = r.take(what);
+    if (!w) return false;
+    into = w->text;
+    return r.end();
+  };
+  if (r.accept("cell")) return value("a workcell or robot (file or library name)", s.cell);
+  if (r.accept("stimuli")) return value("a stimuli file", s.stimuliFile);
+  if (r.accept("max-time")) return value("seconds", s.maxTime);
+  if (r.accept("input")) {
+    std::string arg;
+    if (!value("an input change N=ON@SECONDS", arg)) return false;
+    s.inputs.push_back(arg);
+    return true;
+  }
+  if (r.accept("max-steps")) {
+    std::int64_t n = 0;
+    if (!r.integer("a number of instructions", n, 1, std::int64_t{1} << 62)) return false;
+    s.maxSteps = static_cast<std::uint64_t>(n);
+    return r.end();
+  }
+  return r.fail(fmt::format("unknown setting '{}': cell, stimuli, input, max-time or max-steps", first->text));
+}
+
+}  // namespace
+
+bool ParsedExpectations::expectsCompileErrors() const {
+  for (const Expectation& e : expectations)
+    if (e.kind == ExpectKind::CompileError) return true;
+  return false;
+}
+
+bool ParsedExpectations::statesStatus() const {
+  for (const Expectation& e : expectations)
+    if (e.kind == ExpectKind::Status) return true;
+  return false;
+}
+
+ParsedExpectations parseExpectations(const diag::SourceFile& source) {
+  ParsedExpectations out;
+  for (std::uint32_t n = 1; n <= source.lineCount(); ++n) {
+    const std::string_view line = source.line(n);
+    const std::size_t semicolon = line.find(';');
+    if (semicolon == std::string_view::npos) continue;
+    std::size_t i = semicolon + 1;
+    while (i < line.size() && blank(line[i])) ++i;
+    const std::size_t colon = line.find(':', i);
+    if (colon == std::string_view::npos) continue;
+    const std::string_view head = line.substr(i, colon - i);
+    const bool expect = base::sameName(head, "expect"), test = base::sameName(head, "test"),
+               error = base::sameName(head, "expect-error");
+    if (!expect && !test && !error) continue;  // an ordinary comment
+    const diag::Pos pos{n, columnOf(line, i)};
+    const std::uint32_t endCol = columnOf(line, line.size());
+    if (error) {
+      std::string_view text = line.substr(colon + 1);
+      while (!text.empty() && blank(text.front())) text.remove_prefix(1);
+      while (!text.empty() && blank(text.back())) text.remove_suffix(1);
+      if (text.empty()) {
+        out.errors.push_back({source.name(), {n, endCol}, diag::Severity::Error,
+                              "expected the text the compile error on this line must contain"});
+        continue;
+      }
+      Expectation e;
+      e.kind = ExpectKind::CompileError;
+      e.pos = pos;
+      e.text = text;
+      e.message = text;
+      out.expectations.push_back(std::move(e));
+      continue;
+    }
+    LineReader r(wordsOf(line, colon + 1), n, endCol);
+    Expectation e;
+    e.pos = pos;
+    std::string_view text = line.substr(colon + 1);
+    while (!text.empty() && blank(text.front())) text.remove_prefix(1);
+    while (!text.empty() && blank(text.back())) text.remove_suffix(1);
+    e.text = text;
+    const bool ok = expect ? expectation(r, e) : setting(r, out.settings);
+    if (!ok) {
+      diag::Diagnostic d = *r.error();
+      d.file = source.name();
+      if (expect) d.hint = "docs/testing.md lists every expectation";
+      out.errors.push_back(std::move(d));
+    } else if (expect) {
+      out.expectations.push_back(std::move(e));
+    }
+  }
+  return out;
+}
+
+}  // namespace rs::testrun

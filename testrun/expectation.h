@@ -1,0 +1,94 @@
+// What a correct run is, written in the program itself as comments the
+// compiler ignores and `robotsim test` reads (docs/testing.md):
+//
+//   ; test: stimuli pick_and_place.stim        how to run it
+//   ; expect: finished                         what must hold
+//   ; expect: output 3 pulses 3 times
+//   ; expect: time <= 40
+//   GOTO PIKC   ; expect-error: undefined label 'PIKC'
+//
+// Every line is `; test: SETTING ...`, `; expect: SUBJECT ...` or
+// `; expect-error: TEXT`; a bad one is a positioned diagnostic, never a
+// silently ignored line.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "diag/diagnostic.h"
+#include "diag/source_file.h"
+#include "vm/interpreter.h"
+
+namespace rs::testrun {
+
+enum class ExpectKind : std::uint8_t {
+  Status,        // finished | deadlock | step limit | time limit | clock standing still | runtime error [at line N]
+  Time,          // time <= S | time >= S | time = S
+  Motors,        // motors E=0 D=10 [within N]
+  Output,        // output N on|off [at T | during A..B]
+  Input,         // input N on|off [at T | during A..B]
+  Pulses,        // output N pulses K times
+  Variable,      // variable V = N
+  Tcp,           // tcp X Y Z [within D]
+  ObjectAt,      // object NAME at X Y Z [within D]
+  ObjectHeld,    // object NAME held | object NAME not held
+  CompileError,  // expect-error: TEXT (on the line of the error)
+};
+
+enum class Compare : std::uint8_t { AtMost, AtLeast, Equal };
+
+struct Expectation {
+  ExpectKind kind = ExpectKind::Status;
+  diag::Pos pos;     ///< of the word `expect`
+  std::string text;  ///< as written after the colon, for messages
+  // Status
+  vm::StopReason reason = vm::StopReason::End;
+  std::uint32_t line = 0;  ///< runtime error at line N (0: any line)
+  // Time, and the moments of Output and Input
+  Compare compare = Compare::Equal;
+  vm::Micros micros = 0;
+  std::optional<vm::Micros> at;
+  std::optional<std::pair<vm::Micros, vm::Micros>> during;
+  // Motors
+  std::vector<std::pair<char, std::int32_t>> motors;
+  std::int32_t within = 0;
+  // Output, Input, Pulses
+  int number = 0;
+  bool on = true;
+  std::uint32_t count = 0;
+  // Variable, ObjectAt, ObjectHeld
+  std::string name;
+  std::int32_t value = 0;
+  std::array<double, 3> point{};
+  double tolerance = 0.5;
+  // CompileError: the error's message must contain this
+  std::string message;
+};
+
+/// How to run the program (`; test:` lines); paths as written, relative to
+/// the program's folder.
+struct TestSettings {
+  std::string cell;
+  std::string stimuliFile;
+  std::vector<std::string> inputs;  ///< N=ON@T
+  std::string maxTime;              ///< seconds, as written
+  std::optional<std::uint64_t> maxSteps;
+};
+
+struct ParsedExpectations {
+  TestSettings settings;
+  std::vector<Expectation> expectations;
+  std::vector<diag::Diagnostic> errors;  ///< bad `; test:` or `; expect:` lines
+  bool any() const { return !expectations.empty(); }
+  bool expectsCompileErrors() const;
+  bool statesStatus() const;
+};
+
+/// Reads every expectation and setting of a program's comments.
+ParsedExpectations parseExpectations(const diag::SourceFile& source);
+
+}  // namespace rs::testrun

@@ -1,0 +1,144 @@
+#include "testrun/suite.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <thread>
+
+namespace rs::testrun {
+
+namespace fs = std::filesystem;
+
+std::uint32_t shardOf(const std::string& path, std::uint32_t shards) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a, 64 bits
+  for (const char c : path) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+  return static_cast<std::uint32_t>(h % shards) + 1;
+}
+
+Selection selectTests(const std::vector<std::string>& paths, const std::string& filter, std::uint32_t shard,
+                      std::uint32_t shards) {
+  Selection s;
+  std::set<std::string> found;
+  for (const std::string& p : paths) {
+    std::error_code ec;
+    const fs::file_status st = fs::status(p, ec);
+    if (ec || !fs::exists(st)) {
+      s.errors.push_back({p, {}, diag::Severity::Error, "no such file or folder"});
+      continue;
+    }
+    if (!fs::is_directory(st)) {
+      found.insert(fs::path(p).lexically_normal().string());
+      continue;
+    }
+    fs::recursive_directory_iterator it(p, fs::directory_options::skip_permission_denied, ec), end;
+    for (; !ec && it != end; it.increment(ec)) {
+      std::error_code fileEc;
+      if (it->path().extension() == ".rsp" && it->is_regular_file(fileEc))
+        found.insert(it->path().lexically_normal().string());
+    }
+    if (ec) s.errors.push_back({p, {}, diag::Severity::Error, "cannot list: " + ec.message()});
+  }
+  for (const std::string& f : found)
+    if ((filter.empty() || f.find(filter) != std::string::npos) && (shards <= 1 || shardOf(f, shards) == shard))
+      s.files.push_back(f);
+  return s;
+}
+
+void runTests(const std::vector<std::string>& files, const std::vector<std::string>& libDirs, unsigned jobs,
+              const std::function<void(const TestResult&)>& report) {
+  std::vector<std::optional<TestResult>> results(files.size());
+  std::mutex mutex;
+  std::condition_variable ready;
+  std::atomic<std::size_t> next = 0;
+  const auto work = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < files.size();) {
+      TestResult r = runTestFile(files[i], libDirs);
+      const std::lock_guard lock(mutex);
+      results[i] = std::move(r);
+      ready.notify_one();
+    }
+  };
+  const unsigned threads = std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(files.size())));
+  std::vector<std::thread> pool;
+  if (threads == 1) work();
+  else
+    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
+  // The calling thread reports in order as the results arrive.
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    std::unique_lock lock(mutex);
+    ready.wait(lock, [&] { return results[i].has_value(); });
+    TestResult r = std::move(*results[i]);
+    results[i].reset();
+    lock.unlock();
+    report(r);
+  }
+  for (std::thread& t : pool) t.join();
+}
+
+namespace {
+
+std::string xml(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default:
+        // XML 1.0 has no place for other control characters.
+        if (u < 0x20 && c != '\n' && c != '\t') out += fmt::format("\\x{:02x}", u);
+        else out += c;
+    }
+  }
+  return out;
+}
+
+std::string problemText(const diag::Diagnostic& d) {
+  std::string s = d.pos.line ? fmt::format("{}:{}:{}: {}", d.file, d.pos.line, d.pos.col, d.message)
+                             : fmt::format("{}: {}", d.file, d.message);
+  if (!d.hint.empty()) s += " (hint: " + d.hint + ")";
+  return s;
+}
+
+}  // namespace
+
+std::string junitXml(const std::vector<TestResult>& results) {
+  std::size_t failures = 0, errors = 0;
+  for (const TestResult& r : results) {
+    failures += r.status == TestStatus::Failed;
+    errors += r.status == TestStatus::Error;
+  }
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += fmt::format("<testsuites name=\"robotsim test\" tests=\"{}\" failures=\"{}\" errors=\"{}\">\n", results.size(),
+                     failures, errors);
+  for (const TestResult& r : results) {
+    const std::string name = xml(r.file);
+    const std::string stem = xml(fs::path(r.file).stem().string());
+    out += fmt::format("  <testsuite name=\"{}\" tests=\"1\" failures=\"{}\" errors=\"{}\">\n", name,
+                       r.status == TestStatus::Failed ? 1 : 0, r.status == TestStatus::Error ? 1 : 0);
+    out += fmt::format("    <testcase classname=\"{}\" name=\"{}\"", name, stem);
+    if (r.status == TestStatus::Passed) {
+      out += "/>\n";
+    } else {
+      const char* element = r.status == TestStatus::Failed ? "failure" : "error";
+      std::string body;
+      for (const diag::Diagnostic& d : r.problems) body += problemText(d) + "\n";
+      out += fmt::format(">\n      <{} message=\"{}\">{}</{}>\n    </testcase>\n", element,
+                         r.problems.empty() ? "" : xml(problemText(r.problems.front())), xml(body), element);
+    }
+    out += "  </testsuite>\n";
+  }
+  out += "</testsuites>\n";
+  return out;
+}
+
+}  // namespace rs::testrun

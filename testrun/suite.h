@@ -1,0 +1,40 @@
+// Many tests: the files under the paths given (folders searched for `.rsp`
+// programs, recursively, in name order), narrowed by a filter and to one
+// shard of N, run on several threads with the results handed out in the
+// files' order whatever the number of threads.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "diag/diagnostic.h"
+#include "testrun/test_file.h"
+
+namespace rs::testrun {
+
+struct Selection {
+  std::vector<std::string> files;        ///< sorted, each once
+  std::vector<diag::Diagnostic> errors;  ///< paths that do not exist or cannot be listed
+};
+
+/// `filter`: keep files whose path contains it ("" keeps all). `shard` K of
+/// `shards` N (1-based): keep the files whose path hashes to K (FNV-1a of
+/// the path modulo N), so a file's shard never depends on the others.
+Selection selectTests(const std::vector<std::string>& paths, const std::string& filter, std::uint32_t shard,
+                      std::uint32_t shards);
+
+/// The shard (1..shards) a path belongs to.
+std::uint32_t shardOf(const std::string& path, std::uint32_t shards);
+
+/// Runs every file on `jobs` threads; `report` is called once per file, in
+/// the files' order, from the calling thread.
+void runTests(const std::vector<std::string>& files, const std::vector<std::string>& libDirs, unsigned jobs,
+              const std::function<void(const TestResult&)>& report);
+
+/// JUnit XML: one testsuite per file, one testcase in it; a failure or an
+/// error element with every problem as `file:line:col: message`.
+std::string junitXml(const std::vector<TestResult>& results);
+
+}  // namespace rs::testrun

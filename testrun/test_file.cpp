@@ -1,0 +1,153 @@
+#include "testrun/test_file.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "base/file_io.h"
+#include "launch/program.h"
+#include "launch/run_request.h"
+#include "runtime/run/run.h"
+#include "testrun/evaluate.h"
+#include "testrun/expectation.h"
+#include "vm/image_file.h"
+
+namespace rs::testrun {
+
+namespace fs = std::filesystem;
+
+std::string_view statusName(TestStatus status) {
+  switch (status) {
+    case TestStatus::Passed: return "PASSED";
+    case TestStatus::Failed: return "FAILED";
+    case TestStatus::Error: return "ERROR";
+  }
+  return "ERROR";
+}
+
+const diag::SourceFile* TestResult::sourceOf(const std::string& name) const {
+  for (const auto& s : sources)
+    if (s->name() == name) return s.get();
+  return nullptr;
+}
+
+namespace {
+
+// A file named by a `; test:` line is relative to the program's folder; a
+// cell that is no file there is a library name.
+std::string besideProgram(const std::string& program, const std::string& name, bool mayBeLibraryName) {
+  if (name.empty()) return name;
+  const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : fs::path(program).parent_path() / name;
+  std::error_code ec;
+  if (mayBeLibraryName && !fs::is_regular_file(path, ec)) return name;
+  return path.lexically_normal().string();
+}
+
+// The compile errors against the expect-error lines: each expectation
+// needs an error on its line whose message contains its text, each error
+// an expectation.
+void matchCompileErrors(const std::vector<Expectation>& expectations, const std::vector<diag::Diagnostic>& diags,
+                        const std::string& file, TestResult& r) {
+  std::vector<bool> matched(diags.size(), false);
+  for (const Expectation& e : expectations) {
+    if (e.kind != ExpectKind::CompileError) continue;
+    ++r.expectations;
+    bool found = false;
+    std::string onLine;
+    for (std::size_t i = 0; i < diags.size(); ++i) {
+      const diag::Diagnostic& d = diags[i];
+      if (d.severity != diag::Severity::Error || d.file != file || d.pos.line != e.pos.line) continue;
+      if (d.message.find(e.message) != std::string::npos) {
+        matched[i] = found = true;
+      } else {
+        onLine += fmt::format("{}'{}'", onLine.empty() ? "" : ", ", d.message);
+      }
+    }
+    if (!found)
+      r.problems.push_back({file, e.pos, diag::Severity::Error,
+                            onLine.empty() ? fmt::format("expected a compile error containing '{}' on this line; "
+                                                         "there is none",
+                                                         e.message)
+                                           : fmt::format("expected a compile error containing '{}' on this line; "
+                                                         "the errors here: {}",
+                                                         e.message, onLine)});
+  }
+  for (std::size_t i = 0; i < diags.size(); ++i) {
+    if (matched[i] || diags[i].severity != diag::Severity::Error) continue;
+    diag::Diagnostic d = diags[i];
+    d.message = "unexpected compile error: " + d.message;
+    d.hint = "mark an error a negative example must have with '; expect-error: TEXT' on its line";
+    r.problems.push_back(std::move(d));
+  }
+}
+
+}  // namespace
+
+TestResult runTestFile(const std::string& path, const std::vector<std::string>& libDirs) {
+  TestResult r;
+  r.file = path;
+  const base::FileRead read = base::readFile(path, launch::kMaxInputBytes);
+  if (!read.bytes) {
+    r.status = TestStatus::Error;
+    r.problems.push_back({path, {}, diag::Severity::Error, "cannot read: " + read.error});
+    return r;
+  }
+  ParsedExpectations parsed;
+  if (!vm::looksLikeImage(*read.bytes)) {
+    auto source = std::make_shared<const diag::SourceFile>(path, *read.bytes);
+    parsed = parseExpectations(*source);
+    r.sources.push_back(source);
+    if (!parsed.errors.empty()) {
+      r.status = TestStatus::Error;
+      r.problems = parsed.errors;
+      return r;
+    }
+  }
+
+  launch::ProgramRequest request{path, besideProgram(path, parsed.settings.cell, true), libDirs};
+  const launch::LoadedProgram program = launch::loadProgram(request);
+  if (program.descriptions)
+    for (const diag::Diagnostic& d : program.diagnostics)
+      if (const diag::SourceFile* s = program.descriptions->source(d.file))
+        r.sources.push_back(std::make_shared<const diag::SourceFile>(*s));
+  // A problem outside the program (its cell) means the test cannot start.
+  for (const diag::Diagnostic& d : program.diagnostics)
+    if (d.severity == diag::Severity::Error && d.file != path) {
+      r.status = TestStatus::Error;
+      r.problems.push_back(d);
+    }
+  if (r.status == TestStatus::Error) return r;
+
+  if (parsed.expectsCompileErrors() || !program.ok()) {
+    matchCompileErrors(parsed.expectations, program.diagnostics, path, r);
+    if (parsed.expectsCompileErrors() && program.ok())  // matchCompileErrors found them all missing
+      r.problems.insert(r.problems.begin(), {path, {}, diag::Severity::Error,
+                                             "the program compiled, but its expect-error lines ask for errors"});
+    r.status = r.problems.empty() ? TestStatus::Passed : TestStatus::Failed;
+    return r;
+  }
+
+  launch::RunRequest run;
+  run.stimuliFile = besideProgram(path, parsed.settings.stimuliFile, false);
+  run.inputs = parsed.settings.inputs;
+  run.maxSteps = parsed.settings.maxSteps;
+  run.maxTime = parsed.settings.maxTime;
+  std::vector<diag::Diagnostic> runProblems;
+  std::optional<runtime::RunSpec> spec = launch::prepareRun(program, run, runProblems);
+  if (!spec) {
+    r.status = TestStatus::Error;
+    r.problems = std::move(runProblems);
+    return r;
+  }
+  spec->log = true;
+  runtime::Run running(std::move(*spec));
+  const vm::RunOutcome outcome = running.runToEnd();
+  r.simulated = running.clock();
+  r.steps = outcome.steps;
+  r.expectations = parsed.expectations.size() + (parsed.statesStatus() ? 0 : 1);
+  r.problems = evaluate(running, parsed.expectations, path, !parsed.statesStatus());
+  r.status = r.problems.empty() ? TestStatus::Passed : TestStatus::Failed;
+  return r;
+}
+
+}  // namespace rs::testrun

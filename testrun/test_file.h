@@ -1,0 +1,41 @@
+// One program as a test: its `; test:` settings and `; expect:` lines
+// read, the program compiled (for the cell it names) or its expected
+// compile errors matched, its run made and checked. Nothing a test file
+// holds stops other tests: every problem ends up in the result.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "diag/diagnostic.h"
+#include "diag/source_file.h"
+#include "vm/machine.h"
+
+namespace rs::testrun {
+
+enum class TestStatus : std::uint8_t {
+  Passed,
+  Failed,  ///< an expectation does not hold, or the program does not compile
+  Error,   ///< the test could not start: a bad expectation, an unreadable file, an unknown cell
+};
+
+struct TestResult {
+  std::string file;
+  TestStatus status = TestStatus::Passed;
+  std::size_t expectations = 0;  ///< how many were checked
+  vm::Micros simulated = 0;      ///< the run's simulated time (0 when nothing ran)
+  std::uint64_t steps = 0;
+  /// Why it failed or could not start, in the compiler's style.
+  std::vector<diag::Diagnostic> problems;
+  /// The texts of the files the problems point into, for their carets.
+  std::vector<std::shared_ptr<const diag::SourceFile>> sources;
+  const diag::SourceFile* sourceOf(const std::string& file) const;
+};
+
+/// Runs the test in `path`; `libDirs` as --lib.
+TestResult runTestFile(const std::string& path, const std::vector<std::string>& libDirs);
+
+std::string_view statusName(TestStatus status);
+
+}  // namespace rs::testrun

@@ -1,0 +1,273 @@
+// `robotsim test` and the expectations it reads (testrun/, docs/testing.md).
+// Every expected time, value and position below is worked out by hand from
+// the programs (motor speeds of the default Rhino SCARA: E and D 400, C 300,
+// B 500, A 200 units per second).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "diag/source_file.h"
+#include "testrun/expectation.h"
+#include "testrun/suite.h"
+#include "tests/cli/cli_support.h"
+
+namespace {
+
+using rs::testing::CliResult;
+using rs::testing::runCli;
+using rs::testing::TempDir;
+using rs::testrun::ExpectKind;
+
+const std::string kSource = ROBOTSIM_SOURCE_DIR;
+
+rs::testrun::ParsedExpectations parse(const std::string& text) {
+  return rs::testrun::parseExpectations(rs::diag::SourceFile("t.rsp", text));
+}
+
+// The output with the source folder and the wall time taken out.
+std::string normalised(std::string text) {
+  for (std::size_t at; (at = text.find(kSource + "/")) != std::string::npos;) text.erase(at, kSource.size() + 1);
+  const std::size_t in = text.rfind(" in ");
+  if (in != std::string::npos && text.size() > 3 && text.compare(text.size() - 3, 3, " s\n") == 0)
+    text = text.substr(0, in) + " in S s\n";
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("expectations: every form is read into its parts", "[testrun]") {
+  const auto p = parse(
+      "; test: cell scara-pick\n"
+      "; test: stimuli belt.stim\n"
+      "; test: input 1=ON@2\n"
+      "; test: max-time 60\n"
+      "; test: max-steps 5000\n"
+      "; expect: finished\n"
+      "; EXPECT: Runtime Error at line 12\n"
+      "; expect: time <= 40\n"
+      "; expect: motors E=0 d=-20 within 2\n"
+      "; expect: output 3 on during 2..5.5\n"
+      "; expect: input 2 off at 1.25\n"
+      "; expect: output 3 pulses 3 times\n"
+      "; expect: variable N = -4\n"
+      "; expect: tcp 1 2.5 -3 within 0.1\n"
+      "; expect: object block at 10 20 30\n"
+      "; expect: object block not held\n"
+      "GOTO X ; expect-error: undefined label 'X'\n"
+      "; an ordinary comment: expect nothing\n");
+  REQUIRE(p.errors.empty());
+  CHECK(p.settings.cell == "scara-pick");
+  CHECK(p.settings.stimuliFile == "belt.stim");
+  CHECK(p.settings.inputs == std::vector<std::string>{"1=ON@2"});
+  CHECK(p.settings.maxTime == "60");
+  CHECK(p.settings.maxSteps == std::optional<std::uint64_t>(5000));
+  REQUIRE(p.expectations.size() == 12);
+  const auto& e = p.expectations;
+  CHECK(e[0].kind == ExpectKind::Status);
+  CHECK(e[0].reason == rs::vm::StopReason::End);
+  CHECK(e[0].pos == rs::diag::Pos{6, 3});
+  CHECK(e[1].reason == rs::vm::StopReason::RuntimeError);
+  CHECK(e[1].line == 12);
+  CHECK(e[2].kind == ExpectKind::Time);
+  CHECK(e[2].compare == rs::testrun::Compare::AtMost);
+  CHECK(e[2].micros == 40'000'000);
+  CHECK(e[3].kind == ExpectKind::Motors);
+  CHECK(e[3].motors == std::vector<std::pair<char, std::int32_t>>{{'E', 0}, {'D', -20}});
+  CHECK(e[3].within == 2);
+  CHECK(e[4].kind == ExpectKind::Output);
+  CHECK(e[4].number == 3);
+  CHECK(e[4].on);
+  CHECK(e[4].during == std::optional(std::pair<rs::vm::Micros, rs::vm::Micros>{2'000'000, 5'500'000}));
+  CHECK(e[5].kind == ExpectKind::Input);
+  CHECK_FALSE(e[5].on);
+  CHECK(e[5].at == std::optional<rs::vm::Micros>(1'250'000));
+  CHECK(e[6].kind == ExpectKind::Pulses);
+  CHECK(e[6].count == 3);
+  CHECK(e[7].kind == ExpectKind::Variable);
+  CHECK(e[7].name == "N");
+  CHECK(e[7].value == -4);
+  CHECK(e[8].kind == ExpectKind::Tcp);
+  CHECK(e[8].point == std::array<double, 3>{1, 2.5, -3});
+  CHECK(e[8].tolerance == 0.1);
+  CHECK(e[9].kind == ExpectKind::ObjectAt);
+  CHECK(e[9].tolerance == 0.5);  // the default
+  CHECK(e[10].kind == ExpectKind::ObjectHeld);
+  CHECK_FALSE(e[10].on);
+  CHECK(e[11].kind == ExpectKind::CompileError);
+  CHECK(e[11].message == "undefined label 'X'");
+  CHECK(e[11].pos == rs::diag::Pos{17, 10});
+}
+
+TEST_CASE("expectations: a bad line is an error at the word that is wrong, and every one is reported", "[testrun]") {
+  const auto p = parse(
+      "; expect: output 9 on\n"              // 1: col 18
+      "; expect: time < 4\n"                 // 2: col 16
+      "; expect: motors E100\n"              // 3: col 18
+      "; expect: output 1 on during 5..2\n"  // 4: col 30
+      "; expect: teleport\n"                 // 5: col 11
+      "; expect: finished now\n"             // 6: col 20
+      "; test: colour red\n"                 // 7: col 9
+      "; expect-error:\n"                    // 8: col 16, the end of the line
+      "; expect:\n");                        // 9: col 10
+  std::vector<std::pair<rs::diag::Pos, std::string>> got;
+  for (const auto& d : p.errors) got.emplace_back(d.pos, d.message);
+  REQUIRE(got.size() == 9);
+  CHECK(got[0] == std::pair<rs::diag::Pos, std::string>{{1, 18}, "expected an output number (1..8), got '9'"});
+  CHECK(got[1] == std::pair<rs::diag::Pos, std::string>{{2, 16}, "expected <=, >= or = after 'time'"});
+  CHECK(got[2].first == rs::diag::Pos{3, 18});
+  CHECK(got[2].second == "expected a motor and its encoder value, e.g. E=100, got 'E100'");
+  CHECK(got[3].first == rs::diag::Pos{4, 30});
+  CHECK(got[4].first == rs::diag::Pos{5, 11});
+  CHECK(got[4].second.rfind("unknown expectation 'teleport'", 0) == 0);
+  CHECK(got[5] == std::pair<rs::diag::Pos, std::string>{{6, 20}, "unexpected 'now' after the end of the expectation"});
+  CHECK(got[6].first == rs::diag::Pos{7, 9});
+  CHECK(got[7].first == rs::diag::Pos{8, 16});
+  CHECK(got[8].first == rs::diag::Pos{9, 10});
+  CHECK(p.expectations.empty());
+}
+
+TEST_CASE("robotsim test: the examples and the passing tests pass", "[testrun][cli]") {
+  const CliResult passing = runCli({"test", kSource + "/examples/tests/passing"});
+  INFO(passing.out);
+  CHECK(passing.code == 0);
+  CHECK(normalised(passing.out).find("3 passed, 0 failed, 0 errors in S s\n") != std::string::npos);
+  std::vector<std::string> args{"test"};
+  for (const char* name : {"counted_loop", "first_moves", "gantry_pick", "nested_subroutines", "pick_and_place",
+                           "sensor_branching", "soft_home", "workcell_view"})
+    args.push_back(kSource + "/examples/" + name + ".rsp");
+  const CliResult examples = runCli(args);
+  INFO(examples.out);
+  CHECK(examples.code == 0);
+  CHECK(normalised(examples.out).find("8 passed, 0 failed, 0 errors in S s\n") != std::string::npos);
+}
+
+TEST_CASE("robotsim test: the deliberately failing tests report what the hand-written file says", "[testrun][cli]") {
+  const CliResult r = runCli({"test", kSource + "/examples/tests/failing"});
+  CHECK(r.code == 2);  // one test could not start
+  CHECK(r.err.empty());
+  CHECK(normalised(r.out) == rs::testing::readBytes(kSource + "/examples/tests/failing/expected-output.txt"));
+}
+
+TEST_CASE("robotsim test: each kind of expectation fails with what happened, when and where", "[testrun][cli]") {
+  const TempDir dir;
+  // Output 1 is ON from 0.5 s to 1 s; E moves 200 units in 0.5 s (0.5 .. 1 s), then A closes 120 in 0.6 s.
+  const std::string program = dir.write("p.rsp",
+                                        "; expect: output 1 on during 0.25..0.75\n"   // 1: OFF at 0.25, from the start
+                                        "; expect: output 1 on at 1\n"                // 2: OFF at 1, by line 10
+                                        "; expect: motors E=210 within 5\n"           // 3: E is at 200
+                                        "; expect: variable N = 2\n"                  // 4: N is 1
+                                        "; expect: time >= 2\n"                       // 5: ends at 1.6 s
+                                        "; expect: tcp 0 0 0\n"                       // 6: no workcell
+                                        "DELAY 0.5\n"                                  // 7
+                                        "OUTSIG 1 ON\n"                               // 8
+                                        "MOVE 200 0 0 0 0\n"                          // 9
+                                        "OUTSIG 1 OFF\n"                              // 10
+                                        "MOVE 0 0 0 0 120\n"                          // 11
+                                        "SET N 1\n"                                   // 12
+                                        "END\n");                                     // 13
+  const CliResult r = runCli({"test", program});
+  CHECK(r.code == 1);
+  const std::string f = program + ":";
+  for (const std::string& want :
+       {f + "1:3: error: expected output 1 ON during 0.250..0.750 s; it was OFF at 0.250 s (from the start)\n",
+        f + "2:3: error: expected output 1 ON at 1.000 s; it was OFF then (set by line 10)\n",
+        f + "3:3: error: expected motor E at 210 within 5 at the end; it is at 200 at line 13, 1.600 s\n",
+        f + "4:3: error: expected variable N = 2 at the end; it is 1 at line 13, 1.600 s\n",
+        f + "5:3: error: expected the run's simulated time >= 2.000 s; it ended at line 13, 1.600 s\n",
+        f + "6:3: error: the run has no workcell: name one with '; test: cell NAME'\n"}) {
+    INFO(want);
+    CHECK(r.out.find(want) != std::string::npos);
+  }
+  CHECK(normalised(r.out).find("0 passed, 1 failed, 0 errors in S s\n") != std::string::npos);
+}
+
+TEST_CASE("robotsim test: objects and the tool centre point on a workcell", "[testrun][cli]") {
+  // The gantry of stdlib/workcells/gantry-cell.rsd: its tool centre point
+  // is (500 + X/10, 200 - Y/10, 400 + Z/10); block 1 (object 2) sits AT
+  // 200 30 700, its centre at the TCP of MOVETO -2800 2800 1500 0, (220, 50, 680).
+  const TempDir dir;
+  const std::string program = dir.write("g.rsp",
+                                        "; test: cell gantry-cell\n"
+                                        "; expect: tcp 220 50 680 within 0.001\n"
+                                        "; expect: object 2 held\n"
+                                        "; expect: object block at 200 30 700 within 0.001\n"
+                                        "; expect: object 3 held\n"
+                                        "MOVETO -2800 2800 1500 0\n"
+                                        "MOVE 0 0 0 100\n"
+                                        "END\n");
+  const CliResult r = runCli({"test", program});
+  CHECK(r.code == 1);
+  CHECK(r.out.find(program + ":5:3: error: expected 3 held at the end; it is not held at line 8") != std::string::npos);
+  CHECK(r.out.find(":2:3:") == std::string::npos);
+  CHECK(r.out.find(":3:3:") == std::string::npos);
+  CHECK(r.out.find(":4:3:") == std::string::npos);
+}
+
+TEST_CASE("robotsim test: JUnit, JSON, filters and shards", "[testrun][cli]") {
+  const TempDir dir;
+  dir.write("a_pass.rsp", "; expect: time = 0.25\nMOVE 100 0 0 0 0\nEND\n");
+  dir.write("b_fail.rsp", "; expect: time = 1\nMOVE 100 0 0 0 0\nEND\n");
+  dir.write("c_error.rsp", "; expect: time = soon\nEND\n");
+  std::filesystem::create_directories(dir.path() / "sub");
+  dir.write("sub/d_pass.rsp", "END\n");  // no expectation: run as check
+  dir.write("sub/notes.txt", "not a program\n");
+  const std::string root = dir.path().string();
+
+  const std::string junit = dir.file("report.xml");
+  const CliResult r = runCli({"test", root, "--junit", junit});
+  CHECK(r.code == 2);
+  const std::string xml = rs::testing::readBytes(junit);
+  CHECK(xml.find("<testsuites name=\"robotsim test\" tests=\"4\" failures=\"1\" errors=\"1\">") != std::string::npos);
+  CHECK(xml.find("<failure message=\"" + root + "/b_fail.rsp:1:3: expected the run&apos;s simulated time = 1.000 s;") !=
+        std::string::npos);
+  CHECK(xml.find("<error message=\"" + root + "/c_error.rsp:1:18: bad time &apos;soon&apos;") != std::string::npos);
+  CHECK(xml.find("<testcase classname=\"" + root + "/a_pass.rsp\" name=\"a_pass\"/>") != std::string::npos);
+
+  const CliResult json = runCli({"test", root, "--format=json"});
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  CHECK(j["passed"] == 2);
+  CHECK(j["failed"] == 1);
+  CHECK(j["errors"] == 1);
+  REQUIRE(j["tests"].size() == 4);
+  CHECK(j["tests"][3]["file"] == root + "/sub/d_pass.rsp");
+  CHECK(j["tests"][1]["problems"][0]["line"] == 1);
+
+  const CliResult filtered = runCli({"test", root, "--filter", "pass"});
+  CHECK(filtered.code == 0);
+  CHECK(normalised(filtered.out).find("2 passed, 0 failed, 0 errors in S s\n") != std::string::npos);
+
+  // Three shards: disjoint, and together the whole run, line for line.
+  const auto lines = [](const std::string& out) {
+    std::multiset<std::string> s;
+    std::istringstream in(out);
+    for (std::string line; std::getline(in, line);)
+      if (line.find(" passed, ") == std::string::npos) s.insert(line);
+    return s;
+  };
+  std::multiset<std::string> together;
+  for (const char* shard : {"1/3", "2/3", "3/3"})
+    for (const std::string& l : lines(runCli({"test", root, "--shard", shard}).out)) together.insert(l);
+  CHECK(together == lines(r.out));
+  CHECK(runCli({"test", root, "--shard", "4/3"}).code == 2);
+  CHECK(runCli({"test", root, "--shard", "x"}).err.find("--shard takes K/N") != std::string::npos);
+
+  // Any number of jobs, the same output in the same order.
+  CHECK(lines(runCli({"test", root, "-j", "1"}).out) == lines(runCli({"test", root, "-j", "3"}).out));
+  CHECK(runCli({"test", root + "/missing"}).code == 2);
+}
+
+TEST_CASE("shards: a file's shard depends on its path alone", "[testrun]") {
+  std::set<std::uint32_t> seen;
+  for (int i = 0; i < 200; ++i) {
+    const std::string path = "submissions/student" + std::to_string(i) + ".rsp";
+    const std::uint32_t s = rs::testrun::shardOf(path, 4);
+    CHECK(s >= 1);
+    CHECK(s <= 4);
+    CHECK(rs::testrun::shardOf(path, 4) == s);
+    seen.insert(s);
+  }
+  CHECK(seen.size() == 4);  // 200 paths reach every shard
+}
