@@ -437,4 +437,31 @@ json benchSnapshot(const Options& options) {
           {"ns_per_restore", perRestore}};
 }
 
+// --- 5. robotsim test ----------------------------------------------------------------
+
+json benchTestSuite(const Options& options) {
+  constexpr int kPrograms = 1000;
+  fmt::print("\n[5] robotsim test: {} generated programs, 3 expectations each, -j 2, whole process\n", kPrograms);
+  const std::filesystem::path dir = std::filesystem::path(options.workDir) / "testsuite";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  for (int i = 0; i < kPrograms; ++i) {
+    // k loops of two 100-unit moves of E at 400 units/s: 0.5 s each.
+    const int k = 1 + i % 20;
+    writeInput(options, fmt::format("testsuite/t{:04}.rsp", i),
+               fmt::format("; expect: finished\n; expect: variable N = {0}\n; expect: time = {1}\n"
+                           "SET N 0\nloop: ADD N 1\nMOVE 100 0 0 0 0\nMOVE -100 0 0 0 0\nJMPVAR N < {0} loop\nEND\n",
+                           k, vm::formatSeconds(vm::Micros{k} * 500'000)));
+  }
+  progress(fmt::format("1 warm-up + {} runs of robotsim test {} -j 2 (every test must pass)", options.reps,
+                       dir.string()));
+  const std::vector<Samples> s =
+      interleave({processMeasurement({options.robotsim, "test", dir.string(), "-j", "2"})}, options.reps);
+  row("robotsim test, 1000 programs", s[0],
+      fmt::format("{:.2f} ms per test; target <= 2 s: {}", s[0].best() * 1e3 / kPrograms,
+                  s[0].best() <= 2.0 ? "met" : "missed"));
+  return {{"programs", kPrograms}, {"jobs", 2}, {"run", toJson(s[0])}, {"target_s", 2.0},
+          {"target_met", s[0].best() <= 2.0}};
+}
+
 }  // namespace rs::bench

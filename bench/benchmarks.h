@@ -37,4 +37,8 @@ nlohmann::json benchStartup(const Options& options);
 /// every 300 instructions; the cost of one snapshot and one restore.
 nlohmann::json benchSnapshot(const Options& options);
 
+/// `robotsim test -j 2` on 1,000 generated programs with 3 expectations
+/// each, whole process. Target: 2 s.
+nlohmann::json benchTestSuite(const Options& options);
+
 }  // namespace rs::bench
