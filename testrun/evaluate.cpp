@@ -142,6 +142,40 @@ class Checker {
     if (v != e.on) fail(e, fmt::format("expected {} {} at the end; it is {} {}", what, onOff(e.on), onOff(v), ending()));
   }
 
+  // The first time the line turns to the state: ON, or OFF after having
+  // been ON (nullopt: never).
+  std::optional<vm::Micros> firstTime(const LineEvent& ev) const {
+    bool was = false;
+    const auto turns = [&](std::uint8_t bits) {
+      const bool now = ((bits >> (ev.number - 1)) & 1) != 0;
+      const bool happened = ev.on ? now : (was && !now);
+      was = now;
+      return happened;
+    };
+    if (ev.output) {
+      for (const runtime::OutputChange& c : log_.outputs)
+        if (turns(c.outputs)) return log_.steps[c.step].end;
+    } else {
+      for (const runtime::InputLevel& l : log_.inputs)
+        if (turns(l.inputs)) return l.at;
+    }
+    return std::nullopt;
+  }
+
+  static std::string eventText(const LineEvent& ev) {
+    return fmt::format("{} {} {}", ev.output ? "output" : "input", ev.number, onOff(ev.on));
+  }
+
+  void order(const Expectation& e) {
+    const std::optional<vm::Micros> a = firstTime(e.first), b = firstTime(e.second);
+    const std::string first = eventText(e.first), second = eventText(e.second);
+    if (!a) return fail(e, fmt::format("expected {} before {}; {} never happened (the run ended {})", first, second,
+                                       first, ending()));
+    if (b && *b <= *a)
+      fail(e, fmt::format("expected {} before {}; {} came first, at {} ({} at {})", first, second, second, seconds(*b),
+                          first, seconds(*a)));
+  }
+
   void pulses(const Expectation& e) {
     std::uint32_t count = 0;
     bool was = false;
@@ -253,6 +287,7 @@ std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const std::vecto
       case ExpectKind::Output:
       case ExpectKind::Input: c.level(e); break;
       case ExpectKind::Pulses: c.pulses(e); break;
+      case ExpectKind::Order: c.order(e); break;
       case ExpectKind::Variable: c.variable(e); break;
       case ExpectKind::Tcp: c.tcp(e); break;
       case ExpectKind::ObjectAt:

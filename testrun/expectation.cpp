@@ -212,7 +212,18 @@ bool expectation(LineReader& r, Expectation& e) {
       if (!r.accept("times") && !r.accept("time")) return r.fail("expected 'times' after the number of pulses");
       return r.end();
     }
-    return r.onOff(e.on) && moment(r, e) && r.end();
+    if (!r.onOff(e.on)) return false;
+    if (r.accept("before")) {
+      e.kind = ExpectKind::Order;
+      e.first = {output, e.number, e.on};
+      const bool secondOutput = r.accept("output");
+      if (!secondOutput && !r.keyword("input")) return false;
+      std::int64_t m = 0;
+      if (!r.integer(secondOutput ? "an output number" : "an input number", m, 1, 8)) return false;
+      e.second = {secondOutput, static_cast<int>(m), true};
+      return r.onOff(e.second.on) && r.end();
+    }
+    return moment(r, e) && r.end();
   }
   if (r.accept("variable")) {
     e.kind = ExpectKind::Variable;

@@ -36,7 +36,15 @@ enum class ExpectKind : std::uint8_t {
   Tcp,           // tcp X Y Z [within D]
   ObjectAt,      // object NAME at X Y Z [within D]
   ObjectHeld,    // object NAME held | object NAME not held
+  Order,         // (input|output) N on|off before (input|output) M on|off: the first times
   CompileError,  // expect-error: TEXT (on the line of the error)
+};
+
+/// An input or output reaching a state, for Order: the first time it does.
+struct LineEvent {
+  bool output = false;
+  int number = 0;
+  bool on = true;
 };
 
 enum class Compare : std::uint8_t { AtMost, AtLeast, Equal };
@@ -65,6 +73,8 @@ struct Expectation {
   std::int32_t value = 0;
   std::array<double, 3> point{};
   double tolerance = 0.5;
+  // Order: `first` happens before `second`
+  LineEvent first, second;
   // CompileError: the error's message must contain this
   std::string message;
 };

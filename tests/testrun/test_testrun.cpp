@@ -184,6 +184,32 @@ TEST_CASE("robotsim test: each kind of expectation fails with what happened, whe
   CHECK(normalised(r.out).find("0 passed, 1 failed, 0 errors in S s\n") != std::string::npos);
 }
 
+TEST_CASE("robotsim test: one event before another", "[testrun][cli]") {
+  // Input 2 turns ON at 1 s (the stimulus); output 3 turns ON at 1.5 s and OFF at 2 s.
+  const TempDir dir;
+  const std::string program = dir.write("o.rsp",
+                                        "; test: input 2=ON@1\n"
+                                        "; expect: input 2 on before output 3 on\n"    // 2: holds
+                                        "; expect: output 3 on before input 2 on\n"    // 3: input first, at 1 s
+                                        "; expect: output 3 off before output 3 on\n"  // 4: OFF after ON comes later
+                                        "; expect: output 4 on before input 2 on\n"    // 5: output 4 never
+                                        "WAITFOR 2 ON\n"
+                                        "DELAY 0.5\n"
+                                        "OUTSIG 3 ON\n"
+                                        "DELAY 0.5\n"
+                                        "OUTSIG 3 OFF\n"
+                                        "END\n");
+  const CliResult r = runCli({"test", program});
+  CHECK(r.code == 1);
+  CHECK(r.out.find(":2:3:") == std::string::npos);
+  CHECK(r.out.find(program + ":3:3: error: expected output 3 ON before input 2 ON; input 2 ON came first, at 1.000 s "
+                             "(output 3 ON at 1.500 s)\n") != std::string::npos);
+  CHECK(r.out.find(program + ":4:3: error: expected output 3 OFF before output 3 ON; output 3 ON came first, at "
+                             "1.500 s (output 3 OFF at 2.000 s)\n") != std::string::npos);
+  CHECK(r.out.find(program + ":5:3: error: expected output 4 ON before input 2 ON; output 4 ON never happened") !=
+        std::string::npos);
+}
+
 TEST_CASE("robotsim test: objects and the tool centre point on a workcell", "[testrun][cli]") {
   // The gantry of stdlib/workcells/gantry-cell.rsd: its tool centre point
   // is (500 + X/10, 200 - Y/10, 400 + Z/10); block 1 (object 2) sits AT
