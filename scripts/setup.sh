@@ -20,8 +20,9 @@ packages=(
 )
 # Catch2 and the unit tests build with the tree; the browser test drives a
 # real Chromium with playwright-core (pinned in tests/browser/package-lock.json);
-# lua5.4 is the benchmarks' peer.
-[ "$mode" = test ] && packages+=(chromium fonts-liberation lua5.4)
+# lcov's genhtml reads robotsim test's coverage files; lua5.4 is the
+# benchmarks' peer.
+[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4)
 
 missing=()
 for p in "${packages[@]}"; do

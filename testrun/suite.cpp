@@ -51,14 +51,14 @@ Selection selectTests(const std::vector<std::string>& paths, const std::string& 
 }
 
 void runTests(const std::vector<std::string>& files, const std::vector<std::string>& libDirs, unsigned jobs,
-              const std::function<void(const TestResult&)>& report) {
+              bool coverage, const std::function<void(const TestResult&)>& report) {
   std::vector<std::optional<TestResult>> results(files.size());
   std::mutex mutex;
   std::condition_variable ready;
   std::atomic<std::size_t> next = 0;
   const auto work = [&] {
     for (std::size_t i; (i = next.fetch_add(1)) < files.size();) {
-      TestResult r = runTestFile(files[i], libDirs);
+      TestResult r = runTestFile(files[i], libDirs, coverage);
       const std::lock_guard lock(mutex);
       results[i] = std::move(r);
       ready.notify_one();

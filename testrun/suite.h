@@ -28,10 +28,11 @@ Selection selectTests(const std::vector<std::string>& paths, const std::string& 
 /// The shard (1..shards) a path belongs to.
 std::uint32_t shardOf(const std::string& path, std::uint32_t shards);
 
-/// Runs every file on `jobs` threads; `report` is called once per file, in
-/// the files' order, from the calling thread.
+/// Runs every file on `jobs` threads (counting coverage when asked);
+/// `report` is called once per file, in the files' order, from the calling
+/// thread.
 void runTests(const std::vector<std::string>& files, const std::vector<std::string>& libDirs, unsigned jobs,
-              const std::function<void(const TestResult&)>& report);
+              bool coverage, const std::function<void(const TestResult&)>& report);
 
 /// JUnit XML: one testsuite per file, one testcase in it; a failure or an
 /// error element with every problem as `file:line:col: message`.

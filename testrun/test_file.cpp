@@ -83,7 +83,7 @@ void matchCompileErrors(const std::vector<Expectation>& expectations, const std:
 
 }  // namespace
 
-TestResult runTestFile(const std::string& path, const std::vector<std::string>& libDirs) {
+TestResult runTestFile(const std::string& path, const std::vector<std::string>& libDirs, bool coverage) {
   TestResult r;
   r.file = path;
   const base::FileRead read = base::readFile(path, launch::kMaxInputBytes);
@@ -140,8 +140,12 @@ TestResult runTestFile(const std::string& path, const std::vector<std::string>& 
     return r;
   }
   spec->log = true;
+  std::optional<CoverageCounter> counter;
+  if (coverage) counter.emplace(spec->image);
   runtime::Run running(std::move(*spec));
+  if (counter) running.observe(*counter);
   const vm::RunOutcome outcome = running.runToEnd();
+  if (counter) r.coverage = counter->coverage();
   r.simulated = running.clock();
   r.steps = outcome.steps;
   r.expectations = parsed.expectations.size() + (parsed.statesStatus() ? 0 : 1);

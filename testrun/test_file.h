@@ -5,11 +5,13 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "diag/diagnostic.h"
 #include "diag/source_file.h"
+#include "testrun/coverage.h"
 #include "vm/machine.h"
 
 namespace rs::testrun {
@@ -31,10 +33,13 @@ struct TestResult {
   /// The texts of the files the problems point into, for their carets.
   std::vector<std::shared_ptr<const diag::SourceFile>> sources;
   const diag::SourceFile* sourceOf(const std::string& file) const;
+  /// With coverage asked for and a run made: what it ran.
+  std::optional<Coverage> coverage;
 };
 
-/// Runs the test in `path`; `libDirs` as --lib.
-TestResult runTestFile(const std::string& path, const std::vector<std::string>& libDirs);
+/// Runs the test in `path`; `libDirs` as --lib; with `coverage`, counts
+/// what the run executes.
+TestResult runTestFile(const std::string& path, const std::vector<std::string>& libDirs, bool coverage = false);
 
 std::string_view statusName(TestStatus status);
 

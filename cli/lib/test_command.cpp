@@ -54,6 +54,8 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
   cmd->add_option("-j,--jobs", o.jobs, "Tests run at once (default: the number of cores)")
       ->check(CLI::Range(1u, 1024u));
   cmd->add_option("--shard", o.shard, "Only part K of N (K/N), for spreading a suite over CI jobs");
+  cmd->add_flag("--coverage", o.coverage, "Print each program with how often each line ran and which way jumps went");
+  cmd->add_option("--lcov", o.lcov, "Write the coverage as an LCOV tracefile (genhtml makes pages of it)");
   return cmd;
 }
 
@@ -73,7 +75,7 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   const unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
   std::vector<testrun::TestResult> results;
   std::size_t passed = 0, failed = 0, errors = 0;
-  testrun::runTests(selection.files, o.libDirs, jobs, [&](const testrun::TestResult& r) {
+  testrun::runTests(selection.files, o.libDirs, jobs, o.coverage || !o.lcov.empty(), [&](const testrun::TestResult& r) {
     passed += r.status == testrun::TestStatus::Passed;
     failed += r.status == testrun::TestStatus::Failed;
     errors += r.status == testrun::TestStatus::Error;
@@ -108,6 +110,19 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   } else {
     out << fmt::format("{} passed, {} failed, {} error{} in {:.2f} s\n", passed, failed, errors, errors == 1 ? "" : "s",
                        seconds);
+  }
+  if (o.coverage && !json)
+    for (const testrun::TestResult& r : results)
+      if (r.coverage && !r.sources.empty()) out << '\n' << testrun::annotatedListing(*r.sources.front(), *r.coverage);
+  if (!o.lcov.empty()) {
+    std::string tracefile;
+    for (const testrun::TestResult& r : results)
+      if (r.coverage) tracefile += testrun::lcovRecord(r.file, *r.coverage);
+    std::string error;
+    if (!base::writeFileAtomically(o.lcov, tracefile, error)) {
+      err << fmt::format("{}: error: cannot write: {}\n", o.lcov, error);
+      return kExitBadInput;
+    }
   }
   if (!o.junit.empty()) {
     std::string error;

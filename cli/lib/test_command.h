@@ -22,6 +22,8 @@ struct TestOptions {
   std::string filter;  // --filter TEXT
   unsigned jobs = 0;   // -j N; 0: the cores
   std::string shard;   // --shard K/N
+  bool coverage = false;  // --coverage
+  std::string lcov;       // --lcov FILE
 };
 
 CLI::App* addTestCommand(CLI::App& app, TestOptions& o);

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -296,4 +297,35 @@ TEST_CASE("shards: a file's shard depends on its path alone", "[testrun]") {
     seen.insert(s);
   }
   CHECK(seen.size() == 4);  // 200 paths reach every shard
+}
+
+TEST_CASE("robotsim test --coverage and --lcov: counts by hand, a tracefile genhtml reads", "[testrun][cli]") {
+  const TempDir dir;
+  const std::string program = dir.write("c.rsp",
+                                        "SET N 0\n"             // 1: once
+                                        "loop: ADD N 1\n"       // 2: 3 times
+                                        "JMPVAR N < 3 loop\n"   // 3: 3 times: jumps twice, goes on once
+                                        "JMPIN 1 ON never\n"    // 4: once: goes on (input 1 is OFF)
+                                        "END\n"                 // 5: once
+                                        "never: GOTO loop\n");  // 6: never
+  const std::string info = dir.file("c.info");
+  const CliResult r = runCli({"test", program, "--coverage", "--lcov", info});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("coverage of " + program + ": 5 of 6 instruction lines ran, 3 of 4 jump directions taken\n") !=
+        std::string::npos);
+  CHECK(r.out.find("        3:     3: JMPVAR N < 3 loop   [jumped 2, went on 1]\n") != std::string::npos);
+  CHECK(r.out.find("    #####:     6: never: GOTO loop\n") != std::string::npos);
+  CHECK(rs::testing::readBytes(info) == "TN:\nSF:" + program +
+                                            "\nBRDA:3,0,0,2\nBRDA:3,0,1,1\nBRDA:4,0,0,0\nBRDA:4,0,1,1\n"
+                                            "DA:1,1\nDA:2,3\nDA:3,3\nDA:4,1\nDA:5,1\nDA:6,0\n"
+                                            "BRF:4\nBRH:3\nLF:6\nLH:5\nend_of_record\n");
+  // Debian's genhtml (package lcov) makes its pages from the tracefile.
+  const std::string html = dir.file("html");
+  const int status = std::system(("genhtml --quiet --branch-coverage -o " + html + " " + info + " > " +
+                                  dir.file("genhtml.log") + " 2>&1")
+                                     .c_str());
+  INFO(rs::testing::readBytes(dir.file("genhtml.log")));
+  CHECK(status == 0);
+  CHECK(std::filesystem::exists(html + "/index.html"));
 }
