@@ -121,21 +121,23 @@ constexpr std::string_view kSubjects =
     "finished, deadlock, step limit, time limit, clock standing still, runtime error, time, motors, output, input, "
     "variable, tcp, object";
 
+// `at line N` after a status: where the run must stop.
+bool stopLine(LineReader& r, Expectation& e) {
+  if (!r.accept("at")) return true;
+  std::int64_t line = 0;
+  if (!r.keyword("line") || !r.integer("a line number", line, 1, UINT32_MAX)) return false;
+  e.line = static_cast<std::uint32_t>(line);
+  return true;
+}
+
 bool status(LineReader& r, Expectation& e) {
   e.kind = ExpectKind::Status;
-  if (r.accept("finished")) return e.reason = vm::StopReason::End, true;
-  if (r.accept("deadlock")) return e.reason = vm::StopReason::Deadlock, true;
-  if (r.accept("step")) return e.reason = vm::StopReason::StepLimit, r.keyword("limit");
-  if (r.accept("clock")) return e.reason = vm::StopReason::InstantLimit, r.keyword("standing") && r.keyword("still");
-  if (r.accept("runtime")) {
-    e.reason = vm::StopReason::RuntimeError;
-    if (!r.keyword("error")) return false;
-    if (!r.accept("at")) return true;
-    std::int64_t line = 0;
-    if (!r.keyword("line") || !r.integer("a line number", line, 1, UINT32_MAX)) return false;
-    e.line = static_cast<std::uint32_t>(line);
-    return true;
-  }
+  if (r.accept("finished")) return e.reason = vm::StopReason::End, stopLine(r, e);
+  if (r.accept("deadlock")) return e.reason = vm::StopReason::Deadlock, stopLine(r, e);
+  if (r.accept("step")) return e.reason = vm::StopReason::StepLimit, r.keyword("limit") && stopLine(r, e);
+  if (r.accept("clock"))
+    return e.reason = vm::StopReason::InstantLimit, r.keyword("standing") && r.keyword("still") && stopLine(r, e);
+  if (r.accept("runtime")) return e.reason = vm::StopReason::RuntimeError, r.keyword("error") && stopLine(r, e);
   return false;
 }
 
@@ -172,7 +174,8 @@ bool expectation(LineReader& r, Expectation& e) {
     if (r.accept("<=")) e.compare = Compare::AtMost;
     else if (r.accept(">=")) e.compare = Compare::AtLeast;
     else if (r.accept("=")) e.compare = Compare::Equal;
-    else if (r.accept("limit")) return e.kind = ExpectKind::Status, e.reason = vm::StopReason::TimeLimit, r.end();
+    else if (r.accept("limit"))
+      return e.kind = ExpectKind::Status, e.reason = vm::StopReason::TimeLimit, stopLine(r, e) && r.end();
     else return r.fail("expected <=, >= or = after 'time'");
     return r.seconds("a time in seconds", e.micros) && r.end();
   }
@@ -295,6 +298,54 @@ bool ParsedExpectations::statesStatus() const {
   return false;
 }
 
+// One `test:`, `expect:` or `expect-error:` directive whose head starts at
+// byte `i` of the line; false when the line holds none.
+bool directive(std::string_view line, std::uint32_t n, std::size_t i, const std::string& file,
+               ParsedExpectations& out) {
+  const std::size_t colon = line.find(':', i);
+  if (colon == std::string_view::npos) return false;
+  const std::string_view head = line.substr(i, colon - i);
+  const bool expect = base::sameName(head, "expect"), test = base::sameName(head, "test"),
+             error = base::sameName(head, "expect-error");
+  if (!expect && !test && !error) return false;
+  const diag::Pos pos{n, columnOf(line, i)};
+  const std::uint32_t endCol = columnOf(line, line.size());
+  std::string_view text = line.substr(colon + 1);
+  if (const std::size_t comment = text.find(';'); comment != std::string_view::npos && !error)
+    text = text.substr(0, comment);  // a scenario file's trailing comment
+  while (!text.empty() && blank(text.front())) text.remove_prefix(1);
+  while (!text.empty() && blank(text.back())) text.remove_suffix(1);
+  if (error) {
+    if (text.empty()) {
+      out.errors.push_back({file, {n, endCol}, diag::Severity::Error,
+                            "expected the text the compile error on this line must contain"});
+      return true;
+    }
+    Expectation e;
+    e.kind = ExpectKind::CompileError;
+    e.pos = pos;
+    e.text = text;
+    e.message = text;
+    out.expectations.push_back(std::move(e));
+    return true;
+  }
+  const std::size_t end = static_cast<std::size_t>(text.data() + text.size() - line.data());
+  LineReader r(wordsOf(line.substr(0, end), colon + 1), n, endCol);
+  Expectation e;
+  e.pos = pos;
+  e.text = text;
+  const bool ok = expect ? expectation(r, e) : setting(r, out.settings);
+  if (!ok) {
+    diag::Diagnostic d = *r.error();
+    d.file = file;
+    if (expect) d.hint = "docs/testing.md lists every expectation";
+    out.errors.push_back(std::move(d));
+  } else if (expect) {
+    out.expectations.push_back(std::move(e));
+  }
+  return true;
+}
+
 ParsedExpectations parseExpectations(const diag::SourceFile& source) {
   ParsedExpectations out;
   for (std::uint32_t n = 1; n <= source.lineCount(); ++n) {
@@ -303,48 +354,64 @@ ParsedExpectations parseExpectations(const diag::SourceFile& source) {
     if (semicolon == std::string_view::npos) continue;
     std::size_t i = semicolon + 1;
     while (i < line.size() && blank(line[i])) ++i;
-    const std::size_t colon = line.find(':', i);
-    if (colon == std::string_view::npos) continue;
-    const std::string_view head = line.substr(i, colon - i);
-    const bool expect = base::sameName(head, "expect"), test = base::sameName(head, "test"),
-               error = base::sameName(head, "expect-error");
-    if (!expect && !test && !error) continue;  // an ordinary comment
+    directive(line, n, i, source.name(), out);  // or an ordinary comment
+  }
+  return out;
+}
+
+ScenarioFile parseScenarioFile(const diag::SourceFile& source) {
+  ScenarioFile out;
+  ParsedExpectations preamble;  // directives before the first scenario are errors
+  for (std::uint32_t n = 1; n <= source.lineCount(); ++n) {
+    const std::string_view line = source.line(n);
+    std::size_t i = 0;
+    while (i < line.size() && blank(line[i])) ++i;
+    if (i == line.size() || line[i] == ';') continue;
+    const std::vector<Word> words = wordsOf(line.substr(0, line.find(';')), i);
     const diag::Pos pos{n, columnOf(line, i)};
-    const std::uint32_t endCol = columnOf(line, line.size());
-    if (error) {
-      std::string_view text = line.substr(colon + 1);
-      while (!text.empty() && blank(text.front())) text.remove_prefix(1);
-      while (!text.empty() && blank(text.back())) text.remove_suffix(1);
-      if (text.empty()) {
-        out.errors.push_back({source.name(), {n, endCol}, diag::Severity::Error,
-                              "expected the text the compile error on this line must contain"});
+    if (is(words[0], "scenario")) {
+      if (words.size() < 2) {
+        out.errors.push_back({source.name(), {n, columnOf(line, line.size())}, diag::Severity::Error,
+                              "expected the scenario's name after 'scenario'"});
         continue;
       }
-      Expectation e;
-      e.kind = ExpectKind::CompileError;
-      e.pos = pos;
-      e.text = text;
-      e.message = text;
-      out.expectations.push_back(std::move(e));
+      Scenario& s = out.scenarios.emplace_back();
+      s.pos = pos;
+      const std::size_t from = static_cast<std::size_t>(words[1].text.data() - line.data());
+      const std::size_t to = static_cast<std::size_t>(words.back().text.data() + words.back().text.size() - line.data());
+      s.name = line.substr(from, to - from);
       continue;
     }
-    LineReader r(wordsOf(line, colon + 1), n, endCol);
-    Expectation e;
-    e.pos = pos;
-    std::string_view text = line.substr(colon + 1);
-    while (!text.empty() && blank(text.front())) text.remove_prefix(1);
-    while (!text.empty() && blank(text.back())) text.remove_suffix(1);
-    e.text = text;
-    const bool ok = expect ? expectation(r, e) : setting(r, out.settings);
-    if (!ok) {
-      diag::Diagnostic d = *r.error();
-      d.file = source.name();
-      if (expect) d.hint = "docs/testing.md lists every expectation";
-      out.errors.push_back(std::move(d));
-    } else if (expect) {
-      out.expectations.push_back(std::move(e));
+    if (is(words[0], "program")) {
+      if (words.size() != 2 || !out.program.empty()) {
+        out.errors.push_back({source.name(), pos, diag::Severity::Error,
+                              out.program.empty() ? "expected 'program FILE' (one file name)"
+                                                  : "the program is named twice"});
+        continue;
+      }
+      out.program = words[1].text;
+      out.programPos = pos;
+      continue;
     }
+    ParsedExpectations& into = out.scenarios.empty() ? preamble : out.scenarios.back().parsed;
+    if (!directive(line, n, i, source.name(), into)) {
+      out.errors.push_back({source.name(), pos, diag::Severity::Error,
+                            fmt::format("expected 'program FILE', 'scenario NAME', 'test: ...' or 'expect: ...', got "
+                                        "'{}'",
+                                        words[0].text)});
+      continue;
+    }
+    if (out.scenarios.empty())
+      out.errors.push_back(
+          {source.name(), pos, diag::Severity::Error, "expected 'scenario NAME' before the first test: or expect:"});
   }
+  for (const diag::Diagnostic& d : preamble.errors) out.errors.push_back(d);
+  for (Scenario& s : out.scenarios) {
+    for (diag::Diagnostic& d : s.parsed.errors) out.errors.push_back(std::move(d));
+    s.parsed.errors.clear();
+  }
+  if (out.scenarios.empty() && out.errors.empty())
+    out.errors.push_back({source.name(), {}, diag::Severity::Error, "the file has no 'scenario NAME'"});
   return out;
 }
 

@@ -101,4 +101,23 @@ struct ParsedExpectations {
 /// Reads every expectation and setting of a program's comments.
 ParsedExpectations parseExpectations(const diag::SourceFile& source);
 
+/// One world a program is checked in: its settings and expectations.
+struct Scenario {
+  std::string name;
+  diag::Pos pos;
+  ParsedExpectations parsed;
+};
+
+/// A scenario file (`.rstest`): `program FILE` (relative to the scenario
+/// file; optional with --spec), then `scenario NAME` lines, each followed by
+/// its `test:` and `expect:` lines; `;` starts a comment.
+struct ScenarioFile {
+  std::string program;
+  diag::Pos programPos;
+  std::vector<Scenario> scenarios;
+  std::vector<diag::Diagnostic> errors;  ///< every bad line
+};
+
+ScenarioFile parseScenarioFile(const diag::SourceFile& source);
+
 }  // namespace rs::testrun

@@ -22,7 +22,7 @@ std::uint32_t shardOf(const std::string& path, std::uint32_t shards) {
 }
 
 Selection selectTests(const std::vector<std::string>& paths, const std::string& filter, std::uint32_t shard,
-                      std::uint32_t shards) {
+                      std::uint32_t shards, bool withScenarios) {
   Selection s;
   std::set<std::string> found;
   for (const std::string& p : paths) {
@@ -39,7 +39,8 @@ Selection selectTests(const std::vector<std::string>& paths, const std::string& 
     fs::recursive_directory_iterator it(p, fs::directory_options::skip_permission_denied, ec), end;
     for (; !ec && it != end; it.increment(ec)) {
       std::error_code fileEc;
-      if (it->path().extension() == ".rsp" && it->is_regular_file(fileEc))
+      const fs::path ext = it->path().extension();
+      if ((ext == ".rsp" || (withScenarios && ext == ".rstest")) && it->is_regular_file(fileEc))
         found.insert(it->path().lexically_normal().string());
     }
     if (ec) s.errors.push_back({p, {}, diag::Severity::Error, "cannot list: " + ec.message()});
@@ -51,14 +52,15 @@ Selection selectTests(const std::vector<std::string>& paths, const std::string& 
 }
 
 void runTests(const std::vector<std::string>& files, const std::vector<std::string>& libDirs, unsigned jobs,
-              bool coverage, const std::function<void(const TestResult&)>& report) {
-  std::vector<std::optional<TestResult>> results(files.size());
+              bool coverage, const std::string& spec, const std::function<void(const TestResult&)>& report) {
+  std::vector<std::optional<std::vector<TestResult>>> results(files.size());
   std::mutex mutex;
   std::condition_variable ready;
   std::atomic<std::size_t> next = 0;
   const auto work = [&] {
     for (std::size_t i; (i = next.fetch_add(1)) < files.size();) {
-      TestResult r = runTestFile(files[i], libDirs, coverage);
+      std::vector<TestResult> r = spec.empty() ? runTestPath(files[i], libDirs, coverage)
+                                               : runScenarios(spec, files[i], libDirs, coverage);
       const std::lock_guard lock(mutex);
       results[i] = std::move(r);
       ready.notify_one();
@@ -73,10 +75,10 @@ void runTests(const std::vector<std::string>& files, const std::vector<std::stri
   for (std::size_t i = 0; i < files.size(); ++i) {
     std::unique_lock lock(mutex);
     ready.wait(lock, [&] { return results[i].has_value(); });
-    TestResult r = std::move(*results[i]);
+    std::vector<TestResult> r = std::move(*results[i]);
     results[i].reset();
     lock.unlock();
-    report(r);
+    for (const TestResult& one : r) report(one);
   }
   for (std::thread& t : pool) t.join();
 }
@@ -120,15 +122,26 @@ std::string junitXml(const std::vector<TestResult>& results) {
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += fmt::format("<testsuites name=\"robotsim test\" tests=\"{}\" failures=\"{}\" errors=\"{}\">\n", results.size(),
                      failures, errors);
-  for (const TestResult& r : results) {
-    const std::string name = xml(r.file);
-    const std::string stem = xml(fs::path(r.file).stem().string());
-    out += fmt::format("  <testsuite name=\"{}\" tests=\"1\" failures=\"{}\" errors=\"{}\">\n", name,
-                       r.status == TestStatus::Failed ? 1 : 0, r.status == TestStatus::Error ? 1 : 0);
-    out += fmt::format("    <testcase classname=\"{}\" name=\"{}\"", name, stem);
-    if (r.status == TestStatus::Passed) {
-      out += "/>\n";
-    } else {
+  // One testsuite per file: its results come one after the other.
+  for (std::size_t first = 0; first < results.size();) {
+    std::size_t end = first;
+    std::size_t suiteFailures = 0, suiteErrors = 0;
+    while (end < results.size() && results[end].file == results[first].file) {
+      suiteFailures += results[end].status == TestStatus::Failed;
+      suiteErrors += results[end].status == TestStatus::Error;
+      ++end;
+    }
+    const std::string name = xml(results[first].file);
+    out += fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\">\n", name, end - first,
+                       suiteFailures, suiteErrors);
+    for (std::size_t i = first; i < end; ++i) {
+      const TestResult& r = results[i];
+      const std::string testcase = xml(r.name.empty() ? fs::path(r.file).stem().string() : r.name);
+      out += fmt::format("    <testcase classname=\"{}\" name=\"{}\"", name, testcase);
+      if (r.status == TestStatus::Passed) {
+        out += "/>\n";
+        continue;
+      }
       const char* element = r.status == TestStatus::Failed ? "failure" : "error";
       std::string body;
       for (const diag::Diagnostic& d : r.problems) body += problemText(d) + "\n";
@@ -136,6 +149,7 @@ std::string junitXml(const std::vector<TestResult>& results) {
                          r.problems.empty() ? "" : xml(problemText(r.problems.front())), xml(body), element);
     }
     out += "  </testsuite>\n";
+    first = end;
   }
   out += "</testsuites>\n";
   return out;

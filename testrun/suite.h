@@ -22,20 +22,23 @@ struct Selection {
 /// `filter`: keep files whose path contains it ("" keeps all). `shard` K of
 /// `shards` N (1-based): keep the files whose path hashes to K (FNV-1a of
 /// the path modulo N), so a file's shard never depends on the others.
+/// Folders give `.rsp` programs and, `withScenarios`, `.rstest` files.
 Selection selectTests(const std::vector<std::string>& paths, const std::string& filter, std::uint32_t shard,
-                      std::uint32_t shards);
+                      std::uint32_t shards, bool withScenarios = true);
 
 /// The shard (1..shards) a path belongs to.
 std::uint32_t shardOf(const std::string& path, std::uint32_t shards);
 
-/// Runs every file on `jobs` threads (counting coverage when asked);
-/// `report` is called once per file, in the files' order, from the calling
-/// thread.
+/// Runs every file on `jobs` threads (counting coverage when asked), or,
+/// with a `spec` scenario file, its scenarios against every file;
+/// `report` is called once per result, in the files' order, from the
+/// calling thread.
 void runTests(const std::vector<std::string>& files, const std::vector<std::string>& libDirs, unsigned jobs,
-              bool coverage, const std::function<void(const TestResult&)>& report);
+              bool coverage, const std::string& spec, const std::function<void(const TestResult&)>& report);
 
-/// JUnit XML: one testsuite per file, one testcase in it; a failure or an
-/// error element with every problem as `file:line:col: message`.
+/// JUnit XML: one testsuite per file, one testcase per scenario (or the
+/// program's own expectations); a failure or an error element with every
+/// problem as `file:line:col: message`.
 std::string junitXml(const std::vector<TestResult>& results);
 
 }  // namespace rs::testrun

@@ -83,61 +83,50 @@ void matchCompileErrors(const std::vector<Expectation>& expectations, const std:
 
 }  // namespace
 
-TestResult runTestFile(const std::string& path, const std::vector<std::string>& libDirs, bool coverage) {
-  TestResult r;
-  r.file = path;
-  const base::FileRead read = base::readFile(path, launch::kMaxInputBytes);
-  if (!read.bytes) {
-    r.status = TestStatus::Error;
-    r.problems.push_back({path, {}, diag::Severity::Error, "cannot read: " + read.error});
-    return r;
-  }
-  ParsedExpectations parsed;
-  if (!vm::looksLikeImage(*read.bytes)) {
-    auto source = std::make_shared<const diag::SourceFile>(path, *read.bytes);
-    parsed = parseExpectations(*source);
-    r.sources.push_back(source);
-    if (!parsed.errors.empty()) {
-      r.status = TestStatus::Error;
-      r.problems = parsed.errors;
-      return r;
-    }
-  }
+namespace {
 
-  launch::ProgramRequest request{path, besideProgram(path, parsed.settings.cell, true), libDirs};
-  const launch::LoadedProgram program = launch::loadProgram(request);
-  if (program.descriptions)
-    for (const diag::Diagnostic& d : program.diagnostics)
-      if (const diag::SourceFile* s = program.descriptions->source(d.file))
+// The program at `program` checked against `parsed`, whose file names are
+// relative to the folder of `settingsFile`. `r` has its file, name and the
+// sources read so far.
+void check(const std::string& program, const ParsedExpectations& parsed, const std::string& settingsFile,
+           const std::vector<std::string>& libDirs, bool coverage, TestResult& r) {
+  launch::ProgramRequest request{program, besideProgram(settingsFile, parsed.settings.cell, true), libDirs};
+  const launch::LoadedProgram loaded = launch::loadProgram(request);
+  if (loaded.source && !r.sourceOf(loaded.source->name()))
+    r.sources.push_back(std::make_shared<const diag::SourceFile>(*loaded.source));
+  if (loaded.descriptions)
+    for (const diag::Diagnostic& d : loaded.diagnostics)
+      if (const diag::SourceFile* s = loaded.descriptions->source(d.file))
         r.sources.push_back(std::make_shared<const diag::SourceFile>(*s));
-  // A problem outside the program (its cell) means the test cannot start.
-  for (const diag::Diagnostic& d : program.diagnostics)
-    if (d.severity == diag::Severity::Error && d.file != path) {
+  // A problem outside the program (its cell, an unreadable file) means the
+  // test cannot start.
+  for (const diag::Diagnostic& d : loaded.diagnostics)
+    if (d.severity == diag::Severity::Error && (d.file != program || d.pos.line == 0)) {
       r.status = TestStatus::Error;
       r.problems.push_back(d);
     }
-  if (r.status == TestStatus::Error) return r;
+  if (r.status == TestStatus::Error) return;
 
-  if (parsed.expectsCompileErrors() || !program.ok()) {
-    matchCompileErrors(parsed.expectations, program.diagnostics, path, r);
-    if (parsed.expectsCompileErrors() && program.ok())  // matchCompileErrors found them all missing
-      r.problems.insert(r.problems.begin(), {path, {}, diag::Severity::Error,
+  if (parsed.expectsCompileErrors() || !loaded.ok()) {
+    matchCompileErrors(parsed.expectations, loaded.diagnostics, program, r);
+    if (parsed.expectsCompileErrors() && loaded.ok())
+      r.problems.insert(r.problems.begin(), {program, {}, diag::Severity::Error,
                                              "the program compiled, but its expect-error lines ask for errors"});
     r.status = r.problems.empty() ? TestStatus::Passed : TestStatus::Failed;
-    return r;
+    return;
   }
 
   launch::RunRequest run;
-  run.stimuliFile = besideProgram(path, parsed.settings.stimuliFile, false);
+  run.stimuliFile = besideProgram(settingsFile, parsed.settings.stimuliFile, false);
   run.inputs = parsed.settings.inputs;
   run.maxSteps = parsed.settings.maxSteps;
   run.maxTime = parsed.settings.maxTime;
   std::vector<diag::Diagnostic> runProblems;
-  std::optional<runtime::RunSpec> spec = launch::prepareRun(program, run, runProblems);
+  std::optional<runtime::RunSpec> spec = launch::prepareRun(loaded, run, runProblems);
   if (!spec) {
     r.status = TestStatus::Error;
     r.problems = std::move(runProblems);
-    return r;
+    return;
   }
   spec->log = true;
   std::optional<CoverageCounter> counter;
@@ -149,9 +138,77 @@ TestResult runTestFile(const std::string& path, const std::vector<std::string>& 
   r.simulated = running.clock();
   r.steps = outcome.steps;
   r.expectations = parsed.expectations.size() + (parsed.statesStatus() ? 0 : 1);
-  r.problems = evaluate(running, parsed.expectations, path, !parsed.statesStatus());
+  // An expectation of a scenario file points into it.
+  r.problems = evaluate(running, parsed.expectations, settingsFile, !parsed.statesStatus());
+  if (!parsed.statesStatus() && !r.problems.empty() && !outcome.ok()) r.problems.front().file = program;
   r.status = r.problems.empty() ? TestStatus::Passed : TestStatus::Failed;
-  return r;
+}
+
+std::shared_ptr<const diag::SourceFile> readSource(const std::string& path, TestResult& r) {
+  const base::FileRead read = base::readFile(path, launch::kMaxInputBytes);
+  if (!read.bytes) {
+    r.status = TestStatus::Error;
+    r.problems.push_back({path, {}, diag::Severity::Error, "cannot read: " + read.error});
+    return nullptr;
+  }
+  return std::make_shared<const diag::SourceFile>(path, *read.bytes);
+}
+
+bool isScenarioFile(const std::string& path) { return fs::path(path).extension() == ".rstest"; }
+
+}  // namespace
+
+std::vector<TestResult> runScenarios(const std::string& specPath, const std::string& programOverride,
+                                     const std::vector<std::string>& libDirs, bool coverage) {
+  TestResult base;
+  base.file = programOverride.empty() ? specPath : programOverride;
+  const std::shared_ptr<const diag::SourceFile> spec = readSource(specPath, base);
+  if (!spec) return {base};
+  base.sources.push_back(spec);
+  const ScenarioFile parsed = parseScenarioFile(*spec);
+  if (!parsed.errors.empty()) {
+    base.status = TestStatus::Error;
+    base.problems = parsed.errors;
+    return {base};
+  }
+  std::string program = programOverride;
+  if (program.empty()) {
+    if (parsed.program.empty()) {
+      base.status = TestStatus::Error;
+      base.problems.push_back({specPath, {}, diag::Severity::Error,
+                               "the scenario file names no program: add 'program FILE', or give it with --spec"});
+      return {base};
+    }
+    program = besideProgram(specPath, parsed.program, false);
+  }
+  std::vector<TestResult> results;
+  for (const Scenario& s : parsed.scenarios) {
+    TestResult r = base;
+    r.name = s.name;
+    check(program, s.parsed, specPath, libDirs, coverage, r);
+    results.push_back(std::move(r));
+  }
+  return results;
+}
+
+std::vector<TestResult> runTestPath(const std::string& path, const std::vector<std::string>& libDirs, bool coverage) {
+  if (isScenarioFile(path)) return runScenarios(path, "", libDirs, coverage);
+  TestResult r;
+  r.file = path;
+  const std::shared_ptr<const diag::SourceFile> source = readSource(path, r);
+  if (!source) return {r};
+  ParsedExpectations parsed;
+  if (!vm::looksLikeImage(source->text())) {
+    parsed = parseExpectations(*source);
+    r.sources.push_back(source);
+    if (!parsed.errors.empty()) {
+      r.status = TestStatus::Error;
+      r.problems = parsed.errors;
+      return {r};
+    }
+  }
+  check(path, parsed, path, libDirs, coverage, r);
+  return {r};
 }
 
 }  // namespace rs::testrun

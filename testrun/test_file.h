@@ -23,7 +23,8 @@ enum class TestStatus : std::uint8_t {
 };
 
 struct TestResult {
-  std::string file;
+  std::string file;  ///< the program, or the scenario file
+  std::string name;  ///< the scenario ("" for a program's own expectations)
   TestStatus status = TestStatus::Passed;
   std::size_t expectations = 0;  ///< how many were checked
   vm::Micros simulated = 0;      ///< the run's simulated time (0 when nothing ran)
@@ -37,9 +38,16 @@ struct TestResult {
   std::optional<Coverage> coverage;
 };
 
-/// Runs the test in `path`; `libDirs` as --lib; with `coverage`, counts
-/// what the run executes.
-TestResult runTestFile(const std::string& path, const std::vector<std::string>& libDirs, bool coverage = false);
+/// The tests in `path`: a program's own expectations (one result), or
+/// every scenario of a scenario file (`.rstest`, one result each). `libDirs`
+/// as --lib; with `coverage`, counts what each run executes.
+std::vector<TestResult> runTestPath(const std::string& path, const std::vector<std::string>& libDirs,
+                                    bool coverage = false);
+
+/// Every scenario of the scenario file `spec` against `program` (when not
+/// empty, instead of the program the file names): grading.
+std::vector<TestResult> runScenarios(const std::string& spec, const std::string& program,
+                                     const std::vector<std::string>& libDirs, bool coverage = false);
 
 std::string_view statusName(TestStatus status);
 

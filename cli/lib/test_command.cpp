@@ -39,6 +39,54 @@ nlohmann::json diagnosticJson(const diag::Diagnostic& d) {
   return j;
 }
 
+// One row per program: its scenarios passed, their simulated time, and its
+// first problem; as aligned text or as CSV (RFC 4180 quoting).
+std::string gradeTable(const std::vector<testrun::TestResult>& results, bool csv) {
+  struct Row {
+    std::string file;
+    std::size_t passed = 0, total = 0;
+    vm::Micros time = 0;
+    std::string firstProblem = {};
+  };
+  std::vector<Row> rows;
+  for (const testrun::TestResult& r : results) {
+    if (rows.empty() || rows.back().file != r.file) rows.push_back({r.file});
+    Row& row = rows.back();
+    ++row.total;
+    row.passed += r.status == testrun::TestStatus::Passed;
+    row.time += r.simulated;
+    if (row.firstProblem.empty() && !r.problems.empty()) {
+      const diag::Diagnostic& d = r.problems.front();
+      row.firstProblem = (r.name.empty() ? "" : "[" + r.name + "] ") +
+                         (d.pos.line ? fmt::format("{}:{}:{}: {}", d.file, d.pos.line, d.pos.col, d.message)
+                                     : fmt::format("{}: {}", d.file, d.message));
+    }
+  }
+  const auto quote = [](const std::string& s) {
+    std::string q = "\"";
+    for (const char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+  };
+  std::string out;
+  if (csv) {
+    out = "file,passed,scenarios,simulated_seconds,first_problem\n";
+    for (const Row& r : rows)
+      out += fmt::format("{},{},{},{},{}\n", quote(r.file), r.passed, r.total, vm::formatSeconds(r.time),
+                         quote(r.firstProblem));
+    return out;
+  }
+  std::size_t width = 7;
+  for (const Row& r : rows) width = std::max(width, r.file.size());
+  out = fmt::format("{:<{}}  passed  simulated   first problem\n", "program", width);
+  for (const Row& r : rows) {
+    std::string line = fmt::format("{:<{}}  {:>6}  {:>9} s  {}", r.file, width, fmt::format("{}/{}", r.passed, r.total),
+                                   vm::formatSeconds(r.time), r.firstProblem);
+    while (line.back() == ' ') line.pop_back();
+    out += line + '\n';
+  }
+  return out;
+}
+
 }  // namespace
 
 CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
@@ -48,14 +96,15 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
   cmd->add_option("--lib", o.libDirs, "Also look up description names in this directory (repeatable)")
       ->allow_extra_args(false);
   cmd->add_option("--junit", o.junit, "Also write JUnit XML to this file (for CI test reports)");
-  cmd->add_option("--format", o.format, "Output: text (one line per test) or json")
-      ->check(CLI::IsMember({"text", "json"}));
+  cmd->add_option("--format", o.format, "Output: text (one line per test), json, or csv (a table per program)")
+      ->check(CLI::IsMember({"text", "json", "csv"}));
   cmd->add_option("--filter", o.filter, "Only the programs whose path contains this text");
   cmd->add_option("-j,--jobs", o.jobs, "Tests run at once (default: the number of cores)")
       ->check(CLI::Range(1u, 1024u));
   cmd->add_option("--shard", o.shard, "Only part K of N (K/N), for spreading a suite over CI jobs");
   cmd->add_flag("--coverage", o.coverage, "Print each program with how often each line ran and which way jumps went");
   cmd->add_option("--lcov", o.lcov, "Write the coverage as an LCOV tracefile (genhtml makes pages of it)");
+  cmd->add_option("--spec", o.spec, "Grade: run this scenario file (.rstest) against every program under PATH");
   return cmd;
 }
 
@@ -67,20 +116,21 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   }
   const auto started = std::chrono::steady_clock::now();
   const std::vector<std::string> paths = o.paths.empty() ? std::vector<std::string>{"."} : o.paths;
-  const testrun::Selection selection = testrun::selectTests(paths, o.filter, shard, shards);
+  const testrun::Selection selection = testrun::selectTests(paths, o.filter, shard, shards, o.spec.empty());
   for (const diag::Diagnostic& d : selection.errors) err << diag::render(d, nullptr);
   if (!selection.errors.empty()) return kExitBadInput;
 
-  const bool json = o.format == "json";
+  const bool json = o.format == "json", csv = o.format == "csv", text = !json && !csv;
   const unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
   std::vector<testrun::TestResult> results;
   std::size_t passed = 0, failed = 0, errors = 0;
-  testrun::runTests(selection.files, o.libDirs, jobs, o.coverage || !o.lcov.empty(), [&](const testrun::TestResult& r) {
+  testrun::runTests(selection.files, o.libDirs, jobs, o.coverage || !o.lcov.empty(), o.spec,
+                    [&](const testrun::TestResult& r) {
     passed += r.status == testrun::TestStatus::Passed;
     failed += r.status == testrun::TestStatus::Failed;
     errors += r.status == testrun::TestStatus::Error;
-    if (!json) {
-      out << fmt::format("{} {}", r.file, testrun::statusName(r.status));
+    if (text) {
+      out << fmt::format("{}{} {}", r.file, r.name.empty() ? "" : " [" + r.name + "]", testrun::statusName(r.status));
       if (r.status == testrun::TestStatus::Passed)
         out << fmt::format(" ({} expectation{}, {} s simulated)", r.expectations, r.expectations == 1 ? "" : "s",
                            vm::formatSeconds(r.simulated));
@@ -98,6 +148,7 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
       nlohmann::json problems = nlohmann::json::array();
       for (const diag::Diagnostic& d : r.problems) problems.push_back(diagnosticJson(d));
       tests.push_back({{"file", r.file},
+                       {"scenario", r.name},
                        {"status", testrun::statusName(r.status)},
                        {"expectations", r.expectations},
                        {"time", static_cast<double>(r.simulated) / 1e6},
@@ -107,11 +158,14 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
     const nlohmann::json summary = {
         {"passed", passed}, {"failed", failed}, {"errors", errors}, {"tests", tests}};
     out << summary.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+  } else if (csv) {
+    out << gradeTable(results, true);
   } else {
     out << fmt::format("{} passed, {} failed, {} error{} in {:.2f} s\n", passed, failed, errors, errors == 1 ? "" : "s",
                        seconds);
+    if (!o.spec.empty()) out << '\n' << gradeTable(results, false);
   }
-  if (o.coverage && !json)
+  if (o.coverage && text)
     for (const testrun::TestResult& r : results)
       if (r.coverage && !r.sources.empty()) out << '\n' << testrun::annotatedListing(*r.sources.front(), *r.coverage);
   if (!o.lcov.empty()) {

@@ -24,6 +24,7 @@ struct TestOptions {
   std::string shard;   // --shard K/N
   bool coverage = false;  // --coverage
   std::string lcov;       // --lcov FILE
+  std::string spec;       // --spec FILE.rstest: grade every program against it
 };
 
 CLI::App* addTestCommand(CLI::App& app, TestOptions& o);

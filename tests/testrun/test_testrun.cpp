@@ -134,7 +134,7 @@ TEST_CASE("robotsim test: the examples and the passing tests pass", "[testrun][c
   const CliResult passing = runCli({"test", kSource + "/examples/tests/passing"});
   INFO(passing.out);
   CHECK(passing.code == 0);
-  CHECK(normalised(passing.out).find("3 passed, 0 failed, 0 errors in S s\n") != std::string::npos);
+  CHECK(normalised(passing.out).find("5 passed, 0 failed, 0 errors in S s\n") != std::string::npos);  // 3 programs, 2 scenarios
   std::vector<std::string> args{"test"};
   for (const char* name : {"counted_loop", "first_moves", "gantry_pick", "nested_subroutines", "pick_and_place",
                            "sensor_branching", "soft_home", "workcell_view"})
@@ -328,4 +328,64 @@ TEST_CASE("robotsim test --coverage and --lcov: counts by hand, a tracefile genh
   INFO(rs::testing::readBytes(dir.file("genhtml.log")));
   CHECK(status == 0);
   CHECK(std::filesystem::exists(html + "/index.html"));
+}
+
+TEST_CASE("robotsim test: a scenario file checks one program in several worlds", "[testrun][cli]") {
+  const std::string spec = kSource + "/examples/tests/passing/pick_and_place.rstest";
+  const TempDir dir;
+  const CliResult r = runCli({"test", spec, "--junit", dir.file("r.xml")});
+  INFO(r.out);
+  CHECK(r.code == 0);
+  CHECK(r.out.find(spec + " [the cell works] PASSED (3 expectations, 34.900 s simulated)\n") != std::string::npos);
+  CHECK(r.out.find(spec + " [no part ever arrives] PASSED (3 expectations, 0.000 s simulated)\n") != std::string::npos);
+  const std::string xml = rs::testing::readBytes(dir.file("r.xml"));
+  CHECK(xml.find("<testsuite name=\"" + spec + "\" tests=\"2\" failures=\"0\" errors=\"0\">") != std::string::npos);
+  CHECK(xml.find("name=\"no part ever arrives\"/>") != std::string::npos);
+
+  // Every bad line of a scenario file, in one run; the test cannot start.
+  const std::string bad = dir.write("bad.rstest",
+                                    "program p.rsp\n"
+                                    "expect: finished\n"          // 2: before any scenario
+                                    "scenario\n"                  // 3: no name
+                                    "scenario one\n"
+                                    "expect: output 0 on\n"       // 5: col 16
+                                    "frobnicate\n"                // 6
+                                    "program q.rsp\n");           // 7: twice
+  const CliResult b = runCli({"test", bad});
+  CHECK(b.code == 2);
+  for (const std::string& want :
+       {bad + ":2:1: error: expected 'scenario NAME' before the first test: or expect:\n",
+        bad + ":3:9: error: expected the scenario's name after 'scenario'\n",
+        bad + ":5:16: error: expected an output number (1..8), got '0'\n",
+        bad + ":6:1: error: expected 'program FILE', 'scenario NAME', 'test: ...' or 'expect: ...', got 'frobnicate'\n",
+        bad + ":7:1: error: the program is named twice\n"}) {
+    INFO(want);
+    CHECK(b.out.find(want) != std::string::npos);
+  }
+}
+
+TEST_CASE("robotsim test --spec grades every submission, whatever each one does", "[testrun][cli]") {
+  // examples/tests/grading: alice does the task (3 s with a part: E out
+  // 1 s, the part at 2 s, E back 1 s; 1 s then a wait without one); bob
+  // leaves E at 400 (3 s, then waits at 0 s); carol does not compile; dave
+  // polls without letting the clock move and is stopped.
+  const std::string folder = kSource + "/examples/tests/grading";
+  const CliResult r =
+      runCli({"test", "--spec", folder + "/assignment.rstest", folder + "/submissions", "--format", "csv"});
+  CHECK(r.code == 1);
+  const std::string s = folder + "/submissions/";
+  const std::string a = folder + "/assignment.rstest";
+  CHECK(r.out ==
+        "file,passed,scenarios,simulated_seconds,first_problem\n"
+        "\"" + s + "alice.rsp\",2,2,4.000,\"\"\n"
+        "\"" + s + "bob.rsp\",1,2,3.000,\"[a part arrives at 2 s] " + a +
+            ":11:1: expected motor E at 0 at the end; it is at 400 at line 5, 3.000 s\"\n"
+        "\"" + s + "carol.rsp\",0,2,0.000,\"[a part arrives at 2 s] " + s +
+            "carol.rsp:3:18: unexpected compile error: expected ON or OFF, found 'ONN'\"\n"
+        "\"" + s + "dave.rsp\",0,2,0.000,\"[a part arrives at 2 s] " + a +
+            ":9:1: expected the run to end: finished; it ended: clock standing still at line 3, 0.000 s: 10000000 "
+            "instructions ran at 0.000 s without the simulated clock moving\"\n");
+  const CliResult text = runCli({"test", "--spec", folder + "/assignment.rstest", folder + "/submissions"});
+  CHECK(text.out.find("3 passed, 5 failed, 0 errors in ") != std::string::npos);
+  CHECK(text.out.find(s + "alice.rsp     2/2      4.000 s\n") != std::string::npos);
 }
