@@ -176,6 +176,23 @@ class Checker {
                           first, seconds(*a)));
   }
 
+  // Motors move in straight lines from one encoder value to another, so the
+  // ends of its moves are the farthest a motor went.
+  void motorBound(const Expectation& e) {
+    const auto [letter, bound] = e.motors.front();
+    std::size_t m = 0;
+    while (m < image_.motors.size() && image_.motors[m].letter != letter) ++m;
+    if (m == image_.motors.size()) return fail(e, fmt::format("the robot has no motor {}", letter));
+    for (const runtime::MotorMove& move : log_.moves[m]) {
+      const std::int32_t reached = e.on ? std::max(move.from, move.to) : std::min(move.from, move.to);
+      if (e.on ? reached <= bound : reached >= bound) continue;
+      const std::int32_t to = move.to;
+      return fail(e, fmt::format("expected motor {} never {} {}; it moved to {} at line {} ({}..{})", letter,
+                                 e.on ? "above" : "below", bound, to, image_.lines[log_.steps[move.step].index],
+                                 vm::formatSeconds(move.start), seconds(move.end)));
+    }
+  }
+
   void pulses(const Expectation& e) {
     std::uint32_t count = 0;
     bool was = false;
@@ -288,6 +305,7 @@ std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const std::vecto
       case ExpectKind::Input: c.level(e); break;
       case ExpectKind::Pulses: c.pulses(e); break;
       case ExpectKind::Order: c.order(e); break;
+      case ExpectKind::MotorBound: c.motorBound(e); break;
       case ExpectKind::Variable: c.variable(e); break;
       case ExpectKind::Tcp: c.tcp(e); break;
       case ExpectKind::ObjectAt:

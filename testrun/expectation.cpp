@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -118,8 +119,8 @@ class LineReader {
 };
 
 constexpr std::string_view kSubjects =
-    "finished, deadlock, step limit, time limit, clock standing still, runtime error, time, motors, output, input, "
-    "variable, tcp, object";
+    "finished, deadlock, step limit, time limit, clock standing still, runtime error, time, motors, motor, output, "
+    "input, variable, tcp, object";
 
 // `at line N` after a status: where the run must stop.
 bool stopLine(LineReader& r, Expectation& e) {
@@ -199,6 +200,21 @@ bool expectation(LineReader& r, Expectation& e) {
     if (within < 0 || within > 1e9 || within != std::floor(within))
       return r.fail("the tolerance of motors is a whole number of encoder units");
     e.within = static_cast<std::int32_t>(within);
+    return r.end();
+  }
+  if (r.accept("motor")) {
+    e.kind = ExpectKind::MotorBound;
+    const std::optional<Word> letter = r.take("a motor letter");
+    if (!letter) return false;
+    if (letter->text.size() != 1 || !std::isalpha(static_cast<unsigned char>(letter->text[0])))
+      return r.failAt(letter->col, fmt::format("expected a motor letter such as E, got '{}'", letter->text));
+    if (!r.keyword("never")) return false;
+    if (r.accept("above")) e.on = true;
+    else if (r.accept("below")) e.on = false;
+    else return r.fail("expected 'above' or 'below' after 'never'");
+    std::int64_t bound = 0;
+    if (!r.integer("an encoder value", bound, INT32_MIN, INT32_MAX)) return false;
+    e.motors.emplace_back(base::asciiUpper(letter->text[0]), static_cast<std::int32_t>(bound));
     return r.end();
   }
   if (r.accept("output") || r.accept("input")) {

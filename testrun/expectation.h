@@ -37,6 +37,7 @@ enum class ExpectKind : std::uint8_t {
   ObjectAt,      // object NAME at X Y Z [within D]
   ObjectHeld,    // object NAME held | object NAME not held
   Order,         // (input|output) N on|off before (input|output) M on|off: the first times
+  MotorBound,    // motor E never above N | motor E never below N: during the whole run
   CompileError,  // expect-error: TEXT (on the line of the error)
 };
 
@@ -64,6 +65,7 @@ struct Expectation {
   // Motors
   std::vector<std::pair<char, std::int32_t>> motors;
   std::int32_t within = 0;
+  // MotorBound: `motors[0]` is the motor and its bound; `on`: never above (else never below)
   // Output, Input, Pulses
   int number = 0;
   bool on = true;

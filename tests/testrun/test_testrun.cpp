@@ -211,6 +211,26 @@ TEST_CASE("robotsim test: one event before another", "[testrun][cli]") {
         std::string::npos);
 }
 
+TEST_CASE("robotsim test: a motor that must never pass a value", "[testrun][cli]") {
+  const TempDir dir;
+  const std::string program = dir.write("m.rsp",
+                                        "; expect: motor E never above 300\n"   // 1: E goes to 400 at line 5
+                                        "; expect: motor E never below -100\n"  // 2: holds: E never goes below 0
+                                        "; expect: motor C never below -50\n"   // 3: C goes to -60 at line 6
+                                        "; expect: motor Q never above 1\n"     // 4: no such motor
+                                        "MOVE 400 0 0 0 0\n"                    // 5: 0 .. 1 s
+                                        "MOVE -400 0 -60 0 0\n"                 // 6: E 1 .. 2 s; C 60 units at 300/s: 1 .. 1.2 s
+                                        "END\n");
+  const CliResult r = runCli({"test", program});
+  CHECK(r.code == 1);
+  CHECK(r.out.find(program + ":1:3: error: expected motor E never above 300; it moved to 400 at line 5 (0.000..1.000 "
+                             "s)\n") != std::string::npos);
+  CHECK(r.out.find(":2:3:") == std::string::npos);
+  CHECK(r.out.find(program + ":3:3: error: expected motor C never below -50; it moved to -60 at line 6 (1.000..1.200 "
+                             "s)\n") != std::string::npos);
+  CHECK(r.out.find(program + ":4:3: error: the robot has no motor Q\n") != std::string::npos);
+}
+
 TEST_CASE("robotsim test: objects and the tool centre point on a workcell", "[testrun][cli]") {
   // The gantry of stdlib/workcells/gantry-cell.rsd: its tool centre point
   // is (500 + X/10, 200 - Y/10, 400 + Z/10); block 1 (object 2) sits AT
