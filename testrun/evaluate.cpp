@@ -209,6 +209,32 @@ class Checker {
   void variable(const Expectation& e) {
     for (std::size_t s = 0; s < image_.variables.size(); ++s) {
       if (!base::sameName(image_.variables[s], e.name)) continue;
+      const auto slot = static_cast<std::uint32_t>(s);
+      const auto writtenBy = [&](vm::Micros t) {  // the line of the last write at or before t
+        const runtime::VariableWrite* last = nullptr;
+        for (const runtime::VariableWrite& w : log_.variables)
+          if (w.slot == slot && log_.steps[w.step].end <= t) last = &w;
+        return last ? fmt::format("set by line {}", image_.lines[log_.steps[last->step].index]) : "never set yet";
+      };
+      if (e.at) {
+        const std::int32_t v = runtime::variableAt(log_, slot, *e.at);
+        if (v != e.value)
+          fail(e, fmt::format("expected variable {} = {} at {}; it was {} then ({})", image_.variables[s], e.value,
+                              seconds(*e.at), v, writtenBy(*e.at)));
+        return;
+      }
+      if (e.during) {
+        const auto [from, to] = *e.during;
+        std::vector<vm::Micros> times{from};
+        for (const runtime::VariableWrite& w : log_.variables)
+          if (const vm::Micros at = log_.steps[w.step].end; w.slot == slot && at > from && at < to) times.push_back(at);
+        for (const vm::Micros t : times)
+          if (const std::int32_t v = runtime::variableAt(log_, slot, t); v != e.value)
+            return fail(e, fmt::format("expected variable {} = {} during {}..{}; it was {} at {} ({})",
+                                       image_.variables[s], e.value, vm::formatSeconds(from), seconds(to), v,
+                                       seconds(t), writtenBy(t)));
+        return;
+      }
       const std::int32_t v = run_.interpreter().variables()[s];
       if (v != e.value)
         fail(e, fmt::format("expected variable {} = {} at the end; it is {} {}", image_.variables[s], e.value, v,

@@ -250,7 +250,8 @@ bool expectation(LineReader& r, Expectation& e) {
     if (!name) return false;
     e.name = name->text;
     std::int64_t v = 0;
-    return r.keyword("=") && r.integer("a value", v, INT32_MIN, INT32_MAX) && (e.value = static_cast<std::int32_t>(v), r.end());
+    return r.keyword("=") && r.integer("a value", v, INT32_MIN, INT32_MAX) &&
+           (e.value = static_cast<std::int32_t>(v), moment(r, e)) && r.end();
   }
   if (r.accept("tcp")) {
     e.kind = ExpectKind::Tcp;

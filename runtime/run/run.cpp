@@ -24,7 +24,7 @@ class Run::Observers final : public vm::StepObserver {
       run_.lastStepGrasped_ = run_.world_->eventCount() != run_.graspEventsSeen_;
       run_.graspEventsSeen_ = run_.world_->eventCount();
     }
-    if (run_.logger_) run_.logger_->afterStep(index);
+    if (run_.logger_) run_.logger_->afterStep(vm, index);
     bool pause = false;
     for (vm::StepObserver* o : added) pause |= o->afterStep(vm, index);
     if (when && (*when)(run_)) conditionMet = true, pause = true;

@@ -17,14 +17,14 @@ const T* lastUpTo(const std::vector<T>& items, std::size_t step) {
 }  // namespace
 
 RunLog::Mark RunLog::mark() const {
-  Mark m{steps.size(), outputs.size(), cameras.size(), inputs.size(), grasps.size(), {}, end};
+  Mark m{steps.size(), outputs.size(), cameras.size(), inputs.size(), grasps.size(), variables.size(), {}, end};
   for (const auto& list : moves) m.moves.push_back(list.size());
   return m;
 }
 
 void RunLog::cutTo(const Mark& m) {
   steps.resize(m.steps), outputs.resize(m.outputs), cameras.resize(m.cameras);
-  inputs.resize(m.inputs), grasps.resize(m.grasps);
+  inputs.resize(m.inputs), grasps.resize(m.grasps), variables.resize(m.variables);
   for (std::size_t i = 0; i < moves.size() && i < m.moves.size(); ++i) moves[i].resize(m.moves[i]);
   end = m.end;
 }
@@ -61,7 +61,14 @@ void RunLogger::takeStateOf(const SimMachine& machine) {
 
 // A motor whose segment changed moved, jumped (RESET) or was asked to stay
 // where it was; only the first two are kept.
-void RunLogger::afterStep(std::uint32_t index) {
+void RunLogger::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
+  if (const vm::Instr& in = vm.image().code[index]; vm::has(in.op, vm::kWritesVariable))
+    log_.variables.push_back(
+        {static_cast<std::uint32_t>(log_.steps.size()), static_cast<std::uint32_t>(in.b), vm.variables()[in.b]});
+  record(index);
+}
+
+void RunLogger::record(std::uint32_t index) {
   const auto step = static_cast<std::uint32_t>(log_.steps.size());
   const vm::Micros now = machine_.now();
   log_.steps.push_back({index, lastNow_, now});
@@ -92,7 +99,7 @@ void RunLogger::afterStep(std::uint32_t index) {
 void RunLogger::finish(const vm::RunOutcome& outcome) {
   if (!outcome.ok() && outcome.reason != vm::StopReason::StepLimit && outcome.reason != vm::StopReason::InstantLimit &&
       !outcome.paused())
-    afterStep(outcome.index);
+    record(outcome.index);  // it did not complete: it wrote no variable
   log_.end = machine_.now();
 }
 
@@ -117,6 +124,15 @@ RunState stateAtStep(const RunLog& log, std::size_t step, vm::Micros t) {
                                 [](vm::Micros v, const InputLevel& l) { return v < l.at; });
   if (level != log.inputs.begin()) s.inputs = (level - 1)->inputs;
   return s;
+}
+
+std::int32_t variableAt(const RunLog& log, std::uint32_t slot, vm::Micros t) {
+  std::int32_t value = 0;  // variables start at 0
+  for (const VariableWrite& w : log.variables) {
+    if (log.steps[w.step].end > t) break;
+    if (w.slot == slot) value = w.value;
+  }
+  return value;
 }
 
 RunState stateAt(const RunLog& log, vm::Micros t) {

@@ -49,6 +49,14 @@ struct InputLevel {
   std::uint8_t inputs = 0;
 };
 
+/// Step `step` wrote `value` into variable slot `slot` (SET, ADD).
+struct VariableWrite {
+  std::uint32_t step = 0;
+  std::uint32_t slot = 0;
+  std::int32_t value = 0;
+  bool operator==(const VariableWrite&) const = default;
+};
+
 /// A take or a let-go (runtime/world.h) during step `step`.
 struct GraspRecord {
   std::uint32_t step = 0;
@@ -63,11 +71,12 @@ struct RunLog {
   std::vector<CameraChange> cameras;
   std::vector<InputLevel> inputs;   ///< starts at time 0
   std::vector<GraspRecord> grasps;  ///< in step order; empty without a gripper
+  std::vector<VariableWrite> variables;  ///< in step order
   vm::Micros end = 0;               ///< the clock when the run stopped (or paused)
 
   /// How long each list was at some moment, to cut the log back to it.
   struct Mark {
-    std::size_t steps = 0, outputs = 0, cameras = 0, inputs = 0, grasps = 0;
+    std::size_t steps = 0, outputs = 0, cameras = 0, inputs = 0, grasps = 0, variables = 0;
     std::vector<std::size_t> moves;
     vm::Micros end = 0;
     bool operator==(const Mark&) const = default;
@@ -82,7 +91,7 @@ struct RunLog {
 class RunLogger {
  public:
   RunLogger(SimMachine& machine, const World* world);
-  void afterStep(std::uint32_t index);
+  void afterStep(const vm::Interpreter& vm, std::uint32_t index);
   /// The instruction that stopped a run early (a runtime error, a
   /// deadlock, the time limit) counts as a step.
   void finish(const vm::RunOutcome& outcome);
@@ -92,6 +101,7 @@ class RunLogger {
   void restore(const RunLog::Mark& mark, const SimMachine& machine);
 
  private:
+  void record(std::uint32_t index);
   void takeStateOf(const SimMachine& machine);
 
   const SimMachine& machine_;
@@ -119,6 +129,9 @@ struct RunState {
 RunState stateAt(const RunLog& log, vm::Micros t);
 /// The state after step `step`'s effects, seen at time t (its start..end).
 RunState stateAtStep(const RunLog& log, std::size_t step, vm::Micros t);
+
+/// Variable slot `slot`'s value at time t (after every write due at t).
+std::int32_t variableAt(const RunLog& log, std::uint32_t slot, vm::Micros t);
 
 /// positionAt (what SimMachine answers) for one logged move.
 std::int32_t positionAt(const MotorMove& move, std::int32_t speed, vm::Micros t);

@@ -211,6 +211,33 @@ TEST_CASE("robotsim test: one event before another", "[testrun][cli]") {
         std::string::npos);
 }
 
+TEST_CASE("robotsim test: a variable at a time and during a window", "[testrun][cli]") {
+  const TempDir dir;
+  const std::string program = dir.write("v.rsp",
+                                        "; expect: variable N = 1 at 0.5\n"      // 1: holds (set to 1 at 0)
+                                        "; expect: variable N = 1 during 0..2\n"  // 2: 2 from 1 s on (line 9)
+                                        "; expect: variable N = 2 at 1\n"        // 3: holds (ADD at 1 s)
+                                        "; expect: variable N = 0 at 0\n"        // 4: already 1 at 0 (line 7)
+                                        "; expect: variable N = 1\n"             // 5: 2 at the end
+                                        "; expect: variable N = 2 during 1..5\n"  // 6: holds
+                                        "SET N 1\n"                             // 7: at 0 s
+                                        "DELAY 1\n"                             // 8: 0 .. 1 s
+                                        "ADD N 1\n"                             // 9: at 1 s
+                                        "DELAY 1\n"                             // 10: 1 .. 2 s
+                                        "END\n");
+  const CliResult r = runCli({"test", program});
+  CHECK(r.code == 1);
+  CHECK(r.out.find(":1:3:") == std::string::npos);
+  CHECK(r.out.find(program + ":2:3: error: expected variable N = 1 during 0.000..2.000 s; it was 2 at 1.000 s (set by "
+                             "line 9)\n") != std::string::npos);
+  CHECK(r.out.find(":3:3:") == std::string::npos);
+  CHECK(r.out.find(program + ":4:3: error: expected variable N = 0 at 0.000 s; it was 1 then (set by line 7)\n") !=
+        std::string::npos);
+  CHECK(r.out.find(program + ":5:3: error: expected variable N = 1 at the end; it is 2 at line 11, 2.000 s\n") !=
+        std::string::npos);
+  CHECK(r.out.find(":6:3:") == std::string::npos);
+}
+
 TEST_CASE("robotsim test: a motor that must never pass a value", "[testrun][cli]") {
   const TempDir dir;
   const std::string program = dir.write("m.rsp",
