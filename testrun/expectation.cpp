@@ -120,7 +120,7 @@ class LineReader {
 
 constexpr std::string_view kSubjects =
     "finished, deadlock, step limit, time limit, clock standing still, runtime error, time, motors, motor, output, "
-    "input, variable, tcp, object";
+    "input, variable, tcp, object, trace";
 
 // `at line N` after a status: where the run must stop.
 bool stopLine(LineReader& r, Expectation& e) {
@@ -200,6 +200,13 @@ bool expectation(LineReader& r, Expectation& e) {
     if (within < 0 || within > 1e9 || within != std::floor(within))
       return r.fail("the tolerance of motors is a whole number of encoder units");
     e.within = static_cast<std::int32_t>(within);
+    return r.end();
+  }
+  if (r.accept("trace")) {
+    e.kind = ExpectKind::Trace;
+    const std::optional<Word> file = r.take("a golden trace file");
+    if (!file) return false;
+    e.name = file->text;
     return r.end();
   }
   if (r.accept("motor")) {
@@ -306,6 +313,12 @@ bool setting(LineReader& r, TestSettings& s) {
 bool ParsedExpectations::expectsCompileErrors() const {
   for (const Expectation& e : expectations)
     if (e.kind == ExpectKind::CompileError) return true;
+  return false;
+}
+
+bool ParsedExpectations::wantsTrace() const {
+  for (const Expectation& e : expectations)
+    if (e.kind == ExpectKind::Trace) return true;
   return false;
 }
 

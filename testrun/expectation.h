@@ -38,6 +38,7 @@ enum class ExpectKind : std::uint8_t {
   ObjectHeld,    // object NAME held | object NAME not held
   Order,         // (input|output) N on|off before (input|output) M on|off: the first times
   MotorBound,    // motor E never above N | motor E never below N: during the whole run
+  Trace,         // trace FILE: the run's text trace is the file's bytes
   CompileError,  // expect-error: TEXT (on the line of the error)
 };
 
@@ -98,6 +99,7 @@ struct ParsedExpectations {
   bool any() const { return !expectations.empty(); }
   bool expectsCompileErrors() const;
   bool statesStatus() const;
+  bool wantsTrace() const;
 };
 
 /// Reads every expectation and setting of a program's comments.

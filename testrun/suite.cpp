@@ -51,16 +51,16 @@ Selection selectTests(const std::vector<std::string>& paths, const std::string& 
   return s;
 }
 
-void runTests(const std::vector<std::string>& files, const std::vector<std::string>& libDirs, unsigned jobs,
-              bool coverage, const std::string& spec, const std::function<void(const TestResult&)>& report) {
+void runTests(const std::vector<std::string>& files, const RunnerOptions& options, unsigned jobs,
+              const std::string& spec, const std::function<void(const TestResult&)>& report) {
   std::vector<std::optional<std::vector<TestResult>>> results(files.size());
   std::mutex mutex;
   std::condition_variable ready;
   std::atomic<std::size_t> next = 0;
   const auto work = [&] {
     for (std::size_t i; (i = next.fetch_add(1)) < files.size();) {
-      std::vector<TestResult> r = spec.empty() ? runTestPath(files[i], libDirs, coverage)
-                                               : runScenarios(spec, files[i], libDirs, coverage);
+      std::vector<TestResult> r =
+          spec.empty() ? runTestPath(files[i], options) : runScenarios(spec, files[i], options);
       const std::lock_guard lock(mutex);
       results[i] = std::move(r);
       ready.notify_one();

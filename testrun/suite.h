@@ -33,8 +33,8 @@ std::uint32_t shardOf(const std::string& path, std::uint32_t shards);
 /// with a `spec` scenario file, its scenarios against every file;
 /// `report` is called once per result, in the files' order, from the
 /// calling thread.
-void runTests(const std::vector<std::string>& files, const std::vector<std::string>& libDirs, unsigned jobs,
-              bool coverage, const std::string& spec, const std::function<void(const TestResult&)>& report);
+void runTests(const std::vector<std::string>& files, const RunnerOptions& options, unsigned jobs,
+              const std::string& spec, const std::function<void(const TestResult&)>& report);
 
 /// JUnit XML: one testsuite per file, one testcase per scenario (or the
 /// program's own expectations); a failure or an error element with every

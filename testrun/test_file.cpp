@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <sstream>
 
 #include "base/file_io.h"
 #include "launch/program.h"
@@ -85,12 +86,15 @@ void matchCompileErrors(const std::vector<Expectation>& expectations, const std:
 
 namespace {
 
+void compareTrace(const Expectation& e, const std::string& golden, const std::string& trace,
+                  const std::string& settingsFile, const RunnerOptions& options, TestResult& r);
+
 // The program at `program` checked against `parsed`, whose file names are
 // relative to the folder of `settingsFile`. `r` has its file, name and the
 // sources read so far.
 void check(const std::string& program, const ParsedExpectations& parsed, const std::string& settingsFile,
-           const std::vector<std::string>& libDirs, bool coverage, TestResult& r) {
-  launch::ProgramRequest request{program, besideProgram(settingsFile, parsed.settings.cell, true), libDirs};
+           const RunnerOptions& options, TestResult& r) {
+  launch::ProgramRequest request{program, besideProgram(settingsFile, parsed.settings.cell, true), options.libDirs};
   const launch::LoadedProgram loaded = launch::loadProgram(request);
   if (loaded.source && !r.sourceOf(loaded.source->name()))
     r.sources.push_back(std::make_shared<const diag::SourceFile>(*loaded.source));
@@ -130,9 +134,15 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   }
   spec->log = true;
   std::optional<CoverageCounter> counter;
-  if (coverage) counter.emplace(spec->image);
+  if (options.coverage) counter.emplace(spec->image);
   runtime::Run running(std::move(*spec));
   if (counter) running.observe(*counter);
+  std::ostringstream trace;
+  std::unique_ptr<vm::StepObserver> tracer;
+  if (parsed.wantsTrace() && options.traceMaker) {
+    tracer = options.traceMaker(trace, running);
+    running.observe(*tracer);
+  }
   const vm::RunOutcome outcome = running.runToEnd();
   if (counter) r.coverage = counter->coverage();
   r.simulated = running.clock();
@@ -141,7 +151,62 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   // An expectation of a scenario file points into it.
   r.problems = evaluate(running, parsed.expectations, settingsFile, !parsed.statesStatus());
   if (!parsed.statesStatus() && !r.problems.empty() && !outcome.ok()) r.problems.front().file = program;
+  for (const Expectation& e : parsed.expectations)
+    if (e.kind == ExpectKind::Trace) compareTrace(e, besideProgram(settingsFile, e.name, false), trace.str(),
+                                                  settingsFile, options, r);
   r.status = r.problems.empty() ? TestStatus::Passed : TestStatus::Failed;
+}
+
+}  // namespace
+
+// The first line where two texts differ (1-based), 0 when equal.
+std::size_t firstDifference(std::string_view a, std::string_view b, std::string& lineA, std::string& lineB) {
+  std::size_t line = 1;
+  while (true) {
+    const std::size_t ea = a.find('\n'), eb = b.find('\n');
+    const std::string_view la = a.substr(0, ea), lb = b.substr(0, eb);
+    if (la != lb || (ea == std::string_view::npos) != (eb == std::string_view::npos)) {
+      lineA = la, lineB = lb;
+      return line;
+    }
+    if (ea == std::string_view::npos) return 0;
+    a.remove_prefix(ea + 1), b.remove_prefix(eb + 1), ++line;
+  }
+}
+
+namespace {
+
+// `expect: trace FILE`: the run's text trace must be the file's bytes;
+// --update writes the file instead when it differs or is missing.
+void compareTrace(const Expectation& e, const std::string& golden, const std::string& trace,
+                  const std::string& settingsFile, const RunnerOptions& options, TestResult& r) {
+  if (!options.traceMaker) {
+    r.problems.push_back({settingsFile, e.pos, diag::Severity::Error, "no trace writer: cannot check the trace"});
+    return;
+  }
+  const base::FileRead read = base::readFile(golden, launch::kMaxInputBytes);
+  if (read.bytes && *read.bytes == trace) return;
+  if (options.update) {
+    std::string error;
+    if (base::writeFileAtomically(golden, trace, error)) {
+      r.updated.push_back(golden);
+      return;
+    }
+    r.problems.push_back({settingsFile, e.pos, diag::Severity::Error, fmt::format("cannot write {}: {}", golden, error)});
+    return;
+  }
+  if (!read.bytes) {
+    r.problems.push_back({settingsFile, e.pos, diag::Severity::Error,
+                          fmt::format("cannot read the golden trace {}: {}", golden, read.error), {},
+                          "robotsim test --update writes it from the run"});
+    return;
+  }
+  std::string want, got;
+  const std::size_t line = firstDifference(*read.bytes, trace, want, got);
+  r.problems.push_back({settingsFile, e.pos, diag::Severity::Error,
+                        fmt::format("the trace differs from {} at its line {}: expected '{}', got '{}'", golden, line,
+                                    want, got),
+                        {}, "if the new run is right, robotsim test --update rewrites the golden trace"});
 }
 
 std::shared_ptr<const diag::SourceFile> readSource(const std::string& path, TestResult& r) {
@@ -159,7 +224,7 @@ bool isScenarioFile(const std::string& path) { return fs::path(path).extension()
 }  // namespace
 
 std::vector<TestResult> runScenarios(const std::string& specPath, const std::string& programOverride,
-                                     const std::vector<std::string>& libDirs, bool coverage) {
+                                     const RunnerOptions& options) {
   TestResult base;
   base.file = programOverride.empty() ? specPath : programOverride;
   const std::shared_ptr<const diag::SourceFile> spec = readSource(specPath, base);
@@ -185,14 +250,14 @@ std::vector<TestResult> runScenarios(const std::string& specPath, const std::str
   for (const Scenario& s : parsed.scenarios) {
     TestResult r = base;
     r.name = s.name;
-    check(program, s.parsed, specPath, libDirs, coverage, r);
+    check(program, s.parsed, specPath, options, r);
     results.push_back(std::move(r));
   }
   return results;
 }
 
-std::vector<TestResult> runTestPath(const std::string& path, const std::vector<std::string>& libDirs, bool coverage) {
-  if (isScenarioFile(path)) return runScenarios(path, "", libDirs, coverage);
+std::vector<TestResult> runTestPath(const std::string& path, const RunnerOptions& options) {
+  if (isScenarioFile(path)) return runScenarios(path, "", options);
   TestResult r;
   r.file = path;
   const std::shared_ptr<const diag::SourceFile> source = readSource(path, r);
@@ -207,7 +272,7 @@ std::vector<TestResult> runTestPath(const std::string& path, const std::vector<s
       return {r};
     }
   }
-  check(path, parsed, path, libDirs, coverage, r);
+  check(path, parsed, path, options, r);
   return {r};
 }
 

@@ -4,13 +4,16 @@
 // holds stops other tests: every problem ends up in the result.
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <ostream>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "diag/diagnostic.h"
 #include "diag/source_file.h"
+#include "runtime/run/run.h"
 #include "testrun/coverage.h"
 #include "vm/machine.h"
 
@@ -36,18 +39,29 @@ struct TestResult {
   const diag::SourceFile* sourceOf(const std::string& file) const;
   /// With coverage asked for and a run made: what it ran.
   std::optional<Coverage> coverage;
+  /// Golden traces written by --update.
+  std::vector<std::string> updated;
+};
+
+/// Writes a run's trace (as `robotsim run --trace` does) into a stream:
+/// the command line hands its trace writer down, so that `expect: trace`
+/// compares exactly what users see.
+using TraceMaker = std::function<std::unique_ptr<vm::StepObserver>(std::ostream&, const runtime::Run&)>;
+
+struct RunnerOptions {
+  std::vector<std::string> libDirs;  ///< --lib
+  bool coverage = false;             ///< count what each run executes
+  bool update = false;               ///< write golden traces that differ or are missing
+  TraceMaker traceMaker = {};        ///< needed for `expect: trace`
 };
 
 /// The tests in `path`: a program's own expectations (one result), or
-/// every scenario of a scenario file (`.rstest`, one result each). `libDirs`
-/// as --lib; with `coverage`, counts what each run executes.
-std::vector<TestResult> runTestPath(const std::string& path, const std::vector<std::string>& libDirs,
-                                    bool coverage = false);
+/// every scenario of a scenario file (`.rstest`, one result each).
+std::vector<TestResult> runTestPath(const std::string& path, const RunnerOptions& options);
 
 /// Every scenario of the scenario file `spec` against `program` (when not
 /// empty, instead of the program the file names): grading.
-std::vector<TestResult> runScenarios(const std::string& spec, const std::string& program,
-                                     const std::vector<std::string>& libDirs, bool coverage = false);
+std::vector<TestResult> runScenarios(const std::string& spec, const std::string& program, const RunnerOptions& options);
 
 std::string_view statusName(TestStatus status);
 

@@ -5,11 +5,13 @@
 #include <CLI/CLI.hpp>
 #include <charconv>
 #include <chrono>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "base/file_io.h"
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/trace.h"
 #include "testrun/suite.h"
 #include "vm/interpreter.h"
 
@@ -105,6 +107,7 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
   cmd->add_flag("--coverage", o.coverage, "Print each program with how often each line ran and which way jumps went");
   cmd->add_option("--lcov", o.lcov, "Write the coverage as an LCOV tracefile (genhtml makes pages of it)");
   cmd->add_option("--spec", o.spec, "Grade: run this scenario file (.rstest) against every program under PATH");
+  cmd->add_flag("--update", o.update, "Write the golden traces of 'expect: trace FILE' from the runs (not when CI is set)");
   return cmd;
 }
 
@@ -112,6 +115,10 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   std::uint32_t shard = 1, shards = 1;
   if (!o.shard.empty() && !parseShard(o.shard, shard, shards)) {
     err << fmt::format("robotsim: error: --shard takes K/N with 1 <= K <= N, e.g. 2/4, not '{}'\n", o.shard);
+    return kExitBadInput;
+  }
+  if (o.update && std::getenv("CI") != nullptr) {
+    err << "robotsim: error: --update refuses to write golden traces when CI is set: a CI run checks them\n";
     return kExitBadInput;
   }
   const auto started = std::chrono::steady_clock::now();
@@ -124,8 +131,14 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   const unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
   std::vector<testrun::TestResult> results;
   std::size_t passed = 0, failed = 0, errors = 0;
-  testrun::runTests(selection.files, o.libDirs, jobs, o.coverage || !o.lcov.empty(), o.spec,
-                    [&](const testrun::TestResult& r) {
+  testrun::RunnerOptions runner;
+  runner.libDirs = o.libDirs;
+  runner.coverage = o.coverage || !o.lcov.empty();
+  runner.update = o.update;
+  runner.traceMaker = [](std::ostream& to, const runtime::Run& run) -> std::unique_ptr<vm::StepObserver> {
+    return std::make_unique<TraceWriter>(to, TraceFormat::Text, run);
+  };
+  testrun::runTests(selection.files, runner, jobs, o.spec, [&](const testrun::TestResult& r) {
     passed += r.status == testrun::TestStatus::Passed;
     failed += r.status == testrun::TestStatus::Failed;
     errors += r.status == testrun::TestStatus::Error;
@@ -136,6 +149,7 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
                            vm::formatSeconds(r.simulated));
       out << '\n';
       for (const diag::Diagnostic& d : r.problems) out << diag::render(d, r.sourceOf(d.file));
+      for (const std::string& golden : r.updated) out << fmt::format("  updated {}\n", golden);
       out.flush();
     }
     results.push_back(r);

@@ -25,6 +25,7 @@ struct TestOptions {
   bool coverage = false;  // --coverage
   std::string lcov;       // --lcov FILE
   std::string spec;       // --spec FILE.rstest: grade every program against it
+  bool update = false;    // --update: write golden traces
 };
 
 CLI::App* addTestCommand(CLI::App& app, TestOptions& o);

@@ -436,3 +436,40 @@ TEST_CASE("robotsim test --spec grades every submission, whatever each one does"
   CHECK(text.out.find("3 passed, 5 failed, 0 errors in ") != std::string::npos);
   CHECK(text.out.find(s + "alice.rsp     2/2      4.000 s\n") != std::string::npos);
 }
+
+TEST_CASE("robotsim test: a golden trace, written by --update, refused to be written when CI is set", "[testrun][cli]") {
+  const TempDir dir;
+  const std::string program = dir.write("t.rsp", "; expect: trace t.trace\nSET N 1\nMOVE 100 0 0 0 0\nEND\n");
+  const std::string golden = dir.file("t.trace");
+  // The golden file is the trace `robotsim run --trace` prints.
+  const CliResult traced = runCli({"run", program, "--trace"});
+  REQUIRE(traced.code == 0);
+  const std::string trace = traced.out.substr(0, traced.out.find("run of "));
+  REQUIRE(!trace.empty());
+
+  const CliResult missing = runCli({"test", program});
+  CHECK(missing.code == 1);
+  CHECK(missing.out.find("error: cannot read the golden trace " + golden) != std::string::npos);
+  CHECK(missing.out.find("  hint: robotsim test --update writes it from the run\n") != std::string::npos);
+
+  ::unsetenv("CI");
+  const CliResult update = runCli({"test", program, "--update"});
+  CHECK(update.code == 0);
+  CHECK(update.out.find("  updated " + golden + "\n") != std::string::npos);
+  CHECK(rs::testing::readBytes(golden) == trace);
+  CHECK(runCli({"test", program}).code == 0);
+
+  // A changed run fails at the first line that differs.
+  dir.write("t.rsp", "; expect: trace t.trace\nSET N 2\nMOVE 100 0 0 0 0\nEND\n");
+  const CliResult changed = runCli({"test", program});
+  CHECK(changed.code == 1);
+  CHECK(changed.out.find("the trace differs from " + golden + " at its line 2: expected '") != std::string::npos);
+  CHECK(changed.out.find("N=1', got '") != std::string::npos);
+
+  ::setenv("CI", "true", 1);
+  const CliResult refused = runCli({"test", program, "--update"});
+  ::unsetenv("CI");
+  CHECK(refused.code == 2);
+  CHECK(refused.err == "robotsim: error: --update refuses to write golden traces when CI is set: a CI run checks them\n");
+  CHECK(rs::testing::readBytes(golden) == trace);  // untouched
+}
