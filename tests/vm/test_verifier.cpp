@@ -431,6 +431,25 @@ TEST_CASE("loader: names the compiler could never write", "[verifier]") {
   }
 }
 
+// The listing prints every name the image holds through base::safeText, so
+// even an image that never passed the loader cannot reach the terminal raw.
+TEST_CASE("disassembler: names are printed with control characters escaped", "[verifier]") {
+  Image im = compileOk("loop: SET N 1\nMOVEP P\nJMPVAR N < 3 loop\nEND\nPOINTS\nP 0 0 0 0 0\n");
+  im.sourceName = "\x1b]0;pwned\x07.rsp";
+  im.robotName = "robot\x1b[31m";
+  im.variables[0] = "N\x1b[2J";
+  im.labels[0].name = "loop\x07";
+  im.points[0].name = "P\r";
+  const std::string listing = rs::vm::disassemble(im);
+  INFO(listing);
+  for (char c : listing) CHECK((static_cast<unsigned char>(c) >= 0x20 || c == '\n'));
+  CHECK(listing.find("; \\x1b]0;pwned\\x07.rsp (") != std::string::npos);
+  CHECK(listing.find("; robot robot\\x1b[31m:") != std::string::npos);
+  CHECK(listing.find("SET     N\\x1b[2J 1") != std::string::npos);
+  CHECK(listing.find("loop\\x07") != std::string::npos);
+  CHECK(listing.find("P\\x0d = 0 0 0 0 0") != std::string::npos);
+}
+
 // No timing here (timed unit tests flake on a shared machine): a count that
 // did allocate would fail the ASan+UBSan run (allocation-size-too-big).
 TEST_CASE("huge counts are refused before anything is allocated", "[verifier]") {
