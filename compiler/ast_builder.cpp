@@ -33,11 +33,8 @@ struct Word {  // one operand as written
   diag::Pos pos;
 };
 
-constexpr std::size_t kMaxNameLength = 64;  // as the image format allows
-
-bool isReservedWord(std::string_view w) {
-  return vm::opByName(w).has_value() || sameName(w, "ON") || sameName(w, "OFF") || sameName(w, "POINTS");
-}
+using vm::isReservedWord;
+using vm::kMaxNameLength;  // as the image format allows
 
 class Builder {
  public:

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <fmt/format.h>
 
+#include "base/text.h"
+
 namespace rs::diag {
 
 bool hasErrors(std::span<const Diagnostic> diagnostics) {
@@ -34,14 +36,18 @@ std::vector<Diagnostic> Diagnostics::sorted() const {
 }
 
 std::string render(const Diagnostic& d, const SourceFile* source) {
-  std::string out = d.pos.line ? fmt::format("{}:{}:{}: {}: {}\n", d.file, d.pos.line, d.pos.col,
-                                             severityName(d.severity), d.message)
-                               : fmt::format("{}: {}: {}\n", d.file, severityName(d.severity), d.message);
+  // The file name may come from a file (an image records its source's
+  // name) and a message may quote one: control characters are escaped.
+  const std::string file = base::safeText(d.file);
+  const std::string message = base::safeText(d.message);
+  std::string out = d.pos.line ? fmt::format("{}:{}:{}: {}: {}\n", file, d.pos.line, d.pos.col,
+                                             severityName(d.severity), message)
+                               : fmt::format("{}: {}: {}\n", file, severityName(d.severity), message);
   if (source && d.pos.line != 0 && d.pos.line <= source->lineCount()) {
     const DisplayLine shown = displayLine(source->line(d.pos.line), d.pos.col);
     out += fmt::format("  {}\n  {}^\n", shown.text, shown.caretIndent);
   }
-  if (!d.hint.empty()) out += fmt::format("  hint: {}\n", d.hint);
+  if (!d.hint.empty()) out += fmt::format("  hint: {}\n", base::safeText(d.hint));
   return out;
 }
 

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "base/text.h"
+
 namespace rs::diag {
 
 /// A position in a source file: 1-based line, 1-based column counted in
@@ -57,9 +59,7 @@ struct Utf8Problem {
 };
 Utf8Problem findInvalidUtf8(std::string_view text);
 
-/// Length of the valid UTF-8 sequence starting at text[i], or 0 if the
-/// bytes there are not valid UTF-8 (bad lead or continuation byte,
-/// overlong form, surrogate, beyond U+10FFFF).
-std::size_t utf8SequenceLength(std::string_view text, std::size_t i);
+/// Length of the valid UTF-8 sequence starting at text[i], or 0 (base/text.h).
+using base::utf8SequenceLength;
 
 }  // namespace rs::diag

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <fmt/format.h>
 
+#include "base/text.h"
+
 namespace rs::vm {
 
 namespace {
@@ -22,20 +24,22 @@ std::string millisText(std::int32_t ms) {
   return s;
 }
 
+using base::safeText;  // every name comes from the image: printed escaped
+
 // Jump targets are written as 1-based instruction numbers, as in programs.
 std::string operands(const Image& im, const Instr& in) {
   const std::int32_t* k = im.constants.data();
   switch (info(in.op).format) {
     case Format::None: return {};
     case Format::MotorVector: return values(k + in.c, in.b);
-    case Format::Point: return im.points[in.b].name;
+    case Format::Point: return safeText(im.points[in.b].name);
     case Format::Target: return fmt::format("{}", in.d + 1);
     case Format::InputJump: return fmt::format("{} {} {}", in.a, onOff(in.b), in.d + 1);
     case Format::Output:
     case Format::Input: return fmt::format("{} {}", in.a, onOff(in.b));
     case Format::VarCompare:
-      return fmt::format("{} {} {} {}", im.variables[in.b], kCompareSymbols[in.a], in.c, in.d + 1);
-    case Format::VarValue: return fmt::format("{} {}", im.variables[in.b], in.c);
+      return fmt::format("{} {} {} {}", safeText(im.variables[in.b]), kCompareSymbols[in.a], in.c, in.d + 1);
+    case Format::VarValue: return fmt::format("{} {}", safeText(im.variables[in.b]), in.c);
     case Format::Triple: return values(k + in.c, 3);
     case Format::Millis: return millisText(in.c);
   }
@@ -61,20 +65,20 @@ std::string instructionComment(const Image& image, std::uint32_t index) {
   if (info(in.op).flags & kJumps) {
     const auto t = static_cast<std::uint32_t>(in.d);
     const std::string_view label = labelAt(image, t);
-    return fmt::format("-> {} (line {}{}{})", t + 1, image.lines[t], label.empty() ? "" : ", ", label);
+    return fmt::format("-> {} (line {}{}{})", t + 1, image.lines[t], label.empty() ? "" : ", ", safeText(label));
   }
   if (in.op == Op::MoveP) {
     const Point& p = image.points[in.b];
-    return fmt::format("{} = {}", p.name, values(p.values.data(), p.values.size()));
+    return fmt::format("{} = {}", safeText(p.name), values(p.values.data(), p.values.size()));
   }
   return {};
 }
 
 std::string disassemble(const Image& image) {
   std::string out = fmt::format("; {} ({} instructions, {} constants, {} variables, {} points)\n",
-                                image.sourceName.empty() ? "<image>" : image.sourceName, image.code.size(),
+                                image.sourceName.empty() ? "<image>" : safeText(image.sourceName), image.code.size(),
                                 image.constants.size(), image.variables.size(), image.points.size());
-  out += fmt::format("; robot {}: motors", image.robotName.empty() ? "-" : image.robotName);
+  out += fmt::format("; robot {}: motors", image.robotName.empty() ? "-" : safeText(image.robotName));
   for (const MotorSpec& m : image.motors) out += fmt::format(" {}[{}..{}]", m.letter, m.min, m.max);
   out += "\n;\n; instr  line  label     instruction                          ; refers to\n";
   std::uint32_t lastLine = 0;
@@ -82,7 +86,8 @@ std::string disassemble(const Image& image) {
     const std::uint32_t line = image.lines[i];
     const std::string lineText = (i > 0 && line == lastLine) ? "   |" : fmt::format("{:4}", line);
     lastLine = line;
-    std::string row = fmt::format("  {:04}  {}  {:<8}  {}", i + 1, lineText, labelAt(image, i), instructionText(image, i));
+    std::string row = fmt::format("  {:04}  {}  {:<8}  {}", i + 1, lineText, safeText(labelAt(image, i)),
+                                  instructionText(image, i));
     if (std::string c = instructionComment(image, i); !c.empty()) row = fmt::format("{:<62} ; {}", row, c);
     out += row;
     out += '\n';
@@ -90,11 +95,12 @@ std::string disassemble(const Image& image) {
   if (!image.points.empty()) {
     out += ";\n; points\n";
     for (const Point& p : image.points)
-      out += fmt::format(";   {:<10} {}\n", p.name, values(p.values.data(), p.values.size()));
+      out += fmt::format(";   {:<10} {}\n", safeText(p.name), values(p.values.data(), p.values.size()));
   }
   if (!image.variables.empty()) {
     out += ";\n; variables\n";
-    for (std::size_t i = 0; i < image.variables.size(); ++i) out += fmt::format(";   slot {}  {}\n", i, image.variables[i]);
+    for (std::size_t i = 0; i < image.variables.size(); ++i)
+      out += fmt::format(";   slot {}  {}\n", i, safeText(image.variables[i]));
   }
   return out;
 }

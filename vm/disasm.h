@@ -1,6 +1,9 @@
 // The disassembler: a listing of an image in the spirit of `luac -l` and
 // clox's debug.c, driven by each opcode's operand format. The execution
-// trace prints instructions with the same functions.
+// trace prints instructions with the same functions. Every name an image
+// holds (source, robot, labels, points, variables) is printed through
+// base::safeText: a forged image cannot send control characters to a
+// terminal.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +20,8 @@ std::string instructionText(const Image& image, std::uint32_t index);
 /// "P1 = 100 0 0 0 0"; empty when there is nothing to resolve.
 std::string instructionComment(const Image& image, std::uint32_t index);
 
-/// The label of an instruction, or empty.
+/// The label of an instruction, or empty; as the image holds it (raw: print
+/// it through base::safeText).
 std::string_view labelAt(const Image& image, std::uint32_t index);
 
 /// The whole listing: a header, one line per instruction, then points.

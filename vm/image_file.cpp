@@ -2,8 +2,11 @@
 
 #include <cstring>
 #include <fmt/format.h>
+#include <unordered_map>
 
+#include "base/ascii.h"
 #include "base/byte_io.h"
+#include "base/text.h"
 #include "vm/verify.h"
 
 namespace rs::vm {
@@ -13,8 +16,9 @@ namespace {
 using base::ByteReader;
 using base::ByteWriter;
 
+// An identifier of the language, as the lexer reads IDENT: [A-Za-z_][A-Za-z0-9_]*.
 bool isIdentifier(std::string_view s) {
-  if (s.empty() || s.size() > 64) return false;
+  if (s.empty() || s.size() > kMaxNameLength) return false;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const char c = s[i];
     const bool alpha = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_';
@@ -22,6 +26,32 @@ bool isIdentifier(std::string_view s) {
   }
   return true;
 }
+
+// The variable, point or label names of an image, checked one by one as
+// they are read: each must be a name the compiler could have written (an
+// identifier of at most 64 characters, not a reserved word) and none may
+// repeat another of its kind. Names ignore case, as in programs.
+class NameRules {
+ public:
+  explicit NameRules(std::string_view kind) : kind_(kind) {}
+
+  /// Fails `r` with a message naming the entry `index` (0-based) if `name` breaks a rule.
+  void check(ByteReader& r, std::size_t index, std::string_view name) {
+    if (r.failed) return;
+    if (!isIdentifier(name)) return r.fail(fmt::format("{} {} has a bad name", kind_, index + 1));
+    // From here on the name is an identifier: safe to quote.
+    if (isReservedWord(name)) return r.fail(fmt::format("{} {} is named {}, a reserved word", kind_, index + 1, name));
+    std::string key(name);
+    for (char& c : key) c = base::asciiUpper(c);
+    const auto [it, fresh] = seen_.try_emplace(std::move(key), index);
+    if (!fresh)
+      r.fail(fmt::format("{} {} has the same name as {} {} ({})", kind_, index + 1, kind_, it->second + 1, name));
+  }
+
+ private:
+  std::string_view kind_;
+  std::unordered_map<std::string, std::size_t> seen_;  // upper-case name -> first index
+};
 
 void writePayload(ByteWriter& w, const Image& im) {
   w.str(im.sourceName);
@@ -108,15 +138,16 @@ void readNames(ByteReader& r, Image& im) {
   im.constants.reserve(nk);
   for (std::size_t i = 0; i < nk && !r.failed; ++i) im.constants.push_back(r.i32());
   const std::size_t nv = r.count(2, "variable");
+  NameRules variables("variable"), points("point"), labels("label");
   for (std::size_t i = 0; i < nv && !r.failed; ++i) {
     im.variables.push_back(r.str());
-    if (!r.failed && !isIdentifier(im.variables.back())) r.fail(fmt::format("variable {} has a bad name", i + 1));
+    variables.check(r, i, im.variables.back());
   }
   const std::size_t np = r.count(2 + 4 * im.motors.size(), "point");
   for (std::size_t i = 0; i < np && !r.failed; ++i) {
     Point p;
     p.name = r.str();
-    if (!r.failed && !isIdentifier(p.name)) r.fail(fmt::format("point {} has a bad name", i + 1));
+    points.check(r, i, p.name);
     for (std::size_t m = 0; m < im.motors.size(); ++m) p.values.push_back(r.i32());
     im.points.push_back(std::move(p));
   }
@@ -125,7 +156,7 @@ void readNames(ByteReader& r, Image& im) {
     Label l;
     l.index = r.u32();
     l.name = r.str();
-    if (!r.failed && !isIdentifier(l.name)) r.fail(fmt::format("label {} has a bad name", i + 1));
+    labels.check(r, i, l.name);
     im.labels.push_back(std::move(l));
   }
   // The cell section is opaque here; runtime/workcell decodes and checks it.
@@ -208,8 +239,12 @@ LoadResult loadImage(std::string_view bytes) {
 
   ByteReader r(payload);
   Image& im = result.image;
+  // The source name is the file name the compiler was given: any bytes, so
+  // it is kept as it is and printers escape it. A robot name comes from a
+  // description, whose names never hold control characters.
   im.sourceName = r.str();
   im.robotName = r.str();
+  if (!r.failed && base::hasControlCharacter(im.robotName)) r.fail("the robot name holds a control character");
   im.callDepthLimit = r.u16();
   if (r.u16() != 0) r.fail("reserved header bytes are not zero");
   readMotors(r, im);

@@ -45,4 +45,9 @@ std::optional<Op> opByName(std::string_view name) {
   return std::nullopt;
 }
 
+bool isReservedWord(std::string_view word) {
+  return opByName(word).has_value() || base::sameName(word, "ON") || base::sameName(word, "OFF") ||
+         base::sameName(word, "POINTS");
+}
+
 }  // namespace rs::vm

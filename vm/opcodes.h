@@ -198,6 +198,14 @@ constexpr bool has(Op op, OpFlag flag) { return (info(op).flags & flag) != 0; }
 /// Finds an opcode by mnemonic, ignoring case ("moveto", "MoveTo").
 std::optional<Op> opByName(std::string_view name);
 
+/// Labels, points and variables have at most this many characters (the
+/// compiler and the image loader hold them to it).
+inline constexpr std::size_t kMaxNameLength = 64;
+
+/// True for a word no label, point or variable may be called, in any case:
+/// every mnemonic, ON, OFF and POINTS.
+bool isReservedWord(std::string_view word);
+
 /// Comparisons of JMPVAR, in operand-a order.
 enum class Compare : std::uint8_t { Less = 0, Greater = 1, Equal = 2 };
 inline constexpr std::array<std::string_view, 3> kCompareSymbols{"<", ">", "="};

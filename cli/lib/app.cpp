@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "base/near_names.h"
+#include "base/text.h"
 #include "cli/lib/help.h"
 #include "cli/lib/options.h"
 #include "cli/lib/program_commands.h"
@@ -56,10 +57,8 @@ std::optional<int> unknownCommand(CLI::App& app, int argc, const char* const* ar
     if (sub->get_name() == word) return std::nullopt;
     names.push_back(sub->get_name());
   }
-  std::string shown;  // the word as typed, control bytes escaped
-  for (const char c : word.substr(0, 64))
-    shown += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? fmt::format("\\x{:02x}", static_cast<unsigned char>(c))
-                                                               : std::string(1, c);
+  // The word as typed, control bytes escaped.
+  std::string shown = base::safeText(word.substr(0, 64));
   if (word.size() > 64) shown += "...";
   const std::string_view near = base::nearestName(word, names);
   err << fmt::format("robotsim: error: unknown command '{}'{}\n", shown,

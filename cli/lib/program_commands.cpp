@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "base/file_io.h"
+#include "base/text.h"
 #include "cli/lib/exit_codes.h"
 #include "compiler/compiler.h"
 #include "vm/disasm.h"
@@ -17,11 +18,11 @@ template <typename Dump>
 int sourceView(const std::string& file, std::ostream& out, std::ostream& err, Dump dump) {
   base::FileRead text = base::readFile(file, launch::kMaxInputBytes);
   if (!text.bytes) {
-    err << fmt::format("{}: error: cannot read file: {}\n", file, text.error);
+    err << fmt::format("{}: error: cannot read file: {}\n", base::safeText(file), text.error);
     return kExitBadInput;
   }
   if (vm::looksLikeImage(*text.bytes)) {
-    err << fmt::format("{}: error: this is a compiled image; try robotsim disasm\n", file);
+    err << fmt::format("{}: error: this is a compiled image; try robotsim disasm\n", base::safeText(file));
     return kExitBadInput;
   }
   const diag::SourceFile source(file, std::move(*text.bytes));
@@ -39,10 +40,11 @@ int compileCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostre
   if (!program.ok()) return kExitBadInput;
   std::string error;
   if (!base::writeFileAtomically(o.output, vm::writeImage(*program.image), error)) {
-    err << fmt::format("{}: error: cannot write: {}\n", o.output, error);
+    err << fmt::format("{}: error: cannot write: {}\n", base::safeText(o.output), error);
     return kExitBadInput;
   }
-  out << fmt::format("{} -> {} ({} instructions)\n", o.program.file, o.output, program.image->code.size());
+  out << fmt::format("{} -> {} ({} instructions)\n", base::safeText(o.program.file), base::safeText(o.output),
+                     program.image->code.size());
   return kExitOk;
 }
 

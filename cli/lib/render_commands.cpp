@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "base/file_io.h"
+#include "base/text.h"
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/options.h"
 #include "cli/lib/report.h"
@@ -95,7 +96,7 @@ bool seconds(const std::string& text, std::string_view option, vm::Micros& micro
 bool write(const std::string& path, std::vector<std::uint8_t> bytes, std::ostream& err) {
   std::string error;
   if (base::writeFileAtomically(path, bytes, error)) return true;
-  err << fmt::format("{}: error: cannot write: {}\n", path, error);
+  err << fmt::format("{}: error: cannot write: {}\n", base::safeText(path), error);
   return false;
 }
 
@@ -163,7 +164,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   if (!cameraFrom(o, camera, err)) return kExitBadInput;
   std::optional<render::ImageFormat> format;
   if (!o.output.empty() && !(format = render::formatFromPath(o.output))) {
-    err << fmt::format("robotsim: error: -o {}: the file name must end in .png or .svg\n", o.output);
+    err << fmt::format("robotsim: error: -o {}: the file name must end in .png or .svg\n", base::safeText(o.output));
     return kExitBadInput;
   }
   if (o.output.empty() && o.dump.empty()) {
@@ -222,7 +223,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   if (format) {
     render::Encoded encoded = render::encodePicture(picture, *format);
     if (encoded.bytes.empty()) {
-      err << fmt::format("{}: error: {}\n", o.output, encoded.error);
+      err << fmt::format("{}: error: {}\n", base::safeText(o.output), encoded.error);
       return kExitBadInput;
     }
     if (!write(o.output, std::move(encoded.bytes), err)) return kExitBadInput;
@@ -234,7 +235,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
 
 int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   if (!endsWithHtml(o.output)) {
-    err << fmt::format("robotsim: error: -o {}: the page's file name must end in .html\n", o.output);
+    err << fmt::format("robotsim: error: -o {}: the page's file name must end in .html\n", base::safeText(o.output));
     return kExitBadInput;
   }
   render::Camera camera;
@@ -258,7 +259,8 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   }
   const std::string html = render::animationHtml(input);
   if (!write(o.output, std::vector<std::uint8_t>(html.begin(), html.end()), err)) return kExitBadInput;
-  out << fmt::format("{} -> {} ({} instructions executed, {} s simulated)\n", o.program.file, o.output,
+  out << fmt::format("{} -> {} ({} instructions executed, {} s simulated)\n", base::safeText(o.program.file),
+                     base::safeText(o.output),
                      recording.steps.size(), vm::formatSeconds(recording.end));
   return outcome.ok() ? kExitOk : kExitRunFailed;
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "base/text.h"
 #include "cli/lib/trace.h"
 
 namespace rs::cli {
@@ -72,7 +73,8 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   const vm::Machine& m = r.run->machine();
   const vm::RunOutcome o = *r.run->outcome();
   const std::string where = o.ok() ? "" : fmt::format(" at line {}", im.lines[o.index]);
-  out << fmt::format("run of {} on {}: {}{}\n", im.sourceName, im.robotName, reasonText(o.reason), where);
+  out << fmt::format("run of {} on {}: {}{}\n", base::safeText(im.sourceName), base::safeText(im.robotName),
+                     reasonText(o.reason), where);
   out << fmt::format("  {}  {} s\n", r.realTime ? "elapsed time   " : "simulated time", vm::formatSeconds(m.now()));
   out << fmt::format("  instructions    {} executed\n", o.steps);
   std::string motors;
@@ -83,14 +85,14 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   const std::vector<runtime::ObjectView> objects = r.run->objects();
   for (std::size_t o = 0; o < objects.size(); ++o) {
     const runtime::ObjectView& e = objects[o];
-    out << fmt::format("  {:<15} {} at {}{}\n", fmt::format("object {}", o + 1), e.name,
+    out << fmt::format("  {:<15} {} at {}{}\n", fmt::format("object {}", o + 1), base::safeText(e.name),
                        pointText({e.at.x(), e.at.y(), e.at.z()}), e.held ? ", held" : e.moved ? ", moved" : "");
   }
   out << fmt::format("  outputs         {}  (ON: {})\n", lampText(m.outputs()), lampList(m.outputs()));
   out << fmt::format("  inputs          {}  (ON: {})\n", lampText(m.inputs()), lampList(m.inputs()));
   std::string vars;
   for (std::size_t i = 0; i < im.variables.size(); ++i)
-    vars += fmt::format("{}{}={}", i ? "  " : "", im.variables[i], r.run->interpreter().variables()[i]);
+    vars += fmt::format("{}{}={}", i ? "  " : "", base::safeText(im.variables[i]), r.run->interpreter().variables()[i]);
   out << fmt::format("  variables       {}\n", vars.empty() ? "none" : vars);
 }
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "base/text.h"
 #include "cli/lib/app.h"
 #include "compiler/library.h"
 #include "model/kinematics/chain_data.h"
@@ -143,7 +144,8 @@ int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     return kExitOk;
   }
-  out << fmt::format("KINEMATIC PARAMETERS: {} (standard D-H; degrees and length units)\n", robot->name);
+  out << fmt::format("KINEMATIC PARAMETERS: {} (standard D-H; degrees and length units)\n",
+                     base::safeText(robot->name));
   out << fmt::format("{:<6}{:<11}{:>10}{:>10}{:>10}{:>10}{:>10}\n", "AXIS", "TYPE", "theta", "alpha", "a", "d", "home");
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const kinematics::DhRow& r = rows[i];
@@ -162,7 +164,8 @@ int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
   const kinematics::ChainModel& chain = *robot->chain;
   const int n = chain.size();
   if (q.from < 0 || q.from > n || q.to < 0 || q.to > n) {
-    err << fmt::format("robotsim: error: frames are numbered 0..{} for {}, got {} and {}\n", n, robot->name, q.from, q.to);
+    err << fmt::format("robotsim: error: frames are numbered 0..{} for {}, got {} and {}\n", n,
+                       base::safeText(robot->name), q.from, q.to);
     return kExitBadInput;
   }
   std::vector<double> values;
@@ -179,7 +182,7 @@ int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     return kExitOk;
   }
   out << fmt::format("TRANSFORMATION MATRIX T_{}^{} of {} (coordinates in frame {} to frame {}):\n", q.to, q.from,
-                     robot->name, q.to, q.from);
+                     base::safeText(robot->name), q.to, q.from);
   out << matrixText(m);
   std::string joints;
   for (int i = 1; i <= n; ++i)
@@ -226,8 +229,8 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     return kExitOk;
   }
-  out << fmt::format("{}: tool centre point at ({}, {}, {})\n", robot->name, formatNumber(p.x()), formatNumber(p.y()),
-                     formatNumber(p.z()));
+  out << fmt::format("{}: tool centre point at ({}, {}, {})\n", base::safeText(robot->name), formatNumber(p.x()),
+                     formatNumber(p.y()), formatNumber(p.z()));
   out << fmt::format("  normal n   ({}, {}, {})\n", formatNumber(r(0, 0)), formatNumber(r(1, 0)), formatNumber(r(2, 0)));
   out << fmt::format("  approach a ({}, {}, {})\n", formatNumber(r(0, 2)), formatNumber(r(1, 2)), formatNumber(r(2, 2)));
   out << fmt::format("  roll {}  pitch {}  yaw {} (degrees, R = Rz(yaw) Ry(pitch) Rx(roll))\n", formatNumber(angle(roll)),

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "base/text.h"
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/report.h"
 #include "cli/lib/trace.h"
@@ -68,8 +69,8 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   }
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);
-  else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", image.sourceName, outcome.steps,
-                          vm::formatSeconds(run->clock()));
+  else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", base::safeText(image.sourceName),
+                          outcome.steps, vm::formatSeconds(run->clock()));
   return outcome.ok() ? kExitOk : kExitRunFailed;
 }
 

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "base/file_io.h"
+#include "base/text.h"
 #include "cli/lib/app.h"
 #include "compiler/library.h"
 #include "launch/program.h"
@@ -108,7 +109,8 @@ int portsCommand(const PortsOptions& o, std::ostream& out, std::ostream&) {
   if (o.json) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& p : ports) list.push_back({{"path", p.path}, {"note", p.note}, {"likely", p.likely}});
-    out << nlohmann::json{{"ports", list}, {"hidden", hidden}}.dump() << '\n';
+    const nlohmann::json doc{{"ports", list}, {"hidden", hidden}};
+    out << doc.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     return kExitOk;
   }
   if (ports.empty()) {
@@ -119,10 +121,13 @@ int portsCommand(const PortsOptions& o, std::ostream& out, std::ostream&) {
         o.root, hidden ? fmt::format("; {} ttyS nodes without a UART hidden, --all shows them", hidden) : "");
     return kExitOk;
   }
+  // Device names come from the file system (by-id names from the USB
+  // device's own strings): printed escaped.
   std::size_t width = 0;
-  for (const auto& p : ports) width = std::max(width, p.path.size());
+  for (const auto& p : ports) width = std::max(width, base::safeText(p.path).size());
   out << "Serial devices (use one with robotsim run --device):\n";
-  for (const auto& p : ports) out << fmt::format("  {:<{}}  {}\n", p.path, width, p.note);
+  for (const auto& p : ports)
+    out << fmt::format("  {:<{}}  {}\n", base::safeText(p.path), width, base::safeText(p.note));
   if (hidden) out << fmt::format("({} /dev/ttyS* nodes without a UART not shown; --all lists them)\n", hidden);
   return kExitOk;
 }

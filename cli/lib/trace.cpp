@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "base/text.h"
 #include "vm/disasm.h"
 
 namespace rs::cli {
@@ -40,7 +41,8 @@ std::string lampText(std::uint8_t bits) {
 }
 
 std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell& cell) {
-  return fmt::format("{} {} (object {})", event.held ? "takes" : "lets go of", cell.objects[event.object].shape.name,
+  return fmt::format("{} {} (object {})", event.held ? "takes" : "lets go of",
+                     base::safeText(cell.objects[event.object].shape.name),
                      event.object + 1);
 }
 
@@ -68,8 +70,9 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
   const auto pos = vm.machine().positions();
   for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? " " : "", im.motors[i].letter, pos[i]);
   const vm::Instr& in = im.code[index];
-  std::string changed =
-      writesVariable(in) ? fmt::format("{}={}", im.variables[in.b], vm.variables()[in.b]) : std::string();
+  std::string changed = writesVariable(in)
+                            ? fmt::format("{}={}", base::safeText(im.variables[in.b]), vm.variables()[in.b])
+                            : std::string();
   if (const runtime::GraspEvent* g = run_.graspOfLastStep())
     changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.world()->cell());
   const std::optional<std::array<double, 3>> tool = run_.world() ? run_.world()->tcp(pos) : std::nullopt;

@@ -1,6 +1,7 @@
 #include "model/workcell/cell_file.h"
 
 #include "base/byte_io.h"
+#include "base/text.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -49,7 +50,7 @@ class In : public base::ByteReader {
   }
   Shape shape() {
     Shape s;
-    s.name = str();
+    s.name = name();
     const std::size_t n = count(49, "segment");
     s.segments.reserve(n);
     for (std::size_t i = 0; i < n && !failed; ++i) {
@@ -60,6 +61,12 @@ class In : public base::ByteReader {
       seg.color = static_cast<Color>(color);
       s.segments.push_back(seg);
     }
+    return s;
+  }
+  // Names come from descriptions, which never hold control characters.
+  std::string name() {
+    std::string s = str();
+    if (!failed && base::hasControlCharacter(s)) fail("a name that holds a control character");
     return s;
   }
   char letter() {
@@ -93,7 +100,7 @@ void writeRobot(Out& o, const Robot& r) {
 
 std::optional<Robot> readRobot(In& in) {
   Robot r;
-  r.name = in.str();
+  r.name = in.name();
   const std::size_t nl = in.count(6, "link");
   for (std::size_t i = 0; i < nl && !in.failed; ++i) r.links.push_back(in.shape());
   const std::size_t nf = in.count(96, "frame");
@@ -113,7 +120,7 @@ std::optional<Robot> readRobot(In& in) {
   r.hasGripper = in.u8() != 0;
   if (r.hasGripper && !in.failed) {
     Gripper& g = r.gripper;
-    g.name = in.str(), g.base = in.shape(), g.finger2 = in.shape(), g.finger3 = in.shape();
+    g.name = in.name(), g.base = in.shape(), g.finger2 = in.shape(), g.finger3 = in.shape();
     g.letter = in.letter(), g.min = in.i32(), g.max = in.i32(), g.speed = in.i32();
     g.model.precision = in.number();
     g.model.r2.point = in.vec(), g.model.r2.direction = in.vec();
@@ -158,7 +165,7 @@ CellDecode decodeCell(std::span<const std::uint8_t> bytes) {
   if (const std::uint16_t v = in.u16(); v != kCellVersion)
     return {std::nullopt, fmt::format("cell section: version {} is not supported", v)};
   Workcell cell;
-  cell.name = in.str();
+  cell.name = in.name();
   const std::size_t nr = in.count(16, "robot");
   for (std::size_t i = 0; i < nr && !in.failed; ++i) {
     std::optional<Robot> r = readRobot(in);

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/text.h"
 #include "runtime/render/palette.h"
 
 namespace rs::render {
@@ -39,7 +40,7 @@ std::string partName(const Part& part) {
 }
 
 std::string robotLegend(const workcell::Robot& robot, std::span<const std::int32_t> encoders) {
-  std::string text = robot.name + " ";
+  std::string text = base::safeText(robot.name) + " ";
   for (std::size_t i = 0; i < encoders.size(); ++i) {
     const char letter = i < robot.joints.size() ? robot.joints[i].letter : robot.gripper.letter;
     text += fmt::format(" {}={}", letter, encoders[i]);
@@ -61,7 +62,7 @@ Picture makePicture(const CellPoser& poser, const Camera& camera, const Fit& fit
   const workcell::Workcell& cell = poser.cell();
   // A robot alone is its own workcell: its name needs saying only once.
   const bool robotAlone = cell.robots.size() == 1 && cell.robots.front().robot.name == caption.title;
-  std::string title = robotAlone ? "" : caption.title;
+  std::string title = robotAlone ? "" : base::safeText(caption.title);
   if (caption.seconds) title += fmt::format("{}t = {:.3f} s", title.empty() ? "" : "   ", *caption.seconds);
   if (!title.empty()) picture.legend.push_back(title);
   for (std::size_t r = 0; r < cell.robots.size(); ++r) {
@@ -74,18 +75,19 @@ Picture makePicture(const CellPoser& poser, const Camera& camera, const Fit& fit
 
 void dumpText(std::ostream& out, const Picture& picture, const workcell::Workcell& cell) {
   const Camera& c = picture.camera;
-  out << fmt::format("# robotsim lines: cell {} lines {} size {}x{}\n", cell.name, picture.lines.size(), picture.width,
-                     picture.height);
+  out << fmt::format("# robotsim lines: cell {} lines {} size {}x{}\n", base::safeText(cell.name), picture.lines.size(),
+                     picture.width, picture.height);
   out << fmt::format("# camera: view {} {} {} window {} {} {} zoom {} axes {} fit {} {} {} radius {}\n", c.view.x(),
                      c.view.y(), c.view.z(), c.window.x(), c.window.y(), c.window.z(), c.zoom, c.axes ? "on" : "off",
                      picture.fit.center.x(), picture.fit.center.y(), picture.fit.center.z(), picture.fit.radius);
   for (const Line2& l : picture.lines)
     out << fmt::format("{} {} {} {} {} {} {} {} {}\n", l.part.kind == PartKind::Object ? "object" : "robot",
-                       l.part.owner, ownerName(l.part, cell), partName(l.part), colorName(l.color), number(l.a.x()),
-                       number(l.a.y()), number(l.b.x()), number(l.b.y()));
+                       l.part.owner, base::safeText(ownerName(l.part, cell)), partName(l.part), colorName(l.color),
+                       number(l.a.x()), number(l.a.y()), number(l.b.x()), number(l.b.y()));
   for (const ToolMark& t : picture.tools)
-    out << fmt::format("tool {} {} {} {}\n", t.robot, cell.robots[static_cast<std::size_t>(t.robot)].robot.name,
-                       number(t.at.x()), number(t.at.y()));
+    out << fmt::format("tool {} {} {} {}\n", t.robot,
+                       base::safeText(cell.robots[static_cast<std::size_t>(t.robot)].robot.name), number(t.at.x()),
+                       number(t.at.y()));
 }
 
 void dumpJson(std::ostream& out, const Picture& picture, const workcell::Workcell& cell) {

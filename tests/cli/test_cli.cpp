@@ -13,8 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.h"
+#include "cli/lib/report.h"
+#include "cli/lib/trace.h"
 #include "compiler/compiler.h"
+#include "compiler/library.h"
 #include "diag/source_file.h"
+#include "launch/program.h"
+#include "runtime/run/run.h"
 #include "stdlib/default_robot.h"
 #include "vm/image_file.h"
 
@@ -606,4 +611,121 @@ TEST_CASE("cli: a byte-order mark is ignored, a lone carriage return refused whe
                     0) == 0);
   CHECK(m.err.find("  hint: save the file with Unix (LF) or Windows (CR LF) line ends\n") != std::string::npos);
   CHECK(runCli({"check", dir.write("dos.rsp", "SET N 1\r\nEND\r\n")}).code == 0);
+}
+
+// A forged image (any bytes, a valid checksum) must not send control
+// characters to the terminal: its source name is kept and printed escaped,
+// names the compiler could never write are refused with a message that does
+// not quote them.
+TEST_CASE("cli: names from a forged image never reach the terminal raw", "[cli]") {
+  TempDir dir;
+  const std::string hostile = "\x1b]0;pwned\x07";
+  const std::string shown = "\\x1b]0;pwned\\x07";
+  const auto forge = [&](const std::string& file, const std::string& sourceName, const std::string& text,
+                         const auto& change) {
+    const rs::compiler::CompileResult compiled = rs::compiler::compile(
+        rs::diag::SourceFile(sourceName, text),
+        {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth});
+    REQUIRE(compiled.ok());
+    rs::vm::Image im = *compiled.image;
+    change(im);
+    const std::vector<std::uint8_t> bytes = rs::vm::writeImage(im);
+    return dir.write(file, std::string(bytes.begin(), bytes.end()));
+  };
+  const auto unchanged = [](rs::vm::Image&) {};
+  const std::vector<std::vector<std::string>> commands = {
+      {"run"}, {"run", "--trace"}, {"run", "--trace=json"}, {"run", "--format=json"}, {"check"}, {"disasm"}};
+  const auto each = [&](const std::string& image, const auto& check) {
+    for (std::vector<std::string> args : commands) {
+      args.insert(args.begin() + 1, image);
+      INFO(args[0] << " " << (args.size() > 2 ? args[2] : ""));
+      const CliResult r = runCli(args);
+      INFO(r.out << r.err);
+      CHECK(cleanText(r.out));
+      CHECK(cleanText(r.err));
+      check(args, r);
+    }
+  };
+  SECTION("an ESC and a BEL in the source name") {
+    const std::string good = forge("good.rsb", hostile + ".rsp", kGood, unchanged);
+    each(good, [&](const std::vector<std::string>& args, const CliResult& r) {
+      CHECK(r.code == 0);
+      if (args.size() == 2 && args[0] == "run")
+        CHECK(r.out.rfind("run of " + shown + ".rsp on rhino-scara: finished\n", 0) == 0);
+      if (args[0] == "check") CHECK(r.out.rfind(shown + ".rsp: ok (12 instructions executed", 0) == 0);
+      if (args[0] == "disasm") CHECK(r.out.rfind("; " + shown + ".rsp (6 instructions", 0) == 0);
+    });
+    // A runtime error is reported against the source name.
+    const std::string failing = forge("failing.rsb", hostile + ".rsp", kRuntimeError, unchanged);
+    each(failing, [&](const std::vector<std::string>& args, const CliResult& r) {
+      if (args[0] == "disasm") return;
+      CHECK(r.code == 1);
+      if (args.size() == 2 && args[0] == "run") CHECK(r.err.rfind(shown + ".rsp:3:3: error: runtime error: ", 0) == 0);
+      if (args.size() == 3 && args[2] == "--format=json") {
+        const json j = parseJson(r.out);
+        REQUIRE(j["diagnostics"].size() == 1);
+        CHECK(j["diagnostics"][0]["file"] == hostile + ".rsp");  // JSON escapes it itself
+      }
+    });
+  }
+  SECTION("an ESC or a BEL in a variable, label or point name is refused, not quoted") {
+    const std::string program = "top: SET N 1\nMOVEP P\nEND\nPOINTS\nP 0 0 0 0 0\n";
+    const std::string variable =
+        forge("variable.rsb", "v.rsp", program, [&](rs::vm::Image& im) { im.variables[0] = "N" + hostile; });
+    const std::string label =
+        forge("label.rsb", "v.rsp", program, [&](rs::vm::Image& im) { im.labels[0].name = hostile; });
+    const std::string point =
+        forge("point.rsb", "v.rsp", program, [&](rs::vm::Image& im) { im.points[0].name = "P\x1b[2J"; });
+    const std::string robot =
+        forge("robot.rsb", "v.rsp", program, [&](rs::vm::Image& im) { im.robotName = "rhino" + hostile; });
+    const std::pair<std::string, std::string> cases[] = {
+        {variable, "malformed image: variable 1 has a bad name"},
+        {label, "malformed image: label 1 has a bad name"},
+        {point, "malformed image: point 1 has a bad name"},
+        {robot, "malformed image: the robot name holds a control character"}};
+    for (const auto& [image, message] : cases)
+      each(image, [&](const std::vector<std::string>& args, const CliResult& r) {
+        CHECK(r.code == 2);
+        if (args.size() == 2) CHECK(r.err == image + ": error: " + message + "\n");
+      });
+  }
+}
+
+// The trace and the summary print names through base::safeText even for an
+// image and a workcell that never passed the loader (built in memory here).
+TEST_CASE("cli: the trace and the summary escape every name", "[cli]") {
+  rs::compiler::Library library(rs::compiler::librarySearchPath({}));
+  std::optional<rs::workcell::Workcell> cell = library.workcell("scara-pick");
+  REQUIRE(cell);
+  REQUIRE(!cell->objects.empty());
+  cell->objects[0].shape.name = "block\x1b[31m";
+  const rs::compiler::CompileResult compiled =
+      rs::compiler::compile(rs::diag::SourceFile("p.rsp", "SET N 1\nEND\n"), rs::launch::cellTarget(*cell));
+  REQUIRE(compiled.ok());
+  auto image = std::make_shared<rs::vm::Image>(*compiled.image);
+  image->sourceName = "\x1b]0;pwned\x07.rsp";
+  image->robotName = "robot\x07";
+  image->variables[0] = "N\x1b[2J";
+  rs::runtime::RunSpec spec;
+  spec.image = image;
+  spec.cell = std::make_shared<const rs::workcell::Workcell>(*cell);
+  rs::runtime::Run run(std::move(spec));
+  std::ostringstream text, jsonTrace, summary;
+  rs::cli::TraceWriter textWriter(text, rs::cli::TraceFormat::Text, run);
+  rs::cli::TraceWriter jsonWriter(jsonTrace, rs::cli::TraceFormat::Json, run);
+  run.observe(textWriter);
+  run.observe(jsonWriter);
+  REQUIRE(run.runToEnd().ok());
+  rs::cli::RunReport report;
+  report.run = &run;
+  rs::cli::printTextSummary(summary, report);
+  INFO(text.str() << jsonTrace.str() << summary.str());
+  CHECK(cleanText(text.str()));
+  CHECK(cleanText(jsonTrace.str()));
+  CHECK(cleanText(summary.str()));
+  CHECK(text.str().find("SET     N\\x1b[2J 1") != std::string::npos);
+  CHECK(text.str().find("N\\x1b[2J=1") != std::string::npos);
+  CHECK(summary.str().rfind("run of \\x1b]0;pwned\\x07.rsp on robot\\x07: finished\n", 0) == 0);
+  CHECK(summary.str().find(" block\\x1b[31m at ") != std::string::npos);
+  CHECK(summary.str().find("variables       N\\x1b[2J=1\n") != std::string::npos);
 }

@@ -420,6 +420,76 @@ TEST_CASE("cell wiring: a corrupt cell section is refused, never a crash", "[mod
   CHECK(acceptedMismatch.empty());
 }
 
+// disasm and check load an image exactly as run does: the cell section is
+// decoded and checked against the motor table before anything is listed.
+TEST_CASE("cell wiring: disasm and check refuse a corrupt cell section as run does", "[models]") {
+  TempDir dir;
+  const std::string original = compiledImage(dir);
+  const rs::vm::LoadResult loaded = rs::vm::loadImage(original);
+  REQUIRE(loaded.error.empty());
+  REQUIRE(runCli({"disasm", dir.file("p.rsb")}).code == 0);
+  const std::size_t start = original.size() - loaded.image.cell.size();  // the cell is the last section
+  SECTION("a bad magic number") {
+    std::string bytes = original;
+    bytes[start] = static_cast<char>(bytes[start] ^ 0xFF);
+    fixCrc(bytes);
+    const std::string path = dir.write("bad.rsb", bytes);
+    for (const char* cmd : {"run", "check", "disasm"}) {
+      INFO(cmd);
+      const CliResult r = runCli({cmd, path});
+      CHECK(r.code == 2);
+      CHECK(r.out.empty());
+      CHECK(r.err == path + ": error: image rejected: cell section: bad magic number\n");
+    }
+  }
+  SECTION("a cell whose robot does not match the motor table") {
+    rs::workcell::CellDecode decoded = rs::workcell::decodeCell(loaded.image.cell);
+    REQUIRE(decoded.cell);
+    decoded.cell->robots.front().robot.joints.front().max = 10;
+    rs::vm::Image im = loaded.image;
+    im.cell = rs::workcell::encodeCell(*decoded.cell);
+    const auto bytes = rs::vm::writeImage(im);
+    const std::string path = dir.write("mismatch.rsb", std::string(bytes.begin(), bytes.end()));
+    for (const char* cmd : {"run", "check", "disasm"}) {
+      INFO(cmd);
+      const CliResult r = runCli({cmd, path});
+      CHECK(r.code == 2);
+      CHECK(r.out.empty());
+      CHECK(r.err == path + ": error: image rejected: its cell's robot does not match its motor table\n");
+    }
+  }
+}
+
+// Names in the cell section come from descriptions, which never hold
+// control characters: a forged one is refused, and the message does not
+// quote it.
+TEST_CASE("cell wiring: a cell section name with a control character is refused", "[models]") {
+  TempDir dir;
+  const rs::vm::LoadResult loaded = rs::vm::loadImage(compiledImage(dir));
+  REQUIRE(loaded.error.empty());
+  const auto forged = [&](auto change) {
+    rs::workcell::CellDecode decoded = rs::workcell::decodeCell(loaded.image.cell);
+    REQUIRE(decoded.cell);
+    change(*decoded.cell);
+    rs::vm::Image im = loaded.image;
+    im.cell = rs::workcell::encodeCell(*decoded.cell);
+    const auto bytes = rs::vm::writeImage(im);
+    return dir.write("forged.rsb", std::string(bytes.begin(), bytes.end()));
+  };
+  const std::string names[] = {
+      forged([](rs::workcell::Workcell& c) { c.name = "cell\x1b]0;pwned\x07"; }),
+      forged([](rs::workcell::Workcell& c) { c.robots.front().robot.name = "planar\x1b[2J"; }),
+      forged([](rs::workcell::Workcell& c) { c.robots.front().robot.links.front().name = "base\x07"; }),
+  };
+  for (const std::string& path : names)
+    for (const char* cmd : {"run", "disasm"}) {
+      INFO(cmd);
+      const CliResult r = runCli({cmd, path});
+      CHECK(r.code == 2);
+      CHECK(r.err == path + ": error: image rejected: cell section: a name that holds a control character\n");
+    }
+}
+
 TEST_CASE("cell wiring: an image whose cell's robot disagrees with its motor table is refused", "[models]") {
   TempDir dir;
   const std::string original = compiledImage(dir);

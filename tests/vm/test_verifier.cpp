@@ -367,6 +367,89 @@ TEST_CASE("decoder errors have exact messages", "[verifier]") {
   }
 }
 
+// Names the compiler could never have written: each is refused with the
+// entry it concerns (1-based), and a refused name is quoted only once it is
+// known to be an identifier.
+TEST_CASE("loader: names the compiler could never write", "[verifier]") {
+  const std::string program =
+      "a: SET N 1\n"
+      "b: SET M 2\n"
+      "   MOVEP P\n"
+      "   MOVEP Q\n"
+      "   END\n"
+      "POINTS\n"
+      "P 0 0 0 0 0\n"
+      "Q 0 0 0 0 0\n";
+  const Image im = compileOk(program);
+  REQUIRE(im.variables == std::vector<std::string>{"N", "M"});
+  REQUIRE(im.labels.size() == 2);
+  REQUIRE(loadError(im) == "");
+  const auto refused = [&](auto change, const std::string& message) {
+    Image bad = im;
+    change(bad);
+    INFO(message);
+    CHECK(loadError(bad) == "malformed image: " + message);
+  };
+  SECTION("control characters and other non-identifiers") {
+    refused([](Image& b) { b.variables[1] = "N\x1b]0;pwned\x07"; }, "variable 2 has a bad name");
+    refused([](Image& b) { b.labels[0].name = "\x1b[2J"; }, "label 1 has a bad name");
+    refused([](Image& b) { b.points[1].name = "Q\n"; }, "point 2 has a bad name");
+    refused([](Image& b) { b.variables[0] = "caf\xC3\xA9"; }, "variable 1 has a bad name");
+    refused([](Image& b) { b.variables[0] = "A-B"; }, "variable 1 has a bad name");
+    refused([](Image& b) { b.labels[1].name = std::string(65, 'x'); }, "label 2 has a bad name");
+    Image longest = im;
+    longest.labels[1].name = std::string(64, 'x');
+    CHECK(loadError(longest) == "");
+  }
+  SECTION("reserved words, in any case") {
+    refused([](Image& b) { b.variables[0] = "MOVE"; }, "variable 1 is named MOVE, a reserved word");
+    refused([](Image& b) { b.labels[1].name = "points"; }, "label 2 is named points, a reserved word");
+    refused([](Image& b) { b.points[0].name = "On"; }, "point 1 is named On, a reserved word");
+    refused([](Image& b) { b.points[0].name = "OFF"; }, "point 1 is named OFF, a reserved word");
+  }
+  SECTION("duplicates, ignoring case as programs do") {
+    refused([](Image& b) { b.variables[1] = "N"; }, "variable 2 has the same name as variable 1 (N)");
+    refused([](Image& b) { b.variables[1] = "n"; }, "variable 2 has the same name as variable 1 (n)");
+    refused([](Image& b) { b.labels[1].name = "A"; }, "label 2 has the same name as label 1 (A)");
+    refused([](Image& b) { b.points[1].name = "P"; }, "point 2 has the same name as point 1 (P)");
+    // One name per kind: a label, a point and a variable may share a name.
+    Image shared = im;
+    shared.labels[0].name = "N";
+    shared.points[0].name = "N";
+    CHECK(loadError(shared) == "");
+  }
+  SECTION("the robot name") {
+    refused([](Image& b) { b.robotName = "rhino\x1b]0;pwned\x07"; }, "the robot name holds a control character");
+    refused([](Image& b) { b.robotName = "rhino\tscara"; }, "the robot name holds a control character");
+  }
+  SECTION("the source name may be any bytes: it is kept and escaped when printed") {
+    Image odd = im;
+    odd.sourceName = "\x1b]0;pwned\x07.rsp";
+    const rs::vm::LoadResult r = rs::vm::loadImage(view(rs::vm::writeImage(odd)));
+    REQUIRE(r.error == "");
+    CHECK(r.image.sourceName == odd.sourceName);
+  }
+}
+
+// The listing prints every name the image holds through base::safeText, so
+// even an image that never passed the loader cannot reach the terminal raw.
+TEST_CASE("disassembler: names are printed with control characters escaped", "[verifier]") {
+  Image im = compileOk("loop: SET N 1\nMOVEP P\nJMPVAR N < 3 loop\nEND\nPOINTS\nP 0 0 0 0 0\n");
+  im.sourceName = "\x1b]0;pwned\x07.rsp";
+  im.robotName = "robot\x1b[31m";
+  im.variables[0] = "N\x1b[2J";
+  im.labels[0].name = "loop\x07";
+  im.points[0].name = "P\r";
+  const std::string listing = rs::vm::disassemble(im);
+  INFO(listing);
+  for (char c : listing) CHECK((static_cast<unsigned char>(c) >= 0x20 || c == '\n'));
+  CHECK(listing.find("; \\x1b]0;pwned\\x07.rsp (") != std::string::npos);
+  CHECK(listing.find("; robot robot\\x1b[31m:") != std::string::npos);
+  CHECK(listing.find("SET     N\\x1b[2J 1") != std::string::npos);
+  CHECK(listing.find("loop\\x07") != std::string::npos);
+  CHECK(listing.find("P\\x0d = 0 0 0 0 0") != std::string::npos);
+}
+
 // No timing here (timed unit tests flake on a shared machine): a count that
 // did allocate would fail the ASan+UBSan run (allocation-size-too-big).
 TEST_CASE("huge counts are refused before anything is allocated", "[verifier]") {
