@@ -297,8 +297,8 @@ class Checker {
       if (distance(at, e.point) <= e.tolerance) return;
       where += (where.empty() ? "" : ", ") + point(at);
     }
-    fail(e, fmt::format("expected {} at {} within {} at the end; {} at {}", e.name, point(e.point), e.tolerance,
-                        found.size() == 1 ? "it is" : "they are", where));
+    fail(e, fmt::format("expected {} at {} within {} at the end; {} at {} (the run ended {})", e.name, point(e.point),
+                        e.tolerance, found.size() == 1 ? "it is" : "they are", where, ending()));
   }
 
  private:

@@ -42,14 +42,16 @@ nlohmann::json diagnosticJson(const diag::Diagnostic& d) {
 }
 
 // One row per program: its scenarios passed, their simulated time, and its
-// first problem; as aligned text or as CSV (RFC 4180 quoting).
-std::string gradeTable(const std::vector<testrun::TestResult>& results, bool csv) {
-  struct Row {
-    std::string file;
-    std::size_t passed = 0, total = 0;
-    vm::Micros time = 0;
-    std::string firstProblem = {};
-  };
+// first problem.
+struct GradeRow {
+  std::string file;
+  std::size_t passed = 0, total = 0;
+  vm::Micros time = 0;
+  std::string firstProblem = {};
+};
+
+std::vector<GradeRow> gradeRows(const std::vector<testrun::TestResult>& results) {
+  using Row = GradeRow;
   std::vector<Row> rows;
   for (const testrun::TestResult& r : results) {
     if (rows.empty() || rows.back().file != r.file) rows.push_back({r.file});
@@ -64,6 +66,13 @@ std::string gradeTable(const std::vector<testrun::TestResult>& results, bool csv
                                      : fmt::format("{}: {}", d.file, d.message));
     }
   }
+  return rows;
+}
+
+// The rows as aligned text or as CSV (RFC 4180 quoting).
+std::string gradeTable(const std::vector<testrun::TestResult>& results, bool csv) {
+  const std::vector<GradeRow> rows = gradeRows(results);
+  using Row = GradeRow;
   const auto quote = [](const std::string& s) {
     std::string q = "\"";
     for (const char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -169,8 +178,17 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
                        {"steps", r.steps},
                        {"problems", problems}});
     }
-    const nlohmann::json summary = {
-        {"passed", passed}, {"failed", failed}, {"errors", errors}, {"tests", tests}};
+    nlohmann::json summary = {{"passed", passed}, {"failed", failed}, {"errors", errors}, {"tests", tests}};
+    if (!o.spec.empty()) {  // grading: the table too
+      nlohmann::json programs = nlohmann::json::array();
+      for (const GradeRow& row : gradeRows(results))
+        programs.push_back({{"file", row.file},
+                            {"passed", row.passed},
+                            {"scenarios", row.total},
+                            {"time", static_cast<double>(row.time) / 1e6},
+                            {"first_problem", row.firstProblem}});
+      summary["programs"] = programs;
+    }
     out << summary.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
   } else if (csv) {
     out << gradeTable(results, true);

@@ -435,6 +435,15 @@ TEST_CASE("robotsim test --spec grades every submission, whatever each one does"
   const CliResult text = runCli({"test", "--spec", folder + "/assignment.rstest", folder + "/submissions"});
   CHECK(text.out.find("3 passed, 5 failed, 0 errors in ") != std::string::npos);
   CHECK(text.out.find(s + "alice.rsp     2/2      4.000 s\n") != std::string::npos);
+  const CliResult json =
+      runCli({"test", "--spec", folder + "/assignment.rstest", folder + "/submissions", "--format=json"});
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  REQUIRE(j["programs"].size() == 4);
+  CHECK(j["programs"][1]["file"] == s + "bob.rsp");
+  CHECK(j["programs"][1]["passed"] == 1);
+  CHECK(j["programs"][1]["scenarios"] == 2);
+  CHECK(j["programs"][1]["time"] == 3.0);
+  CHECK(j["tests"][2]["scenario"] == "a part arrives at 2 s");
 }
 
 TEST_CASE("robotsim test: a golden trace, written by --update, refused to be written when CI is set", "[testrun][cli]") {
