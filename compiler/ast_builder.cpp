@@ -98,7 +98,8 @@ void Builder::line(P::LineContext* l, bool recovered) {
   if (tokens.empty()) return;  // blank line
   if (tokens[0]->getType() != P::IDENT)
     return diag_.error(posOf(tokens[0]), fmt::format("unexpected '{}': a line starts with an instruction, a label "
-                                                     "or a point name", textOf(src_, tokens[0])));
+                                                     "or a point name",
+                                                     diag::excerpt(textOf(src_, tokens[0]))));
   const bool labelled = tokens.size() >= 2 && tokens[1]->getType() == P::COLON;
   std::size_t next = labelled ? 2 : 0;
   const antlr4::Token* headToken = nullptr;
@@ -117,8 +118,8 @@ void Builder::line(P::LineContext* l, bool recovered) {
     if (inPoints_) {
       diag_.error(pos, "points cannot have labels: labels name instructions");
     } else if (!pendingLabel_.empty()) {
-      diag_.error(pos, fmt::format("label '{}' follows label '{}': an instruction can have only one label", label,
-                                   pendingLabel_));
+      diag_.error(pos, fmt::format("label '{}' follows label '{}': an instruction can have only one label",
+                                   diag::excerpt(label), pendingLabel_));
     } else if (checkName("a label", label, pos)) {
       pendingLabel_ = label;
       pendingLabelPos_ = pos;
@@ -126,7 +127,8 @@ void Builder::line(P::LineContext* l, bool recovered) {
   }
   if (!headToken) {
     if (labelled && !words.empty()) {
-      diag_.error(words[0].pos, fmt::format("expected an instruction after the label, found '{}'", words[0].text));
+      diag_.error(words[0].pos,
+                  fmt::format("expected an instruction after the label, found '{}'", diag::excerpt(words[0].text)));
       pendingLabel_ = {};
     }
     return;
@@ -162,8 +164,9 @@ void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& wo
   } else {
     in.known = false;
     const std::string_view near = closestMnemonic(mnemonic);
-    diag_.error(in.pos, near.empty() ? fmt::format("unknown instruction '{}'", mnemonic)
-                                     : fmt::format("unknown instruction '{}' (did you mean {}?)", mnemonic, near));
+    diag_.error(in.pos, near.empty() ? fmt::format("unknown instruction '{}'", diag::excerpt(mnemonic))
+                                     : fmt::format("unknown instruction '{}' (did you mean {}?)",
+                                                   diag::excerpt(mnemonic), near));
   }
 }
 
@@ -237,18 +240,19 @@ bool Builder::checkName(std::string_view what, std::string_view name, diag::Pos 
 // Sets out.pos only on success: later checks skip operands without one.
 bool Builder::integer(const Word& w, std::string_view what, Value& out) {
   if (w.type != P::NUMBER) {
-    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, w.text));
+    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, diag::excerpt(w.text)));
     return false;
   }
   if (w.text.find('.') != std::string_view::npos) {
-    diag_.error(w.pos, fmt::format("expected {} (a whole number), found '{}'", what, w.text));
+    diag_.error(w.pos, fmt::format("expected {} (a whole number), found '{}'", what, diag::excerpt(w.text)));
     return false;
   }
   const std::string_view digits = w.text[0] == '+' ? w.text.substr(1) : w.text;
   std::int32_t v = 0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
   if (ec != std::errc() || end != digits.data() + digits.size()) {
-    diag_.error(w.pos, fmt::format("'{}' does not fit in a 32-bit integer (-2147483648..2147483647)", w.text));
+    diag_.error(w.pos,
+                fmt::format("'{}' does not fit in a 32-bit integer (-2147483648..2147483647)", diag::excerpt(w.text)));
     return false;
   }
   out.number = v;
@@ -272,11 +276,11 @@ bool Builder::integers(const std::vector<Word>& words, std::string_view what, st
 bool Builder::seconds(const Word& w, Value& out) {
   out.pos = w.pos;
   if (w.type != P::NUMBER) {
-    diag_.error(w.pos, fmt::format("expected a number of seconds, found '{}'", w.text));
+    diag_.error(w.pos, fmt::format("expected a number of seconds, found '{}'", diag::excerpt(w.text)));
     return false;
   }
   if (w.text[0] == '-') {
-    diag_.error(w.pos, fmt::format("DELAY cannot be negative, found '{}'", w.text));
+    diag_.error(w.pos, fmt::format("DELAY cannot be negative, found '{}'", diag::excerpt(w.text)));
     return false;
   }
   const std::string_view t = w.text[0] == '+' ? w.text.substr(1) : w.text;
@@ -284,19 +288,21 @@ bool Builder::seconds(const Word& w, Value& out) {
   const std::string_view whole = t.substr(0, dot);
   const std::string_view frac = dot == std::string_view::npos ? std::string_view() : t.substr(dot + 1);
   if (frac.size() > 3) {
-    diag_.error(w.pos, fmt::format("DELAY counts milliseconds: at most 3 decimals, found '{}'", w.text));
+    diag_.error(w.pos, fmt::format("DELAY counts milliseconds: at most 3 decimals, found '{}'", diag::excerpt(w.text)));
     return false;
   }
   std::int64_t s = 0;
   const auto r = std::from_chars(whole.data(), whole.data() + whole.size(), s);
   if (r.ec != std::errc() || s > vm::kMaxDelayMillis / 1000) {
-    diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000, w.text));
+    diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000,
+                                   diag::excerpt(w.text)));
     return false;
   }
   std::int64_t ms = s * 1000;
   for (std::size_t i = 0, scale = 100; i < frac.size(); ++i, scale /= 10) ms += (frac[i] - '0') * static_cast<std::int64_t>(scale);
   if (ms > vm::kMaxDelayMillis) {
-    diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000, w.text));
+    diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000,
+                                   diag::excerpt(w.text)));
     return false;
   }
   out.number = ms;
@@ -306,7 +312,7 @@ bool Builder::seconds(const Word& w, Value& out) {
 bool Builder::name(const Word& w, std::string_view what, std::string_view& out, diag::Pos& pos) {
   pos = w.pos;
   if (w.type != P::IDENT) {
-    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, w.text));
+    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, diag::excerpt(w.text)));
     return false;
   }
   // "a variable name" -> "a variable" for checkName's "cannot name ..."
@@ -321,7 +327,7 @@ bool Builder::onOff(const Word& w, bool& out) {
     out = sameName(w.text, "ON");
     return true;
   }
-  diag_.error(w.pos, fmt::format("expected ON or OFF, found '{}'", w.text));
+  diag_.error(w.pos, fmt::format("expected ON or OFF, found '{}'", diag::excerpt(w.text)));
   return false;
 }
 
@@ -330,7 +336,7 @@ bool Builder::compare(const Word& w, vm::Compare& out) {
     out = w.text == "<" ? vm::Compare::Less : w.text == ">" ? vm::Compare::Greater : vm::Compare::Equal;
     return true;
   }
-  diag_.error(w.pos, fmt::format("expected a comparison <, > or =, found '{}'", w.text));
+  diag_.error(w.pos, fmt::format("expected a comparison <, > or =, found '{}'", diag::excerpt(w.text)));
   return false;
 }
 

@@ -1,6 +1,9 @@
 #include "diag/source_file.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
+#include <iterator>
 
 namespace rs::diag {
 
@@ -13,15 +16,62 @@ SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(nam
     if (++p == end) break;
     lineStarts_.push_back(static_cast<std::size_t>(p - begin));
   }
+  for (std::uint32_t n = 1; n <= lineCount(); ++n) {
+    const std::string_view l = line(n);
+    if (l.size() <= kCheckpointBytes) continue;
+    const auto start = static_cast<std::size_t>(l.data() - begin);
+    const std::size_t end = start + l.size();
+    std::uint32_t col = 1;
+    for (std::size_t at = start;;) {
+      at = stepColumns(text_, at, end, col, UINT32_MAX, at + kCheckpointBytes);
+      if (at >= end) break;
+      checkpoints_.push_back({at, n, col});
+    }
+  }
 }
 
 std::string_view SourceFile::line(std::uint32_t number) const {
   if (number == 0 || number > lineStarts_.size()) return {};
   const std::size_t start = lineStarts_[number - 1];
-  std::size_t end = text_.find('\n', start);
-  if (end == std::string::npos) end = text_.size();
+  // The next line's start follows this line's '\n'; the last line ends the text.
+  std::size_t end = number < lineStarts_.size() ? lineStarts_[number] - 1 : text_.size();
+  if (number == lineStarts_.size() && end > start && text_[end - 1] == '\n') --end;
   if (end > start && text_[end - 1] == '\r') --end;
   return std::string_view(text_).substr(start, end - start);
+}
+
+std::size_t SourceFile::offsetOf(Pos pos) const {
+  const std::string_view l = line(pos.line);
+  std::size_t at = static_cast<std::size_t>(l.data() - text_.data());
+  const std::size_t end = at + l.size();
+  std::uint32_t col = 1;
+  // The last checkpoint at or before the column, if it is on this line.
+  const auto after = std::upper_bound(checkpoints_.begin(), checkpoints_.end(), pos, [](Pos p, const Checkpoint& c) {
+    return p.line != c.line ? p.line < c.line : p.col < c.col;
+  });
+  if (after != checkpoints_.begin() && std::prev(after)->line == pos.line) {
+    at = std::prev(after)->offset;
+    col = std::prev(after)->col;
+  }
+  return stepColumns(text_, at, end, col, std::max<std::uint32_t>(pos.col, 1), SIZE_MAX);
+}
+
+std::size_t stepColumns(std::string_view text, std::size_t i, std::size_t end, std::uint32_t& col,
+                        std::uint32_t untilCol, std::size_t untilByte) {
+  constexpr std::uint64_t kHighBits = 0x8080808080808080ull;
+  while (i < end && col < untilCol && i < untilByte) {
+    // Mostly ASCII: eight characters at a time.
+    std::uint64_t word;
+    if (i + 8 <= end && i + 8 <= untilByte && untilCol - col >= 8 &&
+        (std::memcpy(&word, text.data() + i, 8), (word & kHighBits) == 0)) {
+      i += 8;
+      col += 8;
+      continue;
+    }
+    i += std::max<std::size_t>(utf8SequenceLength(text, i), 1);
+    ++col;
+  }
+  return i;
 }
 
 std::size_t utf8SequenceLength(std::string_view text, std::size_t i) {

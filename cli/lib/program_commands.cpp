@@ -14,7 +14,8 @@ namespace {
 
 // tokens / ast: teaching views of the front end; they read source only.
 template <typename Dump>
-int sourceView(const std::string& file, std::ostream& out, std::ostream& err, Dump dump) {
+int sourceView(const launch::ProgramRequest& request, std::ostream& out, std::ostream& err, Dump dump) {
+  const std::string& file = request.file;
   base::FileRead text = base::readFile(file, launch::kMaxInputBytes);
   if (!text.bytes) {
     err << fmt::format("{}: error: cannot read file: {}\n", file, text.error);
@@ -25,10 +26,11 @@ int sourceView(const std::string& file, std::ostream& out, std::ostream& err, Du
     return kExitBadInput;
   }
   const diag::SourceFile source(file, std::move(*text.bytes));
-  std::vector<diag::Diagnostic> diags;
+  diag::Diagnostics diags(file, request.maxErrors);
   out << dump(source, diags);
-  for (const diag::Diagnostic& d : diags) err << diag::render(d, &source);
-  return diag::hasErrors(diags) ? kExitBadInput : kExitOk;
+  launch::printDiagnostics(
+      err, diags.sorted(), [&source](const std::string&) { return &source; }, request.maxErrors, diags.omitted());
+  return diags.hasErrors() ? kExitBadInput : kExitOk;
 }
 
 }  // namespace
@@ -55,8 +57,7 @@ int disasmCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostrea
 }
 
 int tokensCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err) {
-  return sourceView(o.program.file, out, err,
-                    [](const diag::SourceFile& s, auto& d) { return compiler::dumpTokens(s, d); });
+  return sourceView(o.program, out, err, [](const diag::SourceFile& s, auto& d) { return compiler::dumpTokens(s, d); });
 }
 
 // Operand counts are checked against the robot: --cell's, or the default.
@@ -74,9 +75,8 @@ int astCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& 
     }
     target = launch::cellTarget(*cell);
   }
-  return sourceView(o.program.file, out, err, [&](const diag::SourceFile& s, auto& d) {
-    return compiler::dumpAst(s, target, o.tree, d);
-  });
+  return sourceView(o.program, out, err,
+                    [&](const diag::SourceFile& s, auto& d) { return compiler::dumpAst(s, target, o.tree, d); });
 }
 
 }  // namespace rs::cli
