@@ -20,7 +20,7 @@ namespace {
 using rs::bench::Options;
 
 constexpr std::string_view kUsage =
-    "usage: robotsim_bench [--reps N] [--json FILE] [--only dispatch|compile|startup|snapshot]\n"
+    "usage: robotsim_bench [--reps N] [--json FILE] [--only dispatch|compile|startup|snapshot|errors]\n"
     "                      [--robotsim PATH] [--lua PATH] [--luac PATH] [--workdir DIR]\n";
 
 std::string firstLine(const std::string& path, std::string_view prefix = {}) {
@@ -76,8 +76,9 @@ bool parse(int argc, char** argv, Options& o, std::string& only) {
     std::cerr << "robotsim_bench: --reps must be at least 1\n";
     return false;
   }
-  if (!only.empty() && only != "dispatch" && only != "compile" && only != "startup" && only != "snapshot") {
-    std::cerr << "robotsim_bench: --only takes dispatch, compile, startup or snapshot\n";
+  if (!only.empty() && only != "dispatch" && only != "compile" && only != "startup" && only != "snapshot" &&
+      only != "errors") {
+    std::cerr << "robotsim_bench: --only takes dispatch, compile, startup, snapshot or errors\n";
     return false;
   }
   return true;
@@ -107,6 +108,7 @@ int main(int argc, char** argv) {
     if (only.empty() || only == "compile") summary["compile"] = rs::bench::benchCompile(options);
     if (only.empty() || only == "startup") summary["startup"] = rs::bench::benchStartup(options);
     if (only.empty() || only == "snapshot") summary["snapshot"] = rs::bench::benchSnapshot(options);
+    if (only.empty() || only == "errors") summary["errors"] = rs::bench::benchErrors(options);
   } catch (const std::exception& e) {
     std::fflush(stdout);
     std::cerr << "robotsim_bench: error: " << e.what() << "\n";
