@@ -39,16 +39,12 @@ bool isReservedWord(std::string_view w) {
 
 class Builder {
  public:
-  Builder(const diag::SourceFile& src, std::span<const vm::MotorSpec> motors, diag::Diagnostics& d)
-      : src_(src), motors_(motors), diag_(d) {
-    // One instruction per line at most: reserving for that touches no
-    // memory the program does not use, and saves the copies of growth.
-    program_.instructions.reserve(src.lineCount());
-  }
+  Builder(const diag::SourceFile& src, std::span<const vm::MotorSpec> motors, diag::Diagnostics& d, AstSink& sink)
+      : src_(src), motors_(motors), diag_(d), sink_(sink) {}
 
   /// `recovered`: the parser met syntax errors on this line (already reported).
   void line(P::LineContext* line, bool recovered);
-  Program finish();
+  void finish();
 
  private:
   void instruction(const antlr4::Token* head, const std::vector<Word>& words);
@@ -71,7 +67,11 @@ class Builder {
   const diag::SourceFile& src_;
   std::span<const vm::MotorSpec> motors_;
   diag::Diagnostics& diag_;
-  Program program_;
+  AstSink& sink_;
+  Instruction in_;  // the one being built (kept for its vector's capacity)
+  PointDef point_;  // the same
+  std::uint32_t instructions_ = 0;
+  diag::Pos pointsHeader_;
   std::vector<const antlr4::Token*> tokens_;  // of the current line (kept for its capacity)
   std::vector<Word> words_;
   bool inPoints_ = false;
@@ -79,10 +79,9 @@ class Builder {
   diag::Pos pendingLabelPos_;
 };
 
-Program Builder::finish() {
+void Builder::finish() {
   if (!pendingLabel_.empty())
     diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
-  return std::move(program_);
 }
 
 // Splits a line's tokens into label, head word and operands. Every child of
@@ -136,14 +135,15 @@ void Builder::line(P::LineContext* l, bool recovered) {
   const std::string_view head = textOf(src_, headToken);
   if (sameName(head, "POINTS") && words.empty()) {
     if (inPoints_)
-      return diag_.error(posOf(headToken), fmt::format("POINTS appears twice (the section began on line {})",
-                                                     program_.pointsHeader.line));
+      return diag_.error(posOf(headToken),
+                         fmt::format("POINTS appears twice (the section began on line {})", pointsHeader_.line));
     if (!pendingLabel_.empty()) {
       diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
       pendingLabel_ = {};
     }
     inPoints_ = true;
-    program_.pointsHeader = posOf(headToken);
+    pointsHeader_ = posOf(headToken);
+    sink_.pointsHeader(pointsHeader_);
     return;
   }
   if (inPoints_) return point(headToken, words);
@@ -151,9 +151,13 @@ void Builder::line(P::LineContext* l, bool recovered) {
 }
 
 void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& words) {
-  Instruction& in = program_.instructions.emplace_back();  // built in place: it is 160 bytes
+  Instruction& in = in_;
+  std::vector<Value> values = std::move(in.values);
+  values.clear();
+  in = Instruction{};
+  in.values = std::move(values);
   in.pos = posOf(head);
-  in.number = static_cast<std::uint32_t>(program_.instructions.size());
+  in.number = ++instructions_;
   in.label = pendingLabel_;
   in.labelPos = pendingLabelPos_;
   pendingLabel_ = {};
@@ -168,15 +172,20 @@ void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& wo
                                      : fmt::format("unknown instruction '{}' (did you mean {}?)",
                                                    diag::excerpt(mnemonic), near));
   }
+  sink_.instruction(in);
 }
 
 void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
-  PointDef p;
+  PointDef& p = point_;
+  std::vector<Value> values = std::move(p.values);
+  values.clear();
+  p = PointDef{};
+  p.values = std::move(values);
   p.name = textOf(src_, head);
   p.pos = posOf(head);
   if (vm::opByName(p.name)) {
     diag_.error(p.pos, fmt::format("instruction {} after POINTS: instructions come before the POINTS line (line {})",
-                                   p.name, program_.pointsHeader.line));
+                                   p.name, pointsHeader_.line));
     return;
   }
   if (!checkName("a point", p.name, p.pos)) return;
@@ -184,7 +193,7 @@ void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
   if (ok && p.values.size() != motors_.size())
     diag_.error(p.pos, fmt::format("point {} has {} values, expected {} (one per motor: {})", p.name, p.values.size(),
                                    motors_.size(), motorLetters()));
-  program_.points.push_back(std::move(p));
+  sink_.point(p);
 }
 
 // Reads the operands of one instruction by its opcode's format.
@@ -392,17 +401,44 @@ std::string_view closestMnemonic(std::string_view word) {
   return best;
 }
 
+namespace {
+
+// Collects what the builder hands on into a Program.
+class Collect final : public AstSink {
+ public:
+  explicit Collect(const diag::SourceFile& source) {
+    // One instruction per line at most: reserving for that touches no
+    // memory the program does not use, and saves the copies of growth.
+    program.instructions.reserve(source.lineCount());
+  }
+  void instruction(const Instruction& in) override { program.instructions.push_back(in); }
+  void pointsHeader(diag::Pos pos) override { program.pointsHeader = pos; }
+  void point(const PointDef& p) override { program.points.push_back(p); }
+  Program program;
+};
+
+}  // namespace
+
+void buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
+              diag::Diagnostics& diagnostics, AstSink& sink) {
+  Builder b(source, motors, diagnostics, sink);
+  while (antlr4::ParserRuleContext* l = parser.next()) b.line(static_cast<P::LineContext*>(l), parser.recovered());
+  b.finish();
+}
+
 Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics) {
-  Builder b(tree.source(), motors, diagnostics);
+  Collect collect(tree.source());
+  Builder b(tree.source(), motors, diagnostics, collect);
   for (P::LineContext* l : static_cast<P::ProgramContext*>(tree.root())->line()) b.line(l, tree.recovered());
-  return b.finish();
+  b.finish();
+  return std::move(collect.program);
 }
 
 Program buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
                  diag::Diagnostics& diagnostics) {
-  Builder b(source, motors, diagnostics);
-  while (antlr4::ParserRuleContext* l = parser.next()) b.line(static_cast<P::LineContext*>(l), parser.recovered());
-  return b.finish();
+  Collect collect(source);
+  buildAst(source, parser, motors, diagnostics, collect);
+  return std::move(collect.program);
 }
 
 }  // namespace rs::compiler

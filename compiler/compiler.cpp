@@ -28,9 +28,9 @@ CompileResult compile(const diag::SourceFile& source, const Target& target, std:
   }
   diag::Diagnostics diagnostics(source.name(), keepDiagnostics);
   LineParser parser(source, diagnostics);
-  const Program program = buildAst(source, parser, target.motors, diagnostics);
-  const Resolution resolution = check(program, target.motors, diagnostics);
-  if (!diagnostics.hasErrors()) result.image = generate(program, resolution, target, source.name());
+  Checker checker(target, source.name(), diagnostics, source.lineCount());
+  buildAst(source, parser, target.motors, diagnostics, checker);
+  result.image = checker.finish();
   result.diagnostics = diagnostics.sorted();
   result.omitted = diagnostics.omitted();
   return result;

@@ -8,10 +8,15 @@
 namespace rs::diag {
 
 SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
-  lineStarts_.push_back(0);
   const char* const begin = text_.data();
   const char* const end = begin + text_.size();
   // memchr: the library's vectorised search, much faster than a byte loop.
+  // Counted first, so that the index is allocated once, at its size.
+  std::size_t breaks = 0;
+  for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p))));)
+    ++breaks, ++p;
+  lineStarts_.reserve(breaks + 1);
+  lineStarts_.push_back(0);
   for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p))));) {
     if (++p == end) break;
     lineStarts_.push_back(static_cast<std::size_t>(p - begin));

@@ -36,9 +36,12 @@ int sourceView(const launch::ProgramRequest& request, std::ostream& out, std::os
 }  // namespace
 
 int compileCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err) {
-  const launch::LoadedProgram program = launch::loadProgram(o.program);
+  launch::LoadedProgram program = launch::loadProgram(o.program);
   launch::printDiagnostics(err, program.diagnostics, program);
   if (!program.ok()) return kExitBadInput;
+  // The source's diagnostics are printed: free it before the image's bytes
+  // are made, which would otherwise add their size to the peak.
+  program.source.reset();
   std::string error;
   if (!base::writeFileAtomically(o.output, vm::writeImage(*program.image), error)) {
     err << fmt::format("{}: error: cannot write: {}\n", o.output, error);
@@ -49,9 +52,10 @@ int compileCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostre
 }
 
 int disasmCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err) {
-  const launch::LoadedProgram program = launch::loadProgram(o.program);
+  launch::LoadedProgram program = launch::loadProgram(o.program);
   launch::printDiagnostics(err, program.diagnostics, program);
   if (!program.ok()) return kExitBadInput;
+  program.source.reset();  // as in compile: not held beside the listing
   out << vm::disassemble(*program.image);
   return kExitOk;
 }
