@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -320,6 +321,143 @@ json benchCompile(const Options& options) {
   out["ratio_100k_over_luac_cpu"] = s[0].cpuBest() / s[1].cpuBest();
   out["target_ratio"] = 3.0;
   out["target_met"] = ratio <= 3.0;
+  return out;
+}
+
+// --- 5. Programs full of errors ------------------------------------------------------
+
+namespace {
+
+struct ErrorCase {
+  std::string label;
+  ErrorProgram program;  // its text freed once written (read back to measure)
+  std::size_t bytes = 0;
+  std::string path;
+  Samples inProcess;
+  Samples process;
+  std::size_t stderrBytes = 0;  // what robotsim check printed
+  long maxRssKiB = 0;           // of one `robotsim check` run
+  bool rssIsChild = false;
+};
+
+// robotsim check FILE: must exit 2 (the program does not compile).
+Measurement checkFails(const Options& options, const std::string& path) {
+  return [argv = std::vector<std::string>{options.robotsim, "check", path}] {
+    const ProcessRun run = runProcess(argv);
+    if (run.exitCode != 2)
+      throw std::runtime_error(fmt::format("robotsim check {} exited {}, not 2", argv[2], run.exitCode));
+    return Sample{run.seconds, run.cpuSeconds};
+  };
+}
+
+// What `robotsim check` does with the diagnostics in-process: compile,
+// keeping the first 50 (its default --max-errors), and render those.
+std::size_t compileAndRender(const diag::SourceFile& source, const compiler::Target& target, std::size_t& errors) {
+  const compiler::CompileResult r = compiler::compile(source, target, 50);
+  std::string out;
+  for (const diag::Diagnostic& d : r.diagnostics) out += diag::render(d, &source);
+  out += launch::omittedNote(r.omitted);
+  errors = r.diagnostics.size() + r.omitted.errors + r.omitted.warnings;
+  return out.size();
+}
+
+// Writes the program and runs robotsim check once for its peak RSS (before
+// the driver compiled anything large itself: see prepareSize) and the size
+// of what it prints (counted in-process: the process's stderr goes to
+// /dev/null).
+ErrorCase prepareErrors(const Options& options, std::string label, ErrorProgram program) {
+  ErrorCase c{std::move(label), std::move(program), 0, {}, {}, {}, 0, 0, false};
+  c.bytes = c.program.text.size();
+  c.path = writeInput(options, fmt::format("errors-{}.rsp", c.label), c.program.text);
+  std::string().swap(c.program.text);  // keeps the driver's peak below the child's
+  progress(fmt::format("{}: one robotsim check for its peak RSS", c.label));
+  const ProcessRun run = runProcess({options.robotsim, "check", c.path});
+  if (run.exitCode != 2)
+    throw std::runtime_error(fmt::format("robotsim check {} exited {}, not 2", c.path, run.exitCode));
+  c.maxRssKiB = run.maxRssKiB;
+  c.rssIsChild = run.maxRssKiB > selfPeakRssKiB();
+  return c;
+}
+
+void measureErrors(const Options& options, ErrorCase& c) {
+  std::ifstream file(c.path, std::ios::binary);
+  std::string text(c.bytes, '\0');
+  if (!file.read(text.data(), static_cast<std::streamsize>(c.bytes))) throw std::runtime_error("cannot read " + c.path);
+  const diag::SourceFile source(c.path, std::move(text));
+  const compiler::Target target = launch::defaultTarget();
+  std::size_t errors = 0;
+  c.stderrBytes = compileAndRender(source, target, errors);
+  if (errors != c.program.errors)
+    throw std::runtime_error(fmt::format("{}: {} errors reported, expected {}", c.path, errors, c.program.errors));
+  const Measurement inProcess = [&] {
+    std::size_t n = 0;
+    const Stopwatch clock;
+    compileAndRender(source, target, n);
+    return clock.stop();
+  };
+  progress(fmt::format(
+      "{} ({} lines, {:.1f} MB, {} errors), 1 warm-up + {} rounds: compile() and render in-process, "
+      "robotsim check (process)",
+      c.label, c.program.lines, static_cast<double>(c.bytes) / 1e6, c.program.errors, options.reps));
+  const std::vector<Samples> s = interleave({inProcess, checkFails(options, c.path)}, options.reps);
+  c.inProcess = s[0];
+  c.process = s[1];
+}
+
+json errorJson(const ErrorCase& c) {
+  return {{"label", c.label},
+          {"lines", c.program.lines},
+          {"bytes", c.bytes},
+          {"errors", c.program.errors},
+          {"in_process", toJson(c.inProcess)},
+          {"process", toJson(c.process)},
+          {"printed_bytes", c.stderrBytes},
+          {"process_max_rss_kib", c.maxRssKiB},
+          {"process_max_rss_is_child", c.rssIsChild}};
+}
+
+}  // namespace
+
+json benchErrors(const Options& options) {
+  fmt::print("\n[5] Programs full of errors: robotsim check (default --max-errors 50)\n");
+  std::vector<ErrorCase> cases;
+  // Each text is freed once written, and every peak RSS is taken before
+  // anything is measured: wait4's peak is the driver's when that is larger.
+  // The one-line cases (10 MB texts) go before the 16 MB one.
+  cases.push_back(prepareErrors(options, "10k-lines", errorProgram(10'000)));
+  cases.push_back(prepareErrors(options, "100k-lines", errorProgram(100'000)));
+  cases.push_back(prepareErrors(options, "1-line-10MB-stray", oneLineOfStrayCharacters(100'000)));
+  cases.push_back(prepareErrors(options, "1-line-10MB-words", oneLineOfWords(10'000'000)));
+  cases.push_back(prepareErrors(options, "1M-lines", errorProgram(1'000'000)));
+  std::rotate(cases.begin() + 2, cases.begin() + 4, cases.end());  // 10k, 100k, 1M lines, then one line
+  for (ErrorCase& c : cases) measureErrors(options, c);
+
+  json out = {{"cases", json::array()}};
+  for (const ErrorCase& c : cases) {
+    const std::string perError =
+        fmt::format("{:.0f} ns/error", c.inProcess.best() * 1e9 / static_cast<double>(c.program.errors));
+    row(fmt::format("compile()+render {:<18} {:>7} err", c.label, c.program.errors), c.inProcess, perError);
+    row(fmt::format("robotsim check {:<20} (process)", c.label), c.process,
+        fmt::format("peak RSS {:.1f} MiB{}, {} bytes printed", static_cast<double>(c.maxRssKiB) / 1024,
+                    c.rssIsChild ? "" : " (not measurable)", c.stderrBytes));
+    out["cases"].push_back(errorJson(c));
+  }
+  const auto growth = [&](std::size_t big, std::size_t small, bool process) {
+    return process ? cases[big].process.best() / cases[small].process.best()
+                   : cases[big].inProcess.best() / cases[small].inProcess.best();
+  };
+  fmt::print(
+      "  growth (best, linear = 10): in-process 100k/10k {:.1f}, 1M/100k {:.1f}; "
+      "process 100k/10k {:.1f}, 1M/100k {:.1f}\n",
+      growth(1, 0, false), growth(2, 1, false), growth(1, 0, true), growth(2, 1, true));
+  const double oneLine = cases[3].process.best();
+  fmt::print("  one 10 MB line with 100,000 errors: robotsim check {:.0f} ms (target: well under a second: {})\n",
+             oneLine * 1e3, oneLine < 0.5 ? "met" : "missed");
+  out["growth"] = {{"in_process_100k_over_10k", growth(1, 0, false)},
+                   {"in_process_1m_over_100k", growth(2, 1, false)},
+                   {"process_100k_over_10k", growth(1, 0, true)},
+                   {"process_1m_over_100k", growth(2, 1, true)}};
+  out["one_line_10mb_process_best_s"] = oneLine;
   return out;
 }
 

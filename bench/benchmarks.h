@@ -41,4 +41,11 @@ nlohmann::json benchSnapshot(const Options& options);
 /// each, whole process. Target: 2 s.
 nlohmann::json benchTestSuite(const Options& options);
 
+/// Programs full of errors: 10k, 100k and 1M lines, every line with one or
+/// two errors, and one 10 MB line (100,000 stray characters; 5M words):
+/// compile() and rendering the diagnostics in-process as `robotsim check`
+/// does (the first 50 kept, the rest counted), and `robotsim check` as a
+/// process; growth ratios (linear = 10), peak RSS, bytes printed.
+nlohmann::json benchErrors(const Options& options);
+
 }  // namespace rs::bench

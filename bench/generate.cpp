@@ -110,6 +110,58 @@ GeneratedProgram robotProgramOfLines(std::size_t lines) {
   return p;
 }
 
+ErrorProgram errorProgram(std::size_t lines) {
+  // Each line and the errors it makes (for the Rhino SCARA: E D C B A).
+  struct Kind {
+    const char* line;
+    std::size_t errors;
+  };
+  static constexpr Kind kKinds[] = {
+      {"MOVX 1 2 3 4 5\n", 1},              // unknown instruction (did you mean MOVE?)
+      {"MOVE 1 x 3 @ 5\n", 2},              // a stray character, a word where a number goes
+      {"        OUTSIG 9 ON\n", 1},         // output outside 1..8
+      {"GOTO nowhere   ; a comment\n", 1},  // undefined label
+      {"DELAY -2\n", 1},                    // negative DELAY
+      {"MOVETO 0 0 0 0 500\n", 1},          // motor A outside 0..120
+      {"SET N 1.5\n", 1},                   // not a whole number
+      {"JMPVAR N ? 3 9\n", 2},              // a stray character, then three operands of four
+  };
+  ErrorProgram p;
+  p.text.reserve(lines * 18);
+  for (std::size_t i = 0; i < lines; ++i) {
+    const Kind& k = kKinds[i % std::size(kKinds)];
+    p.text += k.line;
+    p.errors += k.errors;
+  }
+  p.lines = lines;
+  return p;
+}
+
+ErrorProgram oneLineOfStrayCharacters(std::size_t errors) {
+  ErrorProgram p;
+  p.text.reserve(errors * 100 + 4);
+  p.text += "END";
+  for (std::size_t i = 0; i < errors; ++i) {
+    p.text += i % 2 ? " +" : " @";
+    p.text.append(98, ' ');
+  }
+  p.text += '\n';
+  p.lines = 1;
+  p.errors = errors;
+  return p;
+}
+
+ErrorProgram oneLineOfWords(std::size_t bytes) {
+  ErrorProgram p;
+  p.text.reserve(bytes + 8);
+  p.text += "MOVE";
+  while (p.text.size() < bytes) p.text += " x";
+  p.text += '\n';
+  p.lines = 1;
+  p.errors = 64;  // 63 words that are not numbers, and the line's 65th word
+  return p;
+}
+
 std::string luaChunk(std::size_t lines) {
   static constexpr const char* kStatements[] = {
       "x = x + 1",  "t[1] = x * 2", "if x > 5 then x = 0 end", "y = x - 3 -- a comment", "t.name = \"part\" .. x",

@@ -26,6 +26,27 @@ GeneratedProgram robotProgram(std::size_t instructions);
 /// lines to exactly `lines`.
 GeneratedProgram robotProgramOfLines(std::size_t lines);
 
+/// A program of exactly `lines` lines, each with one or two compile errors
+/// of the kinds people make (an unknown instruction, a bad operand, a stray
+/// character, a value out of range, an undefined label, a wrong operand
+/// count), and no line without one; `errors` is how many the compiler
+/// reports.
+struct ErrorProgram {
+  std::string text;
+  std::size_t lines = 0;
+  std::size_t errors = 0;
+};
+ErrorProgram errorProgram(std::size_t lines);
+
+/// One line of `errors` * 100 + 4 bytes: END, then `errors` stray
+/// characters ('@', and '+' without digits), each padded to 100 bytes.
+ErrorProgram oneLineOfStrayCharacters(std::size_t errors);
+
+/// One line of `bytes` bytes or a little more: MOVE and " x" words; the
+/// lexer reports the 64th operand and skips the rest of the line, so the
+/// compiler reports 64 errors.
+ErrorProgram oneLineOfWords(std::size_t bytes);
+
 /// A Lua chunk of exactly `lines` lines of simple statements (globals and a
 /// table, so no limit on locals applies), for `luac5.4 -p`.
 std::string luaChunk(std::size_t lines);

@@ -38,16 +38,12 @@ using vm::kMaxNameLength;  // as the image format allows
 
 class Builder {
  public:
-  Builder(const diag::SourceFile& src, std::span<const vm::MotorSpec> motors, diag::Diagnostics& d)
-      : src_(src), motors_(motors), diag_(d) {
-    // One instruction per line at most: reserving for that touches no
-    // memory the program does not use, and saves the copies of growth.
-    program_.instructions.reserve(src.lineCount());
-  }
+  Builder(const diag::SourceFile& src, std::span<const vm::MotorSpec> motors, diag::Diagnostics& d, AstSink& sink)
+      : src_(src), motors_(motors), diag_(d), sink_(sink) {}
 
   /// `recovered`: the parser met syntax errors on this line (already reported).
   void line(P::LineContext* line, bool recovered);
-  Program finish();
+  void finish();
 
  private:
   void instruction(const antlr4::Token* head, const std::vector<Word>& words);
@@ -70,7 +66,11 @@ class Builder {
   const diag::SourceFile& src_;
   std::span<const vm::MotorSpec> motors_;
   diag::Diagnostics& diag_;
-  Program program_;
+  AstSink& sink_;
+  Instruction in_;  // the one being built (kept for its vector's capacity)
+  PointDef point_;  // the same
+  std::uint32_t instructions_ = 0;
+  diag::Pos pointsHeader_;
   std::vector<const antlr4::Token*> tokens_;  // of the current line (kept for its capacity)
   std::vector<Word> words_;
   bool inPoints_ = false;
@@ -78,10 +78,9 @@ class Builder {
   diag::Pos pendingLabelPos_;
 };
 
-Program Builder::finish() {
+void Builder::finish() {
   if (!pendingLabel_.empty())
     diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
-  return std::move(program_);
 }
 
 // Splits a line's tokens into label, head word and operands. Every child of
@@ -97,7 +96,8 @@ void Builder::line(P::LineContext* l, bool recovered) {
   if (tokens.empty()) return;  // blank line
   if (tokens[0]->getType() != P::IDENT)
     return diag_.error(posOf(tokens[0]), fmt::format("unexpected '{}': a line starts with an instruction, a label "
-                                                     "or a point name", textOf(src_, tokens[0])));
+                                                     "or a point name",
+                                                     diag::excerpt(textOf(src_, tokens[0]))));
   const bool labelled = tokens.size() >= 2 && tokens[1]->getType() == P::COLON;
   std::size_t next = labelled ? 2 : 0;
   const antlr4::Token* headToken = nullptr;
@@ -116,8 +116,8 @@ void Builder::line(P::LineContext* l, bool recovered) {
     if (inPoints_) {
       diag_.error(pos, "points cannot have labels: labels name instructions");
     } else if (!pendingLabel_.empty()) {
-      diag_.error(pos, fmt::format("label '{}' follows label '{}': an instruction can have only one label", label,
-                                   pendingLabel_));
+      diag_.error(pos, fmt::format("label '{}' follows label '{}': an instruction can have only one label",
+                                   diag::excerpt(label), pendingLabel_));
     } else if (checkName("a label", label, pos)) {
       pendingLabel_ = label;
       pendingLabelPos_ = pos;
@@ -125,7 +125,8 @@ void Builder::line(P::LineContext* l, bool recovered) {
   }
   if (!headToken) {
     if (labelled && !words.empty()) {
-      diag_.error(words[0].pos, fmt::format("expected an instruction after the label, found '{}'", words[0].text));
+      diag_.error(words[0].pos,
+                  fmt::format("expected an instruction after the label, found '{}'", diag::excerpt(words[0].text)));
       pendingLabel_ = {};
     }
     return;
@@ -133,14 +134,15 @@ void Builder::line(P::LineContext* l, bool recovered) {
   const std::string_view head = textOf(src_, headToken);
   if (sameName(head, "POINTS") && words.empty()) {
     if (inPoints_)
-      return diag_.error(posOf(headToken), fmt::format("POINTS appears twice (the section began on line {})",
-                                                     program_.pointsHeader.line));
+      return diag_.error(posOf(headToken),
+                         fmt::format("POINTS appears twice (the section began on line {})", pointsHeader_.line));
     if (!pendingLabel_.empty()) {
       diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
       pendingLabel_ = {};
     }
     inPoints_ = true;
-    program_.pointsHeader = posOf(headToken);
+    pointsHeader_ = posOf(headToken);
+    sink_.pointsHeader(pointsHeader_);
     return;
   }
   if (inPoints_) return point(headToken, words);
@@ -148,9 +150,13 @@ void Builder::line(P::LineContext* l, bool recovered) {
 }
 
 void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& words) {
-  Instruction& in = program_.instructions.emplace_back();  // built in place: it is 160 bytes
+  Instruction& in = in_;
+  std::vector<Value> values = std::move(in.values);
+  values.clear();
+  in = Instruction{};
+  in.values = std::move(values);
   in.pos = posOf(head);
-  in.number = static_cast<std::uint32_t>(program_.instructions.size());
+  in.number = ++instructions_;
   in.label = pendingLabel_;
   in.labelPos = pendingLabelPos_;
   pendingLabel_ = {};
@@ -161,18 +167,24 @@ void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& wo
   } else {
     in.known = false;
     const std::string_view near = closestMnemonic(mnemonic);
-    diag_.error(in.pos, near.empty() ? fmt::format("unknown instruction '{}'", mnemonic)
-                                     : fmt::format("unknown instruction '{}' (did you mean {}?)", mnemonic, near));
+    diag_.error(in.pos, near.empty() ? fmt::format("unknown instruction '{}'", diag::excerpt(mnemonic))
+                                     : fmt::format("unknown instruction '{}' (did you mean {}?)",
+                                                   diag::excerpt(mnemonic), near));
   }
+  sink_.instruction(in);
 }
 
 void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
-  PointDef p;
+  PointDef& p = point_;
+  std::vector<Value> values = std::move(p.values);
+  values.clear();
+  p = PointDef{};
+  p.values = std::move(values);
   p.name = textOf(src_, head);
   p.pos = posOf(head);
   if (vm::opByName(p.name)) {
     diag_.error(p.pos, fmt::format("instruction {} after POINTS: instructions come before the POINTS line (line {})",
-                                   p.name, program_.pointsHeader.line));
+                                   p.name, pointsHeader_.line));
     return;
   }
   if (!checkName("a point", p.name, p.pos)) return;
@@ -180,7 +192,7 @@ void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
   if (ok && p.values.size() != motors_.size())
     diag_.error(p.pos, fmt::format("point {} has {} values, expected {} (one per motor: {})", p.name, p.values.size(),
                                    motors_.size(), motorLetters()));
-  program_.points.push_back(std::move(p));
+  sink_.point(p);
 }
 
 // Reads the operands of one instruction by its opcode's format.
@@ -236,18 +248,19 @@ bool Builder::checkName(std::string_view what, std::string_view name, diag::Pos 
 // Sets out.pos only on success: later checks skip operands without one.
 bool Builder::integer(const Word& w, std::string_view what, Value& out) {
   if (w.type != P::NUMBER) {
-    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, w.text));
+    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, diag::excerpt(w.text)));
     return false;
   }
   if (w.text.find('.') != std::string_view::npos) {
-    diag_.error(w.pos, fmt::format("expected {} (a whole number), found '{}'", what, w.text));
+    diag_.error(w.pos, fmt::format("expected {} (a whole number), found '{}'", what, diag::excerpt(w.text)));
     return false;
   }
   const std::string_view digits = w.text[0] == '+' ? w.text.substr(1) : w.text;
   std::int32_t v = 0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
   if (ec != std::errc() || end != digits.data() + digits.size()) {
-    diag_.error(w.pos, fmt::format("'{}' does not fit in a 32-bit integer (-2147483648..2147483647)", w.text));
+    diag_.error(w.pos,
+                fmt::format("'{}' does not fit in a 32-bit integer (-2147483648..2147483647)", diag::excerpt(w.text)));
     return false;
   }
   out.number = v;
@@ -271,11 +284,11 @@ bool Builder::integers(const std::vector<Word>& words, std::string_view what, st
 bool Builder::seconds(const Word& w, Value& out) {
   out.pos = w.pos;
   if (w.type != P::NUMBER) {
-    diag_.error(w.pos, fmt::format("expected a number of seconds, found '{}'", w.text));
+    diag_.error(w.pos, fmt::format("expected a number of seconds, found '{}'", diag::excerpt(w.text)));
     return false;
   }
   if (w.text[0] == '-') {
-    diag_.error(w.pos, fmt::format("DELAY cannot be negative, found '{}'", w.text));
+    diag_.error(w.pos, fmt::format("DELAY cannot be negative, found '{}'", diag::excerpt(w.text)));
     return false;
   }
   const std::string_view t = w.text[0] == '+' ? w.text.substr(1) : w.text;
@@ -283,19 +296,21 @@ bool Builder::seconds(const Word& w, Value& out) {
   const std::string_view whole = t.substr(0, dot);
   const std::string_view frac = dot == std::string_view::npos ? std::string_view() : t.substr(dot + 1);
   if (frac.size() > 3) {
-    diag_.error(w.pos, fmt::format("DELAY counts milliseconds: at most 3 decimals, found '{}'", w.text));
+    diag_.error(w.pos, fmt::format("DELAY counts milliseconds: at most 3 decimals, found '{}'", diag::excerpt(w.text)));
     return false;
   }
   std::int64_t s = 0;
   const auto r = std::from_chars(whole.data(), whole.data() + whole.size(), s);
   if (r.ec != std::errc() || s > vm::kMaxDelayMillis / 1000) {
-    diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000, w.text));
+    diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000,
+                                   diag::excerpt(w.text)));
     return false;
   }
   std::int64_t ms = s * 1000;
   for (std::size_t i = 0, scale = 100; i < frac.size(); ++i, scale /= 10) ms += (frac[i] - '0') * static_cast<std::int64_t>(scale);
   if (ms > vm::kMaxDelayMillis) {
-    diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000, w.text));
+    diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000,
+                                   diag::excerpt(w.text)));
     return false;
   }
   out.number = ms;
@@ -305,7 +320,7 @@ bool Builder::seconds(const Word& w, Value& out) {
 bool Builder::name(const Word& w, std::string_view what, std::string_view& out, diag::Pos& pos) {
   pos = w.pos;
   if (w.type != P::IDENT) {
-    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, w.text));
+    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, diag::excerpt(w.text)));
     return false;
   }
   // "a variable name" -> "a variable" for checkName's "cannot name ..."
@@ -320,7 +335,7 @@ bool Builder::onOff(const Word& w, bool& out) {
     out = sameName(w.text, "ON");
     return true;
   }
-  diag_.error(w.pos, fmt::format("expected ON or OFF, found '{}'", w.text));
+  diag_.error(w.pos, fmt::format("expected ON or OFF, found '{}'", diag::excerpt(w.text)));
   return false;
 }
 
@@ -329,7 +344,7 @@ bool Builder::compare(const Word& w, vm::Compare& out) {
     out = w.text == "<" ? vm::Compare::Less : w.text == ">" ? vm::Compare::Greater : vm::Compare::Equal;
     return true;
   }
-  diag_.error(w.pos, fmt::format("expected a comparison <, > or =, found '{}'", w.text));
+  diag_.error(w.pos, fmt::format("expected a comparison <, > or =, found '{}'", diag::excerpt(w.text)));
   return false;
 }
 
@@ -365,17 +380,44 @@ std::string_view closestMnemonic(std::string_view word) {
   return base::nearestName(word, names);
 }
 
+namespace {
+
+// Collects what the builder hands on into a Program.
+class Collect final : public AstSink {
+ public:
+  explicit Collect(const diag::SourceFile& source) {
+    // One instruction per line at most: reserving for that touches no
+    // memory the program does not use, and saves the copies of growth.
+    program.instructions.reserve(source.lineCount());
+  }
+  void instruction(const Instruction& in) override { program.instructions.push_back(in); }
+  void pointsHeader(diag::Pos pos) override { program.pointsHeader = pos; }
+  void point(const PointDef& p) override { program.points.push_back(p); }
+  Program program;
+};
+
+}  // namespace
+
+void buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
+              diag::Diagnostics& diagnostics, AstSink& sink) {
+  Builder b(source, motors, diagnostics, sink);
+  while (antlr4::ParserRuleContext* l = parser.next()) b.line(static_cast<P::LineContext*>(l), parser.recovered());
+  b.finish();
+}
+
 Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics) {
-  Builder b(tree.source(), motors, diagnostics);
+  Collect collect(tree.source());
+  Builder b(tree.source(), motors, diagnostics, collect);
   for (P::LineContext* l : static_cast<P::ProgramContext*>(tree.root())->line()) b.line(l, tree.recovered());
-  return b.finish();
+  b.finish();
+  return std::move(collect.program);
 }
 
 Program buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
                  diag::Diagnostics& diagnostics) {
-  Builder b(source, motors, diagnostics);
-  while (antlr4::ParserRuleContext* l = parser.next()) b.line(static_cast<P::LineContext*>(l), parser.recovered());
-  return b.finish();
+  Collect collect(source);
+  buildAst(source, parser, motors, diagnostics, collect);
+  return std::move(collect.program);
 }
 
 }  // namespace rs::compiler

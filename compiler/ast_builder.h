@@ -12,9 +12,26 @@
 
 namespace rs::compiler {
 
+/// What the builder hands on, in source order, as soon as each is built:
+/// the compiler checks and encodes an instruction at once (AstSink in
+/// checks.h), so the whole program's AST is never held; buildAst below
+/// collects them into a Program.
+class AstSink {
+ public:
+  virtual ~AstSink() = default;
+  /// Valid during the call only (the builder reuses it for the next).
+  virtual void instruction(const Instruction& in) = 0;
+  virtual void pointsHeader(diag::Pos pos) = 0;
+  virtual void point(const PointDef& point) = 0;
+};
+
+/// From each line's parse tree in turn, to `sink`.
+void buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
+              diag::Diagnostics& diagnostics, AstSink& sink);
+
 /// From the whole file's parse tree (`robotsim ast`).
 Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics);
-/// From each line's parse tree in turn (the compiler): the same AST.
+/// From each line's parse tree in turn: the same AST.
 Program buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
                  diag::Diagnostics& diagnostics);
 

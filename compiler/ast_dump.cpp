@@ -46,13 +46,11 @@ std::string operands(const Instruction& in) {
 
 }  // namespace
 
-std::string dumpAst(const diag::SourceFile& source, const Target& target, bool parseTree,
-                    std::vector<diag::Diagnostic>& diagnostics) {
+std::string dumpAst(const diag::SourceFile& source, const Target& target, bool parseTree, diag::Diagnostics& d) {
   if (auto bad = checkEncoding(source)) {
-    diagnostics.push_back(std::move(*bad));
+    d.error(bad->pos, std::move(bad->message));
     return {};
   }
-  diag::Diagnostics d(source.name());
   ParseTree tree(source, d);
   std::string out;
   if (parseTree) out += "parse tree:\n" + tree.toStringTree() + "\n\n";
@@ -69,7 +67,6 @@ std::string dumpAst(const diag::SourceFile& source, const Target& target, bool p
     for (const PointDef& p : program.points)
       out += fmt::format("    Point {} @{} values={}\n", p.name, pos(p.pos), valueList(p.values));
   }
-  diagnostics = d.sorted();
   return out;
 }
 

@@ -1,8 +1,11 @@
 #include "compiler/checks.h"
 
 #include <fmt/format.h>
+
+#include <span>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "base/ascii.h"
 
@@ -28,173 +31,235 @@ struct CaseInsensitiveEqual {
 };
 
 struct Named {
-  std::uint32_t index;
+  std::uint32_t index = 0;
   diag::Pos pos;
 };
 
-class Checker {
- public:
-  Checker(const Program& p, std::span<const vm::MotorSpec> motors, diag::Diagnostics& d)
-      : program_(p), motors_(motors), diag_(d) {
-    const std::size_t n = p.instructions.size();
-    res_.target.assign(n, 0);
-    res_.slot.assign(n, 0);
-  }
+using NameTable = std::unordered_map<std::string_view, Named, CaseInsensitiveHash, CaseInsensitiveEqual>;
 
-  Resolution run() {
-    if (program_.instructions.empty()) diag_.error({1, 1}, "the program has no instructions");
-    collectLabels();
-    collectPoints();
-    for (const Instruction& in : program_.instructions)
-      if (in.known) instruction(in);
-    warnUnassignedVariables();
-    analyseFlow();
-    return std::move(res_);
-  }
+// What an instruction refers to that only the end of the file settles: a
+// label (a jump), a point (MOVEP), or a line number (a jump by number:
+// does the program have that many instructions?).
+struct Reference {
+  std::string_view name;  // label or point; empty for a line number
+  diag::Pos pos;
+  std::uint32_t index = 0;   // the instruction's
+  std::uint32_t number = 0;  // the line number
+};
 
- private:
-  void collectLabels();
-  void collectPoints();
-  void instruction(const Instruction& in);
-  void resolveJump(const Instruction& in);
-  void resolvePoint(const Instruction& in);
-  void resolveVariable(const Instruction& in);
+}  // namespace
+
+struct Checker::State {
+  diag::Diagnostics& diag;
+  vm::Image image;          // built as instructions come; code holds a placeholder for an unknown one
+  std::vector<bool> known;  // per instruction: its mnemonic was known
+  NameTable labels, points, variables;
+  std::vector<Reference> jumps;      // to labels, and by line number
+  std::vector<Reference> pointUses;  // MOVEP
+  std::vector<bool> assigned;        // per slot: some SET or ADD writes it
+  std::vector<diag::Pos> firstRead;  // per slot: first JMPVAR, for the warning
+  diag::Pos pointsHeader;
+
+  std::span<const vm::MotorSpec> motors() const { return image.motors; }
+  diag::Pos posOf(std::size_t i) const { return {image.lines[i], image.columns[i]}; }
+
+  std::uint32_t jump(const Instruction& in);
+  std::uint16_t variable(const Instruction& in);
   void checkIo(const Instruction& in);
   void checkTargets(const Instruction& in);
+  void resolve();
   void warnUnassignedVariables();
   void analyseFlow();
   std::vector<bool> reachable(const std::vector<std::uint32_t>& starts) const;
-
-  const Program& program_;
-  std::span<const vm::MotorSpec> motors_;
-  diag::Diagnostics& diag_;
-  Resolution res_;
-  using NameTable = std::unordered_map<std::string_view, Named, CaseInsensitiveHash, CaseInsensitiveEqual>;
-  NameTable labels_, points_, variables_;
-  std::vector<bool> assigned_;        // per slot: some SET or ADD writes it
-  std::vector<diag::Pos> firstRead_;        // per slot: first JMPVAR, for the warning
 };
 
-void Checker::collectLabels() {
-  for (const Instruction& in : program_.instructions) {
-    if (in.label.empty()) continue;
-    const auto [it, fresh] = labels_.try_emplace(in.label, Named{in.number - 1, in.labelPos});
-    if (!fresh)
-      diag_.error(in.labelPos, fmt::format("label '{}' is already defined on line {}", in.label, it->second.pos.line));
-  }
+Checker::Checker(const Target& target, std::string sourceName, diag::Diagnostics& diagnostics,
+                 std::size_t expectedInstructions)
+    : s_(std::make_unique<State>(State{diagnostics, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}})) {
+  vm::Image& im = s_->image;
+  im.sourceName = std::move(sourceName);
+  im.robotName = target.robotName;
+  im.callDepthLimit = target.callDepthLimit;
+  im.motors = target.motors;
+  // One instruction per line at most: reserving touches no memory the
+  // program does not use, and saves the copies of growth.
+  im.code.reserve(expectedInstructions);
+  im.lines.reserve(expectedInstructions);
+  im.columns.reserve(expectedInstructions);
+  s_->known.reserve(expectedInstructions);
 }
 
-void Checker::collectPoints() {
-  for (std::size_t i = 0; i < program_.points.size(); ++i) {
-    const PointDef& p = program_.points[i];
-    const auto [it, fresh] = points_.try_emplace(p.name, Named{static_cast<std::uint32_t>(i), p.pos});
-    if (!fresh) diag_.error(p.pos, fmt::format("point '{}' is already defined on line {}", p.name, it->second.pos.line));
-    if (p.values.size() != motors_.size()) continue;  // arity already reported
-    for (std::size_t m = 0; m < motors_.size(); ++m) {
-      const vm::MotorSpec& spec = motors_[m];
-      if (p.values[m].number < spec.min || p.values[m].number > spec.max)
-        diag_.error(p.values[m].pos, fmt::format("point {}: value {} for motor {} is outside its range {}..{}", p.name,
-                                                 p.values[m].number, spec.letter, spec.min, spec.max));
-    }
-  }
-  if (points_.size() > kMaxSlots) diag_.error(program_.pointsHeader, "more than 65535 points");
-}
+Checker::~Checker() = default;
 
 void Checker::instruction(const Instruction& in) {
-  if (vm::info(in.op).flags & vm::kJumps) resolveJump(in);
-  switch (vm::info(in.op).format) {
-    case vm::Format::Point: resolvePoint(in); break;
-    case vm::Format::VarCompare:
-    case vm::Format::VarValue: resolveVariable(in); break;
-    case vm::Format::InputJump:
-    case vm::Format::Input:
-    case vm::Format::Output: checkIo(in); break;
-    case vm::Format::MotorVector: checkTargets(in); break;
-    default: break;
+  State& s = *s_;
+  const auto index = static_cast<std::uint32_t>(s.image.code.size());  // in.number - 1
+  if (!in.label.empty()) {
+    const auto [it, fresh] = s.labels.try_emplace(in.label, Named{index, in.labelPos});
+    if (!fresh)
+      s.diag.error(in.labelPos, fmt::format("label '{}' is already defined on line {}", in.label, it->second.pos.line));
+    s.image.labels.push_back({index, std::string(in.label)});
   }
-}
-
-void Checker::resolveJump(const Instruction& in) {
-  const JumpRef& t = in.target;
-  if (t.pos.line == 0) return;  // operand was malformed, already reported
-  const std::size_t n = program_.instructions.size();
-  if (!t.label.empty()) {
-    const auto it = labels_.find(t.label);
-    if (it == labels_.end()) return diag_.error(t.pos, fmt::format("undefined label '{}'", t.label));
-    res_.target[in.number - 1] = it->second.index;
+  s.known.push_back(in.known);
+  s.image.lines.push_back(in.pos.line);
+  s.image.columns.push_back(in.pos.col);
+  if (!in.known) {
+    s.image.code.emplace_back();
     return;
   }
-  if (t.number == 0) return;
-  if (t.number > n)
-    return diag_.error(t.pos, fmt::format("line number {} does not exist (the program has {} instruction{})", t.number,
-                                          n, n == 1 ? "" : "s"));
-  res_.target[in.number - 1] = t.number - 1;
+  std::uint32_t target = 0;
+  std::uint16_t slot = 0;
+  if (vm::info(in.op).flags & vm::kJumps) target = s.jump(in);
+  switch (vm::info(in.op).format) {
+    case vm::Format::Point:
+      if (!in.name.empty()) s.pointUses.push_back({in.name, in.namePos, index, 0});
+      break;
+    case vm::Format::VarCompare:
+    case vm::Format::VarValue: slot = s.variable(in); break;
+    case vm::Format::InputJump:
+    case vm::Format::Input:
+    case vm::Format::Output: s.checkIo(in); break;
+    case vm::Format::MotorVector: s.checkTargets(in); break;
+    default: break;
+  }
+  s.image.code.push_back(encode(in, slot, target, s.image.constants));
 }
 
-void Checker::resolvePoint(const Instruction& in) {
-  if (in.name.empty()) return;
-  const auto it = points_.find(in.name);
-  if (it == points_.end()) return diag_.error(in.namePos, fmt::format("undefined point '{}'", in.name));
-  res_.slot[in.number - 1] = static_cast<std::uint16_t>(it->second.index);
+void Checker::pointsHeader(diag::Pos pos) { s_->pointsHeader = pos; }
+
+void Checker::point(const PointDef& p) {
+  State& s = *s_;
+  const auto index = static_cast<std::uint32_t>(s.image.points.size());
+  const auto [it, fresh] = s.points.try_emplace(p.name, Named{index, p.pos});
+  if (!fresh) s.diag.error(p.pos, fmt::format("point '{}' is already defined on line {}", p.name, it->second.pos.line));
+  vm::Point& point = s.image.points.emplace_back(vm::Point{std::string(p.name), {}});
+  for (const Value& v : p.values) point.values.push_back(static_cast<std::int32_t>(v.number));
+  if (p.values.size() != s.motors().size()) return;  // arity already reported
+  for (std::size_t m = 0; m < s.motors().size(); ++m) {
+    const vm::MotorSpec& spec = s.motors()[m];
+    if (p.values[m].number < spec.min || p.values[m].number > spec.max)
+      s.diag.error(p.values[m].pos, fmt::format("point {}: value {} for motor {} is outside its range {}..{}", p.name,
+                                                p.values[m].number, spec.letter, spec.min, spec.max));
+  }
 }
 
-void Checker::resolveVariable(const Instruction& in) {
-  if (in.name.empty()) return;
-  auto [it, fresh] = variables_.try_emplace(in.name, Named{static_cast<std::uint32_t>(res_.variables.size()), in.namePos});
+std::optional<vm::Image> Checker::finish() {
+  State& s = *s_;
+  if (s.image.code.empty()) s.diag.error({1, 1}, "the program has no instructions");
+  s.resolve();
+  s.warnUnassignedVariables();
+  s.analyseFlow();
+  if (s.diag.hasErrors()) return std::nullopt;
+  return std::move(s.image);
+}
+
+// A jump by number is encoded now and checked against the program's length
+// at the end; a jump to a label waits for the label.
+std::uint32_t Checker::State::jump(const Instruction& in) {
+  const JumpRef& t = in.target;
+  if (t.pos.line == 0) return 0;  // operand was malformed, already reported
+  const auto index = static_cast<std::uint32_t>(image.code.size());
+  if (!t.label.empty()) {
+    jumps.push_back({t.label, t.pos, index, 0});
+    return 0;
+  }
+  if (t.number == 0) return 0;
+  jumps.push_back({{}, t.pos, index, t.number});
+  return t.number - 1;
+}
+
+std::uint16_t Checker::State::variable(const Instruction& in) {
+  if (in.name.empty()) return 0;
+  auto [it, fresh] =
+      variables.try_emplace(in.name, Named{static_cast<std::uint32_t>(image.variables.size()), in.namePos});
   if (fresh) {
-    if (res_.variables.size() == kMaxSlots) return diag_.error(in.namePos, "more than 65535 variables");
-    res_.variables.push_back(in.name);
-    assigned_.push_back(false);
-    firstRead_.push_back({});
+    if (image.variables.size() == kMaxSlots) {
+      variables.erase(it);
+      diag.error(in.namePos, "more than 65535 variables");
+      return 0;
+    }
+    image.variables.emplace_back(in.name);
+    assigned.push_back(false);
+    firstRead.push_back({});
   }
   const std::uint32_t slot = it->second.index;
-  res_.slot[in.number - 1] = static_cast<std::uint16_t>(slot);
   if (in.op == vm::Op::JmpVar) {
-    if (firstRead_[slot].line == 0) firstRead_[slot] = in.namePos;
+    if (firstRead[slot].line == 0) firstRead[slot] = in.namePos;
   } else {
-    assigned_[slot] = true;
+    assigned[slot] = true;
   }
+  return static_cast<std::uint16_t>(slot);
 }
 
-void Checker::checkIo(const Instruction& in) {
+void Checker::State::checkIo(const Instruction& in) {
   if (in.io.pos.line == 0) return;
   if (in.io.number < 1 || in.io.number > vm::kIoCount) {
     const bool output = in.op == vm::Op::OutSig;
-    diag_.error(in.io.pos, fmt::format("{} {} is outside 1..8", output ? "output" : "input", in.io.number));
+    diag.error(in.io.pos, fmt::format("{} {} is outside 1..8", output ? "output" : "input", in.io.number));
   }
 }
 
 // Absolute targets must lie in each motor's range; a relative MOVE larger
 // than the whole range can never succeed either.
-void Checker::checkTargets(const Instruction& in) {
-  if (in.values.size() != motors_.size()) return;
+void Checker::State::checkTargets(const Instruction& in) {
+  if (in.values.size() != motors().size()) return;
   const std::string_view name = vm::info(in.op).name;
-  for (std::size_t m = 0; m < motors_.size(); ++m) {
-    const vm::MotorSpec& spec = motors_[m];
+  for (std::size_t m = 0; m < motors().size(); ++m) {
+    const vm::MotorSpec& spec = motors()[m];
     const Value& v = in.values[m];
     if (vm::has(in.op, vm::kRelative)) {
       const std::int64_t span = std::int64_t{spec.max} - spec.min;
       if (v.number > span || -v.number > span)
-        diag_.error(v.pos, fmt::format("MOVE by {} can never keep motor {} within its range {}..{}", v.number,
-                                       spec.letter, spec.min, spec.max));
+        diag.error(v.pos, fmt::format("MOVE by {} can never keep motor {} within its range {}..{}", v.number,
+                                      spec.letter, spec.min, spec.max));
     } else if (v.number < spec.min || v.number > spec.max) {
-      diag_.error(v.pos, fmt::format("{} target {} for motor {} is outside its range {}..{}", name, v.number,
-                                     spec.letter, spec.min, spec.max));
+      diag.error(v.pos, fmt::format("{} target {} for motor {} is outside its range {}..{}", name, v.number,
+                                    spec.letter, spec.min, spec.max));
     }
   }
 }
 
-void Checker::warnUnassignedVariables() {
-  for (std::size_t s = 0; s < res_.variables.size(); ++s)
-    if (!assigned_[s] && firstRead_[s].line != 0)
-      diag_.warning(firstRead_[s],
-                    fmt::format("variable '{}' is never assigned by SET or ADD; it is always 0", res_.variables[s]));
+// Labels, points and line numbers, now that the whole file is read.
+void Checker::State::resolve() {
+  const std::size_t n = image.code.size();
+  for (const Reference& r : jumps) {
+    if (r.name.empty()) {
+      if (r.number > n)
+        diag.error(r.pos, fmt::format("line number {} does not exist (the program has {} instruction{})", r.number, n,
+                                      n == 1 ? "" : "s"));
+      continue;
+    }
+    const auto it = labels.find(r.name);
+    if (it == labels.end()) {
+      diag.error(r.pos, fmt::format("undefined label '{}'", r.name));
+      continue;
+    }
+    image.code[r.index].d = static_cast<std::int32_t>(it->second.index);
+  }
+  for (const Reference& r : pointUses) {
+    const auto it = points.find(r.name);
+    if (it == points.end()) {
+      diag.error(r.pos, fmt::format("undefined point '{}'", r.name));
+      continue;
+    }
+    image.code[r.index].b = static_cast<std::uint16_t>(it->second.index);
+  }
+  if (points.size() > kMaxSlots) diag.error(pointsHeader, "more than 65535 points");
+  std::vector<Reference>().swap(jumps);
+  std::vector<Reference>().swap(pointUses);
+}
+
+void Checker::State::warnUnassignedVariables() {
+  for (std::size_t s = 0; s < image.variables.size(); ++s)
+    if (!assigned[s] && firstRead[s].line != 0)
+      diag.warning(firstRead[s],
+                   fmt::format("variable '{}' is never assigned by SET or ADD; it is always 0", image.variables[s]));
 }
 
 // Instructions reachable from `starts`, following fall-through and jumps
 // (a GOSUB continues both into its subroutine and, after it, to the next).
-std::vector<bool> Checker::reachable(const std::vector<std::uint32_t>& starts) const {
-  const std::size_t n = program_.instructions.size();
+std::vector<bool> Checker::State::reachable(const std::vector<std::uint32_t>& starts) const {
+  const std::size_t n = image.code.size();
   std::vector<bool> seen(n, false);
   std::vector<std::uint32_t> work(starts);
   while (!work.empty()) {
@@ -202,48 +267,40 @@ std::vector<bool> Checker::reachable(const std::vector<std::uint32_t>& starts) c
     work.pop_back();
     if (i >= n || seen[i]) continue;
     seen[i] = true;
-    const Instruction& in = program_.instructions[i];
-    if (!in.known) {
+    if (!known[i]) {
       work.push_back(i + 1);
       continue;
     }
-    const std::uint8_t flags = vm::info(in.op).flags;
+    const std::uint8_t flags = vm::info(image.code[i].op).flags;
     if (flags & vm::kFallsThrough) work.push_back(i + 1);
-    if (flags & vm::kJumps) work.push_back(res_.target[i]);
+    if (flags & vm::kJumps) work.push_back(static_cast<std::uint32_t>(image.code[i].d));
   }
   return seen;
 }
 
-void Checker::analyseFlow() {
-  const auto& code = program_.instructions;
+void Checker::State::analyseFlow() {
+  const std::vector<vm::Instr>& code = image.code;
   std::vector<std::uint32_t> subroutines;
   for (std::size_t i = 0; i < code.size(); ++i)
-    if (code[i].known && code[i].op == vm::Op::Gosub) subroutines.push_back(res_.target[i]);
-  const bool targetsResolved = !diag_.hasErrors();
+    if (known[i] && code[i].op == vm::Op::Gosub) subroutines.push_back(static_cast<std::uint32_t>(code[i].d));
+  const bool targetsResolved = !diag.hasErrors();
   // Reachability needs every jump target; with errors, only the check that
   // does not: a RETURN in a program without any GOSUB.
   if (subroutines.empty() || targetsResolved) {
     const std::vector<bool> inSubroutine = reachable(subroutines);
     for (std::size_t i = 0; i < code.size(); ++i) {
-      if (!code[i].known || code[i].op != vm::Op::Return || inSubroutine[i]) continue;
-      diag_.error(code[i].pos, subroutines.empty() ? std::string("RETURN without any GOSUB in the program")
-                                                   : std::string("RETURN that no GOSUB can reach"));
+      if (!known[i] || code[i].op != vm::Op::Return || inSubroutine[i]) continue;
+      diag.error(posOf(i), subroutines.empty() ? std::string("RETURN without any GOSUB in the program")
+                                               : std::string("RETURN that no GOSUB can reach"));
     }
   }
   if (code.empty() || !targetsResolved) return;
   const std::vector<bool> live = reachable({0});
   for (std::size_t i = 1; i < code.size(); ++i) {
     if (live[i] || !live[i - 1]) continue;
-    const Instruction& before = code[i - 1];
-    diag_.warning(code[i].pos, fmt::format("unreachable code: nothing jumps here and {} on line {} does not continue",
-                                           vm::info(before.op).name, before.pos.line));
+    diag.warning(posOf(i), fmt::format("unreachable code: nothing jumps here and {} on line {} does not continue",
+                                       vm::info(code[i - 1].op).name, image.lines[i - 1]));
   }
-}
-
-}  // namespace
-
-Resolution check(const Program& program, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics) {
-  return Checker(program, motors, diagnostics).run();
 }
 
 }  // namespace rs::compiler

@@ -1,23 +1,45 @@
-// Semantic checks: names resolved (labels, points, variables), numbers in
-// range, control flow analysed. Produces the resolution codegen needs.
+// Semantic checks and code generation, one instruction at a time as the
+// AST builder hands them on: names resolved (labels, points, variables),
+// numbers in range, each instruction encoded at once (codegen.h); what
+// needs the whole file (a label defined further down, a point of the
+// POINTS section, a line number beyond the last instruction) is noted and
+// resolved at the end, and control flow analysed then, on the code. So
+// the compiler holds the image being built and the references still open,
+// never the whole program's AST.
 #pragma once
 
-#include <span>
-#include <string_view>
-#include <vector>
+#include <memory>
+#include <optional>
+#include <string>
 
 #include "compiler/ast.h"
+#include "compiler/ast_builder.h"
+#include "compiler/codegen.h"
 #include "diag/diagnostic.h"
 #include "vm/image.h"
 
 namespace rs::compiler {
 
-struct Resolution {
-  std::vector<std::uint32_t> target;          // per instruction: 0-based jump target
-  std::vector<std::uint16_t> slot;            // per instruction: variable slot or point index
-  std::vector<std::string_view> variables;    // slot -> name, first spelling
-};
+class Checker final : public AstSink {
+ public:
+  /// `expectedInstructions`: room reserved (one per line is the most).
+  Checker(const Target& target, std::string sourceName, diag::Diagnostics& diagnostics,
+          std::size_t expectedInstructions);
+  ~Checker() override;
+  Checker(const Checker&) = delete;
+  Checker& operator=(const Checker&) = delete;
 
-Resolution check(const Program& program, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics);
+  void instruction(const Instruction& in) override;
+  void pointsHeader(diag::Pos pos) override;
+  void point(const PointDef& point) override;
+
+  /// Resolves what waited for the end of the file and analyses control
+  /// flow; the image when no error was reported (by anyone).
+  std::optional<vm::Image> finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> s_;
+};
 
 }  // namespace rs::compiler

@@ -1,9 +1,15 @@
-// AST + resolution -> image. Runs only on programs without errors, so it
-// never reports anything; the opcode table says which fields each op fills.
+// One instruction of the AST to its bytecode record. The checker
+// (checks.h) calls it for every instruction as the AST builder hands it
+// on, with the slot and jump target it resolved (or 0 until they are
+// known: a forward label or a point is patched at the end); it never
+// reports anything. The opcode table says which fields each op fills.
 #pragma once
 
+#include <cstdint>
+#include <string>
+#include <vector>
+
 #include "compiler/ast.h"
-#include "compiler/checks.h"
 #include "vm/image.h"
 
 namespace rs::compiler {
@@ -14,7 +20,7 @@ struct Target {
   std::uint16_t callDepthLimit = vm::kDefaultCallDepth;
 };
 
-vm::Image generate(const Program& program, const Resolution& resolution, const Target& target,
-                   std::string sourceName);
+/// The record of `in`; its motor vector or triple is appended to `constants`.
+vm::Instr encode(const Instruction& in, std::uint16_t slot, std::uint32_t target, std::vector<std::int32_t>& constants);
 
 }  // namespace rs::compiler

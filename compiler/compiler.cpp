@@ -25,28 +25,28 @@ std::optional<diag::Diagnostic> checkEncoding(const diag::SourceFile& source, st
                           {}, "save the file with Unix (LF) or Windows (CR LF) line ends"};
 }
 
-CompileResult compile(const diag::SourceFile& source, const Target& target) {
+CompileResult compile(const diag::SourceFile& source, const Target& target, std::size_t keepDiagnostics) {
   CompileResult result;
   if (auto bad = checkEncoding(source)) {
     result.diagnostics.push_back(std::move(*bad));
     return result;
   }
-  diag::Diagnostics diagnostics(source.name());
+  diag::Diagnostics diagnostics(source.name(), keepDiagnostics);
   LineParser parser(source, diagnostics);
-  const Program program = buildAst(source, parser, target.motors, diagnostics);
-  const Resolution resolution = check(program, target.motors, diagnostics);
-  if (!diagnostics.hasErrors()) result.image = generate(program, resolution, target, source.name());
+  Checker checker(target, source.name(), diagnostics, source.lineCount());
+  buildAst(source, parser, target.motors, diagnostics, checker);
+  result.image = checker.finish();
   result.diagnostics = diagnostics.sorted();
+  result.omitted = diagnostics.omitted();
   return result;
 }
 
-std::string dumpTokens(const diag::SourceFile& source, std::vector<diag::Diagnostic>& diagnostics) {
+std::string dumpTokens(const diag::SourceFile& source, diag::Diagnostics& diagnostics) {
   if (auto bad = checkEncoding(source)) {
-    diagnostics.push_back(std::move(*bad));
+    diagnostics.error(bad->pos, std::move(bad->message));
     return {};
   }
-  diag::Diagnostics d(source.name());
-  Lexer lexer(source, d);
+  Lexer lexer(source, diagnostics);
   std::string out;
   for (;;) {
     const RawToken t = lexer.scan();
@@ -57,7 +57,6 @@ std::string dumpTokens(const diag::SourceFile& source, std::vector<diag::Diagnos
                  : fmt::format("{:<8} {}\n", pos, tokenTypeName(t.type));
     if (t.type == antlr4::Token::EOF) break;
   }
-  diagnostics = d.sorted();
   return out;
 }
 

@@ -19,22 +19,26 @@ inline constexpr std::size_t kMaxSourceBytes = std::size_t{256} << 20;  // 256 M
 struct CompileResult {
   std::optional<vm::Image> image;        // set when there were no errors
   std::vector<diag::Diagnostic> diagnostics;   // sorted by position
+  diag::Omitted omitted;                       // found beyond the first `keepDiagnostics`
   bool ok() const { return image.has_value(); }
 };
 
 /// source -> tokens -> ANTLR parse tree -> AST -> checks -> bytecode.
-CompileResult compile(const diag::SourceFile& source, const Target& target);
+/// With `keepDiagnostics` > 0 only the first that many diagnostics (by
+/// position) are kept; the others are counted in `omitted`.
+CompileResult compile(const diag::SourceFile& source, const Target& target, std::size_t keepDiagnostics = 0);
 
 /// Checks that a source can be lexed at all (size, UTF-8); returns the error.
 /// `what` names the kind of file in the message ("programs are UTF-8 text").
 std::optional<diag::Diagnostic> checkEncoding(const diag::SourceFile& source, std::string_view what = "programs");
 
-/// `robotsim tokens`: one line per token the parser sees.
-std::string dumpTokens(const diag::SourceFile& source, std::vector<diag::Diagnostic>& diagnostics);
+/// `robotsim tokens`: one line per token the parser sees; problems go to
+/// `diagnostics` (made for the source's name).
+std::string dumpTokens(const diag::SourceFile& source, diag::Diagnostics& diagnostics);
 
 /// `robotsim ast`: the AST as an indented outline; with `parseTree`, ANTLR's
 /// parse tree in LISP form first.
 std::string dumpAst(const diag::SourceFile& source, const Target& target, bool parseTree,
-                    std::vector<diag::Diagnostic>& diagnostics);
+                    diag::Diagnostics& diagnostics);
 
 }  // namespace rs::compiler

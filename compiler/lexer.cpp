@@ -72,6 +72,18 @@ void Lexer::badCharacter() {
   ++col_;
 }
 
+void Lexer::skipRestOfLine() {
+  diagnostics_.error({line_, col_},
+                     fmt::format("more than {} words on one line: the rest of the line is skipped", kMaxLineWords));
+  std::size_t end = text_.find('\n', pos_);
+  if (end == std::string_view::npos)
+    end = text_.size();
+  else if (end > pos_ && text_[end - 1] == '\r')
+    --end;  // the NEWLINE token is "\r\n"
+  for (; pos_ < end; ++pos_)
+    if ((static_cast<unsigned char>(text_[pos_]) & 0xC0) != 0x80) ++col_;
+}
+
 RawToken Lexer::scan() {
   for (;;) {
     skipBlanksAndComments();
@@ -90,8 +102,16 @@ RawToken Lexer::scan() {
       t.end = pos_;
       ++line_;
       col_ = 1;
+      lineWords_ = 0;
       return t;
     }
+    const bool word = isIdentStart(c) || isDigit(c) || c == '<' || c == '>' || c == '=' || c == ':' ||
+                      ((c == '+' || c == '-') && pos_ + 1 < text_.size() && isDigit(text_[pos_ + 1]));
+    if (word && lineWords_ == kMaxLineWords) {
+      skipRestOfLine();
+      continue;
+    }
+    lineWords_ += word ? 1 : 0;
     if (isIdentStart(c)) {
       t.type = P::IDENT;
       while (pos_ < text_.size() && isIdentPart(text_[pos_])) ++pos_;

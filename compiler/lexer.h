@@ -51,6 +51,13 @@ class SourceToken final : public antlr4::Token {
   std::uint32_t begin_, end_, line_, col_, index_, type_;
 };
 
+/// Words (tokens other than NEWLINE) a line may have: a label, an
+/// instruction and one value for each of at most 26 motors need 29. The
+/// lexer reports the first word beyond and skips the rest of the line, so
+/// a line of a million words costs one error and no parse tree of a
+/// million nodes.
+inline constexpr std::uint32_t kMaxLineWords = 64;
+
 class Lexer final : public antlr4::TokenSource {
  public:
   /// The source must be valid UTF-8 (see findInvalidUtf8) and outlive the lexer.
@@ -71,6 +78,7 @@ class Lexer final : public antlr4::TokenSource {
  private:
   void skipBlanksAndComments();
   void badCharacter();
+  void skipRestOfLine();
 
   const diag::SourceFile& source_;
   diag::Diagnostics& diagnostics_;
@@ -78,6 +86,7 @@ class Lexer final : public antlr4::TokenSource {
   std::size_t pos_ = 0;
   std::uint32_t line_ = 1;
   std::uint32_t col_ = 1;
+  std::uint32_t lineWords_ = 0;  // words of the current line so far
   size_t pulled_ = 0;  // tokens handed out by nextToken()
 };
 

@@ -17,7 +17,8 @@ class SyntaxErrors final : public antlr4::BaseErrorListener {
   void syntaxError(antlr4::Recognizer*, antlr4::Token* token, size_t line, size_t col, const std::string&,
                    std::exception_ptr) override {
     const diag::Pos pos{static_cast<std::uint32_t>(line), static_cast<std::uint32_t>(col + 1)};
-    diagnostics_.error(pos, token ? fmt::format("unexpected '{}'", token->getText()) : std::string("syntax error"));
+    diagnostics_.error(
+        pos, token ? fmt::format("unexpected '{}'", diag::excerpt(token->getText())) : std::string("syntax error"));
   }
 
  private:

@@ -1,8 +1,9 @@
 #include "diag/diagnostic.h"
 
-#include <algorithm>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cstdint>
 #include "base/text.h"
 
 namespace rs::diag {
@@ -24,14 +25,40 @@ std::string_view severityName(Severity s) {
 
 void Diagnostics::add(Pos pos, Severity s, std::string message) {
   if (s == Severity::Error) ++errors_;
-  list_.push_back({file_, pos, s, std::move(message)});
+  const Key key{pos, reported_++, list_.size()};
+  if (keep_ == 0) {
+    list_.push_back({file_, pos, s, std::move(message)});
+    return;
+  }
+  if (list_.size() < keep_) {
+    heap_.push_back(key);
+    std::push_heap(heap_.begin(), heap_.end(), before);
+    list_.push_back({file_, pos, s, std::move(message)});
+    return;
+  }
+  // Full: the new one replaces the last kept, if it comes before it.
+  if (!before(key, heap_.front())) return omitted_.count(s);
+  std::pop_heap(heap_.begin(), heap_.end(), before);
+  const std::size_t slot = heap_.back().slot;
+  omitted_.count(list_[slot].severity);
+  heap_.back() = {pos, key.seq, slot};
+  std::push_heap(heap_.begin(), heap_.end(), before);
+  list_[slot] = {file_, pos, s, std::move(message)};
 }
 
 std::vector<Diagnostic> Diagnostics::sorted() const {
-  std::vector<Diagnostic> out = list_;
-  std::stable_sort(out.begin(), out.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    return a.pos.line != b.pos.line ? a.pos.line < b.pos.line : a.pos.col < b.pos.col;
-  });
+  if (keep_ == 0) {
+    std::vector<Diagnostic> out = list_;
+    std::stable_sort(out.begin(), out.end(), [](const Diagnostic& a, const Diagnostic& b) {
+      return a.pos.line != b.pos.line ? a.pos.line < b.pos.line : a.pos.col < b.pos.col;
+    });
+    return out;
+  }
+  std::vector<Key> keys = heap_;
+  std::sort(keys.begin(), keys.end(), before);
+  std::vector<Diagnostic> out;
+  out.reserve(keys.size());
+  for (const Key& k : keys) out.push_back(list_[k.slot]);
   return out;
 }
 
@@ -44,36 +71,46 @@ std::string render(const Diagnostic& d, const SourceFile* source) {
                                              severityName(d.severity), message)
                                : fmt::format("{}: {}: {}\n", file, severityName(d.severity), message);
   if (source && d.pos.line != 0 && d.pos.line <= source->lineCount()) {
-    const DisplayLine shown = displayLine(source->line(d.pos.line), d.pos.col);
+    const DisplayLine shown = displayLine(*source, d.pos);
     out += fmt::format("  {}\n  {}^\n", shown.text, shown.caretIndent);
   }
   if (!d.hint.empty()) out += fmt::format("  hint: {}\n", base::safeText(d.hint));
   return out;
 }
 
-DisplayLine displayLine(std::string_view line, std::uint32_t caretCol) {
-  constexpr std::uint32_t kWidth = 100;  // columns of context shown at most
+DisplayLine displayLine(const SourceFile& source, Pos pos) {
+  constexpr std::uint32_t kWidth = 100;        // columns of context shown at most
+  constexpr std::string_view kCut = "\u2026";  // "…", one column
+  const std::string_view text = source.text();
+  const std::string_view line = source.line(pos.line);
+  const std::uint32_t caretCol = std::max<std::uint32_t>(pos.col, 1);
   const std::uint32_t first = caretCol > kWidth / 2 ? caretCol - kWidth / 2 : 1;
+  const auto lineEnd = static_cast<std::size_t>(line.data() - text.data()) + line.size();
   DisplayLine out;
-  if (first > 1) out.text = "...", out.caretIndent = "   ";
-  std::uint32_t col = 1;
-  for (std::size_t i = 0; i < line.size() && col < first + kWidth;) {
-    std::size_t n = utf8SequenceLength(line, i);
-    const auto c = static_cast<unsigned char>(line[i]);
+  if (first > 1) out.text = kCut, out.caretIndent = " ";
+  std::uint32_t col = first;
+  std::size_t i = source.offsetOf({pos.line, first});
+  for (; i < lineEnd && col < first + kWidth; ++col) {
+    std::size_t n = utf8SequenceLength(text, i);
+    const auto c = static_cast<unsigned char>(text[i]);
     // Control characters and bytes that are not UTF-8 print as U+FFFD, one
     // column each, so the caret still lines up and no raw bytes reach a
     // terminal.
     const bool printable = n > 1 || (n == 1 && (c >= 0x20 || c == '\t') && c != 0x7F);
     if (n == 0) n = 1;
-    if (col >= first) {
-      out.text += printable ? std::string(line.substr(i, n)) : std::string("\xEF\xBF\xBD");
-      if (col < caretCol) out.caretIndent += c == '\t' ? '\t' : ' ';
-    }
+    out.text += printable ? text.substr(i, n) : std::string_view("\xEF\xBF\xBD");
+    if (col < caretCol) out.caretIndent += c == '\t' ? '\t' : ' ';
     i += n;
-    ++col;
   }
-  if (col >= first + kWidth) out.text += "...";
+  if (i < lineEnd) out.text += kCut;
   return out;
+}
+
+std::string excerpt(std::string_view text, std::size_t max) {
+  std::uint32_t col = 0;
+  const std::size_t cut = stepColumns(text, 0, text.size(), col, static_cast<std::uint32_t>(max), SIZE_MAX);
+  if (cut >= text.size()) return std::string(text);
+  return std::string(text.substr(0, cut)) + "\u2026";
 }
 
 }  // namespace rs::diag

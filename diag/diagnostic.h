@@ -32,33 +32,77 @@ std::string_view severityName(Severity s);
 /// True when any of them is an error (warnings do not count).
 bool hasErrors(std::span<const Diagnostic> diagnostics);
 
+/// Diagnostics left out (not kept, or not shown), by severity; notes count
+/// as warnings.
+struct Omitted {
+  std::size_t errors = 0;
+  std::size_t warnings = 0;
+  bool any() const { return errors + warnings > 0; }
+  void count(Severity s) { ++(s == Severity::Error ? errors : warnings); }
+  Omitted& operator+=(const Omitted& o) {
+    errors += o.errors;
+    warnings += o.warnings;
+    return *this;
+  }
+};
+
+/// The collector every reader reports to. With a limit (`keep` > 0) it
+/// keeps only the first `keep` diagnostics by position, those sorted()
+/// would list first, and counts the others (omitted()): a file with a
+/// million errors costs a million counts, not a million stored messages.
 class Diagnostics {
  public:
-  explicit Diagnostics(std::string file) : file_(std::move(file)) {}
+  explicit Diagnostics(std::string file, std::size_t keep = 0) : file_(std::move(file)), keep_(keep) {}
   void error(Pos pos, std::string message) { add(pos, Severity::Error, std::move(message)); }
   void warning(Pos pos, std::string message) { add(pos, Severity::Warning, std::move(message)); }
   void add(Pos pos, Severity s, std::string message);
 
+  /// Counts every error reported, kept or not.
   bool hasErrors() const { return errors_ > 0; }
   std::size_t errorCount() const { return errors_; }
+  /// Those kept: in the order reported when there is no limit.
   const std::vector<Diagnostic>& all() const { return list_; }
-  /// Sorted by position (stable), the order they are printed in.
+  /// Those kept, sorted by position (stable), the order they are printed in.
   std::vector<Diagnostic> sorted() const;
+  /// Those not kept (none without a limit).
+  Omitted omitted() const { return omitted_; }
 
  private:
+  // With a limit: a max-heap of the kept ones' keys, the last by position
+  // (then by order reported) on top, each naming its slot in list_.
+  struct Key {
+    Pos pos;
+    std::size_t seq = 0;
+    std::size_t slot = 0;
+  };
+  static bool before(const Key& a, const Key& b) {
+    if (a.pos.line != b.pos.line) return a.pos.line < b.pos.line;
+    return a.pos.col != b.pos.col ? a.pos.col < b.pos.col : a.seq < b.seq;
+  }
+
   std::string file_;
+  std::size_t keep_ = 0;
   std::vector<Diagnostic> list_;
+  std::vector<Key> heap_;  // with a limit only
+  std::size_t reported_ = 0;
   std::size_t errors_ = 0;
+  Omitted omitted_;
 };
 
-/// A source line made safe to print, cut to a window around the caret
-/// column, and the blanks (spaces, or tabs where the line has them) that
-/// put a caret under that column.
+/// A source line made safe to print, cut to a window of at most 100
+/// columns around the caret (`…` where it is cut), and the blanks (spaces,
+/// or tabs where the line has them) that put a caret under that column. Its
+/// cost is that of the window, however long the line.
 struct DisplayLine {
   std::string text;
   std::string caretIndent;
 };
-DisplayLine displayLine(std::string_view line, std::uint32_t caretCol);
+DisplayLine displayLine(const SourceFile& source, Pos pos);
+
+/// `text` quoted in a message: as it is when short, else its first `max`
+/// characters and `…`, so that a 10 MB word does not make a 10 MB message
+/// (64: the longest name a program may use is quoted whole).
+std::string excerpt(std::string_view text, std::size_t max = 64);
 
 /// "file:line:col: error: message", then the source line and a caret under
 /// the column when the source is known.

@@ -1,27 +1,47 @@
 #include "diag/source_file.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
+#include <iterator>
 
 namespace rs::diag {
 
 SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
   if (const std::size_t mark = text_.size() - withoutByteOrderMark(text_).size()) text_.erase(0, mark);
-  lineStarts_.push_back(0);
   const char* const begin = text_.data();
   const char* const end = begin + text_.size();
   // memchr: the library's vectorised search, much faster than a byte loop.
+  // Counted first, so that the index is allocated once, at its size.
+  std::size_t breaks = 0;
+  for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p))));)
+    ++breaks, ++p;
+  lineStarts_.reserve(breaks + 1);
+  lineStarts_.push_back(0);
   for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p))));) {
     if (++p == end) break;
     lineStarts_.push_back(static_cast<std::size_t>(p - begin));
+  }
+  for (std::uint32_t n = 1; n <= lineCount(); ++n) {
+    const std::string_view l = line(n);
+    if (l.size() <= kCheckpointBytes) continue;
+    const auto start = static_cast<std::size_t>(l.data() - begin);
+    const std::size_t end = start + l.size();
+    std::uint32_t col = 1;
+    for (std::size_t at = start;;) {
+      at = stepColumns(text_, at, end, col, UINT32_MAX, at + kCheckpointBytes);
+      if (at >= end) break;
+      checkpoints_.push_back({at, n, col});
+    }
   }
 }
 
 std::string_view SourceFile::line(std::uint32_t number) const {
   if (number == 0 || number > lineStarts_.size()) return {};
   const std::size_t start = lineStarts_[number - 1];
-  std::size_t end = text_.find('\n', start);
-  if (end == std::string::npos) end = text_.size();
+  // The next line's start follows this line's '\n'; the last line ends the text.
+  std::size_t end = number < lineStarts_.size() ? lineStarts_[number] - 1 : text_.size();
+  if (number == lineStarts_.size() && end > start && text_[end - 1] == '\n') --end;
   if (end > start && text_[end - 1] == '\r') --end;
   return std::string_view(text_).substr(start, end - start);
 }
@@ -34,18 +54,47 @@ LoneCarriageReturn SourceFile::findLoneCarriageReturn() const {
     if (p + 1 < end && p[1] == '\n') continue;
     const std::size_t at = static_cast<std::size_t>(p - begin);
     // The line it is on: the last line start at or before it.
-    std::size_t line = 0, lo = 0, hi = lineStarts_.size();
-    while (lo < hi) {
-      const std::size_t mid = (lo + hi) / 2;
-      if (lineStarts_[mid] <= at) line = mid, lo = mid + 1;
-      else hi = mid;
-    }
-    const std::string_view before = std::string_view(text_).substr(lineStarts_[line], at - lineStarts_[line]);
+    const auto next = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), at);
+    const auto line = static_cast<std::uint32_t>(next - lineStarts_.begin());
     std::uint32_t col = 1;
-    for (std::size_t i = 0; i < before.size(); i += std::max<std::size_t>(utf8SequenceLength(before, i), 1)) ++col;
-    return {true, {static_cast<std::uint32_t>(line + 1), col}};
+    stepColumns(text_, lineStarts_[line - 1], at, col, UINT32_MAX, at);
+    return {true, {line, col}};
   }
   return {};
+}
+
+std::size_t SourceFile::offsetOf(Pos pos) const {
+  const std::string_view l = line(pos.line);
+  std::size_t at = static_cast<std::size_t>(l.data() - text_.data());
+  const std::size_t end = at + l.size();
+  std::uint32_t col = 1;
+  // The last checkpoint at or before the column, if it is on this line.
+  const auto after = std::upper_bound(checkpoints_.begin(), checkpoints_.end(), pos, [](Pos p, const Checkpoint& c) {
+    return p.line != c.line ? p.line < c.line : p.col < c.col;
+  });
+  if (after != checkpoints_.begin() && std::prev(after)->line == pos.line) {
+    at = std::prev(after)->offset;
+    col = std::prev(after)->col;
+  }
+  return stepColumns(text_, at, end, col, std::max<std::uint32_t>(pos.col, 1), SIZE_MAX);
+}
+
+std::size_t stepColumns(std::string_view text, std::size_t i, std::size_t end, std::uint32_t& col,
+                        std::uint32_t untilCol, std::size_t untilByte) {
+  constexpr std::uint64_t kHighBits = 0x8080808080808080ull;
+  while (i < end && col < untilCol && i < untilByte) {
+    // Mostly ASCII: eight characters at a time.
+    std::uint64_t word;
+    if (i + 8 <= end && i + 8 <= untilByte && untilCol - col >= 8 &&
+        (std::memcpy(&word, text.data() + i, 8), (word & kHighBits) == 0)) {
+      i += 8;
+      col += 8;
+      continue;
+    }
+    i += std::max<std::size_t>(utf8SequenceLength(text, i), 1);
+    ++col;
+  }
+  return i;
 }
 
 namespace {

@@ -41,14 +41,31 @@ class SourceFile {
   const std::string& name() const { return name_; }
   const std::string& text() const { return text_; }
   std::uint32_t lineCount() const { return static_cast<std::uint32_t>(lineStarts_.size()); }
-  /// The text of a line (1-based), without its line break.
+  /// The text of a line (1-based), without its line break. Constant time,
+  /// whatever the line's length.
   std::string_view line(std::uint32_t number) const;
   LoneCarriageReturn findLoneCarriageReturn() const;
+  /// The byte offset in text() of column `pos.col` of line `pos.line`
+  /// (columns count characters; a byte that is not UTF-8 counts as one), or
+  /// of the line's end when the line is shorter. Reads at most a few KiB,
+  /// however long the line: long lines keep checkpoints (below).
+  std::size_t offsetOf(Pos pos) const;
 
  private:
+  // Every kCheckpointBytes of a line longer than that: where a character
+  // starts and its column, so that offsetOf never counts columns from the
+  // start of a 10 MB line.
+  struct Checkpoint {
+    std::size_t offset = 0;
+    std::uint32_t line = 0;
+    std::uint32_t col = 0;
+  };
+  static constexpr std::size_t kCheckpointBytes = 4096;
+
   std::string name_;
   std::string text_;
   std::vector<std::size_t> lineStarts_;
+  std::vector<Checkpoint> checkpoints_;  // sorted by offset, hence by (line, col)
 };
 
 /// The position of the first byte that is not valid UTF-8, if any.
@@ -61,5 +78,12 @@ Utf8Problem findInvalidUtf8(std::string_view text);
 
 /// Length of the valid UTF-8 sequence starting at text[i], or 0 (base/text.h).
 using base::utf8SequenceLength;
+
+/// Steps over whole characters of `text` from byte `i` (a character's
+/// start), counting one column each (a byte that is not UTF-8 is one
+/// character), and stops at `end`, once `col` reaches `untilCol`, or at the
+/// first character that starts at or after `untilByte`: the byte reached.
+std::size_t stepColumns(std::string_view text, std::size_t i, std::size_t end, std::uint32_t& col,
+                        std::uint32_t untilCol, std::size_t untilByte);
 
 }  // namespace rs::diag

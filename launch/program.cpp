@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <ostream>
 
 #include "base/file_io.h"
@@ -58,8 +59,9 @@ void readProgram(const std::string& path, const compiler::Target& target, Loaded
                                 "this is not a compiled image (it does not start with the image magic number); "
                                 "compiling it as source"});
   into.source.emplace(path, std::move(*read.bytes));
-  compiler::CompileResult compiled = compiler::compile(*into.source, target);
+  compiler::CompileResult compiled = compiler::compile(*into.source, target, into.maxErrors);
   for (diag::Diagnostic& d : compiled.diagnostics) into.diagnostics.push_back(std::move(d));
+  into.omitted += compiled.omitted;
   if (compiled.image) into.image = std::make_shared<const vm::Image>(std::move(*compiled.image));
 }
 
@@ -84,7 +86,30 @@ const diag::SourceFile* LoadedProgram::sourceOf(const std::string& file) const {
 }
 
 void printDiagnostics(std::ostream& err, const std::vector<diag::Diagnostic>& diags, const LoadedProgram& program) {
-  for (const diag::Diagnostic& d : diags) err << diag::render(d, program.sourceOf(d.file));
+  printDiagnostics(
+      err, diags, [&program](const std::string& file) { return program.sourceOf(file); }, program.maxErrors,
+      program.omitted);
+}
+
+void printDiagnostics(std::ostream& err, std::span<const diag::Diagnostic> diags,
+                      const std::function<const diag::SourceFile*(const std::string&)>& sourceOf, std::size_t max,
+                      diag::Omitted omitted) {
+  const std::size_t shown = max == 0 ? diags.size() : std::min(max, diags.size());
+  for (const diag::Diagnostic& d : diags.first(shown)) err << diag::render(d, sourceOf(d.file));
+  for (const diag::Diagnostic& d : diags.subspan(shown)) omitted.count(d.severity);
+  err << omittedNote(omitted);
+}
+
+std::string omittedNote(const diag::Omitted& omitted) {
+  if (!omitted.any()) return {};
+  const auto count = [](std::size_t n, std::string_view what) {
+    return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
+  };
+  const std::string what = omitted.errors == 0     ? count(omitted.warnings, "more warning")
+                           : omitted.warnings == 0 ? count(omitted.errors, "more error")
+                                                   : fmt::format("{} and {}", count(omitted.errors, "more error"),
+                                                                 count(omitted.warnings, "warning"));
+  return fmt::format("robotsim: note: {} not shown; --max-errors 0 shows all\n", what);
 }
 
 std::shared_ptr<const workcell::Workcell> loadCell(const ProgramRequest& request, LoadedProgram& into) {
@@ -98,6 +123,7 @@ std::shared_ptr<const workcell::Workcell> loadCell(const ProgramRequest& request
 
 LoadedProgram loadProgram(const ProgramRequest& request) {
   LoadedProgram program;
+  program.maxErrors = request.maxErrors;
   if (request.cell.empty()) {
     readProgram(request.file, defaultTarget(), program);
   } else {
@@ -131,6 +157,7 @@ LoadedProgram loadProgram(const ProgramRequest& request) {
 
 LoadedProgram loadProgramToDraw(const ProgramRequest& request) {
   LoadedProgram program;
+  program.maxErrors = request.maxErrors;
   if (!request.cell.empty()) {
     program.cell = loadCell(request, program);
     if (!program.cell) return program;

@@ -5,8 +5,10 @@
 // with its file's text for the caret. The one place `--cell` is loaded.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,9 @@ struct ProgramRequest {
   std::string file;                  ///< program source or image
   std::string cell;                  ///< --cell: workcell or robot, file or library name ("" = none)
   std::vector<std::string> libDirs;  ///< --lib
+  /// --max-errors: diagnostics kept and printed at most (0 = all); the rest
+  /// are counted, and printDiagnostics says how many.
+  std::size_t maxErrors = 0;
 };
 
 struct LoadedProgram {
@@ -34,6 +39,8 @@ struct LoadedProgram {
   std::shared_ptr<const vm::Image> image;          ///< set when it compiled / verified
   std::shared_ptr<const workcell::Workcell> cell;  ///< what it runs on, if a workcell
   std::vector<diag::Diagnostic> diagnostics;
+  std::size_t maxErrors = 0;  ///< the request's: printDiagnostics shows at most this many (0 = all)
+  diag::Omitted omitted;      ///< found beyond the first maxErrors, not kept
   /// The description files read for --cell, kept for their source lines.
   std::shared_ptr<const compiler::Library> descriptions;
   bool ok() const { return image != nullptr && !diag::hasErrors(diagnostics); }
@@ -60,7 +67,20 @@ compiler::Target defaultTarget();
 /// The machine of a workcell: its first robot's motors (arm, then gripper).
 compiler::Target cellTarget(const workcell::Workcell& cell);
 
-/// Every diagnostic, each under its own file's source line when known.
+/// The diagnostics, each under its own file's source line when known: at
+/// most program.maxErrors of them (0 = all), then a note of how many more
+/// there were (those not printed and program.omitted).
 void printDiagnostics(std::ostream& err, const std::vector<diag::Diagnostic>& diags, const LoadedProgram& program);
+
+/// The same for any diagnostics: at most `max` (0 = all) printed, each with
+/// the source `sourceOf` finds for its file, then the note counting those
+/// not printed and `omitted`.
+void printDiagnostics(std::ostream& err, std::span<const diag::Diagnostic> diags,
+                      const std::function<const diag::SourceFile*(const std::string&)>& sourceOf, std::size_t max,
+                      diag::Omitted omitted);
+
+/// "robotsim: note: 3 more errors not shown; --max-errors 0 shows all", or
+/// empty when nothing was left out.
+std::string omittedNote(const diag::Omitted& omitted);
 
 }  // namespace rs::launch

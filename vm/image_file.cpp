@@ -1,8 +1,10 @@
 #include "vm/image_file.h"
 
-#include <cstring>
 #include <fmt/format.h>
 #include <unordered_map>
+
+#include <algorithm>
+#include <cstring>
 
 #include "base/ascii.h"
 #include "base/byte_io.h"
@@ -94,6 +96,20 @@ void writePayload(ByteWriter& w, const Image& im) {
   }
   w.u32(static_cast<std::uint32_t>(im.cell.size()));
   w.bytes(im.cell);
+}
+
+// The exact size writePayload writes, so that the buffer is allocated once.
+std::size_t payloadBytes(const Image& im) {
+  const auto str = [](std::string_view s) { return 2 + std::min(s.size(), base::kMaxStoredString); };
+  std::size_t n = str(im.sourceName) + str(im.robotName) + 4 + 4 + im.motors.size() * 24;
+  n += 4 + im.code.size() * kInstrBytes + im.lines.size() * 4 + im.columns.size() * 4;
+  n += 4 + im.constants.size() * 4 + 4;
+  for (const std::string& v : im.variables) n += str(v);
+  n += 4;
+  for (const Point& p : im.points) n += str(p.name) + p.values.size() * 4;
+  n += 4;
+  for (const Label& l : im.labels) n += 4 + str(l.name);
+  return n + 4 + im.cell.size();
 }
 
 void readMotors(ByteReader& r, Image& im) {
@@ -197,7 +213,7 @@ std::vector<std::uint8_t> writeImage(const Image& image) {
   // The payload is written after room for the header, which is filled in
   // last (it holds the payload's size and CRC): no copy of the payload.
   ByteWriter w;
-  w.out.reserve(kImageHeaderBytes + 64 + image.code.size() * 20 + image.constants.size() * 4 + image.cell.size());
+  w.out.reserve(kImageHeaderBytes + payloadBytes(image));
   w.out.resize(kImageHeaderBytes);
   writePayload(w, image);
   const std::size_t size = w.out.size() - kImageHeaderBytes;
@@ -208,7 +224,7 @@ std::vector<std::uint8_t> writeImage(const Image& image) {
   header.u32(static_cast<std::uint32_t>(size));
   header.u32(crc32(w.out.data() + kImageHeaderBytes, size));
   std::copy(header.out.begin(), header.out.end(), w.out.begin());
-  return w.out;
+  return std::move(w.out);  // a member: not moved by itself
 }
 
 bool looksLikeImage(std::string_view bytes) {

@@ -43,6 +43,7 @@ CLI::App* addRunLike(CLI::App& app, const char* name, const char* what, RunComma
 
 void addRunLikeOptions(CLI::App* cmd, RunCommandOptions& o) {
   addCellOptions(cmd, o.program);
+  addMaxErrorsOption(cmd, o.program);
   cmd->add_option("--format", o.format, "Summary format: text or json")->check(CLI::IsMember({"text", "json"}));
   addRunOptions(cmd, o.run);
   addSerialOptions(cmd, o.serial);
@@ -87,15 +88,19 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   compile->add_option("file", po.program.file, "Program source")->required();
   compile->add_option("-o,--output", po.output, "Image file to write (.rsb)")->required();
   addCellOptions(compile, po.program);
+  addMaxErrorsOption(compile, po.program);
   CLI::App* disasm = app.add_subcommand("disasm", "List the bytecode of a program or image");
   disasm->add_option("file", po.program.file, "Program source or compiled image")->required();
   addCellOptions(disasm, po.program);
+  addMaxErrorsOption(disasm, po.program);
   CLI::App* tokens = app.add_subcommand("tokens", "Show the tokens the lexer produces");
   tokens->add_option("file", po.program.file, "Program source")->required();
+  addMaxErrorsOption(tokens, po.program);
   CLI::App* ast = app.add_subcommand("ast", "Show the abstract syntax tree");
   ast->add_option("file", po.program.file, "Program source")->required();
   ast->add_flag("--tree", po.tree, "Also print ANTLR's parse tree");
   addCellOptions(ast, po.program);
+  addMaxErrorsOption(ast, po.program);
 
   RobotQuery rq;
   const auto robotArgs = [&](CLI::App* cmd) {

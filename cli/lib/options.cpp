@@ -15,6 +15,14 @@ void addLibOption(CLI::App* cmd, launch::ProgramRequest& request) {
       ->allow_extra_args(false);
 }
 
+void addMaxErrorsOption(CLI::App* cmd, launch::ProgramRequest& request) {
+  request.maxErrors = kDefaultMaxErrors;
+  cmd->add_option("--max-errors", request.maxErrors,
+                  "Print at most N errors and warnings, then how many more there were (default " +
+                      std::to_string(kDefaultMaxErrors) + "; 0 prints all)")
+      ->option_text("N");
+}
+
 void addRunOptions(CLI::App* cmd, launch::RunRequest& request, const std::string& maxStepsDefault) {
   cmd->add_option("--input", request.inputs, "Input change N=ON@SECONDS or N=OFF@SECONDS (repeatable)")
       ->allow_extra_args(false);

@@ -19,6 +19,10 @@ namespace rs::cli {
 void addCellOptions(CLI::App* cmd, launch::ProgramRequest& request);
 /// --lib DIR alone (for commands whose workcell is a positional argument).
 void addLibOption(CLI::App* cmd, launch::ProgramRequest& request);
+/// --max-errors N: the commands that compile print at most N diagnostics
+/// (kDefaultMaxErrors unless given; 0 = all), then how many more there were.
+inline constexpr std::size_t kDefaultMaxErrors = 50;
+void addMaxErrorsOption(CLI::App* cmd, launch::ProgramRequest& request);
 /// --input, --stimuli, --max-steps, --max-time. `maxStepsDefault` is what
 /// --help says when --max-steps is not given.
 void addRunOptions(CLI::App* cmd, launch::RunRequest& request, const std::string& maxStepsDefault = "100000000");

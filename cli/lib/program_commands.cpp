@@ -15,7 +15,8 @@ namespace {
 
 // tokens / ast: teaching views of the front end; they read source only.
 template <typename Dump>
-int sourceView(const std::string& file, std::ostream& out, std::ostream& err, Dump dump) {
+int sourceView(const launch::ProgramRequest& request, std::ostream& out, std::ostream& err, Dump dump) {
+  const std::string& file = request.file;
   base::FileRead text = base::readFile(file, launch::kMaxInputBytes);
   if (!text.bytes) {
     err << fmt::format("{}: error: cannot read file: {}\n", base::safeText(file), text.error);
@@ -26,18 +27,22 @@ int sourceView(const std::string& file, std::ostream& out, std::ostream& err, Du
     return kExitBadInput;
   }
   const diag::SourceFile source(file, std::move(*text.bytes));
-  std::vector<diag::Diagnostic> diags;
+  diag::Diagnostics diags(file, request.maxErrors);
   out << dump(source, diags);
-  for (const diag::Diagnostic& d : diags) err << diag::render(d, &source);
-  return diag::hasErrors(diags) ? kExitBadInput : kExitOk;
+  launch::printDiagnostics(
+      err, diags.sorted(), [&source](const std::string&) { return &source; }, request.maxErrors, diags.omitted());
+  return diags.hasErrors() ? kExitBadInput : kExitOk;
 }
 
 }  // namespace
 
 int compileCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err) {
-  const launch::LoadedProgram program = launch::loadProgram(o.program);
+  launch::LoadedProgram program = launch::loadProgram(o.program);
   launch::printDiagnostics(err, program.diagnostics, program);
   if (!program.ok()) return kExitBadInput;
+  // The source's diagnostics are printed: free it before the image's bytes
+  // are made, which would otherwise add their size to the peak.
+  program.source.reset();
   std::string error;
   if (!base::writeFileAtomically(o.output, vm::writeImage(*program.image), error)) {
     err << fmt::format("{}: error: cannot write: {}\n", base::safeText(o.output), error);
@@ -49,16 +54,16 @@ int compileCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostre
 }
 
 int disasmCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err) {
-  const launch::LoadedProgram program = launch::loadProgram(o.program);
+  launch::LoadedProgram program = launch::loadProgram(o.program);
   launch::printDiagnostics(err, program.diagnostics, program);
   if (!program.ok()) return kExitBadInput;
+  program.source.reset();  // as in compile: not held beside the listing
   out << vm::disassemble(*program.image);
   return kExitOk;
 }
 
 int tokensCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err) {
-  return sourceView(o.program.file, out, err,
-                    [](const diag::SourceFile& s, auto& d) { return compiler::dumpTokens(s, d); });
+  return sourceView(o.program, out, err, [](const diag::SourceFile& s, auto& d) { return compiler::dumpTokens(s, d); });
 }
 
 // Operand counts are checked against the robot: --cell's, or the default.
@@ -76,9 +81,8 @@ int astCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& 
     }
     target = launch::cellTarget(*cell);
   }
-  return sourceView(o.program.file, out, err, [&](const diag::SourceFile& s, auto& d) {
-    return compiler::dumpAst(s, target, o.tree, d);
-  });
+  return sourceView(o.program, out, err,
+                    [&](const diag::SourceFile& s, auto& d) { return compiler::dumpAst(s, target, o.tree, d); });
 }
 
 }  // namespace rs::cli

@@ -288,11 +288,13 @@ RenderCommands::RenderCommands(CLI::App& app) {
   render_->add_option("--size", o_.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
   render_->add_flag("--dump-lines{text}", o_.dump, "Print the projected 2-D lines: --dump-lines (text) or =json");
   addLibOption(render_, o_.program);
+  addMaxErrorsOption(render_, o_.program);
   addCommon(render_, o_, std::to_string(vm::RunLimits{}.maxSteps));
 
   animate_ = app.add_subcommand("animate", "Write a self-contained HTML page that replays a program's run");
   animate_->add_option("program", o_.program.file, "Program source (.rsp) or compiled image (.rsb)")->required();
   addCellOptions(animate_, o_.program);
+  addMaxErrorsOption(animate_, o_.program);
   animate_->add_option("-o,--output", o_.output, "HTML file to write")->required();
   addCommon(animate_, o_, std::to_string(kAnimateMaxSteps));
 }

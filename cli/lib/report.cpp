@@ -1,7 +1,10 @@
 #include "cli/lib/report.h"
 
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <nlohmann/json.hpp>
+#include <span>
 
 #include "base/text.h"
 #include "cli/lib/trace.h"
@@ -35,7 +38,7 @@ std::string lampList(std::uint8_t bits) {
 }  // namespace
 
 bool RunReport::ok() const {
-  return run && run->outcome() && run->outcome()->ok() && !diag::hasErrors(diagnostics);
+  return run && run->outcome() && run->outcome()->ok() && !diag::hasErrors(diagnostics) && omitted.errors == 0;
 }
 
 namespace {
@@ -135,7 +138,11 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     j["variables"] = Json::object();
   }
   Json diags = Json::array();
-  for (const diag::Diagnostic& d : r.diagnostics) {
+  const std::size_t listed =
+      r.maxDiagnostics == 0 ? r.diagnostics.size() : std::min(r.maxDiagnostics, r.diagnostics.size());
+  diag::Omitted omitted = r.omitted;
+  for (std::size_t i = listed; i < r.diagnostics.size(); ++i) omitted.count(r.diagnostics[i].severity);
+  for (const diag::Diagnostic& d : std::span(r.diagnostics).first(listed)) {
     Json one = {{"file", d.file},
                 {"line", d.pos.line},
                 {"column", d.pos.col},
@@ -146,6 +153,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     diags.push_back(std::move(one));
   }
   j["diagnostics"] = diags;
+  if (omitted.any()) j["diagnostics_not_listed"] = {{"errors", omitted.errors}, {"warnings", omitted.warnings}};
   out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
 }
 

@@ -17,6 +17,8 @@ struct RunReport {
   const runtime::Run* run = nullptr;
   bool realTime = false;                      // ran on a real controller: the clock is wall time
   std::vector<diag::Diagnostic> diagnostics;  // compile + runtime
+  std::size_t maxDiagnostics = 0;             // --max-errors: the JSON lists at most this many (0 = all)
+  diag::Omitted omitted;                      // found beyond those kept
   bool ok() const;
 };
 

@@ -21,6 +21,11 @@ void promoteWarnings(launch::LoadedProgram& program) {
       d.message += " [--strict]";
       promoted = true;
     }
+  if (program.omitted.warnings > 0) {  // those not kept count the same
+    program.omitted.errors += program.omitted.warnings;
+    program.omitted.warnings = 0;
+    promoted = true;
+  }
   if (promoted) program.image.reset();
 }
 
@@ -32,6 +37,8 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   if (check && o.strict) promoteWarnings(program);
   RunReport report;
   report.diagnostics = program.diagnostics;
+  report.maxDiagnostics = program.maxErrors;
+  report.omitted = program.omitted;
   // The stimuli and limits are checked even when the program did not
   // compile, so that one run reports every mistake.
   const std::optional<runtime::RunSpec> spec = launch::prepareRun(program, o.run, report.diagnostics);

@@ -99,12 +99,12 @@ TEST_CASE("golden: disasm of the compiled image equals disasm of the source", "[
 // the comment starts (here 1:5 instead of 1:9).
 TEST_CASE("tokens: the NEWLINE after a comment is at the line break", "[golden]") {
   const rs::diag::SourceFile source("c.rsp", "END ; hi\nEND\n");
-  std::vector<rs::diag::Diagnostic> diags;
+  rs::diag::Diagnostics diags("c.rsp");
   CHECK(rs::compiler::dumpTokens(source, diags) ==
         "1:1      IDENT    END\n"
         "1:9      NEWLINE\n"
         "2:1      IDENT    END\n"
         "2:4      NEWLINE\n"
         "3:1      EOF\n");
-  CHECK(diags.empty());
+  CHECK(diags.all().empty());
 }
