@@ -73,20 +73,27 @@ struct Checker::State {
   std::vector<bool> reachable(const std::vector<std::uint32_t>& starts) const;
 };
 
-Checker::Checker(const Target& target, std::string sourceName, diag::Diagnostics& diagnostics,
-                 std::size_t expectedInstructions)
+Checker::Checker(const Target& target, const diag::SourceFile& source, diag::Diagnostics& diagnostics)
     : s_(std::make_unique<State>(State{diagnostics, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}})) {
   vm::Image& im = s_->image;
-  im.sourceName = std::move(sourceName);
+  im.sourceName = source.name();
   im.robotName = target.robotName;
   im.callDepthLimit = target.callDepthLimit;
   im.motors = target.motors;
-  // One instruction per line at most: reserving touches no memory the
-  // program does not use, and saves the copies of growth.
-  im.code.reserve(expectedInstructions);
-  im.lines.reserve(expectedInstructions);
-  im.columns.reserve(expectedInstructions);
-  s_->known.reserve(expectedInstructions);
+  // Room for the most the source can hold, reserved once: one instruction
+  // (so one label, one jump, one point used) per line, one constant per two
+  // bytes ("1 "). A reservation is address space: only what is written
+  // becomes memory, and nothing is copied as a vector's growth would, at
+  // twice the size.
+  const std::size_t lines = source.lineCount();
+  im.code.reserve(lines);
+  im.lines.reserve(lines);
+  im.columns.reserve(lines);
+  im.labels.reserve(lines);
+  im.constants.reserve(source.text().size() / 2 + 1);
+  s_->known.reserve(lines);
+  s_->jumps.reserve(lines);
+  s_->pointUses.reserve(lines);
 }
 
 Checker::~Checker() = default;
