@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -39,21 +40,83 @@ using NameTable = std::unordered_map<std::string_view, Named, CaseInsensitiveHas
 
 // What an instruction refers to that only the end of the file settles: a
 // label (a jump), a point (MOVEP), or a line number (a jump by number:
-// does the program have that many instructions?).
+// does the program have that many instructions?). 16 bytes: the name is
+// read again from the source at `pos` when it is needed.
 struct Reference {
-  std::string_view name;  // label or point; empty for a line number
   diag::Pos pos;
   std::uint32_t index = 0;   // the instruction's
-  std::uint32_t number = 0;  // the line number
+  std::uint32_t number = 0;  // the line number; 0 for a name
 };
+
+// The labels by name, without regard to case: open addressing over their
+// ids in the image's label list, 4 bytes a slot (a node-based map takes
+// about 56 bytes a label, the largest part of a compile's memory in a
+// program of many labels).
+class LabelTable {
+ public:
+  static constexpr std::uint32_t kNone = UINT32_MAX;
+
+  std::uint32_t find(std::string_view name, const std::vector<vm::Label>& labels) const {
+    if (slots_.empty()) return kNone;
+    for (std::size_t i = hash(name) & mask();; i = (i + 1) & mask()) {
+      if (slots_[i] == 0) return kNone;
+      if (base::sameName(labels[slots_[i] - 1].name, name)) return slots_[i] - 1;
+    }
+  }
+  /// Adds label `id` unless one of its name is there: then returns that one's id.
+  std::uint32_t insert(std::uint32_t id, const std::vector<vm::Label>& labels) {
+    if (const std::uint32_t there = find(labels[id].name, labels); there != kNone) return there;
+    if (2 * (size_ + 1) > slots_.size()) grow(labels);
+    place(id, labels);
+    ++size_;
+    return kNone;
+  }
+
+ private:
+  static std::size_t hash(std::string_view s) {
+    std::uint64_t h = 14695981039346656037ull;  // FNV-1a, upper-cased
+    for (char c : s) h = (h ^ static_cast<unsigned char>(base::asciiUpper(c))) * 1099511628211ull;
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+  std::size_t mask() const { return slots_.size() - 1; }
+  void place(std::uint32_t id, const std::vector<vm::Label>& labels) {
+    std::size_t i = hash(labels[id].name) & mask();
+    while (slots_[i] != 0) i = (i + 1) & mask();
+    slots_[i] = id + 1;
+  }
+  void grow(const std::vector<vm::Label>& labels) {
+    std::vector<std::uint32_t> old(std::max<std::size_t>(64, slots_.size() * 2), 0);
+    old.swap(slots_);
+    for (std::uint32_t slot : old)
+      if (slot != 0) place(slot - 1, labels);
+  }
+
+  std::vector<std::uint32_t> slots_;  // label id + 1; 0 = empty
+  std::size_t size_ = 0;
+};
+
+// The name written at `pos` (a label or point name as the lexer took it).
+std::string_view nameAt(const diag::SourceFile& source, diag::Pos pos) {
+  const std::string_view text = source.text();
+  const std::size_t begin = source.offsetOf(pos);
+  std::size_t end = begin;
+  const auto namePart = [](char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+  };
+  while (end < text.size() && namePart(text[end])) ++end;
+  return text.substr(begin, end - begin);
+}
 
 }  // namespace
 
 struct Checker::State {
+  const diag::SourceFile& source;
   diag::Diagnostics& diag;
   vm::Image image;          // built as instructions come; code holds a placeholder for an unknown one
   std::vector<bool> known;  // per instruction: its mnemonic was known
-  NameTable labels, points, variables;
+  LabelTable labels;        // the first of each name, by id in image.labels
+  std::vector<std::uint32_t> labelLines;  // per label id: where it is defined
+  NameTable points, variables;
   std::vector<Reference> jumps;      // to labels, and by line number
   std::vector<Reference> pointUses;  // MOVEP
   std::vector<bool> assigned;        // per slot: some SET or ADD writes it
@@ -73,20 +136,28 @@ struct Checker::State {
   std::vector<bool> reachable(const std::vector<std::uint32_t>& starts) const;
 };
 
-Checker::Checker(const Target& target, std::string sourceName, diag::Diagnostics& diagnostics,
-                 std::size_t expectedInstructions)
-    : s_(std::make_unique<State>(State{diagnostics, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}})) {
+Checker::Checker(const Target& target, const diag::SourceFile& source, diag::Diagnostics& diagnostics)
+    : s_(std::make_unique<State>(State{source, diagnostics, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}})) {
   vm::Image& im = s_->image;
-  im.sourceName = std::move(sourceName);
+  im.sourceName = source.name();
   im.robotName = target.robotName;
   im.callDepthLimit = target.callDepthLimit;
   im.motors = target.motors;
-  // One instruction per line at most: reserving touches no memory the
-  // program does not use, and saves the copies of growth.
-  im.code.reserve(expectedInstructions);
-  im.lines.reserve(expectedInstructions);
-  im.columns.reserve(expectedInstructions);
-  s_->known.reserve(expectedInstructions);
+  // Room for the most the source can hold, reserved once: one instruction
+  // (so one label, one jump, one point used) per line, one constant per two
+  // bytes ("1 "). A reservation is address space: only what is written
+  // becomes memory, and nothing is copied as a vector's growth would, at
+  // twice the size.
+  const std::size_t lines = source.lineCount();
+  im.code.reserve(lines);
+  im.lines.reserve(lines);
+  im.columns.reserve(lines);
+  im.labels.reserve(lines);
+  s_->labelLines.reserve(lines);
+  im.constants.reserve(source.text().size() / 2 + 1);
+  s_->known.reserve(lines);
+  s_->jumps.reserve(lines);
+  s_->pointUses.reserve(lines);
 }
 
 Checker::~Checker() = default;
@@ -95,10 +166,11 @@ void Checker::instruction(const Instruction& in) {
   State& s = *s_;
   const auto index = static_cast<std::uint32_t>(s.image.code.size());  // in.number - 1
   if (!in.label.empty()) {
-    const auto [it, fresh] = s.labels.try_emplace(in.label, Named{index, in.labelPos});
-    if (!fresh)
-      s.diag.error(in.labelPos, fmt::format("label '{}' is already defined on line {}", in.label, it->second.pos.line));
+    const auto id = static_cast<std::uint32_t>(s.image.labels.size());
     s.image.labels.push_back({index, std::string(in.label)});
+    s.labelLines.push_back(in.labelPos.line);
+    if (const std::uint32_t first = s.labels.insert(id, s.image.labels); first != LabelTable::kNone)
+      s.diag.error(in.labelPos, fmt::format("label '{}' is already defined on line {}", in.label, s.labelLines[first]));
   }
   s.known.push_back(in.known);
   s.image.lines.push_back(in.pos.line);
@@ -112,7 +184,7 @@ void Checker::instruction(const Instruction& in) {
   if (vm::info(in.op).flags & vm::kJumps) target = s.jump(in);
   switch (vm::info(in.op).format) {
     case vm::Format::Point:
-      if (!in.name.empty()) s.pointUses.push_back({in.name, in.namePos, index, 0});
+      if (!in.name.empty()) s.pointUses.push_back({in.namePos, index, 0});
       break;
     case vm::Format::VarCompare:
     case vm::Format::VarValue: slot = s.variable(in); break;
@@ -160,11 +232,11 @@ std::uint32_t Checker::State::jump(const Instruction& in) {
   if (t.pos.line == 0) return 0;  // operand was malformed, already reported
   const auto index = static_cast<std::uint32_t>(image.code.size());
   if (!t.label.empty()) {
-    jumps.push_back({t.label, t.pos, index, 0});
+    jumps.push_back({t.pos, index, 0});
     return 0;
   }
   if (t.number == 0) return 0;
-  jumps.push_back({{}, t.pos, index, t.number});
+  jumps.push_back({t.pos, index, t.number});
   return t.number - 1;
 }
 
@@ -223,23 +295,25 @@ void Checker::State::checkTargets(const Instruction& in) {
 void Checker::State::resolve() {
   const std::size_t n = image.code.size();
   for (const Reference& r : jumps) {
-    if (r.name.empty()) {
+    if (r.number != 0) {
       if (r.number > n)
         diag.error(r.pos, fmt::format("line number {} does not exist (the program has {} instruction{})", r.number, n,
                                       n == 1 ? "" : "s"));
       continue;
     }
-    const auto it = labels.find(r.name);
-    if (it == labels.end()) {
-      diag.error(r.pos, fmt::format("undefined label '{}'", r.name));
+    const std::string_view name = nameAt(source, r.pos);
+    const std::uint32_t id = labels.find(name, image.labels);
+    if (id == LabelTable::kNone) {
+      diag.error(r.pos, fmt::format("undefined label '{}'", name));
       continue;
     }
-    image.code[r.index].d = static_cast<std::int32_t>(it->second.index);
+    image.code[r.index].d = static_cast<std::int32_t>(image.labels[id].index);
   }
   for (const Reference& r : pointUses) {
-    const auto it = points.find(r.name);
+    const std::string_view name = nameAt(source, r.pos);
+    const auto it = points.find(name);
     if (it == points.end()) {
-      diag.error(r.pos, fmt::format("undefined point '{}'", r.name));
+      diag.error(r.pos, fmt::format("undefined point '{}'", name));
       continue;
     }
     image.code[r.index].b = static_cast<std::uint16_t>(it->second.index);

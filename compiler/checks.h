@@ -22,9 +22,8 @@ namespace rs::compiler {
 
 class Checker final : public AstSink {
  public:
-  /// `expectedInstructions`: room reserved (one per line is the most).
-  Checker(const Target& target, std::string sourceName, diag::Diagnostics& diagnostics,
-          std::size_t expectedInstructions);
+  /// For `source`'s program: its size bounds what is reserved.
+  Checker(const Target& target, const diag::SourceFile& source, diag::Diagnostics& diagnostics);
   ~Checker() override;
   Checker(const Checker&) = delete;
   Checker& operator=(const Checker&) = delete;

@@ -33,7 +33,7 @@ CompileResult compile(const diag::SourceFile& source, const Target& target, std:
   }
   diag::Diagnostics diagnostics(source.name(), keepDiagnostics);
   LineParser parser(source, diagnostics);
-  Checker checker(target, source.name(), diagnostics, source.lineCount());
+  Checker checker(target, source, diagnostics);
   buildAst(source, parser, target.motors, diagnostics, checker);
   result.image = checker.finish();
   result.diagnostics = diagnostics.sorted();
