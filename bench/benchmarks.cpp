@@ -505,7 +505,7 @@ std::unique_ptr<runtime::Run> snapshotRun(const std::shared_ptr<const vm::Image>
 }  // namespace
 
 json benchSnapshot(const Options& options) {
-  fmt::print("\n[4] Run snapshots: a {}-loop program on scara-pick, logged\n", kSnapshotLoops);
+  fmt::print("\n[6] Run snapshots: a {}-loop program on scara-pick, logged\n", kSnapshotLoops);
   compiler::Library library(compiler::librarySearchPath({}));
   const std::optional<workcell::Workcell> found = library.workcell("scara-pick");
   if (!found) throw std::runtime_error("the library has no scara-pick workcell");
@@ -579,7 +579,7 @@ json benchSnapshot(const Options& options) {
 
 json benchTestSuite(const Options& options) {
   constexpr int kPrograms = 1000;
-  fmt::print("\n[5] robotsim test: {} generated programs, 3 expectations each, -j 2, whole process\n", kPrograms);
+  fmt::print("\n[7] robotsim test: {} generated programs, 3 expectations each, -j 2, whole process\n", kPrograms);
   const std::filesystem::path dir = std::filesystem::path(options.workDir) / "testsuite";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
