@@ -46,6 +46,7 @@ std::string_view SourceFile::line(std::uint32_t number) const {
 }
 
 std::size_t SourceFile::offsetOf(Pos pos) const {
+  if (pos.line == 0 || pos.line > lineCount()) return text_.size();
   const std::string_view l = line(pos.line);
   std::size_t at = static_cast<std::size_t>(l.data() - text_.data());
   const std::size_t end = at + l.size();
