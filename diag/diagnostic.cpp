@@ -81,6 +81,7 @@ std::string render(const Diagnostic& d, const SourceFile* source) {
 DisplayLine displayLine(const SourceFile& source, Pos pos) {
   constexpr std::uint32_t kWidth = 100;        // columns of context shown at most
   constexpr std::string_view kCut = "\u2026";  // "…", one column
+  if (pos.line == 0 || pos.line > source.lineCount()) return {};
   const std::string_view text = source.text();
   const std::string_view line = source.line(pos.line);
   const std::uint32_t caretCol = std::max<std::uint32_t>(pos.col, 1);

@@ -64,6 +64,7 @@ LoneCarriageReturn SourceFile::findLoneCarriageReturn() const {
 }
 
 std::size_t SourceFile::offsetOf(Pos pos) const {
+  if (pos.line == 0 || pos.line > lineCount()) return text_.size();
   const std::string_view l = line(pos.line);
   std::size_t at = static_cast<std::size_t>(l.data() - text_.data());
   const std::size_t end = at + l.size();

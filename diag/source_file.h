@@ -47,7 +47,8 @@ class SourceFile {
   LoneCarriageReturn findLoneCarriageReturn() const;
   /// The byte offset in text() of column `pos.col` of line `pos.line`
   /// (columns count characters; a byte that is not UTF-8 counts as one), or
-  /// of the line's end when the line is shorter. Reads at most a few KiB,
+  /// of the line's end when the line is shorter (the text's end when there
+  /// is no such line). Reads at most a few KiB,
   /// however long the line: long lines keep checkpoints (below).
   std::size_t offsetOf(Pos pos) const;
 

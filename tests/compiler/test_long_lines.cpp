@@ -87,6 +87,9 @@ TEST_CASE("SourceFile::offsetOf agrees with counting from the line's start", "[d
       CHECK(source.offsetOf({n, col}) == start + naiveOffset(l, col));
     }
   }
+  CHECK(source.offsetOf({0, 1}) == text.size());
+  CHECK(source.offsetOf({5, 1}) == text.size());
+  CHECK(rs::diag::displayLine(source, {5, 1}).text.empty());
 }
 
 TEST_CASE("the source line under a diagnostic is an excerpt around the column", "[diag]") {
