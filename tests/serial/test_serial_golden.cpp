@@ -1,7 +1,7 @@
 // Byte-exact transcripts: what the backend sends and expects, per dialect,
 // for a few small programs, on the in-process emulator and a manual clock
 // (so the timestamps repeat too). Each golden file was checked by hand
-// against ../shared/rhino-protocol.md; docs/serial.md explains the format.
+// against docs/rhino-protocol.md; docs/serial.md explains the format.
 // ROBOTSIM_UPDATE_GOLDEN=1 rewrites them.
 #include <catch2/catch.hpp>
 #include <cstdlib>
