@@ -32,19 +32,30 @@ inline std::size_t nameDistance(std::string_view a, std::string_view b) {
 }
 
 /// The first of `names` nearest to `word` at most `maxDistance` edits away
-/// (a different name, not `word` itself in another case), or "".
-template <class Names>
-std::string_view nearestName(std::string_view word, const Names& names, std::size_t maxDistance = 2) {
+/// (a different name, not `word` itself in another case), or "". `nameOf`
+/// gives the name of an element (for a list of records, not of strings).
+template <class Names, class NameOf>
+std::string_view nearestNameBy(std::string_view word, const Names& names, NameOf nameOf, std::size_t maxDistance = 2) {
   if (word.size() > kMaxNearWord) return {};
   std::string_view best;
   std::size_t bestDistance = maxDistance + 1;
   for (const auto& candidate : names) {
-    const std::string_view name(candidate);
+    const std::string_view name(nameOf(candidate));
     if (name.size() > word.size() + maxDistance || word.size() > name.size() + maxDistance) continue;
     const std::size_t d = nameDistance(word, name);
     if (d < bestDistance) bestDistance = d, best = name;
   }
   return best;
 }
+
+template <class Names>
+std::string_view nearestName(std::string_view word, const Names& names, std::size_t maxDistance = 2) {
+  return nearestNameBy(word, names, [](const auto& n) -> std::string_view { return std::string_view(n); }, maxDistance);
+}
+
+/// How far a misspelling of `word` may be from what was meant: one edit in
+/// a name of at most three letters (else "N" would suggest any two-letter
+/// name), two in a longer one.
+inline std::size_t typoDistance(std::string_view word) { return word.size() <= 3 ? 1 : 2; }
 
 }  // namespace rs::base

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "base/ascii.h"
+#include "base/near_names.h"
 
 namespace rs::compiler {
 
@@ -122,6 +123,19 @@ struct Checker::State {
   std::vector<bool> assigned;        // per slot: some SET or ADD writes it
   std::vector<diag::Pos> firstRead;  // per slot: first JMPVAR, for the warning
   diag::Pos pointsHeader;
+  // Names compared for "did you mean" hints, over the whole compile: a
+  // file of a million undefined labels and a million labels must not cost
+  // a million million comparisons.
+  std::size_t suggestionBudget = 1'000'000;
+
+  /// "did you mean 'PICK'?" with the nearest of `names` to `word`, or "".
+  template <class Names, class NameOf>
+  std::string didYouMean(std::string_view word, const Names& names, NameOf nameOf) {
+    if (names.size() > suggestionBudget) return {};
+    suggestionBudget -= names.size();
+    const std::string_view near = base::nearestNameBy(word, names, nameOf, base::typoDistance(word));
+    return near.empty() ? std::string() : fmt::format("did you mean '{}'?", near);
+  }
 
   std::span<const vm::MotorSpec> motors() const { return image.motors; }
   diag::Pos posOf(std::size_t i) const { return {image.lines[i], image.columns[i]}; }
@@ -304,7 +318,8 @@ void Checker::State::resolve() {
     const std::string_view name = nameAt(source, r.pos);
     const std::uint32_t id = labels.find(name, image.labels);
     if (id == LabelTable::kNone) {
-      diag.error(r.pos, fmt::format("undefined label '{}'", name));
+      diag.error(r.pos, fmt::format("undefined label '{}'", name),
+                 didYouMean(name, image.labels, [](const vm::Label& l) -> std::string_view { return l.name; }));
       continue;
     }
     image.code[r.index].d = static_cast<std::int32_t>(image.labels[id].index);
@@ -313,7 +328,8 @@ void Checker::State::resolve() {
     const std::string_view name = nameAt(source, r.pos);
     const auto it = points.find(name);
     if (it == points.end()) {
-      diag.error(r.pos, fmt::format("undefined point '{}'", name));
+      diag.error(r.pos, fmt::format("undefined point '{}'", name),
+                 didYouMean(name, image.points, [](const vm::Point& p) -> std::string_view { return p.name; }));
       continue;
     }
     image.code[r.index].b = static_cast<std::uint16_t>(it->second.index);
@@ -323,11 +339,16 @@ void Checker::State::resolve() {
   std::vector<Reference>().swap(pointUses);
 }
 
+// A variable only read is most often a misspelling of one that is set.
 void Checker::State::warnUnassignedVariables() {
+  std::vector<std::string_view> set;
+  for (std::size_t s = 0; s < image.variables.size(); ++s)
+    if (assigned[s]) set.push_back(image.variables[s]);
   for (std::size_t s = 0; s < image.variables.size(); ++s)
     if (!assigned[s] && firstRead[s].line != 0)
       diag.warning(firstRead[s],
-                   fmt::format("variable '{}' is never assigned by SET or ADD; it is always 0", image.variables[s]));
+                   fmt::format("variable '{}' is never assigned by SET or ADD; it is always 0", image.variables[s]),
+                   didYouMean(image.variables[s], set, [](std::string_view v) { return v; }));
 }
 
 // Instructions reachable from `starts`, following fall-through and jumps

@@ -1,6 +1,7 @@
 #include "compiler/description.h"
 
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fmt/format.h>
@@ -8,6 +9,7 @@
 #include "RobotModelLexer.h"
 #include "RobotModelParser.h"
 #include "base/ascii.h"
+#include "base/near_names.h"
 #include "compiler/compiler.h"
 
 namespace rs::compiler {
@@ -29,6 +31,21 @@ struct Word {
   diag::Pos pos;
 };
 
+// "did you mean 'LINE'?" when `word` is a near miss of one of the
+// keywords named in `list` ("LINE, BOX, ROTATE, MOVE, COLOR or END"): the
+// suggestion is always a keyword the message itself offers.
+std::string didYouMean(std::string_view word, std::string_view list) {
+  std::vector<std::string_view> keywords;
+  for (std::size_t i = 0; i < list.size();) {
+    std::size_t j = i;
+    while (j < list.size() && std::isalnum(static_cast<unsigned char>(list[j]))) ++j;
+    if (j > i && list.substr(i, j - i) != "or") keywords.push_back(list.substr(i, j - i));
+    i = j == i ? i + 1 : j;
+  }
+  const std::string_view near = base::nearestName(word, keywords, base::typoDistance(word));
+  return near.empty() ? std::string() : fmt::format("did you mean '{}'?", near);
+}
+
 // Reads one line's words left to right. Each reader reports what it
 // expected at the word it stopped on (or at the end of the line) and
 // returns false; the caller then drops the rest of the line, so one slip
@@ -47,10 +64,18 @@ class Cursor {
     return true;
   }
 
-  bool fail(std::string_view what) {
-    diag_.error(pos(), atEnd() ? fmt::format("expected {} before the end of the line", what)
-                               : fmt::format("expected {}, found '{}'", what, peek().text));
+  bool fail(std::string_view what, std::string hint = {}) {
+    diag_.error(pos(),
+                atEnd() ? fmt::format("expected {} before the end of the line", what)
+                        : fmt::format("expected {}, found '{}'", what, peek().text),
+                std::move(hint));
     return false;
+  }
+
+  /// "expected LINE, BOX, ... or END, found 'LIEN'" with the hint "did you
+  /// mean 'LINE'?" when the word found is a near miss of one in the list.
+  bool failOneOf(std::string_view keywords) {
+    return fail(keywords, atEnd() || peek().type != MP::NAME ? std::string() : didYouMean(peek().text, keywords));
   }
 
   bool number(double& out, std::string_view what) {
@@ -102,7 +127,7 @@ class Cursor {
   bool onOff(bool& out) {
     if (keyword("ON")) return out = true, true;
     if (keyword("OFF")) return out = false, true;
-    return fail("ON or OFF");
+    return failOneOf("ON or OFF");
   }
 
   bool color(Color& out) {
@@ -113,7 +138,12 @@ class Cursor {
         return true;
       }
     }
-    return fail("a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15");
+    std::string hint;
+    if (!atEnd() && peek().type == MP::NAME)
+      if (const std::string_view near = base::nearestName(peek().text, kColorNames, base::typoDistance(peek().text));
+          !near.empty())
+        hint = fmt::format("did you mean '{}'?", near);
+    return fail("a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15", std::move(hint));
   }
 
   bool axis(int& out) {
@@ -200,7 +230,9 @@ void Parser::open(Cursor& c, const Word& head) {
   for (Block k : kinds)
     if (c.keyword(blockName(k))) kind = k;
   if (kind == Block::None) {
-    diag_.error(head.pos, fmt::format("expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found '{}'", head.text));
+    constexpr std::string_view kBlockKinds = "LINK, OBJECT, GRIPPER, ROBOT or WORKCELL";
+    diag_.error(head.pos, fmt::format("expected {}, found '{}'", kBlockKinds, head.text),
+                head.type == MP::NAME ? didYouMean(head.text, kBlockKinds) : std::string());
     return;
   }
   // Without a name the block still opens (the error is reported), so the
@@ -271,7 +303,7 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
     return true;
   }
   if (c.keyword("COLOR")) return c.color(color_);
-  return c.fail("LINE, BOX, ROTATE, MOVE, COLOR or END");
+  return c.failOneOf("LINE, BOX, ROTATE, MOVE, COLOR or END");
 }
 
 // LETTER, PRECISION, RANGE, SPEED: shared by GRIPPER and JOINT.
@@ -333,7 +365,7 @@ bool Parser::gripperClause(Cursor& c, GripperDef& g) {
                   &g.hasPrecision, &g.hasRange))
     return true;
   if (diag_.errorCount() > before) return false;
-  return c.fail("BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, AXIS2, AXIS3, NORMAL, APPROACH or END");
+  return c.failOneOf("BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, AXIS2, AXIS3, NORMAL, APPROACH or END");
 }
 
 bool Parser::robotClause(Cursor& c, RobotDef& r) {
@@ -362,7 +394,7 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
     j.number = n;
     if (c.keyword("REVOLUTE")) j.spec.type = kinematics::JointType::Revolute;
     else if (c.keyword("PRISMATIC")) j.spec.type = kinematics::JointType::Prismatic;
-    else return c.fail("REVOLUTE or PRISMATIC");
+    else return c.failOneOf("REVOLUTE or PRISMATIC");
     r.joints.push_back(j);
     return true;
   }
@@ -386,7 +418,7 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
       return true;
     if (diag_.errorCount() > before) return false;
   }
-  return c.fail("LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, GRIPPER or END");
+  return c.failOneOf("LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, GRIPPER or END");
 }
 
 bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
@@ -398,7 +430,7 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
     w.placements.push_back(p);
     return true;
   }
-  if (w.placements.empty()) return c.fail("ROBOT, OBJECT or END");
+  if (w.placements.empty()) return c.failOneOf("ROBOT, OBJECT or END");
   PlacementDef& p = w.placements.back();
   if (c.keyword("AT")) {
     Point3 at;
@@ -413,7 +445,7 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
     p.rotation = axisRotation(axis, degrees) * p.rotation;
     return true;
   }
-  return c.fail("ROBOT, OBJECT, AT, ROTATE or END");
+  return c.failOneOf("ROBOT, OBJECT, AT, ROTATE or END");
 }
 
 }  // namespace

@@ -23,17 +23,27 @@ std::string_view severityName(Severity s) {
   return "error";
 }
 
-void Diagnostics::add(Pos pos, Severity s, std::string message) {
+Diagnostic Diagnostics::make(Pos pos, Severity s, std::string message, std::string hint) const {
+  Diagnostic d;
+  d.file = file_;
+  d.pos = pos;
+  d.severity = s;
+  d.message = std::move(message);
+  d.hint = std::move(hint);
+  return d;
+}
+
+void Diagnostics::add(Pos pos, Severity s, std::string message, std::string hint) {
   if (s == Severity::Error) ++errors_;
   const Key key{pos, reported_++, list_.size()};
   if (keep_ == 0) {
-    list_.push_back({file_, pos, s, std::move(message)});
+    list_.push_back(make(pos, s, std::move(message), std::move(hint)));
     return;
   }
   if (list_.size() < keep_) {
     heap_.push_back(key);
     std::push_heap(heap_.begin(), heap_.end(), before);
-    list_.push_back({file_, pos, s, std::move(message)});
+    list_.push_back(make(pos, s, std::move(message), std::move(hint)));
     return;
   }
   // Full: the new one replaces the last kept, if it comes before it.
@@ -43,7 +53,7 @@ void Diagnostics::add(Pos pos, Severity s, std::string message) {
   omitted_.count(list_[slot].severity);
   heap_.back() = {pos, key.seq, slot};
   std::push_heap(heap_.begin(), heap_.end(), before);
-  list_[slot] = {file_, pos, s, std::move(message)};
+  list_[slot] = make(pos, s, std::move(message), std::move(hint));
 }
 
 std::vector<Diagnostic> Diagnostics::sorted() const {

@@ -53,9 +53,14 @@ struct Omitted {
 class Diagnostics {
  public:
   explicit Diagnostics(std::string file, std::size_t keep = 0) : file_(std::move(file)), keep_(keep) {}
-  void error(Pos pos, std::string message) { add(pos, Severity::Error, std::move(message)); }
-  void warning(Pos pos, std::string message) { add(pos, Severity::Warning, std::move(message)); }
-  void add(Pos pos, Severity s, std::string message);
+  /// `hint`: how to get past it, when the reader knows ("did you mean 'PICK'?").
+  void error(Pos pos, std::string message, std::string hint = {}) {
+    add(pos, Severity::Error, std::move(message), std::move(hint));
+  }
+  void warning(Pos pos, std::string message, std::string hint = {}) {
+    add(pos, Severity::Warning, std::move(message), std::move(hint));
+  }
+  void add(Pos pos, Severity s, std::string message, std::string hint = {});
 
   /// Counts every error reported, kept or not.
   bool hasErrors() const { return errors_ > 0; }
@@ -75,6 +80,7 @@ class Diagnostics {
     std::size_t seq = 0;
     std::size_t slot = 0;
   };
+  Diagnostic make(Pos pos, Severity s, std::string message, std::string hint) const;
   static bool before(const Key& a, const Key& b) {
     if (a.pos.line != b.pos.line) return a.pos.line < b.pos.line;
     return a.pos.col != b.pos.col ? a.pos.col < b.pos.col : a.seq < b.seq;
