@@ -49,6 +49,9 @@ class Builder {
   void instruction(const antlr4::Token* head, const std::vector<Word>& words);
   void point(const antlr4::Token* head, const std::vector<Word>& words);
   bool operands(Instruction& in, std::string_view mnemonic, const std::vector<Word>& w);
+  bool looksLikePoint(std::string_view head, const std::vector<Word>& words) const;
+  bool delayWithUnit(const std::vector<Word>& w);
+  bool twoWordComparison(const std::vector<Word>& w);
   bool checkName(std::string_view what, std::string_view name, diag::Pos pos);
 
   // Operand readers: each reports what it expected and returns false.
@@ -74,6 +77,7 @@ class Builder {
   std::vector<const antlr4::Token*> tokens_;  // of the current line (kept for its capacity)
   std::vector<Word> words_;
   bool inPoints_ = false;
+  std::uint32_t endLine_ = 0;  // the last END instruction's line, 0 before any
   std::string_view pendingLabel_;
   diag::Pos pendingLabelPos_;
 };
@@ -146,7 +150,37 @@ void Builder::line(P::LineContext* l, bool recovered) {
     return;
   }
   if (inPoints_) return point(headToken, words);
+  if (looksLikePoint(head, words)) {
+    // A point row after the program's END without a POINTS line: say so
+    // once, then read this row and the rest as the points they are.
+    const diag::Pos pos = posOf(headToken);
+    diag_.error(pos,
+                fmt::format("'{}' is not an instruction: it looks like a taught point, but no POINTS line comes "
+                            "before it",
+                            diag::excerpt(head)),
+                fmt::format("points follow a line POINTS after the instructions: add POINTS on a line of its own "
+                            "after the END on line {}, before line {}",
+                            endLine_, pos.line));
+    if (!pendingLabel_.empty()) {
+      diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
+      pendingLabel_ = {};
+    }
+    inPoints_ = true;
+    pointsHeader_ = pos;
+    sink_.pointsHeader(pointsHeader_);
+    return point(headToken, words);
+  }
   instruction(headToken, words);
+}
+
+// After an END, a word that is no instruction (nor one letter away from
+// one: "MOVX 1 2 3 4 5" is a slip of MOVE) followed only by numbers: a
+// point row whose POINTS line is missing ("HOME 0 0 0 0 0").
+bool Builder::looksLikePoint(std::string_view head, const std::vector<Word>& words) const {
+  if (endLine_ == 0 || words.empty() || vm::opByName(head)) return false;
+  for (const vm::OpInfo& op : vm::kOps)
+    if (base::nameDistance(head, op.name) <= 1) return false;
+  return std::all_of(words.begin(), words.end(), [](const Word& w) { return w.type == P::NUMBER; });
 }
 
 void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& words) {
@@ -163,6 +197,7 @@ void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& wo
   const std::string_view mnemonic = textOf(src_, head);
   if (const auto op = vm::opByName(mnemonic)) {
     in.op = *op;
+    if (*op == vm::Op::End) endLine_ = in.pos.line;
     operands(in, vm::info(*op).name, words);
   } else {
     in.known = false;
@@ -206,6 +241,8 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
     return ok;
   }
   const std::size_t want = vm::info(f).operands;
+  if (f == vm::Format::Millis && delayWithUnit(w)) return false;
+  if (f == vm::Format::VarCompare && twoWordComparison(w)) return false;
   if (w.size() != want) {
     const diag::Pos at = w.size() > want ? w[want].pos : in.pos;
     diag_.error(at, want == 0 ? fmt::format("{} takes no operands, found {}", mnemonic, w.size())
@@ -232,6 +269,60 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
     case vm::Format::Millis: return seconds(w[0], in.value);
   }
   return false;
+}
+
+// "DELAY 1.5s", "DELAY 2 seconds", "DELAY 500ms": a unit after the number.
+bool Builder::delayWithUnit(const std::vector<Word>& w) {
+  if (w.size() != 2 || w[0].type != P::NUMBER || w[1].type != P::IDENT) return false;
+  const std::string_view unit = w[1].text;
+  const bool seconds = sameName(unit, "s") || sameName(unit, "sec") || sameName(unit, "secs") ||
+                       sameName(unit, "second") || sameName(unit, "seconds");
+  const bool millis = sameName(unit, "ms");
+  if (!seconds && !millis) return false;
+  std::string bare(w[0].text[0] == '+' ? w[0].text.substr(1) : w[0].text);
+  if (millis) {
+    // Milliseconds to seconds, exactly, by moving the decimal point.
+    std::int64_t ms = 0;
+    const auto [end, ec] = std::from_chars(bare.data(), bare.data() + bare.size(), ms);
+    if (ec != std::errc() || end != bare.data() + bare.size() || ms < 0)
+      bare.clear();
+    else if (ms % 1000 == 0)
+      bare = std::to_string(ms / 1000);
+    else
+      bare = fmt::format("{}.{:03}", ms / 1000, ms % 1000), bare.erase(bare.find_last_not_of('0') + 1);
+  }
+  diag_.error(w[1].pos,
+              fmt::format("'{}' after DELAY's number: DELAY takes seconds as a bare number, without a unit",
+                          diag::excerpt(unit)),
+              bare.empty() ? std::string("write the seconds alone, e.g. DELAY 1.5")
+                           : fmt::format("write DELAY {}{}", bare, millis ? " (seconds)" : ""));
+  return true;
+}
+
+// "JMPVAR N <= 3 L": two comparison signs together. The grammar's
+// comparisons are <, > and = (CMP in grammar/RobotProgram.g4), one sign each.
+bool Builder::twoWordComparison(const std::vector<Word>& w) {
+  if (w.size() != 5 || w[1].type != P::CMP || w[2].type != P::CMP || w[2].pos.line != w[1].pos.line ||
+      w[2].pos.col != w[1].pos.col + 1)
+    return false;
+  const std::string op = std::string(w[1].text) + std::string(w[2].text);
+  const std::string_view var = w[0].text;
+  std::string hint;
+  std::int64_t v = 0;
+  const std::string_view value = w[3].text[0] == '+' ? w[3].text.substr(1) : w[3].text;
+  const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+  const bool number = w[3].type == P::NUMBER && ec == std::errc() && end == value.data() + value.size();
+  if ((op == "<=" || op == "=<") && number)
+    hint = fmt::format("values are whole numbers: {} <= {} is JMPVAR {} < {} {}", var, v, var, v + 1, w[4].text);
+  else if ((op == ">=" || op == "=>") && number)
+    hint = fmt::format("values are whole numbers: {} >= {} is JMPVAR {} > {} {}", var, v, var, v - 1, w[4].text);
+  else if (op == "==")
+    hint = fmt::format("equality is one '=': JMPVAR {} = {} {}", var, w[3].text, w[4].text);
+  else if (op == "<>")
+    hint = "there is no not-equal: jump with = past the instructions for the other case";
+  diag_.error(w[1].pos,
+              fmt::format("'{}' is not a comparison: JMPVAR compares with <, > or = (one sign)", op), hint);
+  return true;
 }
 
 bool Builder::checkName(std::string_view what, std::string_view name, diag::Pos pos) {

@@ -66,6 +66,10 @@ void Lexer::badCharacter() {
                                                            : fmt::format("U+{:04X}", static_cast<unsigned>(c));
   if ((c == '+' || c == '-') && !(pos_ + 1 < text_.size() && isDigit(text_[pos_ + 1])))
     diagnostics_.error({line_, col_}, fmt::format("a sign must be followed by digits, found {}", shown));
+  else if (c == '!' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '=')
+    diagnostics_.error({line_, col_}, fmt::format("unexpected character {}", shown),
+                       "JMPVAR compares with <, > or =; there is no not-equal: jump with = past the instructions "
+                       "for the other case");
   else
     diagnostics_.error({line_, col_}, fmt::format("unexpected character {}", shown));
   pos_ += n;
