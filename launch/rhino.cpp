@@ -91,8 +91,8 @@ std::unique_ptr<vm::Machine> openRhino(const SerialRequest& o, const std::vector
   machine->keepAlive(conn);
   machine->setWaitLimit(maxTime);
   if (vm::Status st = machine->open(); !st) {
-    error = st.message;
-    return failed();
+    diags.push_back({"robotsim", {}, diag::Severity::Error, st.message, {}, machine->openHint()});
+    return nullptr;
   }
   return machine;
 }

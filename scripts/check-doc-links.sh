@@ -51,12 +51,22 @@ for doc in "${docs[@]}"; do
       echo "$doc:$line: error: link '$target' names no file (${resolved#"$root"/})" >&2
       bad=$((bad + 1))
     fi
-  done < <(perl -ne '
-      if (/^\s*(```|~~~)/) { $fence = !$fence; next }
-      next if $fence;
-      s/`[^`]*`//g;                                  # code spans are not links
-      while (/!?\[[^\]]*\]\(\s*<?([^)\s>]+)>?(?:\s+"[^"]*")?\s*\)/g) { print "$.\t$1\n" }
-      if (/^\s{0,3}\[[^\]]+\]:\s*<?(\S+?)>?(?:\s|$)/) { print "$.\t$1\n" }
+  done < <(perl -0777 -ne '
+      # Fenced code blocks and code spans are not links: blank them out,
+      # keeping the newlines so that line numbers stay right.
+      s{^[ \t]*(```|~~~).*?^[ \t]*\1[^\n]*$}{ $& =~ s/[^\n]//gr }gmse;
+      s{`(?:[^`\n]|\n(?![ \t]*\n))*`}{ $& =~ s/[^\n]/ /gr }ge;   # may run over a line, not a paragraph
+      # Inline links and images; the text may run over a line break.
+      while (/!?\[[^\]]*\]\(\s*<?([^)\s>]+)>?(?:\s+"[^"]*")?\s*\)/g) {
+        my ($target, $end) = ($1, $-[1]);
+        my $line = 1 + (substr($_, 0, $end) =~ tr/\n//);
+        print "$line\t$target\n";
+      }
+      # Reference definitions: "[name]: target" at the start of a line.
+      while (/^ {0,3}\[[^\]]+\]:[ \t]*<?(\S+?)>?(?:[ \t]|$)/gm) {
+        my $line = 1 + (substr($_, 0, $-[1]) =~ tr/\n//);
+        print "$line\t$1\n";
+      }
     ' "$doc")
   # Notes outside the repository must not be referred to at all.
   while IFS=: read -r line _; do

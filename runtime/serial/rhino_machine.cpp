@@ -41,6 +41,7 @@ Status RhinoMachine::open() {
     log_->comment("motors:" + motors);
   }
   if (Status st = controller_->begin(positions_); !st) {
+    if (session_.lastFailureWasSilence()) openHint_ = probeOtherDialect();
     // Nothing has moved yet, but a controller that answers wrongly may be
     // doing anything: stop it all the same.
     return fail(Status::fault(fmt::format("no working {} controller on {}: {}", dialectTitle(settings_.dialect),
@@ -50,6 +51,29 @@ Status RhinoMachine::open() {
   opened_ = true;
   origin_ = clock_.now();
   return Status::ok();
+}
+
+// The first contact met silence: is the other dialect's controller on the
+// line? Each dialect's handshake query is one the other does not know and
+// leaves unanswered (a Mark IV puts error 10 on its stack for "I", a Mark
+// III ignores "SE"), so one harmless query of the other kind tells them
+// apart: a Mark IV answers "SE" with a decimal number and CR, a Mark III
+// answers "I" with one byte 0x20..0x7F. docs/rhino-protocol.md, "The
+// handshake".
+std::string RhinoMachine::probeOtherDialect() {
+  if (settings_.dialect == Dialect::Mark3) {
+    session_.note("no answer to the Mark III handshake: asking \"SE\" as a Mark IV would be asked");
+    long code = 0;
+    if (!session_.queryNumber("SE", code)) return {};
+    return fmt::format("the controller on {} answers as a Mark IV (\"SE\" was answered with {}): run with --dialect mark4",
+                       session_.device(), code);
+  }
+  session_.note("no answer to the Mark IV handshake: asking \"I\" as a Mark III would be asked");
+  std::uint8_t reply = 0;
+  if (!session_.queryByte("I", reply) || reply < 0x20 || reply > 0x7F) return {};
+  return fmt::format("the controller on {} answers as a Mark III (\"I\" was answered with one byte): run with "
+                     "--dialect mark3",
+                     session_.device());
 }
 
 // Every failure of the controller ends here: stop every motor, remember why.

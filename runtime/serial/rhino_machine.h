@@ -62,11 +62,15 @@ class RhinoMachine final : public vm::Machine {
   const std::vector<vm::MotorSpec>& motors() const { return motors_; }
   /// The fault that stopped the machine ("" while it is healthy).
   const std::string& failure() const { return failure_; }
+  /// After open() failed: how to get past it, when the machine can tell
+  /// ("the controller answers as a Mark IV: run with --dialect mark4"), else "".
+  const std::string& openHint() const { return openHint_; }
 
  private:
   vm::Status fail(vm::Status status);
   vm::Status ready();
   vm::Status readInputs();
+  std::string probeOtherDialect();
 
   std::vector<std::shared_ptr<void>> owned_;  // first member: destroyed last
   std::vector<vm::MotorSpec> motors_;
@@ -84,6 +88,7 @@ class RhinoMachine final : public vm::Machine {
   std::uint8_t inputs_ = 0;
   bool opened_ = false;
   std::string failure_;
+  std::string openHint_;
 };
 
 }  // namespace rs::serial

@@ -28,6 +28,7 @@ void Session::note(std::string_view text) {
 // interruption, not a silent controller.
 vm::Status Session::ioFailure(const IoResult& r, std::string_view command, bool writing) {
   std::string message;
+  silent_ = false;
   switch (r.kind) {
     case IoResult::Kind::Ok: return vm::Status::ok();
     case IoResult::Kind::Timeout:
@@ -37,6 +38,7 @@ vm::Status Session::ioFailure(const IoResult& r, std::string_view command, bool 
                                       escapeBytes(bytesOf(command)), vm::formatSeconds(settings_.timeout))
                         : fmt::format("no reply from the controller to \"{}\" within {} s (timeout)",
                                       escapeBytes(bytesOf(command)), vm::formatSeconds(settings_.timeout));
+      silent_ = !writing;
       break;
     case IoResult::Kind::Closed:
       gone_ = true;

@@ -49,6 +49,8 @@ class Session {
 
   Micros now() const { return clock_.now(); }
   bool portGone() const { return gone_; }
+  /// The last failure was a question that got no answer in time.
+  bool lastFailureWasSilence() const { return silent_; }
   const RhinoSettings& settings() const { return settings_; }
   const std::string& device() const { return device_; }
   void setDevice(std::string name) { device_ = std::move(name); }
@@ -66,6 +68,7 @@ class Session {
   std::vector<std::uint8_t> unread_;  // bytes that came after a Mark IV answer's CR
   std::string device_ = "the controller";
   bool gone_ = false;
+  bool silent_ = false;
 };
 
 /// What a dialect does for the machine. Positions are updated in place as

@@ -729,3 +729,45 @@ TEST_CASE("cli: the trace and the summary escape every name", "[cli]") {
   CHECK(summary.str().find(" block\\x1b[31m at ") != std::string::npos);
   CHECK(summary.str().find("variables       N\\x1b[2J=1\n") != std::string::npos);
 }
+
+TEST_CASE("cli: a run that stops early says in a hint how to get past it", "[cli][hints]") {
+  TempDir dir;
+  SECTION("running on into a subroutine: the missing END") {
+    const std::string f = dir.write("sub.rsp",
+                                    "GOSUB sub\n"            // 1
+                                    "MOVE 10 0 0 0 0\n"      // 2: no END after it
+                                    "sub: MOVE 5 0 0 0 0\n"  // 3
+                                    "RETURN\n");             // 4: the second time, nothing to return to
+    const CliResult r = runCli({"run", f});
+    CHECK(r.code == 1);
+    CHECK(r.err == f + ":4:1: error: runtime error: RETURN without a GOSUB (instruction 4)\n"
+                       "  RETURN\n"
+                       "  ^\n"
+                       "  hint: did the program run on into a subroutine? an END before the subroutine stops it "
+                       "there\n");
+  }
+  const std::string loop = dir.write("loop.rsp", "loop: DELAY 1\nGOTO loop\n");
+  SECTION("the step limit names --max-steps") {
+    const CliResult r = runCli({"run", loop, "--max-steps", "10"});
+    CHECK(r.code == 1);
+    CHECK_THAT(r.err, Catch::EndsWith("\n  hint: allow more with --max-steps N\n"));
+    const json j = parseJson(runCli({"run", loop, "--max-steps", "10", "--format=json"}).out);
+    CHECK(j["diagnostics"][0]["hint"] == "allow more with --max-steps N");
+  }
+  SECTION("the time limit names --max-time") {
+    const CliResult r = runCli({"run", loop, "--max-time", "2.5"});
+    CHECK(r.code == 1);
+    CHECK_THAT(r.err, Catch::EndsWith("\n  hint: allow more with --max-time SECONDS\n"));
+  }
+  SECTION("a deadlock names --input and --stimuli") {
+    const std::string f = dir.write("dl.rsp", "WAITFOR 2 ON\nEND\n");
+    const CliResult r = runCli({"run", f});
+    CHECK(r.code == 1);
+    CHECK(r.err == f + ":1:1: error: deadlock: input 2 never turns ON: no stimulus is scheduled (instruction 1)\n"
+                       "  WAITFOR 2 ON\n"
+                       "  ^\n"
+                       "  hint: inputs change only by --input N=ON@SECONDS or a --stimuli file\n");
+    // With the input given, the same program finishes.
+    CHECK(runCli({"run", f, "--input", "2=ON@1"}).code == 0);
+  }
+}

@@ -46,6 +46,8 @@ expect_failure docs/models.md '![a picture](images/missing.png)' "link 'images/m
 expect_failure docs/language.md 'See [x](/etc/passwd).' "is an absolute path"
 expect_failure docs/serial.md 'The notes are in `../shared/rhino-protocol.md`.' "mentions '../shared'"
 expect_failure docs/render.md '[notes]: ../../shared/x.md' "link '../../shared/x.md' points outside the repository"
+expect_failure docs/testing.md $'A link [over\ntwo lines](nowhere.md).' \
+  "docs/testing.md:$(( $(lines docs/testing.md) + 2 )): error: link 'nowhere.md' names no file"
 expect_pass docs/cli.md 'Online: [site](https://example.org/x) and [here](#exit-codes).'
 expect_pass docs/cli.md 'Code: `[a](nowhere.md)` is not a link.'
 expect_pass docs/cli.md $'```\n[a](nowhere.md)\n```'

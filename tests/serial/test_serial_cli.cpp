@@ -155,3 +155,49 @@ TEST_CASE("robotsim emulate: console numbers are whole numbers, read strictly", 
   CHECK(runCli({"emulate", "--start", "E=+-5", "--no-stdin"}).code == 2);
   CHECK(runCli({"emulate", "--start", "E=+5,D=-40", "--no-stdin", "--duration", "0.05"}).code == 0);
 }
+
+TEST_CASE("robotsim run --device: the wrong dialect's handshake suggests the right --dialect", "[serial]") {
+  TempDir dir;
+  const std::string prog = dir.write("prog.rsp", kProgram);
+  SECTION("a Mark III handshake to a Mark IV") {
+    auto emu = emulator(Dialect::Mark4);
+    const std::string log = dir.file("probe.log");
+    const auto r = runCli({"run", prog, "--device", emu->path(), "--serial-set", "timeout=0.2", "--log-serial", log});
+    CHECK(r.code == 1);
+    // The Mark IV leaves "I" unanswered (error 10 on its stack) and answers
+    // "SE" with that error, 10.
+    CHECK_THAT(r.err, Catch::StartsWith("robotsim: error: no working Mark III controller on " + emu->path() +
+                                        ": no reply from the controller to \"I\" within 0.200 s (timeout)"));
+    CHECK_THAT(r.err, Catch::EndsWith("\n  hint: the controller on " + emu->path() +
+                                      " answers as a Mark IV (\"SE\" was answered with 10): run with --dialect "
+                                      "mark4\n"));
+    const std::vector<std::string> sent = rs::serial::testing::sentCommands(rs::testing::readBytes(log));
+    REQUIRE(sent.size() >= 2);
+    CHECK(sent[0] == "I");
+    CHECK(sent[1] == "SE");
+  }
+  SECTION("a Mark IV handshake to a Mark III") {
+    auto emu = emulator(Dialect::Mark3);
+    const auto r = runCli({"run", prog, "--device", emu->path(), "--dialect", "mark4", "--serial-set", "timeout=0.2"});
+    CHECK(r.code == 1);
+    CHECK_THAT(r.err, Catch::StartsWith("robotsim: error: no working Mark IV controller on " + emu->path() +
+                                        ": no reply from the controller to \"SE\" within 0.200 s (timeout)"));
+    CHECK_THAT(r.err, Catch::EndsWith("\n  hint: the controller on " + emu->path() +
+                                      " answers as a Mark III (\"I\" was answered with one byte): run with "
+                                      "--dialect mark3\n"));
+  }
+  SECTION("a silent controller gets no dialect hint") {
+    EmulatorConfig c;
+    c.settings = defaultSettings(Dialect::Mark3);
+    c.motors = rs::stdlib::rhinoScaraMotors();
+    c.fault = {FaultKind::Silence, 0, 0};
+    std::string error;
+    auto emu = PtyEmulator::open(c, error);
+    REQUIRE(emu);
+    emu->start();
+    const auto r = runCli({"run", prog, "--device", emu->path(), "--serial-set", "timeout=0.2"});
+    CHECK(r.code == 1);
+    CHECK_THAT(r.err, Catch::Contains("no working Mark III controller"));
+    CHECK(r.err.find("hint:") == std::string::npos);
+  }
+}
