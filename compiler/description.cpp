@@ -184,6 +184,8 @@ class Parser {
   void finish();
 
  private:
+  void readLine(const std::vector<Word>& words, diag::Pos lineEnd);
+  void markDamaged(Block b);
   void open(Cursor& c, const Word& head);
   bool shapeClause(Cursor& c, ShapeDef& shape);
   bool gripperClause(Cursor& c, GripperDef& g);
@@ -197,9 +199,36 @@ class Parser {
   Block block_ = Block::None;
   diag::Pos blockPos_;
   Color color_ = Color::White;
+  enum class Item { None, Link, Joint };
+  Item robotItem_ = Item::None;  // in a ROBOT: what the last LINK or JOINT line added
 };
 
+// A line with an error damages the definition it belongs to (and, in a
+// robot, the link or joint it was about): see ShapeDef.
 void Parser::line(const std::vector<Word>& words, diag::Pos lineEnd) {
+  const Block before = block_;
+  const std::size_t errors = diag_.errorCount();
+  readLine(words, lineEnd);
+  if (diag_.errorCount() > errors) markDamaged(before == Block::None ? block_ : before);
+}
+
+void Parser::markDamaged(Block b) {
+  switch (b) {
+    case Block::Link: if (!f_.links.empty()) f_.links.back().damaged = true; break;
+    case Block::Object: if (!f_.objects.empty()) f_.objects.back().damaged = true; break;
+    case Block::Gripper: if (!f_.grippers.empty()) f_.grippers.back().damaged = true; break;
+    case Block::Workcell: if (!f_.workcells.empty()) f_.workcells.back().damaged = true; break;
+    case Block::Robot:
+      if (f_.robots.empty()) break;
+      f_.robots.back().damaged = true;
+      if (robotItem_ == Item::Joint) f_.robots.back().joints.back().damaged = true;
+      if (robotItem_ == Item::Link) f_.robots.back().links.back().damaged = true;
+      break;
+    case Block::None: break;
+  }
+}
+
+void Parser::readLine(const std::vector<Word>& words, diag::Pos lineEnd) {
   if (words.empty()) return;
   for (const Word& w : words)
     if (w.type == MP::OTHER) return diag_.error(w.pos, fmt::format("unexpected character '{}'", w.text));
@@ -245,6 +274,7 @@ void Parser::open(Cursor& c, const Word& head) {
   }
   block_ = kind;
   blockPos_ = head.pos;
+  robotItem_ = Item::None;
   color_ = Color::White;
   switch (kind) {
     case Block::Link: f_.links.push_back({name.name, head.pos, {}}); break;
@@ -370,6 +400,7 @@ bool Parser::gripperClause(Cursor& c, GripperDef& g) {
 
 bool Parser::robotClause(Cursor& c, RobotDef& r) {
   if (c.keyword("LINK")) {
+    robotItem_ = Item::Link;
     r.links.push_back({});
     return c.name(r.links.back().link, "a link name");
   }
@@ -387,6 +418,7 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
     return c.point(r.links.back().*member, fmt::format("the frame's {} point", kw));
   }
   if (c.keyword("JOINT")) {
+    robotItem_ = Item::None;  // until the joint is added
     JointDef j;
     j.pos = c.pos();
     std::int32_t n = 0;
@@ -396,6 +428,7 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
     else if (c.keyword("PRISMATIC")) j.spec.type = kinematics::JointType::Prismatic;
     else return c.failOneOf("REVOLUTE or PRISMATIC");
     r.joints.push_back(j);
+    robotItem_ = Item::Joint;
     return true;
   }
   if (c.keyword("COUPLING")) {

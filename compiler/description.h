@@ -26,10 +26,15 @@ struct Point3 {
   diag::Pos pos;
 };
 
+// `damaged` on a definition: a line of it had an error, already reported.
+// Checks of the whole (counts, numbering, parts that are missing) are then
+// skipped: they would only repeat that error in other words.
+
 struct ShapeDef {  // LINK or OBJECT
   std::string name;
   diag::Pos pos;
   std::vector<workcell::Segment> segments;
+  bool damaged = false;
 };
 
 struct GripperDef {
@@ -45,12 +50,14 @@ struct GripperDef {
   std::int32_t speed = 200;
   Point3 axis2[2], axis3[2], normal[2], approach[2];  // two points each
   bool hasAxis2 = false, hasAxis3 = false, hasNormal = false, hasApproach = false;
+  bool damaged = false;
 };
 
 struct RobotLinkDef {
   NameRef link;
   Point3 origin, xPoint, zPoint;  // FRAME ORIGIN .. XAXIS .. ZAXIS ..
   bool hasOrigin = false, hasX = false, hasZ = false;
+  bool damaged = false;
   bool hasFrame() const { return hasOrigin || hasX || hasZ; }
 };
 
@@ -60,6 +67,7 @@ struct JointDef {
   workcell::JointSpec spec;
   bool hasLetter = false, hasPrecision = false, hasRange = false;
   diag::Pos rangePos;
+  bool damaged = false;
 };
 
 struct RobotDef {
@@ -68,6 +76,7 @@ struct RobotDef {
   std::vector<RobotLinkDef> links;
   std::vector<JointDef> joints;
   NameRef gripper;  // empty name: none
+  bool damaged = false;
 };
 
 struct PlacementDef {
@@ -81,6 +90,7 @@ struct WorkcellDef {
   std::string name;
   diag::Pos pos;
   std::vector<PlacementDef> placements;
+  bool damaged = false;
 };
 
 /// Everything one file defines, in the order written.

@@ -153,10 +153,17 @@ std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const Desc
                                      ref.name, ref.name));
     return std::nullopt;
   }
-  const DescriptionFile& at = definingFile(defsOf<GripperDef>, def, from);  // for its messages
-  bool ok = true;
+  if (const auto built = grippers_.find(def); built != grippers_.end()) return built->second;
+  return grippers_[def] = buildGripper(*def, definingFile(defsOf<GripperDef>, def, from));
+}
+
+std::optional<workcell::Gripper> Library::buildGripper(const GripperDef& gripperDef, const DescriptionFile& at) {
+  const GripperDef* def = &gripperDef;
+  bool ok = !def->damaged;
   const auto need = [&](bool present, std::string_view what) {
-    if (!present) error(at, def->pos, fmt::format("gripper '{}' has no {}", def->name, what)), ok = false;
+    if (present) return;
+    ok = false;
+    if (!def->damaged) error(at, def->pos, fmt::format("gripper '{}' has no {}", def->name, what));
   };
   need(!def->base.name.empty(), "BASE link");
   need(!def->finger2.name.empty(), "FINGERS");
@@ -167,14 +174,16 @@ std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const Desc
   need(def->hasAxis3, "AXIS3 (finger 3's rotation axis r3)");
   need(def->hasNormal, "NORMAL vector");
   need(def->hasApproach, "APPROACH vector");
+  // Its links are looked up whatever else is wrong, so that an unknown
+  // one is reported in the same run (a name left empty was reported).
+  const auto link = [&](const NameRef& r) { return r.name.empty() ? std::nullopt : shape(Kind::Link, r, at); };
+  auto base = link(def->base);
+  auto f2 = link(def->finger2);
+  auto f3 = link(def->finger3);
   // A bad PRECISION value was reported where it was written.
-  if (!ok || def->precision <= 0) return std::nullopt;
+  if (!ok || def->precision <= 0 || !base || !f2 || !f3) return std::nullopt;
   workcell::Gripper g;
   g.name = def->name;
-  auto base = shape(Kind::Link, def->base, at);
-  auto f2 = shape(Kind::Link, def->finger2, at);
-  auto f3 = shape(Kind::Link, def->finger3, at);
-  if (!base || !f2 || !f3) return std::nullopt;
   g.base = std::move(*base), g.finger2 = std::move(*f2), g.finger3 = std::move(*f3);
   g.letter = def->letter, g.min = def->min, g.max = def->max, g.speed = def->speed;
   const kinematics::GripperPoints points{def->axis2[0].v, def->axis2[1].v, def->axis3[0].v,  def->axis3[1].v,
@@ -194,19 +203,30 @@ std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const Desc
 }
 
 std::optional<workcell::Robot> Library::buildRobot(const RobotDef& def, const DescriptionFile& from) {
+  if (const auto built = robots_.find(&def); built != robots_.end()) return built->second;
+  return robots_[&def] = checkRobot(def, from);
+}
+
+// Every check of a robot that its own errors leave meaningful: references
+// are always looked up, the whole (counts, numbering, missing parts, the
+// chain) only when no line of it had an error (RobotDef::damaged).
+std::optional<workcell::Robot> Library::checkRobot(const RobotDef& def, const DescriptionFile& from) {
   workcell::Robot robot;
   robot.name = def.name;
-  bool ok = true;
-  // (Not repeated when a LINK line already failed to parse.)
+  bool ok = !def.damaged;
   if (def.links.empty()) {
-    if (!hasErrors()) error(from, def.pos, fmt::format("robot '{}' has no LINK", def.name));
+    if (!def.damaged) error(from, def.pos, fmt::format("robot '{}' has no LINK", def.name));
     ok = false;
   }
   for (std::size_t i = 0; i < def.links.size(); ++i) {
     const RobotLinkDef& l = def.links[i];
-    auto s = shape(Kind::Link, l.link, from);
+    auto s = l.link.name.empty() ? std::nullopt : shape(Kind::Link, l.link, from);  // no name: reported
     if (!s) ok = false;
     else robot.links.push_back(std::move(*s));
+    if (l.damaged) {
+      ok = false;
+      continue;
+    }
     if (!l.hasOrigin || !l.hasX || !l.hasZ) {
       const char* missing = !l.hasFrame() ? "FRAME (ORIGIN, XAXIS and ZAXIS points)"
                             : !l.hasOrigin ? "ORIGIN point in its FRAME"
@@ -229,15 +249,17 @@ std::optional<workcell::Robot> Library::buildRobot(const RobotDef& def, const De
   // Joints: numbered 1, 2, 3 ... in order, each with its motor data.
   for (std::size_t i = 0; i < def.joints.size(); ++i) {
     const JointDef& j = def.joints[i];
-    if (j.number != static_cast<int>(i + 1))
+    // A JOINT line that failed may be missing: the numbering is then off.
+    if (j.number != static_cast<int>(i + 1) && !def.damaged)
       error(from, j.pos, fmt::format("joints are numbered in order: expected JOINT {}, found JOINT {}", i + 1, j.number)), ok = false;
-    for (auto [present, what] : {std::pair{j.hasLetter, "LETTER"}, std::pair{j.hasPrecision, "PRECISION"},
-                                 std::pair{j.hasRange, "RANGE"}})
-      if (!present) error(from, j.pos, fmt::format("JOINT {} has no {}", j.number, what)), ok = false;
+    if (!j.damaged)
+      for (auto [present, what] : {std::pair{j.hasLetter, "LETTER"}, std::pair{j.hasPrecision, "PRECISION"},
+                                   std::pair{j.hasRange, "RANGE"}})
+        if (!present) error(from, j.pos, fmt::format("JOINT {} has no {}", j.number, what)), ok = false;
     robot.joints.push_back(j.spec);
   }
   const std::size_t frames = def.links.size() + (def.gripper.name.empty() ? 0 : 1);
-  if (ok && !hasErrors() && def.joints.size() + 1 != frames)
+  if (ok && def.joints.size() + 1 != frames)
     error(from, def.pos, fmt::format("robot '{}' has {} link{}{} and so needs {} joint{}, found {}", def.name,
                                      def.links.size(), def.links.size() == 1 ? "" : "s",
                                      def.gripper.name.empty() ? "" : " and a gripper", frames - 1,
@@ -254,7 +276,7 @@ std::optional<workcell::Robot> Library::buildRobot(const RobotDef& def, const De
   if (robot.hasGripper && letters.find(robot.gripper.letter) != std::string::npos)
     error(from, def.gripper.pos, fmt::format("the gripper's motor letter {} is also a joint's", robot.gripper.letter)),
         ok = false;
-  if (!ok || hasErrors()) return std::nullopt;
+  if (!ok) return std::nullopt;
 
   std::vector<kinematics::JointType> types;
   std::vector<kinematics::JointDrive> drives;
@@ -276,10 +298,15 @@ std::optional<workcell::Robot> Library::buildRobot(const RobotDef& def, const De
 }
 
 std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def, const DescriptionFile& from) {
+  cellsBuilt_.insert(&def);
   workcell::Workcell cell;
   cell.name = def.name;
   bool ok = true;
   for (const PlacementDef& p : def.placements) {
+    if (p.what.name.empty()) {  // a placement whose name was missing: reported
+      ok = false;
+      continue;
+    }
     if (p.isRobot) {
       const RobotDef* r = find<RobotDef>(Kind::Robot, p.what.name, &from);
       if (!r) {
@@ -311,30 +338,20 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
       cell.objects.push_back({std::move(*s), place});
     }
   }
+  if (def.damaged) ok = false;
   if (ok && cell.robots.empty() && cell.objects.empty())
     error(from, def.pos, fmt::format("workcell '{}' places no robot and no object", def.name)), ok = false;
   if (!ok) return std::nullopt;
   return cell;
 }
 
-// When a file has errors, nothing is built from it (that would only add
-// follow-on messages), but the files it names are still read, so their own
-// errors are reported in the same run.
-void Library::readReferences(const DescriptionFile& f) {
-  for (const RobotDef& r : f.robots) {
-    for (const RobotLinkDef& l : r.links) find<ShapeDef>(Kind::Link, l.link.name, &f);
-    if (!r.gripper.name.empty())
-      if (const GripperDef* g = find<GripperDef>(Kind::Gripper, r.gripper.name, &f))
-        for (const NameRef* part : {&g->base, &g->finger2, &g->finger3}) find<ShapeDef>(Kind::Link, part->name, &f);
-  }
+// Every robot and workcell of a file is built, whether the command uses it
+// or not, so that one run reports every error of the file (docs/models.md,
+// "Errors"); each robot is built once (buildRobot remembers).
+void Library::checkAll(const DescriptionFile& f) {
+  for (const RobotDef& r : f.robots) buildRobot(r, f);
   for (const WorkcellDef& w : f.workcells)
-    for (const PlacementDef& p : w.placements) {
-      if (!p.isRobot) {
-        find<ShapeDef>(Kind::Object, p.what.name, &f);
-      } else if (const RobotDef* r = find<RobotDef>(Kind::Robot, p.what.name, &f)) {
-        for (const RobotLinkDef& l : r->links) find<ShapeDef>(Kind::Link, l.link.name, &f);
-      }
-    }
+    if (!cellsBuilt_.contains(&w)) buildWorkcell(w, f);
 }
 
 // A file path if it names an existing file, else a library name.
@@ -358,19 +375,20 @@ std::optional<workcell::Robot> Library::robot(const std::string& fileOrName) {
   // read and their errors reported too; only an error-free build returns.
   const DescriptionFile* f = loadRoot(fileOrName, Kind::Robot);
   if (!f) return std::nullopt;
-  if (hasErrors()) return readReferences(*f), std::nullopt;
   if (f->robots.empty()) {
-    diagnostics_.push_back({f->source->name(), {}, diag::Severity::Error, "the file defines no ROBOT"});
+    if (!hasErrors())  // (a ROBOT line that failed is no news)
+      diagnostics_.push_back({f->source->name(), {}, diag::Severity::Error, "the file defines no ROBOT"});
+    checkAll(*f);
     return std::nullopt;
   }
   auto r = buildRobot(f->robots.front(), *f);
+  checkAll(*f);
   return hasErrors() ? std::nullopt : std::move(r);
 }
 
 std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrName) {
   const DescriptionFile* f = loadRoot(fileOrName, Kind::Workcell);
   if (!f) return std::nullopt;
-  if (hasErrors()) return readReferences(*f), std::nullopt;
   std::optional<workcell::Workcell> cell;
   if (!f->workcells.empty()) {
     cell = buildWorkcell(f->workcells.front(), *f);
@@ -383,9 +401,10 @@ std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrNam
     cell = buildWorkcell(alone, *f);
     // Alone, the robot stays where it was drawn.
     if (cell) cell->robots.front().F_world_design = Eigen::Isometry3d::Identity();
-  } else {
+  } else if (!hasErrors()) {
     diagnostics_.push_back({f->source->name(), {}, diag::Severity::Error, "the file defines no WORKCELL and no ROBOT"});
   }
+  checkAll(*f);
   return hasErrors() ? std::nullopt : std::move(cell);
 }
 

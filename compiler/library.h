@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -40,7 +41,8 @@ class Library {
   enum class Kind { Link, Object, Gripper, Robot, Workcell };
   const DescriptionFile* load(const std::filesystem::path& path);
   const DescriptionFile* loadRoot(const std::string& fileOrName, Kind kind);
-  void readReferences(const DescriptionFile& f);
+  /// Builds every robot and workcell of `f` (each once), for its errors.
+  void checkAll(const DescriptionFile& f);
   template <typename Def>
   const DescriptionFile& definingFile(const std::vector<Def>& (*defs)(const DescriptionFile&), const Def* def,
                                       const DescriptionFile& fallback) const;
@@ -48,7 +50,9 @@ class Library {
   const Def* find(Kind kind, const std::string& name, const DescriptionFile* first);
   std::optional<workcell::Shape> shape(Kind kind, const NameRef& ref, const DescriptionFile& from);
   std::optional<workcell::Gripper> gripper(const NameRef& ref, const DescriptionFile& from);
+  std::optional<workcell::Gripper> buildGripper(const GripperDef& def, const DescriptionFile& at);
   std::optional<workcell::Robot> buildRobot(const RobotDef& def, const DescriptionFile& from);
+  std::optional<workcell::Robot> checkRobot(const RobotDef& def, const DescriptionFile& from);
   std::optional<workcell::Workcell> buildWorkcell(const WorkcellDef& def, const DescriptionFile& from);
   void error(const DescriptionFile& file, diag::Pos pos, std::string message);
 
@@ -56,6 +60,11 @@ class Library {
   std::vector<std::unique_ptr<DescriptionFile>> files_;  // in load order
   std::map<std::string, const DescriptionFile*> byPath_;
   std::vector<diag::Diagnostic> diagnostics_;
+  // Each robot and gripper is built (and its errors reported) once, however
+  // many places use it.
+  std::map<const RobotDef*, std::optional<workcell::Robot>> robots_;
+  std::map<const GripperDef*, std::optional<workcell::Gripper>> grippers_;
+  std::set<const WorkcellDef*> cellsBuilt_;
 };
 
 /// The motor table a program sees on a robot: arm joints in order, then

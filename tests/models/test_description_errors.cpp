@@ -194,6 +194,10 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       "p.rsd:53:1: LINK has no END",
       "p.rsd:53:5: expected a name for the LINK before the end of the line",
       "p.rsd:54:1: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'LINK'",
+      // Then what only the library can tell, in the same run: the robot's
+      // link 'l' is defined nowhere. (Nothing else about robot r: its lines
+      // with errors make its joint count and numbering meaningless.)
+      "p.rsd:36:8: unknown link 'l': not defined in this file, and no l.rsd on the library path",
   };
   CHECK(robotErrors(dir, "p.rsd") == expected);
 }
@@ -648,4 +652,68 @@ TEST_CASE("description: a LINK header without a name gives one message, not one 
                          "END",                   // 4
                      }));
   CHECK(robotErrors(dir, "r.rsd") == Strings{"r.rsd:1:5: expected a name for the LINK before the end of the line"});
+}
+
+TEST_CASE("description: five independent mistakes in one file are all reported in one run", "[models]") {
+  // docs/models.md: "Every error of every file is reported in one run". A
+  // statement error used to stop the build of the file (only mistake 1 was
+  // reported); then a robot's first error hid the rest of the workcell.
+  TempDir dir;
+  const std::string file = dir.write(
+      "five.rsd", lines({
+                      "LINK base",                                                         // 1
+                      "  LINE 0 0 0 0 0 100 COLOUR RED",                                   // 2: 1, a keyword misspelled
+                      "END",                                                               // 3
+                      "LINK arm",                                                          // 4
+                      "  BOX 0 100 10 -10 10 -10",                                         // 5
+                      "END",                                                               // 6
+                      "ROBOT r",                                                           // 7
+                      "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",            // 8
+                      "  LINK arm",                                                        // 9: 2, no frame
+                      "  LINK forearm FRAME ORIGIN 100 0 0 XAXIS 101 0 0 ZAXIS 100 0 1",   // 10: 3, unknown link
+                      "  JOINT 1 REVOLUTE LETTER E PRECISION 0.1 RANGE -100 100",          // 11
+                      "  JOINT 3 REVOLUTE LETTER D PRECISION 0.1 RANGE -100 100",          // 12: 4, out of order
+                      "END",                                                               // 13
+                      "WORKCELL w",                                                        // 14
+                      "  ROBOT r AT 0 0 0",                                                // 15
+                      "  OBJECT crate AT 100 0 0",                                         // 16: 5, unknown object
+                      "END",                                                               // 17
+                  }));
+  const Strings expected{
+      "five.rsd:2:22: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'COLOUR'",
+      "five.rsd:9:8: link 'arm' has no FRAME (ORIGIN, XAXIS and ZAXIS points)",
+      "five.rsd:10:8: unknown link 'forearm': not defined in this file, and no forearm.rsd on the library path",
+      "five.rsd:12:9: joints are numbered in order: expected JOINT 2, found JOINT 3",
+      "five.rsd:16:10: unknown object 'crate': not defined in this file, and no crate.rsd on the library path",
+  };
+  CHECK(workcellErrors(dir, "five.rsd") == expected);
+  // Through the command line: one run, five errors, exit code 2.
+  const std::string prog = dir.write("p.rsp", "END\n");
+  const auto r = runCli({"check", prog, "--cell", file});
+  CHECK(r.code == 2);
+  std::size_t errors = 0;
+  for (std::size_t at = r.err.find(": error: "); at != std::string::npos; at = r.err.find(": error: ", at + 1)) ++errors;
+  CHECK(errors == 5);
+}
+
+TEST_CASE("description: a robot nothing uses is checked too, once", "[models]") {
+  TempDir dir;
+  dir.write("two.rsd", kBase + lines({
+                                   "ROBOT used",                                                 // 4
+                                   "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",     // 5
+                                   "END",                                                        // 6
+                                   "ROBOT spare",                                                // 7
+                                   "  LINK base FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",     // 8
+                                   "  LINK ghost FRAME ORIGIN 0 0 0 XAXIS 1 0 0 ZAXIS 0 0 1",    // 9
+                                   "  JOINT 1 REVOLUTE LETTER E PRECISION 1",                    // 10
+                                   "END",                                                        // 11
+                                   "WORKCELL w",                                                 // 12
+                                   "  ROBOT spare AT 0 0 0",                                     // 13
+                                   "END",
+                               }));
+  // robot() builds the first robot; the second, also placed by the
+  // workcell, is reported once.
+  CHECK(robotErrors(dir, "two.rsd") ==
+        Strings{"two.rsd:9:8: unknown link 'ghost': not defined in this file, and no ghost.rsd on the library path",
+                "two.rsd:10:9: JOINT 1 has no RANGE"});
 }
