@@ -122,6 +122,17 @@ std::string formatNumber(double v) {
   return s;
 }
 
+double normalizeDegrees(double degrees) {
+  double d = std::remainder(degrees, 360.0);  // exact, in [-180, 180]
+  if (d <= -180.0) d += 360.0;
+  return d + 0.0;  // never -0
+}
+
+std::string formatAngle(double degrees) {
+  const std::string s = formatNumber(normalizeDegrees(degrees));
+  return s == "-180" ? "180" : s;
+}
+
 int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
   const std::optional<workcell::Robot> robot = loadRobot(q, err);
   if (!robot) return kExitBadInput;
@@ -130,15 +141,18 @@ int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     Json j;
     j["robot"] = robot->name;
     Json list = Json::array();
+    // Full double precision (the shortest text that reads back as the
+    // same double); angles brought into (-180, 180].
     for (std::size_t i = 0; i < rows.size(); ++i) {
       const kinematics::DhRow& r = rows[i];
+      const bool revolute = r.type == kinematics::JointType::Revolute;
       list.push_back({{"axis", i + 1},
                       {"type", kinematics::jointTypeName(r.type)},
-                      {"theta", std::stod(formatNumber(r.theta))},
-                      {"alpha", std::stod(formatNumber(r.alpha))},
-                      {"a", std::stod(formatNumber(r.a))},
-                      {"d", std::stod(formatNumber(r.d))},
-                      {"home", std::stod(formatNumber(r.home()))}});
+                      {"theta", normalizeDegrees(r.theta)},
+                      {"alpha", normalizeDegrees(r.alpha)},
+                      {"a", r.a + 0.0},
+                      {"d", r.d + 0.0},
+                      {"home", revolute ? normalizeDegrees(r.home()) : r.home() + 0.0}});
     }
     j["rows"] = list;
     out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
@@ -151,10 +165,11 @@ int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     const kinematics::DhRow& r = rows[i];
     const bool revolute = r.type == kinematics::JointType::Revolute;
     out << fmt::format("{:<6}{:<11}{:>10}{:>10}{:>10}{:>10}{:>10}\n", i + 1, kinematics::jointTypeName(r.type),
-                       revolute ? fmt::format("theta{}", i + 1) : formatNumber(r.theta), formatNumber(r.alpha),
+                       revolute ? fmt::format("theta{}", i + 1) : formatAngle(r.theta), formatAngle(r.alpha),
                        formatNumber(r.a), revolute ? formatNumber(r.d) : fmt::format("d{}", i + 1),
-                       formatNumber(r.home()));
+                       revolute ? formatAngle(r.home()) : formatNumber(r.home()));
   }
+  out << "(values rounded to 4 decimals, angles in (-180, 180]; --json gives full precision)\n";
   return kExitOk;
 }
 
@@ -214,17 +229,14 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     roll = std::atan2(-r(1, 2), r(1, 1));
   }
   const double deg = 180.0 / M_PI;
-  // atan2 gives -180 or 180 by the sign of a zero; report (-180, 180].
-  const auto angle = [&](double radians) {
-    const double d = radians * deg;
-    return d <= -180.0 + 1e-9 ? 180.0 : d;
-  };
+  // atan2 gives -180 or 180 by the sign of a zero: report (-180, 180].
+  const auto angle = [&](double radians) { return normalizeDegrees(radians * deg); };
   if (q.json) {
+    // Full precision, as matrix --json; design coordinates of the robot.
     Json j;
     j["robot"] = robot->name;
-    j["position"] = {std::stod(formatNumber(p.x())), std::stod(formatNumber(p.y())), std::stod(formatNumber(p.z()))};
-    j["rpy"] = {std::stod(formatNumber(angle(roll))), std::stod(formatNumber(angle(pitch))),
-                std::stod(formatNumber(angle(yaw)))};
+    j["position"] = {p.x() + 0.0, p.y() + 0.0, p.z() + 0.0};
+    j["rpy"] = {angle(roll), angle(pitch), angle(yaw)};
     j["matrix"] = matrixJson(tool);
     out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     return kExitOk;
@@ -233,8 +245,10 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
                      formatNumber(p.y()), formatNumber(p.z()));
   out << fmt::format("  normal n   ({}, {}, {})\n", formatNumber(r(0, 0)), formatNumber(r(1, 0)), formatNumber(r(2, 0)));
   out << fmt::format("  approach a ({}, {}, {})\n", formatNumber(r(0, 2)), formatNumber(r(1, 2)), formatNumber(r(2, 2)));
-  out << fmt::format("  roll {}  pitch {}  yaw {} (degrees, R = Rz(yaw) Ry(pitch) Rx(roll))\n", formatNumber(angle(roll)),
-                     formatNumber(angle(pitch)), formatNumber(angle(yaw)));
+  out << fmt::format("  roll {}  pitch {}  yaw {} (degrees, R = Rz(yaw) Ry(pitch) Rx(roll))\n", formatAngle(roll * deg),
+                     formatAngle(pitch * deg), formatAngle(yaw * deg));
+  out << "(the robot's design coordinates, those its description is drawn in; values rounded to 4 decimals, angles "
+         "in (-180, 180]; --json gives full precision)\n";
   return kExitOk;
 }
 
