@@ -1,5 +1,6 @@
 #include "compiler/description.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
@@ -80,6 +81,12 @@ class Cursor {
 
   bool number(double& out, std::string_view what) {
     if (atEnd() || peek().type != MP::NUMBER) return fail(what);
+    if (std::string written, plain; exponent(written, plain)) {
+      diag_.error(pos(), fmt::format("'{}': exponents are not supported in descriptions", written),
+                  plain.empty() ? std::string("write the number in full, with its decimals")
+                                : fmt::format("write {}", plain));
+      return false;
+    }
     const std::string& t = peek().text;
     const char* first = t.data() + (t[0] == '+' ? 1 : 0);
     const auto [ptr, ec] = std::from_chars(first, t.data() + t.size(), out);
@@ -87,6 +94,53 @@ class Cursor {
       return fail(fmt::format("{} (at most {:g} in size)", what, kMaxCoordinate));
     ++i_;
     return true;
+  }
+
+  // "6e0", "1.5E3", "2e-3", "1e+3": the lexer reads a number, then a name
+  // (or "e" and a signed number) right after it. On true, `written` is the
+  // whole text and `plain` the same value without an exponent ("" if too long).
+  bool exponent(std::string& written, std::string& plain) const {
+    const Word& n = w_[i_];
+    const auto adjacent = [](const Word& a, const Word& b) {
+      return b.pos.line == a.pos.line && b.pos.col == a.pos.col + a.text.size();
+    };
+    if (i_ + 1 >= w_.size()) return false;
+    const Word& e = w_[i_ + 1];
+    if (e.type != MP::NAME || !adjacent(n, e) || (e.text[0] != 'e' && e.text[0] != 'E')) return false;
+    std::string power = e.text.substr(1);
+    written = n.text + e.text;
+    if (power.empty() && i_ + 2 < w_.size() && w_[i_ + 2].type == MP::NUMBER && adjacent(e, w_[i_ + 2]) &&
+        (w_[i_ + 2].text[0] == '+' || w_[i_ + 2].text[0] == '-')) {
+      power = w_[i_ + 2].text;
+      written += power;
+    }
+    const std::size_t signs = !power.empty() && (power[0] == '+' || power[0] == '-') ? 1 : 0;
+    if (power.size() == signs ||
+        !std::all_of(power.begin() + static_cast<std::ptrdiff_t>(signs), power.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      return false;
+    plain = withoutExponent(n.text, power.size() - signs > 3 ? 1000 : std::stoi(power));
+    return true;
+  }
+
+  // "1.5" shifted by 10^k, exactly, as decimal text ("1500"); "" when the
+  // shift is beyond what anyone would write out.
+  static std::string withoutExponent(std::string_view mantissa, int k) {
+    if (k > 20 || k < -20) return {};
+    std::string sign;
+    if (mantissa[0] == '+' || mantissa[0] == '-') sign = mantissa[0] == '-' ? "-" : "", mantissa.remove_prefix(1);
+    const std::size_t dot = mantissa.find('.');
+    const std::string whole(mantissa.substr(0, dot));
+    const std::string frac = dot == std::string_view::npos ? "" : std::string(mantissa.substr(dot + 1));
+    std::string digits = whole + frac;
+    long point = static_cast<long>(whole.size()) + k;
+    if (point <= 0) digits.insert(0, static_cast<std::size_t>(-point) + 1, '0'), point = 1;
+    if (static_cast<std::size_t>(point) >= digits.size()) digits.append(static_cast<std::size_t>(point) - digits.size(), '0');
+    std::string intPart = digits.substr(0, static_cast<std::size_t>(point));
+    std::string fracPart = digits.substr(static_cast<std::size_t>(point));
+    intPart.erase(0, std::min(intPart.find_first_not_of('0'), intPart.size() - 1));
+    while (!fracPart.empty() && fracPart.back() == '0') fracPart.pop_back();
+    const std::string text = fracPart.empty() ? intPart : intPart + "." + fracPart;
+    return text == "0" ? text : sign + text;
   }
 
   bool integer(std::int32_t& out, std::string_view what) {

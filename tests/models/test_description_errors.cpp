@@ -717,3 +717,39 @@ TEST_CASE("description: a robot nothing uses is checked too, once", "[models]") 
         Strings{"two.rsd:9:8: unknown link 'ghost': not defined in this file, and no ghost.rsd on the library path",
                 "two.rsd:10:9: JOINT 1 has no RANGE"});
 }
+
+TEST_CASE("description: number syntax as the grammar has it (.5 and 6. are numbers, 6e0 is not)", "[models]") {
+  // grammar/RobotModel.g4: NUMBER : [+-]? ([0-9]+ ('.' [0-9]*)? | '.' [0-9]+)
+  {
+    rs::diag::Diagnostics d("n.rsd");
+    const auto f = rs::compiler::parseDescription(
+        std::make_unique<rs::diag::SourceFile>("n.rsd", lines({"LINK a", "  LINE .5 6. -.25 +.5 -6. +7", "END"})), d);
+    CHECK(d.all().empty());
+    REQUIRE(f.links.size() == 1);
+    REQUIRE(f.links[0].segments.size() == 1);
+    CHECK(f.links[0].segments[0].a == Eigen::Vector3d(0.5, 6.0, -0.25));
+    CHECK(f.links[0].segments[0].b == Eigen::Vector3d(0.5, -6.0, 7.0));
+  }
+  // An exponent: one message at the number, and the number written out.
+  rs::diag::Diagnostics d("e.rsd");
+  rs::compiler::parseDescription(std::make_unique<rs::diag::SourceFile>("e.rsd", lines({
+                                                                                    "LINK a",                    // 1
+                                                                                    "  LINE 0 0 0 6e0 0 1",      // 2
+                                                                                    "  LINE 0 0 0 1.5E3 0 1",    // 3
+                                                                                    "  LINE 0 0 0 2e-3 0 1",     // 4
+                                                                                    "  LINE 0 0 0 -2.5e+2 0 1",  // 5
+                                                                                    "  MOVE 0 0 .5e1",           // 6
+                                                                                    "END",
+                                                                                })),
+                                 d);
+  Strings got;
+  for (const auto& x : d.sorted())
+    got.push_back(fmt::format("{}:{}: {} | {}", x.pos.line, x.pos.col, x.message, x.hint));
+  CHECK(got == Strings{
+                   "2:14: '6e0': exponents are not supported in descriptions | write 6",
+                   "3:14: '1.5E3': exponents are not supported in descriptions | write 1500",
+                   "4:14: '2e-3': exponents are not supported in descriptions | write 0.002",
+                   "5:14: '-2.5e+2': exponents are not supported in descriptions | write -250",
+                   "6:12: '.5e1': exponents are not supported in descriptions | write 5",
+               });
+}
