@@ -157,6 +157,19 @@ bool endsWithHtml(std::string_view path) {
 
 }  // namespace
 
+std::optional<Eigen::Vector3d> zoomPivot(const workcell::Workcell& cell) {
+  if (cell.robots.empty()) return std::nullopt;
+  const workcell::PlacedRobot& r = cell.robots[0];
+  Eigen::AlignedBox3d box;
+  const auto add = [&](const workcell::Shape& shape) {
+    for (const workcell::Segment& s : shape.segments) box.extend(r.F_world_design * s.a), box.extend(r.F_world_design * s.b);
+  };
+  for (const workcell::Shape& link : r.robot.links) add(link);
+  if (r.robot.hasGripper) add(r.robot.gripper.base), add(r.robot.gripper.finger2), add(r.robot.gripper.finger3);
+  if (box.isEmpty()) return std::nullopt;
+  return box.center();
+}
+
 // ---- render -------------------------------------------------------------------
 
 int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) {
@@ -181,6 +194,8 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   }
   vm::Micros at = 0;
   if (!o.at.empty() && !seconds(o.at, "--at", at, err)) return kExitBadInput;
+  std::optional<Eigen::Vector3d> center;
+  if (!o.center.empty() && !parseTriple(o.center, "--center", center.emplace(), err)) return kExitBadInput;
   launch::LoadedProgram loaded;
   if (o.program.file.empty()) {
     loaded.cell = launch::loadCell(o.program, loaded);
@@ -198,8 +213,12 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
 
   const workcell::Workcell& cell = *loaded.cell;
   render::CellPoser poser(cell);
-  const render::Fit fit = render::fitView(poser.homePoints(), camera);  // for the starting view
+  render::Fit fit = render::fitView(poser.homePoints(), camera);  // for the starting view
+  // --zoom about --center, or the robot's base; at zoom 1 nothing changes.
+  if (!center) center = zoomPivot(cell);
+  if (center) fit = render::zoomAbout(fit, camera, *center);
   render::Caption caption{cell.name, std::nullopt};
+  std::optional<vm::Micros> moment;  // with --program: the moment drawn
   if (run) {
     const render::Moment m = render::momentOf(*run, o.at.empty() ? INT64_MAX : at);
     if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
@@ -213,7 +232,8 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     camera.view += Eigen::Vector3d(m.view.x, m.view.y, m.view.z);
     camera.window += Eigen::Vector3d(m.window.x, m.window.y, m.window.z);
     caption.title = fmt::format("{} on {}", baseName(o.program.file), cell.name);
-    caption.seconds = static_cast<double>(o.at.empty() ? m.clock : at) / 1e6;
+    moment = o.at.empty() ? m.clock : at;
+    caption.seconds = static_cast<double>(*moment) / 1e6;
   }
   const render::Picture picture = render::makePicture(poser, camera, fit, caption);
   if (o.dump == "json")
@@ -226,7 +246,16 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
       err << fmt::format("{}: error: {}\n", base::safeText(o.output), encoded.error);
       return kExitBadInput;
     }
+    const std::size_t bytes = encoded.bytes.size();
     if (!write(o.output, std::move(encoded.bytes), err)) return kExitBadInput;
+    // What was written, as animate says it; on stderr when stdout carries
+    // the --dump-lines listing.
+    const std::string what = run ? fmt::format("{} on {}", base::safeText(o.program.file), base::safeText(cell.name))
+                                 : base::safeText(cell.name);
+    (o.dump.empty() ? out : err) << fmt::format(
+        "{} -> {} ({}x{} pixels, {}, {} bytes{})\n", what, base::safeText(o.output), camera.width, camera.height,
+        *format == render::ImageFormat::Png ? "PNG" : "SVG", bytes,
+        moment ? fmt::format(", at {} s", vm::formatSeconds(*moment)) : "");
   }
   return kExitOk;
 }
@@ -286,6 +315,8 @@ RenderCommands::RenderCommands(CLI::App& app) {
   render_->add_option("--at", o_.at, "The moment of the run to draw, in seconds (default: its end)");
   render_->add_option("-o,--output", o_.output, "Picture to write: FILE.png or FILE.svg");
   render_->add_option("--size", o_.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
+  render_->add_option("--center", o_.center,
+                      "Zoom about the world point X,Y,Z (default: the base of the workcell's first robot)");
   render_->add_flag("--dump-lines{text}", o_.dump, "Print the projected 2-D lines: --dump-lines (text) or =json");
   addLibOption(render_, o_.program);
   addMaxErrorsOption(render_, o_.program);

@@ -9,7 +9,10 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "launch/program.h"
+#include "model/workcell/model.h"
 #include "launch/run_request.h"
 
 namespace CLI {
@@ -30,11 +33,18 @@ struct RenderOptions {
   std::string output;              // -o
   std::string view, window, size;  // "x,y,z", "x,y,z", "WxH"
   double zoom = 1.0;
+  std::string center;              // render --center X,Y,Z: what --zoom zooms about
   bool axes = false;
   std::string dump;  // --dump-lines: "", "text" or "json"
 };
 
 int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err);
+
+/// What render's --zoom zooms about when no --center is given: the middle
+/// of the workcell's first robot as drawn at home (the centre of the box
+/// around its links and gripper, in the world: the centre of its reach at
+/// rest); without a robot, nullopt (the middle of the picture).
+std::optional<Eigen::Vector3d> zoomPivot(const workcell::Workcell& cell);
 int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err);
 
 /// Adds both subcommands to `app`; after app.parse, run() answers the exit

@@ -33,6 +33,13 @@ Fit fitView(std::span<const Eigen::Vector3d> points, const Camera& camera) {
   return {R.transpose() * box.center(), std::isfinite(s) ? unit / s : 1.0};
 }
 
+// At zoom z the scale is z·s1, so R(p + w − c') · z·s1 = R(p + w − c) · s1
+// for p = pivot when p + w − c' = (p + w − c) / z.
+Fit zoomAbout(const Fit& fit, const Camera& camera, const Eigen::Vector3d& pivot) {
+  const Eigen::Vector3d shifted = pivot + camera.window;
+  return {shifted - (shifted - fit.center) / camera.zoom, fit.radius};
+}
+
 Eigen::Matrix3d viewRotation(const Eigen::Vector3d& degrees) {
   double sx, cx, sy, cy, sz, cz;
   kinematics::sinCosDegrees(degrees.x(), sx, cx);

@@ -51,6 +51,13 @@ struct Fit {
 /// when there are no points; a single point gets radius 1.
 Fit fitView(std::span<const Eigen::Vector3d> points, const Camera& camera);
 
+/// The fit to draw with at camera.zoom so that the zoom is about `pivot`
+/// (a world point): `pivot` lands on the pixel it has at zoom 1, and the
+/// picture grows around it, not around the middle of the picture. The
+/// centre moves to pivot + window − (pivot + window − center) / zoom; the
+/// radius stays. At zoom 1 the fit is unchanged.
+Fit zoomAbout(const Fit& fit, const Camera& camera, const Eigen::Vector3d& pivot);
+
 /// Rx(x)·Ry(y)·Rz(z) for angles in degrees, exact at multiples of 90.
 Eigen::Matrix3d viewRotation(const Eigen::Vector3d& degrees);
 

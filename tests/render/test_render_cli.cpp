@@ -1,11 +1,13 @@
 // `robotsim render` and `robotsim animate` end to end, in-process.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+#include <fmt/format.h>
 #include <sstream>
 
 #include "cli/lib/render_commands.h"
 #include "render_test_util.h"
 #include "runtime/render/animation.h"
+#include "runtime/render/camera.h"
 #include "runtime/render/draw.h"
 #include "runtime/render/scene.h"
 
@@ -224,4 +226,83 @@ TEST_CASE("animate's listing: the source, or the disassembly of an image", "[ren
   CHECK(image["program"]["lines"].size() == 2);
   CHECK(image["program"]["lines"][0].get<std::string>().find("MOVE") != std::string::npos);
   CHECK(image["cell"] == "scara-pick");
+}
+
+TEST_CASE("render says what it wrote: the file, its size in pixels, its format and bytes", "[render][cli]") {
+  const TempDir dir;
+  const std::string png = dir.file("cell.png");
+  const auto r = runCli({"render", "scara-pick", "--size", "320x200", "-o", png});
+  REQUIRE(r.code == 0);
+  CHECK(r.out == "scara-pick -> " + png + " (320x200 pixels, PNG, " + std::to_string(readBytes(png).size()) +
+                     " bytes)\n");
+  const std::string svg = dir.file("moment.svg");
+  const auto m = runCli({"render", "scara-pick", "--program", kExamples + "first_moves.rsp", "--at", "0.5", "-o", svg});
+  REQUIRE(m.code == 0);
+  CHECK(m.out == kExamples + "first_moves.rsp on scara-pick -> " + svg + " (1024x768 pixels, SVG, " +
+                     std::to_string(readBytes(svg).size()) + " bytes, at 0.500 s)\n");
+  // With --dump-lines on stdout, the note goes to stderr.
+  const auto both = runCli({"render", "scara-pick", "--dump-lines=json", "-o", png});
+  REQUIRE(both.code == 0);
+  CHECK(nlohmann::json::accept(both.out));
+  CHECK_THAT(both.err, Catch::StartsWith("scara-pick -> " + png + " (1024x768 pixels, PNG, "));
+}
+
+namespace {
+
+// The camera and fit of a --dump-lines=json picture, as drawn.
+rs::render::Projection projectionOf(const nlohmann::json& doc) {
+  rs::render::Camera camera;
+  for (int k = 0; k < 3; ++k) {
+    camera.view[k] = doc["camera"]["view"][k].get<double>();
+    camera.window[k] = doc["camera"]["window"][k].get<double>();
+  }
+  camera.zoom = doc["camera"]["zoom"].get<double>();
+  camera.width = doc["width"].get<int>();
+  camera.height = doc["height"].get<int>();
+  rs::render::Fit fit;
+  for (int k = 0; k < 3; ++k) fit.center[k] = doc["fit"]["center"][k].get<double>();
+  fit.radius = doc["fit"]["radius"].get<double>();
+  return rs::render::Projection(camera, fit);
+}
+
+// Zooming by `zoom` about `pivot`: the pivot keeps its pixel, and every
+// endpoint moves `zoom` times as far from that pixel as it was at zoom 1.
+void expectZoomAbout(const std::vector<std::string>& args, double zoom, const Eigen::Vector3d& pivot) {
+  std::vector<std::string> one = args, more = args;
+  one.insert(one.end(), {"--dump-lines=json", "--zoom", "1"});
+  more.insert(more.end(), {std::string("--dump-lines=json"), std::string("--zoom"), fmt::format("{}", zoom)});
+  const auto a = runCli(one), b = runCli(more);
+  REQUIRE(a.code == 0);
+  REQUIRE(b.code == 0);
+  const auto docA = nlohmann::json::parse(a.out), docB = nlohmann::json::parse(b.out);
+  const Eigen::Vector2d at1 = projectionOf(docA)(pivot), atZ = projectionOf(docB)(pivot);
+  CHECK(atZ.x() == Approx(at1.x()).margin(1e-6));
+  CHECK(atZ.y() == Approx(at1.y()).margin(1e-6));
+  REQUIRE(docA["lines"].size() == docB["lines"].size());
+  for (std::size_t i = 0; i < docA["lines"].size(); ++i)
+    for (const char* end : {"a", "b"})
+      for (int k = 0; k < 2; ++k) {
+        const double p1 = docA["lines"][i][end][k].get<double>(), pz = docB["lines"][i][end][k].get<double>();
+        CHECK(pz == Approx(at1[k] + zoom * (p1 - at1[k])).margin(1e-6));
+      }
+}
+
+}  // namespace
+
+TEST_CASE("render --zoom zooms about the robot, or about --center", "[render][cli]") {
+  const rs::workcell::Workcell scara = rendertest::cell("scara-pick");
+  // The robot's middle as drawn at home, from its lines in the world.
+  Eigen::AlignedBox3d box;
+  const auto& placed = scara.robots.at(0);
+  for (const auto* shape : {&placed.robot.gripper.base, &placed.robot.gripper.finger2, &placed.robot.gripper.finger3})
+    for (const auto& s : shape->segments) box.extend(placed.F_world_design * s.a), box.extend(placed.F_world_design * s.b);
+  for (const auto& link : placed.robot.links)
+    for (const auto& s : link.segments) box.extend(placed.F_world_design * s.a), box.extend(placed.F_world_design * s.b);
+  REQUIRE(rs::cli::zoomPivot(scara).has_value());
+  CHECK(rs::cli::zoomPivot(scara)->isApprox(box.center()));
+  expectZoomAbout({"render", "scara-pick"}, 3.0, box.center());
+  expectZoomAbout({"render", "scara-pick", "--view", "10,20,30", "--window", "50,0,-20"}, 2.5, box.center());
+  // --center: any world point.
+  expectZoomAbout({"render", "scara-pick", "--center", "100,-50,25"}, 4.0, Eigen::Vector3d(100, -50, 25));
+  CHECK(runCli({"render", "scara-pick", "--center", "1,2", "-o", "x.png"}).code == 2);
 }
