@@ -70,6 +70,30 @@ diag::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome&
           std::string(hintFor(image, outcome))};
 }
 
+namespace {
+
+// After a controller failure, stop was sent: a motor that was moving (or had
+// a move sent) stopped somewhere between the last position the controller
+// confirmed and the target the program commanded.
+void printFault(std::ostream& out, const serial::FaultState& f) {
+  std::string uncertain;
+  for (const serial::FaultState::Motor& m : f.motors)
+    if (m.uncertain())
+      uncertain += fmt::format("{}{} between {} (last confirmed) and {} (last commanded)", uncertain.empty() ? "" : "; ",
+                               m.letter, m.confirmed, m.commanded);
+  out << "  fault           stop sent to every motor; 'motors' shows the positions the controller last confirmed\n";
+  out << fmt::format("  uncertain       {}\n", uncertain.empty() ? std::string("none (no motor had a move under way)")
+                                                                 : uncertain);
+  const bool several = (f.outputsOn & (f.outputsOn - 1)) != 0;
+  out << fmt::format("  left ON         {}\n",
+                     f.outputsOn == 0 ? std::string("no output")
+                                      : fmt::format("output{} {} (as last set: stopping the motors does not turn "
+                                                    "outputs off)",
+                                                    several ? "s" : "", lampList(f.outputsOn)));
+}
+
+}  // namespace
+
 void printTextSummary(std::ostream& out, const RunReport& r) {
   if (!r.run || !r.run->outcome()) return;
   const vm::Image& im = r.run->image();
@@ -84,6 +108,7 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   const auto pos = m.positions();
   for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? "  " : "", im.motors[i].letter, pos[i]);
   out << fmt::format("  motors          {}\n", motors);
+  if (r.fault) printFault(out, *r.fault);
   if (const auto tcp = r.run->tcp()) out << fmt::format("  tool centre     {}\n", pointText(*tcp));
   const std::vector<runtime::ObjectView> objects = r.run->objects();
   for (std::size_t o = 0; o < objects.size(); ++o) {
@@ -111,6 +136,15 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     const auto pos = m.positions();
     for (std::size_t i = 0; i < pos.size(); ++i) motors[std::string(1, im.motors[i].letter)] = pos[i];
     j["motors"] = motors;
+    if (r.fault) {
+      Json uncertain = Json::array(), on = Json::array();
+      for (const serial::FaultState::Motor& mo : r.fault->motors)
+        if (mo.uncertain())
+          uncertain.push_back({{"motor", std::string(1, mo.letter)}, {"confirmed", mo.confirmed}, {"commanded", mo.commanded}});
+      for (int i = 0; i < 8; ++i)
+        if ((r.fault->outputsOn >> i) & 1) on.push_back(i + 1);
+      j["fault"] = {{"message", r.fault->failure}, {"uncertain_motors", uncertain}, {"outputs_left_on", on}};
+    }
     if (const auto tcp = r.run->tcp()) j["tcp"] = roundedPoint(*tcp);
     if (r.run->cell()) {
       Json objects = Json::array();

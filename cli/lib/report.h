@@ -7,6 +7,7 @@
 
 #include "diag/diagnostic.h"
 #include "runtime/run/run.h"
+#include "runtime/serial/rhino_machine.h"
 #include "vm/interpreter.h"
 
 namespace rs::cli {
@@ -19,6 +20,9 @@ struct RunReport {
   std::vector<diag::Diagnostic> diagnostics;  // compile + runtime
   std::size_t maxDiagnostics = 0;             // --max-errors: the JSON lists at most this many (0 = all)
   diag::Omitted omitted;                      // found beyond those kept
+  /// A serial run that ended in a controller failure: which motors' places
+  /// are uncertain, which outputs were left ON.
+  std::optional<serial::FaultState> fault;
   bool ok() const;
 };
 

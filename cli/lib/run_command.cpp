@@ -50,12 +50,14 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   launch::printDiagnostics(err, program.diagnostics, program);  // warnings
 
   std::unique_ptr<runtime::Run> run;
+  const serial::RhinoMachine* controller = nullptr;  // owned by the run
   if (o.serial.active()) {
     std::vector<diag::Diagnostic> problems;
     std::unique_ptr<vm::Machine> rhino =
         launch::openRhino(o.serial, spec->image->motors, spec->limits.maxTime, problems);
     launch::printDiagnostics(err, problems, program);
     if (!rhino) return kExitRunFailed;
+    controller = dynamic_cast<const serial::RhinoMachine*>(rhino.get());
     run = std::make_unique<runtime::Run>(*spec, std::move(rhino));
   } else {
     run = std::make_unique<runtime::Run>(*spec);
@@ -68,6 +70,7 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   }
   const vm::RunOutcome outcome = run->runToEnd();
   report.run = run.get();
+  if (controller) report.fault = controller->faultState();
   const vm::Image& image = run->image();
   if (!outcome.ok()) {
     const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace rs::serial {
 namespace {
 
@@ -21,7 +23,8 @@ RhinoMachine::RhinoMachine(std::vector<vm::MotorSpec> motors, RhinoSettings sett
       log_(log),
       session_(link, clock, settings_, log, interrupt),
       positions_(motors_.size(), 0),
-      start_(motors_.size(), 0) {
+      start_(motors_.size(), 0),
+      commanded_(motors_.size(), 0) {
   session_.setDevice(link.name());
   controller_ = settings_.dialect == Dialect::Mark3 ? makeMark3(session_, motors_) : makeMark4(session_, motors_);
 }
@@ -48,6 +51,7 @@ Status RhinoMachine::open() {
                                           session_.device(), st.message)));
   }
   start_ = positions_;
+  commanded_ = positions_;
   opened_ = true;
   origin_ = clock_.now();
   return Status::ok();
@@ -105,12 +109,23 @@ Status RhinoMachine::moveTo(std::span<const std::int32_t> targets) {
   }
   if (std::string refused = controller_->refuse(targets); !refused.empty())
     return Status::fault(refused + ": nothing was sent to the controller");
+  commanded_.assign(targets.begin(), targets.end());
   return fail(controller_->move(targets, positions_));
 }
 
 Status RhinoMachine::hardHome() {
   if (Status st = ready(); !st) return st;
+  std::fill(commanded_.begin(), commanded_.end(), 0);
   return fail(controller_->home(positions_));
+}
+
+std::optional<FaultState> RhinoMachine::faultState() const {
+  if (failure_.empty()) return std::nullopt;
+  FaultState f;
+  f.failure = failure_;
+  f.outputsOn = outputs_;
+  for (std::size_t i = 0; i < motors_.size(); ++i) f.motors.push_back({motors_[i].letter, positions_[i], commanded_[i]});
+  return f;
 }
 
 Status RhinoMachine::reset() { return moveTo(start_); }

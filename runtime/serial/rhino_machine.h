@@ -14,6 +14,8 @@
 
 #include <atomic>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "runtime/serial/link.h"
@@ -24,6 +26,23 @@
 #include "vm/machine.h"
 
 namespace rs::serial {
+
+/// Where a run that ended in a controller failure left the robot, as far as
+/// the host knows: for each motor the last position the controller
+/// confirmed and the last one the program commanded (they differ for a
+/// motor that was moving, or had a move sent, when the controller failed:
+/// it may be anywhere between them), and the outputs last set ON.
+struct FaultState {
+  struct Motor {
+    char letter = 0;
+    std::int32_t confirmed = 0;
+    std::int32_t commanded = 0;
+    bool uncertain() const { return confirmed != commanded; }
+  };
+  std::vector<Motor> motors;
+  std::uint8_t outputsOn = 0;
+  std::string failure;
+};
 
 class RhinoMachine final : public vm::Machine {
  public:
@@ -62,6 +81,8 @@ class RhinoMachine final : public vm::Machine {
   const std::vector<vm::MotorSpec>& motors() const { return motors_; }
   /// The fault that stopped the machine ("" while it is healthy).
   const std::string& failure() const { return failure_; }
+  /// After a failure: what is known and what is not; nullopt while healthy.
+  std::optional<FaultState> faultState() const;
   /// After open() failed: how to get past it, when the machine can tell
   /// ("the controller answers as a Mark IV: run with --dialect mark4"), else "".
   const std::string& openHint() const { return openHint_; }
@@ -81,6 +102,7 @@ class RhinoMachine final : public vm::Machine {
   std::unique_ptr<Controller> controller_;
   std::vector<std::int32_t> positions_;
   std::vector<std::int32_t> start_;
+  std::vector<std::int32_t> commanded_;  // the last targets sent (a move's, or 0 for HRDHOME)
   Micros origin_ = 0;
   Micros waitLimit_ = Micros{3600} * 1'000'000;
   std::uint8_t outputs_ = 0;

@@ -201,3 +201,69 @@ TEST_CASE("robotsim run --device: the wrong dialect's handshake suggests the rig
     CHECK(r.err.find("hint:") == std::string::npos);
   }
 }
+
+TEST_CASE("robotsim run --device: after a fault the summary says which motors are uncertain and which outputs are ON",
+          "[serial]") {
+  // Two outputs turned ON, then a move of E to 400 during which the
+  // controller falls silent: its first poll is never answered, so no step
+  // of the move was confirmed. E was last confirmed at 0 and commanded to
+  // 400; D, C, B, A did not move. Counting the commands each dialect sends
+  // before the poll (checked against docs/serial.md):
+  //   Mark III: I (handshake), L (output 1), P5 (outputs 1 and 3), E+40, then E? -> silence after 4
+  //   Mark IV:  TH, SE, PA,E PA,D PA,C PA,B PA,A, OB,1,1, OB,3,1, PD,E,400, MI, then SA -> silence after 11
+  TempDir dir;
+  const std::string prog = dir.write("fault.rsp",
+                                     "OUTSIG 1 ON\n"
+                                     "OUTSIG 3 ON\n"
+                                     "MOVETO 400 0 0 0 0\n"
+                                     "END\n");
+  for (const auto& [dialect, name, after] :
+       {std::tuple{Dialect::Mark3, "mark3", 4ull}, std::tuple{Dialect::Mark4, "mark4", 11ull}}) {
+    INFO(name);
+    EmulatorConfig c;
+    c.settings = defaultSettings(dialect);
+    c.motors = rs::stdlib::rhinoScaraMotors();
+    c.fault = {FaultKind::Silence, after, 0};
+    std::string error;
+    auto emu = PtyEmulator::open(c, error);
+    REQUIRE(emu);
+    emu->start();
+    const auto text = runCli({"run", prog, "--device", emu->path(), "--dialect", name, "--serial-set", "timeout=0.2"});
+    CHECK(text.code == 1);
+    INFO(text.out);
+    CHECK_THAT(text.out, Catch::Contains("  motors          E=0  D=0  C=0  B=0  A=0\n"));
+    CHECK_THAT(text.out, Catch::Contains("  uncertain       E between 0 (last confirmed) and 400 (last commanded)\n"));
+    CHECK_THAT(text.out, Catch::Contains("  left ON         outputs 1, 3 (as last set: stopping the motors does not "
+                                         "turn outputs off)\n"));
+  }
+  EmulatorConfig c;
+  c.settings = defaultSettings(Dialect::Mark3);
+  c.motors = rs::stdlib::rhinoScaraMotors();
+  c.fault = {FaultKind::Silence, 4, 0};
+  std::string error;
+  auto emu = PtyEmulator::open(c, error);
+  REQUIRE(emu);
+  emu->start();
+  const auto r = runCli({"run", prog, "--format", "json", "--device", emu->path(), "--serial-set", "timeout=0.2"});
+  CHECK(r.code == 1);
+  const nlohmann::json j = summary(r.out);
+  REQUIRE(j.contains("fault"));
+  CHECK_THAT(j["fault"]["message"].get<std::string>(),
+             Catch::StartsWith("no reply from the controller to \"E?\" within 0.200 s (timeout)"));
+  CHECK(j["fault"]["uncertain_motors"] == nlohmann::json::parse(R"([{"motor":"E","confirmed":0,"commanded":400}])"));
+  CHECK(j["fault"]["outputs_left_on"] == nlohmann::json::parse("[1,3]"));
+  CHECK(j["outputs"] == nlohmann::json::parse("[true,false,true,false,false,false,false,false]"));
+}
+
+TEST_CASE("robotsim run --device: a run without a fault has no fault section", "[serial]") {
+  TempDir dir;
+  const std::string prog = dir.write("ok.rsp", "OUTSIG 2 ON\nMOVETO 40 0 0 0 0\nEND\n");
+  auto emu = emulator(Dialect::Mark3);
+  const auto r = runCli({"run", prog, "--format", "json", "--device", emu->path(), "--serial-set", "timeout=0.3"});
+  REQUIRE(r.code == 0);
+  CHECK_FALSE(summary(r.out).contains("fault"));
+  auto emu2 = emulator(Dialect::Mark3);
+  const auto t = runCli({"run", prog, "--device", emu2->path(), "--serial-set", "timeout=0.3"});
+  REQUIRE(t.code == 0);
+  CHECK(t.out.find("uncertain") == std::string::npos);
+}
