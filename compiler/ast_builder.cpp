@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <initializer_list>
 #include <fmt/format.h>
 
 #include "RobotProgramParser.h"
@@ -12,6 +13,14 @@
 namespace rs::compiler {
 
 namespace {
+
+// Every operand is checked, even after one fails, so a line reports all its
+// mistakes at once (a braced list evaluates its elements in order).
+bool all(std::initializer_list<bool> checks) {
+  for (bool ok : checks)
+    if (!ok) return false;
+  return true;
+}
 
 using P = rs_grammar::RobotProgramParser;
 
@@ -255,16 +264,16 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
     case vm::Format::Point: return name(w[0], "a point name", in.name, in.namePos);
     case vm::Format::Target: return jump(w[0], in.target);
     case vm::Format::InputJump:
-      return integer(w[0], "an input number", in.io) & onOff(w[1], in.on) & jump(w[2], in.target);
+      return all({integer(w[0], "an input number", in.io), onOff(w[1], in.on), jump(w[2], in.target)});
     case vm::Format::Output:
-      return integer(w[0], "an output number", in.io) & onOff(w[1], in.on);
+      return all({integer(w[0], "an output number", in.io), onOff(w[1], in.on)});
     case vm::Format::Input:
-      return integer(w[0], "an input number", in.io) & onOff(w[1], in.on);
+      return all({integer(w[0], "an input number", in.io), onOff(w[1], in.on)});
     case vm::Format::VarCompare:
-      return name(w[0], "a variable name", in.name, in.namePos) & compare(w[1], in.compare) &
-             integer(w[2], "a value", in.value) & jump(w[3], in.target);
+      return all({name(w[0], "a variable name", in.name, in.namePos), compare(w[1], in.compare),
+                  integer(w[2], "a value", in.value), jump(w[3], in.target)});
     case vm::Format::VarValue:
-      return name(w[0], "a variable name", in.name, in.namePos) & integer(w[1], "a value", in.value);
+      return all({name(w[0], "a variable name", in.name, in.namePos), integer(w[1], "a value", in.value)});
     case vm::Format::Triple: return integers(w, "a number", in.values);
     case vm::Format::Millis: return seconds(w[0], in.value);
   }

@@ -77,7 +77,8 @@ std::string lcovRecord(const std::string& file, const Coverage& coverage) {
   for (const auto& [n, l] : lines)
     if (l.branch) {
       // A block per line, two branches: 0 jumps, 1 goes on ("-": the line never ran).
-      const auto taken = [&](std::uint64_t k) { return l.runs ? std::to_string(k) : std::string("-"); };
+      const bool ran = l.runs > 0;
+      const auto taken = [ran](std::uint64_t k) { return ran ? std::to_string(k) : std::string("-"); };
       out += fmt::format("BRDA:{},0,0,{}\nBRDA:{},0,1,{}\n", n, taken(l.jumped), n, taken(l.fellThrough));
       branches += 2;
       branchesHit += (l.jumped > 0) + (l.fellThrough > 0);

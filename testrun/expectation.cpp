@@ -186,8 +186,9 @@ bool expectation(LineReader& r, Expectation& e) {
       if (is(*w, "within")) break;
       const std::size_t eq = w->text.find('=');
       std::int32_t v = 0;
-      const char* begin = w->text.data() + eq + 1;
+      // Only "X=..." has a value to read: no pointer past a '=' that is not there.
       const char* end = w->text.data() + w->text.size();
+      const char* begin = eq == 1 ? w->text.data() + 2 : end;
       const auto parsed = eq == 1 ? std::from_chars(begin, end, v) : std::from_chars_result{begin, std::errc::invalid_argument};
       if (eq != 1 || parsed.ec != std::errc() || parsed.ptr != end)
         return r.fail(fmt::format("expected a motor and its encoder value, e.g. E=100, got '{}'", w->text));

@@ -683,11 +683,13 @@ TEST_CASE("cli: names from a forged image never reach the terminal raw", "[cli]"
         {label, "malformed image: label 1 has a bad name"},
         {point, "malformed image: point 1 has a bad name"},
         {robot, "malformed image: the robot name holds a control character"}};
-    for (const auto& [image, message] : cases)
+    for (const auto& [image, message] : cases) {
+      const std::string expected = image + ": error: " + message + "\n";
       each(image, [&](const std::vector<std::string>& args, const CliResult& r) {
         CHECK(r.code == 2);
-        if (args.size() == 2) CHECK(r.err == image + ": error: " + message + "\n");
+        if (args.size() == 2) CHECK(r.err == expected);
       });
+    }
   }
 }
 

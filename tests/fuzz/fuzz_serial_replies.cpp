@@ -1,0 +1,74 @@
+// libFuzzer target: any replies from a Rhino controller. A link in place of
+// the serial port answers each command the backend writes with the next
+// record of the input (a length byte, then that many bytes); a manual clock
+// makes every timeout instant. The backend must turn whatever comes back
+// into a fault with a message (and stop), never crash or loop forever. The
+// first byte picks the dialect (Mark III or Mark IV).
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "launch/program.h"
+#include "runtime/serial/link.h"
+#include "runtime/serial/rhino_machine.h"
+#include "runtime/serial/settings.h"
+
+namespace {
+
+class ReplayLink final : public rs::serial::Link {
+ public:
+  ReplayLink(std::span<const std::uint8_t> replies, rs::serial::ManualClock& clock) : rest_(replies), clock_(clock) {}
+
+  rs::serial::IoResult write(std::span<const std::uint8_t> bytes, rs::serial::Micros) override {
+    // One reply per command line: the next record becomes readable.
+    if (!bytes.empty() && (bytes.back() == '\r' || bytes.back() == '\n') && !rest_.empty()) {
+      const std::size_t n = std::min<std::size_t>(rest_[0], rest_.size() - 1);
+      pending_.insert(pending_.end(), rest_.begin() + 1, rest_.begin() + 1 + static_cast<std::ptrdiff_t>(n));
+      rest_ = rest_.subspan(1 + n);
+    }
+    return rs::serial::IoResult::ok(bytes.size());
+  }
+
+  rs::serial::IoResult read(std::span<std::uint8_t> buffer, rs::serial::Micros timeout) override {
+    if (pending_.empty()) {
+      if (rest_.empty() && timeout > 0 && ++idle_ > 1000) return rs::serial::IoResult::closed("end of the fuzz input");
+      clock_.sleepFor(timeout);
+      return rs::serial::IoResult::timeout();
+    }
+    const std::size_t n = std::min(buffer.size(), pending_.size());
+    std::copy_n(pending_.begin(), n, buffer.begin());
+    pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(n));
+    return rs::serial::IoResult::ok(n);
+  }
+
+  std::string name() const override { return "fuzz"; }
+
+ private:
+  std::span<const std::uint8_t> rest_;
+  rs::serial::ManualClock& clock_;
+  std::vector<std::uint8_t> pending_;
+  int idle_ = 0;
+};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  static const std::vector<rs::vm::MotorSpec> motors = rs::launch::defaultTarget().motors;
+  const auto dialect = (data[0] & 1) ? rs::serial::Dialect::Mark4 : rs::serial::Dialect::Mark3;
+  rs::serial::ManualClock clock;
+  ReplayLink link(std::span(data + 1, size - 1), clock);
+  rs::serial::RhinoMachine machine(motors, rs::serial::defaultSettings(dialect), link, clock);
+  if (!machine.open()) return 0;
+  std::vector<std::int32_t> target;
+  for (const rs::vm::MotorSpec& m : motors) target.push_back(m.min + (m.max - m.min) / 3);
+  (void)machine.moveTo(target);
+  (void)machine.setOutput(1, true);
+  (void)machine.input(2);
+  (void)machine.waitFor(3, true);
+  (void)machine.delay(100'000);
+  (void)machine.hardHome();
+  (void)machine.reset();
+  return 0;
+}
