@@ -12,4 +12,4 @@ echo "== unit tests under AddressSanitizer + UndefinedBehaviorSanitizer"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DROBOTSIM_SANITIZE=ON -DROBOTSIM_WERROR=ON >/dev/null
 cmake --build build-asan -j "$(nproc)" --target robotsim_tests
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest --output-on-failure -LE browser)
+  ctest --output-on-failure -LE 'browser|vscode')
