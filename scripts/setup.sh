@@ -49,3 +49,9 @@ if [ "$mode" = test ] && [ ! -d tests/browser/node_modules/playwright-core ]; th
   echo "setup: npm ci in tests/browser" >&2
   npm ci --prefix tests/browser --no-audit --no-fund >/dev/null
 fi
+# The VS Code extension's packages (its client library, vsce, the grammar
+# test tool), pinned in editors/vscode/package-lock.json.
+if [ "$mode" = test ] && [ ! -d editors/vscode/node_modules/@vscode/vsce ]; then
+  echo "setup: npm ci in editors/vscode" >&2
+  npm ci --prefix editors/vscode --no-audit --no-fund >/dev/null
+fi

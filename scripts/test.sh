@@ -17,4 +17,4 @@ CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DROBOTSI
   -DROBOTSIM_WERROR=ON >/dev/null
 cmake --build build-asan -j "$(nproc)" --target robotsim_tests robotsim_fuzzers
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest -j "$(nproc)" --output-on-failure -LE browser)
+  ctest -j "$(nproc)" --output-on-failure -LE 'browser|vscode')

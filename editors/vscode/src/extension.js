@@ -1,0 +1,103 @@
+// The VS Code side of robotsim: starts `robotsim lsp` for .rsp, .rsd and
+// .stim files through vscode-languageclient, and adds the Run, Check,
+// Test, Render and Animate commands (tasks with robotsim's problem
+// matcher; Animate shows robotsim's HTML replay in a webview beside the
+// editor). What each command runs is in commands.js.
+'use strict';
+
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const { execFile } = require('child_process');
+const vscode = require('vscode');
+const { LanguageClient, TransportKind } = require('vscode-languageclient/node');
+const { commandArgs, animationTitle } = require('./commands');
+
+let client;
+
+function settings() {
+  const config = vscode.workspace.getConfiguration('robotsim');
+  return { path: config.get('path', 'robotsim'), cell: config.get('cell', ''), lib: config.get('lib', []) };
+}
+
+function activeFile() {
+  const editor = vscode.window.activeTextEditor;
+  if (!editor || editor.document.isUntitled) {
+    vscode.window.showErrorMessage('ROBOTSIM: save the file first; robotsim reads it from disk.');
+    return undefined;
+  }
+  return editor.document.uri.fsPath;
+}
+
+// run, check, test and render: a task in the terminal, its problems matched.
+async function runTask(command) {
+  const file = activeFile();
+  if (!file) return;
+  const document = vscode.window.activeTextEditor.document;
+  await document.save();
+  const s = settings();
+  const args = commandArgs(command, file, s, { exists: fs.existsSync, text: document.getText() });
+  const task = new vscode.Task({ type: 'robotsim', command, file }, vscode.TaskScope.Workspace,
+    `${command} ${path.basename(file)}`, 'robotsim', new vscode.ProcessExecution(s.path, args), ['$robotsim']);
+  await vscode.tasks.executeTask(task);
+}
+
+// animate: robotsim writes the self-contained replay page; a webview beside
+// the editor shows it (scripts on, no network: the page needs none).
+async function animate(context) {
+  const file = activeFile();
+  if (!file) return;
+  const document = vscode.window.activeTextEditor.document;
+  await document.save();
+  const s = settings();
+  const out = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-')), 'animation.html');
+  const args = commandArgs('animate', file, s, { out, exists: fs.existsSync, text: document.getText() });
+  execFile(s.path, args, (error, _stdout, stderr) => {
+    if (error) {
+      vscode.window.showErrorMessage(`ROBOTSIM animate: ${stderr.trim() || error.message}`);
+      return;
+    }
+    const panel = vscode.window.createWebviewPanel('robotsim.animation', animationTitle(file),
+      { viewColumn: vscode.ViewColumn.Beside, preserveFocus: true }, { enableScripts: true });
+    panel.webview.html = fs.readFileSync(out, 'utf8');
+    context.subscriptions.push(panel);
+  });
+}
+
+function activate(context) {
+  const s = settings();
+  const serverOptions = { command: s.path, args: ['lsp'], transport: TransportKind.stdio };
+  const clientOptions = {
+    documentSelector: [
+      { scheme: 'file', language: 'robotsim-program' },
+      { scheme: 'file', language: 'robotsim-description' },
+      { scheme: 'file', language: 'robotsim-stimuli' },
+    ],
+    initializationOptions: { cell: s.cell, lib: s.lib },
+    synchronize: { configurationSection: 'robotsim' },
+  };
+  client = new LanguageClient('robotsim', 'ROBOTSIM', serverOptions, clientOptions);
+  client.start();
+
+  for (const command of ['run', 'check', 'test', 'render'])
+    context.subscriptions.push(vscode.commands.registerCommand(`robotsim.${command}`, () => runTask(command)));
+  context.subscriptions.push(vscode.commands.registerCommand('robotsim.animate', () => animate(context)));
+  context.subscriptions.push(vscode.tasks.registerTaskProvider('robotsim', {
+    provideTasks: () => [],
+    resolveTask(task) {
+      const file = task.definition.file || activeFile();
+      if (!file) return undefined;
+      const text = fs.existsSync(file) ? fs.readFileSync(file, 'utf8') : '';
+      const args = [...commandArgs(task.definition.command, file, settings(), { exists: fs.existsSync, text }),
+                    ...(task.definition.args || [])];
+      return new vscode.Task(task.definition, task.scope || vscode.TaskScope.Workspace, task.name, 'robotsim',
+        new vscode.ProcessExecution(settings().path, args), ['$robotsim']);
+    },
+  }));
+}
+
+function deactivate() {
+  return client ? client.stop() : undefined;
+}
+
+module.exports = { activate, deactivate };

@@ -1,0 +1,166 @@
+// Tests of the VS Code extension's parts that run without VS Code (which
+// cannot be installed here): the manifest, each command's robotsim
+// arguments run against the real robotsim, the problem matcher on
+// robotsim's real output, the snippets compiled by robotsim, the TextMate
+// grammars (vscode-tmgrammar-test) and the packaged .vsix (@vscode/vsce).
+//   node test/run-tests.js --robotsim PATH
+'use strict';
+
+const test = require('node:test');
+const assert = require('node:assert/strict');
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const { spawnSync } = require('child_process');
+const { commandArgs, parseDiagnostics, diagnosticPattern, directiveCell } = require('../src/commands');
+
+const here = path.resolve(__dirname, '..');
+const root = path.resolve(here, '..', '..');
+const at = process.argv.indexOf('--robotsim');
+const robotsim = at > 0 ? path.resolve(process.argv[at + 1]) : path.join(root, 'build', 'robotsim');
+const manifest = JSON.parse(fs.readFileSync(path.join(here, 'package.json'), 'utf8'));
+const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-vscode-'));
+
+function run(args, options = {}) {
+  const r = spawnSync(robotsim, args, { encoding: 'utf8', cwd: root, ...options });
+  return { code: r.status, out: r.stdout, err: r.stderr };
+}
+
+// A snippet's body with every placeholder at its default (${1:x} -> x,
+// ${1|a,b|} -> a, $0 -> nothing), as VS Code inserts it when Tab is pressed through.
+function expand(body) {
+  let text = body.join('\n');
+  for (let i = 0; i < 5; ++i)
+    text = text.replace(/\$\{\d+:([^{}]*)\}/g, '$1').replace(/\$\{\d+\|([^,|]*)[^}]*\|\}/g, '$1');
+  return text.replace(/\$\d+/g, '');
+}
+
+test('every file the manifest names exists and parses', () => {
+  const c = manifest.contributes;
+  const ids = new Set(c.languages.map((l) => l.id));
+  for (const l of c.languages) JSON.parse(fs.readFileSync(path.join(here, l.configuration), 'utf8'));
+  for (const g of c.grammars) {
+    assert.ok(ids.has(g.language), `grammar for unknown language ${g.language}`);
+    const grammar = JSON.parse(fs.readFileSync(path.join(here, g.path), 'utf8'));
+    assert.equal(grammar.scopeName, g.scopeName);
+  }
+  for (const s of c.snippets) {
+    assert.ok(ids.has(s.language));
+    JSON.parse(fs.readFileSync(path.join(here, s.path), 'utf8'));
+  }
+  assert.deepEqual(c.languages.map((l) => l.extensions[0]).sort(), ['.rsd', '.rsp', '.stim']);
+  assert.ok(fs.existsSync(path.join(here, manifest.main)));
+});
+
+test('every command in the manifest is registered by the extension', () => {
+  const source = fs.readFileSync(path.join(here, 'src', 'extension.js'), 'utf8');
+  const listed = /for \(const command of \[([^\]]*)\]\)/.exec(source)[1].match(/'(\w+)'/g).map((s) => s.slice(1, -1));
+  const registered = new Set([...listed.map((c) => `robotsim.${c}`),
+    ...[...source.matchAll(/registerCommand\('([\w.]+)'/g)].map((m) => m[1])]);
+  assert.deepEqual(manifest.contributes.commands.map((c) => c.command).sort(), [...registered].sort());
+});
+
+test('Run, Check and Test run robotsim on an example, with the stimuli file beside it', () => {
+  const file = path.join(root, 'examples', 'pick_and_place.rsp');
+  const settings = { cell: '', lib: [] };
+  for (const command of ['run', 'check']) {
+    const args = commandArgs(command, file, settings, { exists: fs.existsSync });
+    assert.deepEqual(args.slice(-2), ['--stimuli', path.join(root, 'examples', 'pick_and_place.stim')]);
+    const r = run(args);
+    assert.equal(r.code, 0, `${command}: ${r.err}`);
+  }
+  const t = run(commandArgs('test', file, settings));
+  assert.equal(t.code, 0, t.out + t.err);
+  assert.match(t.out, /passed/);
+});
+
+test('the cell setting becomes --cell', () => {
+  const args = commandArgs('check', path.join(root, 'examples', 'gantry_pick.rsp'), { cell: 'gantry-cell', lib: ['d'] });
+  assert.deepEqual(args.slice(2), ['--cell', 'gantry-cell', '--lib', 'd']);
+  const r = run(commandArgs('check', path.join(root, 'examples', 'gantry_pick.rsp'), { cell: 'gantry-cell', lib: [] }));
+  assert.equal(r.code, 0, r.err);
+});
+
+test('a program\'s own ; cell: line wins over the setting', () => {
+  const text = '; demo\n  ;  cell: gantry-cell\n        END\n';
+  assert.equal(directiveCell(text), 'gantry-cell');
+  assert.equal(directiveCell('        END ; cell: no\n'), '');
+  assert.deepEqual(commandArgs('check', 'f.rsp', { cell: 'scara-pick' }, { text }), ['check', 'f.rsp']);
+  assert.deepEqual(commandArgs('render', 'f.rsp', { cell: 'scara-pick' }, { text, out: 'o.png' }),
+    ['render', 'gantry-cell', '--program', 'f.rsp', '-o', 'o.png']);
+  assert.deepEqual(commandArgs('render', 'f.rsp', {}, { out: 'o.png' }), ['render', 'rhino-scara', '--program', 'f.rsp', '-o', 'o.png']);
+});
+
+test('Render writes a PNG and Animate a self-contained HTML page', () => {
+  const file = path.join(root, 'examples', 'first_moves.rsp');
+  const png = path.join(tmp, 'first_moves.png');
+  const r = run(commandArgs('render', file, { cell: 'scara-pick' }, { out: png }));
+  assert.equal(r.code, 0, r.err);
+  assert.deepEqual([...fs.readFileSync(png).subarray(0, 8)], [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
+  const html = path.join(tmp, 'first_moves.html');
+  const a = run(commandArgs('animate', file, { cell: 'scara-pick' }, { out: html }));
+  assert.equal(a.code, 0, a.err);
+  const page = fs.readFileSync(html, 'utf8');
+  assert.match(page, /^<!DOCTYPE html>/i);
+  assert.match(page, /<script>/);
+  assert.doesNotMatch(page, /<script[^>]+src=|<link[^>]+href="http/, 'the webview page must need no network');
+});
+
+test('the problem matcher reads robotsim errors at their file, line and column', () => {
+  const text = '        MOVE 10 0 0 0 0\n        GOTO nowhere\n        END\n';
+  const file = path.join(tmp, 'broken.rsp');
+  fs.writeFileSync(file, text);
+  const r = run(commandArgs('check', file, {}));
+  assert.notEqual(r.code, 0);
+  const found = parseDiagnostics(r.err);
+  assert.ok(found.length >= 1, r.err);
+  // Independently: "nowhere" is on line 2, at the column after its 13 characters of prefix.
+  const line = text.split('\n').findIndex((l) => l.includes('nowhere')) + 1;
+  const column = text.split('\n')[line - 1].indexOf('nowhere') + 1;
+  assert.deepEqual([found[0].file, found[0].line, found[0].column, found[0].severity], [file, line, column, 'error']);
+  assert.match(found[0].message, /nowhere/);
+  assert.equal(manifest.contributes.problemMatchers[0].pattern.regexp, diagnosticPattern.source);
+});
+
+test('the snippets expand to programs robotsim accepts', () => {
+  const snippets = JSON.parse(fs.readFileSync(path.join(here, 'snippets', 'robotsim-program.json'), 'utf8'));
+  const program = expand(snippets['New program'].body);
+  const loop = expand(snippets['Counted loop'].body);
+  const wait = expand(snippets['Wait for a part'].body);
+  const sub = expand(snippets.Subroutine.body);
+  const whole = program.replace(/^\s*END$/m, `${loop}\n        GOSUB name\n        END\n${sub}`);
+  const file = path.join(tmp, 'snippets.rsp');
+  fs.writeFileSync(file, whole + '\n');
+  const r = run(['check', file]);
+  assert.equal(r.code, 0, whole + '\n' + r.err);
+  const waitFile = path.join(tmp, 'wait.rsp');
+  fs.writeFileSync(waitFile, `${wait}\n        END\n`);
+  const w = run(['check', waitFile, '--input', '1=ON@1']);
+  assert.equal(w.code, 0, w.err);
+  const desc = JSON.parse(fs.readFileSync(path.join(here, 'snippets', 'robotsim-description.json'), 'utf8'));
+  const rsd = path.join(tmp, 'snippets.rsd');
+  fs.writeFileSync(rsd, expand(desc.Link.body) + '\n' + expand(desc.Workcell.body) + '\n');
+  const d = run(commandArgs('render', rsd, {}, { out: path.join(tmp, 'cell.png') }));
+  assert.equal(d.code, 0, d.err);
+});
+
+test('the grammars pass their token tests', () => {
+  const bin = path.join(here, 'node_modules', '.bin', 'vscode-tmgrammar-test');
+  const grammars = manifest.contributes.grammars.flatMap((g) => ['-g', path.join(here, g.path)]);
+  const r = spawnSync(bin, [...grammars, path.join(here, 'test', 'grammar', '*.test.*')], { encoding: 'utf8' });
+  assert.equal(r.status, 0, r.stdout + r.stderr);
+  assert.equal((r.stdout.match(/run successfuly/g) || []).length, 3, r.stdout);
+});
+
+test('package.sh builds a .vsix with the server client and without the tests', () => {
+  const r = spawnSync('bash', [path.join(here, 'package.sh')], { encoding: 'utf8' });
+  assert.equal(r.status, 0, r.stdout + r.stderr);
+  const vsix = path.join(here, `robotsim-${manifest.version}.vsix`);
+  const list = spawnSync('unzip', ['-Z1', vsix], { encoding: 'utf8' }).stdout.split('\n');
+  for (const f of ['extension/package.json', 'extension/src/extension.js', 'extension/src/commands.js',
+                   'extension/syntaxes/robotsim-program.tmLanguage.json',
+                   'extension/node_modules/vscode-languageclient/package.json'])
+    assert.ok(list.includes(f), `${f} missing from the .vsix`);
+  assert.ok(!list.some((f) => f.startsWith('extension/test/')), 'tests packaged');
+  fs.rmSync(vsix);
+});
