@@ -196,7 +196,7 @@ TEST_CASE("cell wiring: --trace and the summary show the tool centre point", "[m
   }
 }
 
-TEST_CASE("cell wiring: a compiled image carries the cell; its run is byte-identical", "[models]") {
+TEST_CASE("cell wiring: a compiled image carries the cell, its run is byte-identical", "[models]") {
   TempDir dir;
   const std::string cell = dir.write("planar.rsd", kPlanar);
   const std::string prog = dir.write("p.rsp", kProgram);

@@ -63,7 +63,7 @@ json parse(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("exact results: angles in (-180, 180]", "[models][exact]") {
+TEST_CASE("exact results: angles lie in -180 < a <= 180", "[models][exact]") {
   using rs::cli::formatAngle;
   using rs::cli::normalizeDegrees;
   CHECK(normalizeDegrees(-180.0) == 180.0);

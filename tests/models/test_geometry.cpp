@@ -150,7 +150,7 @@ TEST_CASE("geometry: ROTATE turns a BOX about the global axis through the origin
   CHECK(inOrder(back.links[0].segments) == std::vector<Edge>{edge({0, 0, 0}, {0, -1, 0}, Color::White)});
 }
 
-TEST_CASE("geometry: colours default to WHITE and follow COLOR; per-line COLOR wins", "[models]") {
+TEST_CASE("geometry: colours default to WHITE and follow COLOR, per-line COLOR wins", "[models]") {
   const DescriptionFile f = parse(lines({
       "LINK c",
       "  LINE 0 0 0 1 0 0",            // WHITE: the default
@@ -199,7 +199,7 @@ TEST_CASE("geometry: the 16 EGA colours by name and by number", "[models]") {
   CHECK(rs::compiler::colorByName("yellow") == Color::Yellow);
 }
 
-TEST_CASE("geometry: a robot's links keep their design coordinates; a placed object its shape", "[models]") {
+TEST_CASE("geometry: a robot's links keep their design coordinates, a placed object its shape", "[models]") {
   rs::testing::TempDir dir;
   dir.write("w.rsd", lines({
                          "OBJECT crate",

@@ -73,7 +73,7 @@ TEST_CASE("At home every line is where the workcell placed its drawing", "[rende
   }
 }
 
-TEST_CASE("Each link moves with its frame; the tool is the ToolTracker's", "[render]") {
+TEST_CASE("Each link moves with its frame, the tool is the ToolTracker's", "[render]") {
   std::mt19937 rng(4);
   for (const std::string& name : allCells()) {
     INFO(name);

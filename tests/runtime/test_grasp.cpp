@@ -142,7 +142,7 @@ TEST_CASE("an empty gripper, a closed gripper pushed into a block, and RESET", "
   checkNear(s[7].corner[1], block1At(0, 0, 0));
 }
 
-TEST_CASE("opening while moving lets go where the move starts; nested boxes give the smaller", "[runtime][grasp]") {
+TEST_CASE("opening while moving lets go where the move starts, nested boxes give the smaller", "[runtime][grasp]") {
   rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
   // A fifth object: a crate around block 1 (x 150..290, y 0..120, z 620..740).
   rs::workcell::PlacedObject crate;

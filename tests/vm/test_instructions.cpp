@@ -110,7 +110,7 @@ void requireEnded(const Run& r) {
 
 }  // namespace
 
-TEST_CASE("MOVE moves every motor by a relative amount; the slowest motor sets the time", "[vm]") {
+TEST_CASE("MOVE moves every motor by a relative amount, the slowest motor sets the time", "[vm]") {
   const Run r = run("MOVE 100 -50 30 7 3\nMOVE 100 -50 30 7 3\nEND\n");
   requireEnded(r);
   CHECK(r.positions() == Values{200, -100, 60, 14, 6});
@@ -383,7 +383,7 @@ TEST_CASE("HRDHOME drives every motor to 0 at motor speed", "[vm]") {
   CHECK(r.positions() == Values{0, 0, 0, 0, 0});
 }
 
-TEST_CASE("SETSOFT sets the soft home without moving; GOSOFT goes there", "[vm]") {
+TEST_CASE("SETSOFT sets the soft home without moving, GOSOFT goes there", "[vm]") {
   const Run r = run("GOSOFT\nSETSOFT 400 0 -150 0 0\nGOSOFT\nMOVE 0 10 0 0 0\nGOSOFT\nEND\n");
   requireEnded(r);
   // GOSOFT before any SETSOFT: all zeros, already there. SETSOFT: no motion,
@@ -395,7 +395,7 @@ TEST_CASE("SETSOFT sets the soft home without moving; GOSOFT goes there", "[vm]"
   CHECK(r.positions() == Values{400, 0, -150, 0, 0});
 }
 
-TEST_CASE("SET assigns; variable names are case-insensitive", "[vm]") {
+TEST_CASE("SET assigns, variable names are case-insensitive", "[vm]") {
   const Run r = run("SET N -5\nSET n 7\nSET Other -2147483648\nEND\n");
   requireEnded(r);
   CHECK(r.image.variables == std::vector<std::string>{"N", "Other"});
@@ -403,7 +403,7 @@ TEST_CASE("SET assigns; variable names are case-insensitive", "[vm]") {
   CHECK(r.var("Other") == -2147483648);
 }
 
-TEST_CASE("END stops the run; running off the end stops it too", "[vm]") {
+TEST_CASE("END stops the run, running off the end stops it too", "[vm]") {
   SECTION("END") {
     const Run r = run("SET N 1\nEND\nSET N 2\n");
     requireEnded(r);
