@@ -23,17 +23,17 @@ std::string_view severityName(Severity s) {
   return "error";
 }
 
-void Diagnostics::add(Pos pos, Severity s, std::string message) {
+void Diagnostics::add(Pos pos, Severity s, std::string message, std::string_view code, std::vector<Related> related) {
   if (s == Severity::Error) ++errors_;
   const Key key{pos, reported_++, list_.size()};
   if (keep_ == 0) {
-    list_.push_back({file_, pos, s, std::move(message)});
+    list_.push_back({file_, pos, s, std::move(message), code, {}, std::move(related)});
     return;
   }
   if (list_.size() < keep_) {
     heap_.push_back(key);
     std::push_heap(heap_.begin(), heap_.end(), before);
-    list_.push_back({file_, pos, s, std::move(message)});
+    list_.push_back({file_, pos, s, std::move(message), code, {}, std::move(related)});
     return;
   }
   // Full: the new one replaces the last kept, if it comes before it.
@@ -43,7 +43,7 @@ void Diagnostics::add(Pos pos, Severity s, std::string message) {
   omitted_.count(list_[slot].severity);
   heap_.back() = {pos, key.seq, slot};
   std::push_heap(heap_.begin(), heap_.end(), before);
-  list_[slot] = {file_, pos, s, std::move(message)};
+  list_[slot] = {file_, pos, s, std::move(message), code, {}, std::move(related)};
 }
 
 std::vector<Diagnostic> Diagnostics::sorted() const {
@@ -75,6 +75,8 @@ std::string render(const Diagnostic& d, const SourceFile* source) {
     out += fmt::format("  {}\n  {}^\n", shown.text, shown.caretIndent);
   }
   if (!d.hint.empty()) out += fmt::format("  hint: {}\n", base::safeText(d.hint));
+  for (const Related& r : d.related)
+    out += fmt::format("{}:{}:{}: note: {}\n", base::safeText(r.file), r.pos.line, r.pos.col, base::safeText(r.message));
   return out;
 }
 

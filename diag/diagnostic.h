@@ -14,6 +14,15 @@ namespace rs::diag {
 
 enum class Severity { Error, Warning, Note };
 
+/// Another place a diagnostic concerns (the first definition of a name
+/// defined twice): printed after it as a note, shown by editors beside it.
+struct Related {
+  std::string file;
+  Pos pos;
+  std::string message;
+  bool operator==(const Related&) const = default;
+};
+
 struct Diagnostic {
   std::string file;
   Pos pos;  ///< line 0: the whole file (or a command-line option)
@@ -25,6 +34,8 @@ struct Diagnostic {
   /// How to get past it, when the tool knows ("allow more with
   /// --max-steps N"); printed on its own line after the source line.
   std::string hint = {};
+  /// Other places it concerns, each with why.
+  std::vector<Related> related = {};
 };
 
 std::string_view severityName(Severity s);
@@ -53,9 +64,17 @@ struct Omitted {
 class Diagnostics {
  public:
   explicit Diagnostics(std::string file, std::size_t keep = 0) : file_(std::move(file)), keep_(keep) {}
-  void error(Pos pos, std::string message) { add(pos, Severity::Error, std::move(message)); }
-  void warning(Pos pos, std::string message) { add(pos, Severity::Warning, std::move(message)); }
-  void add(Pos pos, Severity s, std::string message);
+  /// `code`: the stable name of the check (Diagnostic::code); `related`:
+  /// other places it concerns, in this collector's file.
+  void error(Pos pos, std::string message, std::string_view code = {}, std::vector<Related> related = {}) {
+    add(pos, Severity::Error, std::move(message), code, std::move(related));
+  }
+  void warning(Pos pos, std::string message, std::string_view code = {}, std::vector<Related> related = {}) {
+    add(pos, Severity::Warning, std::move(message), code, std::move(related));
+  }
+  void add(Pos pos, Severity s, std::string message, std::string_view code = {}, std::vector<Related> related = {});
+  /// A related place in this collector's file.
+  Related relatedAt(Pos pos, std::string message) const { return {file_, pos, std::move(message)}; }
 
   /// Counts every error reported, kept or not.
   bool hasErrors() const { return errors_ > 0; }
@@ -105,7 +124,8 @@ DisplayLine displayLine(const SourceFile& source, Pos pos);
 std::string excerpt(std::string_view text, std::size_t max = 64);
 
 /// "file:line:col: error: message", then the source line and a caret under
-/// the column when the source is known.
+/// the column when the source is known, the hint, and each related place as
+/// a "file:line:col: note: message" line.
 std::string render(const Diagnostic& d, const SourceFile* source);
 
 }  // namespace rs::diag
