@@ -186,7 +186,7 @@ Json descriptionHover(const Document& doc, Encoding enc, Position at, const std:
       const kinematics::DhRow row = robot->chain->table()[i - 1];
       const bool revolute = row.type == kinematics::JointType::Revolute;
       return reply(fmt::format(
-          "link `{}`: link {} of {}\n\nD-H row {}: {}, theta {}, alpha {}, a {}, d {} (home {})", l.name, i, r.name, i,
+          "link `{}`: link {} of {}\n\nD-H row {} ({}): theta = {}, alpha = {}, a = {}, d = {} (home {})", l.name, i, r.name, i,
           kinematics::jointTypeName(row.type), revolute ? fmt::format("theta{}", i) : number(row.theta),
           number(row.alpha), number(row.a), revolute ? number(row.d) : fmt::format("d{}", i), number(row.home())));
     }
