@@ -67,7 +67,9 @@ std::vector<std::string> Workspace::files(std::string_view suffix, std::size_t l
   if (root_.empty()) return out;
   std::error_code ec;
   fs::recursive_directory_iterator it(root_, fs::directory_options::skip_permission_denied, ec), end;
-  for (; !ec && it != end && out.size() < limit; it.increment(ec)) {
+  // At most this many entries looked at: a workspace opened at / costs a bounded time.
+  std::size_t budget = 50'000;
+  for (; !ec && it != end && out.size() < limit && budget > 0; it.increment(ec), --budget) {
     const std::string name = it->path().filename().string();
     if (it->is_directory(ec)) {
       if (name.starts_with(".") || name.starts_with("build") || name == "node_modules") it.disable_recursion_pending();

@@ -70,7 +70,19 @@ void addPoint(const ProgramContext& p, const Json& d, const std::string& name, J
   out.push_back(action(fmt::format("Add point '{}' to POINTS", name), d, p.doc.uri(), Json::array({edit})));
 }
 
+// END inserted before the subroutine's first line; not offered when a jump
+// by number would then name another instruction.
 void addEnd(const ProgramContext& p, const Json& d, std::uint32_t line, Json& out) {
+  const ProgramIndex& index = p.analysis.index();
+  const IndexedInstruction* entry = nullptr;
+  for (const IndexedInstruction& in : index.instructions())
+    if ((!in.label.empty() && in.labelPos.line == line) || in.pos.line == line) {
+      entry = &in;
+      break;
+    }
+  if (!entry) return;
+  for (const Occurrence& o : index.occurrences())
+    if (o.kind == NameKind::Instruction && o.instruction >= entry->number) return;
   const std::string eol = p.doc.text().find("\r\n") != std::string::npos ? "\r\n" : "\n";
   out.push_back(action("Add END before the subroutine", d, p.doc.uri(),
                        Json::array({textEdit({{line - 1, 0}, {line - 1, 0}}, std::string(8, ' ') + "END" + eol)}), true));
