@@ -61,3 +61,10 @@ TEST_CASE("a directive naming an unknown cell is an error", "[lsp][cell][cli]") 
   CHECK(r.code == 2);
   CHECK(r.err.find("no-such-cell") != std::string::npos);
 }
+
+TEST_CASE("robotsim lsp --help explains the server", "[lsp][cli]") {
+  const auto r = rs::testing::runCli({"lsp", "--help"});
+  CHECK(r.code == 0);
+  CHECK(r.out.find("Speaks the Language Server Protocol 3.17 over stdin and stdout") != std::string::npos);
+  CHECK(r.out.find("--stdio") != std::string::npos);
+}

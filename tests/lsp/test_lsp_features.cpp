@@ -167,6 +167,16 @@ TEST_CASE("lsp: rename", "[lsp][features]") {
                                    {{"range", range(12, 0, 12, 4)}, {"newText", "PARK"}}}}}}}));
 }
 
+TEST_CASE("lsp: rename a variable everywhere it is written and read", "[lsp][features]") {
+  Opened o;
+  Json params = LspSession::at(kUri, 4, 15);  // the N of JMPVAR
+  params["newName"] = "COUNT";
+  CHECK(o.s.result("textDocument/rename", params) ==
+        Json({{"changes", {{kUri, {{{"range", range(1, 12, 1, 13)}, {"newText", "COUNT"}},
+                                   {{"range", range(3, 12, 3, 13)}, {"newText", "COUNT"}},
+                                   {{"range", range(4, 15, 4, 16)}, {"newText", "COUNT"}}}}}}}));
+}
+
 TEST_CASE("lsp: document symbols and workspace symbols", "[lsp][features]") {
   Opened o;
   const Json symbols = o.s.result("textDocument/documentSymbol", {{"textDocument", {{"uri", kUri}}}});
