@@ -114,7 +114,9 @@ std::optional<Frame> FrameParser::header() {
   }
   if (problem.empty() && !length) problem = "a header block without Content-Length";
   if (!problem.empty()) {
-    start_ = bodyStart;
+    // The next header may start inside this block (a body cut short by a
+    // Content-Length that was too small runs into it): look from here on.
+    start_ += 1;
     resyncing_ = true;
     return Frame{Frame::Kind::BadHeader, {}, problem};
   }

@@ -85,3 +85,12 @@ TEST_CASE("frameMessage writes what parseFrames reads", "[lsp][framing]") {
   CHECK(frames[0].body == body);
   CHECK(frames[1].body == "[]");
 }
+
+TEST_CASE("a Content-Length too small: the cut body is a frame, and the next message is found again", "[lsp][framing]") {
+  const auto frames = parseFrames("Content-Length: 5\r\n\r\n{\"a\":1}Content-Length: 2\r\n\r\n{}");
+  REQUIRE(frames.size() == 3);
+  CHECK(frames[0].body == "{\"a\":");  // not JSON: the server answers ParseError
+  CHECK(frames[1].kind == Frame::Kind::BadHeader);
+  CHECK(frames[2].kind == Frame::Kind::Message);
+  CHECK(frames[2].body == "{}");
+}
