@@ -199,3 +199,27 @@ TEST_CASE("a 1,000,000-line document is answered in bounded time", "[lsp][protoc
   CHECK(hover["contents"]["value"].get<std::string>().starts_with("**ADD** — instruction 1000000"));
   CHECK(seconds < 60.0);  // a bound, not a benchmark: under the sanitizers too
 }
+
+TEST_CASE("serve: byte soup made of protocol fragments never crashes or hangs the server", "[lsp][protocol]") {
+  // Deterministic: a fixed linear congruential sequence picks the fragments.
+  const std::vector<std::string> pieces = {
+      "Content-Length: ", "2", "17", "999999999999", "\r\n", "\r\n\r\n", "\n", "{}", "[", "]", "{\"jsonrpc\":\"2.0\",",
+      "\"id\":1,", "\"method\":\"initialize\",", "\"method\":\"textDocument/didOpen\",", "\"method\":\"exit\"",
+      "\"params\":{\"textDocument\":{\"uri\":\"file:///a.rsp\",\"text\":\"MOVE 1\\n\"}}", "}", "\xFF", "Content-Type: x",
+      ":", "\"method\":\"textDocument/hover\",\"params\":{\"textDocument\":{\"uri\":\"file:///a.rsp\"},"
+      "\"position\":{\"line\":4294967295,\"character\":-1}}"};
+  std::uint64_t seed = 12345;
+  for (int round = 0; round < 300; ++round) {
+    std::string input = round % 2 ? rs::lsp::frameMessage(R"({"jsonrpc":"2.0","id":0,"method":"initialize","params":{"capabilities":{}}})") : "";
+    for (int k = 0; k < 40; ++k) {
+      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+      input += pieces[(seed >> 33) % pieces.size()];
+    }
+    std::istringstream in(input);
+    std::ostringstream out, log;
+    rs::lsp::StreamInput stream(in);
+    rs::lsp::StreamOutput output(out);
+    const int code = rs::lsp::serve(stream, output, log);
+    CHECK((code == 0 || code == 1));
+  }
+}
