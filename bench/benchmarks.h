@@ -48,4 +48,10 @@ nlohmann::json benchTestSuite(const Options& options);
 /// process; growth ratios (linear = 10), peak RSS, bytes printed.
 nlohmann::json benchErrors(const Options& options);
 
+/// The language server on a 10,000-line program: diagnostics published
+/// after a one-character change (target 30 ms), hover and completion
+/// (5 ms), in-process; peak RSS of a `robotsim lsp` process with the file
+/// open (50 MiB).
+nlohmann::json benchLsp(const Options& options);
+
 }  // namespace rs::bench

@@ -93,7 +93,8 @@ class Builder {
 
 void Builder::finish() {
   if (!pendingLabel_.empty())
-    diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
+    diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_),
+                "label-without-instruction");
 }
 
 // Splits a line's tokens into label, head word and operands. Every child of
@@ -110,7 +111,8 @@ void Builder::line(P::LineContext* l, bool recovered) {
   if (tokens[0]->getType() != P::IDENT)
     return diag_.error(posOf(tokens[0]), fmt::format("unexpected '{}': a line starts with an instruction, a label "
                                                      "or a point name",
-                                                     diag::excerpt(textOf(src_, tokens[0]))));
+                                                     diag::excerpt(textOf(src_, tokens[0]))),
+                       "syntax");
   const bool labelled = tokens.size() >= 2 && tokens[1]->getType() == P::COLON;
   std::size_t next = labelled ? 2 : 0;
   const antlr4::Token* headToken = nullptr;
@@ -120,17 +122,18 @@ void Builder::line(P::LineContext* l, bool recovered) {
   for (; next < tokens.size(); ++next) {
     if (tokens[next]->getType() == P::COLON)
       return diag_.error(posOf(tokens[next]),
-                         "unexpected ':': a label is a name followed by ':' at the start of a line");
+                         "unexpected ':': a label is a name followed by ':' at the start of a line", "syntax");
     words.push_back({tokens[next]->getType(), textOf(src_, tokens[next]), posOf(tokens[next])});
   }
   if (labelled) {
     const std::string_view label = textOf(src_, tokens[0]);
     const diag::Pos pos = posOf(tokens[0]);
     if (inPoints_) {
-      diag_.error(pos, "points cannot have labels: labels name instructions");
+      diag_.error(pos, "points cannot have labels: labels name instructions", "label-on-point");
     } else if (!pendingLabel_.empty()) {
       diag_.error(pos, fmt::format("label '{}' follows label '{}': an instruction can have only one label",
-                                   diag::excerpt(label), pendingLabel_));
+                                   diag::excerpt(label), pendingLabel_),
+                  "two-labels", {diag_.relatedAt(pendingLabelPos_, fmt::format("label '{}' is here", pendingLabel_))});
     } else if (checkName("a label", label, pos)) {
       pendingLabel_ = label;
       pendingLabelPos_ = pos;
@@ -139,7 +142,8 @@ void Builder::line(P::LineContext* l, bool recovered) {
   if (!headToken) {
     if (labelled && !words.empty()) {
       diag_.error(words[0].pos,
-                  fmt::format("expected an instruction after the label, found '{}'", diag::excerpt(words[0].text)));
+                  fmt::format("expected an instruction after the label, found '{}'", diag::excerpt(words[0].text)),
+                  "syntax");
       pendingLabel_ = {};
     }
     return;
@@ -148,9 +152,11 @@ void Builder::line(P::LineContext* l, bool recovered) {
   if (sameName(head, "POINTS") && words.empty()) {
     if (inPoints_)
       return diag_.error(posOf(headToken),
-                         fmt::format("POINTS appears twice (the section began on line {})", pointsHeader_.line));
+                         fmt::format("POINTS appears twice (the section began on line {})", pointsHeader_.line),
+                         "duplicate-points-section", {diag_.relatedAt(pointsHeader_, "the POINTS section begins here")});
     if (!pendingLabel_.empty()) {
-      diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
+      diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_),
+                  "label-without-instruction");
       pendingLabel_ = {};
     }
     inPoints_ = true;
@@ -167,9 +173,10 @@ void Builder::line(P::LineContext* l, bool recovered) {
                 fmt::format("'{}' is not an instruction: it looks like a taught point, but no POINTS line comes "
                             "before it",
                             diag::excerpt(head)),
-                fmt::format("points follow a line POINTS after the instructions: add POINTS on a line of its own "
-                            "after the END on line {}, before line {}",
-                            endLine_, pos.line));
+                diag::Hint{fmt::format("points follow a line POINTS after the instructions: add POINTS on a line "
+                                       "of its own after the END on line {}, before line {}",
+                                       endLine_, pos.line)},
+                "missing-points-line");
     if (!pendingLabel_.empty()) {
       diag_.error(pendingLabelPos_, fmt::format("label '{}' is not followed by an instruction", pendingLabel_));
       pendingLabel_ = {};
@@ -211,9 +218,10 @@ void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& wo
   } else {
     in.known = false;
     const std::string_view near = closestMnemonic(mnemonic);
-    diag_.error(in.pos, near.empty() ? fmt::format("unknown instruction '{}'", diag::excerpt(mnemonic))
-                                     : fmt::format("unknown instruction '{}' (did you mean {}?)",
-                                                   diag::excerpt(mnemonic), near));
+    diag_.error(in.pos,
+                near.empty() ? fmt::format("unknown instruction '{}'", diag::excerpt(mnemonic))
+                             : fmt::format("unknown instruction '{}' (did you mean {}?)", diag::excerpt(mnemonic), near),
+                "unknown-instruction");
   }
   sink_.instruction(in);
 }
@@ -228,14 +236,16 @@ void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
   p.pos = posOf(head);
   if (vm::opByName(p.name)) {
     diag_.error(p.pos, fmt::format("instruction {} after POINTS: instructions come before the POINTS line (line {})",
-                                   p.name, pointsHeader_.line));
+                                   p.name, pointsHeader_.line),
+                "instruction-after-points");
     return;
   }
   if (!checkName("a point", p.name, p.pos)) return;
   const bool ok = integers(words, "an encoder value", p.values);
   if (ok && p.values.size() != motors_.size())
     diag_.error(p.pos, fmt::format("point {} has {} values, expected {} (one per motor: {})", p.name, p.values.size(),
-                                   motors_.size(), motorLetters()));
+                                   motors_.size(), motorLetters()),
+                "operand-count");
   sink_.point(p);
 }
 
@@ -246,7 +256,8 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
     const bool ok = integers(w, "an encoder value", in.values);
     if (ok && w.size() != motors_.size())
       diag_.error(in.pos, fmt::format("{} expects {} values (one per motor: {}), found {}", mnemonic, motors_.size(),
-                                      motorLetters(), w.size()));
+                                      motorLetters(), w.size()),
+                  "operand-count");
     return ok;
   }
   const std::size_t want = vm::info(f).operands;
@@ -256,7 +267,8 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
     const diag::Pos at = w.size() > want ? w[want].pos : in.pos;
     diag_.error(at, want == 0 ? fmt::format("{} takes no operands, found {}", mnemonic, w.size())
                               : fmt::format("{} expects {} operand{} ({}{}), found {}", mnemonic, want,
-                                            want == 1 ? "" : "s", mnemonic, vm::info(f).usage, w.size()));
+                                            want == 1 ? "" : "s", mnemonic, vm::info(f).usage, w.size()),
+                "operand-count");
     return false;
   }
   switch (f) {
@@ -303,8 +315,9 @@ bool Builder::delayWithUnit(const std::vector<Word>& w) {
   diag_.error(w[1].pos,
               fmt::format("'{}' after DELAY's number: DELAY takes seconds as a bare number, without a unit",
                           diag::excerpt(unit)),
-              bare.empty() ? std::string("write the seconds alone, e.g. DELAY 1.5")
-                           : fmt::format("write DELAY {}{}", bare, millis ? " (seconds)" : ""));
+              diag::Hint{bare.empty() ? std::string("write the seconds alone, e.g. DELAY 1.5")
+                                      : fmt::format("write DELAY {}{}", bare, millis ? " (seconds)" : "")},
+              "delay-unit");
   return true;
 }
 
@@ -330,29 +343,32 @@ bool Builder::twoWordComparison(const std::vector<Word>& w) {
   else if (op == "<>")
     hint = "there is no not-equal: jump with = past the instructions for the other case";
   diag_.error(w[1].pos,
-              fmt::format("'{}' is not a comparison: JMPVAR compares with <, > or = (one sign)", op), hint);
+              fmt::format("'{}' is not a comparison: JMPVAR compares with <, > or = (one sign)", op),
+              diag::Hint{std::move(hint)}, "bad-comparison");
   return true;
 }
 
 bool Builder::checkName(std::string_view what, std::string_view name, diag::Pos pos) {
   if (name.size() > kMaxNameLength) {
     diag_.error(pos, fmt::format("'{}...' is too long for {}: names have at most {} characters", name.substr(0, 16),
-                                 what, kMaxNameLength));
+                                 what, kMaxNameLength),
+                "name-too-long");
     return false;
   }
   if (!isReservedWord(name)) return true;
-  diag_.error(pos, fmt::format("'{}' is a reserved word and cannot name {}", name, what));
+  diag_.error(pos, fmt::format("'{}' is a reserved word and cannot name {}", name, what), "reserved-word");
   return false;
 }
 
 // Sets out.pos only on success: later checks skip operands without one.
 bool Builder::integer(const Word& w, std::string_view what, Value& out) {
   if (w.type != P::NUMBER) {
-    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, diag::excerpt(w.text)));
+    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, diag::excerpt(w.text)), "bad-operand");
     return false;
   }
   if (w.text.find('.') != std::string_view::npos) {
-    diag_.error(w.pos, fmt::format("expected {} (a whole number), found '{}'", what, diag::excerpt(w.text)));
+    diag_.error(w.pos, fmt::format("expected {} (a whole number), found '{}'", what, diag::excerpt(w.text)),
+                "bad-operand");
     return false;
   }
   const std::string_view digits = w.text[0] == '+' ? w.text.substr(1) : w.text;
@@ -360,7 +376,8 @@ bool Builder::integer(const Word& w, std::string_view what, Value& out) {
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
   if (ec != std::errc() || end != digits.data() + digits.size()) {
     diag_.error(w.pos,
-                fmt::format("'{}' does not fit in a 32-bit integer (-2147483648..2147483647)", diag::excerpt(w.text)));
+                fmt::format("'{}' does not fit in a 32-bit integer (-2147483648..2147483647)", diag::excerpt(w.text)),
+                "number-out-of-range");
     return false;
   }
   out.number = v;
@@ -384,11 +401,11 @@ bool Builder::integers(const std::vector<Word>& words, std::string_view what, st
 bool Builder::seconds(const Word& w, Value& out) {
   out.pos = w.pos;
   if (w.type != P::NUMBER) {
-    diag_.error(w.pos, fmt::format("expected a number of seconds, found '{}'", diag::excerpt(w.text)));
+    diag_.error(w.pos, fmt::format("expected a number of seconds, found '{}'", diag::excerpt(w.text)), "bad-operand");
     return false;
   }
   if (w.text[0] == '-') {
-    diag_.error(w.pos, fmt::format("DELAY cannot be negative, found '{}'", diag::excerpt(w.text)));
+    diag_.error(w.pos, fmt::format("DELAY cannot be negative, found '{}'", diag::excerpt(w.text)), "bad-delay");
     return false;
   }
   const std::string_view t = w.text[0] == '+' ? w.text.substr(1) : w.text;
@@ -396,21 +413,24 @@ bool Builder::seconds(const Word& w, Value& out) {
   const std::string_view whole = t.substr(0, dot);
   const std::string_view frac = dot == std::string_view::npos ? std::string_view() : t.substr(dot + 1);
   if (frac.size() > 3) {
-    diag_.error(w.pos, fmt::format("DELAY counts milliseconds: at most 3 decimals, found '{}'", diag::excerpt(w.text)));
+    diag_.error(w.pos, fmt::format("DELAY counts milliseconds: at most 3 decimals, found '{}'", diag::excerpt(w.text)),
+                "bad-delay");
     return false;
   }
   std::int64_t s = 0;
   const auto r = std::from_chars(whole.data(), whole.data() + whole.size(), s);
   if (r.ec != std::errc() || s > vm::kMaxDelayMillis / 1000) {
     diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000,
-                                   diag::excerpt(w.text)));
+                                   diag::excerpt(w.text)),
+                "bad-delay");
     return false;
   }
   std::int64_t ms = s * 1000;
   for (std::size_t i = 0, scale = 100; i < frac.size(); ++i, scale /= 10) ms += (frac[i] - '0') * static_cast<std::int64_t>(scale);
   if (ms > vm::kMaxDelayMillis) {
     diag_.error(w.pos, fmt::format("DELAY is at most {} seconds, found '{}'", vm::kMaxDelayMillis / 1000,
-                                   diag::excerpt(w.text)));
+                                   diag::excerpt(w.text)),
+                "bad-delay");
     return false;
   }
   out.number = ms;
@@ -420,7 +440,7 @@ bool Builder::seconds(const Word& w, Value& out) {
 bool Builder::name(const Word& w, std::string_view what, std::string_view& out, diag::Pos& pos) {
   pos = w.pos;
   if (w.type != P::IDENT) {
-    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, diag::excerpt(w.text)));
+    diag_.error(w.pos, fmt::format("expected {}, found '{}'", what, diag::excerpt(w.text)), "bad-operand");
     return false;
   }
   // "a variable name" -> "a variable" for checkName's "cannot name ..."
@@ -435,7 +455,7 @@ bool Builder::onOff(const Word& w, bool& out) {
     out = sameName(w.text, "ON");
     return true;
   }
-  diag_.error(w.pos, fmt::format("expected ON or OFF, found '{}'", diag::excerpt(w.text)));
+  diag_.error(w.pos, fmt::format("expected ON or OFF, found '{}'", diag::excerpt(w.text)), "bad-operand");
   return false;
 }
 
@@ -444,7 +464,8 @@ bool Builder::compare(const Word& w, vm::Compare& out) {
     out = w.text == "<" ? vm::Compare::Less : w.text == ">" ? vm::Compare::Greater : vm::Compare::Equal;
     return true;
   }
-  diag_.error(w.pos, fmt::format("expected a comparison <, > or =, found '{}'", diag::excerpt(w.text)));
+  diag_.error(w.pos, fmt::format("expected a comparison <, > or =, found '{}'", diag::excerpt(w.text)),
+                "bad-operand");
   return false;
 }
 
@@ -458,7 +479,7 @@ bool Builder::jump(const Word& w, JumpRef& out) {
   Value v;
   if (!integer(w, "a line number or label", v)) return false;
   if (v.number < 1) {
-    diag_.error(w.pos, fmt::format("line numbers start at 1, found {}", v.number));
+    diag_.error(w.pos, fmt::format("line numbers start at 1, found {}", v.number), "bad-line-number");
     return false;
   }
   out.number = static_cast<std::uint32_t>(v.number);

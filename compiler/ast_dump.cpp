@@ -48,7 +48,7 @@ std::string operands(const Instruction& in) {
 
 std::string dumpAst(const diag::SourceFile& source, const Target& target, bool parseTree, diag::Diagnostics& d) {
   if (auto bad = checkEncoding(source)) {
-    d.error(bad->pos, std::move(bad->message));
+    d.error(bad->pos, std::move(bad->message), bad->code);
     return {};
   }
   ParseTree tree(source, d);

@@ -116,7 +116,7 @@ struct Checker::State {
   vm::Image image;          // built as instructions come; code holds a placeholder for an unknown one
   std::vector<bool> known;  // per instruction: its mnemonic was known
   LabelTable labels;        // the first of each name, by id in image.labels
-  std::vector<std::uint32_t> labelLines;  // per label id: where it is defined
+  std::vector<diag::Pos> labelPositions;  // per label id: where it is defined
   NameTable points, variables;
   std::vector<Reference> jumps;      // to labels, and by line number
   std::vector<Reference> pointUses;  // MOVEP
@@ -167,7 +167,7 @@ Checker::Checker(const Target& target, const diag::SourceFile& source, diag::Dia
   im.lines.reserve(lines);
   im.columns.reserve(lines);
   im.labels.reserve(lines);
-  s_->labelLines.reserve(lines);
+  s_->labelPositions.reserve(lines);
   im.constants.reserve(source.text().size() / 2 + 1);
   s_->known.reserve(lines);
   s_->jumps.reserve(lines);
@@ -182,9 +182,12 @@ void Checker::instruction(const Instruction& in) {
   if (!in.label.empty()) {
     const auto id = static_cast<std::uint32_t>(s.image.labels.size());
     s.image.labels.push_back({index, std::string(in.label)});
-    s.labelLines.push_back(in.labelPos.line);
-    if (const std::uint32_t first = s.labels.insert(id, s.image.labels); first != LabelTable::kNone)
-      s.diag.error(in.labelPos, fmt::format("label '{}' is already defined on line {}", in.label, s.labelLines[first]));
+    s.labelPositions.push_back(in.labelPos);
+    if (const std::uint32_t first = s.labels.insert(id, s.image.labels); first != LabelTable::kNone) {
+      const diag::Pos there = s.labelPositions[first];
+      s.diag.error(in.labelPos, fmt::format("label '{}' is already defined on line {}", in.label, there.line),
+                   "duplicate-label", {s.diag.relatedAt(there, fmt::format("'{}' is first defined here", in.label))});
+    }
   }
   s.known.push_back(in.known);
   s.image.lines.push_back(in.pos.line);
@@ -217,7 +220,9 @@ void Checker::point(const PointDef& p) {
   State& s = *s_;
   const auto index = static_cast<std::uint32_t>(s.image.points.size());
   const auto [it, fresh] = s.points.try_emplace(p.name, Named{index, p.pos});
-  if (!fresh) s.diag.error(p.pos, fmt::format("point '{}' is already defined on line {}", p.name, it->second.pos.line));
+  if (!fresh)
+    s.diag.error(p.pos, fmt::format("point '{}' is already defined on line {}", p.name, it->second.pos.line),
+                 "duplicate-point", {s.diag.relatedAt(it->second.pos, fmt::format("'{}' is first defined here", p.name))});
   vm::Point& point = s.image.points.emplace_back(vm::Point{std::string(p.name), {}});
   for (const Value& v : p.values) point.values.push_back(static_cast<std::int32_t>(v.number));
   if (p.values.size() != s.motors().size()) return;  // arity already reported
@@ -225,13 +230,14 @@ void Checker::point(const PointDef& p) {
     const vm::MotorSpec& spec = s.motors()[m];
     if (p.values[m].number < spec.min || p.values[m].number > spec.max)
       s.diag.error(p.values[m].pos, fmt::format("point {}: value {} for motor {} is outside its range {}..{}", p.name,
-                                                p.values[m].number, spec.letter, spec.min, spec.max));
+                                                p.values[m].number, spec.letter, spec.min, spec.max),
+                   "value-out-of-range");
   }
 }
 
 std::optional<vm::Image> Checker::finish() {
   State& s = *s_;
-  if (s.image.code.empty()) s.diag.error({1, 1}, "the program has no instructions");
+  if (s.image.code.empty()) s.diag.error({1, 1}, "the program has no instructions", "empty-program");
   s.resolve();
   s.warnUnassignedVariables();
   s.analyseFlow();
@@ -261,7 +267,7 @@ std::uint16_t Checker::State::variable(const Instruction& in) {
   if (fresh) {
     if (image.variables.size() == kMaxSlots) {
       variables.erase(it);
-      diag.error(in.namePos, "more than 65535 variables");
+      diag.error(in.namePos, "more than 65535 variables", "too-many-names");
       return 0;
     }
     image.variables.emplace_back(in.name);
@@ -281,7 +287,8 @@ void Checker::State::checkIo(const Instruction& in) {
   if (in.io.pos.line == 0) return;
   if (in.io.number < 1 || in.io.number > vm::kIoCount) {
     const bool output = in.op == vm::Op::OutSig;
-    diag.error(in.io.pos, fmt::format("{} {} is outside 1..8", output ? "output" : "input", in.io.number));
+    diag.error(in.io.pos, fmt::format("{} {} is outside 1..8", output ? "output" : "input", in.io.number),
+               "io-out-of-range");
   }
 }
 
@@ -297,10 +304,12 @@ void Checker::State::checkTargets(const Instruction& in) {
       const std::int64_t span = std::int64_t{spec.max} - spec.min;
       if (v.number > span || -v.number > span)
         diag.error(v.pos, fmt::format("MOVE by {} can never keep motor {} within its range {}..{}", v.number,
-                                      spec.letter, spec.min, spec.max));
+                                      spec.letter, spec.min, spec.max),
+                   "value-out-of-range");
     } else if (v.number < spec.min || v.number > spec.max) {
       diag.error(v.pos, fmt::format("{} target {} for motor {} is outside its range {}..{}", name, v.number,
-                                    spec.letter, spec.min, spec.max));
+                                    spec.letter, spec.min, spec.max),
+                   "value-out-of-range");
     }
   }
 }
@@ -312,14 +321,16 @@ void Checker::State::resolve() {
     if (r.number != 0) {
       if (r.number > n)
         diag.error(r.pos, fmt::format("line number {} does not exist (the program has {} instruction{})", r.number, n,
-                                      n == 1 ? "" : "s"));
+                                      n == 1 ? "" : "s"),
+                   "undefined-line-number");
       continue;
     }
     const std::string_view name = nameAt(source, r.pos);
     const std::uint32_t id = labels.find(name, image.labels);
     if (id == LabelTable::kNone) {
       diag.error(r.pos, fmt::format("undefined label '{}'", name),
-                 didYouMean(name, image.labels, [](const vm::Label& l) -> std::string_view { return l.name; }));
+                 diag::Hint{didYouMean(name, image.labels, [](const vm::Label& l) -> std::string_view { return l.name; })},
+                 "undefined-label");
       continue;
     }
     image.code[r.index].d = static_cast<std::int32_t>(image.labels[id].index);
@@ -329,12 +340,13 @@ void Checker::State::resolve() {
     const auto it = points.find(name);
     if (it == points.end()) {
       diag.error(r.pos, fmt::format("undefined point '{}'", name),
-                 didYouMean(name, image.points, [](const vm::Point& p) -> std::string_view { return p.name; }));
+                 diag::Hint{didYouMean(name, image.points, [](const vm::Point& p) -> std::string_view { return p.name; })},
+                 "undefined-point");
       continue;
     }
     image.code[r.index].b = static_cast<std::uint16_t>(it->second.index);
   }
-  if (points.size() > kMaxSlots) diag.error(pointsHeader, "more than 65535 points");
+  if (points.size() > kMaxSlots) diag.error(pointsHeader, "more than 65535 points", "too-many-names");
   std::vector<Reference>().swap(jumps);
   std::vector<Reference>().swap(pointUses);
 }
@@ -348,7 +360,8 @@ void Checker::State::warnUnassignedVariables() {
     if (!assigned[s] && firstRead[s].line != 0)
       diag.warning(firstRead[s],
                    fmt::format("variable '{}' is never assigned by SET or ADD; it is always 0", image.variables[s]),
-                   didYouMean(image.variables[s], set, [](std::string_view v) { return v; }));
+                   diag::Hint{didYouMean(image.variables[s], set, [](std::string_view v) { return v; })},
+                   "unassigned-variable");
 }
 
 // Instructions reachable from `starts`, following fall-through and jumps
@@ -386,7 +399,8 @@ void Checker::State::analyseFlow() {
     for (std::size_t i = 0; i < code.size(); ++i) {
       if (!known[i] || code[i].op != vm::Op::Return || inSubroutine[i]) continue;
       diag.error(posOf(i), subroutines.empty() ? std::string("RETURN without any GOSUB in the program")
-                                               : std::string("RETURN that no GOSUB can reach"));
+                                               : std::string("RETURN that no GOSUB can reach"),
+                 "unmatched-return");
     }
   }
   if (code.empty() || !targetsResolved) return;
@@ -394,7 +408,8 @@ void Checker::State::analyseFlow() {
   for (std::size_t i = 1; i < code.size(); ++i) {
     if (live[i] || !live[i - 1]) continue;
     diag.warning(posOf(i), fmt::format("unreachable code: nothing jumps here and {} on line {} does not continue",
-                                       vm::info(code[i - 1].op).name, image.lines[i - 1]));
+                                       vm::info(code[i - 1].op).name, image.lines[i - 1]),
+                 "unreachable-code");
   }
 }
 

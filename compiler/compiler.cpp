@@ -13,19 +13,36 @@ namespace rs::compiler {
 std::optional<diag::Diagnostic> checkEncoding(const diag::SourceFile& source, std::string_view what) {
   if (source.text().size() > kMaxSourceBytes)
     return diag::Diagnostic{source.name(), {}, diag::Severity::Error,
-                      fmt::format("file is {} bytes; the limit is {} MiB", source.text().size(), kMaxSourceBytes >> 20)};
+                      fmt::format("file is {} bytes; the limit is {} MiB", source.text().size(), kMaxSourceBytes >> 20),
+                      "file-too-large"};
   const diag::Utf8Problem bad = diag::findInvalidUtf8(source.text());
   if (bad.found)
     return diag::Diagnostic{source.name(), bad.pos, diag::Severity::Error,
-                            fmt::format("invalid UTF-8 (byte 0x{:02X}): {} are UTF-8 text", bad.byte, what)};
+                            fmt::format("invalid UTF-8 (byte 0x{:02X}): {} are UTF-8 text", bad.byte, what), "invalid-utf8"};
   const diag::LoneCarriageReturn cr = source.findLoneCarriageReturn();
   if (!cr.found) return std::nullopt;
   return diag::Diagnostic{source.name(), cr.pos, diag::Severity::Error,
                           "a carriage return without a line feed (old Mac line ends?): lines end in LF or CR LF",
-                          {}, "save the file with Unix (LF) or Windows (CR LF) line ends"};
+                          "lone-carriage-return", "save the file with Unix (LF) or Windows (CR LF) line ends"};
 }
 
-CompileResult compile(const diag::SourceFile& source, const Target& target, std::size_t keepDiagnostics) {
+namespace {
+
+// Hands everything to the checker, then to the observer.
+class Tee final : public AstSink {
+ public:
+  Tee(AstSink& first, AstSink& second) : first_(first), second_(second) {}
+  void instruction(const Instruction& in) override { first_.instruction(in), second_.instruction(in); }
+  void pointsHeader(diag::Pos pos) override { first_.pointsHeader(pos), second_.pointsHeader(pos); }
+  void point(const PointDef& p) override { first_.point(p), second_.point(p); }
+
+ private:
+  AstSink& first_;
+  AstSink& second_;
+};
+
+CompileResult compileTo(const diag::SourceFile& source, const Target& target, std::size_t keepDiagnostics,
+                        AstSink* observer) {
   CompileResult result;
   if (auto bad = checkEncoding(source)) {
     result.diagnostics.push_back(std::move(*bad));
@@ -34,16 +51,32 @@ CompileResult compile(const diag::SourceFile& source, const Target& target, std:
   diag::Diagnostics diagnostics(source.name(), keepDiagnostics);
   LineParser parser(source, diagnostics);
   Checker checker(target, source, diagnostics);
-  buildAst(source, parser, target.motors, diagnostics, checker);
+  if (observer) {
+    Tee tee(checker, *observer);
+    buildAst(source, parser, target.motors, diagnostics, tee);
+  } else {
+    buildAst(source, parser, target.motors, diagnostics, checker);
+  }
   result.image = checker.finish();
   result.diagnostics = diagnostics.sorted();
   result.omitted = diagnostics.omitted();
   return result;
 }
 
+}  // namespace
+
+CompileResult compile(const diag::SourceFile& source, const Target& target, std::size_t keepDiagnostics) {
+  return compileTo(source, target, keepDiagnostics, nullptr);
+}
+
+CompileResult compile(const diag::SourceFile& source, const Target& target, std::size_t keepDiagnostics,
+                      AstSink& observer) {
+  return compileTo(source, target, keepDiagnostics, &observer);
+}
+
 std::string dumpTokens(const diag::SourceFile& source, diag::Diagnostics& diagnostics) {
   if (auto bad = checkEncoding(source)) {
-    diagnostics.error(bad->pos, std::move(bad->message));
+    diagnostics.error(bad->pos, std::move(bad->message), bad->code);
     return {};
   }
   Lexer lexer(source, diagnostics);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler/ast_builder.h"
 #include "compiler/codegen.h"
 #include "diag/diagnostic.h"
 #include "diag/source_file.h"
@@ -27,6 +28,12 @@ struct CompileResult {
 /// With `keepDiagnostics` > 0 only the first that many diagnostics (by
 /// position) are kept; the others are counted in `omitted`.
 CompileResult compile(const diag::SourceFile& source, const Target& target, std::size_t keepDiagnostics = 0);
+/// The same compile, also handing every instruction, the POINTS header and
+/// every point to `observer` as the checker receives them (valid during the
+/// call only): a language server indexes names and references from the
+/// one parse that gives its diagnostics.
+CompileResult compile(const diag::SourceFile& source, const Target& target, std::size_t keepDiagnostics,
+                      AstSink& observer);
 
 /// Checks that a source can be lexed at all (size, UTF-8); returns the error.
 /// `what` names the kind of file in the message ("programs are UTF-8 text").

@@ -69,7 +69,7 @@ class Cursor {
     diag_.error(pos(),
                 atEnd() ? fmt::format("expected {} before the end of the line", what)
                         : fmt::format("expected {}, found '{}'", what, peek().text),
-                std::move(hint));
+                diag::Hint{std::move(hint)});
     return false;
   }
 
@@ -83,8 +83,8 @@ class Cursor {
     if (atEnd() || peek().type != MP::NUMBER) return fail(what);
     if (std::string written, plain; exponent(written, plain)) {
       diag_.error(pos(), fmt::format("'{}': exponents are not supported in descriptions", written),
-                  plain.empty() ? std::string("write the number in full, with its decimals")
-                                : fmt::format("write {}", plain));
+                  diag::Hint{plain.empty() ? std::string("write the number in full, with its decimals")
+                                           : fmt::format("write {}", plain)});
       return false;
     }
     const std::string& t = peek().text;
@@ -315,7 +315,7 @@ void Parser::open(Cursor& c, const Word& head) {
   if (kind == Block::None) {
     constexpr std::string_view kBlockKinds = "LINK, OBJECT, GRIPPER, ROBOT or WORKCELL";
     diag_.error(head.pos, fmt::format("expected {}, found '{}'", kBlockKinds, head.text),
-                head.type == MP::NAME ? didYouMean(head.text, kBlockKinds) : std::string());
+                diag::Hint{head.type == MP::NAME ? didYouMean(head.text, kBlockKinds) : std::string()});
     return;
   }
   // Without a name the block still opens (the error is reported), so the

@@ -65,20 +65,23 @@ void Lexer::badCharacter() {
   std::string shown = (c >= 0x20 && c < 0x7F) || c >= 0x80 ? fmt::format("'{}'", text_.substr(pos_, n))
                                                            : fmt::format("U+{:04X}", static_cast<unsigned>(c));
   if ((c == '+' || c == '-') && !(pos_ + 1 < text_.size() && isDigit(text_[pos_ + 1])))
-    diagnostics_.error({line_, col_}, fmt::format("a sign must be followed by digits, found {}", shown));
+    diagnostics_.error({line_, col_}, fmt::format("a sign must be followed by digits, found {}", shown),
+                       "bad-character");
   else if (c == '!' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '=')
     diagnostics_.error({line_, col_}, fmt::format("unexpected character {}", shown),
-                       "JMPVAR compares with <, > or =; there is no not-equal: jump with = past the instructions "
-                       "for the other case");
+                       diag::Hint{"JMPVAR compares with <, > or =; there is no not-equal: jump with = past the "
+                                  "instructions for the other case"},
+                       "bad-character");
   else
-    diagnostics_.error({line_, col_}, fmt::format("unexpected character {}", shown));
+    diagnostics_.error({line_, col_}, fmt::format("unexpected character {}", shown), "bad-character");
   pos_ += n;
   ++col_;
 }
 
 void Lexer::skipRestOfLine() {
   diagnostics_.error({line_, col_},
-                     fmt::format("more than {} words on one line: the rest of the line is skipped", kMaxLineWords));
+                     fmt::format("more than {} words on one line: the rest of the line is skipped", kMaxLineWords),
+                     "line-too-long");
   std::size_t end = text_.find('\n', pos_);
   if (end == std::string_view::npos)
     end = text_.size();

@@ -18,7 +18,8 @@ class SyntaxErrors final : public antlr4::BaseErrorListener {
                    std::exception_ptr) override {
     const diag::Pos pos{static_cast<std::uint32_t>(line), static_cast<std::uint32_t>(col + 1)};
     diagnostics_.error(
-        pos, token ? fmt::format("unexpected '{}'", diag::excerpt(token->getText())) : std::string("syntax error"));
+        pos, token ? fmt::format("unexpected '{}'", diag::excerpt(token->getText())) : std::string("syntax error"),
+        "syntax");
   }
 
  private:
@@ -106,7 +107,7 @@ antlr4::ParserRuleContext* LineParser::next() {
         const antlr4::Token* t = tokens_->LT(1);
         diagnostics_.error({static_cast<std::uint32_t>(t->getLine()),
                             static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)},
-                           "syntax error: this line cannot be parsed");
+                           "syntax error: this line cannot be parsed", "syntax");
       }
     }
   }

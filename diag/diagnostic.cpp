@@ -23,27 +23,23 @@ std::string_view severityName(Severity s) {
   return "error";
 }
 
-Diagnostic Diagnostics::make(Pos pos, Severity s, std::string message, std::string hint) const {
-  Diagnostic d;
-  d.file = file_;
-  d.pos = pos;
-  d.severity = s;
-  d.message = std::move(message);
-  d.hint = std::move(hint);
-  return d;
+Diagnostic Diagnostics::make(Pos pos, Severity s, std::string message, std::string_view code,
+                              std::vector<Related> related, std::string hint) const {
+  return {file_, pos, s, std::move(message), code, std::move(hint), std::move(related)};
 }
 
-void Diagnostics::add(Pos pos, Severity s, std::string message, std::string hint) {
+void Diagnostics::add(Pos pos, Severity s, std::string message, std::string_view code, std::vector<Related> related,
+                      std::string hint) {
   if (s == Severity::Error) ++errors_;
   const Key key{pos, reported_++, list_.size()};
   if (keep_ == 0) {
-    list_.push_back(make(pos, s, std::move(message), std::move(hint)));
+    list_.push_back(make(pos, s, std::move(message), code, std::move(related), std::move(hint)));
     return;
   }
   if (list_.size() < keep_) {
     heap_.push_back(key);
     std::push_heap(heap_.begin(), heap_.end(), before);
-    list_.push_back(make(pos, s, std::move(message), std::move(hint)));
+    list_.push_back(make(pos, s, std::move(message), code, std::move(related), std::move(hint)));
     return;
   }
   // Full: the new one replaces the last kept, if it comes before it.
@@ -53,7 +49,7 @@ void Diagnostics::add(Pos pos, Severity s, std::string message, std::string hint
   omitted_.count(list_[slot].severity);
   heap_.back() = {pos, key.seq, slot};
   std::push_heap(heap_.begin(), heap_.end(), before);
-  list_[slot] = make(pos, s, std::move(message), std::move(hint));
+  list_[slot] = make(pos, s, std::move(message), code, std::move(related), std::move(hint));
 }
 
 std::vector<Diagnostic> Diagnostics::sorted() const {
@@ -85,6 +81,8 @@ std::string render(const Diagnostic& d, const SourceFile* source) {
     out += fmt::format("  {}\n  {}^\n", shown.text, shown.caretIndent);
   }
   if (!d.hint.empty()) out += fmt::format("  hint: {}\n", base::safeText(d.hint));
+  for (const Related& r : d.related)
+    out += fmt::format("{}:{}:{}: note: {}\n", base::safeText(r.file), r.pos.line, r.pos.col, base::safeText(r.message));
   return out;
 }
 

@@ -14,6 +14,15 @@ namespace rs::diag {
 
 enum class Severity { Error, Warning, Note };
 
+/// Another place a diagnostic concerns (the first definition of a name
+/// defined twice): printed after it as a note, shown by editors beside it.
+struct Related {
+  std::string file;
+  Pos pos;
+  std::string message;
+  bool operator==(const Related&) const = default;
+};
+
 struct Diagnostic {
   std::string file;
   Pos pos;  ///< line 0: the whole file (or a command-line option)
@@ -25,6 +34,8 @@ struct Diagnostic {
   /// How to get past it, when the tool knows ("allow more with
   /// --max-steps N"); printed on its own line after the source line.
   std::string hint = {};
+  /// Other places it concerns, each with why.
+  std::vector<Related> related = {};
 };
 
 std::string_view severityName(Severity s);
@@ -46,6 +57,11 @@ struct Omitted {
   }
 };
 
+/// A diagnostic's hint, for Diagnostics::error and warning.
+struct Hint {
+  std::string text;
+};
+
 /// The collector every reader reports to. With a limit (`keep` > 0) it
 /// keeps only the first `keep` diagnostics by position, those sorted()
 /// would list first, and counts the others (omitted()): a file with a
@@ -53,14 +69,26 @@ struct Omitted {
 class Diagnostics {
  public:
   explicit Diagnostics(std::string file, std::size_t keep = 0) : file_(std::move(file)), keep_(keep) {}
-  /// `hint`: how to get past it, when the reader knows ("did you mean 'PICK'?").
-  void error(Pos pos, std::string message, std::string hint = {}) {
-    add(pos, Severity::Error, std::move(message), std::move(hint));
+  /// `code`: the stable name of the check (Diagnostic::code); `related`:
+  /// other places it concerns, in this collector's file.
+  void error(Pos pos, std::string message, std::string_view code = {}, std::vector<Related> related = {}) {
+    add(pos, Severity::Error, std::move(message), code, std::move(related));
   }
-  void warning(Pos pos, std::string message, std::string hint = {}) {
-    add(pos, Severity::Warning, std::move(message), std::move(hint));
+  void warning(Pos pos, std::string message, std::string_view code = {}, std::vector<Related> related = {}) {
+    add(pos, Severity::Warning, std::move(message), code, std::move(related));
   }
-  void add(Pos pos, Severity s, std::string message, std::string hint = {});
+  /// With a hint: how to get past it, when the reader knows ("did you mean
+  /// 'PICK'?"). A type of its own, so a hint is never taken for a code.
+  void error(Pos pos, std::string message, Hint hint, std::string_view code = {}) {
+    add(pos, Severity::Error, std::move(message), code, {}, std::move(hint.text));
+  }
+  void warning(Pos pos, std::string message, Hint hint, std::string_view code = {}) {
+    add(pos, Severity::Warning, std::move(message), code, {}, std::move(hint.text));
+  }
+  void add(Pos pos, Severity s, std::string message, std::string_view code = {}, std::vector<Related> related = {},
+           std::string hint = {});
+  /// A related place in this collector's file.
+  Related relatedAt(Pos pos, std::string message) const { return {file_, pos, std::move(message)}; }
 
   /// Counts every error reported, kept or not.
   bool hasErrors() const { return errors_ > 0; }
@@ -80,7 +108,8 @@ class Diagnostics {
     std::size_t seq = 0;
     std::size_t slot = 0;
   };
-  Diagnostic make(Pos pos, Severity s, std::string message, std::string hint) const;
+  Diagnostic make(Pos pos, Severity s, std::string message, std::string_view code, std::vector<Related> related,
+                  std::string hint) const;
   static bool before(const Key& a, const Key& b) {
     if (a.pos.line != b.pos.line) return a.pos.line < b.pos.line;
     return a.pos.col != b.pos.col ? a.pos.col < b.pos.col : a.seq < b.seq;
@@ -111,7 +140,8 @@ DisplayLine displayLine(const SourceFile& source, Pos pos);
 std::string excerpt(std::string_view text, std::size_t max = 64);
 
 /// "file:line:col: error: message", then the source line and a caret under
-/// the column when the source is known.
+/// the column when the source is known, the hint, and each related place as
+/// a "file:line:col: note: message" line.
 std::string render(const Diagnostic& d, const SourceFile* source);
 
 }  // namespace rs::diag

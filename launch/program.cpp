@@ -8,6 +8,7 @@
 #include <ostream>
 
 #include "base/file_io.h"
+#include "launch/cell_directive.h"
 #include "model/workcell/cell_file.h"
 #include "stdlib/default_robot.h"
 #include "vm/image_file.h"
@@ -38,16 +39,28 @@ bool endsWithImageSuffix(std::string_view path) {
   return path.size() >= kSuffix.size() && base::sameName(path.substr(path.size() - kSuffix.size()), kSuffix);
 }
 
-// Reads FILE and compiles it for `target`, or loads and verifies it when it
-// is an image.
-void readProgram(const std::string& path, const compiler::Target& target, LoadedProgram& into) {
+// FILE's bytes, or nothing with the reason in `into`.
+std::optional<std::string> readBytes(const std::string& path, LoadedProgram& into) {
   base::FileRead read = base::readFile(path, kMaxInputBytes);
-  if (!read.bytes) {
-    into.diagnostics.push_back(wholeFileError(path, "cannot read file: " + read.error));
-    return;
-  }
-  if (vm::looksLikeImage(*read.bytes)) {
-    vm::LoadResult loaded = vm::loadImage(*read.bytes);
+  if (!read.bytes) into.diagnostics.push_back(wholeFileError(path, "cannot read file: " + read.error));
+  return std::move(read.bytes);
+}
+
+// The request with its cell: --cell when given, else the program source's
+// "; cell:" directive (cell_directive.h).
+ProgramRequest withDirective(const ProgramRequest& request, const std::string& bytes) {
+  ProgramRequest r = request;
+  if (!r.cell.empty() || vm::looksLikeImage(bytes)) return r;
+  if (const std::optional<CellDirective> d = findCellDirective(diag::withoutByteOrderMark(bytes)))
+    r.cell = resolveCellName(request.file, d->name);
+  return r;
+}
+
+// Compiles FILE's bytes for `target`, or loads and verifies them when they
+// are an image.
+void readProgram(const std::string& path, std::string bytes, const compiler::Target& target, LoadedProgram& into) {
+  if (vm::looksLikeImage(bytes)) {
+    vm::LoadResult loaded = vm::loadImage(bytes);
     if (!loaded.error.empty())
       into.diagnostics.push_back(wholeFileError(path, loaded.error));
     else
@@ -58,7 +71,7 @@ void readProgram(const std::string& path, const compiler::Target& target, Loaded
     into.diagnostics.push_back({path, {}, diag::Severity::Note,
                                 "this is not a compiled image (it does not start with the image magic number); "
                                 "compiling it as source"});
-  into.source.emplace(path, std::move(*read.bytes));
+  into.source.emplace(path, std::move(bytes));
   compiler::CompileResult compiled = compiler::compile(*into.source, target, into.maxErrors);
   for (diag::Diagnostic& d : compiled.diagnostics) into.diagnostics.push_back(std::move(d));
   into.omitted += compiled.omitted;
@@ -121,11 +134,14 @@ std::shared_ptr<const workcell::Workcell> loadCell(const ProgramRequest& request
   return std::make_shared<const workcell::Workcell>(std::move(*cell));
 }
 
-LoadedProgram loadProgram(const ProgramRequest& request) {
+LoadedProgram loadProgram(const ProgramRequest& given) {
   LoadedProgram program;
-  program.maxErrors = request.maxErrors;
+  program.maxErrors = given.maxErrors;
+  std::optional<std::string> bytes = readBytes(given.file, program);
+  if (!bytes) return program;
+  const ProgramRequest request = withDirective(given, *bytes);
   if (request.cell.empty()) {
-    readProgram(request.file, defaultTarget(), program);
+    readProgram(request.file, std::move(*bytes), defaultTarget(), program);
   } else {
     program.cell = loadCell(request, program);
     if (!program.cell) return program;
@@ -133,7 +149,7 @@ LoadedProgram loadProgram(const ProgramRequest& request) {
       program.diagnostics.push_back(wholeFileError(request.cell, "the workcell has no robot to run the program"));
       return program;
     }
-    readProgram(request.file, cellTarget(*program.cell), program);
+    readProgram(request.file, std::move(*bytes), cellTarget(*program.cell), program);
     if (program.image && !program.source) {
       program.image.reset();
       program.diagnostics.push_back(
@@ -155,9 +171,12 @@ LoadedProgram loadProgram(const ProgramRequest& request) {
   return program;
 }
 
-LoadedProgram loadProgramToDraw(const ProgramRequest& request) {
+LoadedProgram loadProgramToDraw(const ProgramRequest& given) {
   LoadedProgram program;
-  program.maxErrors = request.maxErrors;
+  program.maxErrors = given.maxErrors;
+  std::optional<std::string> bytes = readBytes(given.file, program);
+  if (!bytes) return program;
+  const ProgramRequest request = withDirective(given, *bytes);
   if (!request.cell.empty()) {
     program.cell = loadCell(request, program);
     if (!program.cell) return program;
@@ -166,7 +185,7 @@ LoadedProgram loadProgramToDraw(const ProgramRequest& request) {
       return program;
     }
   }
-  readProgram(request.file, program.cell ? cellTarget(*program.cell) : defaultTarget(), program);
+  readProgram(request.file, std::move(*bytes), program.cell ? cellTarget(*program.cell) : defaultTarget(), program);
   if (!program.ok()) return program;
   const vm::Image& image = *program.image;
   if (program.source) {

@@ -49,8 +49,9 @@ struct LoadedProgram {
 };
 
 /// run, check, compile, disasm: the program compiled for --cell's first
-/// robot (the image then carries the cell) or for the default robot; an
-/// image runs on the cell it carries, and refuses --cell.
+/// robot (the image then carries the cell), else for the cell its
+/// "; cell: NAME" directive names (cell_directive.h), else for the default
+/// robot; an image runs on the cell it carries, and refuses --cell.
 LoadedProgram loadProgram(const ProgramRequest& request);
 
 /// render, animate: the same, except that an image may be drawn on the

@@ -21,9 +21,10 @@ packages=(
 # Catch2 and the unit tests build with the tree; the browser test drives a
 # real Chromium with playwright-core (pinned in tests/browser/package-lock.json);
 # lcov's genhtml reads robotsim test's coverage files; lua5.4 is the
-# benchmarks' peer;
-# clang and its runtime (libFuzzer) build the sanitizer and fuzzing build.
-[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 clang libclang-rt-14-dev)
+# benchmarks' peer; neovim's built-in LSP client drives the language server
+# end to end (the editor_neovim test); clang and its runtime (libFuzzer)
+# build the sanitizer and fuzzing build.
+[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 neovim clang libclang-rt-14-dev)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -9,6 +9,7 @@
 #include "base/near_names.h"
 #include "base/text.h"
 #include "cli/lib/help.h"
+#include "cli/lib/lsp_command.h"
 #include "cli/lib/options.h"
 #include "cli/lib/program_commands.h"
 #include "cli/lib/render_commands.h"
@@ -130,6 +131,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   const RenderCommands renderCommands(app);  // render, animate
   TestOptions testOptions;
   CLI::App* test = addTestCommand(app, testOptions);
+  LspOptions lspOptions;
+  CLI::App* lsp = addLspCommand(app, lspOptions);
   std::string helpTopic;
   CLI::App* help = app.add_subcommand("help", "Explain the instruction set, or one instruction");
   help->add_option("instruction", helpTopic, "Instruction name, e.g. JMPVAR");
@@ -147,6 +150,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   }
   if (const std::optional<int> code = renderCommands.run(out, err)) return *code;
   if (test->parsed()) return testCommand(testOptions, out, err);
+  if (lsp->parsed()) return lspCommand(lspOptions, err);
   if (run->parsed()) return runOrCheck(ro, false, out, err);
   if (check->parsed()) return runOrCheck(ro, true, out, err);
   if (compile->parsed()) return compileCommand(po, out, err);

@@ -293,7 +293,7 @@ TEST_CASE("cli: --format=json summary", "[cli]") {
                                       {"line", 3},
                                       {"column", 1},
                                       {"severity", "warning"},
-                                      {"message", "unreachable code: nothing jumps here and END on line 2 does not continue"}});
+                                      {"message", "unreachable code: nothing jumps here and END on line 2 does not continue"}, {"code", "unreachable-code"}});
   }
   SECTION("a runtime error carries the line and column of the instruction") {
     const std::string f = dir.write("rt.rsp", kRuntimeError);
@@ -342,7 +342,7 @@ TEST_CASE("cli: --format=json summary", "[cli]") {
                                       {"line", 2},
                                       {"column", 6},
                                       {"severity", "error"},
-                                      {"message", "line number 9 does not exist (the program has 2 instructions)"}});
+                                      {"message", "line number 9 does not exist (the program has 2 instructions)"}, {"code", "undefined-line-number"}});
   }
 }
 
@@ -355,7 +355,7 @@ TEST_CASE("cli: the JSON summary when nothing ran", "[cli]") {
   CHECK(r.code == 2);
   CHECK(r.out == "{\"status\":\"error\",\"time\":0,\"steps\":0,\"motors\":{},\"outputs\":[],\"inputs\":[],"
                  "\"variables\":{},\"diagnostics\":[{\"file\":\"" + f +
-                 "\",\"line\":2,\"column\":8,\"severity\":\"error\",\"message\":\"output 9 is outside 1..8\"}]}\n");
+                 "\",\"line\":2,\"column\":8,\"severity\":\"error\",\"message\":\"output 9 is outside 1..8\",\"code\":\"io-out-of-range\"}]}\n");
   // A rejected image: a diagnostic without a position has line and column 0.
   const CliResult img = runCli({"check", dir.write("bad.rsb", "\x89RSB\r\n\x1A\n\x01\x00"), "--format=json"});
   CHECK(img.code == 2);

@@ -14,7 +14,7 @@ trap 'rm -rf "$work"' EXIT
 copy() {
   rm -rf "$work/tree" && mkdir -p "$work/tree"
   # The whole source tree (docs may link to any of it), without builds.
-  (cd "$root" && tar cf - --exclude=./build --exclude='./build-*' --exclude=./.git --exclude=node_modules .) |
+  (cd "$root" && tar cf - --exclude=./build --exclude='./build-*' --exclude=./.git --exclude=node_modules --exclude='*.vsix' .) |
     tar xf - -C "$work/tree"
 }
 expect_failure() {  # FILE TEXT-TO-PLANT EXPECTED-MESSAGE

@@ -153,9 +153,11 @@ test('the grammars pass their token tests', () => {
 });
 
 test('package.sh builds a .vsix with the server client and without the tests', () => {
-  const r = spawnSync('bash', [path.join(here, 'package.sh')], { encoding: 'utf8' });
+  // Into a temporary directory: the source tree stays as it was.
+  const vsix = path.join(tmp, `robotsim-${manifest.version}.vsix`);
+  const r = spawnSync('bash', [path.join(here, 'package.sh'), vsix], { encoding: 'utf8' });
   assert.equal(r.status, 0, r.stdout + r.stderr);
-  const vsix = path.join(here, `robotsim-${manifest.version}.vsix`);
+  assert.match(r.stdout, new RegExp(`wrote ${vsix.replace(/[.]/g, '\\.')}`));
   const list = spawnSync('unzip', ['-Z1', vsix], { encoding: 'utf8' }).stdout.split('\n');
   for (const f of ['extension/package.json', 'extension/src/extension.js', 'extension/src/commands.js',
                    'extension/syntaxes/robotsim-program.tmLanguage.json',

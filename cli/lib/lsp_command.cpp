@@ -1,0 +1,31 @@
+#include "cli/lib/lsp_command.h"
+
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include "lsp/server.h"
+#include "lsp/transport.h"
+
+namespace rs::cli {
+
+CLI::App* addLspCommand(CLI::App& app, LspOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "lsp", "Run the language server (LSP 3.17) on stdin/stdout, for editors");
+  cmd->footer(
+      "Speaks the Language Server Protocol 3.17 over stdin and stdout (Content-Length framing): diagnostics as\n"
+      "you type, hover, completion, signature help, go to definition, references, rename, symbols, folding,\n"
+      "formatting, code actions, inlay hints and semantic tokens for programs (.rsp); diagnostics, symbols,\n"
+      "hover and go to definition for descriptions (.rsd) and stimuli (.stim). A program is checked against\n"
+      "the cell its '; cell: NAME' comment names, else the setting robotsim.cell, else the default robot.\n"
+      "Editors start it themselves; docs/lsp.md lists the features and settings.");
+  cmd->add_flag("--stdio", o.stdio, "Use stdin and stdout (the default and only transport; accepted for clients)");
+  return cmd;
+}
+
+int lspCommand(const LspOptions&, std::ostream& err) {
+  lsp::FdInput in(STDIN_FILENO);
+  lsp::FdOutput out(STDOUT_FILENO);
+  return lsp::serve(in, out, err);
+}
+
+}  // namespace rs::cli

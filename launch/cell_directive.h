@@ -1,0 +1,36 @@
+// Which workcell a program runs on when the command line does not say: a
+// directive comment in the program itself,
+//
+//   ; cell: scara-pick
+//
+// a whole-line comment anywhere in the file (the first one counts), naming
+// a library cell or robot, or a description file (relative to the
+// program's folder). `--cell` wins over it; without either a program runs
+// on the default robot. The CLI (through loadProgram) and the language
+// server read it with the same function.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "diag/source_file.h"
+
+namespace rs::launch {
+
+struct CellDirective {
+  std::string name;  ///< as written
+  diag::Pos pos;     ///< of the name (columns in characters)
+  std::size_t offset = 0;  ///< byte offset of the name in the text
+};
+
+/// The first "; cell: NAME" whole-line comment of a program's text.
+std::optional<CellDirective> findCellDirective(std::string_view text);
+
+/// What a directive names, as --cell would take it: a description file
+/// beside the program (`programFile`'s folder) when one exists by that
+/// name, else the name itself (a library name, or a path from the working
+/// directory).
+std::string resolveCellName(const std::string& programFile, const std::string& name);
+
+}  // namespace rs::launch

@@ -1,0 +1,57 @@
+#include "lsp/cell_context.h"
+
+#include <system_error>
+
+#include "compiler/library.h"
+#include "launch/program.h"
+#include "stdlib/default_robot.h"
+
+namespace rs::lsp {
+
+namespace fs = std::filesystem;
+
+std::string findDescriptionFile(const std::string& name, const std::vector<fs::path>& searchPath) {
+  std::error_code ec;
+  if (name.ends_with(".rsd") && fs::is_regular_file(name, ec)) return fs::absolute(name, ec).string();
+  for (const fs::path& dir : searchPath)
+    for (const char* folder : {"", "workcells", "robots", "grippers", "objects", "links"}) {
+      const fs::path candidate = dir / folder / (name + ".rsd");
+      if (fs::is_regular_file(candidate, ec)) return candidate.lexically_normal().string();
+    }
+  return {};
+}
+
+void CellCache::setLibDirs(std::vector<std::string> libDirs) {
+  libDirs_ = std::move(libDirs);
+  cache_.clear();
+}
+
+std::vector<fs::path> CellCache::searchPath() const { return compiler::librarySearchPath(libDirs_); }
+
+std::shared_ptr<const CellContext> CellCache::get(const std::string& name) {
+  if (const auto it = cache_.find(name); it != cache_.end()) return it->second;
+  auto context = std::make_shared<CellContext>();
+  context->name = name;
+  context->target = launch::defaultTarget();
+  compiler::Library library(searchPath());
+  if (!name.empty()) {
+    if (std::optional<workcell::Workcell> cell = library.workcell(name); cell && !cell->robots.empty()) {
+      context->cell = std::make_shared<const workcell::Workcell>(std::move(*cell));
+      context->target = launch::cellTarget(*context->cell);
+      if (context->cell->robots.front().robot.chain) context->robot = context->cell->robots.front();
+    } else {
+      context->problem = library.diagnostics().empty() ? std::string("the workcell has no robot")
+                                                       : library.diagnostics().front().message;
+    }
+  }
+  if (!context->cell) {
+    compiler::Library defaults(searchPath());
+    if (std::optional<workcell::Robot> robot = defaults.robot(std::string(stdlib::rhinoScaraName()));
+        robot && robot->chain)
+      context->robot = workcell::PlacedRobot{std::move(*robot), Eigen::Isometry3d::Identity()};
+  }
+  cache_[name] = context;
+  return context;
+}
+
+}  // namespace rs::lsp

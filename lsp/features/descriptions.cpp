@@ -1,0 +1,260 @@
+// Robot and workcell descriptions (.rsd) and stimuli files (.stim):
+// diagnostics from their readers, symbols, hover (a robot link's D-H row,
+// a colour's name and number, a stimulus line in words), and go to
+// definition across files (a name another file defines: its file on the
+// library path).
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "base/ascii.h"
+#include "base/file_io.h"
+#include "compiler/description.h"
+#include "compiler/library.h"
+#include "lsp/features/features.h"
+#include "lsp/protocol.h"
+#include "lsp/uri.h"
+#include "model/kinematics/dh.h"
+#include "runtime/stimuli.h"
+
+namespace rs::lsp {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string nameOf(const Document& doc) {
+  const std::string path = pathOfUri(doc.uri());
+  return path.empty() ? doc.uri() : path;
+}
+
+Json diagnosticsJson(const Document& doc, Encoding enc, const std::vector<diag::Diagnostic>& list,
+                     const std::string& file) {
+  Json out = Json::array();
+  for (const diag::Diagnostic& d : list) {
+    if (d.file != file) continue;
+    Json j = {{"range", toJson(doc.wordAt(d.pos, enc))},
+              {"severity", d.severity == diag::Severity::Error ? 1 : d.severity == diag::Severity::Warning ? 2 : 3},
+              {"source", "robotsim"},
+              {"message", d.hint.empty() ? d.message : d.message + "\nhint: " + d.hint}};
+    if (!d.code.empty()) j["code"] = d.code;
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+struct Parsed {
+  compiler::DescriptionFile file;
+  std::vector<diag::Diagnostic> diagnostics;
+};
+
+Parsed parse(const Document& doc) {
+  diag::Diagnostics d(nameOf(doc));
+  Parsed p{compiler::parseDescription(std::make_unique<diag::SourceFile>(nameOf(doc), doc.text()), d), {}};
+  p.diagnostics = d.sorted();
+  return p;
+}
+
+// True when the file on disk holds exactly the document's text: the
+// library (which reads files) then sees what the editor shows.
+bool savedAsIs(const Document& doc) {
+  const std::string path = pathOfUri(doc.uri());
+  if (path.empty()) return false;
+  base::FileRead read = base::readFile(path, std::size_t{64} << 20);
+  return read.bytes && *read.bytes == doc.text();
+}
+
+// The word (name characters) under a position, and its range.
+std::string wordUnder(const Document& doc, Encoding enc, Position at, Range& range) {
+  const std::string_view line = doc.line(at.line);
+  std::size_t i = bytesFor(line, at.character, enc), b = i, e = i;
+  const auto part = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'; };
+  while (b > 0 && part(line[b - 1])) --b;
+  while (e < line.size() && part(line[e])) ++e;
+  range = {{at.line, unitsOf(line.substr(0, b), enc)}, {at.line, unitsOf(line.substr(0, e), enc)}};
+  return std::string(line.substr(b, e - b));
+}
+
+// The word before position `at`'s word on its line (the keyword in "COLOR RED").
+std::string wordBefore(const Document& doc, Encoding enc, const Range& word) {
+  const std::string_view line = doc.line(word.start.line);
+  std::size_t e = bytesFor(line, word.start.character, enc);
+  while (e > 0 && (line[e - 1] == ' ' || line[e - 1] == '\t')) --e;
+  std::size_t b = e;
+  while (b > 0 && line[b - 1] != ' ' && line[b - 1] != '\t') --b;
+  return std::string(line.substr(b, e - b));
+}
+
+// Every name one definition refers to, with where.
+std::vector<const compiler::NameRef*> referencesIn(const compiler::DescriptionFile& f) {
+  std::vector<const compiler::NameRef*> out;
+  for (const compiler::GripperDef& g : f.grippers) out.insert(out.end(), {&g.base, &g.finger2, &g.finger3});
+  for (const compiler::RobotDef& r : f.robots) {
+    for (const compiler::RobotLinkDef& l : r.links) out.push_back(&l.link);
+    out.push_back(&r.gripper);
+  }
+  for (const compiler::WorkcellDef& w : f.workcells)
+    for (const compiler::PlacementDef& p : w.placements) out.push_back(&p.what);
+  return out;
+}
+
+const compiler::NameRef* referenceAt(const compiler::DescriptionFile& f, diag::Pos pos) {
+  for (const compiler::NameRef* r : referencesIn(f))
+    if (!r->name.empty() && r->pos.line == pos.line && pos.col >= r->pos.col && pos.col <= r->pos.col + r->name.size())
+      return r;
+  return nullptr;
+}
+
+// A definition's name range: the word after its keyword.
+Range definitionName(const Document& doc, Encoding enc, diag::Pos keyword, const std::string& name) {
+  const Position at = doc.fromPos(keyword, Encoding::Utf8);
+  const std::string_view line = doc.line(at.line);
+  const std::size_t i = line.find(name, at.character);
+  if (i == std::string_view::npos) return doc.wordAt(keyword, enc);
+  return {{at.line, unitsOf(line.substr(0, i), enc)}, {at.line, unitsOf(line.substr(0, i + name.size()), enc)}};
+}
+
+template <class Def>
+void symbolsOf(const Document& doc, Encoding enc, const std::vector<Def>& defs, int kind, const char* what, Json& out) {
+  for (const Def& d : defs) {
+    const Range name = definitionName(doc, enc, d.pos, d.name);
+    const Range line{{name.start.line, 0}, {name.start.line, unitsOf(doc.line(name.start.line), enc)}};
+    out.push_back({{"name", d.name}, {"detail", what}, {"kind", kind}, {"range", toJson(line)},
+                   {"selectionRange", toJson(name)}});
+  }
+}
+
+std::string number(double v) {
+  if (std::abs(v) < 5e-5) return "0";
+  std::string s = fmt::format("{:.4f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+Json descriptionDiagnostics(const Document& doc, Encoding enc) {
+  Parsed p = parse(doc);
+  std::vector<diag::Diagnostic> all = p.diagnostics;
+  // Names resolved and robots built by the library, when the file on disk
+  // is what the editor has (the library reads files).
+  if (all.empty() && savedAsIs(doc) && (!p.file.robots.empty() || !p.file.workcells.empty())) {
+    compiler::Library library(compiler::librarySearchPath({}));
+    if (!p.file.workcells.empty() || !p.file.robots.empty()) library.workcell(nameOf(doc));
+    all.insert(all.end(), library.diagnostics().begin(), library.diagnostics().end());
+  }
+  return diagnosticsJson(doc, enc, all, nameOf(doc));
+}
+
+Json descriptionSymbols(const Document& doc, Encoding enc) {
+  const Parsed p = parse(doc);
+  Json out = Json::array();
+  symbolsOf(doc, enc, p.file.links, symbol_kind::kStruct, "link", out);
+  symbolsOf(doc, enc, p.file.objects, symbol_kind::kObject, "object", out);
+  symbolsOf(doc, enc, p.file.grippers, symbol_kind::kClass, "gripper", out);
+  symbolsOf(doc, enc, p.file.robots, symbol_kind::kClass, "robot", out);
+  symbolsOf(doc, enc, p.file.workcells, symbol_kind::kNamespace, "workcell", out);
+  std::sort(out.begin(), out.end(), [](const Json& a, const Json& b) {
+    return a["range"]["start"]["line"].get<int>() < b["range"]["start"]["line"].get<int>();
+  });
+  return out;
+}
+
+Json descriptionHover(const Document& doc, Encoding enc, Position at, const std::vector<fs::path>& searchPath) {
+  Range range;
+  const std::string word = wordUnder(doc, enc, at, range);
+  if (word.empty()) return nullptr;
+  const auto reply = [&](std::string text) {
+    return Json{{"contents", {{"kind", "markdown"}, {"value", std::move(text)}}}, {"range", toJson(range)}};
+  };
+  if (base::sameName(wordBefore(doc, enc, range), "COLOR"))
+    if (const auto c = compiler::colorByName(word))
+      return reply(fmt::format("colour **{}** (EGA colour {})", compiler::colorName(*c), static_cast<int>(*c)));
+  const Parsed p = parse(doc);
+  const diag::Pos pos = doc.toPos(at, enc);
+  for (const compiler::RobotDef& r : p.file.robots)
+    for (std::size_t i = 0; i < r.links.size(); ++i) {
+      const compiler::NameRef& l = r.links[i].link;
+      if (l.pos.line != pos.line || pos.col < l.pos.col || pos.col > l.pos.col + l.name.size()) continue;
+      if (i == 0) return reply(fmt::format("link `{}`: the base of {} (frame 0)", l.name, r.name));
+      if (!savedAsIs(doc)) return reply(fmt::format("link `{}`: link {} of {} (save the file to see its D-H row)", l.name, i, r.name));
+      compiler::Library library(searchPath);
+      const std::optional<workcell::Robot> robot = library.robot(nameOf(doc));
+      if (!robot || !robot->chain || static_cast<int>(i) > robot->chain->size())
+        return reply(fmt::format("link `{}`: link {} of {}", l.name, i, r.name));
+      const kinematics::DhRow row = robot->chain->table()[i - 1];
+      const bool revolute = row.type == kinematics::JointType::Revolute;
+      return reply(fmt::format(
+          "link `{}`: link {} of {}\n\nD-H row {} ({}): theta = {}, alpha = {}, a = {}, d = {} (home {})", l.name, i, r.name, i,
+          kinematics::jointTypeName(row.type), revolute ? fmt::format("theta{}", i) : number(row.theta),
+          number(row.alpha), number(row.a), revolute ? number(row.d) : fmt::format("d{}", i), number(row.home())));
+    }
+  return nullptr;
+}
+
+Json descriptionDefinition(const Document& doc, Encoding enc, Position at, const std::vector<fs::path>& searchPath) {
+  const Parsed p = parse(doc);
+  const compiler::NameRef* ref = referenceAt(p.file, doc.toPos(at, enc));
+  if (!ref) return nullptr;
+  // Defined in this file?
+  const auto here = [&](const auto& defs) -> std::optional<Range> {
+    for (const auto& d : defs)
+      if (d.name == ref->name) return definitionName(doc, enc, d.pos, d.name);
+    return std::nullopt;
+  };
+  for (const std::optional<Range>& r :
+       {here(p.file.links), here(p.file.objects), here(p.file.grippers), here(p.file.robots), here(p.file.workcells)})
+    if (r) return location(doc.uri(), *r);
+  const std::string file = findDescriptionFile(ref->name, searchPath);
+  if (file.empty()) return nullptr;
+  return location(uriOfPath(file), Range{});
+}
+
+Json stimuliDiagnostics(const Document& doc, Encoding enc) {
+  const runtime::StimuliParse parsed = runtime::parseStimuli(doc.text(), nameOf(doc));
+  Json out = Json::array();
+  for (const diag::Diagnostic& d : parsed.errors) {
+    // Stimuli columns count bytes: convert through UTF-8.
+    const Position start = d.pos.line == 0 ? Position{} : Position{d.pos.line - 1, d.pos.col - 1};
+    const std::uint32_t line = start.line;
+    const Position s{line, unitsOf(doc.line(line).substr(0, std::min<std::size_t>(start.character, doc.line(line).size())), enc)};
+    const Position e{line, unitsOf(doc.line(line), enc)};
+    Json j = {{"range", toJson(Range{s, e})}, {"severity", 1}, {"source", "robotsim"}, {"message", d.message}};
+    if (!d.code.empty()) j["code"] = d.code;
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+Json stimuliSymbols(const Document& doc, Encoding enc) {
+  Json out = Json::array();
+  for (std::uint32_t l = 0; l < doc.lineCount(); ++l) {
+    const std::string_view code = codeOf(doc.line(l));
+    const std::size_t first = code.find_first_not_of(" \t");
+    if (first == std::string_view::npos) continue;
+    const Range r{{l, unitsOf(code.substr(0, first), enc)}, {l, unitsOf(code, enc)}};
+    out.push_back({{"name", std::string(code.substr(first))}, {"kind", symbol_kind::kEvent}, {"range", toJson(r)},
+                   {"selectionRange", toJson(r)}});
+  }
+  return out;
+}
+
+Json stimuliHover(const Document& doc, Encoding enc, Position at) {
+  const std::string_view code = codeOf(doc.line(at.line));
+  if (code.find_first_not_of(" \t") == std::string_view::npos) return nullptr;
+  const runtime::StimuliParse one = runtime::parseStimuli(code, "line");
+  if (!one.errors.empty()) return nullptr;
+  const auto state = [](bool on) { return on ? "ON" : "OFF"; };
+  std::string text;
+  for (const runtime::InputChange& c : one.stimuli.changes)
+    text = fmt::format("at {} input {} turns {}", formatSeconds(c.at), c.input, state(c.on));
+  for (const runtime::ReactiveRule& r : one.stimuli.rules)
+    text = fmt::format("whenever output {} turns {}, input {} turns {} {} later", r.output, state(r.outputOn), r.input,
+                       state(r.inputOn), formatSeconds(r.delay));
+  if (text.empty()) return nullptr;
+  const Range r{{at.line, 0}, {at.line, unitsOf(code, enc)}};
+  return {{"contents", {{"kind", "markdown"}, {"value", text}}}, {"range", toJson(r)}};
+}
+
+}  // namespace rs::lsp

@@ -1,0 +1,112 @@
+// The language features, one file each under lsp/features/. Each is a
+// function from a document (and its analysis) and the request's params to
+// the result's JSON; the server (server.cpp) maps method names to them.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lsp/dispatcher.h"
+#include "lsp/document.h"
+#include "lsp/json.h"
+#include "lsp/program_analysis.h"
+
+namespace rs::lsp {
+
+/// A program and what is known about it, in the client's encoding.
+struct ProgramContext {
+  const Document& doc;
+  const ProgramAnalysis& analysis;
+  Encoding enc;
+};
+
+// diagnostics.cpp: the compiler's diagnostics (and the cell's problem,
+// and the server's own flow check) as LSP Diagnostic[].
+Json programDiagnostics(const ProgramContext& p);
+/// Control flow over the index: which instructions run from the first
+/// (following calls into subroutines or not), which are subroutine entries.
+struct Flow {
+  std::vector<bool> reached;
+  std::vector<bool> entry;
+};
+Flow flowOf(const ProgramIndex& index, bool followCalls);
+/// The server's own check: the main program falls into a subroutine (the
+/// RETURN would then run without a GOSUB). The instruction it falls into.
+std::vector<const IndexedInstruction*> fallsIntoSubroutine(const ProgramIndex& index);
+
+// hover.cpp
+Json hover(const ProgramContext& p, Position at);
+
+// navigation.cpp: go to definition, references, highlights, rename.
+Json definition(const ProgramContext& p, Position at, const std::vector<std::filesystem::path>& searchPath);
+Json references(const ProgramContext& p, Position at, bool includeDeclaration);
+Json documentHighlight(const ProgramContext& p, Position at);
+Reply prepareRename(const ProgramContext& p, Position at);
+Reply rename(const ProgramContext& p, Position at, const std::string& newName);
+
+// symbols.cpp
+Json documentSymbols(const ProgramContext& p);
+/// SymbolInformation[] of a program whose names match `query`.
+void workspaceSymbols(const ProgramContext& p, std::string_view query, Json& into);
+/// Case-insensitive subsequence match, as editors filter.
+bool fuzzyMatch(std::string_view query, std::string_view name);
+
+// folding.cpp
+Json foldingRanges(const ProgramContext& p);
+/// Subroutines: [entry line, last line] (1-based), in order.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> subroutineExtents(const ProgramContext& p);
+
+// formatting.cpp
+/// The program laid out in the examples' columns (label column, instruction
+/// and operands, comment column; taught points in aligned columns), or
+/// nothing when it cannot be done without a risk to the meaning.
+std::optional<std::string> formatProgram(std::string_view text);
+Json formatting(const Document& doc, Encoding enc);
+
+// completion.cpp, signature_help.cpp
+/// What the line says up to the cursor.
+struct LineContext {
+  bool usable = false;  ///< false in a comment or after POINTS
+  bool atHead = false;  ///< where an instruction goes
+  std::optional<vm::Op> op;     ///< the line's instruction, when known
+  std::size_t operand = 0;      ///< 0-based operand the cursor is in or before
+  std::string_view partial;     ///< the word typed so far
+};
+LineContext lineContext(const ProgramContext& p, Position at);
+/// With `snippets`, instructions complete with placeholders for operands.
+Json completion(const ProgramContext& p, Position at, bool snippets);
+Json signatureHelp(const ProgramContext& p, Position at);
+
+// code_actions.cpp
+Json codeActions(const ProgramContext& p, const Range& range, const Json& diagnostics);
+
+// inlay_hints.cpp
+Json inlayHints(const ProgramContext& p, const Range& range);
+
+// semantic_tokens.cpp
+Json semanticTokensLegend();
+Json semanticTokens(const ProgramContext& p);
+
+// descriptions.cpp: .rsd and .stim files.
+Json descriptionDiagnostics(const Document& doc, Encoding enc);
+Json descriptionSymbols(const Document& doc, Encoding enc);
+Json descriptionHover(const Document& doc, Encoding enc, Position at, const std::vector<std::filesystem::path>& searchPath);
+Json descriptionDefinition(const Document& doc, Encoding enc, Position at,
+                           const std::vector<std::filesystem::path>& searchPath);
+Json stimuliDiagnostics(const Document& doc, Encoding enc);
+Json stimuliSymbols(const Document& doc, Encoding enc);
+Json stimuliHover(const Document& doc, Encoding enc, Position at);
+
+// Shared helpers (features.cpp).
+/// The occurrence under a position, if any.
+const Occurrence* occurrenceAt(const ProgramContext& p, Position at);
+Range rangeOf(const ProgramContext& p, const Occurrence& o);
+/// The code part of a line: without its comment and trailing blanks.
+std::string_view codeOf(std::string_view line);
+/// An instruction as written: from its mnemonic to the end of its code.
+std::string_view instructionText(const ProgramContext& p, const IndexedInstruction& in);
+
+}  // namespace rs::lsp

@@ -1,0 +1,128 @@
+// textDocument/hover in programs: an instruction's help from the opcode
+// table (and, for one that acts on the machine, when it ran in the default
+// run), a label's instruction, a point's encoder values and the tool
+// centre point they put the robot's tool at (forward kinematics of the
+// program's robot), a variable's writes and reads, an instruction number.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "lsp/features/features.h"
+#include "lsp/protocol.h"
+#include "model/workcell/tool_tracker.h"
+
+namespace rs::lsp {
+
+namespace {
+
+std::string number(double v) {
+  if (std::abs(v) < 5e-5) return "0";
+  std::string s = fmt::format("{:.4f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+Json markdown(std::string text, const Range& range) {
+  return {{"contents", {{"kind", "markdown"}, {"value", std::move(text)}}}, {"range", toJson(range)}};
+}
+
+std::string motorList(const std::vector<vm::MotorSpec>& motors) {
+  std::string out;
+  for (const vm::MotorSpec& m : motors) {
+    const char* kind = m.kind == vm::JointKind::Revolute ? "revolute" : m.kind == vm::JointKind::Prismatic ? "prismatic" : "gripper";
+    out += fmt::format("{}- `{}` {}, {}..{}, {} units/s", out.empty() ? "" : "\n", m.letter, kind, m.min, m.max, m.speed);
+  }
+  return out;
+}
+
+std::string whenItRan(const ProgramContext& p, const IndexedInstruction& in) {
+  if (!p.analysis.compiled().ok()) return {};
+  const DefaultRun& run = p.analysis.defaultRun();
+  if (in.number - 1 >= run.times.size()) return {};
+  const InstructionTimes& t = run.times[in.number - 1];
+  if (t.runs == 0) return "\n\nIn the default run it never runs.";
+  std::string out = fmt::format("\n\nIn the default run: from {} to {} (takes {})", formatSeconds(t.start),
+                                formatSeconds(t.end), formatSeconds(t.end - t.start));
+  if (t.runs > 1) out += fmt::format(", the first of {} times", t.runs);
+  return out + ".";
+}
+
+std::string instructionHover(const ProgramContext& p, const IndexedInstruction& in) {
+  if (!in.known) return fmt::format("unknown instruction `{}`", in.mnemonic);
+  const vm::OpInfo& op = vm::info(in.op);
+  std::string out = fmt::format("**{}** — instruction {}\n\n`{}{}`: {}\n\n{}\n\nExample: `{}`", op.name, in.number,
+                                op.name, vm::info(op.format).usage, op.meaning, op.detail, op.example);
+  if (op.format == vm::Format::MotorVector)
+    out += fmt::format("\n\nOne value per motor of {}:\n{}", p.analysis.cell().target.robotName,
+                       motorList(p.analysis.cell().target.motors));
+  if (op.flags & vm::kUsesMachine) out += whenItRan(p, in);
+  return out;
+}
+
+std::string pointHover(const ProgramContext& p, const Occurrence& o) {
+  const IndexedPoint* point = p.analysis.index().point(o.name);
+  if (!point) return fmt::format("undefined point `{}`", o.name);
+  const std::vector<vm::MotorSpec>& motors = p.analysis.cell().target.motors;
+  std::string values;
+  for (std::size_t i = 0; i < point->values.size(); ++i)
+    values += fmt::format("{}{}={}", i ? " " : "", i < motors.size() ? std::string(1, motors[i].letter) : "?",
+                          point->values[i]);
+  std::string out = fmt::format("**point** `{}` (line {}): {}", point->name, point->pos.line, values);
+  const std::optional<workcell::PlacedRobot>& robot = p.analysis.cell().robot;
+  if (robot && point->values.size() == motors.size() &&
+      point->values.size() >= static_cast<std::size_t>(robot->robot.chain->encoderCount())) {
+    workcell::ToolTracker tracker(*robot);
+    const std::array<double, 3> tcp = tracker.tcp(point->values);
+    out += fmt::format("\n\nTool centre point of {}: ({}, {}, {})", robot->robot.name, number(tcp[0]), number(tcp[1]),
+                       number(tcp[2]));
+  }
+  return out;
+}
+
+std::string labelHover(const ProgramContext& p, const Occurrence& o) {
+  const IndexedInstruction* in = p.analysis.index().labelled(o.name);
+  if (!in) return fmt::format("undefined label `{}`", o.name);
+  const bool sub = p.analysis.index().isSubroutine(in->label);
+  return fmt::format("**{}** `{}`: instruction {} (line {}, `{}`)", sub ? "subroutine" : "label", in->label, in->number,
+                     in->pos.line, instructionText(p, *in));
+}
+
+std::string variableHover(const ProgramContext& p, const Occurrence& o) {
+  std::string writes, reads;
+  for (const Occurrence* use : p.analysis.index().occurrencesOf(o)) {
+    const IndexedInstruction* in = p.analysis.index().instructionOnLine(use->pos.line);
+    const bool write = in && in->known && (vm::info(in->op).flags & vm::kWritesVariable);
+    std::string& list = write ? writes : reads;
+    list += fmt::format("{}{}", list.empty() ? "" : ", ", use->pos.line);
+  }
+  return fmt::format("**variable** `{}`: a 32-bit integer, 0 at the start\n\nwritten on line(s) {}; read on line(s) {}",
+                     o.name, writes.empty() ? "none" : writes, reads.empty() ? "none" : reads);
+}
+
+}  // namespace
+
+Json hover(const ProgramContext& p, Position at) {
+  const diag::Pos pos = p.doc.toPos(at, p.enc);
+  if (const Occurrence* o = p.analysis.index().occurrenceAt(pos)) {
+    const Range range = rangeOf(p, *o);
+    switch (o->kind) {
+      case NameKind::Label: return markdown(labelHover(p, *o), range);
+      case NameKind::Point: return markdown(pointHover(p, *o), range);
+      case NameKind::Variable: return markdown(variableHover(p, *o), range);
+      case NameKind::Instruction: {
+        const IndexedInstruction* in = p.analysis.index().instructionNumbered(o->instruction);
+        if (!in) return markdown(fmt::format("instruction {} does not exist", o->instruction), range);
+        return markdown(fmt::format("instruction {}: line {}, `{}`", in->number, in->pos.line,
+                                    instructionText(p, *in)),
+                        range);
+      }
+    }
+  }
+  const IndexedInstruction* in = p.analysis.index().instructionOnLine(pos.line);
+  if (in && pos.col >= in->pos.col && pos.col <= in->pos.col + in->mnemonic.size())
+    return markdown(instructionHover(p, *in), p.doc.rangeOf(in->pos, in->mnemonic.size(), p.enc));
+  return nullptr;
+}
+
+}  // namespace rs::lsp

@@ -1,0 +1,36 @@
+// textDocument/inlayHint: before each instruction its number (what GOTO 3
+// means: instructions are counted, not lines), and after it the simulated
+// time at which it ends in the default run (its first execution; how many
+// times it ran when more than once). The run is bounded
+// (program_analysis.h): a program that never ends costs a bounded time.
+#include <fmt/format.h>
+
+#include "lsp/features/features.h"
+#include "lsp/protocol.h"
+
+namespace rs::lsp {
+
+Json inlayHints(const ProgramContext& p, const Range& range) {
+  Json out = Json::array();
+  const ProgramIndex& index = p.analysis.index();
+  const DefaultRun* run = p.analysis.compiled().ok() ? &p.analysis.defaultRun() : nullptr;
+  const auto first = std::lower_bound(index.instructions().begin(), index.instructions().end(), range.start.line + 1,
+                                      [](const IndexedInstruction& in, std::uint32_t l) { return in.pos.line < l; });
+  for (auto it = first; it != index.instructions().end() && it->pos.line <= range.end.line + 1; ++it) {
+    const IndexedInstruction& in = *it;
+    out.push_back({{"position", toJson(p.doc.fromPos(in.pos, p.enc))},
+                   {"label", fmt::format("#{}", in.number)},
+                   {"paddingRight", true}});
+    if (!run || in.number - 1 >= run->times.size()) continue;
+    const InstructionTimes& t = run->times[in.number - 1];
+    if (t.runs == 0) continue;
+    const std::uint32_t line = in.pos.line - 1;
+    const Position end{line, unitsOf(codeOf(p.doc.line(line)), p.enc)};
+    std::string label = fmt::format("ends {}", formatSeconds(t.end));
+    if (t.runs > 1) label += fmt::format(" (first of {})", t.runs);
+    out.push_back({{"position", toJson(end)}, {"label", label}, {"paddingLeft", true}});
+  }
+  return out;
+}
+
+}  // namespace rs::lsp

@@ -1,0 +1,36 @@
+// LSP's JSON shapes for the few structures every feature uses: positions,
+// ranges, locations, text edits.
+#pragma once
+
+#include <string>
+
+#include "lsp/document.h"
+#include "lsp/json.h"
+
+namespace rs::lsp {
+
+Json toJson(Position p);
+Json toJson(const Range& r);
+Json location(const std::string& uri, const Range& r);
+Json textEdit(const Range& r, std::string newText);
+
+/// From params (missing or mistyped fields throw Json::exception, which
+/// the dispatcher answers with InvalidParams).
+Position positionFrom(const Json& j);
+Range rangeFrom(const Json& j);
+
+/// LSP's SymbolKind, CompletionItemKind, DiagnosticSeverity values used here.
+namespace symbol_kind {
+inline constexpr int kNamespace = 3;
+inline constexpr int kClass = 5;
+inline constexpr int kField = 8;
+inline constexpr int kFunction = 12;
+inline constexpr int kVariable = 13;
+inline constexpr int kConstant = 14;
+inline constexpr int kKey = 20;
+inline constexpr int kObject = 19;
+inline constexpr int kStruct = 23;
+inline constexpr int kEvent = 24;
+}  // namespace symbol_kind
+
+}  // namespace rs::lsp

@@ -1,0 +1,106 @@
+// Descriptions (.rsd) and stimuli (.stim) in the language server: symbols,
+// hover (a colour, a robot link's D-H row), definition across files,
+// diagnostics.
+#include <catch2/catch.hpp>
+
+#include "lsp/uri.h"
+#include "tests/cli/cli_support.h"
+#include "tests/lsp/lsp_session.h"
+
+using rs::lsp::Json;
+using rs::testing::LspSession;
+
+namespace {
+
+const std::string kStdlib = std::string(ROBOTSIM_SOURCE_DIR) + "/stdlib";
+
+// The 0-based line of the first line of `text` that starts with `start`.
+unsigned lineOf(const std::string& text, const std::string& start) {
+  unsigned line = 0;
+  for (std::size_t at = 0; at < text.size(); ++line) {
+    if (text.compare(at, start.size(), start) == 0) return line;
+    at = text.find('\n', at);
+    if (at == std::string::npos) break;
+    ++at;
+  }
+  FAIL("no line starts with " << start);
+  return 0;
+}
+
+struct OpenFile {
+  LspSession s;
+  std::string uri, text;
+  OpenFile(const std::string& path, const std::string& languageId) : uri(rs::lsp::uriOfPath(path)), text(rs::testing::readBytes(path)) {
+    s.initialize();
+    s.open(uri, text, languageId);
+    s.idle();
+  }
+  Json hover(unsigned line, unsigned character) {
+    const Json h = s.result("textDocument/hover", LspSession::at(uri, line, character));
+    return h.is_null() ? h : h["contents"]["value"];
+  }
+};
+
+}  // namespace
+
+TEST_CASE("rsd: a workcell's robot goes to its file on the library path", "[lsp][rsd]") {
+  OpenFile f(kStdlib + "/workcells/scara-pick.rsd", "robotsim-description");
+  CHECK(f.s.diagnostics(f.uri) == Json::array());
+  const unsigned line = lineOf(f.text, "  ROBOT rhino-scara");
+  CHECK(f.s.result("textDocument/definition", LspSession::at(f.uri, line, 10)) ==
+        Json({{"uri", rs::lsp::uriOfPath(kStdlib + "/robots/rhino-scara.rsd")}, {"range", LspSession::range(0, 0, 0, 0)}}));
+  const Json symbols = f.s.result("textDocument/documentSymbol", {{"textDocument", {{"uri", f.uri}}}});
+  REQUIRE(symbols.size() == 1);
+  CHECK(symbols[0]["name"] == "scara-pick");
+  CHECK(symbols[0]["detail"] == "workcell");
+  CHECK(symbols[0]["selectionRange"] == LspSession::range(lineOf(f.text, "WORKCELL"), 9, lineOf(f.text, "WORKCELL"), 19));
+}
+
+TEST_CASE("rsd: hover names a colour and shows a link's D-H row", "[lsp][rsd]") {
+  OpenFile f(kStdlib + "/robots/rhino-scara.rsd", "robotsim-description");
+  CHECK(f.s.diagnostics(f.uri) == Json::array());
+  // BROWN is EGA colour 6.
+  CHECK(f.hover(lineOf(f.text, "  COLOR BROWN"), 10) == "colour **BROWN** (EGA colour 6)");
+  // Rows 1 and 2 of the table the file's header derives by hand: 1 revolute
+  // th1 alpha 0 a 105 d 200; 2 revolute th2 alpha 180 a 120 d 0.
+  CHECK(f.hover(lineOf(f.text, "  LINK rhino_scara_link1"), 10) ==
+        "link `rhino_scara_link1`: link 1 of rhino-scara\n\n"
+        "D-H row 1 (revolute): theta = theta1, alpha = 0, a = 105, d = 200 (home 0)");
+  CHECK(f.hover(lineOf(f.text, "  LINK rhino_scara_link2"), 10) ==
+        "link `rhino_scara_link2`: link 2 of rhino-scara\n\n"
+        "D-H row 2 (revolute): theta = theta2, alpha = 180, a = 120, d = 0 (home 0)");
+  CHECK(f.hover(lineOf(f.text, "  LINK rhino_scara_base "), 10) == "link `rhino_scara_base`: the base of rhino-scara (frame 0)");
+  // A link defined in the same file: definition goes there.
+  const unsigned def = lineOf(f.text, "LINK rhino_scara_link1");
+  CHECK(f.s.result("textDocument/definition", LspSession::at(f.uri, lineOf(f.text, "  LINK rhino_scara_link1"), 10)) ==
+        Json({{"uri", f.uri}, {"range", LspSession::range(def, 5, def, 22)}}));
+}
+
+TEST_CASE("rsd: a syntax error is a diagnostic", "[lsp][rsd]") {
+  LspSession s;
+  s.initialize();
+  s.open("file:///x/bad.rsd", "LINK a\n  FROB 1 2 3\nEND\n", "robotsim-description");
+  s.idle();
+  const Json d = s.diagnostics("file:///x/bad.rsd");
+  REQUIRE(d.size() == 1);
+  CHECK(d[0]["range"]["start"] == Json({{"line", 1}, {"character", 2}}));
+  CHECK(d[0]["severity"] == 1);
+}
+
+TEST_CASE("stim: diagnostics, symbols and hover in words", "[lsp][stim]") {
+  OpenFile f(std::string(ROBOTSIM_SOURCE_DIR) + "/examples/pick_and_place.stim", "robotsim-stimuli");
+  CHECK(f.s.diagnostics(f.uri) == Json::array());
+  CHECK(f.hover(lineOf(f.text, "at 0 input 2 on"), 3) == "at 0 s input 2 turns ON");
+  CHECK(f.hover(lineOf(f.text, "when output 1 on then input 1 on after 1.5"), 3) ==
+        "whenever output 1 turns ON, input 1 turns ON 1.5 s later");
+  const Json symbols = f.s.result("textDocument/documentSymbol", {{"textDocument", {{"uri", f.uri}}}});
+  REQUIRE(symbols.size() == 5);
+  CHECK(symbols[0]["name"] == "when output 1 on then input 1 on after 1.5");
+  LspSession s;
+  s.initialize();
+  s.open("file:///x/bad.stim", "at 1 input 9 on\n", "robotsim-stimuli");
+  s.idle();
+  const Json d = s.diagnostics("file:///x/bad.stim");
+  REQUIRE(d.size() == 1);
+  CHECK(d[0]["range"]["start"]["line"] == 0);
+}

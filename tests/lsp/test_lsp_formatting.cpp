@@ -1,0 +1,92 @@
+// Formatting never changes a program's meaning and is idempotent: every
+// example is formatted, compiled before and after to the same image bytes,
+// and formatted again to the same text.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include "compiler/compiler.h"
+#include "launch/program.h"
+#include "lsp/features/features.h"
+#include "tests/cli/cli_support.h"
+#include "vm/image_file.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::uint8_t> imageBytes(const std::string& name, const std::string& text, const std::string& cell) {
+  rs::launch::ProgramRequest request;
+  rs::testing::TempDir dir;
+  request.file = dir.write(fs::path(name).filename().string(), text);
+  request.cell = cell;
+  const rs::launch::LoadedProgram loaded = rs::launch::loadProgram(request);
+  REQUIRE(loaded.ok());
+  rs::vm::Image image = *loaded.image;
+  image.sourceName.clear();  // the temporary file's name
+  return rs::vm::writeImage(image);
+}
+
+}  // namespace
+
+TEST_CASE("formatting every example keeps its image and is idempotent", "[lsp][formatting]") {
+  int formatted = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(std::string(ROBOTSIM_SOURCE_DIR) + "/examples")) {
+    if (entry.path().extension() != ".rsp") continue;
+    const std::string path = entry.path().string();
+    const std::string before = rs::testing::readBytes(path);
+    // The cell robotsim test runs it on ("; test: cell NAME"), if any.
+    const std::size_t at = before.find("; test: cell ");
+    const std::string cell = at == std::string::npos ? "" : before.substr(at + 13, before.find('\n', at) - at - 13);
+    INFO(path);
+    rs::launch::ProgramRequest probe;
+    probe.file = path;
+    probe.cell = cell;
+    if (!rs::launch::loadProgram(probe).ok()) continue;  // the examples of failing programs
+    const std::optional<std::string> once = rs::lsp::formatProgram(before);
+    REQUIRE(once);
+    const std::optional<std::string> twice = rs::lsp::formatProgram(*once);
+    REQUIRE(twice);
+    CHECK(*twice == *once);
+    CHECK(imageBytes(path, *once, cell) == imageBytes(path, before, cell));
+    ++formatted;
+  }
+  CHECK(formatted >= 15);
+}
+
+TEST_CASE("formatting lays out labels, instructions, comments and points in columns", "[lsp][formatting]") {
+  const std::string messy =
+      "; title stays\n"
+      "start: SET   N 0 ; count\n"
+      "                ; continues the comment\n"
+      "a_long_label:\tMOVE 1 2 3 4 5\n"
+      "   ; in the code column\n"
+      "\tGOTO start   ;jump\n"
+      "POINTS\n"
+      "P 1 -20 300 0 0\n"
+      "LONGER -1000 2 3 4 120 ; far\n";
+  // Label column: "a_long_label:" (13) + 1 = 14. Points: names 6 wide, the
+  // value columns 5, 3, 3, 1 and 3 wide, two blanks before each. Comment
+  // column: the longest code with a comment is the LONGER row, 31 + 2 = 33,
+  // so the minimum, 36, stands.
+  const auto sp = [](std::size_t n) { return std::string(n, ' '); };
+  const std::string want = "; title stays\n"
+                           "start:" + sp(8) + "SET N 0" + sp(15) + "; count\n" +
+                           sp(36) + "; continues the comment\n"
+                           "a_long_label: MOVE 1 2 3 4 5\n" +
+                           sp(14) + "; in the code column\n" +
+                           sp(14) + "GOTO start" + sp(12) + ";jump\n"
+                           "POINTS\n"
+                           "P" + sp(11) + "1  -20  300  0    0\n"
+                           "LONGER  -1000    2    3  4  120" + sp(5) + "; far\n";
+  const std::optional<std::string> got = rs::lsp::formatProgram(messy);
+  REQUIRE(got);
+  CHECK(*got == want);
+  CHECK(rs::lsp::formatProgram(want) == want);
+}
+
+TEST_CASE("formatting refuses what it cannot keep the meaning of", "[lsp][formatting]") {
+  CHECK_FALSE(rs::lsp::formatProgram("END\xFF\n"));
+  CHECK_FALSE(rs::lsp::formatProgram("END\rSET N 1\n"));  // a lone CR
+  CHECK(rs::lsp::formatProgram("        END\r\n; x\r\n") == std::string("        END\r\n; x\r\n"));
+}
