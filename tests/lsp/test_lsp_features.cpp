@@ -138,7 +138,7 @@ TEST_CASE("lsp: go to definition, references, highlights", "[lsp][features]") {
   params["context"] = {{"includeDeclaration", true}};
   CHECK(o.s.result("textDocument/references", params) == Json({loc(2, 0, 2, 4), loc(4, 21, 4, 25)}));
   params["context"]["includeDeclaration"] = false;
-  CHECK(o.s.result("textDocument/references", params) == Json({loc(4, 21, 4, 25)}));
+  CHECK(o.s.result("textDocument/references", params) == Json::array({loc(4, 21, 4, 25)}));
   CHECK(o.s.result("textDocument/documentHighlight", LspSession::at(kUri, 2, 1)) ==
         Json({{{"range", range(2, 0, 2, 4)}, {"kind", 3}}, {{"range", range(4, 21, 4, 25)}, {"kind", 2}}}));
 }
