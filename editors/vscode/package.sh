@@ -7,7 +7,7 @@
 set -euo pipefail
 out=${1:+$(cd "$(dirname "$1")" && pwd)/$(basename "$1")}
 cd "$(dirname "$0")"
-[ -d node_modules/@vscode/vsce ] || npm ci --no-audit --no-fund >/dev/null
+[ -d node_modules/@vscode/vsce ] || npm ci --ignore-scripts --no-audit --no-fund >/dev/null
 version=$(node -p "require('./package.json').version")
 out=${out:-$(pwd)/robotsim-$version.vsix}
 npx --no-install vsce package --allow-missing-repository --skip-license -o "$out" >/dev/null
