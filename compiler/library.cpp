@@ -80,12 +80,19 @@ void Library::error(const DescriptionFile& file, diag::Pos pos, std::string mess
   diagnostics_.push_back({file.source->name(), pos, diag::Severity::Error, std::move(message)});
 }
 
+void Library::overlay(const fs::path& path, std::string text) {
+  std::error_code ec;
+  overlay_[fs::weakly_canonical(path, ec).string()] = std::move(text);
+}
+
 // Reads and parses a file once; later loads of the same path reuse it.
 const DescriptionFile* Library::load(const fs::path& path) {
   std::error_code ec;
   const std::string key = fs::weakly_canonical(path, ec).string();
   if (auto it = byPath_.find(key); it != byPath_.end()) return it->second;
-  base::FileRead read = base::readFile(path.string(), kMaxDescriptionBytes);
+  base::FileRead read;
+  if (auto open = overlay_.find(key); open != overlay_.end()) read.bytes = std::move(open->second);
+  else read = base::readFile(path.string(), kMaxDescriptionBytes);
   if (!read.bytes) {
     diagnostics_.push_back(
         {path.string(), {}, diag::Severity::Error, "cannot read description file: " + read.error});
@@ -354,10 +361,12 @@ void Library::checkAll(const DescriptionFile& f) {
     if (!cellsBuilt_.contains(&w)) buildWorkcell(w, f);
 }
 
-// A file path if it names an existing file, else a library name.
+// A file path if it names an existing file (or one an editor holds), else a
+// library name.
 const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kind) {
   std::error_code ec;
-  if (fs::is_regular_file(fileOrName, ec)) return load(fileOrName);
+  if (fs::is_regular_file(fileOrName, ec) || overlay_.count(fs::weakly_canonical(fileOrName, ec).string()))
+    return load(fileOrName);
   // The kind's own folder first; a workcell may also be a lone robot.
   for (const fs::path& dir : searchPath_) {
     std::vector<fs::path> candidates{dir / (fileOrName + ".rsd"), dir / kindFolder(static_cast<int>(kind)) / (fileOrName + ".rsd")};

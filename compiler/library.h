@@ -32,6 +32,11 @@ class Library {
   /// placed alone at the origin) or a library name.
   std::optional<workcell::Workcell> workcell(const std::string& fileOrName);
 
+  /// The text of `path` as an editor holds it, unsaved: read instead of the
+  /// file on disk (the language server checks what the user sees). Before
+  /// the first lookup.
+  void overlay(const std::filesystem::path& path, std::string text);
+
   const std::vector<diag::Diagnostic>& diagnostics() const { return diagnostics_; }
   bool hasErrors() const;
   /// The source of a diagnostic's file, for rendering; null if unknown.
@@ -59,6 +64,7 @@ class Library {
   std::vector<std::filesystem::path> searchPath_;
   std::vector<std::unique_ptr<DescriptionFile>> files_;  // in load order
   std::map<std::string, const DescriptionFile*> byPath_;
+  std::map<std::string, std::string> overlay_;  // canonical path -> text
   std::vector<diag::Diagnostic> diagnostics_;
   // Each robot and gripper is built (and its errors reported) once, however
   // many places use it.

@@ -55,13 +55,13 @@ Parsed parse(const Document& doc) {
   return p;
 }
 
-// True when the file on disk holds exactly the document's text: the
-// library (which reads files) then sees what the editor shows.
-bool savedAsIs(const Document& doc) {
+// A library that reads the document as the editor holds it, saved or not.
+// False when the document has no file path (an untitled buffer).
+bool libraryOf(const Document& doc, compiler::Library& library) {
   const std::string path = pathOfUri(doc.uri());
   if (path.empty()) return false;
-  base::FileRead read = base::readFile(path, std::size_t{64} << 20);
-  return read.bytes && *read.bytes == doc.text();
+  library.overlay(path, doc.text());
+  return true;
 }
 
 // The word (name characters) under a position, and its range.
@@ -137,11 +137,10 @@ std::string number(double v) {
 Json descriptionDiagnostics(const Document& doc, Encoding enc) {
   Parsed p = parse(doc);
   std::vector<diag::Diagnostic> all = p.diagnostics;
-  // Names resolved and robots built by the library, when the file on disk
-  // is what the editor has (the library reads files).
-  if (all.empty() && savedAsIs(doc) && (!p.file.robots.empty() || !p.file.workcells.empty())) {
-    compiler::Library library(compiler::librarySearchPath({}));
-    if (!p.file.workcells.empty() || !p.file.robots.empty()) library.workcell(nameOf(doc));
+  // Names resolved and robots built by the library, from the editor's text.
+  compiler::Library library(compiler::librarySearchPath({}));
+  if (all.empty() && (!p.file.robots.empty() || !p.file.workcells.empty()) && libraryOf(doc, library)) {
+    library.workcell(nameOf(doc));
     all.insert(all.end(), library.diagnostics().begin(), library.diagnostics().end());
   }
   return diagnosticsJson(doc, enc, all, nameOf(doc));
@@ -178,9 +177,9 @@ Json descriptionHover(const Document& doc, Encoding enc, Position at, const std:
       const compiler::NameRef& l = r.links[i].link;
       if (l.pos.line != pos.line || pos.col < l.pos.col || pos.col > l.pos.col + l.name.size()) continue;
       if (i == 0) return reply(fmt::format("link `{}`: the base of {} (frame 0)", l.name, r.name));
-      if (!savedAsIs(doc)) return reply(fmt::format("link `{}`: link {} of {} (save the file to see its D-H row)", l.name, i, r.name));
       compiler::Library library(searchPath);
-      const std::optional<workcell::Robot> robot = library.robot(nameOf(doc));
+      const std::optional<workcell::Robot> robot =
+          libraryOf(doc, library) ? library.robot(nameOf(doc)) : std::nullopt;
       if (!robot || !robot->chain || static_cast<int>(i) > robot->chain->size())
         return reply(fmt::format("link `{}`: link {} of {}", l.name, i, r.name));
       const kinematics::DhRow row = robot->chain->table()[i - 1];

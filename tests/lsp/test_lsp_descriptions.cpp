@@ -104,3 +104,28 @@ TEST_CASE("stim: diagnostics, symbols and hover in words", "[lsp][stim]") {
   REQUIRE(d.size() == 1);
   CHECK(d[0]["range"]["start"]["line"] == 0);
 }
+
+TEST_CASE("rsd: an unsaved description is checked and hovered as the editor holds it", "[lsp][rsd]") {
+  // Paths with no file behind them: only the editor has these texts.
+  const std::string dir = "/nonexistent-robotsim-lsp";
+  LspSession s;
+  s.initialize();
+  const std::string cell = rs::lsp::uriOfPath(dir + "/cell.rsd");
+  s.open(cell, "WORKCELL w\n  ROBOT no-such-robot AT 0 0 0\nEND\n", "robotsim-description");
+  s.idle();
+  const Json d = s.diagnostics(cell);
+  REQUIRE(d.size() == 1);
+  CHECK(d[0]["message"].get<std::string>().find("no-such-robot") != std::string::npos);
+  CHECK(d[0]["range"]["start"]["line"] == 1);
+  // The stdlib robot's text under a new, unsaved name: the same D-H rows.
+  const std::string text = rs::testing::readBytes(kStdlib + "/robots/rhino-scara.rsd");
+  const std::string robot = rs::lsp::uriOfPath(dir + "/my-scara.rsd");
+  s.open(robot, text, "robotsim-description");
+  s.idle();
+  CHECK(s.diagnostics(robot) == Json::array());
+  const Json h = s.result("textDocument/hover", LspSession::at(robot, lineOf(text, "  LINK rhino_scara_link2"), 10));
+  REQUIRE(h.is_object());
+  CHECK(h["contents"]["value"] ==
+        "link `rhino_scara_link2`: link 2 of rhino-scara\n\n"
+        "D-H row 2 (revolute): theta = theta2, alpha = 180, a = 120, d = 0 (home 0)");
+}
