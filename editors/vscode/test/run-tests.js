@@ -158,7 +158,9 @@ test('package.sh builds a .vsix with the server client and without the tests', (
   const r = spawnSync('bash', [path.join(here, 'package.sh'), vsix], { encoding: 'utf8' });
   assert.equal(r.status, 0, r.stdout + r.stderr);
   assert.match(r.stdout, new RegExp(`wrote ${vsix.replace(/[.]/g, '\\.')}`));
-  const list = spawnSync('unzip', ['-Z1', vsix], { encoding: 'utf8' }).stdout.split('\n');
+  const unzip = spawnSync('unzip', ['-Z1', vsix], { encoding: 'utf8' });
+  assert.equal(unzip.status, 0, `unzip -Z1 (Debian's unzip): ${unzip.error || unzip.stderr}`);
+  const list = unzip.stdout.split('\n');
   for (const f of ['extension/package.json', 'extension/src/extension.js', 'extension/src/commands.js',
                    'extension/syntaxes/robotsim-program.tmLanguage.json',
                    'extension/node_modules/vscode-languageclient/package.json'])
