@@ -18,6 +18,7 @@ struct RunCommandOptions {
   std::string format = "text";  // summary: text or json
   std::string trace;            // "", "text" or "json"
   bool strict = false;          // check: warnings fail too
+  bool profile = false;         // run: where the time went (runtime/run/profile.h)
 };
 
 /// run (`check` false) or check; returns the exit code.

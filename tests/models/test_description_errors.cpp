@@ -143,7 +143,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
                      }));
   const std::string colour = "a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15";
   const std::string robotStatements =
-      "LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, GRIPPER or END";
+      "LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, ACCELERATION, GRIPPER or END";
   const Strings expected{
       "p.rsd:1:1: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found 'stray'",
       "p.rsd:2:8: unexpected 'extra' after the LINK name (statements go on the next lines)",
@@ -161,7 +161,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       "p.rsd:14:5: END takes nothing after it, found 'foo'",
       "p.rsd:16:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'LINK'",
       "p.rsd:17:12: expected the BOX's bottom edge before the end of the line",
-      "p.rsd:20:3: expected BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, AXIS2, AXIS3, NORMAL, APPROACH or END, "
+      "p.rsd:20:3: expected BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, ACCELERATION, ACTUATION, AXIS2, AXIS3, NORMAL, APPROACH or END, "
       "found 'GRASP'",
       "p.rsd:21:10: expected a motor letter A..Z, found '5'",
       "p.rsd:22:10: expected a motor letter A..Z, found 'AB'",

@@ -1,0 +1,118 @@
+// `robotsim run --profile` (runtime/run/profile.h, cli/lib/profile_report.h):
+// a small program on the default robot whose every figure is worked out by
+// hand below from the motor speeds (stdlib/default_robot.cpp: E 400, D 400,
+// C 300, B 500 units/s, gripper A 200 units/s).
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include "../cli/cli_support.h"
+
+namespace {
+
+// line  instruction               time (s)  kind      by hand
+//  1    MOVETO 400 0 0 0 0        0 -> 1    moving    E 0->400 at 400/s: 1 s
+//  2    DELAY 2                   1 -> 3    waiting
+//  3    GOSUB grab                3
+//  4    GOSUB grab                4
+//  5    END                       4.5
+//  6    grab: MOVETO 400 0 0 0 100
+//         1st call                3 -> 3.5  gripper   A 0->100 at 200/s: 0.5 s, nothing else moves
+//         2nd call                4         moving    nothing to move: 0 s
+//  7    MOVE 0 200 0 0 0
+//         1st call                3.5 -> 4  moving    D 0->200 at 400/s: 0.5 s
+//         2nd call                4 -> 4.5  moving    D 200->400: 0.5 s
+//  8    RETURN (twice)            0
+// Total 4.5 s: moving 1 + 0.5 + 0.5 = 2 s, waiting 2 s, gripper 0.5 s.
+const char* kProgram =
+    "        MOVETO 400 0 0 0 0\n"
+    "        DELAY 2\n"
+    "        GOSUB grab\n"
+    "        GOSUB grab\n"
+    "        END\n"
+    "grab:   MOVETO 400 0 0 0 100\n"
+    "        MOVE 0 200 0 0 0\n"
+    "        RETURN\n";
+
+}  // namespace
+
+TEST_CASE("run --profile --format=json gives the hand-computed times", "[profile]") {
+  rs::testing::TempDir dir;
+  const std::string program = dir.write("p.rsp", kProgram);
+  const rs::testing::CliResult r = rs::testing::runCli({"run", program, "--profile", "--format=json"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const nlohmann::json& p = j.at("profile");
+  CHECK(p["total_us"] == 4'500'000);
+  CHECK(p["moving_us"] == 2'000'000);
+  CHECK(p["waiting_us"] == 2'000'000);
+  CHECK(p["gripper_us"] == 500'000);
+  CHECK(p["other_us"] == 0);
+  CHECK(p["moves"] == 4);  // lines 1, 6 (first call), 7, 7
+
+  std::map<int, std::pair<long, int>> lines;  // line -> (total, steps)
+  for (const auto& l : p["lines"]) lines[l["line"].get<int>()] = {l["total_us"].get<long>(), l["steps"].get<int>()};
+  CHECK(lines == std::map<int, std::pair<long, int>>{{1, {1'000'000, 1}},
+                                                      {2, {2'000'000, 1}},
+                                                      {3, {0, 1}},
+                                                      {4, {0, 1}},
+                                                      {5, {0, 1}},
+                                                      {6, {500'000, 2}},
+                                                      {7, {1'000'000, 2}},
+                                                      {8, {0, 2}}});
+
+  REQUIRE(p["labels"].size() == 2);
+  CHECK(p["labels"][0]["name"] == "(start)");
+  CHECK(p["labels"][0]["total_us"] == 3'000'000);
+  CHECK(p["labels"][0]["steps"] == 5);
+  CHECK(p["labels"][1]["name"] == "grab");
+  CHECK(p["labels"][1]["line"] == 6);
+  CHECK(p["labels"][1]["total_us"] == 1'500'000);
+  CHECK(p["labels"][1]["gripper_us"] == 500'000);
+  CHECK(p["labels"][1]["steps"] == 6);
+
+  REQUIRE(p["subroutines"].size() == 1);
+  CHECK(p["subroutines"][0]["name"] == "grab");
+  CHECK(p["subroutines"][0]["calls"] == 2);
+  CHECK(p["subroutines"][0]["total_us"] == 1'500'000);
+  CHECK(p["subroutines"][0]["moving_us"] == 1'000'000);
+
+  // Longest first; the three 0.5 s moves in the order they ran.
+  const nlohmann::json& slow = p["slowest_moves"];
+  REQUIRE(slow.size() == 4);
+  CHECK(slow[0]["line"] == 1);
+  CHECK(slow[0]["duration_us"] == 1'000'000);
+  CHECK(slow[0]["motor"] == "E");
+  CHECK(slow[1]["line"] == 6);
+  CHECK(slow[1]["motor"] == "A");
+  CHECK(slow[1]["start_us"] == 3'000'000);
+  CHECK(slow[2]["line"] == 7);
+  CHECK(slow[2]["from"] == 0);
+  CHECK(slow[2]["to"] == 200);
+  CHECK(slow[3]["start_us"] == 4'000'000);
+  CHECK(slow[3]["from"] == 200);
+}
+
+TEST_CASE("run --profile prints the same figures as text", "[profile]") {
+  rs::testing::TempDir dir;
+  const std::string program = dir.write("p.rsp", kProgram);
+  const rs::testing::CliResult r = rs::testing::runCli({"run", program, "--profile"});
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("profile: 4.500 s simulated, 4 moves"));
+  CHECK_THAT(r.out, Catch::Contains("moving         2.000 s   44.4 %"));  // 2 / 4.5
+  CHECK_THAT(r.out, Catch::Contains("waiting        2.000 s   44.4 %"));
+  CHECK_THAT(r.out, Catch::Contains("gripper        0.500 s   11.1 %"));
+  CHECK_THAT(r.out, Catch::Contains("grab (line 6)"));
+  CHECK_THAT(r.out, Catch::Contains("1. line 1: 1.000 s from 0.000 s (motor E 0 -> 400)"));
+  // Without --profile, no profile.
+  CHECK_THAT(rs::testing::runCli({"run", program}).out, !Catch::Contains("profile:"));
+}
+
+TEST_CASE("run --profile refuses a real controller", "[profile]") {
+  rs::testing::TempDir dir;
+  const std::string program = dir.write("p.rsp", kProgram);
+  const rs::testing::CliResult r = rs::testing::runCli({"run", program, "--profile", "--device", "/dev/null"});
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("--profile: error:"));
+}
