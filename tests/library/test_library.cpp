@@ -86,6 +86,25 @@ const std::map<std::string, std::vector<Row>>& publishedTables() {
       // Cartesian (Spong, Hutchinson & Vidyasagar): theta 0/-90/0 fixed,
       // alpha -90/90/0, a = 0; homes d = 500, 400, 800.
       {"gantry", {pri(0, -90, 0, 500), pri(-90, 90, 0, 400), pri(0, 0, 0, 800)}},
+      // ABB IRB 120 (product specification 3HAC035960-001): axis 2 290 above
+      // the base, upper arm 270, axis 4 70 above axis 3, wrist centre 302 in
+      // front, flange 72 beyond it (+ our gripper's 80: d6 152); alpha
+      // -90/0/-90/90/-90/0; home theta2 = -90 (upper arm vertical).
+      {"abb-irb120",
+       {rev(0, -90, 0, 290), rev(-90, 0, 270, 0), rev(0, -90, 70, 0), rev(0, 90, 0, 302), rev(0, -90, 0, 0),
+        rev(0, 0, 0, 152)}},
+      // Adept One: inner link 425, outer link 375 (reach 800); the heights
+      // (links 880 up, quill end 200 below them, tool 100 below that) are the
+      // file's stated estimates; alpha2 = 180 so that the quill goes down.
+      {"adept-one", {rev(0, 0, 425, 880), rev(0, 180, 375, 0), pri(0, 0, 0, 200), rev(0, 0, 0, 100)}},
+      // Mitsubishi RV-M1: shoulder 250 up (estimate), upper arm 220, forearm
+      // 160, no wrist offset, tool 172 (72 + our 100 mm hand); the XR-3's
+      // twists and soft home.
+      {"mitsubishi-rv-m1",
+       {rev(0, -90, 0, 250), rev(-90, 0, 220, 0), rev(90, 0, 160, 0), rev(0, -90, 0, 0), rev(-90, 0, 0, 172)}},
+      // Rhino XR-4: the XR-3's arm (Schilling 1990), as its file explains.
+      {"rhino-xr4",
+       {rev(0, -90, 0, 260.4), rev(-90, 0, 228.6, 0), rev(90, 0, 228.6, 0), rev(0, -90, 9.5, 0), rev(-90, 0, 0, 168.3)}},
   };
   return tables;
 }
@@ -257,6 +276,107 @@ TEST_CASE("The other library arms' base-to-tool matrices are their published pro
   checkMatrix("rhino-scara", {40, -75, 95, 120});
   checkMatrix("rhino-xr3", {-35, -60, 110, -25, 70});
   checkMatrix("gantry", {320, 655, 910});
+  checkMatrix("abb-irb120", {23.5, -41, 67, -112, 38, 151});
+  checkMatrix("adept-one", {40, -75, 95, 120});
+  checkMatrix("mitsubishi-rv-m1", {-35, -60, 110, -25, 70});
+  checkMatrix("rhino-xr4", {-35, -60, 110, -25, 70});
+}
+
+namespace {
+
+// A frame's origin at home in frame-0 coordinates (`robotsim matrix ROBOT 0 J`).
+std::array<double, 3> homeOrigin(const std::string& robot, int frame) {
+  const rs::testing::CliResult r = runCli({"matrix", robot, "0", std::to_string(frame), "--json"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  return {j["matrix"][0][3].get<double>(), j["matrix"][1][3].get<double>(), j["matrix"][2][3].get<double>()};
+}
+
+// Each motor's range and speed in degrees (or mm) and degrees (mm) per second.
+struct MotorFigures {
+  double low, high, speed;
+};
+
+std::vector<MotorFigures> motorFigures(const std::string& robot) {
+  rs::compiler::Library lib(rs::compiler::librarySearchPath({}));
+  const auto r = lib.robot(robot);
+  REQUIRE(r.has_value());
+  std::vector<MotorFigures> out;
+  for (const auto& j : r->joints) out.push_back({j.min * j.precision, j.max * j.precision, j.speed * j.precision});
+  return out;
+}
+
+void checkFigures(const std::string& robot, const std::vector<MotorFigures>& published) {
+  const std::vector<MotorFigures> got = motorFigures(robot);
+  REQUIRE(got.size() == published.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    INFO(robot << " joint " << i + 1);
+    CHECK(got[i].low == Approx(published[i].low));
+    CHECK(got[i].high == Approx(published[i].high));
+    CHECK(got[i].speed == Approx(published[i].speed));
+  }
+}
+
+}  // namespace
+
+// The published geometry by hand: frame 0 has x forward, z up, y = z × x.
+TEST_CASE("The new arms reach as far as their makers say", "[library]") {
+  // IRB 120: the wrist centre (frame 4) at the calibration position is 302
+  // in front of axis 1 and 630 above the base; stretched out, 580 from
+  // axis 2 (the specification's reach): 270 + sqrt(70² + 302²) = 580.01.
+  const auto wrist = homeOrigin("abb-irb120", 4);
+  CHECK(wrist[0] == Approx(302).margin(1e-9));
+  CHECK(wrist[1] == Approx(0).margin(1e-9));
+  CHECK(wrist[2] == Approx(630).margin(1e-9));
+  CHECK(270 + std::hypot(70.0, 302.0) == Approx(580).margin(0.5));
+  // Adept One: the quill 425 + 375 = 800 from joint 1's axis (its reach).
+  const auto quill = homeOrigin("adept-one", 3);
+  CHECK(std::hypot(quill[0], quill[1]) == Approx(800).margin(1e-9));
+  CHECK(quill[2] == Approx(680).margin(1e-9));
+  // RV-M1: the wrist pitch axis 220 + 160 from the shoulder's axis when
+  // the arm is stretched out level: at home the elbow is straight up 220
+  // above the shoulder, the wrist 160 in front of it.
+  const auto pitch = homeOrigin("mitsubishi-rv-m1", 3);
+  CHECK(pitch[0] == Approx(160).margin(1e-9));
+  CHECK(pitch[2] == Approx(250 + 220).margin(1e-9));
+  // XR-4: 9 in upper arm and forearm (228.6 mm), shoulder 260.4 up.
+  const auto xr4 = homeOrigin("rhino-xr4", 3);
+  CHECK(xr4[0] == Approx(228.6).margin(1e-9));
+  CHECK(xr4[2] == Approx(260.4 + 228.6).margin(1e-9));
+}
+
+TEST_CASE("The new arms' joint ranges and speeds are the published ones", "[library]") {
+  // IRB 120 product specification: degrees and degrees per second.
+  checkFigures("abb-irb120",
+               {{-165, 165, 250}, {-110, 110, 250}, {-110, 70, 250}, {-160, 160, 320}, {-120, 120, 320}, {-400, 400, 420}});
+  // Adept One: joint 3 in mm (195 of stroke, 500 mm/s).
+  checkFigures("adept-one", {{-150, 150, 540}, {-147, 147, 540}, {0, 195, 500}, {-277, 277, 3300}});
+  // RV-M1 instruction manual: waist 300, shoulder 130, elbow 110, pitch 180,
+  // roll 360 degrees of travel.
+  checkFigures("mitsubishi-rv-m1", {{-150, 150, 120}, {-30, 100, 72}, {-110, 0, 109}, {-90, 90, 100}, {-180, 180, 163}});
+}
+
+TEST_CASE("The IRB 120's acceleration reaches the machine: a 90 degree turn is a trapezoid", "[library]") {
+  // Axis 1 (G): 250 deg/s, 2800 deg/s² (25000 units/s, 280000 units/s²,
+  // 0.01 deg a unit). 90 deg = 9000 units: accelerating takes
+  // v/a = 25000/280000 s = 89285.7 µs (89286 whole) over v²/2a = 1116.07
+  // units, braking the same; the 6767.86 units between at 25000/s take
+  // (9000·280000 − 25000²)/(25000·280000) s = 0.2707142857 s (270715 whole):
+  // 2·89286 + 270715 = 449287 µs, the exact 9000/25000 + 25000/280000 =
+  // 0.4492857 s rounded up.
+  Scratch scratch;
+  const std::string program = scratch.write("turn.rsp", "MOVE 9000 0 0 0 0 0 0\nEND\n");
+  const rs::testing::CliResult r = runCli({"run", program, "--cell", "irb120-cell", "--profile", "--format=json"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["profile"]["total_us"] == 449287);
+  CHECK(j["profile"]["moving_us"] == 449287);
+  // The gripper's fixed 0.1 s: closing by any amount takes 100000 µs.
+  const std::string grip = scratch.write("grip.rsp", "MOVE 0 0 0 0 0 0 7\nMOVE 0 0 0 0 0 0 80\nEND\n");
+  const auto g = nlohmann::json::parse(runCli({"run", grip, "--cell", "irb120-cell", "--profile", "--format=json"}).out);
+  CHECK(g["profile"]["gripper_us"] == 200000);
 }
 
 TEST_CASE("Rhino SCARA's motors are the paper's Table 6, then the gripper", "[library]") {
