@@ -87,9 +87,9 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   if (o.profile && run->log()) report.profile = runtime::profileOf(image, *run->log());
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);
-  if (!json && report.profile) printTextProfile(out, *report.profile);
   else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", base::safeText(image.sourceName),
                           outcome.steps, vm::formatSeconds(run->clock()));
+  if (!json && report.profile) printTextProfile(out, *report.profile);
   return outcome.ok() ? kExitOk : kExitRunFailed;
 }
 

@@ -15,15 +15,16 @@ namespace {
 //  2    DELAY 2                   1 -> 3    waiting
 //  3    GOSUB grab                3
 //  4    GOSUB grab                4
-//  5    END                       4.5
+//  5    END                       5
 //  6    grab: MOVETO 400 0 0 0 100
 //         1st call                3 -> 3.5  gripper   A 0->100 at 200/s: 0.5 s, nothing else moves
-//         2nd call                4         moving    nothing to move: 0 s
+//         2nd call                4 -> 4.5  moving    D back 200->0 at 400/s: 0.5 s (A stays)
 //  7    MOVE 0 200 0 0 0
 //         1st call                3.5 -> 4  moving    D 0->200 at 400/s: 0.5 s
-//         2nd call                4 -> 4.5  moving    D 200->400: 0.5 s
+//         2nd call                4.5 -> 5  moving    D 0->200 again: 0.5 s
 //  8    RETURN (twice)            0
-// Total 4.5 s: moving 1 + 0.5 + 0.5 = 2 s, waiting 2 s, gripper 0.5 s.
+// Total 5 s: moving 1 + 0.5 + 0.5 + 0.5 = 2.5 s (50 %), waiting 2 s (40 %),
+// gripper 0.5 s (10 %); five moves.
 const char* kProgram =
     "        MOVETO 400 0 0 0 0\n"
     "        DELAY 2\n"
@@ -44,12 +45,12 @@ TEST_CASE("run --profile --format=json gives the hand-computed times", "[profile
   REQUIRE(r.code == 0);
   const nlohmann::json j = nlohmann::json::parse(r.out);
   const nlohmann::json& p = j.at("profile");
-  CHECK(p["total_us"] == 4'500'000);
-  CHECK(p["moving_us"] == 2'000'000);
+  CHECK(p["total_us"] == 5'000'000);
+  CHECK(p["moving_us"] == 2'500'000);
   CHECK(p["waiting_us"] == 2'000'000);
   CHECK(p["gripper_us"] == 500'000);
   CHECK(p["other_us"] == 0);
-  CHECK(p["moves"] == 4);  // lines 1, 6 (first call), 7, 7
+  CHECK(p["moves"] == 5);  // lines 1, 6, 7, 6, 7
 
   std::map<int, std::pair<long, int>> lines;  // line -> (total, steps)
   for (const auto& l : p["lines"]) lines[l["line"].get<int>()] = {l["total_us"].get<long>(), l["steps"].get<int>()};
@@ -58,7 +59,7 @@ TEST_CASE("run --profile --format=json gives the hand-computed times", "[profile
                                                       {3, {0, 1}},
                                                       {4, {0, 1}},
                                                       {5, {0, 1}},
-                                                      {6, {500'000, 2}},
+                                                      {6, {1'000'000, 2}},
                                                       {7, {1'000'000, 2}},
                                                       {8, {0, 2}}});
 
@@ -68,19 +69,19 @@ TEST_CASE("run --profile --format=json gives the hand-computed times", "[profile
   CHECK(p["labels"][0]["steps"] == 5);
   CHECK(p["labels"][1]["name"] == "grab");
   CHECK(p["labels"][1]["line"] == 6);
-  CHECK(p["labels"][1]["total_us"] == 1'500'000);
+  CHECK(p["labels"][1]["total_us"] == 2'000'000);
   CHECK(p["labels"][1]["gripper_us"] == 500'000);
   CHECK(p["labels"][1]["steps"] == 6);
 
   REQUIRE(p["subroutines"].size() == 1);
   CHECK(p["subroutines"][0]["name"] == "grab");
   CHECK(p["subroutines"][0]["calls"] == 2);
-  CHECK(p["subroutines"][0]["total_us"] == 1'500'000);
-  CHECK(p["subroutines"][0]["moving_us"] == 1'000'000);
+  CHECK(p["subroutines"][0]["total_us"] == 2'000'000);
+  CHECK(p["subroutines"][0]["moving_us"] == 1'500'000);
 
-  // Longest first; the three 0.5 s moves in the order they ran.
+  // Longest first; the four 0.5 s moves in the order they ran.
   const nlohmann::json& slow = p["slowest_moves"];
-  REQUIRE(slow.size() == 4);
+  REQUIRE(slow.size() == 5);
   CHECK(slow[0]["line"] == 1);
   CHECK(slow[0]["duration_us"] == 1'000'000);
   CHECK(slow[0]["motor"] == "E");
@@ -90,8 +91,12 @@ TEST_CASE("run --profile --format=json gives the hand-computed times", "[profile
   CHECK(slow[2]["line"] == 7);
   CHECK(slow[2]["from"] == 0);
   CHECK(slow[2]["to"] == 200);
+  CHECK(slow[3]["line"] == 6);
+  CHECK(slow[3]["motor"] == "D");
   CHECK(slow[3]["start_us"] == 4'000'000);
   CHECK(slow[3]["from"] == 200);
+  CHECK(slow[3]["to"] == 0);
+  CHECK(slow[4]["start_us"] == 4'500'000);
 }
 
 TEST_CASE("run --profile prints the same figures as text", "[profile]") {
@@ -99,10 +104,10 @@ TEST_CASE("run --profile prints the same figures as text", "[profile]") {
   const std::string program = dir.write("p.rsp", kProgram);
   const rs::testing::CliResult r = rs::testing::runCli({"run", program, "--profile"});
   REQUIRE(r.code == 0);
-  CHECK_THAT(r.out, Catch::Contains("profile: 4.500 s simulated, 4 moves"));
-  CHECK_THAT(r.out, Catch::Contains("moving         2.000 s   44.4 %"));  // 2 / 4.5
-  CHECK_THAT(r.out, Catch::Contains("waiting        2.000 s   44.4 %"));
-  CHECK_THAT(r.out, Catch::Contains("gripper        0.500 s   11.1 %"));
+  CHECK_THAT(r.out, Catch::Contains("profile: 5.000 s simulated, 5 moves"));
+  CHECK_THAT(r.out, Catch::Contains("moving         2.500 s   50.0 %"));
+  CHECK_THAT(r.out, Catch::Contains("waiting        2.000 s   40.0 %"));
+  CHECK_THAT(r.out, Catch::Contains("gripper        0.500 s   10.0 %"));
   CHECK_THAT(r.out, Catch::Contains("grab (line 6)"));
   CHECK_THAT(r.out, Catch::Contains("1. line 1: 1.000 s from 0.000 s (motor E 0 -> 400)"));
   // Without --profile, no profile.
