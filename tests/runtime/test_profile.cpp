@@ -121,3 +121,34 @@ TEST_CASE("run --profile refuses a real controller", "[profile]") {
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("--profile: error:"));
 }
+
+TEST_CASE("a subroutine that calls itself counts each moment once", "[profile]") {
+  // r is entered three times, each call inside the one before; each runs
+  // one MOVE of E by 100 at 400 units/s = 0.25 s. Inside r the whole time
+  // from the first call's start: 3 × 0.25 = 0.75 s (adding each active
+  // call's share would give 0.25 · (1 + 2 + 3) = 1.5 s).
+  rs::testing::TempDir dir;
+  const std::string program = dir.write("r.rsp",
+                                        "        GOSUB r\n"
+                                        "        END\n"
+                                        "r:      ADD N 1\n"
+                                        "        MOVE 100 0 0 0 0\n"
+                                        "        JMPVAR N = 3 out\n"
+                                        "        GOSUB r\n"
+                                        "out:    RETURN\n");
+  const rs::testing::CliResult r = rs::testing::runCli({"run", program, "--profile", "--format=json"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const nlohmann::json p = nlohmann::json::parse(r.out).at("profile");
+  CHECK(p["total_us"] == 750'000);
+  REQUIRE(p["subroutines"].size() == 1);
+  CHECK(p["subroutines"][0]["calls"] == 3);
+  CHECK(p["subroutines"][0]["total_us"] == 750'000);
+  // By label: r's region (lines 3..6) holds every move; out's only RETURNs.
+  REQUIRE(p["labels"].size() == 3);
+  CHECK(p["labels"][1]["name"] == "r");
+  CHECK(p["labels"][1]["total_us"] == 750'000);
+  CHECK(p["labels"][2]["name"] == "out");
+  CHECK(p["labels"][2]["steps"] == 3);
+  CHECK(p["labels"][2]["total_us"] == 0);
+}
