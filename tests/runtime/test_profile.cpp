@@ -152,3 +152,18 @@ TEST_CASE("a subroutine that calls itself counts each moment once", "[profile]")
   CHECK(p["labels"][2]["steps"] == 3);
   CHECK(p["labels"][2]["total_us"] == 0);
 }
+
+TEST_CASE("an image compiled for an accelerating cell runs with the same timing as its source", "[profile]") {
+  // The IRB 120's G turns 90 degrees: 449287 µs (tests/library); the image
+  // (1.1, with its motion section) carries the accelerations beside the
+  // cell's geometry.
+  rs::testing::TempDir dir;
+  const std::string program = dir.write("t.rsp", "MOVE 9000 0 0 0 0 0 0\nEND\n");
+  const std::string image = dir.file("t.rsb");
+  REQUIRE(rs::testing::runCli({"compile", program, "--cell", "irb120-cell", "-o", image}).code == 0);
+  CHECK(rs::testing::readBytes(image)[10] == 1);  // minor version 1
+  const rs::testing::CliResult r = rs::testing::runCli({"run", image, "--profile", "--format=json"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(nlohmann::json::parse(r.out)["profile"]["total_us"] == 449287);
+}
