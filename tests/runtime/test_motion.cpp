@@ -150,7 +150,20 @@ TEST_CASE("an image keeps its 1.0 bytes unless a motor has an acceleration or an
   const rs::vm::LoadResult back = rs::vm::loadImage({reinterpret_cast<const char*>(timed.data()), timed.size()});
   REQUIRE(back.error.empty());
   CHECK(back.image.motors == image.motors);
-  // The verifier refuses an actuation time on an arm joint.
+  // The verifier refuses a motor that would take 1000 s to reach its speed
+  // (which keeps motion.h's arithmetic in 128 bits), a negative
+  // acceleration, and an actuation time on an arm joint.
+  const auto refused = [&](const rs::vm::Image& im) {
+    const std::vector<std::uint8_t> b = rs::vm::writeImage(im);
+    return rs::vm::loadImage({reinterpret_cast<const char*>(b.data()), b.size()}).error;
+  };
+  rs::vm::Image slow = image;
+  slow.motors[0].speed = 5000, slow.motors[0].acceleration = 5;
+  CHECK_THAT(refused(slow), Catch::Contains("takes 1000 s or more to reach its speed"));
+  slow.motors[0].acceleration = 6;
+  CHECK(refused(slow).empty());
+  slow.motors[0].acceleration = -1;
+  CHECK_THAT(refused(slow), Catch::Contains("acceleration -1 is outside"));
   image.motors[0].actuation = 1000;
   const std::vector<std::uint8_t> bad = rs::vm::writeImage(image);
   CHECK_THAT(rs::vm::loadImage({reinterpret_cast<const char*>(bad.data()), bad.size()}).error,
