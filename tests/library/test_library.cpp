@@ -353,8 +353,9 @@ TEST_CASE("The new arms' joint ranges and speeds are the published ones", "[libr
   // Adept One: joint 3 in mm (195 of stroke, 500 mm/s).
   checkFigures("adept-one", {{-150, 150, 540}, {-147, 147, 540}, {0, 195, 500}, {-277, 277, 3300}});
   // RV-M1 instruction manual: waist 300, shoulder 130, elbow 110, pitch 180,
-  // roll 360 degrees of travel.
-  checkFigures("mitsubishi-rv-m1", {{-150, 150, 120}, {-30, 100, 72}, {-110, 0, 109}, {-90, 90, 100}, {-180, 180, 163}});
+  // roll 360 degrees of travel (the elbow's down from level: positive in
+  // our D-H sense, see the file).
+  checkFigures("mitsubishi-rv-m1", {{-150, 150, 120}, {-30, 100, 72}, {0, 110, 109}, {-90, 90, 100}, {-180, 180, 163}});
 }
 
 TEST_CASE("The IRB 120's acceleration reaches the machine: a 90 degree turn is a trapezoid", "[library]") {
@@ -456,5 +457,55 @@ TEST_CASE("Closing each library gripper brings its fingers to the tool axis", "[
     const auto closed = rs::kinematics::fingerTransforms(g.model, g.max);
     CHECK(spread(g.finger2, closed.finger2) < spread(g.finger2, open.finger2));
     CHECK(spread(g.finger3, closed.finger3) < spread(g.finger3, open.finger3));
+  }
+}
+
+TEST_CASE("In each new workcell the arm can take a block, at encoder counts worked out by hand", "[library]") {
+  // Inverse kinematics by hand (law of cosines in the arm's vertical plane,
+  // tool pointing down), rounded to whole encoder units:
+  //  - adept-cell, block 1 centred at (20, 520, 600): in frame 0 (x
+  //    forward, y = -z of the world) X 20, Y -600; cos th2 = (20² + 600² −
+  //    425² − 375²) / (2·425·375) = 0.12282, th2 = −82.95°, th1 =
+  //    atan2(−600, 20) − atan2(375 sin th2, 425 + 375 cos th2) = −49.78°;
+  //    C lowers the tool centre from 580 to 520: 60 mm = 6000.
+  //  - rv-m1-cell, block on the pallet centred at (220, 800, 0): the wrist
+  //    pitch axis 172 above it, (220, 222) from the base, (220, −28) from
+  //    the shoulder: r = 221.8; elbow bend 180° − acos((220² + 160² − r²) /
+  //    (2·220·160)) = 110.64° (D = (110.64 − 90) / 0.1 = 206); upper arm
+  //    atan2(−28, 220) + acos((220² + r² − 160²) / (2·220·r)) = 35.22° up
+  //    (E = 548); pitch −75.42° to point the tool down (C = −754).
+  //  - xr4-cell, block centred at (240, 800, −40): th1 = atan2(40, 240) =
+  //    9.46° (F = 95); the pitch axis 168.3 above and 9.5 nearer than the
+  //    tool centre: 233.8 out, 42.1 below the shoulder; both links 228.6:
+  //    bend 117.39° (D = 274), upper arm 48.48° up (E = 415), pitch −68.91°
+  //    (C = −689).
+  //  - irb120-cell, block on the pallet centred at (280, 800, 0): the wrist
+  //    centre 152 above it, (280, −88) from axis 2; sides 270 and
+  //    sqrt(70² + 302²) = 310.01: upper arm 49.15° up (F = 4085); the
+  //    forearm's offset 13.05° gives th3 = 42.70° (E = 4270); th5 = 6.45°
+  //    points the tool down (C = 645).
+  // Then the gripper closes: the block is held, the tool centre in it.
+  struct Pick {
+    std::string cell, moveTo, close;
+    std::array<double, 3> centre;
+  };
+  const std::vector<Pick> picks{
+      {"adept-cell", "MOVETO -4978 -8294 6000 0 0", "MOVE 0 0 0 0 80", {20, 520, 600}},
+      {"rv-m1-cell", "MOVETO 0 548 206 -754 0 0", "MOVE 0 0 0 0 0 80", {220, 800, 0}},
+      {"xr4-cell", "MOVETO 95 415 274 -689 0 0", "MOVE 0 0 0 0 0 115", {240, 800, -40}},
+      {"irb120-cell", "MOVETO 0 4085 4270 0 645 0 0", "MOVE 0 0 0 0 0 0 80", {280, 800, 0}},
+  };
+  Scratch scratch;
+  for (const Pick& p : picks) {
+    INFO(p.cell);
+    const std::string program = scratch.write(p.cell + ".rsp", p.moveTo + "\n" + p.close + "\nEND\n");
+    const rs::testing::CliResult r = runCli({"run", program, "--cell", p.cell, "--format=json"});
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    for (int k = 0; k < 3; ++k) CHECK(j["tcp"][k].get<double>() == Approx(p.centre[k]).margin(0.5));
+    int held = 0;
+    for (const auto& o : j["objects"]) held += o["held"].get<bool>() ? 1 : 0;
+    CHECK(held == 1);
   }
 }
