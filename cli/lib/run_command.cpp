@@ -46,7 +46,11 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   report.omitted = program.omitted;
   // The stimuli and limits are checked even when the program did not
   // compile, so that one run reports every mistake.
-  const std::optional<runtime::RunSpec> spec = launch::prepareRun(program, o.run, report.diagnostics);
+  // A profile reads the run's log, about 70 bytes a step: without
+  // --max-steps, such a run stops at kProfileMaxSteps (700 MB of log), not
+  // at the usual 100 million.
+  const std::optional<runtime::RunSpec> spec = launch::prepareRun(
+      program, o.run, report.diagnostics, o.profile ? kProfileMaxSteps : vm::RunLimits{}.maxSteps);
   if (!spec || !program.ok()) {
     launch::printDiagnostics(err, report.diagnostics, program);
     if (json) printJsonSummary(out, report);

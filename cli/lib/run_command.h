@@ -11,6 +11,9 @@
 
 namespace rs::cli {
 
+/// `run --profile`'s step limit when --max-steps is not given.
+inline constexpr std::uint64_t kProfileMaxSteps = 10'000'000;
+
 struct RunCommandOptions {
   launch::ProgramRequest program;
   launch::RunRequest run;
