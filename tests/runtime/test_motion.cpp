@@ -150,6 +150,19 @@ TEST_CASE("an image keeps its 1.0 bytes unless a motor has an acceleration or an
   const rs::vm::LoadResult back = rs::vm::loadImage({reinterpret_cast<const char*>(timed.data()), timed.size()});
   REQUIRE(back.error.empty());
   CHECK(back.image.motors == image.motors);
+  // A 1.1 header over a motion section of zeros: refused, since a 1.0
+  // image says the same.
+  std::vector<std::uint8_t> zeros = plain;
+  zeros.insert(zeros.end(), 2 * 8, 0);
+  zeros[10] = 1;
+  const auto le32 = [&](std::size_t at, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) zeros[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
+  };
+  const std::size_t payload = zeros.size() - rs::vm::kImageHeaderBytes;
+  le32(12, static_cast<std::uint32_t>(payload));
+  le32(16, rs::vm::crc32(zeros.data() + rs::vm::kImageHeaderBytes, payload));
+  CHECK_THAT(rs::vm::loadImage({reinterpret_cast<const char*>(zeros.data()), zeros.size()}).error,
+             Catch::Contains("a motion section in which no motor has an acceleration or an actuation time"));
   // The verifier refuses a motor that would take 1000 s to reach its speed
   // (which keeps motion.h's arithmetic in 128 bits), a negative
   // acceleration, and an actuation time on an arm joint.
