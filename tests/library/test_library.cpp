@@ -356,6 +356,10 @@ TEST_CASE("The new arms' joint ranges and speeds are the published ones", "[libr
   // roll 360 degrees of travel (the elbow's down from level: positive in
   // our D-H sense, see the file).
   checkFigures("mitsubishi-rv-m1", {{-150, 150, 120}, {-30, 100, 72}, {0, 110, 109}, {-90, 90, 100}, {-180, 180, 163}});
+  // XR-4 brochure travel (waist 350, shoulder 210, elbow 265, pitch 270
+  // degrees, roll kept to 360), centred on home; speeds our choice, as on
+  // the XR-3 (300, 300, 300, 400, 500 units/s at 0.1 deg).
+  checkFigures("rhino-xr4", {{-175, 175, 30}, {-105, 105, 30}, {-132.5, 132.5, 30}, {-135, 135, 40}, {-180, 180, 50}});
 }
 
 TEST_CASE("The IRB 120's acceleration reaches the machine: a 90 degree turn is a trapezoid", "[library]") {
