@@ -60,6 +60,9 @@ class Library {
   std::optional<workcell::Robot> checkRobot(const RobotDef& def, const DescriptionFile& from);
   std::optional<workcell::Workcell> buildWorkcell(const WorkcellDef& def, const DescriptionFile& from);
   void error(const DescriptionFile& file, diag::Pos pos, std::string message);
+  /// False (with an error at the ACCELERATION) when the motor would take
+  /// vm::kMaxSecondsToSpeed or more to reach its speed.
+  bool reachesSpeed(const DescriptionFile& file, diag::Pos at, std::int32_t speed, std::int32_t acceleration);
 
   std::vector<std::filesystem::path> searchPath_;
   std::vector<std::unique_ptr<DescriptionFile>> files_;  // in load order

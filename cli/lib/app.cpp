@@ -79,6 +79,9 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   RunCommandOptions ro;
   CLI::App* run = addRunLike(app, "run", "Run a program (.rsp source or .rsb image) in simulation", ro);
   run->add_flag("--trace{text}", ro.trace, "Print each executed instruction: --trace (text) or --trace=json");
+  run->add_flag("--profile", ro.profile,
+                "Where the time went: by source line, label and subroutine, moving vs waiting vs gripper, the "
+                "slowest moves (with --format=json: a \"profile\" member); --max-steps then defaults to 10000000");
   addRunLikeOptions(run, ro);
   CLI::App* check = addRunLike(app, "check", "Compile, verify and simulate; exit 0 only if all is well", ro);
   check->add_flag("--strict", ro.strict, "Warnings fail the check too");

@@ -103,14 +103,19 @@ Json graspModel(const runtime::RunLog& rec, const workcell::Workcell& cell) {
 
 Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const std::string& outcome) {
   Json motors = Json::array();
-  for (const vm::MotorSpec& m : rec.motors)
-    motors.push_back({{"letter", std::string(1, m.letter)},
-                      {"kind", m.kind == vm::JointKind::Gripper     ? "gripper"
-                               : m.kind == vm::JointKind::Prismatic ? "prismatic"
-                                                                    : "revolute"},
-                      {"min", m.min},
-                      {"max", m.max},
-                      {"speed", m.speed}});
+  for (const vm::MotorSpec& m : rec.motors) {
+    Json motor = {{"letter", std::string(1, m.letter)},
+                  {"kind", m.kind == vm::JointKind::Gripper     ? "gripper"
+                           : m.kind == vm::JointKind::Prismatic ? "prismatic"
+                                                                : "revolute"},
+                  {"min", m.min},
+                  {"max", m.max},
+                  {"speed", m.speed}};
+    // Only when set: a constant-speed motor's entry is what it always was.
+    if (m.acceleration != 0) motor["acceleration"] = m.acceleration;
+    if (m.actuation != 0) motor["actuation"] = m.actuation;
+    motors.push_back(std::move(motor));
+  }
   Json index = Json::array(), start = Json::array(), stop = Json::array();
   for (const runtime::StepRecord& s : rec.steps) index.push_back(s.index), start.push_back(s.start), stop.push_back(s.end);
   Json moves = Json::array();

@@ -2,8 +2,8 @@
 // the page as JSON (animation.cpp) and recomputes every frame from it:
 //
 //   time t  -> the step in progress (binary search on the steps' starts)
-//           -> each motor's encoder count (its last segment, rounded the
-//              way SimMachine::positionAt rounds)
+//           -> each motor's encoder count (its last segment through
+//              runtime/motion.h's profile, rounded as positionAt rounds)
 //           -> joint values (precision, coupling) -> D-H forward kinematics
 //           -> each part's lines, stored in its own frame's coordinates,
 //              through one 3x4 matrix per part (view · frame [· finger])
@@ -219,18 +219,37 @@ const std::string_view kScript = R"JS('use strict';
     return lo - 1;
   }
   function stepAt(t) { return lastUpTo(run.start, t); }
-  function positionAt(mv, i, speed, t) {
+  // runtime/motion.h's profiles, exactly: constant speed in doubles (every
+  // product stays below 2^53), the rest in BigInt.
+  function phasesOf(v, a, d) {  // BigInts; [ta, tc] in whole microseconds
+    const M = 1000000n;
+    if (d * a >= v * v) return [(v * M + a - 1n) / a, ((d * a - v * v) * M + v * a - 1n) / (v * a)];
+    const need = d * M * M;
+    let th = BigInt(Math.ceil(Math.sqrt(Number(need) / Number(a))));
+    while (a * th * th < need) th++;
+    while (th > 0n && a * (th - 1n) * (th - 1n) >= need) th--;
+    return [th, 0n];
+  }
+  function coveredAt(motor, d, elapsed) {
+    if (motor.actuation) return Number(BigInt(elapsed) * BigInt(d) / BigInt(motor.actuation));
+    if (!motor.acceleration) return Math.floor(elapsed * motor.speed / 1e6);
+    const [ta, tc] = phasesOf(BigInt(motor.speed), BigInt(motor.acceleration), BigInt(d));
+    const t = BigInt(elapsed), total = 2n * ta + tc, whole = 2n * ta * (ta + tc);
+    const u = t <= ta ? t * t : t <= ta + tc ? 2n * ta * t - ta * ta : whole - (total - t) * (total - t);
+    return Number(BigInt(d) * u / whole);
+  }
+  function positionAt(mv, i, motor, t) {
     const from = mv.from[i], to = mv.to[i];
     if (t <= mv.start[i]) return from;
     if (t >= mv.end[i]) return to;
-    const covered = Math.floor((t - mv.start[i]) * speed / 1e6);
+    const covered = coveredAt(motor, Math.abs(to - from), t - mv.start[i]);
     return to > from ? from + covered : from - covered;
   }
   const current = { enc: new Int32Array(motorCount), outputs: 0, inputs: 0, view: [0, 0, 0], window: [0, 0, 0] };
   function stateAt(k, t, st) {
     for (let m = 0; m < motorCount; m++) {
       const mv = run.moves[m], i = k < 0 ? -1 : lastUpTo(mv.step, k);
-      st.enc[m] = i < 0 ? 0 : positionAt(mv, i, run.motors[m].speed, t);
+      st.enc[m] = i < 0 ? 0 : positionAt(mv, i, run.motors[m], t);
     }
     const o = k < 0 ? -1 : lastUpTo(run.outputs.step, k);
     st.outputs = o < 0 ? 0 : run.outputs.mask[o];
@@ -337,7 +356,7 @@ const std::string_view kScript = R"JS('use strict';
     tr.innerHTML = '<td class="m"><b></b> <span></span></td><td class="v"></td><td class="r"><div class="bar"><i></i></div></td>';
     tr.querySelector('b').textContent = m.letter;
     tr.querySelector('span').textContent = m.kind;
-    tr.title = m.letter + ': ' + m.kind + ', ' + m.min + '..' + m.max + ', ' + m.speed + ' units/s';
+    tr.title = m.letter + ': ' + m.kind + ', ' + m.min + '..' + m.max + ', ' + m.speed + ' units/s' + (m.acceleration ? ', ' + m.acceleration + ' units/s²' : '') + (m.actuation ? ', ' + m.actuation / 1e6 + ' s a move' : '');
     el('motors').append(tr);
     motorCells.push({ value: tr.children[1], mark: tr.querySelector('i'), last: null, m });
   });
