@@ -72,6 +72,9 @@ class RhinoMachine final : public vm::Machine {
   /// Drives every motor back to where open() found it (a real arm cannot
   /// jump): takes the time the move takes.
   vm::Status reset() override;
+  /// The controller's encoder counts become positions() (a teach pendant's
+  /// "read position"); a Mark III cannot report them and keeps the tracked ones.
+  vm::Status readPositions();
   void window(std::int32_t, std::int32_t, std::int32_t) override {}
   void view(std::int32_t, std::int32_t, std::int32_t) override {}
   vm::Micros now() const override;
