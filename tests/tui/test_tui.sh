@@ -5,7 +5,8 @@
 # (capture-pane). It checks the screen after each step, the program file
 # written against a golden file byte for byte, and that the terminal is
 # given back as it was (same stty modes, the full-screen mode left, the
-# cursor shown) after q, after SIGTERM, and when the pendant cannot start.
+# cursor shown) after q, SIGTERM, SIGINT and a crash (SIGSEGV), and when
+# the pendant cannot start.
 #
 #   bash tests/tui/test_tui.sh ROBOTSIM_BINARY WORK_DIR
 set -euo pipefail
@@ -42,7 +43,7 @@ typed() { tm send-keys -t t -l "$1"; }
 start() {
   rm -f "$work"/{pid,code,before,after}
   tm -f /dev/null new-session -d -x 80 -y 24 -s t \
-    "cd '$work' && stty -g > before; sh -c 'echo \$\$ > pid; exec \"$bin\" teach $*'; echo \$? > code; stty -g > after; echo PANE-DONE; exec sleep 600"
+    "cd '$work' && ulimit -c 0 && stty -g > before; sh -c 'echo \$\$ > pid; exec \"$bin\" teach $*'; echo \$? > code; stty -g > after; echo PANE-DONE; exec sleep 600"
 }
 # Waits until robotsim has exited and the pane's shell has taken notes.
 finished() {
@@ -158,7 +159,25 @@ finished
 check_restored "after SIGTERM"
 tm kill-server
 
-# --- 3. It cannot start without a terminal: an error, exit 2, no file written.
+# --- 3. Ctrl-C's SIGINT quits like q, exit 130; a crash (SIGSEGV) still
+# gives the terminal back before the process dies of it (no core file).
+for sig in INT SEGV; do
+  cp "$here/pick.rsp" "$work/pick.rsp"
+  start "pick.rsp --cell scara-pick --tui"
+  expect_screen "> HOME"
+  keys 3 Right                           # a change on screen, none in the file
+  expect_screen " > E revolute      100"
+  kill -"$sig" "$(cat "$work/pid")"
+  finished
+  want=130
+  [ "$sig" = SEGV ] && want=139          # the shell's 128 + 11: it died of the signal
+  [ "$(cat "$work/code")" = "$want" ] || fail "SIG$sig exits $(cat "$work/code"), not $want"
+  check_restored "after SIG$sig"
+  cmp -s "$work/pick.rsp" "$here/pick.rsp" || fail "SIG$sig: the file changed"
+  tm kill-server
+done
+
+# --- 4. It cannot start without a terminal: an error, exit 2, no file written.
 cp "$here/pick.rsp" "$work/pick.rsp"
 set +e
 "$bin" teach "$work/pick.rsp" --cell scara-pick --tui < /dev/null > "$work/out" 2> "$work/err"
