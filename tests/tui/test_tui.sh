@@ -6,7 +6,9 @@
 # written against a golden file byte for byte, and that the terminal is
 # given back as it was (same stty modes, the full-screen mode left, the
 # cursor shown) after q, SIGTERM, SIGINT and a crash (SIGSEGV), and when
-# the pendant cannot start.
+# the pendant cannot start; with --device, against robotsim emulate on a
+# pseudo-terminal, that a jog moves the controller's motor and a serial
+# fault stops everything and shows.
 #
 #   bash tests/tui/test_tui.sh ROBOTSIM_BINARY WORK_DIR
 set -euo pipefail
@@ -19,7 +21,8 @@ rm -rf "$work"
 mkdir -p "$work"
 sock="$work/tmux.sock"
 tm() { tmux -S "$sock" "$@"; }
-trap 'tm kill-server 2>/dev/null || true' EXIT
+emu=""
+trap 'tm kill-server 2>/dev/null || true; [ -n "$emu" ] && kill -INT "$emu" 2>/dev/null || true' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
@@ -177,7 +180,44 @@ for sig in INT SEGV; do
   tm kill-server
 done
 
-# --- 4. It cannot start without a terminal: an error, exit 2, no file written.
+# --- 4. With --device: robotsim emulate plays the controller on a
+# pseudo-terminal; a jog moves its motor, read position reads it back, and
+# a serial fault (the controller falls silent) stops everything and shows
+# in the message row.
+cp "$here/pick.rsp" "$work/pick.rsp"
+mkfifo "$work/emu.in"
+"$bin" emulate --link "$work/rhino" -q < "$work/emu.in" > "$work/emu.out" 2>&1 &
+emu=$!
+exec 3> "$work/emu.in"
+for _ in $(seq 100); do [ -e "$work/rhino" ] && break; sleep 0.1; done
+start "pick.rsp --cell scara-pick --tui --device '$work/rhino'"
+expect_screen "(robot on /"
+keys 3 Right
+expect_screen "moved to 100 0 0 0 0"
+echo status >&3
+for _ in $(seq 100); do grep -qF "motor E: position 100," "$work/emu.out" && break; sleep 0.1; done
+grep -qF "motor E: position 100," "$work/emu.out" || fail "the emulator's motor E is not at 100: $(cat "$work/emu.out")"
+keys p
+expect_screen "read from the controller: 100 0 0 0 0"
+echo "fault silence" >&3
+sleep 0.3
+keys Right
+expect_screen "DEVICE FAULT, every motor stopped:"
+keys Right                               # refused: the pose stays, the fault shows
+sleep 0.3
+expect_screen " > E revolute      100"
+expect_screen "DEVICE FAULT, every motor stopped:"
+keys q
+finished
+[ "$(cat "$work/code")" = 0 ] || fail "q after a fault exits $(cat "$work/code"), not 0"
+check_restored "after a device fault"
+echo quit >&3
+exec 3>&-
+wait "$emu" || true
+emu=""
+tm kill-server
+
+# --- 5. It cannot start without a terminal: an error, exit 2, no file written.
 cp "$here/pick.rsp" "$work/pick.rsp"
 set +e
 "$bin" teach "$work/pick.rsp" --cell scara-pick --tui < /dev/null > "$work/out" 2> "$work/err"
