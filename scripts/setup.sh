@@ -17,7 +17,9 @@ packages=(
   antlr4 libantlr4-runtime-dev default-jre-headless
   libeigen3-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
   libmimalloc-dev libcairo2-dev
+  libcpp-httplib-dev
 )
+# libcpp-httplib-dev: the HTTP server of `robotsim teach`'s live page.
 # Catch2 and the unit tests build with the tree; the browser test drives a
 # real Chromium with playwright-core (pinned in tests/browser/package-lock.json);
 # lcov's genhtml reads robotsim test's coverage files; lua5.4 is the

@@ -16,6 +16,7 @@
 #include "cli/lib/robot_commands.h"
 #include "cli/lib/run_command.h"
 #include "cli/lib/serial_commands.h"
+#include "cli/lib/teach_command.h"
 #include "cli/lib/test_command.h"
 
 namespace rs::cli {
@@ -129,6 +130,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   CLI::App* emulate = addEmulateCommand(app, emulateOptions);
 
   const RenderCommands renderCommands(app);  // render, animate
+  TeachOptions teachOptions;
+  CLI::App* teach = addTeachCommand(app, teachOptions);
   TestOptions testOptions;
   CLI::App* test = addTestCommand(app, testOptions);
   LspOptions lspOptions;
@@ -151,6 +154,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   if (const std::optional<int> code = renderCommands.run(out, err)) return *code;
   if (test->parsed()) return testCommand(testOptions, out, err);
   if (lsp->parsed()) return lspCommand(lspOptions, err);
+  if (teach->parsed()) return teachCommand(teachOptions, out, err);
   if (run->parsed()) return runOrCheck(ro, false, out, err);
   if (check->parsed()) return runOrCheck(ro, true, out, err);
   if (compile->parsed()) return compileCommand(po, out, err);
