@@ -12,10 +12,10 @@
 
 namespace rs::teach {
 
-/// A source's answer to a command: an HTTP status (200 done, 400 the
-/// request was malformed, 403 the source is read-only, 409 refused as it
-/// stands, e.g. a point that does not exist or a file changed on disk) and
-/// a JSON body ({"ok", "message", "revision"}).
+/// A source's answer to a command: an HTTP status (200 carried out or
+/// refused as things stand, "ok" saying which: a point that does not
+/// exist, a file changed on disk; 400 the request was malformed; 403 the
+/// source is read-only) and a JSON body ({"ok", "message", "revision"}).
 struct LiveReply {
   int status = 200;
   nlohmann::json body;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
+
 #include "runtime/render/animation.h"
 #include "runtime/render/camera.h"
 #include "teach/keys.h"
@@ -10,7 +12,8 @@ namespace rs::teach {
 
 std::string teachPageHtml(const workcell::Workcell& cell, const std::string& program) {
   render::Camera camera;  // the stills' default camera, as `animate` starts with
-  nlohmann::ordered_json model = {{"title", fmt::format("teach {} on {}", program, cell.name)},
+  const std::string name = std::filesystem::path(program).filename().string();
+  nlohmann::ordered_json model = {{"title", fmt::format("teach {} on {}", name, cell.name)},
                                   {"cell", cell.name},
                                   {"program", program}};
   const nlohmann::ordered_json drawing = render::cellDrawing(cell, camera);

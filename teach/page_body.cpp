@@ -14,6 +14,7 @@ const std::string_view kStyle = R"CSS(
 #motors td.jog button, .row button, #confirm button { background: #23283a; color: var(--text);
   border: 1px solid var(--line); border-radius: 3px; font: inherit; padding: 1px 8px; cursor: pointer; }
 #motors td.jog button:hover, .row button:hover { border-color: var(--dim); }
+.row button:disabled { opacity: .4; cursor: default; }
 #motors td.range { color: var(--dim); font-size: 11px; white-space: nowrap; }
 #motors input[type=range] { width: 100%; accent-color: var(--accent); }
 .row { display: flex; gap: 6px; align-items: center; margin: 2px 12px; flex-wrap: wrap; }

@@ -31,7 +31,7 @@ LiveReply PendantSource::command(const nlohmann::json& request) {
   std::lock_guard lock(commands_);
   const Outcome o = applyCommand(pendant_, request);
   publish();
-  return {o.ok ? 200 : o.badRequest ? 400 : 409,
+  return {o.badRequest ? 400 : 200,
           {{"ok", o.ok}, {"message", o.message}, {"revision", pendant_.revision()}}};
 }
 
