@@ -17,8 +17,9 @@ packages=(
   antlr4 libantlr4-runtime-dev default-jre-headless
   libeigen3-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
   libmimalloc-dev libcairo2-dev
-  libncurses-dev
+  libcpp-httplib-dev libncurses-dev
 )
+# libcpp-httplib-dev: the HTTP server of `robotsim teach`'s live page.
 # libncurses-dev: the terminal pendant (robotsim teach --tui) draws with ncurses.
 # Catch2 and the unit tests build with the tree; the browser test drives a
 # real Chromium with playwright-core (pinned in tests/browser/package-lock.json);

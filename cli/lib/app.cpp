@@ -17,6 +17,7 @@
 #include "cli/lib/robot_commands.h"
 #include "cli/lib/run_command.h"
 #include "cli/lib/serial_commands.h"
+#include "cli/lib/teach_command.h"
 #include "cli/lib/teach_tui_command.h"
 #include "cli/lib/test_command.h"
 
@@ -135,23 +136,14 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
       "stands on, inputs and outputs");
   robotArgs(describe, "Workcell or robot: description file (.rsd) or library name, e.g. scara-pick");
 
-  // teach: only the terminal pendant (--tui) so far; the web pendant's
-  // branch joins it with the teach core's server.
-  TeachOptions teachOptions;
-  CLI::App* teach = app.add_subcommand("teach", "Jog the robot in a workcell and teach points into the program");
-  teach->add_option("file", teachOptions.program.file, "Program source (.rsp) whose POINTS section is edited")
-      ->required();
-  addCellOptions(teach, teachOptions.program);
-  addSerialOptions(teach, teachOptions.serial);
-  teach->add_flag("--tui", teachOptions.tui,
-                  "The terminal pendant: ncurses in this terminal (80x24 or larger) instead of the web page");
-
   PortsOptions portsOptions;
   CLI::App* ports = addPortsCommand(app, portsOptions);
   EmulateOptions emulateOptions;
   CLI::App* emulate = addEmulateCommand(app, emulateOptions);
 
   const RenderCommands renderCommands(app);  // render, animate
+  TeachOptions teachOptions;
+  CLI::App* teach = addTeachCommand(app, teachOptions);
   TestOptions testOptions;
   CLI::App* test = addTestCommand(app, testOptions);
   LspOptions lspOptions;
@@ -174,6 +166,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   if (const std::optional<int> code = renderCommands.run(out, err)) return *code;
   if (test->parsed()) return testCommand(testOptions, out, err);
   if (lsp->parsed()) return lspCommand(lspOptions, err);
+  if (teach->parsed())
+    return teachOptions.tui ? teachTuiCommand(teachOptions, out, err) : teachCommand(teachOptions, out, err);
   if (run->parsed()) return runOrCheck(ro, false, out, err);
   if (check->parsed()) return runOrCheck(ro, true, out, err);
   if (compile->parsed()) return compileCommand(po, out, err);
@@ -184,11 +178,6 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   if (matrix->parsed()) return matrixCommand(rq, out, err);
   if (where->parsed()) return whereCommand(rq, out, err);
   if (describe->parsed()) return describeCommand(rq, out, err);
-  if (teach->parsed()) {
-    if (teachOptions.tui) return teachTuiCommand(teachOptions, out, err);
-    err << "robotsim: error: the web pendant is not part of this build yet: give --tui for the terminal pendant\n";
-    return kExitBadInput;
-  }
   if (ports->parsed()) return portsCommand(portsOptions, out, err);
   if (emulate->parsed()) return emulateCommand(emulateOptions, out, err);
   return helpCommand(helpTopic, out, err);
