@@ -38,17 +38,18 @@ void Session::ask(Asking what, std::string question) {
 }
 
 bool Session::press(std::string_view key) {
+  if (key == "Resize") return true;  // the terminal changed size: only a redraw, whatever is asked
   if (asking_ != Asking::Nothing) return answer(key);
   note_.clear();
   // The key list covers the panels: any other key hides it, then acts.
-  if (selection_.help && key != "?" && key != "Resize") selection_.help = false;
+  if (selection_.help && key != "?") selection_.help = false;
   if (key == "i") {
     ask(Asking::InputLine, "toggle input (1..8): ");
     return true;
   }
   const std::optional<KeyBinding> binding = keyBinding(key);
   if (!binding) {
-    if (key != "Resize") note_ = fmt::format("no key {} (? lists the keys)", key);
+    note_ = fmt::format("no key {} (? lists the keys)", key);
     return true;
   }
   const std::size_t motors = pendant_.state().motors.size();

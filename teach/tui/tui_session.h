@@ -26,7 +26,8 @@ class Session {
   explicit Session(Pendant& pendant) : pendant_(pendant) {}
 
   /// One key, by its shared-map name; a printable character is its own
-  /// name, and "Enter", "Escape", "Backspace" serve the questions.
+  /// name, and "Enter", "Escape", "Backspace" serve the questions;
+  /// "Resize" (the terminal changed size) only asks for a redraw.
   /// Returns false when the key quits.
   bool press(std::string_view key);
 

@@ -148,6 +148,8 @@ TEST_CASE("tui: delete and re-teach ask first, and only y goes ahead", "[teach][
   Fixture f;
   f.press({"x"});
   CHECK(f.row(23) == "delete OVER? (y/n)");
+  f.press({"Resize"});  // the terminal changed size: the question stays
+  CHECK(f.row(23) == "delete OVER? (y/n)");
   f.press({"n"});
   CHECK(f.text() == kProgram);
   f.press({"r", "Enter"});  // anything but y: no
