@@ -64,9 +64,10 @@ std::vector<std::int32_t> gridOf(std::int32_t lo, std::int32_t hi, int n) {
 // From `start`, moves one motor at a time by `step` counts while that
 // improves objective `o`, halving the step down to one count.
 void climb(Search& search, int o, std::vector<std::int32_t>& at, double& best) {
-  std::int32_t widest = 1;
-  for (std::size_t m = 0; m < at.size(); ++m) widest = std::max(widest, (search.max(m) - search.min(m)) / 8);
-  for (std::int32_t step = widest; step >= 1; step /= 2) {
+  std::int64_t widest = 1;  // 64 bits: a range may span more than 2^31 counts
+  for (std::size_t m = 0; m < at.size(); ++m)
+    widest = std::max(widest, (static_cast<std::int64_t>(search.max(m)) - search.min(m)) / 8);
+  for (std::int64_t step = widest; step >= 1; step /= 2) {
     for (bool improved = true; improved;) {
       improved = false;
       for (std::size_t m = 0; m < at.size(); ++m)
