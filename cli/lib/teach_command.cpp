@@ -44,6 +44,7 @@ bool openBrowser(const std::string& url) {
 bool parseListen(const std::string& text, std::string& host, int& port) {
   port = 0;
   std::string portText;
+  bool hasPort = false;
   if (!text.empty() && text[0] == '[') {
     const std::size_t close = text.find(']');
     if (close == std::string::npos) return false;
@@ -51,6 +52,7 @@ bool parseListen(const std::string& text, std::string& host, int& port) {
     if (close + 1 < text.size()) {
       if (text[close + 1] != ':') return false;
       portText = text.substr(close + 2);
+      hasPort = true;
     }
   } else {
     const std::size_t colon = text.find(':');
@@ -58,11 +60,11 @@ bool parseListen(const std::string& text, std::string& host, int& port) {
       host = text;  // a bare IPv6 address
     } else {
       host = text.substr(0, colon);
-      if (colon != std::string::npos) portText = text.substr(colon + 1);
+      if (colon != std::string::npos) portText = text.substr(colon + 1), hasPort = true;
     }
   }
   if (host.empty()) return false;
-  if (!portText.empty()) {
+  if (hasPort) {
     const auto [end, ec] = std::from_chars(portText.data(), portText.data() + portText.size(), port);
     if (ec != std::errc() || end != portText.data() + portText.size() || port < 0 || port > 65535) return false;
   }

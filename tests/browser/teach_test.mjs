@@ -56,7 +56,7 @@ const work = fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-teach-work-'));
 const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-chromium-'));
 let context = null, server = null;
 function cleanUp() {
-  if (server && server.exitCode === null) server.kill('SIGKILL');
+  for (const p of [server, emulator?.proc, deviceTeach?.proc]) if (p && p.exitCode === null) p.kill('SIGKILL');
   fs.rmSync(profile, { recursive: true, force: true });
   fs.rmSync(work, { recursive: true, force: true });
 }
@@ -79,19 +79,29 @@ fs.writeFileSync(program, original);
 // catches up at 32.
 const golden = fs.readFileSync(path.join(here, 'golden/teach_pick_and_place.rsp'), 'utf8');
 
+// A process's output so far, and the first match of `pattern` in it.
+function started(args, stdin = 'ignore') {
+  const proc = spawn(opt.robotsim, args, { stdio: [stdin, 'pipe', 'pipe'] });
+  const p = { proc, out: '', err: '' };
+  proc.stdout.on('data', (d) => { p.out += d; });
+  proc.stderr.on('data', (d) => { p.err += d; });
+  p.match = (pattern) => new Promise((resolve, reject) => {
+    const poll = setInterval(() => {
+      const m = p.out.match(pattern);
+      if (m) { clearInterval(poll); resolve(m); }
+      if (proc.exitCode !== null) { clearInterval(poll); reject(new Error(args[0] + ' exited: ' + p.err)); }
+    }, 50);
+  });
+  return p;
+}
+const teachUrl = /http:\/\/127\.0\.0\.1:\d+\/\?token=[0-9a-f]{32}/;
+
 // ---- robotsim teach, its URL from its first lines
-server = spawn(opt.robotsim, ['teach', program, '--cell', 'scara-pick'], { stdio: ['ignore', 'pipe', 'pipe'] });
-let serverOut = '', serverErr = '';
-server.stdout.on('data', (d) => { serverOut += d; });
-server.stderr.on('data', (d) => { serverErr += d; });
-const url = await new Promise((resolve, reject) => {
-  const poll = setInterval(() => {
-    const m = serverOut.match(/http:\/\/127\.0\.0\.1:\d+\/\?token=[0-9a-f]{32}/);
-    if (m) { clearInterval(poll); resolve(m[0]); }
-    if (server.exitCode !== null) { clearInterval(poll); reject(new Error('robotsim teach exited: ' + serverErr)); }
-  }, 50);
-}).catch((e) => { cleanUp(); fail(e.message); });
+const teach = started(['teach', program, '--cell', 'scara-pick']);
+server = teach.proc;
+const url = (await teach.match(teachUrl).catch((e) => { cleanUp(); fail(e.message); }))[0];
 const origin = new URL(url).origin;
+let emulator = null, deviceTeach = null;
 
 try {
   context = await chromium.launchPersistentContext(profile, {
@@ -236,11 +246,63 @@ try {
   const exited = new Promise((r) => server.on('exit', (code) => r(code)));
   server.kill('SIGINT');
   const code = await exited;
-  check(code === 0 && /stopped; .* has 4 points/.test(serverOut), 'Ctrl-C stops robotsim teach', `exit ${code}`);
+  check(code === 0 && /stopped; .* has 4 points/.test(teach.out), 'Ctrl-C stops robotsim teach', `exit ${code}`);
+
+  // ---- with a device: robotsim emulate on a pty, robotsim teach --device on it
+  emulator = started(['emulate', '--speed', '10'], 'pipe');
+  const device = (await emulator.match(/emulator on (\/dev\/\S+)/))[1];
+  const deviceProgram = path.join(work, 'device.rsp');
+  fs.writeFileSync(deviceProgram, '        END\nPOINTS\n');
+  deviceTeach = started(['teach', deviceProgram, '--cell', 'scara-pick', '--device', device, '--serial-set', 'timeout=0.2']);
+  const deviceUrl = (await deviceTeach.match(teachUrl))[0];
+  context = await chromium.launchPersistentContext(profile, {
+    executablePath: opt.chromium, headless: true, viewport: { width: 1280, height: 860 },
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
+           '--disable-component-update', '--disable-sync'],
+  });
+  const dpage = context.pages()[0] ?? await context.newPage();
+  await dpage.goto(deviceUrl);
+  await dpage.waitForFunction(() => window.robotsim && window.robotsim.state, null, { timeout: 10000 });
+  const dRow = (i) => dpage.locator(`#motors tr[data-motor="${i}"]`);
+  const dSettled = () => dpage.waitForFunction(() => !window.robotsim.busy, null, { timeout: 10000 });
+  await dpage.selectOption('#step', '10');
+  for (const [motor, button, times] of [[0, 'plus', 3], [1, 'minus', 2], [2, 'plus', 1]])
+    for (let k = 0; k < times; k++) { await dRow(motor).locator('button.' + button).click(); await dSettled(); }
+  await dpage.waitForFunction(() => JSON.stringify(window.robotsim.state.encoders) === '[30,-20,10,0,0]', null,
+                              { timeout: 10000 });
+  const shownCounts = await dpage.locator('#motors td.v').allTextContents();
+  const before = emulator.out.length;
+  emulator.proc.stdin.write('status\n');
+  await emulator.match(/motor H: position/);
+  const status = emulator.out.slice(before);
+  const emulated = ['E', 'D', 'C', 'B', 'A'].map((l) => status.match(new RegExp('motor ' + l + ': position (-?\\d+)'))[1]);
+  check(JSON.stringify(emulated) === JSON.stringify(shownCounts), "after the jogs the emulator's motors equal the page's",
+        emulated.join(' '));
+  // The controller falls silent after the next command: the jog's move is
+  // sent, its progress never reported.
+  emulator.proc.stdin.write('fault silence after 1\n');
+  await dpage.selectOption('#step', '100');
+  await dRow(0).locator('button.plus').click();
+  await dpage.waitForFunction(() => window.robotsim.state.fault !== '', null, { timeout: 10000 });
+  const banner = dpage.locator('#fault.on');
+  check(await banner.isVisible(), 'a silent controller during a jog: the page says so', await banner.textContent());
+  const colour = await banner.evaluate((e) => getComputedStyle(e).color);
+  check(colour === 'rgb(255, 85, 85)', '  in red', colour);
+  await dRow(1).locator('button.plus').click();
+  await dpage.waitForFunction(() => window.robotsim.state.message.startsWith('the device failed, nothing is sent'), null,
+                              { timeout: 10000 });
+  check(true, '  and every move after it is refused');
+  if (opt.images) await dpage.screenshot({ path: path.join(opt.images, 'teach-fault.png'), clip: { x: 900, y: 0, width: 380, height: 420 } });
+  await context.close();
+  context = null;
+  const deviceExit = new Promise((r) => deviceTeach.proc.on('exit', (code) => r(code)));
+  deviceTeach.proc.kill('SIGINT');
+  check((await deviceExit) === 0, 'Ctrl-C stops robotsim teach --device');
+  emulator.proc.stdin.write('quit\n');
   console.log(`PASS: ${checks} checks`);
 } catch (e) {
   console.error('FAIL: ' + e.message);
-  console.error(serverErr);
+  console.error(teach.err + (deviceTeach ? deviceTeach.err : ''));
   process.exitCode = 1;
 } finally {
   clearTimeout(deadline);
