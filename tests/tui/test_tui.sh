@@ -19,7 +19,10 @@ command -v tmux >/dev/null || { echo "FAIL: tmux is not installed (bash scripts/
 
 rm -rf "$work"
 mkdir -p "$work"
-sock="$work/tmux.sock"
+# A fresh tmux server (its own socket) for each session: a server that is
+# still shutting down after kill-server cannot be reached by the next one.
+sessions=0
+sock="$work/tmux0.sock"
 tm() { tmux -S "$sock" "$@"; }
 emu=""
 trap 'tm kill-server 2>/dev/null || true; [ -n "$emu" ] && kill -INT "$emu" 2>/dev/null || true' EXIT
@@ -44,6 +47,8 @@ typed() { tm send-keys -t t -l "$1"; }
 # terminal modes, runs robotsim (its pid in $work/pid), then notes its exit
 # code and the modes again.
 start() {
+  sessions=$((sessions + 1))
+  sock="$work/tmux$sessions.sock"
   rm -f "$work"/{pid,code,before,after}
   tm -f /dev/null new-session -d -x 80 -y 24 -s t \
     "cd '$work' && ulimit -c 0 && stty -g > before; sh -c 'echo \$\$ > pid; exec \"$bin\" teach $*'; echo \$? > code; stty -g > after; echo PANE-DONE; exec sleep 600"
