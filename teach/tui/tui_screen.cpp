@@ -163,28 +163,52 @@ void pointsPanel(Canvas& c, const PendantState& s, const Selection& sel, int top
   }
 }
 
+// Actions that read best as one line ("Up Down  select the motor above /
+// below"): the shared map's order is kept, each group shown where its
+// first action stands.
+struct ActionGroup {
+  KeyAction first, last;
+  std::string_view help;
+};
+constexpr ActionGroup kGroups[] = {
+    {KeyAction::PrevMotor, KeyAction::NextMotor, "select the motor above / below"},
+    {KeyAction::JogMinus, KeyAction::JogPlus, "jog the selected motor by -step / +step"},
+    {KeyAction::Step1, KeyAction::Step100, "jog step 1, 10, 100 counts"},
+    {KeyAction::OpenGripper, KeyAction::CloseGripper, "open / close the gripper"},
+    {KeyAction::PrevPoint, KeyAction::NextPoint, "select the point above / below"},
+};
+
 void helpPanel(Canvas& c, int top, int bottom, int cols) {
-  // One entry per action, its keys joined ("Left -"), in the map's order,
-  // then the terminal's own key for the inputs the page toggles by click.
+  // One line per action or group, its keys joined ("Left Right - +"), in
+  // the map's order; then the terminal's own keys.
   std::vector<std::pair<std::string, std::string>> entries;
+  std::vector<std::string_view> helps;  // what each entry stands for
   for (const KeyBinding& k : kKeys) {
-    auto it = std::find_if(entries.begin(), entries.end(), [&](const auto& e) { return e.second == k.help; });
-    if (it != entries.end()) it->first += " " + keyLabel(k.key);
-    else entries.emplace_back(keyLabel(k.key), std::string(k.help));
+    std::string_view help = k.help;
+    for (const ActionGroup& g : kGroups)
+      if (k.action >= g.first && k.action <= g.last) help = g.help;
+    const auto it = std::find(helps.begin(), helps.end(), help);
+    if (it != helps.end()) {
+      entries[static_cast<std::size_t>(it - helps.begin())].first += " " + keyLabel(k.key);
+    } else {
+      entries.emplace_back(keyLabel(k.key), std::string(help));
+      helps.push_back(help);
+    }
   }
   entries.emplace_back("i 1..8", "toggle an input (simulation)");
+  entries.emplace_back("l", "read the program file again (after an edit elsewhere)");
   // One column when it fits (21 rows at 24 rows: the help takes the rule
   // and message rows too), else two.
   const int rowsFree = bottom - top, columns = static_cast<int>(entries.size()) <= rowsFree ? 1 : 2;
   const int perColumn = std::max(1, (static_cast<int>(entries.size()) + columns - 1) / columns);
-  const int width = cols / columns;
+  const int width = cols / columns, label = 15;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const int column = static_cast<int>(i) / perColumn, row = top + static_cast<int>(i) % perColumn;
     if (column >= columns || row >= bottom) break;
     const int col = 1 + column * width;
-    c.put(row, col, entries[i].first, col + 11);
-    c.mark(row, col, static_cast<int>(std::min<std::size_t>(entries[i].first.size(), 11)), Paint::Title);
-    c.put(row, col + 12, entries[i].second, col + width - 1);
+    c.put(row, col, entries[i].first, col + label - 1);
+    c.mark(row, col, static_cast<int>(std::min<std::size_t>(entries[i].first.size(), label - 1)), Paint::Title);
+    c.put(row, col + label, entries[i].second, col + width - 1);
   }
 }
 

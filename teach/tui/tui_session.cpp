@@ -47,6 +47,11 @@ bool Session::press(std::string_view key) {
     ask(Asking::InputLine, "toggle input (1..8): ");
     return true;
   }
+  if (key == "l") {  // the page's "reload file" button
+    pendant_.reload();
+    clampSelection();
+    return true;
+  }
   const std::optional<KeyBinding> binding = keyBinding(key);
   if (!binding) {
     note_ = fmt::format("no key {} (? lists the keys)", key);

@@ -7,7 +7,8 @@
 // name and read the screen.
 //
 // Besides the shared map, the terminal has `i` then 1..8 to toggle an
-// input (the page toggles them by click), and in a question Enter answers,
+// input (the page toggles them by click), `l` to read the program file
+// again (the page's "reload file" button), and in a question Enter answers,
 // Escape (or Ctrl-C's ETX, or Ctrl-G) cancels, Backspace deletes.
 #pragma once
 

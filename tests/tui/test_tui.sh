@@ -129,7 +129,7 @@ expect_screen "x -225  y 840  z 0"
 keys i 3                                 # input 3 on
 expect_screen "INPUTS   . . # . . . . ."
 keys '?'                                 # the key help, from the shared key map
-expect_screen "jog the selected motor by -step"
+expect_screen " Left Right - + jog the selected motor by -step / +step"
 keys '?'
 # Too small a terminal gets a request, then the panel again.
 tm resize-window -t t -x 70 -y 20
@@ -161,6 +161,16 @@ typed LATE
 keys Enter
 expect_screen "changed"
 cmp -s "$work/pick.rsp" "$work/edited.rsp" || fail "a refused write changed the file"
+keys l                                   # read it again: teaching goes on on top of the edit
+expect_screen "read again: 1 points"
+keys t
+typed LATE
+keys Enter
+expect_screen "taught LATE"
+# The new row goes after the last point (HOME), above the comment the
+# editor appended, laid out like HOME (every motor still at 0).
+{ cat "$here/pick.rsp"; echo "LATE      0    0    0    0    0"; echo "; edited in an editor"; } > "$work/edited-late.rsp"
+cmp -s "$work/pick.rsp" "$work/edited-late.rsp" || fail "after l, LATE is not written on top of the edit: $(tail -3 "$work/pick.rsp")"
 kill -TERM "$(cat "$work/pid")"
 finished
 [ "$(cat "$work/code")" = 143 ] || fail "SIGTERM exits $(cat "$work/code"), not 143 (128 + 15)"
