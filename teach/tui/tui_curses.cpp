@@ -28,16 +28,35 @@ struct CrashRestore {
   std::size_t leaveLength = 0;
 } crash;
 
-void onStop(int sig) { stopSignal = sig; }
+// The SIGINT handler in force before the pendant's: with --device, the
+// serial layer's (runtime/serial/interrupt.h), which makes a move under
+// way stop every motor at the first Ctrl-C and writes stop to the port and
+// exits at a second. The pendant's handler calls it too, so Ctrl-C stops a
+// real robot as in a run.
+struct sigaction previousInterrupt {};
+
+// Puts the terminal back with async-signal-safe calls only.
+void restoreFromHandler() {
+  if (!crash.armed) return;
+  ::tcsetattr(STDIN_FILENO, TCSANOW, &crash.modes);
+  if (crash.leaveLength > 0) {
+    const ssize_t n = ::write(STDOUT_FILENO, crash.leave, crash.leaveLength);
+    (void)n;
+  }
+}
+
+void onStop(int sig) {
+  const bool again = stopSignal != 0;
+  stopSignal = sig;
+  const auto chained = previousInterrupt.sa_handler;
+  if (sig != SIGINT || (previousInterrupt.sa_flags & SA_SIGINFO) != 0 || chained == SIG_DFL || chained == SIG_IGN)
+    return;
+  if (again) restoreFromHandler();  // the serial layer's second Ctrl-C exits at once
+  chained(sig);
+}
 
 void onCrash(int sig) {
-  if (crash.armed) {
-    ::tcsetattr(STDIN_FILENO, TCSANOW, &crash.modes);
-    if (crash.leaveLength > 0) {
-      const ssize_t n = ::write(STDOUT_FILENO, crash.leave, crash.leaveLength);
-      (void)n;
-    }
-  }
+  restoreFromHandler();
   ::signal(sig, SIG_DFL);
   ::raise(sig);
 }
@@ -60,6 +79,7 @@ class Handlers {
   }
   ~Handlers() {
     for (std::size_t i = 0; i < saved_.size(); ++i) ::sigaction(savedSignal_[i], &saved_[i], nullptr);
+    previousInterrupt = {};
   }
   Handlers(const Handlers&) = delete;
   Handlers& operator=(const Handlers&) = delete;
@@ -73,6 +93,7 @@ class Handlers {
     sigemptyset(&action.sa_mask);
     struct sigaction old {};
     ::sigaction(sig, &action, &old);
+    if (sig == SIGINT) previousInterrupt = old;
     saved_.push_back(old);
     savedSignal_.push_back(sig);
   }

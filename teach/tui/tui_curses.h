@@ -4,7 +4,10 @@
 //
 // The terminal is put back as it was on every way out: `q`; SIGINT
 // (Ctrl-C), SIGTERM, SIGHUP and SIGQUIT, which only set a flag the loop
-// reads within 100 ms, then leave through endwin() like `q`; an exception
+// reads within 100 ms, then leave through endwin() like `q` (with
+// --device, Ctrl-C also goes to the serial layer's handler, so a move
+// under way stops every motor, and a second Ctrl-C writes stop to the port
+// and exits after putting the terminal back as a crash does); an exception
 // (endwin() before it goes on); and a crash (SIGSEGV, SIGBUS, SIGFPE,
 // SIGILL, SIGABRT), whose handler can call nothing but async-signal-safe
 // functions: it puts back the terminal modes saved before ncurses started

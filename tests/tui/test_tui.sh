@@ -199,19 +199,40 @@ done
 # pseudo-terminal; a jog moves its motor, read position reads it back, and
 # a serial fault (the controller falls silent) stops everything and shows
 # in the message row.
+# The emulator's console is fed through a FIFO on fd 3; its output goes to
+# $work/emu.out.
+start_emulator() {
+  rm -f "$work/emu.in" "$work/emu.out" "$work/rhino"
+  mkfifo "$work/emu.in"
+  "$bin" emulate --link "$work/rhino" -q "$@" < "$work/emu.in" > "$work/emu.out" 2>&1 &
+  emu=$!
+  exec 3> "$work/emu.in"
+  for _ in $(seq 100); do [ -e "$work/rhino" ] && break; sleep 0.1; done
+}
+stop_emulator() {
+  echo quit >&3
+  exec 3>&-
+  wait "$emu" || true
+  emu=""
+}
+# The emulator's motor E as its status console reports it.
+emulator_e() {
+  local before
+  before=$(grep -c "motor E: position" "$work/emu.out" || true)
+  echo status >&3
+  for _ in $(seq 50); do
+    [ "$(grep -c "motor E: position" "$work/emu.out" || true)" -gt "$before" ] && break
+    sleep 0.1
+  done
+  grep "motor E: position" "$work/emu.out" | tail -1 | sed 's/.*position \(-\{0,1\}[0-9]*\),.*/\1/'
+}
 cp "$here/pick.rsp" "$work/pick.rsp"
-mkfifo "$work/emu.in"
-"$bin" emulate --link "$work/rhino" -q < "$work/emu.in" > "$work/emu.out" 2>&1 &
-emu=$!
-exec 3> "$work/emu.in"
-for _ in $(seq 100); do [ -e "$work/rhino" ] && break; sleep 0.1; done
+start_emulator
 start "pick.rsp --cell scara-pick --tui --device '$work/rhino'"
 expect_screen "(robot on /"
 keys 3 Right
 expect_screen "moved to 100 0 0 0 0"
-echo status >&3
-for _ in $(seq 100); do grep -qF "motor E: position 100," "$work/emu.out" && break; sleep 0.1; done
-grep -qF "motor E: position 100," "$work/emu.out" || fail "the emulator's motor E is not at 100: $(cat "$work/emu.out")"
+[ "$(emulator_e)" = 100 ] || fail "the emulator's motor E is not at 100: $(cat "$work/emu.out")"
 keys p
 expect_screen "read from the controller: 100 0 0 0 0"
 echo "fault silence" >&3
@@ -226,10 +247,32 @@ keys q
 finished
 [ "$(cat "$work/code")" = 0 ] || fail "q after a fault exits $(cat "$work/code"), not 0"
 check_restored "after a device fault"
-echo quit >&3
-exec 3>&-
-wait "$emu" || true
-emu=""
+stop_emulator
+tm kill-server
+
+# Ctrl-C during a move on the device stops the robot where it is (the
+# serial layer's handler, which the pendant's calls), then quits (130)
+# with the terminal given back. The emulator runs at twice the speed: E
+# at 800 counts/s.
+cp "$here/pick.rsp" "$work/pick.rsp"
+start_emulator --speed 2
+start "pick.rsp --cell scara-pick --tui --device '$work/rhino'"
+expect_screen "(robot on /"
+keys 3 Right Right Right Right Right Right Right Right Right Right  # E = 1000
+expect_screen " > E revolute     1000"
+keys g                                   # HOME: E from 1000 to 0, 1.25 s
+for _ in $(seq 100); do
+  e=$(emulator_e)
+  [ -n "$e" ] && [ "$e" -lt 1000 ] && break
+done
+kill -INT "$(cat "$work/pid")"
+finished
+[ "$(cat "$work/code")" = 130 ] || fail "Ctrl-C during a device move exits $(cat "$work/code"), not 130"
+check_restored "after Ctrl-C during a device move"
+sleep 0.3
+e=$(emulator_e)
+[ -n "$e" ] && [ "$e" -gt 0 ] && [ "$e" -lt 1000 ] || fail "Ctrl-C did not stop the move: the emulator's E is '$e'"
+stop_emulator
 tm kill-server
 
 # --- 5. It cannot start without a terminal: an error, exit 2, no file written.
