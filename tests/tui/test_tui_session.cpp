@@ -212,3 +212,28 @@ TEST_CASE("tui: go to, inputs, help, a small terminal and quit", "[teach][tui]")
   CHECK(small.rows.at(0).rfind("robotsim teach needs 80x24: enlarge the terminal (q quits)", 0) == 0);
   CHECK_FALSE(f.session->press("q"));
 }
+
+TEST_CASE("tui: the gripper closes on the block at a point and the panel says what it holds", "[teach][tui]") {
+  // OVER is the centre of gantry-cell's first block, object 2 after the
+  // pallet (stdlib/workcells/gantry-cell.rsd): closing there takes it.
+  Fixture f;
+  f.press({"g", "c"});
+  CHECK(f.left(6) == "   A gripper       104  0..104  closed");
+  CHECK(f.left(15) == " HOLDS    block (object 2)");
+  f.press({"o"});
+  CHECK(f.left(6) == "   A gripper         0  0..104  open");
+  CHECK(f.left(15) == " HOLDS    nothing");
+}
+
+TEST_CASE("tui: l reads the file again after an edit elsewhere, and teaching goes on on top of it", "[teach][tui]") {
+  Fixture f;
+  const std::string edited = kProgram + "; an editor was here\n";
+  f.dir.write("g.rsp", edited);
+  f.press({"t", "A", "Enter"});
+  CHECK(f.text() == edited);  // refused: the edit is kept
+  f.press({"l"});
+  CHECK(f.row(22).find("read again: 1 points") != std::string::npos);
+  f.press({"t", "A", "Enter"});
+  // The new row under OVER, above the editor's comment.
+  CHECK(f.text() == kProgram + "A          0     0     0    0\n; an editor was here\n");
+}
