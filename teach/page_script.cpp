@@ -251,6 +251,13 @@ const std::string_view kScript = R"JS('use strict';
     get selection() { return { motor: S.selectedMotor, point: S.selectedPoint, step: S.step }; },
     get busy() { return S.pending > 0 || !!S.anim; },
     get shown() { return S.shown; },
+    // The still's projection of the shown pose (no mouse): lines in
+    // `robotsim render --dump-lines` order, then the tool centre points.
+    project(width, height) {
+      const r = D.projectStill(still, S.shown.encoders, objectPose, width, height);
+      request();
+      return r;
+    },
     send,
   };
 })();

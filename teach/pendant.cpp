@@ -223,6 +223,10 @@ Outcome Pendant::readPosition() {
     fault_ = st.message;
     return done({false, st.message});
   }
+  if (!rhino_->reportsPositions())
+    return done({true, fmt::format("a Mark III cannot report its encoders: the counts are those tracked since teach "
+                                   "started, {}",
+                                   valuesText(run_->motors()))});
   return done({true, fmt::format("read from the controller: {}", valuesText(run_->motors()))});
 }
 

@@ -15,7 +15,7 @@
 // .bak the program as it was; a write refused after the file changed on
 // disk, the file left as the other editor wrote it; Ctrl-C stops the
 // server. Saves DIR/teach.png (and, with --images, docs screenshots).
-import { spawn } from 'node:child_process';
+import { execFileSync, spawn } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -201,6 +201,23 @@ try {
   check(inBetween !== null, 'the page shows the move under way', inBetween ? 'D = ' + inBetween[1] : 'never');
   await encodersAre([400, -200, 0, 250, 0]);
   check(true, 'and ends on the point');
+  // The page draws the pose as the stills do (one projection, one forward
+  // kinematics): its lines equal `robotsim render --dump-lines` of a
+  // program that ends at the same encoder counts.
+  const atPoint = path.join(work, 'at_point.rsp');
+  fs.writeFileSync(atPoint, 'MOVETO 400 -200 0 250 0\nEND\n');
+  const reference = JSON.parse(execFileSync(opt.robotsim, ['render', 'scara-pick', '--program', atPoint, '--at', '5',
+                                                           '--dump-lines=json'], { encoding: 'utf8' }));
+  const mine = await page.evaluate(() => window.robotsim.project(1024, 768));
+  let worst = mine.lines.length === reference.lines.length ? 0 : Infinity;
+  reference.lines.forEach((l, i) => {
+    const p = mine.lines[i], q = [l.a[0], l.a[1], l.b[0], l.b[1]];
+    for (let k = 0; k < 4 && p; k++) worst = Math.max(worst, Math.abs(p[k] - q[k]));
+  });
+  reference.tools.forEach((t, i) => {
+    worst = Math.max(worst, Math.abs(mine.tools[i][0] - t.at[0]), Math.abs(mine.tools[i][1] - t.at[1]));
+  });
+  check(worst <= 1e-6, 'the page draws the pose as robotsim render does', `${reference.lines.length} lines, worst ${worst} px`);
   const st = await state();
   const tcpText = await page.locator('#tcp').textContent();
   check(tcpText === '(' + st.tcp.map((x) => x.toFixed(2)).join(', ') + ')', 'the tool centre point in world coordinates',

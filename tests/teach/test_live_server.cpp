@@ -177,3 +177,34 @@ TEST_CASE("live server: a read-only source refuses every command", "[teach]") {
   server.stop();
   CHECK_FALSE(c.Get("/api/state?token=0123456789abcdef0123456789abcdef"));  // nobody listens any more
 }
+
+TEST_CASE("live server: any body gets 200 or 400, never a crash or a 500", "[teach]") {
+  Served s;
+  httplib::Client c = s.client();
+  // A deterministic soup: raw bytes, JSON of every type, and commands with
+  // every op and arguments of the wrong type, missing, huge or negative.
+  std::uint64_t seed = 12345;
+  const auto next = [&seed] { return seed = seed * 6364136223846793005ULL + 1442695040888963407ULL, seed >> 33; };
+  const std::vector<std::string> ops = {"jog", "set", "moveTo", "gripper", "teach", "reteach", "delete", "rename",
+                                        "goTo", "input", "output", "reset", "readPosition", "reload", "", "JOG"};
+  const std::vector<json> values = {json(), json(true), json(-1), json(0), json(3), json(1e300), json(-2147483649LL),
+                                    json("P1"), json("HOME"), json(""), json::array({1, 2, 3, 4}), json::object()};
+  for (int i = 0; i < 300; ++i) {
+    std::string body;
+    if (i % 3 == 0) {
+      for (std::uint64_t n = next() % 40; n > 0; --n) body += static_cast<char>(next() % 256);
+    } else {
+      json j = {{"op", ops[next() % ops.size()]}};
+      for (const char* key : {"motor", "delta", "value", "values", "close", "name", "from", "to", "line", "on"})
+        if (next() % 3 == 0) j[key] = values[next() % values.size()];
+      body = j.dump();
+    }
+    const auto r = c.Post(s.q("/api/command"), body, "application/json");
+    REQUIRE(r);
+    INFO(body);
+    CHECK((r->status == 200 || r->status == 400));
+  }
+  const auto state = c.Get(s.q("/api/state"));
+  REQUIRE(state);
+  CHECK(state->status == 200);
+}

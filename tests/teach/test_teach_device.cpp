@@ -102,6 +102,11 @@ TEST_CASE("teach --device: after a series of jogs the emulator's motors stand wh
     CHECK(state["device"] == rig.emulator->path());
     CHECK(rig.emulated() == std::vector<std::int32_t>{50, -25, 30, -7, 12});
     CHECK(state["fault"] == "");
+    const json read = rig.command({{"op", "readPosition"}});
+    CHECK(read["ok"] == true);
+    CHECK(read["message"] == (dialect == Dialect::Mark3 ? "a Mark III cannot report its encoders: the counts are those "
+                                                          "tracked since teach started, 50 -25 30 -7 12"
+                                                        : "read from the controller: 50 -25 30 -7 12"));
     // Soft limits first: nothing beyond a range reaches the line.
     const std::uint64_t before = rig.emulator->snapshot().commands;
     CHECK(rig.command({{"op", "set"}, {"motor", 2}, {"value", 351}})["ok"] == false);
