@@ -226,9 +226,10 @@ emulator_e() {
   done
   grep "motor E: position" "$work/emu.out" | tail -1 | sed 's/.*position \(-\{0,1\}[0-9]*\),.*/\1/'
 }
+# A Mark IV, which reports its encoder counts (read position needs them).
 cp "$here/pick.rsp" "$work/pick.rsp"
-start_emulator
-start "pick.rsp --cell scara-pick --tui --device '$work/rhino'"
+start_emulator --dialect mark4
+start "pick.rsp --cell scara-pick --tui --device '$work/rhino' --dialect mark4"
 expect_screen "(robot on /"
 keys 3 Right
 expect_screen "moved to 100 0 0 0 0"
@@ -250,7 +251,7 @@ check_restored "after a device fault"
 stop_emulator
 tm kill-server
 
-# Ctrl-C during a move on the device stops the robot where it is (the
+# Ctrl-C during a move on the device (a Mark III) stops the robot where it is (the
 # serial layer's handler, which the pendant's calls), then quits (130)
 # with the terminal given back. The emulator runs at twice the speed: E
 # at 800 counts/s.
