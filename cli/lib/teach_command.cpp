@@ -97,6 +97,7 @@ CLI::App* addTeachCommand(CLI::App& app, TeachOptions& o) {
       "tool centre point, the inputs and outputs and the program's points; TEACH names the current pose as a "
       "point. Every change of the points is written to the program at once (only its POINTS rows change; the "
       "file as it was is kept in PROG.rsp.bak). The URL carries a secret token; Ctrl-C stops the server. "
+      "--tui shows the same pendant in the terminal instead, with the same keys (? lists them, q quits). "
       "docs/teach.md has the whole guide.");
   return cmd;
 }
