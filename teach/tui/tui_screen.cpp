@@ -196,6 +196,7 @@ void helpPanel(Canvas& c, int top, int bottom, int cols) {
     }
   }
   entries.emplace_back("i 1..8", "toggle an input (simulation)");
+  entries.emplace_back("u 1..8", "switch an output");
   entries.emplace_back("l", "read the program file again (after an edit elsewhere)");
   // One column when it fits (21 rows at 24 rows: the help takes the rule
   // and message rows too), else two.

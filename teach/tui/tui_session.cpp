@@ -47,6 +47,10 @@ bool Session::press(std::string_view key) {
     ask(Asking::InputLine, "toggle input (1..8): ");
     return true;
   }
+  if (key == "u") {
+    ask(Asking::OutputLine, "switch output (1..8): ");
+    return true;
+  }
   if (key == "l") {  // the page's "reload file" button
     pendant_.reload();
     clampSelection();
@@ -113,7 +117,7 @@ bool Session::answer(std::string_view key) {
     note_ = "cancelled";
     return true;
   }
-  if (confirm || (what == Asking::InputLine && key.size() == 1)) {
+  if (confirm || ((what == Asking::InputLine || what == Asking::OutputLine) && key.size() == 1)) {
     asking_ = Asking::Nothing;
     prompt_ = {};
     finish(what, std::string(key));
@@ -156,6 +160,14 @@ void Session::finish(Asking what, const std::string& text) {
     case Asking::InputLine:
       if (text.size() == 1 && text[0] >= '1' && text[0] <= '8') pendant_.toggleInput(text[0] - '0');
       else note_ = fmt::format("inputs are 1..8, not {}", text);
+      break;
+    case Asking::OutputLine:
+      if (text.size() == 1 && text[0] >= '1' && text[0] <= '8') {
+        const int line = text[0] - '0';
+        pendant_.setOutput(line, ((pendant_.state().outputs >> (line - 1)) & 1) == 0);
+      } else {
+        note_ = fmt::format("outputs are 1..8, not {}", text);
+      }
       break;
     case Asking::Nothing: break;
   }

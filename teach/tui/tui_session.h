@@ -7,7 +7,8 @@
 // name and read the screen.
 //
 // Besides the shared map, the terminal has `i` then 1..8 to toggle an
-// input (the page toggles them by click), `l` to read the program file
+// input and `u` then 1..8 to switch an output (the page does both by a
+// click), `l` to read the program file
 // again (the page's "reload file" button), and in a question Enter answers,
 // Escape (or Ctrl-C's ETX, or Ctrl-G) cancels, Backspace deletes.
 #pragma once
@@ -36,7 +37,7 @@ class Session {
   const Selection& selection() const { return selection_; }
 
  private:
-  enum class Asking { Nothing, TeachName, NewName, ConfirmReteach, ConfirmDelete, ConfirmReset, InputLine };
+  enum class Asking { Nothing, TeachName, NewName, ConfirmReteach, ConfirmDelete, ConfirmReset, InputLine, OutputLine };
   bool answer(std::string_view key);
   void ask(Asking what, std::string question);
   void finish(Asking what, const std::string& text);

@@ -183,6 +183,10 @@ TEST_CASE("tui: go to, inputs, help, a small terminal and quit", "[teach][tui]")
   CHECK(f.left(12) == " INPUTS   . . . . # . . .");
   f.press({"i", "9"});
   CHECK(f.row(22) == "inputs are 1..8, not 9");
+  f.press({"u", "2"});
+  CHECK(f.left(13) == " OUTPUTS  . # . . . . . .");
+  f.press({"u", "2"});
+  CHECK(f.left(13) == " OUTPUTS  . . . . . . . .");
   f.press({"?"});
   // Every key of the shared key map is listed, paired actions on one line,
   // then the terminal's own keys: one column, rows 2..22.
@@ -192,12 +196,13 @@ TEST_CASE("tui: go to, inputs, help, a small terminal and quit", "[teach][tui]")
   CHECK(f.row(5) == " o c            open / close the gripper");
   CHECK(f.row(6) == " t              teach: name the current pose as a new point");
   CHECK(f.row(11) == " PgUp PgDn      select the point above / below");
-  CHECK(f.row(17) == " l              read the program file again (after an edit elsewhere)");
+  CHECK(f.row(17) == " u 1..8         switch an output");
+  CHECK(f.row(18) == " l              read the program file again (after an edit elsewhere)");
   CHECK(f.row(23) == "KEYS, as on the web page: ? hides them, q quits");
   for (const rs::teach::KeyBinding& k : rs::teach::kKeys) {
     INFO(k.key);
     bool listed = false;
-    for (int r = 2; r <= 17; ++r) {
+    for (int r = 2; r <= 18; ++r) {
       const std::string label = f.row(r).substr(1, 14) + " ";
       listed |= label.find(std::string(k.key.substr(0, 5) == "Arrow" ? k.key.substr(5) : k.key) + " ") !=
                     std::string::npos ||
