@@ -385,8 +385,10 @@ const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kin
     for (const fs::path& candidate : candidates)
       if (fs::is_regular_file(candidate, ec)) return load(candidate);
   }
+  // (A workcell may also be a lone robot: the message says both.)
   diagnostics_.push_back({fileOrName, {}, diag::Severity::Error,
-                          fmt::format("no such file, and no {} of that name on the library path", kindName(static_cast<int>(kind)))});
+                          fmt::format("no such file, and no {} of that name on the library path",
+                                      kind == Kind::Workcell ? "workcell or robot" : kindName(static_cast<int>(kind)))});
   return nullptr;
 }
 
@@ -426,6 +428,11 @@ std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrNam
   }
   checkAll(*f);
   return hasErrors() ? std::nullopt : std::move(cell);
+}
+
+bool Library::holdsWorkcell(const std::string& fileOrName) {
+  const DescriptionFile* f = loadRoot(fileOrName, Kind::Workcell);  // read once: load() keeps it
+  return f && !f->workcells.empty();
 }
 
 std::vector<vm::MotorSpec> motorTable(const workcell::Robot& robot) {

@@ -31,6 +31,11 @@ class Library {
   /// A workcell from a file (its first WORKCELL, or else its first ROBOT
   /// placed alone at the origin) or a library name.
   std::optional<workcell::Workcell> workcell(const std::string& fileOrName);
+  /// After workcell() found a cell: whether its file holds a WORKCELL (true)
+  /// or the cell is a lone ROBOT standing where it was drawn (false), which
+  /// decides whether its coordinates are a workcell's world or a robot's
+  /// design coordinates.
+  bool holdsWorkcell(const std::string& fileOrName);
 
   /// The text of `path` as an editor holds it, unsaved: read instead of the
   /// file on disk (the language server checks what the user sees). Before
