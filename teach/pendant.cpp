@@ -89,6 +89,14 @@ Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
   moved_ = true;
   moveStart_ = start;
   moveEnd_ = run_->clock();
+  if (rhino_) {
+    // The controller's switches, read after every move: the page shows them as they are now.
+    run_->machine().input(1);
+    if (!rhino_->failure().empty()) {
+      fault_ = rhino_->failure();
+      return done({false, fault_});
+    }
+  }
   return done({true, fmt::format("moved to {}", valuesText(run_->motors()))});
 }
 

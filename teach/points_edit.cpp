@@ -235,8 +235,9 @@ std::string PointsText::replace(std::string_view name, std::span<const std::int3
 std::string PointsText::remove(std::string_view name) {
   const std::optional<std::size_t> p = find(name);
   if (!p) return fmt::format("there is no point {}", name);
+  // Only the row goes: the line before it keeps its line end, even when
+  // the row was the last line and had none.
   const std::size_t l = points_[*p].line;
-  if (lines_[l].end.empty() && l > 0) lines_[l - 1].end.clear();  // the file stays unterminated
   lines_.erase(lines_.begin() + static_cast<std::ptrdiff_t>(l));
   reparse();
   return {};

@@ -265,6 +265,23 @@ try {
   const code = await exited;
   check(code === 0 && /stopped; .* has 4 points/.test(teach.out), 'Ctrl-C stops robotsim teach', `exit ${code}`);
 
+  // ---- --open: the URL goes to xdg-open (a stand-in on PATH that writes it down)
+  const bin = path.join(work, 'bin');
+  fs.mkdirSync(bin);
+  fs.writeFileSync(path.join(bin, 'xdg-open'), '#!/bin/sh\nprintf "%s" "$1" > "$(dirname "$0")/opened"\n', { mode: 0o755 });
+  const opener = spawn(opt.robotsim, ['teach', program, '--cell', 'scara-pick', '--open'],
+                       { stdio: ['ignore', 'pipe', 'pipe'], env: { ...process.env, PATH: bin + ':' + process.env.PATH } });
+  let openerOut = '';
+  opener.stdout.on('data', (d) => { openerOut += d; });
+  const openedFile = path.join(bin, 'opened');
+  for (let i = 0; i < 100 && !fs.existsSync(openedFile); i++) await new Promise((r) => setTimeout(r, 50));
+  const openerExit = new Promise((r) => opener.on('exit', (code) => r(code)));
+  opener.kill('SIGINT');
+  await openerExit;
+  const printed = openerOut.match(teachUrl);
+  check(fs.existsSync(openedFile) && printed && fs.readFileSync(openedFile, 'utf8') === printed[0],
+        '--open hands the URL it printed to xdg-open');
+
   // ---- with a device: robotsim emulate on a pty, robotsim teach --device on it
   emulator = started(['emulate', '--speed', '10'], 'pipe');
   const device = (await emulator.match(/emulator on (\/dev\/\S+)/))[1];

@@ -31,7 +31,7 @@ rm -rf "$out" && mkdir -p "$out"
 seeds=()
 [ -d "$here/corpus/$reader" ] && seeds+=("$here/corpus/$reader")
 case "$reader" in
-  program | stimuli | test_file)
+  program | stimuli | test_file | points)
     seeds+=("$root/examples" "$root/examples/tests/passing" "$root/examples/tests/failing"
             "$root/examples/tests/grading" "$root/tests/golden") ;;
   description)

@@ -162,6 +162,22 @@ TEST_CASE("live server: the event stream sends the state, then each new revision
   CHECK(events[1]["inputs"][1] == true);
 }
 
+TEST_CASE("live server: stop ends an open event stream at once", "[teach]") {
+  Served s;
+  std::atomic<int> received = 0;
+  std::thread reader([&] {
+    httplib::Client c = s.client();
+    c.Get(s.q("/api/events"), [&](const char*, std::size_t) { return ++received, true; });
+  });
+  for (int i = 0; i < 250 && received == 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  REQUIRE(received > 0);
+  const auto t0 = std::chrono::steady_clock::now();
+  s.server->stop();
+  reader.join();
+  // The stream looks at the stop flag every 30 ms; a second is a generous bound.
+  CHECK(std::chrono::steady_clock::now() - t0 < std::chrono::seconds(1));
+}
+
 TEST_CASE("live server: a read-only source refuses every command", "[teach]") {
   ReadOnly source;
   rs::teach::LiveServer server(source, "0123456789abcdef0123456789abcdef");

@@ -111,8 +111,13 @@ TEST_CASE("teach --device: after a series of jogs the emulator's motors stand wh
     const std::uint64_t before = rig.emulator->snapshot().commands;
     CHECK(rig.command({{"op", "set"}, {"motor", 2}, {"value", 351}})["ok"] == false);
     CHECK(rig.emulator->snapshot().commands == before);
-    // Inputs are the controller's: the pendant cannot switch them.
+    // Inputs are the controller's: the pendant cannot switch them, and
+    // reads them after every move.
     CHECK(rig.command({{"op", "input"}, {"line", 1}})["ok"] == false);
+    rig.emulator->setInput(3, true);
+    CHECK(rig.state()["inputs"][2] == false);
+    REQUIRE(rig.command({{"op", "jog"}, {"motor", 0}, {"delta", -1}})["ok"] == true);
+    CHECK(rig.state()["inputs"] == json({false, false, true, false, false, false, false, false}));
   }
 }
 
