@@ -1,4 +1,4 @@
-#include "lsp/transport.h"
+#include "wire/transport.h"
 
 #include <poll.h>
 #include <signal.h>
@@ -6,7 +6,7 @@
 
 #include <cerrno>
 
-namespace rs::lsp {
+namespace rs::wire {
 
 std::size_t FdInput::read(char* into, std::size_t n) {
   for (;;) {
@@ -49,4 +49,4 @@ bool StreamOutput::write(std::string_view bytes) {
   return static_cast<bool>(out_);
 }
 
-}  // namespace rs::lsp
+}  // namespace rs::wire
