@@ -9,8 +9,8 @@ namespace rs::debug {
 std::string Breakpoint::where() const {
   switch (kind) {
     case Kind::Line: return fmt::format("line {}", line);
-    case Kind::Label: return fmt::format("label {} (line {})", base::safeText(label), line);
-    case Kind::Instruction: return fmt::format("@{} (line {})", instruction + 1, line);
+    case Kind::Label: return fmt::format("label {}, line {}", base::safeText(label), line);
+    case Kind::Instruction: return fmt::format("@{}, line {}", instruction + 1, line);
     case Kind::Time: return fmt::format("at {} s", vm::formatSeconds(time));
     case Kind::When: return fmt::format("when {}", when.text);
   }

@@ -29,7 +29,7 @@ struct Breakpoint {
   std::optional<HitCondition> hits;
   std::uint64_t hitCount = 0;  ///< times reached (with the condition true) running forwards
 
-  /// "line 12", "label LOOP (line 3)", "@7 (line 5)" (instructions numbered
+  /// "line 12", "label LOOP, line 3", "@7, line 5" (instructions numbered
   /// from 1, as robotsim disasm lists them), "at 1.500 s", "when out 2 = 1".
   std::string where() const;
   /// where() with " if N = 3" and " hits >= 2" when set.

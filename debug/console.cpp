@@ -23,9 +23,9 @@ struct Console::Command {
 const std::vector<Console::Command>& Console::commands() {
   static const std::vector<Command> kCommands = {
       {"break", "b", "break LINE|LABEL|@N|at TIME|when COND [if COND] [hits N]",
-       "stop before a line, a label or instruction @N (numbered as disasm lists them), when the clock passes TIME, "
-       "or when COND becomes true (output N on|off, input N on|off, VAR = VALUE); if: only when COND holds; "
-       "hits N: from the Nth time on (== N: only the Nth, % N: every Nth)"},
+       "stop at a place or a moment; before a LINE, a LABEL or instruction @N (numbered as disasm lists them), "
+       "right after the clock passes TIME, or as COND becomes true (output N on|off, input N on|off, VAR = VALUE); "
+       "if COND: only when COND holds then; hits N: from the Nth time on (== N: only the Nth, % N: every Nth)"},
       {"delete", "d", "delete [ID...]", "delete breakpoints and watches (all of them without an ID)"},
       {"info", "i", "info breakpoints", "list the breakpoints and watches, with their hit counts"},
       {"step", "s", "step [N]", "run one instruction (or N)"},
@@ -36,11 +36,14 @@ const std::vector<Console::Command>& Console::commands() {
       {"reverse-step", "rs", "reverse-step [N]", "go back one instruction (or N)"},
       {"reverse-next", "rn", "reverse-next", "go back one instruction, over a GOSUB"},
       {"reverse-continue", "rc", "reverse-continue",
-       "go back to the last moment a breakpoint or watch would have stopped the run (else the start)"},
-      {"goto-time", "gt", "goto-time TIME", "go to where a run paused at TIME seconds stands, forwards or backwards"},
+       "go back to the last breakpoint or watch; the last moment one of them would have stopped the run going "
+       "forwards (hit counts aside), else the start"},
+      {"goto-time", "gt", "goto-time TIME",
+       "go to the moment TIME seconds; where a run paused at TIME stands (right after the instruction that takes the "
+       "clock past it), forwards or backwards"},
       {"print", "p", "print [VAR|motors|tcp|io|objects|clock|in N|out N|LETTER]",
-       "show a variable (all of them without an argument), the motors, the tool centre point, inputs and outputs, "
-       "the workcell's objects, the clock, one input or output, one motor"},
+       "show a value; a variable (all of them without an argument), the motors, the tool centre point, inputs and "
+       "outputs, the workcell's objects, the clock, one input or output, one motor"},
       {"backtrace", "bt", "backtrace", "the GOSUB stack, innermost first, with lines"},
       {"list", "l", "list [LINE]", "the source around the current line (or LINE)"},
       {"disasm", "da", "disasm [@N]", "the instructions around the current one, as robotsim disasm lists them"},
@@ -97,26 +100,10 @@ std::string shown(std::string_view text) {
   return s;
 }
 
-// "output 2 on" -> "out 2 = 1"; "input 3 off" -> "in 3 = 0"; else as written.
-std::string ioCondition(std::span<const std::string_view> w) {
-  if (w.size() == 3 && (base::sameName(w[0], "output") || base::sameName(w[0], "input")) &&
-      (base::sameName(w[2], "on") || base::sameName(w[2], "off")))
-    return fmt::format("{} {} = {}", base::sameName(w[0], "output") ? "out" : "in", w[1], base::sameName(w[2], "on") ? 1 : 0);
-  return joined(w);
-}
-
-// "output 2" -> "out 2", "input 1" -> "in 1".
-std::string ioName(std::string_view text) {
-  const auto w = words(text);
-  if (w.size() == 2 && base::sameName(w[0], "output")) return fmt::format("out {}", w[1]);
-  if (w.size() == 2 && base::sameName(w[0], "input")) return fmt::format("in {}", w[1]);
-  return std::string(text);
-}
-
 std::optional<vm::Micros> seconds(std::string_view text, std::string& error) {
   const runtime::text::SecondsParse s = runtime::text::parseSeconds(text);
   if (!s.error.empty()) {
-    error = fmt::format("'{}': {}", shown(text), s.error);
+    error = s.error;
     return std::nullopt;
   }
   return s.micros;
@@ -210,10 +197,13 @@ bool Console::execute(std::string_view line) {
 void Console::help(std::string_view topic) {
   if (topic.empty()) {
     out_ << "commands (short forms in brackets):\n";
-    for (const Command& c : commands())
-      out_ << fmt::format("  {:<44} {}\n",
-                          c.shortForm.empty() ? std::string(c.usage) : fmt::format("{} [{}]", c.usage, c.shortForm),
-                          c.summary.substr(0, c.summary.find(';')));
+    for (const Command& c : commands()) {
+      const std::string usage =
+          c.shortForm.empty() ? std::string(c.usage) : fmt::format("{} [{}]", c.usage, c.shortForm);
+      const std::string_view summary = c.summary.substr(0, c.summary.find(';'));
+      if (usage.size() > 36) out_ << fmt::format("  {}\n  {:<36} {}\n", usage, "", summary);
+      else out_ << fmt::format("  {:<36} {}\n", usage, summary);
+    }
     out_ << "help COMMAND explains one\n";
     return;
   }
@@ -243,7 +233,7 @@ void Console::breakCommand(std::string_view args) {
   std::optional<Condition> condition;
   if (ifAt < w.size()) {
     const std::size_t end = hitsAt > ifAt ? hitsAt : w.size();
-    auto c = parseCondition(image, ioCondition(std::span(w).subspan(ifAt + 1, end - ifAt - 1)));
+    auto c = parseCondition(image, ioWords(joined(std::span(w).subspan(ifAt + 1, end - ifAt - 1))));
     if (auto* problem = std::get_if<std::string>(&c)) return error(*problem);
     condition = std::get<Condition>(c);
   }
@@ -264,7 +254,7 @@ void Console::breakCommand(std::string_view args) {
     made = session_.breakAtTime(*t);
   } else if (base::sameName(place[0], "when")) {
     if (place.size() < 2) return error("break when needs a condition: output N on|off, input N on|off, VAR = VALUE");
-    auto c = parseCondition(image, ioCondition(place.subspan(1)));
+    auto c = parseCondition(image, ioWords(joined(place.subspan(1))));
     if (auto* problem = std::get_if<std::string>(&c)) return error(*problem);
     made = session_.breakWhen(std::get<Condition>(c));
   } else if (place.size() != 1) {
@@ -338,13 +328,14 @@ void Console::printCommand(std::string_view args) {
     out_ << fmt::format("inputs  1-8:{}\noutputs 1-8:{}\n", bits(v.inputs), bits(v.outputs));
   } else if (args == "objects") {
     if (v.objects.empty()) out_ << "no objects: the program runs without a workcell (--cell), or it has none\n";
+    std::size_t number = 1;  // as the cell numbers them (and robotsim test's `object N`)
     for (const runtime::ObjectView& o : v.objects)
-      out_ << fmt::format("{} at ({:.3f}, {:.3f}, {:.3f}){}{}\n", base::safeText(o.name), o.at.x(), o.at.y(), o.at.z(),
-                          o.held ? ", held" : "", o.moved ? ", moved" : "");
+      out_ << fmt::format("{} {} at ({:.3f}, {:.3f}, {:.3f}){}{}\n", number++, base::safeText(o.name), o.at.x(), o.at.y(),
+                          o.at.z(), o.held ? ", held" : "", o.moved ? ", moved" : "");
   } else if (args == "clock") {
     out_ << fmt::format("clock = {} s (step {})\n", vm::formatSeconds(v.clock), v.steps);
   } else {
-    auto e = parseExpression(image, ioName(args));
+    auto e = parseExpression(image, ioWords(args));
     if (auto* problem = std::get_if<std::string>(&e)) return error(*problem);
     const Expression& x = std::get<Expression>(e);
     out_ << fmt::format("{} = {}\n", base::safeText(x.name), valueOf(session_.run(), x));
@@ -352,7 +343,8 @@ void Console::printCommand(std::string_view args) {
 }
 
 void Console::watchCommand(std::string_view args) {
-  auto e = parseExpression(session_.run().image(), ioName(args));
+  if (args.empty()) return error("watch needs something to watch: VAR, output N, input N or a motor letter");
+  auto e = parseExpression(session_.run().image(), ioWords(args));
   if (auto* problem = std::get_if<std::string>(&e)) return error(*problem);
   const Expression& x = std::get<Expression>(e);
   const int id = session_.watch(x);
@@ -404,13 +396,19 @@ void Console::disasmCommand(std::string_view args) {
     out_ << (i == current ? "=>" : "  ") << vm::listingRow(image, i) << '\n';
 }
 
+// One frame: where, and the source line (or the instruction, without source).
+std::string Console::frameText(std::uint32_t line, std::uint32_t instruction) const {
+  std::string text(trimmed(sourceLine(line)));
+  if (text.empty()) text = vm::instructionText(session_.run().image(), instruction);
+  return fmt::format("{:<16} {}", fmt::format("line {} @{}", line, instruction + 1), text);
+}
+
 void Console::backtrace() {
   const runtime::RunView v = session_.view();
-  const vm::Image& image = session_.run().image();
-  out_ << fmt::format("#0  line {} @{}  {}\n", v.line, v.instruction + 1, vm::instructionText(image, v.instruction));
+  out_ << "#0  " << frameText(v.line, v.instruction) << '\n';
   std::size_t depth = 1;
   for (auto f = v.callStack.rbegin(); f != v.callStack.rend(); ++f, ++depth)
-    out_ << fmt::format("#{}  line {} @{}  {}\n", depth, f->line, f->gosub + 1, vm::instructionText(image, f->gosub));
+    out_ << fmt::format("#{:<3}", depth) << frameText(f->line, f->gosub) << '\n';
 }
 
 }  // namespace rs::debug

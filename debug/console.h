@@ -44,6 +44,7 @@ class Console {
   void moved(const Stop& stop) { showStop(stop); }
   void error(std::string_view message);
   std::string sourceLine(std::uint32_t line) const;
+  std::string frameText(std::uint32_t line, std::uint32_t instruction) const;
 
   Session& session_;
   const diag::SourceFile* source_;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <vector>
 
 #include "base/ascii.h"
 #include "base/text.h"
@@ -16,6 +17,22 @@ std::string_view trimmed(std::string_view s) {
   while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r' || s.back() == '\n'))
     s.remove_suffix(1);
   return s;
+}
+
+std::string ioWords(std::string_view text) {
+  std::vector<std::string_view> w;
+  for (std::size_t i = 0; i < text.size();) {
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    const std::size_t start = i;
+    while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
+    if (i > start) w.push_back(text.substr(start, i - start));
+  }
+  const bool io = !w.empty() && (base::sameName(w[0], "output") || base::sameName(w[0], "input"));
+  const std::string_view short_ = io && base::sameName(w[0], "output") ? "out" : "in";
+  if (io && w.size() == 2) return fmt::format("{} {}", short_, w[1]);
+  if (io && w.size() == 3 && (base::sameName(w[2], "on") || base::sameName(w[2], "off")))
+    return fmt::format("{} {} = {}", short_, w[1], base::sameName(w[2], "on") ? 1 : 0);
+  return std::string(text);
 }
 
 namespace {
@@ -106,6 +123,7 @@ bool Condition::holds(const runtime::Run& run) const {
 
 std::variant<Condition, std::string> parseCondition(const vm::Image& image, std::string_view text) {
   text = trimmed(text);
+  if (text.empty()) return std::string("a condition is missing: NAME OP VALUE, with OP one of = <> < <= > >=");
   std::size_t at = std::string_view::npos;
   Condition c;
   std::size_t opLength = 0;

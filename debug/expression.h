@@ -55,6 +55,11 @@ struct HitCondition {
 /// "N", ">= N", "== N", "% N" (DAP's hitCondition; the terminal's `hits`).
 std::variant<HitCondition, std::string> parseHitCondition(std::string_view text);
 
+/// The words people type for inputs and outputs, as expressions:
+/// "output 2" -> "out 2", "input 1 on" -> "in 1 = 1", "output 3 off" ->
+/// "out 3 = 0"; anything else as written.
+std::string ioWords(std::string_view text);
+
 /// Whitespace trimmed.
 std::string_view trimmed(std::string_view s);
 
