@@ -68,6 +68,7 @@ class Adapter {
   Reply scopes(const Json& args);
   Reply variables(const Json& args);
   Reply evaluate(const Json& args);
+  std::string frameName(std::uint32_t line, std::uint32_t instruction) const;
   /// After the response to a request that moved the run: the events.
   void reportStop(const debug::Stop& stop);
 

@@ -25,20 +25,31 @@ std::string point(const std::array<double, 3>& p) { return fmt::format("({:.3f},
 
 }  // namespace
 
+// A frame's name: its source line without the comment ("serve:  GOSUB
+// pick"), or the instruction when there is no source.
+std::string Adapter::frameName(std::uint32_t line, std::uint32_t instruction) const {
+  if (source_ && line >= 1 && line <= source_->lineCount()) {
+    std::string_view text = source_->line(line);
+    text = debug::trimmed(text.substr(0, text.find(';')));
+    if (!text.empty()) return base::safeText(text);
+  }
+  return base::safeText(vm::instructionText(session_->run().image(), instruction));
+}
+
 Adapter::Reply Adapter::stackTrace(const Json& args) {
   const runtime::RunView v = session_->view();
   const vm::Image& image = session_->run().image();
   Json source = {{"name", std::filesystem::path(sourcePath_).filename().string()}, {"path", sourcePath_}};
   Json frames = Json::array();
   frames.push_back({{"id", 0},
-                    {"name", base::safeText(vm::instructionText(image, v.instruction))},
+                    {"name", frameName(v.line, v.instruction)},
                     {"source", source},
                     {"line", v.line},
                     {"column", image.columns.empty() ? 1 : image.columns[v.instruction]}});
   int id = 1;
   for (auto f = v.callStack.rbegin(); f != v.callStack.rend(); ++f, ++id)
     frames.push_back({{"id", id},
-                      {"name", base::safeText(vm::instructionText(image, f->gosub))},
+                      {"name", frameName(f->line, f->gosub)},
                       {"source", source},
                       {"line", f->line},
                       {"column", image.columns.empty() ? 1 : image.columns[f->gosub]}});

@@ -271,7 +271,9 @@ Stop Session::forward(const Target& target) {
     probe.capture(r);
     return stop;
   };
-  if (!target.breakpoints && !target.done) until.when = nullptr;
+  // Nothing to look at after each step: the interpreter runs unwatched.
+  const bool watched = target.breakpoints && (!breakpoints_.empty() || !watches_.empty());
+  if (!watched && !target.done) until.when = nullptr;
   timeline_->forward(until, interrupted_);
   if (run_->finished()) return stopped(finishedStop(false));
   Stop s;
