@@ -193,7 +193,7 @@ test('Debug robot program: its launch configuration', () => {
   assert.deepEqual(own.lib, ['d']);
 });
 
-test('robotsim dap runs the launch configuration: a breakpoint, a step back, the end', () => {
+test('robotsim dap runs the launch configuration: a breakpoint and a step back', () => {
   const file = path.join(root, 'examples', 'nested_subroutines.rsp');
   const config = debugConfiguration(file, { cell: '', lib: [] }, { exists: fs.existsSync });
   // Line 38 is grip's first line: the gripper closes there, first after
