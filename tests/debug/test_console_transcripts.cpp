@@ -53,6 +53,11 @@ TEST_CASE("debug transcript: stepping in, over, out and back through nested subr
   checkTranscript("stepping", {debugtest::kExamples + "nested_subroutines.rsp"});
 }
 
+TEST_CASE("debug transcript: every short form, instruction and variable breakpoints, a motor watch",
+          "[debug][transcript]") {
+  checkTranscript("short_forms", {debugtest::kExamples + "nested_subroutines.rsp"});
+}
+
 TEST_CASE("debug transcript: outputs, inputs, watches, hit counts, set input, goto-time", "[debug][transcript]") {
   checkTranscript("io", {debugtest::kExamples + "pick_and_place.rsp", "--stimuli", debugtest::kExamples + "pick_and_place.stim"});
 }
