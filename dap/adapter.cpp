@@ -217,9 +217,20 @@ Adapter::Reply Adapter::launch(const Json& args) {
 }
 
 Adapter::Reply Adapter::setBreakpoints(const Json& args) {
+  Json out = Json::array();
+  // Breakpoints in another file (a stimuli file, another program): none of
+  // them can stop this run.
+  const std::string path = stringArg(args.value("source", Json::object()), "path");
+  std::error_code ec;
+  if (!path.empty() && std::filesystem::absolute(path, ec).lexically_normal().string() != sourcePath_) {
+    for (const Json& b : args.value("breakpoints", Json::array()))
+      out.push_back({{"verified", false},
+                     {"line", b.at("line").get<std::int64_t>()},
+                     {"message", "not the program being debugged"}});
+    return Json{{"breakpoints", out}};
+  }
   for (int id : lineBreakpoints_) session_->remove(id);
   lineBreakpoints_.clear();
-  Json out = Json::array();
   const vm::Image& image = session_->run().image();
   for (const Json& b : args.value("breakpoints", Json::array())) {
     const std::int64_t line = b.at("line").get<std::int64_t>();

@@ -88,6 +88,10 @@ vm::RunOutcome Timeline::forward(const runtime::RunUntil& until, const std::func
     if (!outcome.paused()) return outcome;
     const std::uint64_t steps = run_.interpreter().steps();
     if (steps % interval_ == 0) keep();
+    // The moment after `steps` instructions is the one with its edits made:
+    // wherever the run stops, they are in (the snapshot just kept is the
+    // moment before them, and says so).
+    applyDueEdits();
     // A slice ends at our own boundary; the run's other reasons to pause
     // (or the caller's) stop here. At the boundary the run names the step
     // count first, so the caller's time, instructions and lines are

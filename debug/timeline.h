@@ -6,8 +6,9 @@
 //
 // The world can be changed from the present on (`setInput`, a debugger's
 // `set input`): the change is kept with the instruction count it was made
-// at and applied again whenever execution passes that count, so that going
-// back and forth replays the changed stimuli. A change forgets the changes
+// at and applied again whenever execution reaches that count (a moment
+// the timeline stops at always has its changes made), so that going back
+// and forth replays the changed stimuli. A change forgets the changes
 // made later in the run's history (that future no longer exists) and the
 // snapshots taken after it.
 //

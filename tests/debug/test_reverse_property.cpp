@@ -6,7 +6,7 @@
 // instructions, and goto-time T gives the state of a fresh run paused at T
 // (Run::runUntilTime). Small snapshot intervals make the re-execution
 // start from many different snapshots. CI runs a modest count;
-// ROBOTSIM_DEBUG_PROPERTY_RUNS=N runs N programs (e.g. 500).
+// ROBOTSIM_DEBUG_PROPERTY_RUNS=N runs N programs (2,000 take about a second).
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
@@ -23,7 +23,7 @@ using rs::runtime::Run;
 
 int programCount() {
   const char* env = std::getenv("ROBOTSIM_DEBUG_PROPERTY_RUNS");
-  return env ? std::max(1, std::atoi(env)) : 12;
+  return env ? std::max(1, std::atoi(env)) : 40;
 }
 
 // Timed changes on random inputs at random times within the first 30 s:
@@ -75,7 +75,7 @@ TEST_CASE("reverse then forward gives the same state, goto-time the state of a f
           "[debug][property]") {
   std::mt19937_64 rng(20261124);
   for (int p = 0; p < programCount(); ++p) {
-    const std::size_t size = 1 + rng() % 120;
+    const std::size_t size = 1 + rng() % 300;
     INFO("program " << p << " of " << size << " instructions");
     checkProgram(debugtest::specOf(rs::bench::robotProgram(size).text, randomStimuli(rng)), rng);
   }
@@ -84,4 +84,63 @@ TEST_CASE("reverse then forward gives the same state, goto-time the state of a f
 TEST_CASE("reverse then forward on a workcell: the objects the gripper carried come back too", "[debug][property]") {
   std::mt19937_64 rng(7);
   checkProgram(debugtest::specOnCell("gantry_pick.rsp", "gantry-cell"), rng);
+}
+
+TEST_CASE("set input is replayed: back before the change and forward again gives the same state", "[debug][property]") {
+  std::mt19937_64 rng(99);
+  for (int p = 0; p < std::max(4, programCount() / 3); ++p) {
+    const rs::runtime::RunSpec spec = debugtest::specOf(rs::bench::robotProgram(20 + rng() % 100).text);
+    Run whole(spec);
+    whole.runToEnd();
+    const std::uint64_t total = whole.interpreter().steps();
+    Session session(spec, {1 + rng() % 50, rs::debug::kDefaultSnapshotBudget});
+    // Two changes by hand at random moments, the second after going back.
+    session.step(rng() % (total / 2 + 1));
+    const int input = static_cast<int>(1 + rng() % 8);
+    REQUIRE_FALSE(session.setInput(input, true));
+    REQUIRE((session.run().machine().inputs() & (1u << (input - 1))) != 0);
+    session.step(1 + rng() % (total / 2 + 1));
+    if (session.run().finished()) session.reverseStep(1);
+    session.reverseStep(rng() % (session.run().interpreter().steps() + 1));
+    if (!session.run().finished()) REQUIRE_FALSE(session.setInput(static_cast<int>(1 + rng() % 8), rng() % 2 == 0));
+    session.step(rng() % 200);
+    for (int trial = 0; trial < 6; ++trial) {
+      const std::uint64_t at = session.run().interpreter().steps();
+      const rs::runtime::RunSnapshot before = session.run().snapshot();
+      const std::uint64_t back = 1 + rng() % (at + 1);
+      session.reverseStep(back);
+      session.step(at - session.run().interpreter().steps());
+      REQUIRE(session.run().interpreter().steps() == at);
+      REQUIRE(session.run().snapshot() == before);
+      session.step(rng() % 50);
+    }
+  }
+}
+
+TEST_CASE("snapshots over the memory budget: the interval doubles, memory stays bounded, backwards still exact",
+          "[debug][property]") {
+  // 600 loops of a handful of instructions: about 4,000 instructions.
+  const rs::runtime::RunSpec spec = debugtest::specOf(
+      "        SET N 0\nloop:   ADD N 1\n        MOVE 10 0 0 0 0\n        MOVE -10 0 0 0 0\n"
+      "        JMPVAR N < 600 loop\n        END\n");
+  constexpr std::size_t kBudget = 16 * 1024;
+  Session session(spec, {8, kBudget});
+  session.resume();
+  REQUIRE(session.lastStop().reason == rs::debug::StopReason::End);
+  const std::uint64_t total = session.run().interpreter().steps();
+  CHECK(session.timeline().interval() > 8);
+  CHECK(session.timeline().snapshotMemory() <= kBudget);
+  std::mt19937_64 rng(3);
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::uint64_t at = rng() % total;
+    const std::uint64_t now = session.run().interpreter().steps();
+    if (at < now) session.reverseStep(now - at);
+    else session.step(at - now);
+    REQUIRE(session.run().interpreter().steps() == at);
+    Run fresh(spec);
+    fresh.step(at);
+    REQUIRE(session.run().snapshot() == fresh.snapshot());
+    session.step(rng() % 100);
+  }
+  CHECK(session.timeline().snapshotMemory() <= kBudget);
 }
