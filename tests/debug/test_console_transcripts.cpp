@@ -81,3 +81,13 @@ TEST_CASE("debug transcript: bad commands get a message and the session goes on"
 TEST_CASE("debug transcript: the worked session of docs/debugging.md finds the bug", "[debug][transcript]") {
   checkTranscript("gantry_bug", {debugtest::kExamples + "debugging/gantry_pick_bug.rsp", "--cell", "gantry-cell"});
 }
+
+TEST_CASE("the worked session's example: robotsim test fails the buggy copy and passes the fixed program",
+          "[debug][transcript]") {
+  const rs::testing::CliResult bug = rs::testing::runCli({"test", debugtest::kExamples + "debugging/gantry_pick_bug.rsp"});
+  CHECK(bug.code == 1);
+  CHECK(bug.out.find("expected 3 at (750.00, 30.00, 200.00) within 0.01 at the end; it is at (280.00, 30.00, 700.00)") !=
+        std::string::npos);
+  const rs::testing::CliResult fixed = rs::testing::runCli({"test", debugtest::kExamples + "gantry_pick.rsp"});
+  CHECK(fixed.code == 0);
+}
