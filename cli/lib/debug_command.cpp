@@ -43,8 +43,11 @@ void interactive(debug::Console& console, std::ostream& out) {
   for (;;) {
     out.flush();
     char* raw = readline(kPrompt);
-    if (!raw) {  // Ctrl-D
+    if (!raw) {
       out << '\n';
+      // Ctrl-C at the prompt interrupts the line being typed, not the
+      // session: a fresh prompt. Ctrl-D (the end of input) leaves.
+      if (interruptRequested.exchange(false)) continue;
       return;
     }
     const std::string line(raw);

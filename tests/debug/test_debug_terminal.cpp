@@ -1,6 +1,7 @@
 // robotsim debug at a real terminal (a pseudo-terminal, forkpty): the
 // prompt reads lines through libedit, so the arrow keys recall history and
-// a backspace edits the line; quit ends with 0. The batch transcripts cover
+// a backspace edits the line; Ctrl-C at the prompt gives a new prompt and
+// in a long run pauses it; quit ends with 0. The batch transcripts cover
 // the commands; this covers the prompt around them.
 #include <catch2/catch.hpp>
 
@@ -14,6 +15,7 @@
 #include <cstdlib>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "tests/debug/debug_test_util.h"
 
@@ -21,7 +23,7 @@ namespace {
 
 class Terminal {
  public:
-  explicit Terminal(const std::string& program) {
+  explicit Terminal(std::vector<std::string> args) {
     winsize size{};
     size.ws_row = 40;
     size.ws_col = 200;
@@ -31,7 +33,11 @@ class Terminal {
       setenv("TERM", "xterm", 1);
       setenv("HOME", "/nonexistent", 1);  // no ~/.editrc
       const std::string binary = ROBOTSIM_BINARY;
-      execl(binary.c_str(), binary.c_str(), "debug", program.c_str(), static_cast<char*>(nullptr));
+      args.insert(args.begin(), {binary, "debug"});
+      std::vector<char*> argv;
+      for (std::string& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execv(binary.c_str(), argv.data());
       _exit(127);
     }
   }
@@ -87,7 +93,7 @@ class Terminal {
 
 TEST_CASE("robotsim debug at a terminal: the prompt, history on the up arrow, a backspace, quit",
           "[debug][terminal]") {
-  Terminal t(debugtest::kExamples + "nested_subroutines.rsp");
+  Terminal t({debugtest::kExamples + "nested_subroutines.rsp"});
   t.until("(rsdb) ");
   t.type("break grip\r");
   CHECK(t.until("(rsdb) ").find("breakpoint 1: label grip, line 38") != std::string::npos);
@@ -97,6 +103,27 @@ TEST_CASE("robotsim debug at a terminal: the prompt, history on the up arrow, a 
   CHECK(t.until("(rsdb) ").find("step 22, clock 5.700 s") != std::string::npos);
   t.type("print GRIPSX\x7f\r");  // a backspace takes the X away
   CHECK(t.until("(rsdb) ").find("GRIPS = 1") != std::string::npos);
+  t.type("quit\r");
+  CHECK(t.exitStatus() == 0);
+}
+
+TEST_CASE("robotsim debug at a terminal: Ctrl-C at the prompt gives a new prompt, Ctrl-C in a long run pauses it",
+          "[debug][terminal]") {
+  // Waits for ever a millisecond at a time: to the default step limit,
+  // 100 million instructions, it would run for seconds.
+  Terminal t({rendertest::kSourceDir + "/tests/debug/programs/wait_forever.rsp", "--max-time", "1000000"});
+  t.until("(rsdb) ");
+  t.type("\x03");
+  t.until("(rsdb) ");
+  t.type("print clock\r");
+  CHECK(t.until("(rsdb) ").find("clock = 0.000 s (step 0)") != std::string::npos);
+  t.type("continue\r");
+  t.until("continue");
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  t.type("\x03");
+  const std::string paused = t.until("(rsdb) ");
+  CHECK(paused.find("interrupted") != std::string::npos);
+  CHECK(paused.find("the run is over") == std::string::npos);
   t.type("quit\r");
   CHECK(t.exitStatus() == 0);
 }
