@@ -189,10 +189,17 @@ Adapter::Reply Adapter::launch(const Json& args) {
   launch::RunRequest run;
   run.stimuliFile = stringArg(args, "stimuli");
   if (args.contains("inputs")) run.inputs = args["inputs"].get<std::vector<std::string>>();
-  if (args.contains("maxSteps")) run.maxSteps = args["maxSteps"].get<std::uint64_t>();
-  if (args.contains("maxTime"))
-    run.maxTime = args["maxTime"].is_string() ? args["maxTime"].get<std::string>()
-                                              : fmt::format("{}", args["maxTime"].get<double>());
+  if (args.contains("maxSteps")) {
+    const Json& n = args["maxSteps"];
+    if (!n.is_number_unsigned() || n.get<std::uint64_t>() == 0 || n.get<std::uint64_t>() > (std::uint64_t{1} << 62))
+      return Error{"maxSteps is a whole number of instructions from 1 (as --max-steps)"};
+    run.maxSteps = n.get<std::uint64_t>();
+  }
+  // Seconds as --max-time reads them: a string as written, a whole number
+  // as its digits, any other number with the six decimals it may have.
+  if (const Json& t = args.value("maxTime", Json()); t.is_string()) run.maxTime = t.get<std::string>();
+  else if (t.is_number_integer()) run.maxTime = t.dump();
+  else if (!t.is_null()) run.maxTime = fmt::format("{:.6f}", t.get<double>());
   stopOnEntry_ = args.value("stopOnEntry", false);
 
   launch::LoadedProgram loaded = launch::loadProgram(program);
