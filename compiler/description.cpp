@@ -246,7 +246,8 @@ class Parser {
   bool robotClause(Cursor& c, RobotDef& r);
   bool workcellClause(Cursor& c, WorkcellDef& w);
   bool motorClause(Cursor& c, char& letter, diag::Pos& letterPos, double& precision, std::int32_t& min, std::int32_t& max,
-                   diag::Pos& rangePos, std::int32_t& speed, bool* hasLetter, bool* hasPrecision, bool* hasRange);
+                   diag::Pos& rangePos, std::int32_t& speed, std::int32_t& acceleration, diag::Pos& accelerationPos,
+                   bool* hasLetter, bool* hasPrecision, bool* hasRange);
 
   DescriptionFile& f_;
   diag::Diagnostics& diag_;
@@ -390,10 +391,10 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
   return c.failOneOf("LINE, BOX, ROTATE, MOVE, COLOR or END");
 }
 
-// LETTER, PRECISION, RANGE, SPEED: shared by GRIPPER and JOINT.
+// LETTER, PRECISION, RANGE, SPEED, ACCELERATION: shared by GRIPPER and JOINT.
 bool Parser::motorClause(Cursor& c, char& letter, diag::Pos& letterPos, double& precision, std::int32_t& min,
-                         std::int32_t& max, diag::Pos& rangePos, std::int32_t& speed, bool* hasLetter, bool* hasPrecision,
-                         bool* hasRange) {
+                         std::int32_t& max, diag::Pos& rangePos, std::int32_t& speed, std::int32_t& acceleration,
+                         diag::Pos& accelerationPos, bool* hasLetter, bool* hasPrecision, bool* hasRange) {
   // has* is set as soon as the keyword is seen: a bad value is reported
   // once, not again as "missing".
   if (c.keyword("LETTER")) return *hasLetter = true, c.letter(letter, letterPos);
@@ -430,6 +431,18 @@ bool Parser::motorClause(Cursor& c, char& letter, diag::Pos& letterPos, double& 
     }
     return true;
   }
+  if (c.keyword("ACCELERATION")) {
+    accelerationPos = c.pos();
+    if (!c.integer(acceleration, "an acceleration in encoder units per second squared")) return false;
+    if (acceleration <= 0 || acceleration > vm::kMaxAcceleration) {
+      diag_.error(accelerationPos, fmt::format("an acceleration must be 1..{} encoder units per second squared "
+                                               "(leave it out for a motor that starts and stops at full speed)",
+                                               vm::kMaxAcceleration));
+      acceleration = 0;
+      return false;
+    }
+    return true;
+  }
   return false;
 }
 
@@ -444,12 +457,26 @@ bool Parser::gripperClause(Cursor& c, GripperDef& g) {
   if (c.keyword("AXIS3")) return twoPoints(g.axis3, g.hasAxis3, "axis r3");
   if (c.keyword("NORMAL")) return twoPoints(g.normal, g.hasNormal, "normal vector");
   if (c.keyword("APPROACH")) return twoPoints(g.approach, g.hasApproach, "approach vector");
+  if (c.keyword("ACTUATION")) {
+    const diag::Pos at = c.pos();
+    double seconds = 0;
+    if (!c.number(seconds, "an actuation time in seconds")) return false;
+    const double limit = vm::kMaxActuation / 1e6;
+    if (!(seconds > 0 && seconds <= limit)) {
+      diag_.error(at, fmt::format("an actuation time must be more than 0 and at most {} s", limit));
+      return false;
+    }
+    g.actuation = static_cast<std::int32_t>(std::llround(seconds * 1e6));  // whole microseconds
+    if (g.actuation == 0) g.actuation = 1;
+    return true;
+  }
   const std::size_t before = diag_.errorCount();
-  if (motorClause(c, g.letter, g.letterPos, g.precision, g.min, g.max, g.rangePos, g.speed, &g.hasLetter,
-                  &g.hasPrecision, &g.hasRange))
+  if (motorClause(c, g.letter, g.letterPos, g.precision, g.min, g.max, g.rangePos, g.speed, g.acceleration,
+                  g.accelerationPos, &g.hasLetter, &g.hasPrecision, &g.hasRange))
     return true;
   if (diag_.errorCount() > before) return false;
-  return c.failOneOf("BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, AXIS2, AXIS3, NORMAL, APPROACH or END");
+  return c.failOneOf(
+      "BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, ACCELERATION, ACTUATION, AXIS2, AXIS3, NORMAL, APPROACH or END");
 }
 
 bool Parser::robotClause(Cursor& c, RobotDef& r) {
@@ -491,7 +518,7 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
   }
   if (c.keyword("GRIPPER")) return c.name(r.gripper, "a gripper name");
   if (r.joints.empty()) {
-    for (std::string_view kw : {"LETTER", "PRECISION", "RANGE", "SPEED"})
+    for (std::string_view kw : {"LETTER", "PRECISION", "RANGE", "SPEED", "ACCELERATION"})
       if (!c.atEnd() && base::sameName(c.peek().text, kw)) {
         diag_.error(c.pos(), fmt::format("{} before any JOINT: motor settings belong to the JOINT before them", kw));
         return false;
@@ -501,11 +528,12 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
     diag::Pos letterPos;
     const std::size_t before = diag_.errorCount();
     if (motorClause(c, j.spec.letter, letterPos, j.spec.precision, j.spec.min, j.spec.max, j.rangePos, j.spec.speed,
-                    &j.hasLetter, &j.hasPrecision, &j.hasRange))
+                    j.spec.acceleration, j.accelerationPos, &j.hasLetter, &j.hasPrecision, &j.hasRange))
       return true;
     if (diag_.errorCount() > before) return false;
   }
-  return c.failOneOf("LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, GRIPPER or END");
+  return c.failOneOf(
+      "LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, ACCELERATION, GRIPPER or END");
 }
 
 bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {

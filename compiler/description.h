@@ -48,6 +48,9 @@ struct GripperDef {
   std::int32_t min = 0, max = 0;
   diag::Pos rangePos;
   std::int32_t speed = 200;
+  std::int32_t acceleration = 0;  // ACCELERATION, 0 when not given
+  diag::Pos accelerationPos;
+  std::int32_t actuation = 0;  // ACTUATION in microseconds, 0 when not given
   Point3 axis2[2], axis3[2], normal[2], approach[2];  // two points each
   bool hasAxis2 = false, hasAxis3 = false, hasNormal = false, hasApproach = false;
   bool damaged = false;
@@ -66,7 +69,7 @@ struct JointDef {
   diag::Pos pos;
   workcell::JointSpec spec;
   bool hasLetter = false, hasPrecision = false, hasRange = false;
-  diag::Pos rangePos;
+  diag::Pos rangePos, accelerationPos;
   bool damaged = false;
 };
 

@@ -80,6 +80,14 @@ void Library::error(const DescriptionFile& file, diag::Pos pos, std::string mess
   diagnostics_.push_back({file.source->name(), pos, diag::Severity::Error, std::move(message)});
 }
 
+bool Library::reachesSpeed(const DescriptionFile& file, diag::Pos at, std::int32_t speed, std::int32_t acceleration) {
+  if (acceleration <= 0 || speed / acceleration < vm::kMaxSecondsToSpeed) return true;
+  error(file, at,
+        fmt::format("acceleration {} takes {} s or more to reach speed {}: give at least {}", acceleration,
+                    vm::kMaxSecondsToSpeed, speed, speed / vm::kMaxSecondsToSpeed + 1));
+  return false;
+}
+
 void Library::overlay(const fs::path& path, std::string text) {
   std::error_code ec;
   overlay_[fs::weakly_canonical(path, ec).string()] = std::move(text);
@@ -193,6 +201,8 @@ std::optional<workcell::Gripper> Library::buildGripper(const GripperDef& gripper
   g.name = def->name;
   g.base = std::move(*base), g.finger2 = std::move(*f2), g.finger3 = std::move(*f3);
   g.letter = def->letter, g.min = def->min, g.max = def->max, g.speed = def->speed;
+  g.acceleration = def->acceleration, g.actuation = def->actuation;
+  if (!reachesSpeed(at, def->accelerationPos, g.speed, g.acceleration)) return std::nullopt;
   const kinematics::GripperPoints points{def->axis2[0].v, def->axis2[1].v, def->axis3[0].v,  def->axis3[1].v,
                                          def->normal[0].v, def->normal[1].v, def->approach[0].v, def->approach[1].v};
   kinematics::Result<kinematics::GripperModel> model = kinematics::makeGripper(points, def->precision);
@@ -263,6 +273,7 @@ std::optional<workcell::Robot> Library::checkRobot(const RobotDef& def, const De
       for (auto [present, what] : {std::pair{j.hasLetter, "LETTER"}, std::pair{j.hasPrecision, "PRECISION"},
                                    std::pair{j.hasRange, "RANGE"}})
         if (!present) error(from, j.pos, fmt::format("JOINT {} has no {}", j.number, what)), ok = false;
+    if (!reachesSpeed(from, j.accelerationPos, j.spec.speed, j.spec.acceleration)) ok = false;
     robot.joints.push_back(j.spec);
   }
   const std::size_t frames = def.links.size() + (def.gripper.name.empty() ? 0 : 1);
@@ -374,8 +385,10 @@ const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kin
     for (const fs::path& candidate : candidates)
       if (fs::is_regular_file(candidate, ec)) return load(candidate);
   }
+  // (A workcell may also be a lone robot: the message says both.)
   diagnostics_.push_back({fileOrName, {}, diag::Severity::Error,
-                          fmt::format("no such file, and no {} of that name on the library path", kindName(static_cast<int>(kind)))});
+                          fmt::format("no such file, and no {} of that name on the library path",
+                                      kind == Kind::Workcell ? "workcell or robot" : kindName(static_cast<int>(kind)))});
   return nullptr;
 }
 
@@ -417,15 +430,21 @@ std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrNam
   return hasErrors() ? std::nullopt : std::move(cell);
 }
 
+bool Library::holdsWorkcell(const std::string& fileOrName) {
+  const DescriptionFile* f = loadRoot(fileOrName, Kind::Workcell);  // read once: load() keeps it
+  return f && !f->workcells.empty();
+}
+
 std::vector<vm::MotorSpec> motorTable(const workcell::Robot& robot) {
   std::vector<vm::MotorSpec> motors;
   for (const workcell::JointSpec& j : robot.joints)
     motors.push_back({j.letter,
                       j.type == kinematics::JointType::Revolute ? vm::JointKind::Revolute : vm::JointKind::Prismatic,
-                      j.precision, j.min, j.max, j.speed});
+                      j.precision, j.min, j.max, j.speed, j.acceleration, 0});
   if (robot.hasGripper) {
     const workcell::Gripper& g = robot.gripper;
-    motors.push_back({g.letter, vm::JointKind::Gripper, g.model.precision, g.min, g.max, g.speed});
+    motors.push_back(
+        {g.letter, vm::JointKind::Gripper, g.model.precision, g.min, g.max, g.speed, g.acceleration, g.actuation});
   }
   return motors;
 }

@@ -31,6 +31,11 @@ class Library {
   /// A workcell from a file (its first WORKCELL, or else its first ROBOT
   /// placed alone at the origin) or a library name.
   std::optional<workcell::Workcell> workcell(const std::string& fileOrName);
+  /// After workcell() found a cell: whether its file holds a WORKCELL (true)
+  /// or the cell is a lone ROBOT standing where it was drawn (false), which
+  /// decides whether its coordinates are a workcell's world or a robot's
+  /// design coordinates.
+  bool holdsWorkcell(const std::string& fileOrName);
 
   /// The text of `path` as an editor holds it, unsaved: read instead of the
   /// file on disk (the language server checks what the user sees). Before
@@ -60,6 +65,9 @@ class Library {
   std::optional<workcell::Robot> checkRobot(const RobotDef& def, const DescriptionFile& from);
   std::optional<workcell::Workcell> buildWorkcell(const WorkcellDef& def, const DescriptionFile& from);
   void error(const DescriptionFile& file, diag::Pos pos, std::string message);
+  /// False (with an error at the ACCELERATION) when the motor would take
+  /// vm::kMaxSecondsToSpeed or more to reach its speed.
+  bool reachesSpeed(const DescriptionFile& file, diag::Pos at, std::int32_t speed, std::int32_t acceleration);
 
   std::vector<std::filesystem::path> searchPath_;
   std::vector<std::unique_ptr<DescriptionFile>> files_;  // in load order

@@ -27,8 +27,20 @@ std::string decodeImageCell(const vm::Image& image, std::shared_ptr<const workce
   workcell::CellDecode decoded = workcell::decodeCell(image.cell);
   if (!decoded.cell) return decoded.error;
   if (decoded.cell->robots.empty()) return "its cell has no robot";
-  if (compiler::motorTable(decoded.cell->robots.front().robot) != image.motors)
-    return "its cell's robot does not match its motor table";
+  // The cell's bytes hold the geometry; how motors accelerate is in the
+  // image's motor table alone (an image's 1.1 motion section), so that a
+  // cell of constant-speed motors keeps the bytes it always had. The
+  // robot takes the image's accelerations and actuation time, then the
+  // rest must match exactly.
+  workcell::Robot& robot = decoded.cell->robots.front().robot;
+  if (robot.joints.size() + (robot.hasGripper ? 1 : 0) == image.motors.size()) {
+    for (std::size_t i = 0; i < robot.joints.size(); ++i) robot.joints[i].acceleration = image.motors[i].acceleration;
+    if (robot.hasGripper) {
+      robot.gripper.acceleration = image.motors.back().acceleration;
+      robot.gripper.actuation = image.motors.back().actuation;
+    }
+  }
+  if (compiler::motorTable(robot) != image.motors) return "its cell's robot does not match its motor table";
   cell = std::make_shared<const workcell::Workcell>(std::move(*decoded.cell));
   return {};
 }

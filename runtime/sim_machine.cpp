@@ -14,7 +14,6 @@ namespace {
 using vm::Micros;
 using vm::Status;
 
-constexpr Micros kMicrosPerSecond = 1'000'000;
 constexpr Micros kClockLimit = std::numeric_limits<Micros>::max();
 bool validLine(int n) { return lineBit(n) != 0; }
 
@@ -73,13 +72,8 @@ void SimMachine::restore(const State& s) {
   schedule_.restore(s.schedule);
 }
 
-// ceil(|delta| * 1 s / speed). |delta| < 2^32, so |delta| * 10^6 < 2^53:
-// 64-bit arithmetic cannot overflow.
 Micros SimMachine::travelTime(std::size_t motor, std::int32_t target) const {
-  const std::int64_t distance = std::abs(std::int64_t{target} - positions_[motor]);
-  if (distance == 0) return 0;
-  const std::int64_t speed = motors_[motor].speed;
-  return (distance * kMicrosPerSecond + speed - 1) / speed;
+  return runtime::travelTime(motors_[motor], std::abs(std::int64_t{target} - positions_[motor]));
 }
 
 Status SimMachine::checkTargets(std::span<const std::int32_t> targets) const {
@@ -113,20 +107,9 @@ Status SimMachine::moveTo(std::span<const std::int32_t> targets) {
   return Status::ok();
 }
 
-// The motor covers floor(elapsed * speed / 1 s) units: linear at its speed,
-// rounded toward the start, and exactly at `to` from `end` on (end - start is
-// the rounded-up travel time). elapsed * speed <= |delta| * 10^6 + speed: no
-// overflow.
-std::int32_t positionAt(const MotorSegment& s, std::int32_t speed, Micros t) {
-  if (t <= s.start) return s.from;
-  if (t >= s.end) return s.to;
-  const std::int64_t covered = (t - s.start) * speed / kMicrosPerSecond;
-  return static_cast<std::int32_t>(s.to > s.from ? s.from + covered : s.from - covered);
-}
-
 std::int32_t SimMachine::positionAt(std::size_t motor, Micros t) const {
   if (motor >= segments_.size()) return 0;
-  return runtime::positionAt(segments_[motor], motors_[motor].speed, t);
+  return runtime::positionAt(segments_[motor], motors_[motor], t);
 }
 
 Status SimMachine::hardHome() { return moveTo(home_); }

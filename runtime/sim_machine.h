@@ -1,5 +1,5 @@
-// The simulated machine: motors that move at their configured speeds on a
-// virtual clock, eight outputs, and eight inputs driven by the stimuli.
+// The simulated machine: motors that move at their configured speeds (and
+// accelerations: runtime/motion.h) on a virtual clock, eight outputs, and eight inputs driven by the stimuli.
 // Deterministic: the same calls with the same stimuli give the same results
 // on every run. Time is integer microseconds and only moves forward.
 #pragma once
@@ -11,27 +11,12 @@
 #include <vector>
 
 #include "runtime/input_schedule.h"
+#include "runtime/motion.h"
 #include "runtime/stimuli.h"
 #include "vm/image.h"
 #include "vm/machine.h"
 
 namespace rs::runtime {
-
-/// A motor's latest move: it left `from` at `start` and reaches `to` at
-/// `end`, at its own constant speed. Motors that did not move have
-/// from == to and start == end.
-struct MotorSegment {
-  std::int32_t from = 0;
-  std::int32_t to = 0;
-  vm::Micros start = 0;
-  vm::Micros end = 0;
-  bool operator==(const MotorSegment&) const = default;
-};
-
-/// Encoder position at time `t` of a motor that runs `segment` at `speed`
-/// units per second: `from` until the start, `to` from the end, and in
-/// between the units covered so far, rounded toward `from`.
-std::int32_t positionAt(const MotorSegment& segment, std::int32_t speed, vm::Micros t);
 
 /// Three accumulated camera values (WINDOW shift, VIEW rotation).
 struct CameraTriple {
@@ -47,8 +32,8 @@ class SimMachine final : public vm::Machine {
   /// (stimuli due at time 0 have already applied).
   SimMachine(std::vector<vm::MotorSpec> motors, Stimuli stimuli);
 
-  /// Every motor moves at once, each at its own speed; returns when the
-  /// slowest arrives. Fault (no motion) on a wrong target count, a target
+  /// Every motor moves at once, each with its own profile (motion.h);
+  /// returns when the slowest arrives. Fault (no motion) on a wrong target count, a target
   /// outside a motor's range or a clock overflow.
   vm::Status moveTo(std::span<const std::int32_t> targets) override;
   std::span<const std::int32_t> positions() const override { return positions_; }
@@ -88,7 +73,7 @@ class SimMachine final : public vm::Machine {
   /// The latest move of motor `motor` (index in motor-table order).
   const MotorSegment& segment(std::size_t motor) const { return segments_[motor]; }
   /// Encoder position of `motor` at time `t`: runtime::positionAt of its
-  /// latest segment at the motor's speed. Before the segment began
+  /// latest segment. Before the segment began
   /// it answers the segment's start (older moves are not kept); 0 for a
   /// motor index out of range.
   std::int32_t positionAt(std::size_t motor, vm::Micros t) const;

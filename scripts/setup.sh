@@ -20,14 +20,19 @@ packages=(
   antlr4 libantlr4-runtime-dev default-jre-headless
   libeigen3-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
   libmimalloc-dev libcairo2-dev libedit-dev
+  libcpp-httplib-dev libncurses-dev
 )
+# libcpp-httplib-dev: the HTTP server of `robotsim teach`'s live page.
+# libncurses-dev: the terminal pendant (robotsim teach --tui) draws with ncurses.
 # Catch2 and the unit tests build with the tree; the browser test drives a
 # real Chromium with playwright-core (pinned in tests/browser/package-lock.json);
 # lcov's genhtml reads robotsim test's coverage files; lua5.4 is the
 # benchmarks' peer; neovim's built-in LSP client drives the language server
 # end to end (the editor_neovim test); clang and its runtime (libFuzzer)
-# build the sanitizer and fuzzing build; unzip lists the VS Code package.
-[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 neovim clang libclang-rt-14-dev unzip)
+# build the sanitizer and fuzzing build; unzip lists the VS Code package;
+# tmux gives the terminal pendant's test a real terminal (a pseudo-terminal
+# with a terminal emulator behind it) whose screen it reads.
+[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 neovim clang libclang-rt-14-dev unzip tmux)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -15,7 +15,10 @@ namespace rs::vm {
 enum class JointKind : std::uint8_t { Revolute = 0, Prismatic = 1, Gripper = 2 };
 
 /// One motor as the program sees it: a letter, how far one encoder unit
-/// turns (degrees) or slides (length units), its encoder range and speed.
+/// turns (degrees) or slides (length units), its encoder range and speed,
+/// and how it gets to speed (runtime/motion.h: constant speed by default,
+/// a trapezoid with an acceleration, a fixed time for a gripper with an
+/// actuation time).
 struct MotorSpec {
   char letter = 'A';
   JointKind kind = JointKind::Revolute;
@@ -23,8 +26,16 @@ struct MotorSpec {
   std::int32_t min = 0;       // encoder range, inclusive
   std::int32_t max = 0;
   std::int32_t speed = 1;     // encoder units per second, > 0
+  std::int32_t acceleration = 0;  // encoder units per second², 0 = starts and stops at full speed
+  std::int32_t actuation = 0;     // microseconds every move takes whatever its length (grippers only), 0 = none
   bool operator==(const MotorSpec&) const = default;
 };
+
+/// Bounds of the motion settings, checked by the description reader and
+/// the verifier; they keep runtime/motion.h's integer arithmetic exact.
+inline constexpr std::int32_t kMaxAcceleration = 1'000'000'000;  // encoder units per second²
+inline constexpr std::int32_t kMaxSecondsToSpeed = 1000;         // speed / acceleration at most this
+inline constexpr std::int32_t kMaxActuation = 60'000'000;        // microseconds (a minute)
 
 /// A taught point: one encoder value per motor.
 struct Point {

@@ -55,6 +55,13 @@ class NameRules {
   std::unordered_map<std::string, std::size_t> seen_;  // upper-case name -> first index
 };
 
+// A 1.1 image: some motor does not simply run at constant speed.
+bool hasMotionSection(const Image& im) {
+  for (const MotorSpec& m : im.motors)
+    if (m.acceleration != 0 || m.actuation != 0) return true;
+  return false;
+}
+
 void writePayload(ByteWriter& w, const Image& im) {
   w.str(im.sourceName);
   w.str(im.robotName);
@@ -96,6 +103,11 @@ void writePayload(ByteWriter& w, const Image& im) {
   }
   w.u32(static_cast<std::uint32_t>(im.cell.size()));
   w.bytes(im.cell);
+  if (!hasMotionSection(im)) return;
+  for (const MotorSpec& m : im.motors) {
+    w.i32(m.acceleration);
+    w.i32(m.actuation);
+  }
 }
 
 // The exact size writePayload writes, so that the buffer is allocated once.
@@ -109,7 +121,17 @@ std::size_t payloadBytes(const Image& im) {
   for (const Point& p : im.points) n += str(p.name) + p.values.size() * 4;
   n += 4;
   for (const Label& l : im.labels) n += 4 + str(l.name);
-  return n + 4 + im.cell.size();
+  return n + 4 + im.cell.size() + (hasMotionSection(im) ? im.motors.size() * 8 : 0);
+}
+
+// 1.1's motion section: each motor's acceleration and actuation time (the
+// verifier checks their values).
+void readMotion(ByteReader& r, Image& im) {
+  for (MotorSpec& m : im.motors) {
+    m.acceleration = r.i32();
+    m.actuation = r.i32();
+  }
+  if (!r.failed && !hasMotionSection(im)) r.fail("a motion section in which no motor has an acceleration or an actuation time");
 }
 
 void readMotors(ByteReader& r, Image& im) {
@@ -220,7 +242,7 @@ std::vector<std::uint8_t> writeImage(const Image& image) {
   ByteWriter header;
   header.out.assign(kImageMagic.begin(), kImageMagic.end());
   header.u16(kImageVersionMajor);
-  header.u16(kImageVersionMinor);
+  header.u16(hasMotionSection(image) ? kImageVersionMinor : 0);
   header.u32(static_cast<std::uint32_t>(size));
   header.u32(crc32(w.out.data() + kImageHeaderBytes, size));
   std::copy(header.out.begin(), header.out.end(), w.out.begin());
@@ -266,6 +288,7 @@ LoadResult loadImage(std::string_view bytes) {
   readMotors(r, im);
   readCode(r, im);
   readNames(r, im);
+  if (minor >= 1) readMotion(r, im);
   if (!r.failed && r.remaining() != 0) r.fail(fmt::format("{} unexpected bytes after the last section", r.remaining()));
   if (r.failed) return {{}, "malformed image: " + r.error};
   if (VerifyError e = verify(im); !e.message.empty()) return {{}, "image rejected by the verifier: " + e.message};

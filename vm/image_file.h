@@ -14,7 +14,10 @@ namespace rs::vm {
 
 inline constexpr std::array<std::uint8_t, 8> kImageMagic{0x89, 'R', 'S', 'B', '\r', '\n', 0x1A, '\n'};
 inline constexpr std::uint16_t kImageVersionMajor = 1;
-inline constexpr std::uint16_t kImageVersionMinor = 0;
+/// 1.0: constant-speed motors. 1.1 adds a motion section after the cell
+/// (each motor's acceleration and actuation time); it is written only when
+/// a motor has one, so every other image keeps its 1.0 bytes.
+inline constexpr std::uint16_t kImageVersionMinor = 1;
 inline constexpr std::size_t kImageHeaderBytes = 20;
 inline constexpr std::size_t kMaxImageBytes = std::size_t{1} << 30;  // 1 GiB
 

@@ -26,6 +26,14 @@ std::string checkMotors(const Image& image) {
     if (m.speed <= 0) return fmt::format("motor {} speed {} is not positive", m.letter, m.speed);
     if (!(m.precision > 0.0 && m.precision < 1e9))
       return fmt::format("motor {} precision is not a positive number", m.letter);
+    if (m.acceleration < 0 || m.acceleration > kMaxAcceleration)
+      return fmt::format("motor {} acceleration {} is outside 0..{}", m.letter, m.acceleration, kMaxAcceleration);
+    if (m.acceleration > 0 && m.speed / m.acceleration >= kMaxSecondsToSpeed)
+      return fmt::format("motor {} takes {} s or more to reach its speed", m.letter, kMaxSecondsToSpeed);
+    if (m.actuation < 0 || m.actuation > kMaxActuation)
+      return fmt::format("motor {} actuation time {} us is outside 0..{}", m.letter, m.actuation, kMaxActuation);
+    if (m.actuation > 0 && m.kind != JointKind::Gripper)
+      return fmt::format("motor {} has an actuation time but is not a gripper", m.letter);
   }
   return {};
 }

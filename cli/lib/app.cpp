@@ -11,6 +11,7 @@
 #include "base/text.h"
 #include "cli/lib/dap_command.h"
 #include "cli/lib/debug_command.h"
+#include "cli/lib/describe_command.h"
 #include "cli/lib/help.h"
 #include "cli/lib/lsp_command.h"
 #include "cli/lib/options.h"
@@ -19,6 +20,8 @@
 #include "cli/lib/robot_commands.h"
 #include "cli/lib/run_command.h"
 #include "cli/lib/serial_commands.h"
+#include "cli/lib/teach_command.h"
+#include "cli/lib/teach_tui_command.h"
 #include "cli/lib/test_command.h"
 
 namespace rs::cli {
@@ -82,6 +85,9 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   RunCommandOptions ro;
   CLI::App* run = addRunLike(app, "run", "Run a program (.rsp source or .rsb image) in simulation", ro);
   run->add_flag("--trace{text}", ro.trace, "Print each executed instruction: --trace (text) or --trace=json");
+  run->add_flag("--profile", ro.profile,
+                "Where the time went: by source line, label and subroutine, moving vs waiting vs gripper, the "
+                "slowest moves (with --format=json: a \"profile\" member); --max-steps then defaults to 10000000");
   addRunLikeOptions(run, ro);
   CLI::App* check = addRunLike(app, "check", "Compile, verify and simulate; exit 0 only if all is well", ro);
   check->add_flag("--strict", ro.strict, "Warnings fail the check too");
@@ -107,8 +113,9 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   addMaxErrorsOption(ast, po.program);
 
   RobotQuery rq;
-  const auto robotArgs = [&](CLI::App* cmd) {
-    cmd->add_option("robot", rq.robot, "Robot description file (.rsd) or library name, e.g. scorobot")->required();
+  const auto robotArgs = [&](CLI::App* cmd,
+                             const char* what = "Robot description file (.rsd) or library name, e.g. scorobot") {
+    cmd->add_option("robot", rq.robot, what)->required();
     cmd->add_option("--lib", rq.libDirs, "Also look up names in this directory (repeatable)")->allow_extra_args(false);
     cmd->add_flag("--json", rq.json, "Print one JSON object");
   };
@@ -121,10 +128,19 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   matrix->add_option("j", rq.to, "Frame J")->required();
   matrix->add_option("--theta", rq.theta, "Joint values v,v,... (degrees; a prismatic joint's d)");
   matrix->add_option("--encoders", rq.encoders, "Encoder counts v,v,... (default: the home position)");
-  CLI::App* where = app.add_subcommand("where", "Print the tool centre point for given encoder values");
-  robotArgs(where);
+  CLI::App* where = app.add_subcommand(
+      "where",
+      "Print the tool centre point for given encoder values: in a workcell's world coordinates for a CELL, in a "
+      "robot's design coordinates for a ROBOT");
+  robotArgs(where, "Workcell or robot: description file (.rsd) or library name, e.g. scara-pick or scorobot");
   where->add_option("--theta", rq.theta, "Joint values v,v,... (degrees; a prismatic joint's d)");
   where->add_option("--encoders", rq.encoders, "Encoder counts v,v,... (default: the home position)");
+
+  CLI::App* describe = app.add_subcommand(
+      "describe",
+      "Describe a workcell (or a robot alone): motors, ranges, speeds, reach, every object's box, centre and what it "
+      "stands on, inputs and outputs");
+  robotArgs(describe, "Workcell or robot: description file (.rsd) or library name, e.g. scara-pick");
 
   PortsOptions portsOptions;
   CLI::App* ports = addPortsCommand(app, portsOptions);
@@ -132,6 +148,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   CLI::App* emulate = addEmulateCommand(app, emulateOptions);
 
   const RenderCommands renderCommands(app);  // render, animate
+  TeachOptions teachOptions;
+  CLI::App* teach = addTeachCommand(app, teachOptions);
   TestOptions testOptions;
   CLI::App* test = addTestCommand(app, testOptions);
   LspOptions lspOptions;
@@ -159,6 +177,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   if (lsp->parsed()) return lspCommand(lspOptions, err);
   if (debug->parsed()) return debugCommand(debugOptions, std::cin, out, err);
   if (dap->parsed()) return dapCommand(err);
+  if (teach->parsed())
+    return teachOptions.tui ? teachTuiCommand(teachOptions, out, err) : teachCommand(teachOptions, out, err);
   if (run->parsed()) return runOrCheck(ro, false, out, err);
   if (check->parsed()) return runOrCheck(ro, true, out, err);
   if (compile->parsed()) return compileCommand(po, out, err);
@@ -168,6 +188,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   if (table->parsed()) return tableCommand(rq, out, err);
   if (matrix->parsed()) return matrixCommand(rq, out, err);
   if (where->parsed()) return whereCommand(rq, out, err);
+  if (describe->parsed()) return describeCommand(rq, out, err);
   if (ports->parsed()) return portsCommand(portsOptions, out, err);
   if (emulate->parsed()) return emulateCommand(emulateOptions, out, err);
   return helpCommand(helpTopic, out, err);

@@ -7,6 +7,7 @@
 #include <span>
 
 #include "base/text.h"
+#include "cli/lib/profile_report.h"
 #include "cli/lib/trace.h"
 
 namespace rs::cli {
@@ -163,6 +164,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     Json vars = Json::object();
     for (std::size_t i = 0; i < im.variables.size(); ++i) vars[im.variables[i]] = r.run->interpreter().variables()[i];
     j["variables"] = vars;
+    if (r.profile) j["profile"] = profileJson(*r.profile);
   } else {
     j["time"] = 0;
     j["steps"] = 0;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
+#include "runtime/run/profile.h"
 #include "runtime/run/run.h"
 #include "runtime/serial/rhino_machine.h"
 #include "vm/interpreter.h"
@@ -23,6 +24,7 @@ struct RunReport {
   /// A serial run that ended in a controller failure: which motors' places
   /// are uncertain, which outputs were left ON.
   std::optional<serial::FaultState> fault;
+  std::optional<runtime::Profile> profile;  // --profile: where the time went
   bool ok() const;
 };
 

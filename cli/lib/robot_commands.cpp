@@ -208,12 +208,24 @@ int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
   return kExitOk;
 }
 
+// `where ROBOT` answers in the robot's design coordinates, `where CELL` in
+// the workcell's world: the same chain, placed where the cell puts the
+// robot's link 0 (a lone robot stands where it was drawn, so both agree).
 int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
-  const std::optional<workcell::Robot> robot = loadRobot(q, err);
-  if (!robot) return kExitBadInput;
-  const kinematics::ChainModel& chain = *robot->chain;
+  compiler::Library library(compiler::librarySearchPath(q.libDirs));
+  std::optional<workcell::Workcell> cell = library.workcell(q.robot);
+  const bool world = cell && library.holdsWorkcell(q.robot);
+  for (const diag::Diagnostic& d : library.diagnostics()) err << diag::render(d, library.source(d.file));
+  if (!cell) return kExitBadInput;
+  if (cell->robots.empty()) {
+    err << fmt::format("robotsim: error: workcell {} places no robot\n", base::safeText(cell->name));
+    return kExitBadInput;
+  }
+  const workcell::PlacedRobot& placed = cell->robots.front();
+  const workcell::Robot& robot = placed.robot;
+  const kinematics::ChainModel chain = robot.chain->placedAt(placed.F_world_design * robot.frames.front());
   std::vector<double> values;
-  if (!jointValues(q, *robot, values, err)) return kExitBadInput;
+  if (!jointValues(q, robot, values, err)) return kExitBadInput;
   kinematics::ChainData data(chain);
   kinematics::forwardKinematics(chain, data, values);
   const Eigen::Isometry3d tool = kinematics::toolPose(chain, data);
@@ -232,23 +244,36 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
   // atan2 gives -180 or 180 by the sign of a zero: report (-180, 180].
   const auto angle = [&](double radians) { return normalizeDegrees(radians * deg); };
   if (q.json) {
-    // Full precision, as matrix --json; design coordinates of the robot.
+    // Full precision, as matrix --json; a workcell's world coordinates
+    // ("cell" and "frame" say so), else the robot's design coordinates.
     Json j;
-    j["robot"] = robot->name;
+    if (world) j["cell"] = cell->name;
+    j["robot"] = robot.name;
+    if (world) j["frame"] = "world";
     j["position"] = {p.x() + 0.0, p.y() + 0.0, p.z() + 0.0};
     j["rpy"] = {angle(roll), angle(pitch), angle(yaw)};
     j["matrix"] = matrixJson(tool);
     out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     return kExitOk;
   }
-  out << fmt::format("{}: tool centre point at ({}, {}, {})\n", base::safeText(robot->name), formatNumber(p.x()),
-                     formatNumber(p.y()), formatNumber(p.z()));
+  const std::string who = world ? fmt::format("{} ({})", base::safeText(cell->name), base::safeText(robot.name))
+                                : base::safeText(robot.name);
+  out << fmt::format("{}: tool centre point at ({}, {}, {})\n", who, formatNumber(p.x()), formatNumber(p.y()),
+                     formatNumber(p.z()));
   out << fmt::format("  normal n   ({}, {}, {})\n", formatNumber(r(0, 0)), formatNumber(r(1, 0)), formatNumber(r(2, 0)));
   out << fmt::format("  approach a ({}, {}, {})\n", formatNumber(r(0, 2)), formatNumber(r(1, 2)), formatNumber(r(2, 2)));
   out << fmt::format("  roll {}  pitch {}  yaw {} (degrees, R = Rz(yaw) Ry(pitch) Rx(roll))\n", formatAngle(roll * deg),
                      formatAngle(pitch * deg), formatAngle(yaw * deg));
-  out << "(the robot's design coordinates, those its description is drawn in; values rounded to 4 decimals, angles "
-         "in (-180, 180]; --json gives full precision)\n";
+  if (world) {
+    const Eigen::Vector3d base = chain.F_world_0().translation();
+    out << fmt::format("(world coordinates of workcell {}, whose {} has link 0's origin at ({}, {}, {}); values "
+                       "rounded to 4 decimals, angles in (-180, 180]; --json gives full precision)\n",
+                       base::safeText(cell->name), base::safeText(robot.name), formatNumber(base.x()),
+                       formatNumber(base.y()), formatNumber(base.z()));
+  } else {
+    out << "(the robot's design coordinates, those its description is drawn in; values rounded to 4 decimals, "
+           "angles in (-180, 180]; --json gives full precision)\n";
+  }
   return kExitOk;
 }
 

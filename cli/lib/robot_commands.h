@@ -1,6 +1,7 @@
 // The DESIGN ROBOT inspection commands: `robotsim table` (the paper's TABLE,
 // Fig. 6), `robotsim matrix` (MATRIX, Fig. 7) and `robotsim where` (the tool
-// centre point for given encoder values).
+// centre point for given encoder values, in a workcell's world or a robot's
+// design coordinates).
 #pragma once
 
 #include <ostream>

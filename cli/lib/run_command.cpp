@@ -4,6 +4,7 @@
 
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/profile_report.h"
 #include "cli/lib/report.h"
 #include "cli/lib/trace.h"
 #include "runtime/run/run.h"
@@ -33,6 +34,10 @@ void promoteWarnings(launch::LoadedProgram& program) {
 
 int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err) {
   const bool json = o.format == "json";
+  if (o.profile && o.serial.active()) {
+    err << "--profile: error: a profile is computed from the simulated run's log: leave out --device\n";
+    return kExitBadInput;
+  }
   launch::LoadedProgram program = launch::loadProgram(o.program);
   if (check && o.strict) promoteWarnings(program);
   RunReport report;
@@ -41,7 +46,11 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   report.omitted = program.omitted;
   // The stimuli and limits are checked even when the program did not
   // compile, so that one run reports every mistake.
-  const std::optional<runtime::RunSpec> spec = launch::prepareRun(program, o.run, report.diagnostics);
+  // A profile reads the run's log, about 70 bytes a step: without
+  // --max-steps, such a run stops at kProfileMaxSteps (700 MB of log), not
+  // at the usual 100 million.
+  const std::optional<runtime::RunSpec> spec = launch::prepareRun(
+      program, o.run, report.diagnostics, o.profile ? kProfileMaxSteps : vm::RunLimits{}.maxSteps);
   if (!spec || !program.ok()) {
     launch::printDiagnostics(err, report.diagnostics, program);
     if (json) printJsonSummary(out, report);
@@ -60,7 +69,9 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     controller = dynamic_cast<const serial::RhinoMachine*>(rhino.get());
     run = std::make_unique<runtime::Run>(*spec, std::move(rhino));
   } else {
-    run = std::make_unique<runtime::Run>(*spec);
+    runtime::RunSpec simulated = *spec;
+    simulated.log = simulated.log || o.profile;  // the profile reads the log
+    run = std::make_unique<runtime::Run>(simulated);
   }
   report.realTime = o.serial.active();
   std::optional<TraceWriter> trace;
@@ -77,10 +88,12 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     launch::printDiagnostics(err, {d}, program);
     report.diagnostics.push_back(d);
   }
+  if (o.profile && run->log()) report.profile = runtime::profileOf(image, *run->log());
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);
   else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", base::safeText(image.sourceName),
                           outcome.steps, vm::formatSeconds(run->clock()));
+  if (!json && report.profile) printTextProfile(out, *report.profile);
   return outcome.ok() ? kExitOk : kExitRunFailed;
 }
 

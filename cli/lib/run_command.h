@@ -11,6 +11,9 @@
 
 namespace rs::cli {
 
+/// `run --profile`'s step limit when --max-steps is not given.
+inline constexpr std::uint64_t kProfileMaxSteps = 10'000'000;
+
 struct RunCommandOptions {
   launch::ProgramRequest program;
   launch::RunRequest run;
@@ -18,6 +21,7 @@ struct RunCommandOptions {
   std::string format = "text";  // summary: text or json
   std::string trace;            // "", "text" or "json"
   bool strict = false;          // check: warnings fail too
+  bool profile = false;         // run: where the time went (runtime/run/profile.h)
 };
 
 /// run (`check` false) or check; returns the exit code.

@@ -10,6 +10,7 @@
 #include "lsp/features/features.h"
 #include "lsp/protocol.h"
 #include "model/workcell/tool_tracker.h"
+#include "vm/interpreter.h"
 
 namespace rs::lsp {
 
@@ -32,6 +33,9 @@ std::string motorList(const std::vector<vm::MotorSpec>& motors) {
   for (const vm::MotorSpec& m : motors) {
     const char* kind = m.kind == vm::JointKind::Revolute ? "revolute" : m.kind == vm::JointKind::Prismatic ? "prismatic" : "gripper";
     out += fmt::format("{}- `{}` {}, {}..{}, {} units/s", out.empty() ? "" : "\n", m.letter, kind, m.min, m.max, m.speed);
+    // Only when set, so a constant-speed motor reads as it always did.
+    if (m.acceleration > 0) out += fmt::format(", {} units/s²", m.acceleration);
+    if (m.actuation > 0) out += fmt::format(", {} s a move", vm::formatSeconds(m.actuation));
   }
   return out;
 }

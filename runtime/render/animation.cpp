@@ -103,14 +103,19 @@ Json graspModel(const runtime::RunLog& rec, const workcell::Workcell& cell) {
 
 Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const std::string& outcome) {
   Json motors = Json::array();
-  for (const vm::MotorSpec& m : rec.motors)
-    motors.push_back({{"letter", std::string(1, m.letter)},
-                      {"kind", m.kind == vm::JointKind::Gripper     ? "gripper"
-                               : m.kind == vm::JointKind::Prismatic ? "prismatic"
-                                                                    : "revolute"},
-                      {"min", m.min},
-                      {"max", m.max},
-                      {"speed", m.speed}});
+  for (const vm::MotorSpec& m : rec.motors) {
+    Json motor = {{"letter", std::string(1, m.letter)},
+                  {"kind", m.kind == vm::JointKind::Gripper     ? "gripper"
+                           : m.kind == vm::JointKind::Prismatic ? "prismatic"
+                                                                : "revolute"},
+                  {"min", m.min},
+                  {"max", m.max},
+                  {"speed", m.speed}};
+    // Only when set: a constant-speed motor's entry is what it always was.
+    if (m.acceleration != 0) motor["acceleration"] = m.acceleration;
+    if (m.actuation != 0) motor["actuation"] = m.actuation;
+    motors.push_back(std::move(motor));
+  }
   Json index = Json::array(), start = Json::array(), stop = Json::array();
   for (const runtime::StepRecord& s : rec.steps) index.push_back(s.index), start.push_back(s.start), stop.push_back(s.end);
   Json moves = Json::array();
@@ -160,51 +165,36 @@ Json styleModel() {
           {"toolColor", static_cast<int>(kToolColor)}};
 }
 
-std::string escapeHtml(std::string_view text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
-Json animationModel(const AnimationInput& input) {
-  const workcell::Workcell& cell = *input.cell;
+Json cellDrawing(const workcell::Workcell& cell, const Camera& camera) {
   const CellPoser poser(cell);
-  const Fit fit = fitView(poser.homePoints(), input.camera);
+  const Fit fit = fitView(poser.homePoints(), camera);
   Json robots = Json::array();
   for (std::size_t r = 0; r < cell.robots.size(); ++r) robots.push_back(robotModel(poser, r, r == 0));
   Json objects = Json::array();
   for (std::size_t o = 0; o < cell.objects.size(); ++o)
     objects.push_back(part("object", static_cast<int>(o), 0, cell.objects[o].shape, cell.objects[o].F_world_design));
   for (std::size_t o = 0; o < cell.objects.size(); ++o) objects[o]["name"] = cell.objects[o].shape.name;
-  return {{"title", fmt::format("{} on {}", input.listing.name, cell.name)},
-          {"cell", cell.name},
-          {"fit", {{"center", vec(fit.center)}, {"radius", fit.radius}}},
+  return {{"fit", {{"center", vec(fit.center)}, {"radius", fit.radius}}},
           {"camera",
-           {{"view", vec(input.camera.view)},
-            {"window", vec(input.camera.window)},
-            {"zoom", input.camera.zoom},
-            {"axes", input.camera.axes}}},
+           {{"view", vec(camera.view)}, {"window", vec(camera.window)}, {"zoom", camera.zoom}, {"axes", camera.axes}}},
           {"style", styleModel()},
           {"robots", robots},
-          {"objects", objects},
-          {"program", {{"name", input.listing.name}, {"lines", input.listing.lines}, {"lineOf", input.listing.lineOf}}},
-          {"run", runModel(*input.run, cell, input.outcome)}};
+          {"objects", objects}};
 }
 
-// The model goes into a <script type="application/json">; every '<' is
-// written as \u003c so that no text in it can close or comment the element.
-std::string animationHtml(const AnimationInput& input) {
-  const Json model = animationModel(input);
+Json animationModel(const AnimationInput& input) {
+  const workcell::Workcell& cell = *input.cell;
+  Json model = {{"title", fmt::format("{} on {}", input.listing.name, cell.name)}, {"cell", cell.name}};
+  const Json drawing = cellDrawing(cell, input.camera);
+  for (const auto& [key, value] : drawing.items()) model[key] = value;
+  model["program"] = {{"name", input.listing.name}, {"lines", input.listing.lines}, {"lineOf", input.listing.lineOf}};
+  model["run"] = runModel(*input.run, cell, input.outcome);
+  return model;
+}
+
+std::string scriptSafeJson(const Json& model) {
   std::string json = model.dump(-1, ' ', false, Json::error_handler_t::replace);
   std::string safe;
   safe.reserve(json.size());
@@ -214,6 +204,12 @@ std::string animationHtml(const AnimationInput& input) {
     else
       safe += c;
   }
+  return safe;
+}
+
+std::string animationHtml(const AnimationInput& input) {
+  const Json model = animationModel(input);
+  const std::string safe = scriptSafeJson(model);
   std::string html;
   html.reserve(safe.size() + pageScript().size() + pageStyle().size() + 4096);
   html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -229,12 +225,29 @@ std::string animationHtml(const AnimationInput& input) {
   html += "<script type=\"application/json\" id=\"robotsim-model\">";
   html += safe;
   html += "</script>\n<script>\n";
+  html += drawScript();
+  html += "</script>\n<script>\n";
   html += pageScript();
   html += "</script>\n</body>\n</html>\n";
   return html;
 }
 
+std::string escapeHtml(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
 std::string_view pageScript() { return page::kScript; }
+std::string_view drawScript() { return page::kDrawScript; }
 std::string_view pageStyle() { return page::kStyle; }
 
 }  // namespace rs::render

@@ -60,8 +60,21 @@ nlohmann::ordered_json animationModel(const AnimationInput& input);
 /// The whole HTML page.
 std::string animationHtml(const AnimationInput& input);
 
-/// The page's parts, for tests that check the script separately.
+/// What every page draws a cell from: {"fit", "camera", "style",
+/// "robots", "objects"} (the first robot runs the program), as in
+/// animationModel. The shared drawing script (drawScript) reads it.
+nlohmann::ordered_json cellDrawing(const workcell::Workcell& cell, const Camera& camera);
+
+/// The page's parts, for tests that check the script separately, and for
+/// other pages that share them (the teach pendant's).
 std::string_view pageScript();
 std::string_view pageStyle();
+std::string_view drawScript();
+
+/// A model as the text of a <script type="application/json">: every '<'
+/// written as \u003c, so that no text in it can close or comment the element.
+std::string scriptSafeJson(const nlohmann::ordered_json& model);
+/// Text for HTML: & < > " escaped.
+std::string escapeHtml(std::string_view text);
 
 }  // namespace rs::render

@@ -108,8 +108,8 @@ void RunLogger::restore(const RunLog::Mark& mark, const SimMachine& machine) {
   takeStateOf(machine);
 }
 
-std::int32_t positionAt(const MotorMove& move, std::int32_t speed, vm::Micros t) {
-  return positionAt(MotorSegment{move.from, move.to, move.start, move.end}, speed, t);
+std::int32_t positionAt(const MotorMove& move, const vm::MotorSpec& motor, vm::Micros t) {
+  return positionAt(MotorSegment{move.from, move.to, move.start, move.end}, motor, t);
 }
 
 RunState stateAtStep(const RunLog& log, std::size_t step, vm::Micros t) {
@@ -117,7 +117,7 @@ RunState stateAtStep(const RunLog& log, std::size_t step, vm::Micros t) {
   s.step = step;
   s.encoders.assign(log.motors.size(), 0);
   for (std::size_t m = 0; m < log.motors.size(); ++m)
-    if (const MotorMove* move = lastUpTo(log.moves[m], step)) s.encoders[m] = positionAt(*move, log.motors[m].speed, t);
+    if (const MotorMove* move = lastUpTo(log.moves[m], step)) s.encoders[m] = positionAt(*move, log.motors[m], t);
   if (const OutputChange* o = lastUpTo(log.outputs, step)) s.outputs = o->outputs;
   if (const CameraChange* c = lastUpTo(log.cameras, step)) s.view = c->view, s.window = c->window;
   auto level = std::upper_bound(log.inputs.begin(), log.inputs.end(), t,

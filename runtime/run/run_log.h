@@ -133,7 +133,7 @@ RunState stateAtStep(const RunLog& log, std::size_t step, vm::Micros t);
 /// Variable slot `slot`'s value at time t (after every write due at t).
 std::int32_t variableAt(const RunLog& log, std::uint32_t slot, vm::Micros t);
 
-/// positionAt (what SimMachine answers) for one logged move.
-std::int32_t positionAt(const MotorMove& move, std::int32_t speed, vm::Micros t);
+/// positionAt (runtime/motion.h, what SimMachine answers) for one logged move.
+std::int32_t positionAt(const MotorMove& move, const vm::MotorSpec& motor, vm::Micros t);
 
 }  // namespace rs::runtime

@@ -43,6 +43,9 @@ class Mark3 final : public Controller {
 
   std::string refuse(std::span<const std::int32_t>) const override { return {}; }
 
+  // The Mark III reports steps done, not positions: the host's tracked counts stay.
+  Status readPositions(std::span<std::int32_t>) override { return Status::ok(); }
+
   Status move(std::span<const std::int32_t> targets, std::span<std::int32_t> positions) override {
     std::vector<Track> tracks(motors_.size());
     const Micros start = s_.now();

@@ -64,6 +64,8 @@ class Mark4 final : public Controller {
     return readPositions(positions, nullptr);
   }
 
+  Status readPositions(std::span<std::int32_t> positions) override { return readPositions(positions, nullptr); }
+
   std::string refuse(std::span<const std::int32_t> targets) const override {
     for (std::size_t i = 0; i < targets.size(); ++i)
       if (std::abs(targets[i]) > kMaxDestination)

@@ -142,6 +142,12 @@ Status RhinoMachine::setOutput(int output, bool on) {
   return Status::ok();
 }
 
+Status RhinoMachine::readPositions() {
+  if (Status st = ready(); !st) return st;
+  if (Status st = controller_->readPositions(positions_); !st) return fail(st);
+  return readInputs();
+}
+
 Status RhinoMachine::readInputs() {
   std::uint8_t mask = 0;
   if (Status st = controller_->readInputs(mask); !st) return fail(st);

@@ -72,6 +72,11 @@ class RhinoMachine final : public vm::Machine {
   /// Drives every motor back to where open() found it (a real arm cannot
   /// jump): takes the time the move takes.
   vm::Status reset() override;
+  /// The controller's encoder counts become positions() (a teach pendant's
+  /// "read position"); a Mark III cannot report them and keeps the tracked ones.
+  vm::Status readPositions();
+  /// Whether the controller can report its encoder counts (Mark IV).
+  bool reportsPositions() const { return settings_.dialect == Dialect::Mark4; }
   void window(std::int32_t, std::int32_t, std::int32_t) override {}
   void view(std::int32_t, std::int32_t, std::int32_t) override {}
   vm::Micros now() const override;

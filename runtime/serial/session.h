@@ -84,6 +84,9 @@ class Controller {
   /// Homes every motor against its switch; positions end at 0.
   virtual vm::Status home(std::span<std::int32_t> positions) = 0;
   virtual vm::Status readInputs(std::uint8_t& mask) = 0;
+  /// The controller's encoder counts, where it can report them (Mark IV);
+  /// a Mark III has no such query: the counts the host tracked stay.
+  virtual vm::Status readPositions(std::span<std::int32_t> positions) = 0;
   /// Output `line` (1..8) turns `on`; `mask` is every output after the change.
   virtual vm::Status writeOutput(int line, bool on, std::uint8_t mask) = 0;
   /// Sends stop to every motor, whatever state the line is in; returns

@@ -86,6 +86,16 @@ const gantryHtml = path.join(out, 'gantry.html');
 robotsim(['animate', gantryProgram, '--cell', 'gantry-cell', '-o', gantryHtml]);
 const GANTRY_AT = { before: 2, closing: 3.1, carrying: 8, opening: 12.4, away: 14 };  // seconds
 const gantryStills = stills(gantryProgram, 'gantry-cell', Object.values(GANTRY_AT));
+// The IRB 120's joints accelerate (runtime/motion.h, mirrored in the page
+// with BigInt): a trapezoid on G and F (0 to 0.449287 s), a triangle on E
+// (to 0.533805 s), the gripper's fixed 0.1 s (to 0.633805 s); moments in
+// each phase of each.
+const trapezoidProgram = path.join(out, 'irb120_moves.rsp');
+fs.writeFileSync(trapezoidProgram, ['MOVE 9000 3000 0 0 0 0 0', 'MOVE 0 0 500 0 0 0 0', 'MOVE 0 0 0 0 0 0 60', 'END', '']
+  .join('\n'));
+const trapezoidHtml = path.join(out, 'irb120.html');
+robotsim(['animate', trapezoidProgram, '--cell', 'irb120-cell', '-o', trapezoidHtml]);
+const trapezoidStills = stills(trapezoidProgram, 'irb120-cell', [0.05, 0.15, 0.3, 0.42, 0.48, 0.52, 0.58]);
 
 // Largest difference between the page's lines and tools and render's.
 function difference(mine, reference) {
@@ -221,6 +231,11 @@ try {
   await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
   await compare(viewStills);
 
+  // ---- accelerating joints and a timed gripper: the page's poses are render's
+  await page.goto('file://' + trapezoidHtml);
+  await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
+  await compare(trapezoidStills);
+
   // ---- the carried block moves with the gripper; the other block does not
   await page.goto('file://' + gantryHtml);
   await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
@@ -265,6 +280,7 @@ try {
   check(othersStill, 'the other block and the pallets do not move');
 
   const foreign = requests.filter((u) => u !== url && u !== 'file://' + viewHtml && u !== 'file://' + gantryHtml &&
+                                         u !== 'file://' + trapezoidHtml &&
                                          !u.startsWith('data:'));
   check(foreign.length === 0, 'nothing but the page itself was requested', foreign.join(' '));
   check(errors.length === 0, 'no errors on the way', errors.join('; '));

@@ -121,9 +121,9 @@ TEST_CASE("did you mean: misspelled description keywords", "[compiler][hints][mo
             "'LIGHTGREY' | did you mean 'LIGHTGRAY'?",
             "6:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'SPIN' | ",
             "9:16: expected LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, "
-            "GRIPPER or END, found 'ORIGN' | did you mean 'ORIGIN'?",
+            "ACCELERATION, GRIPPER or END, found 'ORIGN' | did you mean 'ORIGIN'?",
             "10:11: expected REVOLUTE or PRISMATIC, found 'REVOLUT' | did you mean 'REVOLUTE'?",
             "11:21: expected LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, "
-            "GRIPPER or END, found 'LETTR' | did you mean 'LETTER'?",
+            "ACCELERATION, GRIPPER or END, found 'LETTR' | did you mean 'LETTER'?",
             "14:3: expected ROBOT, OBJECT or END, found 'ROBOTT' | did you mean 'ROBOT'?"});
 }

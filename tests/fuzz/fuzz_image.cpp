@@ -37,7 +37,7 @@ extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t s
   };
   std::memcpy(data, rs::vm::kImageMagic.data(), rs::vm::kImageMagic.size());
   le(8, rs::vm::kImageVersionMajor, 2);
-  le(10, rs::vm::kImageVersionMinor, 2);
+  le(10, data[10] & 1u, 2);  // 1.0 or 1.1 (the motion section), as the mutation left it
   const std::size_t payload = size - rs::vm::kImageHeaderBytes;
   le(12, static_cast<std::uint32_t>(payload), 4);
   le(16, rs::vm::crc32(data + rs::vm::kImageHeaderBytes, payload), 4);

@@ -86,6 +86,25 @@ const std::map<std::string, std::vector<Row>>& publishedTables() {
       // Cartesian (Spong, Hutchinson & Vidyasagar): theta 0/-90/0 fixed,
       // alpha -90/90/0, a = 0; homes d = 500, 400, 800.
       {"gantry", {pri(0, -90, 0, 500), pri(-90, 90, 0, 400), pri(0, 0, 0, 800)}},
+      // ABB IRB 120 (product specification 3HAC035960-001): axis 2 290 above
+      // the base, upper arm 270, axis 4 70 above axis 3, wrist centre 302 in
+      // front, flange 72 beyond it (+ our gripper's 80: d6 152); alpha
+      // -90/0/-90/90/-90/0; home theta2 = -90 (upper arm vertical).
+      {"abb-irb120",
+       {rev(0, -90, 0, 290), rev(-90, 0, 270, 0), rev(0, -90, 70, 0), rev(0, 90, 0, 302), rev(0, -90, 0, 0),
+        rev(0, 0, 0, 152)}},
+      // Adept One: inner link 425, outer link 375 (reach 800); the heights
+      // (links 880 up, quill end 200 below them, tool 100 below that) are the
+      // file's stated estimates; alpha2 = 180 so that the quill goes down.
+      {"adept-one", {rev(0, 0, 425, 880), rev(0, 180, 375, 0), pri(0, 0, 0, 200), rev(0, 0, 0, 100)}},
+      // Mitsubishi RV-M1: shoulder 250 up (estimate), upper arm 220, forearm
+      // 160, no wrist offset, tool 172 (72 + our 100 mm hand); the XR-3's
+      // twists and soft home.
+      {"mitsubishi-rv-m1",
+       {rev(0, -90, 0, 250), rev(-90, 0, 220, 0), rev(90, 0, 160, 0), rev(0, -90, 0, 0), rev(-90, 0, 0, 172)}},
+      // Rhino XR-4: the XR-3's arm (Schilling 1990), as its file explains.
+      {"rhino-xr4",
+       {rev(0, -90, 0, 260.4), rev(-90, 0, 228.6, 0), rev(90, 0, 228.6, 0), rev(0, -90, 9.5, 0), rev(-90, 0, 0, 168.3)}},
   };
   return tables;
 }
@@ -257,6 +276,112 @@ TEST_CASE("The other library arms' base-to-tool matrices are their published pro
   checkMatrix("rhino-scara", {40, -75, 95, 120});
   checkMatrix("rhino-xr3", {-35, -60, 110, -25, 70});
   checkMatrix("gantry", {320, 655, 910});
+  checkMatrix("abb-irb120", {23.5, -41, 67, -112, 38, 151});
+  checkMatrix("adept-one", {40, -75, 95, 120});
+  checkMatrix("mitsubishi-rv-m1", {-35, -60, 110, -25, 70});
+  checkMatrix("rhino-xr4", {-35, -60, 110, -25, 70});
+}
+
+namespace {
+
+// A frame's origin at home in frame-0 coordinates (`robotsim matrix ROBOT 0 J`).
+std::array<double, 3> homeOrigin(const std::string& robot, int frame) {
+  const rs::testing::CliResult r = runCli({"matrix", robot, "0", std::to_string(frame), "--json"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  return {j["matrix"][0][3].get<double>(), j["matrix"][1][3].get<double>(), j["matrix"][2][3].get<double>()};
+}
+
+// Each motor's range and speed in degrees (or mm) and degrees (mm) per second.
+struct MotorFigures {
+  double low, high, speed;
+};
+
+std::vector<MotorFigures> motorFigures(const std::string& robot) {
+  rs::compiler::Library lib(rs::compiler::librarySearchPath({}));
+  const auto r = lib.robot(robot);
+  REQUIRE(r.has_value());
+  std::vector<MotorFigures> out;
+  for (const auto& j : r->joints) out.push_back({j.min * j.precision, j.max * j.precision, j.speed * j.precision});
+  return out;
+}
+
+void checkFigures(const std::string& robot, const std::vector<MotorFigures>& published) {
+  const std::vector<MotorFigures> got = motorFigures(robot);
+  REQUIRE(got.size() == published.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    INFO(robot << " joint " << i + 1);
+    CHECK(got[i].low == Approx(published[i].low));
+    CHECK(got[i].high == Approx(published[i].high));
+    CHECK(got[i].speed == Approx(published[i].speed));
+  }
+}
+
+}  // namespace
+
+// The published geometry by hand: frame 0 has x forward, z up, y = z × x.
+TEST_CASE("The new arms reach as far as their makers say", "[library]") {
+  // IRB 120: the wrist centre (frame 4) at the calibration position is 302
+  // in front of axis 1 and 630 above the base; stretched out, 580 from
+  // axis 2 (the specification's reach): 270 + sqrt(70² + 302²) = 580.01.
+  const auto wrist = homeOrigin("abb-irb120", 4);
+  CHECK(wrist[0] == Approx(302).margin(1e-9));
+  CHECK(wrist[1] == Approx(0).margin(1e-9));
+  CHECK(wrist[2] == Approx(630).margin(1e-9));
+  CHECK(270 + std::hypot(70.0, 302.0) == Approx(580).margin(0.5));
+  // Adept One: the quill 425 + 375 = 800 from joint 1's axis (its reach).
+  const auto quill = homeOrigin("adept-one", 3);
+  CHECK(std::hypot(quill[0], quill[1]) == Approx(800).margin(1e-9));
+  CHECK(quill[2] == Approx(680).margin(1e-9));
+  // RV-M1: the wrist pitch axis 220 + 160 from the shoulder's axis when
+  // the arm is stretched out level: at home the elbow is straight up 220
+  // above the shoulder, the wrist 160 in front of it.
+  const auto pitch = homeOrigin("mitsubishi-rv-m1", 3);
+  CHECK(pitch[0] == Approx(160).margin(1e-9));
+  CHECK(pitch[2] == Approx(250 + 220).margin(1e-9));
+  // XR-4: 9 in upper arm and forearm (228.6 mm), shoulder 260.4 up.
+  const auto xr4 = homeOrigin("rhino-xr4", 3);
+  CHECK(xr4[0] == Approx(228.6).margin(1e-9));
+  CHECK(xr4[2] == Approx(260.4 + 228.6).margin(1e-9));
+}
+
+TEST_CASE("The new arms' joint ranges and speeds are the published ones", "[library]") {
+  // IRB 120 product specification: degrees and degrees per second.
+  checkFigures("abb-irb120",
+               {{-165, 165, 250}, {-110, 110, 250}, {-110, 70, 250}, {-160, 160, 320}, {-120, 120, 320}, {-400, 400, 420}});
+  // Adept One: joint 3 in mm (195 of stroke, 500 mm/s).
+  checkFigures("adept-one", {{-150, 150, 540}, {-147, 147, 540}, {0, 195, 500}, {-277, 277, 3300}});
+  // RV-M1 instruction manual: waist 300, shoulder 130, elbow 110, pitch 180,
+  // roll 360 degrees of travel (the elbow's down from level: positive in
+  // our D-H sense, see the file).
+  checkFigures("mitsubishi-rv-m1", {{-150, 150, 120}, {-30, 100, 72}, {0, 110, 109}, {-90, 90, 100}, {-180, 180, 163}});
+  // XR-4 brochure travel (waist 350, shoulder 210, elbow 265, pitch 270
+  // degrees, roll kept to 360), centred on home; speeds our choice, as on
+  // the XR-3 (300, 300, 300, 400, 500 units/s at 0.1 deg).
+  checkFigures("rhino-xr4", {{-175, 175, 30}, {-105, 105, 30}, {-132.5, 132.5, 30}, {-135, 135, 40}, {-180, 180, 50}});
+}
+
+TEST_CASE("The IRB 120's acceleration reaches the machine: a 90 degree turn is a trapezoid", "[library]") {
+  // Axis 1 (G): 250 deg/s, 2800 deg/s² (25000 units/s, 280000 units/s²,
+  // 0.01 deg a unit). 90 deg = 9000 units: accelerating takes
+  // v/a = 25000/280000 s = 89285.7 µs (89286 whole) over v²/2a = 1116.07
+  // units, braking the same; the 6767.86 units between at 25000/s take
+  // (9000·280000 − 25000²)/(25000·280000) s = 0.2707142857 s (270715 whole):
+  // 2·89286 + 270715 = 449287 µs, the exact 9000/25000 + 25000/280000 =
+  // 0.4492857 s rounded up.
+  Scratch scratch;
+  const std::string program = scratch.write("turn.rsp", "MOVE 9000 0 0 0 0 0 0\nEND\n");
+  const rs::testing::CliResult r = runCli({"run", program, "--cell", "irb120-cell", "--profile", "--format=json"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["profile"]["total_us"] == 449287);
+  CHECK(j["profile"]["moving_us"] == 449287);
+  // The gripper's fixed 0.1 s: closing by any amount takes 100000 µs.
+  const std::string grip = scratch.write("grip.rsp", "MOVE 0 0 0 0 0 0 7\nMOVE 0 0 0 0 0 0 80\nEND\n");
+  const auto g = nlohmann::json::parse(runCli({"run", grip, "--cell", "irb120-cell", "--profile", "--format=json"}).out);
+  CHECK(g["profile"]["gripper_us"] == 200000);
 }
 
 TEST_CASE("Rhino SCARA's motors are the paper's Table 6, then the gripper", "[library]") {
@@ -336,5 +461,55 @@ TEST_CASE("Closing each library gripper brings its fingers to the tool axis", "[
     const auto closed = rs::kinematics::fingerTransforms(g.model, g.max);
     CHECK(spread(g.finger2, closed.finger2) < spread(g.finger2, open.finger2));
     CHECK(spread(g.finger3, closed.finger3) < spread(g.finger3, open.finger3));
+  }
+}
+
+TEST_CASE("In each new workcell the arm can take a block, at encoder counts worked out by hand", "[library]") {
+  // Inverse kinematics by hand (law of cosines in the arm's vertical plane,
+  // tool pointing down), rounded to whole encoder units:
+  //  - adept-cell, block 1 centred at (20, 520, 600): in frame 0 (x
+  //    forward, y = -z of the world) X 20, Y -600; cos th2 = (20² + 600² −
+  //    425² − 375²) / (2·425·375) = 0.12282, th2 = −82.95°, th1 =
+  //    atan2(−600, 20) − atan2(375 sin th2, 425 + 375 cos th2) = −49.78°;
+  //    C lowers the tool centre from 580 to 520: 60 mm = 6000.
+  //  - rv-m1-cell, block on the pallet centred at (220, 800, 0): the wrist
+  //    pitch axis 172 above it, (220, 222) from the base, (220, −28) from
+  //    the shoulder: r = 221.8; elbow bend 180° − acos((220² + 160² − r²) /
+  //    (2·220·160)) = 110.64° (D = (110.64 − 90) / 0.1 = 206); upper arm
+  //    atan2(−28, 220) + acos((220² + r² − 160²) / (2·220·r)) = 35.22° up
+  //    (E = 548); pitch −75.42° to point the tool down (C = −754).
+  //  - xr4-cell, block centred at (240, 800, −40): th1 = atan2(40, 240) =
+  //    9.46° (F = 95); the pitch axis 168.3 above and 9.5 nearer than the
+  //    tool centre: 233.8 out, 42.1 below the shoulder; both links 228.6:
+  //    bend 117.39° (D = 274), upper arm 48.48° up (E = 415), pitch −68.91°
+  //    (C = −689).
+  //  - irb120-cell, block on the pallet centred at (280, 800, 0): the wrist
+  //    centre 152 above it, (280, −88) from axis 2; sides 270 and
+  //    sqrt(70² + 302²) = 310.01: upper arm 49.15° up (F = 4085); the
+  //    forearm's offset 13.05° gives th3 = 42.70° (E = 4270); th5 = 6.45°
+  //    points the tool down (C = 645).
+  // Then the gripper closes: the block is held, the tool centre in it.
+  struct Pick {
+    std::string cell, moveTo, close;
+    std::array<double, 3> centre;
+  };
+  const std::vector<Pick> picks{
+      {"adept-cell", "MOVETO -4978 -8294 6000 0 0", "MOVE 0 0 0 0 80", {20, 520, 600}},
+      {"rv-m1-cell", "MOVETO 0 548 206 -754 0 0", "MOVE 0 0 0 0 0 80", {220, 800, 0}},
+      {"xr4-cell", "MOVETO 95 415 274 -689 0 0", "MOVE 0 0 0 0 0 115", {240, 800, -40}},
+      {"irb120-cell", "MOVETO 0 4085 4270 0 645 0 0", "MOVE 0 0 0 0 0 0 80", {280, 800, 0}},
+  };
+  Scratch scratch;
+  for (const Pick& p : picks) {
+    INFO(p.cell);
+    const std::string program = scratch.write(p.cell + ".rsp", p.moveTo + "\n" + p.close + "\nEND\n");
+    const rs::testing::CliResult r = runCli({"run", program, "--cell", p.cell, "--format=json"});
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    for (int k = 0; k < 3; ++k) CHECK(j["tcp"][k].get<double>() == Approx(p.centre[k]).margin(0.5));
+    int held = 0;
+    for (const auto& o : j["objects"]) held += o["held"].get<bool>() ? 1 : 0;
+    CHECK(held == 1);
   }
 }

@@ -109,6 +109,16 @@ TEST_CASE("lsp: hover shows the tool centre point on the cell the directive name
                               "Tool centre point of gantry: (220, 50, 680)");
 }
 
+TEST_CASE("lsp: hover lists a motor's acceleration and a gripper's actuation time", "[lsp][features][cell]") {
+  // stdlib/robots/abb-irb120.rsd: G 25000 units/s, 280000 units/s²; the
+  // gripper A 900 units/s with a fixed 0.1 s.
+  Opened o("; cell: irb120-cell\n        MOVE 9000 0 0 0 0 0 0\n        END\n");
+  CHECK(o.s.diagnostics(kUri) == Json::array());
+  const std::string move = o.hoverText(1, 9).get<std::string>();
+  CHECK(move.find("- `G` revolute, -16500..16500, 25000 units/s, 280000 units/s²") != std::string::npos);
+  CHECK(move.find("- `A` gripper, 0..90, 900 units/s, 0.100 s a move") != std::string::npos);
+}
+
 TEST_CASE("lsp: the robotsim.cell setting, and the directive over it", "[lsp][features][cell]") {
   LspSession s;
   s.initialize(Json::object(), {{"robotsim", {{"cell", "gantry-cell"}}}});

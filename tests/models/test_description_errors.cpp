@@ -143,7 +143,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
                      }));
   const std::string colour = "a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15";
   const std::string robotStatements =
-      "LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, GRIPPER or END";
+      "LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, ACCELERATION, GRIPPER or END";
   const Strings expected{
       "p.rsd:1:1: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found 'stray'",
       "p.rsd:2:8: unexpected 'extra' after the LINK name (statements go on the next lines)",
@@ -161,7 +161,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       "p.rsd:14:5: END takes nothing after it, found 'foo'",
       "p.rsd:16:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'LINK'",
       "p.rsd:17:12: expected the BOX's bottom edge before the end of the line",
-      "p.rsd:20:3: expected BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, AXIS2, AXIS3, NORMAL, APPROACH or END, "
+      "p.rsd:20:3: expected BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, ACCELERATION, ACTUATION, AXIS2, AXIS3, NORMAL, APPROACH or END, "
       "found 'GRASP'",
       "p.rsd:21:10: expected a motor letter A..Z, found '5'",
       "p.rsd:22:10: expected a motor letter A..Z, found 'AB'",
@@ -449,6 +449,21 @@ TEST_CASE("description: joints", "[models]") {
     // "expected LINK, ..., LETTER, ..., found 'LETTER'" contradicts itself.
     CHECK(d[0].find("found 'LETTER'") == std::string::npos);
   }
+  SECTION("an acceleration must let the motor reach its speed in less than 1000 s") {
+    // 5000 units/s at 5 units/s² takes 1000 s: at least 5000 / 1000 + 1 = 6.
+    CHECK(robot({"  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10 SPEED 5000 ACCELERATION 5",
+                 "  JOINT 2 REVOLUTE LETTER Q PRECISION 1 RANGE -10 10 SPEED 5000 ACCELERATION 6"}) ==
+          Strings{"r.rsd:8:78: acceleration 5 takes 1000 s or more to reach speed 5000: give at least 6"});
+  }
+  SECTION("an acceleration of 0, and ACTUATION on a joint") {
+    const Strings d = robot({"  JOINT 1 REVOLUTE LETTER P PRECISION 1 RANGE -10 10 ACCELERATION 0",
+                             "  JOINT 2 REVOLUTE LETTER Q PRECISION 1 RANGE -10 10 ACTUATION 0.5"});
+    REQUIRE(d.size() == 2);
+    CHECK(d[0] == "r.rsd:8:67: an acceleration must be 1..1000000000 encoder units per second squared (leave it out "
+                  "for a motor that starts and stops at full speed)");
+    CHECK(d[1].rfind("r.rsd:9:54: expected LINK, FRAME", 0) == 0);
+    CHECK(d[1].find("found 'ACTUATION'") != std::string::npos);
+  }
   SECTION("a joint without LETTER does not also clash with another joint's letter A") {
     CHECK(robot({"  JOINT 1 REVOLUTE PRECISION 1 RANGE -10 10", "  JOINT 2 REVOLUTE LETTER A PRECISION 1 RANGE -10 10"}) ==
           Strings{"r.rsd:8:9: JOINT 1 has no LETTER"});
@@ -460,6 +475,28 @@ TEST_CASE("description: grippers", "[models]") {
   SECTION("the reference gripper is sound") {
     dir.write("g.rsd", gripperFile(kGripperLines));
     CHECK(robotErrors(dir, "g.rsd").empty());
+  }
+  SECTION("ACTUATION: more than 0 and at most 60 s, kept in whole microseconds") {
+    for (const auto& [value, error] : std::vector<std::pair<std::string, std::string>>{
+             {"0", "g.rsd:7:13: an actuation time must be more than 0 and at most 60 s"},
+             {"60.5", "g.rsd:7:13: an actuation time must be more than 0 and at most 60 s"},
+             {"-1", "g.rsd:7:13: an actuation time must be more than 0 and at most 60 s"}}) {
+      Strings g = kGripperLines;
+      g.insert(g.begin() + 6, "  ACTUATION " + value);  // line 7
+      dir.write("g.rsd", gripperFile(g));
+      INFO(value);
+      CHECK(robotErrors(dir, "g.rsd") == Strings{error});
+    }
+    Strings g = kGripperLines;
+    g.insert(g.begin() + 6, "  ACTUATION 0.25  ACCELERATION 800");
+    dir.write("g.rsd", gripperFile(g));
+    Library lib({dir.path()});
+    const auto robot = lib.robot(dir.file("g.rsd"));
+    REQUIRE(robot.has_value());
+    const rs::vm::MotorSpec hand = rs::compiler::motorTable(*robot).back();
+    CHECK(hand.kind == rs::vm::JointKind::Gripper);
+    CHECK(hand.actuation == 250'000);
+    CHECK(hand.acceleration == 800);
   }
   SECTION("each missing part is reported") {
     const std::vector<std::pair<std::size_t, std::string>> parts{

@@ -123,11 +123,12 @@ TEST_CASE("The instruction that stops a run is the recording's last step", "[ren
 }
 
 TEST_CASE("one positionAt for the machine and the recording, segments compared by value", "[render]") {
+  const rs::vm::MotorSpec speed3{'A', rs::vm::JointKind::Revolute, 1.0, -100, 100, 3};  // 3 units/s
   const rs::runtime::MotorSegment up{0, 7, 0, 2'333'334};
-  CHECK(rs::runtime::positionAt(up, 3, 999'999) == 2);
-  CHECK(rs::runtime::positionAt(rs::runtime::MotorSegment{7, 0, 0, 2'333'334}, 3, 999'999) == 5);
-  CHECK(rs::runtime::positionAt(up, 3, -5) == 0);
-  CHECK(rs::runtime::positionAt(up, 3, 9'000'000) == 7);
+  CHECK(rs::runtime::positionAt(up, speed3, 999'999) == 2);
+  CHECK(rs::runtime::positionAt(rs::runtime::MotorSegment{7, 0, 0, 2'333'334}, speed3, 999'999) == 5);
+  CHECK(rs::runtime::positionAt(up, speed3, -5) == 0);
+  CHECK(rs::runtime::positionAt(up, speed3, 9'000'000) == 7);
   CHECK(up == rs::runtime::MotorSegment{0, 7, 0, 2'333'334});
   CHECK_FALSE(up == rs::runtime::MotorSegment{0, 7, 0, 2'333'335});
   CHECK_FALSE(up == rs::runtime::MotorSegment{1, 7, 0, 2'333'334});
@@ -136,14 +137,15 @@ TEST_CASE("one positionAt for the machine and the recording, segments compared b
   const bool moved = static_cast<bool>(machine.moveTo(std::vector<std::int32_t>{7}));
   REQUIRE(moved);
   for (const Micros t : {Micros{0}, Micros{999'999}, Micros{1'000'000}, Micros{2'333'333}, Micros{5'000'000}})
-    CHECK(machine.positionAt(0, t) == rs::runtime::positionAt(machine.segment(0), 3, t));
+    CHECK(machine.positionAt(0, t) == rs::runtime::positionAt(machine.segment(0), speed3, t));
 }
 
 TEST_CASE("positionAt rounds toward the segment's start, as SimMachine does", "[render]") {
+  const rs::vm::MotorSpec speed3{'A', rs::vm::JointKind::Revolute, 1.0, -100, 100, 3};  // 3 units/s
   const rs::runtime::MotorMove up{0, 0, 7, 0, 2'333'334}, down{0, 7, 0, 0, 2'333'334};
-  CHECK(rs::runtime::positionAt(up, 3, 1'000'000) == 3);
-  CHECK(rs::runtime::positionAt(up, 3, 999'999) == 2);
-  CHECK(rs::runtime::positionAt(down, 3, 999'999) == 5);
-  CHECK(rs::runtime::positionAt(up, 3, -5) == 0);
-  CHECK(rs::runtime::positionAt(up, 3, 9'000'000) == 7);
+  CHECK(rs::runtime::positionAt(up, speed3, 1'000'000) == 3);
+  CHECK(rs::runtime::positionAt(up, speed3, 999'999) == 2);
+  CHECK(rs::runtime::positionAt(down, speed3, 999'999) == 5);
+  CHECK(rs::runtime::positionAt(up, speed3, -5) == 0);
+  CHECK(rs::runtime::positionAt(up, speed3, 9'000'000) == 7);
 }

@@ -1,0 +1,112 @@
+// teach_bench (run by `make bench`): what a teach pendant's actions cost.
+// A POINTS edit on a program of 10,000 points (the edit re-lays one row
+// but rescans the section), a whole guarded write (read back, hash,
+// atomic write) of a 1,000-point program, and a jog's round trip through
+// the live server on 127.0.0.1 (HTTP POST, the simulated move, the state
+// republished), with the page's and the state's sizes. Prints figures for
+// docs/performance.md; not a test.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <vector>
+
+#include "base/file_io.h"
+#include "compiler/library.h"
+#include "launch/program.h"
+#include "teach/live_server.h"
+#include "teach/page.h"
+#include "teach/pendant_source.h"
+
+// Last: its <resolv.h> defines _res, a name Eigen's headers use.
+#include <httplib.h>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double micros(Clock::duration d) { return std::chrono::duration<double, std::micro>(d).count(); }
+
+struct Stats {
+  double median = 0, p95 = 0, best = 0;
+};
+Stats stats(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return {v[v.size() / 2], v[v.size() * 95 / 100], v.front()};
+}
+
+std::string program(int points) {
+  std::string text = "        MOVEP P0                ; a program\n        END\nPOINTS\n";
+  for (int i = 0; i < points; ++i) text += fmt::format("P{:<6} {:5} {:5} {:5} {:5} {:5}\n", i, i % 900, -i % 500, 0, 0, 0);
+  return text;
+}
+
+}  // namespace
+
+int main() {
+  using rs::teach::PointsText;
+  const std::vector<std::int32_t> values{1, 2, 3, 4, 5};
+  {
+    const std::string text = program(10'000);
+    std::vector<double> add, replace;
+    for (int r = 0; r < 21; ++r) {
+      PointsText p(text);
+      auto t0 = Clock::now();
+      if (!p.add("NEWPOINT", values).empty()) return 1;
+      auto t1 = Clock::now();
+      if (!p.replace("P5000", values).empty()) return 1;
+      auto t2 = Clock::now();
+      add.push_back(micros(t1 - t0)), replace.push_back(micros(t2 - t1));
+    }
+    const Stats a = stats(add), b = stats(replace);
+    fmt::print("POINTS edit, 10,000 points ({} KiB): add median {:.0f} us (best {:.0f}), replace median {:.0f} us\n",
+               text.size() / 1024, a.median, a.best, b.median);
+  }
+  const auto dir = std::filesystem::temp_directory_path() / "robotsim-teach-bench";
+  std::filesystem::create_directories(dir);
+  {
+    const std::string path = (dir / "big.rsp").string();
+    std::string error;
+    if (!rs::base::writeFileAtomically(path, program(1'000), error)) return 1;
+    std::optional<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path, error);
+    std::vector<double> writes;
+    for (int r = 0; r < 21; ++r) {
+      const auto t0 = Clock::now();
+      if (!file->change([&](PointsText& p) { const std::vector<std::int32_t> v{r, 0, 0, 0, 0};
+        return p.replace("P10", v); }).empty()) return 1;
+      writes.push_back(micros(Clock::now() - t0));
+    }
+    const Stats w = stats(writes);
+    fmt::print("guarded write of a 1,000-point program: median {:.0f} us, p95 {:.0f} us\n", w.median, w.p95);
+  }
+  {
+    rs::compiler::Library library(rs::compiler::librarySearchPath({}));
+    auto cell = std::make_shared<const rs::workcell::Workcell>(*library.workcell("scara-pick"));
+    const std::string path = (dir / "jog.rsp").string();
+    std::string error;
+    if (!rs::base::writeFileAtomically(path, "        END\nPOINTS\n", error)) return 1;
+    rs::teach::Pendant pendant(cell, rs::launch::cellTarget(*cell).motors, *rs::teach::ProgramFile::load(path, error));
+    rs::teach::PendantSource source(pendant, rs::teach::teachPageHtml(*cell, path));
+    rs::teach::LiveServer server(source, rs::teach::randomToken());
+    if (!server.start("127.0.0.1", 0, error)) return 1;
+    httplib::Client client("127.0.0.1", server.port());
+    client.set_keep_alive(true);
+    client.set_tcp_nodelay(true);
+    const std::string route = "/api/command?token=" + server.token();
+    std::vector<double> jogs;
+    for (int i = 0; i < 500; ++i) {
+      const std::string body = fmt::format(R"({{"op":"jog","motor":0,"delta":{}}})", i % 2 ? -10 : 10);
+      const auto t0 = Clock::now();
+      const auto r = client.Post(route, body, "application/json");
+      if (!r || r->status != 200) return 1;
+      jogs.push_back(micros(Clock::now() - t0));
+    }
+    const Stats j = stats(jogs);
+    fmt::print("jog round trip over HTTP (scara-pick, keep-alive): median {:.0f} us, p95 {:.0f} us\n", j.median, j.p95);
+    fmt::print("page {} KiB, state {} bytes after a jog (with its motion frames)\n", source.page().size() / 1024,
+               source.state().size());
+  }
+  std::filesystem::remove_all(dir);
+  return 0;
+}

@@ -1,0 +1,96 @@
+#include "teach/commands.h"
+
+#include <fmt/format.h>
+
+#include <limits>
+
+namespace rs::teach {
+
+namespace {
+
+using Json = nlohmann::json;
+
+Outcome bad(std::string message) { return {false, std::move(message), true}; }
+
+// The argument `key` as a 32-bit integer, or nullopt.
+std::optional<std::int32_t> intArg(const Json& r, const char* key) {
+  const auto it = r.find(key);
+  if (it == r.end() || !it->is_number_integer()) return std::nullopt;
+  const std::int64_t v = it->get<std::int64_t>();
+  if (v < std::numeric_limits<std::int32_t>::min() || v > std::numeric_limits<std::int32_t>::max()) return std::nullopt;
+  return static_cast<std::int32_t>(v);
+}
+
+std::optional<std::string> stringArg(const Json& r, const char* key) {
+  const auto it = r.find(key);
+  if (it == r.end() || !it->is_string()) return std::nullopt;
+  return it->get<std::string>();
+}
+
+std::optional<bool> boolArg(const Json& r, const char* key) {
+  const auto it = r.find(key);
+  if (it == r.end() || !it->is_boolean()) return std::nullopt;
+  return it->get<bool>();
+}
+
+}  // namespace
+
+Outcome applyCommand(Pendant& p, const Json& r) {
+  if (!r.is_object()) return bad("a request is a JSON object with an \"op\"");
+  const std::optional<std::string> op = stringArg(r, "op");
+  if (!op) return bad("a request needs \"op\", a string");
+  const auto name = stringArg(r, "name");
+  if (*op == "jog" || *op == "set") {
+    const auto motor = intArg(r, "motor"), amount = intArg(r, *op == "jog" ? "delta" : "value");
+    if (!motor || *motor < 0 || !amount)
+      return bad(fmt::format("{} needs \"motor\" (0-based) and \"{}\", whole numbers", *op, *op == "jog" ? "delta" : "value"));
+    return *op == "jog" ? p.jog(static_cast<std::size_t>(*motor), *amount)
+                        : p.setMotor(static_cast<std::size_t>(*motor), *amount);
+  }
+  if (*op == "moveTo") {
+    const auto it = r.find("values");
+    if (it == r.end() || !it->is_array() || it->size() > 64) return bad("moveTo needs \"values\", one per motor");
+    std::vector<std::int32_t> values;
+    for (const Json& v : *it) {
+      if (!v.is_number_integer() || v.get<std::int64_t>() < std::numeric_limits<std::int32_t>::min() ||
+          v.get<std::int64_t>() > std::numeric_limits<std::int32_t>::max())
+        return bad("moveTo's values are whole numbers");
+      values.push_back(static_cast<std::int32_t>(v.get<std::int64_t>()));
+    }
+    return p.moveTo(values);
+  }
+  if (*op == "gripper") {
+    const auto close = boolArg(r, "close");
+    if (!close) return bad("gripper needs \"close\", true or false");
+    return p.gripper(*close);
+  }
+  if (*op == "teach" || *op == "reteach" || *op == "delete" || *op == "goTo") {
+    if (!name) return bad(fmt::format("{} needs \"name\", a string", *op));
+    if (*op == "teach") return p.teach(*name);
+    if (*op == "reteach") return p.reteach(*name);
+    if (*op == "delete") return p.remove(*name);
+    return p.goTo(*name);
+  }
+  if (*op == "rename") {
+    const auto from = stringArg(r, "from"), to = stringArg(r, "to");
+    if (!from || !to) return bad("rename needs \"from\" and \"to\", strings");
+    return p.rename(*from, *to);
+  }
+  if (*op == "input") {
+    const auto line = intArg(r, "line");
+    if (!line) return bad("input needs \"line\", 1..8");
+    return p.toggleInput(*line);
+  }
+  if (*op == "output") {
+    const auto line = intArg(r, "line");
+    const auto on = boolArg(r, "on");
+    if (!line || !on) return bad("output needs \"line\", 1..8, and \"on\", true or false");
+    return p.setOutput(*line, *on);
+  }
+  if (*op == "reset") return p.resetCell();
+  if (*op == "readPosition") return p.readPosition();
+  if (*op == "reload") return p.reload();
+  return bad(fmt::format("unknown op \"{}\"", *op));
+}
+
+}  // namespace rs::teach

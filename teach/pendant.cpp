@@ -1,0 +1,293 @@
+#include "teach/pendant.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "runtime/serial/rhino_machine.h"
+
+namespace rs::teach {
+
+namespace {
+
+// The run's program: one END. The pendant never steps it; the run is there
+// for its machine, world, views and snapshots.
+std::shared_ptr<const vm::Image> idleImage(const std::vector<vm::MotorSpec>& motors, const std::string& robot) {
+  auto image = std::make_shared<vm::Image>();
+  image->sourceName = "teach";
+  image->robotName = robot;
+  image->motors = motors;
+  image->code.push_back(vm::Instr{});
+  image->lines.push_back(0);
+  image->columns.push_back(0);
+  return image;
+}
+
+runtime::RunSpec specFor(const std::shared_ptr<const workcell::Workcell>& cell,
+                         const std::vector<vm::MotorSpec>& motors) {
+  runtime::RunSpec spec;
+  spec.image = idleImage(motors, cell->robots.front().robot.name);
+  spec.cell = cell;
+  return spec;
+}
+
+std::string valuesText(std::span<const std::int32_t> v) {
+  std::string s;
+  for (std::int32_t x : v) s += (s.empty() ? "" : " ") + std::to_string(x);
+  return s;
+}
+
+}  // namespace
+
+Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, ProgramFile file)
+    : cell_(std::move(cell)), motors_(std::move(motors)), file_(std::move(file)) {
+  run_ = std::make_unique<runtime::Run>(specFor(cell_, motors_));
+  start_ = run_->snapshot();
+  message_ = fmt::format("teaching {} on {}", file_.path(), cell_->name);
+}
+
+Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, ProgramFile file,
+                 std::unique_ptr<vm::Machine> device, std::string deviceName)
+    : cell_(std::move(cell)), motors_(std::move(motors)), file_(std::move(file)), device_(std::move(deviceName)) {
+  rhino_ = dynamic_cast<serial::RhinoMachine*>(device.get());
+  run_ = std::make_unique<runtime::Run>(specFor(cell_, motors_), std::move(device));
+  message_ = fmt::format("teaching {} on {} with the robot on {}", file_.path(), cell_->name, device_);
+}
+
+Pendant::~Pendant() = default;
+
+Outcome Pendant::done(Outcome o) {
+  message_ = o.message;
+  failed_ = !o.ok;
+  ++revision_;
+  return o;
+}
+
+Outcome Pendant::refuse(std::string message, bool bad) {
+  moved_ = false;
+  return done({false, std::move(message), bad});
+}
+
+// The one path that moves the robot: the fault check, the soft limits
+// (each motor's encoder range) before anything moves or is sent, then the
+// run's machine, so the world reacts as in a run.
+Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
+  if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
+  if (targets.size() != motors_.size())
+    return refuse(fmt::format("{} values for {} motors", targets.size(), motors_.size()), true);
+  for (std::size_t i = 0; i < targets.size(); ++i)
+    if (targets[i] < motors_[i].min || targets[i] > motors_[i].max)
+      return refuse(fmt::format("motor {}: {} is outside its range {}..{}: nothing moved", motors_[i].letter, targets[i],
+                                motors_[i].min, motors_[i].max));
+  const vm::Micros start = run_->clock();
+  const vm::Status status = run_->machine().moveTo(targets);
+  if (!status) {
+    moved_ = false;
+    if (!device_.empty()) fault_ = status.message;
+    return done({false, status.message});
+  }
+  moved_ = true;
+  moveStart_ = start;
+  moveEnd_ = run_->clock();
+  return done({true, fmt::format("moved to {}", valuesText(run_->motors()))});
+}
+
+Outcome Pendant::jog(std::size_t motor, std::int32_t delta) {
+  if (motor >= motors_.size()) return refuse(fmt::format("there is no motor {}", motor + 1), true);
+  const vm::MotorSpec& m = motors_[motor];
+  std::vector<std::int32_t> targets(run_->motors().begin(), run_->motors().end());
+  const std::int64_t wanted = std::int64_t{targets[motor]} + delta;
+  const std::int32_t to = static_cast<std::int32_t>(std::clamp<std::int64_t>(wanted, m.min, m.max));
+  if (to == targets[motor] && delta != 0)
+    return refuse(fmt::format("motor {} is at the end of its range ({})", m.letter, to));
+  targets[motor] = to;
+  Outcome o = moveTo(targets);
+  if (o.ok && to != wanted) message_ = o.message = fmt::format("motor {} stopped at the end of its range, {}", m.letter, to);
+  return o;
+}
+
+Outcome Pendant::setMotor(std::size_t motor, std::int32_t value) {
+  if (motor >= motors_.size()) return refuse(fmt::format("there is no motor {}", motor + 1), true);
+  std::vector<std::int32_t> targets(run_->motors().begin(), run_->motors().end());
+  targets[motor] = value;
+  return moveTo(targets);
+}
+
+std::optional<std::size_t> Pendant::gripperMotor() const {
+  for (std::size_t i = 0; i < motors_.size(); ++i)
+    if (motors_[i].kind == vm::JointKind::Gripper) return i;
+  return std::nullopt;
+}
+
+Outcome Pendant::gripper(bool close) {
+  const std::optional<std::size_t> g = gripperMotor();
+  if (!g) return refuse(fmt::format("robot {} has no gripper", cell_->robots.front().robot.name));
+  Outcome o = setMotor(*g, close ? motors_[*g].max : motors_[*g].min);
+  if (o.ok) {
+    const std::optional<std::size_t> held = run_->world() ? run_->world()->held() : std::nullopt;
+    message_ = o.message = close ? (held ? fmt::format("gripper closed: holds {}", cell_->objects[*held].shape.name)
+                                         : std::string("gripper closed: holds nothing"))
+                                 : std::string("gripper open");
+  }
+  return o;
+}
+
+Outcome Pendant::edit(const std::function<std::string(PointsText&)>& change, std::string message) {
+  moved_ = false;
+  if (std::string why = file_.change(change); !why.empty()) return done({false, std::move(why)});
+  return done({true, std::move(message)});
+}
+
+Outcome Pendant::teach(std::string_view name) {
+  const std::vector<std::int32_t> now(run_->motors().begin(), run_->motors().end());
+  return edit([&](PointsText& p) { return p.add(name, now); },
+              fmt::format("taught {} = {} (written to {})", name, valuesText(now), file_.path()));
+}
+
+Outcome Pendant::reteach(std::string_view name) {
+  const std::vector<std::int32_t> now(run_->motors().begin(), run_->motors().end());
+  return edit([&](PointsText& p) { return p.replace(name, now); },
+              fmt::format("re-taught {} = {} (written to {})", name, valuesText(now), file_.path()));
+}
+
+Outcome Pendant::remove(std::string_view name) {
+  return edit([&](PointsText& p) { return p.remove(name); },
+              fmt::format("deleted {} (written to {})", name, file_.path()));
+}
+
+Outcome Pendant::rename(std::string_view from, std::string_view to) {
+  return edit([&](PointsText& p) { return p.rename(from, to); },
+              fmt::format("renamed {} to {} (written to {})", from, to, file_.path()));
+}
+
+Outcome Pendant::goTo(std::string_view name) {
+  const PointsText& pts = file_.points();
+  const std::optional<std::size_t> p = pts.find(name);
+  if (!p) return refuse(fmt::format("there is no point {}", name));
+  const PointRow& row = pts.points()[*p];
+  if (!row.readable || row.values.size() != motors_.size())
+    return refuse(fmt::format("point {} (line {}) does not have {} whole numbers: fix it in an editor", row.name,
+                              row.line + 1, motors_.size()));
+  Outcome o = moveTo(row.values);
+  if (o.ok) message_ = o.message = fmt::format("went to {} ({:.3f} s)", row.name, (moveEnd_ - moveStart_) / 1e6);
+  return o;
+}
+
+Outcome Pendant::toggleInput(int line) {
+  if (line < 1 || line > 8) return refuse(fmt::format("inputs are 1..8, not {}", line), true);
+  if (!device_.empty()) return refuse("with a device, the inputs are the controller's: they cannot be switched here");
+  moved_ = false;
+  inputs_ ^= static_cast<std::uint8_t>(1u << (line - 1));
+  return done({true, fmt::format("input {} {}", line, (inputs_ >> (line - 1)) & 1 ? "ON" : "OFF")});
+}
+
+Outcome Pendant::setOutput(int line, bool on) {
+  if (line < 1 || line > 8) return refuse(fmt::format("outputs are 1..8, not {}", line), true);
+  if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
+  moved_ = false;
+  const vm::Status st = run_->machine().setOutput(line, on);
+  if (!st) {
+    if (!device_.empty()) fault_ = st.message;
+    return done({false, st.message});
+  }
+  return done({true, fmt::format("output {} {}", line, on ? "ON" : "OFF")});
+}
+
+Outcome Pendant::resetCell() {
+  if (start_) {
+    run_->restore(*start_);
+    inputs_ = 0;
+    moved_ = false;
+    return done({true, "cell reset: motors at 0, every object where the cell placed it, lines OFF"});
+  }
+  if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
+  const vm::Micros start = run_->clock();
+  const vm::Status st = run_->machine().reset();
+  if (!st) {
+    fault_ = st.message;
+    moved_ = false;
+    return done({false, st.message});
+  }
+  moved_ = true;
+  moveStart_ = start;
+  moveEnd_ = run_->clock();
+  return done({true, "cell reset: the robot back where teach found it, every object where the cell placed it"});
+}
+
+Outcome Pendant::readPosition() {
+  moved_ = false;
+  if (!rhino_) return refuse("read position needs a device (--device): in simulation the pose is what the pendant set");
+  if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
+  const vm::Status st = rhino_->readPositions();
+  if (!st) {
+    fault_ = st.message;
+    return done({false, st.message});
+  }
+  if (!rhino_->reportsPositions())
+    return done({true, fmt::format("a Mark III cannot report its encoders: the counts are those tracked since teach "
+                                   "started, {}",
+                                   valuesText(run_->motors()))});
+  return done({true, fmt::format("read from the controller: {}", valuesText(run_->motors()))});
+}
+
+Outcome Pendant::reload() {
+  moved_ = false;
+  if (std::string why = file_.reload(); !why.empty()) return done({false, std::move(why)});
+  return done({true, fmt::format("{} read again: {} points", file_.path(), file_.points().points().size())});
+}
+
+std::vector<Eigen::Isometry3d> Pendant::placements() const {
+  std::vector<Eigen::Isometry3d> p;
+  for (const workcell::PlacedObject& o : cell_->objects) p.push_back(o.F_world_design);
+  return p;
+}
+
+// The last move, every kFrameStep (at most 250 frames), then its end: the
+// run knows where each motor was at any time of its last move
+// (Run::motorsAt) and where each object was (Run::objects).
+std::vector<MotionFrame> Pendant::frames() const {
+  std::vector<MotionFrame> out;
+  if (!moved_ || !run_->sim() || moveEnd_ <= moveStart_) return out;
+  const vm::Micros length = moveEnd_ - moveStart_;
+  const vm::Micros step = std::max(kFrameStep, (length + 249) / 250);
+  for (vm::Micros t = 0;; t = std::min(t + step, length)) {
+    MotionFrame f;
+    f.at = t;
+    f.encoders = run_->motorsAt(moveStart_ + t);
+    for (const runtime::ObjectView& o : run_->objects(moveStart_ + t)) f.objects.push_back(o.pose);
+    out.push_back(std::move(f));
+    if (t == length) break;
+  }
+  return out;
+}
+
+PendantState Pendant::state() const {
+  PendantState s;
+  s.revision = revision_;
+  s.program = file_.path();
+  s.cell = cell_->name;
+  s.device = device_;
+  s.motors = motors_;
+  s.encoders.assign(run_->motors().begin(), run_->motors().end());
+  s.tcp = run_->tcp();
+  if (const std::optional<std::size_t> g = gripperMotor()) {
+    const std::int32_t v = s.encoders[*g];
+    s.gripper = v == motors_[*g].min   ? GripperState::Open
+                : v == motors_[*g].max ? GripperState::Closed
+                                       : GripperState::Between;
+  }
+  s.inputs = device_.empty() ? inputs_ : run_->machine().inputs();
+  s.outputs = run_->machine().outputs();
+  for (const runtime::ObjectView& o : run_->objects())
+    s.objects.push_back({std::string(o.name), o.pose, o.held, o.moved});
+  for (const PointRow& p : file_.points().points()) s.points.push_back({p.name, p.values, p.line + 1, p.readable});
+  s.clock = run_->clock();
+  s.motion = frames();
+  s.message = message_;
+  s.failed = failed_;
+  s.fault = fault_;
+  s.fileHash = file_.hash();
+  return s;
+}
+
+}  // namespace rs::teach

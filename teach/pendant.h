@@ -1,0 +1,108 @@
+// A teach pendant over a workcell: the paper's WORKCELL module with TEACH.
+// The robot stands in a runtime::Run (never stepped: the pendant drives its
+// machine directly), so the world reacts to every move exactly as in a run
+// (objects taken at the end of a closing move, carried, let go), the tool
+// centre point and every object come from the run's one forward-kinematics
+// path, and on the simulated machine "reset cell" is a restore of the
+// run's first snapshot. With a device, the run's machine is the Rhino
+// controller: every jog moves the real robot, after the same soft-limit
+// check.
+//
+// Every operation returns an Outcome and leaves its message in the state;
+// nothing throws. Not thread-safe: a server calls it under one lock.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "model/workcell/model.h"
+#include "runtime/run/run.h"
+#include "teach/pendant_state.h"
+#include "teach/program_file.h"
+#include "vm/machine.h"
+
+namespace rs::serial {
+class RhinoMachine;
+}
+
+namespace rs::teach {
+
+struct Outcome {
+  bool ok = true;
+  std::string message;
+  bool badRequest = false;  ///< the request itself was malformed (a server answers 400)
+};
+
+class Pendant {
+ public:
+  /// On the simulated machine. `cell` must have a robot; its first one is
+  /// taught, with `motors` (launch::cellTarget) as its motor table.
+  Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, ProgramFile file);
+  /// On a device (launch::openRhino): it moves with every jog.
+  Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, ProgramFile file,
+          std::unique_ptr<vm::Machine> device, std::string deviceName);
+  ~Pendant();
+  Pendant(const Pendant&) = delete;
+  Pendant& operator=(const Pendant&) = delete;
+
+  /// Motor `motor` by `delta` counts; stops at its range's end.
+  Outcome jog(std::size_t motor, std::int32_t delta);
+  /// Motor `motor` to `value` (refused outside its range).
+  Outcome setMotor(std::size_t motor, std::int32_t value);
+  /// Every motor to `targets`, at motor speed (refused outside a range).
+  Outcome moveTo(std::span<const std::int32_t> targets);
+  Outcome gripper(bool close);
+  /// The current encoder values become point `name` (a new one).
+  Outcome teach(std::string_view name);
+  /// Point `name` gets the current encoder values.
+  Outcome reteach(std::string_view name);
+  Outcome remove(std::string_view name);
+  Outcome rename(std::string_view from, std::string_view to);
+  /// Every motor to point `name`, at motor speed (the state's motion has
+  /// the move, time-stepped).
+  Outcome goTo(std::string_view name);
+  /// Input `line` (1..8) flips (simulation: a switch on the pendant).
+  Outcome toggleInput(int line);
+  Outcome setOutput(int line, bool on);
+  /// Motors home, objects back where the cell placed them, lines OFF.
+  Outcome resetCell();
+  /// The controller's encoder counts become the current pose (device only).
+  Outcome readPosition();
+  /// The program file read again (after someone edited it).
+  Outcome reload();
+
+  PendantState state() const;
+  std::uint64_t revision() const { return revision_; }
+  /// Where the cell placed each object (F_world_design), for pendantJson.
+  std::vector<Eigen::Isometry3d> placements() const;
+  const workcell::Workcell& cell() const { return *cell_; }
+  /// The frame step of a move's motion: 40 ms, longer for moves of more than 10 s.
+  static constexpr vm::Micros kFrameStep = 40'000;
+
+ private:
+  Outcome done(Outcome o);
+  Outcome refuse(std::string message, bool bad = false);
+  Outcome edit(const std::function<std::string(PointsText&)>& change, std::string message);
+  std::optional<std::size_t> gripperMotor() const;
+  std::vector<MotionFrame> frames() const;
+
+  std::shared_ptr<const workcell::Workcell> cell_;
+  std::vector<vm::MotorSpec> motors_;
+  ProgramFile file_;
+  std::unique_ptr<runtime::Run> run_;
+  std::string device_;
+  serial::RhinoMachine* rhino_ = nullptr;      // the device, when it is a Rhino (owned by run_)
+  std::optional<runtime::RunSnapshot> start_;  // simulation: what reset cell restores
+  std::uint8_t inputs_ = 0;                    // simulation: the pendant's input switches
+  bool moved_ = false;                         // the last operation was a move
+  vm::Micros moveStart_ = 0, moveEnd_ = 0;
+  std::string message_, fault_;
+  bool failed_ = false;
+  std::uint64_t revision_ = 1;
+};
+
+}  // namespace rs::teach

@@ -1,0 +1,98 @@
+#include "teach/pendant_state.h"
+
+#include <fmt/format.h>
+
+namespace rs::teach {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Column-major 3x4, as the animation page's matrices (runtime/render/animation.h).
+Json matrix(const Eigen::Isometry3d& F) {
+  Json m = Json::array();
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r) m.push_back(F.matrix()(r, c));
+  return m;
+}
+
+Json lines(std::uint8_t mask) {
+  Json a = Json::array();
+  for (int i = 0; i < 8; ++i) a.push_back(((mask >> i) & 1) != 0);
+  return a;
+}
+
+std::string_view kindName(vm::JointKind k) {
+  switch (k) {
+    case vm::JointKind::Revolute: return "revolute";
+    case vm::JointKind::Prismatic: return "prismatic";
+    case vm::JointKind::Gripper: return "gripper";
+  }
+  return "revolute";
+}
+
+Json objectPoses(const std::vector<Eigen::Isometry3d>& poses, const std::vector<Eigen::Isometry3d>& placed) {
+  Json a = Json::array();
+  for (std::size_t o = 0; o < poses.size() && o < placed.size(); ++o)
+    a.push_back(matrix(poses[o] * placed[o].inverse(Eigen::Isometry)));
+  return a;
+}
+
+}  // namespace
+
+std::string_view gripperName(GripperState g) {
+  switch (g) {
+    case GripperState::None: return "none";
+    case GripperState::Open: return "open";
+    case GripperState::Closed: return "closed";
+    case GripperState::Between: return "between";
+  }
+  return "none";
+}
+
+Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& placed) {
+  Json motors = Json::array();
+  for (const vm::MotorSpec& m : s.motors)
+    motors.push_back({{"letter", std::string(1, m.letter)},
+                      {"kind", kindName(m.kind)},
+                      {"min", m.min},
+                      {"max", m.max},
+                      {"speed", m.speed}});
+  Json objects = Json::array();
+  for (std::size_t o = 0; o < s.objects.size(); ++o) {
+    const PendantObject& ob = s.objects[o];
+    const Eigen::Isometry3d P = o < placed.size() ? placed[o] : Eigen::Isometry3d::Identity();
+    objects.push_back({{"name", ob.name},
+                       {"pose", matrix(ob.pose * P.inverse(Eigen::Isometry))},
+                       {"held", ob.held},
+                       {"moved", ob.moved}});
+  }
+  Json points = Json::array();
+  for (const PendantPoint& p : s.points)
+    points.push_back({{"name", p.name}, {"values", p.values}, {"line", p.line}, {"readable", p.readable}});
+  Json motion = Json::array();
+  for (const MotionFrame& f : s.motion)
+    motion.push_back({{"at", f.at}, {"encoders", f.encoders}, {"objects", objectPoses(f.objects, placed)}});
+  Json tcp = nullptr;
+  if (s.tcp) tcp = {(*s.tcp)[0], (*s.tcp)[1], (*s.tcp)[2]};
+  return {{"revision", s.revision},
+          {"program", s.program},
+          {"cell", s.cell},
+          {"device", s.device},
+          {"motors", motors},
+          {"encoders", s.encoders},
+          {"tcp", tcp},
+          {"gripper", gripperName(s.gripper)},
+          {"inputs", lines(s.inputs)},
+          {"outputs", lines(s.outputs)},
+          {"objects", objects},
+          {"points", points},
+          {"clock", s.clock},
+          {"motion", motion},
+          {"message", s.message},
+          {"failed", s.failed},
+          {"fault", s.fault},
+          {"fileHash", fmt::format("{:016x}", s.fileHash)}};
+}
+
+}  // namespace rs::teach

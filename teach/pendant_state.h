@@ -1,0 +1,78 @@
+// What a teach pendant shows, as one value: every UI (the web page, the
+// terminal pendant) reads this snapshot and nothing else, so both show the
+// same thing. pendantJson is the page's form of it (docs/teach.md lists
+// the fields).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <array>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vm/image.h"
+#include "vm/machine.h"
+
+namespace rs::teach {
+
+/// The gripper as the pendant names it: its motor at the range's min is
+/// open, at its max closed (model/workcell/grasp.h), anywhere else between.
+enum class GripperState : std::uint8_t { None, Open, Closed, Between };
+
+struct PendantObject {
+  std::string name;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< F_world_design now
+  bool held = false;
+  bool moved = false;
+};
+
+struct PendantPoint {
+  std::string name;
+  std::vector<std::int32_t> values;
+  std::size_t line = 0;  ///< 1-based line in the program file
+  bool readable = true;
+};
+
+/// One moment of the last move, for UIs that animate it.
+struct MotionFrame {
+  vm::Micros at = 0;  ///< since the move began
+  std::vector<std::int32_t> encoders;
+  std::vector<Eigen::Isometry3d> objects;  ///< each object's F_world_design
+};
+
+struct PendantState {
+  std::uint64_t revision = 0;  ///< grows with every change
+  std::string program;         ///< the program file
+  std::string cell;
+  std::string device;  ///< the serial device, "" in simulation
+  std::vector<vm::MotorSpec> motors;
+  std::vector<std::int32_t> encoders;
+  std::optional<std::array<double, 3>> tcp;  ///< in the cell's world coordinates
+  GripperState gripper = GripperState::None;
+  std::uint8_t inputs = 0, outputs = 0;  ///< bit 0 = line 1
+  std::vector<PendantObject> objects;
+  std::vector<PendantPoint> points;
+  vm::Micros clock = 0;  ///< the machine's clock
+  std::vector<MotionFrame> motion;  ///< the last move, time-stepped (empty after a non-move)
+  std::string message;  ///< what the last operation did, or why it did not
+  bool failed = false;  ///< the last operation was refused or failed
+  std::string fault;    ///< the device failed: every motor stopped, nothing more is sent
+  std::uint64_t fileHash = 0;
+};
+
+std::string_view gripperName(GripperState g);
+
+/// The page's JSON: {"revision", "program", "cell", "device", "motors":
+/// [{"letter", "kind", "min", "max", "speed"}], "encoders", "tcp" (or
+/// null), "gripper", "inputs", "outputs" (arrays of eight booleans),
+/// "objects": [{"name", "pose" (12 numbers, column-major 3x4: F_world ·
+/// F_placed⁻¹, what takes the object's drawing from where the cell placed
+/// it to where it is), "held", "moved"}], "points": [{"name", "values",
+/// "line", "readable"}], "clock", "motion": [{"at", "encoders",
+/// "objects"}], "message", "failed", "fault", "fileHash" (16 hex digits)}.
+/// `placed` holds each object's F_world_design where the cell placed it.
+nlohmann::ordered_json pendantJson(const PendantState& state, const std::vector<Eigen::Isometry3d>& placed);
+
+}  // namespace rs::teach

@@ -1,0 +1,54 @@
+// The program file a teach session edits: read once, its points edited in
+// memory (points_edit.h), written back after every change. Someone may
+// edit the file in an editor meanwhile: every write first reads the file
+// again and refuses when its hash is not the one of the text the session
+// loaded or last wrote (their change would be lost). A write is atomic (a
+// temporary file renamed into place, base/file_io.h); the first write of a
+// session keeps the file as it was loaded in PROG.rsp.bak.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "teach/points_edit.h"
+
+namespace rs::teach {
+
+/// FNV-1a, 64 bits: the file's fingerprint (not a defence against an
+/// attacker, who could write the file anyway; a check that nobody did).
+std::uint64_t textHash(std::string_view bytes);
+
+class ProgramFile {
+ public:
+  /// Reads `path`; nullopt with `error` set when it cannot be read.
+  static std::optional<ProgramFile> load(const std::string& path, std::string& error);
+
+  const std::string& path() const { return path_; }
+  const PointsText& points() const { return points_; }
+  /// The hash of the text on disk as this session last saw it.
+  std::uint64_t hash() const { return hash_; }
+
+  /// Applies `edit` to a copy of the points and writes it; "" when written,
+  /// else why not (the edit's refusal, the file changed on disk, the
+  /// system's error), and nothing changes.
+  template <typename Edit>
+  std::string change(Edit&& edit) {
+    PointsText next = points_;
+    if (std::string why = edit(next); !why.empty()) return why;
+    return write(std::move(next));
+  }
+  /// Reads the file again (after someone edited it): its points become the session's.
+  std::string reload();
+
+ private:
+  std::string write(PointsText next);
+
+  std::string path_;
+  PointsText points_{""};
+  std::uint64_t hash_ = 0;
+  bool backedUp_ = false;
+};
+
+}  // namespace rs::teach

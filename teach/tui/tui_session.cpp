@@ -1,0 +1,181 @@
+#include "teach/tui/tui_session.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "teach/keys.h"
+
+namespace rs::teach::tui {
+
+namespace {
+
+// A point name is at most this long (more cannot be a sensible name, and
+// the line must hold it).
+constexpr std::size_t kMaxName = 40;
+
+bool isYes(std::string_view key) { return key == "y" || key == "Y"; }
+
+}  // namespace
+
+void Session::clampSelection() {
+  const PendantState s = pendant_.state();
+  if (!s.motors.empty()) selection_.motor = std::min(selection_.motor, s.motors.size() - 1);
+  if (!s.points.empty()) selection_.point = std::min(selection_.point, s.points.size() - 1);
+  else selection_.point = 0;
+}
+
+std::optional<std::string> Session::selectedPoint() {
+  const PendantState s = pendant_.state();
+  if (selection_.point < s.points.size()) return s.points[selection_.point].name;
+  note_ = "there are no points yet: t teaches one";
+  return std::nullopt;
+}
+
+void Session::ask(Asking what, std::string question) {
+  asking_ = what;
+  prompt_ = {true, std::move(question), ""};
+}
+
+bool Session::press(std::string_view key) {
+  if (key == "Resize") return true;  // the terminal changed size: only a redraw, whatever is asked
+  if (asking_ != Asking::Nothing) return answer(key);
+  note_.clear();
+  // The key list covers the panels: any other key hides it, then acts.
+  if (selection_.help && key != "?") selection_.help = false;
+  if (key == "i") {
+    ask(Asking::InputLine, "toggle input (1..8): ");
+    return true;
+  }
+  if (key == "u") {
+    ask(Asking::OutputLine, "switch output (1..8): ");
+    return true;
+  }
+  if (key == "l") {  // the page's "reload file" button
+    pendant_.reload();
+    clampSelection();
+    return true;
+  }
+  const std::optional<KeyBinding> binding = keyBinding(key);
+  if (!binding) {
+    note_ = fmt::format("no key {} (? lists the keys)", key);
+    return true;
+  }
+  const std::size_t motors = pendant_.state().motors.size();
+  switch (binding->action) {
+    case KeyAction::PrevMotor:
+      if (selection_.motor > 0) --selection_.motor;
+      break;
+    case KeyAction::NextMotor:
+      if (selection_.motor + 1 < motors) ++selection_.motor;
+      break;
+    case KeyAction::JogMinus: pendant_.jog(selection_.motor, -selection_.step); break;
+    case KeyAction::JogPlus: pendant_.jog(selection_.motor, selection_.step); break;
+    case KeyAction::Step1: selection_.step = 1; break;
+    case KeyAction::Step10: selection_.step = 10; break;
+    case KeyAction::Step100: selection_.step = 100; break;
+    case KeyAction::OpenGripper: pendant_.gripper(false); break;
+    case KeyAction::CloseGripper: pendant_.gripper(true); break;
+    case KeyAction::Teach: ask(Asking::TeachName, "name of the new point (Enter teaches, Esc cancels): "); break;
+    case KeyAction::GoTo:
+      if (const auto name = selectedPoint()) pendant_.goTo(*name);
+      break;
+    case KeyAction::Reteach:
+      if (const auto name = selectedPoint())
+        ask(Asking::ConfirmReteach, fmt::format("re-teach {} with the current pose? (y/n) ", *name));
+      break;
+    case KeyAction::Delete:
+      if (const auto name = selectedPoint()) ask(Asking::ConfirmDelete, fmt::format("delete {}? (y/n) ", *name));
+      break;
+    case KeyAction::Rename:
+      if (const auto name = selectedPoint())
+        ask(Asking::NewName, fmt::format("new name for {} (Enter renames, Esc cancels): ", *name));
+      break;
+    case KeyAction::PrevPoint:
+      if (selection_.point > 0) --selection_.point;
+      break;
+    case KeyAction::NextPoint:
+      if (selection_.point + 1 < pendant_.state().points.size()) ++selection_.point;
+      break;
+    case KeyAction::ReadPosition: pendant_.readPosition(); break;
+    case KeyAction::ResetCell:
+      ask(Asking::ConfirmReset, "reset the cell: motors home, objects back, lines off? (y/n) ");
+      break;
+    case KeyAction::Help: selection_.help = !selection_.help; break;
+    case KeyAction::Quit: return false;
+  }
+  clampSelection();
+  return true;
+}
+
+bool Session::answer(std::string_view key) {
+  const Asking what = asking_;
+  const bool confirm = what == Asking::ConfirmReteach || what == Asking::ConfirmDelete || what == Asking::ConfirmReset;
+  if (key == "Escape" || key == "\x03" || key == "\x07" || (confirm && !isYes(key))) {
+    asking_ = Asking::Nothing;
+    prompt_ = {};
+    note_ = "cancelled";
+    return true;
+  }
+  if (confirm || ((what == Asking::InputLine || what == Asking::OutputLine) && key.size() == 1)) {
+    asking_ = Asking::Nothing;
+    prompt_ = {};
+    finish(what, std::string(key));
+    return true;
+  }
+  if (key == "Enter") {
+    const std::string text = prompt_.answer;
+    asking_ = Asking::Nothing;
+    prompt_ = {};
+    finish(what, text);
+  } else if (key == "Backspace") {
+    if (!prompt_.answer.empty()) prompt_.answer.pop_back();
+  } else if (key.size() == 1 && key[0] > 0x20 && key[0] < 0x7f && prompt_.answer.size() < kMaxName) {
+    prompt_.answer += key;
+  }
+  return true;
+}
+
+void Session::finish(Asking what, const std::string& text) {
+  note_.clear();
+  switch (what) {
+    case Asking::TeachName:
+      if (pendant_.teach(text).ok) {
+        // Select the new point, wherever the file put it.
+        const PendantState s = pendant_.state();
+        for (std::size_t i = 0; i < s.points.size(); ++i)
+          if (s.points[i].name == text) selection_.point = i;
+      }
+      break;
+    case Asking::NewName:
+      if (const auto name = selectedPoint()) pendant_.rename(*name, text);
+      break;
+    case Asking::ConfirmReteach:
+      if (const auto name = selectedPoint()) pendant_.reteach(*name);
+      break;
+    case Asking::ConfirmDelete:
+      if (const auto name = selectedPoint()) pendant_.remove(*name);
+      break;
+    case Asking::ConfirmReset: pendant_.resetCell(); break;
+    case Asking::InputLine:
+      if (text.size() == 1 && text[0] >= '1' && text[0] <= '8') pendant_.toggleInput(text[0] - '0');
+      else note_ = fmt::format("inputs are 1..8, not {}", text);
+      break;
+    case Asking::OutputLine:
+      if (text.size() == 1 && text[0] >= '1' && text[0] <= '8') {
+        const int line = text[0] - '0';
+        pendant_.setOutput(line, ((pendant_.state().outputs >> (line - 1)) & 1) == 0);
+      } else {
+        note_ = fmt::format("outputs are 1..8, not {}", text);
+      }
+      break;
+    case Asking::Nothing: break;
+  }
+  clampSelection();
+}
+
+Screen Session::screen(int cols, int rows) const {
+  return layoutScreen(pendant_.state(), selection_, prompt_, note_, cols, rows);
+}
+
+}  // namespace rs::teach::tui
