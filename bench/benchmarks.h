@@ -54,4 +54,9 @@ nlohmann::json benchErrors(const Options& options);
 /// open (50 MiB).
 nlohmann::json benchLsp(const Options& options);
 
+/// The debugger's reverse steps on a run of about 1,000,000 instructions,
+/// for several snapshot intervals: time forwards with snapshots, their
+/// memory, one reverse step (median, worst). Targets: 10 ms, 64 MiB.
+nlohmann::json benchDebug(const Options& options);
+
 }  // namespace rs::bench

@@ -1,17 +1,12 @@
-// JSON for the language server: nlohmann-json, and the one way a value is
-// written out (text that is not UTF-8 becomes U+FFFD instead of an
-// exception: a file name or a message may carry any bytes).
+// JSON for the language server: wire/json.h (nlohmann-json and the one way
+// a value is written out), under the server's names.
 #pragma once
 
-#include <nlohmann/json.hpp>
-#include <string>
+#include "wire/json.h"
 
 namespace rs::lsp {
 
-using Json = nlohmann::json;
-
-inline std::string dumpJson(const Json& value) {
-  return value.dump(-1, ' ', false, Json::error_handler_t::replace);
-}
+using wire::dumpJson;
+using wire::Json;
 
 }  // namespace rs::lsp

@@ -53,6 +53,14 @@ void SimMachine::applyInputs() {
     schedule_.applyUntil(now_, inputs_);
 }
 
+bool SimMachine::setInputNow(int input, bool on) {
+  if (lineBit(input) == 0) return false;
+  applyInputs();
+  if (!schedule_.schedule({now_, input, on})) return false;
+  applyInputs();
+  return true;
+}
+
 SimMachine::State SimMachine::state() const {
   return {positions_, segments_, now_, outputs_, inputs_, windowShift_, viewRotation_, schedule_.state()};
 }

@@ -59,6 +59,12 @@ class SimMachine final : public vm::Machine {
   /// Rotate the workcell by (x, y, z) degrees: adds up, kept in 0..359.
   void view(std::int32_t x, std::int32_t y, std::int32_t z) override;
 
+  /// Input `input` (1..8) turns `on` now, as a timed stimulus at the
+  /// present time would (after the changes already due now): what a
+  /// debugger's `set input` does. Changes still to come may turn it back.
+  /// False when the input is out of range or the schedule is full.
+  bool setInputNow(int input, bool on);
+
   vm::Micros now() const override { return now_; }
   std::uint8_t outputs() const override { return outputs_; }
   std::uint8_t inputs() const override { return inputs_; }

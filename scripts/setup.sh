@@ -12,11 +12,14 @@ case "$mode" in
   *) echo "usage: bash scripts/setup.sh [build|test]" >&2; exit 2 ;;
 esac
 
+# libedit-dev: line editing and history at the prompt of robotsim debug;
+# libedit (BSD licence) rather than GNU readline, whose GPL would bind the
+# whole robotsim binary that links it.
 packages=(
   build-essential cmake make pkg-config
   antlr4 libantlr4-runtime-dev default-jre-headless
   libeigen3-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
-  libmimalloc-dev libcairo2-dev
+  libmimalloc-dev libcairo2-dev libedit-dev
   libcpp-httplib-dev libncurses-dev
 )
 # libcpp-httplib-dev: the HTTP server of `robotsim teach`'s live page.

@@ -74,6 +74,15 @@ std::string instructionComment(const Image& image, std::uint32_t index) {
   return {};
 }
 
+std::string listingRow(const Image& image, std::uint32_t i) {
+  const std::uint32_t line = image.lines[i];
+  const std::string lineText = (i > 0 && line == image.lines[i - 1]) ? "   |" : fmt::format("{:4}", line);
+  std::string row = fmt::format("  {:04}  {}  {:<8}  {}", i + 1, lineText, safeText(labelAt(image, i)),
+                                instructionText(image, i));
+  if (std::string c = instructionComment(image, i); !c.empty()) row = fmt::format("{:<62} ; {}", row, c);
+  return row;
+}
+
 std::string disassemble(const Image& image) {
   std::string out = fmt::format("; {} ({} instructions, {} constants, {} variables, {} points)\n",
                                 image.sourceName.empty() ? "<image>" : safeText(image.sourceName), image.code.size(),
@@ -81,15 +90,8 @@ std::string disassemble(const Image& image) {
   out += fmt::format("; robot {}: motors", image.robotName.empty() ? "-" : safeText(image.robotName));
   for (const MotorSpec& m : image.motors) out += fmt::format(" {}[{}..{}]", m.letter, m.min, m.max);
   out += "\n;\n; instr  line  label     instruction                          ; refers to\n";
-  std::uint32_t lastLine = 0;
   for (std::uint32_t i = 0; i < image.code.size(); ++i) {
-    const std::uint32_t line = image.lines[i];
-    const std::string lineText = (i > 0 && line == lastLine) ? "   |" : fmt::format("{:4}", line);
-    lastLine = line;
-    std::string row = fmt::format("  {:04}  {}  {:<8}  {}", i + 1, lineText, safeText(labelAt(image, i)),
-                                  instructionText(image, i));
-    if (std::string c = instructionComment(image, i); !c.empty()) row = fmt::format("{:<62} ; {}", row, c);
-    out += row;
+    out += listingRow(image, i);
     out += '\n';
   }
   if (!image.points.empty()) {

@@ -24,6 +24,12 @@ std::string instructionComment(const Image& image, std::uint32_t index);
 /// it through base::safeText).
 std::string_view labelAt(const Image& image, std::uint32_t index);
 
+/// One instruction's row of the listing (without a line break): its
+/// number (1-based), its source line ('|' when the instruction before is on
+/// the same line), label, text and comment. The debugger's `disasm` prints
+/// these rows.
+std::string listingRow(const Image& image, std::uint32_t index);
+
 /// The whole listing: a header, one line per instruction, then points.
 std::string disassemble(const Image& image);
 

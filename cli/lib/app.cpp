@@ -4,10 +4,13 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <iostream>
 #include <optional>
 
 #include "base/near_names.h"
 #include "base/text.h"
+#include "cli/lib/dap_command.h"
+#include "cli/lib/debug_command.h"
 #include "cli/lib/describe_command.h"
 #include "cli/lib/help.h"
 #include "cli/lib/lsp_command.h"
@@ -151,6 +154,9 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   CLI::App* test = addTestCommand(app, testOptions);
   LspOptions lspOptions;
   CLI::App* lsp = addLspCommand(app, lspOptions);
+  DebugOptions debugOptions;
+  CLI::App* debug = addDebugCommand(app, debugOptions);
+  CLI::App* dap = addDapCommand(app);
   std::string helpTopic;
   CLI::App* help = app.add_subcommand("help", "Explain the instruction set, or one instruction");
   help->add_option("instruction", helpTopic, "Instruction name, e.g. JMPVAR");
@@ -169,6 +175,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   if (const std::optional<int> code = renderCommands.run(out, err)) return *code;
   if (test->parsed()) return testCommand(testOptions, out, err);
   if (lsp->parsed()) return lspCommand(lspOptions, err);
+  if (debug->parsed()) return debugCommand(debugOptions, std::cin, out, err);
+  if (dap->parsed()) return dapCommand(err);
   if (teach->parsed())
     return teachOptions.tui ? teachTuiCommand(teachOptions, out, err) : teachCommand(teachOptions, out, err);
   if (run->parsed()) return runOrCheck(ro, false, out, err);

@@ -143,6 +143,10 @@ class Run {
   /// beside the step; right after a restore, null).
   const GraspEvent* graspOfLastStep() const { return lastStepGrasped_ ? &world_->lastEvent() : nullptr; }
 
+  /// Input `input` turns `on` now (SimMachine::setInputNow; the log hears
+  /// of it). False on a real machine or for an input outside 1..8.
+  bool setInput(int input, bool on) { return sim_ && sim_->setInputNow(input, on); }
+
   bool canSnapshot() const { return sim_ != nullptr; }
   /// The whole state (the simulated machine only: check canSnapshot()).
   RunSnapshot snapshot() const;

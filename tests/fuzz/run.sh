@@ -45,6 +45,9 @@ case "$reader" in
     seeds+=("$work/seeds-image") ;;
 esac
 
+# The debug adapter's seeds launch examples/ programs by relative paths.
+[ "$reader" = dap ] && cd "$root"
+
 echo "fuzz: $name, $runs inputs, seeds from ${#seeds[@]} directories" >&2
 # -rss_limit_mb: the readers' own limits keep far below it; -timeout: ten
 # seconds for one input, under the sanitizers (every reader is linear in

@@ -63,6 +63,23 @@ function commandArgs(command, file, settings, { out, exists, text } = {}) {
   }
 }
 
+/**
+ * The launch configuration "Debug robot program" starts for `file` (whose
+ * text is `text`): `robotsim dap` launches it on the cell setting unless
+ * the file names its own cell, with the stimuli file beside it, stopping
+ * before the first instruction.
+ */
+function debugConfiguration(file, settings, { exists, text } = {}) {
+  const has = exists || (() => false);
+  const config = { type: 'robotsim', request: 'launch', name: `Debug ${path.basename(file)}`, program: file,
+                   stopOnEntry: true };
+  if (settings.cell && !directiveCell(text)) config.cell = settings.cell;
+  if ((settings.lib || []).length) config.lib = settings.lib;
+  const stim = stimuliBeside(file, has);
+  if (stim.length) config.stimuli = stim[1];
+  return config;
+}
+
 /** Diagnostics in robotsim's output, as the problem matcher reads them. */
 function parseDiagnostics(text) {
   const found = [];
@@ -78,4 +95,4 @@ function animationTitle(file) {
   return `Animate ${path.basename(file)}`;
 }
 
-module.exports = { diagnosticPattern, commandArgs, parseDiagnostics, animationTitle, directiveCell };
+module.exports = { diagnosticPattern, commandArgs, debugConfiguration, parseDiagnostics, animationTitle, directiveCell };

@@ -2,7 +2,10 @@
 // .stim files through vscode-languageclient, and adds the Run, Check,
 // Test, Render and Animate commands (tasks with robotsim's problem
 // matcher; Animate shows robotsim's HTML replay in a webview beside the
-// editor). What each command runs is in commands.js.
+// editor), and the debugger: the debug type "robotsim" runs `robotsim dap`
+// (the Debug Adapter Protocol, stepping backwards too) and the "Debug
+// robot program" command debugs the file in the editor. What each command
+// runs is in commands.js.
 'use strict';
 
 const fs = require('fs');
@@ -11,7 +14,7 @@ const path = require('path');
 const { execFile } = require('child_process');
 const vscode = require('vscode');
 const { LanguageClient, TransportKind } = require('vscode-languageclient/node');
-const { commandArgs, animationTitle } = require('./commands');
+const { commandArgs, debugConfiguration, animationTitle } = require('./commands');
 
 let client;
 
@@ -64,7 +67,38 @@ async function animate(context) {
   });
 }
 
+// Debug robot program: the file in the editor, saved, under robotsim dap.
+async function debugProgram() {
+  const file = activeFile();
+  if (!file) return;
+  const document = vscode.window.activeTextEditor.document;
+  await document.save();
+  const config = debugConfiguration(file, settings(), { exists: fs.existsSync, text: document.getText() });
+  await vscode.debug.startDebugging(vscode.workspace.getWorkspaceFolder(document.uri), config);
+}
+
+function registerDebugger(context) {
+  context.subscriptions.push(vscode.debug.registerDebugAdapterDescriptorFactory('robotsim', {
+    createDebugAdapterDescriptor: () => new vscode.DebugAdapterExecutable(settings().path, ['dap']),
+  }));
+  // F5 without a launch.json: debug the program in the editor.
+  context.subscriptions.push(vscode.debug.registerDebugConfigurationProvider('robotsim', {
+    resolveDebugConfiguration(_folder, config) {
+      if (config.type && config.program) return config;
+      const editor = vscode.window.activeTextEditor;
+      if (!editor || editor.document.languageId !== 'robotsim-program' || editor.document.isUntitled) {
+        vscode.window.showErrorMessage('ROBOTSIM: open a saved robot program (.rsp) to debug it.');
+        return undefined;
+      }
+      return debugConfiguration(editor.document.uri.fsPath, settings(),
+        { exists: fs.existsSync, text: editor.document.getText() });
+    },
+  }));
+  context.subscriptions.push(vscode.commands.registerCommand('robotsim.debug', () => debugProgram()));
+}
+
 function activate(context) {
+  registerDebugger(context);
   const s = settings();
   const serverOptions = { command: s.path, args: ['lsp'], transport: TransportKind.stdio };
   const clientOptions = {

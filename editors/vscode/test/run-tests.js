@@ -1,8 +1,10 @@
 // Tests of the VS Code extension's parts that run without VS Code (which
 // cannot be installed here): the manifest, each command's robotsim
 // arguments run against the real robotsim, the problem matcher on
-// robotsim's real output, the snippets compiled by robotsim, the TextMate
-// grammars (vscode-tmgrammar-test) and the packaged .vsix (@vscode/vsce).
+// robotsim's real output, the snippets compiled by robotsim, the debugger's
+// contribution and its launch configurations driving the real `robotsim
+// dap`, the TextMate grammars (vscode-tmgrammar-test) and the packaged
+// .vsix (@vscode/vsce).
 //   node test/run-tests.js --robotsim PATH
 'use strict';
 
@@ -12,7 +14,7 @@ const fs = require('fs');
 const os = require('os');
 const path = require('path');
 const { spawnSync } = require('child_process');
-const { commandArgs, parseDiagnostics, diagnosticPattern, directiveCell } = require('../src/commands');
+const { commandArgs, debugConfiguration, parseDiagnostics, diagnosticPattern, directiveCell } = require('../src/commands');
 
 const here = path.resolve(__dirname, '..');
 const root = path.resolve(here, '..', '..');
@@ -142,6 +144,79 @@ test('the snippets expand to programs robotsim accepts', () => {
   fs.writeFileSync(rsd, expand(desc.Link.body) + '\n' + expand(desc.Workcell.body) + '\n');
   const d = run(commandArgs('render', rsd, {}, { out: path.join(tmp, 'cell.png') }));
   assert.equal(d.code, 0, d.err);
+});
+
+// A Debug Adapter Protocol session with `robotsim dap`: the requests framed
+// as VS Code frames them, every message it answered, in order.
+function dapSession(requests) {
+  const frame = (m) => { const body = JSON.stringify(m); return `Content-Length: ${Buffer.byteLength(body)}\r\n\r\n${body}`; };
+  const input = requests.map((r, i) => frame({ seq: i + 1, type: 'request', ...r })).join('');
+  const r = spawnSync(robotsim, ['dap'], { input, cwd: root, timeout: 30000 });
+  assert.equal(r.status, 0, String(r.stderr));
+  const messages = [];
+  let rest = r.stdout;
+  while (rest.length) {
+    const header = rest.indexOf('\r\n\r\n');
+    const length = Number(/Content-Length: (\d+)/.exec(rest.subarray(0, header).toString())[1]);
+    messages.push(JSON.parse(rest.subarray(header + 4, header + 4 + length).toString()));
+    rest = rest.subarray(header + 4 + length);
+  }
+  return messages;
+}
+
+test('the debugger is contributed: type robotsim, breakpoints in programs, snippets that parse', () => {
+  const [d] = manifest.contributes.debuggers;
+  assert.equal(d.type, 'robotsim');
+  assert.deepEqual(d.languages, ['robotsim-program']);
+  assert.deepEqual(manifest.contributes.breakpoints, [{ language: 'robotsim-program' }]);
+  assert.deepEqual(d.configurationAttributes.launch.required, ['program']);
+  const known = Object.keys(d.configurationAttributes.launch.properties);
+  for (const s of d.configurationSnippets) {
+    assert.equal(s.body.type, 'robotsim');
+    assert.equal(s.body.request, 'launch');
+    for (const key of Object.keys(s.body)) assert.ok(['type', 'request', 'name', ...known].includes(key), key);
+  }
+  for (const c of d.initialConfigurations) assert.equal(c.type, 'robotsim');
+  assert.ok(manifest.activationEvents.includes('onDebugResolve:robotsim'));
+  const source = fs.readFileSync(path.join(here, 'src', 'extension.js'), 'utf8');
+  assert.match(source, /new vscode\.DebugAdapterExecutable\(settings\(\)\.path, \['dap'\]\)/);
+});
+
+test('Debug robot program: its launch configuration', () => {
+  const file = path.join(root, 'examples', 'pick_and_place.rsp');
+  assert.deepEqual(debugConfiguration(file, { cell: 'scara-pick', lib: [] }, { exists: fs.existsSync }), {
+    type: 'robotsim', request: 'launch', name: 'Debug pick_and_place.rsp', program: file, stopOnEntry: true,
+    cell: 'scara-pick', stimuli: path.join(root, 'examples', 'pick_and_place.stim'),
+  });
+  const own = debugConfiguration('f.rsp', { cell: 'scara-pick', lib: ['d'] }, { text: '; cell: gantry-cell\n' });
+  assert.equal(own.cell, undefined);
+  assert.deepEqual(own.lib, ['d']);
+});
+
+test('robotsim dap runs the launch configuration: a breakpoint and a step back', () => {
+  const file = path.join(root, 'examples', 'nested_subroutines.rsp');
+  const config = debugConfiguration(file, { cell: '', lib: [] }, { exists: fs.existsSync });
+  // Line 38 is grip's first line: the gripper closes there, first after
+  // 0.5 s (pick slides down first), and GRIPS counts the grips.
+  const messages = dapSession([
+    { command: 'initialize', arguments: { adapterID: 'robotsim' } },
+    { command: 'launch', arguments: { ...config, stopOnEntry: false } },
+    { command: 'setBreakpoints', arguments: { source: { path: file }, breakpoints: [{ line: 38 }] } },
+    { command: 'configurationDone' },
+    { command: 'evaluate', arguments: { expression: 'clock' } },
+    { command: 'stepBack', arguments: { threadId: 1 } },
+    { command: 'stackTrace', arguments: { threadId: 1 } },
+    { command: 'disconnect' },
+  ]);
+  const initialize = messages.find((m) => m.type === 'response' && m.command === 'initialize');
+  assert.equal(initialize.body.supportsStepBack, true);
+  assert.ok(messages.every((m) => m.type !== 'response' || m.success), JSON.stringify(messages));
+  const stops = messages.filter((m) => m.event === 'stopped').map((m) => m.body.reason);
+  assert.deepEqual(stops, ['breakpoint', 'step']);
+  assert.equal(messages.find((m) => m.command === 'evaluate').body.result, '0.500 s');
+  const trace = messages.find((m) => m.command === 'stackTrace').body.stackFrames;
+  assert.equal(trace[0].line, 28);  // back before GOSUB grip
+  assert.equal(trace[0].source.path, file);
 });
 
 test('the grammars pass their token tests', () => {

@@ -1,4 +1,4 @@
-#include "lsp/jsonrpc.h"
+#include "wire/framing.h"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 
 #include "base/ascii.h"
 
-namespace rs::lsp {
+namespace rs::wire {
 
 namespace {
 
@@ -148,4 +148,4 @@ std::string frameMessage(std::string_view body) {
   return fmt::format("Content-Length: {}\r\n\r\n{}", body.size(), body);
 }
 
-}  // namespace rs::lsp
+}  // namespace rs::wire

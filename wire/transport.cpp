@@ -1,4 +1,4 @@
-#include "lsp/transport.h"
+#include "wire/transport.h"
 
 #include <poll.h>
 #include <signal.h>
@@ -6,7 +6,7 @@
 
 #include <cerrno>
 
-namespace rs::lsp {
+namespace rs::wire {
 
 std::size_t FdInput::read(char* into, std::size_t n) {
   for (;;) {
@@ -41,7 +41,9 @@ std::size_t StreamInput::read(char* into, std::size_t n) {
   return got > 0 ? static_cast<std::size_t>(got) : 0;
 }
 
-bool StreamInput::ready() { return in_.rdbuf()->in_avail() > 0; }
+// A stream has everything already: read() never waits (at the end it
+// returns 0 at once, which is how a server sees that its client left).
+bool StreamInput::ready() { return true; }
 
 bool StreamOutput::write(std::string_view bytes) {
   out_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -49,4 +51,4 @@ bool StreamOutput::write(std::string_view bytes) {
   return static_cast<bool>(out_);
 }
 
-}  // namespace rs::lsp
+}  // namespace rs::wire

@@ -1,0 +1,124 @@
+#include "cli/lib/debug_command.h"
+
+#include <CLI/CLI.hpp>
+#include <editline/readline.h>
+#include <fmt/format.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <fstream>
+
+#include "base/text.h"
+#include "cli/lib/exit_codes.h"
+#include "cli/lib/options.h"
+#include "debug/console.h"
+#include "debug/session.h"
+
+namespace rs::cli {
+
+namespace {
+
+constexpr const char* kPrompt = "(rsdb) ";
+
+std::atomic<bool> interruptRequested = false;
+
+// Ctrl-C while the program runs: the session pauses at its next slice.
+void onDebugInterrupt(int) { interruptRequested.store(true); }
+
+// Lines from a stream, each echoed after the prompt so that a transcript
+// reads like the session a person would have typed.
+bool batch(std::istream& in, debug::Console& console, std::ostream& out) {
+  std::string line;
+  while (std::getline(in, line)) {
+    out << kPrompt << base::safeText(line) << '\n';
+    if (!console.execute(line)) return false;
+  }
+  return true;
+}
+
+// The prompt on a terminal: libedit's readline interface, with history.
+void interactive(debug::Console& console, std::ostream& out) {
+  for (;;) {
+    out.flush();
+    char* raw = readline(kPrompt);
+    if (!raw) {
+      out << '\n';
+      // Ctrl-C at the prompt interrupts the line being typed, not the
+      // session: a fresh prompt. Ctrl-D (the end of input) leaves.
+      if (interruptRequested.exchange(false)) continue;
+      return;
+    }
+    const std::string line(raw);
+    std::free(raw);
+    if (line.find_first_not_of(" \t") != std::string::npos) add_history(line.c_str());
+    interruptRequested.store(false);
+    if (!console.execute(line)) return;
+  }
+}
+
+}  // namespace
+
+CLI::App* addDebugCommand(CLI::App& app, DebugOptions& o) {
+  CLI::App* cmd = app.add_subcommand("debug", "Debug a program: breakpoints, stepping, and stepping backwards");
+  cmd->add_option("file", o.program.file, "Program source or compiled image")->required();
+  addCellOptions(cmd, o.program);
+  addMaxErrorsOption(cmd, o.program);
+  addRunOptions(cmd, o.run);
+  cmd->add_option("-x,--commands", o.commands, "Run the debugger commands in this file first (one a line)");
+  cmd->footer(
+      "A gdb-style prompt (line editing and history) on the simulated run, standing before the first\n"
+      "instruction. Commands: break (b) LINE|LABEL|@N|at TIME|when COND [if COND] [hits N], delete (d),\n"
+      "info breakpoints, step (s) [N], next (n), finish (fin), continue (c), until (u) TIME,\n"
+      "reverse-step (rs) [N], reverse-next (rn), reverse-continue (rc), goto-time (gt) TIME,\n"
+      "print (p) VAR|motors|tcp|io|objects|clock, backtrace (bt), list (l), disasm (da),\n"
+      "set input N on|off, watch (w) VAR|output N, help (h), quit (q).\n"
+      "With -x FILE, or when standard input is not a terminal, commands are read and echoed one a line\n"
+      "(batch mode). Going backwards re-runs from snapshots: docs/debugging.md.");
+  return cmd;
+}
+
+int debugCommand(const DebugOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {
+  launch::LoadedProgram program = launch::loadProgram(o.program);
+  std::vector<diag::Diagnostic> diags = program.diagnostics;
+  const std::optional<runtime::RunSpec> spec = launch::prepareRun(program, o.run, diags);
+  if (!spec || !program.ok()) {
+    launch::printDiagnostics(err, diags, program);
+    return kExitBadInput;
+  }
+  launch::printDiagnostics(err, program.diagnostics, program);  // warnings
+  std::ifstream commands;
+  if (!o.commands.empty()) {
+    commands.open(o.commands);
+    if (!commands) {
+      err << fmt::format("{}: error: cannot read the command file\n", base::safeText(o.commands));
+      return kExitBadInput;
+    }
+  }
+
+  debug::Session session(*spec);
+  interruptRequested.store(false);
+  session.setInterrupt([] { return interruptRequested.exchange(false); });
+  debug::Console console(session, program.source ? &*program.source : nullptr, out);
+  out << fmt::format("robotsim debug: {} ({} instructions); help lists the commands\n",
+                     base::safeText(spec->image->sourceName), spec->image->code.size());
+  console.showStop(session.lastStop());
+
+  struct sigaction action {};
+  struct sigaction previous {};
+  action.sa_handler = onDebugInterrupt;
+  sigemptyset(&action.sa_mask);
+  ::sigaction(SIGINT, &action, &previous);
+  bool goOn = true;
+  if (commands.is_open()) goOn = batch(commands, console, out);
+  // The terminal prompt only for the process's own stdin on a terminal.
+  if (goOn) {
+    if (&in == &std::cin && ::isatty(STDIN_FILENO)) interactive(console, out);
+    else batch(in, console, out);
+  }
+  ::sigaction(SIGINT, &previous, nullptr);
+  return kExitOk;
+}
+
+}  // namespace rs::cli

@@ -1,0 +1,332 @@
+#include "dap/adapter.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "base/text.h"
+#include "launch/program.h"
+#include "launch/run_request.h"
+#include "vm/disasm.h"
+
+namespace rs::dap {
+
+namespace {
+
+constexpr int kThread = 1;
+
+// A request's arguments, read with nlohmann's checked accessors: a wrong
+// type throws Json::exception, which handle() answers as a bad request.
+std::string stringArg(const Json& args, const char* name, std::string fallback = {}) {
+  if (!args.contains(name) || args[name].is_null()) return fallback;
+  return args.at(name).get<std::string>();
+}
+
+}  // namespace
+
+Adapter::Adapter(Send send, std::ostream& log) : send_(std::move(send)), log_(log) {}
+Adapter::~Adapter() = default;
+
+void Adapter::send(Json message) {
+  if (clientGone_) return;
+  message["seq"] = seq_++;
+  if (!send_(message)) clientGone_ = true;
+}
+
+void Adapter::event(std::string_view name, Json body) {
+  send({{"type", "event"}, {"event", name}, {"body", std::move(body)}});
+}
+
+void Adapter::output(std::string_view category, std::string text) {
+  event("output", {{"category", category}, {"output", std::move(text)}});
+}
+
+void Adapter::respond(const Json& request, const Reply& reply) {
+  Json r = {{"type", "response"},
+            {"request_seq", request.is_object() && request.contains("seq") && request["seq"].is_number_integer()
+                                ? request["seq"]
+                                : Json(0)},
+            {"command", request.is_object() && request.contains("command") && request["command"].is_string()
+                            ? request["command"]
+                            : Json("")}};
+  if (const Json* body = std::get_if<Json>(&reply)) {
+    r["success"] = true;
+    if (!body->is_null()) r["body"] = *body;
+  } else {
+    const std::string& message = std::get<Error>(reply).message;
+    r["success"] = false;
+    r["message"] = message;
+    r["body"] = {{"error", {{"id", 1}, {"format", message}, {"showUser", true}}}};
+  }
+  send(std::move(r));
+}
+
+void Adapter::receive(const wire::Frame& frame) {
+  if (frame.kind != wire::Frame::Kind::Message) {
+    log_ << "robotsim dap: " << frame.problem << '\n';
+    respond(Json(nullptr), Error{frame.problem});
+    return;
+  }
+  const Json message = Json::parse(frame.body, nullptr, false);
+  if (message.is_discarded()) {
+    respond(Json(nullptr), Error{"the message is not valid JSON"});
+    return;
+  }
+  if (!message.is_object() || !message.contains("type") || !message["type"].is_string()) {
+    respond(message, Error{"a message is a JSON object with a type"});
+    return;
+  }
+  if (message["type"] != "request") return;  // the client's responses and events: nothing to do
+  if (!message.contains("command") || !message["command"].is_string()) {
+    respond(message, Error{"a request without a command"});
+    return;
+  }
+  handle(message);
+}
+
+void Adapter::handle(const Json& request) {
+  const std::string command = request["command"].get<std::string>();
+  const Json args = request.value("arguments", Json::object());
+  Reply reply = Error{"internal error"};
+  try {
+    if (!args.is_object()) reply = Error{fmt::format("the arguments of {} are not an object", command)};
+    else reply = dispatch(command, args);
+  } catch (const Json::exception& e) {
+    // nlohmann-json reports a missing or mistyped argument by exception: at
+    // this edge it becomes the client's error, never the adapter's end.
+    reply = Error{fmt::format("bad arguments for {}: {}", command, e.what())};
+    pending_ = nullptr;
+  }
+  respond(request, reply);
+  if (pending_) {
+    auto move = std::move(pending_);
+    pending_ = nullptr;
+    move();
+  }
+}
+
+Adapter::Reply Adapter::dispatch(const std::string& command, const Json& args) {
+  if (command == "initialize") return initialize(args);
+  if (state_ == State::New) return Error{"the adapter is not initialized: send initialize first"};
+  if (command == "disconnect") {
+    disconnected_ = true;
+    return Json(nullptr);
+  }
+  if (command == "launch") return launch(args);
+  if (command == "attach") return Error{"attach is not supported: robotsim dap launches the program itself"};
+  if (command == "threads") return Json{{"threads", Json::array({{{"id", kThread}, {"name", "program"}}})}};
+  if (!session_) return Error{fmt::format("{} before launch: launch a program first", command)};
+  if (command == "setBreakpoints") return setBreakpoints(args);
+  if (command == "setExceptionBreakpoints") return setExceptionBreakpoints(args);
+  if (command == "setFunctionBreakpoints") return Json{{"breakpoints", Json::array()}};
+  if (command == "configurationDone") {
+    if (state_ != State::Launched) return Error{"configurationDone was already sent"};
+    state_ = State::Running;
+    pending_ = [this] {
+      if (stopOnEntry_) reportStop(session_->lastStop());
+      else reportStop(session_->resume());
+    };
+    return Json(nullptr);
+  }
+  if (command == "stackTrace") return stackTrace(args);
+  if (command == "scopes") return scopes(args);
+  if (command == "variables") return variables(args);
+  if (command == "evaluate") return evaluate(args);
+  if (command == "terminate") {
+    if (state_ != State::Terminated) pending_ = [this] { event("terminated"); };
+    state_ = State::Terminated;
+    return Json(nullptr);
+  }
+  if (command == "pause") return Json(nullptr);  // a run in progress was paused by the poll; a stopped one stays
+  const bool moves = command == "continue" || command == "next" || command == "stepIn" || command == "stepOut" ||
+                     command == "stepBack" || command == "reverseContinue";
+  if (!moves) return Error{fmt::format("unknown request '{}'", base::safeText(command.substr(0, 60)))};
+  if (state_ == State::Launched) return Error{fmt::format("{} before configurationDone", command)};
+  if (state_ == State::Terminated) return Error{fmt::format("{}: the debug session has been terminated", command)};
+  if (command == "stepOut") {
+    auto r = session_->finish();
+    if (auto* problem = std::get_if<std::string>(&r)) return Error{*problem};
+    pending_ = [this, stop = std::get<debug::Stop>(r)] { reportStop(stop); };
+    // finish() has already run: the response still goes first.
+    return Json(nullptr);
+  }
+  pending_ = [this, command] {
+    if (command == "continue") reportStop(session_->resume());
+    else if (command == "next") reportStop(session_->next());
+    else if (command == "stepIn") reportStop(session_->step());
+    else if (command == "stepBack") reportStop(session_->reverseNext());
+    else reportStop(session_->reverseContinue());
+  };
+  if (command == "continue") return Json{{"allThreadsContinued", true}};
+  return Json(nullptr);
+}
+
+Adapter::Reply Adapter::initialize(const Json&) {
+  if (state_ != State::New) return Error{"initialize was already sent"};
+  state_ = State::Initialized;
+  return Json{
+      {"supportsConfigurationDoneRequest", true},
+      {"supportsConditionalBreakpoints", true},
+      {"supportsHitConditionalBreakpoints", true},
+      {"supportsEvaluateForHovers", true},
+      {"supportsStepBack", true},
+      {"supportsTerminateRequest", true},
+      {"exceptionBreakpointFilters",
+       Json::array({{{"filter", "deadlock"}, {"label", "Deadlock"}, {"default", true}},
+                    {{"filter", "runtimeError"}, {"label", "Runtime error"}, {"default", true}},
+                    {{"filter", "limit"}, {"label", "Step or time limit"}, {"default", true}}})},
+  };
+}
+
+Adapter::Reply Adapter::launch(const Json& args) {
+  if (session_) return Error{"a program was already launched"};
+  launch::ProgramRequest program;
+  program.file = stringArg(args, "program");
+  if (program.file.empty()) return Error{"launch needs a program (the path of a .rsp or .rsb file)"};
+  program.cell = stringArg(args, "cell");
+  if (args.contains("lib")) program.libDirs = args["lib"].get<std::vector<std::string>>();
+  launch::RunRequest run;
+  run.stimuliFile = stringArg(args, "stimuli");
+  if (args.contains("inputs")) run.inputs = args["inputs"].get<std::vector<std::string>>();
+  if (args.contains("maxSteps")) {
+    const Json& n = args["maxSteps"];
+    if (!n.is_number_unsigned() || n.get<std::uint64_t>() == 0 || n.get<std::uint64_t>() > (std::uint64_t{1} << 62))
+      return Error{"maxSteps is a whole number of instructions from 1 (as --max-steps)"};
+    run.maxSteps = n.get<std::uint64_t>();
+  }
+  // Seconds as --max-time reads them: a string as written, a whole number
+  // as its digits, any other number with the six decimals it may have.
+  if (const Json& t = args.value("maxTime", Json()); t.is_string()) run.maxTime = t.get<std::string>();
+  else if (t.is_number_integer()) run.maxTime = t.dump();
+  else if (!t.is_null()) run.maxTime = fmt::format("{:.6f}", t.get<double>());
+  stopOnEntry_ = args.value("stopOnEntry", false);
+
+  launch::LoadedProgram loaded = launch::loadProgram(program);
+  std::vector<diag::Diagnostic> diags = loaded.diagnostics;
+  const std::optional<runtime::RunSpec> spec = launch::prepareRun(loaded, run, diags);
+  std::ostringstream text;
+  launch::printDiagnostics(text, diags, loaded);
+  if (!text.str().empty()) output("stderr", text.str());
+  if (!spec || !loaded.ok()) {
+    const std::string first = diags.empty() ? std::string("the program could not be loaded") : diags.front().message;
+    return Error{fmt::format("cannot debug {}: {}", base::safeText(program.file), first)};
+  }
+  session_ = std::make_unique<debug::Session>(*spec);
+  session_->setInterrupt([this] { return poll_ && poll_(); });
+  if (loaded.source) source_ = loaded.source;
+  std::error_code ec;
+  sourcePath_ = std::filesystem::absolute(program.file, ec).lexically_normal().string();
+  if (ec) sourcePath_ = program.file;
+  state_ = State::Launched;
+  pending_ = [this] { event("initialized"); };
+  return Json(nullptr);
+}
+
+Adapter::Reply Adapter::setBreakpoints(const Json& args) {
+  Json out = Json::array();
+  // Breakpoints in another file (a stimuli file, another program): none of
+  // them can stop this run.
+  const std::string path = stringArg(args.value("source", Json::object()), "path");
+  std::error_code ec;
+  if (!path.empty() && std::filesystem::absolute(path, ec).lexically_normal().string() != sourcePath_) {
+    for (const Json& b : args.value("breakpoints", Json::array()))
+      out.push_back({{"verified", false},
+                     {"line", b.at("line").get<std::int64_t>()},
+                     {"message", "not the program being debugged"}});
+    return Json{{"breakpoints", out}};
+  }
+  for (int id : lineBreakpoints_) session_->remove(id);
+  lineBreakpoints_.clear();
+  const vm::Image& image = session_->run().image();
+  for (const Json& b : args.value("breakpoints", Json::array())) {
+    const std::int64_t line = b.at("line").get<std::int64_t>();
+    Json result = {{"verified", false}, {"line", line}};
+    auto made = line >= 1 && line <= UINT32_MAX ? session_->breakAtLine(static_cast<std::uint32_t>(line))
+                                                : std::variant<int, std::string>(std::string("no such line"));
+    if (auto* problem = std::get_if<std::string>(&made)) {
+      result["message"] = *problem;
+      out.push_back(result);
+      continue;
+    }
+    const int id = std::get<int>(made);
+    std::optional<debug::Condition> condition;
+    std::optional<debug::HitCondition> hits;
+    std::string problem;
+    if (const std::string c = stringArg(b, "condition"); !c.empty()) {
+      auto parsed = debug::parseCondition(image, debug::ioWords(c));
+      if (auto* e = std::get_if<std::string>(&parsed)) problem = *e;
+      else condition = std::get<debug::Condition>(parsed);
+    }
+    if (const std::string h = stringArg(b, "hitCondition"); !h.empty() && problem.empty()) {
+      auto parsed = debug::parseHitCondition(h);
+      if (auto* e = std::get_if<std::string>(&parsed)) problem = *e;
+      else hits = std::get<debug::HitCondition>(parsed);
+    }
+    if (!problem.empty()) {
+      session_->remove(id);
+      result["message"] = problem;
+      out.push_back(result);
+      continue;
+    }
+    session_->qualify(id, condition, hits);
+    lineBreakpoints_.push_back(id);
+    result = {{"id", id}, {"verified", true}, {"line", session_->lineWithCode(static_cast<std::uint32_t>(line))}};
+    out.push_back(result);
+  }
+  return Json{{"breakpoints", out}};
+}
+
+Adapter::Reply Adapter::setExceptionBreakpoints(const Json& args) {
+  stopOnDeadlock_ = stopOnRuntimeError_ = stopOnLimit_ = false;
+  Json out = Json::array();
+  for (const Json& f : args.value("filters", Json::array())) {
+    const std::string name = f.get<std::string>();
+    if (name == "deadlock") stopOnDeadlock_ = true;
+    else if (name == "runtimeError") stopOnRuntimeError_ = true;
+    else if (name == "limit") stopOnLimit_ = true;
+    else return Error{fmt::format("no exception filter '{}': deadlock, runtimeError, limit", base::safeText(name))};
+    out.push_back({{"verified", true}});
+  }
+  return Json{{"breakpoints", out}};
+}
+
+void Adapter::reportStop(const debug::Stop& stop) {
+  using debug::StopReason;
+  const auto stopped = [&](std::string_view reason, const std::string& text) {
+    Json body = {{"reason", reason}, {"threadId", kThread}, {"allThreadsStopped", true}, {"description", text}};
+    if (!stop.breakpoints.empty()) body["hitBreakpointIds"] = stop.breakpoints;
+    if (reason == "exception") body["text"] = text;
+    event("stopped", std::move(body));
+  };
+  switch (stop.reason) {
+    case StopReason::Entry: return stopped("entry", stop.message);
+    case StopReason::Breakpoint: return stopped("breakpoint", stop.message);
+    case StopReason::Watch: return stopped("data breakpoint", stop.message);
+    case StopReason::Step:
+    case StopReason::Start: return stopped("step", stop.message);
+    case StopReason::Time: return stopped("goto", stop.message);
+    case StopReason::Pause: return stopped("pause", stop.message);
+    case StopReason::End:
+      output("console", "the program ended\n");
+      event("terminated");
+      event("exited", {{"exitCode", 0}});
+      state_ = State::Terminated;
+      return;
+    case StopReason::Deadlock:
+    case StopReason::RuntimeError:
+    case StopReason::Limit: {
+      const bool stops = stop.reason == StopReason::Deadlock       ? stopOnDeadlock_
+                         : stop.reason == StopReason::RuntimeError ? stopOnRuntimeError_
+                                                                   : stopOnLimit_;
+      if (stops) return stopped("exception", stop.message);
+      output("stderr", stop.message + "\n");
+      event("terminated");
+      event("exited", {{"exitCode", 1}});
+      state_ = State::Terminated;
+      return;
+    }
+  }
+}
+
+}  // namespace rs::dap

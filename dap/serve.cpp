@@ -1,0 +1,65 @@
+#include "dap/serve.h"
+
+#include <deque>
+#include <vector>
+
+#include "dap/adapter.h"
+#include "wire/framing.h"
+#include "wire/json.h"
+
+namespace rs::dap {
+
+namespace {
+
+// Does this frame ask a running program to stop (pause, terminate,
+// disconnect)? Read cheaply: a frame that is not such a request waits.
+bool stopsARun(const wire::Frame& f) {
+  if (f.kind != wire::Frame::Kind::Message) return false;
+  const Json m = Json::parse(f.body, nullptr, false);
+  if (!m.is_object() || !m.contains("command") || !m["command"].is_string()) return false;
+  const std::string& c = m["command"].get_ref<const std::string&>();
+  return c == "pause" || c == "terminate" || c == "disconnect";
+}
+
+}  // namespace
+
+int serve(wire::Input& in, wire::Output& out, std::ostream& log) {
+  Adapter adapter([&out](const Json& m) { return out.write(wire::frameMessage(wire::dumpJson(m))); }, log);
+  wire::FrameParser parser;
+  std::deque<wire::Frame> queue;
+  std::vector<char> buffer(std::size_t{1} << 16);
+  bool eof = false;
+  const auto pump = [&](bool wait) {
+    if (eof || (!wait && !in.ready())) return;
+    const std::size_t n = in.read(buffer.data(), buffer.size());
+    if (n == 0) {
+      eof = true;
+      return;
+    }
+    parser.feed(std::string_view(buffer.data(), n));
+    while (std::optional<wire::Frame> f = parser.next()) queue.push_back(std::move(*f));
+  };
+  adapter.setPoll([&] {
+    pump(false);
+    if (eof && queue.empty()) return true;  // gone, with nothing left to say
+    for (const wire::Frame& f : queue)
+      if (stopsARun(f)) return true;
+    return false;
+  });
+  while (!adapter.finished()) {
+    if (queue.empty()) {
+      if (eof) break;
+      pump(true);
+      continue;
+    }
+    const wire::Frame f = std::move(queue.front());
+    queue.pop_front();
+    adapter.receive(f);
+  }
+  if (adapter.disconnected()) return 0;
+  if (parser.partial()) log << "robotsim dap: the input ended inside a message\n";
+  log << "robotsim dap: the client left without disconnect\n";
+  return 1;
+}
+
+}  // namespace rs::dap

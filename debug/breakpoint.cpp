@@ -1,0 +1,27 @@
+#include "debug/breakpoint.h"
+
+#include <fmt/format.h>
+
+#include "base/text.h"
+
+namespace rs::debug {
+
+std::string Breakpoint::where() const {
+  switch (kind) {
+    case Kind::Line: return fmt::format("line {}", line);
+    case Kind::Label: return fmt::format("label {}, line {}", base::safeText(label), line);
+    case Kind::Instruction: return fmt::format("@{}, line {}", instruction + 1, line);
+    case Kind::Time: return fmt::format("at {} s", vm::formatSeconds(time));
+    case Kind::When: return fmt::format("when {}", when.text);
+  }
+  return {};
+}
+
+std::string Breakpoint::describe() const {
+  std::string text = where();
+  if (condition) text += fmt::format(" if {}", condition->text);
+  if (hits) text += fmt::format(" hits {}", hits->text());
+  return text;
+}
+
+}  // namespace rs::debug

@@ -1,0 +1,403 @@
+#include "debug/session.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "base/ascii.h"
+#include "base/text.h"
+
+namespace rs::debug {
+
+std::string_view reasonName(StopReason reason) {
+  switch (reason) {
+    case StopReason::Entry: return "entry";
+    case StopReason::Breakpoint: return "breakpoint";
+    case StopReason::Watch: return "watch";
+    case StopReason::Step: return "step";
+    case StopReason::Time: return "time";
+    case StopReason::Pause: return "pause";
+    case StopReason::Start: return "start";
+    case StopReason::End: return "end";
+    case StopReason::Deadlock: return "deadlock";
+    case StopReason::RuntimeError: return "runtime error";
+    case StopReason::Limit: return "limit";
+  }
+  return "";
+}
+
+// Where a forward run is going, besides the breakpoints.
+struct Session::Target {
+  std::uint64_t steps = UINT64_MAX;
+  vm::Micros time = INT64_MAX;
+  std::function<bool(const runtime::Run&)> done;  // the command's own end (next, finish)
+  bool breakpoints = true;
+};
+
+// The values at the moment before, for the stops that happen as something
+// changes: the clock (time breakpoints), each `when` breakpoint's truth,
+// each watched value.
+class Session::Probe {
+ public:
+  explicit Probe(const Session& s) : s_(s) {}
+  void capture(const runtime::Run& r) {
+    clock = r.clock();
+    held.resize(s_.breakpoints_.size());
+    for (std::size_t i = 0; i < held.size(); ++i)
+      held[i] = s_.breakpoints_[i].kind == Breakpoint::Kind::When && s_.breakpoints_[i].when.holds(r);
+    values.resize(s_.watches_.size());
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = valueOf(r, s_.watches_[i].what);
+  }
+  vm::Micros clock = 0;
+  std::vector<bool> held;
+  std::vector<std::int64_t> values;
+
+ private:
+  const Session& s_;
+};
+
+Session::Session(runtime::RunSpec spec, SessionOptions options) {
+  spec.log = false;
+  run_ = std::make_unique<runtime::Run>(std::move(spec));
+  timeline_ = std::make_unique<Timeline>(*run_, options.snapshotInterval, options.snapshotBudget);
+  stop_ = {StopReason::Entry, "at the start of the run", {}};
+}
+
+Session::~Session() = default;
+
+// --- breakpoints -------------------------------------------------------------
+
+std::uint32_t Session::lineWithCode(std::uint32_t line) const {
+  std::uint32_t best = 0;
+  for (std::uint32_t l : run_->image().lines)
+    if (l >= line && (best == 0 || l < best)) best = l;
+  return best;
+}
+
+namespace {
+
+// The first instruction of each run of instructions on `line`.
+std::vector<std::uint32_t> lineStarts(const vm::Image& image, std::uint32_t line) {
+  std::vector<std::uint32_t> at;
+  for (std::uint32_t i = 0; i < image.code.size(); ++i)
+    if (image.lines[i] == line && (i == 0 || image.lines[i - 1] != line)) at.push_back(i);
+  return at;
+}
+
+}  // namespace
+
+std::variant<int, std::string> Session::breakAtLine(std::uint32_t line) {
+  const std::uint32_t at = lineWithCode(line);
+  if (at == 0) return fmt::format("no instruction on line {} or after it", line);
+  Breakpoint b;
+  b.id = nextId();
+  b.kind = Breakpoint::Kind::Line;
+  b.line = at;
+  b.instructions = lineStarts(run_->image(), at);
+  breakpoints_.push_back(std::move(b));
+  return breakpoints_.back().id;
+}
+
+std::variant<int, std::string> Session::breakAtLabel(std::string_view label) {
+  const std::optional<std::uint32_t> at = run_->labelInstruction(label);
+  if (!at) return fmt::format("the program has no label '{}'", base::safeText(label.substr(0, 60)));
+  Breakpoint b;
+  b.id = nextId();
+  b.kind = Breakpoint::Kind::Label;
+  for (const vm::Label& l : run_->image().labels)
+    if (base::sameName(l.name, label)) b.label = l.name;
+  b.instruction = *at;
+  b.line = run_->image().lines[*at];
+  b.instructions = {*at};
+  breakpoints_.push_back(std::move(b));
+  return breakpoints_.back().id;
+}
+
+std::variant<int, std::string> Session::breakAtInstruction(std::uint32_t index) {
+  const std::size_t size = run_->image().code.size();
+  if (index >= size) return fmt::format("no instruction @{}: the program has @1 to @{}", index + 1, size);
+  Breakpoint b;
+  b.id = nextId();
+  b.kind = Breakpoint::Kind::Instruction;
+  b.instruction = index;
+  b.line = run_->image().lines[index];
+  b.instructions = {index};
+  breakpoints_.push_back(std::move(b));
+  return breakpoints_.back().id;
+}
+
+std::variant<int, std::string> Session::breakAtTime(vm::Micros t) {
+  if (t < 0) return std::string("a time is not negative");
+  Breakpoint b;
+  b.id = nextId();
+  b.kind = Breakpoint::Kind::Time;
+  b.time = t;
+  breakpoints_.push_back(std::move(b));
+  return breakpoints_.back().id;
+}
+
+int Session::breakWhen(Condition condition) {
+  Breakpoint b;
+  b.id = nextId();
+  b.kind = Breakpoint::Kind::When;
+  b.when = std::move(condition);
+  breakpoints_.push_back(std::move(b));
+  return breakpoints_.back().id;
+}
+
+Breakpoint* Session::find(int id) {
+  for (Breakpoint& b : breakpoints_)
+    if (b.id == id) return &b;
+  return nullptr;
+}
+
+bool Session::qualify(int id, std::optional<Condition> condition, std::optional<HitCondition> hits) {
+  Breakpoint* b = find(id);
+  if (!b) return false;
+  b->condition = std::move(condition);
+  b->hits = hits;
+  return true;
+}
+
+int Session::watch(Expression what) {
+  watches_.push_back({nextId(), std::move(what)});
+  return watches_.back().id;
+}
+
+bool Session::remove(int id) {
+  const auto bp = std::find_if(breakpoints_.begin(), breakpoints_.end(), [id](const Breakpoint& b) { return b.id == id; });
+  if (bp != breakpoints_.end()) {
+    breakpoints_.erase(bp);
+    return true;
+  }
+  const auto w = std::find_if(watches_.begin(), watches_.end(), [id](const Watch& x) { return x.id == id; });
+  if (w == watches_.end()) return false;
+  watches_.erase(w);
+  return true;
+}
+
+void Session::removeAll() {
+  breakpoints_.clear();
+  watches_.clear();
+}
+
+// --- where the run stops ------------------------------------------------------
+
+// Does a breakpoint or watch stop the run at this moment (`before` holds
+// the moment before)? `counting`: going forwards, so hits count and hit
+// conditions apply. The ids that stop it, and for watches what changed.
+bool Session::stopsHere(const runtime::Run& r, const Probe& before, bool counting, std::vector<int>& ids,
+                        std::vector<std::string>& notes) {
+  const std::uint32_t pc = r.interpreter().pc();
+  for (std::size_t i = 0; i < breakpoints_.size(); ++i) {
+    Breakpoint& b = breakpoints_[i];
+    bool at = false;
+    switch (b.kind) {
+      case Breakpoint::Kind::Line:
+      case Breakpoint::Kind::Label:
+      case Breakpoint::Kind::Instruction:
+        at = std::find(b.instructions.begin(), b.instructions.end(), pc) != b.instructions.end();
+        break;
+      case Breakpoint::Kind::Time:
+        at = before.clock <= b.time && r.clock() > b.time;
+        break;
+      case Breakpoint::Kind::When:
+        at = b.when.holds(r) && !(i < before.held.size() && before.held[i]);
+        break;
+    }
+    if (!at || (b.condition && !b.condition->holds(r))) continue;
+    if (counting && ++b.hitCount && b.hits && !b.hits->stopsAt(b.hitCount)) continue;
+    ids.push_back(b.id);
+  }
+  for (std::size_t i = 0; i < watches_.size(); ++i) {
+    const std::int64_t now = valueOf(r, watches_[i].what);
+    if (i < before.values.size() && now != before.values[i]) {
+      ids.push_back(watches_[i].id);
+      notes.push_back(fmt::format("{} changed from {} to {}", base::safeText(watches_[i].what.name), before.values[i], now));
+    }
+  }
+  return !ids.empty();
+}
+
+namespace {
+
+StopReason reasonOf(vm::StopReason r) {
+  switch (r) {
+    case vm::StopReason::End: return StopReason::End;
+    case vm::StopReason::Deadlock: return StopReason::Deadlock;
+    case vm::StopReason::RuntimeError: return StopReason::RuntimeError;
+    case vm::StopReason::StepLimit:
+    case vm::StopReason::TimeLimit:
+    case vm::StopReason::InstantLimit: return StopReason::Limit;
+    case vm::StopReason::Paused: return StopReason::Pause;
+  }
+  return StopReason::Pause;
+}
+
+}  // namespace
+
+Stop Session::finishedStop(bool already) const {
+  const vm::RunOutcome outcome = *run_->outcome();
+  Stop s;
+  s.reason = reasonOf(outcome.reason);
+  const std::string what = outcome.ok() ? std::string("the program ended")
+                                        : fmt::format("{}: {}", reasonName(s.reason), base::safeText(outcome.message));
+  s.message = already ? fmt::format("the run is over ({}); go back with reverse-step or goto-time", what) : what;
+  return s;
+}
+
+Stop Session::stopped(Stop stop) {
+  stop_ = stop;
+  for (const StopObserver& o : observers_) o(*this, stop_);
+  return stop_;
+}
+
+Stop Session::forward(const Target& target) {
+  if (run_->finished()) return stopped(finishedStop(true));
+  Probe probe(*this);
+  probe.capture(*run_);
+  std::vector<int> ids;
+  std::vector<std::string> notes;
+  bool done = false;
+  runtime::RunUntil until;
+  until.steps = target.steps;
+  until.time = target.time;
+  until.when = [&](const runtime::Run& r) {
+    ids.clear();
+    notes.clear();
+    bool stop = false;
+    if (target.breakpoints) stop = stopsHere(r, probe, true, ids, notes);
+    if (target.done && target.done(r)) done = stop = true;
+    probe.capture(r);
+    return stop;
+  };
+  // Nothing to look at after each step: the interpreter runs unwatched.
+  const bool watched = target.breakpoints && (!breakpoints_.empty() || !watches_.empty());
+  if (!watched && !target.done) until.when = nullptr;
+  timeline_->forward(until, interrupted_);
+  if (run_->finished()) return stopped(finishedStop(false));
+  Stop s;
+  if (timeline_->wasInterrupted()) {
+    s = {StopReason::Pause, "interrupted", {}};
+  } else if (!ids.empty()) {
+    const bool onlyWatches = std::none_of(ids.begin(), ids.end(), [this](int id) { return find(id) != nullptr; });
+    s.reason = onlyWatches ? StopReason::Watch : StopReason::Breakpoint;
+    s.breakpoints = ids;
+    std::vector<std::string> parts;
+    for (int id : ids)
+      if (const Breakpoint* b = find(id)) parts.push_back(fmt::format("breakpoint {} ({})", id, b->describe()));
+    for (std::size_t i = 0, w = 0; i < ids.size(); ++i)
+      if (!find(ids[i]) && w < notes.size()) parts.push_back(fmt::format("watch {}: {}", ids[i], notes[w++]));
+    for (const std::string& p : parts) s.message += (s.message.empty() ? "" : ", ") + p;
+  } else if (done || run_->interpreter().steps() >= target.steps) {
+    s = {StopReason::Step, "step done", {}};
+  } else if (run_->clock() > target.time) {
+    s = {StopReason::Time, fmt::format("the clock passed {} s", vm::formatSeconds(target.time)), {}};
+  } else {
+    s = {StopReason::Pause, "paused", {}};
+  }
+  return stopped(std::move(s));
+}
+
+Stop Session::step(std::uint64_t n) {
+  Target t;
+  const std::uint64_t now = run_->interpreter().steps();
+  t.steps = now + std::min(n, UINT64_MAX - now);
+  return forward(t);
+}
+
+Stop Session::next() {
+  Target t;
+  const std::size_t depth = run_->interpreter().callDepth();
+  t.done = [depth](const runtime::Run& r) { return r.interpreter().callDepth() <= depth; };
+  return forward(t);
+}
+
+std::variant<Stop, std::string> Session::finish() {
+  const std::size_t depth = run_->interpreter().callDepth();
+  if (depth == 0 || run_->finished()) return std::string("not in a subroutine: the call stack is empty");
+  Target t;
+  t.done = [depth](const runtime::Run& r) { return r.interpreter().callDepth() < depth; };
+  return forward(t);
+}
+
+Stop Session::resume() { return forward({}); }
+
+Stop Session::until(vm::Micros time) {
+  Target t;
+  t.time = time;
+  if (run_->clock() > time && !run_->finished())
+    return stopped({StopReason::Time, fmt::format("the clock is already past {} s", vm::formatSeconds(time)), {}});
+  return forward(t);
+}
+
+// --- backwards ------------------------------------------------------------------
+
+Stop Session::reverseStep(std::uint64_t n) {
+  const std::uint64_t now = run_->interpreter().steps();
+  if (now == 0) return stopped({StopReason::Start, "already at the start of the run", {}});
+  timeline_->goToStep(now - std::min(n, now));
+  if (run_->interpreter().steps() == 0) return stopped({StopReason::Start, "at the start of the run", {}});
+  return stopped({StopReason::Step, "step back done", {}});
+}
+
+Stop Session::reverseNext() {
+  if (run_->interpreter().steps() == 0) return stopped({StopReason::Start, "already at the start of the run", {}});
+  const std::size_t depth = run_->interpreter().callDepth();
+  const auto found = timeline_->lastMatch([](const runtime::Run&) {},
+                                          [depth](const runtime::Run& r) { return r.interpreter().callDepth() <= depth; });
+  if (!found) {
+    timeline_->goToStep(0);
+    return stopped({StopReason::Start, "at the start of the run", {}});
+  }
+  return stopped({StopReason::Step, "step back done", {}});
+}
+
+Stop Session::reverseContinue() {
+  if (run_->interpreter().steps() == 0) return stopped({StopReason::Start, "already at the start of the run", {}});
+  Probe probe(*this);
+  std::vector<int> ids, foundIds;
+  std::vector<std::string> notes, foundNotes;
+  const auto found = timeline_->lastMatch([&](const runtime::Run& r) { probe.capture(r); },
+                                          [&](const runtime::Run& r) {
+                                            ids.clear(), notes.clear();
+                                            const bool match = stopsHere(r, probe, false, ids, notes);
+                                            if (match) foundIds = ids, foundNotes = notes;
+                                            probe.capture(r);
+                                            return match;
+                                          });
+  if (!found) {
+    timeline_->goToStep(0);
+    return stopped({StopReason::Start, "at the start of the run: no breakpoint or watch stops before", {}});
+  }
+  Stop s;
+  const bool onlyWatches = std::none_of(foundIds.begin(), foundIds.end(), [this](int id) { return find(id) != nullptr; });
+  s.reason = onlyWatches ? StopReason::Watch : StopReason::Breakpoint;
+  s.breakpoints = foundIds;
+  for (std::size_t i = 0, w = 0; i < foundIds.size(); ++i) {
+    std::string part;
+    if (const Breakpoint* b = find(foundIds[i])) part = fmt::format("breakpoint {} ({})", foundIds[i], b->describe());
+    else if (w < foundNotes.size()) part = fmt::format("watch {}: {}", foundIds[i], foundNotes[w++]);
+    s.message += (s.message.empty() ? "" : ", ") + part;
+  }
+  return stopped(std::move(s));
+}
+
+Stop Session::gotoTime(vm::Micros t) {
+  timeline_->goToTime(t);
+  if (run_->finished() && run_->clock() <= t) {
+    Stop s = finishedStop(false);
+    s.message += fmt::format(" before {} s", vm::formatSeconds(t));
+    return stopped(std::move(s));
+  }
+  return stopped({StopReason::Time, fmt::format("the clock passed {} s", vm::formatSeconds(t)), {}});
+}
+
+std::optional<std::string> Session::setInput(int input, bool on) {
+  if (run_->finished()) return std::string("the run is over: go back first (reverse-step, goto-time)");
+  if (input < 1 || input > 8) return fmt::format("there is no input {}: inputs are 1..8", input);
+  if (!timeline_->setInput(input, on)) return std::string("too many input changes are waiting");
+  return std::nullopt;
+}
+
+}  // namespace rs::debug

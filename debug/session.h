@@ -1,0 +1,151 @@
+// A debugging session on one run, independent of its front ends (the
+// terminal's `robotsim debug`, the debug adapter's `robotsim dap`): the
+// breakpoints and watches, the ways to go forwards (step, next, finish,
+// continue, until a time) and backwards (reverse step, reverse next,
+// reverse continue, go to a time), `set input`, and why the run stopped.
+// Every stop leaves the session inspectable, also a deadlock, a runtime
+// error or a limit: the run can still be looked at and stepped back.
+//
+//   Session s(spec);
+//   s.addBreakpoint(lineBreakpoint);
+//   Stop stop = s.resume();
+//   runtime::RunView v = s.view();
+//   stop = s.reverseStep();
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "debug/breakpoint.h"
+#include "debug/timeline.h"
+#include "runtime/run/run.h"
+
+namespace rs::debug {
+
+enum class StopReason : std::uint8_t {
+  Entry,         ///< the session starts before the first instruction
+  Breakpoint,
+  Watch,         ///< a watched value changed
+  Step,          ///< a step, next, finish, reverse step or reverse next is done
+  Time,          ///< until or goto-time reached its time
+  Pause,         ///< interrupted (Ctrl-C, the adapter's pause)
+  Start,         ///< going backwards reached the start of the run
+  End,           ///< the program ended (END, or past the last instruction)
+  Deadlock,
+  RuntimeError,
+  Limit,         ///< a step, time or still-clock limit
+};
+
+/// "breakpoint", "deadlock", ... (one word or two, for messages and DAP).
+std::string_view reasonName(StopReason reason);
+
+struct Stop {
+  StopReason reason = StopReason::Entry;
+  std::string message;          ///< what happened, one line (names already made safe to print)
+  std::vector<int> breakpoints;  ///< the breakpoints and watches that stopped it
+  /// The run is over: it ended, deadlocked, failed or hit a limit.
+  bool finished() const {
+    return reason == StopReason::End || reason == StopReason::Deadlock || reason == StopReason::RuntimeError ||
+           reason == StopReason::Limit;
+  }
+};
+
+struct SessionOptions {
+  std::uint64_t snapshotInterval = kDefaultSnapshotInterval;
+  std::size_t snapshotBudget = kDefaultSnapshotBudget;
+};
+
+class Session {
+ public:
+  /// The run of `spec` on the simulated machine, standing before its first
+  /// instruction.
+  explicit Session(runtime::RunSpec spec, SessionOptions options = {});
+  ~Session();
+
+  const runtime::Run& run() const { return *run_; }
+  runtime::RunView view() const { return run_->view(); }
+  const Stop& lastStop() const { return stop_; }
+  const Timeline& timeline() const { return *timeline_; }
+
+  // --- breakpoints and watches --------------------------------------------
+  /// Before line `line` (or the first line with code after it).
+  std::variant<int, std::string> breakAtLine(std::uint32_t line);
+  std::variant<int, std::string> breakAtLabel(std::string_view label);
+  /// Before instruction `index` (0-based; messages number from 1, as disasm).
+  std::variant<int, std::string> breakAtInstruction(std::uint32_t index);
+  std::variant<int, std::string> breakAtTime(vm::Micros t);
+  /// When `condition` becomes true (`when out 2 = 1`, `when N = 3`).
+  int breakWhen(Condition condition);
+  /// Adds a condition and a hit count to breakpoint `id`; false if none.
+  bool qualify(int id, std::optional<Condition> condition, std::optional<HitCondition> hits);
+  int watch(Expression what);
+  /// Deletes a breakpoint or watch; false when there is none with that id.
+  bool remove(int id);
+  void removeAll();
+  const std::vector<Breakpoint>& breakpoints() const { return breakpoints_; }
+  const std::vector<Watch>& watches() const { return watches_; }
+  /// The line a line breakpoint asked at `line` stands on (0: none after it).
+  std::uint32_t lineWithCode(std::uint32_t line) const;
+
+  // --- forwards -----------------------------------------------------------
+  /// `n` instructions (fewer at a breakpoint or the end).
+  Stop step(std::uint64_t n = 1);
+  /// One instruction, over a GOSUB (until it returns).
+  Stop next();
+  /// Until the current subroutine returns; an error when none is running.
+  std::variant<Stop, std::string> finish();
+  /// Until a breakpoint, a watch, or the end.
+  Stop resume();
+  /// Until the clock passes `t` (or a breakpoint, or the end).
+  Stop until(vm::Micros t);
+
+  // --- backwards ----------------------------------------------------------
+  Stop reverseStep(std::uint64_t n = 1);
+  /// Back over a GOSUB: to the moment before the previous instruction run
+  /// at this call depth or an outer one.
+  Stop reverseNext();
+  /// Back to the last moment a breakpoint or watch would have stopped the
+  /// run going forwards (hit counts aside), else to the start.
+  Stop reverseContinue();
+  /// Where a fresh run paused at time `t` would stand, forwards or back
+  /// (breakpoints are not looked at).
+  Stop gotoTime(vm::Micros t);
+
+  /// Input `input` turns `on` from now on; reverse execution replays it.
+  /// An error message when the run is over or the input is not 1..8.
+  std::optional<std::string> setInput(int input, bool on);
+
+  /// Called after every command that moves the run, with the stop (a live
+  /// view of the workcell follows the debugger through this).
+  using StopObserver = std::function<void(const Session&, const Stop&)>;
+  void onStop(StopObserver observer) { observers_.push_back(std::move(observer)); }
+  /// Asked between slices of a long forward run; yes pauses it (Pause).
+  void setInterrupt(std::function<bool()> interrupted) { interrupted_ = std::move(interrupted); }
+
+ private:
+  struct Target;
+  class Probe;
+  Stop forward(const Target& target);
+  bool stopsHere(const runtime::Run& r, const Probe& before, bool counting, std::vector<int>& ids,
+                 std::vector<std::string>& notes);
+  Stop finishedStop(bool already) const;
+  Stop stopped(Stop stop);
+  int nextId() { return nextId_++; }
+  Breakpoint* find(int id);
+
+  std::unique_ptr<runtime::Run> run_;
+  std::unique_ptr<Timeline> timeline_;
+  std::vector<Breakpoint> breakpoints_;
+  std::vector<Watch> watches_;
+  int nextId_ = 1;
+  Stop stop_;
+  std::vector<StopObserver> observers_;
+  std::function<bool()> interrupted_;
+};
+
+}  // namespace rs::debug

@@ -1,0 +1,107 @@
+// Time travel for one run: the run goes forwards as usual, and every K
+// instructions the timeline keeps a snapshot of its whole state. Going to
+// an earlier moment restores the nearest snapshot at or before it and runs
+// forward again, deterministically, to the exact instruction: a reverse
+// step costs one restore and at most K instructions.
+//
+// The world can be changed from the present on (`setInput`, a debugger's
+// `set input`): the change is kept with the instruction count it was made
+// at and applied again whenever execution reaches that count (a moment
+// the timeline stops at always has its changes made), so that going back
+// and forth replays the changed stimuli. A change forgets the changes
+// made later in the run's history (that future no longer exists) and the
+// snapshots taken after it.
+//
+// Snapshots cost memory: past a budget, K doubles and every other
+// snapshot is dropped, so a run of any length stays within it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "runtime/run/run.h"
+
+namespace rs::debug {
+
+/// Instructions between snapshots; chosen in bench/ (docs/performance.md).
+inline constexpr std::uint64_t kDefaultSnapshotInterval = 4096;
+/// The memory snapshots may take before the interval doubles.
+inline constexpr std::size_t kDefaultSnapshotBudget = std::size_t{64} << 20;
+
+/// An input turned on or off by hand, after `steps` instructions.
+struct InputEdit {
+  std::uint64_t steps = 0;
+  int input = 1;
+  bool on = true;
+};
+
+/// The bytes a snapshot holds (its vectors and sets included), roughly.
+std::size_t snapshotBytes(const runtime::RunSnapshot& s);
+
+class Timeline {
+ public:
+  /// `run` must be simulated (run.canSnapshot()) and outlive the timeline;
+  /// it is taken where it stands (normally at its start).
+  explicit Timeline(runtime::Run& run, std::uint64_t interval = kDefaultSnapshotInterval,
+                    std::size_t budget = kDefaultSnapshotBudget);
+
+  /// Runs forward under `until` (its step count included), keeping
+  /// snapshots and applying the input edits on the way. `interrupted` is
+  /// asked between slices of at most K instructions; when it says yes the
+  /// call returns paused with `wasInterrupted()` set.
+  vm::RunOutcome forward(const runtime::RunUntil& until, const std::function<bool()>& interrupted = {});
+  bool wasInterrupted() const { return interrupted_; }
+
+  /// To the moment after exactly `steps` instructions (or the end, if the
+  /// run ends before).
+  void goToStep(std::uint64_t steps);
+  /// To the moment a fresh run paused by Run::runUntilTime(t) would be at:
+  /// right after the instruction that takes the clock past t (or the end).
+  void goToTime(vm::Micros t);
+
+  /// The latest moment s, before the present, at which `matches` says yes;
+  /// `reset` is called at the start of every stretch re-run (with the run
+  /// at the stretch's first moment, before `matches` hears of the moments
+  /// after it). Leaves the run where it was. nullopt when no moment after
+  /// the start matches.
+  std::optional<std::uint64_t> lastMatch(const std::function<void(const runtime::Run&)>& reset,
+                                         const std::function<bool(const runtime::Run&)>& matches);
+
+  /// Input `input` turns `on` from now on; false on a finished run or a
+  /// bad input.
+  bool setInput(int input, bool on);
+  const std::vector<InputEdit>& edits() const { return edits_; }
+
+  std::uint64_t interval() const { return interval_; }
+  std::size_t snapshotCount() const { return snapshots_.size(); }
+  std::size_t snapshotMemory() const { return bytes_; }
+
+ private:
+  struct Stored {
+    runtime::RunSnapshot snapshot;
+    std::size_t editsApplied = 0;
+    vm::Micros clock = 0;
+    std::size_t bytes = 0;
+  };
+  void keep();
+  void thin();
+  void restoreAtOrBefore(std::uint64_t steps);
+  void applyDueEdits();
+  // The next step count where forward() must stop by itself: a snapshot
+  // or an edit.
+  std::uint64_t nextBoundary() const;
+
+  runtime::Run& run_;
+  std::uint64_t interval_;
+  std::size_t budget_;
+  std::map<std::uint64_t, Stored> snapshots_;
+  std::size_t bytes_ = 0;
+  std::vector<InputEdit> edits_;
+  std::size_t editsApplied_ = 0;  // edits_ before this index are in the run's state
+  bool interrupted_ = false;
+};
+
+}  // namespace rs::debug

@@ -1,0 +1,167 @@
+// The debug adapter against scripted sessions: each tests/debug/dap/NAME.json
+// holds what a client sends (requests, or raw bytes for malformed frames)
+// and every message the adapter must answer with, in order, exactly
+// (responses, events, sequence numbers). They are served in-process by
+// dap::serve over streams, as `robotsim dap` serves stdin and stdout.
+// "${src}" stands for the source directory in both.
+//
+// How the expected messages were checked: by hand against the DAP
+// specification (a response's request_seq and command, success false with
+// a message for every refused request, the stopped event after the
+// response of the request that moved the run) and against the programs:
+// the lines, call stacks, clocks and values at each stop were worked out
+// from the program text and the motor speeds as in
+// tests/examples/test_examples.cpp.
+#include <catch2/catch.hpp>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <sstream>
+#include <thread>
+
+#include "dap/serve.h"
+#include "tests/cli/cli_support.h"
+#include "tests/debug/debug_test_util.h"
+#include "wire/framing.h"
+#include "wire/json.h"
+
+extern char** environ;
+
+namespace {
+
+using rs::wire::Json;
+
+const std::string kDir = rendertest::kSourceDir + "/tests/debug/dap/";
+
+std::string substituted(std::string text) {
+  for (std::size_t at; (at = text.find("${src}")) != std::string::npos;) text.replace(at, 6, rendertest::kSourceDir);
+  return text;
+}
+
+struct Served {
+  std::vector<Json> messages;
+  int code = 0;
+  std::string log;
+};
+
+Served serveBytes(const std::string& bytes) {
+  std::istringstream in(bytes);
+  std::ostringstream out, log;
+  rs::wire::StreamInput input(in);
+  rs::wire::StreamOutput output(out);
+  Served s;
+  s.code = rs::dap::serve(input, output, log);
+  for (const rs::wire::Frame& f : rs::wire::parseFrames(out.str())) {
+    REQUIRE(f.kind == rs::wire::Frame::Kind::Message);
+    s.messages.push_back(Json::parse(f.body));
+  }
+  s.log = log.str();
+  return s;
+}
+
+// The source directory back to "${src}", for a rewritten script.
+std::string unsubstituted(std::string text) {
+  for (std::size_t at; (at = text.find(rendertest::kSourceDir)) != std::string::npos;)
+    text.replace(at, rendertest::kSourceDir.size(), "${src}");
+  return text;
+}
+
+void checkSession(const std::string& name) {
+  const std::string path = kDir + name + ".json";
+  Json script = Json::parse(substituted(rs::testing::readBytes(path)));
+  std::string bytes;
+  for (const Json& item : script.at("send"))
+    bytes += item.is_object() && item.contains("raw") ? item["raw"].get<std::string>()
+                                                      : rs::wire::frameMessage(item.dump());
+  const Served s = serveBytes(bytes);
+  if (std::getenv("ROBOTSIM_UPDATE_GOLDEN")) {
+    script["expect"] = s.messages;
+    script["exit"] = s.code;
+    rs::testing::rewriteGolden(path, unsubstituted(script.dump(1)) + "\n");
+    return;
+  }
+  const Json& expect = script.at("expect");
+  INFO(s.log);
+  for (std::size_t i = 0; i < std::max(s.messages.size(), expect.size()); ++i) {
+    INFO("message " << i);
+    REQUIRE(i < s.messages.size());
+    REQUIRE(i < expect.size());
+    CHECK(s.messages[i].dump(1) == expect[i].dump(1));
+  }
+  CHECK(s.code == script.value("exit", 0));
+}
+
+}  // namespace
+
+TEST_CASE("dap session: launch, breakpoints with conditions and hit counts, stepping, scopes, evaluate",
+          "[debug][dap]") {
+  checkSession("stepping");
+}
+
+TEST_CASE("dap session: stepBack and reverseContinue", "[debug][dap]") { checkSession("reverse"); }
+
+TEST_CASE("dap session: exception breakpoints for deadlock, and the end of the program", "[debug][dap]") {
+  checkSession("exceptions");
+}
+
+TEST_CASE("dap session: malformed messages and requests in the wrong order get error responses", "[debug][dap]") {
+  checkSession("errors");
+}
+
+TEST_CASE("dap session: a client that leaves during a long run stops it, and the adapter exits 1", "[debug][dap]") {
+  checkSession("gone");
+}
+
+TEST_CASE("robotsim dap: a client that closes its pipe mid-run ends the process cleanly", "[debug][dap][process]") {
+  int toChild[2], fromChild[2];
+  REQUIRE(pipe(toChild) == 0);
+  REQUIRE(pipe(fromChild) == 0);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, toChild[0], 0);
+  posix_spawn_file_actions_adddup2(&actions, fromChild[1], 1);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addclose(&actions, toChild[1]);
+  posix_spawn_file_actions_addclose(&actions, fromChild[0]);
+  const std::string binary = ROBOTSIM_BINARY;
+  char* argv[] = {const_cast<char*>(binary.c_str()), const_cast<char*>("dap"), nullptr};
+  pid_t pid = -1;
+  REQUIRE(posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv, environ) == 0);
+  posix_spawn_file_actions_destroy(&actions);
+  close(toChild[0]);
+  close(fromChild[1]);
+  signal(SIGPIPE, SIG_IGN);
+  // A program that waits for ever in small steps: without the client it
+  // would run to the step limit, 100 million instructions.
+  const std::string program = kDir + "../programs/wait_forever.rsp";
+  std::string bytes;
+  for (const std::string& body :
+       {std::string(R"({"seq":1,"type":"request","command":"initialize","arguments":{}})"),
+        R"({"seq":2,"type":"request","command":"launch","arguments":{"program":")" + program + R"(","maxTime":1000000}})",
+        std::string(R"({"seq":3,"type":"request","command":"configurationDone"})")})
+    bytes += rs::wire::frameMessage(body);
+  REQUIRE(write(toChild[1], bytes.data(), bytes.size()) == static_cast<ssize_t>(bytes.size()));
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  close(toChild[1]);    // the client is gone: EOF ...
+  close(fromChild[0]);  // ... and nobody reads (EPIPE)
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  int status = 0;
+  bool exited = false;
+  while (std::chrono::steady_clock::now() < end && !exited) {
+    exited = waitpid(pid, &status, WNOHANG) == pid;
+    if (!exited) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (!exited) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+  REQUIRE(exited);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 1);
+}

@@ -1,0 +1,129 @@
+// robotsim debug at a real terminal (a pseudo-terminal, forkpty): the
+// prompt reads lines through libedit, so the arrow keys recall history and
+// a backspace edits the line; Ctrl-C at the prompt gives a new prompt and
+// in a long run pauses it; quit ends with 0. The batch transcripts cover
+// the commands; this covers the prompt around them.
+#include <catch2/catch.hpp>
+
+#include <poll.h>
+#include <pty.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/debug/debug_test_util.h"
+
+namespace {
+
+class Terminal {
+ public:
+  explicit Terminal(std::vector<std::string> args) {
+    winsize size{};
+    size.ws_row = 40;
+    size.ws_col = 200;
+    pid_ = forkpty(&fd_, nullptr, nullptr, &size);
+    REQUIRE(pid_ >= 0);
+    if (pid_ == 0) {
+      setenv("TERM", "xterm", 1);
+      setenv("HOME", "/nonexistent", 1);  // no ~/.editrc
+      const std::string binary = ROBOTSIM_BINARY;
+      args.insert(args.begin(), {binary, "debug"});
+      std::vector<char*> argv;
+      for (std::string& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execv(binary.c_str(), argv.data());
+      _exit(127);
+    }
+  }
+  ~Terminal() {
+    if (pid_ > 0 && !reaped_) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
+    if (fd_ >= 0) close(fd_);
+  }
+  void type(const std::string& keys) { REQUIRE(write(fd_, keys.data(), keys.size()) == static_cast<ssize_t>(keys.size())); }
+  // Everything printed until `text` appears (after what was read before), or fails after 20 s.
+  std::string until(const std::string& text) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (seen_.find(text, from_) == std::string::npos) {
+      REQUIRE(std::chrono::steady_clock::now() < end);
+      pollfd p{fd_, POLLIN, 0};
+      if (poll(&p, 1, 100) <= 0) continue;
+      char buffer[4096];
+      const ssize_t n = read(fd_, buffer, sizeof buffer);
+      if (n <= 0) break;
+      seen_.append(buffer, static_cast<std::size_t>(n));
+    }
+    const std::size_t at = seen_.find(text, from_);
+    INFO(seen_);
+    REQUIRE(at != std::string::npos);
+    std::string out = seen_.substr(from_, at + text.size() - from_);
+    from_ = at + text.size();
+    return out;
+  }
+  int exitStatus() {
+    int status = 0;
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (waitpid(pid_, &status, WNOHANG) != pid_) {
+      REQUIRE(std::chrono::steady_clock::now() < end);
+      char buffer[4096];
+      pollfd p{fd_, POLLIN, 0};
+      if (poll(&p, 1, 50) > 0 && read(fd_, buffer, sizeof buffer) <= 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    reaped_ = true;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  int fd_ = -1;
+  bool reaped_ = false;
+  std::string seen_;
+  std::size_t from_ = 0;
+};
+
+}  // namespace
+
+TEST_CASE("robotsim debug at a terminal: the prompt, history on the up arrow, a backspace, quit",
+          "[debug][terminal]") {
+  Terminal t({debugtest::kExamples + "nested_subroutines.rsp"});
+  t.until("(rsdb) ");
+  t.type("break grip\r");
+  CHECK(t.until("(rsdb) ").find("breakpoint 1: label grip, line 38") != std::string::npos);
+  t.type("continue\r");
+  CHECK(t.until("(rsdb) ").find("step 4, clock 0.500 s") != std::string::npos);
+  t.type("\x1b[A\r");  // the up arrow brings back "continue": the second grip
+  CHECK(t.until("(rsdb) ").find("step 22, clock 5.700 s") != std::string::npos);
+  t.type("print GRIPSX\x7f\r");  // a backspace takes the X away
+  CHECK(t.until("(rsdb) ").find("GRIPS = 1") != std::string::npos);
+  t.type("quit\r");
+  CHECK(t.exitStatus() == 0);
+}
+
+TEST_CASE("robotsim debug at a terminal: Ctrl-C at the prompt gives a new prompt, Ctrl-C in a long run pauses it",
+          "[debug][terminal]") {
+  // Waits for ever a millisecond at a time: to the default step limit,
+  // 100 million instructions, it would run for seconds.
+  Terminal t({rendertest::kSourceDir + "/tests/debug/programs/wait_forever.rsp", "--max-time", "1000000"});
+  t.until("(rsdb) ");
+  t.type("\x03");
+  t.until("(rsdb) ");
+  t.type("print clock\r");
+  CHECK(t.until("(rsdb) ").find("clock = 0.000 s (step 0)") != std::string::npos);
+  t.type("continue\r");
+  t.until("continue");
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  t.type("\x03");
+  const std::string paused = t.until("(rsdb) ");
+  CHECK(paused.find("interrupted") != std::string::npos);
+  CHECK(paused.find("the run is over") == std::string::npos);
+  t.type("quit\r");
+  CHECK(t.exitStatus() == 0);
+}
