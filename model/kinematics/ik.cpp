@@ -1,0 +1,118 @@
+#include "model/kinematics/ik.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "model/kinematics/angles.h"
+#include "model/kinematics/dh.h"
+#include "model/kinematics/ik_solvers.h"
+
+namespace rs::kinematics {
+
+namespace ik {
+
+Eigen::Isometry3d frameOf(const ChainModel& m, const double* q, int j) {
+  Eigen::Isometry3d F = Eigen::Isometry3d::Identity();
+  for (int i = 1; i <= j; ++i) F = F * dhTransform(m.joint(i).dh, q[i - 1]);
+  return F;
+}
+
+void fail(IkSolutions& out, IkErrorKind kind, double distance, std::string message, std::string hint) {
+  out.count = 0;
+  out.error = IkError{kind, std::move(message), std::move(hint), distance};
+}
+
+bool baseAngles(const FamilyShape& f, const Eigen::Vector3d& T, double lateral, double angles[2], IkSolutions& out) {
+  // z_1 · T = lateral with z_1 = k (-sin θ1, cos θ1, 0):  ρ sin(φ - θ1) = lateral / k.
+  const double rho = std::hypot(T.x(), T.y());
+  const double offset = lateral / f.lateralSign;
+  const double clearance = std::sqrt(std::max(0.0, rho * rho - offset * offset));
+  if (rho < std::abs(offset) - 1e-9 * f.reach) {
+    fail(out, IkErrorKind::Unreachable, std::abs(offset) - rho,
+         fmt::format("the point is {:.4g} from joint 1's axis, inside the {:.4g} the arm's side offset keeps clear",
+                     rho, std::abs(offset)),
+         "move the point further from the robot's base axis");
+    return false;
+  }
+  if (clearance < f.reach * std::sin(kSingularDegrees * kDegToRad)) {
+    fail(out, IkErrorKind::Singular, clearance,
+         fmt::format("near-singular pose: the point is {:.4g} from joint 1's axis (the line it turns about), where "
+                     "joint 1's angle is not defined",
+                     std::abs(rho - std::abs(offset))),
+         fmt::format("keep the point at least {:.4g} away from that axis",
+                     f.reach * std::sin(kSingularDegrees * kDegToRad) + std::abs(offset)));
+    return false;
+  }
+  const double phi = std::atan2(T.y(), T.x());
+  const double s = std::asin(std::clamp(offset / rho, -1.0, 1.0));
+  angles[0] = phi - s;
+  angles[1] = phi - (std::numbers::pi - s);
+  return true;
+}
+
+}  // namespace ik
+
+namespace {
+
+// Does q put the tool where the target says (the position, and each axis
+// the user wrote)? Tolerances scale with the arm's size.
+bool meets(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, const IkSolution& s) {
+  const Eigen::Isometry3d F = ik::frameOf(m, s.q.data(), m.size());
+  if ((F.translation() - t.position).norm() > 1e-7 * f.reach) return false;
+  constexpr double kAxis = 1e-7;
+  if (t.approachGiven && (F.linear().col(2) - t.rotation.col(2)).norm() > kAxis) return false;
+  if (t.normalGiven && (F.linear().col(0) - t.rotation.col(0)).norm() > kAxis) return false;
+  return true;
+}
+
+// The orientation the arm reaches nearest the one asked for: what the
+// message quotes.
+std::string nearestOrientation(const ChainModel& m, const IkSolution& s, const ToolTarget& t) {
+  const Eigen::Matrix3d R = ik::frameOf(m, s.q.data(), m.size()).linear();
+  std::string what;
+  if (t.approachGiven) what += fmt::format("approach ({:.4g}, {:.4g}, {:.4g})", R(0, 2), R(1, 2), R(2, 2));
+  if (t.normalGiven)
+    what += fmt::format("{}normal ({:.4g}, {:.4g}, {:.4g})", what.empty() ? "" : ", ", R(0, 0), R(1, 0), R(2, 0));
+  return what;
+}
+
+}  // namespace
+
+InverseKinematics::InverseKinematics(const ChainModel& model) : model_(model), family_(detectFamily(model)) {}
+
+IkSolutions InverseKinematics::solve(const ToolTarget& target, std::span<const double> reference) const {
+  IkSolutions out;
+  const int n = model_.size();
+  if (n == 0 || n > kMaxIkJoints || reference.size() != static_cast<std::size_t>(n)) {
+    ik::fail(out, IkErrorKind::NoChain, 0,
+             n > kMaxIkJoints ? fmt::format("inverse kinematics handles at most {} joints; this chain has {}",
+                                            kMaxIkJoints, n)
+                              : std::string("inverse kinematics needs a chain with joints"),
+             "");
+    return out;
+  }
+  switch (family_.kind) {
+    case IkFamily::Cartesian: ik::solveCartesian(model_, family_, target, out); break;
+    case IkFamily::Scara: ik::solveScara(model_, family_, target, out); break;
+    case IkFamily::Articulated5: ik::solveArticulated5(model_, family_, target, reference, out); break;
+    case IkFamily::Articulated6: ik::solveArticulated6(model_, family_, target, out); break;
+    case IkFamily::Spherical6: ik::solveSpherical6(model_, family_, target, out); break;
+    case IkFamily::Numeric: ik::solveNumeric(model_, family_, target, reference, out); return out;
+  }
+  // The 6-axis forms meet any orientation; the others only some: keep the
+  // solutions that meet what the user wrote.
+  if (out.count == 0 || family_.kind == IkFamily::Articulated6 || family_.kind == IkFamily::Spherical6) return out;
+  const IkSolution first = out.solutions[0];
+  int kept = 0;
+  for (int i = 0; i < out.count; ++i)
+    if (meets(model_, family_, target, out.solutions[static_cast<std::size_t>(i)]))
+      out.solutions[static_cast<std::size_t>(kept++)] = out.solutions[static_cast<std::size_t>(i)];
+  out.count = kept;
+  if (kept == 0)
+    ik::fail(out, IkErrorKind::OrientationFixed, 0,
+             fmt::format("the tool cannot take that orientation: {}", familyOrientation(family_.kind)),
+             fmt::format("the nearest it reaches here: {}", nearestOrientation(model_, first, target)));
+  return out;
+}
+
+}  // namespace rs::kinematics

@@ -1,0 +1,63 @@
+// The spherical wrist (joints 4, 5, 6 about axes through one point, each
+// at right angles to the next), for the Articulated6 and Spherical6
+// families. With s4 = sin α4, s5 = sin α5 (each ±1) and
+// M = R_3_6 · Rx(α6)^T = Rz(θ4) Rx(α4) Rz(θ5) Rx(α5) Rz(θ6), the third
+// column of M is
+//
+//   (s5 sin θ5 cos θ4,  s5 sin θ5 sin θ4,  -s4 s5 cos θ5),
+//
+// so θ5 comes from its last entry (two signs: the wrist flipped or not),
+// θ4 from the first two, and θ6 from what is left once Rz(θ4) Rx(α4)
+// Rz(θ5) Rx(α5) is taken off.
+#include <cmath>
+#include <fmt/format.h>
+
+#include "model/kinematics/angles.h"
+#include "model/kinematics/ik_solvers.h"
+
+namespace rs::kinematics::ik {
+
+namespace {
+
+Eigen::Matrix3d rotZ(double radians) { return Eigen::AngleAxisd(radians, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
+Eigen::Matrix3d rotX(const Joint& j) {
+  Eigen::Matrix3d R;
+  R << 1, 0, 0, 0, j.cosAlpha, -j.sinAlpha, 0, j.sinAlpha, j.cosAlpha;
+  return R;
+}
+
+}  // namespace
+
+bool solveWrist(const ChainModel& m, const Eigen::Matrix3d& R_3_6, IkSolution& a, IkSolution& b, IkSolutions& out) {
+  const Joint &j4 = m.joint(4), &j5 = m.joint(5), &j6 = m.joint(6);
+  const Eigen::Matrix3d M = R_3_6 * rotX(j6).transpose();
+  const double s4 = j4.sinAlpha, s5 = j5.sinAlpha;
+  const Eigen::Vector3d v = M.col(2);
+  const double h = std::hypot(v.x(), v.y());
+  if (h < std::sin(kSingularDegrees * kDegToRad)) {
+    const double off = std::asin(std::min(1.0, h)) * kRadToDeg;
+    fail(out, IkErrorKind::Singular, off,
+         fmt::format("near-singular pose: the wrist would be {:.3g} degrees from straight (joint 5), where joints 4 "
+                     "and 6 turn about the same line",
+                     off),
+         fmt::format("tilt the approach at least {} degree from joint 4's axis, or teach this point in encoder counts",
+                     kSingularDegrees));
+    return false;
+  }
+  const double c5 = -s4 * s5 * v.z();
+  for (int k = 0; k < 2; ++k) {
+    IkSolution& s = k == 0 ? a : b;
+    const double sign = k == 0 ? 1.0 : -1.0;
+    const double th5 = std::atan2(sign * h, c5);
+    const double th4 = std::atan2(sign * s5 * v.y(), sign * s5 * v.x());
+    const Eigen::Matrix3d N = (rotZ(th4) * rotX(j4) * rotZ(th5) * rotX(j5)).transpose() * M;
+    const double th6 = std::atan2(N(1, 0), N(0, 0));
+    s.q[3] = normalizeDegrees(th4 * kRadToDeg);
+    s.q[4] = normalizeDegrees(th5 * kRadToDeg);
+    s.q[5] = normalizeDegrees(th6 * kRadToDeg);
+    if (k == 1) s.config |= kWristFlip;
+  }
+  return true;
+}
+
+}  // namespace rs::kinematics::ik
