@@ -34,13 +34,13 @@ bool baseAngles(const FamilyShape& f, const Eigen::Vector3d& T, double lateral, 
          "move the point further from the robot's base axis");
     return false;
   }
-  if (clearance < f.reach * std::sin(kSingularDegrees * kDegToRad)) {
+  if (clearance < kSingularAxisFraction * f.reach) {
     fail(out, IkErrorKind::Singular, clearance,
          fmt::format("near-singular pose: the point is {:.4g} from joint 1's axis (the line it turns about), where "
                      "joint 1's angle is not defined",
                      std::abs(rho - std::abs(offset))),
          fmt::format("keep the point at least {:.4g} away from that axis",
-                     f.reach * std::sin(kSingularDegrees * kDegToRad) + std::abs(offset)));
+                     kSingularAxisFraction * f.reach + std::abs(offset)));
     return false;
   }
   const double phi = std::atan2(T.y(), T.x());

@@ -28,6 +28,9 @@ inline constexpr int kMaxIkSolutions = 8;
 /// Poses closer than this to a singular one are refused, in degrees of the
 /// joint angle that measures it (a straight elbow, a straight wrist).
 inline constexpr double kSingularDegrees = 1.0;
+/// Points nearer joint 1's axis than this fraction of the arm's size
+/// (FamilyShape::reach), where joint 1's angle is barely defined, are refused.
+inline constexpr double kSingularAxisFraction = 1e-3;
 
 /// The tool pose wanted, in frame 0 coordinates.
 struct ToolTarget {

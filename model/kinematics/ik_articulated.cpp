@@ -20,6 +20,13 @@ namespace rs::kinematics::ik {
 
 namespace {
 
+// A branch's error is kept unless one already is; a singular pose wins
+// over an unreachable one (the branch that misses may not be the one that
+// was meant).
+void note(IkError& kept, const IkError& error) {
+  if (kept.message.empty() || (error.kind == IkErrorKind::Singular && kept.kind != IkErrorKind::Singular)) kept = error;
+}
+
 double deg(double radians) { return normalizeDegrees(radians * kRadToDeg); }
 
 // q of the run's revolute joints from the planar angles Φ_g.
@@ -64,7 +71,7 @@ void addWrist(const ChainModel& m, const ToolTarget& t, IkSolution arm, IkSoluti
   const Eigen::Matrix3d R_0_3 = frameOf(m, arm.q.data(), 3).linear();
   IkSolutions scratch;
   if (!solveWrist(m, R_0_3.transpose() * t.rotation, a, b, scratch)) {
-    if (firstError.message.empty()) firstError = scratch.error;
+    note(firstError, scratch.error);
     return;
   }
   out.solutions[static_cast<std::size_t>(out.count++)] = a;
@@ -116,7 +123,7 @@ void solveArticulated5(const ChainModel& m, const FamilyShape& f, const ToolTarg
       }
       continue;
     }
-    if (firstError.message.empty()) firstError = scratch.error;
+    note(firstError, scratch.error);
   }
   finish(out, firstError);
 }
@@ -145,7 +152,7 @@ void solveArticulated6(const ChainModel& m, const FamilyShape& f, const ToolTarg
       }
       continue;
     }
-    if (firstError.message.empty()) firstError = scratch.error;
+    note(firstError, scratch.error);
   }
   finish(out, firstError);
 }
@@ -183,7 +190,7 @@ void solveSpherical6(const ChainModel& m, const FamilyShape& f, const ToolTarget
         continue;
       }
     }
-    if (firstError.message.empty()) firstError = scratch.error;
+    note(firstError, scratch.error);
   }
   finish(out, firstError);
 }
