@@ -9,6 +9,7 @@
 #include "base/near_names.h"
 #include "base/text.h"
 #include "cli/lib/help.h"
+#include "cli/lib/ik_command.h"
 #include "cli/lib/lsp_command.h"
 #include "cli/lib/options.h"
 #include "cli/lib/program_commands.h"
@@ -123,6 +124,9 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   where->add_option("--theta", rq.theta, "Joint values v,v,... (degrees; a prismatic joint's d)");
   where->add_option("--encoders", rq.encoders, "Encoder counts v,v,... (default: the home position)");
 
+  IkOptions ikOptions;
+  CLI::App* ik = addIkCommand(app, ikOptions);
+
   PortsOptions portsOptions;
   CLI::App* ports = addPortsCommand(app, portsOptions);
   EmulateOptions emulateOptions;
@@ -160,6 +164,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   if (table->parsed()) return tableCommand(rq, out, err);
   if (matrix->parsed()) return matrixCommand(rq, out, err);
   if (where->parsed()) return whereCommand(rq, out, err);
+  if (ik->parsed()) return ikCommand(ikOptions, out, err);
   if (ports->parsed()) return portsCommand(portsOptions, out, err);
   if (emulate->parsed()) return emulateCommand(emulateOptions, out, err);
   return helpCommand(helpTopic, out, err);
