@@ -127,6 +127,8 @@ struct Checker::State {
   diag::Pos pointsHeader;
   std::shared_ptr<const workcell::PlacedRobot> robot = nullptr;  // for points written as poses
   std::unique_ptr<workcell::PoseSolver> poser = nullptr;  // made at the first such point
+  std::vector<double> lastPoseQ = {};                      // exact joint values of the last pose point
+  std::size_t lastPoseIndex = 0;                           // 1 + its index in image.points (0: none)
   // Names compared for "did you mean" hints, over the whole compile: a
   // file of a million undefined labels and a million labels must not cost
   // a million million comparisons.
@@ -149,7 +151,8 @@ struct Checker::State {
   void checkIo(const Instruction& in);
   void checkTargets(const Instruction& in);
   void resolve();
-  void resolvePose(const PointDef& p, std::span<const std::int32_t> reference, vm::Point& point);
+  void resolvePose(const PointDef& p, std::span<const std::int32_t> reference, std::span<const double> referenceQ,
+                   vm::Point& point);
   void warnUnassignedVariables();
   void analyseFlow();
   std::vector<bool> reachable(const std::vector<std::uint32_t>& starts) const;
@@ -232,13 +235,13 @@ void Checker::point(const PointDef& p) {
   if (p.isPose) {
     // The previous point with a value per motor is the reference; home (all 0) for the first.
     std::vector<std::int32_t> reference(s.motors().size(), 0);
-    for (auto q = s.image.points.rbegin(); q != s.image.points.rend(); ++q)
-      if (q->values.size() == reference.size()) {
-        reference = q->values;
-        break;
-      }
+    std::size_t from = s.image.points.size();
+    while (from > 0 && s.image.points[from - 1].values.size() != reference.size()) --from;
+    if (from > 0) reference = s.image.points[from - 1].values;
+    // A pose point before it: its exact joint values, so what is kept does not drift.
+    const bool exact = from > 0 && from == s.lastPoseIndex;
     vm::Point& point = s.image.points.emplace_back(vm::Point{std::string(p.name), {}, {}});
-    s.resolvePose(p, reference, point);
+    s.resolvePose(p, reference, exact ? std::span<const double>(s.lastPoseQ) : std::span<const double>(), point);
     return;
   }
   vm::Point& point = s.image.points.emplace_back(vm::Point{std::string(p.name), {}, {}});
@@ -259,7 +262,8 @@ std::span<const std::int32_t> Checker::lastPointValues() const {
 }
 
 // A point written as a tool pose, to encoder counts with the target's robot.
-void Checker::State::resolvePose(const PointDef& p, std::span<const std::int32_t> reference, vm::Point& point) {
+void Checker::State::resolvePose(const PointDef& p, std::span<const std::int32_t> reference,
+                                 std::span<const double> referenceQ, vm::Point& point) {
   const PointPose& pose = p.pose;
   if (!robot) {
     diag.error(pose.at.pos,
@@ -278,7 +282,7 @@ void Checker::State::resolvePose(const PointDef& p, std::span<const std::int32_t
   if (pose.approach.given) request.approach = Eigen::Vector3d(pose.approach.v[0], pose.approach.v[1], pose.approach.v[2]);
   if (pose.normal.given) request.normal = Eigen::Vector3d(pose.normal.v[0], pose.normal.v[1], pose.normal.v[2]);
   if (pose.gripGiven) request.grip = static_cast<std::int32_t>(pose.grip.number);
-  const workcell::PoseResult r = poser->solve(request, reference);
+  const workcell::PoseResult r = poser->solve(request, reference, referenceQ);
   if (!r.ok()) {
     const workcell::PoseProblem& problem = *r.problem;
     const diag::Pos at = problem.field == workcell::PoseField::Approach ? pose.approach.pos
@@ -291,6 +295,8 @@ void Checker::State::resolvePose(const PointDef& p, std::span<const std::int32_t
   }
   point.values = r.encoders;
   point.origin = std::string(pose.text);
+  lastPoseQ = r.q;
+  lastPoseIndex = image.points.size();  // 1 + this point's index
 }
 
 std::optional<vm::Image> Checker::finish() {

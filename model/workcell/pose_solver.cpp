@@ -43,7 +43,8 @@ PoseSolver::PoseSolver(const PlacedRobot& robot)
       F_world_0_(robot.F_world_design * robot.robot.frames.front()),
       F_design_0_(robot.robot.frames.front()) {}
 
-PoseResult PoseSolver::solve(const PoseRequest& request, std::span<const std::int32_t> reference) const {
+PoseResult PoseSolver::solve(const PoseRequest& request, std::span<const std::int32_t> reference,
+                             std::span<const double> referenceQ) const {
   PoseResult result;
   const ChainModel& chain = ik_.model();
   const Robot& robot = robot_.robot;
@@ -56,6 +57,7 @@ PoseResult PoseSolver::solve(const PoseRequest& request, std::span<const std::in
   std::vector<double> refEncoders(reference.begin(), reference.end());
   refEncoders.resize(std::max<std::size_t>(refEncoders.size(), static_cast<std::size_t>(chain.encoderCount())), 0.0);
   kinematics::jointValuesFromEncoders(chain, std::span<const double>(refEncoders), refQ);
+  if (referenceQ.size() == n) refQ.assign(referenceQ.begin(), referenceQ.end());
   const Eigen::Matrix3d R_ref = toolFrame(chain, refQ).linear();
 
   // The target in frame 0; what is not written comes from the previous point.

@@ -56,7 +56,11 @@ class PoseSolver {
 
   /// Encoder counts for `request`; `reference` holds the previous point's
   /// counts (one per motor; the home position, all 0, for the first).
-  PoseResult solve(const PoseRequest& request, std::span<const std::int32_t> reference) const;
+  /// `referenceQ`, when the previous point was itself a pose, is its exact
+  /// joint values (PoseResult::q): what is kept is then kept exactly, not
+  /// as rounded to whole counts, so it does not drift from point to point.
+  PoseResult solve(const PoseRequest& request, std::span<const std::int32_t> reference,
+                   std::span<const double> referenceQ = {}) const;
 
   const kinematics::InverseKinematics& ik() const { return ik_; }
   /// How many motors a point has (arm joints, then the gripper if any).
