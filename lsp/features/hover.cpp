@@ -69,6 +69,12 @@ std::string pointHover(const ProgramContext& p, const Occurrence& o) {
     values += fmt::format("{}{}={}", i ? " " : "", i < motors.size() ? std::string(1, motors[i].letter) : "?",
                           point->values[i]);
   std::string out = fmt::format("**point** `{}` (line {}): {}", point->name, point->pos.line, values);
+  if (!point->pose.empty())
+    out = point->values.empty()
+              ? fmt::format("**point** `{}` (line {}): the tool pose `{}`, not resolved (see its diagnostic)",
+                            point->name, point->pos.line, point->pose)
+              : fmt::format("**point** `{}` (line {}): {}, resolved from the tool pose `{}`", point->name,
+                            point->pos.line, values, point->pose);
   const std::optional<workcell::PlacedRobot>& robot = p.analysis.cell().robot;
   if (robot && point->values.size() == motors.size() &&
       point->values.size() >= static_cast<std::size_t>(robot->robot.chain->encoderCount())) {

@@ -100,7 +100,23 @@ PoseResult PoseSolver::solve(const PoseRequest& request, std::span<const std::in
                             : request.approach                                         ? PoseField::Approach
                                                                                        : PoseField::Normal;
     const kinematics::IkErrorKind kind = solved.error.kind;
-    return fail(field, solved.error.message, solved.error.hint,
+    std::string hint = solved.error.hint;
+    if (kind == kinematics::IkErrorKind::OrientationFixed) {
+      // What the arm does reach at this point, in the request's coordinates.
+      kinematics::ToolTarget free = target;
+      free.approachGiven = free.normalGiven = false;
+      const kinematics::IkSolutions near = ik_.solve(free, refQ);
+      if (near.ok()) {
+        const std::vector<double> q(near.solutions[0].q.begin(), near.solutions[0].q.begin() + static_cast<long>(n));
+        const Eigen::Matrix3d R = F_X_0.linear() * toolFrame(chain, q).linear();
+        const auto axis = [&](int c) {
+          const auto num = [](double v) { return fmt::format("{:.4g}", std::abs(v) < 5e-5 ? 0.0 : v); };
+          return fmt::format("{} {} {}", num(R(0, c)), num(R(1, c)), num(R(2, c)));
+        };
+        hint = fmt::format("here it reaches APPROACH {} NORMAL {}", axis(2), axis(0));
+      }
+    }
+    return fail(field, solved.error.message, hint,
                 kind == kinematics::IkErrorKind::Singular           ? "pose-singular"
                 : kind == kinematics::IkErrorKind::OrientationFixed ? "pose-orientation"
                                                                      : "pose-unreachable");
