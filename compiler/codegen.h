@@ -22,7 +22,7 @@ struct Target {
   std::uint16_t callDepthLimit = vm::kDefaultCallDepth;
   /// The robot as placed in the cell, when it has a kinematic model: points
   /// written as tool poses are resolved with it (none: they are refused).
-  std::shared_ptr<const workcell::PlacedRobot> robot;
+  std::shared_ptr<const workcell::PlacedRobot> robot = nullptr;
 };
 
 /// The record of `in`; its motor vector or triple is appended to `constants`.

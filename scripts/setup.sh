@@ -23,8 +23,11 @@ packages=(
 # lcov's genhtml reads robotsim test's coverage files; lua5.4 is the
 # benchmarks' peer; neovim's built-in LSP client drives the language server
 # end to end (the editor_neovim test); clang and its runtime (libFuzzer)
-# build the sanitizer and fuzzing build; unzip lists the VS Code package.
-[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 neovim clang libclang-rt-14-dev unzip)
+# build the sanitizer and fuzzing build; unzip lists the VS Code package;
+# Orocos KDL is the inverse-kinematics benchmark's peer and independent
+# check (bench/ik_bench.cpp; the benchmark builds without it).
+[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 neovim clang libclang-rt-14-dev unzip
+  liborocos-kdl-dev)
 
 missing=()
 for p in "${packages[@]}"; do

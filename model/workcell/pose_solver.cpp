@@ -49,8 +49,8 @@ PoseResult PoseSolver::solve(const PoseRequest& request, std::span<const std::in
   const ChainModel& chain = ik_.model();
   const Robot& robot = robot_.robot;
   const auto n = static_cast<std::size_t>(chain.size());
-  const auto fail = [&](PoseField field, std::string message, std::string hint, std::string code) {
-    result.problem = PoseProblem{field, std::move(message), std::move(hint), std::move(code)};
+  const auto fail = [&](PoseField field, std::string message, std::string hint, std::string_view code) {
+    result.problem = PoseProblem{field, std::move(message), std::move(hint), code};
     return result;
   };
   std::vector<double> refQ(n);

@@ -11,6 +11,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "model/kinematics/ik.h"
@@ -34,8 +35,8 @@ struct PoseProblem {
   std::string message;  ///< a sentence without a position
   std::string hint;
   /// A stable name: pose-vector, pose-unreachable, pose-singular,
-  /// pose-orientation, pose-out-of-range, pose-grip.
-  std::string code;
+  /// pose-orientation, pose-out-of-range, pose-grip (a literal: never dangles).
+  std::string_view code;
 };
 
 struct PoseResult {
