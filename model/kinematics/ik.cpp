@@ -6,14 +6,36 @@
 #include "model/kinematics/angles.h"
 #include "model/kinematics/dh.h"
 #include "model/kinematics/ik_solvers.h"
+#include "model/kinematics/trig.h"
 
 namespace rs::kinematics {
 
 namespace ik {
 
 Eigen::Isometry3d frameOf(const ChainModel& m, const double* q, int j) {
+  // F_0_j = A_1···A_j with A_i's structure used (as forward_kinematics.cpp
+  // does): with X, Y, Z, o the columns so far and v = cosθ Y − sinθ X,
+  // x' = cosθ X + sinθ Y, y' = cosα v + sinα Z, z' = cosα Z − sinα v,
+  // o' = o + a x' + d Z.
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d o = Eigen::Vector3d::Zero();
+  for (int i = 1; i <= j; ++i) {
+    const Joint& joint = m.joint(i);
+    double ct = joint.cosTheta, st = joint.sinTheta, d = q[i - 1];
+    if (joint.type() == JointType::Revolute) {
+      sinCosDegrees(q[i - 1], st, ct);
+      d = joint.dh.d;
+    }
+    const Eigen::Vector3d X = R.col(0), Y = R.col(1), Z = R.col(2);
+    const Eigen::Vector3d v = ct * Y - st * X;
+    R.col(0) = ct * X + st * Y;
+    R.col(1) = joint.cosAlpha * v + joint.sinAlpha * Z;
+    R.col(2) = joint.cosAlpha * Z - joint.sinAlpha * v;
+    o += joint.dh.a * R.col(0) + d * Z;
+  }
   Eigen::Isometry3d F = Eigen::Isometry3d::Identity();
-  for (int i = 1; i <= j; ++i) F = F * dhTransform(m.joint(i).dh, q[i - 1]);
+  F.linear() = R;
+  F.translation() = o;
   return F;
 }
 

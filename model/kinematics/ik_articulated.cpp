@@ -27,7 +27,7 @@ void note(IkError& kept, const IkError& error) {
   if (kept.message.empty() || (error.kind == IkErrorKind::Singular && kept.kind != IkErrorKind::Singular)) kept = error;
 }
 
-double deg(double radians) { return normalizeDegrees(radians * kRadToDeg); }
+double deg(double radians) { return wrapDegrees(radians * kRadToDeg); }
 
 // q of the run's revolute joints from the planar angles Φ_g.
 void setRun(const PlanarRun& run, const double* phi, IkSolution& s) {
@@ -69,9 +69,9 @@ Eigen::Vector3d wristCentre(const ChainModel& m, const ToolTarget& t) {
 void addWrist(const ChainModel& m, const ToolTarget& t, IkSolution arm, IkSolutions& out, IkError& firstError) {
   IkSolution a = arm, b = arm;
   const Eigen::Matrix3d R_0_3 = frameOf(m, arm.q.data(), 3).linear();
-  IkSolutions scratch;
-  if (!solveWrist(m, R_0_3.transpose() * t.rotation, a, b, scratch)) {
-    note(firstError, scratch.error);
+  IkError error;
+  if (!solveWrist(m, R_0_3.transpose() * t.rotation, a, b, error)) {
+    note(firstError, error);
     return;
   }
   out.solutions[static_cast<std::size_t>(out.count++)] = a;

@@ -64,7 +64,9 @@ bool makePlanarRun(const ChainModel& model, int first, int last, const Eigen::Ve
 bool solveTwoLink(const Eigen::Vector2d& W, const Eigen::Vector2d& V0, const Eigen::Vector2d& V1,
                   std::array<Eigen::Vector2d, 2>& phis, double& miss, double& sinElbow) {
   const double l0 = V0.norm(), l1 = V1.norm(), r = W.norm();
-  const double b0 = std::atan2(V0.y(), V0.x()), b1 = std::atan2(V1.y(), V1.x());
+  // The links' own directions: 0 for the usual (a, 0) links, no atan2 then.
+  const double b0 = V0.y() == 0.0 && V0.x() > 0 ? 0.0 : std::atan2(V0.y(), V0.x());
+  const double b1 = V1.y() == 0.0 && V1.x() > 0 ? 0.0 : std::atan2(V1.y(), V1.x());
   const double c = (r * r - l0 * l0 - l1 * l1) / (2.0 * l0 * l1);
   miss = 0.0;
   if (c > 1.0) miss = r - (l0 + l1);
@@ -72,11 +74,12 @@ bool solveTwoLink(const Eigen::Vector2d& W, const Eigen::Vector2d& V0, const Eig
   if (miss > 0.0) return false;
   const double cc = std::clamp(c, -1.0, 1.0);
   const double gamma = std::acos(cc);  // angle from link 0's direction to link 1's
-  sinElbow = std::sin(gamma);
+  sinElbow = std::sqrt(std::max(0.0, 1.0 - cc * cc));
   const double towards = std::atan2(W.y(), W.x());
   for (int k = 0; k < 2; ++k) {
     const double g = k == 0 ? gamma : -gamma;
-    const double d0 = towards - std::atan2(l1 * std::sin(g), l0 + l1 * std::cos(g));  // direction of link 0
+    const double sg = k == 0 ? sinElbow : -sinElbow;
+    const double d0 = towards - std::atan2(l1 * sg, l0 + l1 * cc);  // direction of link 0
     const double phi0 = d0 - b0;
     const double phi1 = d0 + g - b1;
     phis[static_cast<std::size_t>(k)] = Eigen::Vector2d(phi0, phi1);

@@ -53,7 +53,7 @@ void solveScara(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, 
     double previous = 0;
     for (int g = 0; g < run.revolutes; ++g) {
       const std::size_t gi = static_cast<std::size_t>(g);
-      s.q[static_cast<std::size_t>(run.revolute[gi] - 1)] = normalizeDegrees((phi[g] - previous) / run.sign[gi] * kRadToDeg);
+      s.q[static_cast<std::size_t>(run.revolute[gi] - 1)] = wrapDegrees((phi[g] - previous) / run.sign[gi] * kRadToDeg);
       previous = phi[g];
     }
     if (run.prismatic != 0) s.q[static_cast<std::size_t>(run.prismatic - 1)] = d;

@@ -4,6 +4,7 @@
 // numeric method's workspace.
 #pragma once
 
+#include <cmath>
 #include <span>
 
 #include "model/kinematics/ik.h"
@@ -30,7 +31,16 @@ bool baseAngles(const FamilyShape& f, const Eigen::Vector3d& T, double lateral, 
 /// Joints 4, 5, 6 of a spherical wrist from the rotation R_3_6 they must
 /// make: both solutions into a and b (q[3..5]); false when too near the
 /// straight wrist.
-bool solveWrist(const ChainModel& m, const Eigen::Matrix3d& R_3_6, IkSolution& a, IkSolution& b, IkSolutions& out);
+bool solveWrist(const ChainModel& m, const Eigen::Matrix3d& R_3_6, IkSolution& a, IkSolution& b, IkError& error);
+
+/// An angle in degrees from atan2 (within ±540) into (-180, 180], as
+/// normalizeDegrees but without std::remainder's cost.
+inline double wrapDegrees(double d) {
+  double r = d - 360.0 * std::nearbyint(d * (1.0 / 360.0));
+  if (r <= -180.0) r += 360.0;
+  if (r > 180.0) r -= 360.0;
+  return r + 0.0;
+}
 
 void fail(IkSolutions& out, IkErrorKind kind, double distance, std::string message, std::string hint);
 

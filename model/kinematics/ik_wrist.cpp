@@ -19,7 +19,12 @@ namespace rs::kinematics::ik {
 
 namespace {
 
-Eigen::Matrix3d rotZ(double radians) { return Eigen::AngleAxisd(radians, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
+// Rz from an angle's cosine and sine (already at hand: no trigonometry).
+Eigen::Matrix3d rotZ(double c, double s) {
+  Eigen::Matrix3d R;
+  R << c, -s, 0, s, c, 0, 0, 0, 1;
+  return R;
+}
 Eigen::Matrix3d rotX(const Joint& j) {
   Eigen::Matrix3d R;
   R << 1, 0, 0, 0, j.cosAlpha, -j.sinAlpha, 0, j.sinAlpha, j.cosAlpha;
@@ -28,7 +33,7 @@ Eigen::Matrix3d rotX(const Joint& j) {
 
 }  // namespace
 
-bool solveWrist(const ChainModel& m, const Eigen::Matrix3d& R_3_6, IkSolution& a, IkSolution& b, IkSolutions& out) {
+bool solveWrist(const ChainModel& m, const Eigen::Matrix3d& R_3_6, IkSolution& a, IkSolution& b, IkError& error) {
   const Joint &j4 = m.joint(4), &j5 = m.joint(5), &j6 = m.joint(6);
   const Eigen::Matrix3d M = R_3_6 * rotX(j6).transpose();
   const double s4 = j4.sinAlpha, s5 = j5.sinAlpha;
@@ -36,25 +41,26 @@ bool solveWrist(const ChainModel& m, const Eigen::Matrix3d& R_3_6, IkSolution& a
   const double h = std::hypot(v.x(), v.y());
   if (h < std::sin(kSingularDegrees * kDegToRad)) {
     const double off = std::asin(std::min(1.0, h)) * kRadToDeg;
-    fail(out, IkErrorKind::Singular, off,
+    error = IkError{IkErrorKind::Singular,
          fmt::format("near-singular pose: the wrist would be {:.3g} degrees from straight (joint 5), where joints 4 "
                      "and 6 turn about the same line",
                      off),
          fmt::format("tilt the approach at least {} degree from joint 4's axis, or teach this point in encoder counts",
-                     kSingularDegrees));
+                     kSingularDegrees),
+         off};
     return false;
   }
   const double c5 = -s4 * s5 * v.z();
+  const Eigen::Matrix3d X4 = rotX(j4), X5 = rotX(j5);
   for (int k = 0; k < 2; ++k) {
     IkSolution& s = k == 0 ? a : b;
     const double sign = k == 0 ? 1.0 : -1.0;
-    const double th5 = std::atan2(sign * h, c5);
-    const double th4 = std::atan2(sign * s5 * v.y(), sign * s5 * v.x());
-    const Eigen::Matrix3d N = (rotZ(th4) * rotX(j4) * rotZ(th5) * rotX(j5)).transpose() * M;
-    const double th6 = std::atan2(N(1, 0), N(0, 0));
-    s.q[3] = normalizeDegrees(th4 * kRadToDeg);
-    s.q[4] = normalizeDegrees(th5 * kRadToDeg);
-    s.q[5] = normalizeDegrees(th6 * kRadToDeg);
+    // cos and sin of θ4 and θ5 straight from M's column (sin θ5 = sign · h).
+    const double c4 = sign * s5 * v.x() / h, s4v = sign * s5 * v.y() / h;
+    const Eigen::Matrix3d N = (rotZ(c4, s4v) * X4 * rotZ(c5, sign * h) * X5).transpose() * M;
+    s.q[3] = wrapDegrees(std::atan2(s4v, c4) * kRadToDeg);
+    s.q[4] = wrapDegrees(std::atan2(sign * h, c5) * kRadToDeg);
+    s.q[5] = wrapDegrees(std::atan2(N(1, 0), N(0, 0)) * kRadToDeg);
     if (k == 1) s.config |= kWristFlip;
   }
   return true;
