@@ -137,3 +137,18 @@ TEST_CASE("a pose point without a kinematic robot is refused with a hint", "[com
   CHECK(r.diagnostics.front().code == "pose-no-model");
   CHECK(r.diagnostics.front().hint.find("--cell") != std::string::npos);
 }
+
+TEST_CASE("a gantry pose point gives the counts its axes' formula gives", "[compiler][pose]") {
+  // The gantry (stdlib/robots/gantry.rsd, motors X Z Y A, 0.1 per count):
+  // tool centre point (500 + X/10, 200 - Y/10, 400 + Z/10) in the cell, so
+  // AT 220 50 680 is X = -2800, Z = 2800, Y = 1500, exactly.
+  const Cell gantry = loadCell("gantry-cell");
+  const auto r = compileFor(gantry, "END\nPOINTS\nP AT 220 50 680 GRIP 100\nQ AT 220 50 680 APPROACH 0 -1 0\n");
+  REQUIRE(r.ok());
+  CHECK(r.image->points[0].values == std::vector<std::int32_t>{-2800, 2800, 1500, 100});
+  CHECK(r.image->points[1].values == std::vector<std::int32_t>{-2800, 2800, 1500, 100});
+  // A gantry never turns its tool: another approach is refused, with the one it has.
+  CHECK(firstError(compileFor(gantry, "END\nPOINTS\nP AT 220 50 680 APPROACH 1 0 0\n")) ==
+        "3:17: point P: the tool cannot take that orientation: its tool never turns: the orientation is fixed "
+        "[pose-orientation] hint: here it reaches APPROACH 0 -1 0 NORMAL 1 0 0");
+}
