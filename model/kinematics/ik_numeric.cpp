@@ -5,7 +5,7 @@
 //   error     e = (p* - p, L·ω), ω the rotation error of the axes the user
 //             wrote (0.5 Σ x_k × x_k* over n, s, a when both were written,
 //             a × a* or n × n* when one was, nothing when none was)
-//   step      Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e, λ = 0.01 · L, L the arm's size
+//   step      Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e, λ = 0.001 · L, L the arm's size
 //             (FamilyShape::reach), J the geometric Jacobian of the rows kept
 //   stop      |p* - p| ≤ 1e-9 L and |ω| ≤ 1e-9, or after 200 steps
 //
@@ -24,7 +24,7 @@ namespace rs::kinematics::ik {
 namespace {
 
 constexpr int kIterations = 200;
-constexpr double kDamping = 0.01;  // × L
+constexpr double kDamping = 0.001;  // × L
 constexpr double kTolerance = 1e-9;
 
 using Matrix6X = Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, kMaxIkJoints>;
