@@ -294,7 +294,13 @@ void Checker::State::resolvePose(const PointDef& p, std::span<const std::int32_t
     return;
   }
   point.values = r.encoders;
-  point.origin = std::string(pose.text);
+  // The pose as written, its words one space apart (a listing lines up its own columns).
+  point.origin.clear();
+  for (const char c : pose.text) {
+    const bool blank = c == ' ' || c == '\t';
+    if (!blank) point.origin += c;
+    else if (!point.origin.empty() && point.origin.back() != ' ') point.origin += ' ';
+  }
   lastPoseQ = r.q;
   lastPoseIndex = image.points.size();  // 1 + this point's index
 }

@@ -3,6 +3,7 @@
 // forward kinematics, which does not use the inverse.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "tests/cli/cli_support.h"
 
@@ -47,4 +48,24 @@ TEST_CASE("robotsim ik text output and its refusals", "[cli][ik]") {
   CHECK(badVector.err.find("--approach: 'x' is not a number") != std::string::npos);
   const auto noRobot = runCli({"ik", "no-such-robot", "1", "2", "3"});
   CHECK(noRobot.code == 2);
+}
+
+TEST_CASE("disasm and the trace show where a pose point came from", "[cli][ik][pose]") {
+  const std::string program = std::string(ROBOTSIM_SOURCE_DIR) + "/examples/stack_blocks.rsp";
+  const auto listing = runCli({"disasm", program});
+  REQUIRE(listing.code == 0);
+  CHECK(listing.out.find("; PICK = ") != std::string::npos);
+  CHECK(listing.out.find(" (from AT -130 800 0)") != std::string::npos);
+  CHECK(listing.out.find("; from AT -180 840 -45 GRIP 0\n") != std::string::npos);
+  const auto text = runCli({"run", program, "--trace"});
+  REQUIRE(text.code == 0);
+  CHECK(text.out.find("PICK from AT -130 800 0") != std::string::npos);
+  const auto json = runCli({"run", program, "--trace=json"});
+  REQUIRE(json.code == 0);
+  std::istringstream lines(json.out);
+  std::string first;
+  std::getline(lines, first);
+  const auto j = nlohmann::json::parse(first);
+  CHECK(j["op"] == "MOVEP");
+  CHECK(j["point_from"] == "AT -130 870 0 GRIP 0");  // the words one space apart
 }
