@@ -121,9 +121,11 @@ IkSolutions InverseKinematics::solve(const ToolTarget& target, std::span<const d
     case IkFamily::Spherical6: ik::solveSpherical6(model_, family_, target, out); break;
     case IkFamily::Numeric: ik::solveNumeric(model_, family_, target, reference, out); return out;
   }
-  // The 6-axis forms meet any orientation; the others only some: keep the
-  // solutions that meet what the user wrote.
-  if (out.count == 0 || family_.kind == IkFamily::Articulated6 || family_.kind == IkFamily::Spherical6) return out;
+  // The 6-axis forms meet any orientation, and the five-axis form checks
+  // its own; for the others keep the solutions that meet what was written.
+  if (out.count == 0 || family_.kind == IkFamily::Articulated6 || family_.kind == IkFamily::Spherical6 ||
+      family_.kind == IkFamily::Articulated5)
+    return out;
   const IkSolution first = out.solutions[0];
   int kept = 0;
   for (int i = 0; i < out.count; ++i)

@@ -94,32 +94,50 @@ void solveArticulated5(const ChainModel& m, const FamilyShape& f, const ToolTarg
   const Eigen::Matrix3d R_0_1ref = dhTransform(j1.dh, ref[0]).linear();
   // z_5 = cos α5 · z_4, and z_4 in frame 1 is Rz(ψ4) (0, -σ4 sin α4).
   const Eigen::Vector2d g(0.0, -run.sign[2] * j4.sinAlpha * j5.cosAlpha);
+  // What the arm reaches is checked here, not by forward kinematics: a
+  // written approach must lie in the arm's plane (no component along z_1),
+  // a written normal at right angles to the approach reached (none along z_4).
+  constexpr double kInPlane = 1e-7;
   IkError firstError;
   for (int b = 0; b < 2; ++b) {
     const Eigen::Isometry3d A1 = dhTransform(j1.dh, deg(th1[b]));
     const Eigen::Vector3d T1 = A1.inverse() * t.position;
     const Eigen::Vector3d a1 = (t.approachGiven ? A1.linear() : R_0_1ref).transpose() * t.rotation.col(2);
+    IkSolutions scratch;
+    if (t.approachGiven && std::abs(a1.z()) > kInPlane) {
+      fail(scratch, IkErrorKind::OrientationFixed, std::asin(std::min(1.0, std::abs(a1.z()))) * kRadToDeg,
+           fmt::format("the tool cannot take that orientation: {}", familyOrientation(IkFamily::Articulated5)), "");
+      note(firstError, scratch.error);
+      continue;
+    }
     const double psi = std::atan2(a1.y(), a1.x()) - std::atan2(g.y(), g.x());
     const double phiLast = psi - run.fixedHeading;
     const Eigen::Vector2d W = T1.head<2>() - run.offset - rotate2(phiLast, run.link[2]);
     std::array<Eigen::Vector2d, 2> phis;
     double miss = 0, sinElbow = 0;
-    IkSolutions scratch;
     if (!solveTwoLink(W, run.link[0], run.link[1], phis, miss, sinElbow)) {
       outOfReach(f, miss, scratch);
     } else if (bentEnough(f, sinElbow, scratch)) {
       for (std::size_t e = 0; e < 2; ++e) {
-        IkSolution& s = out.solutions[static_cast<std::size_t>(out.count++)];
+        IkSolution s;
         s.q[0] = deg(th1[b]);
         const double phi[3] = {phis[e].x(), phis[e].y(), phiLast};
         setRun(run, phi, s);
         s.config = static_cast<std::uint8_t>((b ? kShoulderBack : 0) | (e ? kElbowDown : 0));
         if (t.normalGiven) {
           const Eigen::Vector3d n4 = frameOf(m, s.q.data(), 4).linear().transpose() * t.rotation.col(0);
+          if (std::abs(n4.z()) > kInPlane) {
+            fail(scratch, IkErrorKind::OrientationFixed, 0,
+                 fmt::format("the tool cannot take that orientation: {}", familyOrientation(IkFamily::Articulated5)),
+                 "");
+            note(firstError, scratch.error);
+            continue;
+          }
           s.q[4] = deg(std::atan2(n4.y(), n4.x()));
         } else {
           s.q[4] = ref[4];
         }
+        out.solutions[static_cast<std::size_t>(out.count++)] = s;
       }
       continue;
     }

@@ -8,7 +8,7 @@
 //
 // so θ5 comes from its last entry (two signs: the wrist flipped or not),
 // θ4 from the first two, and θ6 from what is left once Rz(θ4) Rx(α4)
-// Rz(θ5) Rx(α5) is taken off.
+// Rz(θ5) Rx(α5) is taken off; the flipped solution follows from the first.
 #include <cmath>
 #include <fmt/format.h>
 
@@ -51,18 +51,19 @@ bool solveWrist(const ChainModel& m, const Eigen::Matrix3d& R_3_6, IkSolution& a
     return false;
   }
   const double c5 = -s4 * s5 * v.z();
-  const Eigen::Matrix3d X4 = rotX(j4), X5 = rotX(j5);
-  for (int k = 0; k < 2; ++k) {
-    IkSolution& s = k == 0 ? a : b;
-    const double sign = k == 0 ? 1.0 : -1.0;
-    // cos and sin of θ4 and θ5 straight from M's column (sin θ5 = sign · h).
-    const double c4 = sign * s5 * v.x() / h, s4v = sign * s5 * v.y() / h;
-    const Eigen::Matrix3d N = (rotZ(c4, s4v) * X4 * rotZ(c5, sign * h) * X5).transpose() * M;
-    s.q[3] = wrapDegrees(std::atan2(s4v, c4) * kRadToDeg);
-    s.q[4] = wrapDegrees(std::atan2(sign * h, c5) * kRadToDeg);
-    s.q[5] = wrapDegrees(std::atan2(N(1, 0), N(0, 0)) * kRadToDeg);
-    if (k == 1) s.config |= kWristFlip;
-  }
+  // cos and sin of θ4 and θ5 straight from M's column (sin θ5 = h > 0).
+  const double c4 = s5 * v.x() / h, s4v = s5 * v.y() / h;
+  const Eigen::Matrix3d N = (rotZ(c4, s4v) * rotX(j4) * rotZ(c5, h) * rotX(j5)).transpose() * M;
+  a.q[3] = wrapDegrees(std::atan2(s4v, c4) * kRadToDeg);
+  a.q[4] = wrapDegrees(std::atan2(h, c5) * kRadToDeg);
+  a.q[5] = wrapDegrees(std::atan2(N(1, 0), N(0, 0)) * kRadToDeg);
+  // The flipped wrist: (θ4 + 180, -θ5, θ6 + 180) makes the same rotation,
+  // since Rz(180) Rx(α) = Rx(-α) Rz(180) and, for α = ±90,
+  // Rx(-α4) Rz(-θ5) Rx(-α5) = Rx(α4) Rz(θ5) Rx(α5).
+  b.q[3] = wrapDegrees(a.q[3] + 180.0);
+  b.q[4] = wrapDegrees(-a.q[4]);
+  b.q[5] = wrapDegrees(a.q[5] + 180.0);
+  b.config |= kWristFlip;
   return true;
 }
 

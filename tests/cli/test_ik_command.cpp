@@ -69,3 +69,13 @@ TEST_CASE("disasm and the trace show where a pose point came from", "[cli][ik][p
   CHECK(j["op"] == "MOVEP");
   CHECK(j["point_from"] == "AT -130 870 0 GRIP 0");  // the words one space apart
 }
+
+TEST_CASE("robotsim ik: a five-axis arm refuses an approach out of its arm's plane", "[cli][ik]") {
+  // The XR-3's joint 1 turns about its design y axis; at (300, 200, 0) the arm's plane is z = 0,
+  // so the approach (0, -1, 0) lies in it and (0, -1, 1) does not.
+  CHECK(runCli({"ik", "rhino-xr3", "--frame", "robot", "--approach", "0,-1,0", "300", "200", "0"}).code == 0);
+  const auto r = runCli({"ik", "rhino-xr3", "--frame", "robot", "--approach", "0,-1,1", "300", "200", "0"});
+  CHECK(r.code == 2);
+  CHECK(r.err.find("keeps its approach in the plane of its arm") != std::string::npos);
+  CHECK(r.err.find("hint: here it reaches APPROACH 0 -1 0") != std::string::npos);
+}
