@@ -3,6 +3,7 @@
 // source must outlive the AST; every node carries its position.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -44,10 +45,31 @@ struct Instruction {
   JumpRef target;              // Target, InputJump, VarCompare
 };
 
+/// Three numbers written after a pose keyword ("AT 300 120 50").
+struct PoseVector {
+  std::array<double, 3> v{};
+  diag::Pos pos;  // of the keyword
+  bool given = false;
+};
+
+/// A point written as a tool pose: "AT [WORLD|ROBOT] x y z [APPROACH ax ay az]
+/// [NORMAL nx ny nz] [GRIP g]" (docs/language.md, "Points as tool poses").
+struct PointPose {
+  bool robotFrame = false;  // ROBOT: the robot's design coordinates; else the cell's world
+  PoseVector at, approach, normal;
+  Value grip;               // the gripper's encoder count
+  bool gripGiven = false;
+  std::string_view text;    // as written, from AT to the line's last word
+};
+
 struct PointDef {
   std::string_view name;
   diag::Pos pos;
+  /// One encoder value per motor; for a pose, the resolved values (set by
+  /// the checker before an observer sees the point; empty when it failed).
   std::vector<Value> values;
+  bool isPose = false;
+  PointPose pose;
 };
 
 struct Program {

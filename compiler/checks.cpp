@@ -1,5 +1,7 @@
 #include "compiler/checks.h"
 
+#include "model/workcell/pose_solver.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -123,6 +125,10 @@ struct Checker::State {
   std::vector<bool> assigned;        // per slot: some SET or ADD writes it
   std::vector<diag::Pos> firstRead;  // per slot: first JMPVAR, for the warning
   diag::Pos pointsHeader;
+  std::shared_ptr<const workcell::PlacedRobot> robot = nullptr;  // for points written as poses
+  std::unique_ptr<workcell::PoseSolver> poser = nullptr;  // made at the first such point
+  std::vector<double> lastPoseQ = {};                      // exact joint values of the last pose point
+  std::size_t lastPoseIndex = 0;                           // 1 + its index in image.points (0: none)
   // Names compared for "did you mean" hints, over the whole compile: a
   // file of a million undefined labels and a million labels must not cost
   // a million million comparisons.
@@ -145,6 +151,8 @@ struct Checker::State {
   void checkIo(const Instruction& in);
   void checkTargets(const Instruction& in);
   void resolve();
+  void resolvePose(const PointDef& p, std::span<const std::int32_t> reference, std::span<const double> referenceQ,
+                   vm::Point& point);
   void warnUnassignedVariables();
   void analyseFlow();
   std::vector<bool> reachable(const std::vector<std::uint32_t>& starts) const;
@@ -153,6 +161,7 @@ struct Checker::State {
 Checker::Checker(const Target& target, const diag::SourceFile& source, diag::Diagnostics& diagnostics)
     : s_(std::make_unique<State>(State{source, diagnostics, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}})) {
   vm::Image& im = s_->image;
+  s_->robot = target.robot;
   im.sourceName = source.name();
   im.robotName = target.robotName;
   im.callDepthLimit = target.callDepthLimit;
@@ -223,7 +232,19 @@ void Checker::point(const PointDef& p) {
   if (!fresh)
     s.diag.error(p.pos, fmt::format("point '{}' is already defined on line {}", p.name, it->second.pos.line),
                  "duplicate-point", {s.diag.relatedAt(it->second.pos, fmt::format("'{}' is first defined here", p.name))});
-  vm::Point& point = s.image.points.emplace_back(vm::Point{std::string(p.name), {}});
+  if (p.isPose) {
+    // The previous point with a value per motor is the reference; home (all 0) for the first.
+    std::vector<std::int32_t> reference(s.motors().size(), 0);
+    std::size_t from = s.image.points.size();
+    while (from > 0 && s.image.points[from - 1].values.size() != reference.size()) --from;
+    if (from > 0) reference = s.image.points[from - 1].values;
+    // A pose point before it: its exact joint values, so what is kept does not drift.
+    const bool exact = from > 0 && from == s.lastPoseIndex;
+    vm::Point& point = s.image.points.emplace_back(vm::Point{std::string(p.name), {}, {}});
+    s.resolvePose(p, reference, exact ? std::span<const double>(s.lastPoseQ) : std::span<const double>(), point);
+    return;
+  }
+  vm::Point& point = s.image.points.emplace_back(vm::Point{std::string(p.name), {}, {}});
   for (const Value& v : p.values) point.values.push_back(static_cast<std::int32_t>(v.number));
   if (p.values.size() != s.motors().size()) return;  // arity already reported
   for (std::size_t m = 0; m < s.motors().size(); ++m) {
@@ -233,6 +254,55 @@ void Checker::point(const PointDef& p) {
                                                 p.values[m].number, spec.letter, spec.min, spec.max),
                    "value-out-of-range");
   }
+}
+
+std::span<const std::int32_t> Checker::lastPointValues() const {
+  if (s_->image.points.empty()) return {};
+  return s_->image.points.back().values;
+}
+
+// A point written as a tool pose, to encoder counts with the target's robot.
+void Checker::State::resolvePose(const PointDef& p, std::span<const std::int32_t> reference,
+                                 std::span<const double> referenceQ, vm::Point& point) {
+  const PointPose& pose = p.pose;
+  if (!robot) {
+    diag.error(pose.at.pos,
+               fmt::format("point {} is written as a tool pose, but robot {} has no kinematic model here to resolve "
+                           "it",
+                           p.name, image.robotName),
+               diag::Hint{"compile for a workcell or a robot description: --cell NAME (e.g. --cell scara-pick), or a "
+                          "'; cell: NAME' line at the top"},
+               "pose-no-model");
+    return;
+  }
+  if (!poser) poser = std::make_unique<workcell::PoseSolver>(*robot);
+  workcell::PoseRequest request;
+  request.robotFrame = pose.robotFrame;
+  request.position = Eigen::Vector3d(pose.at.v[0], pose.at.v[1], pose.at.v[2]);
+  if (pose.approach.given) request.approach = Eigen::Vector3d(pose.approach.v[0], pose.approach.v[1], pose.approach.v[2]);
+  if (pose.normal.given) request.normal = Eigen::Vector3d(pose.normal.v[0], pose.normal.v[1], pose.normal.v[2]);
+  if (pose.gripGiven) request.grip = static_cast<std::int32_t>(pose.grip.number);
+  const workcell::PoseResult r = poser->solve(request, reference, referenceQ);
+  if (!r.ok()) {
+    const workcell::PoseProblem& problem = *r.problem;
+    const diag::Pos at = problem.field == workcell::PoseField::Approach ? pose.approach.pos
+                         : problem.field == workcell::PoseField::Normal ? pose.normal.pos
+                         : problem.field == workcell::PoseField::Grip   ? pose.grip.pos
+                                                                        : pose.at.pos;
+    diag.error(at.line ? at : pose.at.pos, fmt::format("point {}: {}", p.name, problem.message),
+               diag::Hint{problem.hint}, problem.code);
+    return;
+  }
+  point.values = r.encoders;
+  // The pose as written, its words one space apart (a listing lines up its own columns).
+  point.origin.clear();
+  for (const char c : pose.text) {
+    const bool blank = c == ' ' || c == '\t';
+    if (!blank) point.origin += c;
+    else if (!point.origin.empty() && point.origin.back() != ' ') point.origin += ' ';
+  }
+  lastPoseQ = r.q;
+  lastPoseIndex = image.points.size();  // 1 + this point's index
 }
 
 std::optional<vm::Image> Checker::finish() {

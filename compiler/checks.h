@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "compiler/ast.h"
@@ -31,6 +32,10 @@ class Checker final : public AstSink {
   void instruction(const Instruction& in) override;
   void pointsHeader(diag::Pos pos) override;
   void point(const PointDef& point) override;
+
+  /// The values of the last point received (for a point written as a
+  /// pose, its resolved encoder counts; empty when it could not be resolved).
+  std::span<const std::int32_t> lastPointValues() const;
 
   /// Resolves what waited for the end of the file and analyses control
   /// flow; the image when no error was reported (by anyone).

@@ -6,10 +6,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "compiler/ast.h"
+#include "model/workcell/model.h"
 #include "vm/image.h"
 
 namespace rs::compiler {
@@ -18,6 +20,9 @@ struct Target {
   std::string robotName;
   std::vector<vm::MotorSpec> motors;
   std::uint16_t callDepthLimit = vm::kDefaultCallDepth;
+  /// The robot as placed in the cell, when it has a kinematic model: points
+  /// written as tool poses are resolved with it (none: they are refused).
+  std::shared_ptr<const workcell::PlacedRobot> robot = nullptr;
 };
 
 /// The record of `in`; its motor vector or triple is appended to `constants`.

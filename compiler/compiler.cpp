@@ -28,17 +28,26 @@ std::optional<diag::Diagnostic> checkEncoding(const diag::SourceFile& source, st
 
 namespace {
 
-// Hands everything to the checker, then to the observer.
+// Hands everything to the checker, then to the observer: a point written
+// as a pose reaches the observer with the values the checker resolved.
 class Tee final : public AstSink {
  public:
-  Tee(AstSink& first, AstSink& second) : first_(first), second_(second) {}
+  Tee(Checker& first, AstSink& second) : first_(first), second_(second) {}
   void instruction(const Instruction& in) override { first_.instruction(in), second_.instruction(in); }
   void pointsHeader(diag::Pos pos) override { first_.pointsHeader(pos), second_.pointsHeader(pos); }
-  void point(const PointDef& p) override { first_.point(p), second_.point(p); }
+  void point(const PointDef& p) override {
+    first_.point(p);
+    if (!p.isPose) return second_.point(p);
+    resolved_ = p;
+    resolved_.values.clear();
+    for (const std::int32_t v : first_.lastPointValues()) resolved_.values.push_back({v, p.pose.at.pos});
+    second_.point(resolved_);
+  }
 
  private:
-  AstSink& first_;
+  Checker& first_;
   AstSink& second_;
+  PointDef resolved_;
 };
 
 CompileResult compileTo(const diag::SourceFile& source, const Target& target, std::size_t keepDiagnostics,

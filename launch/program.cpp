@@ -97,12 +97,14 @@ bool sameMotors(const vm::Image& image, const workcell::Workcell& cell) {
 }  // namespace
 
 compiler::Target defaultTarget() {
-  return {std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth};
+  return {std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth, nullptr};
 }
 
 compiler::Target cellTarget(const workcell::Workcell& cell) {
   const workcell::Robot& robot = cell.robots.front().robot;
-  return {robot.name, compiler::motorTable(robot), vm::kDefaultCallDepth};
+  compiler::Target target{robot.name, compiler::motorTable(robot), vm::kDefaultCallDepth, nullptr};
+  if (robot.chain) target.robot = std::make_shared<const workcell::PlacedRobot>(cell.robots.front());
+  return target;
 }
 
 const diag::SourceFile* LoadedProgram::sourceOf(const std::string& file) const {

@@ -58,6 +58,7 @@ void ProgramIndex::point(const compiler::PointDef& p) {
   ip.name = p.name;
   ip.pos = p.pos;
   for (const compiler::Value& v : p.values) ip.values.push_back(static_cast<std::int32_t>(v.number));
+  if (p.isPose) ip.pose = p.pose.text;
   add(NameKind::Point, true, p.pos, p.name);
 }
 

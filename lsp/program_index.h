@@ -52,7 +52,8 @@ struct IndexedInstruction {
 struct IndexedPoint {
   std::string_view name;
   diag::Pos pos;
-  std::vector<std::int32_t> values;  ///< as many as were written and read
+  std::vector<std::int32_t> values;  ///< as many as were written and read; for a pose, as resolved
+  std::string_view pose;             ///< a point written as a tool pose: the pose ("AT ..."), else empty
 };
 
 class ProgramIndex final : public compiler::AstSink {

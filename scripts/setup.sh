@@ -31,8 +31,11 @@ packages=(
 # end to end (the editor_neovim test); clang and its runtime (libFuzzer)
 # build the sanitizer and fuzzing build; unzip lists the VS Code package;
 # tmux gives the terminal pendant's test a real terminal (a pseudo-terminal
-# with a terminal emulator behind it) whose screen it reads.
-[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 neovim clang libclang-rt-14-dev unzip tmux)
+# with a terminal emulator behind it) whose screen it reads. Orocos KDL is
+# the inverse-kinematics benchmark's peer and independent check
+# (bench/ik_bench.cpp; the benchmark builds without it).
+[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 neovim clang libclang-rt-14-dev unzip tmux
+  liborocos-kdl-dev)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -69,7 +69,8 @@ std::string instructionComment(const Image& image, std::uint32_t index) {
   }
   if (in.op == Op::MoveP) {
     const Point& p = image.points[in.b];
-    return fmt::format("{} = {}", safeText(p.name), values(p.values.data(), p.values.size()));
+    return fmt::format("{} = {}{}", safeText(p.name), values(p.values.data(), p.values.size()),
+                       p.origin.empty() ? "" : fmt::format(" (from {})", safeText(p.origin)));
   }
   return {};
 }
@@ -97,7 +98,10 @@ std::string disassemble(const Image& image) {
   if (!image.points.empty()) {
     out += ";\n; points\n";
     for (const Point& p : image.points)
-      out += fmt::format(";   {:<10} {}\n", safeText(p.name), values(p.values.data(), p.values.size()));
+      out += p.origin.empty()
+                 ? fmt::format(";   {:<10} {}\n", safeText(p.name), values(p.values.data(), p.values.size()))
+                 : fmt::format(";   {:<10} {:<24} ; from {}\n", safeText(p.name),
+                               values(p.values.data(), p.values.size()), safeText(p.origin));
   }
   if (!image.variables.empty()) {
     out += ";\n; variables\n";

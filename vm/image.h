@@ -41,7 +41,12 @@ inline constexpr std::int32_t kMaxActuation = 60'000'000;        // microseconds
 struct Point {
   std::string name;
   std::vector<std::int32_t> values;
-  bool operator==(const Point&) const = default;
+  /// For a point written as a tool pose, the pose as written
+  /// ("AT 300 120 50 APPROACH 0 -1 0"), for listings and traces. Only a
+  /// compile fills it: image files do not store it, and it takes no part in
+  /// comparing points (the values are the point).
+  std::string origin = {};
+  bool operator==(const Point& o) const { return name == o.name && values == o.values; }
 };
 
 /// A label the source gave an instruction (kept for listings and traces).

@@ -13,6 +13,7 @@
 #include "cli/lib/debug_command.h"
 #include "cli/lib/describe_command.h"
 #include "cli/lib/help.h"
+#include "cli/lib/ik_command.h"
 #include "cli/lib/lsp_command.h"
 #include "cli/lib/options.h"
 #include "cli/lib/program_commands.h"
@@ -141,6 +142,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
       "Describe a workcell (or a robot alone): motors, ranges, speeds, reach, every object's box, centre and what it "
       "stands on, inputs and outputs");
   robotArgs(describe, "Workcell or robot: description file (.rsd) or library name, e.g. scara-pick");
+  IkOptions ikOptions;
+  CLI::App* ik = addIkCommand(app, ikOptions);
 
   PortsOptions portsOptions;
   CLI::App* ports = addPortsCommand(app, portsOptions);
@@ -189,6 +192,7 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   if (matrix->parsed()) return matrixCommand(rq, out, err);
   if (where->parsed()) return whereCommand(rq, out, err);
   if (describe->parsed()) return describeCommand(rq, out, err);
+  if (ik->parsed()) return ikCommand(ikOptions, out, err);
   if (ports->parsed()) return portsCommand(portsOptions, out, err);
   if (emulate->parsed()) return emulateCommand(emulateOptions, out, err);
   return helpCommand(helpTopic, out, err);

@@ -75,6 +75,9 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
                             : std::string();
   if (const runtime::GraspEvent* g = run_.graspOfLastStep())
     changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.world()->cell());
+  if (in.op == vm::Op::MoveP && !im.points[in.b].origin.empty())
+    changed += (changed.empty() ? "" : "  ") + fmt::format("{} from {}", base::safeText(im.points[in.b].name),
+                                                           base::safeText(im.points[in.b].origin));
   const std::optional<std::array<double, 3>> tool = run_.world() ? run_.world()->tcp(pos) : std::nullopt;
   const std::string tcp = tool ? fmt::format("{:<28}  ", pointText(*tool)) : std::string();
   std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}{}", vm::formatSeconds(vm.machine().now()),
@@ -105,6 +108,7 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   nlohmann::ordered_json changed = nlohmann::ordered_json::object();
   if (writesVariable(in)) changed[im.variables[in.b]] = vm.variables()[in.b];
   j["changed"] = changed;
+  if (in.op == vm::Op::MoveP && !im.points[in.b].origin.empty()) j["point_from"] = im.points[in.b].origin;
   if (const runtime::GraspEvent* g = run_.graspOfLastStep())
     j["grasp"] = {{"object", g->object + 1}, {"name", run_.world()->cell().objects[g->object].shape.name},
                   {"held", g->held}};

@@ -152,6 +152,7 @@ Json completion(const ProgramContext& p, Position at, bool snippets) {
         for (const IndexedPoint& point : index.points()) {
           std::string values;
           for (const std::int32_t v : point.values) values += fmt::format("{}{}", values.empty() ? "" : " ", v);
+          if (!point.pose.empty()) values += fmt::format("{}(from {})", values.empty() ? "" : " ", point.pose);
           items.push_back(item(std::string(point.name), kConstantItem, values));
         }
       break;

@@ -73,6 +73,16 @@ std::string pointHover(const ProgramContext& p, const Occurrence& o) {
     values += fmt::format("{}{}={}", i ? " " : "", i < motors.size() ? std::string(1, motors[i].letter) : "?",
                           point->values[i]);
   std::string out = fmt::format("**point** `{}` (line {}): {}", point->name, point->pos.line, values);
+  std::string pose;  // its words one space apart
+  for (const char c : point->pose)
+    if (c != ' ' && c != '\t') pose += c;
+    else if (!pose.empty() && pose.back() != ' ') pose += ' ';
+  if (!point->pose.empty())
+    out = point->values.empty()
+              ? fmt::format("**point** `{}` (line {}): the tool pose `{}`, not resolved (see its diagnostic)",
+                            point->name, point->pos.line, pose)
+              : fmt::format("**point** `{}` (line {}): {}, resolved from the tool pose `{}`", point->name,
+                            point->pos.line, values, pose);
   const std::optional<workcell::PlacedRobot>& robot = p.analysis.cell().robot;
   if (robot && point->values.size() == motors.size() &&
       point->values.size() >= static_cast<std::size_t>(robot->robot.chain->encoderCount())) {

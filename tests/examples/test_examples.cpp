@@ -324,10 +324,32 @@ TEST_CASE("example gantry_pick: the trace says when the gripper takes and lets g
   CHECK(events == want);
 }
 
+TEST_CASE("example stack_blocks: points written as tool poses stack one block on another", "[examples]") {
+  // scara-pick (stdlib/workcells/scara-pick.rsd): the front block, AT -150 780 20, a 40 cube
+  // (x -150..-110, y 780..820, z -20..20), centred at x -130, z 0. The program takes it by its
+  // middle (y 800) and lets go with the tool centre point at (-180, 840, -45): the block moves
+  // with the tool, by (-50, 40, -45), so its AT corner goes to (-200, 820, -25), on top of the
+  // block AT -200 780 -25 (top y 820). Whole encoder counts put the tool within about 0.5 of
+  // each point (docs/language.md), hence the tolerance. Ten instructions; HRDHOME ends at home.
+  const Result r = robotsim({"run", (kExamples / "stack_blocks.rsp").string(), "--format=json"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.code == rs::cli::kExitOk);
+  const Json j = Json::parse(r.out);
+  CHECK(j.at("status") == "ok");
+  CHECK(j.at("steps") == 10);
+  CHECK(j.at("motors") == Json::parse(R"({"E": 0, "D": 0, "C": 0, "B": 0, "A": 0})"));
+  const Json& moved = j.at("objects")[4];
+  CHECK(moved.at("moved") == true);
+  CHECK(moved.at("held") == false);
+  const std::array<double, 3> want{-200, 820, -25};
+  for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(moved.at("at")[k].get<double>() - want[k]) < 0.6);
+  for (std::size_t o = 0; o < 4; ++o) CHECK(j.at("objects")[o].at("moved") == false);
+}
+
 TEST_CASE("every example has a summary test above", "[examples]") {
   const std::set<std::string> tested{"first_moves.rsp",   "counted_loop.rsp",       "nested_subroutines.rsp",
                                      "soft_home.rsp",     "workcell_view.rsp",      "sensor_branching.rsp",
-                                     "pick_and_place.rsp", "gantry_pick.rsp"};
+                                     "pick_and_place.rsp", "gantry_pick.rsp",       "stack_blocks.rsp"};
   std::set<std::string> found;
   for (const fs::path& p : exampleSources()) found.insert(p.filename().string());
   CHECK(found == tested);
@@ -340,13 +362,16 @@ TEST_CASE("the examples together use all 20 instructions", "[examples]") {
     rs::base::FileRead text = rs::base::readFile(path.string(), rs::launch::kMaxInputBytes);
     REQUIRE(text.bytes);
     const rs::diag::SourceFile source(path.string(), std::move(*text.bytes));
-    // gantry_pick runs on the gantry cell; the others on the default robot.
-    const bool gantry = path.filename() == "gantry_pick.rsp";
+    // gantry_pick runs on the gantry cell, stack_blocks on scara-pick; the others on the default robot.
+    const std::string cellName = path.filename() == "gantry_pick.rsp"    ? "gantry-cell"
+                                 : path.filename() == "stack_blocks.rsp" ? "scara-pick"
+                                                                         : "";
     rs::compiler::Library library(rs::compiler::librarySearchPath({}));
-    const std::optional<rs::workcell::Workcell> cell = gantry ? library.workcell("gantry-cell") : std::nullopt;
-    REQUIRE(cell.has_value() == gantry);
+    const std::optional<rs::workcell::Workcell> cell =
+        cellName.empty() ? std::nullopt : library.workcell(cellName);
+    REQUIRE(cell.has_value() == !cellName.empty());
     const rs::compiler::CompileResult compiled =
-        rs::compiler::compile(source, gantry ? rs::launch::cellTarget(*cell) : rs::launch::defaultTarget());
+        rs::compiler::compile(source, cell ? rs::launch::cellTarget(*cell) : rs::launch::defaultTarget());
     REQUIRE(compiled.ok());
     CHECK(compiled.diagnostics.empty());
     for (const rs::vm::Instr& in : compiled.image->code) used.insert(in.op);

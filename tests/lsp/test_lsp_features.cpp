@@ -100,6 +100,22 @@ TEST_CASE("lsp: hover", "[lsp][features]") {
   CHECK(o.hoverText(0, 3).is_null());  // a comment
 }
 
+TEST_CASE("lsp: a point written as a tool pose hovers with its resolved encoders", "[lsp][features][cell][pose]") {
+  // The gantry's tool centre point is (500 + X/10, 200 - Y/10, 400 + Z/10) (see the next test), so
+  // AT 220 50 680 is X = -2800, Z = 2800, Y = 1500; the gripper keeps home's 0.
+  Opened o("; cell: gantry-cell\n        MOVEP P\n        END\nPOINTS\nP AT 220 50 680\n");
+  CHECK(o.s.diagnostics(kUri) == Json::array());
+  CHECK(o.hoverText(1, 15) == "**point** `P` (line 5): X=-2800 Z=2800 Y=1500 A=0, resolved from the tool pose "
+                              "`AT 220 50 680`\n\nTool centre point of gantry: (220, 50, 680)");
+  // Out of the gantry's range (X: 0.1 per count, -5000..5000, so x 0..1000): a diagnostic, and the hover says so.
+  Opened far("; cell: gantry-cell\n        MOVEP P\n        END\nPOINTS\nP AT 2000 50 680\n");
+  const Json d = far.s.diagnostics(kUri);
+  REQUIRE(d.size() == 1);
+  CHECK(d[0]["code"] == "pose-out-of-range");
+  CHECK(far.hoverText(1, 15) ==
+        "**point** `P` (line 5): the tool pose `AT 2000 50 680`, not resolved (see its diagnostic)");
+}
+
 TEST_CASE("lsp: hover shows the tool centre point on the cell the directive names", "[lsp][features][cell]") {
   // The gantry: motors X Z Y A; its tool centre point is (500 + X/10, 200 - Y/10, 400 + Z/10)
   // (examples/gantry_pick.rsp): X = -2800, Z = 2800, Y = 1500 -> (220, 50, 680).

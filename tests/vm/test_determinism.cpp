@@ -132,7 +132,7 @@ TEST_CASE("compiling twice gives identical image bytes", "[vm][determinism]") {
   CHECK(a == rs::testing::readBytes(dir.file("b.rsb")));
 
   // And through the library, from two separate SourceFiles.
-  const rs::compiler::Target target{"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth};
+  const rs::compiler::Target target{"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth, nullptr};
   const auto once = rs::compiler::compile(rs::diag::SourceFile(prog, kProgram), target);
   const auto twice = rs::compiler::compile(rs::diag::SourceFile(prog, kProgram), target);
   REQUIRE(once.ok());

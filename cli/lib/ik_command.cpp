@@ -1,0 +1,165 @@
+#include "cli/lib/ik_command.h"
+
+#include <CLI/CLI.hpp>
+#include <charconv>
+#include <cmath>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "base/ascii.h"
+#include "base/text.h"
+#include "cli/lib/exit_codes.h"
+#include "cli/lib/robot_commands.h"
+#include "compiler/library.h"
+#include "diag/diagnostic.h"
+#include "model/kinematics/ik.h"
+#include "model/workcell/pose_solver.h"
+
+namespace rs::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// "1,0,-1" -> numbers; an error names the option and the bad item.
+bool numbers(const std::string& text, std::string_view option, std::size_t want, std::vector<double>& out,
+             std::ostream& err) {
+  out.clear();
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    const std::string piece = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    double v = 0;
+    const char* first = piece.data() + (!piece.empty() && piece[0] == '+' ? 1 : 0);
+    const auto [ptr, ec] = std::from_chars(first, piece.data() + piece.size(), v);
+    if (piece.empty() || ec != std::errc() || ptr != piece.data() + piece.size() || !std::isfinite(v)) {
+      err << fmt::format("robotsim: error: {}: '{}' is not a number\n", option, base::safeText(piece));
+      return false;
+    }
+    out.push_back(v);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (want != 0 && out.size() != want) {
+    err << fmt::format("robotsim: error: {} takes {} numbers separated by commas, found {}\n", option, want, out.size());
+    return false;
+  }
+  return true;
+}
+
+std::string configText(std::uint8_t config, kinematics::IkFamily family) {
+  if (family == kinematics::IkFamily::Cartesian || family == kinematics::IkFamily::Numeric) return "the only one";
+  std::string s = config & kinematics::kShoulderBack ? "shoulder back" : "shoulder front";
+  if (family == kinematics::IkFamily::Scara) s.clear();
+  s += fmt::format("{}elbow {}", s.empty() ? "" : ", ", config & kinematics::kElbowDown ? "-" : "+");
+  if (family == kinematics::IkFamily::Articulated6 || family == kinematics::IkFamily::Spherical6)
+    s += config & kinematics::kWristFlip ? ", wrist flipped" : ", wrist not flipped";
+  return s;
+}
+
+}  // namespace
+
+CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
+  CLI::App* cmd = app.add_subcommand("ik", "Encoder counts that put the tool at a pose (inverse kinematics), as a POINTS line");
+  cmd->add_option("robot", o.target, "Robot or workcell: description file (.rsd) or library name, e.g. puma-cell")
+      ->required();
+  cmd->add_option("xyz", o.position, "The tool centre point X Y Z")->expected(3)->required();
+  cmd->add_option("--approach", o.approach, "The tool's approach direction a (its z axis) ax,ay,az");
+  cmd->add_option("--normal", o.normal, "The tool's normal n (its x axis, the way the fingers close) nx,ny,nz");
+  cmd->add_option("--grip", o.grip, "The gripper motor's encoder count (default: the --from point's)")
+      ->each([&o](const std::string&) { o.gripGiven = true; });
+  cmd->add_option("--frame", o.frame, "Coordinates of X Y Z and the directions: world (the cell's; the default) or "
+                                      "robot (the robot's design coordinates, as `where` prints)")
+      ->check(CLI::IsMember({"world", "robot"}));
+  cmd->add_option("--from", o.from, "The previous point's encoder counts e,e,... (default: home, all 0)");
+  cmd->add_option("--name", o.name, "The point's name in the POINTS line (default P1)");
+  cmd->add_option("--lib", o.libDirs, "Also look up names in this directory (repeatable)")->allow_extra_args(false);
+  cmd->add_flag("--json", o.json, "Print one JSON object");
+  cmd->footer(
+      "Solves in closed form for the library's arm families (cartesian, scara, articulated-5, articulated-6,\n"
+      "spherical-6), numerically for other robots (docs/models.md). What is not given is kept from the --from\n"
+      "point; of several solutions the quickest move from it within the motors' ranges is chosen, as the\n"
+      "compiler does for a point written 'NAME AT X Y Z ...' (docs/language.md). Negative numbers: put\n"
+      "'--' before X Y Z when X starts with '-', e.g. robotsim ik scara-pick -- -130 800 0.");
+  return cmd;
+}
+
+int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
+  compiler::Library library(compiler::librarySearchPath(o.libDirs));
+  const std::optional<workcell::Workcell> cell = library.workcell(o.target);
+  for (const diag::Diagnostic& d : library.diagnostics()) err << diag::render(d, library.source(d.file));
+  if (!cell || library.hasErrors()) return kExitBadInput;
+  if (cell->robots.empty() || !cell->robots.front().robot.chain) {
+    err << fmt::format("robotsim: error: {} has no robot with a kinematic chain\n", base::safeText(o.target));
+    return kExitBadInput;
+  }
+  const workcell::PlacedRobot& placed = cell->robots.front();
+  const workcell::PoseSolver solver(placed);
+  workcell::PoseRequest request;
+  request.robotFrame = o.frame == "robot";
+  request.position = Eigen::Vector3d(o.position[0], o.position[1], o.position[2]);
+  std::vector<double> v;
+  if (!o.approach.empty()) {
+    if (!numbers(o.approach, "--approach", 3, v, err)) return kExitBadInput;
+    request.approach = Eigen::Vector3d(v[0], v[1], v[2]);
+  }
+  if (!o.normal.empty()) {
+    if (!numbers(o.normal, "--normal", 3, v, err)) return kExitBadInput;
+    request.normal = Eigen::Vector3d(v[0], v[1], v[2]);
+  }
+  if (o.gripGiven) request.grip = o.grip;
+  std::vector<std::int32_t> reference(solver.motorCount(), 0);
+  if (!o.from.empty()) {
+    if (!numbers(o.from, "--from", reference.size(), v, err)) return kExitBadInput;
+    for (std::size_t i = 0; i < v.size(); ++i) reference[i] = static_cast<std::int32_t>(std::lround(v[i]));
+  }
+  const workcell::PoseResult r = solver.solve(request, reference);
+  const std::vector<vm::MotorSpec> motors = compiler::motorTable(placed.robot);
+  const std::string robotName = base::safeText(placed.robot.name);
+  const kinematics::IkFamily family = solver.ik().family();
+  if (!r.ok()) {
+    err << fmt::format("robotsim: error: {}: {}\n", robotName, r.problem->message);
+    if (!r.problem->hint.empty()) err << fmt::format("  hint: {}\n", r.problem->hint);
+    return kExitBadInput;
+  }
+  std::string pose = fmt::format("AT {}{} {} {}", request.robotFrame ? "ROBOT " : "", formatNumber(o.position[0]),
+                                 formatNumber(o.position[1]), formatNumber(o.position[2]));
+  std::string line = base::safeText(o.name);
+  for (const std::int32_t e : r.encoders) line += fmt::format(" {}", e);
+  if (o.json) {
+    Json j;
+    j["robot"] = placed.robot.name;
+    j["family"] = kinematics::familyName(family);
+    j["frame"] = o.frame;
+    j["position"] = o.position;
+    j["solutions"] = r.solutions;
+    j["in_range"] = r.inRange;
+    j["joints"] = r.q;
+    Json enc = Json::object();
+    for (std::size_t i = 0; i < r.encoders.size(); ++i) enc[std::string(1, motors[i].letter)] = r.encoders[i];
+    j["encoders"] = enc;
+    j["rounding"] = r.rounding;
+    j["points_line"] = line;
+    out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+    return kExitOk;
+  }
+  out << fmt::format("{} ({} family): tool centre point {} ({} coordinates)\n", robotName,
+                     kinematics::familyName(family), pose, request.robotFrame ? "the robot's design" : "world");
+  out << fmt::format("  {} solution{}, {} within the motors' ranges; chosen: {} (the quickest move from {})\n",
+                     r.solutions, r.solutions == 1 ? "" : "s", r.inRange, configText(r.config, family),
+                     o.from.empty() ? "home" : "--from");
+  std::string joints;
+  for (std::size_t i = 0; i < r.q.size(); ++i)
+    joints += fmt::format("{}{}", i ? "  " : "", formatNumber(r.q[i]));
+  out << fmt::format("  joint values {}\n", joints);
+  std::string encoders;
+  for (std::size_t i = 0; i < r.encoders.size(); ++i)
+    encoders += fmt::format("{}{}={}", i ? " " : "", motors[i].letter, r.encoders[i]);
+  out << fmt::format("  encoders {}\n", encoders);
+  out << fmt::format("  whole encoder counts put the tool centre point {} from the exact pose\n",
+                     formatNumber(r.rounding));
+  out << "POINTS line:\n" << line << '\n';
+  return kExitOk;
+}
+
+}  // namespace rs::cli

@@ -1,0 +1,81 @@
+// robotsim ik: the encoder counts for a pose and a POINTS line that,
+// pasted into a program, compiles to those counts; checked with `where`'s
+// forward kinematics, which does not use the inverse.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "tests/cli/cli_support.h"
+
+using rs::testing::runCli;
+
+TEST_CASE("robotsim ik prints encoders and a POINTS line that where confirms", "[cli][ik]") {
+  const auto r = runCli({"ik", "puma560", "--frame", "robot", "--approach", "0,-1,0", "--name", "ABOVE", "--json", "--",
+                         "500", "0", "100"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  CHECK(j["family"] == "articulated-6");
+  CHECK(j["solutions"].get<int>() >= 1);
+  std::vector<std::int32_t> e;
+  for (const auto& [letter, v] : j["encoders"].items()) e.push_back(v.get<int>());
+  REQUIRE(e.size() == 7);
+  std::string line = "ABOVE";
+  std::string list;
+  for (std::size_t i = 0; i < e.size(); ++i) line += " " + std::to_string(e[i]), list += (i ? "," : "") + std::to_string(e[i]);
+  CHECK(j["points_line"] == line);
+  // where (design coordinates) puts the tool there, within what 0.1-degree counts allow.
+  const auto w = runCli({"where", "puma560", "--encoders", list, "--json"});
+  REQUIRE(w.code == 0);
+  const auto wj = nlohmann::json::parse(w.out);
+  const double dx = wj["position"][0].get<double>() - 500, dy = wj["position"][1].get<double>(),
+               dz = wj["position"][2].get<double>() - 100;
+  CHECK(std::sqrt(dx * dx + dy * dy + dz * dz) < 2.0);
+  CHECK(wj["matrix"][1][2].get<double>() < -0.9999);  // approach (0, -1, 0)
+}
+
+TEST_CASE("robotsim ik text output and its refusals", "[cli][ik]") {
+  const auto ok = runCli({"ik", "scara-pick", "--", "-130", "800", "0"});
+  INFO(ok.err);
+  REQUIRE(ok.code == 0);
+  CHECK(ok.out.find("rhino-scara (scara family): tool centre point AT -130 800 0 (world coordinates)") == 0);
+  CHECK(ok.out.find("POINTS line:\nP1 ") != std::string::npos);
+  const auto far = runCli({"ik", "scara-pick", "--", "-600", "800", "0"});
+  CHECK(far.code == 2);
+  CHECK(far.err.find("the point is 375 out of the arm's reach") != std::string::npos);
+  const auto badVector = runCli({"ik", "scara-pick", "--approach", "0,x,0", "--", "-130", "800", "0"});
+  CHECK(badVector.code == 2);
+  CHECK(badVector.err.find("--approach: 'x' is not a number") != std::string::npos);
+  const auto noRobot = runCli({"ik", "no-such-robot", "1", "2", "3"});
+  CHECK(noRobot.code == 2);
+}
+
+TEST_CASE("disasm and the trace show where a pose point came from", "[cli][ik][pose]") {
+  const std::string program = std::string(ROBOTSIM_SOURCE_DIR) + "/examples/stack_blocks.rsp";
+  const auto listing = runCli({"disasm", program});
+  REQUIRE(listing.code == 0);
+  CHECK(listing.out.find("; PICK = ") != std::string::npos);
+  CHECK(listing.out.find(" (from AT -130 800 0)") != std::string::npos);
+  CHECK(listing.out.find("; from AT -180 840 -45 GRIP 0\n") != std::string::npos);
+  const auto text = runCli({"run", program, "--trace"});
+  REQUIRE(text.code == 0);
+  CHECK(text.out.find("PICK from AT -130 800 0") != std::string::npos);
+  const auto json = runCli({"run", program, "--trace=json"});
+  REQUIRE(json.code == 0);
+  std::istringstream lines(json.out);
+  std::string first;
+  std::getline(lines, first);
+  const auto j = nlohmann::json::parse(first);
+  CHECK(j["op"] == "MOVEP");
+  CHECK(j["point_from"] == "AT -130 870 0 GRIP 0");  // the words one space apart
+}
+
+TEST_CASE("robotsim ik: a five-axis arm refuses an approach out of its arm's plane", "[cli][ik]") {
+  // The XR-3's joint 1 turns about its design y axis; at (300, 200, 0) the arm's plane is z = 0,
+  // so the approach (0, -1, 0) lies in it and (0, -1, 1) does not.
+  CHECK(runCli({"ik", "rhino-xr3", "--frame", "robot", "--approach", "0,-1,0", "300", "200", "0"}).code == 0);
+  const auto r = runCli({"ik", "rhino-xr3", "--frame", "robot", "--approach", "0,-1,1", "300", "200", "0"});
+  CHECK(r.code == 2);
+  CHECK(r.err.find("keeps its approach in the plane of its arm") != std::string::npos);
+  CHECK(r.err.find("hint: here it reaches APPROACH 0 -1 0") != std::string::npos);
+}
