@@ -60,6 +60,7 @@ class Library {
   std::optional<workcell::Robot> checkRobot(const RobotDef& def, const DescriptionFile& from);
   std::optional<workcell::Workcell> buildWorkcell(const WorkcellDef& def, const DescriptionFile& from);
   void error(const DescriptionFile& file, diag::Pos pos, std::string message);
+  void reportHomeCollisions(const workcell::Workcell& cell, const WorkcellDef& def, const DescriptionFile& from);
 
   std::vector<std::filesystem::path> searchPath_;
   std::vector<std::unique_ptr<DescriptionFile>> files_;  // in load order
