@@ -69,6 +69,7 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     run->observe(*trace);
   }
   const vm::RunOutcome outcome = run->runToEnd();
+  if (trace) trace->finish();
   report.run = run.get();
   if (controller) report.fault = controller->faultState();
   const vm::Image& image = run->image();
@@ -76,6 +77,10 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
     launch::printDiagnostics(err, {d}, program);
     report.diagnostics.push_back(d);
+  }
+  if (const std::optional<diag::Diagnostic> w = gripperWarning(*run, image.sourceName)) {
+    launch::printDiagnostics(err, {*w}, program);
+    report.diagnostics.push_back(*w);
   }
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);

@@ -25,6 +25,8 @@ class Run::Observers final : public vm::StepObserver {
       run_.graspEventsSeen_ = run_.world_->eventCount();
       run_.lastStepClosedEmpty_ = run_.world_->emptyCloseCount() != run_.emptyClosesSeen_;
       run_.emptyClosesSeen_ = run_.world_->emptyCloseCount();
+      if (run_.lastStepClosedEmpty_ && !run_.firstEmptyClose_)
+        run_.firstEmptyClose_.emplace(index, run_.world_->lastEmptyClose());
     }
     run_.noteCollisions(index);
     if (run_.logger_) run_.logger_->afterStep(vm, index);
@@ -254,6 +256,7 @@ void Run::restore(const RunSnapshot& s) {
   lastStepGrasped_ = false;
   emptyClosesSeen_ = world_ ? world_->emptyCloseCount() : 0;
   lastStepClosedEmpty_ = false;
+  if (emptyClosesSeen_ == 0) firstEmptyClose_.reset();
   if (watch_ && s.collisions <= watch_->events().size()) watch_->mutableEvents().resize(s.collisions);
   if (logger_ && s.log && sim_) logger_->restore(*s.log, *sim_);
   cause_ = PauseCause::None;

@@ -149,6 +149,9 @@ class Run {
   const GraspEvent* graspOfLastStep() const { return lastStepGrasped_ ? &world_->lastEvent() : nullptr; }
   /// A closing move of the step just run that took nothing, or null.
   const EmptyClose* emptyCloseOfLastStep() const { return lastStepClosedEmpty_ ? &world_->lastEmptyClose() : nullptr; }
+  /// The instruction of the first closing move that took nothing, and
+  /// where it left the tool centre point.
+  std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose() const { return firstEmptyClose_; }
   /// Every collision found so far (in warn mode, every one; in error mode,
   /// the one that stopped the run), each with its instruction.
   std::span<const CollisionEvent> collisions() const;
@@ -196,6 +199,7 @@ class Run {
   bool lastStepGrasped_ = false;
   std::uint64_t emptyClosesSeen_ = 0;
   bool lastStepClosedEmpty_ = false;
+  std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose_;
   std::optional<CollisionWatch> watch_;
   void noteCollisions(std::uint32_t instruction);
   std::atomic<bool> pauseRequested_ = false;
