@@ -302,6 +302,20 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   input.run = &recording;
   input.listing = listing(loaded);
   input.camera = camera;
+  if (const runtime::CollisionWatch* watch = run->collisionWatch()) {
+    const auto robotBodies = watch->model().robotBodies();
+    for (const runtime::CollisionEvent& e : run->collisions()) {
+      render::CollisionMark mark{e.at, e.at, {}, {}};
+      for (const runtime::StepRecord& s : recording.steps)  // the end of the move that collided
+        if (s.index == e.instruction && s.start <= e.at && e.at <= s.end) mark.end = s.end;
+      for (const workcell::BodyRef& b : {e.contact.a, e.contact.b}) {
+        if (b.kind == workcell::BodyKind::Object) mark.objects.push_back(b.index);
+        for (std::size_t k = 0; k < robotBodies.size(); ++k)
+          if (robotBodies[k].ref == b) mark.robotParts.push_back(static_cast<int>(k));
+      }
+      input.collisions.push_back(std::move(mark));
+    }
+  }
   if (!outcome.ok()) {
     const vm::Image& image = run->image();
     const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);

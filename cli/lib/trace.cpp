@@ -114,7 +114,7 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
   if (const runtime::GraspEvent* g = run_.graspOfLastStep())
     changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.world()->cell());
   if (const runtime::EmptyClose* e = run_.emptyCloseOfLastStep())
-    changed += (changed.empty() ? "" : "  ") + "closes on nothing: " + emptyCloseText(*e, run_.world()->cell());
+    changed += std::string(changed.empty() ? "" : "  ") + "closes on nothing: " + emptyCloseText(*e, run_.world()->cell());
   const std::optional<std::array<double, 3>> tool = run_.world() ? run_.world()->tcp(pos) : std::nullopt;
   const std::string tcp = tool ? fmt::format("{:<28}  ", pointText(*tool)) : std::string();
   std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}{}", vm::formatSeconds(vm.machine().now()),

@@ -260,11 +260,30 @@ const std::string_view kScript = R"JS('use strict';
   }
 
   // ---- Drawing.
+  // The parts of a collision are red (EGA 4) from its moment to the end
+  // of its move (run.collisions, docs/render.md).
+  function markCollisions(t) {
+    for (const p of allParts) p.hot = false;
+    const c = model.run.collisions;
+    if (!c) return;
+    for (let i = 0; i < c.at.length; i++) {
+      if (t < c.at[i] || t > c.end[i]) continue;
+      for (const k of c.robotParts[i]) if (model.robots[0].parts[k]) model.robots[0].parts[k].hot = true;
+      for (const k of c.objects[i]) if (model.objects[k]) model.objects[k].hot = true;
+    }
+  }
   function strokeParts() {
     for (let c = 0; c < 16; c++) {
       let any = false;
       ctx.beginPath();
       for (const p of allParts) {
+        if (p.hot) {
+          if (c !== 4) continue;
+          const s = p.screen;
+          for (let j = 0; j < 4 * p.count; j += 4) { ctx.moveTo(s[j], s[j + 1]); ctx.lineTo(s[j + 2], s[j + 3]); }
+          any = true;
+          continue;
+        }
         const idx = p.byColor[c];
         if (!idx) continue;
         const s = p.screen;
@@ -314,6 +333,7 @@ const std::string_view kScript = R"JS('use strict';
     // stroking 5,000 wider lines (docs/render.md).
     ctx.lineWidth = S.hairline;
     ctx.lineCap = 'butt';
+    markCollisions(S.t);
     strokeParts();
     strokeAxesAndTools(V, S.axes);
     ctx.fillStyle = EGA[7];
