@@ -66,7 +66,7 @@ double bestNsPerCall(int reps, long calls, F&& f) {
 constexpr const char* kProgram =
     "        SET N 0\n"
     "loop:   MOVETO 1000 -550 0 0 0\n"
-    "        MOVETO -1000 550 150 700 120\n"
+    "        MOVETO -1000 550 0 700 120\n"
     "        MOVETO 0 0 0 -700 0\n"
     "        ADD N 1\n"
     "        JMPVAR N < 50 loop\n"

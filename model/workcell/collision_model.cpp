@@ -55,10 +55,6 @@ CollisionBody makeBody(BodyRef ref, const Shape& shape, int frame) {
     if (piece.points.empty()) continue;
     CollisionPiece p;
     p.points = piece.box && piece.points.size() == 8 ? insetBox(piece.points) : insetHull(piece.points);
-    Eigen::AlignedBox3d box;
-    for (const Vector3d& v : p.points) box.extend(v);
-    p.centre = box.center();
-    for (const Vector3d& v : p.points) p.radius = std::max(p.radius, (v - p.centre).norm());
     body.pieces.push_back(std::move(p));
   }
   return body;
@@ -211,10 +207,12 @@ CollisionData::CollisionData(const CollisionModel& model) : model_(model) {
   encoders_.assign(model.chain_ ? static_cast<std::size_t>(model.chain_->encoderCount()) : 0, 0);
   F_world_i_.assign(frames, Eigen::Isometry3d::Identity());
   robotPoses_.assign(model.robotBodies_.size(), Eigen::Isometry3d::Identity());
-  for (const CollisionBody& b : model.robotBodies_) robotCentres_.emplace_back(b.pieces.size(), Vector3d::Zero());
+  for (const CollisionBody& b : model.robotBodies_) robotBoxes_.emplace_back(b.pieces.size());
   std::size_t most = 0;
-  for (const CollisionBody& b : model.objectBodies_) most = std::max(most, b.pieces.size());
-  heldCentres_.assign(most, Vector3d::Zero());
+  for (const CollisionBody& b : model.objectBodies_) most = std::max(most, b.pieces.size()), objectBoxes_.emplace_back(b.pieces.size());
+  objectBoxPose_.assign(model.objectBodies_.size(), Eigen::Isometry3d::Identity());
+  objectBoxOk_.assign(model.objectBodies_.size(), 0);
+  heldBoxes_.assign(most, Eigen::AlignedBox3d());
   if (model.robot_ < model.cell_->robots.size() && !model.chain_) {  // a bare base: where it was placed
     const PlacedRobot& placed = model.cell_->robots[model.robot_];
     for (Eigen::Isometry3d& p : robotPoses_) p = placed.F_world_design;
@@ -244,26 +242,30 @@ void CollisionData::pose(std::span<const std::int32_t> encoders) {
 
 namespace {
 
-bool bodiesOverlap(const CollisionBody& a, const Eigen::Isometry3d& Ta, std::span<const Vector3d> centresA,
-                   const CollisionBody& b, const Eigen::Isometry3d& Tb, const Vector3d* centresB) {
+// The world boxes around each piece of a body at pose T: what the exact
+// test is asked about only when two of them meet.
+void boundsOf(const CollisionBody& body, const Eigen::Isometry3d& T, Eigen::AlignedBox3d* out) {
+  for (std::size_t i = 0; i < body.pieces.size(); ++i) {
+    Eigen::AlignedBox3d box;
+    for (const Vector3d& p : body.pieces[i].points) box.extend(T * p);
+    out[i] = box;
+  }
+}
+
+bool bodiesOverlap(const CollisionBody& a, const Eigen::Isometry3d& Ta, const Eigen::AlignedBox3d* boxesA,
+                   const CollisionBody& b, const Eigen::Isometry3d& Tb, const Eigen::AlignedBox3d* boxesB) {
   for (std::size_t i = 0; i < a.pieces.size(); ++i)
     for (std::size_t k = 0; k < b.pieces.size(); ++k) {
-      const Vector3d cb = centresB ? centresB[k] : Vector3d(Tb * b.pieces[k].centre);
-      const double reach = a.pieces[i].radius + b.pieces[k].radius;
-      if ((centresA[i] - cb).squaredNorm() > reach * reach) continue;
+      if (!boxesA[i].intersects(boxesB[k])) continue;
       if (hullsOverlap({a.pieces[i].points, &Ta}, {b.pieces[k].points, &Tb})) return true;
     }
   return false;
 }
 
-bool belowFloor(const CollisionBody& body, const Eigen::Isometry3d& T, std::span<const Vector3d> centres, double floor) {
-  const Eigen::RowVector3d up = T.linear().row(1);
-  const double lift = T.translation().y();
-  for (std::size_t i = 0; i < body.pieces.size(); ++i) {
-    if (centres[i].y() - body.pieces[i].radius >= floor) continue;
-    for (const Vector3d& p : body.pieces[i].points)
-      if (up.dot(p) + lift < floor) return true;
-  }
+// A point of the body below the floor (the boxes' lowest y is exact).
+bool belowFloor(const CollisionBody& body, const Eigen::AlignedBox3d* boxes, double floor) {
+  for (std::size_t i = 0; i < body.pieces.size(); ++i)
+    if (!boxes[i].isEmpty() && boxes[i].min().y() < floor) return true;
   return false;
 }
 
@@ -281,46 +283,54 @@ void CollisionData::scan(std::span<const std::int32_t> encoders, const Collision
   const auto& robot = model_.robotBodies_;
   const auto& objects = model_.objectBodies_;
   for (std::size_t b = 0; b < robot.size(); ++b)
-    for (std::size_t i = 0; i < robot[b].pieces.size(); ++i) robotCentres_[b][i] = robotPoses_[b] * robot[b].pieces[i].centre;
+    boundsOf(robot[b], robotPoses_[b], robotBoxes_[b].data());
   const std::optional<double> floor = model_.cell_->floor;
   const bool statics = on.statics;
   const int last = static_cast<int>(F_world_i_.size()) - 1;
   const auto objectPose = [&](std::size_t o) -> const Eigen::Isometry3d& { return query.objectPoses[o]; };
+  // Objects rarely move: their boxes are kept until their pose changes.
+  const auto objectBoxes = [&](std::size_t o) -> const Eigen::AlignedBox3d* {
+    if (!objectBoxOk_[o] || objectBoxPose_[o].matrix() != query.objectPoses[o].matrix()) {
+      boundsOf(objects[o], query.objectPoses[o], objectBoxes_[o].data());
+      objectBoxPose_[o] = query.objectPoses[o];
+      objectBoxOk_[o] = 1;
+    }
+    return objectBoxes_[o].data();
+  };
   for (std::size_t b = 0; b < robot.size(); ++b) {
     const CollisionBody& body = robot[b];
     if (body.pieces.empty() || (body.frame == 0 && !statics)) {
       // link 0 never moves: only other links can reach it (below)
     } else {
-      if (floor && belowFloor(body, robotPoses_[b], robotCentres_[b], *floor))
+      if (floor && belowFloor(body, robotBoxes_[b].data(), *floor))
         if (on({body.ref, {BodyKind::Floor, 0}})) return;
       for (std::size_t o = 0; o < objects.size(); ++o) {
         if (query.held == o || (isGripperPart(body) && (query.exempt == o || query.exemptToo == o))) continue;
-        if (bodiesOverlap(body, robotPoses_[b], robotCentres_[b], objects[o], objectPose(o), nullptr))
+        if (bodiesOverlap(body, robotPoses_[b], robotBoxes_[b].data(), objects[o], objectPose(o), objectBoxes(o)))
           if (on({body.ref, objects[o].ref})) return;
       }
     }
     if (body.pieces.empty()) continue;
     for (std::size_t c = 0; c < robot.size(); ++c) {
       if (robot[c].frame > body.frame - 2 || robot[c].pieces.empty()) continue;
-      if (bodiesOverlap(body, robotPoses_[b], robotCentres_[b], robot[c], robotPoses_[c], robotCentres_[c].data()))
+      if (bodiesOverlap(body, robotPoses_[b], robotBoxes_[b].data(), robot[c], robotPoses_[c], robotBoxes_[c].data()))
         if (on({body.ref, robot[c].ref})) return;
     }
   }
   if (!query.held || *query.held >= objects.size()) return;
   const CollisionBody& held = objects[*query.held];
   const Eigen::Isometry3d T = F_world_i_.back() * query.heldOffset;
-  for (std::size_t i = 0; i < held.pieces.size(); ++i) heldCentres_[i] = T * held.pieces[i].centre;
-  const std::span<const Vector3d> centres(heldCentres_.data(), held.pieces.size());
-  if (floor && belowFloor(held, T, centres, *floor))
+  boundsOf(held, T, heldBoxes_.data());
+  if (floor && belowFloor(held, heldBoxes_.data(), *floor))
     if (on({held.ref, {BodyKind::Floor, 0}})) return;
   for (std::size_t o = 0; o < objects.size(); ++o) {
     if (o == *query.held) continue;
-    if (bodiesOverlap(held, T, centres, objects[o], objectPose(o), nullptr))
+    if (bodiesOverlap(held, T, heldBoxes_.data(), objects[o], objectPose(o), objectBoxes(o)))
       if (on({held.ref, objects[o].ref})) return;
   }
   for (std::size_t c = 0; c < robot.size(); ++c) {
     if (robot[c].frame > last - 2 || robot[c].pieces.empty()) continue;
-    if (bodiesOverlap(held, T, centres, robot[c], robotPoses_[c], robotCentres_[c].data()))
+    if (bodiesOverlap(held, T, heldBoxes_.data(), robot[c], robotPoses_[c], robotBoxes_[c].data()))
       if (on({held.ref, robot[c].ref})) return;
   }
 }

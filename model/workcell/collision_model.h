@@ -59,11 +59,9 @@ struct Contact {
   bool operator==(const Contact&) const = default;
 };
 
-/// A piece as the check uses it: inset, with its bounding sphere.
+/// A piece as the check uses it: inset, in its body's own coordinates.
 struct CollisionPiece {
-  std::vector<Eigen::Vector3d> points;  ///< in the body's own coordinates
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  double radius = 0;
+  std::vector<Eigen::Vector3d> points;
 };
 
 struct CollisionBody {
@@ -160,8 +158,12 @@ class CollisionData {
   std::vector<std::int32_t> encoders_;
   std::vector<Eigen::Isometry3d> F_world_i_;
   std::vector<Eigen::Isometry3d> robotPoses_;
-  std::vector<std::vector<Eigen::Vector3d>> robotCentres_;  // per body, per piece: sphere centre in the world
-  std::vector<Eigen::Vector3d> heldCentres_;
+  // World boxes round each piece: the robot's at the last pose, each
+  // object's at the pose they were made for, the carried object's.
+  std::vector<std::vector<Eigen::AlignedBox3d>> robotBoxes_, objectBoxes_;
+  std::vector<Eigen::Isometry3d> objectBoxPose_;
+  std::vector<char> objectBoxOk_;
+  std::vector<Eigen::AlignedBox3d> heldBoxes_;
 };
 
 /// Every overlap of the cell's first robot at its home pose, objects where
