@@ -229,14 +229,16 @@ std::string_view blockName(Block b) {
 
 constexpr std::array<std::string_view, 6> kBoxEdges{"left", "right", "top", "bottom", "front", "back"};
 
-// A BOX's 8 corners as a collision piece (x left..right, y bottom..top,
-// z back..front, as its lines).
+// A BOX's 8 corners as a collision piece: x left..right, y bottom..top,
+// z back..front, as its lines; corner 4i + 2j + k takes the i-th x, the
+// j-th y and the k-th z.
 workcell::ConvexPiece boxPiece(const double (&e)[6]) {
   workcell::ConvexPiece piece;
   piece.box = true;
+  const double xs[2] = {e[0], e[1]}, ys[2] = {e[3], e[2]}, zs[2] = {e[5], e[4]};
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j)
-      for (int k = 0; k < 2; ++k) piece.points.emplace_back(e[i], e[2 + j], e[4 + k]);
+      for (int k = 0; k < 2; ++k) piece.points.emplace_back(xs[i], ys[j], zs[k]);
   return piece;
 }
 

@@ -20,11 +20,12 @@ packages=(
 )
 # Catch2 and the unit tests build with the tree; the browser test drives a
 # real Chromium with playwright-core (pinned in tests/browser/package-lock.json);
-# lcov's genhtml reads robotsim test's coverage files; lua5.4 is the
-# benchmarks' peer; neovim's built-in LSP client drives the language server
+# lcov's genhtml reads robotsim test's coverage files; lua5.4 and libfcl-dev
+# are the benchmarks' peers (collision_bench times libfcl beside robotsim's
+# own GJK; robotsim itself does not link libfcl); neovim's built-in LSP client drives the language server
 # end to end (the editor_neovim test); clang and its runtime (libFuzzer)
 # build the sanitizer and fuzzing build; unzip lists the VS Code package.
-[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 neovim clang libclang-rt-14-dev unzip)
+[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 libfcl-dev neovim clang libclang-rt-14-dev unzip)
 
 missing=()
 for p in "${packages[@]}"; do

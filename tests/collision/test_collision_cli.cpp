@@ -52,7 +52,7 @@ TEST_CASE("a move through a post stops the run with the line, the time and the p
   CHECK(r.out.find("  collisions      line 1, ") != std::string::npos);
 }
 
-TEST_CASE("--collisions=warn lists every colliding move and goes on, off checks nothing", "[collision][cli]") {
+TEST_CASE("with --collisions=warn every colliding move is listed and the run goes on, off checks nothing", "[collision][cli]") {
   const TempDir dir;
   const std::string cell = dir.write("post-cell.rsd", kCell), program = dir.write("swing.rsp", kProgram);
   const auto warn = runCli({"run", program, "--cell", cell, "--collisions=warn", "--format=json"});
