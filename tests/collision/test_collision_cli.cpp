@@ -130,3 +130,25 @@ TEST_CASE("robotsim test: no collision, and collides with NAME at line N", "[col
         std::string::npos);
   CHECK(fail.out.find(bad + ":4:3: error: expected a collision with post at line 3;") != std::string::npos);
 }
+
+TEST_CASE("animate puts each collision's parts and moment in the page's model", "[collision][render][cli]") {
+  const TempDir dir;
+  const std::string cell = dir.write("post-cell.rsd", kCell), program = dir.write("swing.rsp", kProgram);
+  const auto r = runCli({"animate", program, "--cell", cell, "--collisions=warn", "-o", dir.file("swing.html")});
+  REQUIRE(r.code == 0);
+  const std::string html = rs::testing::readBytes(dir.file("swing.html"));
+  const std::string open = "<script type=\"application/json\" id=\"robotsim-model\">";
+  const auto from = html.find(open);
+  REQUIRE(from != std::string::npos);
+  const auto to = html.find("</script>", from);
+  const auto model = nlohmann::json::parse(html.substr(from + open.size(), to - from - open.size()));
+  const auto& c = model["run"]["collisions"];
+  REQUIRE(c["at"].size() == 2);
+  // Red from the collision to the end of its move: the moves end at 1.5 s and 3 s.
+  CHECK(c["end"] == nlohmann::json::parse("[1500000, 3000000]"));
+  CHECK(c["at"][0].get<double>() < 1500000);
+  CHECK(c["robotParts"] == nlohmann::json::parse("[[2], [2]]"));  // link 2: the robot's third part
+  CHECK(c["objects"] == nlohmann::json::parse("[[1], [1]]"));     // the post
+  CHECK(model["robots"][0]["parts"][2]["kind"] == "link");
+  CHECK(model["robots"][0]["parts"][2]["index"] == 2);
+}
