@@ -17,6 +17,7 @@
 // tests/debug/transcripts/README.md.
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -90,4 +91,19 @@ TEST_CASE("the worked session's example: robotsim test fails the buggy copy and 
         std::string::npos);
   const rs::testing::CliResult fixed = rs::testing::runCli({"test", debugtest::kExamples + "gantry_pick.rsp"});
   CHECK(fixed.code == 0);
+}
+
+TEST_CASE("robotsim debug reads its commands from standard input when it is not a terminal", "[debug][transcript]") {
+  const rs::testing::TempDir dir;
+  const std::string out = dir.file("out.txt");
+  const std::string command = "printf 'break grip\\ncontinue\\nprint GRIPS\\n' | '" + std::string(ROBOTSIM_BINARY) +
+                              "' debug '" + debugtest::kExamples + "nested_subroutines.rsp' > '" + out + "' 2>&1";
+  REQUIRE(std::system(command.c_str()) == 0);  // the end of input ends the session: exit 0
+  const std::string text = rs::testing::readBytes(out);
+  // Each command echoed after the prompt, then its answer: grip first runs
+  // after pick's first move (0.5 s, step 4), before its ADD.
+  CHECK(text.find("(rsdb) break grip\nbreakpoint 1: label grip, line 38\n") != std::string::npos);
+  CHECK(text.find("(rsdb) continue\nbreakpoint 1 (label grip, line 38)\nline 38 @19, step 4, clock 0.500 s\n") !=
+        std::string::npos);
+  CHECK(text.find("(rsdb) print GRIPS\nGRIPS = 0\n") != std::string::npos);
 }

@@ -45,8 +45,12 @@ case "$reader" in
     seeds+=("$work/seeds-image") ;;
 esac
 
-# The debug adapter's seeds launch examples/ programs by relative paths.
-[ "$reader" = dap ] && cd "$root"
+# The debug adapter's seeds launch examples/ programs by relative paths:
+# it runs from the top of the tree (its own paths made absolute first).
+if [ "$reader" = dap ]; then
+  fuzzer=$(realpath "$fuzzer") out=$(realpath "$out")
+  cd "$root"
+fi
 
 echo "fuzz: $name, $runs inputs, seeds from ${#seeds[@]} directories" >&2
 # -rss_limit_mb: the readers' own limits keep far below it; -timeout: ten
