@@ -197,14 +197,14 @@ TEST_CASE("pendant: the state as JSON", "[teach]") {
   CHECK(j["cell"] == "gantry-cell");
   CHECK(j["motors"].size() == 4);
   CHECK(j["motors"][3]["kind"] == "gripper");
-  CHECK(j["inputs"] == nlohmann::json({false, true, false, false, false, false, false, false}));
+  CHECK(j["inputs"] == nlohmann::ordered_json({false, true, false, false, false, false, false, false}));
   CHECK(j["gripper"] == "open");
   CHECK(j["points"][0]["name"] == "OVER");
   CHECK(j["points"][0]["line"] == 4);
   // Objects at their placement: the identity takes their drawing nowhere.
-  CHECK(j["objects"][0]["pose"] == nlohmann::json({1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0}));
+  CHECK(j["objects"][0]["pose"] == nlohmann::ordered_json({1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0}));
   CHECK(j["fileHash"].get<std::string>().size() == 16);
-  CHECK(j["tcp"] == nlohmann::json({500.0, 200.0, 400.0}));
+  CHECK(j["tcp"] == nlohmann::ordered_json({500.0, 200.0, 400.0}));
 }
 
 TEST_CASE("pendant keys: one table, every key once", "[teach]") {
