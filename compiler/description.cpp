@@ -227,6 +227,31 @@ std::string_view blockName(Block b) {
   return "";
 }
 
+constexpr std::array<std::string_view, 6> kBoxEdges{"left", "right", "top", "bottom", "front", "back"};
+
+// A BOX's 8 corners as a collision piece: x left..right, y bottom..top,
+// z back..front, as its lines; corner 4i + 2j + k takes the i-th x, the
+// j-th y and the k-th z.
+workcell::ConvexPiece boxPiece(const double (&e)[6]) {
+  workcell::ConvexPiece piece;
+  piece.box = true;
+  const double xs[2] = {e[0], e[1]}, ys[2] = {e[3], e[2]}, zs[2] = {e[5], e[4]};
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      for (int k = 0; k < 2; ++k) piece.points.emplace_back(xs[i], ys[j], zs[k]);
+  return piece;
+}
+
+// ROTATE and MOVE turn every collision point drawn so far with the lines.
+template <typename F>
+void forEachPoint(ShapeDef& shape, F&& f) {
+  for (workcell::ConvexPiece& piece : shape.boxes)
+    for (Eigen::Vector3d& p : piece.points) f(p);
+  for (workcell::ConvexPiece& piece : shape.given)
+    for (Eigen::Vector3d& p : piece.points) f(p);
+  for (Eigen::Vector3d& p : shape.linePoints) f(p);
+}
+
 Eigen::Matrix3d axisRotation(int axis, double degrees) {
   return Eigen::AngleAxisd(degrees * M_PI / 180.0, Eigen::Vector3d::Unit(axis)).toRotationMatrix();
 }
@@ -332,8 +357,8 @@ void Parser::open(Cursor& c, const Word& head) {
   robotItem_ = Item::None;
   color_ = Color::White;
   switch (kind) {
-    case Block::Link: f_.links.push_back({name.name, head.pos, {}}); break;
-    case Block::Object: f_.objects.push_back({name.name, head.pos, {}}); break;
+    case Block::Link: f_.links.emplace_back(), f_.links.back().name = name.name, f_.links.back().pos = head.pos; break;
+    case Block::Object: f_.objects.emplace_back(), f_.objects.back().name = name.name, f_.objects.back().pos = head.pos; break;
     case Block::Gripper: f_.grippers.push_back({}), f_.grippers.back().name = name.name, f_.grippers.back().pos = head.pos; break;
     case Block::Robot: f_.robots.push_back({}), f_.robots.back().name = name.name, f_.robots.back().pos = head.pos; break;
     case Block::Workcell: f_.workcells.push_back({name.name, head.pos, {}}); break;
@@ -354,13 +379,13 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
     Color color = color_;
     if (c.keyword("COLOR") && !c.color(color)) return false;
     shape.segments.push_back({a.v, b.v, color});
+    shape.linePoints.push_back(a.v), shape.linePoints.push_back(b.v);
     return true;
   }
   if (c.keyword("BOX")) {
-    static constexpr std::array<std::string_view, 6> kEdges{"left", "right", "top", "bottom", "front", "back"};
     double e[6];
     for (int k = 0; k < 6; ++k)
-      if (!c.number(e[k], fmt::format("the BOX's {} edge", kEdges[static_cast<std::size_t>(k)]))) return false;
+      if (!c.number(e[k], fmt::format("the BOX's {} edge", kBoxEdges[static_cast<std::size_t>(k)]))) return false;
     Color color = color_;
     if (c.keyword("COLOR") && !c.color(color)) return false;
     // x from left to right, y from bottom to top, z from back to front.
@@ -371,6 +396,17 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
         shape.segments.push_back({{xs[i], ys[0], zs[j]}, {xs[i], ys[1], zs[j]}, color});
         shape.segments.push_back({{xs[i], ys[j], zs[0]}, {xs[i], ys[j], zs[1]}, color});
       }
+    shape.boxes.push_back(boxPiece(e));
+    return true;
+  }
+  if (c.keyword("COLLIDE")) {
+    shape.collideGiven = true;
+    if (c.keyword("NONE")) return true;
+    if (!c.keyword("BOX")) return c.failOneOf("BOX or NONE");
+    double e[6];
+    for (int k = 0; k < 6; ++k)
+      if (!c.number(e[k], fmt::format("the COLLIDE BOX's {} edge", kBoxEdges[static_cast<std::size_t>(k)]))) return false;
+    shape.given.push_back(boxPiece(e));
     return true;
   }
   if (c.keyword("ROTATE")) {
@@ -379,16 +415,18 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
     if (!c.axis(axis) || !c.number(degrees, "an angle in degrees")) return false;
     const Eigen::Matrix3d r = axisRotation(axis, degrees);
     for (workcell::Segment& s : shape.segments) s.a = r * s.a, s.b = r * s.b;
+    forEachPoint(shape, [&](Eigen::Vector3d& p) { p = r * p; });
     return true;
   }
   if (c.keyword("MOVE")) {
     Point3 d;
     if (!c.point(d, "a displacement")) return false;
     for (workcell::Segment& s : shape.segments) s.a += d.v, s.b += d.v;
+    forEachPoint(shape, [&](Eigen::Vector3d& p) { p += d.v; });
     return true;
   }
   if (c.keyword("COLOR")) return c.color(color_);
-  return c.failOneOf("LINE, BOX, ROTATE, MOVE, COLOR or END");
+  return c.failOneOf("LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END");
 }
 
 // LETTER, PRECISION, RANGE, SPEED, ACCELERATION: shared by GRIPPER and JOINT.
@@ -537,6 +575,13 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
 }
 
 bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
+  if (c.keyword("FLOOR")) {
+    if (c.keyword("NONE")) return w.floor.reset(), true;
+    double y = 0;
+    if (!c.number(y, "the floor's height (y), or NONE")) return false;
+    w.floor = y;
+    return true;
+  }
   const bool robot = c.keyword("ROBOT");
   if (robot || c.keyword("OBJECT")) {
     PlacementDef p;
@@ -545,7 +590,7 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
     w.placements.push_back(p);
     return true;
   }
-  if (w.placements.empty()) return c.failOneOf("ROBOT, OBJECT or END");
+  if (w.placements.empty()) return c.failOneOf("ROBOT, OBJECT, FLOOR or END");
   PlacementDef& p = w.placements.back();
   if (c.keyword("AT")) {
     Point3 at;
@@ -560,10 +605,17 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
     p.rotation = axisRotation(axis, degrees) * p.rotation;
     return true;
   }
-  return c.failOneOf("ROBOT, OBJECT, AT, ROTATE or END");
+  return c.failOneOf("ROBOT, OBJECT, AT, ROTATE, FLOOR or END");
 }
 
 }  // namespace
+
+std::vector<workcell::ConvexPiece> ShapeDef::collision() const {
+  if (collideGiven) return given;
+  std::vector<workcell::ConvexPiece> pieces = boxes;
+  if (!linePoints.empty()) pieces.push_back({linePoints, false});
+  return pieces;
+}
 
 std::optional<workcell::Color> colorByName(std::string_view word) {
   for (std::size_t i = 0; i < kColorNames.size(); ++i)

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,14 @@ struct ShapeDef {  // LINK or OBJECT
   std::string name;
   diag::Pos pos;
   std::vector<workcell::Segment> segments;
+  std::vector<workcell::ConvexPiece> boxes;   // one per BOX (its corners)
+  std::vector<Eigen::Vector3d> linePoints;    // the LINEs' endpoints
+  std::vector<workcell::ConvexPiece> given;   // COLLIDE BOX statements
+  bool collideGiven = false;                  // any COLLIDE statement
   bool damaged = false;
+  /// The collision pieces (docs/models.md, "Collisions"): the COLLIDE
+  /// statements' when there is one, else each BOX and the hull of the LINEs.
+  std::vector<workcell::ConvexPiece> collision() const;
 };
 
 struct GripperDef {
@@ -93,6 +101,7 @@ struct WorkcellDef {
   std::string name;
   diag::Pos pos;
   std::vector<PlacementDef> placements;
+  std::optional<double> floor = 0.0;  // FLOOR y, FLOOR NONE
   bool damaged = false;
 };
 

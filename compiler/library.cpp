@@ -9,6 +9,7 @@
 
 #include "model/kinematics/chain_model.h"
 #include "model/kinematics/frame.h"
+#include "model/workcell/collision_model.h"
 
 namespace rs::compiler {
 
@@ -158,7 +159,7 @@ std::optional<workcell::Shape> Library::shape(Kind kind, const NameRef& ref, con
                                      kindName(static_cast<int>(kind)), ref.name, ref.name));
     return std::nullopt;
   }
-  return workcell::Shape{def->name, def->segments};
+  return workcell::Shape{def->name, def->segments, def->collision()};
 }
 
 std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const DescriptionFile& from) {
@@ -319,6 +320,7 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
   cellsBuilt_.insert(&def);
   workcell::Workcell cell;
   cell.name = def.name;
+  cell.floor = def.floor;
   bool ok = true;
   for (const PlacementDef& p : def.placements) {
     if (p.what.name.empty()) {  // a placement whose name was missing: reported
@@ -360,7 +362,32 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
   if (ok && cell.robots.empty() && cell.objects.empty())
     error(from, def.pos, fmt::format("workcell '{}' places no robot and no object", def.name)), ok = false;
   if (!ok) return std::nullopt;
+  reportHomeCollisions(cell, def, from);
   return cell;
+}
+
+// docs/models.md, "Collisions": a robot that overlaps something at its
+// home pose is reported when its workcell is built, at its placement.
+void Library::reportHomeCollisions(const workcell::Workcell& cell, const WorkcellDef& def, const DescriptionFile& from) {
+  if (cell.robots.empty()) return;
+  const std::vector<workcell::Contact> contacts = workcell::checkAtHome(cell);
+  if (contacts.empty()) return;
+  diag::Pos at = def.pos;
+  for (const PlacementDef& p : def.placements)
+    if (p.isRobot) {
+      at = p.what.pos;
+      break;
+    }
+  const workcell::CollisionModel model(cell);
+  constexpr std::size_t kShown = 5;
+  for (std::size_t i = 0; i < contacts.size() && i < kShown; ++i) {
+    std::string message = fmt::format("robot '{}' collides at its home pose: {} overlaps {}", cell.robots.front().robot.name,
+                                      model.describe(contacts[i].a), model.describe(contacts[i].b));
+    if (i + 1 == kShown && contacts.size() > kShown) message += fmt::format(" (and {} more)", contacts.size() - kShown);
+    diagnostics_.push_back({from.source->name(), at, diag::Severity::Warning, std::move(message), "home-collision",
+                            "move the robot or the object, or give the part a COLLIDE statement; "
+                            "'robotsim render CELL --collision-shapes' draws what is checked"});
+  }
 }
 
 // Every robot and workcell of a file is built, whether the command uses it
@@ -416,6 +443,7 @@ std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrNam
     cell = buildWorkcell(f->workcells.front(), *f);
   } else if (!f->robots.empty()) {
     WorkcellDef alone{f->robots.front().name, f->robots.front().pos, {}};
+    alone.floor.reset();  // a robot alone stands in no room
     PlacementDef p;
     p.what = {f->robots.front().name, f->robots.front().pos};
     p.at = Eigen::Vector3d::Zero();

@@ -68,6 +68,7 @@ class Library {
   /// False (with an error at the ACCELERATION) when the motor would take
   /// vm::kMaxSecondsToSpeed or more to reach its speed.
   bool reachesSpeed(const DescriptionFile& file, diag::Pos at, std::int32_t speed, std::int32_t acceleration);
+  void reportHomeCollisions(const workcell::Workcell& cell, const WorkcellDef& def, const DescriptionFile& from);
 
   std::vector<std::filesystem::path> searchPath_;
   std::vector<std::unique_ptr<DescriptionFile>> files_;  // in load order

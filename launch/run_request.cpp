@@ -2,6 +2,10 @@
 
 #include "runtime/stimuli_text.h"
 
+#include <fmt/format.h>
+
+#include "base/text.h"
+
 namespace rs::launch {
 
 std::string_view RunRequest::firstGiven() const {
@@ -9,6 +13,7 @@ std::string_view RunRequest::firstGiven() const {
   if (!stimuliFile.empty()) return "--stimuli";
   if (maxSteps) return "--max-steps";
   if (!maxTime.empty()) return "--max-time";
+  if (!collisions.empty()) return "--collisions";
   return "";
 }
 
@@ -39,6 +44,15 @@ std::optional<vm::Micros> maxTimeOf(const RunRequest& request, std::vector<diag:
   return std::nullopt;
 }
 
+std::optional<runtime::CollisionMode> collisionsOf(const RunRequest& request, std::vector<diag::Diagnostic>& diags) {
+  if (request.collisions.empty()) return runtime::CollisionMode::Error;
+  if (const auto mode = runtime::collisionModeByName(request.collisions)) return mode;
+  diags.push_back({"--collisions", {}, diag::Severity::Error,
+                   fmt::format("'{}' is not a collision mode", base::safeText(request.collisions)), {},
+                   "write --collisions=error (a collision stops the run), warn (it is reported) or off"});
+  return std::nullopt;
+}
+
 std::optional<runtime::RunSpec> prepareRun(const LoadedProgram& program, const RunRequest& request,
                                            std::vector<diag::Diagnostic>& diags, std::uint64_t defaultMaxSteps) {
   runtime::RunSpec spec;
@@ -46,7 +60,9 @@ std::optional<runtime::RunSpec> prepareRun(const LoadedProgram& program, const R
   spec.cell = program.cell;
   const std::optional<vm::Micros> maxTime = maxTimeOf(request, diags);
   const bool stimuliOk = loadStimuli(request, spec.stimuli, diags);
-  if (!maxTime || !stimuliOk || !program.image) return std::nullopt;
+  const std::optional<runtime::CollisionMode> collisions = collisionsOf(request, diags);
+  if (!maxTime || !stimuliOk || !collisions || !program.image) return std::nullopt;
+  spec.collisions = *collisions;
   spec.limits.maxSteps = request.maxSteps.value_or(defaultMaxSteps);
   spec.limits.maxTime = *maxTime;
   return spec;

@@ -21,6 +21,7 @@ struct RunRequest {
   std::vector<std::string> inputs;     ///< --input N=ON@T, in order
   std::optional<std::uint64_t> maxSteps;  ///< --max-steps; unset: the command's default
   std::string maxTime;                 ///< --max-time in seconds; empty: not given (3600)
+  std::string collisions;              ///< --collisions error|warn|off; empty: not given (error)
   /// The option names, in the order given, that belong to a run (for
   /// commands that run only with --program): the first set one, or "".
   std::string_view firstGiven() const;
@@ -29,6 +30,9 @@ struct RunRequest {
 /// Stimuli from the stimuli file (when named) and the --input changes, in
 /// that order; every error becomes a diagnostic. False on any error.
 bool loadStimuli(const RunRequest& request, runtime::Stimuli& stimuli, std::vector<diag::Diagnostic>& diags);
+
+/// --collisions' mode (error when not given), or a diagnostic.
+std::optional<runtime::CollisionMode> collisionsOf(const RunRequest& request, std::vector<diag::Diagnostic>& diags);
 
 /// --max-time's microseconds (3600 s when not given), or a diagnostic.
 std::optional<vm::Micros> maxTimeOf(const RunRequest& request, std::vector<diag::Diagnostic>& diags);

@@ -1,6 +1,9 @@
 #include "runtime/cell_machine.h"
 
 #include <algorithm>
+#include <fmt/format.h>
+
+#include "vm/interpreter.h"
 
 namespace rs::runtime {
 
@@ -10,7 +13,14 @@ vm::Status CellMachine::moveAndReact(Move&& move) {
   std::copy(positions.begin(), positions.end(), before_.begin());
   const vm::Micros start = motion_.now();
   vm::Status status = move();
-  if (status) world_.moved(before_, motion_.positions(), start, motion_.now());
+  if (!status) return status;
+  if (watch_ && mode_ != CollisionMode::Off) {
+    const CollisionEvent* hit = watch_->sweep(*timeline_, world_, before_, motion_.positions(), start, motion_.now());
+    if (hit && mode_ == CollisionMode::Error)
+      return vm::Status::fault(
+          fmt::format("collision at {} s: {}", vm::formatSeconds(hit->at), watch_->describe(hit->contact)));
+  }
+  world_.moved(before_, motion_.positions(), start, motion_.now());
   return status;
 }
 

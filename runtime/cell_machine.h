@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "runtime/collision_watch.h"
+#include "runtime/sim_machine.h"
 #include "runtime/world.h"
 #include "vm/machine.h"
 
@@ -17,6 +19,14 @@ class CellMachine final : public vm::Machine {
   /// Both must outlive this.
   CellMachine(vm::Machine& motion, World& world)
       : motion_(motion), world_(world), before_(motion.positions().size(), 0) {}
+
+  /// Checks every move on the simulated machine `timeline` (the machine
+  /// this one stands in front of) for collisions; with CollisionMode::Error
+  /// a move that collides fails with the collision's message. Both must
+  /// outlive this.
+  void watchCollisions(const SimMachine& timeline, CollisionWatch& watch, CollisionMode mode) {
+    timeline_ = &timeline, watch_ = &watch, mode_ = mode;
+  }
 
   vm::Status moveTo(std::span<const std::int32_t> targets) override;
   std::span<const std::int32_t> positions() const override { return motion_.positions(); }
@@ -38,6 +48,9 @@ class CellMachine final : public vm::Machine {
 
   vm::Machine& motion_;
   World& world_;
+  const SimMachine* timeline_ = nullptr;
+  CollisionWatch* watch_ = nullptr;
+  CollisionMode mode_ = CollisionMode::Off;
   std::vector<std::int32_t> before_;  // scratch, sized once
 };
 

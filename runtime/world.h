@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "model/workcell/collision_model.h"
 #include "model/workcell/grasp.h"
 #include "model/workcell/model.h"
 #include "model/workcell/tool_tracker.h"
@@ -29,6 +30,16 @@ struct GraspEvent {
   std::size_t object = 0;
   bool held = false;
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+};
+
+/// A closing move that took nothing: where the tool centre point was at
+/// its end, and the nearest object's box and how far (0 inside: a gripper
+/// already holding nothing closed inside a nested box's bigger one).
+struct EmptyClose {
+  vm::Micros at = 0;
+  Eigen::Vector3d tcp = Eigen::Vector3d::Zero();
+  std::optional<std::size_t> nearest;
+  double distance = 0;
 };
 
 class World {
@@ -60,14 +71,34 @@ class World {
   /// The tool centre point in world coordinates, when the robot has a chain.
   std::optional<std::array<double, 3>> tcp(std::span<const std::int32_t> encoders) const;
 
+  /// Closing moves that took nothing, and the latest of them.
+  std::uint64_t emptyCloseCount() const { return state_.emptyCloses; }
+  const EmptyClose& lastEmptyClose() const { return state_.lastEmptyClose; }
+  /// Closing moves in all, and takes in all.
+  std::uint64_t closeCount() const { return state_.closes; }
+  std::uint64_t takeCount() const { return state_.takes; }
+
+  /// The world as a move from `before` to `after` sees it, for the
+  /// collision check: every object's resting pose (written into `poses`,
+  /// sized for the objects), what is carried — nothing during an opening
+  /// move: it is let go as the move starts — and the objects the tool
+  /// centre point is in at either end, which the gripper may overlap.
+  workcell::CollisionQuery collisionQuery(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
+                                          std::vector<Eigen::Isometry3d>& poses) const;
+
   struct State {
     workcell::Grasping::State grasp;
     vm::Micros heldSince = 0;
     std::uint64_t events = 0;
     GraspEvent last;
+    std::uint64_t closes = 0, takes = 0, emptyCloses = 0;
+    EmptyClose lastEmptyClose;
     bool operator==(const State& o) const {
       return grasp == o.grasp && heldSince == o.heldSince && events == o.events && last.at == o.last.at &&
-             last.object == o.last.object && last.held == o.last.held && last.pose.matrix() == o.last.pose.matrix();
+             last.object == o.last.object && last.held == o.last.held && last.pose.matrix() == o.last.pose.matrix() &&
+             closes == o.closes && takes == o.takes && emptyCloses == o.emptyCloses &&
+             lastEmptyClose.at == o.lastEmptyClose.at && lastEmptyClose.tcp == o.lastEmptyClose.tcp &&
+             lastEmptyClose.nearest == o.lastEmptyClose.nearest && lastEmptyClose.distance == o.lastEmptyClose.distance;
     }
   };
   State state() const;

@@ -301,6 +301,35 @@ class Checker {
                         e.tolerance, found.size() == 1 ? "it is" : "they are", where, ending()));
   }
 
+  // "collides with NAME [at line N]": a collision one of whose parts is a
+  // link, gripper part or object of that name (or "floor"), by a move of
+  // that line; "no collision": none at all.
+  void collision(const Expectation& e) {
+    if (!needsCell(e)) return;
+    const runtime::CollisionWatch* watch = run_.collisionWatch();
+    if (!watch) return fail(e, "the run checked no collisions (--collisions=off)");
+    const auto events = run_.collisions();
+    const auto lineOf = [&](const runtime::CollisionEvent& c) {
+      return c.instruction < image_.lines.size() ? image_.lines[c.instruction] : 0u;
+    };
+    const auto described = [&](const runtime::CollisionEvent& c) {
+      return fmt::format("at line {}, {}: {}", lineOf(c), seconds(c.at), watch->describe(c.contact));
+    };
+    if (e.kind == ExpectKind::NoCollision) {
+      if (!events.empty()) fail(e, fmt::format("expected no collision; {} found, the first {}", events.size(), described(events[0])));
+      return;
+    }
+    const auto named = [&](const workcell::BodyRef& b) {
+      return b.kind == workcell::BodyKind::Floor ? base::sameName(e.name, "floor") : watch->model().nameOf(b) == e.name;
+    };
+    for (const runtime::CollisionEvent& c : events)
+      if ((named(c.contact.a) || named(c.contact.b)) && (e.line == 0 || lineOf(c) == e.line)) return;
+    fail(e, events.empty() ? fmt::format("expected a collision with {}{}; the run had none", e.name,
+                                         e.line ? fmt::format(" at line {}", e.line) : "")
+                           : fmt::format("expected a collision with {}{}; the run's first was {}", e.name,
+                                         e.line ? fmt::format(" at line {}", e.line) : "", described(events[0])));
+  }
+
  private:
   const runtime::Run& run_;
   const vm::Image& image_;
@@ -336,6 +365,8 @@ std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const std::vecto
       case ExpectKind::Tcp: c.tcp(e); break;
       case ExpectKind::ObjectAt:
       case ExpectKind::ObjectHeld: c.object(e); break;
+      case ExpectKind::NoCollision:
+      case ExpectKind::CollidesWith: c.collision(e); break;
       case ExpectKind::CompileError:
       case ExpectKind::Trace: break;  // not a property of the run alone (testrun/test_file.cpp)
     }

@@ -120,7 +120,7 @@ class LineReader {
 
 constexpr std::string_view kSubjects =
     "finished, deadlock, step limit, time limit, clock standing still, runtime error, time, motors, motor, output, "
-    "input, variable, tcp, object, trace";
+    "input, variable, tcp, object, trace, no collision, collides with";
 
 // `at line N` after a status: where the run must stop.
 bool stopLine(LineReader& r, Expectation& e) {
@@ -266,6 +266,18 @@ bool expectation(LineReader& r, Expectation& e) {
     return r.real("x", e.point[0]) && r.real("y", e.point[1]) && r.real("z", e.point[2]) &&
            withinNumber(r, e.tolerance) && r.end();
   }
+  if (r.accept("no")) {
+    e.kind = ExpectKind::NoCollision;
+    return r.keyword("collision") && r.end();
+  }
+  if (r.accept("collides")) {
+    e.kind = ExpectKind::CollidesWith;
+    if (!r.keyword("with")) return false;
+    const std::optional<Word> name = r.take("what it collides with: a link, an object or floor");
+    if (!name) return false;
+    e.name = name->text;
+    return stopLine(r, e) && r.end();
+  }
   if (r.accept("object")) {
     const std::optional<Word> name = r.take("an object name");
     if (!name) return false;
@@ -320,6 +332,12 @@ bool ParsedExpectations::expectsCompileErrors() const {
 bool ParsedExpectations::wantsTrace() const {
   for (const Expectation& e : expectations)
     if (e.kind == ExpectKind::Trace) return true;
+  return false;
+}
+
+bool ParsedExpectations::expectsCollision() const {
+  for (const Expectation& e : expectations)
+    if (e.kind == ExpectKind::CollidesWith) return true;
   return false;
 }
 

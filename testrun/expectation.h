@@ -39,6 +39,8 @@ enum class ExpectKind : std::uint8_t {
   Order,         // (input|output) N on|off before (input|output) M on|off: the first times
   MotorBound,    // motor E never above N | motor E never below N: during the whole run
   Trace,         // trace FILE: the run's text trace is the file's bytes
+  NoCollision,   // no collision: the run's collision check found none
+  CollidesWith,  // collides with NAME [at line N]: a collision of a part so named (link, object, floor)
   CompileError,  // expect-error: TEXT (on the line of the error)
 };
 
@@ -100,6 +102,8 @@ struct ParsedExpectations {
   bool expectsCompileErrors() const;
   bool statesStatus() const;
   bool wantsTrace() const;
+  /// Has `collides with`: the run then goes on after a collision (warn).
+  bool expectsCollision() const;
 };
 
 /// Reads every expectation and setting of a program's comments.

@@ -125,6 +125,9 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   run.inputs = parsed.settings.inputs;
   run.maxSteps = parsed.settings.maxSteps;
   run.maxTime = parsed.settings.maxTime;
+  run.collisions = options.collisions;
+  // A test that expects a collision lets the run go on past it.
+  if (parsed.expectsCollision() && run.collisions.empty()) run.collisions = "warn";
   std::vector<diag::Diagnostic> runProblems;
   std::optional<runtime::RunSpec> spec = launch::prepareRun(loaded, run, runProblems);
   if (!spec) {

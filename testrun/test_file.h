@@ -52,6 +52,7 @@ struct RunnerOptions {
   std::vector<std::string> libDirs;  ///< --lib
   bool coverage = false;             ///< count what each run executes
   bool update = false;               ///< write golden traces that differ or are missing
+  std::string collisions;            ///< --collisions (empty: error)
   TraceMaker traceMaker = {};        ///< needed for `expect: trace`
 };
 

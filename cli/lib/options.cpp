@@ -32,6 +32,15 @@ void addRunOptions(CLI::App* cmd, launch::RunRequest& request, const std::string
          "Stop after this many instructions (default " + maxStepsDefault + ")")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 62));
   cmd->add_option("--max-time", request.maxTime, "Stop at this simulated time in seconds (default 3600)");
+  addCollisionsOption(cmd, request.collisions);
+}
+
+void addCollisionsOption(CLI::App* cmd, std::string& mode) {
+  cmd->add_option("--collisions", mode,
+                  "On a workcell, what a collision during a move does: error (default: the run stops with a runtime "
+                  "error naming the line, time and parts), warn (reported in the trace and the summary; the run "
+                  "goes on) or off (nothing is checked)")
+      ->option_text("MODE");
 }
 
 }  // namespace rs::cli

@@ -26,5 +26,7 @@ void addMaxErrorsOption(CLI::App* cmd, launch::ProgramRequest& request);
 /// --input, --stimuli, --max-steps, --max-time. `maxStepsDefault` is what
 /// --help says when --max-steps is not given.
 void addRunOptions(CLI::App* cmd, launch::RunRequest& request, const std::string& maxStepsDefault = "100000000");
+/// --collisions error|warn|off (part of addRunOptions; alone for `test`).
+void addCollisionsOption(CLI::App* cmd, std::string& mode);
 
 }  // namespace rs::cli

@@ -15,6 +15,7 @@
 #include "cli/lib/options.h"
 #include "cli/lib/report.h"
 #include "runtime/render/animation.h"
+#include "runtime/render/collision_marks.h"
 #include "runtime/render/draw.h"
 #include "runtime/render/moment.h"
 #include "runtime/render/picture.h"
@@ -219,23 +220,44 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   if (center) fit = render::zoomAbout(fit, camera, *center);
   render::Caption caption{cell.name, std::nullopt};
   std::optional<vm::Micros> moment;  // with --program: the moment drawn
+  // What the collision marks are drawn for: the motors and the objects.
+  std::vector<std::int32_t> encoders(cell.robots.empty() ? 0 : poser.encoders(0).size(), 0);
+  std::vector<Eigen::Isometry3d> objectPoses;
+  for (const workcell::PlacedObject& p : cell.objects) objectPoses.push_back(p.F_world_design);
+  bool stoppedByCollision = false;  // drawn at the collision, exit 1
   if (run) {
-    const render::Moment m = render::momentOf(*run, o.at.empty() ? INT64_MAX : at);
+    render::Moment m = render::momentOf(*run, o.at.empty() ? INT64_MAX : at);
     if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
       const vm::Image& image = run->image();
       launch::printDiagnostics(err, {runtimeDiagnostic(image, m.outcome, image.sourceName)}, loaded);
-      if (m.reached) err << "robotsim: note: the program did not end within --max-time; pick a moment with --at\n";
-      return kExitRunFailed;
+      // A collision stopped the run: draw it as it happened.
+      const auto hits = run->collisions();
+      stoppedByCollision = run->finished() && !hits.empty() && hits.back().instruction == m.outcome.index &&
+                           m.outcome.reason == vm::StopReason::RuntimeError;
+      if (!stoppedByCollision) {
+        if (m.reached) err << "robotsim: note: the program did not end within --max-time; pick a moment with --at\n";
+        return kExitRunFailed;
+      }
+      m.encoders = hits.back().encoders;
+      m.clock = hits.back().at;
+      m.objects.clear();
+      for (const runtime::ObjectView& v : run->objects(hits.back().at)) m.objects.push_back(v.pose);
     }
     poser.setEncoders(0, m.encoders);
     for (std::size_t i = 0; i < m.objects.size(); ++i) poser.setObjectPose(i, m.objects[i]);
+    encoders = m.encoders;
+    objectPoses = m.objects;
     camera.view += Eigen::Vector3d(m.view.x, m.view.y, m.view.z);
     camera.window += Eigen::Vector3d(m.window.x, m.window.y, m.window.z);
     caption.title = fmt::format("{} on {}", baseName(o.program.file), cell.name);
-    moment = o.at.empty() ? m.clock : at;
+    moment = o.at.empty() || stoppedByCollision ? m.clock : at;
     caption.seconds = static_cast<double>(*moment) / 1e6;
   }
-  const render::Picture picture = render::makePicture(poser, camera, fit, caption);
+  render::Picture picture = render::makePicture(poser, camera, fit, caption);
+  if (!cell.robots.empty()) {
+    if (o.collisionShapes) render::addLines(picture, render::collisionShapeLines(cell, encoders, objectPoses));
+    render::markColliding(picture, render::contactsAt(cell, encoders, objectPoses));
+  }
   if (o.dump == "json")
     render::dumpJson(out, picture, cell);
   else if (!o.dump.empty())
@@ -257,7 +279,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
         *format == render::ImageFormat::Png ? "PNG" : "SVG", bytes,
         moment ? fmt::format(", at {} s", vm::formatSeconds(*moment)) : "");
   }
-  return kExitOk;
+  return stoppedByCollision ? kExitRunFailed : kExitOk;
 }
 
 // ---- animate ------------------------------------------------------------------
@@ -280,6 +302,20 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   input.run = &recording;
   input.listing = listing(loaded);
   input.camera = camera;
+  if (const runtime::CollisionWatch* watch = run->collisionWatch()) {
+    const auto robotBodies = watch->model().robotBodies();
+    for (const runtime::CollisionEvent& e : run->collisions()) {
+      render::CollisionMark mark{e.at, e.at, {}, {}};
+      for (const runtime::StepRecord& s : recording.steps)  // the end of the move that collided
+        if (s.index == e.instruction && s.start <= e.at && e.at <= s.end) mark.end = s.end;
+      for (const workcell::BodyRef& b : {e.contact.a, e.contact.b}) {
+        if (b.kind == workcell::BodyKind::Object) mark.objects.push_back(b.index);
+        for (std::size_t k = 0; k < robotBodies.size(); ++k)
+          if (robotBodies[k].ref == b) mark.robotParts.push_back(static_cast<int>(k));
+      }
+      input.collisions.push_back(std::move(mark));
+    }
+  }
   if (!outcome.ok()) {
     const vm::Image& image = run->image();
     const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
@@ -312,7 +348,11 @@ RenderCommands::RenderCommands(CLI::App& app) {
   render_ = app.add_subcommand("render", "Draw a workcell (PNG or SVG), at its placed pose or during a run");
   render_->add_option("cell", o_.program.cell, "Workcell (or robot) description file or library name")->required();
   render_->add_option("--program", o_.program.file, "Run this program on the workcell's first robot");
-  render_->add_option("--at", o_.at, "The moment of the run to draw, in seconds (default: its end)");
+  render_->add_option("--at", o_.at,
+                      "The moment of the run to draw, in seconds (default: its end, or the collision that stopped it)");
+  render_->add_flag("--collision-shapes", o_.collisionShapes,
+                    "Also draw the collision geometry (each BOX, the hull of the LINEs, COLLIDE boxes) in light "
+                    "magenta; parts that overlap are drawn red either way");
   render_->add_option("-o,--output", o_.output, "Picture to write: FILE.png or FILE.svg");
   render_->add_option("--size", o_.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
   render_->add_option("--center", o_.center,

@@ -35,6 +35,7 @@ struct RenderOptions {
   double zoom = 1.0;
   std::string center;              // render --center X,Y,Z: what --zoom zooms about
   bool axes = false;
+  bool collisionShapes = false;    // render --collision-shapes
   std::string dump;  // --dump-lines: "", "text" or "json"
 };
 

@@ -64,6 +64,22 @@ std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) 
 
 }  // namespace
 
+std::optional<diag::Diagnostic> gripperWarning(const runtime::Run& run, const std::string& file) {
+  const runtime::World* world = run.world();
+  const auto first = run.firstEmptyClose();
+  if (!world || !first || world->takeCount() > 0) return std::nullopt;
+  const vm::Image& image = run.image();
+  const diag::Pos pos{image.lines[first->first], image.columns[first->first]};
+  const std::uint64_t closes = world->closeCount();
+  return diag::Diagnostic{file, pos, diag::Severity::Warning,
+                          fmt::format("the gripper closed {} but never took an object: after this close {}",
+                                      closes == 1 ? std::string("once") : fmt::format("{} times", closes),
+                                      emptyCloseText(first->second, world->cell())),
+                          "gripper-took-nothing",
+                          "a closing gripper takes the object whose box holds the tool centre point at the end of "
+                          "the move (robotsim where CELL --encoders ... shows where it is)"};
+}
+
 diag::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {
   const diag::Pos pos{image.lines[outcome.index], image.columns[outcome.index]};
   return {file, pos, diag::Severity::Error,
@@ -93,6 +109,26 @@ void printFault(std::ostream& out, const serial::FaultState& f) {
                                                     several ? "s" : "", lampList(f.outputsOn)));
 }
 
+// Each collision found (at most kShownCollisions), or "none" when the run
+// checked and found none.
+constexpr std::size_t kShownCollisions = 20;
+
+std::uint32_t lineOf(const runtime::Run& run, const runtime::CollisionEvent& e) {
+  return e.instruction < run.image().lines.size() ? run.image().lines[e.instruction] : 0;
+}
+
+void printCollisions(std::ostream& out, const runtime::Run& run) {
+  const runtime::CollisionWatch* watch = run.collisionWatch();
+  if (!watch) return;
+  const auto events = run.collisions();
+  if (events.empty()) out << "  collisions      none\n";
+  for (std::size_t i = 0; i < events.size() && i < kShownCollisions; ++i)
+    out << fmt::format("  {:<15} line {}, {} s: {}\n", i == 0 ? "collisions" : "", lineOf(run, events[i]),
+                       vm::formatSeconds(events[i].at), base::safeText(watch->describe(events[i].contact)));
+  if (events.size() > kShownCollisions)
+    out << fmt::format("  {:<15} and {} more\n", "", events.size() - kShownCollisions);
+}
+
 }  // namespace
 
 void printTextSummary(std::ostream& out, const RunReport& r) {
@@ -117,6 +153,7 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
     out << fmt::format("  {:<15} {} at {}{}\n", fmt::format("object {}", o + 1), base::safeText(e.name),
                        pointText({e.at.x(), e.at.y(), e.at.z()}), e.held ? ", held" : e.moved ? ", moved" : "");
   }
+  printCollisions(out, *r.run);
   out << fmt::format("  outputs         {}  (ON: {})\n", lampText(m.outputs()), lampList(m.outputs()));
   out << fmt::format("  inputs          {}  (ON: {})\n", lampText(m.inputs()), lampList(m.inputs()));
   std::string vars;
@@ -153,6 +190,15 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
         objects.push_back({{"name", e.name}, {"at", roundedPoint({e.at.x(), e.at.y(), e.at.z()})}, {"held", e.held},
                            {"moved", e.moved}});
       j["objects"] = objects;
+    }
+    if (const runtime::CollisionWatch* watch = r.run->collisionWatch()) {
+      Json collisions = Json::array();
+      for (const runtime::CollisionEvent& e : r.run->collisions())
+        collisions.push_back({{"line", lineOf(*r.run, e)},
+                              {"time", static_cast<double>(e.at) / 1e6},
+                              {"part", watch->model().describe(e.contact.a)},
+                              {"hits", watch->model().describe(e.contact.b)}});
+      j["collisions"] = collisions;
     }
     Json outputs = Json::array(), inputs = Json::array();
     for (int i = 0; i < 8; ++i) {

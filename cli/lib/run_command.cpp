@@ -80,6 +80,7 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     run->observe(*trace);
   }
   const vm::RunOutcome outcome = run->runToEnd();
+  if (trace) trace->finish();
   report.run = run.get();
   if (controller) report.fault = controller->faultState();
   const vm::Image& image = run->image();
@@ -89,6 +90,10 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     report.diagnostics.push_back(d);
   }
   if (o.profile && run->log()) report.profile = runtime::profileOf(image, *run->log());
+  if (const std::optional<diag::Diagnostic> w = gripperWarning(*run, image.sourceName)) {
+    launch::printDiagnostics(err, {*w}, program);
+    report.diagnostics.push_back(*w);
+  }
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);
   else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", base::safeText(image.sourceName),

@@ -11,6 +11,7 @@
 
 #include "base/file_io.h"
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/options.h"
 #include "cli/lib/trace.h"
 #include "testrun/suite.h"
 #include "vm/interpreter.h"
@@ -117,6 +118,7 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
   cmd->add_option("--lcov", o.lcov, "Write the coverage as an LCOV tracefile (genhtml makes pages of it)");
   cmd->add_option("--spec", o.spec, "Grade: run this scenario file (.rstest) against every program under PATH");
   cmd->add_flag("--update", o.update, "Write the golden traces of 'expect: trace FILE' from the runs (not when CI is set)");
+  addCollisionsOption(cmd, o.collisions);
   return cmd;
 }
 
@@ -144,6 +146,7 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   runner.libDirs = o.libDirs;
   runner.coverage = o.coverage || !o.lcov.empty();
   runner.update = o.update;
+  runner.collisions = o.collisions;
   runner.traceMaker = [](std::ostream& to, const runtime::Run& run) -> std::unique_ptr<vm::StepObserver> {
     return std::make_unique<TraceWriter>(to, TraceFormat::Text, run);
   };

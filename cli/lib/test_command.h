@@ -26,6 +26,7 @@ struct TestOptions {
   std::string lcov;       // --lcov FILE
   std::string spec;       // --spec FILE.rstest: grade every program against it
   bool update = false;    // --update: write golden traces
+  std::string collisions; // --collisions error|warn|off
 };
 
 CLI::App* addTestCommand(CLI::App& app, TestOptions& o);

@@ -46,13 +46,51 @@ std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell
                      event.object + 1);
 }
 
+std::string emptyCloseText(const runtime::EmptyClose& e, const workcell::Workcell& cell) {
+  std::string s = fmt::format("the tool centre point {} is in no object", pointText({e.tcp.x(), e.tcp.y(), e.tcp.z()}));
+  if (e.nearest) {
+    std::string d = pointText({e.distance, 0, 0});  // 2 decimals at most
+    s += fmt::format(" ({} from {} (object {}), the nearest)", d.substr(1, d.find(',') - 1),
+                     base::safeText(cell.objects[*e.nearest].shape.name), *e.nearest + 1);
+  }
+  return s;
+}
+
 TraceWriter::TraceWriter(std::ostream& out, TraceFormat format, const runtime::Run& run)
     : out_(out), format_(format), run_(run) {}
 
 bool TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
   if (format_ == TraceFormat::Text) text(vm, index);
   else json(vm, index);
+  collisionEvents();
   return false;
+}
+
+void TraceWriter::finish() { collisionEvents(); }
+
+// One line per collision found since the last step traced: its time, the
+// move's line, the parts.
+void TraceWriter::collisionEvents() {
+  const auto events = run_.collisions();
+  const runtime::CollisionWatch* watch = run_.collisionWatch();
+  for (; collisionsShown_ < events.size() && watch; ++collisionsShown_) {
+    const runtime::CollisionEvent& e = events[collisionsShown_];
+    const std::uint32_t line = e.instruction < run_.image().lines.size() ? run_.image().lines[e.instruction] : 0;
+    if (format_ == TraceFormat::Text) {
+      out_ << fmt::format("{:>10}  collision at line {}: {}\n", vm::formatSeconds(e.at), line,
+                          base::safeText(watch->describe(e.contact)));
+    } else {
+      const workcell::CollisionModel& m = watch->model();
+      nlohmann::ordered_json j;
+      j["event"] = "collision";
+      j["time"] = seconds(e.at);
+      j["line"] = line;
+      j["instr"] = e.instruction + 1;
+      j["part"] = m.describe(e.contact.a);
+      j["hits"] = m.describe(e.contact.b);
+      out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+    }
+  }
 }
 
 void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
@@ -78,6 +116,8 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
   if (in.op == vm::Op::MoveP && !im.points[in.b].origin.empty())
     changed += (changed.empty() ? "" : "  ") + fmt::format("{} from {}", base::safeText(im.points[in.b].name),
                                                            base::safeText(im.points[in.b].origin));
+  if (const runtime::EmptyClose* e = run_.emptyCloseOfLastStep())
+    changed += std::string(changed.empty() ? "" : "  ") + "closes on nothing: " + emptyCloseText(*e, run_.world()->cell());
   const std::optional<std::array<double, 3>> tool = run_.world() ? run_.world()->tcp(pos) : std::nullopt;
   const std::string tcp = tool ? fmt::format("{:<28}  ", pointText(*tool)) : std::string();
   std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}{}", vm::formatSeconds(vm.machine().now()),
@@ -112,6 +152,16 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   if (const runtime::GraspEvent* g = run_.graspOfLastStep())
     j["grasp"] = {{"object", g->object + 1}, {"name", run_.world()->cell().objects[g->object].shape.name},
                   {"held", g->held}};
+  if (const runtime::EmptyClose* e = run_.emptyCloseOfLastStep()) {
+    nlohmann::ordered_json empty;
+    empty["tcp"] = roundedPoint({e->tcp.x(), e->tcp.y(), e->tcp.z()});
+    if (e->nearest) {
+      empty["nearest"] = *e->nearest + 1;
+      empty["name"] = run_.world()->cell().objects[*e->nearest].shape.name;
+      empty["distance"] = std::round(e->distance * 1e4) / 1e4;
+    }
+    j["closes_on_nothing"] = empty;
+  }
   out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
 }
 

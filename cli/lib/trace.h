@@ -18,6 +18,9 @@ class TraceWriter final : public vm::StepObserver {
   /// and the steps that take or let go of an object say so.
   TraceWriter(std::ostream& out, TraceFormat format, const runtime::Run& run);
   bool afterStep(const vm::Interpreter& vm, std::uint32_t index) override;
+  /// After the run: the collision that stopped it (a failed step is not
+  /// traced as a step), as an event line.
+  void finish();
 
  private:
   void text(const vm::Interpreter& vm, std::uint32_t index);
@@ -25,9 +28,15 @@ class TraceWriter final : public vm::StepObserver {
   std::ostream& out_;
   TraceFormat format_;
   const runtime::Run& run_;
+  void collisionEvents();
   bool headerDone_ = false;
   std::size_t motorsWidth_ = 0;
+  std::size_t collisionsShown_ = 0;
 };
+
+/// "the tool centre point (x, y, z) is in no object (5 from block (object
+/// 3), the nearest)": where a close that took nothing left it.
+std::string emptyCloseText(const runtime::EmptyClose& e, const workcell::Workcell& cell);
 
 /// "takes block (object 2)", "lets go of block (object 2)".
 std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell& cell);

@@ -36,6 +36,17 @@ std::optional<std::size_t> Grasping::objectAt(const Eigen::Vector3d& point) cons
   return best;
 }
 
+std::optional<std::pair<std::size_t, double>> Grasping::nearestObject(const Eigen::Vector3d& point) const {
+  std::optional<std::pair<std::size_t, double>> best;
+  for (std::size_t o = 0; o < boxes_.size(); ++o) {
+    if (boxes_[o].isEmpty()) continue;
+    const Eigen::Vector3d local = resting_[o].inverse(Eigen::Isometry) * point;
+    const double d = boxes_[o].exteriorDistance(local);
+    if (!best || d < best->second) best = {o, d};
+  }
+  return best;
+}
+
 std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
                                           bool mayTake) {
   if (!tool_ || gripperMotor_ >= before.size() || gripperMotor_ >= after.size()) return std::nullopt;

@@ -62,6 +62,23 @@ class Grasping {
   /// The end-effector frame in the world for the robot's motors (identity
   /// for a robot without a gripper).
   Eigen::Isometry3d toolFrame(std::span<const std::int32_t> encoders);
+  /// The object a closing gripper would take with its tool centre point at
+  /// `point`: the smallest box that holds it (objects where they rest).
+  std::optional<std::size_t> objectAt(const Eigen::Vector3d& point) const;
+  /// Whether a move from `before` to `after` turns the gripper towards open.
+  bool opens(std::span<const std::int32_t> before, std::span<const std::int32_t> after) const {
+    return tool_ && gripperMotor_ < before.size() && gripperMotor_ < after.size() &&
+           after[gripperMotor_] < before[gripperMotor_];
+  }
+  /// Whether it turns the gripper towards closed.
+  bool closes(std::span<const std::int32_t> before, std::span<const std::int32_t> after) const {
+    return tool_ && gripperMotor_ < before.size() && gripperMotor_ < after.size() &&
+           after[gripperMotor_] > before[gripperMotor_];
+  }
+  /// The nearest object's box to `point` and the distance to it (0 inside),
+  /// for messages about a grasp that took nothing.
+  std::optional<std::pair<std::size_t, double>> nearestObject(const Eigen::Vector3d& point) const;
+  bool hasGripper() const { return tool_.has_value(); }
 
   /// What a grasp changes, for snapshots of a run.
   struct State {
@@ -79,8 +96,6 @@ class Grasping {
   void restore(const State& s) { held_ = s.held, offset_ = s.offset, resting_ = s.resting; }
 
  private:
-  std::optional<std::size_t> objectAt(const Eigen::Vector3d& point) const;
-
   const Workcell* cell_;
   std::optional<ToolTracker> tool_;  // empty: the robot has no gripper
   std::size_t gripperMotor_ = 0;

@@ -29,10 +29,22 @@ struct Segment {
   Color color = Color::White;
 };
 
-/// A link or an object: a named collection of lines.
+/// One convex piece of a shape's collision geometry: the convex hull of
+/// its points, in the shape's design coordinates. A BOX's piece has its 8
+/// corners (`box` true: the collision model insets it face by face).
+struct ConvexPiece {
+  std::vector<Eigen::Vector3d> points;
+  bool box = false;
+};
+
+/// A link or an object: a named collection of lines, and the convex pieces
+/// that stand for its solid in collision checks (docs/models.md,
+/// "Collisions": each BOX a piece, the LINEs together one hull, unless
+/// COLLIDE statements give them).
 struct Shape {
   std::string name;
   std::vector<Segment> segments;
+  std::vector<ConvexPiece> collision;
 };
 
 /// A gripper: a base and two fingers that turn about r2 and r3 as it
@@ -101,6 +113,9 @@ struct PlacedObject {
 
 struct Workcell {
   std::string name;
+  /// The floor: the plane y = *floor of the world, solid below. A WORKCELL
+  /// has one at y = 0 unless it says `FLOOR NONE`; a lone robot has none.
+  std::optional<double> floor;
   std::vector<PlacedRobot> robots;
   std::vector<PlacedObject> objects;
 };

@@ -148,6 +148,14 @@ Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const 
           {"grasps", graspModel(rec, cell)}};
 }
 
+Json withCollisions(Json run, const std::vector<CollisionMark>& marks) {
+  Json at = Json::array(), end = Json::array(), robotParts = Json::array(), objects = Json::array();
+  for (const CollisionMark& m : marks)
+    at.push_back(m.at), end.push_back(m.end), robotParts.push_back(m.robotParts), objects.push_back(m.objects);
+  run["collisions"] = {{"at", at}, {"end", end}, {"robotParts", robotParts}, {"objects", objects}};
+  return run;
+}
+
 std::string cssColor(Rgb c) { return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b); }
 
 // What the stills draw with (palette.h, scene.h, draw.h), so that the page
@@ -190,7 +198,7 @@ Json animationModel(const AnimationInput& input) {
   const Json drawing = cellDrawing(cell, input.camera);
   for (const auto& [key, value] : drawing.items()) model[key] = value;
   model["program"] = {{"name", input.listing.name}, {"lines", input.listing.lines}, {"lineOf", input.listing.lineOf}};
-  model["run"] = runModel(*input.run, cell, input.outcome);
+  model["run"] = withCollisions(runModel(*input.run, cell, input.outcome), input.collisions);
   return model;
 }
 

@@ -30,6 +30,15 @@ struct Listing {
   std::vector<std::uint32_t> lineOf;  ///< 1-based listing line of each instruction
 };
 
+/// A collision of the run, for the page: its parts turn red from `at` to
+/// `end` (the end of the move). `robotParts` index the first robot's
+/// "parts" (links, then the gripper's base and fingers), `objects` the
+/// model's "objects".
+struct CollisionMark {
+  vm::Micros at = 0, end = 0;
+  std::vector<int> robotParts, objects;
+};
+
 struct AnimationInput {
   const workcell::Workcell* cell = nullptr;  ///< its first robot ran the program
   const runtime::RunLog* run = nullptr;
@@ -39,6 +48,7 @@ struct AnimationInput {
   /// that fit at any window size, scaled to the window's smaller side.
   Camera camera;
   std::string outcome;  ///< how the run stopped, for people ("" = END)
+  std::vector<CollisionMark> collisions;
 };
 
 /// The page's data: {"title", "cell", "fit", "camera", "style", "robots",
@@ -55,6 +65,8 @@ struct AnimationInput {
 /// that applies to the object's "pts", which are world coordinates at its
 /// placement P: F_E_object · P⁻¹ for a take, to be followed by the first
 /// robot's last frame F_world_E(t); F_world_object · P⁻¹ for a let-go).
+/// "run"."collisions" holds the collision marks as parallel arrays "at",
+/// "end" (µs), "robotParts" and "objects" (an array of indices each).
 nlohmann::ordered_json animationModel(const AnimationInput& input);
 
 /// The whole HTML page.

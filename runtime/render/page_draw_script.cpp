@@ -197,11 +197,20 @@ const std::string_view kDrawScript = R"JS(function robotsimDrawing(model, canvas
   }
 
   // ---- Drawing.
+  // A part marked hot (p.hot: the animation marks the parts of a
+  // collision) is drawn whole in red, EGA 4.
   function strokeParts() {
     for (let c = 0; c < 16; c++) {
       let any = false;
       ctx.beginPath();
       for (const p of allParts) {
+        if (p.hot) {
+          if (c !== 4) continue;
+          const s = p.screen;
+          for (let j = 0; j < 4 * p.count; j += 4) { ctx.moveTo(s[j], s[j + 1]); ctx.lineTo(s[j + 2], s[j + 3]); }
+          any = true;
+          continue;
+        }
         const idx = p.byColor[c];
         if (!idx) continue;
         const s = p.screen;

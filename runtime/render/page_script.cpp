@@ -107,8 +107,23 @@ const std::string_view kScript = R"JS('use strict';
 
   // ---- Page state.
   const S = { t: 0, k: stepAt(0), playing: false, speed: 1, axes: !!model.camera.axes, flush: false };
+  // The parts of a collision are red (EGA 4) from its moment to the end
+  // of its move (run.collisions, docs/render.md); the shared drawing code
+  // draws a part marked hot in red.
+  function markCollisions(t) {
+    for (const r of model.robots) for (const p of r.parts) p.hot = false;
+    for (const o of model.objects) o.hot = false;
+    const c = model.run.collisions;
+    if (!c) return;
+    for (let i = 0; i < c.at.length; i++) {
+      if (t < c.at[i] || t > c.end[i]) continue;
+      for (const k of c.robotParts[i]) if (model.robots[0].parts[k]) model.robots[0].parts[k].hot = true;
+      for (const k of c.objects[i]) if (model.objects[k]) model.objects[k].hot = true;
+    }
+  }
   function render() {
     stateAt(S.k, S.t, current);
+    markCollisions(S.t);
     D.draw(current, current.enc, (o) => objectPose(o, S.k, S.t), S.axes,
            model.cell + '   t = ' + (S.t / 1e6).toFixed(3) + ' s');
   }

@@ -23,7 +23,12 @@ class Run::Observers final : public vm::StepObserver {
     if (run_.world_) {
       run_.lastStepGrasped_ = run_.world_->eventCount() != run_.graspEventsSeen_;
       run_.graspEventsSeen_ = run_.world_->eventCount();
+      run_.lastStepClosedEmpty_ = run_.world_->emptyCloseCount() != run_.emptyClosesSeen_;
+      run_.emptyClosesSeen_ = run_.world_->emptyCloseCount();
+      if (run_.lastStepClosedEmpty_ && !run_.firstEmptyClose_)
+        run_.firstEmptyClose_.emplace(index, run_.world_->lastEmptyClose());
     }
+    run_.noteCollisions(index);
     if (run_.logger_) run_.logger_->afterStep(vm, index);
     bool pause = false;
     for (vm::StepObserver* o : added) pause |= o->afterStep(vm, index);
@@ -70,6 +75,10 @@ void Run::build(vm::Machine& motion) {
     world_.emplace(*spec_.cell);
     cellMachine_.emplace(motion, *world_);
     front_ = &*cellMachine_;
+    if (sim_ && spec_.collisions != CollisionMode::Off) {
+      watch_.emplace(*spec_.cell);
+      cellMachine_->watchCollisions(*sim_, *watch_, spec_.collisions);
+    }
   }
   if (spec_.log && sim_) logger_.emplace(*sim_, world());
   interpreter_ = std::make_unique<vm::Interpreter>(*spec_.image, *front_);
@@ -160,8 +169,21 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
     }
   }
   observers_->when = nullptr;
+  if (!outcome.paused() && !outcome.ok()) noteCollisions(outcome.index);
   if (logger_) logger_->finish(outcome);
   return outcome;
+}
+
+// The watch does not know which instruction moved: the run tells it after
+// each step (and after the step that failed).
+void Run::noteCollisions(std::uint32_t instruction) {
+  if (!watch_) return;
+  for (auto it = watch_->mutableEvents().rbegin(); it != watch_->mutableEvents().rend() && it->instruction == UINT32_MAX; ++it)
+    it->instruction = instruction;
+}
+
+std::span<const CollisionEvent> Run::collisions() const {
+  return watch_ ? watch_->events() : std::span<const CollisionEvent>();
 }
 
 std::vector<std::int32_t> Run::motorsAt(vm::Micros t) const {
@@ -222,6 +244,7 @@ RunSnapshot Run::snapshot() const {
   if (sim_) s.machine = sim_->state();
   if (world_) s.world = world_->state();
   if (logger_) s.log = logger_->log().mark();
+  if (watch_) s.collisions = watch_->events().size();
   return s;
 }
 
@@ -231,6 +254,10 @@ void Run::restore(const RunSnapshot& s) {
   if (world_ && s.world) world_->restore(*s.world);
   graspEventsSeen_ = world_ ? world_->eventCount() : 0;
   lastStepGrasped_ = false;
+  emptyClosesSeen_ = world_ ? world_->emptyCloseCount() : 0;
+  lastStepClosedEmpty_ = false;
+  if (emptyClosesSeen_ == 0) firstEmptyClose_.reset();
+  if (watch_ && s.collisions <= watch_->events().size()) watch_->mutableEvents().resize(s.collisions);
   if (logger_ && s.log && sim_) logger_->restore(*s.log, *sim_);
   cause_ = PauseCause::None;
 }

@@ -21,6 +21,7 @@
 
 #include "model/workcell/model.h"
 #include "runtime/cell_machine.h"
+#include "runtime/collision_watch.h"
 #include "runtime/run/run_log.h"
 #include "runtime/sim_machine.h"
 #include "runtime/stimuli.h"
@@ -37,6 +38,9 @@ struct RunSpec {
   Stimuli stimuli;
   vm::RunLimits limits;
   bool log = false;  ///< keep a RunLog (simulated machine only)
+  /// On a workcell, on the simulated machine: what a collision during a
+  /// move does (runtime/collision_watch.h); a run with Off checks nothing.
+  CollisionMode collisions = CollisionMode::Error;
 };
 
 /// Where a run pauses. Unset conditions cost nothing.
@@ -89,6 +93,7 @@ struct RunSnapshot {
   SimMachine::State machine;
   std::optional<World::State> world;
   std::optional<RunLog::Mark> log;
+  std::size_t collisions = 0;  ///< how many had been found
   bool operator==(const RunSnapshot&) const = default;
 };
 
@@ -142,6 +147,17 @@ class Run {
   /// The take or let-go of the step just run, or null (what a trace shows
   /// beside the step; right after a restore, null).
   const GraspEvent* graspOfLastStep() const { return lastStepGrasped_ ? &world_->lastEvent() : nullptr; }
+  /// A closing move of the step just run that took nothing, or null.
+  const EmptyClose* emptyCloseOfLastStep() const { return lastStepClosedEmpty_ ? &world_->lastEmptyClose() : nullptr; }
+  /// The instruction of the first closing move that took nothing, and
+  /// where it left the tool centre point.
+  std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose() const { return firstEmptyClose_; }
+  /// Every collision found so far (in warn mode, every one; in error mode,
+  /// the one that stopped the run), each with its instruction.
+  std::span<const CollisionEvent> collisions() const;
+  /// The collision checker, or null when the run checks none (no
+  /// workcell, not simulated, or CollisionMode::Off).
+  const CollisionWatch* collisionWatch() const { return watch_ ? &*watch_ : nullptr; }
 
   /// Input `input` turns `on` now (SimMachine::setInputNow; the log hears
   /// of it). False on a real machine or for an input outside 1..8.
@@ -185,6 +201,11 @@ class Run {
   std::vector<std::uint8_t> breakpoints_;  // scratch for RunUntil's instructions and lines
   std::uint64_t graspEventsSeen_ = 0;  // the world's event count before the step being run
   bool lastStepGrasped_ = false;
+  std::uint64_t emptyClosesSeen_ = 0;
+  bool lastStepClosedEmpty_ = false;
+  std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose_;
+  std::optional<CollisionWatch> watch_;
+  void noteCollisions(std::uint32_t instruction);
   std::atomic<bool> pauseRequested_ = false;
   PauseCause cause_ = PauseCause::None;
 };

@@ -115,15 +115,15 @@ TEST_CASE("did you mean: misspelled description keywords", "[compiler][hints][mo
   CHECK(described(descriptionDiagnostics(text)) ==
         std::vector<std::string>{
             "1:1: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found 'LIEN' | did you mean 'LINK'?",
-            "3:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'LIEN' | did you mean 'LINE'?",
-            "4:19: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'COLOUR' | did you mean 'COLOR'?",
+            "3:3: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'LIEN' | did you mean 'LINE'?",
+            "4:19: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'COLOUR' | did you mean 'COLOR'?",
             "5:9: expected a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15, found "
             "'LIGHTGREY' | did you mean 'LIGHTGRAY'?",
-            "6:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'SPIN' | ",
+            "6:3: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'SPIN' | ",
             "9:16: expected LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, "
             "ACCELERATION, GRIPPER or END, found 'ORIGN' | did you mean 'ORIGIN'?",
             "10:11: expected REVOLUTE or PRISMATIC, found 'REVOLUT' | did you mean 'REVOLUTE'?",
             "11:21: expected LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, "
             "ACCELERATION, GRIPPER or END, found 'LETTR' | did you mean 'LETTER'?",
-            "14:3: expected ROBOT, OBJECT or END, found 'ROBOTT' | did you mean 'ROBOT'?"});
+            "14:3: expected ROBOT, OBJECT, FLOOR or END, found 'ROBOTT' | did you mean 'ROBOT'?"});
 }

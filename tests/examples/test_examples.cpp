@@ -275,27 +275,28 @@ TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pal
   // The gantry cell (stdlib/workcells/gantry-cell.rsd, stdlib/robots/gantry.rsd):
   // motors X Z Y A; X and Z 1000 u/s, Y 800 u/s, A 200 u/s.
   // MOVETO -2800 2800 0 0     X 2.8 s, Z 2.8 s                           ->  2.8     (1)
-  // GOSUB pick: MOVE Y +1500  1.875 s; MOVE A +100 0.5 s; MOVE Y -1500
-  //             1.875 s; RETURN                                          ->  7.05    (6)
-  // MOVETO 1700 -2200 0 100   X 4500: 4.5 s, Z 5000: 5 s                 -> 12.05    (7)
-  // GOSUB place: 1.875 + 0.5 + 1.875                                     -> 16.3     (12)
-  // MOVETO -2000 2800 0 0     X 3700: 3.7 s, Z 5 s (A already 0)         -> 21.3     (13)
-  // GOSUB pick                                                           -> 25.55    (18)
-  // MOVETO 2700 -2200 0 100   X 4700: 4.7 s, Z 5 s                       -> 30.55    (19)
-  // GOSUB place                                                          -> 34.8     (24)
-  // HRDHOME                   X 2700: 2.7 s, Z 2200: 2.2 s               -> 37.5     (25)
+  // GOSUB pick: MOVE Y +1490  1.8625 s; MOVE A +100 0.5 s; MOVE Y -1490
+  //             1.8625 s; RETURN                                         ->  7.025   (6)
+  // MOVETO 1700 -2200 0 100   X 4500: 4.5 s, Z 5000: 5 s                 -> 12.025   (7)
+  // GOSUB place: 1.8625 + 0.5 + 1.8625                                   -> 16.25    (12)
+  // MOVETO -2000 2800 0 0     X 3700: 3.7 s, Z 5 s (A already 0)         -> 21.25    (13)
+  // GOSUB pick                                                           -> 25.475   (18)
+  // MOVETO 2700 -2200 0 100   X 4700: 4.7 s, Z 5 s                       -> 30.475   (19)
+  // GOSUB place                                                          -> 34.7     (24)
+  // HRDHOME                   X 2700: 2.7 s, Z 2200: 2.2 s               -> 37.4     (25)
   // END                                                                              (26)
-  // Block 1 (placed AT 200 30 700) is taken with the TCP at (220, 50, 680)
-  // and let go at (670, 50, 180): moved by (450, 0, -500), AT corner
-  // (650, 30, 200). Block 2 (AT 280 30 700): from (300, 50, 680) to
-  // (770, 50, 180), by (470, 0, -500): (750, 30, 200). The pallets stay.
+  // Block 1 (placed AT 200 30 700) is taken with the TCP at (220, 51, 680)
+  // (1 mm above its middle) and let go at (670, 51, 180): moved by (450, 0,
+  // -500), AT corner (650, 30, 200). Block 2 (AT 280 30 700): from (300,
+  // 51, 680) to (770, 51, 180), by (470, 0, -500): (750, 30, 200). The
+  // pallets stay.
   const Result r = robotsim({"run", (kExamples / "gantry_pick.rsp").string(), "--cell", "gantry-cell", "--format=json"});
   INFO("stderr: " << r.err);
   REQUIRE(r.code == rs::cli::kExitOk);
   REQUIRE(r.err.empty());
   const Json j = Json::parse(r.out);
   CHECK(j.at("status") == "ok");
-  CHECK(std::llround(j.at("time").get<double>() * 1e6) == 37'500'000);
+  CHECK(std::llround(j.at("time").get<double>() * 1e6) == 37'400'000);
   CHECK(j.at("steps") == 26);
   CHECK(j.at("motors") == Json::parse(R"({"X": 0, "Z": 0, "Y": 0, "A": 0})"));
   const Json want = Json::parse(R"([
@@ -317,10 +318,11 @@ TEST_CASE("example gantry_pick: the trace says when the gripper takes and lets g
     if (at != std::string::npos) events.push_back(line.substr(0, 10) + " " + line.substr(at));
     if (go != std::string::npos) events.push_back(line.substr(0, 10) + " " + line.substr(go));
   }
-  // pick 1: down ends 4.675, close ends 5.175; place 1: 12.05 + 1.875 = 13.925, open ends 14.425;
-  // pick 2: 21.3 + 1.875 = 23.175, close ends 23.675; place 2: 30.55 + 1.875 = 32.425, open ends 32.925.
-  const std::vector<std::string> want = {"     5.175 takes block (object 2)", "    14.425 lets go of block (object 2)",
-                                         "    23.675 takes block (object 3)", "    32.925 lets go of block (object 3)"};
+  // pick 1: down ends 4.6625, close ends 5.1625; place 1: 12.025 + 1.8625 = 13.8875, open ends 14.3875;
+  // pick 2: 21.25 + 1.8625 = 23.1125, close ends 23.6125; place 2: 30.475 + 1.8625 = 32.3375, open ends
+  // 32.8375 (the trace rounds half a millisecond up).
+  const std::vector<std::string> want = {"     5.163 takes block (object 2)", "    14.388 lets go of block (object 2)",
+                                         "    23.613 takes block (object 3)", "    32.838 lets go of block (object 3)"};
   CHECK(events == want);
 }
 

@@ -118,7 +118,7 @@ TEST_CASE("lsp: a point written as a tool pose hovers with its resolved encoders
 
 TEST_CASE("lsp: hover shows the tool centre point on the cell the directive names", "[lsp][features][cell]") {
   // The gantry: motors X Z Y A; its tool centre point is (500 + X/10, 200 - Y/10, 400 + Z/10)
-  // (examples/gantry_pick.rsp): X = -2800, Z = 2800, Y = 1500 -> (220, 50, 680).
+  // (stdlib/robots/gantry.rsd): X = -2800, Z = 2800, Y = 1500 -> (220, 50, 680).
   Opened o("; cell: gantry-cell\n        MOVEP P\n        END\nPOINTS\nP -2800 2800 1500 0\n");
   CHECK(o.s.diagnostics(kUri) == Json::array());
   CHECK(o.hoverText(1, 15) == "**point** `P` (line 5): X=-2800 Z=2800 Y=1500 A=0\n\n"

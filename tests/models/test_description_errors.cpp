@@ -147,7 +147,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
   const Strings expected{
       "p.rsd:1:1: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found 'stray'",
       "p.rsd:2:8: unexpected 'extra' after the LINK name (statements go on the next lines)",
-      "p.rsd:3:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'SPIN'",
+      "p.rsd:3:3: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'SPIN'",
       "p.rsd:4:17: expected the LINE's second endpoint (z coordinate) before the end of the line",
       "p.rsd:5:18: expected the LINE's second endpoint (z coordinate), found 'x'",
       "p.rsd:6:25: expected " + colour + ", found 'PURPLE'",
@@ -159,7 +159,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       "p.rsd:12:25: expected " + colour + " before the end of the line",
       "p.rsd:13:18: expected the LINE's second endpoint (z coordinate) (at most 1e+09 in size), found '2000000000'",
       "p.rsd:14:5: END takes nothing after it, found 'foo'",
-      "p.rsd:16:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'LINK'",
+      "p.rsd:16:3: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'LINK'",
       "p.rsd:17:12: expected the BOX's bottom edge before the end of the line",
       "p.rsd:20:3: expected BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, ACCELERATION, ACTUATION, AXIS2, AXIS3, NORMAL, APPROACH or END, "
       "found 'GRASP'",
@@ -183,9 +183,9 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       "p.rsd:41:3: expected " + robotStatements + ", found 'WOBBLE'",
       "p.rsd:42:7: expected a link name before the end of the line",
       "p.rsd:43:11: expected a gripper name, found '9'",
-      "p.rsd:46:3: expected ROBOT, OBJECT or END, found 'AT'",
+      "p.rsd:46:3: expected ROBOT, OBJECT, FLOOR or END, found 'AT'",
       "p.rsd:47:17: expected a position (z coordinate) before the end of the line",
-      "p.rsd:48:11: expected ROBOT, OBJECT, AT, ROTATE or END, found 'SPIN'",
+      "p.rsd:48:11: expected ROBOT, OBJECT, AT, ROTATE, FLOOR or END, found 'SPIN'",
       "p.rsd:49:10: expected an object name, found '7'",
       "p.rsd:50:18: expected an axis X, Y or Z, found 'Q'",
       "p.rsd:52:1: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found 'END'",
@@ -193,7 +193,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       // read as its contents, not as stray text); that block has no END.
       "p.rsd:53:1: LINK has no END",
       "p.rsd:53:5: expected a name for the LINK before the end of the line",
-      "p.rsd:54:1: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'LINK'",
+      "p.rsd:54:1: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'LINK'",
       // Then what only the library can tell, in the same run: the robot's
       // link 'l' is defined nowhere. (Nothing else about robot r: its lines
       // with errors make its joint count and numbering meaningless.)
@@ -611,7 +611,7 @@ TEST_CASE("description: errors in several files are reported together", "[models
   const Strings expected{
       "wobbly.rsd:2:26: expected a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15, found "
       "'MAUVE'",
-      "wobbly.rsd:3:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'SHEAR'",
+      "wobbly.rsd:3:3: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'SHEAR'",
       "hand.rsd:7:21: expected the axis r2's end point (z coordinate) before the end of the line",
       "r.rsd:7:9: JOINT 1 has no RANGE",
   };
@@ -636,7 +636,7 @@ TEST_CASE("description: a file's own statement errors do not hide the errors of 
   CHECK(std::find(d.begin(), d.end(),
                   "r.rsd:2:26: expected a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15, "
                   "found 'MAUVE'") != d.end());
-  CHECK(std::find(d.begin(), d.end(), "wobbly.rsd:2:3: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'SHEAR'") !=
+  CHECK(std::find(d.begin(), d.end(), "wobbly.rsd:2:3: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'SHEAR'") !=
         d.end());
 }
 
@@ -717,7 +717,7 @@ TEST_CASE("description: five independent mistakes in one file are all reported i
                       "END",                                                               // 17
                   }));
   const Strings expected{
-      "five.rsd:2:22: expected LINE, BOX, ROTATE, MOVE, COLOR or END, found 'COLOUR'",
+      "five.rsd:2:22: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'COLOUR'",
       "five.rsd:9:8: link 'arm' has no FRAME (ORIGIN, XAXIS and ZAXIS points)",
       "five.rsd:10:8: unknown link 'forearm': not defined in this file, and no forearm.rsd on the library path",
       "five.rsd:12:9: joints are numbered in order: expected JOINT 2, found JOINT 3",

@@ -50,7 +50,9 @@ class Collect final : public rs::vm::StepObserver {
 };
 
 std::vector<StepView> run(const rs::workcell::Workcell& cell, const std::string& program) {
-  const auto r = rendertest::runOf(rendertest::compileText(program, cell), &cell);
+  // Grasping alone: these moves hold the gantry's gripper at a block's
+  // middle, where its fingers graze the pallet as they close (a collision).
+  const auto r = rendertest::runOf(rendertest::compileText(program, cell), &cell, {}, false, rs::runtime::CollisionMode::Off);
   REQUIRE(r->world());
   Collect collect(*r);
   r->observe(collect);
@@ -174,11 +176,11 @@ TEST_CASE("opening while moving lets go where the move starts, nested boxes give
 
 TEST_CASE("a still of a moment shows the block where the gripper has it then", "[runtime][grasp][render]") {
   // examples/gantry_pick.rsp; its timeline is derived in tests/examples/test_examples.cpp:
-  //   4.675 .. 5.175  close on block 1 (taken at 5.175)
-  //   5.175 .. 7.05   up: Y 1500 -> 0 at 800 u/s
-  //   7.05  .. 12.05  MOVETO 1700 -2200 0 100: X -2800 -> 1700, Z 2800 -> -2200, both 1000 u/s
-  //  13.925 .. 14.425 open (let go at 13.925, TCP (670, 50, 180))
-  // The block's design origin is its corner (x, y, z - 40) = TCP - (20, 20, 20) while held.
+  //   4.6625 .. 5.1625  close on block 1 (taken at 5.1625, TCP (220, 51, 680))
+  //   5.1625 .. 7.025   up: Y 1490 -> 0 at 800 u/s
+  //   7.025  .. 12.025  MOVETO 1700 -2200 0 100: X -2800 -> 1700, Z 2800 -> -2200, both 1000 u/s
+  //  13.8875 .. 14.3875 open (let go at 13.8875, TCP (670, 51, 180))
+  // The block's design origin is its corner (x, y, z - 40) = TCP - (20, 21, 20) while held.
   const rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
   const rs::vm::Image image = rendertest::compile(rendertest::kSourceDir + "/examples/gantry_pick.rsp", cell);
   const auto blockAt = [&](double seconds) {
@@ -190,8 +192,8 @@ TEST_CASE("a still of a moment shows the block where the gripper has it then", "
     return Eigen::Vector3d(m.objects[1] * Eigen::Vector3d::Zero());
   };
   checkNear(blockAt(5.0), block1At(0, 0, 0));    // closing: not taken yet
-  checkNear(blockAt(6.0), {200, 96, 660});       // 0.825 s up: Y 840, TCP y 116
-  checkNear(blockAt(10.0), {495, 180, 365});     // 2.95 s along: X 150, Z -150: TCP (515, 200, 385)
+  checkNear(blockAt(6.0), {200, 97, 660});       // 0.8375 s up: Y 820, TCP y 118
+  checkNear(blockAt(10.0), {497.5, 179, 362.5}); // 2.975 s along: X 175, Z -175: TCP (517.5, 200, 382.5)
   checkNear(blockAt(14.0), {650, 30, 160});      // opening: let go at its start
   // Without a cell the moment has no objects.
   CHECK(rs::render::momentOf(*rendertest::runOf(image, nullptr), 10'000'000).objects.empty());

@@ -1,0 +1,120 @@
+// The swept check's bound (docs/models.md, "Collisions"): between two
+// checks of a move no point of the robot moves more than kSweepStep, so a
+// plate thicker than kSweepStep + 2 × kContactTolerance cannot be passed
+// through unseen — and a plate much thinner can (the checks are spaced, not
+// continuous). A blade of no thickness, 505 long, sweeps 90 degrees about a
+// vertical axis through plates standing across its path at many angles, at
+// its tip, where points move fastest: the blade's tip moves exactly as far
+// as the bound allows, so the checks are as far apart as they ever get.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "../render/render_test_util.h"
+#include "compiler/library.h"
+#include "model/workcell/collision_model.h"
+#include "runtime/run/run.h"
+
+namespace {
+
+using rs::workcell::kContactTolerance;
+using rs::workcell::kSweepStep;
+
+constexpr const char* kSweeper = R"(
+LINK sweeper_base
+  BOX -10 10 0 -10 10 -10
+END
+LINK sweeper_blade
+  BOX 0 505 10 0 0 0
+END
+ROBOT sweeper
+  LINK sweeper_base   FRAME ORIGIN 0 0 0  XAXIS 100 0 0  ZAXIS 0 100 0
+  LINK sweeper_blade  FRAME ORIGIN 0 0 0  XAXIS 100 0 0  ZAXIS 0 100 0
+  JOINT 1 REVOLUTE  LETTER A  PRECISION 0.01  RANGE -18000 18000  SPEED 3000
+END
+WORKCELL sweep-cell
+  FLOOR NONE
+  ROBOT sweeper AT 0 0 0
+END
+)";
+
+rs::workcell::Workcell sweepCell() {
+  const rs::testing::TempDir dir;
+  const std::string file = dir.write("sweep-cell.rsd", kSweeper);
+  rs::compiler::Library library(rs::compiler::librarySearchPath({}));
+  std::optional<rs::workcell::Workcell> cell = library.workcell(file);
+  for (const auto& d : library.diagnostics()) INFO(d.message);
+  REQUIRE(cell);
+  REQUIRE(library.diagnostics().empty());
+  return *cell;
+}
+
+// A plate `thickness` thick (tangentially), across the blade's path at
+// `degrees` (the blade turns from +x towards -z), from radius 450 to 505.
+rs::workcell::PlacedObject plate(double thickness, double degrees) {
+  rs::workcell::ConvexPiece piece;
+  piece.box = true;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      for (int k = 0; k < 2; ++k) piece.points.emplace_back(i ? 505.0 : 450.0, j ? 15.0 : -5.0, (k ? 0.5 : -0.5) * thickness);
+  rs::workcell::PlacedObject o;
+  o.shape.name = "plate";
+  o.shape.collision.push_back(piece);
+  o.F_world_design = Eigen::Isometry3d(Eigen::AngleAxisd(degrees * M_PI / 180, Eigen::Vector3d::UnitY()));
+  return o;
+}
+
+struct Sweep {
+  std::size_t collisions = 0;
+  std::uint64_t checks = 0;
+};
+
+Sweep sweepThrough(const rs::workcell::Workcell& base, const rs::vm::Image& image, double thickness, double degrees) {
+  rs::workcell::Workcell cell = base;
+  cell.objects.push_back(plate(thickness, degrees));
+  rs::runtime::RunSpec spec;
+  spec.image = std::make_shared<const rs::vm::Image>(image);
+  spec.cell = std::make_shared<const rs::workcell::Workcell>(cell);
+  spec.collisions = rs::runtime::CollisionMode::Warn;
+  rs::runtime::Run run(std::move(spec));
+  REQUIRE(run.runToEnd().ok());
+  REQUIRE(run.collisionWatch());
+  for (const rs::runtime::CollisionEvent& e : run.collisions()) {
+    CHECK(e.contact.a == rs::workcell::BodyRef{rs::workcell::BodyKind::Link, 1});
+    CHECK(e.contact.b == rs::workcell::BodyRef{rs::workcell::BodyKind::Object, 0});
+  }
+  return {run.collisions().size(), run.collisionWatch()->checks()};
+}
+
+}  // namespace
+
+TEST_CASE("no plate thicker than the sweep bound is passed through unseen, thinner ones can be", "[collision][sweep]") {
+  const rs::workcell::Workcell cell = sweepCell();
+  const rs::vm::Image image = rendertest::compileText("        MOVETO 9000\n        END\n", cell);
+  // The model's weight for the one motor: 0.01 degree per count at a reach
+  // of 505 from the axis.
+  const rs::workcell::CollisionModel model(cell);
+  REQUIRE(model.motorWeights().size() == 1);
+  CHECK(model.motorWeights()[0] == Approx(0.01 * M_PI / 180 * 505).epsilon(1e-3));
+
+  const double thick = kSweepStep + 2 * kContactTolerance + 0.005;
+  int missedThin = 0, caughtThin = 0;
+  constexpr int kAngles = 60;
+  for (int k = 0; k < kAngles; ++k) {
+    // Angles 5..85 degrees, offset by an irrational fraction of a step.
+    const double degrees = 5 + 80 * (k + std::fmod(k * 0.6180339887, 1.0)) / kAngles;
+    INFO("plate at " << degrees << " degrees");
+    const Sweep thickSweep = sweepThrough(cell, image, thick, degrees);
+    CHECK(thickSweep.collisions == 1);
+    (sweepThrough(cell, image, 0.3 * kSweepStep, degrees).collisions ? caughtThin : missedThin)++;
+  }
+  CHECK(missedThin > 5);
+  CHECK(caughtThin > 5);
+  // A whole move with the plate out of the way (behind the blade): the
+  // checks are as sparse as the bound allows, the tip covering 505 × π/2 ≈
+  // 793 in the move, no more than 1 between checks.
+  const Sweep clear = sweepThrough(cell, image, thick, 180);
+  CHECK(clear.collisions == 0);
+  CHECK(clear.checks >= 793);
+  CHECK(clear.checks <= 900);
+}
