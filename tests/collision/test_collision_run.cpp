@@ -1,0 +1,52 @@
+// Collisions in the run layer: a snapshot keeps how many were found, so a
+// restored run finds the same ones again, at the same times; and a run on
+// a cell with collisions off has no checker at all.
+#include <catch2/catch.hpp>
+
+#include "../render/render_test_util.h"
+#include "runtime/run/run.h"
+
+namespace {
+
+std::vector<std::pair<rs::vm::Micros, std::uint32_t>> found(const rs::runtime::Run& run) {
+  std::vector<std::pair<rs::vm::Micros, std::uint32_t>> out;
+  for (const rs::runtime::CollisionEvent& e : run.collisions()) out.emplace_back(e.at, e.instruction);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a restored run finds the same collisions again", "[collision][runtime]") {
+  // The gantry driven through the floor twice: Y down to 2000 and back up,
+  // then down again (tests/collision/test_collision_geometry.cpp works out
+  // the first time: 2.262499 s).
+  const rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
+  const rs::vm::Image image =
+      rendertest::compileText("        MOVETO 0 0 2000 0\n        MOVETO 0 0 0 0\n        MOVETO 0 0 2000 0\n        END\n", cell);
+  rs::runtime::RunSpec spec;
+  spec.image = std::make_shared<const rs::vm::Image>(image);
+  spec.cell = std::make_shared<const rs::workcell::Workcell>(cell);
+  spec.collisions = rs::runtime::CollisionMode::Warn;
+  rs::runtime::Run run(spec);
+  run.step(1);
+  const rs::runtime::RunSnapshot after1 = run.snapshot();
+  CHECK(after1.collisions == 1);
+  REQUIRE(run.runToEnd().ok());
+  const auto all = found(run);
+  REQUIRE(all.size() == 3);
+  CHECK(all[0].second == 0);
+  CHECK(all[0].first == 2'262'499);
+  CHECK(all[1] == std::pair<rs::vm::Micros, std::uint32_t>{2'500'000, 1});  // starts below: at once
+  // The third move is the first one again, 5 s later: checked at the same times.
+  CHECK(all[2] == std::pair<rs::vm::Micros, std::uint32_t>{all[0].first + 5'000'000, 2});
+  run.restore(after1);
+  CHECK(found(run).size() == 1);
+  REQUIRE(run.runToEnd().ok());
+  CHECK(found(run) == all);
+
+  spec.collisions = rs::runtime::CollisionMode::Off;
+  rs::runtime::Run unchecked(spec);
+  REQUIRE(unchecked.runToEnd().ok());
+  CHECK(unchecked.collisionWatch() == nullptr);
+  CHECK(unchecked.collisions().empty());
+}
