@@ -56,7 +56,7 @@ TEST_CASE("disasm and the trace show where a pose point came from", "[cli][ik][p
   REQUIRE(listing.code == 0);
   CHECK(listing.out.find("; PICK = ") != std::string::npos);
   CHECK(listing.out.find(" (from AT -130 800 0)") != std::string::npos);
-  CHECK(listing.out.find("; from AT -180 840 -45 GRIP 0\n") != std::string::npos);
+  CHECK(listing.out.find("; from AT -180 840.12 -45 GRIP 0\n") != std::string::npos);
   const auto text = runCli({"run", program, "--trace"});
   REQUIRE(text.code == 0);
   CHECK(text.out.find("PICK from AT -130 800 0") != std::string::npos);
