@@ -194,7 +194,7 @@ TEST_CASE("Every stdlib workcell loads without errors", "[library]") {
     const auto cell = lib.workcell(f.string());
     INFO(diagnosticsText(lib));
     CHECK(cell.has_value());
-    CHECK(lib.diagnostics().empty());
+    CHECK(lib.diagnostics().empty());  // nor warnings: none collides at its robot's home pose (home-collision)
     if (cell) {
       CHECK(!cell->robots.empty());
       CHECK(!cell->objects.empty());
@@ -471,7 +471,11 @@ TEST_CASE("In each new workcell the arm can take a block, at encoder counts work
   //    forward, y = -z of the world) X 20, Y -600; cos th2 = (20² + 600² −
   //    425² − 375²) / (2·425·375) = 0.12282, th2 = −82.95°, th1 =
   //    atan2(−600, 20) − atan2(375 sin th2, 425 + 375 cos th2) = −49.78°;
-  //    C lowers the tool centre from 580 to 520: 60 mm = 6000.
+  //    C lowers the tool centre from 580 to 521, 1 mm above the block's
+  //    middle: 59 mm = 5900. (At the middle, C 6000, the fingers' tips, 20
+  //    below the tool centre, touch the belt top at y 500, and closing
+  //    swings their outer corners 105.08 from the pivots, sqrt(4² + 105²),
+  //    0.08 below it: a collision. The gantry cell's pick is 1 mm high too.)
   //  - rv-m1-cell, block on the pallet centred at (220, 800, 0): the wrist
   //    pitch axis 172 above it, (220, 222) from the base, (220, −28) from
   //    the shoulder: r = 221.8; elbow bend 180° − acos((220² + 160² − r²) /
@@ -483,21 +487,31 @@ TEST_CASE("In each new workcell the arm can take a block, at encoder counts work
   //    tool centre: 233.8 out, 42.1 below the shoulder; both links 228.6:
   //    bend 117.39° (D = 274), upper arm 48.48° up (E = 415), pitch −68.91°
   //    (C = −689).
-  //  - irb120-cell, block on the pallet centred at (280, 800, 0): the wrist
-  //    centre 152 above it, (280, −88) from axis 2; sides 270 and
-  //    sqrt(70² + 302²) = 310.01: upper arm 49.15° up (F = 4085); the
-  //    forearm's offset 13.05° gives th3 = 42.70° (E = 4270); th5 = 6.45°
-  //    points the tool down (C = 645).
-  // Then the gripper closes: the block is held, the tool centre in it.
+  //  - irb120-cell, block on the pallet centred at (280, 800, 0), taken
+  //    1 mm above its middle, at (280, 801, 0), as on the adept cell: the
+  //    fingers reach 20 past the tool centre, to the deck top at y 780, and
+  //    closing swings their tips 80.1 from the pivots, sqrt(4² + 80²), 0.1
+  //    into it. The wrist centre 152 above it, (280, −87) from axis 2:
+  //    r = sqrt(280² + 87²) = 293.20; sides 270 and sqrt(70² + 302²) =
+  //    310.01: upper arm atan2(−87, 280) + acos((270² + r² − 310.01²) /
+  //    (2·270·r)) = 49.38° up, 40.62° from vertical (F = 4062); the elbow's
+  //    inner angle acos((270² + 310.01² − r²) / (2·270·310.01)) = 60.26°,
+  //    and the forearm's offset atan2(70, 302) = 13.05° makes it 103.05° at
+  //    th3 = 0, so th3 = 103.05 − 60.26 = 42.79° (E = 4279); th5 = 90 −
+  //    40.62 − 42.79 = 6.59° points the tool down (C = 659).
+  // Then the gripper closes: the block is held, the tool centre in it, and
+  // nothing collides (the run checks every move, docs/models.md); the
+  // rv-m1's and xr4's fingers reach 10 and 10.7 past the tool centre, so a
+  // grip at the block's middle keeps them 10 and 9.3 above its support.
   struct Pick {
     std::string cell, moveTo, close;
     std::array<double, 3> centre;
   };
   const std::vector<Pick> picks{
-      {"adept-cell", "MOVETO -4978 -8294 6000 0 0", "MOVE 0 0 0 0 80", {20, 520, 600}},
+      {"adept-cell", "MOVETO -4978 -8294 5900 0 0", "MOVE 0 0 0 0 80", {20, 521, 600}},
       {"rv-m1-cell", "MOVETO 0 548 206 -754 0 0", "MOVE 0 0 0 0 0 80", {220, 800, 0}},
       {"xr4-cell", "MOVETO 95 415 274 -689 0 0", "MOVE 0 0 0 0 0 115", {240, 800, -40}},
-      {"irb120-cell", "MOVETO 0 4085 4270 0 645 0 0", "MOVE 0 0 0 0 0 0 80", {280, 800, 0}},
+      {"irb120-cell", "MOVETO 0 4062 4279 0 659 0 0", "MOVE 0 0 0 0 0 0 80", {280, 801, 0}},
   };
   Scratch scratch;
   for (const Pick& p : picks) {
@@ -511,5 +525,6 @@ TEST_CASE("In each new workcell the arm can take a block, at encoder counts work
     int held = 0;
     for (const auto& o : j["objects"]) held += o["held"].get<bool>() ? 1 : 0;
     CHECK(held == 1);
+    CHECK(j["collisions"] == nlohmann::json::array());
   }
 }
