@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "runtime/serial/rhino_machine.h"
+#include "vm/interpreter.h"
 
 namespace rs::teach {
 
@@ -70,7 +71,10 @@ Outcome Pendant::refuse(std::string message, bool bad) {
 
 // The one path that moves the robot: the fault check, the soft limits
 // (each motor's encoder range) before anything moves or is sent, then the
-// run's machine, so the world reacts as in a run.
+// run's machine, so the world reacts as in a run. On the simulated machine
+// the run checks the move for collisions (docs/models.md); a move that
+// collides is refused and undone (the run restored to before it), so the
+// robot never stands in a collision (docs/teach.md).
 Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
   if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
   if (targets.size() != motors_.size())
@@ -80,7 +84,17 @@ Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
       return refuse(fmt::format("motor {}: {} is outside its range {}..{}: nothing moved", motors_[i].letter, targets[i],
                                 motors_[i].min, motors_[i].max));
   const vm::Micros start = run_->clock();
+  const runtime::CollisionWatch* watch = run_->collisionWatch();
+  std::optional<runtime::RunSnapshot> before;
+  if (watch) before = run_->snapshot();
+  const std::size_t seen = watch ? watch->events().size() : 0;
   const vm::Status status = run_->machine().moveTo(targets);
+  if (watch && watch->events().size() > seen) {
+    const runtime::CollisionEvent hit = watch->events()[seen];
+    run_->restore(*before);
+    return refuse(fmt::format("refused: the move to {} collides {} s into it: {}; nothing moved", valuesText(targets),
+                              vm::formatSeconds(hit.at - start), watch->describe(hit.contact)));
+  }
   if (!status) {
     moved_ = false;
     if (!device_.empty()) fault_ = status.message;

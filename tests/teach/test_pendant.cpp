@@ -4,7 +4,11 @@
 // ±2000 at 800/s) and the gripper A (0..104, 200/s); the tool centre
 // point is at (500 + X/10, 200 - Y/10, 400 + Z/10) in the world
 // (examples/gantry_pick.rsp), and block 1 (object 1) is centred at
-// (220, 50, 680): X -2800, Z 2800, Y 1500.
+// (220, 50, 680): X -2800, Z 2800, Y 1500. The pendant checks every move
+// for collisions: point OVER is 50 mm above that middle (Y 1000), so that
+// the fingers, which reach 20 below the tool centre, pass 10 above the
+// blocks' tops (y 70) on the way; the gripper closes 1 mm above the middle
+// (Y 1490), as gantry_pick does (docs/teach.md, "Collisions").
 #include <catch2/catch.hpp>
 
 #include "../render/render_test_util.h"
@@ -24,7 +28,7 @@ const std::string kProgram =
     "        MOVEP OVER              ; the block\n"
     "        END\n"
     "POINTS\n"
-    "OVER   -2800  2800  1500    0\n";
+    "OVER   -2800  2800  1000    0\n";
 
 struct Fixture {
   rs::testing::TempDir dir;
@@ -80,15 +84,15 @@ TEST_CASE("pendant: go to a point moves at motor speed, its motion time-stepped"
   Pendant& p = *f.pendant;
   const rs::teach::Outcome o = p.goTo("over");
   REQUIRE(o.ok);
-  CHECK(o.message == "went to OVER (2.800 s)");  // X and Z: 2800 counts at 1000/s; Y 1500 at 800/s: 1.875 s
+  CHECK(o.message == "went to OVER (2.800 s)");  // X and Z: 2800 counts at 1000/s; Y 1000 at 800/s: 1.25 s
   const rs::teach::PendantState s = p.state();
-  CHECK(s.encoders == Values{-2800, 2800, 1500, 0});
-  checkTcp(s, 220, 50, 680);
+  CHECK(s.encoders == Values{-2800, 2800, 1000, 0});
+  checkTcp(s, 220, 100, 680);
   REQUIRE(s.motion.size() == 71);  // every 40 ms from 0 to 2.8 s
   CHECK(s.motion[0].encoders == Values{0, 0, 0, 0});
   CHECK(s.motion[25].at == 1'000'000);
   CHECK(s.motion[25].encoders == Values{-1000, 1000, 800, 0});
-  CHECK(s.motion[50].encoders == Values{-2000, 2000, 1500, 0});  // Y arrived at 1.875 s
+  CHECK(s.motion[50].encoders == Values{-2000, 2000, 1000, 0});  // Y arrived at 1.25 s
   CHECK(s.motion.back().encoders == s.encoders);
   CHECK_FALSE(p.goTo("nowhere").ok);
   CHECK(p.state().motion.empty());
@@ -97,7 +101,8 @@ TEST_CASE("pendant: go to a point moves at motor speed, its motion time-stepped"
 TEST_CASE("pendant: the gripper takes and carries a block as in a run, reset puts it back", "[teach]") {
   Fixture f;
   Pendant& p = *f.pendant;
-  REQUIRE(p.moveTo(Values{-2800, 2800, 1500, 0}).ok);
+  REQUIRE(p.goTo("OVER").ok);
+  REQUIRE(p.moveTo(Values{-2800, 2800, 1490, 0}).ok);  // straight down, the open fingers round the block
   CHECK(p.state().gripper == rs::teach::GripperState::Open);
   const rs::teach::Outcome closed = p.gripper(true);
   REQUIRE(closed.ok);
@@ -108,9 +113,9 @@ TEST_CASE("pendant: the gripper takes and carries a block as in a run, reset put
   REQUIRE(s.objects.size() == 4);
   CHECK(s.objects[1].held);
   const Eigen::Vector3d placed = f.cell->objects[1].F_world_design.translation();
-  REQUIRE(p.jog(0, 1000).ok);  // 100 mm along x: the block goes with it
+  REQUIRE(p.jog(2, -1000).ok);  // 100 mm up: the block goes with it
   s = p.state();
-  CHECK((s.objects[1].pose.translation() - placed - Eigen::Vector3d(100, 0, 0)).norm() < 1e-9);
+  CHECK((s.objects[1].pose.translation() - placed - Eigen::Vector3d(0, 100, 0)).norm() < 1e-9);
   CHECK(s.objects[1].moved);
   CHECK_FALSE(s.objects[2].moved);
   REQUIRE(p.gripper(false).ok);
@@ -127,6 +132,42 @@ TEST_CASE("pendant: the gripper takes and carries a block as in a run, reset put
   CHECK(s.inputs == 0);
   CHECK(s.outputs == 0);
   CHECK_FALSE(p.readPosition().ok);  // no device
+}
+
+TEST_CASE("pendant: a move that would collide is refused, naming the parts, and nothing moves", "[teach][collision]") {
+  Fixture f;
+  Pendant& p = *f.pendant;
+  REQUIRE(p.goTo("OVER").ok);
+  // Down to the block's middle (y 50): the open fingers' tips, 20 below the tool centre, rest on the
+  // pallet's top (y 30), touching it, which is no collision.
+  REQUIRE(p.moveTo(Values{-2800, 2800, 1500, 0}).ok);
+  const rs::teach::PendantState before = p.state();
+  // Closing swings each finger about its pivot 70 above the tool centre: its outer lower corner, 4 out
+  // and 90 down from the pivot (stdlib/robots/gantry.rsd), passes straight below it, sqrt(4² + 90²) =
+  // 90.09 down: 0.09 into the pallet, deeper than the 0.02 contact tolerance.
+  const rs::teach::Outcome close = p.gripper(true);
+  CHECK_FALSE(close.ok);
+  CHECK_FALSE(close.badRequest);
+  CHECK(close.message.find("refused: the move to -2800 2800 1500 104 collides ") == 0);
+  CHECK(close.message.find(" hits object 1 (pallet); nothing moved") != std::string::npos);
+  CHECK(close.message.find("finger") != std::string::npos);
+  const rs::teach::PendantState after = p.state();
+  CHECK(after.failed);
+  CHECK(after.message == close.message);
+  CHECK(after.encoders == before.encoders);  // the gripper still open
+  CHECK(after.clock == before.clock);        // and no time went by
+  CHECK_FALSE(after.objects[1].held);  // block 1 (objects are numbered from 1 in messages, from 0 here)
+  CHECK(after.motion.empty());
+  // 1 mm higher the fingers clear the pallet: the gripper closes and takes the block.
+  REQUIRE(p.jog(2, -10).ok);
+  const rs::teach::Outcome closed = p.gripper(true);
+  CHECK(closed.ok);
+  CHECK(closed.message == "gripper closed: holds block");
+  // Carried 100 mm along x, block 1 (x 200..240) would run into block 2 (x 280..320).
+  const rs::teach::Outcome carry = p.jog(0, 1000);
+  CHECK_FALSE(carry.ok);
+  CHECK(carry.message.find("object 2 (block) hits object 3 (block)") != std::string::npos);
+  CHECK(p.state().encoders == Values{-2800, 2800, 1490, 104});
 }
 
 TEST_CASE("pendant: teach, re-teach, rename and delete write the program", "[teach]") {

@@ -4,6 +4,9 @@
 // numbers are simple by hand: motors X Z Y (prismatic, 0.1 per count) and
 // the gripper A (0..104); the tool centre point is at (500 + X/10,
 // 200 - Y/10, 400 + Z/10) in the world (tests/teach/test_pendant.cpp).
+// OVER is 50 mm above the first block's middle (Y 1000, not 1500): the
+// pendant refuses a move that collides, and on the slanted way to the
+// middle the open fingers would cut through the second block.
 // tests/tui/test_tui.sh drives the same screen in a real terminal.
 #include <catch2/catch.hpp>
 
@@ -28,7 +31,7 @@ const std::string kProgram =
     "        MOVEP OVER\n"
     "        END\n"
     "POINTS\n"
-    "OVER   -2800  2800  1500    0\n";
+    "OVER   -2800  2800  1000    0\n";
 
 struct Fixture {
   rs::testing::TempDir dir;
@@ -100,7 +103,7 @@ TEST_CASE("tui: the first screen, 80x24, every panel", "[teach][tui]") {
   CHECK(f.left(15) == " HOLDS    nothing");
   // The points panel: name, then each value right-aligned to its column.
   CHECK(f.row(2).substr(44) == "| POINTS (1)");
-  CHECK(f.row(3).substr(44) == "| > OVER -2800 2800 1500 0");
+  CHECK(f.row(3).substr(44) == "| > OVER -2800 2800 1000 0");
   CHECK(f.row(21) == std::string(80, '-'));
   CHECK(f.row(23).rfind("Left/Right jog  Up/Down motor", 0) == 0);
   CHECK(s.cursorRow == -1);
@@ -136,7 +139,7 @@ TEST_CASE("tui: teach asks a name, writes the row and selects it", "[teach][tui]
   // name at column 0, values right-aligned where OVER's end.
   CHECK(f.text() == kProgram + "UP       100     0     0    0\n");
   CHECK(f.row(4).substr(44) == "| > UP     100    0    0 0");
-  CHECK(f.row(3).substr(44) == "|   OVER -2800 2800 1500 0");
+  CHECK(f.row(3).substr(44) == "|   OVER -2800 2800 1000 0");
   CHECK(f.row(22).rfind("taught UP", 0) == 0);
   // Escape cancels a question without a change.
   f.press({"t", "Z", "Escape"});
@@ -177,8 +180,8 @@ TEST_CASE("tui: a refused teach shows why in the message row, marked as an error
 TEST_CASE("tui: go to, inputs, help, a small terminal and quit", "[teach][tui]") {
   Fixture f;
   f.press({"g"});
-  CHECK(f.pendant->state().encoders == std::vector<std::int32_t>{-2800, 2800, 1500, 0});
-  CHECK(f.left(9) == "   x 220  y 50  z 680");
+  CHECK(f.pendant->state().encoders == std::vector<std::int32_t>{-2800, 2800, 1000, 0});
+  CHECK(f.left(9) == "   x 220  y 100  z 680");
   f.press({"i", "5"});
   CHECK(f.left(12) == " INPUTS   . . . . # . . .");
   f.press({"i", "9"});
@@ -219,10 +222,16 @@ TEST_CASE("tui: go to, inputs, help, a small terminal and quit", "[teach][tui]")
 }
 
 TEST_CASE("tui: the gripper closes on the block at a point and the panel says what it holds", "[teach][tui]") {
-  // OVER is the centre of gantry-cell's first block, object 2 after the
-  // pallet (stdlib/workcells/gantry-cell.rsd): closing there takes it.
+  // OVER is 50 mm above the centre of gantry-cell's first block, object 2
+  // after the pallet (stdlib/workcells/gantry-cell.rsd). Y down 490 more,
+  // to 1 mm above the centre (at the centre the closing fingers would dip
+  // 0.09 into the pallet, docs/teach.md), and closing there takes it.
   Fixture f;
-  f.press({"g", "c"});
+  f.press({"g", "ArrowDown", "ArrowDown", "3", "ArrowRight", "ArrowRight", "ArrowRight", "ArrowRight", "2"});
+  for (int i = 0; i < 9; ++i) f.press({"ArrowRight"});
+  CHECK(f.left(5) == " > Y prismatic    1490  -2000..2000");
+  CHECK(f.left(9) == "   x 220  y 51  z 680");
+  f.press({"c"});
   CHECK(f.left(6) == "   A gripper       104  0..104  closed");
   CHECK(f.left(15) == " HOLDS    block (object 2)");
   f.press({"o"});
