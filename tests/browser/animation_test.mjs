@@ -9,7 +9,8 @@
 // its projection equals `robotsim render --dump-lines` to 1e-6 px, dragging
 // turns the picture, the wheel zooms, Play advances the time and the
 // highlighted line, the lamps follow the outputs, a block the gripper
-// carries moves with it and the others stay. Saves DIR/animation.png.
+// carries moves with it and the others stay, a collision's parts are drawn
+// red while it lasts. Saves DIR/animation.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
@@ -75,16 +76,31 @@ const still = pickStills[0].still;
 const viewHtml = path.join(out, 'view.html');
 robotsim(['animate', path.join(examples, 'workcell_view.rsp'), '--cell', 'scara-pick', '-o', viewHtml]);
 const viewStills = stills('workcell_view.rsp', 'scara-pick', [1, 3, 3.6, 5]);
-// The gantry pick-and-place of tests/runtime/test_grasp.cpp: the gripper
-// takes block 1 (object 1) at 3.3 s, at the end of its closing move, carries
-// it, and lets go at 12.15 s, as its opening move starts; then leaves.
+// A gantry pick-and-place free of collisions (runs check them: the way
+// examples/gantry_pick.rsp goes, straight down and up, gripping 1 mm above
+// the block's middle). X, Z at 1000 counts/s, Y 800, A 200: over block 1
+// (object 1) 0..2.8 s; down 1490 to 4.6625; the gripper takes it at the end
+// of its closing move, 5.1625; up to 7.025; carried (X 5100 counts) to
+// 12.125; down to 13.9875, where it lets go as its opening move starts
+// (to 14.4875); up to 16.35, home (X 2300) at 18.65.
 const gantryProgram = path.join(out, 'gantry_carry.rsp');
-fs.writeFileSync(gantryProgram, ['MOVETO -2800 2800 1500 0', 'MOVE 0 0 0 100', 'MOVETO -2800 2800 0 100',
-                                 'MOVETO 2300 -2200 0 100', 'MOVETO 2300 -2200 1500 100', 'MOVE 0 0 0 -100',
-                                 'MOVETO 0 0 0 0', 'END', ''].join('\n'));
+fs.writeFileSync(gantryProgram, ['MOVETO -2800 2800 0 0', 'MOVETO -2800 2800 1490 0', 'MOVE 0 0 0 100',
+                                 'MOVETO -2800 2800 0 100', 'MOVETO 2300 -2200 0 100', 'MOVETO 2300 -2200 1490 100',
+                                 'MOVE 0 0 0 -100', 'MOVETO 2300 -2200 0 0', 'MOVETO 0 0 0 0', 'END', ''].join('\n'));
 const gantryHtml = path.join(out, 'gantry.html');
 robotsim(['animate', gantryProgram, '--cell', 'gantry-cell', '-o', gantryHtml]);
-const GANTRY_AT = { before: 2, closing: 3.1, carrying: 8, opening: 12.4, away: 14 };  // seconds
+const GANTRY_AT = { before: 2, closing: 5, carrying: 8, opening: 14.2, away: 18 };  // seconds
+// A collision, kept going with --collisions=warn: closing at the block's
+// middle (Y 1500, 4.675 .. 5.175 s) the fingers' lower corners swing 0.09
+// below their resting tips, into the pallet (docs/teach.md): the left
+// finger (finger 2, the first the checker finds) and pallet 1 are red from
+// that moment to the move's end, and nothing is red before.
+const hotProgram = path.join(out, 'gantry_graze.rsp');
+fs.writeFileSync(hotProgram, ['MOVETO -2800 2800 0 0', 'MOVETO -2800 2800 1500 0', 'MOVE 0 0 0 100', 'END', '']
+  .join('\n'));
+const hotHtml = path.join(out, 'graze.html');
+robotsim(['animate', hotProgram, '--cell', 'gantry-cell', '--collisions=warn', '-o', hotHtml]);
+const HOT_AT = { before: 4.6, during: 5.1 };  // seconds
 const gantryStills = stills(gantryProgram, 'gantry-cell', Object.values(GANTRY_AT));
 // The IRB 120's joints accelerate (runtime/motion.h, mirrored in the page
 // with BigInt): a trapezoid on G and F (0 to 0.449287 s), a triangle on E
@@ -279,8 +295,51 @@ try {
   const othersStill = Object.keys(GANTRY_AT).every((k) => [0, 2, 3].every((o) => moved(G[k].objects[o], G.before.objects[o]) < 1e-9));
   check(othersStill, 'the other block and the pallets do not move');
 
+  // ---- a collision's parts are drawn red (EGA 4) while it lasts, and only they
+  await page.goto('file://' + hotHtml);
+  await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
+  const redAt = async (seconds) => {
+    await page.evaluate((t) => window.robotsim.setTime(t), seconds * 1e6);
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    return page.evaluate(() => {
+      const m = window.robotsim.model, canvas = document.getElementById('cell');
+      const { width, height } = canvas, dpr = window.devicePixelRatio || 1;
+      const px = canvas.getContext('2d').getImageData(0, 0, width, height).data;
+      // Red: EGA 4 (170, 0, 0) over the dark background, at any coverage; the
+      // blocks' light red (255, 85, 85) and the pallets' brown (170, 85, 0) are not.
+      const red = [];
+      for (let i = 0; i < px.length; i += 4)
+        if (px[i] > 60 && px[i + 1] < 25 && px[i + 2] < 32) red.push([(i / 4) % width, Math.floor(i / 4 / width)]);
+      const hot = [];
+      m.robots[0].parts.forEach((p) => { if (p.hot) hot.push({ name: p.kind + ' ' + p.index, screen: p.screen, n: p.count }); });
+      m.objects.forEach((o, k) => { if (o.hot) hot.push({ name: 'object ' + (k + 1) + ' ' + o.name, screen: o.screen, n: o.count }); });
+      // Each red pixel's distance to the nearest line of a hot part (device pixels).
+      const near = (x, y, part) => {
+        let best = Infinity;
+        for (let j = 0; j < 4 * part.n; j += 4) {
+          const ax = part.screen[j] * dpr, ay = part.screen[j + 1] * dpr, bx = part.screen[j + 2] * dpr,
+                by = part.screen[j + 3] * dpr;
+          const dx = bx - ax, dy = by - ay, len = dx * dx + dy * dy;
+          const u = len ? Math.max(0, Math.min(1, ((x + 0.5 - ax) * dx + (y + 0.5 - ay) * dy) / len)) : 0;
+          best = Math.min(best, Math.hypot(ax + u * dx - x - 0.5, ay + u * dy - y - 0.5));
+        }
+        return best;
+      };
+      const stray = red.filter(([x, y]) => hot.every((h) => near(x, y, h) > 2)).length;
+      const perPart = hot.map((h) => red.filter(([x, y]) => near(x, y, h) <= 2).length);
+      return { red: red.length, hot: hot.map((h) => h.name), stray, perPart };
+    });
+  };
+  const cold = await redAt(HOT_AT.before);
+  check(cold.red === 0 && cold.hot.length === 0, 'before the collision nothing is red', `${cold.red} red pixels`);
+  const hot = await redAt(HOT_AT.during);
+  check(JSON.stringify(hot.hot) === JSON.stringify(['finger2 3', 'object 1 pallet']),
+        'during the collision its two parts are marked', hot.hot.join(', '));
+  check(hot.perPart.every((n) => n > 20) && hot.stray === 0, '  and drawn red, along their lines only',
+        `${hot.perPart.join(' and ')} red pixels, ${hot.stray} elsewhere`);
+
   const foreign = requests.filter((u) => u !== url && u !== 'file://' + viewHtml && u !== 'file://' + gantryHtml &&
-                                         u !== 'file://' + trapezoidHtml &&
+                                         u !== 'file://' + trapezoidHtml && u !== 'file://' + hotHtml &&
                                          !u.startsWith('data:'));
   check(foreign.length === 0, 'nothing but the page itself was requested', foreign.join(' '));
   check(errors.length === 0, 'no errors on the way', errors.join('; '));
