@@ -134,6 +134,11 @@ TEST_CASE("a workcell without objects: closing on nothing is no mistake", "[gras
   CHECK(r.code == 0);
   CHECK_FALSE(has(r.out, "closes on nothing"));
   CHECK_FALSE(has(r.err, "warning"));
+  // The robot alone (a library robot as the cell) has no objects either.
+  const auto alone = runCli({"run", program, "--cell", "gantry", "--trace"});
+  CHECK(alone.code == 0);
+  CHECK_FALSE(has(alone.out, "closes on nothing"));
+  CHECK_FALSE(has(alone.err, "warning"));
   // The same close on the cell with blocks is warned of (the check above can fail).
   const auto withBlocks = runCli({"run", program, "--cell", "gantry-cell", "--trace"});
   CHECK(has(withBlocks.out, "closes on nothing"));
