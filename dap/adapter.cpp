@@ -308,7 +308,7 @@ void Adapter::reportStop(const debug::Stop& stop) {
     case StopReason::Time: return stopped("goto", stop.message);
     case StopReason::Pause: return stopped("pause", stop.message);
     case StopReason::End:
-      output("console", "the program ended\n");
+      output("console", stop.message + "\n");  // "the program ended", with the gripper warning if any
       event("terminated");
       event("exited", {{"exitCode", 0}});
       state_ = State::Terminated;

@@ -6,6 +6,7 @@
 
 #include "base/ascii.h"
 #include "base/text.h"
+#include "runtime/run/empty_close.h"
 
 namespace rs::debug {
 
@@ -240,8 +241,11 @@ Stop Session::finishedStop(bool already) const {
   const vm::RunOutcome outcome = *run_->outcome();
   Stop s;
   s.reason = reasonOf(outcome.reason);
-  const std::string what = outcome.ok() ? std::string("the program ended")
-                                        : fmt::format("{}: {}", reasonName(s.reason), base::safeText(outcome.message));
+  std::string what = outcome.ok() ? std::string("the program ended")
+                                  : fmt::format("{}: {}", reasonName(s.reason), base::safeText(outcome.message));
+  // What `robotsim run` warns about at the end, said where the run ends.
+  if (const auto w = runtime::gripperWarning(*run_, run_->image().sourceName))
+    what += fmt::format("; warning at line {}: {}", w->pos.line, base::safeText(w->message));
   s.message = already ? fmt::format("the run is over ({}); go back with reverse-step or goto-time", what) : what;
   return s;
 }

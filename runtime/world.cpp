@@ -12,13 +12,14 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
   const bool heldBefore = grasping_.held().has_value();
   const std::optional<workcell::GraspChange> change = grasping_.step(before, after);
   if (closing) ++state_.closes;
-  if (closing && !heldBefore && !change) {
+  if (closing && !heldBefore && !change && !cell_.objects.empty()) {
     EmptyClose& e = state_.lastEmptyClose;
     e.at = end;
     e.tcp = grasping_.toolFrame(after).translation();
     const auto nearest = grasping_.nearestObject(e.tcp);
     e.nearest = nearest ? std::optional<std::size_t>(nearest->first) : std::nullopt;
     e.distance = nearest ? nearest->second : 0.0;
+    e.centre = nearest ? grasping_.boxCentre(nearest->first) : Eigen::Vector3d::Zero();
     ++state_.emptyCloses;
   }
   if (!change) return;

@@ -32,14 +32,17 @@ struct GraspEvent {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
 };
 
-/// A closing move that took nothing: where the tool centre point was at
-/// its end, and the nearest object's box and how far (0 inside: a gripper
-/// already holding nothing closed inside a nested box's bigger one).
+/// A closing move that took nothing, on a workcell with objects: where the
+/// tool centre point was at its end, the object whose box is nearest it,
+/// how far outside that box it was, and the box's centre (all in the
+/// world), so that a message can say which way to move.
 struct EmptyClose {
   vm::Micros at = 0;
   Eigen::Vector3d tcp = Eigen::Vector3d::Zero();
   std::optional<std::size_t> nearest;
   double distance = 0;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< the nearest box's centre (meaningful with nearest)
+  bool operator==(const EmptyClose&) const = default;
 };
 
 class World {
@@ -71,7 +74,9 @@ class World {
   /// The tool centre point in world coordinates, when the robot has a chain.
   std::optional<std::array<double, 3>> tcp(std::span<const std::int32_t> encoders) const;
 
-  /// Closing moves that took nothing, and the latest of them.
+  /// Closing moves that took nothing, and the latest of them. Only a
+  /// workcell with objects counts them: with nothing to take, closing on
+  /// nothing is no mistake.
   std::uint64_t emptyCloseCount() const { return state_.emptyCloses; }
   const EmptyClose& lastEmptyClose() const { return state_.lastEmptyClose; }
   /// Closing moves in all, and takes in all.
@@ -97,8 +102,7 @@ class World {
       return grasp == o.grasp && heldSince == o.heldSince && events == o.events && last.at == o.last.at &&
              last.object == o.last.object && last.held == o.last.held && last.pose.matrix() == o.last.pose.matrix() &&
              closes == o.closes && takes == o.takes && emptyCloses == o.emptyCloses &&
-             lastEmptyClose.at == o.lastEmptyClose.at && lastEmptyClose.tcp == o.lastEmptyClose.tcp &&
-             lastEmptyClose.nearest == o.lastEmptyClose.nearest && lastEmptyClose.distance == o.lastEmptyClose.distance;
+             lastEmptyClose == o.lastEmptyClose;
     }
   };
   State state() const;

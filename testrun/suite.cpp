@@ -105,8 +105,10 @@ std::string xml(std::string_view text) {
 }
 
 std::string problemText(const diag::Diagnostic& d) {
-  std::string s = d.pos.line ? fmt::format("{}:{}:{}: {}", d.file, d.pos.line, d.pos.col, d.message)
-                             : fmt::format("{}: {}", d.file, d.message);
+  const std::string message =
+      d.severity == diag::Severity::Warning ? "warning: " + d.message : d.message;  // problems are all errors
+  std::string s = d.pos.line ? fmt::format("{}:{}:{}: {}", d.file, d.pos.line, d.pos.col, message)
+                             : fmt::format("{}: {}", d.file, message);
   if (!d.hint.empty()) s += " (hint: " + d.hint + ")";
   return s;
 }
@@ -138,15 +140,21 @@ std::string junitXml(const std::vector<TestResult>& results) {
       const TestResult& r = results[i];
       const std::string testcase = xml(r.name.empty() ? fs::path(r.file).stem().string() : r.name);
       out += fmt::format("    <testcase classname=\"{}\" name=\"{}\"", name, testcase);
+      // Warnings (a passing test may have them) go to the test's output.
+      std::string warnings;
+      for (const diag::Diagnostic& d : r.warnings) warnings += problemText(d) + "\n";
+      const std::string systemOut =
+          warnings.empty() ? std::string() : fmt::format("      <system-out>{}</system-out>\n", xml(warnings));
       if (r.status == TestStatus::Passed) {
-        out += "/>\n";
+        out += systemOut.empty() ? "/>\n" : ">\n" + systemOut + "    </testcase>\n";
         continue;
       }
       const char* element = r.status == TestStatus::Failed ? "failure" : "error";
       std::string body;
       for (const diag::Diagnostic& d : r.problems) body += problemText(d) + "\n";
-      out += fmt::format(">\n      <{} message=\"{}\">{}</{}>\n    </testcase>\n", element,
-                         r.problems.empty() ? "" : xml(problemText(r.problems.front())), xml(body), element);
+      out += fmt::format(">\n      <{} message=\"{}\">{}</{}>\n{}    </testcase>\n", element,
+                         r.problems.empty() ? "" : xml(problemText(r.problems.front())), xml(body), element,
+                         systemOut);
     }
     out += "  </testsuite>\n";
     first = end;

@@ -8,6 +8,7 @@
 #include "base/file_io.h"
 #include "launch/program.h"
 #include "launch/run_request.h"
+#include "runtime/run/empty_close.h"
 #include "runtime/run/run.h"
 #include "testrun/evaluate.h"
 #include "testrun/expectation.h"
@@ -153,6 +154,7 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   r.expectations = parsed.expectations.size() + (parsed.statesStatus() ? 0 : 1);
   // An expectation of a scenario file points into it.
   r.problems = evaluate(running, parsed.expectations, settingsFile, !parsed.statesStatus());
+  if (std::optional<diag::Diagnostic> w = runtime::gripperWarning(running, program)) r.warnings.push_back(std::move(*w));
   if (!parsed.statesStatus() && !r.problems.empty() && !outcome.ok()) r.problems.front().file = program;
   for (const Expectation& e : parsed.expectations)
     if (e.kind == ExpectKind::Trace) compareTrace(e, besideProgram(settingsFile, e.name, false), trace.str(),

@@ -34,7 +34,11 @@ struct TestResult {
   std::uint64_t steps = 0;
   /// Why it failed or could not start, in the compiler's style.
   std::vector<diag::Diagnostic> problems;
-  /// The texts of the files the problems point into, for their carets.
+  /// What a run that passed or failed is warned about, without failing
+  /// it: a gripper that closed but never took an object
+  /// (runtime/run/empty_close.h).
+  std::vector<diag::Diagnostic> warnings;
+  /// The texts of the files the problems and warnings point into, for their carets.
   std::vector<std::shared_ptr<const diag::SourceFile>> sources;
   const diag::SourceFile* sourceOf(const std::string& file) const;
   /// With coverage asked for and a run made: what it ran.

@@ -74,6 +74,11 @@ CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
   cmd->add_option("--from", o.from, "The previous point's encoder counts e,e,... (default: home, all 0)");
   cmd->add_option("--name", o.name, "The point's name in the POINTS line (default P1)");
   cmd->add_option("--lib", o.libDirs, "Also look up names in this directory (repeatable)")->allow_extra_args(false);
+  cmd->add_option("--solution", o.solution,
+                  "Only configuration N of the family (1-based; scara: elbow +, -; articulated-5: shoulder front "
+                  "elbow +, -, back +, -; six-axis: each of those with the wrist not flipped, then flipped), solved "
+                  "alone")
+      ->check(CLI::Range(1u, 8u));
   cmd->add_flag("--json", o.json, "Print one JSON object");
   cmd->footer(
       "Solves in closed form for the library's arm families (cartesian, scara, articulated-5, articulated-6,\n"
@@ -108,6 +113,14 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
     request.normal = Eigen::Vector3d(v[0], v[1], v[2]);
   }
   if (o.gripGiven) request.grip = o.grip;
+  const std::span<const std::uint8_t> configurations = solver.ik().configurations();
+  if (o.solution > configurations.size()) {
+    err << fmt::format("--solution: error: the {} family has {} configuration{}: N from 1 to {}\n",
+                       kinematics::familyName(solver.ik().family()), configurations.size(),
+                       configurations.size() == 1 ? "" : "s", configurations.size());
+    return kExitBadInput;
+  }
+  if (o.solution) request.configuration = configurations[o.solution - 1];
   std::vector<std::int32_t> reference(solver.motorCount(), 0);
   if (!o.from.empty()) {
     if (!numbers(o.from, "--from", reference.size(), v, err)) return kExitBadInput;
@@ -134,6 +147,7 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
     j["position"] = o.position;
     j["solutions"] = r.solutions;
     j["in_range"] = r.inRange;
+    if (o.solution) j["solution"] = o.solution;
     j["joints"] = r.q;
     Json enc = Json::object();
     for (std::size_t i = 0; i < r.encoders.size(); ++i) enc[std::string(1, motors[i].letter)] = r.encoders[i];
@@ -145,9 +159,13 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
   }
   out << fmt::format("{} ({} family): tool centre point {} ({} coordinates)\n", robotName,
                      kinematics::familyName(family), pose, request.robotFrame ? "the robot's design" : "world");
-  out << fmt::format("  {} solution{}, {} within the motors' ranges; chosen: {} (the quickest move from {})\n",
-                     r.solutions, r.solutions == 1 ? "" : "s", r.inRange, configText(r.config, family),
-                     o.from.empty() ? "home" : "--from");
+  if (o.solution)
+    out << fmt::format("  solution {} of {} asked for ({}), solved alone\n", o.solution, configurations.size(),
+                       configText(r.config, family));
+  else
+    out << fmt::format("  {} solution{}, {} within the motors' ranges; chosen: {} (the quickest move from {})\n",
+                       r.solutions, r.solutions == 1 ? "" : "s", r.inRange, configText(r.config, family),
+                       o.from.empty() ? "home" : "--from");
   std::string joints;
   for (std::size_t i = 0; i < r.q.size(); ++i)
     joints += fmt::format("{}{}", i ? "  " : "", formatNumber(r.q[i]));

@@ -24,6 +24,7 @@ struct IkOptions {
   std::string name = "P1";           // the point's name in the POINTS line
   int grip = 0;
   bool gripGiven = false;
+  unsigned solution = 0;             // --solution N (1-based in the family's configurations), 0: choose
   bool json = false;
 };
 

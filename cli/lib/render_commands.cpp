@@ -16,6 +16,7 @@
 #include "cli/lib/report.h"
 #include "runtime/render/animation.h"
 #include "runtime/render/collision_marks.h"
+#include "runtime/run/empty_close.h"
 #include "runtime/render/draw.h"
 #include "runtime/render/moment.h"
 #include "runtime/render/picture.h"
@@ -227,6 +228,9 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   bool stoppedByCollision = false;  // drawn at the collision, exit 1
   if (run) {
     render::Moment m = render::momentOf(*run, o.at.empty() ? INT64_MAX : at);
+    if (o.at.empty() && run->finished())  // at a moment --at picks, the run has not ended
+      if (const auto w = runtime::gripperWarning(*run, run->image().sourceName))
+        launch::printDiagnostics(err, {*w}, loaded);
     if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
       const vm::Image& image = run->image();
       launch::printDiagnostics(err, {runtimeDiagnostic(image, m.outcome, image.sourceName)}, loaded);
@@ -321,6 +325,10 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
     const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
     launch::printDiagnostics(err, {d}, loaded);
     input.outcome = d.pos.line ? fmt::format("line {}: {}", d.pos.line, d.message) : d.message;
+  }
+  if (const auto w = runtime::gripperWarning(*run, run->image().sourceName)) {
+    launch::printDiagnostics(err, {*w}, loaded);
+    input.warning = fmt::format("line {}: {}", w->pos.line, w->message);
   }
   const std::string html = render::animationHtml(input);
   if (!write(o.output, std::vector<std::uint8_t>(html.begin(), html.end()), err)) return kExitBadInput;

@@ -9,6 +9,7 @@
 #include "base/text.h"
 #include "cli/lib/profile_report.h"
 #include "cli/lib/trace.h"
+#include "runtime/run/empty_close.h"
 
 namespace rs::cli {
 
@@ -63,22 +64,6 @@ std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) 
 }
 
 }  // namespace
-
-std::optional<diag::Diagnostic> gripperWarning(const runtime::Run& run, const std::string& file) {
-  const runtime::World* world = run.world();
-  const auto first = run.firstEmptyClose();
-  if (!world || !first || world->takeCount() > 0) return std::nullopt;
-  const vm::Image& image = run.image();
-  const diag::Pos pos{image.lines[first->first], image.columns[first->first]};
-  const std::uint64_t closes = world->closeCount();
-  return diag::Diagnostic{file, pos, diag::Severity::Warning,
-                          fmt::format("the gripper closed {} but never took an object: after this close {}",
-                                      closes == 1 ? std::string("once") : fmt::format("{} times", closes),
-                                      emptyCloseText(first->second, world->cell())),
-                          "gripper-took-nothing",
-                          "a closing gripper takes the object whose box holds the tool centre point at the end of "
-                          "the move (robotsim where CELL --encoders ... shows where it is)"};
-}
 
 diag::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {
   const diag::Pos pos{image.lines[outcome.index], image.columns[outcome.index]};
@@ -153,6 +138,11 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
     out << fmt::format("  {:<15} {} at {}{}\n", fmt::format("object {}", o + 1), base::safeText(e.name),
                        pointText({e.at.x(), e.at.y(), e.at.z()}), e.held ? ", held" : e.moved ? ", moved" : "");
   }
+  if (const auto w = runtime::gripperWarning(*r.run, im.sourceName))  // the warning printed before
+    out << fmt::format("  gripper         closed {}, took nothing (the warning at line {})\n",
+                       r.run->world()->closeCount() == 1 ? std::string("once")
+                                                         : fmt::format("{} times", r.run->world()->closeCount()),
+                       w->pos.line);
   printCollisions(out, *r.run);
   out << fmt::format("  outputs         {}  (ON: {})\n", lampText(m.outputs()), lampList(m.outputs()));
   out << fmt::format("  inputs          {}  (ON: {})\n", lampText(m.inputs()), lampList(m.inputs()));

@@ -31,11 +31,6 @@ struct RunReport {
 void printTextSummary(std::ostream& out, const RunReport& report);
 void printJsonSummary(std::ostream& out, const RunReport& report);
 
-/// docs/models.md, "Objects in the gripper": a run whose gripper closed
-/// but never took an object gets a warning at the first close that took
-/// nothing, saying how far the tool centre point was from the nearest box.
-std::optional<diag::Diagnostic> gripperWarning(const runtime::Run& run, const std::string& file);
-
 /// A runtime stop as a diagnostic at the instruction's source position.
 diag::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file);
 

@@ -7,6 +7,7 @@
 #include "cli/lib/profile_report.h"
 #include "cli/lib/report.h"
 #include "cli/lib/trace.h"
+#include "runtime/run/empty_close.h"
 #include "runtime/run/run.h"
 
 namespace rs::cli {
@@ -90,7 +91,7 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     report.diagnostics.push_back(d);
   }
   if (o.profile && run->log()) report.profile = runtime::profileOf(image, *run->log());
-  if (const std::optional<diag::Diagnostic> w = gripperWarning(*run, image.sourceName)) {
+  if (const std::optional<diag::Diagnostic> w = runtime::gripperWarning(*run, image.sourceName)) {
     launch::printDiagnostics(err, {*w}, program);
     report.diagnostics.push_back(*w);
   }

@@ -38,6 +38,7 @@ nlohmann::json diagnosticJson(const diag::Diagnostic& d) {
                       {"column", d.pos.col},
                       {"severity", diag::severityName(d.severity)},
                       {"message", d.message}};
+  if (!d.code.empty()) j["code"] = d.code;
   if (!d.hint.empty()) j["hint"] = d.hint;
   return j;
 }
@@ -157,10 +158,14 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
     if (text) {
       out << fmt::format("{}{} {}", r.file, r.name.empty() ? "" : " [" + r.name + "]", testrun::statusName(r.status));
       if (r.status == testrun::TestStatus::Passed)
-        out << fmt::format(" ({} expectation{}, {} s simulated)", r.expectations, r.expectations == 1 ? "" : "s",
-                           vm::formatSeconds(r.simulated));
+        out << fmt::format(" ({} expectation{}, {} s simulated{})", r.expectations, r.expectations == 1 ? "" : "s",
+                           vm::formatSeconds(r.simulated),
+                           r.warnings.empty() ? std::string()
+                                              : fmt::format(", {} warning{}", r.warnings.size(),
+                                                            r.warnings.size() == 1 ? "" : "s"));
       out << '\n';
       for (const diag::Diagnostic& d : r.problems) out << diag::render(d, r.sourceOf(d.file));
+      for (const diag::Diagnostic& d : r.warnings) out << diag::render(d, r.sourceOf(d.file));
       for (const std::string& golden : r.updated) out << fmt::format("  updated {}\n", golden);
       out.flush();
     }
@@ -173,13 +178,16 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
     for (const testrun::TestResult& r : results) {
       nlohmann::json problems = nlohmann::json::array();
       for (const diag::Diagnostic& d : r.problems) problems.push_back(diagnosticJson(d));
+      nlohmann::json warnings = nlohmann::json::array();
+      for (const diag::Diagnostic& d : r.warnings) warnings.push_back(diagnosticJson(d));
       tests.push_back({{"file", r.file},
                        {"scenario", r.name},
                        {"status", testrun::statusName(r.status)},
                        {"expectations", r.expectations},
                        {"time", static_cast<double>(r.simulated) / 1e6},
                        {"steps", r.steps},
-                       {"problems", problems}});
+                       {"problems", problems},
+                       {"warnings", warnings}});
     }
     nlohmann::json summary = {{"passed", passed}, {"failed", failed}, {"errors", errors}, {"tests", tests}};
     if (!o.spec.empty()) {  // grading: the table too

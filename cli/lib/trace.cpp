@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/text.h"
+#include "runtime/run/empty_close.h"
 #include "vm/disasm.h"
 
 namespace rs::cli {
@@ -46,14 +47,9 @@ std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell
                      event.object + 1);
 }
 
-std::string emptyCloseText(const runtime::EmptyClose& e, const workcell::Workcell& cell) {
-  std::string s = fmt::format("the tool centre point {} is in no object", pointText({e.tcp.x(), e.tcp.y(), e.tcp.z()}));
-  if (e.nearest) {
-    std::string d = pointText({e.distance, 0, 0});  // 2 decimals at most
-    s += fmt::format(" ({} from {} (object {}), the nearest)", d.substr(1, d.find(',') - 1),
-                     base::safeText(cell.objects[*e.nearest].shape.name), *e.nearest + 1);
-  }
-  return s;
+std::string closesOnNothingText(const runtime::EmptyClose& e, const workcell::Workcell& cell) {
+  const std::string nearest = runtime::emptyCloseText(e, cell);
+  return nearest.empty() ? std::string("closes on nothing") : "closes on nothing (" + nearest + ")";
 }
 
 TraceWriter::TraceWriter(std::ostream& out, TraceFormat format, const runtime::Run& run)
@@ -117,7 +113,7 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
     changed += (changed.empty() ? "" : "  ") + fmt::format("{} from {}", base::safeText(im.points[in.b].name),
                                                            base::safeText(im.points[in.b].origin));
   if (const runtime::EmptyClose* e = run_.emptyCloseOfLastStep())
-    changed += std::string(changed.empty() ? "" : "  ") + "closes on nothing: " + emptyCloseText(*e, run_.world()->cell());
+    changed += std::string(changed.empty() ? "" : "  ") + closesOnNothingText(*e, run_.world()->cell());
   const std::optional<std::array<double, 3>> tool = run_.world() ? run_.world()->tcp(pos) : std::nullopt;
   const std::string tcp = tool ? fmt::format("{:<28}  ", pointText(*tool)) : std::string();
   std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}{}", vm::formatSeconds(vm.machine().now()),
@@ -159,7 +155,10 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
       empty["nearest"] = *e->nearest + 1;
       empty["name"] = run_.world()->cell().objects[*e->nearest].shape.name;
       empty["distance"] = std::round(e->distance * 1e4) / 1e4;
+      const Eigen::Vector3d offset = e->centre - e->tcp;
+      empty["centre_offset"] = roundedPoint({offset.x(), offset.y(), offset.z()});
     }
+    empty["text"] = closesOnNothingText(*e, run_.world()->cell());
     j["closes_on_nothing"] = empty;
   }
   out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';

@@ -34,9 +34,10 @@ class TraceWriter final : public vm::StepObserver {
   std::size_t collisionsShown_ = 0;
 };
 
-/// "the tool centre point (x, y, z) is in no object (5 from block (object
-/// 3), the nearest)": where a close that took nothing left it.
-std::string emptyCloseText(const runtime::EmptyClose& e, const workcell::Workcell& cell);
+/// "closes on nothing (nearest: block (object 2), its centre 40 below the
+/// tool centre point, which is 20 outside its box)": the trace's words for
+/// a close that took nothing (runtime/run/empty_close.h words the rest).
+std::string closesOnNothingText(const runtime::EmptyClose& e, const workcell::Workcell& cell);
 
 /// "takes block (object 2)", "lets go of block (object 2)".
 std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell& cell);

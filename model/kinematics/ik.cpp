@@ -1,5 +1,6 @@
 #include "model/kinematics/ik.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -103,6 +104,49 @@ std::string nearestOrientation(const ChainModel& m, const IkSolution& s, const T
 InverseKinematics::InverseKinematics(const ChainModel& model) : model_(model), family_(detectFamily(model)) {}
 
 IkSolutions InverseKinematics::solve(const ToolTarget& target, std::span<const double> reference) const {
+  return solveBranches(target, reference, ik::Branches{});
+}
+
+std::span<const std::uint8_t> InverseKinematics::configurations() const {
+  // In the order the forms list them: shoulder outermost, then elbow, then wrist.
+  static constexpr std::uint8_t kOne[] = {0};
+  static constexpr std::uint8_t kElbow[] = {0, kElbowDown};
+  static constexpr std::uint8_t kArm[] = {0, kElbowDown, kShoulderBack, kShoulderBack | kElbowDown};
+  static constexpr std::uint8_t kSix[] = {0,
+                                          kWristFlip,
+                                          kElbowDown,
+                                          kElbowDown | kWristFlip,
+                                          kShoulderBack,
+                                          kShoulderBack | kWristFlip,
+                                          kShoulderBack | kElbowDown,
+                                          kShoulderBack | kElbowDown | kWristFlip};
+  switch (family_.kind) {
+    case IkFamily::Cartesian:
+    case IkFamily::Numeric: return kOne;
+    case IkFamily::Scara: return kElbow;
+    case IkFamily::Articulated5: return kArm;
+    case IkFamily::Articulated6:
+    case IkFamily::Spherical6: return kSix;
+  }
+  return kOne;
+}
+
+IkSolutions InverseKinematics::solveConfig(const ToolTarget& target, std::span<const double> reference,
+                                           std::uint8_t config) const {
+  const std::span<const std::uint8_t> all = configurations();
+  if (std::find(all.begin(), all.end(), config) == all.end()) {
+    IkSolutions out;
+    ik::fail(out, IkErrorKind::NoSuchConfiguration, 0,
+             fmt::format("the {} family has no configuration {} (it has {})", familyName(family_.kind), config,
+                         all.size()),
+             "");
+    return out;
+  }
+  return solveBranches(target, reference, ik::Branches{false, config});
+}
+
+IkSolutions InverseKinematics::solveBranches(const ToolTarget& target, std::span<const double> reference,
+                                             const ik::Branches& want) const {
   IkSolutions out;
   const int n = model_.size();
   if (n == 0 || n > kMaxIkJoints || reference.size() != static_cast<std::size_t>(n)) {
@@ -115,10 +159,10 @@ IkSolutions InverseKinematics::solve(const ToolTarget& target, std::span<const d
   }
   switch (family_.kind) {
     case IkFamily::Cartesian: ik::solveCartesian(model_, family_, target, out); break;
-    case IkFamily::Scara: ik::solveScara(model_, family_, target, out); break;
-    case IkFamily::Articulated5: ik::solveArticulated5(model_, family_, target, reference, out); break;
-    case IkFamily::Articulated6: ik::solveArticulated6(model_, family_, target, out); break;
-    case IkFamily::Spherical6: ik::solveSpherical6(model_, family_, target, out); break;
+    case IkFamily::Scara: ik::solveScara(model_, family_, target, want, out); break;
+    case IkFamily::Articulated5: ik::solveArticulated5(model_, family_, target, reference, want, out); break;
+    case IkFamily::Articulated6: ik::solveArticulated6(model_, family_, target, want, out); break;
+    case IkFamily::Spherical6: ik::solveSpherical6(model_, family_, target, want, out); break;
     case IkFamily::Numeric: ik::solveNumeric(model_, family_, target, reference, out); return out;
   }
   // The 6-axis forms meet any orientation, and the five-axis form checks

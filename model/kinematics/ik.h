@@ -59,6 +59,7 @@ enum class IkErrorKind : std::uint8_t {
   Singular,            // too close to a singular pose
   OrientationFixed,    // the arm cannot turn its tool that way
   NotConverged,        // the numeric method got no closer than `distance`
+  NoSuchConfiguration, // solveConfig: the family has no such configuration
 };
 
 struct IkError {
@@ -77,6 +78,10 @@ struct IkSolutions {
   std::span<const IkSolution> view() const { return {solutions.data(), static_cast<std::size_t>(count)}; }
 };
 
+namespace ik {
+struct Branches;  // ik_solvers.h
+}
+
 /// The solver of one chain: its family and the constants its closed form
 /// needs, worked out once.
 class InverseKinematics {
@@ -94,7 +99,25 @@ class InverseKinematics {
   /// kinematics; solutions that miss the target are dropped.
   IkSolutions solve(const ToolTarget& target, std::span<const double> reference) const;
 
+  /// Only the solution of configuration `config` (IkConfig bits, one of
+  /// configurations()): count 1 with exactly the joint values solve() gives
+  /// for that configuration, bit for bit, or count 0 with why that
+  /// configuration does not reach the target. It walks one branch of the
+  /// same closed form (ik_solvers.h, Branches), so it costs about one
+  /// solution. The numeric method has the one configuration 0.
+  IkSolutions solveConfig(const ToolTarget& target, std::span<const double> reference, std::uint8_t config) const;
+
+  /// The configurations the family has, in the order solve() lists its
+  /// solutions: {0} (cartesian, numeric), 2 (scara: elbow), 4
+  /// (articulated-5: shoulder × elbow) or 8 (the six-axis families:
+  /// shoulder × elbow × wrist). A solution's index here is stable: what
+  /// `robotsim ik --solution N` counts from 1.
+  std::span<const std::uint8_t> configurations() const;
+
  private:
+  IkSolutions solveBranches(const ToolTarget& target, std::span<const double> reference,
+                            const ik::Branches& want) const;
+
   ChainModel model_;
   FamilyShape family_;
 };

@@ -9,6 +9,9 @@
 //     (ik_wrist.cpp) then sets the orientation.
 //   Spherical6: the wrist centre again, reached by joint 2 and the
 //     prismatic joint 3 in polar form.
+//
+// Each form walks its branches (shoulder front or back, elbow + or -,
+// wrist flipped or not) as Branches says: all of them, or one path.
 #include <cmath>
 #include <fmt/format.h>
 
@@ -65,8 +68,11 @@ Eigen::Vector3d wristCentre(const ChainModel& m, const ToolTarget& t) {
   return t.position - t.rotation * local;
 }
 
-// Adds both wrist solutions for arm joints q[0..2] already set in `arm`.
-void addWrist(const ChainModel& m, const ToolTarget& t, IkSolution arm, IkSolutions& out, IkError& firstError) {
+// Adds the wrist solutions wanted (both, or the flipped one or the other)
+// for arm joints q[0..2] already set in `arm`. The flipped wrist is
+// derived from the other (ik_wrist.cpp), so either costs the same.
+void addWrist(const ChainModel& m, const ToolTarget& t, IkSolution arm, const Branches& want, IkSolutions& out,
+              IkError& firstError) {
   IkSolution a = arm, b = arm;
   const Eigen::Matrix3d R_0_3 = frameOf(m, arm.q.data(), 3).linear();
   IkError error;
@@ -74,8 +80,8 @@ void addWrist(const ChainModel& m, const ToolTarget& t, IkSolution arm, IkSoluti
     note(firstError, error);
     return;
   }
-  out.solutions[static_cast<std::size_t>(out.count++)] = a;
-  out.solutions[static_cast<std::size_t>(out.count++)] = b;
+  if (want.takes(kWristFlip, false)) out.solutions[static_cast<std::size_t>(out.count++)] = a;
+  if (want.takes(kWristFlip, true)) out.solutions[static_cast<std::size_t>(out.count++)] = b;
 }
 
 void finish(IkSolutions& out, const IkError& firstError) {
@@ -85,7 +91,7 @@ void finish(IkSolutions& out, const IkError& firstError) {
 }  // namespace
 
 void solveArticulated5(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, std::span<const double> ref,
-                       IkSolutions& out) {
+                       const Branches& want, IkSolutions& out) {
   const PlanarRun& run = f.run;
   double th1[2];
   if (!baseAngles(f, t.position, run.along, th1, out)) return;
@@ -100,6 +106,7 @@ void solveArticulated5(const ChainModel& m, const FamilyShape& f, const ToolTarg
   constexpr double kInPlane = 1e-7;
   IkError firstError;
   for (int b = 0; b < 2; ++b) {
+    if (!want.takes(kShoulderBack, b == 1)) continue;
     const Eigen::Isometry3d A1 = dhTransform(j1.dh, deg(th1[b]));
     const Eigen::Vector3d T1 = A1.inverse() * t.position;
     const Eigen::Vector3d a1 = (t.approachGiven ? A1.linear() : R_0_1ref).transpose() * t.rotation.col(2);
@@ -115,10 +122,11 @@ void solveArticulated5(const ChainModel& m, const FamilyShape& f, const ToolTarg
     const Eigen::Vector2d W = T1.head<2>() - run.offset - rotate2(phiLast, run.link[2]);
     std::array<Eigen::Vector2d, 2> phis;
     double miss = 0, sinElbow = 0;
-    if (!solveTwoLink(W, run.link[0], run.link[1], phis, miss, sinElbow)) {
+    if (!solveTwoLink(W, run.link[0], run.link[1], phis, miss, sinElbow, want.elbow())) {
       outOfReach(f, miss, scratch);
     } else if (bentEnough(f, sinElbow, scratch)) {
       for (std::size_t e = 0; e < 2; ++e) {
+        if (!want.takes(kElbowDown, e == 1)) continue;
         IkSolution s;
         s.q[0] = deg(th1[b]);
         const double phi[3] = {phis[e].x(), phis[e].y(), phiLast};
@@ -146,27 +154,30 @@ void solveArticulated5(const ChainModel& m, const FamilyShape& f, const ToolTarg
   finish(out, firstError);
 }
 
-void solveArticulated6(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, IkSolutions& out) {
+void solveArticulated6(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, const Branches& want,
+                       IkSolutions& out) {
   const PlanarRun& run = f.run;
   const Eigen::Vector3d c = wristCentre(m, t);
   double th1[2];
   if (!baseAngles(f, c, run.along, th1, out)) return;
   IkError firstError;
   for (int b = 0; b < 2; ++b) {
+    if (!want.takes(kShoulderBack, b == 1)) continue;
     const Eigen::Vector3d T1 = dhTransform(m.joint(1).dh, deg(th1[b])).inverse() * c;
     std::array<Eigen::Vector2d, 2> phis;
     double miss = 0, sinElbow = 0;
     IkSolutions scratch;
-    if (!solveTwoLink(T1.head<2>() - run.offset, run.link[0], run.link[1], phis, miss, sinElbow)) {
+    if (!solveTwoLink(T1.head<2>() - run.offset, run.link[0], run.link[1], phis, miss, sinElbow, want.elbow())) {
       outOfReach(f, miss, scratch);
     } else if (bentEnough(f, sinElbow, scratch)) {
       for (std::size_t e = 0; e < 2; ++e) {
+        if (!want.takes(kElbowDown, e == 1)) continue;
         IkSolution arm;
         arm.q[0] = deg(th1[b]);
         const double phi[2] = {phis[e].x(), phis[e].y()};
         setRun(run, phi, arm);
         arm.config = static_cast<std::uint8_t>((b ? kShoulderBack : 0) | (e ? kElbowDown : 0));
-        addWrist(m, t, arm, out, firstError);
+        addWrist(m, t, arm, want, out, firstError);
       }
       continue;
     }
@@ -175,13 +186,15 @@ void solveArticulated6(const ChainModel& m, const FamilyShape& f, const ToolTarg
   finish(out, firstError);
 }
 
-void solveSpherical6(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, IkSolutions& out) {
+void solveSpherical6(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, const Branches& want,
+                     IkSolutions& out) {
   const Joint &j2 = m.joint(2), &j3 = m.joint(3), &j4 = m.joint(4);
   const Eigen::Vector3d c = wristCentre(m, t);
   double th1[2];
   if (!baseAngles(f, c, j2.dh.d, th1, out)) return;
   IkError firstError;
   for (int b = 0; b < 2; ++b) {
+    if (!want.takes(kShoulderBack, b == 1)) continue;
     // In frame 1 the wrist centre is Rz(θ2) (a2, -sin α2 · L, d2), L = d3 + cos α3 · d4.
     const Eigen::Vector3d T1 = dhTransform(m.joint(1).dh, deg(th1[b])).inverse() * c;
     const double r = std::hypot(T1.x(), T1.y()), a2 = j2.dh.a;
@@ -197,13 +210,14 @@ void solveSpherical6(const ChainModel& m, const FamilyShape& f, const ToolTarget
              "move the point away from the shoulder");
       } else {
         for (int e = 0; e < 2; ++e) {
+          if (!want.takes(kElbowDown, e == 1)) continue;
           const double L = e == 0 ? reach : -reach;
           IkSolution arm;
           arm.q[0] = deg(th1[b]);
           arm.q[1] = deg(std::atan2(T1.y(), T1.x()) - std::atan2(-j2.sinAlpha * L, a2));
           arm.q[2] = L - j3.cosAlpha * j4.dh.d;
           arm.config = static_cast<std::uint8_t>((b ? kShoulderBack : 0) | (e ? kElbowDown : 0));
-          addWrist(m, t, arm, out, firstError);
+          addWrist(m, t, arm, want, out, firstError);
         }
         continue;
       }

@@ -62,7 +62,7 @@ bool makePlanarRun(const ChainModel& model, int first, int last, const Eigen::Ve
 }
 
 bool solveTwoLink(const Eigen::Vector2d& W, const Eigen::Vector2d& V0, const Eigen::Vector2d& V1,
-                  std::array<Eigen::Vector2d, 2>& phis, double& miss, double& sinElbow) {
+                  std::array<Eigen::Vector2d, 2>& phis, double& miss, double& sinElbow, int only) {
   const double l0 = V0.norm(), l1 = V1.norm(), r = W.norm();
   // The links' own directions: 0 for the usual (a, 0) links, no atan2 then.
   const double b0 = V0.y() == 0.0 && V0.x() > 0 ? 0.0 : std::atan2(V0.y(), V0.x());
@@ -77,6 +77,7 @@ bool solveTwoLink(const Eigen::Vector2d& W, const Eigen::Vector2d& V0, const Eig
   sinElbow = std::sqrt(std::max(0.0, 1.0 - cc * cc));
   const double towards = std::atan2(W.y(), W.x());
   for (int k = 0; k < 2; ++k) {
+    if (only >= 0 && k != only) continue;
     const double g = k == 0 ? gamma : -gamma;
     const double sg = k == 0 ? sinElbow : -sinElbow;
     const double d0 = towards - std::atan2(l1 * sg, l0 + l1 * cc);  // direction of link 0

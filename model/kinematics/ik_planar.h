@@ -52,9 +52,10 @@ bool makePlanarRun(const ChainModel& model, int first, int last, const Eigen::Ve
 /// (the elbow one way and the other) as (Φ_0, Φ_1) in radians, or false
 /// with `miss`, how far W is outside the annulus the links reach (> 0).
 /// `sinElbow` gets |sin| of the angle between the two links' directions,
-/// which is 0 at the stretched and folded singular poses.
+/// which is 0 at the stretched and folded singular poses. With `only` 0
+/// or 1, only phis[only] is worked out (the same bits as with both).
 bool solveTwoLink(const Eigen::Vector2d& W, const Eigen::Vector2d& V0, const Eigen::Vector2d& V1,
-                  std::array<Eigen::Vector2d, 2>& phis, double& miss, double& sinElbow);
+                  std::array<Eigen::Vector2d, 2>& phis, double& miss, double& sinElbow, int only = -1);
 
 /// A 2-D rotation by `angle` radians applied to v.
 inline Eigen::Vector2d rotate2(double angle, const Eigen::Vector2d& v) {

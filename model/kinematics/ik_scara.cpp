@@ -2,7 +2,7 @@
 // The prismatic joint sets the height along the axes; the revolute joints
 // are a two-link planar problem, after taking off the last link at the
 // wanted heading when there is a third (roll) joint. Two solutions: the
-// elbow to one side or the other.
+// elbow to one side or the other (or the one Branches asks for).
 #include <cmath>
 #include <fmt/format.h>
 
@@ -11,7 +11,8 @@
 
 namespace rs::kinematics::ik {
 
-void solveScara(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, IkSolutions& out) {
+void solveScara(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, const Branches& want,
+                IkSolutions& out) {
   const PlanarRun& run = f.run;
   const Eigen::Vector3d& p = t.position;
   double d = 0;  // the prismatic joint's value
@@ -33,7 +34,7 @@ void solveScara(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, 
   }
   std::array<Eigen::Vector2d, 2> phis;
   double miss = 0, sinElbow = 0;
-  if (!solveTwoLink(W, run.link[0], run.link[1], phis, miss, sinElbow))
+  if (!solveTwoLink(W, run.link[0], run.link[1], phis, miss, sinElbow, want.elbow()))
     return fail(out, IkErrorKind::Unreachable, miss,
                 fmt::format("the point is {:.4g} out of the arm's reach (its links reach {:.4g} to {:.4g} from joint "
                             "{}'s axis)",
@@ -47,7 +48,8 @@ void solveScara(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, 
                 fmt::format("keep the point so that joint {} bends at least {} degree", run.revolute[1],
                             kSingularDegrees));
   for (std::size_t k = 0; k < 2; ++k) {
-    IkSolution& s = out.solutions[k];
+    if (!want.takes(kElbowDown, k == 1)) continue;
+    IkSolution& s = out.solutions[static_cast<std::size_t>(out.count++)];
     for (int i = 1; i <= m.size(); ++i) s.q[static_cast<std::size_t>(i - 1)] = m.joint(i).home;
     const double phi[3] = {phis[k].x(), phis[k].y(), phiLast};
     double previous = 0;
@@ -59,7 +61,6 @@ void solveScara(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, 
     if (run.prismatic != 0) s.q[static_cast<std::size_t>(run.prismatic - 1)] = d;
     s.config = k == 0 ? 0 : kElbowDown;
   }
-  out.count = 2;
 }
 
 }  // namespace rs::kinematics::ik

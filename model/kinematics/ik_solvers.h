@@ -11,12 +11,28 @@
 
 namespace rs::kinematics::ik {
 
+/// Which configurations a closed form works out: every one (solve), or
+/// only the one asked for (solveConfig). Each form is a tree of branch
+/// points (shoulder, elbow, wrist); it asks `takes` at each and walks only
+/// the branches taken, so that one configuration costs one path through the
+/// same code, and its result is bit for bit the all-solutions one.
+struct Branches {
+  bool all = true;
+  std::uint8_t config = 0;  ///< IkConfig bits, when !all
+  /// Whether the branch where `bit` is set (`set`) or clear is wanted.
+  bool takes(IkConfig bit, bool set) const { return all || ((config & bit) != 0) == set; }
+  /// For solveTwoLink: -1 both elbows, else the one (0: elbow +, 1: elbow -).
+  int elbow() const { return all ? -1 : (config & kElbowDown) ? 1 : 0; }
+};
+
 void solveCartesian(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, IkSolutions& out);
-void solveScara(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, IkSolutions& out);
+void solveScara(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, const Branches& want, IkSolutions& out);
 void solveArticulated5(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, std::span<const double> ref,
+                       const Branches& want, IkSolutions& out);
+void solveArticulated6(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, const Branches& want,
                        IkSolutions& out);
-void solveArticulated6(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, IkSolutions& out);
-void solveSpherical6(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, IkSolutions& out);
+void solveSpherical6(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, const Branches& want,
+                     IkSolutions& out);
 void solveNumeric(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, std::span<const double> ref,
                   IkSolutions& out);
 

@@ -78,6 +78,8 @@ class Grasping {
   /// The nearest object's box to `point` and the distance to it (0 inside),
   /// for messages about a grasp that took nothing.
   std::optional<std::pair<std::size_t, double>> nearestObject(const Eigen::Vector3d& point) const;
+  /// The centre of object `o`'s box in the world, where it rests now.
+  Eigen::Vector3d boxCentre(std::size_t o) const { return resting_[o] * boxes_[o].center(); }
   bool hasGripper() const { return tool_.has_value(); }
 
   /// What a grasp changes, for snapshots of a run.

@@ -94,7 +94,8 @@ PoseResult PoseSolver::solve(const PoseRequest& request, std::span<const std::in
   target.rotation.col(1) = a.cross(nrm);
   target.rotation.col(2) = a;
 
-  const kinematics::IkSolutions solved = ik_.solve(target, refQ);
+  const kinematics::IkSolutions solved =
+      request.configuration ? ik_.solveConfig(target, refQ, *request.configuration) : ik_.solve(target, refQ);
   if (!solved.ok()) {
     const PoseField field = solved.error.kind != kinematics::IkErrorKind::OrientationFixed ? PoseField::Position
                             : request.approach                                         ? PoseField::Approach

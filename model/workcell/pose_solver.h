@@ -25,6 +25,10 @@ struct PoseRequest {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< the tool centre point
   std::optional<Eigen::Vector3d> approach, normal;     ///< the tool's a (z) and n (x) axes
   std::optional<std::int32_t> grip;                    ///< the gripper motor's encoder count
+  /// Only this configuration (kinematics::IkConfig bits, one of
+  /// InverseKinematics::configurations()), solved alone; unset: every
+  /// solution, the quickest move in range chosen.
+  std::optional<std::uint8_t> configuration;
 };
 
 /// Which part of a request a problem is about (where a message points).

@@ -199,6 +199,7 @@ Json animationModel(const AnimationInput& input) {
   for (const auto& [key, value] : drawing.items()) model[key] = value;
   model["program"] = {{"name", input.listing.name}, {"lines", input.listing.lines}, {"lineOf", input.listing.lineOf}};
   model["run"] = withCollisions(runModel(*input.run, cell, input.outcome), input.collisions);
+  if (!input.warning.empty()) model["run"]["warning"] = input.warning;  // only when there is one
   return model;
 }
 

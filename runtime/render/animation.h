@@ -48,6 +48,9 @@ struct AnimationInput {
   /// that fit at any window size, scaled to the window's smaller side.
   Camera camera;
   std::string outcome;  ///< how the run stopped, for people ("" = END)
+  /// A warning about the whole run, shown with its end ("" = none): the
+  /// gripper closed but never took an object (runtime/run/empty_close.h).
+  std::string warning;
   std::vector<CollisionMark> collisions;
 };
 

@@ -194,7 +194,8 @@ const std::string_view kScript = R"JS('use strict';
     }
     const where = S.k >= 0 ? 'instruction ' + (run.index[S.k] + 1) + ', line ' + line : 'not started';
     const end = S.t >= run.end && S.k >= steps - 1;
-    status.textContent = where + (end ? (run.outcome ? '\nstopped: ' + run.outcome : '\nEND') : '');
+    status.textContent = where + (end ? (run.outcome ? '\nstopped: ' + run.outcome : '\nEND') +
+                                        (run.warning ? '\nwarning: ' + run.warning : '') : '');
     status.classList.toggle('failed', end && !!run.outcome);
     playButton.textContent = S.playing ? 'Pause' : 'Play';
   }

@@ -101,6 +101,16 @@ fs.writeFileSync(hotProgram, ['MOVETO -2800 2800 0 0', 'MOVETO -2800 2800 1500 0
 const hotHtml = path.join(out, 'graze.html');
 robotsim(['animate', hotProgram, '--cell', 'gantry-cell', '--collisions=warn', '-o', hotHtml]);
 const HOT_AT = { before: 4.6, during: 5.1 };  // seconds
+// A grasp 40 too high (Y 1100, not 1490: the tool centre point at y 90,
+// the block's centre at 50, its top at 70): the gripper closes on nothing
+// at line 3 (2.8 s over, 1100 / 800 = 1.375 s down, 100 / 200 = 0.5 s
+// closing: the run ends at 4.675 s), and the page's status says so under
+// END, as `robotsim run` warns.
+const highProgram = path.join(out, 'gantry_high.rsp');
+fs.writeFileSync(highProgram, ['MOVETO -2800 2800 0 0', 'MOVETO -2800 2800 1100 0', 'MOVE 0 0 0 100', 'END', '']
+  .join('\n'));
+const highHtml = path.join(out, 'high.html');
+robotsim(['animate', highProgram, '--cell', 'gantry-cell', '-o', highHtml]);
 const gantryStills = stills(gantryProgram, 'gantry-cell', Object.values(GANTRY_AT));
 // The IRB 120's joints accelerate (runtime/motion.h, mirrored in the page
 // with BigInt): a trapezoid on G and F (0 to 0.449287 s), a triangle on E
@@ -295,6 +305,23 @@ try {
   const othersStill = Object.keys(GANTRY_AT).every((k) => [0, 2, 3].every((o) => moved(G[k].objects[o], G.before.objects[o]) < 1e-9));
   check(othersStill, 'the other block and the pallets do not move');
 
+  // ---- the status under END: a warning when the gripper never took anything
+  const statusAt = async (seconds) => {
+    await page.evaluate((t) => window.robotsim.setTime(t), seconds * 1e6);
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    return page.evaluate(() => document.getElementById('status').textContent);
+  };
+  const carriedEnd = await statusAt(GANTRY_AT.away + 10);
+  check(carriedEnd.endsWith('END'), 'a run that took its block ends with END and no warning', JSON.stringify(carriedEnd));
+  await page.goto('file://' + highHtml);
+  await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
+  const highMiddle = await statusAt(4.0), highEnd = await statusAt(4.675);
+  check(!highMiddle.includes('warning'), 'before the end the status warns of nothing', JSON.stringify(highMiddle));
+  check(highEnd.includes('END\nwarning: line 3: the gripper closed once but never took an object') &&
+        highEnd.includes('its centre 40 below the tool centre point, which is 20 outside its box'),
+        'a grasp 40 too high: the status under END says the gripper never took anything, and why',
+        JSON.stringify(highEnd));
+
   // ---- a collision's parts are drawn red (EGA 4) while it lasts, and only they
   await page.goto('file://' + hotHtml);
   await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
@@ -339,7 +366,7 @@ try {
         `${hot.perPart.join(' and ')} red pixels, ${hot.stray} elsewhere`);
 
   const foreign = requests.filter((u) => u !== url && u !== 'file://' + viewHtml && u !== 'file://' + gantryHtml &&
-                                         u !== 'file://' + trapezoidHtml && u !== 'file://' + hotHtml &&
+                                         u !== 'file://' + trapezoidHtml && u !== 'file://' + hotHtml && u !== 'file://' + highHtml &&
                                          !u.startsWith('data:'));
   check(foreign.length === 0, 'nothing but the page itself was requested', foreign.join(' '));
   check(errors.length === 0, 'no errors on the way', errors.join('; '));

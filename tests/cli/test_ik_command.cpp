@@ -3,6 +3,7 @@
 // forward kinematics, which does not use the inverse.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+#include <cmath>
 #include <sstream>
 
 #include "tests/cli/cli_support.h"
@@ -78,4 +79,30 @@ TEST_CASE("robotsim ik: a five-axis arm refuses an approach out of its arm's pla
   CHECK(r.code == 2);
   CHECK(r.err.find("keeps its approach in the plane of its arm") != std::string::npos);
   CHECK(r.err.find("hint: here it reaches APPROACH 0 -1 0") != std::string::npos);
+}
+
+TEST_CASE("robotsim ik --solution N solves one configuration alone", "[cli][ik]") {
+  // The SCARA's two configurations for (-130, 800, 0): elbow + is what the
+  // command chooses anyway (docs/cli.md's example), elbow - the mirror.
+  const auto one = runCli({"ik", "scara-pick", "--solution", "1", "--", "-130", "800", "0"});
+  REQUIRE(one.code == 0);
+  CHECK(one.out.find("solution 1 of 2 asked for (elbow +), solved alone") != std::string::npos);
+  CHECK(one.out.find("P1 -513 492 333 222 0") != std::string::npos);
+  const auto two = runCli({"ik", "scara-pick", "--solution", "2", "--json", "--", "-130", "800", "0"});
+  REQUIRE(two.code == 0);
+  const auto j = nlohmann::ordered_json::parse(two.out);  // the encoders in motor order
+  CHECK(j["solution"] == 2);
+  CHECK(j["points_line"] != "P1 -513 492 333 222 0");
+  std::string list;
+  for (const auto& [letter, v] : j["encoders"].items()) list += (list.empty() ? "" : ",") + std::to_string(v.get<int>());
+  // where's forward kinematics puts the other elbow at the same point,
+  // within what whole counts allow (the same 0.2341 as elbow +).
+  const auto w = runCli({"where", "scara-pick", "--encoders", list, "--json"});
+  REQUIRE(w.code == 0);
+  const auto tcp = nlohmann::json::parse(w.out)["position"];
+  CHECK(std::hypot(tcp[0].get<double>() + 130, tcp[1].get<double>() - 800, tcp[2].get<double>()) < 0.25);
+  // A configuration the family does not have.
+  const auto bad = runCli({"ik", "scara-pick", "--solution", "3", "--", "-130", "800", "0"});
+  CHECK(bad.code == 2);
+  CHECK(bad.err.find("--solution: error: the scara family has 2 configurations: N from 1 to 2") != std::string::npos);
 }

@@ -83,9 +83,12 @@ TEST_CASE("the gripper closing on nothing is traced, and a run that never takes 
   const std::string cell = dir.write("post-cell.rsd", kCell), program = dir.write("swing.rsp", kProgram);
   const auto r = runCli({"run", program, "--cell", cell, "--collisions=off", "--trace"});
   CHECK(r.code == 0);
-  // At home the tool centre point is (-225, 840, 0): 90 above the table's top.
-  CHECK(r.out.find("closes on nothing: the tool centre point (-225, 840, 0) is in no object (90 from table (object "
-                   "1), the nearest)") != std::string::npos);
+  // At home the tool centre point is (-225, 840, 0): 90 above the table's
+  // top (y 750). The table's box (stdlib/objects/table.rsd, 800 x 750 x
+  // 500 placed AT -500 0 250) spans x -500..300, y 0..750, z -250..250:
+  // its centre (-100, 375, 0) is 465 below and 125 towards +x.
+  CHECK(r.out.find("closes on nothing (nearest: table (object 1), its centre 465 below and 125 towards +x of the "
+                   "tool centre point, which is 90 outside its box)") != std::string::npos);
   CHECK(r.err.find(program + ":3:9: warning: the gripper closed once but never took an object") != std::string::npos);
 }
 

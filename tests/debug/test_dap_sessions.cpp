@@ -165,3 +165,31 @@ TEST_CASE("robotsim dap: a client that closes its pipe mid-run ends the process 
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 1);
 }
+
+TEST_CASE("dap: the end of a run whose gripper never took anything says so on the console", "[debug][dap][grasp]") {
+  // Over block 1 of gantry-cell, down 110 (not 149): the gripper closes at
+  // line 3 with the tool centre point 40 above the block's centre
+  // (tests/runtime/test_empty_close.cpp works it out).
+  const rs::testing::TempDir dir;
+  const std::string program = dir.write("high.rsp",
+                                        "        MOVETO -2800 2800 0 0\n"
+                                        "        MOVE 0 0 1100 0\n"
+                                        "        MOVE 0 0 0 100\n"
+                                        "        END\n");
+  const auto request = [](int seq, const std::string& command, Json arguments) {
+    return rs::wire::frameMessage(
+        Json{{"seq", seq}, {"type", "request"}, {"command", command}, {"arguments", std::move(arguments)}}.dump());
+  };
+  const Served s = serveBytes(request(1, "initialize", {{"adapterID", "robotsim"}}) +
+                              request(2, "launch", {{"program", program}, {"cell", "gantry-cell"}}) +
+                              request(3, "configurationDone", Json::object()) +
+                              request(4, "disconnect", Json::object()));
+  INFO(s.log);
+  std::string console;
+  for (const Json& m : s.messages)
+    if (m.value("event", "") == "output") console += m["body"]["output"].get<std::string>();
+  CHECK(console.find("the program ended; warning at line 3: the gripper closed once but never took an object; "
+                     "here it closed on nothing with the tool centre point at (220, 90, 680) (nearest: block "
+                     "(object 2), its centre 40 below the tool centre point, which is 20 outside its box)\n") !=
+        std::string::npos);
+}
