@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/ascii.h"
+#include "base/number_text.h"
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/number_list.h"
@@ -16,6 +17,8 @@
 #include "model/workcell/pose_solver.h"
 
 namespace rs::cli {
+
+using base::formatNumber;
 
 namespace {
 

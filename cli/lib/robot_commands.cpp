@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "base/number_text.h"
 #include "base/text.h"
 #include "cli/lib/app.h"
 #include "cli/lib/number_list.h"
@@ -13,6 +14,8 @@
 #include "model/kinematics/joint_values.h"
 
 namespace rs::cli {
+
+using base::formatNumber;
 
 namespace {
 
@@ -94,14 +97,6 @@ std::string matrixText(const Eigen::Isometry3d& m) {
 }
 
 }  // namespace
-
-std::string formatNumber(double v) {
-  if (std::abs(v) < 5e-5) return "0";
-  std::string s = fmt::format("{:.4f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s;
-}
 
 double normalizeDegrees(double degrees) {
   double d = std::remainder(degrees, 360.0);  // exact, in [-180, 180]
