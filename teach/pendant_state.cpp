@@ -2,19 +2,15 @@
 
 #include <fmt/format.h>
 
+#include "runtime/render/animation.h"
+
 namespace rs::teach {
 
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-// Column-major 3x4, as the animation page's matrices (runtime/render/animation.h).
-Json matrix(const Eigen::Isometry3d& F) {
-  Json m = Json::array();
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 3; ++r) m.push_back(F.matrix()(r, c));
-  return m;
-}
+using render::frameJson;
 
 Json lines(std::uint8_t mask) {
   Json a = Json::array();
@@ -34,7 +30,7 @@ std::string_view kindName(vm::JointKind k) {
 Json objectPoses(const std::vector<Eigen::Isometry3d>& poses, const std::vector<Eigen::Isometry3d>& placed) {
   Json a = Json::array();
   for (std::size_t o = 0; o < poses.size() && o < placed.size(); ++o)
-    a.push_back(matrix(poses[o] * placed[o].inverse(Eigen::Isometry)));
+    a.push_back(frameJson(poses[o] * placed[o].inverse(Eigen::Isometry)));
   return a;
 }
 
@@ -63,7 +59,7 @@ Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& pl
     const PendantObject& ob = s.objects[o];
     const Eigen::Isometry3d P = o < placed.size() ? placed[o] : Eigen::Isometry3d::Identity();
     objects.push_back({{"name", ob.name},
-                       {"pose", matrix(ob.pose * P.inverse(Eigen::Isometry))},
+                       {"pose", frameJson(ob.pose * P.inverse(Eigen::Isometry))},
                        {"held", ob.held},
                        {"moved", ob.moved}});
   }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "base/number_text.h"
 #include "base/text.h"
 #include "cli/lib/app.h"
 #include "compiler/library.h"
@@ -15,6 +16,8 @@
 #include "model/workcell/support.h"
 
 namespace rs::cli {
+
+using base::formatNumber;
 
 namespace {
 

@@ -1,14 +1,15 @@
 #include "cli/lib/ik_command.h"
 
 #include <CLI/CLI.hpp>
-#include <charconv>
 #include <cmath>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "base/ascii.h"
+#include "base/number_text.h"
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/number_list.h"
 #include "cli/lib/robot_commands.h"
 #include "compiler/library.h"
 #include "diag/diagnostic.h"
@@ -17,29 +18,17 @@
 
 namespace rs::cli {
 
+using base::formatNumber;
+
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-// "1,0,-1" -> numbers; an error names the option and the bad item.
+// "1,0,-1" -> numbers, `want` of them (any number when 0); an error names
+// the option.
 bool numbers(const std::string& text, std::string_view option, std::size_t want, std::vector<double>& out,
              std::ostream& err) {
-  out.clear();
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = text.find(',', start);
-    const std::string piece = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    double v = 0;
-    const char* first = piece.data() + (!piece.empty() && piece[0] == '+' ? 1 : 0);
-    const auto [ptr, ec] = std::from_chars(first, piece.data() + piece.size(), v);
-    if (piece.empty() || ec != std::errc() || ptr != piece.data() + piece.size() || !std::isfinite(v)) {
-      err << fmt::format("robotsim: error: {}: '{}' is not a number\n", option, base::safeText(piece));
-      return false;
-    }
-    out.push_back(v);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
+  if (!parseNumberList(text, option, out, err)) return false;
   if (want != 0 && out.size() != want) {
     err << fmt::format("robotsim: error: {} takes {} numbers separated by commas, found {}\n", option, want, out.size());
     return false;

@@ -1,18 +1,21 @@
 #include "cli/lib/robot_commands.h"
 
-#include <charconv>
 #include <cmath>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "base/number_text.h"
 #include "base/text.h"
 #include "cli/lib/app.h"
+#include "cli/lib/number_list.h"
 #include "compiler/library.h"
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/forward_kinematics.h"
 #include "model/kinematics/joint_values.h"
 
 namespace rs::cli {
+
+using base::formatNumber;
 
 namespace {
 
@@ -23,25 +26,6 @@ std::optional<workcell::Robot> loadRobot(const RobotQuery& q, std::ostream& err)
   std::optional<workcell::Robot> robot = library.robot(q.robot);
   for (const diag::Diagnostic& d : library.diagnostics()) err << diag::render(d, library.source(d.file));
   return robot;
-}
-
-// "76,72,-90" -> numbers; an error names the bad item.
-bool parseList(const std::string& text, std::string_view option, std::vector<double>& out, std::ostream& err) {
-  std::size_t start = 0;
-  for (int item = 1;; ++item) {
-    const std::size_t comma = text.find(',', start);
-    const std::string piece = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    double v = 0;
-    const char* first = piece.data() + (!piece.empty() && piece[0] == '+' ? 1 : 0);
-    const auto [ptr, ec] = std::from_chars(first, piece.data() + piece.size(), v);
-    if (piece.empty() || ec != std::errc() || ptr != piece.data() + piece.size() || !std::isfinite(v)) {
-      err << fmt::format("robotsim: error: {}: value {} '{}' is not a number\n", option, item, piece);
-      return false;
-    }
-    out.push_back(v);
-    if (comma == std::string::npos) return true;
-    start = comma + 1;
-  }
 }
 
 // Joint values q from --theta, --encoders, or home when neither is given.
@@ -55,7 +39,7 @@ bool jointValues(const RobotQuery& q, const workcell::Robot& robot, std::vector<
   }
   std::vector<double> list;
   if (!q.theta.empty()) {
-    if (!parseList(q.theta, "--theta", list, err)) return false;
+    if (!parseNumberList(q.theta, "--theta", list, err)) return false;
     if (list.size() != n) {
       err << fmt::format("robotsim: error: --theta needs {} values (one per joint), found {}\n", n, list.size());
       return false;
@@ -64,7 +48,7 @@ bool jointValues(const RobotQuery& q, const workcell::Robot& robot, std::vector<
     return true;
   }
   if (!q.encoders.empty()) {
-    if (!parseList(q.encoders, "--encoders", list, err)) return false;
+    if (!parseNumberList(q.encoders, "--encoders", list, err)) return false;
     const std::size_t motors = n + (robot.hasGripper ? 1 : 0);
     if (list.size() != n && list.size() != motors) {
       err << fmt::format("robotsim: error: --encoders needs {} values (one per joint{}), found {}\n", n,
@@ -113,14 +97,6 @@ std::string matrixText(const Eigen::Isometry3d& m) {
 }
 
 }  // namespace
-
-std::string formatNumber(double v) {
-  if (std::abs(v) < 5e-5) return "0";
-  std::string s = fmt::format("{:.4f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s;
-}
 
 double normalizeDegrees(double degrees) {
   double d = std::remainder(degrees, 360.0);  // exact, in [-180, 180]

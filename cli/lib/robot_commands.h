@@ -23,9 +23,6 @@ int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err);
 int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err);
 int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err);
 
-/// 4 decimals at most, trailing zeros dropped, never "-0": "90", "-469.4629".
-std::string formatNumber(double v);
-
 /// An angle in degrees brought into (-180, 180], at full precision: -180
 /// and 180 are 180, 190 is -170, -179.99999 stays -179.99999.
 double normalizeDegrees(double degrees);

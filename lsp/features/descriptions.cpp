@@ -9,6 +9,7 @@
 
 #include "base/ascii.h"
 #include "base/file_io.h"
+#include "base/number_text.h"
 #include "compiler/description.h"
 #include "compiler/library.h"
 #include "lsp/features/features.h"
@@ -18,6 +19,8 @@
 #include "runtime/stimuli.h"
 
 namespace rs::lsp {
+
+using base::formatNumber;
 
 namespace {
 
@@ -124,14 +127,6 @@ void symbolsOf(const Document& doc, Encoding enc, const std::vector<Def>& defs, 
   }
 }
 
-std::string number(double v) {
-  if (std::abs(v) < 5e-5) return "0";
-  std::string s = fmt::format("{:.4f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s;
-}
-
 }  // namespace
 
 Json descriptionDiagnostics(const Document& doc, Encoding enc) {
@@ -186,8 +181,9 @@ Json descriptionHover(const Document& doc, Encoding enc, Position at, const std:
       const bool revolute = row.type == kinematics::JointType::Revolute;
       return reply(fmt::format(
           "link `{}`: link {} of {}\n\nD-H row {} ({}): theta = {}, alpha = {}, a = {}, d = {} (home {})", l.name, i, r.name, i,
-          kinematics::jointTypeName(row.type), revolute ? fmt::format("theta{}", i) : number(row.theta),
-          number(row.alpha), number(row.a), revolute ? number(row.d) : fmt::format("d{}", i), number(row.home())));
+          kinematics::jointTypeName(row.type), revolute ? fmt::format("theta{}", i) : formatNumber(row.theta),
+          formatNumber(row.alpha), formatNumber(row.a), revolute ? formatNumber(row.d) : fmt::format("d{}", i),
+          formatNumber(row.home())));
     }
   return nullptr;
 }

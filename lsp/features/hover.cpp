@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "base/number_text.h"
 #include "lsp/features/features.h"
 #include "lsp/protocol.h"
 #include "model/workcell/tool_tracker.h"
@@ -14,15 +15,9 @@
 
 namespace rs::lsp {
 
-namespace {
+using base::formatNumber;
 
-std::string number(double v) {
-  if (std::abs(v) < 5e-5) return "0";
-  std::string s = fmt::format("{:.4f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s;
-}
+namespace {
 
 Json markdown(std::string text, const Range& range) {
   return {{"contents", {{"kind", "markdown"}, {"value", std::move(text)}}}, {"range", toJson(range)}};
@@ -88,8 +83,8 @@ std::string pointHover(const ProgramContext& p, const Occurrence& o) {
       point->values.size() >= static_cast<std::size_t>(robot->robot.chain->encoderCount())) {
     workcell::ToolTracker tracker(*robot);
     const std::array<double, 3> tcp = tracker.tcp(point->values);
-    out += fmt::format("\n\nTool centre point of {}: ({}, {}, {})", robot->robot.name, number(tcp[0]), number(tcp[1]),
-                       number(tcp[2]));
+    out += fmt::format("\n\nTool centre point of {}: ({}, {}, {})", robot->robot.name, formatNumber(tcp[0]),
+                       formatNumber(tcp[1]), formatNumber(tcp[2]));
   }
   return out;
 }

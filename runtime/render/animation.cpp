@@ -13,14 +13,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// Column-major 3x4: the x, y, z axes, then the origin.
-Json matrix(const Eigen::Isometry3d& F) {
-  Json m = Json::array();
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 3; ++r) m.push_back(F.matrix()(r, c));
-  return m;
-}
-
 Json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 // A shape's lines in the coordinates of the frame it moves with.
@@ -79,7 +71,7 @@ Json robotModel(const CellPoser& poser, std::size_t r, bool runsProgram) {
           {"letters", letters},
           {"program", runsProgram},
           {"tool", poser.hasToolMark(r)},
-          {"base", matrix(poser.frame(r, 0))},
+          {"base", frameJson(poser.frame(r, 0))},
           {"joints", joints},
           {"parts", parts},
           {"gripper", gripper}};
@@ -96,7 +88,7 @@ Json graspModel(const runtime::RunLog& rec, const workcell::Workcell& cell) {
     if (g.object >= cell.objects.size()) continue;  // never expected: the log saw this cell
     step.push_back(record.step), at.push_back(g.at), object.push_back(g.object), held.push_back(g.held);
     const Eigen::Isometry3d P_inv = cell.objects[g.object].F_world_design.inverse(Eigen::Isometry);
-    for (const auto& v : matrix(g.pose * P_inv)) pose.push_back(v);
+    for (const auto& v : frameJson(g.pose * P_inv)) pose.push_back(v);
   }
   return {{"step", step}, {"at", at}, {"object", object}, {"held", held}, {"pose", pose}};
 }
@@ -174,6 +166,13 @@ Json styleModel() {
 }
 
 }  // namespace
+
+nlohmann::ordered_json frameJson(const Eigen::Isometry3d& F) {
+  Json m = Json::array();
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r) m.push_back(F.matrix()(r, c));
+  return m;
+}
 
 Json cellDrawing(const workcell::Workcell& cell, const Camera& camera) {
   const CellPoser poser(cell);

@@ -80,6 +80,10 @@ std::string animationHtml(const AnimationInput& input);
 /// animationModel. The shared drawing script (drawScript) reads it.
 nlohmann::ordered_json cellDrawing(const workcell::Workcell& cell, const Camera& camera);
 
+/// A frame as the pages read it: column-major 3x4, the x, y, z axes, then
+/// the origin. The teach pendant's state sends its frames the same way.
+nlohmann::ordered_json frameJson(const Eigen::Isometry3d& F);
+
 /// The page's parts, for tests that check the script separately, and for
 /// other pages that share them (the teach pendant's).
 std::string_view pageScript();

@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <string_view>
 
+#include "base/number_text.h"
 #include "teach/keys.h"
 
 namespace rs::teach::tui {
+
+using base::formatNumber;
 
 namespace {
 
@@ -58,14 +61,6 @@ std::string kindName(vm::JointKind k) {
   return "";
 }
 
-std::string number(double v) {
-  if (std::abs(v) < 5e-5) return "0";
-  std::string s = fmt::format("{:.4f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s;
-}
-
 // A key of the shared map as a person reads it ("ArrowLeft" -> "Left").
 std::string keyLabel(std::string_view key) {
   if (key.substr(0, 5) == "Arrow") return std::string(key.substr(5));
@@ -96,7 +91,9 @@ int worldPanel(Canvas& c, const PendantState& s, int row, int bottom) {
     c.put(row, 1, "TOOL CENTRE POINT (world)");
     c.mark(row, 1, 25, Paint::Title);
     if (s.tcp)
-      c.put(row + 1, 3, fmt::format("x {}  y {}  z {}", number((*s.tcp)[0]), number((*s.tcp)[1]), number((*s.tcp)[2])),
+      c.put(row + 1, 3,
+            fmt::format("x {}  y {}  z {}", formatNumber((*s.tcp)[0]), formatNumber((*s.tcp)[1]),
+                        formatNumber((*s.tcp)[2])),
             kLeftWidth);
     else
       c.put(row + 1, 3, "(the robot has no chain)", kLeftWidth);

@@ -15,46 +15,16 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { parseArgs } from 'node:util';
+import { check, checkCount, chromiumAt, launch, source, testOptions, watchdog } from './harness.mjs';
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const source = path.resolve(here, '../..');
-const { values: opt } = parseArgs({
-  options: {
-    robotsim: { type: 'string' },
-    out: { type: 'string' },
-    chromium: { type: 'string', default: '/usr/bin/chromium' },
-    timeout: { type: 'string', default: '120' },
-  },
-});
-if (!opt.robotsim) fail('usage: animation_test.mjs --robotsim PATH [--out DIR] [--chromium PATH] [--timeout S]');
-
-function fail(message) {
-  console.error('FAIL: ' + message);
-  process.exit(1);
-}
-let checks = 0;
-function check(ok, what, detail = '') {
-  if (!ok) throw new Error(what + (detail ? ': ' + detail : ''));
-  checks++;
-  console.log('ok   ' + what + (detail ? '  (' + detail + ')' : ''));
-}
-
-const { chromium } = await import('playwright-core').catch(() =>
-  fail('playwright-core is missing: run `npm ci --prefix tests/browser` (see tests/browser/README.md)'));
-if (!fs.existsSync(opt.chromium)) fail(`no browser at ${opt.chromium}: install Debian's chromium`);
+const opt = testOptions('animation_test.mjs --robotsim PATH [--out DIR] [--chromium PATH] [--timeout S]');
+const chromium = await chromiumAt(opt.chromium);
 
 const out = opt.out ? path.resolve(opt.out) : fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-browser-'));
 fs.mkdirSync(out, { recursive: true });
 const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-chromium-'));
 let context = null;
-const deadline = setTimeout(async () => {
-  console.error(`FAIL: timed out after ${opt.timeout} s`);
-  try { await context?.close(); } catch {}
-  fs.rmSync(profile, { recursive: true, force: true });
-  process.exit(1);
-}, Number(opt.timeout) * 1000);
+const deadline = watchdog(opt.timeout, () => context, () => fs.rmSync(profile, { recursive: true, force: true }));
 
 // ---- the page and the reference picture, from robotsim itself
 const examples = path.join(source, 'examples');
@@ -139,13 +109,7 @@ function difference(mine, reference) {
 const encodersOf = (reference) => reference.legend[1].split(/\s+/).slice(1).map((w) => Number(w.split('=')[1]));
 
 try {
-  context = await chromium.launchPersistentContext(profile, {
-    executablePath: opt.chromium,
-    headless: true,
-    viewport: { width: 1280, height: 800 },
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
-           '--disable-component-update', '--disable-sync'],
-  });
+  context = await launch(chromium, opt.chromium, profile, { width: 1280, height: 800 });
   const page = context.pages()[0] ?? await context.newPage();
   const requests = [], errors = [];
   page.on('request', (r) => requests.push(r.url()));
@@ -370,7 +334,7 @@ try {
                                          !u.startsWith('data:'));
   check(foreign.length === 0, 'nothing but the page itself was requested', foreign.join(' '));
   check(errors.length === 0, 'no errors on the way', errors.join('; '));
-  console.log(`PASS: ${checks} checks`);
+  console.log(`PASS: ${checkCount()} checks`);
 } catch (e) {
   console.error('FAIL: ' + e.message);
   process.exitCode = 1;

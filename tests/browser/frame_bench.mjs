@@ -12,32 +12,19 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { parseArgs } from 'node:util';
 import { chromium } from 'playwright-core';
+import { launch, options } from './harness.mjs';
 
-const { values: opt } = parseArgs({
-  options: {
-    robotsim: { type: 'string' },
-    cell: { type: 'string' },
-    program: { type: 'string' },
-    seconds: { type: 'string', default: '8' },
-    chromium: { type: 'string', default: '/usr/bin/chromium' },
-  },
-});
-if (!opt.robotsim || !opt.cell || !opt.program) {
-  console.error('usage: frame_bench.mjs --robotsim PATH --cell FILE --program FILE [--seconds S]');
-  process.exit(2);
-}
+const opt = options('frame_bench.mjs --robotsim PATH --cell FILE --program FILE [--seconds S]', {
+  cell: { type: 'string' },
+  program: { type: 'string' },
+  seconds: { type: 'string', default: '8' },
+}, ['robotsim', 'cell', 'program']);
 const work = fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-frames-'));
 const html = path.join(work, 'bench.html');
 execFileSync(opt.robotsim, ['animate', opt.program, '--cell', opt.cell, '-o', html], { stdio: 'inherit' });
-const context = await chromium.launchPersistentContext(path.join(work, 'profile'), {
-  executablePath: opt.chromium,
-  headless: true,
-  viewport: { width: 1404, height: 800 },  // a 1024-pixel-wide canvas
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
-         '--disable-component-update', '--disable-sync'],
-});
+const context = await launch(chromium, opt.chromium, path.join(work, 'profile'),
+                             { width: 1404, height: 800 });  // a 1024-pixel-wide canvas
 try {
   const page = context.pages()[0] ?? await context.newPage();
   await page.goto('file://' + html);

@@ -19,36 +19,12 @@ import { execFileSync, spawn } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { parseArgs } from 'node:util';
+import { check, checkCount, chromiumAt, fail, launch, source, started, testOptions, watchdog } from './harness.mjs';
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const source = path.resolve(here, '../..');
-const { values: opt } = parseArgs({
-  options: {
-    robotsim: { type: 'string' },
-    out: { type: 'string' },
-    images: { type: 'string' },
-    chromium: { type: 'string', default: '/usr/bin/chromium' },
-    timeout: { type: 'string', default: '120' },
-  },
-});
-if (!opt.robotsim) fail('usage: teach_test.mjs --robotsim PATH [--out DIR] [--images DIR] [--chromium PATH] [--timeout S]');
-
-function fail(message) {
-  console.error('FAIL: ' + message);
-  process.exit(1);
-}
-let checks = 0;
-function check(ok, what, detail = '') {
-  if (!ok) throw new Error(what + (detail ? ': ' + detail : ''));
-  checks++;
-  console.log('ok   ' + what + (detail ? '  (' + detail + ')' : ''));
-}
-
-const { chromium } = await import('playwright-core').catch(() =>
-  fail('playwright-core is missing: run `npm ci --prefix tests/browser` (see tests/browser/README.md)'));
-if (!fs.existsSync(opt.chromium)) fail(`no browser at ${opt.chromium}: install Debian's chromium`);
+const here = path.join(source, 'tests/browser');
+const opt = testOptions('teach_test.mjs --robotsim PATH [--out DIR] [--images DIR] [--chromium PATH] [--timeout S]',
+                        { images: { type: 'string' } });
+const chromium = await chromiumAt(opt.chromium);
 
 const out = opt.out ? path.resolve(opt.out) : fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-teach-'));
 fs.mkdirSync(out, { recursive: true });
@@ -60,12 +36,7 @@ function cleanUp() {
   fs.rmSync(profile, { recursive: true, force: true });
   fs.rmSync(work, { recursive: true, force: true });
 }
-const deadline = setTimeout(async () => {
-  console.error(`FAIL: timed out after ${opt.timeout} s`);
-  try { await context?.close(); } catch {}
-  cleanUp();
-  process.exit(1);
-}, Number(opt.timeout) * 1000);
+const deadline = watchdog(opt.timeout, () => context, cleanUp);
 
 // The program: examples/pick_and_place.rsp, whose POINTS rows are
 // right-aligned at columns 17, 23, 26, 32 and 37.
@@ -79,38 +50,17 @@ fs.writeFileSync(program, original);
 // catches up at 32.
 const golden = fs.readFileSync(path.join(here, 'golden/teach_pick_and_place.rsp'), 'utf8');
 
-// A process's output so far, and the first match of `pattern` in it.
-function started(args, stdin = 'ignore') {
-  const proc = spawn(opt.robotsim, args, { stdio: [stdin, 'pipe', 'pipe'] });
-  const p = { proc, out: '', err: '' };
-  proc.stdout.on('data', (d) => { p.out += d; });
-  proc.stderr.on('data', (d) => { p.err += d; });
-  p.match = (pattern) => new Promise((resolve, reject) => {
-    const poll = setInterval(() => {
-      const m = p.out.match(pattern);
-      if (m) { clearInterval(poll); resolve(m); }
-      if (proc.exitCode !== null) { clearInterval(poll); reject(new Error(args[0] + ' exited: ' + p.err)); }
-    }, 50);
-  });
-  return p;
-}
 const teachUrl = /http:\/\/127\.0\.0\.1:\d+\/\?token=[0-9a-f]{32}/;
 
 // ---- robotsim teach, its URL from its first lines
-const teach = started(['teach', program, '--cell', 'scara-pick']);
+const teach = started(opt.robotsim, ['teach', program, '--cell', 'scara-pick']);
 server = teach.proc;
 const url = (await teach.match(teachUrl).catch((e) => { cleanUp(); fail(e.message); }))[0];
 const origin = new URL(url).origin;
 let emulator = null, deviceTeach = null;
 
 try {
-  context = await chromium.launchPersistentContext(profile, {
-    executablePath: opt.chromium,
-    headless: true,
-    viewport: { width: 1280, height: 860 },
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
-           '--disable-component-update', '--disable-sync'],
-  });
+  context = await launch(chromium, opt.chromium, profile, { width: 1280, height: 860 });
   const page = context.pages()[0] ?? await context.newPage();
   const requests = [], errors = [];
   page.on('request', (r) => requests.push(r.url()));
@@ -283,17 +233,13 @@ try {
         '--open hands the URL it printed to xdg-open');
 
   // ---- with a device: robotsim emulate on a pty, robotsim teach --device on it
-  emulator = started(['emulate', '--speed', '10'], 'pipe');
+  emulator = started(opt.robotsim, ['emulate', '--speed', '10'], 'pipe');
   const device = (await emulator.match(/emulator on (\/dev\/\S+)/))[1];
   const deviceProgram = path.join(work, 'device.rsp');
   fs.writeFileSync(deviceProgram, '        END\nPOINTS\n');
-  deviceTeach = started(['teach', deviceProgram, '--cell', 'scara-pick', '--device', device, '--serial-set', 'timeout=0.2']);
+  deviceTeach = started(opt.robotsim, ['teach', deviceProgram, '--cell', 'scara-pick', '--device', device, '--serial-set', 'timeout=0.2']);
   const deviceUrl = (await deviceTeach.match(teachUrl))[0];
-  context = await chromium.launchPersistentContext(profile, {
-    executablePath: opt.chromium, headless: true, viewport: { width: 1280, height: 860 },
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
-           '--disable-component-update', '--disable-sync'],
-  });
+  context = await launch(chromium, opt.chromium, profile, { width: 1280, height: 860 });
   const dpage = context.pages()[0] ?? await context.newPage();
   await dpage.goto(deviceUrl);
   await dpage.waitForFunction(() => window.robotsim && window.robotsim.state, null, { timeout: 10000 });
@@ -333,7 +279,7 @@ try {
   deviceTeach.proc.kill('SIGINT');
   check((await deviceExit) === 0, 'Ctrl-C stops robotsim teach --device');
   emulator.proc.stdin.write('quit\n');
-  console.log(`PASS: ${checks} checks`);
+  console.log(`PASS: ${checkCount()} checks`);
 } catch (e) {
   console.error('FAIL: ' + e.message);
   console.error(teach.err + (deviceTeach ? deviceTeach.err : ''));

@@ -33,11 +33,17 @@ constexpr const char* kProgram =
     "        MOVE 0 0 0 0 120\n"
     "        END\n";
 
+// The post's cell and the swinging program, written to a fresh folder.
+struct PostCell {
+  const TempDir dir;
+  const std::string cell = dir.write("post-cell.rsd", kCell);
+  const std::string program = dir.write("swing.rsp", kProgram);
+};
+
 }  // namespace
 
-TEST_CASE("a move through a post stops the run with the line, the time and the parts", "[collision][cli]") {
-  const TempDir dir;
-  const std::string cell = dir.write("post-cell.rsd", kCell), program = dir.write("swing.rsp", kProgram);
+TEST_CASE_METHOD(PostCell, "a move through a post stops the run with the line, the time and the parts",
+                 "[collision][cli]") {
   const auto r = runCli({"run", program, "--cell", cell, "--trace"});
   CHECK(r.code == 1);
   INFO(r.err);
@@ -52,9 +58,8 @@ TEST_CASE("a move through a post stops the run with the line, the time and the p
   CHECK(r.out.find("  collisions      line 1, ") != std::string::npos);
 }
 
-TEST_CASE("with --collisions=warn every colliding move is listed and the run goes on, off checks nothing", "[collision][cli]") {
-  const TempDir dir;
-  const std::string cell = dir.write("post-cell.rsd", kCell), program = dir.write("swing.rsp", kProgram);
+TEST_CASE_METHOD(PostCell, "with --collisions=warn every colliding move is listed and the run goes on, off checks nothing",
+                 "[collision][cli]") {
   const auto warn = runCli({"run", program, "--cell", cell, "--collisions=warn", "--format=json"});
   CHECK(warn.code == 0);
   const auto j = nlohmann::json::parse(warn.out);
@@ -78,9 +83,8 @@ TEST_CASE("with --collisions=warn every colliding move is listed and the run goe
   CHECK(bad.err.find("--collisions: error: 'maybe' is not a collision mode") != std::string::npos);
 }
 
-TEST_CASE("the gripper closing on nothing is traced, and a run that never takes gets a warning", "[collision][cli]") {
-  const TempDir dir;
-  const std::string cell = dir.write("post-cell.rsd", kCell), program = dir.write("swing.rsp", kProgram);
+TEST_CASE_METHOD(PostCell, "the gripper closing on nothing is traced, and a run that never takes gets a warning",
+                 "[collision][cli]") {
   const auto r = runCli({"run", program, "--cell", cell, "--collisions=off", "--trace"});
   CHECK(r.code == 0);
   // At home the tool centre point is (-225, 840, 0): 90 above the table's
@@ -134,9 +138,8 @@ TEST_CASE("robotsim test: no collision, and collides with NAME at line N", "[col
   CHECK(fail.out.find(bad + ":4:3: error: expected a collision with post at line 3;") != std::string::npos);
 }
 
-TEST_CASE("animate puts each collision's parts and moment in the page's model", "[collision][render][cli]") {
-  const TempDir dir;
-  const std::string cell = dir.write("post-cell.rsd", kCell), program = dir.write("swing.rsp", kProgram);
+TEST_CASE_METHOD(PostCell, "animate puts each collision's parts and moment in the page's model",
+                 "[collision][render][cli]") {
   const auto r = runCli({"animate", program, "--cell", cell, "--collisions=warn", "-o", dir.file("swing.html")});
   REQUIRE(r.code == 0);
   const std::string html = rs::testing::readBytes(dir.file("swing.html"));

@@ -11,13 +11,11 @@
 // (Y 1490), as gantry_pick does (docs/teach.md, "Collisions").
 #include <catch2/catch.hpp>
 
-#include "../render/render_test_util.h"
-#include "base/file_io.h"
-#include "launch/program.h"
 #include "teach/commands.h"
 #include "teach/keys.h"
 #include "teach/pendant.h"
 #include "tests/cli/cli_support.h"
+#include "tests/teach/gantry_pendant.h"
 
 namespace {
 
@@ -30,19 +28,8 @@ const std::string kProgram =
     "POINTS\n"
     "OVER   -2800  2800  1000    0\n";
 
-struct Fixture {
-  rs::testing::TempDir dir;
-  std::string path = dir.write("gantry.rsp", kProgram);
-  std::shared_ptr<const rs::workcell::Workcell> cell =
-      std::make_shared<const rs::workcell::Workcell>(rendertest::cell("gantry-cell"));
-  std::unique_ptr<Pendant> pendant;
-  Fixture() {
-    std::string error;
-    std::optional<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path, error);
-    REQUIRE(file);
-    pendant = std::make_unique<Pendant>(cell, rs::launch::cellTarget(*cell).motors, std::move(*file));
-  }
-  std::string text() const { return *rs::base::readFile(path, 1 << 20).bytes; }
+struct Fixture : rs::testing::GantryPendant {
+  Fixture() : GantryPendant("gantry.rsp", kProgram) {}
 };
 
 void checkTcp(const rs::teach::PendantState& s, double x, double y, double z) {

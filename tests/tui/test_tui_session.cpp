@@ -13,13 +13,11 @@
 #include <memory>
 #include <string>
 
-#include "base/file_io.h"
-#include "compiler/library.h"
-#include "launch/program.h"
 #include "teach/keys.h"
 #include "teach/pendant.h"
 #include "teach/tui/tui_session.h"
 #include "tests/cli/cli_support.h"
+#include "tests/teach/gantry_pendant.h"
 
 namespace {
 
@@ -33,24 +31,9 @@ const std::string kProgram =
     "POINTS\n"
     "OVER   -2800  2800  1000    0\n";
 
-struct Fixture {
-  rs::testing::TempDir dir;
-  std::string path = dir.write("g.rsp", kProgram);
-  std::shared_ptr<const rs::workcell::Workcell> cell;
-  std::unique_ptr<rs::teach::Pendant> pendant;
+struct Fixture : rs::testing::GantryPendant {
   std::unique_ptr<Session> session;
-  Fixture() {
-    rs::compiler::Library library(rs::compiler::librarySearchPath({}));
-    auto c = library.workcell("gantry-cell");
-    REQUIRE(c);
-    cell = std::make_shared<const rs::workcell::Workcell>(std::move(*c));
-    std::string error;
-    std::optional<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path, error);
-    REQUIRE(file);
-    pendant = std::make_unique<rs::teach::Pendant>(cell, rs::launch::cellTarget(*cell).motors, std::move(*file));
-    session = std::make_unique<Session>(*pendant);
-  }
-  std::string text() const { return *rs::base::readFile(path, 1 << 20).bytes; }
+  Fixture() : GantryPendant("g.rsp", kProgram), session(std::make_unique<Session>(*pendant)) {}
   Screen screen() const { return session->screen(80, 24); }
   // Row `r`, trailing blanks dropped.
   std::string row(int r) const {
