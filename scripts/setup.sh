@@ -16,12 +16,14 @@ esac
 # libedit (BSD licence) rather than GNU readline, whose GPL would bind the
 # whole robotsim binary that links it.
 packages=(
-  build-essential cmake make pkg-config
+  build-essential cmake make ninja-build pkg-config
   antlr4 libantlr4-runtime-dev default-jre-headless
   libeigen3-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
   libmimalloc-dev libcairo2-dev libedit-dev
   libcpp-httplib-dev libncurses-dev
 )
+# ninja-build: scripts/build.sh builds with Ninja, which keeps both cores
+# busy where make's per-library order leaves one idle (docs/performance.md).
 # libcpp-httplib-dev: the HTTP server of `robotsim teach`'s live page.
 # libncurses-dev: the terminal pendant (robotsim teach --tui) draws with ncurses.
 # Catch2 and the unit tests build with the tree; the browser test drives a
