@@ -8,7 +8,9 @@
 
 #include "base/text.h"
 #include "cli/lib/debug_terminal.h"
+#include "cli/lib/debug_view.h"
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/open_browser.h"
 #include "cli/lib/options.h"
 #include "debug/console.h"
 #include "debug/session.h"
@@ -51,6 +53,11 @@ CLI::App* addDebugCommand(CLI::App& app, DebugOptions& o) {
   addMaxErrorsOption(cmd, o.program);
   addRunOptions(cmd, o.run);
   cmd->add_option("-x,--commands", o.commands, "Run the debugger commands in this file first (one a line)");
+  CLI::Option* view = cmd->add_flag(
+      "--view", o.view,
+      "Serve the live workcell page (as robotsim teach does, read-only): it shows the robot, the objects, the "
+      "inputs, outputs and clock where the run stopped, after every command; needs a workcell");
+  cmd->add_flag("--open", o.open, "With --view: open the page in a browser (xdg-open)")->needs(view);
   cmd->footer(
       "A gdb-style prompt (line editing and history) on the simulated run, standing before the first\n"
       "instruction. Commands: break (b) LINE|LABEL|@N|at TIME|when COND [if COND] [hits N], delete (d),\n"
@@ -59,7 +66,9 @@ CLI::App* addDebugCommand(CLI::App& app, DebugOptions& o) {
       "print (p) VAR|motors|tcp|io|objects|clock, backtrace (bt), list (l), disasm (da),\n"
       "set input N on|off, watch (w) VAR|output N, help (h), quit (q).\n"
       "With -x FILE, or when standard input is not a terminal, commands are read and echoed one a line\n"
-      "(batch mode). Going backwards re-runs from snapshots: docs/debugging.md.");
+      "(batch mode). Going backwards re-runs from snapshots: docs/debugging.md.\n"
+      "--view prints the page's address (127.0.0.1 and a free port, a secret token in the URL); the page\n"
+      "follows every stop, forwards and backwards, and refuses to jog or teach (robotsim teach does that).");
   return cmd;
 }
 
@@ -87,6 +96,17 @@ int debugCommand(const DebugOptions& o, std::istream& in, std::ostream& out, std
   debug::Console console(session, program.source ? &*program.source : nullptr, out);
   out << fmt::format("robotsim debug: {} ({} instructions); help lists the commands\n",
                      base::safeText(spec->image->sourceName), spec->image->code.size());
+  std::shared_ptr<DebugView> view;
+  if (o.view) {
+    std::string error;
+    view = DebugView::start(session, o.program.file, error);
+    if (!view) {
+      err << "robotsim debug: error: " << error << '\n';
+      return kExitBadInput;
+    }
+    out << "live view: " << view->url() << '\n' << std::flush;
+    if (o.open && !openBrowser(view->url())) err << "robotsim: note: could not start xdg-open; open the URL yourself\n";
+  }
   console.showStop(session.lastStop());
 
   bool goOn = true;
