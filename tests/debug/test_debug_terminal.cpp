@@ -70,23 +70,6 @@ class Terminal {
     from_ = at + text.size();
     return out;
   }
-  // Whether `text` appears within `ms` milliseconds (after what was read
-  // before); if it does, reading goes on after it.
-  bool within(const std::string& text, int ms) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(ms);
-    while (seen_.find(text, from_) == std::string::npos && std::chrono::steady_clock::now() < end) {
-      pollfd p{fd_, POLLIN, 0};
-      if (poll(&p, 1, 20) <= 0) continue;
-      char buffer[4096];
-      const ssize_t n = read(fd_, buffer, sizeof buffer);
-      if (n <= 0) break;
-      seen_.append(buffer, static_cast<std::size_t>(n));
-    }
-    const std::size_t at = seen_.find(text, from_);
-    if (at == std::string::npos) return false;
-    from_ = at + text.size();
-    return true;
-  }
   // Waits until the debugger's terminal is in line mode (`cooked`: the
   // prompt is not reading keys) or in libedit's key-by-key mode, as asked.
   // After a line is entered, line mode again says libedit has taken the
