@@ -12,6 +12,7 @@
 
 #include "cli/lib/debug_view.h"
 #include "debug/console.h"
+#include "tests/cli/cli_support.h"
 #include "tests/debug/debug_test_util.h"
 
 // Last: its <resolv.h> defines _res, a name Eigen's headers use.
@@ -167,4 +168,19 @@ TEST_CASE("debug --view needs a workcell", "[debug][view]") {
   std::string error;
   CHECK_FALSE(rs::cli::DebugView::start(session, "program.rsp", error));
   CHECK(error.find("--cell") != std::string::npos);
+}
+
+TEST_CASE("robotsim debug --view prints the page's address, and without a workcell exits 2", "[debug][view]") {
+  rs::testing::TempDir dir;
+  const std::string quit = dir.write("quit.txt", "quit\n");  // -x: stdin is never read
+  const rs::testing::CliResult viewed =
+      rs::testing::runCli({"debug", debugtest::kExamples + "gantry_pick.rsp", "--cell", "gantry-cell", "--view", "-x", quit});
+  CHECK(viewed.code == 0);
+  CHECK(viewed.out.find("\nlive view: http://127.0.0.1:") != std::string::npos);
+  const rs::testing::CliResult bare =
+      rs::testing::runCli({"debug", rendertest::kSourceDir + "/tests/debug/programs/wait_forever.rsp", "--view", "-x", quit});
+  CHECK(bare.code == 2);
+  CHECK(bare.err.find("--view draws the workcell: give one with --cell CELL") != std::string::npos);
+  const rs::testing::CliResult open = rs::testing::runCli({"debug", quit, "--open"});
+  CHECK(open.code == 2);  // --open needs --view
 }
