@@ -18,6 +18,7 @@
 #include "compiler/library.h"
 #include "debug/session.h"
 #include "launch/program.h"
+#include "teach/run_source.h"
 
 namespace rs::bench {
 
@@ -52,6 +53,27 @@ double threadCpuSeconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
+
+// What `debug --view` adds to every stop: the live view's publish of the
+// stopped moment (teach/run_source.h: the run's view as the page's JSON),
+// at 200 moments spread over the run.
+nlohmann::json benchViewPublish(const runtime::RunSpec& spec) {
+  debug::Session session(spec);
+  teach::RunSource source("", "reverse.rsp");
+  std::vector<double> publish;
+  for (int i = 0; i < 200; ++i) {
+    session.step(5'000);
+    const auto t = std::chrono::steady_clock::now();
+    source.publish(session.run(), "step done");
+    publish.push_back(secondsSince(t));
+  }
+  std::sort(publish.begin(), publish.end());
+  const double median = publish[publish.size() / 2], worst = publish.back();
+  const std::size_t bytes = source.state().size();
+  fmt::print("  the live view (debug --view): publishing a stop median {:.1f} us, worst {:.1f} us, {} bytes of JSON\n",
+             median * 1e6, worst * 1e6, bytes);
+  return {{"publish_median_us", median * 1e6}, {"publish_worst_us", worst * 1e6}, {"state_bytes", bytes}};
 }
 
 }  // namespace
@@ -118,6 +140,7 @@ nlohmann::json benchDebug(const Options& options) {
   }
   fmt::print("  default K = {} (debug/timeline.h); targets: a reverse step <= 10 ms, snapshots < 64 MiB\n",
              debug::kDefaultSnapshotInterval);
+  out["view"] = benchViewPublish(spec);
   return out;
 }
 

@@ -401,6 +401,7 @@ std::optional<std::string> Session::setInput(int input, bool on) {
   if (run_->finished()) return std::string("the run is over: go back first (reverse-step, goto-time)");
   if (input < 1 || input > 8) return fmt::format("there is no input {}: inputs are 1..8", input);
   if (!timeline_->setInput(input, on)) return std::string("too many input changes are waiting");
+  for (const StopObserver& o : observers_) o(*this, stop_);  // the same moment, another input
   return std::nullopt;
 }
 

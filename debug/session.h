@@ -120,8 +120,9 @@ class Session {
   /// An error message when the run is over or the input is not 1..8.
   std::optional<std::string> setInput(int input, bool on);
 
-  /// Called after every command that moves the run, with the stop (a live
-  /// view of the workcell follows the debugger through this).
+  /// Called after every command that moves the run, with the stop, and
+  /// after setInput, with the last stop again (a live view of the
+  /// workcell follows the debugger through this).
   using StopObserver = std::function<void(const Session&, const Stop&)>;
   void onStop(StopObserver observer) { observers_.push_back(std::move(observer)); }
   /// Asked between slices of a long forward run; yes pauses it (Pause).

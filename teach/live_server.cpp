@@ -120,7 +120,14 @@ bool LiveServer::start(const std::string& host, int port, std::string& error) {
     error = port == 0 ? fmt::format("cannot listen on {}", host) : fmt::format("cannot listen on {}:{}", host, port);
     return false;
   }
-  thread_ = std::thread([&http] { http.listen_after_bind(); });
+  thread_ = std::thread([this, &http] {
+    http.listen_after_bind();
+    listenerEnded_.store(true);
+  });
+  // cpp-httplib's stop() does nothing until the listener runs: a server
+  // stopped at once (a debug session that quits at once) would accept for
+  // ever and stop() would never return. So start() returns once it runs.
+  while (!http.is_running() && !listenerEnded_.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   return true;
 }
 

@@ -54,6 +54,7 @@ class LiveServer {
   std::string host_;
   int port_ = 0;
   std::atomic<bool> stopping_{false};
+  std::atomic<bool> listenerEnded_{false};
   std::unique_ptr<Impl> impl_;
   std::thread thread_;
 };

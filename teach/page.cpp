@@ -10,12 +10,15 @@
 
 namespace rs::teach {
 
-std::string teachPageHtml(const workcell::Workcell& cell, const std::string& program) {
+namespace {
+
+std::string pageHtml(const workcell::Workcell& cell, const std::string& program, bool readOnly) {
   render::Camera camera;  // the stills' default camera, as `animate` starts with
   const std::string name = std::filesystem::path(program).filename().string();
-  nlohmann::ordered_json model = {{"title", fmt::format("teach {} on {}", name, cell.name)},
+  nlohmann::ordered_json model = {{"title", fmt::format("{} {} on {}", readOnly ? "debug" : "teach", name, cell.name)},
                                   {"cell", cell.name},
-                                  {"program", program}};
+                                  {"program", program},
+                                  {"readOnly", readOnly}};
   const nlohmann::ordered_json drawing = render::cellDrawing(cell, camera);
   for (const auto& [key, value] : drawing.items()) model[key] = value;
   model["keys"] = keysJson();
@@ -37,6 +40,16 @@ std::string teachPageHtml(const workcell::Workcell& cell, const std::string& pro
   html += page::kScript;
   html += "</script>\n</body>\n</html>\n";
   return html;
+}
+
+}  // namespace
+
+std::string teachPageHtml(const workcell::Workcell& cell, const std::string& program) {
+  return pageHtml(cell, program, false);
+}
+
+std::string runViewPageHtml(const workcell::Workcell& cell, const std::string& program) {
+  return pageHtml(cell, program, true);
 }
 
 }  // namespace rs::teach

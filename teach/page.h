@@ -20,5 +20,10 @@ extern const std::string_view kScript;  // page_script.cpp
 /// drawing (render::cellDrawing), the title, the program's name and the
 /// key map (keys.h); the state comes from the server.
 std::string teachPageHtml(const workcell::Workcell& cell, const std::string& program);
+/// The same page in its read-only mode, for a run stopped in the debugger
+/// (run_source.h): the robot, objects, inputs, outputs and clock of the
+/// stopped moment, no pendant controls (the model's "readOnly"); a key
+/// that would move the robot gets the server's refusal shown.
+std::string runViewPageHtml(const workcell::Workcell& cell, const std::string& program);
 
 }  // namespace rs::teach

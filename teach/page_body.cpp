@@ -33,6 +33,11 @@ const std::string_view kStyle = R"CSS(
 #message.failed { color: var(--out); }
 #keys { display: none; margin: 4px 12px; color: var(--dim); white-space: pre; font-size: 11px; }
 #keys.on { display: block; }
+#viewonly, #where { display: none; margin: 4px 12px; }
+#viewonly { padding: 5px 8px; border: 1px solid var(--accent); color: var(--accent); }
+#where { color: #fff; }
+body.readonly #viewonly, body.readonly #where { display: block; }
+body.readonly .pendant, body.readonly #motors td.jog, body.readonly #motors td.r { display: none; }
 )CSS";
 
 const std::string_view kBody = R"HTML(<div id="app">
@@ -41,17 +46,21 @@ const std::string_view kBody = R"HTML(<div id="app">
 <aside id="side">
 <h1 id="title"></h1>
 <div id="fault" role="alert"></div>
-<h2>Motors (encoder counts) &middot; step <select id="step" aria-label="jog step">
-<option value="1">1</option><option value="10" selected>10</option><option value="100">100</option></select></h2>
+<div id="viewonly">Read-only: this page follows <b>robotsim debug</b> and shows the run where it stopped.
+Jog and teach with robotsim teach.</div>
+<div id="where"></div>
+<h2>Motors (encoder counts)<span class="pendant"> &middot; step <select id="step" aria-label="jog step">
+<option value="1">1</option><option value="10" selected>10</option><option value="100">100</option></select></span></h2>
 <table id="motors"></table>
 <h2>Gripper</h2>
-<div class="row"><button id="open">open</button><button id="close">close</button> <span id="gripper"></span></div>
+<div class="row"><span class="pendant"><button id="open">open</button><button id="close">close</button></span> <span id="gripper"></span></div>
 <h2>Tool centre point (world)</h2>
 <div class="row"><span id="tcp"></span></div>
-<h2>Inputs (click to switch)</h2>
+<h2>Inputs<span class="pendant"> (click to switch)</span></h2>
 <div id="inputs" class="lamps"></div>
 <h2>Outputs</h2>
 <div id="outputs" class="lamps"></div>
+<div class="pendant">
 <h2>Points</h2>
 <ol id="points"></ol>
 <div class="row"><input id="teachName" type="text" placeholder="name" aria-label="point name">
@@ -63,6 +72,7 @@ const std::string_view kBody = R"HTML(<div id="app">
 <h2>Cell</h2>
 <div class="row"><button id="reset">reset cell</button><button id="read">read position</button>
 <button id="reload">reload file</button></div>
+</div>
 <div id="status"><span id="message"></span></div>
 <div id="keys"></div>
 </aside>

@@ -5,7 +5,9 @@
 // command ({"op": ...}, teach/commands.h) and waits for the state to come
 // back. A move's motion frames (PendantState::motion) are played in real
 // time before the state's final pose is shown. The keys come from the
-// model (teach/keys.h), the same table the terminal pendant reads.
+// model (teach/keys.h), the same table the terminal pendant reads. In
+// read-only mode (the model's readOnly: the debugger's view) the state is
+// a stopped run's (teach/run_source.h) and every command is refused.
 // window.robotsim exposes the state and the selection to tests.
 #include "teach/page.h"
 
@@ -22,6 +24,10 @@ const std::string_view kScript = R"JS('use strict';
   const S = { state: null, selectedMotor: 0, selectedPoint: null, step: 10, axes: !!model.camera.axes,
               anim: null, shown: null, pending: 0, confirm: null };
   el('title').textContent = model.title;
+  // Read-only (the debugger's view of a stopped run): the pendant's
+  // controls are hidden; a key that would move the robot is still sent
+  // and the server's refusal shown.
+  if (model.readOnly) document.body.classList.add('readonly');
   el('file').textContent = model.program;
 
   // ---- Drawing: the shown pose (a motion frame while a move plays).
@@ -127,6 +133,9 @@ const std::string_view kScript = R"JS('use strict';
       list.append(li);
     }
     if (S.selectedPoint) selectPoint(st.points.find((p) => p.name.toUpperCase() === S.selectedPoint.toUpperCase()).name);
+    if (st.readOnly)
+      el('where').textContent = 'line ' + st.line + ' @' + st.instruction + ', step ' + st.steps + ', clock ' +
+        (st.clock / 1e6).toFixed(3) + ' s' + (st.finished ? ' (the run is over)' : '');
     el('message').textContent = st.message;
     el('message').parentElement.classList.toggle('failed', st.failed);
     el('fault').textContent = st.fault ? 'DEVICE FAULT: every motor stopped. ' + st.fault : '';

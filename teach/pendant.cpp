@@ -292,12 +292,7 @@ PendantState Pendant::state() const {
   s.motors = motors_;
   s.encoders.assign(run_->motors().begin(), run_->motors().end());
   s.tcp = run_->tcp();
-  if (const std::optional<std::size_t> g = gripperMotor()) {
-    const std::int32_t v = s.encoders[*g];
-    s.gripper = v == motors_[*g].min   ? GripperState::Open
-                : v == motors_[*g].max ? GripperState::Closed
-                                       : GripperState::Between;
-  }
+  s.gripper = gripperState(motors_, s.encoders);
   s.inputs = device_.empty() ? inputs_ : run_->machine().inputs();
   s.outputs = run_->machine().outputs();
   for (const runtime::ObjectView& o : run_->objects())

@@ -46,6 +46,15 @@ std::string_view gripperName(GripperState g) {
   return "none";
 }
 
+GripperState gripperState(const std::vector<vm::MotorSpec>& motors, const std::vector<std::int32_t>& encoders) {
+  for (std::size_t i = 0; i < motors.size() && i < encoders.size(); ++i)
+    if (motors[i].kind == vm::JointKind::Gripper)
+      return encoders[i] == motors[i].min   ? GripperState::Open
+             : encoders[i] == motors[i].max ? GripperState::Closed
+                                            : GripperState::Between;
+  return GripperState::None;
+}
+
 Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& placed) {
   Json motors = Json::array();
   for (const vm::MotorSpec& m : s.motors)

@@ -63,6 +63,9 @@ struct PendantState {
 };
 
 std::string_view gripperName(GripperState g);
+/// The gripper of a robot with `motors` standing at `encoders` (None when
+/// no motor is a gripper).
+GripperState gripperState(const std::vector<vm::MotorSpec>& motors, const std::vector<std::int32_t>& encoders);
 
 /// The page's JSON: {"revision", "program", "cell", "device", "motors":
 /// [{"letter", "kind", "min", "max", "speed"}], "encoders", "tcp" (or

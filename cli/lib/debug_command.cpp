@@ -1,17 +1,16 @@
 #include "cli/lib/debug_command.h"
 
 #include <CLI/CLI.hpp>
-#include <editline/readline.h>
 #include <fmt/format.h>
-#include <signal.h>
 #include <unistd.h>
 
-#include <atomic>
-#include <cstdlib>
 #include <fstream>
 
 #include "base/text.h"
+#include "cli/lib/debug_terminal.h"
+#include "cli/lib/debug_view.h"
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/open_browser.h"
 #include "cli/lib/options.h"
 #include "debug/console.h"
 #include "debug/session.h"
@@ -21,11 +20,6 @@ namespace rs::cli {
 namespace {
 
 constexpr const char* kPrompt = "(rsdb) ";
-
-std::atomic<bool> interruptRequested = false;
-
-// Ctrl-C while the program runs: the session pauses at its next slice.
-void onDebugInterrupt(int) { interruptRequested.store(true); }
 
 // Lines from a stream, each echoed after the prompt so that a transcript
 // reads like the session a person would have typed.
@@ -38,23 +32,15 @@ bool batch(std::istream& in, debug::Console& console, std::ostream& out) {
   return true;
 }
 
-// The prompt on a terminal: libedit's readline interface, with history.
-void interactive(debug::Console& console, std::ostream& out) {
+// The prompt on a terminal. Ctrl-C there gives up the line being typed,
+// not the session: a fresh prompt. Ctrl-D (the end of input) leaves.
+void interactive(DebugTerminal& terminal, debug::Console& console, std::ostream& out) {
   for (;;) {
     out.flush();
-    char* raw = readline(kPrompt);
-    if (!raw) {
-      out << '\n';
-      // Ctrl-C at the prompt interrupts the line being typed, not the
-      // session: a fresh prompt. Ctrl-D (the end of input) leaves.
-      if (interruptRequested.exchange(false)) continue;
-      return;
-    }
-    const std::string line(raw);
-    std::free(raw);
-    if (line.find_first_not_of(" \t") != std::string::npos) add_history(line.c_str());
-    interruptRequested.store(false);
-    if (!console.execute(line)) return;
+    const TerminalLine line = terminal.readLine(kPrompt);
+    if (line.status != TerminalLine::Status::Line) out << '\n';
+    if (line.status == TerminalLine::Status::End) return;
+    if (line.status == TerminalLine::Status::Line && !console.execute(line.text)) return;
   }
 }
 
@@ -67,6 +53,11 @@ CLI::App* addDebugCommand(CLI::App& app, DebugOptions& o) {
   addMaxErrorsOption(cmd, o.program);
   addRunOptions(cmd, o.run);
   cmd->add_option("-x,--commands", o.commands, "Run the debugger commands in this file first (one a line)");
+  CLI::Option* view = cmd->add_flag(
+      "--view", o.view,
+      "Serve the live workcell page (as robotsim teach does, read-only): it shows the robot, the objects, the "
+      "inputs, outputs and clock where the run stopped, after every command; needs a workcell");
+  cmd->add_flag("--open", o.open, "With --view: open the page in a browser (xdg-open)")->needs(view);
   cmd->footer(
       "A gdb-style prompt (line editing and history) on the simulated run, standing before the first\n"
       "instruction. Commands: break (b) LINE|LABEL|@N|at TIME|when COND [if COND] [hits N], delete (d),\n"
@@ -75,7 +66,9 @@ CLI::App* addDebugCommand(CLI::App& app, DebugOptions& o) {
       "print (p) VAR|motors|tcp|io|objects|clock, backtrace (bt), list (l), disasm (da),\n"
       "set input N on|off, watch (w) VAR|output N, help (h), quit (q).\n"
       "With -x FILE, or when standard input is not a terminal, commands are read and echoed one a line\n"
-      "(batch mode). Going backwards re-runs from snapshots: docs/debugging.md.");
+      "(batch mode). Going backwards re-runs from snapshots: docs/debugging.md.\n"
+      "--view prints the page's address (127.0.0.1 and a free port, a secret token in the URL); the page\n"
+      "follows every stop, forwards and backwards, and refuses to jog or teach (robotsim teach does that).");
   return cmd;
 }
 
@@ -97,27 +90,32 @@ int debugCommand(const DebugOptions& o, std::istream& in, std::ostream& out, std
     }
   }
 
+  DebugTerminal terminal;  // Ctrl-C pauses a run from here on, also in batch mode
   debug::Session session(*spec);
-  interruptRequested.store(false);
-  session.setInterrupt([] { return interruptRequested.exchange(false); });
+  session.setInterrupt([&terminal] { return terminal.takeInterrupt(); });
   debug::Console console(session, program.source ? &*program.source : nullptr, out);
   out << fmt::format("robotsim debug: {} ({} instructions); help lists the commands\n",
                      base::safeText(spec->image->sourceName), spec->image->code.size());
+  std::shared_ptr<DebugView> view;
+  if (o.view) {
+    std::string error;
+    view = DebugView::start(session, o.program.file, error);
+    if (!view) {
+      err << "robotsim debug: error: " << error << '\n';
+      return kExitBadInput;
+    }
+    out << "live view: " << view->url() << '\n' << std::flush;
+    if (o.open && !openBrowser(view->url())) err << "robotsim: note: could not start xdg-open; open the URL yourself\n";
+  }
   console.showStop(session.lastStop());
 
-  struct sigaction action {};
-  struct sigaction previous {};
-  action.sa_handler = onDebugInterrupt;
-  sigemptyset(&action.sa_mask);
-  ::sigaction(SIGINT, &action, &previous);
   bool goOn = true;
   if (commands.is_open()) goOn = batch(commands, console, out);
   // The terminal prompt only for the process's own stdin on a terminal.
   if (goOn) {
-    if (&in == &std::cin && ::isatty(STDIN_FILENO)) interactive(console, out);
+    if (&in == &std::cin && ::isatty(STDIN_FILENO)) interactive(terminal, console, out);
     else batch(in, console, out);
   }
-  ::sigaction(SIGINT, &previous, nullptr);
   return kExitOk;
 }
 

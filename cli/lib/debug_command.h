@@ -1,7 +1,8 @@
 // `robotsim debug PROG`: the terminal debugger. A gdb-style prompt with
 // line editing and history (libedit), or a batch of commands (-x FILE, or
 // standard input when it is not a terminal) for handouts and tests; the
-// commands themselves are debug::Console's.
+// commands themselves are debug::Console's. With --view, the live
+// workcell page follows the session (debug_view.h).
 #pragma once
 
 #include <istream>
@@ -21,6 +22,8 @@ struct DebugOptions {
   launch::ProgramRequest program;
   launch::RunRequest run;
   std::string commands;  // -x FILE
+  bool view = false;     // --view: the live workcell page follows the session
+  bool open = false;     // --open: and a browser opens it
 };
 
 CLI::App* addDebugCommand(CLI::App& app, DebugOptions& o);

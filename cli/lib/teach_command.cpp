@@ -1,10 +1,7 @@
 #include "cli/lib/teach_command.h"
 
 #include <CLI/CLI.hpp>
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <spawn.h>
-#include <unistd.h>
 
 #include <charconv>
 #include <chrono>
@@ -12,6 +9,7 @@
 #include <thread>
 
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/open_browser.h"
 #include "cli/lib/options.h"
 #include "cli/lib/serial_commands.h"
 #include "runtime/serial/interrupt.h"
@@ -19,27 +17,7 @@
 #include "teach/page.h"
 #include "teach/pendant_source.h"
 
-extern char** environ;
-
 namespace rs::cli {
-
-namespace {
-
-// A browser on the URL, as the desktop opens links; its output is not ours.
-bool openBrowser(const std::string& url) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  std::string program = "xdg-open";
-  char* argv[] = {program.data(), const_cast<char*>(url.c_str()), nullptr};
-  pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, "xdg-open", &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  return rc == 0;
-}
-
-}  // namespace
 
 bool parseListen(const std::string& text, std::string& host, int& port) {
   port = 0;

@@ -14,9 +14,7 @@
 // tests/examples/test_examples.cpp.
 #include <catch2/catch.hpp>
 
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,10 +26,9 @@
 #include "dap/serve.h"
 #include "tests/cli/cli_support.h"
 #include "tests/debug/debug_test_util.h"
+#include "tests/support/piped_process.h"
 #include "wire/framing.h"
 #include "wire/json.h"
-
-extern char** environ;
 
 namespace {
 
@@ -119,23 +116,7 @@ TEST_CASE("dap session: a client that leaves during a long run stops it, and the
 }
 
 TEST_CASE("robotsim dap: a client that closes its pipe mid-run ends the process cleanly", "[debug][dap][process]") {
-  int toChild[2], fromChild[2];
-  REQUIRE(pipe(toChild) == 0);
-  REQUIRE(pipe(fromChild) == 0);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, toChild[0], 0);
-  posix_spawn_file_actions_adddup2(&actions, fromChild[1], 1);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addclose(&actions, toChild[1]);
-  posix_spawn_file_actions_addclose(&actions, fromChild[0]);
-  const std::string binary = ROBOTSIM_BINARY;
-  char* argv[] = {const_cast<char*>(binary.c_str()), const_cast<char*>("dap"), nullptr};
-  pid_t pid = -1;
-  REQUIRE(posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv, environ) == 0);
-  posix_spawn_file_actions_destroy(&actions);
-  close(toChild[0]);
-  close(fromChild[1]);
+  const rstest::PipedProcess dap = rstest::spawnRobotsim({"dap"});
   signal(SIGPIPE, SIG_IGN);
   // A program that waits for ever in small steps: without the client it
   // would run to the step limit, 100 million instructions.
@@ -146,22 +127,12 @@ TEST_CASE("robotsim dap: a client that closes its pipe mid-run ends the process 
         R"({"seq":2,"type":"request","command":"launch","arguments":{"program":")" + program + R"(","maxTime":1000000}})",
         std::string(R"({"seq":3,"type":"request","command":"configurationDone"})")})
     bytes += rs::wire::frameMessage(body);
-  REQUIRE(write(toChild[1], bytes.data(), bytes.size()) == static_cast<ssize_t>(bytes.size()));
+  REQUIRE(write(dap.in, bytes.data(), bytes.size()) == static_cast<ssize_t>(bytes.size()));
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  close(toChild[1]);    // the client is gone: EOF ...
-  close(fromChild[0]);  // ... and nobody reads (EPIPE)
-  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  int status = 0;
-  bool exited = false;
-  while (std::chrono::steady_clock::now() < end && !exited) {
-    exited = waitpid(pid, &status, WNOHANG) == pid;
-    if (!exited) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  if (!exited) {
-    kill(pid, SIGKILL);
-    waitpid(pid, &status, 0);
-  }
-  REQUIRE(exited);
+  close(dap.in);   // the client is gone: EOF ...
+  close(dap.out);  // ... and nobody reads (EPIPE)
+  const int status = rstest::waitForExit(dap.pid, 10);
+  REQUIRE(status != -1);
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 1);
 }

@@ -224,3 +224,16 @@ TEST_CASE("live server: any body gets 200 or 400, never a crash or a 500", "[tea
   REQUIRE(state);
   CHECK(state->status == 200);
 }
+
+TEST_CASE("a live server stopped the moment it started stops (a debug session that quits at once)",
+          "[teach][live]") {
+  // Before start() waited for the listener, stop() could come before
+  // cpp-httplib's listener ran; it then did nothing and the join hung.
+  ReadOnly source;
+  for (int i = 0; i < 50; ++i) {
+    rs::teach::LiveServer server(source, rs::teach::randomToken());
+    std::string error;
+    REQUIRE(server.start("127.0.0.1", 0, error));
+    server.stop();
+  }
+}
