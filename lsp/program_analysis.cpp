@@ -70,6 +70,10 @@ const DefaultRun& ProgramAnalysis::defaultRun() const {
   spec.limits.maxSteps = kHintRunSteps;
   spec.limits.maxTime = kHintRunTime;
   spec.limits.maxStepsPerInstant = kHintRunSteps;
+  // Times only: collision checks cost in proportion to each move's length,
+  // which would make a hint's bounded run unbounded in work (and a
+  // collision would end the run before the lines after it get a time).
+  spec.collisions = runtime::CollisionMode::Off;
   run_->times.resize(spec.image->code.size());
   Timer timer(run_->times);
   runtime::Run run(std::move(spec));
