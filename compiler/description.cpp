@@ -11,7 +11,7 @@
 
 namespace rs::compiler {
 
-namespace detail {
+namespace description_detail {
 
 namespace {
 
@@ -119,12 +119,12 @@ void Parser::finish() {
     diag_.error(blockPos_, fmt::format("{} has no END", blockName(block_)));
 }
 
-}  // namespace detail
+}  // namespace description_detail
 
-using detail::Color;
-using detail::kColorNames;
-using detail::Parser;
-using detail::Word;
+using description_detail::Color;
+using description_detail::kColorNames;
+using description_detail::Parser;
+using description_detail::Word;
 using MP = rs_grammar::RobotModelParser;
 
 std::optional<workcell::Color> colorByName(std::string_view word) {

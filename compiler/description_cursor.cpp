@@ -10,7 +10,7 @@
 #include "base/ascii.h"
 #include "base/near_names.h"
 
-namespace rs::compiler::detail {
+namespace rs::compiler::description_detail {
 
 namespace {
 
@@ -178,4 +178,4 @@ bool Cursor::axis(int& out) {
   return fail("an axis X, Y or Z");
 }
 
-}  // namespace rs::compiler::detail
+}  // namespace rs::compiler::description_detail

@@ -13,7 +13,7 @@
 #include "compiler/description.h"
 #include "diag/diagnostic.h"
 
-namespace rs::compiler::detail {
+namespace rs::compiler::description_detail {
 
 inline constexpr std::array<std::string_view, 16> kColorNames{
     "BLACK",    "BLUE",      "GREEN",      "CYAN",      "RED",      "MAGENTA",      "BROWN",  "LIGHTGRAY",
@@ -66,4 +66,4 @@ class Cursor {
   diag::Diagnostics& diag_;
 };
 
-}  // namespace rs::compiler::detail
+}  // namespace rs::compiler::description_detail

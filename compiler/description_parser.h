@@ -13,7 +13,7 @@
 #include "compiler/description.h"
 #include "compiler/description_cursor.h"
 
-namespace rs::compiler::detail {
+namespace rs::compiler::description_detail {
 
 using workcell::Color;
 
@@ -50,4 +50,4 @@ class Parser {
   Item robotItem_ = Item::None;  // in a ROBOT: what the last LINK or JOINT line added
 };
 
-}  // namespace rs::compiler::detail
+}  // namespace rs::compiler::description_detail

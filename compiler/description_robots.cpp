@@ -9,7 +9,7 @@
 #include "compiler/description_parser.h"
 #include "vm/image.h"
 
-namespace rs::compiler::detail {
+namespace rs::compiler::description_detail {
 
 // LETTER, PRECISION, RANGE, SPEED, ACCELERATION: shared by GRIPPER and JOINT.
 bool Parser::motorClause(Cursor& c, char& letter, diag::Pos& letterPos, double& precision, std::int32_t& min,
@@ -156,4 +156,4 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
       "LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, ACCELERATION, GRIPPER or END");
 }
 
-}  // namespace rs::compiler::detail
+}  // namespace rs::compiler::description_detail

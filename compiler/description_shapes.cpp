@@ -8,7 +8,7 @@
 
 namespace rs::compiler {
 
-namespace detail {
+namespace description_detail {
 
 namespace {
 
@@ -101,7 +101,7 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
   return c.failOneOf("LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END");
 }
 
-}  // namespace detail
+}  // namespace description_detail
 
 std::vector<workcell::ConvexPiece> ShapeDef::collision() const {
   if (collideGiven) return given;

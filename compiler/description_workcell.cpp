@@ -1,7 +1,7 @@
 // WORKCELL: the robots and objects placed in it (AT, ROTATE) and its floor.
 #include "compiler/description_parser.h"
 
-namespace rs::compiler::detail {
+namespace rs::compiler::description_detail {
 
 bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
   if (c.keyword("FLOOR")) {
@@ -37,4 +37,4 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
   return c.failOneOf("ROBOT, OBJECT, AT, ROTATE, FLOOR or END");
 }
 
-}  // namespace rs::compiler::detail
+}  // namespace rs::compiler::description_detail

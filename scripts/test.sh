@@ -15,7 +15,11 @@ echo "== unit tests and fuzz targets under AddressSanitizer + UndefinedBehaviorS
 # fixed number of inputs as a CTest test (label fuzz; docs/reliability.md).
 # The language server's million-line document runs in Release only (50x
 # slower here, and the same code).
-CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DROBOTSIM_SANITIZE=ON -DROBOTSIM_FUZZ=ON \
+# Ninja as for build/ (scripts/build.sh says why); a build-asan/ already
+# configured keeps its generator.
+generator=()
+[ ! -f build-asan/CMakeCache.txt ] && command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
+CC=clang CXX=clang++ cmake -S . -B build-asan "${generator[@]}" -DCMAKE_BUILD_TYPE=Debug -DROBOTSIM_SANITIZE=ON -DROBOTSIM_FUZZ=ON \
   -DROBOTSIM_WERROR=ON >/dev/null
 cmake --build build-asan -j "$(nproc)" --target robotsim_tests robotsim_fuzzers
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
