@@ -1,16 +1,16 @@
 #include "base/number_text.h"
 
-#include <cmath>
 #include <fmt/format.h>
 
 namespace rs::base {
 
-std::string formatNumber(double v) {
-  if (std::abs(v) < 5e-5) return "0";
-  std::string s = fmt::format("{:.4f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s;
+std::string formatNumber(double v, int decimals) {
+  std::string s = fmt::format("{:.{}f}", v, decimals);
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  return s == "-0" ? std::string("0") : s;
 }
 
 }  // namespace rs::base

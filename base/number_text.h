@@ -6,7 +6,8 @@
 
 namespace rs::base {
 
-/// 4 decimals at most, trailing zeros dropped, never "-0": "90", "-469.4629".
-std::string formatNumber(double v);
+/// `decimals` at most (4 unless said), trailing zeros dropped, never "-0":
+/// "90", "-469.4629"; formatNumber(0.004, 2) is "0".
+std::string formatNumber(double v, int decimals = 4);
 
 }  // namespace rs::base

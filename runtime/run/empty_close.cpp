@@ -5,19 +5,15 @@
 #include <array>
 #include <vector>
 
+#include "base/number_text.h"
 #include "base/text.h"
 
 namespace rs::runtime {
 
 namespace {
 
-// At most 2 decimals, no trailing zeros, no "-0".
-std::string number(double v) {
-  std::string s = fmt::format("{:.2f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s == "-0" ? std::string("0") : s;
-}
+// Offsets in the trace: 2 decimals at most.
+std::string number(double v) { return base::formatNumber(v, 2); }
 
 // "A", "A and B", "A, B and C".
 std::string joined(const std::vector<std::string>& parts) {

@@ -9,13 +9,13 @@
 
 namespace {
 
-rs::compiler::CompileResult compileText(const std::string& text) {
+rs::compiler::CompileResult compileForCodes(const std::string& text) {
   const rs::diag::SourceFile source("p.rsp", text);
   return rs::compiler::compile(source, {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth});
 }
 
 std::string codeOf(const std::string& text) {
-  const auto r = compileText(text);
+  const auto r = compileForCodes(text);
   REQUIRE_FALSE(r.diagnostics.empty());
   return std::string(r.diagnostics.front().code);
 }
@@ -43,11 +43,11 @@ TEST_CASE("compile diagnostics have stable codes", "[compiler][codes]") {
 }
 
 TEST_CASE("a duplicate label and point name their first definition as a related place", "[compiler][codes]") {
-  const auto labels = compileText("loop: SET N 1\n  LOOP: END\n");
+  const auto labels = compileForCodes("loop: SET N 1\n  LOOP: END\n");
   REQUIRE(labels.diagnostics.size() == 1);
   REQUIRE(labels.diagnostics[0].related.size() == 1);
   CHECK(labels.diagnostics[0].related[0] == rs::diag::Related{"p.rsp", {1, 1}, "'LOOP' is first defined here"});
-  const auto points = compileText("END\nPOINTS\n  p 0 0 0 0 0\np 0 0 0 0 0\n");
+  const auto points = compileForCodes("END\nPOINTS\n  p 0 0 0 0 0\np 0 0 0 0 0\n");
   REQUIRE(points.diagnostics.size() == 1);
   REQUIRE(points.diagnostics[0].related.size() == 1);
   CHECK(points.diagnostics[0].related[0] == rs::diag::Related{"p.rsp", {3, 3}, "'p' is first defined here"});

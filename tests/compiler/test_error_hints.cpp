@@ -16,13 +16,13 @@ namespace {
 
 using rs::diag::Diagnostic;
 
-rs::compiler::CompileResult compileText(const std::string& text) {
+rs::compiler::CompileResult compileForHints(const std::string& text) {
   const rs::diag::SourceFile source("t.rsp", text);
   return rs::compiler::compile(source, {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth});
 }
 
 // "line:col: message | hint" per diagnostic, in order.
-std::vector<std::string> described(const std::vector<Diagnostic>& diags) {
+std::vector<std::string> hintsDescribed(const std::vector<Diagnostic>& diags) {
   std::vector<std::string> out;
   for (const Diagnostic& d : diags)
     out.push_back(std::to_string(d.pos.line) + ":" + std::to_string(d.pos.col) + ": " + d.message + " | " + d.hint);
@@ -30,9 +30,9 @@ std::vector<std::string> described(const std::vector<Diagnostic>& diags) {
 }
 
 std::vector<std::string> describedErrors(const std::string& text) {
-  const auto r = compileText(text);
+  const auto r = compileForHints(text);
   CHECK_FALSE(r.ok());
-  return described(r.diagnostics);
+  return hintsDescribed(r.diagnostics);
 }
 
 }  // namespace
@@ -51,7 +51,7 @@ TEST_CASE("hints: point rows after END without a POINTS line", "[compiler][hints
                                  "line comes before it | points follow a line POINTS after the instructions: add "
                                  "POINTS on a line of its own after the END on line 3, before line 5"});
   // With the POINTS line the same file compiles, and the points hold the rows' values.
-  const auto fixed = compileText("MOVEP HOME\nMOVEP P1\nEND\nPOINTS\nHOME 0 0 0 0 0\nP1 10 0 0 0 0\n");
+  const auto fixed = compileForHints("MOVEP HOME\nMOVEP P1\nEND\nPOINTS\nHOME 0 0 0 0 0\nP1 10 0 0 0 0\n");
   REQUIRE(fixed.ok());
   REQUIRE(fixed.image->points.size() == 2);
   CHECK(fixed.image->points[1].values == std::vector<std::int32_t>{10, 0, 0, 0, 0});

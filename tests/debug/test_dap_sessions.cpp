@@ -34,7 +34,7 @@ namespace {
 
 using rs::wire::Json;
 
-const std::string kDir = rendertest::kSourceDir + "/tests/debug/dap/";
+const std::string kDapDir = rendertest::kSourceDir + "/tests/debug/dap/";
 
 std::string substituted(std::string text) {
   for (std::size_t at; (at = text.find("${src}")) != std::string::npos;) text.replace(at, 6, rendertest::kSourceDir);
@@ -70,7 +70,7 @@ std::string unsubstituted(std::string text) {
 }
 
 void checkSession(const std::string& name) {
-  const std::string path = kDir + name + ".json";
+  const std::string path = kDapDir + name + ".json";
   Json script = Json::parse(substituted(rs::testing::readBytes(path)));
   std::string bytes;
   for (const Json& item : script.at("send"))
@@ -120,7 +120,7 @@ TEST_CASE("robotsim dap: a client that closes its pipe mid-run ends the process 
   signal(SIGPIPE, SIG_IGN);
   // A program that waits for ever in small steps: without the client it
   // would run to the step limit, 100 million instructions.
-  const std::string program = kDir + "../programs/wait_forever.rsp";
+  const std::string program = kDapDir + "../programs/wait_forever.rsp";
   std::string bytes;
   for (const std::string& body :
        {std::string(R"({"seq":1,"type":"request","command":"initialize","arguments":{}})"),

@@ -3,6 +3,9 @@
 
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
 #include <vector>
 
 #include "model/kinematics/chain_data.h"
@@ -13,6 +16,19 @@ namespace kintest {
 
 using Eigen::Isometry3d;
 using Eigen::Vector3d;
+
+/// Joint types, short as the tables write them.
+inline constexpr rs::kinematics::JointType R = rs::kinematics::JointType::Revolute;
+inline constexpr rs::kinematics::JointType P = rs::kinematics::JointType::Prismatic;
+
+/// The standard library's robot descriptions, in name order.
+inline std::vector<std::filesystem::path> libraryRobots() {
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(ROBOTSIM_SOURCE_DIR) / "stdlib/robots"))
+    if (e.path().extension() == ".rsd") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
 /// The frame with origin `o`, x along `x`, z along `z` (global coordinates),
 /// entered the description's way: x axis from o to o+100x, z from o to o+100z.

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "model/kinematics/chain_model.h"
+#include "tests/kinematics/kinematics_test_util.h"
 
 namespace {
 
@@ -14,8 +15,8 @@ using rs::kinematics::JointDrive;
 using rs::kinematics::JointType;
 using rs::kinematics::KinematicsError;
 
-const JointType R = JointType::Revolute;
-const JointType P = JointType::Prismatic;
+using kintest::P;
+using kintest::R;
 
 std::vector<KinematicsError> errorsOf(const std::vector<DhRow>& table, const std::vector<JointDrive>& drives) {
   const auto model = ChainModel::fromDh(Eigen::Isometry3d::Identity(), table, drives);

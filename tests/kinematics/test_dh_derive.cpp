@@ -20,8 +20,8 @@ using rs::kinematics::ErrorKind;
 using rs::kinematics::JointType;
 using rs::kinematics::KinematicsError;
 
-const JointType R = JointType::Revolute;
-const JointType P = JointType::Prismatic;
+using kintest::P;
+using kintest::R;
 
 Isometry3d base() { return frameAt({0, 0, 0}, {1, 0, 0}, {0, 0, 1}); }
 

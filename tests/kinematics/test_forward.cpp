@@ -24,8 +24,8 @@ using rs::kinematics::JointDrive;
 using rs::kinematics::JointType;
 using rs::kinematics::jointValuesFromEncoders;
 
-const JointType R = JointType::Revolute;
-const JointType P = JointType::Prismatic;
+using kintest::P;
+using kintest::R;
 
 double rad(double degrees) { return degrees * std::numbers::pi / 180.0; }
 

@@ -21,23 +21,18 @@
 #include "model/kinematics/forward_kinematics.h"
 #include "model/kinematics/ik.h"
 #include "model/kinematics/joint_values.h"
+#include "tests/kinematics/kinematics_test_util.h"
 
 namespace {
 
 namespace kin = rs::kinematics;
 
-int samples() {
+int configSamples() {
   if (const char* s = std::getenv("ROBOTSIM_IK_CONFIG_SAMPLES")) return std::max(1, std::atoi(s));
   return 500;
 }
 
-std::vector<std::filesystem::path> libraryRobots() {
-  std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(ROBOTSIM_SOURCE_DIR) / "stdlib/robots"))
-    if (e.path().extension() == ".rsd") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+using kintest::libraryRobots;
 
 bool sameBits(const kin::IkSolution& a, const kin::IkSolution& b) {
   return a.config == b.config && std::memcmp(a.q.data(), b.q.data(), sizeof(a.q)) == 0;
@@ -46,7 +41,7 @@ bool sameBits(const kin::IkSolution& a, const kin::IkSolution& b) {
 }  // namespace
 
 TEST_CASE("one configuration's inverse kinematics is bit for bit that entry of all of them", "[kinematics][ik]") {
-  const int count = samples();
+  const int count = configSamples();
   const auto files = libraryRobots();
   REQUIRE(files.size() >= 6);
   for (const auto& file : files) {

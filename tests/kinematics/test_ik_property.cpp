@@ -23,6 +23,7 @@
 #include "model/kinematics/forward_kinematics.h"
 #include "model/kinematics/ik.h"
 #include "model/kinematics/joint_values.h"
+#include "tests/kinematics/kinematics_test_util.h"
 
 namespace {
 
@@ -48,13 +49,7 @@ int samples() {
   return kDefaultSamples;
 }
 
-std::vector<std::filesystem::path> libraryRobots() {
-  std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(ROBOTSIM_SOURCE_DIR) / "stdlib/robots"))
-    if (e.path().extension() == ".rsd") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+using kintest::libraryRobots;
 
 rs::workcell::Robot load(const std::filesystem::path& file) {
   rs::compiler::Library lib(rs::compiler::librarySearchPath({}));

@@ -57,7 +57,7 @@ const std::string kPlanar = lines({
     "END",
 });
 
-const std::string kProgram = lines({
+const std::string kWiringProgram = lines({
     "SET N 1",
     "MOVE 60 120",
     "DELAY 0.5",
@@ -152,7 +152,7 @@ TEST_CASE("cell wiring: the program sees the robot's motors", "[models]") {
 TEST_CASE("cell wiring: --trace and the summary show the tool centre point", "[models]") {
   TempDir dir;
   const std::string cell = dir.write("planar.rsd", kPlanar);
-  const std::string prog = dir.write("p.rsp", kProgram);
+  const std::string prog = dir.write("p.rsp", kWiringProgram);
   SECTION("JSON trace") {
     const CliResult r = runCli({"run", prog, "--cell", cell, "--trace=json"});
     CHECK(r.code == 0);
@@ -199,7 +199,7 @@ TEST_CASE("cell wiring: --trace and the summary show the tool centre point", "[m
 TEST_CASE("cell wiring: a compiled image carries the cell, its run is byte-identical", "[models]") {
   TempDir dir;
   const std::string cell = dir.write("planar.rsd", kPlanar);
-  const std::string prog = dir.write("p.rsp", kProgram);
+  const std::string prog = dir.write("p.rsp", kWiringProgram);
   const std::string image = dir.file("p.rsb");
   const CliResult c = runCli({"compile", prog, "--cell", cell, "-o", image});
   REQUIRE(c.code == 0);
@@ -231,7 +231,7 @@ TEST_CASE("cell wiring: a compiled image carries the cell, its run is byte-ident
 TEST_CASE("cell wiring: refusals", "[models]") {
   TempDir dir;
   const std::string cell = dir.write("planar.rsd", kPlanar);
-  const std::string prog = dir.write("p.rsp", kProgram);
+  const std::string prog = dir.write("p.rsp", kWiringProgram);
   SECTION("--cell with an image") {
     const std::string image = dir.file("p.rsb");
     REQUIRE(runCli({"compile", prog, "--cell", cell, "-o", image}).code == 0);
@@ -340,10 +340,10 @@ TEST_CASE("cell wiring: OBJECT AT places the lowest, left-most, front-most corne
 
 namespace {
 
-// Compiles kProgram for the planar arm; returns the image bytes.
+// Compiles kWiringProgram for the planar arm; returns the image bytes.
 std::string compiledImage(const TempDir& dir) {
   const std::string cell = dir.write("planar.rsd", kPlanar);
-  const std::string prog = dir.write("p.rsp", kProgram);
+  const std::string prog = dir.write("p.rsp", kWiringProgram);
   const std::string image = dir.file("p.rsb");
   REQUIRE(runCli({"compile", prog, "--cell", cell, "-o", image}).code == 0);
   std::filesystem::remove(cell);

@@ -64,7 +64,7 @@ std::vector<Edge> inOrder(const std::vector<Segment>& segments) {
   return e;
 }
 
-DescriptionFile parse(const std::string& text) {
+DescriptionFile parseGeometry(const std::string& text) {
   Diagnostics d("g.rsd");
   DescriptionFile f = rs::compiler::parseDescription(std::make_unique<SourceFile>("g.rsd", text), d);
   for (const auto& diag : d.all()) FAIL_CHECK(diag.pos.line << ":" << diag.pos.col << ": " << diag.message);
@@ -76,7 +76,7 @@ DescriptionFile parse(const std::string& text) {
 TEST_CASE("geometry: BOX is exactly the 12 edges of the documented box", "[models]") {
   // left -1, right 2, top 3, bottom -4, front 5, back -6:
   // x in {-1, 2}, y in {-4, 3}, z in {-6, 5}.
-  const DescriptionFile f = parse(lines({"LINK b", "  BOX -1 2 3 -4 5 -6 COLOR RED", "END"}));
+  const DescriptionFile f = parseGeometry(lines({"LINK b", "  BOX -1 2 3 -4 5 -6 COLOR RED", "END"}));
   REQUIRE(f.links.size() == 1);
   const std::vector<Segment>& s = f.links[0].segments;
   CHECK(s.size() == 12);
@@ -99,7 +99,7 @@ TEST_CASE("geometry: BOX is exactly the 12 edges of the documented box", "[model
 TEST_CASE("geometry: a flat BOX still has 12 edges, some of them points", "[models]") {
   // top = bottom: a rectangle in the plane y = 0, drawn as 12 segments of
   // which the 4 along y have zero length.
-  const DescriptionFile f = parse(lines({"OBJECT plate", "  BOX 0 10 0 0 5 0", "END"}));
+  const DescriptionFile f = parseGeometry(lines({"OBJECT plate", "  BOX 0 10 0 0 5 0", "END"}));
   REQUIRE(f.objects.size() == 1);
   const auto& s = f.objects[0].segments;
   CHECK(s.size() == 12);
@@ -112,7 +112,7 @@ TEST_CASE("geometry: a flat BOX still has 12 edges, some of them points", "[mode
 }
 
 TEST_CASE("geometry: ROTATE and MOVE act on everything drawn before them, nothing after", "[models]") {
-  const DescriptionFile f = parse(lines({
+  const DescriptionFile f = parseGeometry(lines({
       "LINK a",
       "  LINE 1 2 3  4 5 6",              // s0
       "  ROTATE Z 90",                    // s0 -> (-2, 1, 3) (-5, 4, 6)
@@ -137,21 +137,21 @@ TEST_CASE("geometry: ROTATE and MOVE act on everything drawn before them, nothin
 TEST_CASE("geometry: ROTATE turns a BOX about the global axis through the origin", "[models]") {
   // The unit cube x, y, z in [0, 1] turned by Z 90 is x in [-1, 0], y in
   // [0, 1], z in [0, 1]; then MOVE 5 0 0 puts it at x in [4, 5].
-  const DescriptionFile turned = parse(lines({"OBJECT c", "  BOX 0 1 1 0 1 0", "  ROTATE Z 90", "  MOVE 5 0 0", "END"}));
-  const DescriptionFile direct = parse(lines({"OBJECT c", "  BOX 4 5 1 0 1 0", "END"}));
+  const DescriptionFile turned = parseGeometry(lines({"OBJECT c", "  BOX 0 1 1 0 1 0", "  ROTATE Z 90", "  MOVE 5 0 0", "END"}));
+  const DescriptionFile direct = parseGeometry(lines({"OBJECT c", "  BOX 4 5 1 0 1 0", "END"}));
   REQUIRE(turned.objects.size() == 1);
   REQUIRE(direct.objects.size() == 1);
   CHECK(sortedEdges(turned.objects[0].segments) == sortedEdges(direct.objects[0].segments));
   // A ROTATE with nothing drawn yet changes nothing that follows.
-  const DescriptionFile early = parse(lines({"LINK e", "  ROTATE X 45", "  MOVE 1 1 1", "  LINE 0 0 0 1 0 0", "END"}));
+  const DescriptionFile early = parseGeometry(lines({"LINK e", "  ROTATE X 45", "  MOVE 1 1 1", "  LINE 0 0 0 1 0 0", "END"}));
   CHECK(inOrder(early.links[0].segments) == std::vector<Edge>{edge({0, 0, 0}, {1, 0, 0}, Color::White)});
   // Negative angles turn the other way: Z -90 takes (1, 0, 0) to (0, -1, 0).
-  const DescriptionFile back = parse(lines({"LINK n", "  LINE 0 0 0 1 0 0", "  rotate z -90", "END"}));
+  const DescriptionFile back = parseGeometry(lines({"LINK n", "  LINE 0 0 0 1 0 0", "  rotate z -90", "END"}));
   CHECK(inOrder(back.links[0].segments) == std::vector<Edge>{edge({0, 0, 0}, {0, -1, 0}, Color::White)});
 }
 
 TEST_CASE("geometry: colours default to WHITE and follow COLOR, per-line COLOR wins", "[models]") {
-  const DescriptionFile f = parse(lines({
+  const DescriptionFile f = parseGeometry(lines({
       "LINK c",
       "  LINE 0 0 0 1 0 0",            // WHITE: the default
       "  COLOR lightred",              // names in any case
@@ -254,7 +254,7 @@ std::vector<std::pair<std::string, std::vector<Statement>>> shapeStatements(cons
     } else if (first == "END") {
       inBlock = inShape = false;
     } else if (inShape) {
-      const DescriptionFile one = parse(lines({"LINK t", code, "END"}));
+      const DescriptionFile one = parseGeometry(lines({"LINK t", code, "END"}));
       blocks.back().second.push_back({first, code, one.links.empty() ? std::vector<Segment>{} : one.links[0].segments});
     }
   }

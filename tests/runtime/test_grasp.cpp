@@ -65,7 +65,7 @@ std::vector<StepView> run(const rs::workcell::Workcell& cell, const std::string&
 // for a block placed AT x y z.
 Eigen::Vector3d block1At(double dx, double dy, double dz) { return {200 + dx, 30 + dy, 660 + dz}; }
 
-void checkNear(const Eigen::Vector3d& got, const Eigen::Vector3d& want) {
+void checkGraspNear(const Eigen::Vector3d& got, const Eigen::Vector3d& want) {
   INFO("got (" << got.x() << ", " << got.y() << ", " << got.z() << ") want (" << want.x() << ", " << want.y()
                << ", " << want.z() << ")");
   CHECK((got - want).norm() < 1e-6);
@@ -78,10 +78,10 @@ TEST_CASE("the tool centre point of the gantry is where the hand formula says", 
   rs::workcell::ToolTracker tool(cell.robots.front());
   const std::vector<std::int32_t> motors = {-2800, 2800, 1500, 0};
   const Eigen::Isometry3d F = tool.frame(motors);
-  checkNear(F.translation(), {220, 50, 680});
+  checkGraspNear(F.translation(), {220, 50, 680});
   // The approach vector (z of the end-effector frame) points down, n along +x.
-  checkNear(F.linear().col(2), {0, -1, 0});
-  checkNear(F.linear().col(0), {1, 0, 0});
+  checkGraspNear(F.linear().col(2), {0, -1, 0});
+  checkGraspNear(F.linear().col(0), {1, 0, 0});
 }
 
 TEST_CASE("a closing gripper takes the block at its tool centre point and carries it", "[runtime][grasp]") {
@@ -97,23 +97,23 @@ TEST_CASE("a closing gripper takes the block at its tool centre point and carrie
                                       "END\n");
   REQUIRE(s.size() == 8);
   CHECK_FALSE(s[0].change);
-  checkNear(s[0].corner[1], block1At(0, 0, 0));
+  checkGraspNear(s[0].corner[1], block1At(0, 0, 0));
   REQUIRE(s[1].change);
   CHECK(s[1].change->object == 1);
   CHECK(s[1].change->held);
-  checkNear(s[1].corner[1], block1At(0, 0, 0));  // taking it does not move it
-  checkNear(s[2].corner[1], block1At(0, 150, 0));
-  checkNear(s[3].corner[1], block1At(510, 150, -500));
-  checkNear(s[4].corner[1], block1At(510, 0, -500));
+  checkGraspNear(s[1].corner[1], block1At(0, 0, 0));  // taking it does not move it
+  checkGraspNear(s[2].corner[1], block1At(0, 150, 0));
+  checkGraspNear(s[3].corner[1], block1At(510, 150, -500));
+  checkGraspNear(s[4].corner[1], block1At(510, 0, -500));
   REQUIRE(s[5].change);
   CHECK(s[5].change->object == 1);
   CHECK_FALSE(s[5].change->held);
-  checkNear(s[6].corner[1], block1At(510, 0, -500));  // it stays where it was let go
+  checkGraspNear(s[6].corner[1], block1At(510, 0, -500));  // it stays where it was let go
   // Nothing else moved.
   for (const StepView& v : s) {
-    checkNear(v.corner[0], s[0].corner[0]);
-    checkNear(v.corner[2], s[0].corner[2]);
-    checkNear(v.corner[3], s[0].corner[3]);
+    checkGraspNear(v.corner[0], s[0].corner[0]);
+    checkGraspNear(v.corner[2], s[0].corner[2]);
+    checkGraspNear(v.corner[3], s[0].corner[3]);
   }
 }
 
@@ -135,13 +135,13 @@ TEST_CASE("an empty gripper, a closed gripper pushed into a block, and RESET", "
   CHECK_FALSE(s[2].change);
   REQUIRE(s[3].change);
   CHECK(s[3].change->object == 1);
-  checkNear(s[4].corner[1], block1At(280, 150, 0));
+  checkGraspNear(s[4].corner[1], block1At(280, 150, 0));
   REQUIRE(s[5].change);  // RESET lets go
   CHECK_FALSE(s[5].change->held);
-  checkNear(s[5].corner[1], block1At(0, 0, 0));
+  checkGraspNear(s[5].corner[1], block1At(0, 0, 0));
   CHECK_FALSE(s[6].change);
   CHECK_FALSE(s[7].change);
-  checkNear(s[7].corner[1], block1At(0, 0, 0));
+  checkGraspNear(s[7].corner[1], block1At(0, 0, 0));
 }
 
 TEST_CASE("opening while moving lets go where the move starts, nested boxes give the smaller", "[runtime][grasp]") {
@@ -163,15 +163,15 @@ TEST_CASE("opening while moving lets go where the move starts, nested boxes give
   CHECK(s[1].change->object == 1);
   REQUIRE(s[2].change);
   CHECK_FALSE(s[2].change->held);
-  checkNear(s[2].corner[1], block1At(0, 0, 0));
+  checkGraspNear(s[2].corner[1], block1At(0, 0, 0));
   REQUIRE(s[3].change);
   CHECK(s[3].change->object == 4);
   CHECK_FALSE(s[4].change);
   // The crate is drawn in world coordinates (identity placement): its
   // origin moves with the lift, from (0, 0, 0) to (0, 100, 0).
-  checkNear(s[3].corner[4], {0, 0, 0});
-  checkNear(s[4].corner[4], {0, 100, 0});
-  checkNear(s[4].corner[1], block1At(0, 0, 0));
+  checkGraspNear(s[3].corner[4], {0, 0, 0});
+  checkGraspNear(s[4].corner[4], {0, 100, 0});
+  checkGraspNear(s[4].corner[1], block1At(0, 0, 0));
 }
 
 TEST_CASE("a still of a moment shows the block where the gripper has it then", "[runtime][grasp][render]") {
@@ -188,13 +188,13 @@ TEST_CASE("a still of a moment shows the block where the gripper has it then", "
         rs::render::momentOf(*rendertest::runOf(image, &cell), static_cast<rs::vm::Micros>(seconds * 1e6));
     REQUIRE(m.reached);
     REQUIRE(m.objects.size() == 4);
-    checkNear(m.objects[2] * Eigen::Vector3d::Zero(), {280, 30, 660});  // block 2 has not moved yet
+    checkGraspNear(m.objects[2] * Eigen::Vector3d::Zero(), {280, 30, 660});  // block 2 has not moved yet
     return Eigen::Vector3d(m.objects[1] * Eigen::Vector3d::Zero());
   };
-  checkNear(blockAt(5.0), block1At(0, 0, 0));    // closing: not taken yet
-  checkNear(blockAt(6.0), {200, 97, 660});       // 0.8375 s up: Y 820, TCP y 118
-  checkNear(blockAt(10.0), {497.5, 179, 362.5}); // 2.975 s along: X 175, Z -175: TCP (517.5, 200, 382.5)
-  checkNear(blockAt(14.0), {650, 30, 160});      // opening: let go at its start
+  checkGraspNear(blockAt(5.0), block1At(0, 0, 0));    // closing: not taken yet
+  checkGraspNear(blockAt(6.0), {200, 97, 660});       // 0.8375 s up: Y 820, TCP y 118
+  checkGraspNear(blockAt(10.0), {497.5, 179, 362.5}); // 2.975 s along: X 175, Z -175: TCP (517.5, 200, 382.5)
+  checkGraspNear(blockAt(14.0), {650, 30, 160});      // opening: let go at its start
   // Without a cell the moment has no objects.
   CHECK(rs::render::momentOf(*rendertest::runOf(image, nullptr), 10'000'000).objects.empty());
 }

@@ -22,7 +22,7 @@ using rs::runtime::Run;
 using rs::vm::Micros;
 using rs::vm::StopReason;
 
-constexpr Micros kSecond = 1'000'000;
+constexpr Micros kRunSecond = 1'000'000;
 
 const std::string kExamples = rendertest::kSourceDir + "/examples/";
 
@@ -180,14 +180,14 @@ TEST_CASE("step, run until a line, a label, a time or a condition, and look", "[
   CHECK(run.runUntilLabel("SUB").has_value());
   CHECK(run.view().line == 6);
   CHECK(run.view().variables[0].second == 2);
-  CHECK(run.view().clock == kSecond / 4);
+  CHECK(run.view().clock == kRunSecond / 4);
   CHECK_FALSE(run.runUntilLabel("nowhere").has_value());
   CHECK(run.labelInstruction("loop") == std::optional<std::uint32_t>(1));
 
   // The third MOVE ends at 0.75 s: the first step past 0.6 s.
   CHECK(run.runUntilTime(600'000).paused());
   CHECK(run.pauseCause() == PauseCause::Time);
-  CHECK(run.clock() == 3 * kSecond / 4);
+  CHECK(run.clock() == 3 * kRunSecond / 4);
   CHECK(run.view().line == 7);
 
   rs::runtime::RunUntil until;

@@ -19,7 +19,7 @@ using rs::vm::Micros;
 using rs::vm::Status;
 using Targets = std::vector<std::int32_t>;
 
-constexpr Micros kSecond = 1'000'000;
+constexpr Micros kSimSecond = 1'000'000;
 
 SimMachine scara(Stimuli stimuli = {}) {
   return SimMachine(rs::stdlib::rhinoScaraMotors(), std::move(stimuli));
@@ -197,7 +197,7 @@ TEST_CASE("timed changes apply at their time", "[sim][io]") {
   REQUIRE(m.delay(1));
   CHECK(m.input(4));
   SECTION("toggled on then off before now reads off") {
-    REQUIRE(m.delay(2 * kSecond));
+    REQUIRE(m.delay(2 * kSimSecond));
     CHECK_FALSE(m.input(4));
     CHECK(m.inputs() == 0b1000'0000);
   }
@@ -211,9 +211,9 @@ TEST_CASE("timed changes apply at their time", "[sim][io]") {
 TEST_CASE("waitFor advances to the change that makes the input true", "[sim][io]") {
   auto m = scara(parsed("at 2 input 6 on\nat 3 input 6 on\nat 0 input 1 on\nat 2.5 input 1 off\n"));
   REQUIRE(m.waitFor(6, true));
-  CHECK(m.now() == 2 * kSecond);
+  CHECK(m.now() == 2 * kSimSecond);
   REQUIRE(m.waitFor(6, true));  // already true: no time passes
-  CHECK(m.now() == 2 * kSecond);
+  CHECK(m.now() == 2 * kSimSecond);
   REQUIRE(m.waitFor(1, false));
   CHECK(m.now() == 2'500'000);
   CHECK(m.inputs() == 0b0010'0000);
@@ -223,15 +223,15 @@ TEST_CASE("waitFor advances to the change that makes the input true", "[sim][io]
 TEST_CASE("a wait nothing will satisfy is a deadlock, not a hang", "[sim][io]") {
   SECTION("nothing is scheduled") {
     auto m = scara();
-    REQUIRE(m.delay(kSecond));
+    REQUIRE(m.delay(kSimSecond));
     const auto status = m.waitFor(3, true);
     CHECK(status.code == Status::Code::Deadlock);
     CHECK(status.message == "input 3 never turns ON: no stimulus is scheduled");
-    CHECK(m.now() == kSecond);
+    CHECK(m.now() == kSimSecond);
   }
   SECTION("the only stimulus already happened") {
     auto m = scara(parsed("at 1 input 4 on\nat 2 input 4 off\n"));
-    REQUIRE(m.delay(3 * kSecond));
+    REQUIRE(m.delay(3 * kSimSecond));
     CHECK(m.waitFor(4, true).message == "input 4 never turns ON: no stimulus is scheduled");
   }
   SECTION("an on-off pulse within one microsecond is never seen") {
@@ -249,7 +249,7 @@ TEST_CASE("a wait nothing will satisfy is a deadlock, not a hang", "[sim][io]") 
 
 TEST_CASE("a reactive rule answers an output after its delay", "[sim][rules]") {
   auto m = scara(parsed("when output 1 on then input 2 on after 0.5\n"));
-  REQUIRE(m.delay(kSecond));
+  REQUIRE(m.delay(kSimSecond));
   REQUIRE(m.setOutput(1, true));
   CHECK_FALSE(m.input(2));
   REQUIRE(m.waitFor(2, true));
@@ -264,7 +264,7 @@ TEST_CASE("rules fire only when the output really changes", "[sim][rules]") {
                    "when output 1 on then input 7 on after 1\n"));
   REQUIRE(m.setOutput(1, true));
   CHECK(m.inputs() == 0b0000'0100);  // no delay: at once
-  REQUIRE(m.delay(kSecond));
+  REQUIRE(m.delay(kSimSecond));
   CHECK(m.inputs() == 0b0100'0100);
   REQUIRE(m.setOutput(1, false));
   CHECK(m.inputs() == 0b0100'0000);
@@ -284,7 +284,7 @@ TEST_CASE("changes due together apply in scheduling order", "[sim][rules]") {
   REQUIRE(m.delay(500'000));
   REQUIRE(m.setOutput(5, true));
   REQUIRE(m.waitFor(2, true));
-  CHECK(m.now() == kSecond);
+  CHECK(m.now() == kSimSecond);
   CHECK(m.inputs() == 0b10);
 }
 

@@ -13,7 +13,7 @@ using namespace rs::serial;
 using rs::testing::runCli;
 using rs::testing::TempDir;
 
-const char* const kProgram =
+const char* const kSerialCliProgram =
     "SET N 3\n"
     "MOVETO 200 -100 50 20 60\n"
     "OUTSIG 1 ON\n"
@@ -45,7 +45,7 @@ std::unique_ptr<PtyEmulator> emulator(Dialect d, FaultKind fault = FaultKind::No
 
 TEST_CASE("robotsim run --device ends like robotsim run, and logs the bytes", "[serial]") {
   TempDir dir;
-  const std::string prog = dir.write("prog.rsp", kProgram);
+  const std::string prog = dir.write("prog.rsp", kSerialCliProgram);
   const auto sim = runCli({"run", prog, "--format", "json"});
   REQUIRE(sim.code == 0);
   for (const char* dialect : {"mark3", "mark4"}) {
@@ -69,7 +69,7 @@ TEST_CASE("robotsim run --device ends like robotsim run, and logs the bytes", "[
 
 TEST_CASE("robotsim run --device: a failing controller exits 1 after stopping the motors", "[serial]") {
   TempDir dir;
-  const std::string prog = dir.write("prog.rsp", kProgram);
+  const std::string prog = dir.write("prog.rsp", kSerialCliProgram);
   auto emu = emulator(Dialect::Mark3, FaultKind::Silence);
   const auto r = runCli({"run", prog, "--device", emu->path(), "--serial-set", "timeout=0.2"});
   CHECK(r.code == 1);
@@ -79,7 +79,7 @@ TEST_CASE("robotsim run --device: a failing controller exits 1 after stopping th
 
 TEST_CASE("robotsim run --device: usage errors", "[serial]") {
   TempDir dir;
-  const std::string prog = dir.write("prog.rsp", kProgram);
+  const std::string prog = dir.write("prog.rsp", kSerialCliProgram);
   const auto missing = runCli({"run", prog, "--device", "/nonexistent/ttyUSB0"});
   CHECK(missing.code == 1);
   CHECK(missing.err == "robotsim: error: cannot open /nonexistent/ttyUSB0: No such file or directory\n");
@@ -158,7 +158,7 @@ TEST_CASE("robotsim emulate: console numbers are whole numbers, read strictly", 
 
 TEST_CASE("robotsim run --device: the wrong dialect's handshake suggests the right --dialect", "[serial]") {
   TempDir dir;
-  const std::string prog = dir.write("prog.rsp", kProgram);
+  const std::string prog = dir.write("prog.rsp", kSerialCliProgram);
   SECTION("a Mark III handshake to a Mark IV") {
     auto emu = emulator(Dialect::Mark4);
     const std::string log = dir.file("probe.log");

@@ -14,7 +14,7 @@ using namespace rs::serial::testing;
 namespace vm = rs::vm;
 
 // Moves, a taught point, relative moves, outputs, inputs and HRDHOME.
-const char* const kProgram =
+const char* const kSerialE2eProgram =
     "SET COUNT 0\n"
     "loop: MOVETO 300 100\n"
     "  OUTSIG 2 ON\n"
@@ -79,7 +79,7 @@ RunResult onEmulator(const vm::Image& image, Dialect d) {
 }
 
 void sameEnd(Dialect d) {
-  const vm::Image image = compileFor(kProgram, fastMotors());
+  const vm::Image image = compileFor(kSerialE2eProgram, fastMotors());
   const RunResult sim = simulate(image);
   REQUIRE(sim.outcome.ok());
   const RunResult real = onEmulator(image, d);

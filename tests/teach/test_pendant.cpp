@@ -22,14 +22,14 @@ namespace {
 using rs::teach::Pendant;
 using Values = std::vector<std::int32_t>;
 
-const std::string kProgram =
+const std::string kPendantProgram =
     "        MOVEP OVER              ; the block\n"
     "        END\n"
     "POINTS\n"
     "OVER   -2800  2800  1000    0\n";
 
 struct Fixture : rs::testing::GantryPendant {
-  Fixture() : GantryPendant("gantry.rsp", kProgram) {}
+  Fixture() : GantryPendant("gantry.rsp", kPendantProgram) {}
 };
 
 void checkTcp(const rs::teach::PendantState& s, double x, double y, double z) {
@@ -165,12 +165,12 @@ TEST_CASE("pendant: teach, re-teach, rename and delete write the program", "[tea
   const rs::teach::Outcome taught = p.teach("P1");
   REQUIRE(taught.ok);
   // OVER's values end at columns 12, 18, 24 and 29: "P1" + 7 spaces + "250" ends at 12.
-  CHECK(f.text() == kProgram + "P1       250     0   -40    0\n");
+  CHECK(f.text() == kPendantProgram + "P1       250     0   -40    0\n");
   REQUIRE(p.gripper(true).ok);
   REQUIRE(p.reteach("p1").ok);
-  CHECK(f.text() == kProgram + "P1       250     0   -40  104\n");
+  CHECK(f.text() == kPendantProgram + "P1       250     0   -40  104\n");
   REQUIRE(p.rename("P1", "GRIP").ok);
-  CHECK(f.text() == kProgram + "GRIP     250     0   -40  104\n");
+  CHECK(f.text() == kPendantProgram + "GRIP     250     0   -40  104\n");
   CHECK_FALSE(p.teach("grip").ok);
   CHECK_FALSE(p.teach("END").ok);
   REQUIRE(p.remove("OVER").ok);
@@ -181,14 +181,14 @@ TEST_CASE("pendant: teach, re-teach, rename and delete write the program", "[tea
   CHECK(s.points[0].values == Values{250, 0, -40, 104});
   CHECK(s.points[0].line == 4u);
   // Edited elsewhere meanwhile: refused, said so, the file as they left it.
-  f.dir.write("gantry.rsp", kProgram);
+  f.dir.write("gantry.rsp", kPendantProgram);
   const rs::teach::Outcome refused = p.teach("LATE");
   CHECK_FALSE(refused.ok);
   CHECK(refused.message.find("changed on disk") != std::string::npos);
-  CHECK(f.text() == kProgram);
+  CHECK(f.text() == kPendantProgram);
   REQUIRE(p.reload().ok);
   REQUIRE(p.teach("LATE").ok);
-  CHECK(f.text() == kProgram + "LATE     250     0   -40  104\n");
+  CHECK(f.text() == kPendantProgram + "LATE     250     0   -40  104\n");
 }
 
 TEST_CASE("pendant: commands as the page sends them, malformed ones refused as bad requests", "[teach]") {

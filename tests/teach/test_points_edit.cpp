@@ -23,7 +23,7 @@ using rs::teach::PointsText;
 
 // Columns (0-based): HOME's values end at 11, 17, 23, 28, 33; so do PICK's
 // (right-aligned, as in docs/language.md); PICK's comment starts at 36.
-const std::string kProgram =
+const std::string kPointsProgram =
     "; pick one block\n"
     "        MOVEP PICK              ; go\n"
     "        END\n"
@@ -54,8 +54,8 @@ rs::vm::Image compiled(const std::string& text) {
 }  // namespace
 
 TEST_CASE("points: reading the section keeps every byte", "[teach]") {
-  const PointsText p(kProgram);
-  CHECK(p.text() == kProgram);
+  const PointsText p(kPointsProgram);
+  CHECK(p.text() == kPointsProgram);
   REQUIRE(p.pointsLine() == 4u);
   REQUIRE(p.points().size() == 2);
   CHECK(p.points()[0].name == "HOME");
@@ -70,39 +70,39 @@ TEST_CASE("points: reading the section keeps every byte", "[teach]") {
 }
 
 TEST_CASE("points: re-teaching a point rewrites its row in its columns, comment kept", "[teach]") {
-  PointsText p(kProgram);
+  PointsText p(kPointsProgram);
   REQUIRE(p.replace("pick", v({12, -3, 1500, 0, 90})).empty());
   // "PICK" + 5 spaces + "12" ends at 11; "-3" ends at 17 (4 spaces); "1500"
   // at 23 (2); "0" at 28 (4); "90" at 33 (3); the comment back at 36 (3).
-  CHECK(p.text() == replaced(kProgram, "PICK    400  -200  -150  250    0   ; over the block",
+  CHECK(p.text() == replaced(kPointsProgram, "PICK    400  -200  -150  250    0   ; over the block",
                              "PICK     12    -3  1500    0   90   ; over the block"));
 }
 
 TEST_CASE("points: a taught point goes after the last one, aligned with it", "[teach]") {
-  PointsText p(kProgram);
+  PointsText p(kPointsProgram);
   REQUIRE(p.add("NEW", v({1, 2, 3, 4, 5})).empty());
   // "NEW" + 7 spaces + "1" ends at 11; then 5, 5, 4, 4 spaces.
-  CHECK(p.text() == replaced(kProgram, "over the block\n", "over the block\nNEW       1     2     3    4    5\n"));
+  CHECK(p.text() == replaced(kPointsProgram, "over the block\n", "over the block\nNEW       1     2     3    4    5\n"));
   // Too wide for its column: one space ("WIDE 12345678" is 13 wide), and
   // the next column catches up: "2" ends at 17 again (3 spaces).
-  PointsText q(kProgram);
+  PointsText q(kPointsProgram);
   REQUIRE(q.add("WIDE", v({12345678, 2, 3, 4, 5})).empty());
-  CHECK(q.text() == replaced(kProgram, "over the block\n", "over the block\nWIDE 12345678   2     3    4    5\n"));
+  CHECK(q.text() == replaced(kPointsProgram, "over the block\n", "over the block\nWIDE 12345678   2     3    4    5\n"));
 }
 
 TEST_CASE("points: delete and rename touch one row", "[teach]") {
-  PointsText p(kProgram);
+  PointsText p(kPointsProgram);
   REQUIRE(p.remove("home").empty());
-  CHECK(p.text() == replaced(kProgram, "HOME      0     0     0    0    0\n", ""));
-  PointsText r(kProgram);
+  CHECK(p.text() == replaced(kPointsProgram, "HOME      0     0     0    0    0\n", ""));
+  PointsText r(kPointsProgram);
   REQUIRE(r.rename("PICK", "PK").empty());
   // "PK" + 6 spaces: 400 still ends at 11; the rest of the row as it was.
-  CHECK(r.text() == replaced(kProgram, "PICK    400", "PK      400"));
-  PointsText w(kProgram);
+  CHECK(r.text() == replaced(kPointsProgram, "PICK    400", "PK      400"));
+  PointsText w(kPointsProgram);
   REQUIRE(w.rename("PICK", "GRAB_BLOCK").empty());
   // "GRAB_BLOCK 400" is 14 wide: -200 and -150 get one space each (ends 19,
   // 24), 250 ends at 28 again (one space), 0 at 33 (4), the comment at 36.
-  CHECK(w.text() == replaced(kProgram, "PICK    400  -200  -150  250    0",
+  CHECK(w.text() == replaced(kPointsProgram, "PICK    400  -200  -150  250    0",
                              "GRAB_BLOCK 400 -200 -150 250    0"));
 }
 
@@ -135,7 +135,7 @@ TEST_CASE("points: tab-separated rows keep their tabs, left-aligned columns stay
 }
 
 TEST_CASE("points: names the language refuses are refused, the text unchanged", "[teach]") {
-  PointsText p(kProgram);
+  PointsText p(kPointsProgram);
   CHECK(p.add("home", v({0, 0, 0, 0, 0})) == "there is a point HOME already (line 7)");
   CHECK(p.add("moveto", v({0, 0, 0, 0, 0})) == "MOVETO is an instruction: it cannot name a point");
   CHECK(p.add("Points", v({0, 0, 0, 0, 0})) == "POINTS is a reserved word: it cannot name a point");
@@ -144,11 +144,11 @@ TEST_CASE("points: names the language refuses are refused, the text unchanged", 
   CHECK(p.rename("PICK", "home") == "there is a point HOME already (line 7)");
   CHECK(p.replace("NOPE", v({0, 0, 0, 0, 0})) == "there is no point NOPE");
   CHECK(p.remove("NOPE") == "there is no point NOPE");
-  CHECK(p.text() == kProgram);
+  CHECK(p.text() == kPointsProgram);
 }
 
 TEST_CASE("points: the compiled image differs in the changed points only", "[teach]") {
-  const std::string program = replaced(kProgram, "MOVEP PICK", "MOVEP HOME");
+  const std::string program = replaced(kPointsProgram, "MOVEP PICK", "MOVEP HOME");
   const rs::vm::Image before = compiled(program);
   REQUIRE(before.points.size() == 2);
   PointsText p(program);
@@ -166,21 +166,21 @@ TEST_CASE("points: the compiled image differs in the changed points only", "[tea
 
 TEST_CASE("program file: written atomically with a .bak, refused after an edit on disk", "[teach]") {
   const rs::testing::TempDir dir;
-  const std::string path = dir.write("p.rsp", kProgram);
+  const std::string path = dir.write("p.rsp", kPointsProgram);
   std::string error;
   std::optional<rs::teach::ProgramFile> f = rs::teach::ProgramFile::load(path, error);
   REQUIRE(f);
-  CHECK(f->hash() == rs::teach::textHash(kProgram));
+  CHECK(f->hash() == rs::teach::textHash(kPointsProgram));
   REQUIRE(f->change([](PointsText& p) { return p.add("NEW", v({1, 2, 3, 4, 5})); }).empty());
-  const std::string once = replaced(kProgram, "over the block\n", "over the block\nNEW       1     2     3    4    5\n");
+  const std::string once = replaced(kPointsProgram, "over the block\n", "over the block\nNEW       1     2     3    4    5\n");
   CHECK(*rs::base::readFile(path, 1 << 20).bytes == once);
-  CHECK(*rs::base::readFile(path + ".bak", 1 << 20).bytes == kProgram);
+  CHECK(*rs::base::readFile(path + ".bak", 1 << 20).bytes == kPointsProgram);
   REQUIRE(f->change([](PointsText& p) { return p.remove("NEW"); }).empty());
-  CHECK(*rs::base::readFile(path, 1 << 20).bytes == kProgram);
-  CHECK(*rs::base::readFile(path + ".bak", 1 << 20).bytes == kProgram);  // the file as the session found it
+  CHECK(*rs::base::readFile(path, 1 << 20).bytes == kPointsProgram);
+  CHECK(*rs::base::readFile(path + ".bak", 1 << 20).bytes == kPointsProgram);  // the file as the session found it
   CHECK(!std::filesystem::exists(path + ".tmp"));
   // Someone edits the file: the next write is refused and their text stays.
-  const std::string theirs = kProgram + "; edited elsewhere\n";
+  const std::string theirs = kPointsProgram + "; edited elsewhere\n";
   dir.write("p.rsp", theirs);
   const std::string why = f->change([](PointsText& p) { return p.add("X", v({0, 0, 0, 0, 0})); });
   CHECK(why.find("changed on disk since teach read it (someone edited it)") != std::string::npos);

@@ -23,7 +23,7 @@ using rs::testing::TempDir;
 // A pick-and-place loop with a handshake: OUTSIG asks the conveyor, a
 // reactive rule answers on input 2, a timed stimulus on input 4 ends the
 // loop early through JMPIN.
-constexpr const char* kProgram =
+constexpr const char* kDeterminismProgram =
     "; pick and place with a handshake\n"
     "start: SET COUNT 0\n"
     "loop: MOVEP PICK\n"
@@ -63,7 +63,7 @@ std::size_t countLines(const std::string& s, char first) {
 
 TEST_CASE("the same run twice gives byte-identical traces", "[vm][determinism]") {
   TempDir dir;
-  const std::string prog = dir.write("pp.rsp", kProgram);
+  const std::string prog = dir.write("pp.rsp", kDeterminismProgram);
   const std::string stim = dir.write("pp.stim", kStimuli);
   for (const char* trace : {"--trace", "--trace=json", "--trace=text"}) {
     INFO(trace);
@@ -103,7 +103,7 @@ TEST_CASE("the same run twice gives byte-identical traces", "[vm][determinism]")
 
 TEST_CASE("the text trace has one line per executed instruction", "[vm][determinism]") {
   TempDir dir;
-  const std::string prog = dir.write("pp.rsp", kProgram);
+  const std::string prog = dir.write("pp.rsp", kDeterminismProgram);
   const std::string stim = dir.write("pp.stim", kStimuli);
   const CliResult r = runCli({"run", prog, "--trace", "--stimuli", stim});
   REQUIRE(r.code == 0);
@@ -124,7 +124,7 @@ TEST_CASE("the text trace has one line per executed instruction", "[vm][determin
 
 TEST_CASE("compiling twice gives identical image bytes", "[vm][determinism]") {
   TempDir dir;
-  const std::string prog = dir.write("pp.rsp", kProgram);
+  const std::string prog = dir.write("pp.rsp", kDeterminismProgram);
   REQUIRE(runCli({"compile", prog, "-o", dir.file("a.rsb")}).code == 0);
   REQUIRE(runCli({"compile", prog, "-o", dir.file("b.rsb")}).code == 0);
   const std::string a = rs::testing::readBytes(dir.file("a.rsb"));
@@ -133,8 +133,8 @@ TEST_CASE("compiling twice gives identical image bytes", "[vm][determinism]") {
 
   // And through the library, from two separate SourceFiles.
   const rs::compiler::Target target{"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth, nullptr};
-  const auto once = rs::compiler::compile(rs::diag::SourceFile(prog, kProgram), target);
-  const auto twice = rs::compiler::compile(rs::diag::SourceFile(prog, kProgram), target);
+  const auto once = rs::compiler::compile(rs::diag::SourceFile(prog, kDeterminismProgram), target);
+  const auto twice = rs::compiler::compile(rs::diag::SourceFile(prog, kDeterminismProgram), target);
   REQUIRE(once.ok());
   REQUIRE(twice.ok());
   const std::vector<std::uint8_t> bytes = rs::vm::writeImage(*once.image);
@@ -148,7 +148,7 @@ TEST_CASE("compiling twice gives identical image bytes", "[vm][determinism]") {
 
 TEST_CASE("running the image gives the same output as running the source", "[vm][determinism]") {
   TempDir dir;
-  const std::string prog = dir.write("pp.rsp", kProgram);
+  const std::string prog = dir.write("pp.rsp", kDeterminismProgram);
   const std::string stim = dir.write("pp.stim", kStimuli);
   const std::string image = dir.file("pp.rsb");
   REQUIRE(runCli({"compile", prog, "-o", image}).code == 0);

@@ -37,7 +37,7 @@ using Values = std::vector<std::int32_t>;
 
 constexpr Micros kSecond = 1'000'000;
 
-Target rhino() { return {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth}; }
+Target rhinoTarget() { return {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth}; }
 
 // Records every executed instruction: its index, the clock and the motors
 // right after it ran.
@@ -72,7 +72,7 @@ struct Run {
   Micros now() const { return machine->now(); }
 };
 
-rs::vm::Image compileOk(const std::string& text, const Target& target = rhino()) {
+rs::vm::Image compileFor(const std::string& text, const Target& target = rhinoTarget()) {
   const rs::diag::SourceFile source("vm.rsp", text);
   const rs::compiler::CompileResult r = rs::compiler::compile(source, target);
   INFO("program:\n" << text);
@@ -98,8 +98,8 @@ Run runImage(rs::vm::Image image, Stimuli stimuli = {}, RunLimits limits = {}) {
   return r;
 }
 
-Run run(const std::string& text, Stimuli stimuli = {}, RunLimits limits = {}, const Target& target = rhino()) {
-  return runImage(compileOk(text, target), std::move(stimuli), limits);
+Run run(const std::string& text, Stimuli stimuli = {}, RunLimits limits = {}, const Target& target = rhinoTarget()) {
+  return runImage(compileFor(text, target), std::move(stimuli), limits);
 }
 
 void requireEnded(const Run& r) {
@@ -245,9 +245,9 @@ TEST_CASE("call stack overflow is a runtime error naming the GOSUB", "[vm]") {
     CHECK(r.outcome.steps == 65);  // 64 calls succeed, the 65th fails
   }
   SECTION("a smaller limit from the target") {
-    Target t = rhino();
+    Target t = rhinoTarget();
     t.callDepthLimit = 3;
-    const rs::vm::Image image = compileOk("SET N 0\nsub: ADD N 1\nGOSUB sub\n", t);
+    const rs::vm::Image image = compileFor("SET N 0\nsub: ADD N 1\nGOSUB sub\n", t);
     CHECK(image.callDepthLimit == 3);
     const Run r = runImage(image);
     CHECK(r.outcome.reason == StopReason::RuntimeError);
