@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "base/text.h"
+#include "dap/message_reader.h"
 #include "launch/program.h"
 #include "launch/run_request.h"
 #include "vm/disasm.h"
@@ -63,26 +64,10 @@ void Adapter::respond(const Json& request, const Reply& reply) {
 }
 
 void Adapter::receive(const wire::Frame& frame) {
-  if (frame.kind != wire::Frame::Kind::Message) {
-    log_ << "robotsim dap: " << frame.problem << '\n';
-    respond(Json(nullptr), Error{frame.problem});
-    return;
-  }
-  const Json message = Json::parse(frame.body, nullptr, false);
-  if (message.is_discarded()) {
-    respond(Json(nullptr), Error{"the message is not valid JSON"});
-    return;
-  }
-  if (!message.is_object() || !message.contains("type") || !message["type"].is_string()) {
-    respond(message, Error{"a message is a JSON object with a type"});
-    return;
-  }
-  if (message["type"] != "request") return;  // the client's responses and events: nothing to do
-  if (!message.contains("command") || !message["command"].is_string()) {
-    respond(message, Error{"a request without a command"});
-    return;
-  }
-  handle(message);
+  if (frame.kind != wire::Frame::Kind::Message) log_ << "robotsim dap: " << frame.problem << '\n';
+  const IncomingMessage m = readMessage(frame);
+  if (m.kind == IncomingMessage::Kind::Invalid) respond(m.message, Error{m.problem});
+  if (m.kind == IncomingMessage::Kind::Request) handle(m.message);
 }
 
 void Adapter::handle(const Json& request) {

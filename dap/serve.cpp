@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "dap/adapter.h"
+#include "dap/message_reader.h"
 #include "wire/framing.h"
 #include "wire/json.h"
 
@@ -12,12 +13,11 @@ namespace rs::dap {
 namespace {
 
 // Does this frame ask a running program to stop (pause, terminate,
-// disconnect)? Read cheaply: a frame that is not such a request waits.
+// disconnect)? A frame that is not such a request waits.
 bool stopsARun(const wire::Frame& f) {
-  if (f.kind != wire::Frame::Kind::Message) return false;
-  const Json m = Json::parse(f.body, nullptr, false);
-  if (!m.is_object() || !m.contains("command") || !m["command"].is_string()) return false;
-  const std::string& c = m["command"].get_ref<const std::string&>();
+  const IncomingMessage m = readMessage(f);
+  if (m.kind != IncomingMessage::Kind::Request) return false;
+  const std::string& c = m.message["command"].get_ref<const std::string&>();
   return c == "pause" || c == "terminate" || c == "disconnect";
 }
 

@@ -15,24 +15,6 @@ namespace {
 constexpr std::size_t kMaxWorkspaceFileBytes = std::size_t{4} << 20;
 constexpr std::size_t kMaxWorkspaceFiles = 500;
 
-// Bytes that are not UTF-8 become U+FFFD, so that the JSON can be read and
-// the document still says where they were.
-std::string withoutInvalidUtf8(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size();) {
-    const std::size_t n = base::utf8SequenceLength(text, i);
-    if (n == 0) {
-      out += "\xEF\xBF\xBD";
-      ++i;
-    } else {
-      out.append(text.substr(i, n));
-      i += n;
-    }
-  }
-  return out;
-}
-
 std::string idKey(const Json& id) { return dumpJson(id); }
 
 Json capabilities(Encoding enc) {
@@ -65,76 +47,45 @@ void Server::send(const Json& message) {
 }
 
 void Server::receive(const std::vector<Frame>& frames) {
-  // Parse everything first: a $/cancelRequest later in the batch cancels
+  // Read everything first: a $/cancelRequest later in the batch cancels
   // a request before it. Then everything in order.
-  struct Item {
-    Json message;
-    bool invalidUtf8 = false;
-    std::optional<RpcError> error;  // the frame could not be read
-  };
-  std::vector<Item> items;
+  std::vector<IncomingMessage> messages;
   std::set<std::string> cancelled;
   for (const Frame& f : frames) {
-    if (f.kind != Frame::Kind::Message) {
-      log_ << "robotsim lsp: " << f.problem << '\n';
-      items.push_back({nullptr, false,
-                       RpcError{f.kind == Frame::Kind::TooLarge ? errc::kInvalidRequest : errc::kParseError, f.problem}});
-      continue;
-    }
-    const bool invalid = diag::findInvalidUtf8(f.body).found;
-    Json message = Json::parse(invalid ? withoutInvalidUtf8(f.body) : f.body, nullptr, false);
-    if (message.is_discarded()) {
-      items.push_back({nullptr, false, RpcError{errc::kParseError, "the message is not valid JSON"}});
-      continue;
-    }
-    if (message.is_object() && message.value("method", Json()) == "$/cancelRequest" && message.contains("params") &&
-        message["params"].is_object() && message["params"].contains("id"))
-      cancelled.insert(idKey(message["params"]["id"]));
-    items.push_back({std::move(message), invalid, std::nullopt});
+    if (f.kind != Frame::Kind::Message) log_ << "robotsim lsp: " << f.problem << '\n';
+    IncomingMessage m = readMessage(f);
+    if (m.kind != IncomingMessage::Kind::Invalid && m.kind != IncomingMessage::Kind::Response &&
+        m.method == "$/cancelRequest" && m.params.is_object() && m.params.contains("id"))
+      cancelled.insert(idKey(m.params["id"]));
+    messages.push_back(std::move(m));
   }
-  for (const Item& item : items) {
+  for (const IncomingMessage& m : messages) {
     if (finished()) break;
-    if (item.error)
-      send(response(nullptr, *item.error));
-    else
-      handle(item.message, cancelled, item.invalidUtf8);
+    handle(m, cancelled);
   }
 }
 
-void Server::handle(const Json& message, const std::set<std::string>& cancelled, bool invalidUtf8) {
-  if (!message.is_object()) {
-    send(response(nullptr, RpcError{errc::kInvalidRequest, "a message is a JSON object"}));
+void Server::handle(const IncomingMessage& m, const std::set<std::string>& cancelled) {
+  using Kind = IncomingMessage::Kind;
+  if (m.kind == Kind::Invalid) {
+    send(response(m.id, m.error));
     return;
   }
-  const bool hasId = message.contains("id");
-  if (!message.contains("method")) {
-    if (hasId && (message.contains("result") || message.contains("error"))) return;  // a client's response
-    send(response(hasId ? message["id"] : Json(nullptr), RpcError{errc::kInvalidRequest, "a message without a method"}));
-    return;
-  }
-  const Json& methodJson = message["method"];
-  const Json params = message.value("params", Json(nullptr));
-  if (!methodJson.is_string()) {
-    send(response(hasId ? message["id"] : Json(nullptr), RpcError{errc::kInvalidRequest, "the method is not a string"}));
-    return;
-  }
-  const std::string method = methodJson.get<std::string>();
-  if (!hasId) {  // a notification
+  if (m.kind == Kind::Response) return;  // a client's response: nothing asked for one
+  const std::string& method = m.method;
+  const Json& params = m.params;
+  if (m.kind == Kind::Notification) {
     if (method == "exit") {
       state_ = State::Exited;
       return;
     }
     if (state_ != State::Running || method.starts_with("$/")) return;
-    currentInvalidUtf8_ = invalidUtf8;
+    currentInvalidUtf8_ = m.invalidUtf8;
     dispatcher_.notify(method, params);
     currentInvalidUtf8_ = false;
     return;
   }
-  const Json& id = message["id"];
-  if (!id.is_string() && !id.is_number_integer()) {
-    send(response(nullptr, RpcError{errc::kInvalidRequest, "a request's id is a number or a string"}));
-    return;
-  }
+  const Json& id = m.id;
   if (state_ == State::Uninitialized && method != "initialize") {
     send(response(id, RpcError{errc::kServerNotInitialized, "the server is not initialized: send initialize first"}));
     return;

@@ -17,6 +17,7 @@
 #include "lsp/document.h"
 #include "lsp/json.h"
 #include "lsp/jsonrpc.h"
+#include "lsp/message_reader.h"
 #include "lsp/transport.h"
 #include "lsp/workspace.h"
 
@@ -43,7 +44,7 @@ class Server {
  private:
   enum class State { Uninitialized, Running, Exited };
 
-  void handle(const Json& message, const std::set<std::string>& cancelled, bool invalidUtf8);
+  void handle(const IncomingMessage& message, const std::set<std::string>& cancelled);
   void send(const Json& message);
   void registerHandlers();
   Reply initialize(const Json& params);

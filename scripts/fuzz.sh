@@ -31,8 +31,14 @@ for t in "${targets[@]}"; do
   start=$(date +%s)
   log="$dir/campaign/$t.log"
   mkdir -p "$dir/campaign"
+  # The message readers' inputs stay short: every state of the framing and
+  # of the reading is reached within 256 bytes (chunked_frames.h refuses
+  # bodies over 64 bytes in half of them), and longer inputs, mostly whole
+  # sessions from the seeds, cost five times the rate.
+  opts=()
+  case "$t" in *_reader) opts=(-max_len=256) ;; esac
   if bash tests/fuzz/run.sh --fuzzer "$dir/tests/fuzz/$t" --robotsim "$dir/robotsim" --work "$dir/campaign" \
-       --runs "$runs" -- -max_total_time="$seconds" >"$log" 2>&1; then verdict="no finding"; else verdict="FINDING (see $log)"; failed=1; fi
+       --runs "$runs" -- -max_total_time="$seconds" "${opts[@]}" >"$log" 2>&1; then verdict="no finding"; else verdict="FINDING (see $log)"; failed=1; fi
   secs=$(( $(date +%s) - start ))
   execs=$(grep -o 'number_of_executed_units: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*$' || echo "?")
   cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*$' || echo "?")

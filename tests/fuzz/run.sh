@@ -25,6 +25,7 @@ done
 name=$(basename "$fuzzer")
 reader=${name#fuzz_}
 reader=${reader%_fixed}
+reader=${reader%_reader}
 out="$work/$name"
 rm -rf "$out" && mkdir -p "$out"
 
