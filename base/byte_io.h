@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,7 +19,17 @@ inline constexpr std::size_t kMaxStoredString = 255;
 
 class ByteWriter {
  public:
-  void u8(std::uint8_t v) { out.push_back(v); }
+  /// Spills: a writer that hands its bytes to `spill` whenever it holds
+  /// `chunk` bytes or more (and at flush()), so that a large output is never
+  /// held whole. Without one, everything stays in `out`.
+  using Spill = std::function<void(const std::vector<std::uint8_t>&)>;
+  ByteWriter() = default;
+  ByteWriter(Spill spill, std::size_t chunk) : spill_(std::move(spill)), spillAt_(chunk) { out.reserve(chunk + 512); }
+
+  void u8(std::uint8_t v) {
+    out.push_back(v);
+    spillIfFull();
+  }
   void u16(std::uint16_t v) { le(v, 2); }
   void u32(std::uint32_t v) { le(v, 4); }
   void i32(std::int32_t v) { le(static_cast<std::uint32_t>(v), 4); }
@@ -28,8 +39,18 @@ class ByteWriter {
     const std::size_t n = std::min(s.size(), kMaxStoredString);
     u16(static_cast<std::uint16_t>(n));
     out.insert(out.end(), s.begin(), s.begin() + static_cast<std::ptrdiff_t>(n));
+    spillIfFull();
   }
-  void bytes(const std::vector<std::uint8_t>& b) { out.insert(out.end(), b.begin(), b.end()); }
+  void bytes(const std::vector<std::uint8_t>& b) {
+    out.insert(out.end(), b.begin(), b.end());
+    spillIfFull();
+  }
+  /// Hands what is held to the spill, if there is one.
+  void flush() {
+    if (!spill_ || out.empty()) return;
+    spill_(out);
+    out.clear();
+  }
   std::vector<std::uint8_t> out;
 
  private:
@@ -40,7 +61,14 @@ class ByteWriter {
     out.resize(at + static_cast<std::size_t>(n));
     std::uint8_t* p = out.data() + at;
     for (int i = 0; i < n; ++i) p[i] = static_cast<std::uint8_t>(v >> (8 * i));
+    spillIfFull();
   }
+  void spillIfFull() {
+    if (out.size() >= spillAt_) flush();
+  }
+
+  Spill spill_;
+  std::size_t spillAt_ = SIZE_MAX;  // never, without a spill
 };
 
 class ByteReader {

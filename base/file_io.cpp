@@ -61,7 +61,8 @@ FileRead readFile(const std::string& path, std::size_t limit) {
   return result;
 }
 
-bool writeFileAtomically(const std::string& path, std::string_view bytes, std::string& error) {
+bool writeFileAtomically(const std::string& path, const std::function<bool(std::ostream&)>& write,
+                         std::string& error) {
   const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
@@ -69,10 +70,11 @@ bool writeFileAtomically(const std::string& path, std::string_view bytes, std::s
       error = std::strerror(errno);
       return false;
     }
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    const bool written = write(out);
     out.flush();
-    if (!out) {
+    if (!written || !out) {
       error = "write error";
+      out.close();
       std::remove(tmp.c_str());
       return false;
     }
@@ -85,6 +87,16 @@ bool writeFileAtomically(const std::string& path, std::string_view bytes, std::s
     return false;
   }
   return true;
+}
+
+bool writeFileAtomically(const std::string& path, std::string_view bytes, std::string& error) {
+  return writeFileAtomically(
+      path,
+      [bytes](std::ostream& out) {
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        return static_cast<bool>(out);
+      },
+      error);
 }
 
 bool writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string& error) {

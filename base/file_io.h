@@ -7,7 +7,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +29,9 @@ FileRead readFile(const std::string& path, std::size_t limit);
 /// Writes all bytes or nothing; on failure returns false and sets `error`.
 bool writeFileAtomically(const std::string& path, std::string_view bytes, std::string& error);
 bool writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string& error);
+/// The same, with the bytes written by `write` to the temporary file as it
+/// makes them (never held whole); `write` returns false when it failed.
+bool writeFileAtomically(const std::string& path, const std::function<bool(std::ostream&)>& write, std::string& error);
 
 /// "300 MiB", "12 KiB", "100 bytes": a size for a message.
 std::string sizeText(std::uint64_t bytes);

@@ -9,6 +9,7 @@ namespace rs::diag {
 
 SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
   if (const std::size_t mark = text_.size() - withoutByteOrderMark(text_).size()) text_.erase(0, mark);
+  if (text_.size() > UINT32_MAX) text_.resize(UINT32_MAX);
   const char* const begin = text_.data();
   const char* const end = begin + text_.size();
   // memchr: the library's vectorised search, much faster than a byte loop.
@@ -20,7 +21,7 @@ SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(nam
   lineStarts_.push_back(0);
   for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p))));) {
     if (++p == end) break;
-    lineStarts_.push_back(static_cast<std::size_t>(p - begin));
+    lineStarts_.push_back(static_cast<std::uint32_t>(p - begin));
   }
   for (std::uint32_t n = 1; n <= lineCount(); ++n) {
     const std::string_view l = line(n);

@@ -35,7 +35,8 @@ struct LoneCarriageReturn {
 
 class SourceFile {
  public:
-  /// A leading byte-order mark is dropped (withoutByteOrderMark).
+  /// A leading byte-order mark is dropped (withoutByteOrderMark). Text past
+  /// 4 GiB is dropped too: no reader accepts a file of that size.
   SourceFile(std::string name, std::string text);
 
   const std::string& name() const { return name_; }
@@ -65,7 +66,10 @@ class SourceFile {
 
   std::string name_;
   std::string text_;
-  std::vector<std::size_t> lineStarts_;
+  // 4-byte offsets: half the index of a file of short lines (the index is
+  // a compile's third-largest holding, after the source and the image).
+  // Every reader refuses files far below 4 GiB (256 MiB at most).
+  std::vector<std::uint32_t> lineStarts_;
   std::vector<Checkpoint> checkpoints_;  // sorted by offset, hence by (line, col)
 };
 

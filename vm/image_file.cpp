@@ -205,7 +205,9 @@ void readNames(ByteReader& r, Image& im) {
 
 }  // namespace
 
-std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
+std::uint32_t crc32(const std::uint8_t* data, std::size_t size) { return crc32Update(0, data, size); }
+
+std::uint32_t crc32Update(std::uint32_t crc, const std::uint8_t* data, std::size_t size) {
   // CRC-32 (IEEE 802.3, reflected polynomial 0xEDB88320), table built once.
   // Four bytes per step ("slicing by 4"): t[k][b] is the CRC of byte b
   // followed by k zero bytes, so four table lookups replace four steps.
@@ -220,7 +222,7 @@ std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
       for (std::size_t k = 1; k < 4; ++k) t[k][i] = t[0][t[k - 1][i] & 0xFF] ^ (t[k - 1][i] >> 8);
     return t;
   }();
-  std::uint32_t c = 0xFFFFFFFFu;
+  std::uint32_t c = crc ^ 0xFFFFFFFFu;
   std::size_t i = 0;
   for (; i + 4 <= size; i += 4) {
     c ^= std::uint32_t{data[i]} | std::uint32_t{data[i + 1]} << 8 | std::uint32_t{data[i + 2]} << 16 |
@@ -231,6 +233,20 @@ std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
   return c ^ 0xFFFFFFFFu;
 }
 
+namespace {
+
+std::vector<std::uint8_t> imageHeader(const Image& image, std::size_t payloadSize, std::uint32_t crc) {
+  ByteWriter header;
+  header.out.assign(kImageMagic.begin(), kImageMagic.end());
+  header.u16(kImageVersionMajor);
+  header.u16(hasMotionSection(image) ? kImageVersionMinor : 0);
+  header.u32(static_cast<std::uint32_t>(payloadSize));
+  header.u32(crc);
+  return std::move(header.out);
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> writeImage(const Image& image) {
   // The payload is written after room for the header, which is filled in
   // last (it holds the payload's size and CRC): no copy of the payload.
@@ -239,14 +255,34 @@ std::vector<std::uint8_t> writeImage(const Image& image) {
   w.out.resize(kImageHeaderBytes);
   writePayload(w, image);
   const std::size_t size = w.out.size() - kImageHeaderBytes;
-  ByteWriter header;
-  header.out.assign(kImageMagic.begin(), kImageMagic.end());
-  header.u16(kImageVersionMajor);
-  header.u16(hasMotionSection(image) ? kImageVersionMinor : 0);
-  header.u32(static_cast<std::uint32_t>(size));
-  header.u32(crc32(w.out.data() + kImageHeaderBytes, size));
-  std::copy(header.out.begin(), header.out.end(), w.out.begin());
+  const std::vector<std::uint8_t> header = imageHeader(image, size, crc32(w.out.data() + kImageHeaderBytes, size));
+  std::copy(header.begin(), header.end(), w.out.begin());
   return std::move(w.out);  // a member: not moved by itself
+}
+
+bool writeImage(const Image& image, std::ostream& out) {
+  // The header comes first and holds the payload's CRC: one pass through
+  // the payload computes it, a second writes it, 64 KiB at a time. The
+  // bytes are writeImage(image)'s, never held whole.
+  constexpr std::size_t kChunk = std::size_t{64} << 10;
+  std::uint32_t crc = 0;
+  std::size_t size = 0;
+  ByteWriter summing(
+      [&](const std::vector<std::uint8_t>& piece) {
+        crc = crc32Update(crc, piece.data(), piece.size());
+        size += piece.size();
+      },
+      kChunk);
+  writePayload(summing, image);
+  summing.flush();
+  const auto put = [&out](const std::vector<std::uint8_t>& piece) {
+    out.write(reinterpret_cast<const char*>(piece.data()), static_cast<std::streamsize>(piece.size()));
+  };
+  put(imageHeader(image, size, crc));
+  ByteWriter writing(put, kChunk);
+  writePayload(writing, image);
+  writing.flush();
+  return static_cast<bool>(out);
 }
 
 bool looksLikeImage(std::string_view bytes) {

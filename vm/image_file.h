@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,10 @@ inline constexpr std::size_t kMaxImageBytes = std::size_t{1} << 30;  // 1 GiB
 
 /// Serialises an image; same image, same bytes.
 std::vector<std::uint8_t> writeImage(const Image& image);
+/// The same bytes, written to `out` without being held whole (64 KiB at a
+/// time; the payload is serialised twice, once for its CRC). False when
+/// `out` fails.
+bool writeImage(const Image& image, std::ostream& out);
 
 /// True if the bytes start with the image magic number (whatever the name).
 bool looksLikeImage(std::string_view bytes);
@@ -38,5 +43,7 @@ struct LoadResult {
 LoadResult loadImage(std::string_view bytes);
 
 std::uint32_t crc32(const std::uint8_t* data, std::size_t size);
+/// The CRC of what `crc` was the CRC of, followed by `data` (crc32Update(0, ...) = crc32).
+std::uint32_t crc32Update(std::uint32_t crc, const std::uint8_t* data, std::size_t size);
 
 }  // namespace rs::vm

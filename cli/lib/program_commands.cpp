@@ -40,11 +40,12 @@ int compileCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostre
   launch::LoadedProgram program = launch::loadProgram(o.program);
   launch::printDiagnostics(err, program.diagnostics, program);
   if (!program.ok()) return kExitBadInput;
-  // The source's diagnostics are printed: free it before the image's bytes
-  // are made, which would otherwise add their size to the peak.
+  // The source's diagnostics are printed: free it before the image is
+  // written (streamed to the file, never held as bytes beside the image).
   program.source.reset();
   std::string error;
-  if (!base::writeFileAtomically(o.output, vm::writeImage(*program.image), error)) {
+  if (!base::writeFileAtomically(
+          o.output, [&program](std::ostream& file) { return vm::writeImage(*program.image, file); }, error)) {
     err << fmt::format("{}: error: cannot write: {}\n", base::safeText(o.output), error);
     return kExitBadInput;
   }

@@ -30,3 +30,15 @@ TEST_CASE("crc32 agrees with zlib on every length and offset", "[vm][image]") {
       CHECK(rs::vm::crc32(p, length) == zlib);
     }
 }
+
+TEST_CASE("crc32Update continues a CRC over pieces, as zlib's crc32 does", "[vm][image]") {
+  std::vector<std::uint8_t> bytes(1000);
+  std::uint32_t x = 777;
+  for (auto& b : bytes) b = static_cast<std::uint8_t>((x = x * 1103515245u + 12345u) >> 16);
+  for (std::size_t cut : {0, 1, 3, 4, 5, 64, 999, 1000}) {
+    INFO("cut at " << cut);
+    const std::uint32_t first = rs::vm::crc32(bytes.data(), cut);
+    const std::uint32_t both = rs::vm::crc32Update(first, bytes.data() + cut, bytes.size() - cut);
+    CHECK(both == static_cast<std::uint32_t>(::crc32(0L, bytes.data(), static_cast<uInt>(bytes.size()))));
+  }
+}

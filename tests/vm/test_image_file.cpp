@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -437,5 +438,21 @@ TEST_CASE("huge counts are refused before anything is allocated", "[verifier]") 
       CHECK(loadError(b) == "malformed image: " + std::string(c.what) + " count " + std::to_string(count) +
                                 " larger than the file");
     }
+  }
+}
+
+TEST_CASE("an image streamed to a file has the bytes of the image in memory", "[verifier]") {
+  // 20,000 instructions: 400 KB of payload, several of the writer's 64 KiB
+  // pieces; and a one-instruction image, less than one piece.
+  std::string big;
+  for (int i = 0; i < 20000; ++i) big += "MOVE " + std::to_string(i % 90) + " 2 3 4 5\n";
+  for (const std::string& text : {big + "END\n", std::string("END\n")}) {
+    const Image im = compileOk(text);
+    std::ostringstream streamed;
+    REQUIRE(rs::vm::writeImage(im, streamed));
+    const Bytes inMemory = rs::vm::writeImage(im);
+    const std::string s = streamed.str();
+    CHECK(Bytes(s.begin(), s.end()) == inMemory);
+    CHECK(rs::vm::loadImage(s).error.empty());
   }
 }
