@@ -5,19 +5,22 @@
 # after the other, and prints a line of figures per target. Findings stop
 # that target with libFuzzer's report; the input is kept in
 # build-fuzz/campaign/<target>/ and the script exits non-zero at the end.
-#   bash scripts/fuzz.sh [--runs N] [--seconds S] [TARGET ...]   (default: every target)
-# --seconds stops each target after S seconds if it has not run N inputs.
+#   bash scripts/fuzz.sh [--runs N] [--seconds S] [TARGET ...] [-- LIBFUZZER-OPTION ...]
+# (default: every target). --seconds stops each target after S seconds if
+# it has not run N inputs; options after -- go to each target (-max_len=1024).
 # docs/reliability.md shows the figures of one campaign.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=10000000
 seconds=0
 targets=()
+extra=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --runs) runs=$2; shift 2 ;;
     --seconds) seconds=$2; shift 2 ;;
-    -h | --help) sed -n '2,10p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,11p' "$0"; exit 0 ;;
+    --) shift; extra=("$@"); break ;;
     *) targets+=("$1"); shift ;;
   esac
 done
@@ -38,7 +41,7 @@ for t in "${targets[@]}"; do
   opts=()
   case "$t" in *_reader) opts=(-max_len=256) ;; esac
   if bash tests/fuzz/run.sh --fuzzer "$dir/tests/fuzz/$t" --robotsim "$dir/robotsim" --work "$dir/campaign" \
-       --runs "$runs" -- -max_total_time="$seconds" "${opts[@]}" >"$log" 2>&1; then verdict="no finding"; else verdict="FINDING (see $log)"; failed=1; fi
+       --runs "$runs" -- -max_total_time="$seconds" "${opts[@]}" "${extra[@]}" >"$log" 2>&1; then verdict="no finding"; else verdict="FINDING (see $log)"; failed=1; fi
   secs=$(( $(date +%s) - start ))
   execs=$(grep -o 'number_of_executed_units: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*$' || echo "?")
   cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*$' || echo "?")
