@@ -59,18 +59,18 @@ class LabelTable {
  public:
   static constexpr std::uint32_t kNone = UINT32_MAX;
 
-  std::uint32_t find(std::string_view name, const std::vector<vm::Label>& labels) const {
+  std::uint32_t find(std::string_view name, const vm::Image& image) const {
     if (slots_.empty()) return kNone;
     for (std::size_t i = hash(name) & mask();; i = (i + 1) & mask()) {
       if (slots_[i] == 0) return kNone;
-      if (base::sameName(labels[slots_[i] - 1].name, name)) return slots_[i] - 1;
+      if (base::sameName(image.labelName(slots_[i] - 1), name)) return slots_[i] - 1;
     }
   }
   /// Adds label `id` unless one of its name is there: then returns that one's id.
-  std::uint32_t insert(std::uint32_t id, const std::vector<vm::Label>& labels) {
-    if (const std::uint32_t there = find(labels[id].name, labels); there != kNone) return there;
-    if (2 * (size_ + 1) > slots_.size()) grow(labels);
-    place(id, labels);
+  std::uint32_t insert(std::uint32_t id, const vm::Image& image) {
+    if (const std::uint32_t there = find(image.labelName(id), image); there != kNone) return there;
+    if (2 * (size_ + 1) > slots_.size()) grow(image);
+    place(id, image);
     ++size_;
     return kNone;
   }
@@ -82,16 +82,16 @@ class LabelTable {
     return static_cast<std::size_t>(h ^ (h >> 29));
   }
   std::size_t mask() const { return slots_.size() - 1; }
-  void place(std::uint32_t id, const std::vector<vm::Label>& labels) {
-    std::size_t i = hash(labels[id].name) & mask();
+  void place(std::uint32_t id, const vm::Image& image) {
+    std::size_t i = hash(image.labelName(id)) & mask();
     while (slots_[i] != 0) i = (i + 1) & mask();
     slots_[i] = id + 1;
   }
-  void grow(const std::vector<vm::Label>& labels) {
+  void grow(const vm::Image& image) {
     std::vector<std::uint32_t> old(std::max<std::size_t>(64, slots_.size() * 2), 0);
     old.swap(slots_);
     for (std::uint32_t slot : old)
-      if (slot != 0) place(slot - 1, labels);
+      if (slot != 0) place(slot - 1, image);
   }
 
   std::vector<std::uint32_t> slots_;  // label id + 1; 0 = empty
@@ -176,6 +176,7 @@ Checker::Checker(const Target& target, const diag::SourceFile& source, diag::Dia
   im.lines.reserve(lines);
   im.columns.reserve(lines);
   im.labels.reserve(lines);
+  im.labelNames.reserve(source.text().size());
   s_->labelPositions.reserve(lines);
   im.constants.reserve(source.text().size() / 2 + 1);
   s_->known.reserve(lines);
@@ -190,9 +191,9 @@ void Checker::instruction(const Instruction& in) {
   const auto index = static_cast<std::uint32_t>(s.image.code.size());  // in.number - 1
   if (!in.label.empty()) {
     const auto id = static_cast<std::uint32_t>(s.image.labels.size());
-    s.image.labels.push_back({index, std::string(in.label)});
+    s.image.addLabel(index, in.label);
     s.labelPositions.push_back(in.labelPos);
-    if (const std::uint32_t first = s.labels.insert(id, s.image.labels); first != LabelTable::kNone) {
+    if (const std::uint32_t first = s.labels.insert(id, s.image); first != LabelTable::kNone) {
       const diag::Pos there = s.labelPositions[first];
       s.diag.error(in.labelPos, fmt::format("label '{}' is already defined on line {}", in.label, there.line),
                    "duplicate-label", {s.diag.relatedAt(there, fmt::format("'{}' is first defined here", in.label))});
@@ -396,10 +397,10 @@ void Checker::State::resolve() {
       continue;
     }
     const std::string_view name = nameAt(source, r.pos);
-    const std::uint32_t id = labels.find(name, image.labels);
+    const std::uint32_t id = labels.find(name, image);
     if (id == LabelTable::kNone) {
       diag.error(r.pos, fmt::format("undefined label '{}'", name),
-                 diag::Hint{didYouMean(name, image.labels, [](const vm::Label& l) -> std::string_view { return l.name; })},
+                 diag::Hint{didYouMean(name, image.labels, [&](const vm::Label& l) { return image.labelName(l); })},
                  "undefined-label");
       continue;
     }

@@ -106,7 +106,7 @@ std::variant<int, std::string> Session::breakAtLabel(std::string_view label) {
   b.id = nextId();
   b.kind = Breakpoint::Kind::Label;
   for (const vm::Label& l : run_->image().labels)
-    if (base::sameName(l.name, label)) b.label = l.name;
+    if (base::sameName(run_->image().labelName(l), label)) b.label = run_->image().labelName(l);
   b.instruction = *at;
   b.line = run_->image().lines[*at];
   b.instructions = {*at};

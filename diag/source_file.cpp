@@ -23,17 +23,28 @@ SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(nam
     if (++p == end) break;
     lineStarts_.push_back(static_cast<std::uint32_t>(p - begin));
   }
-  for (std::uint32_t n = 1; n <= lineCount(); ++n) {
-    const std::string_view l = line(n);
-    if (l.size() <= kCheckpointBytes) continue;
-    const auto start = static_cast<std::size_t>(l.data() - begin);
-    const std::size_t end = start + l.size();
-    std::uint32_t col = 1;
-    for (std::size_t at = start;;) {
-      at = stepColumns(text_, at, end, col, UINT32_MAX, at + kCheckpointBytes);
-      if (at >= end) break;
-      checkpoints_.push_back({at, n, col});
-    }
+  // Only a line longer than kCheckpointBytes gets checkpoints: found from
+  // the distance between line starts, walked in order (a byte a line).
+  std::uint32_t n = 0;
+  std::size_t previous = 0;
+  for (auto it = lineStarts_.begin();; ++it) {
+    const std::size_t next = it == lineStarts_.end() ? text_.size() + 1 : *it;
+    if (n > 0 && next - previous > kCheckpointBytes + 1) addCheckpoints(n);
+    if (it == lineStarts_.end()) break;
+    previous = next, ++n;
+  }
+}
+
+void SourceFile::addCheckpoints(std::uint32_t n) {
+  const std::string_view l = line(n);
+  if (l.size() <= kCheckpointBytes) return;
+  const auto start = static_cast<std::size_t>(l.data() - text_.data());
+  const std::size_t end = start + l.size();
+  std::uint32_t col = 1;
+  for (std::size_t at = start;;) {
+    at = stepColumns(text_, at, end, col, UINT32_MAX, at + kCheckpointBytes);
+    if (at >= end) break;
+    checkpoints_.push_back({at, n, col});
   }
 }
 
@@ -55,8 +66,12 @@ LoneCarriageReturn SourceFile::findLoneCarriageReturn() const {
     if (p + 1 < end && p[1] == '\n') continue;
     const std::size_t at = static_cast<std::size_t>(p - begin);
     // The line it is on: the last line start at or before it.
-    const auto next = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), at);
-    const auto line = static_cast<std::uint32_t>(next - lineStarts_.begin());
+    std::size_t below = 0, above = lineStarts_.size();  // lineStarts_[below] <= at
+    while (above - below > 1) {
+      const std::size_t middle = below + (above - below) / 2;
+      (lineStarts_[middle] <= at ? below : above) = middle;
+    }
+    const auto line = static_cast<std::uint32_t>(below + 1);
     std::uint32_t col = 1;
     stepColumns(text_, lineStarts_[line - 1], at, col, UINT32_MAX, at);
     return {true, {line, col}};

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/packed_numbers.h"
 #include "base/text.h"
 
 namespace rs::diag {
@@ -42,8 +43,8 @@ class SourceFile {
   const std::string& name() const { return name_; }
   const std::string& text() const { return text_; }
   std::uint32_t lineCount() const { return static_cast<std::uint32_t>(lineStarts_.size()); }
-  /// The text of a line (1-based), without its line break. Constant time,
-  /// whatever the line's length.
+  /// The text of a line (1-based), without its line break. Constant time
+  /// (at most 16 steps), whatever the line's length.
   std::string_view line(std::uint32_t number) const;
   LoneCarriageReturn findLoneCarriageReturn() const;
   /// The byte offset in text() of column `pos.col` of line `pos.line`
@@ -66,10 +67,13 @@ class SourceFile {
 
   std::string name_;
   std::string text_;
-  // 4-byte offsets: half the index of a file of short lines (the index is
-  // a compile's third-largest holding, after the source and the image).
-  // Every reader refuses files far below 4 GiB (256 MiB at most).
-  std::vector<std::uint32_t> lineStarts_;
+  void addCheckpoints(std::uint32_t line);
+
+  // Packed (base/packed_numbers.h): about a byte a line where 4-byte
+  // offsets were 4 (the index was a compile's third-largest holding, after
+  // the source and the image); a line is found in at most 16 steps. Every
+  // reader refuses files far below 4 GiB (256 MiB at most).
+  base::RisingNumbers lineStarts_;
   std::vector<Checkpoint> checkpoints_;  // sorted by offset, hence by (line, col)
 };
 

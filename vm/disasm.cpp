@@ -51,7 +51,7 @@ std::string operands(const Image& im, const Instr& in) {
 std::string_view labelAt(const Image& image, std::uint32_t index) {
   const auto it = std::lower_bound(image.labels.begin(), image.labels.end(), index,
                                    [](const Label& l, std::uint32_t i) { return l.index < i; });
-  return it != image.labels.end() && it->index == index ? std::string_view(it->name) : std::string_view();
+  return it != image.labels.end() && it->index == index ? image.labelName(*it) : std::string_view();
 }
 
 std::string instructionText(const Image& image, std::uint32_t index) {

@@ -6,8 +6,10 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "base/packed_numbers.h"
 #include "vm/opcodes.h"
 
 namespace rs::vm {
@@ -50,11 +52,17 @@ struct Point {
 };
 
 /// A label the source gave an instruction (kept for listings and traces).
+/// Its name is in the image's labelNames, up to nameEnd (from the end of
+/// the label before): 8 bytes a label and its letters, where a string each
+/// was 40 (a program of labels compiles in half the memory).
 struct Label {
-  std::uint32_t index = 0;  // 0-based instruction index
-  std::string name;
+  std::uint32_t index = 0;    // 0-based instruction index
+  std::uint32_t nameEnd = 0;  // in Image::labelNames
   bool operator==(const Label&) const = default;
 };
+
+using LineTable = base::RisingNumbers;   // lines only grow in a compiled program
+using ColumnTable = base::SmallNumbers;  // columns are mostly small
 
 inline constexpr std::uint16_t kDefaultCallDepth = 64;
 inline constexpr std::uint16_t kMaxCallDepth = 4096;
@@ -65,14 +73,25 @@ struct Image {
   std::uint16_t callDepthLimit = kDefaultCallDepth;
   std::vector<MotorSpec> motors;
   std::vector<Instr> code;
-  std::vector<std::uint32_t> lines;    // source line of each instruction
-  std::vector<std::uint32_t> columns;  // source column of each mnemonic
+  LineTable lines;      // source line of each instruction
+  ColumnTable columns;  // source column of each mnemonic
   std::vector<std::int32_t> constants;
   std::vector<std::string> variables;  // slot -> name
   std::vector<Point> points;
   std::vector<Label> labels;          // sorted by index
+  std::string labelNames;             // every label's name, one after the other
   std::vector<std::uint8_t> cell;     // the workcell compiled in, opaque to the VM (may be empty)
   bool operator==(const Image&) const = default;
+
+  std::string_view labelName(std::size_t i) const {
+    const std::size_t start = i == 0 ? 0 : labels[i - 1].nameEnd;
+    return std::string_view(labelNames).substr(start, labels[i].nameEnd - start);
+  }
+  std::string_view labelName(const Label& l) const { return labelName(static_cast<std::size_t>(&l - labels.data())); }
+  void addLabel(std::uint32_t index, std::string_view name) {
+    labelNames += name;
+    labels.push_back({index, static_cast<std::uint32_t>(labelNames.size())});
+  }
 };
 
 }  // namespace rs::vm

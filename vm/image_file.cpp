@@ -97,9 +97,9 @@ void writePayload(ByteWriter& w, const Image& im) {
     for (std::int32_t v : p.values) w.i32(v);
   }
   w.u32(static_cast<std::uint32_t>(im.labels.size()));
-  for (const Label& l : im.labels) {
-    w.u32(l.index);
-    w.str(l.name);
+  for (std::size_t i = 0; i < im.labels.size(); ++i) {
+    w.u32(im.labels[i].index);
+    w.str(im.labelName(i));
   }
   w.u32(static_cast<std::uint32_t>(im.cell.size()));
   w.bytes(im.cell);
@@ -120,7 +120,7 @@ std::size_t payloadBytes(const Image& im) {
   n += 4;
   for (const Point& p : im.points) n += str(p.name) + p.values.size() * 4;
   n += 4;
-  for (const Label& l : im.labels) n += 4 + str(l.name);
+  for (std::size_t i = 0; i < im.labels.size(); ++i) n += 4 + str(im.labelName(i));
   return n + 4 + im.cell.size() + (hasMotionSection(im) ? im.motors.size() * 8 : 0);
 }
 
@@ -191,11 +191,10 @@ void readNames(ByteReader& r, Image& im) {
   }
   const std::size_t nl = r.count(6, "label");
   for (std::size_t i = 0; i < nl && !r.failed; ++i) {
-    Label l;
-    l.index = r.u32();
-    l.name = r.str();
-    labels.check(r, i, l.name);
-    im.labels.push_back(std::move(l));
+    const std::uint32_t index = r.u32();
+    const std::string name = r.str();
+    labels.check(r, i, name);
+    im.addLabel(index, name);
   }
   // The cell section is opaque here; runtime/workcell decodes and checks it.
   const std::size_t nc = r.count(1, "cell byte");

@@ -120,7 +120,7 @@ std::string checkTables(const Image& image) {
         return fmt::format("point {} value {} outside motor {} range", p.name, p.values[i], image.motors[i].letter);
   }
   for (std::size_t i = 0; i < image.labels.size(); ++i) {
-    if (image.labels[i].index >= image.code.size()) return fmt::format("label {} outside the code", image.labels[i].name);
+    if (image.labels[i].index >= image.code.size()) return fmt::format("label {} outside the code", image.labelName(i));
     if (i > 0 && image.labels[i].index < image.labels[i - 1].index) return "labels are not sorted";
   }
   return {};

@@ -114,7 +114,7 @@ render::Listing listing(const launch::LoadedProgram& program) {
   l.name = baseName(program.source ? program.source->name() : image.sourceName);
   if (program.source) {
     for (std::uint32_t n = 1; n <= program.source->lineCount(); ++n) l.lines.emplace_back(program.source->line(n));
-    l.lineOf = image.lines;
+    l.lineOf = image.lines.toVector();
   } else {
     for (std::uint32_t i = 0; i < image.code.size(); ++i) {
       l.lines.push_back(fmt::format("{:04}  {}", i + 1, vm::instructionText(image, i)));

@@ -88,7 +88,7 @@ Profile profileOf(const vm::Image& image, const RunLog& log, std::size_t slowest
   MoveCursor cursor(log);
   const auto nameAt = [&](std::uint32_t index) {
     const vm::Label* l = labelAt(image, index);
-    return l ? l->name : "instruction " + std::to_string(index + 1);
+    return l ? std::string(image.labelName(*l)) : "instruction " + std::to_string(index + 1);
   };
 
   for (std::size_t s = 0; s < log.steps.size(); ++s) {
@@ -124,7 +124,7 @@ Profile profileOf(const vm::Image& image, const RunLog& log, std::size_t slowest
     const std::uint32_t first = above == image.labels.begin() ? 0 : (above - 1)->index;
     NamedTime& region = labels[first];
     if (region.count++ == 0) {
-      region.name = above == image.labels.begin() ? "(start)" : (above - 1)->name;
+      region.name = above == image.labels.begin() ? "(start)" : std::string(image.labelName(*(above - 1)));
       region.line = image.lines[first];
     }
     add(region.time, kind, t);

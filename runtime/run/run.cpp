@@ -113,7 +113,7 @@ vm::RunOutcome Run::runUntilLine(std::uint32_t line) {
 
 std::optional<std::uint32_t> Run::labelInstruction(std::string_view label) const {
   for (const vm::Label& l : spec_.image->labels)
-    if (base::sameName(l.name, label)) return l.index;
+    if (base::sameName(spec_.image->labelName(l), label)) return l.index;
   return std::nullopt;
 }
 

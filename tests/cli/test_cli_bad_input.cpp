@@ -15,6 +15,7 @@
 
 #include "tests/cli/cli_programs.h"
 #include "tests/cli/cli_support.h"
+#include "tests/vm/image_support.h"
 #include "cli/lib/report.h"
 #include "cli/lib/trace.h"
 #include "compiler/compiler.h"
@@ -345,7 +346,7 @@ TEST_CASE("cli: names from a forged image never reach the terminal raw", "[cli]"
     const std::string variable =
         forge("variable.rsb", "v.rsp", program, [&](rs::vm::Image& im) { im.variables[0] = "N" + hostile; });
     const std::string label =
-        forge("label.rsb", "v.rsp", program, [&](rs::vm::Image& im) { im.labels[0].name = hostile; });
+        forge("label.rsb", "v.rsp", program, [&](rs::vm::Image& im) { rs::testing::setLabelName(im, 0, hostile); });
     const std::string point =
         forge("point.rsb", "v.rsp", program, [&](rs::vm::Image& im) { im.points[0].name = "P\x1b[2J"; });
     const std::string robot =

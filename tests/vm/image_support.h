@@ -22,6 +22,21 @@ using Bytes = std::vector<std::uint8_t>;
 
 inline rs::compiler::Target rhino() { return {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth}; }
 
+// An image's label names and line table are packed (vm/image.h): these
+// change one entry as a forger would, rebuilding the rest as it was.
+inline void setLabelName(Image& im, std::size_t i, std::string_view name) {
+  Image was = im;
+  im.labels.clear();
+  im.labelNames.clear();
+  for (std::size_t k = 0; k < was.labels.size(); ++k) im.addLabel(was.labels[k].index, k == i ? name : was.labelName(k));
+}
+inline void setLine(Image& im, std::size_t i, std::uint32_t line) {
+  std::vector<std::uint32_t> lines = im.lines.toVector();
+  lines[i] = line;
+  im.lines.clear();
+  for (std::uint32_t l : lines) im.lines.push_back(l);
+}
+
 inline Image compileOk(const std::string& text, const std::string& name = "v.rsp") {
   const rs::diag::SourceFile source(name, text);
   rs::compiler::CompileResult r = rs::compiler::compile(source, rhino());

@@ -327,7 +327,7 @@ TEST_CASE("decoder errors have exact messages", "[verifier]") {
     bad.points[0].name = "";
     CHECK(loadError(bad) == "malformed image: point 1 has a bad name");
     bad = compileOk("x: END\n");
-    bad.labels[0].name = "a b";
+    rs::testing::setLabelName(bad, 0, "a b");
     CHECK(loadError(bad) == "malformed image: label 1 has a bad name");
   }
 }
@@ -357,29 +357,29 @@ TEST_CASE("loader: names the compiler could never write", "[verifier]") {
   };
   SECTION("control characters and other non-identifiers") {
     refused([](Image& b) { b.variables[1] = "N\x1b]0;pwned\x07"; }, "variable 2 has a bad name");
-    refused([](Image& b) { b.labels[0].name = "\x1b[2J"; }, "label 1 has a bad name");
+    refused([](Image& b) { rs::testing::setLabelName(b, 0, "\x1b[2J"); }, "label 1 has a bad name");
     refused([](Image& b) { b.points[1].name = "Q\n"; }, "point 2 has a bad name");
     refused([](Image& b) { b.variables[0] = "caf\xC3\xA9"; }, "variable 1 has a bad name");
     refused([](Image& b) { b.variables[0] = "A-B"; }, "variable 1 has a bad name");
-    refused([](Image& b) { b.labels[1].name = std::string(65, 'x'); }, "label 2 has a bad name");
+    refused([](Image& b) { rs::testing::setLabelName(b, 1, std::string(65, 'x')); }, "label 2 has a bad name");
     Image longest = im;
-    longest.labels[1].name = std::string(64, 'x');
+    rs::testing::setLabelName(longest, 1, std::string(64, 'x'));
     CHECK(loadError(longest) == "");
   }
   SECTION("reserved words, in any case") {
     refused([](Image& b) { b.variables[0] = "MOVE"; }, "variable 1 is named MOVE, a reserved word");
-    refused([](Image& b) { b.labels[1].name = "points"; }, "label 2 is named points, a reserved word");
+    refused([](Image& b) { rs::testing::setLabelName(b, 1, "points"); }, "label 2 is named points, a reserved word");
     refused([](Image& b) { b.points[0].name = "On"; }, "point 1 is named On, a reserved word");
     refused([](Image& b) { b.points[0].name = "OFF"; }, "point 1 is named OFF, a reserved word");
   }
   SECTION("duplicates, ignoring case as programs do") {
     refused([](Image& b) { b.variables[1] = "N"; }, "variable 2 has the same name as variable 1 (N)");
     refused([](Image& b) { b.variables[1] = "n"; }, "variable 2 has the same name as variable 1 (n)");
-    refused([](Image& b) { b.labels[1].name = "A"; }, "label 2 has the same name as label 1 (A)");
+    refused([](Image& b) { rs::testing::setLabelName(b, 1, "A"); }, "label 2 has the same name as label 1 (A)");
     refused([](Image& b) { b.points[1].name = "P"; }, "point 2 has the same name as point 1 (P)");
     // One name per kind: a label, a point and a variable may share a name.
     Image shared = im;
-    shared.labels[0].name = "N";
+    rs::testing::setLabelName(shared, 0, "N");
     shared.points[0].name = "N";
     CHECK(loadError(shared) == "");
   }
@@ -403,7 +403,7 @@ TEST_CASE("disassembler: names are printed with control characters escaped", "[v
   im.sourceName = "\x1b]0;pwned\x07.rsp";
   im.robotName = "robot\x1b[31m";
   im.variables[0] = "N\x1b[2J";
-  im.labels[0].name = "loop\x07";
+  rs::testing::setLabelName(im, 0, "loop\x07");
   im.points[0].name = "P\r";
   const std::string listing = rs::vm::disassemble(im);
   INFO(listing);

@@ -98,7 +98,7 @@ TEST_CASE("verifier: points, tables and labels", "[verifier]") {
   bad.lines.clear();
   CHECK(rs::vm::verify(bad).message == "line table has 0 entries for 1 instructions");
   bad = tiny();
-  bad.lines[0] = 0;
+  rs::testing::setLine(bad, 0, 0);
   CHECK(loadError(bad) == "image rejected by the verifier: instruction 1 has no source position");
   bad = tiny();
   bad.callDepthLimit = 0;
@@ -110,7 +110,10 @@ TEST_CASE("verifier: points, tables and labels", "[verifier]") {
   bad.labels[1].index = 2;
   CHECK(loadError(bad) == "image rejected by the verifier: label b outside the code");
   bad = compileOk("a: SET N 1\nb: END\n");
-  std::swap(bad.labels[0], bad.labels[1]);
+  bad.labels.clear();
+  bad.labelNames.clear();
+  bad.addLabel(1, "b");
+  bad.addLabel(0, "a");
   CHECK(loadError(bad) == "image rejected by the verifier: labels are not sorted");
 }
 
