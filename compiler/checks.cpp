@@ -117,6 +117,14 @@ struct Checker::State {
   diag::Diagnostics& diag;
   vm::Image image;          // built as instructions come; code holds a placeholder for an unknown one
   std::vector<bool> known;  // per instruction: its mnemonic was known
+  // Instructions seen. The image (code, known, lines, columns) holds them
+  // only up to the first error: a program with errors makes no image, and
+  // a file of short wrong lines ("x") would otherwise hold a 12-byte
+  // placeholder for each 2-byte line. What the checks after an error need
+  // is kept apart: whether any GOSUB was seen, and where later RETURNs are.
+  std::uint32_t count = 0;
+  bool anyGosub = false;
+  std::vector<diag::Pos> returnsAfterError;
   LabelTable labels;        // the first of each name, by id in image.labels
   std::vector<diag::Pos> labelPositions;  // per label id: where it is defined
   NameTable points, variables;
@@ -146,7 +154,7 @@ struct Checker::State {
   std::span<const vm::MotorSpec> motors() const { return image.motors; }
   diag::Pos posOf(std::size_t i) const { return {image.lines[i], image.columns[i]}; }
 
-  std::uint32_t jump(const Instruction& in);
+  std::uint32_t jump(const Instruction& in, std::uint32_t index);
   std::uint16_t variable(const Instruction& in);
   void checkIo(const Instruction& in);
   void checkTargets(const Instruction& in);
@@ -159,7 +167,7 @@ struct Checker::State {
 };
 
 Checker::Checker(const Target& target, const diag::SourceFile& source, diag::Diagnostics& diagnostics)
-    : s_(std::make_unique<State>(State{source, diagnostics, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}})) {
+    : s_(std::make_unique<State>(State{source, diagnostics, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}})) {
   vm::Image& im = s_->image;
   s_->robot = target.robot;
   im.sourceName = source.name();
@@ -188,7 +196,9 @@ Checker::~Checker() = default;
 
 void Checker::instruction(const Instruction& in) {
   State& s = *s_;
-  const auto index = static_cast<std::uint32_t>(s.image.code.size());  // in.number - 1
+  const std::uint32_t index = s.count++;  // in.number - 1
+  // Decided before this instruction's own errors, so that code[i] stays instruction i.
+  const bool keep = !s.diag.hasErrors();
   if (!in.label.empty()) {
     const auto id = static_cast<std::uint32_t>(s.image.labels.size());
     s.image.addLabel(index, in.label);
@@ -199,16 +209,20 @@ void Checker::instruction(const Instruction& in) {
                    "duplicate-label", {s.diag.relatedAt(there, fmt::format("'{}' is first defined here", in.label))});
     }
   }
-  s.known.push_back(in.known);
-  s.image.lines.push_back(in.pos.line);
-  s.image.columns.push_back(in.pos.col);
+  if (keep) {
+    s.known.push_back(in.known);
+    s.image.lines.push_back(in.pos.line);
+    s.image.columns.push_back(in.pos.col);
+  }
   if (!in.known) {
-    s.image.code.emplace_back();
+    if (keep) s.image.code.emplace_back();
     return;
   }
+  if (in.op == vm::Op::Gosub) s.anyGosub = true;
+  if (in.op == vm::Op::Return && !keep) s.returnsAfterError.push_back(in.pos);
   std::uint32_t target = 0;
   std::uint16_t slot = 0;
-  if (vm::info(in.op).flags & vm::kJumps) target = s.jump(in);
+  if (vm::info(in.op).flags & vm::kJumps) target = s.jump(in, index);
   switch (vm::info(in.op).format) {
     case vm::Format::Point:
       if (!in.name.empty()) s.pointUses.push_back({in.namePos, index, 0});
@@ -221,7 +235,7 @@ void Checker::instruction(const Instruction& in) {
     case vm::Format::MotorVector: s.checkTargets(in); break;
     default: break;
   }
-  s.image.code.push_back(encode(in, slot, target, s.image.constants));
+  if (keep) s.image.code.push_back(encode(in, slot, target, s.image.constants));
 }
 
 void Checker::pointsHeader(diag::Pos pos) { s_->pointsHeader = pos; }
@@ -308,7 +322,7 @@ void Checker::State::resolvePose(const PointDef& p, std::span<const std::int32_t
 
 std::optional<vm::Image> Checker::finish() {
   State& s = *s_;
-  if (s.image.code.empty()) s.diag.error({1, 1}, "the program has no instructions", "empty-program");
+  if (s.count == 0) s.diag.error({1, 1}, "the program has no instructions", "empty-program");
   s.resolve();
   s.warnUnassignedVariables();
   s.analyseFlow();
@@ -318,10 +332,9 @@ std::optional<vm::Image> Checker::finish() {
 
 // A jump by number is encoded now and checked against the program's length
 // at the end; a jump to a label waits for the label.
-std::uint32_t Checker::State::jump(const Instruction& in) {
+std::uint32_t Checker::State::jump(const Instruction& in, std::uint32_t index) {
   const JumpRef& t = in.target;
   if (t.pos.line == 0) return 0;  // operand was malformed, already reported
-  const auto index = static_cast<std::uint32_t>(image.code.size());
   if (!t.label.empty()) {
     jumps.push_back({t.pos, index, 0});
     return 0;
@@ -387,7 +400,7 @@ void Checker::State::checkTargets(const Instruction& in) {
 
 // Labels, points and line numbers, now that the whole file is read.
 void Checker::State::resolve() {
-  const std::size_t n = image.code.size();
+  const std::size_t n = count;
   for (const Reference& r : jumps) {
     if (r.number != 0) {
       if (r.number > n)
@@ -404,7 +417,7 @@ void Checker::State::resolve() {
                  "undefined-label");
       continue;
     }
-    image.code[r.index].d = static_cast<std::int32_t>(image.labels[id].index);
+    if (r.index < image.code.size()) image.code[r.index].d = static_cast<std::int32_t>(image.labels[id].index);
   }
   for (const Reference& r : pointUses) {
     const std::string_view name = nameAt(source, r.pos);
@@ -415,7 +428,7 @@ void Checker::State::resolve() {
                  "undefined-point");
       continue;
     }
-    image.code[r.index].b = static_cast<std::uint16_t>(it->second.index);
+    if (r.index < image.code.size()) image.code[r.index].b = static_cast<std::uint16_t>(it->second.index);
   }
   if (points.size() > kMaxSlots) diag.error(pointsHeader, "more than 65535 points", "too-many-names");
   std::vector<Reference>().swap(jumps);
@@ -459,22 +472,29 @@ std::vector<bool> Checker::State::reachable(const std::vector<std::uint32_t>& st
 
 void Checker::State::analyseFlow() {
   const std::vector<vm::Instr>& code = image.code;
+  // Reachability needs every jump target; with errors (the code then ends
+  // at the first), only the check that does not: a RETURN in a program
+  // without any GOSUB.
+  if (diag.hasErrors()) {
+    if (anyGosub) return;
+    for (std::size_t i = 0; i < code.size(); ++i)
+      if (known[i] && code[i].op == vm::Op::Return)
+        diag.error(posOf(i), "RETURN without any GOSUB in the program", "unmatched-return");
+    for (const diag::Pos& pos : returnsAfterError)
+      diag.error(pos, "RETURN without any GOSUB in the program", "unmatched-return");
+    return;
+  }
   std::vector<std::uint32_t> subroutines;
   for (std::size_t i = 0; i < code.size(); ++i)
     if (known[i] && code[i].op == vm::Op::Gosub) subroutines.push_back(static_cast<std::uint32_t>(code[i].d));
-  const bool targetsResolved = !diag.hasErrors();
-  // Reachability needs every jump target; with errors, only the check that
-  // does not: a RETURN in a program without any GOSUB.
-  if (subroutines.empty() || targetsResolved) {
-    const std::vector<bool> inSubroutine = reachable(subroutines);
-    for (std::size_t i = 0; i < code.size(); ++i) {
-      if (!known[i] || code[i].op != vm::Op::Return || inSubroutine[i]) continue;
-      diag.error(posOf(i), subroutines.empty() ? std::string("RETURN without any GOSUB in the program")
-                                               : std::string("RETURN that no GOSUB can reach"),
-                 "unmatched-return");
-    }
+  const std::vector<bool> inSubroutine = reachable(subroutines);
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    if (!known[i] || code[i].op != vm::Op::Return || inSubroutine[i]) continue;
+    diag.error(posOf(i), subroutines.empty() ? std::string("RETURN without any GOSUB in the program")
+                                             : std::string("RETURN that no GOSUB can reach"),
+               "unmatched-return");
   }
-  if (code.empty() || !targetsResolved) return;
+  if (code.empty()) return;
   const std::vector<bool> live = reachable({0});
   for (std::size_t i = 1; i < code.size(); ++i) {
     if (live[i] || !live[i - 1]) continue;

@@ -412,6 +412,20 @@ TEST_CASE("RETURN without any GOSUB is reported alongside other errors", "[compi
                                       err(2, 1, "RETURN without any GOSUB in the program")});
 }
 
+// After the first error the compile keeps no code (no image will be made):
+// the checks that follow still see every instruction, those before the
+// error from the code and those after from what is kept apart.
+TEST_CASE("checks after the first error see every instruction", "[compiler]") {
+  expectDiagnostics("RETURN\nFOO\nRETURN\nGOTO 6\nGOTO nowhere\n",
+                    {err(1, 1, "RETURN without any GOSUB in the program"),
+                     err(2, 1, "unknown instruction 'FOO' (did you mean GOTO?)"),
+                     err(3, 1, "RETURN without any GOSUB in the program"),
+                     err(4, 6, "line number 6 does not exist (the program has 5 instructions)"),
+                     err(5, 6, "undefined label 'nowhere'")});
+  // A GOSUB after the error still counts: a RETURN may then be reachable.
+  expectDiagnostics("RETURN\nFOO\nGOSUB 1\n", {err(2, 1, "unknown instruction 'FOO' (did you mean GOTO?)")});
+}
+
 TEST_CASE("render: GNU format, the source line and a caret", "[compiler]") {
   using rs::diag::render;
   {
