@@ -29,6 +29,13 @@ nlohmann::json benchDispatch(const Options& options);
 /// peak RSS of compiling 1M instructions.
 nlohmann::json benchCompile(const Options& options);
 
+/// Compile memory: the peak RSS of `robotsim compile` on programs of 1M
+/// and 2M lines of one short kind (END, MOVE, labels, jumps, unknown
+/// words), the growth between them per source byte (target: 5) and the
+/// whole peak over the source. Runs first: the driver must stay smaller
+/// than what it measures.
+nlohmann::json benchMemory(const Options& options);
+
 /// Startup: `robotsim check` on a 1,000-line program, whole process.
 nlohmann::json benchStartup(const Options& options);
 
