@@ -40,7 +40,8 @@ std::optional<vm::Micros> maxTimeOf(const RunRequest& request, std::vector<diag:
   if (request.maxTime.empty()) return vm::RunLimits{}.maxTime;
   const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(request.maxTime);
   if (parsed.error.empty()) return parsed.micros;
-  diags.push_back({"--max-time", {}, diag::Severity::Error, parsed.error});
+  diags.push_back({"--max-time", {}, diag::Severity::Error, parsed.error, {},
+                   "seconds such as 2 or 1.5: at most 6 decimals, at most 1000000"});
   return std::nullopt;
 }
 
