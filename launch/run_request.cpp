@@ -41,7 +41,7 @@ std::optional<vm::Micros> maxTimeOf(const RunRequest& request, std::vector<diag:
   const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(request.maxTime);
   if (parsed.error.empty()) return parsed.micros;
   diags.push_back({"--max-time", {}, diag::Severity::Error, parsed.error, {},
-                   "seconds such as 2 or 1.5: at most 6 decimals, at most 1000000"});
+                   "a time is seconds with at most 6 decimals, from 0 to 1000000"});
   return std::nullopt;
 }
 

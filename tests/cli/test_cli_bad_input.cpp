@@ -183,7 +183,7 @@ TEST_CASE("cli: --max-steps and --max-time", "[cli]") {
     CHECK(a.code == 2);
     CHECK(a.err ==
           "--max-time: error: bad time 'abc': expected seconds such as 2 or 1.5\n"
-          "  hint: seconds such as 2 or 1.5: at most 6 decimals, at most 1000000\n");
+          "  hint: a time is seconds with at most 6 decimals, from 0 to 1000000\n");
     const CliResult n = runCli({"run", loop, "--max-time", "-1"});
     CHECK(n.code == 2);
     CHECK(n.err.starts_with("--max-time: error: time must not be negative, got '-1'\n  hint: "));
