@@ -231,7 +231,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   if (run) {
     render::Moment m = render::momentOf(*run, o.at.empty() ? INT64_MAX : at);
     if (o.at.empty() && run->finished())  // at a moment --at picks, the run has not ended
-      launch::printDiagnostics(err, runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
+      printRunWarnings(err, runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
     if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
       const vm::Image& image = run->image();
       launch::printDiagnostics(err, {runtimeDiagnostic(image, m.outcome, image.sourceName)}, loaded);
@@ -335,7 +335,7 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
     launch::printDiagnostics(err, {d}, loaded);
     input.outcome = d.pos.line ? fmt::format("line {}: {}", d.pos.line, d.message) : d.message;
   }
-  launch::printDiagnostics(err, runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
+  printRunWarnings(err, runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
   if (const auto w = runtime::gripperWarning(*run, run->image().sourceName))  // shown under END
     input.warning = fmt::format("line {}: {}", w->pos.line, w->message);
   const render::Frames frames = render::framesOf(recording, input.eventSteps, input.frameRule);

@@ -91,7 +91,7 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   // the run is what gave them).
   std::vector<diag::Diagnostic> warnings = runWarnings(*run, spec->collisions, image.sourceName);
   const bool failedStrict = strict && promoteWarnings(warnings);
-  launch::printDiagnostics(err, warnings, program);
+  printRunWarnings(err, warnings, program);
   report.diagnostics.insert(report.diagnostics.end(), warnings.begin(), warnings.end());
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);

@@ -27,6 +27,12 @@ std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::Coll
   return out;
 }
 
+void printRunWarnings(std::ostream& err, const std::vector<diag::Diagnostic>& warnings,
+                      const launch::LoadedProgram& program) {
+  launch::printDiagnostics(
+      err, warnings, [&program](const std::string& file) { return program.sourceOf(file); }, program.maxErrors, {});
+}
+
 bool promoteWarnings(std::vector<diag::Diagnostic>& diags) {
   bool promoted = false;
   for (diag::Diagnostic& d : diags)

@@ -6,10 +6,12 @@
 // one kind.
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "diag/diagnostic.h"
+#include "launch/program.h"
 #include "runtime/run/run.h"
 
 namespace rs::cli {
@@ -21,6 +23,11 @@ namespace rs::cli {
 /// name as diagnostics show it.
 std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::CollisionMode mode,
                                           const std::string& file);
+
+/// Prints `warnings` (at most --max-errors of them, then how many more):
+/// what the compile left unprinted was said with the compile's.
+void printRunWarnings(std::ostream& err, const std::vector<diag::Diagnostic>& warnings,
+                      const launch::LoadedProgram& program);
 
 /// --strict: each warning of `diags` becomes an error marked "[--strict]";
 /// true when there was one.

@@ -130,6 +130,24 @@ TEST_CASE_METHOD(StrictCase, "check --strict: a gripper that never took anything
   CHECK(strict.out.find("  gripper         closed once, took nothing") != std::string::npos);
 }
 
+TEST_CASE_METHOD(StrictCase, "a run's warning after compile warnings cut by --max-errors: the cut is noted once",
+                 "[cli][strict]") {
+  const std::string p = program("three.rsp",
+                                "        JMPVAR A > 0 done\n"
+                                "        JMPVAR B > 0 done\n"
+                                "        JMPVAR C > 0 done\n"
+                                "        MOVE 0 0 0 0 120\n"
+                                "done:   END\n");
+  const CliResult r = runCli({"check", p, "--cell", cell, "--max-errors", "1"});
+  INFO(r.err);
+  CHECK(r.code == 0);
+  const std::string note = "robotsim: note: 2 more warnings not shown; --max-errors 0 shows all\n";
+  const std::size_t at = r.err.find(note);
+  REQUIRE(at != std::string::npos);
+  CHECK(r.err.find(note, at + 1) == std::string::npos);
+  CHECK(r.err.find(": warning: the gripper closed once") != std::string::npos);
+}
+
 TEST_CASE_METHOD(StrictCase, "check --strict passes a program without warnings", "[cli][strict]") {
   const std::string p = program("clean.rsp",
                                 "        MOVETO 0 0 0 0 0\n"
