@@ -114,8 +114,8 @@ std::string_view withoutProgram(const RenderOptions& o) {
 
 // The program's run on the workcell, every problem of the program and of
 // the run's options printed (all of them, so that one call reports every
-// mistake); null when anything is wrong. `maxTime`, when set, overrides
-// --max-time.
+// mistake), with its --collisions; the run is null when anything is wrong.
+// `maxTime`, when set, overrides --max-time.
 struct Prepared {
   std::unique_ptr<runtime::Run> run;
   runtime::CollisionMode collisions = runtime::CollisionMode::Error;  // the run's --collisions
@@ -208,10 +208,10 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
 
   // With --at the run needs to go on only until then.
   Prepared prepared;
-  if (!o.program.file.empty() &&
-      !(prepared = prepare(loaded, o, vm::RunLimits{}.maxSteps, o.at.empty() ? std::nullopt : std::optional(at), err))
-           .run)
-    return kExitBadInput;
+  if (!o.program.file.empty()) {
+    prepared = prepare(loaded, o, vm::RunLimits{}.maxSteps, o.at.empty() ? std::nullopt : std::optional(at), err);
+    if (!prepared.run) return kExitBadInput;
+  }
   const std::unique_ptr<runtime::Run>& run = prepared.run;
 
   const workcell::Workcell& cell = *loaded.cell;
