@@ -92,7 +92,9 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
                 "slowest moves (with --format=json: a \"profile\" member); --max-steps then defaults to 10000000");
   addRunLikeOptions(run, ro);
   CLI::App* check = addRunLike(app, "check", "Compile, verify and simulate; exit 0 only if all is well", ro);
-  check->add_flag("--strict", ro.strict, "Warnings fail the check too");
+  check->add_flag("--strict", ro.strict,
+                  "Every warning fails the check: the compile's and the cell's (exit 2, nothing runs), the run's "
+                  "(exit 1)");
   addRunLikeOptions(check, ro);
 
   ProgramCommandOptions po;

@@ -41,8 +41,8 @@ void addRunOptions(CLI::App* cmd, launch::RunRequest& request, const std::string
 void addCollisionsOption(CLI::App* cmd, std::string& mode) {
   cmd->add_option("--collisions", mode,
                   "On a workcell, what a collision during a move does: error (default: the run stops with a runtime "
-                  "error naming the line, time and parts), warn (reported in the trace and the summary; the run "
-                  "goes on) or off (nothing is checked)")
+                  "error naming the line, time and parts), warn (a warning at the move's line, in the trace and the "
+                  "summary; the run goes on) or off (nothing is checked)")
       ->option_text("MODE");
 }
 
