@@ -11,38 +11,39 @@
 using rs::cli::NumberRead;
 using rs::cli::parseNumberList;
 using rs::cli::readNumber;
-namespace rules = rs::cli::rules;
+namespace numberRules = rs::cli::rules;
 using rs::testing::runCli;
 
 TEST_CASE("a number is read by its rule: decimals, signs, exponents, whole numbers exactly", "[cli][numbers]") {
-  CHECK(readNumber("76", rules::kJointValue).value == 76.0);
-  CHECK(readNumber("+72.5", rules::kJointValue).canonical == "72.5");
-  CHECK(readNumber("-0", rules::kJointValue).canonical == "0");  // never "-0"
-  CHECK(readNumber("1e3", rules::kEncoderCount).canonical == "1000");
-  CHECK(readNumber("-2147483648", rules::kEncoderCount).canonical == "-2147483648");
+  CHECK(readNumber("76", numberRules::kJointValue).value == 76.0);
+  CHECK(readNumber("+72.5", numberRules::kJointValue).canonical == "72.5");
+  CHECK(readNumber("-0", numberRules::kJointValue).canonical == "0");  // never "-0"
+  CHECK(readNumber("1e3", numberRules::kEncoderCount).canonical == "1000");
+  CHECK(readNumber("-2147483648", numberRules::kEncoderCount).canonical == "-2147483648");
   // Past 2^53 a double would change the number: whole numbers are read as integers.
-  CHECK(readNumber("4611686018427387903", rules::kStepCount).canonical == "4611686018427387903");
-  for (const NumberRead& good : {readNumber("1", rules::kZoom), readNumber("0.001", rules::kZoom)})
+  CHECK(readNumber("4611686018427387903", numberRules::kStepCount).canonical == "4611686018427387903");
+  for (const NumberRead& good : {readNumber("1", numberRules::kZoom), readNumber("0.001", numberRules::kZoom)})
     CHECK(good.problem.empty());
 }
 
 TEST_CASE("a number that is none, not finite, out of range or not whole is refused with the reason", "[cli][numbers]") {
-  CHECK(readNumber("nan", rules::kCoordinate).problem == "'nan' is not a number");
-  CHECK(readNumber("", rules::kCoordinate).problem == "'' is not a number");
-  CHECK(readNumber(" 1", rules::kCoordinate).problem == "' 1' is not a number");
-  CHECK(readNumber("0x10", rules::kCoordinate).problem == "'0x10' is not a number");
-  CHECK(readNumber("+-1", rules::kCoordinate).problem == "'+-1' is not a number");
-  CHECK(readNumber("inf", rules::kCoordinate).problem ==
+  CHECK(readNumber("nan", numberRules::kCoordinate).problem == "'nan' is not a number");
+  CHECK(readNumber("", numberRules::kCoordinate).problem == "'' is not a number");
+  CHECK(readNumber(" 1", numberRules::kCoordinate).problem == "' 1' is not a number");
+  CHECK(readNumber("0x10", numberRules::kCoordinate).problem == "'0x10' is not a number");
+  CHECK(readNumber("+-1", numberRules::kCoordinate).problem == "'+-1' is not a number");
+  CHECK(readNumber("inf", numberRules::kCoordinate).problem ==
         "'inf' is out of range: a coordinate is from -1000000000 to 1000000000");
-  CHECK(readNumber("1e308", rules::kEncoderCount).problem ==
+  CHECK(readNumber("1e308", numberRules::kEncoderCount).problem ==
         "'1e308' is out of range: an encoder count is a whole number from -2147483648 to 2147483647");
-  CHECK(readNumber("1e999", rules::kCoordinate).problem.starts_with("'1e999' is out of range"));
-  CHECK(readNumber("2147483648", rules::kEncoderCount).problem.starts_with("'2147483648' is out of range"));
-  CHECK(readNumber("4611686018427387905", rules::kStepCount).problem.starts_with("'4611686018427387905' is out"));
-  CHECK(readNumber("2.5", rules::kEncoderCount).problem == "'2.5' is not a whole number (an encoder count is one)");
-  CHECK(readNumber("0", rules::kZoom).problem == "'0' is out of range: a zoom is above 0 and at most 1000000");
+  CHECK(readNumber("1e999", numberRules::kCoordinate).problem.starts_with("'1e999' is out of range"));
+  CHECK(readNumber("2147483648", numberRules::kEncoderCount).problem.starts_with("'2147483648' is out of range"));
+  CHECK(readNumber("4611686018427387905", numberRules::kStepCount).problem.starts_with("'4611686018427387905' is out"));
+  CHECK(readNumber("2.5", numberRules::kEncoderCount).problem ==
+        "'2.5' is not a whole number (an encoder count is one)");
+  CHECK(readNumber("0", numberRules::kZoom).problem == "'0' is out of range: a zoom is above 0 and at most 1000000");
   // What is quoted is printable and short.
-  const std::string shown = readNumber(std::string("\x1b[2J") + std::string(1000, '7'), rules::kAngle).problem;
+  const std::string shown = readNumber(std::string("\x1b[2J") + std::string(1000, '7'), numberRules::kAngle).problem;
   CHECK(shown.find('\x1b') == std::string::npos);
   CHECK(shown.size() < 100);
 }
@@ -50,15 +51,15 @@ TEST_CASE("a number that is none, not finite, out of range or not whole is refus
 TEST_CASE("a number list names the option, the item and the reason, with a hint", "[cli][numbers]") {
   std::vector<double> v{9.0};  // cleared first
   std::ostringstream err;
-  REQUIRE(parseNumberList("76,+72.5,-90", "--theta", rules::kJointValue, v, err));
+  REQUIRE(parseNumberList("76,+72.5,-90", "--theta", numberRules::kJointValue, v, err));
   CHECK(v == std::vector<double>{76.0, 72.5, -90.0});
   CHECK(err.str().empty());
-  CHECK_FALSE(parseNumberList("1,,3", "--encoders", rules::kEncoderCount, v, err));
+  CHECK_FALSE(parseNumberList("1,,3", "--encoders", numberRules::kEncoderCount, v, err));
   CHECK(err.str() ==
         "--encoders: error: value 2 '' is not a number\n"
         "  hint: encoder counts are whole numbers within each motor's RANGE (robotsim describe CELL lists them)\n");
   err.str("");
-  CHECK_FALSE(parseNumberList("1,2,nan", "--theta", rules::kJointValue, v, err));
+  CHECK_FALSE(parseNumberList("1,2,nan", "--theta", numberRules::kJointValue, v, err));
   CHECK(err.str().starts_with("--theta: error: value 3 'nan' is not a number\n  hint: "));
 }
 

@@ -30,7 +30,7 @@ const char* const kMillion =
     "        END\n";
 
 // The page's model: the JSON in its <script id="robotsim-model">.
-nlohmann::json modelOf(const std::string& html) {
+nlohmann::json pageModelOf(const std::string& html) {
   const std::string open = "id=\"robotsim-model\">";
   const std::size_t at = html.find(open);
   REQUIRE(at != std::string::npos);
@@ -52,7 +52,7 @@ TEST_CASE("animate of a million steps writes a page of bounded frames with every
   CHECK(r.out.find(" frames: every event, and the first instruction to start in each 0.062 s)") != std::string::npos);
   const std::string html = rs::testing::readBytes(page);
   CHECK(html.size() < 2'000'000);  // was 37.8 MB
-  const nlohmann::json run = modelOf(html)["run"];
+  const nlohmann::json run = pageModelOf(html)["run"];
   CHECK(run["frames"]["steps"] == 1000201);
   CHECK(run["frames"]["slot"] == 62450);
   CHECK(run["end"] == 1'249'000'000);

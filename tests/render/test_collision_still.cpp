@@ -47,14 +47,14 @@ constexpr const char* kCarryIntoWall =
     "MOVE 0 400 0 0\n"
     "END\n";
 
-struct Segment {
+struct SvgSegment {
   double ax, ay, bx, by;
 };
 
 // The SVG's stroked paths: for each stroke colour "rgb(...)" and width, its
 // segments (cairo writes a path of lines as "M x y L x y" pairs).
-std::map<std::string, std::vector<Segment>> strokes(const std::string& svg) {
-  std::map<std::string, std::vector<Segment>> out;
+std::map<std::string, std::vector<SvgSegment>> svgStrokes(const std::string& svg) {
+  std::map<std::string, std::vector<SvgSegment>> out;
   const std::regex path(R"re(stroke-width:([0-9.]+);[^"]*stroke:(rgb\([^)]*\));[^"]*" d="([^"]*)")re");
   const std::regex segment(R"(M ([-0-9.e]+) ([-0-9.e]+) L ([-0-9.e]+) ([-0-9.e]+))");
   for (auto p = std::sregex_iterator(svg.begin(), svg.end(), path); p != std::sregex_iterator(); ++p) {
@@ -67,10 +67,10 @@ std::map<std::string, std::vector<Segment>> strokes(const std::string& svg) {
 
 // Whether one of `segments` is `line` of the dump: cairo keeps coordinates
 // in 24.8 fixed point, so the SVG has them to 1/256 px.
-bool drawn(const std::vector<Segment>& segments, const nlohmann::json& line) {
+bool drawnInSvg(const std::vector<SvgSegment>& segments, const nlohmann::json& line) {
   constexpr double kFixedPoint = 1.0 / 256;
   const double ax = line["a"][0], ay = line["a"][1], bx = line["b"][0], by = line["b"][1];
-  for (const Segment& s : segments)
+  for (const SvgSegment& s : segments)
     if (std::abs(s.ax - ax) <= kFixedPoint && std::abs(s.ay - ay) <= kFixedPoint &&
         std::abs(s.bx - bx) <= kFixedPoint && std::abs(s.by - by) <= kFixedPoint)
       return true;
@@ -79,10 +79,10 @@ bool drawn(const std::vector<Segment>& segments, const nlohmann::json& line) {
 
 // CIEDE2000 colour difference of two sRGB colours (D65), written from the
 // CIE's formulas: about 2 is the least a viewer notices side by side.
-struct Lab {
+struct CieLab {
   double L, a, b;
 };
-Lab labOf(double r, double g, double b) {
+CieLab cieLabOf(double r, double g, double b) {
   const auto linear = [](double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); };
   r = linear(r), g = linear(g), b = linear(b);
   const double X = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047, Y = 0.2126 * r + 0.7152 * g + 0.0722 * b,
@@ -90,7 +90,7 @@ Lab labOf(double r, double g, double b) {
   const auto f = [](double t) { return t > 216.0 / 24389 ? std::cbrt(t) : (24389.0 / 27 * t + 16) / 116; };
   return {116 * f(Y) - 16, 500 * (f(X) - f(Y)), 200 * (f(Y) - f(Z))};
 }
-double deltaE2000(const Lab& p, const Lab& q) {
+double deltaE2000(const CieLab& p, const CieLab& q) {
   const double deg = M_PI / 180;
   const double C7 = std::pow((std::hypot(p.a, p.b) + std::hypot(q.a, q.b)) / 2, 7);
   const double G = 0.5 * (1 - std::sqrt(C7 / (C7 + std::pow(25.0, 7))));
@@ -117,11 +117,11 @@ double deltaE2000(const Lab& p, const Lab& q) {
   return std::sqrt(std::pow(dL / SL, 2) + std::pow(dC / SC, 2) + std::pow(dH / SH, 2) + RT * (dC / SC) * (dH / SH));
 }
 
-// "rgb(66.666667%,0%,0%)" -> Lab.
-Lab labOfSvg(const std::string& rgb) {
+// "rgb(66.666667%,0%,0%)" -> CieLab.
+CieLab labOfSvg(const std::string& rgb) {
   std::smatch m;
   REQUIRE(std::regex_search(rgb, m, std::regex(R"(rgb\(([0-9.]+)%,([0-9.]+)%,([0-9.]+)%\))")));
-  return labOf(std::stod(m[1]) / 100, std::stod(m[2]) / 100, std::stod(m[3]) / 100);
+  return cieLabOf(std::stod(m[1]) / 100, std::stod(m[2]) / 100, std::stod(m[3]) / 100);
 }
 
 // Draws the cell with the program at `args` as an SVG and as the dump of
@@ -141,13 +141,13 @@ void checkMarked(const std::vector<std::string>& args, int code) {
   const auto dump = runCli(dumpArgs);
   REQUIRE(dump.code == code);
   const nlohmann::json lines = nlohmann::json::parse(dump.out)["lines"];
-  const auto paths = strokes(rs::testing::readBytes(dir.file("still.svg")));
+  const auto paths = svgStrokes(rs::testing::readBytes(dir.file("still.svg")));
 
   // The colour the block and the wall are drawn in, read from the SVG.
   std::string marked;
   for (const auto& [key, segments] : paths)
     for (const nlohmann::json& line : lines)
-      if (line["owner"] == "object" && line["index"] == 1 && drawn(segments, line)) marked = key;
+      if (line["owner"] == "object" && line["index"] == 1 && drawnInSvg(segments, line)) marked = key;
   REQUIRE(!marked.empty());
   INFO("marked: " << marked);
   CHECK(marked.ends_with(" 2.5"));  // twice the other lines' 1.25 px
@@ -155,13 +155,13 @@ void checkMarked(const std::vector<std::string>& args, int code) {
   for (const nlohmann::json& line : lines) {
     const bool part = line["owner"] == "object" && (line["index"] == 1 || line["index"] == 2);
     INFO(line.dump());
-    CHECK(drawn(paths.at(marked), line) == part);
+    CHECK(drawnInSvg(paths.at(marked), line) == part);
     inContact += part;
   }
   CHECK(inContact == 24);  // two boxes of 12 edges
   CHECK(paths.at(marked).size() == inContact);
   // Not the block's own light red (255, 85, 85), nor near it.
-  const Lab lightRed = labOf(1.0, 85.0 / 255, 85.0 / 255);
+  const CieLab lightRed = cieLabOf(1.0, 85.0 / 255, 85.0 / 255);
   CHECK(deltaE2000(labOfSvg(marked), lightRed) > 20);
   for (const auto& [key, segments] : paths)
     if (key.starts_with("rgb(100%,33.333333%,33.333333%)")) CHECK(segments.empty());
@@ -170,7 +170,7 @@ void checkMarked(const std::vector<std::string>& args, int code) {
 }  // namespace
 
 TEST_CASE("CIEDE2000 as written here gives the published differences", "[render][collision]") {
-  // Sharma, Wu and Dalal's test pairs 1 and 17 (Lab given, ΔE00 2.0425 and 27.1492).
+  // Sharma, Wu and Dalal's test pairs 1 and 17 (CieLab given, ΔE00 2.0425 and 27.1492).
   CHECK(deltaE2000({50, 2.6772, -79.7751}, {50, 0, -82.7485}) == Approx(2.0425).margin(1e-4));
   CHECK(deltaE2000({50, 2.5, 0}, {73, 25, -18}) == Approx(27.1492).margin(1e-4));
 }

@@ -60,7 +60,7 @@ Jiggled jiggled() {
   return j;
 }
 
-void checkSame(const RunState& frame, const RunState& run) {
+void checkSameState(const RunState& frame, const RunState& run) {
   CHECK(frame.encoders == run.encoders);
   CHECK(frame.outputs == run.outputs);
   CHECK(frame.inputs == run.inputs);
@@ -68,7 +68,7 @@ void checkSame(const RunState& frame, const RunState& run) {
   CHECK(frame.window == run.window);
 }
 
-bool kept(const Frames& f, std::uint32_t step) { return std::binary_search(f.stepOf.begin(), f.stepOf.end(), step); }
+bool isFrame(const Frames& f, std::uint32_t step) { return std::binary_search(f.stepOf.begin(), f.stepOf.end(), step); }
 
 }  // namespace
 
@@ -108,11 +108,11 @@ TEST_CASE("a long run is cut down to its slots, keeping every event and exact at
   CHECK(std::is_sorted(f.stepOf.begin(), f.stepOf.end()));
 
   // Every event is a frame of its own, and the renumbered lists name it.
-  for (const auto& o : log.outputs) CHECK(kept(f, o.step));
-  for (const auto& c : log.cameras) CHECK(kept(f, c.step));
-  for (const auto& g : log.grasps) CHECK(kept(f, g.step));
-  for (const auto& m : log.moves[3]) CHECK(kept(f, m.step));  // the gripper A
-  CHECK(kept(f, j.collisionSteps[0]));
+  for (const auto& o : log.outputs) CHECK(isFrame(f, o.step));
+  for (const auto& c : log.cameras) CHECK(isFrame(f, c.step));
+  for (const auto& g : log.grasps) CHECK(isFrame(f, g.step));
+  for (const auto& m : log.moves[3]) CHECK(isFrame(f, m.step));  // the gripper A
+  CHECK(isFrame(f, j.collisionSteps[0]));
   CHECK(f.stepOf.front() == 0);
   CHECK(f.stepOf.back() == log.steps.size() - 1);
   REQUIRE(f.log.outputs.size() == log.outputs.size());
@@ -141,7 +141,7 @@ TEST_CASE("a long run is cut down to its slots, keeping every event and exact at
     CHECK(frame.start == step.start);
     CHECK(frame.end == step.end);
     for (const rs::vm::Micros t : {step.start, (step.start + step.end) / 2, step.end})
-      checkSame(rs::runtime::stateAtStep(f.log, k, t), rs::runtime::stateAtStep(log, f.stepOf[k], t));
-    checkSame(rs::runtime::stateAt(f.log, step.start), rs::runtime::stateAt(log, step.start));
+      checkSameState(rs::runtime::stateAtStep(f.log, k, t), rs::runtime::stateAtStep(log, f.stepOf[k], t));
+    checkSameState(rs::runtime::stateAt(f.log, step.start), rs::runtime::stateAt(log, step.start));
   }
 }
