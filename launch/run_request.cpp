@@ -40,7 +40,8 @@ std::optional<vm::Micros> maxTimeOf(const RunRequest& request, std::vector<diag:
   if (request.maxTime.empty()) return vm::RunLimits{}.maxTime;
   const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(request.maxTime);
   if (parsed.error.empty()) return parsed.micros;
-  diags.push_back({"--max-time", {}, diag::Severity::Error, parsed.error});
+  diags.push_back({"--max-time", {}, diag::Severity::Error, parsed.error, {},
+                   "a time is seconds with at most 6 decimals, from 0 to 1000000"});
   return std::nullopt;
 }
 

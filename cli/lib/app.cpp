@@ -15,6 +15,7 @@
 #include "cli/lib/help.h"
 #include "cli/lib/ik_command.h"
 #include "cli/lib/lsp_command.h"
+#include "cli/lib/number_args.h"
 #include "cli/lib/options.h"
 #include "cli/lib/program_commands.h"
 #include "cli/lib/render_commands.h"
@@ -38,7 +39,7 @@ int helpCommand(const std::string& topic, std::ostream& out, std::ostream& err) 
     out << *text;
     return kExitOk;
   }
-  err << fmt::format("robotsim: error: no instruction named '{}' (robotsim help lists them)\n", topic);
+  err << "robotsim: error: " << unknownInstructionMessage(topic) << '\n';
   return kExitBadInput;
 }
 
@@ -91,7 +92,9 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
                 "slowest moves (with --format=json: a \"profile\" member); --max-steps then defaults to 10000000");
   addRunLikeOptions(run, ro);
   CLI::App* check = addRunLike(app, "check", "Compile, verify and simulate; exit 0 only if all is well", ro);
-  check->add_flag("--strict", ro.strict, "Warnings fail the check too");
+  check->add_flag("--strict", ro.strict,
+                  "Every warning fails the check: the compile's and the cell's (exit 2, nothing runs), the run's "
+                  "(exit 1)");
   addRunLikeOptions(check, ro);
 
   ProgramCommandOptions po;
@@ -125,17 +128,21 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   CLI::App* matrix =
       app.add_subcommand("matrix", "Print the matrix taking frame J coordinates to frame I (the paper's MATRIX)");
   robotArgs(matrix);
-  matrix->add_option("i", rq.from, "Frame I (0 = base)")->required();
-  matrix->add_option("j", rq.to, "Frame J")->required();
-  matrix->add_option("--theta", rq.theta, "Joint values v,v,... (degrees; a prismatic joint's d)");
-  matrix->add_option("--encoders", rq.encoders, "Encoder counts v,v,... (default: the home position)");
+  matrix->add_option("i", rq.from, "Frame I (0 = base)")->required()->transform(numberArg(rules::kFrameNumber));
+  matrix->add_option("j", rq.to, "Frame J")->required()->transform(numberArg(rules::kFrameNumber));
+  const auto jointOptions = [&rq](CLI::App* cmd) {
+    cmd->add_option("--theta", rq.theta, "Joint values v,v,... (degrees; a prismatic joint's d)")
+        ->transform(numberListArg(rules::kJointValue));
+    cmd->add_option("--encoders", rq.encoders, "Encoder counts v,v,... (default: the home position)")
+        ->transform(numberListArg(rules::kEncoderCount));
+  };
+  jointOptions(matrix);
   CLI::App* where = app.add_subcommand(
       "where",
       "Print the tool centre point for given encoder values: in a workcell's world coordinates for a CELL, in a "
       "robot's design coordinates for a ROBOT");
   robotArgs(where, "Workcell or robot: description file (.rsd) or library name, e.g. scara-pick or scorobot");
-  where->add_option("--theta", rq.theta, "Joint values v,v,... (degrees; a prismatic joint's d)");
-  where->add_option("--encoders", rq.encoders, "Encoder counts v,v,... (default: the home position)");
+  jointOptions(where);
 
   CLI::App* describe = app.add_subcommand(
       "describe",

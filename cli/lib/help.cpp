@@ -2,14 +2,30 @@
 
 #include <fmt/format.h>
 
+#include "base/ascii.h"
+#include "base/near_names.h"
+#include "base/text.h"
 #include "vm/opcodes.h"
 
 namespace rs::cli {
 
 namespace {
 
-std::string usageLine(const vm::OpInfo& op) {
-  return fmt::format("{}{}", op.name, vm::info(op.format).usage);
+std::string usageLine(const vm::OpInfo& op) { return fmt::format("{}{}", op.name, vm::info(op.format).usage); }
+
+// Whether `name` holds `word`, ignoring ASCII letter case.
+bool nameHolds(std::string_view name, std::string_view word) {
+  for (std::size_t at = 0; at + word.size() <= name.size(); ++at)
+    if (base::sameName(name.substr(at, word.size()), word)) return true;
+  return false;
+}
+
+// "'A'", "'A' or 'B'", "'A', 'B' or 'C'".
+std::string alternatives(const std::vector<std::string_view>& names) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    s += fmt::format("{}'{}'", i == 0 ? "" : i + 1 == names.size() ? " or " : ", ", names[i]);
+  return s;
 }
 
 }  // namespace
@@ -25,6 +41,27 @@ std::optional<std::string> instructionHelp(std::string_view name) {
   if (!op) return std::nullopt;
   const vm::OpInfo& info = vm::info(*op);
   return fmt::format("{}\n  {}.\n  {}\nExample:\n  {}\n", usageLine(info), info.meaning, info.detail, info.example);
+}
+
+std::vector<std::string_view> instructionsLike(std::string_view word) {
+  std::vector<std::string_view> names;
+  for (const vm::OpInfo& op : vm::kOps) names.push_back(op.name);
+  std::vector<std::string_view> found;
+  if (word.size() >= 3 && word.size() <= base::kMaxNearWord)
+    for (const std::string_view name : names)
+      if (nameHolds(name, word) && found.size() < kMaxSuggestions) found.push_back(name);
+  if (!found.empty()) return found;
+  if (const std::string_view near = base::nearestName(word, names, base::typoDistance(word)); !near.empty())
+    found.push_back(near);
+  return found;
+}
+
+std::string unknownInstructionMessage(std::string_view word) {
+  std::string shown = base::safeText(word.substr(0, 64));
+  if (word.size() > 64) shown += "...";
+  const std::vector<std::string_view> like = instructionsLike(word);
+  return fmt::format("no instruction named '{}'{} (robotsim help lists them)", shown,
+                     like.empty() ? "" : fmt::format("; did you mean {}?", alternatives(like)));
 }
 
 }  // namespace rs::cli

@@ -9,7 +9,7 @@
 #include "base/number_text.h"
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
-#include "cli/lib/number_list.h"
+#include "cli/lib/number_args.h"
 #include "cli/lib/robot_commands.h"
 #include "compiler/library.h"
 #include "diag/diagnostic.h"
@@ -24,13 +24,13 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// "1,0,-1" -> numbers, `want` of them (any number when 0); an error names
-// the option.
-bool numbers(const std::string& text, std::string_view option, std::size_t want, std::vector<double>& out,
-             std::ostream& err) {
-  if (!parseNumberList(text, option, out, err)) return false;
+// "1,0,-1" -> numbers by `rule`, `want` of them (any number when 0); an
+// error names the option.
+bool numbers(const std::string& text, std::string_view option, const NumberRule& rule, std::size_t want,
+             std::vector<double>& out, std::ostream& err) {
+  if (!parseNumberList(text, option, rule, out, err)) return false;
   if (want != 0 && out.size() != want) {
-    err << fmt::format("robotsim: error: {} takes {} numbers separated by commas, found {}\n", option, want, out.size());
+    err << numberError(option, fmt::format("{} numbers needed, separated by commas; found {}", want, out.size()), rule);
     return false;
   }
   return true;
@@ -52,22 +52,29 @@ CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
   CLI::App* cmd = app.add_subcommand("ik", "Encoder counts that put the tool at a pose (inverse kinematics), as a POINTS line");
   cmd->add_option("robot", o.target, "Robot or workcell: description file (.rsd) or library name, e.g. puma-cell")
       ->required();
-  cmd->add_option("xyz", o.position, "The tool centre point X Y Z")->expected(3)->required();
-  cmd->add_option("--approach", o.approach, "The tool's approach direction a (its z axis) ax,ay,az");
-  cmd->add_option("--normal", o.normal, "The tool's normal n (its x axis, the way the fingers close) nx,ny,nz");
+  cmd->add_option("xyz", o.position, "The tool centre point X Y Z")
+      ->expected(3)
+      ->required()
+      ->transform(numberArg(rules::kCoordinate));
+  cmd->add_option("--approach", o.approach, "The tool's approach direction a (its z axis) ax,ay,az")
+      ->transform(numberListArg(rules::kDirection));
+  cmd->add_option("--normal", o.normal, "The tool's normal n (its x axis, the way the fingers close) nx,ny,nz")
+      ->transform(numberListArg(rules::kDirection));
   cmd->add_option("--grip", o.grip, "The gripper motor's encoder count (default: the --from point's)")
+      ->transform(numberArg(rules::kEncoderCount))
       ->each([&o](const std::string&) { o.gripGiven = true; });
   cmd->add_option("--frame", o.frame, "Coordinates of X Y Z and the directions: world (the cell's; the default) or "
                                       "robot (the robot's design coordinates, as `where` prints)")
       ->check(CLI::IsMember({"world", "robot"}));
-  cmd->add_option("--from", o.from, "The previous point's encoder counts e,e,... (default: home, all 0)");
+  cmd->add_option("--from", o.from, "The previous point's encoder counts e,e,... (default: home, all 0)")
+      ->transform(numberListArg(rules::kEncoderCount));
   cmd->add_option("--name", o.name, "The point's name in the POINTS line (default P1)");
   cmd->add_option("--lib", o.libDirs, "Also look up names in this directory (repeatable)")->allow_extra_args(false);
   cmd->add_option("--solution", o.solution,
                   "Only configuration N of the family (1-based; scara: elbow +, -; articulated-5: shoulder front "
                   "elbow +, -, back +, -; six-axis: each of those with the wrist not flipped, then flipped), solved "
                   "alone")
-      ->check(CLI::Range(1u, 8u));
+      ->transform(numberArg(rules::kSolution));
   cmd->add_flag("--json", o.json, "Print one JSON object");
   cmd->footer(
       "Solves in closed form for the library's arm families (cartesian, scara, articulated-5, articulated-6,\n"
@@ -94,11 +101,11 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
   request.position = Eigen::Vector3d(o.position[0], o.position[1], o.position[2]);
   std::vector<double> v;
   if (!o.approach.empty()) {
-    if (!numbers(o.approach, "--approach", 3, v, err)) return kExitBadInput;
+    if (!numbers(o.approach, "--approach", rules::kDirection, 3, v, err)) return kExitBadInput;
     request.approach = Eigen::Vector3d(v[0], v[1], v[2]);
   }
   if (!o.normal.empty()) {
-    if (!numbers(o.normal, "--normal", 3, v, err)) return kExitBadInput;
+    if (!numbers(o.normal, "--normal", rules::kDirection, 3, v, err)) return kExitBadInput;
     request.normal = Eigen::Vector3d(v[0], v[1], v[2]);
   }
   if (o.gripGiven) request.grip = o.grip;
@@ -112,7 +119,7 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
   if (o.solution) request.configuration = configurations[o.solution - 1];
   std::vector<std::int32_t> reference(solver.motorCount(), 0);
   if (!o.from.empty()) {
-    if (!numbers(o.from, "--from", reference.size(), v, err)) return kExitBadInput;
+    if (!numbers(o.from, "--from", rules::kEncoderCount, reference.size(), v, err)) return kExitBadInput;
     for (std::size_t i = 0; i < v.size(); ++i) reference[i] = static_cast<std::int32_t>(std::lround(v[i]));
   }
   const workcell::PoseResult r = solver.solve(request, reference);

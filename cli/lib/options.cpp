@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/lib/number_args.h"
+
 namespace rs::cli {
 
 void addCellOptions(CLI::App* cmd, launch::ProgramRequest& request) {
@@ -20,7 +22,8 @@ void addMaxErrorsOption(CLI::App* cmd, launch::ProgramRequest& request) {
   cmd->add_option("--max-errors", request.maxErrors,
                   "Print at most N errors and warnings, then how many more there were (default " +
                       std::to_string(kDefaultMaxErrors) + "; 0 prints all)")
-      ->option_text("N");
+      ->option_text("N")
+      ->transform(numberArg(rules::kShownCount));
 }
 
 void addRunOptions(CLI::App* cmd, launch::RunRequest& request, const std::string& maxStepsDefault) {
@@ -30,7 +33,7 @@ void addRunOptions(CLI::App* cmd, launch::RunRequest& request, const std::string
   cmd->add_option_function<std::uint64_t>(
          "--max-steps", [&request](const std::uint64_t& n) { request.maxSteps = n; },
          "Stop after this many instructions (default " + maxStepsDefault + ")")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 62));
+      ->transform(numberArg(rules::kStepCount));
   cmd->add_option("--max-time", request.maxTime, "Stop at this simulated time in seconds (default 3600)");
   addCollisionsOption(cmd, request.collisions);
 }
@@ -38,8 +41,8 @@ void addRunOptions(CLI::App* cmd, launch::RunRequest& request, const std::string
 void addCollisionsOption(CLI::App* cmd, std::string& mode) {
   cmd->add_option("--collisions", mode,
                   "On a workcell, what a collision during a move does: error (default: the run stops with a runtime "
-                  "error naming the line, time and parts), warn (reported in the trace and the summary; the run "
-                  "goes on) or off (nothing is checked)")
+                  "error naming the line, time and parts), warn (a warning at the move's line, in the trace and the "
+                  "summary; the run goes on) or off (nothing is checked)")
       ->option_text("MODE");
 }
 

@@ -5,15 +5,16 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <sstream>
 
 #include "base/file_io.h"
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/number_args.h"
 #include "cli/lib/options.h"
 #include "cli/lib/report.h"
+#include "cli/lib/run_warnings.h"
 #include "runtime/render/animation.h"
 #include "runtime/render/collision_marks.h"
 #include "runtime/run/empty_close.h"
@@ -21,7 +22,6 @@
 #include "runtime/render/moment.h"
 #include "runtime/render/picture.h"
 #include "runtime/run/run.h"
-#include "runtime/stimuli_text.h"
 #include "vm/disasm.h"
 
 namespace rs::cli {
@@ -30,70 +30,50 @@ namespace {
 
 // ---- options ----------------------------------------------------------------
 
-bool parseNumber(std::string_view text, double& v) {
-  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  return !text.empty() && ec == std::errc() && ptr == text.data() + text.size() && std::isfinite(v);
-}
-
-// "25,-35,0" -> (25, -35, 0).
-bool parseTriple(const std::string& text, std::string_view option, Eigen::Vector3d& v, std::ostream& err) {
-  std::size_t start = 0;
-  for (int i = 0; i < 3; ++i) {
-    const std::size_t comma = text.find(',', start);
-    const bool last = i == 2;
-    if ((comma == std::string::npos) != last ||
-        !parseNumber(std::string_view(text).substr(start, last ? std::string::npos : comma - start), v[i]) ||
-        std::abs(v[i]) > 1e9) {
-      err << fmt::format("robotsim: error: {} takes three numbers X,Y,Z, not '{}'\n", option, text);
-      return false;
-    }
-    start = comma + 1;
+// "25,-35,0" -> (25, -35, 0), each number by `rule`.
+bool parseTriple(const std::string& text, std::string_view option, const NumberRule& rule, Eigen::Vector3d& v,
+                 std::ostream& err) {
+  std::vector<double> list;
+  if (!parseNumberList(text, option, rule, list, err)) return false;
+  if (list.size() != 3) {
+    err << fmt::format("{}: error: {} takes three numbers X,Y,Z separated by commas, found {}\n  hint: {}\n", option,
+                       option, list.size(), rule.hint);
+    return false;
   }
+  v = Eigen::Vector3d(list[0], list[1], list[2]);
   return true;
 }
 
+// "1024x768" -> 1024, 768.
 bool parseSize(const std::string& text, int& width, int& height, std::ostream& err) {
   const std::size_t x = text.find('x');
-  int w = 0, h = 0;
-  const auto whole = [](std::string_view s, int& v) {
-    const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    return !s.empty() && ec == std::errc() && ptr == s.data() + s.size();
-  };
-  if (x == std::string::npos || !whole(std::string_view(text).substr(0, x), w) ||
-      !whole(std::string_view(text).substr(x + 1), h) || w < 16 || h < 16 || w > 16384 || h > 16384) {
-    err << fmt::format("robotsim: error: --size takes WIDTHxHEIGHT in pixels (16..16384), not '{}'\n", text);
+  if (x == std::string::npos) {
+    err << numberError("--size", fmt::format("--size takes WIDTHxHEIGHT, not '{}'", base::safeText(text)),
+                       rules::kPixels);
     return false;
   }
-  width = w, height = h;
+  const NumberRead w = readNumber(std::string_view(text).substr(0, x), rules::kPixels);
+  const NumberRead h = readNumber(std::string_view(text).substr(x + 1), rules::kPixels);
+  if (!w.problem.empty() || !h.problem.empty()) {
+    err << numberError("--size", !w.problem.empty() ? w.problem : h.problem, rules::kPixels);
+    return false;
+  }
+  width = static_cast<int>(w.value), height = static_cast<int>(h.value);
   return true;
 }
 
-// The starting camera from --view, --window, --zoom, --axes, --size.
+// The starting camera from --view, --window, --zoom (read by its rule as
+// the command line was parsed), --axes, --size.
 bool cameraFrom(const RenderOptions& o, render::Camera& camera, std::ostream& err) {
-  if (!o.view.empty() && !parseTriple(o.view, "--view", camera.view, err)) return false;
-  if (!o.window.empty() && !parseTriple(o.window, "--window", camera.window, err)) return false;
+  if (!o.view.empty() && !parseTriple(o.view, "--view", rules::kAngle, camera.view, err)) return false;
+  if (!o.window.empty() && !parseTriple(o.window, "--window", rules::kCoordinate, camera.window, err)) return false;
   if (!o.size.empty() && !parseSize(o.size, camera.width, camera.height, err)) return false;
-  if (!(o.zoom > 0) || !std::isfinite(o.zoom) || o.zoom > 1e6) {
-    err << fmt::format("robotsim: error: --zoom takes a number above 0, not {}\n", o.zoom);
-    return false;
-  }
   camera.zoom = o.zoom;
   camera.axes = o.axes;
   return true;
 }
 
 // ---- inputs -----------------------------------------------------------------
-
-bool seconds(const std::string& text, std::string_view option, vm::Micros& micros, std::ostream& err) {
-  const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(text);
-  if (!parsed.error.empty()) {
-    err << fmt::format("robotsim: error: {}: {}\n", option, parsed.error);
-    return false;
-  }
-  micros = parsed.micros;
-  return true;
-}
 
 bool write(const std::string& path, std::vector<std::uint8_t> bytes, std::ostream& err) {
   std::string error;
@@ -134,18 +114,36 @@ std::string_view withoutProgram(const RenderOptions& o) {
 
 // The program's run on the workcell, every problem of the program and of
 // the run's options printed (all of them, so that one call reports every
-// mistake); null when anything is wrong. `maxTime`, when set, overrides
-// --max-time.
-std::unique_ptr<runtime::Run> prepare(const launch::LoadedProgram& program, const RenderOptions& o,
-                                      std::uint64_t defaultMaxSteps, std::optional<vm::Micros> maxTime,
-                                      std::ostream& err, bool log = false) {
+// mistake), with its --collisions; the run is null when anything is wrong.
+// `maxTime`, when set, overrides --max-time.
+struct Prepared {
+  std::unique_ptr<runtime::Run> run;
+  runtime::CollisionMode collisions = runtime::CollisionMode::Error;  // the run's --collisions
+};
+Prepared prepare(const launch::LoadedProgram& program, const RenderOptions& o, std::uint64_t defaultMaxSteps,
+                 std::optional<vm::Micros> maxTime, std::ostream& err, bool log = false) {
   std::vector<diag::Diagnostic> diags = program.diagnostics;
   std::optional<runtime::RunSpec> spec = launch::prepareRun(program, o.run, diags, defaultMaxSteps);
   launch::printDiagnostics(err, diags, program);
-  if (!spec || !program.ok()) return nullptr;
+  if (!spec || !program.ok()) return {};
   if (maxTime) spec->limits.maxTime = *maxTime;
   spec->log = log;
-  return std::make_unique<runtime::Run>(std::move(*spec));
+  const runtime::CollisionMode mode = spec->collisions;
+  return {std::make_unique<runtime::Run>(std::move(*spec)), mode};
+}
+
+// The step of the move that collided: the one of its instruction whose
+// time holds the collision's (binary search: a run in warn mode may
+// collide often in a long log).
+std::optional<std::uint32_t> stepOfCollision(const runtime::RunLog& log, const runtime::CollisionEvent& e) {
+  const auto after = std::upper_bound(log.steps.begin(), log.steps.end(), e.at,
+                                      [](vm::Micros t, const runtime::StepRecord& s) { return t < s.start; });
+  for (auto it = after; it != log.steps.begin();) {
+    --it;
+    if (it->end < e.at) break;
+    if (it->index == e.instruction) return static_cast<std::uint32_t>(it - log.steps.begin());
+  }
+  return std::nullopt;
 }
 
 // "run.html", "RUN.HTML": what animate writes.
@@ -195,9 +193,10 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     return kExitBadInput;
   }
   vm::Micros at = 0;
-  if (!o.at.empty() && !seconds(o.at, "--at", at, err)) return kExitBadInput;
+  if (!o.at.empty() && !parseSecondsArg(o.at, "--at", at, err)) return kExitBadInput;
   std::optional<Eigen::Vector3d> center;
-  if (!o.center.empty() && !parseTriple(o.center, "--center", center.emplace(), err)) return kExitBadInput;
+  if (!o.center.empty() && !parseTriple(o.center, "--center", rules::kCoordinate, center.emplace(), err))
+    return kExitBadInput;
   launch::LoadedProgram loaded;
   if (o.program.file.empty()) {
     loaded.cell = launch::loadCell(o.program, loaded);
@@ -208,10 +207,12 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   }
 
   // With --at the run needs to go on only until then.
-  std::unique_ptr<runtime::Run> run;
-  if (!o.program.file.empty() &&
-      !(run = prepare(loaded, o, vm::RunLimits{}.maxSteps, o.at.empty() ? std::nullopt : std::optional(at), err)))
-    return kExitBadInput;
+  Prepared prepared;
+  if (!o.program.file.empty()) {
+    prepared = prepare(loaded, o, vm::RunLimits{}.maxSteps, o.at.empty() ? std::nullopt : std::optional(at), err);
+    if (!prepared.run) return kExitBadInput;
+  }
+  const std::unique_ptr<runtime::Run>& run = prepared.run;
 
   const workcell::Workcell& cell = *loaded.cell;
   render::CellPoser poser(cell);
@@ -225,12 +226,12 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   std::vector<std::int32_t> encoders(cell.robots.empty() ? 0 : poser.encoders(0).size(), 0);
   std::vector<Eigen::Isometry3d> objectPoses;
   for (const workcell::PlacedObject& p : cell.objects) objectPoses.push_back(p.F_world_design);
+  std::optional<std::size_t> held;  // the object the gripper carries then
   bool stoppedByCollision = false;  // drawn at the collision, exit 1
   if (run) {
     render::Moment m = render::momentOf(*run, o.at.empty() ? INT64_MAX : at);
     if (o.at.empty() && run->finished())  // at a moment --at picks, the run has not ended
-      if (const auto w = runtime::gripperWarning(*run, run->image().sourceName))
-        launch::printDiagnostics(err, {*w}, loaded);
+      printRunWarnings(err, runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
     if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
       const vm::Image& image = run->image();
       launch::printDiagnostics(err, {runtimeDiagnostic(image, m.outcome, image.sourceName)}, loaded);
@@ -245,12 +246,17 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
       m.encoders = hits.back().encoders;
       m.clock = hits.back().at;
       m.objects.clear();
-      for (const runtime::ObjectView& v : run->objects(hits.back().at)) m.objects.push_back(v.pose);
+      m.held.reset();
+      for (const runtime::ObjectView& v : run->objects(hits.back().at)) {
+        if (v.held) m.held = m.objects.size();
+        m.objects.push_back(v.pose);
+      }
     }
     poser.setEncoders(0, m.encoders);
     for (std::size_t i = 0; i < m.objects.size(); ++i) poser.setObjectPose(i, m.objects[i]);
     encoders = m.encoders;
     objectPoses = m.objects;
+    held = m.held;
     camera.view += Eigen::Vector3d(m.view.x, m.view.y, m.view.z);
     camera.window += Eigen::Vector3d(m.window.x, m.window.y, m.window.z);
     caption.title = fmt::format("{} on {}", baseName(o.program.file), cell.name);
@@ -260,7 +266,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   render::Picture picture = render::makePicture(poser, camera, fit, caption);
   if (!cell.robots.empty()) {
     if (o.collisionShapes) render::addLines(picture, render::collisionShapeLines(cell, encoders, objectPoses));
-    render::markColliding(picture, render::contactsAt(cell, encoders, objectPoses));
+    render::markColliding(picture, render::contactsAt(cell, encoders, objectPoses, held));
   }
   if (o.dump == "json")
     render::dumpJson(out, picture, cell);
@@ -296,7 +302,8 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   render::Camera camera;
   if (!cameraFrom(o, camera, err)) return kExitBadInput;
   const launch::LoadedProgram loaded = launch::loadProgramToDraw(o.program);
-  std::unique_ptr<runtime::Run> run = prepare(loaded, o, kAnimateMaxSteps, std::nullopt, err, /*log=*/true);
+  const Prepared prepared = prepare(loaded, o, kAnimateMaxSteps, std::nullopt, err, /*log=*/true);
+  const std::unique_ptr<runtime::Run>& run = prepared.run;
   if (!run) return kExitBadInput;
   const vm::RunOutcome outcome = run->runToEnd();
   const runtime::RunLog& recording = *run->log();
@@ -310,8 +317,10 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
     const auto robotBodies = watch->model().robotBodies();
     for (const runtime::CollisionEvent& e : run->collisions()) {
       render::CollisionMark mark{e.at, e.at, {}, {}};
-      for (const runtime::StepRecord& s : recording.steps)  // the end of the move that collided
-        if (s.index == e.instruction && s.start <= e.at && e.at <= s.end) mark.end = s.end;
+      if (const std::optional<std::uint32_t> step = stepOfCollision(recording, e)) {  // its move: an event
+        mark.end = recording.steps[*step].end;
+        input.eventSteps.push_back(*step);
+      }
       for (const workcell::BodyRef& b : {e.contact.a, e.contact.b}) {
         if (b.kind == workcell::BodyKind::Object) mark.objects.push_back(b.index);
         for (std::size_t k = 0; k < robotBodies.size(); ++k)
@@ -326,15 +335,18 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
     launch::printDiagnostics(err, {d}, loaded);
     input.outcome = d.pos.line ? fmt::format("line {}: {}", d.pos.line, d.message) : d.message;
   }
-  if (const auto w = runtime::gripperWarning(*run, run->image().sourceName)) {
-    launch::printDiagnostics(err, {*w}, loaded);
+  printRunWarnings(err, runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
+  if (const auto w = runtime::gripperWarning(*run, run->image().sourceName))  // shown under END
     input.warning = fmt::format("line {}: {}", w->pos.line, w->message);
-  }
-  const std::string html = render::animationHtml(input);
+  const render::Frames frames = render::framesOf(recording, input.eventSteps, input.frameRule);
+  const std::string html = render::animationHtml(input, frames);
   if (!write(o.output, std::vector<std::uint8_t>(html.begin(), html.end()), err)) return kExitBadInput;
-  out << fmt::format("{} -> {} ({} instructions executed, {} s simulated)\n", base::safeText(o.program.file),
-                     base::safeText(o.output),
-                     recording.steps.size(), vm::formatSeconds(recording.end));
+  out << fmt::format("{} -> {} ({} instructions executed, {} s simulated{})\n", base::safeText(o.program.file),
+                     base::safeText(o.output), recording.steps.size(), vm::formatSeconds(recording.end),
+                     frames.decimated() ? fmt::format("; the page shows {} frames: every event, and the first "
+                                                      "instruction to start in each {} s",
+                                                      frames.log.steps.size(), vm::formatSeconds(frames.slot))
+                                        : "");
   return outcome.ok() ? kExitOk : kExitRunFailed;
 }
 
@@ -343,9 +355,11 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
 namespace {
 
 void addCommon(CLI::App* cmd, RenderOptions& o, const std::string& maxStepsDefault) {
-  cmd->add_option("--view", o.view, "Turn the image about x, y, z by RX,RY,RZ degrees (default 25,-35,0)");
-  cmd->add_option("--window", o.window, "Shift the workcell by X,Y,Z (its own length units)");
-  cmd->add_option("--zoom", o.zoom, "Magnify (1 = the workcell fits the picture)");
+  cmd->add_option("--view", o.view, "Turn the image about x, y, z by RX,RY,RZ degrees (default 25,-35,0)")
+      ->transform(numberListArg(rules::kAngle));
+  cmd->add_option("--window", o.window, "Shift the workcell by X,Y,Z (its own length units)")
+      ->transform(numberListArg(rules::kCoordinate));
+  cmd->add_option("--zoom", o.zoom, "Magnify (1 = the workcell fits the picture)")->transform(numberArg(rules::kZoom));
   cmd->add_flag("--axes", o.axes, "Draw each link's coordinate frame (the paper's AXES ON)");
   addRunOptions(cmd, o.run, maxStepsDefault);
 }
@@ -357,14 +371,16 @@ RenderCommands::RenderCommands(CLI::App& app) {
   render_->add_option("cell", o_.program.cell, "Workcell (or robot) description file or library name")->required();
   render_->add_option("--program", o_.program.file, "Run this program on the workcell's first robot");
   render_->add_option("--at", o_.at,
-                      "The moment of the run to draw, in seconds (default: its end, or the collision that stopped it)");
+                      "The moment of the run to draw, in seconds (default: its end, or the collision that stopped it)")
+      ->transform(secondsArg());
   render_->add_flag("--collision-shapes", o_.collisionShapes,
                     "Also draw the collision geometry (each BOX, the hull of the LINEs, COLLIDE boxes) in light "
                     "magenta; parts that overlap are drawn red either way");
   render_->add_option("-o,--output", o_.output, "Picture to write: FILE.png or FILE.svg");
   render_->add_option("--size", o_.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
   render_->add_option("--center", o_.center,
-                      "Zoom about the world point X,Y,Z (default: the base of the workcell's first robot)");
+                      "Zoom about the world point X,Y,Z (default: the base of the workcell's first robot)")
+      ->transform(numberListArg(rules::kCoordinate));
   render_->add_flag("--dump-lines{text}", o_.dump, "Print the projected 2-D lines: --dump-lines (text) or =json");
   addLibOption(render_, o_.program);
   addMaxErrorsOption(render_, o_.program);

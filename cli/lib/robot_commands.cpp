@@ -7,7 +7,7 @@
 #include "base/number_text.h"
 #include "base/text.h"
 #include "cli/lib/app.h"
-#include "cli/lib/number_list.h"
+#include "cli/lib/number_args.h"
 #include "compiler/library.h"
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/forward_kinematics.h"
@@ -39,27 +39,32 @@ bool jointValues(const RobotQuery& q, const workcell::Robot& robot, std::vector<
   }
   std::vector<double> list;
   if (!q.theta.empty()) {
-    if (!parseNumberList(q.theta, "--theta", list, err)) return false;
+    if (!parseNumberList(q.theta, "--theta", rules::kJointValue, list, err)) return false;
     if (list.size() != n) {
-      err << fmt::format("robotsim: error: --theta needs {} values (one per joint), found {}\n", n, list.size());
+      err << numberError("--theta", fmt::format("{} values needed (one per joint), found {}", n, list.size()),
+                         rules::kJointValue);
       return false;
     }
     values = list;
     return true;
   }
   if (!q.encoders.empty()) {
-    if (!parseNumberList(q.encoders, "--encoders", list, err)) return false;
+    if (!parseNumberList(q.encoders, "--encoders", rules::kEncoderCount, list, err)) return false;
     const std::size_t motors = n + (robot.hasGripper ? 1 : 0);
     if (list.size() != n && list.size() != motors) {
-      err << fmt::format("robotsim: error: --encoders needs {} values (one per joint{}), found {}\n", n,
-                         robot.hasGripper ? ", the gripper's optional" : "", list.size());
+      err << numberError("--encoders",
+                         fmt::format("{} values needed (one per joint{}), found {}", n,
+                                     robot.hasGripper ? ", the gripper's optional" : "", list.size()),
+                         rules::kEncoderCount);
       return false;
     }
     for (std::size_t i = 0; i < n; ++i) {
       const workcell::JointSpec& j = robot.joints[i];
       if (list[i] < j.min || list[i] > j.max) {
-        err << fmt::format("robotsim: error: --encoders: joint {} ({}) value {} is outside its range {}..{}\n", i + 1,
-                           j.letter, formatNumber(list[i]), j.min, j.max);
+        err << numberError("--encoders",
+                           fmt::format("value {} ({}, joint {}) {} is outside the motor's range {}..{}", i + 1,
+                                       j.letter, i + 1, formatNumber(list[i]), j.min, j.max),
+                           rules::kEncoderCount);
         return false;
       }
     }

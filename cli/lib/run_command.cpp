@@ -6,23 +6,18 @@
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/profile_report.h"
 #include "cli/lib/report.h"
+#include "cli/lib/run_warnings.h"
 #include "cli/lib/trace.h"
-#include "runtime/run/empty_close.h"
 #include "runtime/run/run.h"
 
 namespace rs::cli {
 
 namespace {
 
-// --strict: a warning fails the check like an error, before anything runs.
-void promoteWarnings(launch::LoadedProgram& program) {
-  bool promoted = false;
-  for (diag::Diagnostic& d : program.diagnostics)
-    if (d.severity == diag::Severity::Warning) {
-      d.severity = diag::Severity::Error;
-      d.message += " [--strict]";
-      promoted = true;
-    }
+// --strict: a compile warning fails the check like an error, before
+// anything runs.
+void promoteCompileWarnings(launch::LoadedProgram& program) {
+  bool promoted = promoteWarnings(program.diagnostics);
   if (program.omitted.warnings > 0) {  // those not kept count the same
     program.omitted.errors += program.omitted.warnings;
     program.omitted.warnings = 0;
@@ -40,7 +35,8 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     return kExitBadInput;
   }
   launch::LoadedProgram program = launch::loadProgram(o.program);
-  if (check && o.strict) promoteWarnings(program);
+  const bool strict = check && o.strict;
+  if (strict) promoteCompileWarnings(program);
   RunReport report;
   report.diagnostics = program.diagnostics;
   report.maxDiagnostics = program.maxErrors;
@@ -91,16 +87,18 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     report.diagnostics.push_back(d);
   }
   if (o.profile && run->log()) report.profile = runtime::profileOf(image, *run->log());
-  if (const std::optional<diag::Diagnostic> w = runtime::gripperWarning(*run, image.sourceName)) {
-    launch::printDiagnostics(err, {*w}, program);
-    report.diagnostics.push_back(*w);
-  }
+  // The run's own warnings; under --strict they fail the check (exit 1:
+  // the run is what gave them).
+  std::vector<diag::Diagnostic> warnings = runWarnings(*run, spec->collisions, image.sourceName);
+  const bool failedStrict = strict && promoteWarnings(warnings);
+  printRunWarnings(err, warnings, program);
+  report.diagnostics.insert(report.diagnostics.end(), warnings.begin(), warnings.end());
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);
   else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", base::safeText(image.sourceName),
                           outcome.steps, vm::formatSeconds(run->clock()));
   if (!json && report.profile) printTextProfile(out, *report.profile);
-  return outcome.ok() ? kExitOk : kExitRunFailed;
+  return outcome.ok() && !failedStrict ? kExitOk : kExitRunFailed;
 }
 
 }  // namespace rs::cli

@@ -16,6 +16,7 @@
 #include "base/file_io.h"
 #include "base/text.h"
 #include "cli/lib/app.h"
+#include "cli/lib/number_args.h"
 #include "compiler/library.h"
 #include "launch/program.h"
 #include "launch/rhino.h"
@@ -152,16 +153,17 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
   cmd->add_option("--lib", o.libDirs, "Also look up robot names in this directory (repeatable)")
       ->allow_extra_args(false);
   cmd->add_option("--speed", o.speed, "Multiply every motor's step rate (default 1: the robot's speeds)")
-      ->check(CLI::Range(0.01, 1000.0));
-  cmd->add_option("--latency", o.latency, "Seconds before each answer (default 0.005)")->check(CLI::Range(0.0, 10.0));
+      ->transform(numberArg(rules::kSpeedFactor));
+  cmd->add_option("--latency", o.latency, "Seconds before each answer (default 0.005)")->transform(numberArg(rules::kLatency));
   cmd->add_option("--switch-width", o.switchWidth, "A home switch is closed within this many steps of 0 (default 20)")
-      ->check(CLI::Range(0, 10000));
+      ->transform(numberArg(rules::kSwitchWidth));
   cmd->add_option("--start", o.start, "Where motors start, e.g. E=120,D=-40 (default all 0)");
   cmd->add_option("--fault", o.fault, "Inject a fault: silence, garbage, slow or hangup")
       ->check(CLI::IsMember({"none", "silence", "garbage", "slow", "hangup"}));
-  cmd->add_option("--fault-after", o.faultAfter, "Serve this many commands normally first (default 0)");
+  cmd->add_option("--fault-after", o.faultAfter, "Serve this many commands normally first (default 0)")
+      ->transform(numberArg(rules::kCommandCount));
   cmd->add_option("--slow-delay", o.slowDelay, "With --fault slow: seconds each answer is late (default 2)")
-      ->check(CLI::Range(0.0, 3600.0));
+      ->transform(numberArg(rules::kSlowDelay));
   cmd->add_option("--script", o.script, "Run console commands from FILE (with 'wait SECONDS' between them)");
   cmd->add_option("--serial-set", o.settings, "Play a different assumption KEY=VALUE, as for run (repeatable)")
       ->allow_extra_args(false)
@@ -169,7 +171,7 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
   cmd->add_option("--serial-config", o.settingsFile, "Serial settings file, as for run");
   cmd->add_option("--link", o.link, "Also make this symbolic link to the device (e.g. /tmp/rhino)");
   cmd->add_option("--duration", o.duration, "Stop after this many seconds (default: run until Ctrl-C or quit)")
-      ->check(CLI::Range(0.0, 1e7));
+      ->transform(numberArg(rules::kDuration));
   cmd->add_flag("--no-stdin", o.noStdin, "Do not read console commands from standard input");
   cmd->add_flag("-q,--quiet", o.quiet, "No status line and no event lines");
   cmd->add_flag("-v,--verbose", o.verbose, "Print every command the host sends");

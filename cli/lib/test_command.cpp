@@ -11,6 +11,7 @@
 
 #include "base/file_io.h"
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/number_args.h"
 #include "cli/lib/options.h"
 #include "cli/lib/trace.h"
 #include "testrun/suite.h"
@@ -113,7 +114,7 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
       ->check(CLI::IsMember({"text", "json", "csv"}));
   cmd->add_option("--filter", o.filter, "Only the programs whose path contains this text");
   cmd->add_option("-j,--jobs", o.jobs, "Tests run at once (default: the number of cores)")
-      ->check(CLI::Range(1u, 1024u));
+      ->transform(numberArg(rules::kJobs));
   cmd->add_option("--shard", o.shard, "Only part K of N (K/N), for spreading a suite over CI jobs");
   cmd->add_flag("--coverage", o.coverage, "Print each program with how often each line ran and which way jumps went");
   cmd->add_option("--lcov", o.lcov, "Write the coverage as an LCOV tracefile (genhtml makes pages of it)");

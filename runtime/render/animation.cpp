@@ -192,12 +192,17 @@ Json cellDrawing(const workcell::Workcell& cell, const Camera& camera) {
 }
 
 Json animationModel(const AnimationInput& input) {
+  return animationModel(input, framesOf(*input.run, input.eventSteps, input.frameRule));
+}
+
+Json animationModel(const AnimationInput& input, const Frames& frames) {
   const workcell::Workcell& cell = *input.cell;
   Json model = {{"title", fmt::format("{} on {}", input.listing.name, cell.name)}, {"cell", cell.name}};
   const Json drawing = cellDrawing(cell, input.camera);
   for (const auto& [key, value] : drawing.items()) model[key] = value;
   model["program"] = {{"name", input.listing.name}, {"lines", input.listing.lines}, {"lineOf", input.listing.lineOf}};
-  model["run"] = withCollisions(runModel(*input.run, cell, input.outcome), input.collisions);
+  model["run"] = withCollisions(runModel(frames.log, cell, input.outcome), input.collisions);
+  if (frames.decimated()) model["run"]["frames"] = {{"steps", frames.runSteps}, {"slot", frames.slot}};
   if (!input.warning.empty()) model["run"]["warning"] = input.warning;  // only when there is one
   return model;
 }
@@ -216,7 +221,11 @@ std::string scriptSafeJson(const Json& model) {
 }
 
 std::string animationHtml(const AnimationInput& input) {
-  const Json model = animationModel(input);
+  return animationHtml(input, framesOf(*input.run, input.eventSteps, input.frameRule));
+}
+
+std::string animationHtml(const AnimationInput& input, const Frames& frames) {
+  const Json model = animationModel(input, frames);
   const std::string safe = scriptSafeJson(model);
   std::string html;
   html.reserve(safe.size() + pageScript().size() + pageStyle().size() + 4096);

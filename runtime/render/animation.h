@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "runtime/render/camera.h"
+#include "runtime/render/frames.h"
 #include "runtime/run/run_log.h"
 #include "model/workcell/model.h"
 
@@ -52,6 +53,11 @@ struct AnimationInput {
   /// gripper closed but never took an object (runtime/run/empty_close.h).
   std::string warning;
   std::vector<CollisionMark> collisions;
+  /// The steps of `run` that are events besides those its log names (the
+  /// steps of the collisions), and the rule that cuts a long run down to
+  /// frames (frames.h).
+  std::vector<std::uint32_t> eventSteps;
+  FrameRule frameRule;
 };
 
 /// The page's data: {"title", "cell", "fit", "camera", "style", "robots",
@@ -69,11 +75,16 @@ struct AnimationInput {
 /// placement P: F_E_object · P⁻¹ for a take, to be followed by the first
 /// robot's last frame F_world_E(t); F_world_object · P⁻¹ for a let-go).
 /// "run"."collisions" holds the collision marks as parallel arrays "at",
-/// "end" (µs), "robotParts" and "objects" (an array of indices each).
+/// "end" (µs), "robotParts" and "objects" (an array of indices each). The
+/// steps are the run's frames (frames.h); when a long run was cut down,
+/// "run"."frames" says so: {"steps": the run's steps, "slot": µs}.
 nlohmann::ordered_json animationModel(const AnimationInput& input);
+/// The same from frames already made of input.run.
+nlohmann::ordered_json animationModel(const AnimationInput& input, const Frames& frames);
 
 /// The whole HTML page.
 std::string animationHtml(const AnimationInput& input);
+std::string animationHtml(const AnimationInput& input, const Frames& frames);
 
 /// What every page draws a cell from: {"fit", "camera", "style",
 /// "robots", "objects"} (the first robot runs the program), as in

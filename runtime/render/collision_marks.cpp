@@ -7,10 +7,15 @@ namespace rs::render {
 namespace {
 
 workcell::CollisionQuery queryAt(const workcell::Workcell& cell, workcell::CollisionData& data,
-                                 std::span<const std::int32_t> encoders, std::span<const Eigen::Isometry3d> poses) {
+                                 std::span<const std::int32_t> encoders, std::span<const Eigen::Isometry3d> poses,
+                                 std::optional<std::size_t> held = std::nullopt) {
   workcell::CollisionQuery q;
   q.objectPoses = poses;
   data.findContact(encoders, q);  // poses the robot: the tool frame
+  if (held && *held < poses.size()) {  // carried: where it is, in the gripper's frame
+    q.held = held;
+    q.heldOffset = data.toolFrame().inverse(Eigen::Isometry) * poses[*held];
+  }
   const Eigen::Vector3d tcp = data.toolFrame().translation();
   double best = 0;
   for (std::size_t o = 0; o < cell.objects.size() && o < poses.size(); ++o) {
@@ -67,10 +72,11 @@ void pieceLines(std::vector<Line3>& out, const workcell::CollisionPiece& piece, 
 }  // namespace
 
 std::vector<workcell::Contact> contactsAt(const workcell::Workcell& cell, std::span<const std::int32_t> encoders,
-                                          std::span<const Eigen::Isometry3d> objectPoses) {
+                                          std::span<const Eigen::Isometry3d> objectPoses,
+                                          std::optional<std::size_t> held) {
   const workcell::CollisionModel model(cell);
   workcell::CollisionData data(model);
-  const workcell::CollisionQuery q = queryAt(cell, data, encoders, objectPoses);
+  const workcell::CollisionQuery q = queryAt(cell, data, encoders, objectPoses, held);
   return data.allContacts(encoders, q);
 }
 
@@ -101,7 +107,7 @@ void markColliding(Picture& picture, std::span<const workcell::Contact> contacts
   for (Line2& line : picture.lines)
     for (const workcell::Contact& c : contacts)
       if (line.part.kind != PartKind::Axis && (samePart(line.part, c.a) || samePart(line.part, c.b)))
-        line.color = kCollidingColor;
+        line.color = kCollidingColor, line.colliding = true;
 }
 
 }  // namespace rs::render

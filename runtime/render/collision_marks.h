@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -22,8 +23,13 @@ inline constexpr workcell::Color kCollidingColor = workcell::Color::Red;
 /// Every overlap of the first robot at motors `encoders` with the objects at
 /// `objectPoses` (F_world_design each); the gripper's parts may overlap the
 /// object whose box holds the tool centre point (what it holds or takes).
+/// `held`: the object the gripper carries, at its pose in `objectPoses`;
+/// it is checked as the run checks it, against the floor, the other
+/// objects and the links (a resting object is never checked against
+/// another resting one).
 std::vector<workcell::Contact> contactsAt(const workcell::Workcell& cell, std::span<const std::int32_t> encoders,
-                                          std::span<const Eigen::Isometry3d> objectPoses);
+                                          std::span<const Eigen::Isometry3d> objectPoses,
+                                          std::optional<std::size_t> held = std::nullopt);
 
 /// The edges of every collision piece at that pose, in world coordinates,
 /// each with its part: a box's 12 edges, a hull's lines between each pair
@@ -34,7 +40,8 @@ std::vector<Line3> collisionShapeLines(const workcell::Workcell& cell, std::span
 /// Projects `lines` into the picture with the picture's own projection.
 void addLines(Picture& picture, std::span<const Line3> lines);
 
-/// Colours every line of the parts in `contacts` kCollidingColor.
+/// Marks every line of the parts in `contacts`: kCollidingColor, drawn
+/// wider and on top (draw.h, kCollidingLineWidth).
 void markColliding(Picture& picture, std::span<const workcell::Contact> contacts);
 
 }  // namespace rs::render

@@ -16,7 +16,6 @@ namespace rs::render {
 
 namespace {
 
-constexpr double kLineWidth = 1.25;     // pixels
 constexpr double kLegendSize = 13.0;    // font size, pixels
 constexpr double kLegendMargin = 10.0;  // pixels
 
@@ -38,12 +37,15 @@ void setColor(cairo_t* cr, Rgb c, double alpha = 1.0) {
 // 5,000 lines, a quarter of the time of one path per colour; see
 // docs/render.md). For SVG, one path per colour keeps the file small. Butt
 // caps: square ones cost half as much again.
-void drawLines(cairo_t* cr, const Picture& picture, bool pathPerColor) {
-  cairo_set_line_width(cr, kLineWidth);
+// `colliding`: the pass of the lines of parts in a collision (drawn last,
+// wider), or of the others.
+void drawLines(cairo_t* cr, const Picture& picture, bool pathPerColor, bool colliding) {
+  cairo_set_line_width(cr, colliding ? kCollidingLineWidth : kLineWidth);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   if (pathPerColor) {
     std::array<std::vector<const Line2*>, 16> byColor;
-    for (const Line2& l : picture.lines) byColor[static_cast<std::size_t>(l.color) & 15].push_back(&l);
+    for (const Line2& l : picture.lines)
+      if (l.colliding == colliding) byColor[static_cast<std::size_t>(l.color) & 15].push_back(&l);
     for (std::size_t c = 0; c < byColor.size(); ++c) {
       if (byColor[c].empty()) continue;
       for (const Line2* l : byColor[c]) {
@@ -57,6 +59,7 @@ void drawLines(cairo_t* cr, const Picture& picture, bool pathPerColor) {
   }
   int color = -1;
   for (const Line2& l : picture.lines) {
+    if (l.colliding != colliding) continue;
     if (const int c = static_cast<int>(l.color) & 15; c != color) {
       setColor(cr, kEga[static_cast<std::size_t>(c)]);
       color = c;
@@ -112,7 +115,8 @@ void drawLegend(cairo_t* cr, const Picture& picture) {
 void draw(cairo_t* cr, const Picture& picture, bool vector) {
   setColor(cr, kBackground);
   cairo_paint(cr);
-  drawLines(cr, picture, vector);
+  drawLines(cr, picture, vector, false);
+  drawLines(cr, picture, vector, true);
   drawTools(cr, picture);
   drawLegend(cr, picture);
 }

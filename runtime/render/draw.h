@@ -19,6 +19,12 @@ inline constexpr double kToolRadius = 5.0;
 inline constexpr double kToolLineWidth = 1.5;
 inline constexpr workcell::Color kToolColor = workcell::Color::White;
 
+/// Lines are stroked this wide (pixels); the lines of a part in a collision
+/// (Line2::colliding) twice as wide, over the others, so that they stand
+/// out from any part drawn in its own colour, a red one included.
+inline constexpr double kLineWidth = 1.25;
+inline constexpr double kCollidingLineWidth = 2.5;
+
 enum class ImageFormat : std::uint8_t { Png, Svg };
 
 /// From the file name: ".png" or ".svg" (any case); nothing otherwise.

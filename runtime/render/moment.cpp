@@ -14,7 +14,10 @@ Moment momentOf(runtime::Run& run, vm::Micros at) {
   m.reached = m.outcome.ok() || (m.outcome.paused() && run.pauseCause() == runtime::PauseCause::Time) ||
               (m.outcome.reason == vm::StopReason::TimeLimit && m.clock > at);
   m.encoders = run.motorsAt(at);
-  for (const runtime::ObjectView& o : run.objects(at)) m.objects.push_back(o.pose);
+  for (const runtime::ObjectView& o : run.objects(at)) {
+    if (o.held) m.held = m.objects.size();
+    m.objects.push_back(o.pose);
+  }
   if (const runtime::SimMachine* sim = run.sim()) {
     m.view = sim->viewRotation();
     m.window = sim->windowShift();

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "runtime/run/run.h"
@@ -25,6 +26,10 @@ struct Moment {
   /// With a workcell: each object's placement (F_world_design) at `at`,
   /// carried by the gripper or resting (runtime/world.h).
   std::vector<Eigen::Isometry3d> objects;
+  /// The object the gripper carries at `at`, if any (its pose is in
+  /// `objects`): a still checks it for collisions as the run did, with the
+  /// gripper's frame.
+  std::optional<std::size_t> held;
 };
 
 /// Runs `run` (on the simulated machine) until its clock passes `at`, and

@@ -159,6 +159,9 @@ const std::string_view kScript = R"JS('use strict';
   const timeline = el('timeline'), timeText = el('time'), status = el('status'), playButton = el('play');
   timeline.max = String(Math.max(run.end, 1));
   let shownLine = -1, shownIn = -1, shownOut = -1;
+  // A long run comes cut down to frames (frames.h): say so under the status.
+  const framesNote = run.frames ? '\n' + run.frames.steps + ' instructions shown as ' + steps +
+      ' frames: every event, and the first to start in each ' + (run.frames.slot / 1e6).toFixed(3) + ' s' : '';
   function currentLine() {
     return S.k >= 0 && S.k < steps ? model.program.lineOf[run.index[S.k]] || 0 : 0;
   }
@@ -195,7 +198,7 @@ const std::string_view kScript = R"JS('use strict';
     const where = S.k >= 0 ? 'instruction ' + (run.index[S.k] + 1) + ', line ' + line : 'not started';
     const end = S.t >= run.end && S.k >= steps - 1;
     status.textContent = where + (end ? (run.outcome ? '\nstopped: ' + run.outcome : '\nEND') +
-                                        (run.warning ? '\nwarning: ' + run.warning : '') : '');
+                                        (run.warning ? '\nwarning: ' + run.warning : '') : '') + framesNote;
     status.classList.toggle('failed', end && !!run.outcome);
     playButton.textContent = S.playing ? 'Pause' : 'Play';
   }

@@ -19,6 +19,7 @@ struct Line2 {
   Eigen::Vector2d a, b;
   workcell::Color color = workcell::Color::White;
   Part part;
+  bool colliding = false;  ///< its part overlaps another (collision_marks.h): drawn on top, wider
 };
 
 /// A tool centre point in pixels.

@@ -93,6 +93,27 @@ const trapezoidHtml = path.join(out, 'irb120.html');
 robotsim(['animate', trapezoidProgram, '--cell', 'irb120-cell', '-o', trapezoidHtml]);
 const trapezoidStills = stills(trapezoidProgram, 'irb120-cell', [0.05, 0.15, 0.3, 0.42, 0.48, 0.52, 0.58]);
 
+// A run longer than the page keeps step by step (docs/render.md, "Frames"):
+// the gantry's 6,500 back-and-forth moves of X by one count (1 ms each at
+// 1000 counts/s), 26,001 steps in 13 s, cut down to slots of 1/600 s: the
+// moves left out come back as jumps. At the start of each frame the page
+// must show what render --at shows for the whole run.
+const longProgram = path.join(out, 'long_jiggle.rsp');
+fs.writeFileSync(longProgram, ['loop: MOVE 1 0 0 0', 'MOVE -1 0 0 0', 'ADD N 1', 'JMPVAR N < 6500 loop', 'END', '']
+  .join('\n'));
+const longHtml = path.join(out, 'long.html');
+robotsim(['animate', longProgram, '--cell', 'gantry-cell', '-o', longHtml]);
+const longModel = (() => {
+  const text = fs.readFileSync(longHtml, 'utf8'), open = 'id="robotsim-model">';
+  const from = text.indexOf(open) + open.length;
+  return JSON.parse(text.slice(from, text.indexOf('</script>', from)));
+})();
+const longFrames = longModel.run.start.length;
+const longStills = stills(longProgram, 'gantry-cell', [1, 2, 3, 4].map((j) => {
+  const k = Math.floor((longFrames * j) / 5);
+  return (longModel.run.start[k] / 1e6).toFixed(6);
+}).map(Number));
+
 // Largest difference between the page's lines and tools and render's.
 function difference(mine, reference) {
   if (mine.lines.length !== reference.lines.length) return Infinity;
@@ -226,6 +247,21 @@ try {
   await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
   await compare(trapezoidStills);
 
+  // ---- a long run's page holds frames, and each frame is the run's own moment
+  await page.goto('file://' + longHtml);
+  await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
+  check(longModel.run.frames && longModel.run.frames.steps === 26001 && longModel.run.frames.slot === 1667 &&
+        longFrames < 13000 && longFrames > 7000,
+        'a run of 26,001 steps comes as frames of 1/600 s', `${longFrames} frames`);
+  await compare(longStills);
+  const longStatus = await (async () => {
+    await page.evaluate(() => window.robotsim.setTime(1e6));
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    return page.evaluate(() => document.getElementById('status').textContent);
+  })();
+  check(longStatus.includes(`26001 instructions shown as ${longFrames} frames: every event, and the first to start ` +
+                            'in each 0.002 s'), '  and its status says so', JSON.stringify(longStatus));
+
   // ---- the carried block moves with the gripper; the other block does not
   await page.goto('file://' + gantryHtml);
   await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
@@ -331,6 +367,7 @@ try {
 
   const foreign = requests.filter((u) => u !== url && u !== 'file://' + viewHtml && u !== 'file://' + gantryHtml &&
                                          u !== 'file://' + trapezoidHtml && u !== 'file://' + hotHtml && u !== 'file://' + highHtml &&
+                                         u !== 'file://' + longHtml &&
                                          !u.startsWith('data:'));
   check(foreign.length === 0, 'nothing but the page itself was requested', foreign.join(' '));
   check(errors.length === 0, 'no errors on the way', errors.join('; '));

@@ -225,7 +225,7 @@ TEST_CASE("cli: help", "[cli]") {
   const CliResult nope = runCli({"help", "NOPE"});
   CHECK(nope.code == 2);
   CHECK(nope.out.empty());
-  CHECK(nope.err == "robotsim: error: no instruction named 'NOPE' (robotsim help lists them)\n");
+  CHECK(nope.err == "robotsim: error: no instruction named 'NOPE'; did you mean 'MOVE'? (robotsim help lists them)\n");
 }
 
 TEST_CASE("cli: --format=json summary", "[cli]") {

@@ -181,10 +181,12 @@ TEST_CASE("cli: --max-steps and --max-time", "[cli]") {
   SECTION("bad values are usage errors") {
     const CliResult a = runCli({"run", loop, "--max-time", "abc"});
     CHECK(a.code == 2);
-    CHECK(a.err == "--max-time: error: bad time 'abc': expected seconds such as 2 or 1.5\n");
+    CHECK(a.err ==
+          "--max-time: error: bad time 'abc': expected seconds such as 2 or 1.5\n"
+          "  hint: a time is seconds with at most 6 decimals, from 0 to 1000000\n");
     const CliResult n = runCli({"run", loop, "--max-time", "-1"});
     CHECK(n.code == 2);
-    CHECK(n.err == "--max-time: error: time must not be negative, got '-1'\n");
+    CHECK(n.err.starts_with("--max-time: error: time must not be negative, got '-1'\n  hint: "));
     CHECK(runCli({"run", loop, "--max-steps", "x"}).code == 2);
     CHECK(runCli({"run", loop, "--max-steps", "1.5"}).code == 2);
     CHECK(runCli({"run", loop, "--max-steps"}).code == 2);

@@ -46,7 +46,7 @@ TEST_CASE("robotsim ik text output and its refusals", "[cli][ik]") {
   CHECK(far.err.find("the point is 375 out of the arm's reach") != std::string::npos);
   const auto badVector = runCli({"ik", "scara-pick", "--approach", "0,x,0", "--", "-130", "800", "0"});
   CHECK(badVector.code == 2);
-  CHECK(badVector.err.find("--approach: value 2 'x' is not a number") != std::string::npos);
+  CHECK(badVector.err.find("--approach: error: value 2 'x' is not a number") != std::string::npos);
   const auto noRobot = runCli({"ik", "no-such-robot", "1", "2", "3"});
   CHECK(noRobot.code == 2);
 }

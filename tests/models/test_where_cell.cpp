@@ -110,10 +110,12 @@ TEST_CASE("where cell: a turned robot, scorobot-cell against the scorobot golden
 TEST_CASE("where cell: errors name the option or the cell", "[models][where]") {
   auto r = runCli({"where", "scara-pick", "--encoders", "2000,0,0,0"});
   CHECK(r.code == 2);
-  CHECK(r.err == "robotsim: error: --encoders: joint 1 (E) value 2000 is outside its range -1000..1000\n");
+  CHECK(r.err ==
+        "--encoders: error: value 1 (E, joint 1) 2000 is outside the motor's range -1000..1000\n"
+        "  hint: encoder counts are whole numbers within each motor's RANGE (robotsim describe CELL lists them)\n");
   r = runCli({"where", "scara-pick", "--encoders", "1,2"});
   CHECK(r.code == 2);
-  CHECK(r.err == "robotsim: error: --encoders needs 4 values (one per joint, the gripper's optional), found 2\n");
+  CHECK(r.err.starts_with("--encoders: error: 4 values needed (one per joint, the gripper's optional), found 2\n"));
   r = runCli({"where", "no-such-cell"});
   CHECK(r.code == 2);
   CHECK(r.err == "no-such-cell: error: no such file, and no workcell or robot of that name on the library path\n");

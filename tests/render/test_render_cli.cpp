@@ -105,9 +105,11 @@ TEST_CASE("render and animate reject bad options and inputs clearly", "[render][
     CHECK(r.err.find(message) != std::string::npos);
   };
   expectError({"render", "scara-pick", "--view", "1,2", "--dump-lines"}, 2, "--view takes three numbers");
-  expectError({"render", "scara-pick", "--window", "a,b,c", "--dump-lines"}, 2, "--window takes three numbers");
-  expectError({"render", "scara-pick", "--zoom", "0", "--dump-lines"}, 2, "--zoom takes a number above 0");
-  expectError({"render", "scara-pick", "--size", "10x10", "--dump-lines"}, 2, "--size takes");
+  expectError({"render", "scara-pick", "--window", "a,b,c", "--dump-lines"}, 2, "--window: error: value 1 'a' is not a number");
+  expectError({"render", "scara-pick", "--zoom", "0", "--dump-lines"}, 2, "--zoom: error: '0' is out of range: a zoom is above 0");
+  expectError({"render", "scara-pick", "--size", "10x10", "--dump-lines"}, 2,
+              "--size: error: '10' is out of range: a picture's side is a whole number from 16 to 16384");
+  expectError({"render", "scara-pick", "--size", "1024", "--dump-lines"}, 2, "--size takes WIDTHxHEIGHT");
   expectError({"render", "scara-pick", "-o", dir.file("x.jpg")}, 2, "must end in .png or .svg");
   expectError({"render", "scara-pick"}, 2, "give -o");
   expectError({"render", "scara-pick", "--at", "1", "--dump-lines"}, 2, "--at needs --program");
