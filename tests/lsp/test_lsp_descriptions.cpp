@@ -12,7 +12,7 @@ using rs::testing::LspSession;
 
 namespace {
 
-const std::string kStdlib = std::string(ROBOTSIM_SOURCE_DIR) + "/stdlib";
+const std::string kStdlibRoot = std::string(ROBOTSIM_SOURCE_DIR) + "/stdlib";
 
 // The 0-based line of the first line of `text` that starts with `start`.
 unsigned lineOf(const std::string& text, const std::string& start) {
@@ -44,11 +44,11 @@ struct OpenFile {
 }  // namespace
 
 TEST_CASE("rsd: a workcell's robot goes to its file on the library path", "[lsp][rsd]") {
-  OpenFile f(kStdlib + "/workcells/scara-pick.rsd", "robotsim-description");
+  OpenFile f(kStdlibRoot + "/workcells/scara-pick.rsd", "robotsim-description");
   CHECK(f.s.diagnostics(f.uri) == Json::array());
   const unsigned line = lineOf(f.text, "  ROBOT rhino-scara");
   CHECK(f.s.result("textDocument/definition", LspSession::at(f.uri, line, 10)) ==
-        Json({{"uri", rs::lsp::uriOfPath(kStdlib + "/robots/rhino-scara.rsd")}, {"range", LspSession::range(0, 0, 0, 0)}}));
+        Json({{"uri", rs::lsp::uriOfPath(kStdlibRoot + "/robots/rhino-scara.rsd")}, {"range", LspSession::range(0, 0, 0, 0)}}));
   const Json symbols = f.s.result("textDocument/documentSymbol", {{"textDocument", {{"uri", f.uri}}}});
   REQUIRE(symbols.size() == 1);
   CHECK(symbols[0]["name"] == "scara-pick");
@@ -57,7 +57,7 @@ TEST_CASE("rsd: a workcell's robot goes to its file on the library path", "[lsp]
 }
 
 TEST_CASE("rsd: hover names a colour and shows a link's D-H row", "[lsp][rsd]") {
-  OpenFile f(kStdlib + "/robots/rhino-scara.rsd", "robotsim-description");
+  OpenFile f(kStdlibRoot + "/robots/rhino-scara.rsd", "robotsim-description");
   CHECK(f.s.diagnostics(f.uri) == Json::array());
   // BROWN is EGA colour 6.
   CHECK(f.hover(lineOf(f.text, "  COLOR BROWN"), 10) == "colour **BROWN** (EGA colour 6)");
@@ -118,7 +118,7 @@ TEST_CASE("rsd: an unsaved description is checked and hovered as the editor hold
   CHECK(d[0]["message"].get<std::string>().find("no-such-robot") != std::string::npos);
   CHECK(d[0]["range"]["start"]["line"] == 1);
   // The stdlib robot's text under a new, unsaved name: the same D-H rows.
-  const std::string text = rs::testing::readBytes(kStdlib + "/robots/rhino-scara.rsd");
+  const std::string text = rs::testing::readBytes(kStdlibRoot + "/robots/rhino-scara.rsd");
   const std::string robot = rs::lsp::uriOfPath(dir + "/my-scara.rsd");
   s.open(robot, text, "robotsim-description");
   s.idle();

@@ -12,7 +12,7 @@ using rs::vm::Micros;
 
 namespace {
 
-constexpr Micros kSecond = 1'000'000;
+constexpr Micros kSecondUs = 1'000'000;
 
 struct Recorded {
   RunLog rec;
@@ -31,7 +31,7 @@ Recorded record(const rs::vm::Image& image, const rs::runtime::Stimuli& stimuli)
 void checkAgainstMachine(const rs::vm::Image& image, const rs::runtime::Stimuli& stimuli) {
   const Recorded r = record(image, stimuli);
   std::vector<Micros> times;
-  for (Micros t = 0; t <= r.rec.end + kSecond / 10; t += 37'000) times.push_back(t);
+  for (Micros t = 0; t <= r.rec.end + kSecondUs / 10; t += 37'000) times.push_back(t);
   for (const auto& s : r.rec.steps) times.insert(times.end(), {s.start, s.end, s.end - 1, s.end + 1});
   for (const Micros t : times) {
     if (t < 0) continue;
@@ -64,8 +64,8 @@ TEST_CASE("VIEW, WINDOW, outputs and RESET are recorded at their steps", "[rende
   const RunLog& rec = r.rec;
   REQUIRE(rec.steps.size() == 7);
   CHECK(rec.steps[1].start == 0);
-  CHECK(rec.steps[1].end == kSecond);  // E: 400 units at 400/s
-  CHECK(rec.end == 2 * kSecond);
+  CHECK(rec.steps[1].end == kSecondUs);  // E: 400 units at 400/s
+  CHECK(rec.end == 2 * kSecondUs);
   REQUIRE(rec.cameras.size() == 2);
   CHECK(rec.cameras[0].step == 0);
   CHECK(rec.cameras[0].view == rs::runtime::CameraTriple{10, 0, 0});
@@ -80,12 +80,12 @@ TEST_CASE("VIEW, WINDOW, outputs and RESET are recorded at their steps", "[rende
   for (std::size_t m = 1; m < rec.moves.size(); ++m) CHECK(rec.moves[m].empty());
   // Half-way through the move, and at its end (where the instructions that
   // take no time have all run: the state after RESET).
-  CHECK(rs::runtime::stateAt(rec, kSecond / 2).encoders[0] == 200);
-  CHECK(rs::runtime::stateAt(rec, kSecond / 2).step == std::optional<std::size_t>(1));
-  CHECK(rs::runtime::stateAt(rec, kSecond).encoders[0] == 0);
-  CHECK(rs::runtime::stateAt(rec, kSecond).step == std::optional<std::size_t>(5));
+  CHECK(rs::runtime::stateAt(rec, kSecondUs / 2).encoders[0] == 200);
+  CHECK(rs::runtime::stateAt(rec, kSecondUs / 2).step == std::optional<std::size_t>(1));
+  CHECK(rs::runtime::stateAt(rec, kSecondUs).encoders[0] == 0);
+  CHECK(rs::runtime::stateAt(rec, kSecondUs).step == std::optional<std::size_t>(5));
   // Step by step, as the page's buttons do: after OUTSIG, E is still at 400.
-  const rs::runtime::RunState afterOut = rs::runtime::stateAtStep(rec, 2, kSecond);
+  const rs::runtime::RunState afterOut = rs::runtime::stateAtStep(rec, 2, kSecondUs);
   CHECK(afterOut.encoders[0] == 400);
   CHECK(afterOut.outputs == 0b10);
   CHECK(afterOut.window == rs::runtime::CameraTriple{});
@@ -95,19 +95,19 @@ TEST_CASE("Inputs change at their stimulus times, even inside a DELAY", "[render
   const rs::workcell::Workcell cell = rendertest::cell("scara-pick");
   const rs::vm::Image image = rendertest::compileText("OUTSIG 1 ON\nDELAY 5\nOUTSIG 1 OFF\nDELAY 1\nEND\n", cell);
   rs::runtime::Stimuli stimuli;
-  stimuli.changes = {{2 * kSecond, 3, true}, {kSecond * 7 / 2, 3, false}};
-  stimuli.rules = {{1, true, 2, true, kSecond * 3 / 2}, {1, false, 2, false, 0}};
+  stimuli.changes = {{2 * kSecondUs, 3, true}, {kSecondUs * 7 / 2, 3, false}};
+  stimuli.rules = {{1, true, 2, true, kSecondUs * 3 / 2}, {1, false, 2, false, 0}};
   const Recorded r = record(image, stimuli);
   REQUIRE(r.outcome.ok());
   const std::vector<std::pair<Micros, int>> expected = {
-      {0, 0}, {kSecond * 3 / 2, 0b010}, {2 * kSecond, 0b110}, {kSecond * 7 / 2, 0b010}, {5 * kSecond, 0}};
+      {0, 0}, {kSecondUs * 3 / 2, 0b010}, {2 * kSecondUs, 0b110}, {kSecondUs * 7 / 2, 0b010}, {5 * kSecondUs, 0}};
   REQUIRE(r.rec.inputs.size() == expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
     CHECK(r.rec.inputs[i].at == expected[i].first);
     CHECK(r.rec.inputs[i].inputs == expected[i].second);
   }
-  CHECK(rs::runtime::stateAt(r.rec, 2 * kSecond - 1).inputs == 0b010);
-  CHECK(rs::runtime::stateAt(r.rec, 2 * kSecond).inputs == 0b110);
+  CHECK(rs::runtime::stateAt(r.rec, 2 * kSecondUs - 1).inputs == 0b010);
+  CHECK(rs::runtime::stateAt(r.rec, 2 * kSecondUs).inputs == 0b110);
 }
 
 TEST_CASE("The instruction that stops a run is the recording's last step", "[render]") {
@@ -118,7 +118,7 @@ TEST_CASE("The instruction that stops a run is the recording's last step", "[ren
   REQUIRE(r.rec.steps.size() == 2);
   CHECK(r.rec.steps.back().index == 1);
   CHECK(r.rec.steps.back().start == r.rec.steps.back().end);
-  const rs::render::Moment m = rs::render::momentOf(*rendertest::runOf(image, nullptr), 10 * kSecond);
+  const rs::render::Moment m = rs::render::momentOf(*rendertest::runOf(image, nullptr), 10 * kSecondUs);
   CHECK_FALSE(m.reached);
 }
 
