@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "base/file_io.h"
+#include "base/text.h"
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/options.h"
 #include "cli/lib/trace.h"
@@ -56,7 +57,7 @@ std::vector<GradeRow> gradeRows(const std::vector<testrun::TestResult>& results)
   using Row = GradeRow;
   std::vector<Row> rows;
   for (const testrun::TestResult& r : results) {
-    if (rows.empty() || rows.back().file != r.file) rows.push_back({r.file});
+    if (rows.empty() || rows.back().file != r.file) rows.push_back({r.file});  // as read; printers escape it
     Row& row = rows.back();
     ++row.total;
     row.passed += r.status == testrun::TestStatus::Passed;
@@ -71,9 +72,11 @@ std::vector<GradeRow> gradeRows(const std::vector<testrun::TestResult>& results)
   return rows;
 }
 
-// The rows as aligned text or as CSV (RFC 4180 quoting).
+// The rows as aligned text or as CSV (RFC 4180 quoting). Names come from
+// files (a file name may hold an ESC): both print them through safeText.
 std::string gradeTable(const std::vector<testrun::TestResult>& results, bool csv) {
-  const std::vector<GradeRow> rows = gradeRows(results);
+  std::vector<GradeRow> rows = gradeRows(results);
+  for (GradeRow& r : rows) r.file = base::safeText(r.file), r.firstProblem = base::safeText(r.firstProblem);
   using Row = GradeRow;
   const auto quote = [](const std::string& s) {
     std::string q = "\"";
@@ -126,7 +129,7 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
 int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   std::uint32_t shard = 1, shards = 1;
   if (!o.shard.empty() && !parseShard(o.shard, shard, shards)) {
-    err << fmt::format("robotsim: error: --shard takes K/N with 1 <= K <= N, e.g. 2/4, not '{}'\n", o.shard);
+    err << fmt::format("robotsim: error: --shard takes K/N with 1 <= K <= N, e.g. 2/4, not '{}'\n", base::safeText(o.shard));
     return kExitBadInput;
   }
   if (o.update && std::getenv("CI") != nullptr) {
@@ -135,7 +138,7 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   }
   const auto started = std::chrono::steady_clock::now();
   const std::vector<std::string> paths = o.paths.empty() ? std::vector<std::string>{"."} : o.paths;
-  const testrun::Selection selection = testrun::selectTests(paths, o.filter, shard, shards, o.spec.empty());
+  const testrun::Selection selection = testrun::selectTests(paths, o.filter, shard, shards, !o.spec.empty());
   for (const diag::Diagnostic& d : selection.errors) err << diag::render(d, nullptr);
   if (!selection.errors.empty()) return kExitBadInput;
 
@@ -151,12 +154,13 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   runner.traceMaker = [](std::ostream& to, const runtime::Run& run) -> std::unique_ptr<vm::StepObserver> {
     return std::make_unique<TraceWriter>(to, TraceFormat::Text, run);
   };
-  testrun::runTests(selection.files, runner, jobs, o.spec, [&](const testrun::TestResult& r) {
+  testrun::runTests(selection, runner, jobs, o.spec, [&](const testrun::TestResult& r) {
     passed += r.status == testrun::TestStatus::Passed;
     failed += r.status == testrun::TestStatus::Failed;
     errors += r.status == testrun::TestStatus::Error;
     if (text) {
-      out << fmt::format("{}{} {}", r.file, r.name.empty() ? "" : " [" + r.name + "]", testrun::statusName(r.status));
+      out << fmt::format("{}{} {}", base::safeText(r.file), r.name.empty() ? "" : " [" + base::safeText(r.name) + "]",
+                         testrun::statusName(r.status));
       if (r.status == testrun::TestStatus::Passed)
         out << fmt::format(" ({} expectation{}, {} s simulated{})", r.expectations, r.expectations == 1 ? "" : "s",
                            vm::formatSeconds(r.simulated),
@@ -166,7 +170,7 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
       out << '\n';
       for (const diag::Diagnostic& d : r.problems) out << diag::render(d, r.sourceOf(d.file));
       for (const diag::Diagnostic& d : r.warnings) out << diag::render(d, r.sourceOf(d.file));
-      for (const std::string& golden : r.updated) out << fmt::format("  updated {}\n", golden);
+      for (const std::string& golden : r.updated) out << fmt::format("  updated {}\n", base::safeText(golden));
       out.flush();
     }
     results.push_back(r);
@@ -217,14 +221,14 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
       if (r.coverage) tracefile += testrun::lcovRecord(r.file, *r.coverage);
     std::string error;
     if (!base::writeFileAtomically(o.lcov, tracefile, error)) {
-      err << fmt::format("{}: error: cannot write: {}\n", o.lcov, error);
+      err << fmt::format("{}: error: cannot write: {}\n", base::safeText(o.lcov), error);
       return kExitBadInput;
     }
   }
   if (!o.junit.empty()) {
     std::string error;
     if (!base::writeFileAtomically(o.junit, testrun::junitXml(results), error)) {
-      err << fmt::format("{}: error: cannot write: {}\n", o.junit, error);
+      err << fmt::format("{}: error: cannot write: {}\n", base::safeText(o.junit), error);
       return kExitBadInput;
     }
   }
