@@ -120,7 +120,11 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
   cmd->add_option("--shard", o.shard, "Only part K of N (K/N), for spreading a suite over CI jobs");
   cmd->add_flag("--coverage", o.coverage, "Print each program with how often each line ran and which way jumps went");
   cmd->add_option("--lcov", o.lcov, "Write the coverage as an LCOV tracefile (genhtml makes pages of it)");
-  cmd->add_option("--spec", o.spec, "Grade: run this scenario file (.rstest) against every program under PATH");
+  cmd->add_option("--spec", o.spec,
+                  fmt::format("Grade: run this scenario file (.rstest) against every program under PATH, each "
+                              "confined to its folder; a run stops at {} instructions or {} simulated seconds unless "
+                              "the scenario says otherwise",
+                              testrun::kGradingMaxSteps, testrun::kGradingMaxSeconds));
   cmd->add_flag("--update", o.update, "Write the golden traces of 'expect: trace FILE' from the runs (not when CI is set)");
   addCollisionsOption(cmd, o.collisions);
   return cmd;
