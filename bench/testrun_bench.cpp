@@ -52,19 +52,22 @@ json benchTestRun(const Options& options) {
   progress("robotsim test on 100,000,000 instructions; run --profile (a RunLog) on 10,000,000 of the same loop");
   const std::string program = writeInput(options, "testrun/long.rsp", longProgram("100000000"));
   const ProcessRun tested = runExpecting({options.robotsim, "test", program}, 0);
-  const ProcessRun logged = runExpecting({options.robotsim, "run", program, "--profile", "--max-steps", "10000000",
-                                          "--max-time", "30000"},
-                                         1);
+  const ProcessRun logged = runExpecting(
+      {options.robotsim, "run", program, "--profile", "--max-steps", "10000000", "--max-time", "30000"}, 1);
   if (tested.maxRssKiB <= selfPeakRssKiB()) fmt::print("  (the driver's own peak hides robotsim test's)\n");
   const double logBytes = static_cast<double>(logged.maxRssKiB) * 1024 / 1e7;
   fmt::print("  robotsim test, 1e8 instructions: peak {:.1f} MiB, {:.2f} s CPU; target < 100 MB: {}\n",
              mib(tested.maxRssKiB), tested.cpuSeconds, tested.maxRssKiB * 1024 < 100'000'000 ? "met" : "missed");
-  fmt::print("  the same loop logged (run --profile), 1e7 instructions: peak {:.1f} MiB, {:.1f} bytes an "
-             "instruction (1e8: {:.2f} GB)\n",
-             mib(logged.maxRssKiB), logBytes, logBytes * 1e8 / 1e9);
-  out["long_run"] = {{"instructions", 100'000'000},     {"test_max_rss_kib", tested.maxRssKiB},
-                     {"test_cpu_s", tested.cpuSeconds}, {"logged_instructions", 10'000'000},
-                     {"logged_max_rss_kib", logged.maxRssKiB}, {"logged_bytes_per_instruction", logBytes}};
+  fmt::print(
+      "  the same loop logged (run --profile), 1e7 instructions: peak {:.1f} MiB, {:.1f} bytes an "
+      "instruction (1e8: {:.2f} GB)\n",
+      mib(logged.maxRssKiB), logBytes, logBytes * 1e8 / 1e9);
+  out["long_run"] = {{"instructions", 100'000'000},
+                     {"test_max_rss_kib", tested.maxRssKiB},
+                     {"test_cpu_s", tested.cpuSeconds},
+                     {"logged_instructions", 10'000'000},
+                     {"logged_max_rss_kib", logged.maxRssKiB},
+                     {"logged_bytes_per_instruction", logBytes}};
 
   progress("one '; expect: motors' line of 10k, 100k and 1M terms, robotsim test, whole process");
   json terms = json::array();
@@ -89,8 +92,8 @@ json benchTestRun(const Options& options) {
              "; swings the arm over the cell for ever\nLOOP:   MOVE 300 -300 0 0 0\n        MOVE -300 300 0 0 0\n"
              "        GOTO LOOP\n");
   writeInput(options, "testrun/submissions/polls.rsp", "LOOP:   JMPIN 1 ON DONE\n        GOTO LOOP\nDONE:   END\n");
-  const std::string grading = writeInput(options, "testrun/grading.rstest",
-                                         "scenario on the cell\ntest: cell scara-pick\nexpect: finished\n");
+  const std::string grading =
+      writeInput(options, "testrun/grading.rstest", "scenario on the cell\ntest: cell scara-pick\nexpect: finished\n");
   const std::string before = writeInput(options, "testrun/before.rstest",
                                         "scenario on the cell\ntest: cell scara-pick\ntest: max-time 3600\n"
                                         "test: max-steps 100000000\nexpect: finished\n");
@@ -102,9 +105,10 @@ json benchTestRun(const Options& options) {
   }
   const double g = *std::min_element(gradingCpu.begin(), gradingCpu.end());
   const double b = *std::min_element(beforeCpu.begin(), beforeCpu.end());
-  fmt::print("  grading's limits (120 s, 1,000,000 instructions, 100,000 at one instant): {:.3f} s CPU for both "
-             "submissions; target <= 1 s: {}\n",
-             g, g <= 1.0 ? "met" : "missed");
+  fmt::print(
+      "  grading's limits (120 s, 1,000,000 instructions, 100,000 at one instant): {:.3f} s CPU for both "
+      "submissions; target <= 1 s: {}\n",
+      g, g <= 1.0 ? "met" : "missed");
   fmt::print("  3,600 s and 100,000,000 instructions (before): {:.3f} s CPU; ratio {:.1f}\n", b, b / g);
   out["never_ending"] = {{"grading_cpu_s", g}, {"before_cpu_s", b}, {"target_met", g <= 1.0}};
   return out;

@@ -31,16 +31,17 @@ GoldenFile goldenFile(const std::string& testFile, const std::string& name) {
   const fs::path folder = fs::path(testFile).parent_path();
   g.path = (folder / name).lexically_normal().string();
   if (!staysUnderFolder(name)) {
-    g.error = fmt::format("the golden trace '{}' is not under the test's folder: name it relative to the folder, "
-                          "without '..' leading out",
-                          name);
+    g.error = fmt::format(
+        "the golden trace '{}' is not under the test's folder: name it relative to the folder, "
+        "without '..' leading out",
+        name);
     return g;
   }
   const Resolved home = resolve(folder.empty() ? fs::path(".") : folder, true);
   const Resolved target = resolve(g.path, false);
   if (!home.error.empty() || !target.error.empty()) {
-    g.error = fmt::format("cannot follow the golden trace {}: {}", g.path,
-                          home.error.empty() ? target.error : home.error);
+    g.error =
+        fmt::format("cannot follow the golden trace {}: {}", g.path, home.error.empty() ? target.error : home.error);
     return g;
   }
   if (!isInside(home.target, target.target))
@@ -70,7 +71,8 @@ std::streamsize TraceComparer::xsputn(const char* s, std::streamsize n) {
   std::size_t i = 0;
   if (!differs_) {  // the whole piece at once while it matches
     const std::size_t same = std::min(size, golden_.size() - pos_);
-    if (std::memcmp(s, golden_.data() + pos_, same) == 0) i = same;
+    if (std::memcmp(s, golden_.data() + pos_, same) == 0)
+      i = same;
     else
       while (s[i] == golden_[pos_ + i]) ++i;
     for (std::size_t k = 0; k < i; ++k)
@@ -79,8 +81,10 @@ std::streamsize TraceComparer::xsputn(const char* s, std::streamsize n) {
     if (i < size) differAt(s[i++]);
   }
   for (; i < size && capturing_; ++i) {
-    if (s[i] == '\n') capturing_ = false;
-    else if (got_.size() < kQuotedLine) got_ += s[i];
+    if (s[i] == '\n')
+      capturing_ = false;
+    else if (got_.size() < kQuotedLine)
+      got_ += s[i];
   }
   return n;
 }

@@ -51,7 +51,7 @@ class TraceComparer final : public std::streambuf {
   std::size_t line_ = 0;       // newlines among them
   std::size_t lineStart_ = 0;  // where the line being compared starts
   bool differs_ = false;
-  bool capturing_ = false;     // the rest of the trace's differing line
+  bool capturing_ = false;  // the rest of the trace's differing line
   std::string got_;
 };
 

@@ -115,8 +115,8 @@ bool RunWatch::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
 }
 
 void RunWatch::finish(const vm::RunOutcome& outcome) {
-  if (!outcome.ok() && outcome.reason != vm::StopReason::StepLimit &&
-      outcome.reason != vm::StopReason::InstantLimit && !outcome.paused())
+  if (!outcome.ok() && outcome.reason != vm::StopReason::StepLimit && outcome.reason != vm::StopReason::InstantLimit &&
+      !outcome.paused())
     step(outcome.index, nullptr);  // it did not complete: it wrote no variable
   settleInputs(INT64_MAX);
   if (pending_) finishLevel();
@@ -224,8 +224,10 @@ void RunWatch::settle(const Probe& p) {
       const std::optional<Setter> by = setterAt(outputChanges_, p.at);
       const WatchedMoment m{p.at, lineIsOn(outputs_, e.number) ? 1 : 0,
                             by ? std::optional<std::uint32_t>(by->line) : std::nullopt};
-      if (!w.window) a.moment = m;
-      else if (!w.failed && (m.value != 0) != e.on) windowFailed(w, m);
+      if (!w.window)
+        a.moment = m;
+      else if (!w.failed && (m.value != 0) != e.on)
+        windowFailed(w, m);
       break;
     }
     case ProbeKind::Input: {
@@ -242,8 +244,10 @@ void RunWatch::settle(const Probe& p) {
     case ProbeKind::Variable: {
       const std::optional<Setter> by = setterAt(variables_[w.slot], p.at);
       const WatchedMoment m{p.at, by ? by->value : 0, by ? std::optional<std::uint32_t>(by->line) : std::nullopt};
-      if (!w.window) a.moment = m;
-      else if (!w.failed && m.value != e.value) windowFailed(w, m);
+      if (!w.window)
+        a.moment = m;
+      else if (!w.failed && m.value != e.value)
+        windowFailed(w, m);
       break;
     }
   }

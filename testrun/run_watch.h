@@ -83,11 +83,11 @@ class RunWatch final : public vm::StepObserver {
   // One expectation being watched.
   struct Watcher {
     std::size_t expectation = 0;
-    std::uint32_t slot = 0;      // Variable: the variable's slot
-    bool window = false;         // during A..B
-    bool failed = false;         // a window already found wrong
+    std::uint32_t slot = 0;        // Variable: the variable's slot
+    bool window = false;           // during A..B
+    bool failed = false;           // a window already found wrong
     bool was[2] = {false, false};  // Order, Pulses: each event's line was in its state
-    vm::Micros queued = -1;      // the last moment queued for it
+    vm::Micros queued = -1;        // the last moment queued for it
   };
   // A moment whose answer waits for the clock to pass it.
   enum class ProbeKind : std::uint8_t { Output, InputCause, Variable, Input };
@@ -129,7 +129,7 @@ class RunWatch final : public vm::StepObserver {
   std::vector<WatchAnswer> answers_;
   std::vector<Watcher> watchers_;
   std::vector<std::uint32_t> onOutputs_, onInputLevels_, onVariables_;  // watchers by what they follow
-  std::vector<std::vector<std::uint32_t>> boundsOf_;                     // per motor: MotorBound watchers
+  std::vector<std::vector<std::uint32_t>> boundsOf_;                    // per motor: MotorBound watchers
   ProbeQueue stepProbes_, inputProbes_;
   std::uint64_t probesQueued_ = 0;
 
@@ -137,8 +137,8 @@ class RunWatch final : public vm::StepObserver {
   vm::Micros lastNow_ = 0;
   std::optional<std::uint32_t> lastLine_;  // of the last step
   std::uint8_t outputs_ = 0;
-  SlotHistory outputChanges_;              // values unused: the mask is outputs_
-  std::vector<SlotHistory> variables_;     // per slot, when any variable is watched
+  SlotHistory outputChanges_;           // values unused: the mask is outputs_
+  std::vector<SlotHistory> variables_;  // per slot, when any variable is watched
   std::vector<runtime::MotorSegment> segments_;
   std::vector<std::int32_t> positions_;
   // Inputs: the mask now, the level at `pendingAt` that later changes at the

@@ -18,8 +18,8 @@ bool isProgramName(const fs::path& p) { return p.extension() == ".rsp"; }
 
 // One entry met under `folder` (canonical): graded, refused or passed by.
 // Links are followed here and only here, after the check.
-void visit(const fs::path& entry, const fs::file_status& own, const fs::path& folder, std::set<std::string>& files,
-           std::vector<RefusedLink>& refused) {
+void visitEntry(const fs::path& entry, const fs::file_status& own, const fs::path& folder, std::set<std::string>& files,
+                std::vector<RefusedLink>& refused) {
   const std::string name = entry.lexically_normal().string();
   if (!fs::is_symlink(own)) {
     if (fs::is_regular_file(own) && isProgramName(entry)) files.insert(name);
@@ -49,8 +49,8 @@ SubmissionWalk findSubmissions(const std::vector<std::string>& paths) {
       const fs::file_status own = fs::symlink_status(p, ec);
       if (!ec && fs::is_symlink(own)) {  // a link to nowhere, named
         const Resolved folder = resolve(fs::absolute(p).parent_path(), true);
-        walk.refused.push_back({fs::path(p).lexically_normal().string(), "", folder.target.string(),
-                                resolve(p, true).error});
+        walk.refused.push_back(
+            {fs::path(p).lexically_normal().string(), "", folder.target.string(), resolve(p, true).error});
         continue;
       }
       walk.errors.push_back({p, {}, diag::Severity::Error, "no such file or folder"});
@@ -62,7 +62,7 @@ SubmissionWalk findSubmissions(const std::vector<std::string>& paths) {
         walk.errors.push_back({p, {}, diag::Severity::Error, "cannot follow its folder: " + folder.error});
         continue;
       }
-      visit(p, fs::symlink_status(p, ec), folder.target, files, walk.refused);
+      visitEntry(p, fs::symlink_status(p, ec), folder.target, files, walk.refused);
       continue;
     }
     const Resolved folder = resolve(p, true);
@@ -74,7 +74,7 @@ SubmissionWalk findSubmissions(const std::vector<std::string>& paths) {
     for (; !ec && it != end; it.increment(ec)) {
       std::error_code own;
       const fs::file_status status = it->symlink_status(own);
-      if (!own) visit(it->path(), status, folder.target, files, walk.refused);
+      if (!own) visitEntry(it->path(), status, folder.target, files, walk.refused);
     }
     if (ec) walk.errors.push_back({p, {}, diag::Severity::Error, "cannot list: " + ec.message()});
   }
@@ -92,7 +92,11 @@ diag::Diagnostic refusalOf(const RefusedLink& link) {
       link.target.empty()
           ? fmt::format("a symbolic link that cannot be followed ({}): not graded", link.reason)
           : fmt::format("a symbolic link to {}, outside the folder graded ({}): not graded", link.target, link.folder);
-  return {link.path, {}, diag::Severity::Error, message, "submission-outside-folder",
+  return {link.path,
+          {},
+          diag::Severity::Error,
+          message,
+          "submission-outside-folder",
           "a submission is graded inside its folder: copy the file there instead of linking to it"};
 }
 

@@ -133,7 +133,8 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
 int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   std::uint32_t shard = 1, shards = 1;
   if (!o.shard.empty() && !parseShard(o.shard, shard, shards)) {
-    err << fmt::format("robotsim: error: --shard takes K/N with 1 <= K <= N, e.g. 2/4, not '{}'\n", base::safeText(o.shard));
+    err << fmt::format("robotsim: error: --shard takes K/N with 1 <= K <= N, e.g. 2/4, not '{}'\n",
+                       base::safeText(o.shard));
     return kExitBadInput;
   }
   if (o.update && std::getenv("CI") != nullptr) {

@@ -7,11 +7,10 @@
 // and without a delay) and random expectations at random moments, many of
 // them on the times where things change; both must give the same answer
 // every time.
-#include <catch2/catch.hpp>
-
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <random>
 #include <string>
 #include <vector>
@@ -148,15 +147,15 @@ WatchAnswer fromLog(const RunLog& log, const rs::vm::Image& image, const Expecta
 
 // ---- Random programs, stimuli and expectations. ----
 
-struct Case {
+struct WatchCase {
   std::string program, stimuli;
   std::vector<Micros> moments;  // times worth asking about
 };
 
-Case randomCase(std::mt19937& rng) {
+WatchCase randomCase(std::mt19937& rng) {
   const auto pick = [&](int n) { return static_cast<int>(rng() % static_cast<unsigned>(n)); };
   const char* const delays[] = {"0", "0.001", "0.25", "0.5", "1"};
-  Case c;
+  WatchCase c;
   c.program = "        SET K 0\nTOP:    ADD K 1\n";
   const int length = 4 + pick(14);
   for (int i = 0; i < length; ++i) {
@@ -165,10 +164,17 @@ Case randomCase(std::mt19937& rng) {
       case 1: c.program += fmt::format("        DELAY {}\n", delays[pick(5)]); break;
       case 2:
       case 3: c.program += fmt::format("        OUTSIG {} {}\n", 1 + pick(3), pick(2) ? "ON" : "OFF"); break;
-      case 4: c.program += fmt::format("        {} {} {}\n", pick(2) ? "SET" : "ADD", pick(2) ? "N" : "M", pick(5) - 2); break;
-      case 5: c.program += fmt::format("        MOVE {} 0 {} 0 0\n", (pick(2) ? 1 : -1) * 100 * pick(3), 60 * pick(2)); break;
+      case 4:
+        c.program += fmt::format("        {} {} {}\n", pick(2) ? "SET" : "ADD", pick(2) ? "N" : "M", pick(5) - 2);
+        break;
+      case 5:
+        c.program += fmt::format("        MOVE {} 0 {} 0 0\n", (pick(2) ? 1 : -1) * 100 * pick(3), 60 * pick(2));
+        break;
       case 6: c.program += fmt::format("        WAITFOR {} {}\n", 1 + pick(2), pick(2) ? "ON" : "OFF"); break;
-      case 7: c.program += fmt::format("        JMPIN {} ON SKIP{}\n        OUTSIG 3 ON\nSKIP{}:  DELAY 0\n", 1 + pick(2), i, i); break;
+      case 7:
+        c.program +=
+            fmt::format("        JMPIN {} ON SKIP{}\n        OUTSIG 3 ON\nSKIP{}:  DELAY 0\n", 1 + pick(2), i, i);
+        break;
       case 8: c.program += "        MOVE -200 0 0 0 0\n        MOVE 200 0 0 0 0\n"; break;
     }
   }
@@ -195,8 +201,11 @@ std::vector<Expectation> randomExpectations(std::mt19937& rng, const std::vector
   for (int i = 0; i < 40; ++i) {
     Expectation e;
     const int what = pick(8);
-    e.kind = what < 2 ? ExpectKind::Output : what < 4 ? ExpectKind::Input : what < 6 ? ExpectKind::Variable
-             : what < 7 ? ExpectKind::Order : ExpectKind::Pulses;
+    e.kind = what < 2   ? ExpectKind::Output
+             : what < 4 ? ExpectKind::Input
+             : what < 6 ? ExpectKind::Variable
+             : what < 7 ? ExpectKind::Order
+                        : ExpectKind::Pulses;
     e.number = 1 + pick(3);
     e.on = pick(2) != 0;
     e.name = pick(2) ? "N" : "M";
@@ -227,12 +236,14 @@ std::vector<Expectation> randomExpectations(std::mt19937& rng, const std::vector
   return out;
 }
 
-std::string describe(const WatchAnswer& a) {
+std::string answerText(const WatchAnswer& a) {
   std::string s;
-  if (a.moment) s += fmt::format("moment {} value {} line {}; ", a.moment->at, a.moment->value, a.moment->line.value_or(0));
+  if (a.moment)
+    s += fmt::format("moment {} value {} line {}; ", a.moment->at, a.moment->value, a.moment->line.value_or(0));
   if (a.first) s += fmt::format("first {}; ", *a.first);
   if (a.second) s += fmt::format("second {}; ", *a.second);
-  if (a.beyond) s += fmt::format("beyond {} line {} {}..{}; ", a.beyond->to, a.beyond->line, a.beyond->start, a.beyond->end);
+  if (a.beyond)
+    s += fmt::format("beyond {} line {} {}..{}; ", a.beyond->to, a.beyond->line, a.beyond->start, a.beyond->end);
   return s + fmt::format("pulses {}", a.pulses);
 }
 
@@ -243,7 +254,7 @@ TEST_CASE("RunWatch answers every expectation as the whole RunLog does, on rando
   std::mt19937 rng(20261126);
   int finished = 0, stopped = 0;
   for (int round = 0; round < 150; ++round) {
-    const Case c = randomCase(rng);
+    const WatchCase c = randomCase(rng);
     const std::string program = dir.write("p.rsp", c.program);
     const std::string stimuli = dir.write("p.stim", c.stimuli);
     const rs::launch::LoadedProgram loaded = rs::launch::loadProgram({program, "", {}});
@@ -271,7 +282,7 @@ TEST_CASE("RunWatch answers every expectation as the whole RunLog does, on rando
       const WatchAnswer want = fromLog(*run.log(), run.image(), expectations[i]);
       const WatchAnswer& got = watch.answer(i);
       INFO("round " << round << ", expectation " << i << " (kind " << static_cast<int>(expectations[i].kind) << ")");
-      CHECK(describe(got) == describe(want));
+      CHECK(answerText(got) == answerText(want));
     }
   }
   // The rounds reach both ends: runs that finish, and runs stopped early

@@ -4,7 +4,6 @@
 // escapes, compile errors that keep the compiler's hint, runs that never
 // end under grading, and one expectation line of a million terms.
 #include <catch2/catch.hpp>
-
 #include <chrono>
 #include <filesystem>
 #include <string>
@@ -31,9 +30,10 @@ bool hasEscape(const std::string& text) { return text.find('\x1b') != std::strin
 
 }  // namespace
 
-TEST_CASE("robotsim test --spec refuses a submission's symbolic link that leaves its folder, by name, and grades the "
-          "others",
-          "[testrun][cli]") {
+TEST_CASE(
+    "robotsim test --spec refuses a submission's symbolic link that leaves its folder, by name, and grades the "
+    "others",
+    "[testrun][cli]") {
   const TempDir dir;
   const std::string spec = writeAssignment(dir);
   fs::create_directories(dir.path() / "submissions" / "bob");
@@ -46,10 +46,10 @@ TEST_CASE("robotsim test --spec refuses a submission's symbolic link that leaves
   fs::create_symlink("/etc/passwd", s / "passwd.rsp");
   fs::create_symlink("../secret.rsp", s / "copied.rsp");
   fs::create_symlink("../../secret.rsp", s / "bob" / "deep.rsp");
-  fs::create_symlink("alice.rsp", s / "same.rsp");           // inside: graded
-  fs::create_symlink("bob/main.rsp", s / "bob_main.rsp");    // inside: graded
-  fs::create_symlink("../elsewhere", s / "away");            // a folder outside
-  fs::create_symlink("loop.rsp", s / "loop.rsp");            // never ends
+  fs::create_symlink("alice.rsp", s / "same.rsp");         // inside: graded
+  fs::create_symlink("bob/main.rsp", s / "bob_main.rsp");  // inside: graded
+  fs::create_symlink("../elsewhere", s / "away");          // a folder outside
+  fs::create_symlink("loop.rsp", s / "loop.rsp");          // never ends
   fs::create_symlink("/etc/passwd", s / "\x1b]0;pwned\x07.rsp");
 
   const CliResult r = runCli({"test", "--spec", spec, s.string()});
@@ -65,8 +65,8 @@ TEST_CASE("robotsim test --spec refuses a submission's symbolic link that leaves
             "): not graded\n",
         s.string() + "/copied.rsp: error: a symbolic link to " + fs::canonical(dir.path() / "secret.rsp").string() +
             ", outside the folder graded",
-        s.string() + "/bob/deep.rsp: error: a symbolic link to " +
-            fs::canonical(dir.path() / "secret.rsp").string() + ", outside",
+        s.string() + "/bob/deep.rsp: error: a symbolic link to " + fs::canonical(dir.path() / "secret.rsp").string() +
+            ", outside",
         s.string() + "/away: error: a symbolic link to " + fs::canonical(dir.path() / "elsewhere").string() +
             ", outside",
         s.string() + "/loop.rsp: error: a symbolic link that cannot be followed (",
@@ -93,7 +93,8 @@ TEST_CASE("robotsim test --spec refuses a submission's symbolic link that leaves
   CHECK_FALSE(hasEscape(csv.out));
 }
 
-TEST_CASE("robotsim test: a golden trace lives under its test's folder, for reading and for --update", "[testrun][cli]") {
+TEST_CASE("robotsim test: a golden trace lives under its test's folder, for reading and for --update",
+          "[testrun][cli]") {
   const TempDir dir;
   fs::create_directories(dir.path() / "tests");
   fs::create_directories(dir.path() / "elsewhere");
@@ -108,8 +109,10 @@ TEST_CASE("robotsim test: a golden trace lives under its test's folder, for read
   INFO(r.out);
   CHECK(r.code == 2);
   CHECK(r.out.find("SECRET-TRACE-LINE") == std::string::npos);
-  CHECK(r.out.find(absolute + ":1:17: error: a golden trace lives under the test's folder: name it relative to the "
-                              "folder, without '..' leading out, not '" + outside + "'\n") != std::string::npos);
+  CHECK(r.out.find(absolute +
+                   ":1:17: error: a golden trace lives under the test's folder: name it relative to the "
+                   "folder, without '..' leading out, not '" +
+                   outside + "'\n") != std::string::npos);
   CHECK(r.out.find(up + ":1:17: error: a golden trace lives under the test's folder") != std::string::npos);
   CHECK(r.out.find(linked + ":1:3: error: the golden trace " + (dir.path() / "tests/golden/new.trace").string() +
                    " leads out of the test's folder (to " +
@@ -154,8 +157,9 @@ TEST_CASE("robotsim test: a golden trace compared as the run writes it, wherever
   const std::size_t second = lines[0].size() + 1;
   changed[second + lines[1].size() / 2] ^= 1;
   dir.write("t.trace", changed);
-  CHECK(runCli({"test", program}).out.find("at its line 2: expected '" + changed.substr(second, lines[1].size()) +
-                                           "', got '" + lines[1] + "'") != std::string::npos);
+  CHECK(runCli({"test", program})
+            .out.find("at its line 2: expected '" + changed.substr(second, lines[1].size()) + "', got '" + lines[1] +
+                      "'") != std::string::npos);
   dir.write("t.trace", trace);
   CHECK(runCli({"test", program}).code == 0);
 }
@@ -182,9 +186,10 @@ TEST_CASE("robotsim test: file and scenario names with terminal escapes are prin
   CHECK_FALSE(hasEscape(runCli({"test", "--spec", spec, (dir.path() / "s").string(), "--format", "csv"}).out));
 }
 
-TEST_CASE("robotsim test: a compile error keeps the compiler's hint, the expect-error hint only for a negative "
-          "example, never when grading",
-          "[testrun][cli]") {
+TEST_CASE(
+    "robotsim test: a compile error keeps the compiler's hint, the expect-error hint only for a negative "
+    "example, never when grading",
+    "[testrun][cli]") {
   const TempDir dir;
   fs::create_directories(dir.path() / "s");
   const std::string student = dir.write("s/student.rsp", "        GOTO PIKC\nPICK:   END\n");
@@ -221,9 +226,10 @@ TEST_CASE("robotsim test: a compile error keeps the compiler's hint, the expect-
                               "MOVE?)") != std::string::npos);
 }
 
-TEST_CASE("robotsim test --spec: a submission that never ends stops at the grading limits, which a scenario may "
-          "raise",
-          "[testrun][cli]") {
+TEST_CASE(
+    "robotsim test --spec: a submission that never ends stops at the grading limits, which a scenario may "
+    "raise",
+    "[testrun][cli]") {
   const TempDir dir;
   fs::create_directories(dir.path() / "s");
   // 0.25 s a round trip of E (50 units at 400 a second, each way): the
@@ -266,8 +272,7 @@ TEST_CASE("robotsim test --spec: a submission that never ends stops at the gradi
   CHECK(own.out.find("time limit at line 1, 3600.125 s") != std::string::npos);
 }
 
-TEST_CASE("expectations: one line of a million motor terms is read in linear time, each column right",
-          "[testrun]") {
+TEST_CASE("expectations: one line of a million motor terms is read in linear time, each column right", "[testrun]") {
   // 1,000,000 terms E=0 D=1 C=2 ... (5 letters), the last one bad: the
   // error must be at its column, counted here independently.
   std::string line = "; expect: motors";

@@ -5,14 +5,13 @@
 // 3.55 GB when every step was logged). Release only: scripts/test.sh skips
 // it under the sanitizers, whose shadow memory and slower run say nothing
 // of robotsim's own use.
-#include <catch2/catch.hpp>
-
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
 #include <chrono>
 #include <fstream>
 #include <string>
