@@ -9,6 +9,9 @@
 // - every `.rsp` link under the folder that leads out of it (or nowhere)
 //   is refused by name, and a refused path is never graded;
 // - no file is opened (a FIFO would block), nothing crashes.
+// The tree is built with *at() calls that never follow a link (a file
+// written through the link to /etc/passwd would overwrite it).
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -52,19 +55,48 @@ std::string expand(std::string target, const fs::path& root, const fs::path& out
   return target;
 }
 
-// The input's tree: three bytes an entry (what, where, to what).
-void build(const std::uint8_t* data, std::size_t size, const fs::path& root, const fs::path& outside) {
-  std::error_code ec;
-  for (std::size_t i = 0; i + 2 < size && i < 3 * 24; i += 3) {
-    const fs::path at = root / pick(kNames, data[i + 1]);
-    fs::create_directories(at.parent_path(), ec);
-    switch (data[i] % 4) {
-      case 0: fs::create_directory(at, ec); break;
-      case 1: std::ofstream(at) << "END\n"; break;
-      case 2: fs::create_symlink(expand(pick(kTargets, data[i + 2]), root, outside), at, ec); break;
-      case 3: ::mkfifo(at.c_str(), 0600); break;
-    }
+// The folder `parts` (all but the last) under `rootFd`, made where
+// missing, opened one level at a time without following a link: -1 when one
+// of them is not a real folder. Nothing is ever made, or written, through
+// a link: the links this target makes point at /etc/passwd.
+int openParent(int rootFd, const std::vector<std::string>& parts) {
+  int fd = ::dup(rootFd);
+  for (std::size_t i = 0; fd >= 0 && i + 1 < parts.size(); ++i) {
+    ::mkdirat(fd, parts[i].c_str(), 0700);
+    const int next = ::openat(fd, parts[i].c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    ::close(fd);
+    fd = next;
   }
+  return fd;
+}
+
+// The input's tree: three bytes an entry (what, where, to what). Every
+// call makes its last part only where nothing is (O_EXCL, mkdirat,
+// symlinkat and mkfifoat never follow it).
+void build(const std::uint8_t* data, std::size_t size, const fs::path& root, const fs::path& outside) {
+  const int rootFd = ::open(root.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  require(rootFd >= 0);
+  for (std::size_t i = 0; i + 2 < size && i < 3 * 24; i += 3) {
+    std::vector<std::string> parts;
+    for (const fs::path& part : fs::path(pick(kNames, data[i + 1]))) parts.push_back(part.string());
+    const int parent = openParent(rootFd, parts);
+    if (parent < 0) continue;
+    const char* last = parts.back().c_str();
+    switch (data[i] % 4) {
+      case 0: ::mkdirat(parent, last, 0700); break;
+      case 1: {
+        const int fd = ::openat(parent, last, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0600);
+        if (fd < 0) break;
+        require(::write(fd, "END\n", 4) == 4);
+        ::close(fd);
+        break;
+      }
+      case 2: ::symlinkat(expand(pick(kTargets, data[i + 2]), root, outside).c_str(), parent, last); break;
+      case 3: ::mkfifoat(parent, last, 0600); break;
+    }
+    ::close(parent);
+  }
+  ::close(rootFd);
 }
 
 // Every .rsp symbolic link under the folder, walked without following links.
