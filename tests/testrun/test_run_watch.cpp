@@ -61,7 +61,7 @@ std::int32_t logValue(const RunLog& log, const Expectation& e, std::uint32_t slo
 
 // The moments a window is checked at: its start, and every change inside.
 std::vector<Micros> logWindowTimes(const RunLog& log, const Expectation& e, std::uint32_t slot) {
-  const auto [from, to] = *e.during;
+  const Micros from = e.during->first, to = e.during->second;  // clang 14 cannot capture bindings
   std::vector<Micros> times{from};
   const auto inside = [&](Micros at) {
     if (at > from && at < to) times.push_back(at);
