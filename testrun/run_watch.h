@@ -1,6 +1,6 @@
 // What a test's expectations need from its run, gathered while it runs, so
 // that `robotsim test` keeps no log of the run's steps (a RunLog keeps
-// about 35 bytes an instruction: a long loop under `robotsim test` reached
+// 35 to 47 bytes an instruction: a long loop under `robotsim test` reached
 // 3.55 GB). For each expectation about a moment (`output 3 on at 2`), a
 // window (`during 2..5`), an order (`input 2 on before output 3 on`), a
 // count of pulses or a motor's bound, the watch keeps its answer and the
