@@ -14,6 +14,7 @@
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/options.h"
 #include "cli/lib/trace.h"
+#include "diag/diagnostic.h"
 #include "testrun/suite.h"
 #include "vm/interpreter.h"
 
@@ -42,6 +43,14 @@ nlohmann::json diagnosticJson(const diag::Diagnostic& d) {
   if (!d.code.empty()) j["code"] = d.code;
   if (!d.hint.empty()) j["hint"] = d.hint;
   return j;
+}
+
+// The command's own errors go through diag::render, as every problem of
+// the report does: what they quote (an option's value, a path) may hold a
+// terminal escape, and render escapes it.
+void printTestCommandError(std::ostream& err, const std::string& where, const std::string& message,
+                           const std::string& hint = {}) {
+  err << diag::render({where, {}, diag::Severity::Error, message, {}, hint}, nullptr);
 }
 
 // One row per program: its scenarios passed, their simulated time, and its
@@ -133,12 +142,14 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
 int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   std::uint32_t shard = 1, shards = 1;
   if (!o.shard.empty() && !parseShard(o.shard, shard, shards)) {
-    err << fmt::format("robotsim: error: --shard takes K/N with 1 <= K <= N, e.g. 2/4, not '{}'\n",
-                       base::safeText(o.shard));
+    printTestCommandError(err, "robotsim",
+                          fmt::format("--shard takes K/N with 1 <= K <= N, e.g. 2/4, not '{}'", diag::excerpt(o.shard)),
+                          "K is this job's part and N how many parts: --shard 2/4 is the second of four");
     return kExitBadInput;
   }
   if (o.update && std::getenv("CI") != nullptr) {
-    err << "robotsim: error: --update refuses to write golden traces when CI is set: a CI run checks them\n";
+    printTestCommandError(err, "robotsim",
+                          "--update refuses to write golden traces when CI is set: a CI run checks them");
     return kExitBadInput;
   }
   const auto started = std::chrono::steady_clock::now();
@@ -226,14 +237,14 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
       if (r.coverage) tracefile += testrun::lcovRecord(r.file, *r.coverage);
     std::string error;
     if (!base::writeFileAtomically(o.lcov, tracefile, error)) {
-      err << fmt::format("{}: error: cannot write: {}\n", base::safeText(o.lcov), error);
+      printTestCommandError(err, o.lcov, "cannot write: " + error);
       return kExitBadInput;
     }
   }
   if (!o.junit.empty()) {
     std::string error;
     if (!base::writeFileAtomically(o.junit, testrun::junitXml(results), error)) {
-      err << fmt::format("{}: error: cannot write: {}\n", base::safeText(o.junit), error);
+      printTestCommandError(err, o.junit, "cannot write: " + error);
       return kExitBadInput;
     }
   }

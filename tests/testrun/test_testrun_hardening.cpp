@@ -186,6 +186,50 @@ TEST_CASE("robotsim test: file and scenario names with terminal escapes are prin
   CHECK_FALSE(hasEscape(runCli({"test", "--spec", spec, (dir.path() / "s").string(), "--format", "csv"}).out));
 }
 
+TEST_CASE("robotsim test --shard: every part's names, and a bad --shard itself, are printed escaped",
+          "[testrun][cli]") {
+  const TempDir dir;
+  fs::create_directories(dir.path() / "s");
+  // Eight files, which fall four in each part of two (FNV-1a's lowest bit
+  // is the parity of its bytes' lowest bits: here the digit's); each fails,
+  // so its problem is printed too.
+  std::vector<std::string> shown;
+  for (int i = 0; i < 8; ++i) {
+    dir.write("s/\x1b[31mp" + std::to_string(i) + ".rsp", "; expect: time = 1\nEND\n");
+    shown.push_back((dir.path() / "s").string() + "/\\x1b[31mp" + std::to_string(i) + ".rsp");
+  }
+  const std::string spec = writeAssignment(dir);
+  std::size_t seen = 0, graded = 0;
+  for (const char* part : {"1/2", "2/2"}) {
+    const CliResult plain = runCli({"test", "--shard", part, (dir.path() / "s").string()});
+    INFO(part << "\n" << plain.out << plain.err);
+    CHECK(plain.code == 1);
+    CHECK_FALSE(hasEscape(plain.out + plain.err));
+    for (const std::string& name : shown)
+      if (plain.out.find(name + " FAILED\n" + name + ":1:3: error: expected the run's simulated time") !=
+          std::string::npos)
+        ++seen;
+    for (const char* format : {"text", "csv"}) {
+      const CliResult g =
+          runCli({"test", "--spec", spec, "--shard", part, "--format", format, (dir.path() / "s").string()});
+      INFO(format << "\n" << g.out << g.err);
+      CHECK(g.code == 0);
+      CHECK_FALSE(hasEscape(g.out + g.err));
+      for (const std::string& name : shown) graded += g.out.find(name) != std::string::npos;
+    }
+  }
+  CHECK(seen == shown.size());        // each name once, escaped, over the two parts
+  CHECK(graded == 2 * shown.size());  // and once in each format
+
+  // The part asked for is quoted back escaped too, with a hint.
+  const CliResult bad = runCli({"test", "--shard", "1/\x1b[2J", (dir.path() / "s").string()});
+  CHECK(bad.code == 2);
+  CHECK(bad.err ==
+        "robotsim: error: --shard takes K/N with 1 <= K <= N, e.g. 2/4, not '1/\\x1b[2J'\n"
+        "  hint: K is this job's part and N how many parts: --shard 2/4 is the second of four\n");
+  CHECK(bad.out.empty());
+}
+
 TEST_CASE(
     "robotsim test: a compile error keeps the compiler's hint, the expect-error hint only for a negative "
     "example, never when grading",
