@@ -36,6 +36,14 @@ nlohmann::json benchCompile(const Options& options);
 /// than what it measures.
 nlohmann::json benchMemory(const Options& options);
 
+/// `robotsim test` hardened: the peak RSS of a test whose run is 1e8
+/// instructions (target: 100 MB) beside the same loop logged; one
+/// `; expect: motors` line of 10k, 100k and 1M terms (target: 1 s at 1M);
+/// the CPU time of a submission that never ends under `--spec` (target:
+/// 1 s) beside the limits grading had before. Runs second, while the
+/// driver is small.
+nlohmann::json benchTestRun(const Options& options);
+
 /// Startup: `robotsim check` on a 1,000-line program, whole process.
 nlohmann::json benchStartup(const Options& options);
 

@@ -20,7 +20,7 @@ namespace {
 using rs::bench::Options;
 
 constexpr std::string_view kUsage =
-    "usage: robotsim_bench [--reps N] [--json FILE] [--only memory|dispatch|compile|startup|snapshot|test|errors|lsp|debug]\n"
+    "usage: robotsim_bench [--reps N] [--json FILE] [--only memory|testrun|dispatch|compile|startup|snapshot|test|errors|lsp|debug]\n"
     "                      [--robotsim PATH] [--lua PATH] [--luac PATH] [--workdir DIR]\n";
 
 std::string firstLine(const std::string& path, std::string_view prefix = {}) {
@@ -76,9 +76,10 @@ bool parse(int argc, char** argv, Options& o, std::string& only) {
     std::cerr << "robotsim_bench: --reps must be at least 1\n";
     return false;
   }
-  if (!only.empty() && only != "memory" && only != "dispatch" && only != "compile" && only != "startup" && only != "snapshot" &&
-      only != "test" && only != "errors" && only != "lsp" && only != "debug") {
-    std::cerr << "robotsim_bench: --only takes memory, dispatch, compile, startup, snapshot, test, errors, lsp or debug\n";
+  if (!only.empty() && only != "memory" && only != "testrun" && only != "dispatch" && only != "compile" &&
+      only != "startup" && only != "snapshot" && only != "test" && only != "errors" && only != "lsp" && only != "debug") {
+    std::cerr << "robotsim_bench: --only takes memory, testrun, dispatch, compile, startup, snapshot, test, errors, lsp "
+                 "or debug\n";
     return false;
   }
   return true;
@@ -105,6 +106,7 @@ int main(int argc, char** argv) {
   fmt::print("load average at start: {}\n", loadAverage());
   try {
     if (only.empty() || only == "memory") summary["memory"] = rs::bench::benchMemory(options);
+    if (only.empty() || only == "testrun") summary["testrun"] = rs::bench::benchTestRun(options);
     if (only.empty() || only == "dispatch") summary["dispatch"] = rs::bench::benchDispatch(options);
     if (only.empty() || only == "compile") summary["compile"] = rs::bench::benchCompile(options);
     if (only.empty() || only == "startup") summary["startup"] = rs::bench::benchStartup(options);

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
+
+#include "base/text.h"
 
 namespace rs::testrun {
 
@@ -49,6 +52,23 @@ std::map<std::uint32_t, LineCount> byLine(const Coverage& c) {
 
 }  // namespace
 
+namespace {
+
+// A source line as a terminal may show it: control characters escaped
+// (base::safeText), tabs kept for the indentation.
+std::string printableLine(std::string_view line) {
+  std::string out;
+  for (std::size_t from = 0; from <= line.size();) {
+    const std::size_t tab = std::min(line.find('\t', from), line.size());
+    out += base::safeText(line.substr(from, tab - from));
+    if (tab < line.size()) out += '\t';
+    from = tab + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string annotatedListing(const diag::SourceFile& source, const Coverage& coverage) {
   const std::map<std::uint32_t, LineCount> lines = byLine(coverage);
   std::size_t ran = 0, branches = 0, directions = 0;
@@ -57,14 +77,14 @@ std::string annotatedListing(const diag::SourceFile& source, const Coverage& cov
     if (l.branch) branches += 2, directions += (l.jumped > 0) + (l.fellThrough > 0);
   }
   std::string out = fmt::format("coverage of {}: {} of {} instruction lines ran, {} of {} jump directions taken\n",
-                                source.name(), ran, lines.size(), directions, branches);
+                                base::safeText(source.name()), ran, lines.size(), directions, branches);
   for (std::uint32_t n = 1; n <= source.lineCount(); ++n) {
     const auto it = lines.find(n);
     std::string count = it == lines.end() ? "-" : it->second.runs ? std::to_string(it->second.runs) : "#####";
     std::string ways;
     if (it != lines.end() && it->second.branch)
       ways = fmt::format("   [jumped {}, went on {}]", it->second.jumped, it->second.fellThrough);
-    std::string row = fmt::format("{:>9}: {:>5}: {}{}", count, n, source.line(n), ways);
+    std::string row = fmt::format("{:>9}: {:>5}: {}{}", count, n, printableLine(source.line(n)), ways);
     out += row + '\n';
   }
   return out;

@@ -29,7 +29,7 @@ std::string onOff(bool on) { return on ? "ON" : "OFF"; }
 class Checker {
  public:
   Checker(const runtime::Run& run, const std::string& file)
-      : run_(run), image_(run.image()), log_(*run.log()), outcome_(*run.outcome()), file_(file) {}
+      : run_(run), image_(run.image()), outcome_(*run.outcome()), file_(file) {}
 
   std::vector<diag::Diagnostic> failures;
 
@@ -81,60 +81,29 @@ class Checker {
     }
   }
 
-  // The output or input line's state at time t, from the log.
-  bool lineAt(bool output, int number, vm::Micros t) const {
-    const runtime::RunState s = runtime::stateAt(log_, t);
-    return (((output ? s.outputs : s.inputs) >> (number - 1)) & 1) != 0;
+  // What set an output or a variable ("set by line 10"), or which line was
+  // running when an input was as it was.
+  static std::string cause(ExpectKind kind, const WatchedMoment& m) {
+    if (kind == ExpectKind::Input) return m.line ? fmt::format("line {} running", *m.line) : "before the first step";
+    if (kind == ExpectKind::Variable) return m.line ? fmt::format("set by line {}", *m.line) : "never set yet";
+    return m.line ? fmt::format("set by line {}", *m.line) : "from the start";
   }
 
-  // The times in (from, to) at which the line may have changed.
-  std::vector<vm::Micros> changesIn(bool output, vm::Micros from, vm::Micros to) const {
-    std::vector<vm::Micros> times;
-    if (output) {
-      for (const runtime::OutputChange& c : log_.outputs) {
-        const vm::Micros at = log_.steps[c.step].end;
-        if (at > from && at < to) times.push_back(at);
-      }
-    } else {
-      for (const runtime::InputLevel& l : log_.inputs)
-        if (l.at > from && l.at < to) times.push_back(l.at);
-    }
-    return times;
-  }
-
-  // Why an output or input is as it is at time t: the OUTSIG that set the
-  // output last, or the instruction running while an input changed.
-  std::string cause(bool output, vm::Micros t) const {
-    if (output) {
-      const runtime::OutputChange* last = nullptr;
-      for (const runtime::OutputChange& c : log_.outputs)
-        if (log_.steps[c.step].end <= t) last = &c;
-      return last ? fmt::format("set by line {}", image_.lines[log_.steps[last->step].index]) : "from the start";
-    }
-    const runtime::RunState s = runtime::stateAt(log_, t);
-    return s.step ? fmt::format("line {} running", image_.lines[log_.steps[*s.step].index]) : "before the first step";
-  }
-
-  void level(const Expectation& e) {
+  void level(const Expectation& e, const WatchAnswer& a) {
     const bool output = e.kind == ExpectKind::Output;
     const std::string what = fmt::format("{} {}", output ? "output" : "input", e.number);
     if (e.at) {
-      const bool v = lineAt(output, e.number, *e.at);
-      if (v != e.on)
-        fail(e, fmt::format("expected {} {} at {}; it was {} then ({})", what, onOff(e.on), seconds(*e.at), onOff(v),
-                            cause(output, *e.at)));
+      const WatchedMoment& m = *a.moment;
+      if ((m.value != 0) != e.on)
+        fail(e, fmt::format("expected {} {} at {}; it was {} then ({})", what, onOff(e.on), seconds(*e.at),
+                            onOff(m.value != 0), cause(e.kind, m)));
       return;
     }
     if (e.during) {  // from A up to B: a change at B itself ends the window
       const auto [from, to] = *e.during;
-      std::vector<vm::Micros> times{from};
-      for (vm::Micros t : changesIn(output, from, to)) times.push_back(t);
-      for (vm::Micros t : times)
-        if (lineAt(output, e.number, t) != e.on) {
-          fail(e, fmt::format("expected {} {} during {}..{}; it was {} at {} ({})", what, onOff(e.on),
-                              vm::formatSeconds(from), seconds(to), onOff(!e.on), seconds(t), cause(output, t)));
-          return;
-        }
+      if (const std::optional<WatchedMoment>& m = a.moment)
+        fail(e, fmt::format("expected {} {} during {}..{}; it was {} at {} ({})", what, onOff(e.on),
+                            vm::formatSeconds(from), seconds(to), onOff(!e.on), seconds(m->at), cause(e.kind, *m)));
       return;
     }
     const std::uint8_t bits = output ? run_.machine().outputs() : run_.machine().inputs();
@@ -142,32 +111,12 @@ class Checker {
     if (v != e.on) fail(e, fmt::format("expected {} {} at the end; it is {} {}", what, onOff(e.on), onOff(v), ending()));
   }
 
-  // The first time the line turns to the state: ON, or OFF after having
-  // been ON (nullopt: never).
-  std::optional<vm::Micros> firstTime(const LineEvent& ev) const {
-    bool was = false;
-    const auto turns = [&](std::uint8_t bits) {
-      const bool now = ((bits >> (ev.number - 1)) & 1) != 0;
-      const bool happened = ev.on ? now : (was && !now);
-      was = now;
-      return happened;
-    };
-    if (ev.output) {
-      for (const runtime::OutputChange& c : log_.outputs)
-        if (turns(c.outputs)) return log_.steps[c.step].end;
-    } else {
-      for (const runtime::InputLevel& l : log_.inputs)
-        if (turns(l.inputs)) return l.at;
-    }
-    return std::nullopt;
-  }
-
   static std::string eventText(const LineEvent& ev) {
     return fmt::format("{} {} {}", ev.output ? "output" : "input", ev.number, onOff(ev.on));
   }
 
-  void order(const Expectation& e) {
-    const std::optional<vm::Micros> a = firstTime(e.first), b = firstTime(e.second);
+  void order(const Expectation& e, const WatchAnswer& w) {
+    const std::optional<vm::Micros> a = w.first, b = w.second;
     const std::string first = eventText(e.first), second = eventText(e.second);
     if (!a) return fail(e, fmt::format("expected {} before {}; {} never happened (the run ended {})", first, second,
                                        first, ending()));
@@ -178,61 +127,41 @@ class Checker {
 
   // Motors move in straight lines from one encoder value to another, so the
   // ends of its moves are the farthest a motor went.
-  void motorBound(const Expectation& e) {
+  void motorBound(const Expectation& e, const WatchAnswer& w) {
     const auto [letter, bound] = e.motors.front();
     std::size_t m = 0;
     while (m < image_.motors.size() && image_.motors[m].letter != letter) ++m;
     if (m == image_.motors.size()) return fail(e, fmt::format("the robot has no motor {}", letter));
-    for (const runtime::MotorMove& move : log_.moves[m]) {
-      const std::int32_t reached = e.on ? std::max(move.from, move.to) : std::min(move.from, move.to);
-      if (e.on ? reached <= bound : reached >= bound) continue;
-      const std::int32_t to = move.to;
-      return fail(e, fmt::format("expected motor {} never {} {}; it moved to {} at line {} ({}..{})", letter,
-                                 e.on ? "above" : "below", bound, to, image_.lines[log_.steps[move.step].index],
-                                 vm::formatSeconds(move.start), seconds(move.end)));
-    }
+    if (!w.beyond) return;
+    const WatchedMove& move = *w.beyond;
+    fail(e, fmt::format("expected motor {} never {} {}; it moved to {} at line {} ({}..{})", letter,
+                        e.on ? "above" : "below", bound, move.to, move.line, vm::formatSeconds(move.start),
+                        seconds(move.end)));
   }
 
-  void pulses(const Expectation& e) {
-    std::uint32_t count = 0;
-    bool was = false;
-    for (const runtime::OutputChange& c : log_.outputs) {
-      const bool on = ((c.outputs >> (e.number - 1)) & 1) != 0;
-      if (on && !was) ++count;
-      was = on;
-    }
+  void pulses(const Expectation& e, const WatchAnswer& w) {
+    const std::uint32_t count = w.pulses;
     if (count != e.count)
       fail(e, fmt::format("expected output {} to turn ON {} time{}; it turned ON {} time{} (the run ended {})", e.number,
                           e.count, e.count == 1 ? "" : "s", count, count == 1 ? "" : "s", ending()));
   }
 
-  void variable(const Expectation& e) {
+  void variable(const Expectation& e, const WatchAnswer& w) {
     for (std::size_t s = 0; s < image_.variables.size(); ++s) {
       if (!base::sameName(image_.variables[s], e.name)) continue;
-      const auto slot = static_cast<std::uint32_t>(s);
-      const auto writtenBy = [&](vm::Micros t) {  // the line of the last write at or before t
-        const runtime::VariableWrite* last = nullptr;
-        for (const runtime::VariableWrite& w : log_.variables)
-          if (w.slot == slot && log_.steps[w.step].end <= t) last = &w;
-        return last ? fmt::format("set by line {}", image_.lines[log_.steps[last->step].index]) : "never set yet";
-      };
       if (e.at) {
-        const std::int32_t v = runtime::variableAt(log_, slot, *e.at);
-        if (v != e.value)
+        const WatchedMoment& m = *w.moment;
+        if (m.value != e.value)
           fail(e, fmt::format("expected variable {} = {} at {}; it was {} then ({})", image_.variables[s], e.value,
-                              seconds(*e.at), v, writtenBy(*e.at)));
+                              seconds(*e.at), m.value, cause(e.kind, m)));
         return;
       }
       if (e.during) {
         const auto [from, to] = *e.during;
-        std::vector<vm::Micros> times{from};
-        for (const runtime::VariableWrite& w : log_.variables)
-          if (const vm::Micros at = log_.steps[w.step].end; w.slot == slot && at > from && at < to) times.push_back(at);
-        for (const vm::Micros t : times)
-          if (const std::int32_t v = runtime::variableAt(log_, slot, t); v != e.value)
-            return fail(e, fmt::format("expected variable {} = {} during {}..{}; it was {} at {} ({})",
-                                       image_.variables[s], e.value, vm::formatSeconds(from), seconds(to), v,
-                                       seconds(t), writtenBy(t)));
+        if (const std::optional<WatchedMoment>& m = w.moment)
+          fail(e, fmt::format("expected variable {} = {} during {}..{}; it was {} at {} ({})", image_.variables[s],
+                              e.value, vm::formatSeconds(from), seconds(to), m->value, seconds(m->at),
+                              cause(e.kind, *m)));
         return;
       }
       const std::int32_t v = run_.interpreter().variables()[s];
@@ -333,7 +262,6 @@ class Checker {
  private:
   const runtime::Run& run_;
   const vm::Image& image_;
-  const runtime::RunLog& log_;
   vm::RunOutcome outcome_;
   const std::string& file_;
 };
@@ -341,7 +269,7 @@ class Checker {
 }  // namespace
 
 std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const std::vector<Expectation>& expectations,
-                                       const std::string& file, bool impliedFinished) {
+                                       const std::string& file, bool impliedFinished, const RunWatch* watch) {
   Checker c(run, file);
   if (impliedFinished && !run.outcome()->ok()) {
     Expectation finished;
@@ -351,17 +279,20 @@ std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const std::vecto
     finished.pos = {run.image().lines[o.index], run.image().columns[o.index]};
     c.status(finished);
   }
-  for (const Expectation& e : expectations) {
+  const WatchAnswer none;
+  for (std::size_t i = 0; i < expectations.size(); ++i) {
+    const Expectation& e = expectations[i];
+    const WatchAnswer& a = watch ? watch->answer(i) : none;
     switch (e.kind) {
       case ExpectKind::Status: c.status(e); break;
       case ExpectKind::Time: c.time(e); break;
       case ExpectKind::Motors: c.motors(e); break;
       case ExpectKind::Output:
-      case ExpectKind::Input: c.level(e); break;
-      case ExpectKind::Pulses: c.pulses(e); break;
-      case ExpectKind::Order: c.order(e); break;
-      case ExpectKind::MotorBound: c.motorBound(e); break;
-      case ExpectKind::Variable: c.variable(e); break;
+      case ExpectKind::Input: c.level(e, a); break;
+      case ExpectKind::Pulses: c.pulses(e, a); break;
+      case ExpectKind::Order: c.order(e, a); break;
+      case ExpectKind::MotorBound: c.motorBound(e, a); break;
+      case ExpectKind::Variable: c.variable(e, a); break;
       case ExpectKind::Tcp: c.tcp(e); break;
       case ExpectKind::ObjectAt:
       case ExpectKind::ObjectHeld: c.object(e); break;

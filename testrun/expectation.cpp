@@ -8,6 +8,7 @@
 
 #include "base/ascii.h"
 #include "runtime/stimuli_text.h"
+#include "testrun/golden_trace.h"
 
 namespace rs::testrun {
 
@@ -28,14 +29,26 @@ std::uint32_t columnOf(std::string_view line, std::size_t offset) {
   return col;
 }
 
+// The words of `line` from byte `from` on, each with its column. Columns
+// are counted on as the words are found, never again from the start of the
+// line: a line of a million words costs a million steps, not a million
+// squared (one `motors` line with 1M terms took minutes).
 std::vector<Word> wordsOf(std::string_view line, std::size_t from) {
   std::vector<Word> words;
+  std::size_t counted = 0;  // the column of byte `counted` is `col`
+  std::uint32_t col = 1;
+  const auto columnAt = [&](std::size_t offset) {
+    for (; counted < offset && counted < line.size();
+         counted += std::max<std::size_t>(diag::utf8SequenceLength(line, counted), 1))
+      ++col;
+    return col;
+  };
   std::size_t i = from;
   while (i < line.size()) {
     while (i < line.size() && blank(line[i])) ++i;
     const std::size_t start = i;
     while (i < line.size() && !blank(line[i])) ++i;
-    if (i > start) words.push_back({line.substr(start, i - start), columnOf(line, start)});
+    if (i > start) words.push_back({line.substr(start, i - start), columnAt(start)});
   }
   return words;
 }
@@ -207,6 +220,10 @@ bool expectation(LineReader& r, Expectation& e) {
     e.kind = ExpectKind::Trace;
     const std::optional<Word> file = r.take("a golden trace file");
     if (!file) return false;
+    if (!staysUnderFolder(file->text))
+      return r.failAt(file->col, fmt::format("a golden trace lives under the test's folder: name it relative to the "
+                                             "folder, without '..' leading out, not '{}'",
+                                             diag::excerpt(file->text)));
     e.name = file->text;
     return r.end();
   }

@@ -11,6 +11,8 @@
 #include <set>
 #include <thread>
 
+#include "testrun/submissions.h"
+
 namespace rs::testrun {
 
 namespace fs = std::filesystem;
@@ -22,10 +24,21 @@ std::uint32_t shardOf(const std::string& path, std::uint32_t shards) {
 }
 
 Selection selectTests(const std::vector<std::string>& paths, const std::string& filter, std::uint32_t shard,
-                      std::uint32_t shards, bool withScenarios) {
+                      std::uint32_t shards, bool grading) {
   Selection s;
   std::set<std::string> found;
-  for (const std::string& p : paths) {
+  const auto kept = [&](const std::string& f) {
+    return (filter.empty() || f.find(filter) != std::string::npos) && (shards <= 1 || shardOf(f, shards) == shard);
+  };
+  if (grading) {
+    SubmissionWalk walk = findSubmissions(paths);
+    s.errors = std::move(walk.errors);
+    for (const RefusedLink& link : walk.refused)
+      if (kept(link.path)) s.refused.emplace(link.path, refusalOf(link));
+    found.insert(walk.files.begin(), walk.files.end());
+    for (const auto& [path, problem] : s.refused) found.insert(path);
+  }
+  for (const std::string& p : grading ? std::vector<std::string>() : paths) {
     std::error_code ec;
     const fs::file_status st = fs::status(p, ec);
     if (ec || !fs::exists(st)) {
@@ -40,27 +53,36 @@ Selection selectTests(const std::vector<std::string>& paths, const std::string& 
     for (; !ec && it != end; it.increment(ec)) {
       std::error_code fileEc;
       const fs::path ext = it->path().extension();
-      if ((ext == ".rsp" || (withScenarios && ext == ".rstest")) && it->is_regular_file(fileEc))
+      if ((ext == ".rsp" || ext == ".rstest") && it->is_regular_file(fileEc))
         found.insert(it->path().lexically_normal().string());
     }
     if (ec) s.errors.push_back({p, {}, diag::Severity::Error, "cannot list: " + ec.message()});
   }
   for (const std::string& f : found)
-    if ((filter.empty() || f.find(filter) != std::string::npos) && (shards <= 1 || shardOf(f, shards) == shard))
-      s.files.push_back(f);
+    if (kept(f)) s.files.push_back(f);
   return s;
 }
 
-void runTests(const std::vector<std::string>& files, const RunnerOptions& options, unsigned jobs,
-              const std::string& spec, const std::function<void(const TestResult&)>& report) {
+void runTests(const Selection& selection, const RunnerOptions& options, unsigned jobs, const std::string& spec,
+              const std::function<void(const TestResult&)>& report) {
+  const std::vector<std::string>& files = selection.files;
+  const auto one = [&](const std::string& file) -> std::vector<TestResult> {
+    if (const auto refused = selection.refused.find(file); refused != selection.refused.end()) {
+      TestResult r;
+      r.file = file;
+      r.status = TestStatus::Error;
+      r.problems.push_back(refused->second);
+      return {r};
+    }
+    return spec.empty() ? runTestPath(file, options) : runScenarios(spec, file, options);
+  };
   std::vector<std::optional<std::vector<TestResult>>> results(files.size());
   std::mutex mutex;
   std::condition_variable ready;
   std::atomic<std::size_t> next = 0;
   const auto work = [&] {
     for (std::size_t i; (i = next.fetch_add(1)) < files.size();) {
-      std::vector<TestResult> r =
-          spec.empty() ? runTestPath(files[i], options) : runScenarios(spec, files[i], options);
+      std::vector<TestResult> r = one(files[i]);
       const std::lock_guard lock(mutex);
       results[i] = std::move(r);
       ready.notify_one();

@@ -3,7 +3,8 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <sstream>
+#include <ostream>
+#include <streambuf>
 
 #include "base/file_io.h"
 #include "launch/program.h"
@@ -12,6 +13,8 @@
 #include "runtime/run/run.h"
 #include "testrun/evaluate.h"
 #include "testrun/expectation.h"
+#include "testrun/golden_trace.h"
+#include "testrun/run_watch.h"
 #include "vm/image_file.h"
 
 namespace rs::testrun {
@@ -47,12 +50,18 @@ std::string besideProgram(const std::string& program, const std::string& name, b
 
 // The compile errors against the expect-error lines: each expectation
 // needs an error on its line whose message contains its text, each error
-// an expectation.
+// an expectation. A program that expects no error gets the compiler's
+// diagnostics as `robotsim check` prints them (a did-you-mean hint
+// included); in a negative example an error it does not expect says so,
+// and, when the compiler has no better hint, how to expect it (never when
+// grading: a student cannot change the scenario file).
 void matchCompileErrors(const std::vector<Expectation>& expectations, const std::vector<diag::Diagnostic>& diags,
-                        const std::string& file, TestResult& r) {
+                        const std::string& file, bool grading, TestResult& r) {
+  bool negativeExample = false;
   std::vector<bool> matched(diags.size(), false);
   for (const Expectation& e : expectations) {
     if (e.kind != ExpectKind::CompileError) continue;
+    negativeExample = true;
     ++r.expectations;
     bool found = false;
     std::string onLine;
@@ -77,8 +86,11 @@ void matchCompileErrors(const std::vector<Expectation>& expectations, const std:
   for (std::size_t i = 0; i < diags.size(); ++i) {
     if (matched[i] || diags[i].severity != diag::Severity::Error) continue;
     diag::Diagnostic d = diags[i];
-    d.message = "unexpected compile error: " + d.message;
-    d.hint = "mark an error a negative example must have with '; expect-error: TEXT' on its line";
+    if (negativeExample) {
+      d.message = "unexpected compile error: " + d.message;
+      if (d.hint.empty() && !grading)
+        d.hint = "mark an error a negative example must have with '; expect-error: TEXT' on its line";
+    }
     r.problems.push_back(std::move(d));
   }
 }
@@ -87,14 +99,154 @@ void matchCompileErrors(const std::vector<Expectation>& expectations, const std:
 
 namespace {
 
-void compareTrace(const Expectation& e, const std::string& golden, const std::string& trace,
-                  const std::string& settingsFile, const RunnerOptions& options, TestResult& r);
+// One `expect: trace FILE` of a test: its golden file, read before the run,
+// and the comparer the run's trace is written into.
+struct GoldenTrace {
+  const Expectation* expectation = nullptr;
+  std::string path;
+  base::FileRead read;
+  std::unique_ptr<TraceComparer> comparer;
+  std::unique_ptr<std::ostream> stream;
+  std::unique_ptr<vm::StepObserver> writer;
+};
+
+// The golden files of a test's trace expectations, each inside the test's
+// folder; false (the test cannot start) when one leads out of it.
+bool openGoldenTraces(const ParsedExpectations& parsed, const std::string& settingsFile,
+                      const RunnerOptions& options, std::vector<GoldenTrace>& traces, TestResult& r) {
+  for (const Expectation& e : parsed.expectations) {
+    if (e.kind != ExpectKind::Trace) continue;
+    if (!options.traceMaker) {
+      r.problems.push_back({settingsFile, e.pos, diag::Severity::Error, "no trace writer: cannot check the trace"});
+      continue;
+    }
+    const GoldenFile golden = goldenFile(settingsFile, e.name);
+    if (!golden.error.empty()) {
+      r.status = TestStatus::Error;
+      r.problems.push_back({settingsFile, e.pos, diag::Severity::Error, golden.error, {},
+                            "golden traces live under the folder of the test that names them"});
+      continue;
+    }
+    GoldenTrace& t = traces.emplace_back();
+    t.expectation = &e;
+    t.path = golden.path;
+    t.read = base::readFile(golden.path, launch::kMaxInputBytes);
+    t.comparer = std::make_unique<TraceComparer>(t.read.bytes ? std::string_view(*t.read.bytes) : std::string_view());
+    t.stream = std::make_unique<std::ostream>(t.comparer.get());
+  }
+  return r.status != TestStatus::Error;
+}
+
+// A stream buffer that hands at most `limit` bytes on, then swallows the
+// rest and says so: a golden trace is never larger than a test can read.
+class CappedSink final : public std::streambuf {
+ public:
+  CappedSink(std::streambuf& to, std::size_t limit) : to_(to), left_(limit) {}
+  bool over() const { return over_; }
+
+ protected:
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    if (over_ || static_cast<std::size_t>(n) > left_) return over_ = true, n;
+    left_ -= static_cast<std::size_t>(n);
+    return to_.sputn(s, n);
+  }
+  int_type overflow(int_type c) override {
+    if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
+    const char ch = traits_type::to_char_type(c);
+    xsputn(&ch, 1);
+    return c;
+  }
+
+ private:
+  std::streambuf& to_;
+  std::size_t left_;
+  bool over_ = false;
+};
+
+// Pauses a run (which then ends early) once its trace is over the cap.
+class StopWhenOver final : public vm::StepObserver {
+ public:
+  explicit StopWhenOver(const CappedSink& sink) : sink_(sink) {}
+  bool afterStep(const vm::Interpreter&, std::uint32_t) override { return sink_.over(); }
+
+ private:
+  const CappedSink& sink_;
+};
+
+// --update: the run is made again (runs are deterministic, so its trace is
+// the one compared) and its trace streamed into the golden file, which is
+// written whole or not at all.
+void rewriteGoldenTrace(const GoldenTrace& t, const runtime::RunSpec& spec, const std::string& settingsFile,
+                        const RunnerOptions& options, TestResult& r) {
+  bool tooLarge = false;
+  std::string error;
+  const bool written = base::writeFileAtomically(
+      t.path,
+      [&](std::ostream& file) {
+        CappedSink sink(*file.rdbuf(), launch::kMaxInputBytes);
+        std::ostream out(&sink);
+        runtime::Run again(spec);
+        const std::unique_ptr<vm::StepObserver> writer = options.traceMaker(out, again);
+        StopWhenOver stop(sink);
+        again.observe(*writer);
+        again.observe(stop);
+        again.runToEnd();
+        tooLarge = sink.over();
+        return !tooLarge;
+      },
+      error);
+  if (written) return r.updated.push_back(t.path);
+  r.problems.push_back({settingsFile, t.expectation->pos, diag::Severity::Error,
+                        tooLarge ? fmt::format("cannot write {}: the trace is over {}, the most a golden trace may "
+                                               "hold",
+                                               t.path, base::sizeText(launch::kMaxInputBytes))
+                                 : fmt::format("cannot write {}: {}", t.path, error)});
+}
+
+// `expect: trace FILE`: the run's text trace must be the file's bytes;
+// --update writes the file instead when it differs or is missing.
+void judgeTrace(const GoldenTrace& t, const runtime::RunSpec* again, const std::string& settingsFile,
+                const RunnerOptions& options, TestResult& r) {
+  if (t.read.bytes && t.comparer->same()) return;
+  if (options.update && again) return rewriteGoldenTrace(t, *again, settingsFile, options, r);
+  const Expectation& e = *t.expectation;
+  if (!t.read.bytes) {
+    r.problems.push_back({settingsFile, e.pos, diag::Severity::Error,
+                          fmt::format("cannot read the golden trace {}: {}", t.path, t.read.error), {},
+                          "robotsim test --update writes it from the run"});
+    return;
+  }
+  r.problems.push_back({settingsFile, e.pos, diag::Severity::Error,
+                        fmt::format("the trace differs from {} at its line {}: expected '{}', got '{}'", t.path,
+                                    t.comparer->line(), t.comparer->expected(), t.comparer->got()),
+                        {}, "if the new run is right, robotsim test --update rewrites the golden trace"});
+}
+
+// How to get past a stop by a limit: a loop that never lets the clock move
+// is the program's to fix; the grading limits (not those its scenario
+// set) the scenario file's to raise.
+void hintLimit(const vm::RunOutcome& outcome, const TestSettings& settings, bool grading, TestResult& r) {
+  std::string hint;
+  if (outcome.reason == vm::StopReason::InstantLimit)
+    hint = "give the loop a DELAY, a move or a WAITFOR, or a way out";
+  else if (grading && outcome.reason == vm::StopReason::StepLimit && !settings.maxSteps)
+    hint = fmt::format("grading stops a run after {} instructions; a scenario that needs more says 'test: max-steps N'",
+                       kGradingMaxSteps);
+  else if (grading && outcome.reason == vm::StopReason::TimeLimit && settings.maxTime.empty())
+    hint = fmt::format("grading stops a run at {} simulated seconds; a scenario that needs longer says 'test: "
+                       "max-time SECONDS'",
+                       kGradingMaxSeconds);
+  if (hint.empty()) return;
+  for (diag::Diagnostic& d : r.problems)
+    if (d.hint.empty() && d.message.find(statusWord(outcome.reason)) != std::string::npos) d.hint = hint;
+}
 
 // The program at `program` checked against `parsed`, whose file names are
 // relative to the folder of `settingsFile`. `r` has its file, name and the
-// sources read so far.
+// sources read so far. `grading`: a submission against a scenario file
+// (--spec): the grading limits apply where the scenario sets none.
 void check(const std::string& program, const ParsedExpectations& parsed, const std::string& settingsFile,
-           const RunnerOptions& options, TestResult& r) {
+           const RunnerOptions& options, bool grading, TestResult& r) {
   launch::ProgramRequest request{program, besideProgram(settingsFile, parsed.settings.cell, true), options.libDirs};
   const launch::LoadedProgram loaded = launch::loadProgram(request);
   if (loaded.source && !r.sourceOf(loaded.source->name()))
@@ -113,7 +265,7 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   if (r.status == TestStatus::Error) return;
 
   if (parsed.expectsCompileErrors() || !loaded.ok()) {
-    matchCompileErrors(parsed.expectations, loaded.diagnostics, program, r);
+    matchCompileErrors(parsed.expectations, loaded.diagnostics, program, grading, r);
     if (parsed.expectsCompileErrors() && loaded.ok())
       r.problems.insert(r.problems.begin(), {program, {}, diag::Severity::Error,
                                              "the program compiled, but its expect-error lines ask for errors"});
@@ -121,11 +273,15 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
     return;
   }
 
+  std::vector<GoldenTrace> traces;
+  if (!openGoldenTraces(parsed, settingsFile, options, traces, r)) return;
   launch::RunRequest run;
   run.stimuliFile = besideProgram(settingsFile, parsed.settings.stimuliFile, false);
   run.inputs = parsed.settings.inputs;
   run.maxSteps = parsed.settings.maxSteps;
   run.maxTime = parsed.settings.maxTime;
+  if (grading && !run.maxSteps) run.maxSteps = kGradingMaxSteps;
+  if (grading && run.maxTime.empty()) run.maxTime = std::to_string(kGradingMaxSeconds);
   run.collisions = options.collisions;
   // A test that expects a collision lets the run go on past it.
   if (parsed.expectsCollision() && run.collisions.empty()) run.collisions = "warn";
@@ -136,82 +292,34 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
     r.problems = std::move(runProblems);
     return;
   }
-  spec->log = true;
+  if (grading) spec->limits.maxStepsPerInstant = kGradingMaxStepsAtOneInstant;
+  // --update may make the run again, for its trace.
+  std::optional<runtime::RunSpec> again;
+  if (options.update && !traces.empty()) again = *spec;
   std::optional<CoverageCounter> counter;
   if (options.coverage) counter.emplace(spec->image);
   runtime::Run running(std::move(*spec));
+  std::optional<RunWatch> watch;
+  if (RunWatch::needed(parsed.expectations)) watch.emplace(running, parsed.expectations);
+  if (watch) running.observe(*watch);
   if (counter) running.observe(*counter);
-  std::ostringstream trace;
-  std::unique_ptr<vm::StepObserver> tracer;
-  if (parsed.wantsTrace() && options.traceMaker) {
-    tracer = options.traceMaker(trace, running);
-    running.observe(*tracer);
+  for (GoldenTrace& t : traces) {
+    t.writer = options.traceMaker(*t.stream, running);
+    running.observe(*t.writer);
   }
   const vm::RunOutcome outcome = running.runToEnd();
+  if (watch) watch->finish(outcome);
   if (counter) r.coverage = counter->coverage();
   r.simulated = running.clock();
   r.steps = outcome.steps;
   r.expectations = parsed.expectations.size() + (parsed.statesStatus() ? 0 : 1);
   // An expectation of a scenario file points into it.
-  r.problems = evaluate(running, parsed.expectations, settingsFile, !parsed.statesStatus());
+  r.problems = evaluate(running, parsed.expectations, settingsFile, !parsed.statesStatus(), watch ? &*watch : nullptr);
   if (std::optional<diag::Diagnostic> w = runtime::gripperWarning(running, program)) r.warnings.push_back(std::move(*w));
   if (!parsed.statesStatus() && !r.problems.empty() && !outcome.ok()) r.problems.front().file = program;
-  for (const Expectation& e : parsed.expectations)
-    if (e.kind == ExpectKind::Trace) compareTrace(e, besideProgram(settingsFile, e.name, false), trace.str(),
-                                                  settingsFile, options, r);
+  hintLimit(outcome, parsed.settings, grading, r);
+  for (const GoldenTrace& t : traces) judgeTrace(t, again ? &*again : nullptr, settingsFile, options, r);
   r.status = r.problems.empty() ? TestStatus::Passed : TestStatus::Failed;
-}
-
-}  // namespace
-
-// The first line where two texts differ (1-based), 0 when equal.
-std::size_t firstDifference(std::string_view a, std::string_view b, std::string& lineA, std::string& lineB) {
-  std::size_t line = 1;
-  while (true) {
-    const std::size_t ea = a.find('\n'), eb = b.find('\n');
-    const std::string_view la = a.substr(0, ea), lb = b.substr(0, eb);
-    if (la != lb || (ea == std::string_view::npos) != (eb == std::string_view::npos)) {
-      lineA = la, lineB = lb;
-      return line;
-    }
-    if (ea == std::string_view::npos) return 0;
-    a.remove_prefix(ea + 1), b.remove_prefix(eb + 1), ++line;
-  }
-}
-
-namespace {
-
-// `expect: trace FILE`: the run's text trace must be the file's bytes;
-// --update writes the file instead when it differs or is missing.
-void compareTrace(const Expectation& e, const std::string& golden, const std::string& trace,
-                  const std::string& settingsFile, const RunnerOptions& options, TestResult& r) {
-  if (!options.traceMaker) {
-    r.problems.push_back({settingsFile, e.pos, diag::Severity::Error, "no trace writer: cannot check the trace"});
-    return;
-  }
-  const base::FileRead read = base::readFile(golden, launch::kMaxInputBytes);
-  if (read.bytes && *read.bytes == trace) return;
-  if (options.update) {
-    std::string error;
-    if (base::writeFileAtomically(golden, trace, error)) {
-      r.updated.push_back(golden);
-      return;
-    }
-    r.problems.push_back({settingsFile, e.pos, diag::Severity::Error, fmt::format("cannot write {}: {}", golden, error)});
-    return;
-  }
-  if (!read.bytes) {
-    r.problems.push_back({settingsFile, e.pos, diag::Severity::Error,
-                          fmt::format("cannot read the golden trace {}: {}", golden, read.error), {},
-                          "robotsim test --update writes it from the run"});
-    return;
-  }
-  std::string want, got;
-  const std::size_t line = firstDifference(*read.bytes, trace, want, got);
-  r.problems.push_back({settingsFile, e.pos, diag::Severity::Error,
-                        fmt::format("the trace differs from {} at its line {}: expected '{}', got '{}'", golden, line,
-                                    want, got),
-                        {}, "if the new run is right, robotsim test --update rewrites the golden trace"});
 }
 
 std::shared_ptr<const diag::SourceFile> readSource(const std::string& path, TestResult& r) {
@@ -255,7 +363,7 @@ std::vector<TestResult> runScenarios(const std::string& specPath, const std::str
   for (const Scenario& s : parsed.scenarios) {
     TestResult r = base;
     r.name = s.name;
-    check(program, s.parsed, specPath, options, r);
+    check(program, s.parsed, specPath, options, !programOverride.empty(), r);
     results.push_back(std::move(r));
   }
   return results;
@@ -277,7 +385,7 @@ std::vector<TestResult> runTestPath(const std::string& path, const RunnerOptions
       return {r};
     }
   }
-  check(path, parsed, path, options, r);
+  check(path, parsed, path, options, false, r);
   return {r};
 }
 

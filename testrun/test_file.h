@@ -60,6 +60,17 @@ struct RunnerOptions {
   TraceMaker traceMaker = {};        ///< needed for `expect: trace`
 };
 
+/// What grading (`--spec`) allows a submission's run when its scenario sets
+/// no limit: far more than a correct program of an exercise needs, little
+/// enough that one that never ends costs a fraction of a second
+/// (docs/testing.md, "Grading").
+inline constexpr std::uint64_t kGradingMaxSteps = 1'000'000;
+inline constexpr std::uint32_t kGradingMaxSeconds = 120;
+/// ... and instructions in a row while the clock stands still: a loop
+/// that polls without a DELAY is named for what it is, long before the
+/// step limit.
+inline constexpr std::uint64_t kGradingMaxStepsAtOneInstant = 100'000;
+
 /// The tests in `path`: a program's own expectations (one result), or
 /// every scenario of a scenario file (`.rstest`, one result each).
 std::vector<TestResult> runTestPath(const std::string& path, const RunnerOptions& options);

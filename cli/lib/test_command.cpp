@@ -10,10 +10,12 @@
 #include <thread>
 
 #include "base/file_io.h"
+#include "base/text.h"
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/number_args.h"
 #include "cli/lib/options.h"
 #include "cli/lib/trace.h"
+#include "diag/diagnostic.h"
 #include "testrun/suite.h"
 #include "vm/interpreter.h"
 
@@ -44,6 +46,14 @@ nlohmann::json diagnosticJson(const diag::Diagnostic& d) {
   return j;
 }
 
+// The command's own errors go through diag::render, as every problem of
+// the report does: what they quote (an option's value, a path) may hold a
+// terminal escape, and render escapes it.
+void printTestCommandError(std::ostream& err, const std::string& where, const std::string& message,
+                           const std::string& hint = {}) {
+  err << diag::render({where, {}, diag::Severity::Error, message, {}, hint}, nullptr);
+}
+
 // One row per program: its scenarios passed, their simulated time, and its
 // first problem.
 struct GradeRow {
@@ -57,7 +67,7 @@ std::vector<GradeRow> gradeRows(const std::vector<testrun::TestResult>& results)
   using Row = GradeRow;
   std::vector<Row> rows;
   for (const testrun::TestResult& r : results) {
-    if (rows.empty() || rows.back().file != r.file) rows.push_back({r.file});
+    if (rows.empty() || rows.back().file != r.file) rows.push_back({r.file});  // as read; printers escape it
     Row& row = rows.back();
     ++row.total;
     row.passed += r.status == testrun::TestStatus::Passed;
@@ -72,9 +82,11 @@ std::vector<GradeRow> gradeRows(const std::vector<testrun::TestResult>& results)
   return rows;
 }
 
-// The rows as aligned text or as CSV (RFC 4180 quoting).
+// The rows as aligned text or as CSV (RFC 4180 quoting). Names come from
+// files (a file name may hold an ESC): both print them through safeText.
 std::string gradeTable(const std::vector<testrun::TestResult>& results, bool csv) {
-  const std::vector<GradeRow> rows = gradeRows(results);
+  std::vector<GradeRow> rows = gradeRows(results);
+  for (GradeRow& r : rows) r.file = base::safeText(r.file), r.firstProblem = base::safeText(r.firstProblem);
   using Row = GradeRow;
   const auto quote = [](const std::string& s) {
     std::string q = "\"";
@@ -118,7 +130,11 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
   cmd->add_option("--shard", o.shard, "Only part K of N (K/N), for spreading a suite over CI jobs");
   cmd->add_flag("--coverage", o.coverage, "Print each program with how often each line ran and which way jumps went");
   cmd->add_option("--lcov", o.lcov, "Write the coverage as an LCOV tracefile (genhtml makes pages of it)");
-  cmd->add_option("--spec", o.spec, "Grade: run this scenario file (.rstest) against every program under PATH");
+  cmd->add_option("--spec", o.spec,
+                  fmt::format("Grade: run this scenario file (.rstest) against every program under PATH, each "
+                              "confined to its folder; a run stops at {} instructions or {} simulated seconds unless "
+                              "the scenario says otherwise",
+                              testrun::kGradingMaxSteps, testrun::kGradingMaxSeconds));
   cmd->add_flag("--update", o.update, "Write the golden traces of 'expect: trace FILE' from the runs (not when CI is set)");
   addCollisionsOption(cmd, o.collisions);
   return cmd;
@@ -127,16 +143,19 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
 int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   std::uint32_t shard = 1, shards = 1;
   if (!o.shard.empty() && !parseShard(o.shard, shard, shards)) {
-    err << fmt::format("robotsim: error: --shard takes K/N with 1 <= K <= N, e.g. 2/4, not '{}'\n", o.shard);
+    printTestCommandError(err, "robotsim",
+                          fmt::format("--shard takes K/N with 1 <= K <= N, e.g. 2/4, not '{}'", diag::excerpt(o.shard)),
+                          "K is this job's part and N how many parts: --shard 2/4 is the second of four");
     return kExitBadInput;
   }
   if (o.update && std::getenv("CI") != nullptr) {
-    err << "robotsim: error: --update refuses to write golden traces when CI is set: a CI run checks them\n";
+    printTestCommandError(err, "robotsim",
+                          "--update refuses to write golden traces when CI is set: a CI run checks them");
     return kExitBadInput;
   }
   const auto started = std::chrono::steady_clock::now();
   const std::vector<std::string> paths = o.paths.empty() ? std::vector<std::string>{"."} : o.paths;
-  const testrun::Selection selection = testrun::selectTests(paths, o.filter, shard, shards, o.spec.empty());
+  const testrun::Selection selection = testrun::selectTests(paths, o.filter, shard, shards, !o.spec.empty());
   for (const diag::Diagnostic& d : selection.errors) err << diag::render(d, nullptr);
   if (!selection.errors.empty()) return kExitBadInput;
 
@@ -152,12 +171,13 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   runner.traceMaker = [](std::ostream& to, const runtime::Run& run) -> std::unique_ptr<vm::StepObserver> {
     return std::make_unique<TraceWriter>(to, TraceFormat::Text, run);
   };
-  testrun::runTests(selection.files, runner, jobs, o.spec, [&](const testrun::TestResult& r) {
+  testrun::runTests(selection, runner, jobs, o.spec, [&](const testrun::TestResult& r) {
     passed += r.status == testrun::TestStatus::Passed;
     failed += r.status == testrun::TestStatus::Failed;
     errors += r.status == testrun::TestStatus::Error;
     if (text) {
-      out << fmt::format("{}{} {}", r.file, r.name.empty() ? "" : " [" + r.name + "]", testrun::statusName(r.status));
+      out << fmt::format("{}{} {}", base::safeText(r.file), r.name.empty() ? "" : " [" + base::safeText(r.name) + "]",
+                         testrun::statusName(r.status));
       if (r.status == testrun::TestStatus::Passed)
         out << fmt::format(" ({} expectation{}, {} s simulated{})", r.expectations, r.expectations == 1 ? "" : "s",
                            vm::formatSeconds(r.simulated),
@@ -167,7 +187,7 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
       out << '\n';
       for (const diag::Diagnostic& d : r.problems) out << diag::render(d, r.sourceOf(d.file));
       for (const diag::Diagnostic& d : r.warnings) out << diag::render(d, r.sourceOf(d.file));
-      for (const std::string& golden : r.updated) out << fmt::format("  updated {}\n", golden);
+      for (const std::string& golden : r.updated) out << fmt::format("  updated {}\n", base::safeText(golden));
       out.flush();
     }
     results.push_back(r);
@@ -218,14 +238,14 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
       if (r.coverage) tracefile += testrun::lcovRecord(r.file, *r.coverage);
     std::string error;
     if (!base::writeFileAtomically(o.lcov, tracefile, error)) {
-      err << fmt::format("{}: error: cannot write: {}\n", o.lcov, error);
+      printTestCommandError(err, o.lcov, "cannot write: " + error);
       return kExitBadInput;
     }
   }
   if (!o.junit.empty()) {
     std::string error;
     if (!base::writeFileAtomically(o.junit, testrun::junitXml(results), error)) {
-      err << fmt::format("{}: error: cannot write: {}\n", o.junit, error);
+      printTestCommandError(err, o.junit, "cannot write: " + error);
       return kExitBadInput;
     }
   }

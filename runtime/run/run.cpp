@@ -88,6 +88,19 @@ void Run::build(vm::Machine& motion) {
 
 void Run::observe(vm::StepObserver& observer) { observers_->added.push_back(&observer); }
 
+// The machine holds one listener: the first one added takes the log's
+// place there and hands each change to the log, then to every listener.
+bool Run::onInputChange(std::function<void(vm::Micros, std::uint8_t)> listener) {
+  if (!sim_) return false;
+  inputListeners_.push_back(std::move(listener));
+  if (inputListeners_.size() == 1)
+    sim_->onInputChange([this](vm::Micros at, std::uint8_t mask) {
+      if (logger_) logger_->inputChanged(at, mask);
+      for (const auto& l : inputListeners_) l(at, mask);
+    });
+  return true;
+}
+
 std::optional<vm::RunOutcome> Run::outcome() const {
   if (!interpreter_->finished()) return std::nullopt;
   return interpreter_->state().outcome;

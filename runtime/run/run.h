@@ -162,6 +162,12 @@ class Run {
   /// Input `input` turns `on` now (SimMachine::setInputNow; the log hears
   /// of it). False on a real machine or for an input outside 1..8.
   bool setInput(int input, bool on) { return sim_ && sim_->setInputNow(input, on); }
+  /// Calls `listener` with (time, inputs after) whenever the simulated
+  /// machine's inputs change, at the stimulus's time, which may fall inside
+  /// a move or a DELAY (after the log, when kept, has heard of it): what a
+  /// checker that keeps no log needs. False, and never called, on another
+  /// machine.
+  bool onInputChange(std::function<void(vm::Micros, std::uint8_t)> listener);
 
   bool canSnapshot() const { return sim_ != nullptr; }
   /// The whole state (the simulated machine only: check canSnapshot()).
@@ -206,6 +212,7 @@ class Run {
   std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose_;
   std::optional<CollisionWatch> watch_;
   void noteCollisions(std::uint32_t instruction);
+  std::vector<std::function<void(vm::Micros, std::uint8_t)>> inputListeners_;
   std::atomic<bool> pauseRequested_ = false;
   PauseCause cause_ = PauseCause::None;
 };

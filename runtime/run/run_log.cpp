@@ -37,15 +37,17 @@ RunLogger::RunLogger(SimMachine& machine, const World* world) : machine_(machine
   // Inputs change at stimulus times, which may fall inside a DELAY or a
   // move: the machine says when, as it applies them. Several changes at one
   // time leave one level, the last.
-  machine.onInputChange([this](vm::Micros at, std::uint8_t mask) {
-    std::vector<InputLevel>& levels = log_.inputs;
-    if (levels.back().at == at) {
-      levels.back().inputs = mask;
-      if (levels.size() > 1 && levels[levels.size() - 2].inputs == mask) levels.pop_back();
-    } else {
-      levels.push_back({at, mask});
-    }
-  });
+  machine.onInputChange([this](vm::Micros at, std::uint8_t mask) { inputChanged(at, mask); });
+}
+
+void RunLogger::inputChanged(vm::Micros at, std::uint8_t mask) {
+  std::vector<InputLevel>& levels = log_.inputs;
+  if (levels.back().at == at) {
+    levels.back().inputs = mask;
+    if (levels.size() > 1 && levels[levels.size() - 2].inputs == mask) levels.pop_back();
+  } else {
+    levels.push_back({at, mask});
+  }
 }
 
 void RunLogger::takeStateOf(const SimMachine& machine) {

@@ -99,6 +99,9 @@ class RunLogger {
   const RunLog& log() const { return log_; }
   /// Back to an earlier moment of the same run (a snapshot being restored).
   void restore(const RunLog::Mark& mark, const SimMachine& machine);
+  /// The machine's inputs became `mask` at `at` (the logger listens to the
+  /// machine itself; a Run that also hands changes on calls this).
+  void inputChanged(vm::Micros at, std::uint8_t mask);
 
  private:
   void record(std::uint32_t index);
