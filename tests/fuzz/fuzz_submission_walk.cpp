@@ -1,7 +1,7 @@
 // libFuzzer target: `robotsim test --spec`'s walk of a submissions folder
 // (testrun/submissions.h) over any tree the bytes describe. Each input
 // builds, in a fresh folder, directories, files, FIFOs and symbolic links
-// (to files and folders inside, to a folder beside it, to /etc/passwd, to
+// (to files and folders inside, to a folder beside it, absolute, to a device, to
 // nowhere, to themselves, through `..`), then walks it, named one of
 // several ways. What the walk gives must hold:
 // - every file it grades is a regular file inside the folder once every
@@ -10,7 +10,7 @@
 //   is refused by name, and a refused path is never graded;
 // - no file is opened (a FIFO would block), nothing crashes.
 // The tree is built with *at() calls that never follow a link (a file
-// written through the link to /etc/passwd would overwrite it).
+// written through a link would land outside the fresh folder).
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -40,7 +40,7 @@ const char* const kNames[] = {"a.rsp", "b.rsp", "d", "d/c.rsp", "d/e", "d/e/f.rs
                               ".hidden.rsp"};
 // Where a link may point (relative to the link's folder, or absolute;
 // "@" stands for the folder graded, "%" for the folder beside it).
-const char* const kTargets[] = {"a.rsp", "../outside/secret.rsp", "/etc/passwd", "../outside", "d", ".", "..", "../..",
+const char* const kTargets[] = {"a.rsp", "../outside/secret.rsp", "%/passwd", "../outside", "d", ".", "..", "../..",
                                 "nowhere.rsp", "link.rsp", "d/../../outside/secret.rsp", "@/a.rsp", "%/secret.rsp",
                                 "@", "%", "e/f.rsp", "../a.rsp", "dl/c.rsp", "/dev/zero", "/"};
 
@@ -58,7 +58,7 @@ std::string expand(std::string target, const fs::path& root, const fs::path& out
 // The folder `parts` (all but the last) under `rootFd`, made where
 // missing, opened one level at a time without following a link: -1 when one
 // of them is not a real folder. Nothing is ever made, or written, through
-// a link: the links this target makes point at /etc/passwd.
+// a link: the links this target makes point out of the folder.
 int openParent(int rootFd, const std::vector<std::string>& parts) {
   int fd = ::dup(rootFd);
   for (std::size_t i = 0; fd >= 0 && i + 1 < parts.size(); ++i) {
@@ -118,6 +118,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fs::create_directories(root);
   fs::create_directories(outside);
   std::ofstream(outside / "secret.rsp") << "; a file outside the folder graded\nEND\n";
+  std::ofstream(outside / "passwd") << "root:x:0:0:a stand-in for a system file, never one of the machine's\n";
   build(size ? data + 1 : data, size ? size - 1 : 0, root, outside);
 
   // The folder named absolute, relative, with a trailing slash, or as "./".
