@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -135,7 +136,7 @@ nlohmann::json benchLsp(const Options& options) {
   }
 
   std::ostringstream log;
-  std::size_t published = 0;
+  std::atomic<std::size_t> published = 0;  // the run worker's thread publishes too
   lsp::Server server(
       [&](const Json& m) {
         if (m.value("method", "") == "textDocument/publishDiagnostics") ++published;

@@ -58,7 +58,7 @@ IncomingMessage readMessage(const Frame& frame) {
   m.kind = hasId ? IncomingMessage::Kind::Request : IncomingMessage::Kind::Notification;
   m.id = id;
   m.method = message["method"].get<std::string>();
-  m.params = message.value("params", Json(nullptr));
+  if (const auto params = message.find("params"); params != message.end()) m.params = std::move(*params);  // no copy of a large text
   m.invalidUtf8 = invalidUtf8;
   return m;
 }

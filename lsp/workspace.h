@@ -12,14 +12,16 @@
 #include "lsp/cell_context.h"
 #include "lsp/document.h"
 #include "lsp/program_analysis.h"
+#include "runtime/collision_watch.h"
 
 namespace rs::lsp {
 
-/// `robotsim.cell` and `robotsim.lib` (initializationOptions or
-/// workspace/didChangeConfiguration).
+/// `robotsim.cell`, `robotsim.lib` and `robotsim.collisions`
+/// (initializationOptions or workspace/didChangeConfiguration).
 struct Settings {
   std::string cell;
   std::vector<std::string> libDirs;
+  runtime::CollisionMode collisions = runtime::CollisionMode::Error;  ///< as --collisions
 };
 
 class Workspace {
@@ -28,6 +30,11 @@ class Workspace {
   void close(const std::string& uri);
   Document* document(const std::string& uri);
   const std::map<std::string, Document>& documents() const { return docs_; }
+  /// The document is about to change: the run of its last analysis is
+  /// abandoned (a newer version is coming).
+  void changing(const std::string& uri);
+  /// Every run being made or waiting is abandoned (shutdown).
+  void abandonRuns();
 
   /// The up-to-date analysis of an open program.
   std::shared_ptr<const ProgramAnalysis> program(const Document& doc);

@@ -14,6 +14,7 @@
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/options.h"
 #include "cli/lib/report.h"
+#include "launch/run_diagnostics.h"
 #include "runtime/render/animation.h"
 #include "runtime/render/collision_marks.h"
 #include "runtime/run/empty_close.h"
@@ -233,7 +234,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
         launch::printDiagnostics(err, {*w}, loaded);
     if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
       const vm::Image& image = run->image();
-      launch::printDiagnostics(err, {runtimeDiagnostic(image, m.outcome, image.sourceName)}, loaded);
+      launch::printDiagnostics(err, {launch::stopDiagnostic(image, m.outcome, image.sourceName)}, loaded);
       // A collision stopped the run: draw it as it happened.
       const auto hits = run->collisions();
       stoppedByCollision = run->finished() && !hits.empty() && hits.back().instruction == m.outcome.index &&
@@ -322,7 +323,7 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   }
   if (!outcome.ok()) {
     const vm::Image& image = run->image();
-    const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
+    const diag::Diagnostic d = launch::stopDiagnostic(image, outcome, image.sourceName);
     launch::printDiagnostics(err, {d}, loaded);
     input.outcome = d.pos.line ? fmt::format("line {}: {}", d.pos.line, d.message) : d.message;
   }

@@ -7,7 +7,7 @@
 #include "cli/lib/profile_report.h"
 #include "cli/lib/report.h"
 #include "cli/lib/trace.h"
-#include "runtime/run/empty_close.h"
+#include "launch/run_diagnostics.h"
 #include "runtime/run/run.h"
 
 namespace rs::cli {
@@ -85,16 +85,11 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   report.run = run.get();
   if (controller) report.fault = controller->faultState();
   const vm::Image& image = run->image();
-  if (!outcome.ok()) {
-    const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
-    launch::printDiagnostics(err, {d}, program);
-    report.diagnostics.push_back(d);
-  }
+  // The stop and the warnings of the run: the same words the editor shows (launch/run_diagnostics.h).
+  const std::vector<diag::Diagnostic> said = launch::runDiagnostics(*run, image.sourceName);
+  for (const diag::Diagnostic& d : said) launch::printDiagnostics(err, {d}, program);
+  report.diagnostics.insert(report.diagnostics.end(), said.begin(), said.end());
   if (o.profile && run->log()) report.profile = runtime::profileOf(image, *run->log());
-  if (const std::optional<diag::Diagnostic> w = runtime::gripperWarning(*run, image.sourceName)) {
-    launch::printDiagnostics(err, {*w}, program);
-    report.diagnostics.push_back(*w);
-  }
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);
   else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", base::safeText(image.sourceName),

@@ -5,6 +5,7 @@
 // reach the JSON-RPC layer, the dispatcher and every feature's handler with
 // any parameters. The server must answer or ignore each message, never
 // crash, and never stop serving unless told to exit.
+#include <atomic>
 #include <cstdint>
 #include <sstream>
 #include <string_view>
@@ -28,7 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   }
   std::ostringstream log;
-  std::size_t sent = 0;
+  std::atomic<std::size_t> sent = 0;  // the run worker's thread sends too
   rs::lsp::Server server([&](const rs::lsp::Json&) { return ++sent < 100'000; }, log);
   // One frame a batch, as a slow client sends them: each batch is handled
   // and its diagnostics published before the next.

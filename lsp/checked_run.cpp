@@ -1,0 +1,143 @@
+#include "lsp/checked_run.h"
+
+#include <fmt/format.h>
+
+#include "launch/program.h"
+#include "launch/run_diagnostics.h"
+#include "launch/run_request.h"
+#include "lsp/program_analysis.h"
+#include "runtime/run/run.h"
+
+namespace rs::lsp {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Notes when each instruction first starts and ends, and how often it runs;
+// pauses the run when it is abandoned or out of time (the wall clock read
+// every kClockEvery steps: a step costs nanoseconds, a clock read tens).
+class Timer final : public vm::StepObserver {
+ public:
+  static constexpr std::uint64_t kClockEvery = 1024;
+
+  Timer(std::vector<InstructionTimes>& times, const RunControl& control, Clock::time_point deadline)
+      : times_(times), control_(control), deadline_(deadline) {}
+  bool afterStep(const vm::Interpreter& vm, std::uint32_t index) override {
+    const vm::Micros now = vm.machine().now();
+    if (index < times_.size()) {
+      InstructionTimes& t = times_[index];
+      if (t.runs++ == 0) t.start = before_, t.end = now;
+    }
+    before_ = now;
+    if (control_.abandoned()) return true;
+    if (++steps_ % kClockEvery == 0 && Clock::now() >= deadline_) outOfTime_ = true;
+    return outOfTime_;
+  }
+  bool outOfTime() const { return outOfTime_; }
+
+ private:
+  std::vector<InstructionTimes>& times_;
+  const RunControl& control_;
+  Clock::time_point deadline_;
+  vm::Micros before_ = 0;
+  std::uint64_t steps_ = 0;
+  bool outOfTime_ = false;
+};
+
+std::string summaryOf(const runtime::Run& run, const vm::RunOutcome& outcome) {
+  const std::string at = formatSeconds(run.clock());
+  const std::uint32_t line = run.image().lines[outcome.index];
+  switch (outcome.reason) {
+    case vm::StopReason::End: return fmt::format("finished at {}", at);
+    case vm::StopReason::RuntimeError:
+      return fmt::format("stopped by an error at {} (line {}: {})", at, line, outcome.message);
+    case vm::StopReason::Deadlock:
+      return fmt::format("waits forever for an input at {} (line {}; no stimuli in the editor's run)", at, line);
+    case vm::StopReason::StepLimit:
+    case vm::StopReason::TimeLimit:
+    case vm::StopReason::InstantLimit:
+      return fmt::format("stopped by the {} at {} (line {})", launch::stopReasonName(outcome.reason), at, line);
+    case vm::StopReason::Paused: break;
+  }
+  return {};
+}
+
+// The run stopped by the editor's budget: a note where it stopped, so
+// that no line is left looking checked when it was not.
+diag::Diagnostic budgetNote(const runtime::Run& run, const std::string& file, std::chrono::milliseconds budget) {
+  const auto last = static_cast<std::uint32_t>(run.image().code.size() - 1);
+  const std::uint32_t index = std::min(run.interpreter().pc(), last);
+  return {file,
+          {run.image().lines[index], run.image().columns[index]},
+          diag::Severity::Note,
+          fmt::format("the editor's run stopped here after {} s of checking ({} instructions, {} simulated), before "
+                      "the program ended: what comes after is not checked in the editor",
+                      static_cast<double>(budget.count()) / 1000.0, run.interpreter().steps(), formatSeconds(run.clock())),
+          "run-not-finished",
+          "robotsim check runs it to its end"};
+}
+
+}  // namespace
+
+std::optional<std::uint32_t> CheckedRun::stoppedAt() const {
+  if (!outcome || outcome->ok()) return std::nullopt;
+  return outcome->index;
+}
+
+void RunControl::abandon() {
+  abandoned_.store(true, std::memory_order_relaxed);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (run_) run_->requestPause();
+}
+
+void RunControl::attach(runtime::Run* run) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  run_ = run;
+}
+
+CheckedRun checkRun(const ProgramAnalysis& analysis, runtime::CollisionMode collisions, RunControl& control,
+                    std::chrono::milliseconds budget) {
+  CheckedRun out;
+  const Clock::time_point deadline = Clock::now() + budget;
+  if (!analysis.image() || control.abandoned()) {
+    out.end = CheckedRun::End::Abandoned;
+    return out;
+  }
+  // The spec as `check` makes it, from the same function.
+  launch::LoadedProgram program;
+  program.image = analysis.image();
+  program.cell = analysis.cell().cell;
+  launch::RunRequest request;
+  request.collisions = runtime::collisionModeName(collisions);
+  std::vector<diag::Diagnostic> problems;
+  const std::optional<runtime::RunSpec> spec = launch::prepareRun(program, request, problems);
+  if (!spec) {
+    out.end = CheckedRun::End::Abandoned;
+    return out;
+  }
+  out.times.resize(spec->image->code.size());
+  Timer timer(out.times, control, deadline);
+  runtime::Run run(*spec);
+  run.observe(timer);
+  control.attach(&run);
+  vm::RunOutcome outcome = run.runToEnd();
+  control.attach(nullptr);
+  out.clock = run.clock();
+  out.steps = run.interpreter().steps();
+  if (run.finished()) {
+    out.outcome = outcome;
+    out.diagnostics = launch::runDiagnostics(run, analysis.source().name());
+    out.summary = summaryOf(run, outcome);
+  } else if (control.abandoned() || !timer.outOfTime()) {
+    out.end = CheckedRun::End::Abandoned;
+  } else {
+    out.end = CheckedRun::End::OutOfBudget;
+    out.diagnostics.push_back(budgetNote(run, analysis.source().name(), budget));
+    out.summary = fmt::format("still running at {} after {} instructions, when the editor's run stopped",
+                              formatSeconds(out.clock), out.steps);
+  }
+  return out;
+}
+
+}  // namespace rs::lsp

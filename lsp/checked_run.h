@@ -1,0 +1,82 @@
+// The run the editor makes of one version of a program: the run `robotsim
+// check` makes (launch::prepareRun with no options: no stimuli, at most
+// 100,000,000 instructions and 3600 simulated seconds, a collision stops
+// it), on the program's cell, off the request thread (run_worker.h). What
+// it reports are check's own diagnostics (launch/run_diagnostics.h); when
+// each instruction ran feeds hovers and inlay hints.
+//
+// The editor bounds it further: at most kRunBudget of the worker's time (a
+// run that needs more ends with a note saying so, never with a guess), and
+// a newer edit abandons it (RunControl::abandon: the run pauses after its
+// current step, through the run's own pause mechanism).
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diag/diagnostic.h"
+#include "runtime/collision_watch.h"
+#include "vm/interpreter.h"
+
+namespace rs::runtime {
+class Run;
+}
+
+namespace rs::lsp {
+
+class ProgramAnalysis;
+
+/// The editor's own bound on a run, beyond check's limits.
+inline constexpr std::chrono::milliseconds kRunBudget{5000};
+
+struct InstructionTimes {
+  vm::Micros start = 0;  ///< of its first execution
+  vm::Micros end = 0;
+  std::uint64_t runs = 0;  ///< 0: never ran (to its end)
+};
+
+struct CheckedRun {
+  enum class End : std::uint8_t { Finished, OutOfBudget, Abandoned };
+  End end = End::Finished;
+  std::vector<InstructionTimes> times;  ///< per instruction (0-based)
+  std::optional<vm::RunOutcome> outcome;  ///< when finished
+  vm::Micros clock = 0;                   ///< where the run stopped
+  std::uint64_t steps = 0;
+  /// Finished: what check reports (its stop, its warnings); out of
+  /// budget: a note at the instruction the run stopped before.
+  std::vector<diag::Diagnostic> diagnostics;
+  /// How it ended, for hovers: "finished at 3.5 s", "stopped by a
+  /// collision at 1.2 s (line 7)".
+  std::string summary;
+  /// The instruction the run stopped at when it did not end well (0-based).
+  std::optional<std::uint32_t> stoppedAt() const;
+};
+
+/// Lets another thread abandon a run in progress.
+class RunControl {
+ public:
+  /// From any thread: the run pauses after its current step and its result
+  /// is not published.
+  void abandon();
+  bool abandoned() const { return abandoned_.load(std::memory_order_relaxed); }
+  /// The run being made (the worker's), so that abandon() can pause it.
+  void attach(runtime::Run* run);
+
+ private:
+  std::atomic<bool> abandoned_ = false;
+  std::mutex mutex_;
+  runtime::Run* run_ = nullptr;
+};
+
+/// The run of `analysis` (which compiled) as check makes it, with
+/// `collisions` as --collisions gives it. Stops early when `control` is
+/// abandoned or the budget runs out.
+CheckedRun checkRun(const ProgramAnalysis& analysis, runtime::CollisionMode collisions, RunControl& control,
+                    std::chrono::milliseconds budget = kRunBudget);
+
+}  // namespace rs::lsp
