@@ -7,6 +7,7 @@
 #include "launch/run_request.h"
 #include "lsp/program_analysis.h"
 #include "runtime/run/run.h"
+#include "runtime/stimuli.h"
 
 namespace rs::lsp {
 
@@ -52,8 +53,7 @@ std::string summaryOf(const runtime::Run& run, const vm::RunOutcome& outcome) {
     case vm::StopReason::End: return fmt::format("finished at {}", at);
     case vm::StopReason::RuntimeError:
       return fmt::format("stopped by an error at {} (line {}: {})", at, line, outcome.message);
-    case vm::StopReason::Deadlock:
-      return fmt::format("waits forever for an input at {} (line {}; no stimuli in the editor's run)", at, line);
+    case vm::StopReason::Deadlock: return fmt::format("waits forever for an input at {} (line {})", at, line);
     case vm::StopReason::StepLimit:
     case vm::StopReason::TimeLimit:
     case vm::StopReason::InstantLimit:
@@ -96,7 +96,7 @@ void RunControl::attach(runtime::Run* run) {
   run_ = run;
 }
 
-CheckedRun checkRun(const ProgramAnalysis& analysis, runtime::CollisionMode collisions, RunControl& control,
+CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, RunControl& control,
                     std::chrono::milliseconds budget) {
   CheckedRun out;
   const Clock::time_point deadline = Clock::now() + budget;
@@ -109,12 +109,29 @@ CheckedRun checkRun(const ProgramAnalysis& analysis, runtime::CollisionMode coll
   program.image = analysis.image();
   program.cell = analysis.cell().cell;
   launch::RunRequest request;
-  request.collisions = runtime::collisionModeName(collisions);
+  request.collisions = runtime::collisionModeName(options.collisions);
   std::vector<diag::Diagnostic> problems;
-  const std::optional<runtime::RunSpec> spec = launch::prepareRun(program, request, problems);
+  std::optional<runtime::RunSpec> spec = launch::prepareRun(program, request, problems);
   if (!spec) {
     out.end = CheckedRun::End::Abandoned;
     return out;
+  }
+  // The stimuli file beside the program, from the editor's text when it
+  // holds one (check would read the saved file).
+  if (options.stimuliText || !options.stimuliPath.empty()) {
+    runtime::StimuliParse parsed = options.stimuliText
+                                       ? runtime::parseStimuli(*options.stimuliText, options.stimuliFile)
+                                       : runtime::loadStimuliFile(options.stimuliPath);
+    if (!parsed.errors.empty()) {
+      out.end = CheckedRun::End::NotRun;
+      out.diagnostics.push_back({analysis.source().name(), {}, diag::Severity::Note,
+                                 fmt::format("not run in the editor: the stimuli file beside it, {}, has errors",
+                                             options.stimuliFile),
+                                 "run-not-made", "its diagnostics are in that file"});
+      out.summary = "not made (its stimuli file has errors)";
+      return out;
+    }
+    spec->stimuli = std::move(parsed.stimuli);
   }
   out.times.resize(spec->image->code.size());
   Timer timer(out.times, control, deadline);

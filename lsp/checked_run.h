@@ -1,9 +1,11 @@
 // The run the editor makes of one version of a program: the run `robotsim
-// check` makes (launch::prepareRun with no options: no stimuli, at most
-// 100,000,000 instructions and 3600 simulated seconds, a collision stops
-// it), on the program's cell, off the request thread (run_worker.h). What
-// it reports are check's own diagnostics (launch/run_diagnostics.h); when
-// each instruction ran feeds hovers and inlay hints.
+// check` makes (launch::prepareRun: at most 100,000,000 instructions and
+// 3600 simulated seconds, a collision stops it), on the program's cell,
+// with the stimuli file beside the program when there is one (NAME.stim
+// for NAME.rsp, as the editors' Check command passes it with --stimuli),
+// off the request thread (run_worker.h). What it reports are check's own
+// diagnostics (launch/run_diagnostics.h); when each instruction ran feeds
+// hovers and inlay hints.
 //
 // The editor bounds it further: at most kRunBudget of the worker's time (a
 // run that needs more ends with a note saying so, never with a guess), and
@@ -40,8 +42,20 @@ struct InstructionTimes {
   std::uint64_t runs = 0;  ///< 0: never ran (to its end)
 };
 
+/// What the run is given besides the program: check's options as the
+/// editor sets them.
+struct RunOptions {
+  runtime::CollisionMode collisions = runtime::CollisionMode::Error;  ///< robotsim.collisions
+  /// The stimuli file beside the program: its name, and its text as the
+  /// editor holds it, or else its path on disk; neither when there is none.
+  std::string stimuliFile;
+  std::optional<std::string> stimuliText;
+  std::string stimuliPath;
+};
+
 struct CheckedRun {
-  enum class End : std::uint8_t { Finished, OutOfBudget, Abandoned };
+  /// NotRun: the stimuli file beside the program has errors (a note says so).
+  enum class End : std::uint8_t { Finished, OutOfBudget, Abandoned, NotRun };
   End end = End::Finished;
   std::vector<InstructionTimes> times;  ///< per instruction (0-based)
   std::optional<vm::RunOutcome> outcome;  ///< when finished
@@ -73,10 +87,9 @@ class RunControl {
   runtime::Run* run_ = nullptr;
 };
 
-/// The run of `analysis` (which compiled) as check makes it, with
-/// `collisions` as --collisions gives it. Stops early when `control` is
-/// abandoned or the budget runs out.
-CheckedRun checkRun(const ProgramAnalysis& analysis, runtime::CollisionMode collisions, RunControl& control,
+/// The run of `analysis` (which compiled) as check makes it with these
+/// options. Stops early when `control` is abandoned or the budget runs out.
+CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, RunControl& control,
                     std::chrono::milliseconds budget = kRunBudget);
 
 }  // namespace rs::lsp

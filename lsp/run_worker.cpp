@@ -47,7 +47,7 @@ void RunWorker::loop() {
     running_ = job.analysis;
     const std::chrono::milliseconds budget = budget_;
     lock.unlock();
-    job.analysis->runMade(checkRun(*job.analysis, job.collisions, job.analysis->runControl(), budget));
+    job.analysis->runMade(checkRun(*job.analysis, job.options, job.analysis->runControl(), budget));
     done_(job, *job.analysis->run());
     lock.lock();
     running_.reset();

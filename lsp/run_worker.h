@@ -17,7 +17,6 @@
 
 #include "lsp/json.h"
 #include "lsp/program_analysis.h"
-#include "runtime/collision_watch.h"
 
 namespace rs::lsp {
 
@@ -27,7 +26,7 @@ struct RunJob {
   std::shared_ptr<const ProgramAnalysis> analysis;
   Json compileDiagnostics;  ///< as published for this version, to publish again with the run's
   Encoding enc = Encoding::Utf16;
-  runtime::CollisionMode collisions = runtime::CollisionMode::Error;
+  RunOptions options;
 };
 
 class RunWorker {

@@ -186,6 +186,7 @@ void Server::didOpen(const Field& params, bool invalidUtf8) {
   Document& doc = workspace_.open(uri, languageOf(languageId, uri), version, td["text"].string());
   doc.setHadInvalidUtf8(invalidUtf8);
   if (doc.language() == Language::Description) workspace_.descriptionsChanged(), allProgramsChanged();
+  if (doc.language() == Language::Stimuli) workspace_.stimuliChanged(), allProgramsChanged();
   pending_.insert(uri);
 }
 
@@ -212,6 +213,7 @@ void Server::didChange(const Field& params, bool invalidUtf8) {
   for (const Change& change : changes) doc->edit(change.range, change.text, encoding_);
   if (version) doc->setVersion(*version);
   if (invalidUtf8) doc->setHadInvalidUtf8(true);
+  if (doc->language() == Language::Stimuli) workspace_.stimuliChanged(), allProgramsChanged();
   pending_.insert(doc->uri());
 }
 
@@ -249,7 +251,7 @@ void Server::publishPending() {
     // Then its run, off this thread: what it finds follows for this version.
     if (analysis && analysis->ok() && !shutdown_ && analysis->askForRun())
       runs_.submit({uri, doc->version(), analysis, std::move(params["diagnostics"]), encoding_,
-                    workspace_.settings().collisions});
+                    workspace_.runOptions(analysis->source().name())});
   }
   pending_.clear();
 }
@@ -304,11 +306,16 @@ void Server::registerHandlers() {
   d.onNotification("textDocument/didChange", [this](const Field& p) { didChange(p, currentInvalidUtf8_); });
   d.onNotification("textDocument/didClose", [this](const Field& p) {
     const std::string uri = documentUri(p);
+    const Document* doc = workspace_.document(uri);
+    // A closed stimuli file is read from disk again (its saved text).
+    if (doc && doc->language() == Language::Stimuli) workspace_.stimuliChanged(), allProgramsChanged();
     workspace_.close(uri);
     pending_.insert(uri);  // publishes an empty list: the markers go
   });
   d.onNotification("textDocument/didSave", [this](const Field& p) {
-    if (languageOf("", documentUri(p)) == Language::Description) workspace_.descriptionsChanged(), allProgramsChanged();
+    const Language language = languageOf("", documentUri(p));
+    if (language == Language::Description) workspace_.descriptionsChanged(), allProgramsChanged();
+    if (language == Language::Stimuli) workspace_.stimuliChanged(), allProgramsChanged();
   });
   d.onNotification("workspace/didChangeConfiguration", [this](const Field& p) {
     workspace_.setSettings(settingsFrom(p["settings"]));

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "base/ascii.h"
 #include "lsp/uri.h"
 
 namespace rs::lsp {
@@ -75,6 +76,28 @@ void Workspace::descriptionsChanged() {
   cells_.clear();
   abandonRuns();
   programs_.clear();
+}
+
+void Workspace::stimuliChanged() {
+  abandonRuns();
+  programs_.clear();
+}
+
+RunOptions Workspace::runOptions(const std::string& programPath) const {
+  RunOptions options;
+  options.collisions = settings_.collisions;
+  if (programPath.size() < 4 || !base::sameName(std::string_view(programPath).substr(programPath.size() - 4), ".rsp"))
+    return options;
+  const std::string stimuli = programPath.substr(0, programPath.size() - 4) + ".stim";
+  options.stimuliFile = fs::path(stimuli).filename().string();
+  for (const auto& [uri, doc] : docs_)
+    if (doc.language() == Language::Stimuli && pathOfUri(uri) == stimuli) {
+      options.stimuliText = doc.text();
+      return options;
+    }
+  std::error_code ec;
+  if (fs::is_regular_file(stimuli, ec)) options.stimuliPath = stimuli;  // read by the run, off this thread
+  return options;
 }
 
 std::vector<std::string> Workspace::files(std::string_view suffix, std::size_t limit) const {

@@ -48,6 +48,12 @@ class Workspace {
   CellCache& cells() { return cells_; }
   /// Descriptions changed: cells are loaded again, programs checked again.
   void descriptionsChanged();
+  /// A stimuli file changed: programs are checked (and run) again.
+  void stimuliChanged();
+  /// The options of a program's checked run: the collisions setting, and
+  /// the stimuli file beside it (NAME.stim for NAME.rsp), as the editor
+  /// holds it when open, else the saved file, if any.
+  RunOptions runOptions(const std::string& programPath) const;
 
   /// The cell a program is checked against: its directive, else the
   /// setting, else "" (the default robot), resolved as --cell would be.

@@ -170,7 +170,7 @@ TEST_CASE("lsp: abandoning a run pauses it at its next step", "[lsp][runs]") {
   const rs::lsp::ProgramAnalysis analysis("endless.rsp", kEndless, cell, std::nullopt);
   REQUIRE(analysis.ok());
   rs::lsp::CheckedRun run;
-  std::thread worker([&] { run = rs::lsp::checkRun(analysis, rs::runtime::CollisionMode::Error, analysis.runControl()); });
+  std::thread worker([&] { run = rs::lsp::checkRun(analysis, rs::lsp::RunOptions{}, analysis.runControl()); });
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
   analysis.runControl().abandon();
   worker.join();
@@ -223,7 +223,7 @@ TEST_CASE("lsp: hovers and inlay hints agree with the run", "[lsp][runs]") {
                                            "ends 0.75 s (first of 3)", "#4", "ends 0.75 s (first of 3)", "#5", "#6"});
 }
 
-TEST_CASE("lsp: a hover waits for the run being made; hints made before it are refreshed", "[lsp][runs]") {
+TEST_CASE("lsp: a hover waits for the run being made, and hints made before it are refreshed", "[lsp][runs]") {
   LspSession s;
   s.initialize({{"workspace", {{"inlayHint", {{"refreshSupport", true}}}}}});
   const std::string path = kMistakes + "out_of_range.rsp";
@@ -258,4 +258,47 @@ TEST_CASE("lsp: a hover waits for the run being made; hints made before it are r
   t.result("textDocument/inlayHint", range);
   t.idle();
   for (const Json& m : t.sent()) CHECK(m.value("method", "") != "workspace/inlayHint/refresh");
+}
+
+TEST_CASE("lsp: the run takes the stimuli file beside the program, as the editor holds it", "[lsp][runs]") {
+  // As the editors' Check command runs it: robotsim check P.rsp --stimuli P.stim.
+  const std::string example = std::string(ROBOTSIM_SOURCE_DIR) + "/examples/pick_and_place";
+  const rs::testing::CliResult check =
+      rs::testing::runCli({"check", example + ".rsp", "--stimuli", example + ".stim", "--format=json"});
+  REQUIRE(check.code == 0);
+  CHECK(Json::parse(check.out)["diagnostics"].empty());
+  LspSession s;
+  s.initialize();
+  s.open(rs::lsp::uriOfPath(example + ".rsp"), rs::testing::readBytes(example + ".rsp"));
+  s.idle();
+  CHECK(s.diagnostics(rs::lsp::uriOfPath(example + ".rsp")) == Json::array());  // no deadlock: the .stim was read
+
+  // Unsaved stimuli text counts, and each change to it runs the program again.
+  rs::testing::TempDir dir;
+  const std::string program = rs::lsp::uriOfPath(dir.write("wait.rsp", "        WAITFOR 1 ON\n        END\n"));
+  const std::string stimuli = rs::lsp::uriOfPath(dir.file("wait.stim"));  // not on disk
+  s.open(program, "        WAITFOR 1 ON\n        END\n");
+  s.idle();
+  REQUIRE(s.diagnostics(program).size() == 1);
+  CHECK_THAT(s.diagnostics(program)[0]["message"].get<std::string>(), Catch::StartsWith("deadlock: input 1 never turns ON"));
+  s.open(stimuli, "at 1.5 input 1 on\n", "robotsim-stimuli");
+  s.idle();
+  CHECK(s.diagnostics(program) == Json::array());
+  const Json hover = s.result("textDocument/hover", LspSession::at(program, 0, 9));
+  CHECK_THAT(hover["contents"]["value"].get<std::string>(), Catch::EndsWith("In the checked run: from 0 s to 1.5 s (takes 1.5 s)."));
+  s.notify("textDocument/didChange", {{"textDocument", {{"uri", stimuli}, {"version", 2}}},
+                                      {"contentChanges", {{{"text", "at 1.5 input 9 on\n"}}}}});
+  s.idle();
+  const Json note = s.diagnostics(program);
+  REQUIRE(note.size() == 1);
+  CHECK(note[0]["severity"] == 3);
+  CHECK(note[0]["code"] == "run-not-made");
+  CHECK(note[0]["message"] == "not run in the editor: the stimuli file beside it, wait.stim, has errors\n"
+                              "hint: its diagnostics are in that file");
+  CHECK(s.diagnostics(stimuli).size() == 1);
+  // Closed (and never saved): the program runs without stimuli again.
+  s.notify("textDocument/didClose", {{"textDocument", {{"uri", stimuli}}}});
+  s.idle();
+  REQUIRE(s.diagnostics(program).size() == 1);
+  CHECK_THAT(s.diagnostics(program)[0]["message"].get<std::string>(), Catch::StartsWith("deadlock:"));
 }
