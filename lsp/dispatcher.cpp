@@ -4,10 +4,10 @@
 
 namespace rs::lsp {
 
-Json response(const Json& id, const Reply& reply) {
+Json response(const Json& id, Reply&& reply) {
   Json out = {{"jsonrpc", "2.0"}, {"id", id}};
-  if (const Json* result = std::get_if<Json>(&reply)) {
-    out["result"] = *result;
+  if (Json* result = std::get_if<Json>(&reply)) {
+    out["result"] = std::move(*result);
   } else {
     const RpcError& e = std::get<RpcError>(reply);
     out["error"] = {{"code", e.code}, {"message", e.message}};

@@ -39,8 +39,9 @@ struct RpcError {
 
 using Reply = std::variant<Json, RpcError>;
 
-/// {"jsonrpc":"2.0","id":id,"result":...} or {..., "error":{code,message}}.
-Json response(const Json& id, const Reply& reply);
+/// {"jsonrpc":"2.0","id":id,"result":...} or {..., "error":{code,message}}
+/// (the result moved in: a large one is not copied).
+Json response(const Json& id, Reply&& reply);
 /// {"jsonrpc":"2.0","method":method,"params":params}.
 Json notification(std::string_view method, Json params);
 

@@ -238,7 +238,7 @@ Reply formatting(const ProgramContext& p) {
                     fmt::format("the document is {} MiB: robotsim formats programs up to {} MiB (its answer would be "
                                 "a message larger than the server accepts)",
                                 text.size() >> 20, kMaxFormattedBytes >> 20)};
-  const std::optional<std::string> formatted = formatProgram(text, p.analysis.source());
+  std::optional<std::string> formatted = formatProgram(text, p.analysis.source());
   if (!formatted) return Json::array();
   // Lines map one to one: each run of changed lines is one edit.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;
@@ -249,6 +249,21 @@ Reply formatting(const ProgramContext& p) {
     else runs.emplace_back(line, line);
   }
   if (runs.size() > kMaxFormattingEdits) runs = {{runs.front().first, runs.back().second}};
+  if (runs.size() == 1) {
+    // One edit (every line, often): its text is cut from the formatted text
+    // in place and moved into the answer, never copied.
+    std::string text = std::move(*formatted);
+    std::size_t from = 0, to = 0, line = 0;
+    for (std::size_t at = 0; line <= runs[0].second; ++line) {
+      if (line == runs[0].first) from = at;
+      const std::string_view l = lineAt(text, at);
+      to = static_cast<std::size_t>(l.data() - text.data()) + l.size();
+    }
+    text.erase(to);
+    text.erase(0, from);
+    return Json::array({textEdit({{runs[0].first, 0}, {runs[0].second, unitsOf(p.doc.line(runs[0].second), p.enc)}},
+                                 std::move(text))});
+  }
   Json edits = Json::array();
   std::size_t cursor = 0;
   std::uint32_t cursorLine = 0;
