@@ -1,6 +1,7 @@
 #include "lsp/checked_run.h"
 
 #include <fmt/format.h>
+#include <time.h>
 
 #include "launch/program.h"
 #include "launch/run_diagnostics.h"
@@ -13,16 +14,23 @@ namespace rs::lsp {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+// The CPU time of the calling thread: the run's budget is the work the
+// worker's thread does, whatever else the machine is doing meanwhile (a
+// wall-clock budget ran out on a loaded machine before the work did).
+std::chrono::nanoseconds threadTime() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return std::chrono::seconds(t.tv_sec) + std::chrono::nanoseconds(t.tv_nsec);
+}
 
 // Notes when each instruction first starts and ends, and how often it runs;
-// pauses the run when it is abandoned or out of time (the wall clock read
-// every kClockEvery steps: a step costs nanoseconds, a clock read tens).
+// pauses the run when it is abandoned or out of time (the thread's clock
+// read every kClockEvery steps: a step costs nanoseconds, a read hundreds).
 class Timer final : public vm::StepObserver {
  public:
   static constexpr std::uint64_t kClockEvery = 1024;
 
-  Timer(std::vector<InstructionTimes>& times, const RunControl& control, Clock::time_point deadline)
+  Timer(std::vector<InstructionTimes>& times, const RunControl& control, std::chrono::nanoseconds deadline)
       : times_(times), control_(control), deadline_(deadline) {}
   bool afterStep(const vm::Interpreter& vm, std::uint32_t index) override {
     const vm::Micros now = vm.machine().now();
@@ -32,7 +40,7 @@ class Timer final : public vm::StepObserver {
     }
     before_ = now;
     if (control_.abandoned()) return true;
-    if (++steps_ % kClockEvery == 0 && Clock::now() >= deadline_) outOfTime_ = true;
+    if (++steps_ % kClockEvery == 0 && threadTime() >= deadline_) outOfTime_ = true;
     return outOfTime_;
   }
   bool outOfTime() const { return outOfTime_; }
@@ -40,7 +48,7 @@ class Timer final : public vm::StepObserver {
  private:
   std::vector<InstructionTimes>& times_;
   const RunControl& control_;
-  Clock::time_point deadline_;
+  std::chrono::nanoseconds deadline_;
   vm::Micros before_ = 0;
   std::uint64_t steps_ = 0;
   bool outOfTime_ = false;
@@ -99,7 +107,7 @@ void RunControl::attach(runtime::Run* run) {
 CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, RunControl& control,
                     std::chrono::milliseconds budget) {
   CheckedRun out;
-  const Clock::time_point deadline = Clock::now() + budget;
+  const std::chrono::nanoseconds deadline = threadTime() + budget;
   if (!analysis.image() || control.abandoned()) {
     out.end = CheckedRun::End::Abandoned;
     return out;

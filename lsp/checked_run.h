@@ -7,8 +7,9 @@
 // diagnostics (launch/run_diagnostics.h); when each instruction ran feeds
 // hovers and inlay hints.
 //
-// The editor bounds it further: at most kRunBudget of the worker's time (a
-// run that needs more ends with a note saying so, never with a guess), and
+// The editor bounds it further: at most kRunBudget of the worker thread's
+// CPU time (a run that needs more ends with a note saying so, never with a
+// guess; CPU time, so that a loaded machine does not cut runs short), and
 // a newer edit abandons it (RunControl::abandon: the run pauses after its
 // current step, through the run's own pause mechanism).
 #pragma once
@@ -33,7 +34,8 @@ namespace rs::lsp {
 
 class ProgramAnalysis;
 
-/// The editor's own bound on a run, beyond check's limits.
+/// The editor's own bound on a run, beyond check's limits: CPU time of the
+/// thread that makes it.
 inline constexpr std::chrono::milliseconds kRunBudget{5000};
 
 struct InstructionTimes {

@@ -12,6 +12,7 @@
 // crash, and go on: after a refused initialize a good one is answered, and
 // the session is served to its end.
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -125,6 +126,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string params(reinterpret_cast<const char*>(data), size);
   const bool isJson = Json::accept(params);
   Session s;
+  s.server.setRunBudget(std::chrono::milliseconds(50));
   s.send(request(1, "initialize", params));
   bool initialized = false;
   if (isJson) {
