@@ -15,10 +15,10 @@ using rs::testing::LspSession;
 
 namespace {
 
-const std::string kUri = "file:///jumps.rsp";
+const std::string kJumpsUri = "file:///jumps.rsp";
 
 // Instruction numbers on the right.
-const std::string kJumps =
+const std::string kNumberedJumps =
     "        SET I 0\n"            // 0   1
     "        MOVE 10 0 0 0 0\n"    // 1   2   <- JMPVAR ... 2
     "  ADD I 1\n"                  // 2   3   <- GOTO 3 (two blanks: no room for a label)
@@ -46,7 +46,7 @@ std::string applied(std::string text, Json edits) {
   return text;
 }
 
-rs::vm::Image compiled(const std::string& text) {
+rs::vm::Image imageOf(const std::string& text) {
   const rs::diag::SourceFile source("jumps.rsp", text);
   rs::compiler::CompileResult r = rs::compiler::compile(source, rs::launch::defaultTarget());
   INFO(text);
@@ -66,9 +66,9 @@ Json numericWarnings(const Json& diagnostics) {
 TEST_CASE("lsp: a jump by instruction number is warned about where the number is", "[lsp][jumps]") {
   LspSession s;
   s.initialize();
-  s.open(kUri, kJumps);
+  s.open(kJumpsUri, kNumberedJumps);
   s.idle();
-  const Json warnings = numericWarnings(s.diagnostics(kUri));
+  const Json warnings = numericWarnings(s.diagnostics(kJumpsUri));
   REQUIRE(warnings.size() == 3);
   CHECK(warnings[0]["range"] == LspSession::range(3, 21, 3, 22));
   CHECK(warnings[0]["severity"] == 2);
@@ -86,22 +86,22 @@ TEST_CASE("lsp: a jump by instruction number is warned about where the number is
 TEST_CASE("lsp: the quick fix jumps to a label, and the program means what it meant", "[lsp][jumps]") {
   LspSession s;
   s.initialize();
-  s.open(kUri, kJumps);
+  s.open(kJumpsUri, kNumberedJumps);
   s.idle();
-  const Json warnings = numericWarnings(s.diagnostics(kUri));
+  const Json warnings = numericWarnings(s.diagnostics(kJumpsUri));
   REQUIRE(warnings.size() == 3);
-  const Json actions = s.result("textDocument/codeAction", {{"textDocument", {{"uri", kUri}}},
+  const Json actions = s.result("textDocument/codeAction", {{"textDocument", {{"uri", kJumpsUri}}},
                                                             {"range", warnings[0]["range"]},
                                                             {"context", {{"diagnostics", {warnings[0]}}}}});
   REQUIRE(actions.size() == 2);
   CHECK(actions[0]["title"] == "Jump to a label instead of instruction 2");
   CHECK(actions[0]["isPreferred"] == true);
   // The MOVE gets "L2:" in its blanks (the layout stays), the jump its name.
-  CHECK(actions[0]["edit"]["changes"][kUri] ==
+  CHECK(actions[0]["edit"]["changes"][kJumpsUri] ==
         Json::parse(R"([{"range":{"start":{"line":1,"character":0},"end":{"line":1,"character":8}},"newText":"L2:     "},
                         {"range":{"start":{"line":3,"character":21},"end":{"line":3,"character":22}},"newText":"L2"}])"));
   CHECK(actions[1]["title"] == "Jump to labels instead of instruction numbers (3 jumps)");
-  const std::string fixed = applied(kJumps, actions[1]["edit"]["changes"][kUri]);
+  const std::string fixed = applied(kNumberedJumps, actions[1]["edit"]["changes"][kJumpsUri]);
   CHECK(fixed ==
         "        SET I 0\n"
         "L2:     MOVE 10 0 0 0 0\n"
@@ -112,20 +112,20 @@ TEST_CASE("lsp: the quick fix jumps to a label, and the program means what it me
         "sub:    RETURN\n"
         "L3:     GOTO L3_2\n");
   // The same instructions, jumps and all: labels do not count.
-  CHECK(compiled(fixed).code == compiled(kJumps).code);
-  s.notify("textDocument/didChange", {{"textDocument", {{"uri", kUri}, {"version", 2}}}, {"contentChanges", {{{"text", fixed}}}}});
+  CHECK(imageOf(fixed).code == imageOf(kNumberedJumps).code);
+  s.notify("textDocument/didChange", {{"textDocument", {{"uri", kJumpsUri}, {"version", 2}}}, {"contentChanges", {{{"text", fixed}}}}});
   s.idle();
-  CHECK(numericWarnings(s.diagnostics(kUri)).empty());
+  CHECK(numericWarnings(s.diagnostics(kJumpsUri)).empty());
   // What the warning was about: an instruction added at the top. The
   // labels still name their instructions; the numbers now name others.
-  const rs::vm::Image labelled = compiled("        DELAY 1\n" + fixed);
+  const rs::vm::Image labelled = imageOf("        DELAY 1\n" + fixed);
   // The jumps' targets (operand d, a 0-based index): JMPVAR is now at
   // index 4, GOSUB at 5.
   CHECK(labelled.code[4].d == 2);  // the MOVE, now at index 2
   CHECK(labelled.code[5].d == 7);  // GOSUB sub: RETURN, now at index 7
   // By number, GOSUB 7 now calls END, and JMPVAR ... 2 jumps to the SET:
   // here the compiler happens to notice (the RETURN is left unreachable).
-  const rs::diag::SourceFile numbered("jumps.rsp", "        DELAY 1\n" + kJumps);
+  const rs::diag::SourceFile numbered("jumps.rsp", "        DELAY 1\n" + kNumberedJumps);
   const rs::compiler::CompileResult r = rs::compiler::compile(numbered, rs::launch::defaultTarget());
   CHECK_FALSE(r.image);
   REQUIRE(!r.diagnostics.empty());

@@ -87,12 +87,12 @@ bool sameKind(Json::value_t a, Json::value_t b) {
   return a == b || (number(a) && number(b));
 }
 
-int errorCode(const Json& response) { return response.at("error").at("code").get<int>(); }
+int errorCodeOf(const Json& response) { return response.at("error").at("code").get<int>(); }
 
 // After a refused initialize the server is still waiting for one: a good
 // one is answered, and the server then serves a document.
 void goesOn(LspSession& s) {
-  CHECK(errorCode(s.request("textDocument/hover", LspSession::at("file:///a.rsp", 0, 9))) == -32002);
+  CHECK(errorCodeOf(s.request("textDocument/hover", LspSession::at("file:///a.rsp", 0, 9))) == -32002);
   REQUIRE(s.initialize().contains("result"));
   s.open("file:///a.rsp", "        MOVE 1 0 0 0 0\n        END\n");
   s.idle();
@@ -123,7 +123,7 @@ TEST_CASE("lsp: every field of initialize, of every other type: InvalidParams or
       // read cannot be wrong.
       if (kRead.count(place.path) && !value.is_null()) {
         REQUIRE(r.contains("error"));
-        CHECK(errorCode(r) == -32602);
+        CHECK(errorCodeOf(r) == -32602);
         CHECK_THAT(r["error"]["message"].get<std::string>(),
                    Catch::StartsWith("invalid params for initialize: " + place.path + ": expected "));
         ++refused;
@@ -132,7 +132,7 @@ TEST_CASE("lsp: every field of initialize, of every other type: InvalidParams or
         // Null where the protocol needs a value (an element of a list the
         // server reads, a folder's uri) is refused the same way.
         CHECK(value.is_null());
-        CHECK(errorCode(r) == -32602);
+        CHECK(errorCodeOf(r) == -32602);
         CHECK_THAT(r["error"]["message"].get<std::string>(), Catch::Contains(place.path + ": expected "));
         ++refused;
         goesOn(s);
@@ -164,7 +164,7 @@ TEST_CASE("lsp: the mistyped initializes of issue 26 are InvalidParams, and the 
     LspSession s;
     const Json r = s.request("initialize", params);
     REQUIRE(r.contains("error"));
-    CHECK(errorCode(r) == -32602);
+    CHECK(errorCodeOf(r) == -32602);
     CHECK(r["error"]["message"] == "invalid params for initialize: " + message);
     goesOn(s);
   }
@@ -178,7 +178,7 @@ TEST_CASE("lsp: requests with a mistyped field are InvalidParams naming it", "[l
   const auto refused = [&](const std::string& method, const Json& params) {
     const Json r = s.request(method, params);
     REQUIRE(r.contains("error"));
-    CHECK(errorCode(r) == -32602);
+    CHECK(errorCodeOf(r) == -32602);
     return r["error"]["message"].get<std::string>();
   };
   Json at = LspSession::at("file:///a.rsp", 0, 9);
