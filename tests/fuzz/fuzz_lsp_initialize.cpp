@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "base/text.h"
 #include "lsp/server.h"
 
 extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t maxSize);
@@ -92,6 +93,26 @@ void require(bool ok) {
   if (!ok) std::abort();
 }
 
+// The text as the server reads it (lsp.md, Bad input): each byte that is
+// not UTF-8 becomes U+FFFD. The first campaign's first finding was this
+// target's own: params with a stray 0xFA in a key are JSON to the server,
+// so it answered the initialize instead of a ParseError.
+std::string asTheServerReadsIt(std::string_view text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = rs::base::utf8SequenceLength(text, i);
+    out += n == 0 ? std::string_view("\xEF\xBF\xBD") : text.substr(i, n);
+    i += n == 0 ? 1 : n;
+  }
+  return out;
+}
+
+// JSON as RFC 8259 has it: the JSON library alone takes a NUL byte for the
+// end of the text (the campaign's second finding: params "2.5" and NULs).
+bool isJsonText(std::string_view text) {
+  return text.find('\0') == std::string_view::npos && Json::accept(asTheServerReadsIt(text));
+}
+
 }  // namespace
 
 extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t maxSize,
@@ -124,10 +145,15 @@ extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t s
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string params(reinterpret_cast<const char*>(data), size);
-  const bool isJson = Json::accept(params);
+  const std::string message = request(1, "initialize", params);
+  const bool isJson = isJsonText(params);
   Session s;
   s.server.setRunBudget(std::chrono::milliseconds(50));
-  s.send(request(1, "initialize", params));
+  s.send(message);
+  // Params that are not one JSON value but close the message early and go
+  // on (`{}, "id": 7, "x": {`) make another message: its answer is not
+  // the one this target predicts; the sanitizers still watch it.
+  if (!isJson && isJsonText(message)) return 0;
   bool initialized = false;
   if (isJson) {
     const std::vector<Json> answers = s.answersTo(1);
