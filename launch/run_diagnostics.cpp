@@ -48,11 +48,33 @@ diag::Diagnostic stopDiagnostic(const vm::Image& image, const vm::RunOutcome& ou
           {}, std::string(hintFor(image, outcome))};
 }
 
-std::vector<diag::Diagnostic> runDiagnostics(const runtime::Run& run, const std::string& file) {
+std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::CollisionMode mode,
+                                          const std::string& file) {
+  std::vector<diag::Diagnostic> out;
+  const vm::Image& image = run.image();
+  if (const runtime::CollisionWatch* watch = run.collisionWatch(); watch && mode == runtime::CollisionMode::Warn)
+    for (const runtime::CollisionEvent& e : run.collisions()) {
+      const bool known = e.instruction < image.code.size();
+      const std::string seconds = vm::formatSeconds(e.at);
+      out.push_back({file, known ? diag::Pos{image.lines[e.instruction], image.columns[e.instruction]} : diag::Pos{},
+                     diag::Severity::Warning,
+                     fmt::format("collision at {} s: {} (--collisions=warn: the run went on)", seconds,
+                                 watch->describe(e.contact)),
+                     "collision",
+                     fmt::format("'robotsim render CELL --program PROG --at {} --collision-shapes' draws it; "
+                                 "--collisions=error stops the run there",
+                                 seconds)});
+    }
+  if (std::optional<diag::Diagnostic> w = runtime::gripperWarning(run, file)) out.push_back(std::move(*w));
+  return out;
+}
+
+std::vector<diag::Diagnostic> runDiagnostics(const runtime::Run& run, runtime::CollisionMode mode,
+                                             const std::string& file) {
   std::vector<diag::Diagnostic> out;
   if (const std::optional<vm::RunOutcome> outcome = run.outcome(); outcome && !outcome->ok())
     out.push_back(stopDiagnostic(run.image(), *outcome, file));
-  if (std::optional<diag::Diagnostic> w = runtime::gripperWarning(run, file)) out.push_back(std::move(*w));
+  for (diag::Diagnostic& w : runWarnings(run, mode, file)) out.push_back(std::move(w));
   return out;
 }
 

@@ -152,7 +152,7 @@ CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, 
   out.steps = run.interpreter().steps();
   if (run.finished()) {
     out.outcome = outcome;
-    out.diagnostics = launch::runDiagnostics(run, analysis.source().name());
+    out.diagnostics = launch::runDiagnostics(run, spec->collisions, analysis.source().name());
     out.summary = summaryOf(run, outcome);
   } else if (control.abandoned() || !timer.outOfTime()) {
     out.end = CheckedRun::End::Abandoned;

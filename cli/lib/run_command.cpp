@@ -86,7 +86,7 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   if (controller) report.fault = controller->faultState();
   const vm::Image& image = run->image();
   // The stop and the warnings of the run: the same words the editor shows (launch/run_diagnostics.h).
-  const std::vector<diag::Diagnostic> said = launch::runDiagnostics(*run, image.sourceName);
+  const std::vector<diag::Diagnostic> said = launch::runDiagnostics(*run, spec->collisions, image.sourceName);
   for (const diag::Diagnostic& d : said) launch::printDiagnostics(err, {d}, program);
   report.diagnostics.insert(report.diagnostics.end(), said.begin(), said.end());
   if (o.profile && run->log()) report.profile = runtime::profileOf(image, *run->log());

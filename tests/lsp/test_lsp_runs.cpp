@@ -23,10 +23,12 @@ namespace {
 
 const std::string kMistakes = std::string(ROBOTSIM_SOURCE_DIR) + "/examples/mistakes/";
 
-Json checkJson(const std::string& path) {
-  const rs::testing::CliResult r = rs::testing::runCli({"check", path, "--format=json"});
+// check's JSON report; `collisions` as --collisions (check's exit is 1
+// when the run stopped, 0 when it only warned).
+Json checkJson(const std::string& path, const std::string& collisions = "error", int exitCode = 1) {
+  const rs::testing::CliResult r = rs::testing::runCli({"check", path, "--format=json", "--collisions=" + collisions});
   INFO(r.err);
-  REQUIRE(r.code == 1);
+  REQUIRE(r.code == exitCode);
   return Json::parse(r.out);
 }
 
@@ -36,12 +38,12 @@ int lspSeverity(const std::string& name) { return name == "error" ? 1 : name == 
 // Every diagnostic check reports is published at its line and column, with
 // its severity, message, hint and code, and the server publishes nothing
 // else (the programs here have no compile diagnostics).
-void sameAsCheck(const std::string& path) {
-  CAPTURE(path);
-  const Json check = checkJson(path)["diagnostics"];
+void sameAsCheck(const std::string& path, const std::string& collisions = "error", int exitCode = 1) {
+  CAPTURE(path, collisions);
+  const Json check = checkJson(path, collisions, exitCode)["diagnostics"];
   REQUIRE(!check.empty());
   LspSession s;
-  s.initialize();
+  s.initialize(Json::object(), {{"robotsim", {{"collisions", collisions}}}});
   const std::string uri = rs::lsp::uriOfPath(path);
   s.open(uri, rs::testing::readBytes(path));
   s.idle();
@@ -89,6 +91,23 @@ TEST_CASE("lsp: each example with a mistake shows in the editor what robotsim ch
   CHECK(message("out_of_range.rsp") == "runtime error: MOVE takes motor E to 1200, outside its range -1000..1000 (instruction 2)");
   CHECK_THAT(message("collision.rsp").get<std::string>(), Catch::StartsWith("runtime error: collision at 1.297 s: finger"));
   CHECK_THAT(message("deadlock.rsp").get<std::string>(), Catch::StartsWith("deadlock: input 2 never turns ON"));
+}
+
+TEST_CASE("lsp: with robotsim.collisions warn, each collision is a warning as check --collisions=warn says it",
+          "[lsp][runs]") {
+  // The run goes on through the blocks and ends: no error, a warning for
+  // each collision at its MOVE (check exits 0: warnings alone do not fail).
+  sameAsCheck(kMistakes + "collision.rsp", "warn", 0);
+  const Json check = checkJson(kMistakes + "collision.rsp", "warn", 0)["diagnostics"];
+  REQUIRE(!check.empty());
+  for (const Json& d : check) {
+    CHECK(d["severity"] == "warning");
+    CHECK(d["code"] == "collision");
+  }
+  // The first is where the program's comment says: the swing of line 11,
+  // 1.297 s in, as with --collisions=error (where it stops the run).
+  CHECK(check[0]["line"] == 11);
+  CHECK_THAT(check[0]["message"].get<std::string>(), Catch::StartsWith("collision at 1.297 s: finger"));
 }
 
 TEST_CASE("lsp: the empty gripper and the limits show as check says them", "[lsp][runs]") {
