@@ -69,6 +69,16 @@ nlohmann::json benchErrors(const Options& options);
 /// open (50 MiB).
 nlohmann::json benchLsp(const Options& options);
 
+/// The language server's run-time diagnostics (issue 23): a 10,000-line
+/// program on scara-pick changed by one character; the time to its compile
+/// diagnostics and to its run's (target 200 ms), collisions on and off.
+nlohmann::json benchLspRuns(const Options& options);
+
+/// The language server formatting a 50 MB document (issue 26): peak RSS
+/// and time of a `robotsim lsp` process that opens it and formats it,
+/// against one that only opens it.
+nlohmann::json benchLspFormat(const Options& options);
+
 /// The debugger's reverse steps on a run of about 1,000,000 instructions,
 /// for several snapshot intervals: time forwards with snapshots, their
 /// memory, one reverse step (median, worst). Targets: 10 ms, 64 MiB.

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
+#include <thread>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -94,10 +96,14 @@ void send(lsp::Server& server, const Json& message) {
   server.receive({lsp::Frame{lsp::Frame::Kind::Message, lsp::dumpJson(message), {}}});
 }
 
+// Wall time, and the process's CPU time beside it (on a loaded machine the
+// wall time includes waiting for a core; the CPU time includes the run
+// worker's thread when it runs meanwhile).
 void report(nlohmann::json& out, const std::string& key, const std::string& what, const Samples& s, double targetMs) {
-  out[key] = {{"best_ms", s.best() * 1e3}, {"median_ms", s.median() * 1e3}, {"target_ms", targetMs}};
-  fmt::print("  {:<52} best {:7.2f} ms  median {:7.2f} ms  (target {} ms{})\n", what, s.best() * 1e3,
-             s.median() * 1e3, targetMs, s.median() * 1e3 <= targetMs ? "" : ", MISSED");
+  out[key] = {{"best_ms", s.best() * 1e3}, {"median_ms", s.median() * 1e3}, {"cpu_best_ms", s.cpuBest() * 1e3},
+              {"target_ms", targetMs}};
+  fmt::print("  {:<52} best {:7.2f} ms  median {:7.2f} ms  [cpu {:7.2f} ms]  (target {} ms{})\n", what, s.best() * 1e3,
+             s.median() * 1e3, s.cpuBest() * 1e3, targetMs, s.median() * 1e3 <= targetMs ? "" : ", MISSED");
 }
 
 }  // namespace
@@ -135,10 +141,20 @@ nlohmann::json benchLsp(const Options& options) {
   }
 
   std::ostringstream log;
-  std::size_t published = 0;
+  // The compile's publications: those made on this thread (the run
+  // worker's thread publishes what the runs find, later). The time of the
+  // last one is read as it is sent: what follows it in publishPending
+  // (handing the run to the worker) is not the client's wait.
+  std::atomic<std::size_t> published = 0;
+  const std::thread::id self = std::this_thread::get_id();
+  const Stopwatch* publishing = nullptr;
+  Sample publishedAt;
   lsp::Server server(
       [&](const Json& m) {
-        if (m.value("method", "") == "textDocument/publishDiagnostics") ++published;
+        if (m.value("method", "") == "textDocument/publishDiagnostics" && std::this_thread::get_id() == self) {
+          ++published;
+          if (publishing) publishedAt = publishing->stop();
+        }
         return true;
       },
       log);
@@ -148,27 +164,34 @@ nlohmann::json benchLsp(const Options& options) {
   int version = 1, id = 10;
   bool flip = false;
   const auto timed = [&](const std::function<void()>& work) {
-    return [work] {
+    return [work, &server] {
+      server.settle();  // the last change's run is not on the clock of what follows
       const Stopwatch clock;
       work();
       return clock.stop();
     };
   };
   const std::vector<Samples> samples = interleave(
-      {timed([&] {
+      {[&] {
          // One character typed, then the diagnostics published.
+         server.settle();
+         const Stopwatch clock;
+         publishing = &clock;
          flip = !flip;
          send(server, change(++version, digitPos, flip ? "2" : "1"));
          const std::size_t before = published;
          server.publishPending();
+         publishing = nullptr;
          if (published != before + 1) throw std::runtime_error("no diagnostics published after a change");
-       }),
+         return publishedAt;
+       },
        timed([&] { send(server, request(++id, "textDocument/hover", at(pointPos))); }),
        timed([&] { send(server, request(++id, "textDocument/hover", at(labelPos))); }),
        timed([&] { send(server, request(++id, "textDocument/completion", at(labelPos))); }),
        timed([&] { send(server, request(++id, "textDocument/completion", at({mnemonic.first, mnemonic.second + 2}))); }),
        timed([&] {
-         // The first hover on a move after a change runs the program (bounded) for its times.
+         // The first hover on a move after a change waits for the program's
+         // run (robotsim check's, on the run worker) for its times.
          flip = !flip;
          send(server, change(++version, digitPos, flip ? "2" : "1"));
          server.publishPending();
@@ -180,7 +203,7 @@ nlohmann::json benchLsp(const Options& options) {
   report(out, "hover_label", "hover on a label", samples[2], 5);
   report(out, "completion_labels", "completion of a jump target (1,000 labels)", samples[3], 5);
   report(out, "completion_instructions", "completion of an instruction", samples[4], 5);
-  report(out, "change_then_hover_move", "a change, its diagnostics, then hover on a move (runs)", samples[5], 60);
+  report(out, "change_then_hover_move", "a change, its diagnostics, then hover on a move (waits for the run)", samples[5], 60);
   return out;
 }
 

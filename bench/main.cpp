@@ -20,7 +20,8 @@ namespace {
 using rs::bench::Options;
 
 constexpr std::string_view kUsage =
-    "usage: robotsim_bench [--reps N] [--json FILE] [--only memory|testrun|dispatch|compile|startup|snapshot|test|errors|lsp|debug]\n"
+    "usage: robotsim_bench [--reps N] [--json FILE]\n"
+    "                      [--only memory|testrun|dispatch|compile|startup|snapshot|test|errors|lsp|lsp_runs|lsp_format|debug]\n"
     "                      [--robotsim PATH] [--lua PATH] [--luac PATH] [--workdir DIR]\n";
 
 std::string firstLine(const std::string& path, std::string_view prefix = {}) {
@@ -77,9 +78,10 @@ bool parse(int argc, char** argv, Options& o, std::string& only) {
     return false;
   }
   if (!only.empty() && only != "memory" && only != "testrun" && only != "dispatch" && only != "compile" &&
-      only != "startup" && only != "snapshot" && only != "test" && only != "errors" && only != "lsp" && only != "debug") {
-    std::cerr << "robotsim_bench: --only takes memory, testrun, dispatch, compile, startup, snapshot, test, errors, lsp "
-                 "or debug\n";
+      only != "startup" && only != "snapshot" && only != "test" && only != "errors" && only != "lsp" &&
+      only != "lsp_runs" && only != "lsp_format" && only != "debug") {
+    std::cerr << "robotsim_bench: --only takes memory, testrun, dispatch, compile, startup, snapshot, test, errors, lsp, "
+                 "lsp_runs, lsp_format or debug\n";
     return false;
   }
   return true;
@@ -114,6 +116,8 @@ int main(int argc, char** argv) {
     if (only.empty() || only == "test") summary["test"] = rs::bench::benchTestSuite(options);
     if (only.empty() || only == "errors") summary["errors"] = rs::bench::benchErrors(options);
     if (only.empty() || only == "lsp") summary["lsp"] = rs::bench::benchLsp(options);
+    if (only.empty() || only == "lsp_runs") summary["lsp_runs"] = rs::bench::benchLspRuns(options);
+    if (only.empty() || only == "lsp_format") summary["lsp_format"] = rs::bench::benchLspFormat(options);
     if (only.empty() || only == "debug") summary["debug"] = rs::bench::benchDebug(options);
   } catch (const std::exception& e) {
     std::fflush(stdout);

@@ -1,8 +1,11 @@
 // Method names to handlers. A request's handler returns its result or an
-// error; a notification's returns nothing. The dispatcher answers what no
-// handler knows (MethodNotFound for a request; an unknown notification is
-// ignored) and turns a handler that trips over malformed params (a JSON
-// type error) into InvalidParams instead of an exception leaving the server.
+// error; a notification's returns nothing. Handlers read their params
+// through lsp::Field (params.h), which checks every field's type. The
+// dispatcher answers what no handler knows (MethodNotFound for a request;
+// an unknown notification is ignored) and turns a handler that meets
+// malformed params (BadParams, or a JSON type error from deeper down) into
+// InvalidParams, or for a notification into the message to log, instead
+// of an exception leaving the server.
 #pragma once
 
 #include <functional>
@@ -12,6 +15,7 @@
 #include <variant>
 
 #include "lsp/json.h"
+#include "lsp/params.h"
 
 namespace rs::lsp {
 
@@ -35,15 +39,16 @@ struct RpcError {
 
 using Reply = std::variant<Json, RpcError>;
 
-/// {"jsonrpc":"2.0","id":id,"result":...} or {..., "error":{code,message}}.
-Json response(const Json& id, const Reply& reply);
+/// {"jsonrpc":"2.0","id":id,"result":...} or {..., "error":{code,message}}
+/// (the result moved in: a large one is not copied).
+Json response(const Json& id, Reply&& reply);
 /// {"jsonrpc":"2.0","method":method,"params":params}.
 Json notification(std::string_view method, Json params);
 
 class Dispatcher {
  public:
-  using RequestHandler = std::function<Reply(const Json& params)>;
-  using NotificationHandler = std::function<void(const Json& params)>;
+  using RequestHandler = std::function<Reply(const Field& params)>;
+  using NotificationHandler = std::function<void(const Field& params)>;
 
   void onRequest(const std::string& method, RequestHandler handler);
   void onNotification(const std::string& method, NotificationHandler handler);
@@ -51,8 +56,11 @@ class Dispatcher {
 
   /// The reply to a request (MethodNotFound when no handler has it).
   Reply request(const std::string& method, const Json& params) const;
-  /// Runs a notification's handler; false when there is none.
-  bool notify(const std::string& method, const Json& params) const;
+  /// Runs a notification's handler: what was wrong with its params, if
+  /// anything ("" when it ran, or when no handler has it).
+  std::string notify(const std::string& method, const Json& params) const;
+  /// Runs `handler` with the same care: malformed params are InvalidParams.
+  static Reply guarded(std::string_view method, const Json& params, const RequestHandler& handler);
 
  private:
   std::map<std::string, RequestHandler, std::less<>> requests_;

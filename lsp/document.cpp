@@ -122,14 +122,20 @@ Range Document::rangeOf(diag::Pos pos, std::size_t length, Encoding enc) const {
 }
 
 Range Document::wordAt(diag::Pos pos, Encoding enc) const {
-  const Position start = fromPos(pos, enc);
-  if (pos.line == 0) return {start, start};
-  const std::string_view text = line(start.line);
-  std::size_t i = bytesFor(text, start.character, enc);
+  if (pos.line == 0 || pos.line > lineStarts_.size()) return {};
+  const std::string_view text = line(pos.line - 1);
+  const std::size_t skip = pos.line == 1 ? text.size() - diag::withoutByteOrderMark(text).size() : 0;
+  return wordRange(text.substr(skip), pos.line - 1, pos.col, unitsOf(text.substr(0, skip), enc), enc);
+}
+
+Range wordRange(std::string_view line, std::uint32_t lineIndex, std::uint32_t col, std::uint32_t lead, Encoding enc) {
+  std::size_t i = 0;
+  for (std::uint32_t c = 1; c < col && i < line.size(); ++c)
+    i += std::min(charBytes(static_cast<unsigned char>(line[i])), line.size() - i);
   std::size_t end = i;
-  while (end < text.size() && text[end] != ' ' && text[end] != '\t' && text[end] != ';') ++end;
-  if (end == i && i < text.size()) end = i + charBytes(static_cast<unsigned char>(text[i]));
-  return {start, {start.line, unitsOf(text.substr(0, end), enc)}};
+  while (end < line.size() && line[end] != ' ' && line[end] != '\t' && line[end] != ';') ++end;
+  if (end == i && i < line.size()) end = std::min(i + charBytes(static_cast<unsigned char>(line[i])), line.size());
+  return {{lineIndex, lead + unitsOf(line.substr(0, i), enc)}, {lineIndex, lead + unitsOf(line.substr(0, end), enc)}};
 }
 
 void Document::edit(const std::optional<Range>& range, std::string_view text, Encoding enc) {

@@ -84,6 +84,13 @@ class Document {
   bool invalidUtf8_ = false;
 };
 
+/// The range a diagnostic at column `col` (1-based, in characters) of line
+/// `lineIndex` (0-based) underlines: the word there (a run of characters
+/// other than blanks and ';'), at least one character when the line has
+/// one. `line` is the line as the compiler read it; `lead` counts the units
+/// before it that the compiler does not see (a byte-order mark).
+Range wordRange(std::string_view line, std::uint32_t lineIndex, std::uint32_t col, std::uint32_t lead, Encoding enc);
+
 /// Column units of `text` (a piece of one line) in the encoding.
 std::uint32_t unitsOf(std::string_view text, Encoding enc);
 /// Bytes of `line` that `units` columns cover (clamped; never inside a character).

@@ -9,6 +9,7 @@ namespace rs::lsp {
 
 using wire::Frame;
 using wire::FrameParser;
+using wire::frameHeader;
 using wire::frameMessage;
 using wire::kMaxHeaderBytes;
 using wire::kMaxMessageBytes;

@@ -36,6 +36,11 @@ IncomingMessage readMessage(const Frame& frame) {
   if (frame.kind != Frame::Kind::Message)
     return answeredWithError(nullptr, frame.kind == Frame::Kind::TooLarge ? errc::kInvalidRequest : errc::kParseError,
                    frame.problem);
+  // JSON has no NUL byte outside a string's \u0000, and nlohmann's parser
+  // takes one for the end of the text: `{"id":1}` NUL junk would pass.
+  if (const std::size_t nul = frame.body.find('\0'); nul != std::string::npos)
+    return answeredWithError(nullptr, errc::kParseError,
+                             "the message is not valid JSON: a NUL byte at byte " + std::to_string(nul + 1));
   const bool invalidUtf8 = diag::findInvalidUtf8(frame.body).found;
   Json message = Json::parse(invalidUtf8 ? withoutInvalidUtf8(frame.body) : frame.body, nullptr, false);
   if (message.is_discarded()) return answeredWithError(nullptr, errc::kParseError, "the message is not valid JSON");
@@ -58,7 +63,7 @@ IncomingMessage readMessage(const Frame& frame) {
   m.kind = hasId ? IncomingMessage::Kind::Request : IncomingMessage::Kind::Notification;
   m.id = id;
   m.method = message["method"].get<std::string>();
-  m.params = message.value("params", Json(nullptr));
+  if (const auto params = message.find("params"); params != message.end()) m.params = std::move(*params);  // no copy of a large text
   m.invalidUtf8 = invalidUtf8;
   return m;
 }

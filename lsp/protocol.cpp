@@ -10,10 +10,16 @@ Json location(const std::string& uri, const Range& r) { return {{"uri", uri}, {"
 
 Json textEdit(const Range& r, std::string newText) { return {{"range", toJson(r)}, {"newText", std::move(newText)}}; }
 
-Position positionFrom(const Json& j) {
-  return {j.at("line").get<std::uint32_t>(), j.at("character").get<std::uint32_t>()};
+Position positionFrom(const Field& f) {
+  f.object();
+  return {f["line"].uinteger(), f["character"].uinteger()};
 }
 
-Range rangeFrom(const Json& j) { return {positionFrom(j.at("start")), positionFrom(j.at("end"))}; }
+Range rangeFrom(const Field& f) {
+  f.object();
+  return {positionFrom(f["start"]), positionFrom(f["end"])};
+}
+
+std::string documentUri(const Field& params) { return params["textDocument"]["uri"].string(); }
 
 }  // namespace rs::lsp

@@ -6,6 +6,7 @@
 
 #include "lsp/document.h"
 #include "lsp/json.h"
+#include "lsp/params.h"
 
 namespace rs::lsp {
 
@@ -14,10 +15,12 @@ Json toJson(const Range& r);
 Json location(const std::string& uri, const Range& r);
 Json textEdit(const Range& r, std::string newText);
 
-/// From params (missing or mistyped fields throw Json::exception, which
-/// the dispatcher answers with InvalidParams).
-Position positionFrom(const Json& j);
-Range rangeFrom(const Json& j);
+/// From params (a missing or mistyped field throws BadParams, which the
+/// dispatcher answers with InvalidParams).
+Position positionFrom(const Field& f);
+Range rangeFrom(const Field& f);
+/// params.textDocument.uri
+std::string documentUri(const Field& params);
 
 /// LSP's SymbolKind, CompletionItemKind, DiagnosticSeverity values used here.
 namespace symbol_kind {

@@ -4,6 +4,7 @@
 
 #include "base/file_io.h"
 #include "base/text.h"
+#include "lsp/params.h"
 #include "lsp/features/features.h"
 #include "lsp/protocol.h"
 #include "lsp/uri.h"
@@ -40,10 +41,25 @@ Json capabilities(Encoding enc) {
 
 }  // namespace
 
-Server::Server(Send send, std::ostream& log) : send_(std::move(send)), log_(log) { registerHandlers(); }
+Server::Server(Send send, std::ostream& log)
+    : send_(std::move(send)), log_(log), runs_([this](const RunJob& job, const CheckedRun& run) { runMade(job, run); }) {
+  registerHandlers();
+}
 
 void Server::send(const Json& message) {
+  const std::lock_guard<std::mutex> lock(sendMutex_);
+  sendLocked(message);
+}
+
+void Server::sendLocked(const Json& message) {
   if (!clientGone_ && !send_(message)) clientGone_ = true;
+}
+
+// A notification that could not be acted on has no answer: it is said in
+// the server's log and in the client's (window/logMessage, an error).
+void Server::logProblem(const std::string& problem) {
+  log_ << "robotsim lsp: " << problem << '\n';
+  send(notification("window/logMessage", {{"type", 1}, {"message", "robotsim lsp: " + problem}}));
 }
 
 void Server::receive(const std::vector<Frame>& frames) {
@@ -54,8 +70,8 @@ void Server::receive(const std::vector<Frame>& frames) {
   for (const Frame& f : frames) {
     if (f.kind != Frame::Kind::Message) log_ << "robotsim lsp: " << f.problem << '\n';
     IncomingMessage m = readMessage(f);
-    if (m.kind != IncomingMessage::Kind::Invalid && m.kind != IncomingMessage::Kind::Response &&
-        m.method == "$/cancelRequest" && m.params.is_object() && m.params.contains("id"))
+    if (m.kind == IncomingMessage::Kind::Notification && m.method == "$/cancelRequest" && m.params.is_object() &&
+        m.params.contains("id") && (m.params["id"].is_string() || m.params["id"].is_number_integer()))
       cancelled.insert(idKey(m.params["id"]));
     messages.push_back(std::move(m));
   }
@@ -71,7 +87,7 @@ void Server::handle(const IncomingMessage& m, const std::set<std::string>& cance
     send(response(m.id, m.error));
     return;
   }
-  if (m.kind == Kind::Response) return;  // a client's response: nothing asked for one
+  if (m.kind == Kind::Response) return;  // a client's response: to a refresh, which needs no answer
   const std::string& method = m.method;
   const Json& params = m.params;
   if (m.kind == Kind::Notification) {
@@ -81,8 +97,9 @@ void Server::handle(const IncomingMessage& m, const std::set<std::string>& cance
     }
     if (state_ != State::Running || method.starts_with("$/")) return;
     currentInvalidUtf8_ = m.invalidUtf8;
-    dispatcher_.notify(method, params);
+    const std::string problem = dispatcher_.notify(method, params);
     currentInvalidUtf8_ = false;
+    if (!problem.empty()) logProblem(problem + " (the notification changed nothing)");
     return;
   }
   const Json& id = m.id;
@@ -95,8 +112,9 @@ void Server::handle(const IncomingMessage& m, const std::set<std::string>& cance
     return;
   }
   if (method == "initialize") {
-    send(response(id, state_ == State::Uninitialized ? initialize(params)
-                                                     : Reply(RpcError{errc::kInvalidRequest, "initialize was already received"})));
+    send(response(id, state_ == State::Uninitialized
+                          ? Dispatcher::guarded(method, params, [this](const Field& p) { return initialize(p); })
+                          : Reply(RpcError{errc::kInvalidRequest, "initialize was already received"})));
     return;
   }
   if (shutdown_) {
@@ -106,58 +124,96 @@ void Server::handle(const IncomingMessage& m, const std::set<std::string>& cance
   send(response(id, dispatcher_.request(method, params)));
 }
 
-void Server::settingsFrom(const Json& options) {
-  if (!options.is_object()) return;
-  const Json& s = options.contains("robotsim") && options["robotsim"].is_object() ? options["robotsim"] : options;
+namespace {
+
+// robotsim.cell, robotsim.lib, robotsim.collisions: at the top level of
+// the options or under "robotsim". Options that are not an object say
+// nothing to this server (LSPAny).
+Settings settingsFrom(const Field& options) {
   Settings settings;
-  if (s.contains("cell") && s["cell"].is_string()) settings.cell = s["cell"].get<std::string>();
-  if (s.contains("lib") && s["lib"].is_array())
-    for (const Json& dir : s["lib"])
-      if (dir.is_string()) settings.libDirs.push_back(dir.get<std::string>());
-  workspace_.setSettings(std::move(settings));
+  if (!options.present() || !options.any().is_object()) return settings;
+  const Field s = options.any().contains("robotsim") ? options["robotsim"] : options;
+  if (!s.present()) return settings;
+  s.object();
+  settings.cell = s["cell"].string("");
+  const Field lib = s["lib"];
+  for (std::size_t i = 0; i < lib.size(false); ++i) settings.libDirs.push_back(lib.element(i).string());
+  const std::string collisions = s["collisions"].string("error");
+  const std::optional<runtime::CollisionMode> mode = runtime::collisionModeByName(collisions);
+  if (!mode) throw BadParams(fmt::format("{}: expected \"error\", \"warn\" or \"off\", found \"{}\"",
+                                         s["collisions"].path(), base::safeText(collisions)));
+  settings.collisions = *mode;
+  return settings;
 }
 
-Reply Server::initialize(const Json& params) {
-  if (!params.is_object()) return RpcError{errc::kInvalidParams, "initialize takes an object"};
-  const Json caps = params.value("capabilities", Json::object());
-  if (caps.contains("general") && caps["general"].contains("positionEncodings"))
-    for (const Json& e : caps["general"]["positionEncodings"])
-      if (e == "utf-8") encoding_ = Encoding::Utf8;
-  const Json completionItem =
-      caps.value("textDocument", Json::object()).value("completion", Json::object()).value("completionItem", Json::object());
-  snippets_ = completionItem.value("snippetSupport", false);
+}  // namespace
+
+Reply Server::initialize(const Field& params) {
+  params.object();
+  // Everything is read (and its type checked) before anything changes: a
+  // refused initialize leaves the server as it was, ready for another.
+  const Field caps = params["capabilities"];
+  Encoding encoding = Encoding::Utf16;
+  const Field encodings = caps["general"]["positionEncodings"];
+  for (std::size_t i = 0; i < encodings.size(false); ++i)
+    if (encodings.element(i).string() == "utf-8") encoding = Encoding::Utf8;
+  const bool snippets = caps["textDocument"]["completion"]["completionItem"]["snippetSupport"].boolean(false);
+  const bool refresh = caps["workspace"]["inlayHint"]["refreshSupport"].boolean(false);
+  const std::string rootUri = params["rootUri"].string("");
   std::string root;
-  if (params.contains("workspaceFolders") && params["workspaceFolders"].is_array() && !params["workspaceFolders"].empty())
-    root = pathOfUri(params["workspaceFolders"][0].value("uri", ""));
-  if (root.empty() && params.contains("rootUri") && params["rootUri"].is_string())
-    root = pathOfUri(params["rootUri"].get<std::string>());
+  const Field folders = params["workspaceFolders"];
+  for (std::size_t i = 0; i < folders.size(false); ++i) {
+    const std::string uri = folders.element(i)["uri"].string();
+    if (i == 0) root = pathOfUri(uri);
+  }
+  if (root.empty()) root = pathOfUri(rootUri);
+  Settings settings = settingsFrom(params["initializationOptions"]);
+
+  encoding_ = encoding;
+  snippets_ = snippets;
+  refreshInlayHints_ = refresh;
   workspace_.setRoot(root);
-  settingsFrom(params.value("initializationOptions", Json(nullptr)));
+  workspace_.setSettings(std::move(settings));
   state_ = State::Running;
   return Json{{"capabilities", capabilities(encoding_)}, {"serverInfo", {{"name", "robotsim"}, {"version", "0.1.0"}}}};
 }
 
-void Server::didOpen(const Json& params, bool invalidUtf8) {
-  const Json& td = params.at("textDocument");
-  const std::string uri = td.at("uri").get<std::string>();
-  Document& doc = workspace_.open(uri, languageOf(td.value("languageId", ""), uri), td.value("version", 0),
-                                  td.at("text").get<std::string>());
+void Server::didOpen(const Field& params, bool invalidUtf8) {
+  const Field td = params["textDocument"];
+  const std::string uri = td["uri"].string();
+  const std::string languageId = td["languageId"].string("");
+  const std::int64_t version = td["version"].optionalInteger().value_or(0);
+  Document& doc = workspace_.open(uri, languageOf(languageId, uri), version, td["text"].string());
   doc.setHadInvalidUtf8(invalidUtf8);
   if (doc.language() == Language::Description) workspace_.descriptionsChanged(), allProgramsChanged();
+  if (doc.language() == Language::Stimuli) workspace_.stimuliChanged(), allProgramsChanged();
   pending_.insert(uri);
 }
 
-void Server::didChange(const Json& params, bool invalidUtf8) {
-  const Json& td = params.at("textDocument");
-  Document* doc = workspace_.document(td.at("uri").get<std::string>());
-  if (!doc) return;
-  for (const Json& change : params.at("contentChanges")) {
+void Server::didChange(const Field& params, bool invalidUtf8) {
+  const Field td = params["textDocument"];
+  Document* doc = workspace_.document(td["uri"].string());
+  const std::optional<std::int32_t> version = td["version"].optionalInteger();
+  // Every change is read before the first is made: a malformed one
+  // leaves the document as it was.
+  struct Change {
     std::optional<Range> range;
-    if (change.contains("range")) range = rangeFrom(change["range"]);
-    doc->edit(range, change.at("text").get<std::string>(), encoding_);
+    std::string text;
+  };
+  std::vector<Change> changes;
+  const Field list = params["contentChanges"];
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Field c = list.element(i);
+    c.object();
+    changes.push_back({c["range"].present() ? std::optional<Range>(rangeFrom(c["range"])) : std::nullopt,
+                       c["text"].string()});
   }
-  if (td.contains("version") && td["version"].is_number_integer()) doc->setVersion(td["version"].get<std::int64_t>());
+  if (!doc) return;
+  workspace_.changing(doc->uri());
+  for (const Change& change : changes) doc->edit(change.range, change.text, encoding_);
+  if (version) doc->setVersion(*version);
   if (invalidUtf8) doc->setHadInvalidUtf8(true);
+  if (doc->language() == Language::Stimuli) workspace_.stimuliChanged(), allProgramsChanged();
   pending_.insert(doc->uri());
 }
 
@@ -185,13 +241,40 @@ void Server::publishPending() {
     const Document* doc = workspace_.document(uri);
     Json params = {{"uri", uri}, {"diagnostics", doc ? diagnosticsOf(*doc) : Json::array()}};
     if (doc) params["version"] = doc->version();
-    send(notification("textDocument/publishDiagnostics", std::move(params)));
+    std::shared_ptr<const ProgramAnalysis> analysis;
+    if (doc && doc->language() == Language::Program) analysis = workspace_.program(*doc);
+    // A run made already (the same version published again) goes with it.
+    if (analysis)
+      if (const CheckedRun* run = analysis->run(); run && run->end != CheckedRun::End::Abandoned)
+        for (Json& d : runDiagnostics(*analysis, uri, encoding_, *run)) params["diagnostics"].push_back(std::move(d));
+    send(notification("textDocument/publishDiagnostics", params));
+    // Then its run, off this thread: what it finds follows for this version.
+    if (analysis && analysis->ok() && !shutdown_ && analysis->askForRun())
+      runs_.submit({uri, doc->version(), analysis, std::move(params["diagnostics"]), encoding_,
+                    workspace_.runOptions(analysis->source().name())});
   }
   pending_.clear();
 }
 
-Reply Server::workspaceSymbols(const Json& params) {
-  const std::string query = params.value("query", "");
+void Server::runMade(const RunJob& job, const CheckedRun& run) {
+  const std::lock_guard<std::mutex> lock(sendMutex_);
+  // Checked under the lock every message goes out under: once an edit
+  // has abandoned this version, nothing of it is published.
+  if (job.analysis->runControl().abandoned() || run.end == CheckedRun::End::Abandoned) return;
+  if (!run.diagnostics.empty()) {
+    Json all = job.compileDiagnostics;
+    for (Json& d : runDiagnostics(*job.analysis, job.uri, job.enc, run)) all.push_back(std::move(d));
+    sendLocked(notification("textDocument/publishDiagnostics",
+                            {{"uri", job.uri}, {"version", job.version}, {"diagnostics", std::move(all)}}));
+  }
+  if (refreshInlayHints_ && job.analysis->answeredWithoutRun())
+    sendLocked({{"jsonrpc", "2.0"},
+                {"id", fmt::format("robotsim-inlay-refresh-{}", ++refreshes_)},
+                {"method", "workspace/inlayHint/refresh"}});
+}
+
+Reply Server::workspaceSymbols(const Field& params) {
+  const std::string query = params["query"].string("");
   Json out = Json::array();
   std::set<std::string> seen;
   for (const auto& [uri, doc] : workspace_.documents()) {
@@ -213,94 +296,106 @@ Reply Server::workspaceSymbols(const Json& params) {
 
 void Server::registerHandlers() {
   Dispatcher& d = dispatcher_;
-  d.onRequest("shutdown", [this](const Json&) -> Reply {
+  d.onRequest("shutdown", [this](const Field&) -> Reply {
     shutdown_ = true;
+    workspace_.abandonRuns();
     return Json(nullptr);
   });
-  d.onNotification("initialized", [](const Json&) {});
-  d.onNotification("textDocument/didOpen", [this](const Json& p) { didOpen(p, currentInvalidUtf8_); });
-  d.onNotification("textDocument/didChange", [this](const Json& p) { didChange(p, currentInvalidUtf8_); });
-  d.onNotification("textDocument/didClose", [this](const Json& p) {
-    const std::string uri = p.at("textDocument").at("uri").get<std::string>();
+  d.onNotification("initialized", [](const Field&) {});
+  d.onNotification("textDocument/didOpen", [this](const Field& p) { didOpen(p, currentInvalidUtf8_); });
+  d.onNotification("textDocument/didChange", [this](const Field& p) { didChange(p, currentInvalidUtf8_); });
+  d.onNotification("textDocument/didClose", [this](const Field& p) {
+    const std::string uri = documentUri(p);
+    const Document* doc = workspace_.document(uri);
+    // A closed stimuli file is read from disk again (its saved text).
+    if (doc && doc->language() == Language::Stimuli) workspace_.stimuliChanged(), allProgramsChanged();
     workspace_.close(uri);
     pending_.insert(uri);  // publishes an empty list: the markers go
   });
-  d.onNotification("textDocument/didSave", [this](const Json& p) {
-    if (languageOf("", p.at("textDocument").at("uri").get<std::string>()) == Language::Description)
-      workspace_.descriptionsChanged(), allProgramsChanged();
+  d.onNotification("textDocument/didSave", [this](const Field& p) {
+    const Language language = languageOf("", documentUri(p));
+    if (language == Language::Description) workspace_.descriptionsChanged(), allProgramsChanged();
+    if (language == Language::Stimuli) workspace_.stimuliChanged(), allProgramsChanged();
   });
-  d.onNotification("workspace/didChangeConfiguration", [this](const Json& p) {
-    settingsFrom(p.value("settings", Json(nullptr)));
+  d.onNotification("workspace/didChangeConfiguration", [this](const Field& p) {
+    workspace_.setSettings(settingsFrom(p["settings"]));
     allProgramsChanged();
   });
-  d.onNotification("workspace/didChangeWatchedFiles", [this](const Json&) {
+  d.onNotification("workspace/didChangeWatchedFiles", [this](const Field&) {
     workspace_.descriptionsChanged();
     allProgramsChanged();
   });
 
   // Each request on a document: its analysis, by language.
-  const auto on = [this](const std::string& method, std::function<Reply(const ProgramContext&, const Json&)> program,
-                         std::function<Reply(const Document&, const Json&)> other = nullptr) {
-    dispatcher_.onRequest(method, [this, program, other](const Json& params) -> Reply {
-      Document* doc = workspace_.document(params.at("textDocument").at("uri").get<std::string>());
+  const auto on = [this](const std::string& method, std::function<Reply(const ProgramContext&, const Field&)> program,
+                         std::function<Reply(const Document&, const Field&)> other = nullptr) {
+    dispatcher_.onRequest(method, [this, program, other](const Field& params) -> Reply {
+      Document* doc = workspace_.document(documentUri(params));
       if (!doc) return Json(nullptr);
       if (doc->language() != Language::Program) return other ? other(*doc, params) : Reply(Json(nullptr));
       const auto analysis = workspace_.program(*doc);
       return program({*doc, *analysis, encoding_}, params);
     });
   };
-  const auto position = [](const Json& params) { return positionFrom(params.at("position")); };
-  on("textDocument/hover", [position](const ProgramContext& p, const Json& q) -> Reply { return hover(p, position(q)); },
-     [this, position](const Document& doc, const Json& q) -> Reply {
+  const auto position = [](const Field& params) { return positionFrom(params["position"]); };
+  on("textDocument/hover", [position](const ProgramContext& p, const Field& q) -> Reply { return hover(p, position(q)); },
+     [this, position](const Document& doc, const Field& q) -> Reply {
        if (doc.language() == Language::Description)
          return descriptionHover(doc, encoding_, position(q), workspace_.cells().searchPath());
        if (doc.language() == Language::Stimuli) return stimuliHover(doc, encoding_, position(q));
        return Json(nullptr);
      });
   on("textDocument/definition",
-     [this, position](const ProgramContext& p, const Json& q) -> Reply {
+     [this, position](const ProgramContext& p, const Field& q) -> Reply {
        return definition(p, position(q), workspace_.cells().searchPath());
      },
-     [this, position](const Document& doc, const Json& q) -> Reply {
+     [this, position](const Document& doc, const Field& q) -> Reply {
        if (doc.language() != Language::Description) return Json(nullptr);
        return descriptionDefinition(doc, encoding_, position(q), workspace_.cells().searchPath());
      });
-  on("textDocument/references", [position](const ProgramContext& p, const Json& q) -> Reply {
-    return references(p, position(q), q.value("context", Json::object()).value("includeDeclaration", true));
+  on("textDocument/references", [position](const ProgramContext& p, const Field& q) -> Reply {
+    return references(p, position(q), q["context"]["includeDeclaration"].boolean(true));
   });
   on("textDocument/documentHighlight",
-     [position](const ProgramContext& p, const Json& q) -> Reply { return documentHighlight(p, position(q)); });
+     [position](const ProgramContext& p, const Field& q) -> Reply { return documentHighlight(p, position(q)); });
   on("textDocument/prepareRename",
-     [position](const ProgramContext& p, const Json& q) -> Reply { return prepareRename(p, position(q)); });
-  on("textDocument/rename", [position](const ProgramContext& p, const Json& q) -> Reply {
-    return rename(p, position(q), q.at("newName").get<std::string>());
+     [position](const ProgramContext& p, const Field& q) -> Reply { return prepareRename(p, position(q)); });
+  on("textDocument/rename", [position](const ProgramContext& p, const Field& q) -> Reply {
+    const Position at = position(q);
+    return rename(p, at, q["newName"].string());
   });
-  on("textDocument/documentSymbol", [](const ProgramContext& p, const Json&) -> Reply { return documentSymbols(p); },
-     [this](const Document& doc, const Json&) -> Reply {
+  on("textDocument/documentSymbol", [](const ProgramContext& p, const Field&) -> Reply { return documentSymbols(p); },
+     [this](const Document& doc, const Field&) -> Reply {
        if (doc.language() == Language::Description) return descriptionSymbols(doc, encoding_);
        if (doc.language() == Language::Stimuli) return stimuliSymbols(doc, encoding_);
        return Json::array();
      });
-  on("textDocument/foldingRange", [](const ProgramContext& p, const Json&) -> Reply { return foldingRanges(p); });
+  on("textDocument/foldingRange", [](const ProgramContext& p, const Field&) -> Reply { return foldingRanges(p); });
   on("textDocument/formatting",
-     [this](const ProgramContext& p, const Json&) -> Reply { return formatting(p.doc, encoding_); });
-  on("textDocument/completion", [this, position](const ProgramContext& p, const Json& q) -> Reply {
+     [](const ProgramContext& p, const Field&) -> Reply { return formatting(p); });
+  on("textDocument/completion", [this, position](const ProgramContext& p, const Field& q) -> Reply {
     return completion(p, position(q), snippets_);
   });
   on("textDocument/signatureHelp",
-     [position](const ProgramContext& p, const Json& q) -> Reply { return signatureHelp(p, position(q)); });
-  on("textDocument/codeAction", [](const ProgramContext& p, const Json& q) -> Reply {
-    return codeActions(p, rangeFrom(q.at("range")), q.value("context", Json::object()).value("diagnostics", Json::array()));
+     [position](const ProgramContext& p, const Field& q) -> Reply { return signatureHelp(p, position(q)); });
+  on("textDocument/codeAction", [](const ProgramContext& p, const Field& q) -> Reply {
+    const Range range = rangeFrom(q["range"]);
+    return codeActions(p, range, q["context"]["diagnostics"]);
   });
   on("textDocument/inlayHint",
-     [](const ProgramContext& p, const Json& q) -> Reply { return inlayHints(p, rangeFrom(q.at("range"))); });
+     [](const ProgramContext& p, const Field& q) -> Reply { return inlayHints(p, rangeFrom(q["range"])); });
   on("textDocument/semanticTokens/full",
-     [](const ProgramContext& p, const Json&) -> Reply { return semanticTokens(p); });
-  d.onRequest("workspace/symbol", [this](const Json& params) { return workspaceSymbols(params); });
+     [](const ProgramContext& p, const Field&) -> Reply { return semanticTokens(p); });
+  d.onRequest("workspace/symbol", [this](const Field& params) { return workspaceSymbols(params); });
 }
 
 int serve(Input& in, Output& out, std::ostream& log) {
-  Server server([&out](const Json& message) { return out.write(frameMessage(dumpJson(message))); }, log);
+  Server server(
+      [&out](const Json& message) {
+        const std::string body = dumpJson(message);  // header and body apart: a large answer is not copied again
+        return out.write(frameHeader(body.size())) && out.write(body);
+      },
+      log);
   FrameParser parser;
   std::vector<char> buffer(std::size_t{1} << 16);
   bool eof = false;

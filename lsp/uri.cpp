@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
+#include <system_error>
+
 namespace rs::lsp {
 
 namespace {
@@ -37,9 +40,15 @@ std::string pathOfUri(std::string_view uri) {
   return path;
 }
 
-std::string uriOfPath(std::string_view path) {
+std::string uriOfPath(std::string_view given) {
+  // One file, one URI: "cells/../cell.rsd" and "./cell.rsd" are the file
+  // "cell.rsd", made absolute (editors match URIs as strings).
+  std::error_code ec;
+  std::filesystem::path path(given);
+  if (!given.empty() && !path.is_absolute()) path = std::filesystem::absolute(path, ec);
+  const std::string normal = path.lexically_normal().string();
   std::string uri = "file://";
-  for (const char c : path) {
+  for (const char c : normal) {
     const auto u = static_cast<unsigned char>(c);
     const bool keep = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' ||
                       c == '.' || c == '_' || c == '~' || c == '/';

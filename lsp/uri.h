@@ -9,7 +9,8 @@ namespace rs::lsp {
 
 /// The path of a file URI (percent-escapes decoded), or "" for another scheme.
 std::string pathOfUri(std::string_view uri);
-/// The file URI of an absolute path (what is not unreserved is escaped).
+/// The file URI of a path, made absolute and normal (no "." or ".."
+/// parts; what is not unreserved is escaped).
 std::string uriOfPath(std::string_view path);
 
 }  // namespace rs::lsp

@@ -4,19 +4,32 @@
 #include <filesystem>
 #include <system_error>
 
+#include "base/ascii.h"
 #include "lsp/uri.h"
 
 namespace rs::lsp {
 
 namespace fs = std::filesystem;
 
+void Workspace::changing(const std::string& uri) {
+  if (const auto it = programs_.find(uri); it != programs_.end() && it->second.analysis)
+    it->second.analysis->runControl().abandon();
+}
+
+void Workspace::abandonRuns() {
+  for (const auto& [uri, cached] : programs_)
+    if (cached.analysis) cached.analysis->runControl().abandon();
+}
+
 Document& Workspace::open(const std::string& uri, Language language, std::int64_t version, std::string text) {
+  changing(uri);
   programs_.erase(uri);
   docs_.erase(uri);
   return docs_.try_emplace(uri, uri, language, version, std::move(text)).first->second;
 }
 
 void Workspace::close(const std::string& uri) {
+  changing(uri);
   docs_.erase(uri);
   programs_.erase(uri);
 }
@@ -44,6 +57,7 @@ std::shared_ptr<const ProgramAnalysis> Workspace::programFile(const std::string&
 std::shared_ptr<const ProgramAnalysis> Workspace::program(const Document& doc) {
   Cached& cached = programs_[doc.uri()];
   if (!cached.analysis || cached.revision != doc.revision()) {
+    if (cached.analysis) cached.analysis->runControl().abandon();
     const std::string path = pathOfUri(doc.uri());
     cached.analysis = programFile(path.empty() ? doc.uri() : path, doc.text());
     cached.revision = doc.revision();
@@ -54,12 +68,36 @@ std::shared_ptr<const ProgramAnalysis> Workspace::program(const Document& doc) {
 void Workspace::setSettings(Settings settings) {
   settings_ = std::move(settings);
   cells_.setLibDirs(settings_.libDirs);
+  abandonRuns();
   programs_.clear();
 }
 
 void Workspace::descriptionsChanged() {
   cells_.clear();
+  abandonRuns();
   programs_.clear();
+}
+
+void Workspace::stimuliChanged() {
+  abandonRuns();
+  programs_.clear();
+}
+
+RunOptions Workspace::runOptions(const std::string& programPath) const {
+  RunOptions options;
+  options.collisions = settings_.collisions;
+  if (programPath.size() < 4 || !base::sameName(std::string_view(programPath).substr(programPath.size() - 4), ".rsp"))
+    return options;
+  const std::string stimuli = programPath.substr(0, programPath.size() - 4) + ".stim";
+  options.stimuliFile = fs::path(stimuli).filename().string();
+  for (const auto& [uri, doc] : docs_)
+    if (doc.language() == Language::Stimuli && pathOfUri(uri) == stimuli) {
+      options.stimuliText = doc.text();
+      return options;
+    }
+  std::error_code ec;
+  if (fs::is_regular_file(stimuli, ec)) options.stimuliPath = stimuli;  // read by the run, off this thread
+  return options;
 }
 
 std::vector<std::string> Workspace::files(std::string_view suffix, std::size_t limit) const {

@@ -12,14 +12,16 @@
 #include "lsp/cell_context.h"
 #include "lsp/document.h"
 #include "lsp/program_analysis.h"
+#include "runtime/collision_watch.h"
 
 namespace rs::lsp {
 
-/// `robotsim.cell` and `robotsim.lib` (initializationOptions or
-/// workspace/didChangeConfiguration).
+/// `robotsim.cell`, `robotsim.lib` and `robotsim.collisions`
+/// (initializationOptions or workspace/didChangeConfiguration).
 struct Settings {
   std::string cell;
   std::vector<std::string> libDirs;
+  runtime::CollisionMode collisions = runtime::CollisionMode::Error;  ///< as --collisions
 };
 
 class Workspace {
@@ -28,6 +30,11 @@ class Workspace {
   void close(const std::string& uri);
   Document* document(const std::string& uri);
   const std::map<std::string, Document>& documents() const { return docs_; }
+  /// The document is about to change: the run of its last analysis is
+  /// abandoned (a newer version is coming).
+  void changing(const std::string& uri);
+  /// Every run being made or waiting is abandoned (shutdown).
+  void abandonRuns();
 
   /// The up-to-date analysis of an open program.
   std::shared_ptr<const ProgramAnalysis> program(const Document& doc);
@@ -41,6 +48,12 @@ class Workspace {
   CellCache& cells() { return cells_; }
   /// Descriptions changed: cells are loaded again, programs checked again.
   void descriptionsChanged();
+  /// A stimuli file changed: programs are checked (and run) again.
+  void stimuliChanged();
+  /// The options of a program's checked run: the collisions setting, and
+  /// the stimuli file beside it (NAME.stim for NAME.rsp), as the editor
+  /// holds it when open, else the saved file, if any.
+  RunOptions runOptions(const std::string& programPath) const;
 
   /// The cell a program is checked against: its directive, else the
   /// setting, else "" (the default robot), resolved as --cell would be.

@@ -144,8 +144,8 @@ std::vector<Frame> parseFrames(std::string_view bytes, std::size_t maxBody) {
   return frames;
 }
 
-std::string frameMessage(std::string_view body) {
-  return fmt::format("Content-Length: {}\r\n\r\n{}", body.size(), body);
-}
+std::string frameHeader(std::size_t bodySize) { return fmt::format("Content-Length: {}\r\n\r\n", bodySize); }
+
+std::string frameMessage(std::string_view body) { return frameHeader(body.size()).append(body); }
 
 }  // namespace rs::wire

@@ -61,5 +61,8 @@ std::vector<Frame> parseFrames(std::string_view bytes, std::size_t maxBody = kMa
 
 /// `body` framed for the wire.
 std::string frameMessage(std::string_view body);
+/// The header block before a body of this size (a large body can then be
+/// written after it as it is, without a framed copy).
+std::string frameHeader(std::size_t bodySize);
 
 }  // namespace rs::wire

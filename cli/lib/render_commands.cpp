@@ -15,6 +15,7 @@
 #include "cli/lib/options.h"
 #include "cli/lib/report.h"
 #include "cli/lib/run_warnings.h"
+#include "launch/run_diagnostics.h"
 #include "runtime/render/animation.h"
 #include "runtime/render/collision_marks.h"
 #include "runtime/run/empty_close.h"
@@ -231,10 +232,10 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   if (run) {
     render::Moment m = render::momentOf(*run, o.at.empty() ? INT64_MAX : at);
     if (o.at.empty() && run->finished())  // at a moment --at picks, the run has not ended
-      printRunWarnings(err, runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
+      printRunWarnings(err, launch::runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
     if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
       const vm::Image& image = run->image();
-      launch::printDiagnostics(err, {runtimeDiagnostic(image, m.outcome, image.sourceName)}, loaded);
+      launch::printDiagnostics(err, {launch::stopDiagnostic(image, m.outcome, image.sourceName)}, loaded);
       // A collision stopped the run: draw it as it happened.
       const auto hits = run->collisions();
       stoppedByCollision = run->finished() && !hits.empty() && hits.back().instruction == m.outcome.index &&
@@ -331,11 +332,11 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   }
   if (!outcome.ok()) {
     const vm::Image& image = run->image();
-    const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
+    const diag::Diagnostic d = launch::stopDiagnostic(image, outcome, image.sourceName);
     launch::printDiagnostics(err, {d}, loaded);
     input.outcome = d.pos.line ? fmt::format("line {}: {}", d.pos.line, d.message) : d.message;
   }
-  printRunWarnings(err, runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
+  printRunWarnings(err, launch::runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
   if (const auto w = runtime::gripperWarning(*run, run->image().sourceName))  // shown under END
     input.warning = fmt::format("line {}: {}", w->pos.line, w->message);
   const render::Frames frames = render::framesOf(recording, input.eventSteps, input.frameRule);

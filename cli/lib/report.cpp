@@ -9,6 +9,7 @@
 #include "base/text.h"
 #include "cli/lib/profile_report.h"
 #include "cli/lib/trace.h"
+#include "launch/run_diagnostics.h"
 #include "runtime/run/empty_close.h"
 
 namespace rs::cli {
@@ -16,19 +17,6 @@ namespace rs::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::string_view reasonText(vm::StopReason r) {
-  switch (r) {
-    case vm::StopReason::End: return "finished";
-    case vm::StopReason::RuntimeError: return "runtime error";
-    case vm::StopReason::Deadlock: return "deadlock";
-    case vm::StopReason::StepLimit: return "step limit";
-    case vm::StopReason::TimeLimit: return "time limit";
-    case vm::StopReason::InstantLimit: return "clock standing still";
-    case vm::StopReason::Paused: return "paused";
-  }
-  return "?";
-}
 
 std::string lampList(std::uint8_t bits) {
   std::string s;
@@ -41,35 +29,6 @@ std::string lampList(std::uint8_t bits) {
 
 bool RunReport::ok() const {
   return run && run->outcome() && run->outcome()->ok() && !diag::hasErrors(diagnostics) && omitted.errors == 0;
-}
-
-namespace {
-
-// How to get past a stop, where the command line can help.
-std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) {
-  switch (outcome.reason) {
-    case vm::StopReason::StepLimit: return "allow more with --max-steps N";
-    case vm::StopReason::TimeLimit: return "allow more with --max-time SECONDS";
-    case vm::StopReason::Deadlock: return "inputs change only by --input N=ON@SECONDS or a --stimuli file";
-    case vm::StopReason::InstantLimit: return "give the loop a DELAY, a move or a WAITFOR, or a way out";
-    case vm::StopReason::RuntimeError:
-      // The main program ran on into a subroutine: its END is missing.
-      if (image.code[outcome.index].op == vm::Op::Return)  // its one failure: an empty call stack
-        return "did the program run on into a subroutine? an END before the subroutine stops it there";
-      return "";
-    case vm::StopReason::End:
-    case vm::StopReason::Paused: return "";
-  }
-  return "";
-}
-
-}  // namespace
-
-diag::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {
-  const diag::Pos pos{image.lines[outcome.index], image.columns[outcome.index]};
-  return {file, pos, diag::Severity::Error,
-          fmt::format("{}: {} (instruction {})", reasonText(outcome.reason), outcome.message, outcome.index + 1), {},
-          std::string(hintFor(image, outcome))};
 }
 
 namespace {
@@ -123,7 +82,7 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   const vm::RunOutcome o = *r.run->outcome();
   const std::string where = o.ok() ? "" : fmt::format(" at line {}", im.lines[o.index]);
   out << fmt::format("run of {} on {}: {}{}\n", base::safeText(im.sourceName), base::safeText(im.robotName),
-                     reasonText(o.reason), where);
+                     launch::stopReasonName(o.reason), where);
   out << fmt::format("  {}  {} s\n", r.realTime ? "elapsed time   " : "simulated time", vm::formatSeconds(m.now()));
   out << fmt::format("  instructions    {} executed\n", o.steps);
   std::string motors;

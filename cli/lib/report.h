@@ -31,7 +31,4 @@ struct RunReport {
 void printTextSummary(std::ostream& out, const RunReport& report);
 void printJsonSummary(std::ostream& out, const RunReport& report);
 
-/// A runtime stop as a diagnostic at the instruction's source position.
-diag::Diagnostic runtimeDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file);
-
 }  // namespace rs::cli

@@ -8,6 +8,7 @@
 #include "cli/lib/report.h"
 #include "cli/lib/run_warnings.h"
 #include "cli/lib/trace.h"
+#include "launch/run_diagnostics.h"
 #include "runtime/run/run.h"
 
 namespace rs::cli {
@@ -81,18 +82,14 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   report.run = run.get();
   if (controller) report.fault = controller->faultState();
   const vm::Image& image = run->image();
-  if (!outcome.ok()) {
-    const diag::Diagnostic d = runtimeDiagnostic(image, outcome, image.sourceName);
-    launch::printDiagnostics(err, {d}, program);
-    report.diagnostics.push_back(d);
-  }
+  // The stop and the warnings of the run: the same words the editor shows (launch/run_diagnostics.h).
+  // Under --strict the run's warnings fail the check (exit 1: the run is
+  // what gave them).
+  std::vector<diag::Diagnostic> said = launch::runDiagnostics(*run, spec->collisions, image.sourceName);
+  const bool failedStrict = strict && promoteWarnings(said);
+  printRunWarnings(err, said, program);
+  report.diagnostics.insert(report.diagnostics.end(), said.begin(), said.end());
   if (o.profile && run->log()) report.profile = runtime::profileOf(image, *run->log());
-  // The run's own warnings; under --strict they fail the check (exit 1:
-  // the run is what gave them).
-  std::vector<diag::Diagnostic> warnings = runWarnings(*run, spec->collisions, image.sourceName);
-  const bool failedStrict = strict && promoteWarnings(warnings);
-  printRunWarnings(err, warnings, program);
-  report.diagnostics.insert(report.diagnostics.end(), warnings.begin(), warnings.end());
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);
   else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", base::safeText(image.sourceName),

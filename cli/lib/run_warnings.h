@@ -1,8 +1,7 @@
-// Every warning a finished run gives, as diagnostics: the gripper that
-// never took anything (runtime/run/empty_close.h) and, with
-// --collisions=warn, each collision the run went on after. `run` and
-// `check` print them (and `check --strict` fails on them), `animate` and
-// `render --program` print them too; one list, so that no command forgets
+// How the commands print a run's warnings (the list itself is
+// launch::runWarnings, shared with the language server): within
+// --max-errors, and under `check --strict` as errors. `run`, `check`,
+// `animate` and `render --program` use them, so that no command forgets
 // one kind.
 #pragma once
 
@@ -15,14 +14,6 @@
 #include "runtime/run/run.h"
 
 namespace rs::cli {
-
-/// The run's warnings in the order of the run (collisions by time, then the
-/// gripper's, which concerns the whole run). `mode` is the run's
-/// --collisions: only Warn makes a collision a warning (with Error the one
-/// found stopped the run and is its runtime error). `file`: the program's
-/// name as diagnostics show it.
-std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::CollisionMode mode,
-                                          const std::string& file);
 
 /// Prints `warnings` (at most --max-errors of them, then how many more):
 /// what the compile left unprinted was said with the compile's.

@@ -5,15 +5,20 @@
 //   undefined-point        did you mean PICK?; add the point to POINTS
 //   falls-into-subroutine  add END before the subroutine
 //   unreachable-code       remove the unreachable instructions
+//   numeric-target         jump to a label instead of an instruction number
+//                          (this jump, or every one in the program)
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
+#include <set>
 
 #include "base/ascii.h"
 #include "base/near_names.h"
 #include "compiler/ast_builder.h"
 #include "lsp/features/features.h"
 #include "lsp/protocol.h"
+#include "vm/opcodes.h"
 
 namespace rs::lsp {
 
@@ -114,16 +119,87 @@ void removeUnreachable(const ProgramContext& p, const Json& d, std::uint32_t lin
                        Json::array({textEdit({{fromLine - 1, 0}, {toLine, 0}}, "")})));
 }
 
+std::string upperCased(std::string_view name) {
+  std::string out(name);
+  for (char& c : out) c = base::asciiUpper(c);
+  return out;
+}
+
+// A label for instruction `number` that no label of the program has (any
+// case) and no reserved word is: L7, else L7_2, L7_3, ...
+std::string freshLabel(std::uint32_t number, std::set<std::string>& taken) {
+  const std::string stem = fmt::format("L{}", number);
+  std::string name = stem;
+  for (int n = 2; taken.count(upperCased(name)) || vm::isReservedWord(name); ++n) name = fmt::format("{}_{}", stem, n);
+  taken.insert(upperCased(name));
+  return name;
+}
+
+// The edits that make the jumps `jumps` name labels: each target gets a
+// label when it has none (at column 1, in the blanks before its
+// instruction when they leave room, so the layout stays), each jump the
+// target's label.
+Json labelEdits(const ProgramContext& p, const std::vector<const Occurrence*>& jumps) {
+  const ProgramIndex& index = p.analysis.index();
+  std::set<std::string> taken;
+  for (const IndexedInstruction& in : index.instructions())
+    if (!in.label.empty()) taken.insert(upperCased(in.label));
+  std::map<std::uint32_t, std::string> labels;  // instruction number -> its label
+  Json edits = Json::array();
+  for (const Occurrence* jump : jumps) {
+    const IndexedInstruction* target = index.instructionNumbered(jump->instruction);
+    if (!target) continue;
+    auto [it, added] = labels.try_emplace(target->number);
+    if (added && !target->label.empty()) it->second = std::string(target->label);
+    if (added && target->label.empty()) {
+      it->second = freshLabel(target->number, taken);
+      const std::string_view line = p.doc.line(target->pos.line - 1);
+      const Position start = p.doc.fromPos({target->pos.line, 1}, p.enc);
+      const Position mnemonic = p.doc.fromPos(target->pos, p.enc);
+      const std::size_t from = p.doc.offsetOf(start, p.enc) - p.doc.lineStart(start.line);
+      const std::size_t to = p.doc.offsetOf(mnemonic, p.enc) - p.doc.lineStart(start.line);
+      const std::string_view blanks = line.substr(from, to - from);
+      const std::string label = it->second + ":";
+      if (blanks.find_first_not_of(' ') == std::string_view::npos && blanks.size() > label.size())
+        edits.push_back(textEdit({start, mnemonic}, label + std::string(blanks.size() - label.size(), ' ')));
+      else
+        edits.push_back(textEdit({start, start}, label + " "));
+    }
+    edits.push_back(textEdit(rangeOf(p, *jump), it->second));
+  }
+  return edits;
+}
+
+// The quick fixes of a jump by number: this jump to a label, and every
+// jump by number in the program at once.
+void labelTargets(const ProgramContext& p, const Json* d, const Range& r, Json& out) {
+  const std::vector<const Occurrence*> all = numericTargets(p.analysis.index());
+  const auto here = std::find_if(all.begin(), all.end(), [&](const Occurrence* o) { return rangeOf(p, *o) == r; });
+  if (here == all.end()) return;
+  out.push_back(action(fmt::format("Jump to a label instead of instruction {}", (*here)->instruction), *d, p.doc.uri(),
+                       labelEdits(p, {*here}), true));
+  if (all.size() > 1)
+    out.push_back(action(fmt::format("Jump to labels instead of instruction numbers ({} jumps)", all.size()), *d,
+                         p.doc.uri(), labelEdits(p, all)));
+}
+
 }  // namespace
 
-Json codeActions(const ProgramContext& p, const Range& range, const Json& diagnostics) {
+Json codeActions(const ProgramContext& p, const Range& range, const Field& diagnostics) {
   (void)range;
   Json out = Json::array();
   const ProgramIndex& index = p.analysis.index();
-  for (const Json& d : diagnostics) {
-    if (!d.is_object() || !d.contains("code") || !d["code"].is_string() || !d.contains("range")) continue;
-    const std::string code = d["code"].get<std::string>();
-    const Range r = rangeFrom(d["range"]);
+  for (std::size_t i = 0; i < diagnostics.size(false); ++i) {
+    const Field diagnostic = diagnostics.element(i);
+    const Json& d = diagnostic.object();
+    const Range r = rangeFrom(diagnostic["range"]);
+    const Field codeField = diagnostic["code"];
+    if (!codeField.present()) continue;
+    if (!codeField.any().is_string()) {  // an integer code is none of ours; any other type is wrong
+      codeField.integer();
+      continue;
+    }
+    const std::string code = codeField.string();
     const std::string word = wordIn(p, r);
     if (code == "unknown-instruction") {
       replaceWith(p, d, r, word, compiler::closestMnemonic(word), out);
@@ -141,6 +217,8 @@ Json codeActions(const ProgramContext& p, const Range& range, const Json& diagno
       addEnd(p, d, r.start.line + 1, out);
     } else if (code == "unreachable-code") {
       removeUnreachable(p, d, r.start.line + 1, out);
+    } else if (code == "numeric-target") {
+      labelTargets(p, &d, r, out);
     }
   }
   return out;

@@ -1,6 +1,8 @@
 // textDocument/publishDiagnostics for programs: the compiler's diagnostics
 // with their stable codes, hints and related places, the cell's problem
-// (at the directive that named it), and the server's own flow check.
+// (at the directive that named it), the server's own checks (jumps by
+// number, the main program running into a subroutine), and, once its run
+// is made, what the run found (checked_run.h).
 #include <fmt/format.h>
 
 #include <map>
@@ -23,8 +25,10 @@ int severityOf(diag::Severity s) {
   return 1;
 }
 
-Json toLsp(const ProgramContext& p, const diag::Diagnostic& d) {
-  Json out = {{"range", toJson(p.doc.wordAt(d.pos, p.enc))},
+}  // namespace
+
+Json diagnosticJson(const ProgramAnalysis& a, const std::string& uri, Encoding enc, const diag::Diagnostic& d) {
+  Json out = {{"range", toJson(a.wordAt(d.pos, enc))},
               {"severity", severityOf(d.severity)},
               {"source", "robotsim"},
               {"message", d.hint.empty() ? d.message : fmt::format("{}\nhint: {}", d.message, d.hint)}};
@@ -32,14 +36,24 @@ Json toLsp(const ProgramContext& p, const diag::Diagnostic& d) {
   if (!d.related.empty()) {
     Json related = Json::array();
     for (const diag::Related& r : d.related) {
-      const bool here = r.file == p.analysis.source().name();
-      const Range range = here ? p.doc.wordAt(r.pos, p.enc) : Range{};
-      related.push_back({{"location", location(here ? p.doc.uri() : uriOfPath(r.file), range)}, {"message", r.message}});
+      const bool here = r.file == a.source().name();
+      const Range range = here ? a.wordAt(r.pos, enc) : Range{};
+      related.push_back({{"location", location(here ? uri : uriOfPath(r.file), range)}, {"message", r.message}});
     }
     out["relatedInformation"] = std::move(related);
   }
   return out;
 }
+
+Json runDiagnostics(const ProgramAnalysis& a, const std::string& uri, Encoding enc, const CheckedRun& run) {
+  Json out = Json::array();
+  for (const diag::Diagnostic& d : run.diagnostics) out.push_back(diagnosticJson(a, uri, enc, d));
+  return out;
+}
+
+namespace {
+
+Json toLsp(const ProgramContext& p, const diag::Diagnostic& d) { return diagnosticJson(p.analysis, p.doc.uri(), p.enc, d); }
 
 // Where the editor's text had bytes that were not UTF-8 (now U+FFFD).
 std::optional<diag::Diagnostic> invalidUtf8(const ProgramContext& p) {
@@ -99,6 +113,13 @@ std::vector<const IndexedInstruction*> fallsIntoSubroutine(const ProgramIndex& i
   return out;
 }
 
+std::vector<const Occurrence*> numericTargets(const ProgramIndex& index) {
+  std::vector<const Occurrence*> out;
+  for (const Occurrence& o : index.occurrences())
+    if (o.kind == NameKind::Instruction && !o.definition && index.instructionNumbered(o.instruction)) out.push_back(&o);
+  return out;
+}
+
 Json programDiagnostics(const ProgramContext& p) {
   Json out = Json::array();
   const ProgramAnalysis& a = p.analysis;
@@ -115,7 +136,16 @@ Json programDiagnostics(const ProgramContext& p) {
     out.push_back(std::move(j));
   }
   for (const diag::Diagnostic& d : a.compiled().diagnostics) out.push_back(toLsp(p, d));
-  if (a.compiled().ok()) {
+  for (const Occurrence* o : numericTargets(a.index())) {
+    diag::Diagnostic d{a.source().name(), o->pos, diag::Severity::Warning,
+                       fmt::format("a jump to instruction {} by its number: an instruction added or removed before it "
+                                   "makes the jump land elsewhere",
+                                   o->instruction),
+                       "numeric-target", fmt::format("give instruction {} a label and jump to the label (quick fix)",
+                                                     o->instruction)};
+    out.push_back(toLsp(p, d));
+  }
+  if (a.ok()) {
     for (const IndexedInstruction* in : fallsIntoSubroutine(a.index())) {
       const std::string what = in->label.empty() ? fmt::format("the subroutine at instruction {}", in->number)
                                                  : fmt::format("subroutine '{}'", in->label);

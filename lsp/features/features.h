@@ -3,6 +3,7 @@
 // the result's JSON; the server (server.cpp) maps method names to them.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 #include "lsp/dispatcher.h"
 #include "lsp/document.h"
 #include "lsp/json.h"
+#include "lsp/params.h"
 #include "lsp/program_analysis.h"
 
 namespace rs::lsp {
@@ -23,9 +25,21 @@ struct ProgramContext {
   Encoding enc;
 };
 
+/// How long a hover or an inlay hint waits for the run of the version it
+/// is about when that run is still being made (then it answers without).
+inline constexpr std::chrono::milliseconds kWaitForRun{250};
+
 // diagnostics.cpp: the compiler's diagnostics (and the cell's problem,
-// and the server's own flow check) as LSP Diagnostic[].
+// and the server's own checks) as LSP Diagnostic[].
 Json programDiagnostics(const ProgramContext& p);
+/// What the checked run found (checked_run.h), as LSP Diagnostic[]; from
+/// the analysis alone, so that the run worker's thread can make them.
+Json runDiagnostics(const ProgramAnalysis& a, const std::string& uri, Encoding enc, const CheckedRun& run);
+/// One diagnostic of a program version, placed by that version's text.
+Json diagnosticJson(const ProgramAnalysis& a, const std::string& uri, Encoding enc, const diag::Diagnostic& d);
+/// Jumps by instruction number to an instruction that exists (the
+/// server's warning `numeric-target`, and its quick fix).
+std::vector<const Occurrence*> numericTargets(const ProgramIndex& index);
 /// Control flow over the index: which instructions run from the first
 /// (following calls into subroutines or not), which are subroutine entries.
 struct Flow {
@@ -64,7 +78,13 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> subroutineExtents(const Pro
 /// and operands, comment column; taught points in aligned columns), or
 /// nothing when it cannot be done without a risk to the meaning.
 std::optional<std::string> formatProgram(std::string_view text);
-Json formatting(const Document& doc, Encoding enc);
+/// The same, with `text` already read as a source file (no copy is made).
+std::optional<std::string> formatProgram(std::string_view text, const diag::SourceFile& source);
+/// Documents over this size are not formatted (RequestFailed).
+inline constexpr std::size_t kMaxFormattedBytes = std::size_t{64} << 20;
+/// More edits than this become one edit from the first changed line to the last.
+inline constexpr std::size_t kMaxFormattingEdits = 1000;
+Reply formatting(const ProgramContext& p);
 
 // completion.cpp, signature_help.cpp
 /// What the line says up to the cursor.
@@ -81,7 +101,8 @@ Json completion(const ProgramContext& p, Position at, bool snippets);
 Json signatureHelp(const ProgramContext& p, Position at);
 
 // code_actions.cpp
-Json codeActions(const ProgramContext& p, const Range& range, const Json& diagnostics);
+/// `diagnostics`: the context's Diagnostic[] (each read with its types checked).
+Json codeActions(const ProgramContext& p, const Range& range, const Field& diagnostics);
 
 // inlay_hints.cpp
 Json inlayHints(const ProgramContext& p, const Range& range);

@@ -1,6 +1,6 @@
 // textDocument/hover in programs: an instruction's help from the opcode
-// table (and, for one that acts on the machine, when it ran in the default
-// run), a label's instruction, a point's encoder values and the tool
+// table (and, for one that acts on the machine, when it ran in the checked
+// run, the run `robotsim check` makes: checked_run.h), a label's instruction, a point's encoder values and the tool
 // centre point they put the robot's tool at (forward kinematics of the
 // program's robot), a variable's writes and reads, an instruction number.
 #include <fmt/format.h>
@@ -36,12 +36,23 @@ std::string motorList(const std::vector<vm::MotorSpec>& motors) {
 }
 
 std::string whenItRan(const ProgramContext& p, const IndexedInstruction& in) {
-  if (!p.analysis.compiled().ok()) return {};
-  const DefaultRun& run = p.analysis.defaultRun();
-  if (in.number - 1 >= run.times.size()) return {};
-  const InstructionTimes& t = run.times[in.number - 1];
-  if (t.runs == 0) return "\n\nIn the default run it never runs.";
-  std::string out = fmt::format("\n\nIn the default run: from {} to {} (takes {})", formatSeconds(t.start),
+  if (!p.analysis.ok()) return {};
+  const CheckedRun* run = p.analysis.run(kWaitForRun);
+  if (!run) {
+    p.analysis.noteAnsweredWithoutRun();
+    return "\n\nThe checked run of this version is still being made.";
+  }
+  const std::uint32_t i = in.number - 1;
+  if (run->end == CheckedRun::End::Abandoned || i >= run->times.size()) return {};
+  const InstructionTimes& t = run->times[i];
+  if (run->stoppedAt() == i)
+    return fmt::format("\n\nIn the checked run it stops here at {}: {}.", formatSeconds(run->clock),
+                       run->outcome->message);
+  if (t.runs == 0)
+    return run->end == CheckedRun::End::Finished && run->outcome->ok()
+               ? "\n\nIn the checked run it never runs."
+               : fmt::format("\n\nIn the checked run it never runs: the run {}.", run->summary);
+  std::string out = fmt::format("\n\nIn the checked run: from {} to {} (takes {})", formatSeconds(t.start),
                                 formatSeconds(t.end), formatSeconds(t.end - t.start));
   if (t.runs > 1) out += fmt::format(", the first of {} times", t.runs);
   return out + ".";

@@ -1,10 +1,13 @@
 // textDocument/inlayHint: before each instruction its number (what GOTO 3
 // means: instructions are counted, not lines), and after it the simulated
-// time at which it ends in the default run (its first execution; how many
-// times it ran when more than once). The run is bounded
-// (program_analysis.h): a program that never ends costs a bounded time.
+// time at which it ends in the checked run (its first execution; how many
+// times it ran when more than once), or where that run stopped on it. The
+// run is check's, bounded (checked_run.h); while it is being made the
+// hints come without times, and the server asks the client to refresh
+// them once it is made.
 #include <fmt/format.h>
 
+#include "launch/run_diagnostics.h"
 #include "lsp/features/features.h"
 #include "lsp/protocol.h"
 
@@ -13,7 +16,8 @@ namespace rs::lsp {
 Json inlayHints(const ProgramContext& p, const Range& range) {
   Json out = Json::array();
   const ProgramIndex& index = p.analysis.index();
-  const DefaultRun* run = p.analysis.compiled().ok() ? &p.analysis.defaultRun() : nullptr;
+  const CheckedRun* run = p.analysis.ok() ? p.analysis.run(kWaitForRun) : nullptr;
+  if (p.analysis.ok() && !run) p.analysis.noteAnsweredWithoutRun();
   const auto first = std::lower_bound(index.instructions().begin(), index.instructions().end(), range.start.line + 1,
                                       [](const IndexedInstruction& in, std::uint32_t l) { return in.pos.line < l; });
   for (auto it = first; it != index.instructions().end() && it->pos.line <= range.end.line + 1; ++it) {
@@ -23,11 +27,14 @@ Json inlayHints(const ProgramContext& p, const Range& range) {
                    {"paddingRight", true}});
     if (!run || in.number - 1 >= run->times.size()) continue;
     const InstructionTimes& t = run->times[in.number - 1];
-    if (t.runs == 0) continue;
+    const bool stops = run->stoppedAt() == in.number - 1;
+    if (t.runs == 0 && !stops) continue;
     const std::uint32_t line = in.pos.line - 1;
     const Position end{line, unitsOf(codeOf(p.doc.line(line)), p.enc)};
-    std::string label = fmt::format("ends {}", formatSeconds(t.end));
-    if (t.runs > 1) label += fmt::format(" (first of {})", t.runs);
+    std::string label = stops ? fmt::format("stops {} ({})", formatSeconds(run->clock),
+                                            launch::stopReasonName(run->outcome->reason))
+                              : fmt::format("ends {}", formatSeconds(t.end));
+    if (t.runs > 1 && !stops) label += fmt::format(" (first of {})", t.runs);
     out.push_back({{"position", toJson(end)}, {"label", label}, {"paddingLeft", true}});
   }
   return out;

@@ -1,7 +1,9 @@
 -- End to end with Neovim's own LSP client (Neovim 0.7: vim.lsp.start_client
--- and buf_attach_client): on a copy of examples/pick_and_place.rsp, checks
--- diagnostics as you type, hover, go to definition, rename and formatting
--- through Neovim's API, applying the edits with Neovim's own functions.
+-- and buf_attach_client): on a copy of examples/pick_and_place.rsp (and of
+-- its stimuli file, which the server's run of it uses), checks diagnostics
+-- as you type, the run's diagnostics, hover, go to definition, rename and
+-- formatting through Neovim's API, applying the edits with Neovim's own
+-- functions.
 -- Run by ctest (test `editor_neovim`):
 --   ROBOTSIM_BINARY=... ROBOTSIM_SOURCE_DIR=... WORK_DIR=... \
 --     nvim --headless --clean -c "luafile tests/editor/nvim_lsp_test.lua"
@@ -31,6 +33,7 @@ local function run()
   vim.fn.mkdir(work, 'p')
   local file = work .. '/pick_and_place.rsp'
   assert(vim.loop.fs_copyfile(source .. '/examples/pick_and_place.rsp', file))
+  assert(vim.loop.fs_copyfile(source .. '/examples/pick_and_place.stim', work .. '/pick_and_place.stim'))
   vim.cmd('edit ' .. vim.fn.fnameescape(file))
   local buf = vim.api.nvim_get_current_buf()
 
@@ -58,6 +61,18 @@ local function run()
   check(d.message:find("unknown instruction 'HRDHOM'", 1, true), 'message: ' .. d.message)
   vim.api.nvim_buf_set_text(buf, line, 8, line, 14, { 'HRDHOME' })
   check(vim.wait(10000, function() return #vim.diagnostic.get(buf) == 0 end, 20), 'diagnostics stay after the fix')
+
+  -- The run's diagnostics as you type: wait for input 5, which the stimuli
+  -- file never turns on: the run (robotsim check's, with the .stim beside
+  -- the program) ends in a deadlock there. Then put it back.
+  local wait = find_line(buf, '^        WAITFOR 2 ON')
+  vim.api.nvim_buf_set_text(buf, wait, 16, wait, 17, { '5' })
+  check(vim.wait(10000, function() return #vim.diagnostic.get(buf) > 0 end, 20), 'no run diagnostic for a deadlock')
+  d = vim.diagnostic.get(buf)[1]
+  check(d.lnum == wait and d.col == 8, ('run diagnostic at %d:%d'):format(d.lnum, d.col))
+  check(d.message:find('deadlock: input 5 never turns ON', 1, true), 'run message: ' .. d.message)
+  vim.api.nvim_buf_set_text(buf, wait, 16, wait, 17, { '2' })
+  check(vim.wait(10000, function() return #vim.diagnostic.get(buf) == 0 end, 20), 'the deadlock stays after the fix')
 
   -- Hover on the point ABOVE_PICK in "MOVEP ABOVE_PICK".
   local movep = find_line(buf, 'MOVEP ABOVE_PICK')

@@ -5,6 +5,8 @@
 // reach the JSON-RPC layer, the dispatcher and every feature's handler with
 // any parameters. The server must answer or ignore each message, never
 // crash, and never stop serving unless told to exit.
+#include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <sstream>
 #include <string_view>
@@ -28,8 +30,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   }
   std::ostringstream log;
-  std::size_t sent = 0;
+  std::atomic<std::size_t> sent = 0;  // the run worker's thread sends too
   rs::lsp::Server server([&](const rs::lsp::Json&) { return ++sent < 100'000; }, log);
+  // Each edit starts a run on the run worker, and a hover may wait for it
+  // (250 ms at most): short runs keep an input's time bounded.
+  server.setRunBudget(std::chrono::milliseconds(50));
   // One frame a batch, as a slow client sends them: each batch is handled
   // and its diagnostics published before the next.
   for (const rs::lsp::Frame& f : frames) {

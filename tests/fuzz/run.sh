@@ -57,5 +57,5 @@ echo "fuzz: $name, $runs inputs, seeds from ${#seeds[@]} directories" >&2
 # -rss_limit_mb: the readers' own limits keep far below it; -timeout: ten
 # seconds for one input, under the sanitizers (every reader is linear in
 # its input's size, and inputs here stay under a few KiB).
-exec "$fuzzer" -seed=1 -runs="$runs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+exec "$fuzzer" -seed=1 -runs="$runs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$out/" \
   "${extra[@]}" "$out" "${seeds[@]}"

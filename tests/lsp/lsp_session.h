@@ -1,7 +1,11 @@
 // A language server driven in-process, message by message, for the tests:
-// what it sends back is kept and can be looked at by id or by method.
+// what it sends back is kept and can be looked at by id or by method. The
+// server sends from two threads (its own, and the run worker's for the
+// run-time diagnostics): idle() publishes and then waits for the runs, so
+// that what a test looks at is complete.
 #pragma once
 
+#include <mutex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -14,7 +18,14 @@ class LspSession {
  public:
   using Json = lsp::Json;
 
-  LspSession() : server_([this](const Json& m) { sent_.push_back(m); return true; }, log_) {}
+  LspSession()
+      : server_(
+            [this](const Json& m) {
+              const std::lock_guard<std::mutex> lock(mutex_);
+              sent_.push_back(m);
+              return true;
+            },
+            log_) {}
 
   /// initialize (with these client capabilities and options) and initialized.
   Json initialize(Json capabilities = Json::object(), Json options = nullptr, std::string rootUri = "") {
@@ -44,8 +55,14 @@ class LspSession {
     for (const Json& m : messages) frames.push_back({lsp::Frame::Kind::Message, lsp::dumpJson(m), {}});
     server_.receive(frames);
   }
-  /// The end of a batch: diagnostics of changed documents are published.
-  void idle() { server_.publishPending(); }
+  /// The end of a batch: diagnostics of changed documents are published,
+  /// then those of their runs.
+  void idle() {
+    server_.publishPending();
+    server_.settle();
+  }
+  /// The end of a batch without waiting for the runs.
+  void publishOnly() { server_.publishPending(); }
 
   void open(const std::string& uri, const std::string& text, const std::string& languageId = "robotsim-program") {
     notify("textDocument/didOpen",
@@ -53,6 +70,7 @@ class LspSession {
   }
   /// The last diagnostics published for `uri` (after idle()).
   Json diagnostics(const std::string& uri) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
     Json last;
     for (const Json& m : sent_)
       if (m.value("method", "") == "textDocument/publishDiagnostics" && m["params"]["uri"] == uri)
@@ -60,12 +78,19 @@ class LspSession {
     return last;
   }
   Json responseTo(const Json& id) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
     for (const Json& m : sent_)
       if (m.contains("id") && m["id"] == id && !m.contains("method")) return m;
     return nullptr;
   }
-  const std::vector<Json>& sent() const { return sent_; }
-  void clearSent() { sent_.clear(); }
+  std::vector<Json> sent() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return sent_;
+  }
+  void clearSent() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    sent_.clear();
+  }
   lsp::Server& server() { return server_; }
   std::string log() const { return log_.str(); }
 
@@ -78,8 +103,9 @@ class LspSession {
 
  private:
   std::ostringstream log_;
+  mutable std::mutex mutex_;
   std::vector<Json> sent_;
-  lsp::Server server_;
+  lsp::Server server_;  // last: its run worker stops before the rest goes
   int lastId_ = 0;
 };
 

@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include "launch/cell_directive.h"
+#include "lsp/uri.h"
+#include "tests/lsp/lsp_session.h"
 #include "tests/cli/cli_support.h"
 
 using rs::launch::findCellDirective;
@@ -67,4 +69,25 @@ TEST_CASE("robotsim lsp --help explains the server", "[lsp][cli]") {
   CHECK(r.code == 0);
   CHECK(r.out.find("Speaks the Language Server Protocol 3.17 over stdin and stdout") != std::string::npos);
   CHECK(r.out.find("--stdio") != std::string::npos);
+}
+
+TEST_CASE("lsp: go to definition of a directive's file gives a normal URI", "[lsp][cell]") {
+  // Issue 26: "; cell: ../cell.rsd" in sub/ went to ".../sub/../cell.rsd".
+  rs::testing::TempDir dir;
+  std::filesystem::create_directories(dir.path() / "sub");
+  dir.write("cell.rsd", "WORKCELL mine\n  ROBOT rhino-scara AT 0 0 0\nEND\n");
+  const std::string program = dir.write("sub/prog.rsp", "; cell: ../cell.rsd\n        END\n");
+  rs::testing::LspSession s;
+  s.initialize();
+  const std::string uri = rs::lsp::uriOfPath(program);
+  s.open(uri, rs::testing::readBytes(program));
+  s.idle();
+  CHECK(s.diagnostics(uri) == rs::lsp::Json::array());  // the cell was found and loaded
+  const rs::lsp::Json d = s.result("textDocument/definition", rs::testing::LspSession::at(uri, 0, 10));
+  REQUIRE(d.is_object());
+  CHECK(d["uri"] == "file://" + (dir.path() / "cell.rsd").lexically_normal().string());
+  CHECK(d["uri"].get<std::string>().find("/..") == std::string::npos);
+  // Made absolute and normal whatever the path: one file, one URI.
+  CHECK(rs::lsp::uriOfPath("/a/b/../c/./d.rsd") == "file:///a/c/d.rsd");
+  CHECK(rs::lsp::uriOfPath("/a b/%.rsd") == "file:///a%20b/%25.rsd");
 }

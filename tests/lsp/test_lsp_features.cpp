@@ -11,7 +11,7 @@ using rs::testing::LspSession;
 namespace {
 
 const std::string kUri = "file:///work/test.rsp";
-// Times of the default run, by hand: SET at 0; MOVE E+100 at 400 units/s
+// Times of the checked run (what robotsim check runs), by hand: SET at 0; MOVE E+100 at 400 units/s
 // takes 0.25 s, three passes (E = 300 at 0.75 s); MOVEP HOME brings E from
 // 300 to 0: 0.75 s, so 1.5 s; RETURN and END at 1.5 s.
 const std::string kProgram =
@@ -34,8 +34,8 @@ Json loc(unsigned l0, unsigned c0, unsigned l1, unsigned c1) { return {{"uri", k
 
 struct Opened {
   LspSession s;
-  explicit Opened(const std::string& text = kProgram, Json caps = Json::object()) {
-    s.initialize(std::move(caps));
+  explicit Opened(const std::string& text = kProgram, Json caps = Json::object(), Json options = nullptr) {
+    s.initialize(std::move(caps), std::move(options));
     s.open(kUri, text);
     s.idle();
   }
@@ -87,7 +87,7 @@ TEST_CASE("lsp: hover", "[lsp][features]") {
   const std::string move = o.hoverText(2, 9).get<std::string>();
   CHECK(move.starts_with("**MOVE** — instruction 2\n\n`MOVE <value per motor>`: move every motor by a relative number"));
   CHECK(move.find("- `E` revolute, -1000..1000, 400 units/s") != std::string::npos);
-  CHECK(move.ends_with("In the default run: from 0 s to 0.25 s (takes 0.25 s), the first of 3 times."));
+  CHECK(move.ends_with("In the checked run: from 0 s to 0.25 s (takes 0.25 s), the first of 3 times."));
   // The Rhino SCARA's tool centre point at home: (-135, -35, 0), as stdlib/robots/rhino-scara.rsd derives it.
   CHECK(o.hoverText(8, 15) == "**point** `HOME` (line 13): E=0 D=0 C=0 B=0 A=0\n\n"
                               "Tool centre point of rhino-scara: (-135, -35, 0)");
@@ -103,7 +103,10 @@ TEST_CASE("lsp: hover", "[lsp][features]") {
 TEST_CASE("lsp: a point written as a tool pose hovers with its resolved encoders", "[lsp][features][cell][pose]") {
   // The gantry's tool centre point is (500 + X/10, 200 - Y/10, 400 + Z/10) (see the next test), so
   // AT 220 50 680 is X = -2800, Z = 2800, Y = 1500; the gripper keeps home's 0.
-  Opened o("; cell: gantry-cell\n        MOVEP P\n        END\nPOINTS\nP AT 220 50 680\n");
+  // The move there goes through a block (check says so): collisions off, as
+  // the robotsim.collisions setting allows, for a clean compile's hover.
+  const Json off = {{"robotsim", {{"collisions", "off"}}}};
+  Opened o("; cell: gantry-cell\n        MOVEP P\n        END\nPOINTS\nP AT 220 50 680\n", Json::object(), off);
   CHECK(o.s.diagnostics(kUri) == Json::array());
   CHECK(o.hoverText(1, 15) == "**point** `P` (line 5): X=-2800 Z=2800 Y=1500 A=0, resolved from the tool pose "
                               "`AT 220 50 680`\n\nTool centre point of gantry: (220, 50, 680)");
@@ -119,8 +122,14 @@ TEST_CASE("lsp: a point written as a tool pose hovers with its resolved encoders
 TEST_CASE("lsp: hover shows the tool centre point on the cell the directive names", "[lsp][features][cell]") {
   // The gantry: motors X Z Y A; its tool centre point is (500 + X/10, 200 - Y/10, 400 + Z/10)
   // (stdlib/robots/gantry.rsd): X = -2800, Z = 2800, Y = 1500 -> (220, 50, 680).
-  Opened o("; cell: gantry-cell\n        MOVEP P\n        END\nPOINTS\nP -2800 2800 1500 0\n");
+  Opened o("; cell: gantry-cell\n        MOVEP P\n        END\nPOINTS\nP -2800 2800 1500 0\n", Json::object(),
+           {{"robotsim", {{"collisions", "off"}}}});
   CHECK(o.s.diagnostics(kUri) == Json::array());
+  // With collisions checked, as robotsim check does, the move to P hits a block.
+  Opened checked("; cell: gantry-cell\n        MOVEP P\n        END\nPOINTS\nP -2800 2800 1500 0\n");
+  const Json hit = checked.s.diagnostics(kUri);
+  REQUIRE(hit.size() == 1);
+  CHECK_THAT(hit[0]["message"].get<std::string>(), Catch::StartsWith("runtime error: collision at 2.452 s: finger 3 (gantry_finger_r) hits object 3 (block)"));
   CHECK(o.hoverText(1, 15) == "**point** `P` (line 5): X=-2800 Z=2800 Y=1500 A=0\n\n"
                               "Tool centre point of gantry: (220, 50, 680)");
 }
@@ -299,11 +308,14 @@ TEST_CASE("lsp: inlay hints: instruction numbers and when each ends in the defau
                        ends(9, 14, "ends 1.5 s")}));
 }
 
-TEST_CASE("lsp: inlay hints of a program that never ends come back (the run is bounded)", "[lsp][features]") {
+TEST_CASE("lsp: inlay hints of a program that never ends come back (the run stops where check's does)", "[lsp][features]") {
   Opened o("loop:   ADD N 1\n        GOTO loop\n");
   const Json hints = o.s.result("textDocument/inlayHint", {{"textDocument", {{"uri", kUri}}}, {"range", range(0, 0, 2, 0)}});
   REQUIRE(hints.size() == 4);
-  CHECK(hints[1]["label"] == "ends 0 s (first of 50000)");  // 100000 steps, two instructions
+  // 10,000,000 instructions without the clock moving: the ADD that would
+  // be the next stops the run, after 5,000,000 of each.
+  CHECK(hints[1]["label"] == "stops 0 s (clock standing still)");
+  CHECK(hints[3]["label"] == "ends 0 s (first of 5000000)");
 }
 
 TEST_CASE("lsp: semantic tokens", "[lsp][features]") {
@@ -341,8 +353,12 @@ TEST_CASE("lsp: code actions: did you mean, add a point", "[lsp][features]") {
 
 TEST_CASE("lsp: code actions: END before a subroutine the main program falls into", "[lsp][features]") {
   Opened o("        GOSUB sub\nsub:    MOVE 1 0 0 0 0\n        RETURN\n");
-  const Json diags = o.s.diagnostics(kUri);
-  REQUIRE(diags.size() == 1);
+  Json diags = o.s.diagnostics(kUri);
+  REQUIRE(diags.size() == 2);
+  // The run says it too, as check does: the second RETURN has no GOSUB.
+  CHECK(diags[1]["message"] == "runtime error: RETURN without a GOSUB (instruction 3)\nhint: did the program run "
+                               "on into a subroutine? an END before the subroutine stops it there");
+  diags.erase(1);
   CHECK(diags[0]["code"] == "falls-into-subroutine");
   CHECK(diags[0]["range"] == range(1, 0, 1, 4));
   const Json actions = o.s.result("textDocument/codeAction", {{"textDocument", {{"uri", kUri}}}, {"range", range(1, 0, 1, 4)},

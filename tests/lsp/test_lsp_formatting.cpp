@@ -8,6 +8,7 @@
 #include "compiler/compiler.h"
 #include "launch/program.h"
 #include "lsp/features/features.h"
+#include "lsp/program_analysis.h"
 #include "tests/cli/cli_support.h"
 #include "vm/image_file.h"
 
@@ -89,4 +90,59 @@ TEST_CASE("formatting refuses what it cannot keep the meaning of", "[lsp][format
   CHECK_FALSE(rs::lsp::formatProgram("END\xFF\n"));
   CHECK_FALSE(rs::lsp::formatProgram("END\rSET N 1\n"));  // a lone CR
   CHECK(rs::lsp::formatProgram("        END\r\n; x\r\n") == std::string("        END\r\n; x\r\n"));
+}
+
+namespace {
+
+// LSP edits made to a text (ASCII, LF: characters are bytes).
+std::string withEdits(std::string text, const rs::lsp::Json& edits) {
+  const auto offset = [&](const rs::lsp::Json& p) {
+    std::size_t at = 0;
+    for (int l = 0; l < p["line"].get<int>(); ++l) at = text.find('\n', at) + 1;
+    return at + p["character"].get<std::size_t>();
+  };
+  for (auto e = edits.rbegin(); e != edits.rend(); ++e) {  // edits come in order: last first keeps offsets
+    const std::size_t from = offset((*e)["range"]["start"]), to = offset((*e)["range"]["end"]);
+    text.replace(from, to - from, (*e)["newText"].get<std::string>());
+  }
+  return text;
+}
+
+rs::lsp::Reply formatted(const std::string& text) {
+  const rs::lsp::Document doc("file:///f.rsp", rs::lsp::Language::Program, 1, text);
+  const rs::lsp::ProgramAnalysis analysis("f.rsp", text, rs::lsp::CellCache().get(""), std::nullopt);
+  return rs::lsp::formatting({doc, analysis, rs::lsp::Encoding::Utf16});
+}
+
+}  // namespace
+
+TEST_CASE("formatting edits: one a run of changed lines, one in all past a thousand", "[lsp][formatting]") {
+  // Lines 1-3 change together, line 5 alone: two edits.
+  const std::string few = "END\n  MOVE 1 2 3 4 5\n SET N 1\n   ADD N 1\n        END\n  END\n";
+  const rs::lsp::Json two = std::get<rs::lsp::Json>(formatted(few));
+  REQUIRE(two.size() == 2);
+  CHECK(two[0]["range"] == rs::lsp::Json::parse(R"({"start":{"line":0,"character":0},"end":{"line":3,"character":10}})"));
+  CHECK(two[0]["newText"] == "        END\n        MOVE 1 2 3 4 5\n        SET N 1\n        ADD N 1");
+  CHECK(two[1]["range"] == rs::lsp::Json::parse(R"({"start":{"line":5,"character":0},"end":{"line":5,"character":5}})"));
+  CHECK(withEdits(few, two) == *rs::lsp::formatProgram(few));
+  // Every other line changes, 1,500 times: one edit from the first to the last.
+  std::string many;
+  for (int i = 0; i < 1500; ++i) many += " ADD N 1\n        ADD N 1\n";
+  many += "        END\n";
+  const rs::lsp::Json one = std::get<rs::lsp::Json>(formatted(many));
+  REQUIRE(one.size() == 1);
+  CHECK(one[0]["range"]["start"] == rs::lsp::Json::parse(R"({"line":0,"character":0})"));
+  CHECK(one[0]["range"]["end"] == rs::lsp::Json::parse(R"({"line":2998,"character":8})"));
+  CHECK(withEdits(many, one) == *rs::lsp::formatProgram(many));
+}
+
+TEST_CASE("formatting refuses a document over 64 MiB with a message", "[lsp][formatting]") {
+  // One comment line: cheap to compile, over the limit.
+  const std::string huge = "; " + std::string(rs::lsp::kMaxFormattedBytes, 'x') + "\n        END\n";
+  const rs::lsp::Reply reply = formatted(huge);
+  REQUIRE(std::holds_alternative<rs::lsp::RpcError>(reply));
+  CHECK(std::get<rs::lsp::RpcError>(reply).code == -32803);
+  CHECK(std::get<rs::lsp::RpcError>(reply).message ==
+        "the document is 64 MiB: robotsim formats programs up to 64 MiB (its answer would be a message larger than "
+        "the server accepts)");
 }

@@ -42,6 +42,9 @@ TEST_CASE("lsp reader: each bad message gets its JSON-RPC error, with the id whe
       {R"({"id":5,"method":7})", errc::kInvalidRequest, 5},
       {R"({"id":1.5,"method":"m"})", errc::kInvalidRequest, nullptr},
       {R"({"id":null,"method":"m"})", errc::kInvalidRequest, nullptr},
+      // A NUL byte is not JSON anywhere, even after a whole object (the
+      // JSON library alone takes it for the end of the text).
+      {std::string(R"({"jsonrpc":"2.0","id":6,"method":"m"})") + '\0' + "junk", errc::kParseError, nullptr},
   };
   for (const Case& c : cases) {
     INFO(c.body);

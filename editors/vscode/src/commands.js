@@ -24,11 +24,16 @@ function libArgs(settings) {
   return (settings.lib || []).flatMap((dir) => ['--lib', dir]);
 }
 
-/** Arguments common to run, check and animate: --cell (unless the file names its cell) and --lib. */
+/**
+ * Arguments common to run, check and animate: --cell (unless the file names
+ * its cell), --lib, and --collisions when the setting is not check's default
+ * (the language server's run honours the same setting).
+ */
 function cellArgs(settings, text) {
   const args = [];
   if (settings.cell && !directiveCell(text)) args.push('--cell', settings.cell);
-  return [...args, ...libArgs(settings)];
+  const collisions = settings.collisions && settings.collisions !== 'error' ? ['--collisions', settings.collisions] : [];
+  return [...args, ...libArgs(settings), ...collisions];
 }
 
 /** The stimuli file beside a program (same name, .stim), when there is one. */

@@ -20,7 +20,12 @@ let client;
 
 function settings() {
   const config = vscode.workspace.getConfiguration('robotsim');
-  return { path: config.get('path', 'robotsim'), cell: config.get('cell', ''), lib: config.get('lib', []) };
+  return {
+    path: config.get('path', 'robotsim'),
+    cell: config.get('cell', ''),
+    lib: config.get('lib', []),
+    collisions: config.get('collisions', 'error'),
+  };
 }
 
 function activeFile() {
@@ -107,7 +112,7 @@ function activate(context) {
       { scheme: 'file', language: 'robotsim-description' },
       { scheme: 'file', language: 'robotsim-stimuli' },
     ],
-    initializationOptions: { cell: s.cell, lib: s.lib },
+    initializationOptions: { cell: s.cell, lib: s.lib, collisions: s.collisions },
     synchronize: { configurationSection: 'robotsim' },
   };
   client = new LanguageClient('robotsim', 'ROBOTSIM', serverOptions, clientOptions);

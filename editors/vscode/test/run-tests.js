@@ -83,6 +83,14 @@ test('the cell setting becomes --cell', () => {
   assert.equal(r.code, 0, r.err);
 });
 
+test('the collisions setting becomes --collisions, and the default passes nothing', () => {
+  const file = path.join(root, 'examples', 'mistakes', 'collision.rsp');
+  assert.deepEqual(commandArgs('check', file, { collisions: 'error' }).slice(2), []);
+  assert.deepEqual(commandArgs('check', file, { collisions: 'off' }).slice(2), ['--collisions', 'off']);
+  assert.equal(run(commandArgs('check', file, { collisions: 'error' })).code, 1);  // the swing hits a block
+  assert.equal(run(commandArgs('check', file, { collisions: 'off' })).code, 0);
+});
+
 test('a program\'s own ; cell: line wins over the setting', () => {
   const text = '; demo\n  ;  cell: gantry-cell\n        END\n';
   assert.equal(directiveCell(text), 'gantry-cell');

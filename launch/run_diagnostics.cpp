@@ -1,0 +1,81 @@
+#include "launch/run_diagnostics.h"
+
+#include <fmt/format.h>
+
+#include "runtime/run/empty_close.h"
+
+namespace rs::launch {
+
+namespace {
+
+// How to get past a stop, where the command line can help.
+std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) {
+  switch (outcome.reason) {
+    case vm::StopReason::StepLimit: return "allow more with --max-steps N";
+    case vm::StopReason::TimeLimit: return "allow more with --max-time SECONDS";
+    case vm::StopReason::Deadlock: return "inputs change only by --input N=ON@SECONDS or a --stimuli file";
+    case vm::StopReason::InstantLimit: return "give the loop a DELAY, a move or a WAITFOR, or a way out";
+    case vm::StopReason::RuntimeError:
+      // The main program ran on into a subroutine: its END is missing.
+      if (image.code[outcome.index].op == vm::Op::Return)  // its one failure: an empty call stack
+        return "did the program run on into a subroutine? an END before the subroutine stops it there";
+      return "";
+    case vm::StopReason::End:
+    case vm::StopReason::Paused: return "";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string_view stopReasonName(vm::StopReason reason) {
+  switch (reason) {
+    case vm::StopReason::End: return "finished";
+    case vm::StopReason::RuntimeError: return "runtime error";
+    case vm::StopReason::Deadlock: return "deadlock";
+    case vm::StopReason::StepLimit: return "step limit";
+    case vm::StopReason::TimeLimit: return "time limit";
+    case vm::StopReason::InstantLimit: return "clock standing still";
+    case vm::StopReason::Paused: return "paused";
+  }
+  return "?";
+}
+
+diag::Diagnostic stopDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {
+  const diag::Pos pos{image.lines[outcome.index], image.columns[outcome.index]};
+  return {file, pos, diag::Severity::Error,
+          fmt::format("{}: {} (instruction {})", stopReasonName(outcome.reason), outcome.message, outcome.index + 1),
+          {}, std::string(hintFor(image, outcome))};
+}
+
+std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::CollisionMode mode,
+                                          const std::string& file) {
+  std::vector<diag::Diagnostic> out;
+  const vm::Image& image = run.image();
+  if (const runtime::CollisionWatch* watch = run.collisionWatch(); watch && mode == runtime::CollisionMode::Warn)
+    for (const runtime::CollisionEvent& e : run.collisions()) {
+      const bool known = e.instruction < image.code.size();
+      const std::string seconds = vm::formatSeconds(e.at);
+      out.push_back({file, known ? diag::Pos{image.lines[e.instruction], image.columns[e.instruction]} : diag::Pos{},
+                     diag::Severity::Warning,
+                     fmt::format("collision at {} s: {} (--collisions=warn: the run went on)", seconds,
+                                 watch->describe(e.contact)),
+                     "collision",
+                     fmt::format("'robotsim render CELL --program PROG --at {} --collision-shapes' draws it; "
+                                 "--collisions=error stops the run there",
+                                 seconds)});
+    }
+  if (std::optional<diag::Diagnostic> w = runtime::gripperWarning(run, file)) out.push_back(std::move(*w));
+  return out;
+}
+
+std::vector<diag::Diagnostic> runDiagnostics(const runtime::Run& run, runtime::CollisionMode mode,
+                                             const std::string& file) {
+  std::vector<diag::Diagnostic> out;
+  if (const std::optional<vm::RunOutcome> outcome = run.outcome(); outcome && !outcome->ok())
+    out.push_back(stopDiagnostic(run.image(), *outcome, file));
+  for (diag::Diagnostic& w : runWarnings(run, mode, file)) out.push_back(std::move(w));
+  return out;
+}
+
+}  // namespace rs::launch

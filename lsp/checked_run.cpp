@@ -1,0 +1,168 @@
+#include "lsp/checked_run.h"
+
+#include <fmt/format.h>
+#include <time.h>
+
+#include "launch/program.h"
+#include "launch/run_diagnostics.h"
+#include "launch/run_request.h"
+#include "lsp/program_analysis.h"
+#include "runtime/run/run.h"
+#include "runtime/stimuli.h"
+
+namespace rs::lsp {
+
+namespace {
+
+// The CPU time of the calling thread: the run's budget is the work the
+// worker's thread does, whatever else the machine is doing meanwhile (a
+// wall-clock budget ran out on a loaded machine before the work did).
+std::chrono::nanoseconds threadTime() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return std::chrono::seconds(t.tv_sec) + std::chrono::nanoseconds(t.tv_nsec);
+}
+
+// Notes when each instruction first starts and ends, and how often it runs;
+// pauses the run when it is abandoned or out of time (the thread's clock
+// read every kClockEvery steps: a step costs nanoseconds, a read hundreds).
+class Timer final : public vm::StepObserver {
+ public:
+  static constexpr std::uint64_t kClockEvery = 1024;
+
+  Timer(std::vector<InstructionTimes>& times, const RunControl& control, std::chrono::nanoseconds deadline)
+      : times_(times), control_(control), deadline_(deadline) {}
+  bool afterStep(const vm::Interpreter& vm, std::uint32_t index) override {
+    const vm::Micros now = vm.machine().now();
+    if (index < times_.size()) {
+      InstructionTimes& t = times_[index];
+      if (t.runs++ == 0) t.start = before_, t.end = now;
+    }
+    before_ = now;
+    if (control_.abandoned()) return true;
+    if (++steps_ % kClockEvery == 0 && threadTime() >= deadline_) outOfTime_ = true;
+    return outOfTime_;
+  }
+  bool outOfTime() const { return outOfTime_; }
+
+ private:
+  std::vector<InstructionTimes>& times_;
+  const RunControl& control_;
+  std::chrono::nanoseconds deadline_;
+  vm::Micros before_ = 0;
+  std::uint64_t steps_ = 0;
+  bool outOfTime_ = false;
+};
+
+std::string summaryOf(const runtime::Run& run, const vm::RunOutcome& outcome) {
+  const std::string at = formatSeconds(run.clock());
+  const std::uint32_t line = run.image().lines[outcome.index];
+  switch (outcome.reason) {
+    case vm::StopReason::End: return fmt::format("finished at {}", at);
+    case vm::StopReason::RuntimeError:
+      return fmt::format("stopped by an error at {} (line {}: {})", at, line, outcome.message);
+    case vm::StopReason::Deadlock: return fmt::format("waits forever for an input at {} (line {})", at, line);
+    case vm::StopReason::StepLimit:
+    case vm::StopReason::TimeLimit:
+    case vm::StopReason::InstantLimit:
+      return fmt::format("stopped by the {} at {} (line {})", launch::stopReasonName(outcome.reason), at, line);
+    case vm::StopReason::Paused: break;
+  }
+  return {};
+}
+
+// The run stopped by the editor's budget: a note where it stopped, so
+// that no line is left looking checked when it was not.
+diag::Diagnostic budgetNote(const runtime::Run& run, const std::string& file, std::chrono::milliseconds budget) {
+  const auto last = static_cast<std::uint32_t>(run.image().code.size() - 1);
+  const std::uint32_t index = std::min(run.interpreter().pc(), last);
+  return {file,
+          {run.image().lines[index], run.image().columns[index]},
+          diag::Severity::Note,
+          fmt::format("the editor's run stopped here after {} s of checking ({} instructions, {} simulated), before "
+                      "the program ended: what comes after is not checked in the editor",
+                      static_cast<double>(budget.count()) / 1000.0, run.interpreter().steps(), formatSeconds(run.clock())),
+          "run-not-finished",
+          "robotsim check runs it to its end"};
+}
+
+}  // namespace
+
+std::optional<std::uint32_t> CheckedRun::stoppedAt() const {
+  if (!outcome || outcome->ok()) return std::nullopt;
+  return outcome->index;
+}
+
+void RunControl::abandon() {
+  abandoned_.store(true, std::memory_order_relaxed);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (run_) run_->requestPause();
+}
+
+void RunControl::attach(runtime::Run* run) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  run_ = run;
+}
+
+CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, RunControl& control,
+                    std::chrono::milliseconds budget) {
+  CheckedRun out;
+  const std::chrono::nanoseconds deadline = threadTime() + budget;
+  if (!analysis.image() || control.abandoned()) {
+    out.end = CheckedRun::End::Abandoned;
+    return out;
+  }
+  // The spec as `check` makes it, from the same function.
+  launch::LoadedProgram program;
+  program.image = analysis.image();
+  program.cell = analysis.cell().cell;
+  launch::RunRequest request;
+  request.collisions = runtime::collisionModeName(options.collisions);
+  std::vector<diag::Diagnostic> problems;
+  std::optional<runtime::RunSpec> spec = launch::prepareRun(program, request, problems);
+  if (!spec) {
+    out.end = CheckedRun::End::Abandoned;
+    return out;
+  }
+  // The stimuli file beside the program, from the editor's text when it
+  // holds one (check would read the saved file).
+  if (options.stimuliText || !options.stimuliPath.empty()) {
+    runtime::StimuliParse parsed = options.stimuliText
+                                       ? runtime::parseStimuli(*options.stimuliText, options.stimuliFile)
+                                       : runtime::loadStimuliFile(options.stimuliPath);
+    if (!parsed.errors.empty()) {
+      out.end = CheckedRun::End::NotRun;
+      out.diagnostics.push_back({analysis.source().name(), {}, diag::Severity::Note,
+                                 fmt::format("not run in the editor: the stimuli file beside it, {}, has errors",
+                                             options.stimuliFile),
+                                 "run-not-made", "its diagnostics are in that file"});
+      out.summary = "not made (its stimuli file has errors)";
+      return out;
+    }
+    spec->stimuli = std::move(parsed.stimuli);
+  }
+  out.times.resize(spec->image->code.size());
+  Timer timer(out.times, control, deadline);
+  runtime::Run run(*spec);
+  run.observe(timer);
+  control.attach(&run);
+  vm::RunOutcome outcome = run.runToEnd();
+  control.attach(nullptr);
+  out.clock = run.clock();
+  out.steps = run.interpreter().steps();
+  if (run.finished()) {
+    out.outcome = outcome;
+    out.diagnostics = launch::runDiagnostics(run, spec->collisions, analysis.source().name());
+    out.summary = summaryOf(run, outcome);
+  } else if (control.abandoned() || !timer.outOfTime()) {
+    out.end = CheckedRun::End::Abandoned;
+  } else {
+    out.end = CheckedRun::End::OutOfBudget;
+    out.diagnostics.push_back(budgetNote(run, analysis.source().name(), budget));
+    out.summary = fmt::format("still running at {} after {} instructions, when the editor's run stopped",
+                              formatSeconds(out.clock), out.steps);
+  }
+  return out;
+}
+
+}  // namespace rs::lsp
