@@ -27,8 +27,8 @@ struct RequestFrame {
 /// The first request in `bytes` (what a connection sent and is not answered yet).
 RequestFrame frameRequest(std::string_view bytes, std::size_t maxHead, std::size_t maxBody);
 
-/// The head's "Expect" header renamed in place (same length), once the
-/// server has answered it: cpp-httplib would answer it a second time.
+/// The head's "Expect" header renamed in place (same length): the whole
+/// request is in, and cpp-httplib would answer "100 Continue" again.
 void disarmExpect(std::string& request, std::size_t headLength);
 
 }  // namespace rs::teach

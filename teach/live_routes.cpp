@@ -7,6 +7,7 @@
 #include <random>
 
 #include "base/file_io.h"
+#include "teach/http_frame.h"
 
 namespace rs::teach {
 
@@ -177,8 +178,13 @@ LiveRoutes::LiveRoutes(LiveSource& source, std::string token, ServerAddress addr
 LiveRoutes::~LiveRoutes() = default;
 
 LiveAnswer LiveRoutes::answer(std::string_view request, const std::string& peer) const {
+  // The body is here: "Expect: 100-continue" is answered by the server
+  // when the head arrives (or not at all), never again in the answer.
+  std::string whole(request);
+  const std::size_t head = whole.find("\r\n\r\n");
+  disarmExpect(whole, head == std::string::npos ? whole.size() : head + 4);
   LiveAnswer a;
-  MemoryStream stream(request, a.response, peer);
+  MemoryStream stream(whole, a.response, peer);
   tAnswer = &a;
   bool closed = false;
   http_->process_request(stream, false, closed, [](httplib::Request&) {});

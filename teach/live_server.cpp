@@ -292,7 +292,6 @@ struct LiveServer::Loop {
     }
     Job job{id, c.in.substr(0, frame.length), c.peer};
     c.in.erase(0, frame.length);
-    if (c.continueSent) disarmExpect(job.request, frame.headLength);
     c.continueSent = false;
     c.phase = Phase::kWorking;
     {
