@@ -122,9 +122,10 @@ LiveRoutes::LiveRoutes(LiveSource& source, std::string token, ServerAddress addr
     res.set_header("Cache-Control", "no-store");
     res.set_header("X-Content-Type-Options", "nosniff");
     res.set_header("Referrer-Policy", "no-referrer");
-    if (const std::string why = whyNotSameOrigin(req.get_header_value("Host"), req.get_header_value("Origin"),
-                                                 req.get_header_value("Sec-Fetch-Site"), address_);
-        !why.empty()) {
+    const std::string host = req.get_header_value("Host"), origin = req.get_header_value("Origin"),
+                      site = req.get_header_value("Sec-Fetch-Site");
+    const bool navigation = req.method == "GET" && req.get_header_value("Sec-Fetch-Mode") == "navigate";
+    if (const std::string why = whyNotSameOrigin({host, origin, site, navigation}, address_); !why.empty()) {
       replyError(res, 403, why);
       return httplib::Server::HandlerResponse::Handled;
     }

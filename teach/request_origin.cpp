@@ -80,8 +80,8 @@ std::string shown(std::string_view header) { return base::safeText(header.substr
 
 }  // namespace
 
-std::string whyNotSameOrigin(std::string_view host, std::string_view origin, std::string_view fetchSite,
-                             const ServerAddress& server) {
+std::string whyNotSameOrigin(const RequestOrigin& request, const ServerAddress& server) {
+  const std::string_view host = request.host, origin = request.origin, fetchSite = request.fetchSite;
   if (host.empty()) return "a request needs a Host header (the address it was sent to)";
   const std::string listen = lower(server.host);
   const bool everywhere = listen == "0.0.0.0" || listen == "::";
@@ -99,7 +99,8 @@ std::string whyNotSameOrigin(std::string_view host, std::string_view origin, std
         "a request from the page of another site ('{}') is refused: only the page this server serves sends it "
         "commands",
         shown(origin));
-  if (!fetchSite.empty() && !base::sameName(fetchSite, "same-origin") && !base::sameName(fetchSite, "none"))
+  if (!fetchSite.empty() && !base::sameName(fetchSite, "same-origin") && !base::sameName(fetchSite, "none") &&
+      !request.navigation)
     return fmt::format("a request the browser marks as sent from another site ('{}') is refused", shown(fetchSite));
   return {};
 }

@@ -100,7 +100,7 @@ TEST_CASE("test --junit into a FIFO feeds its reader", "[cli][output]") {
   CHECK(fs::is_fifo(fifo));
 }
 
-TEST_CASE("compile -o through a link keeps the link and its target's mode; a 0600 image stays 0600", "[cli][output]") {
+TEST_CASE("compile -o through a link keeps the link and its target's mode, a 0600 image stays 0600", "[cli][output]") {
   const rs::testing::TempDir dir;
   const std::string prog = dir.write("p.rsp", kTinyProgram);
   fs::create_directories(dir.path() / "images");

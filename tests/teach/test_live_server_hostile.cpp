@@ -195,7 +195,7 @@ TEST_CASE("connections beyond the bound per client take the place of the longest
   CHECK(s.server->connections() <= 10);
 }
 
-TEST_CASE("a request not whole in time gets 408; an idle connection just ends", "[teach][live][hostile]") {
+TEST_CASE("a request not whole in time gets 408, an idle connection just ends", "[teach][live][hostile]") {
   rs::teach::LiveLimits limits;
   limits.requestTimeout = std::chrono::milliseconds(200);
   HostileServed s(limits);
@@ -252,6 +252,11 @@ TEST_CASE("only this server's own Host and Origin: DNS rebinding and cross-origi
   CHECK(status("Sec-Fetch-Site: cross-site\r\n", "POST", "/api/command", jog) == 403);
   CHECK(status("Sec-Fetch-Site: same-site\r\n", "POST", "/api/command", jog) == 403);
   CHECK(status("Sec-Fetch-Site: same-origin\r\n" + self, "POST", "/api/command", jog) == 200);
+  // The page opened from another site's link (a navigation) is served; a
+  // cross-site read of the state or a cross-site form's POST is not.
+  CHECK(status("Sec-Fetch-Site: cross-site\r\nSec-Fetch-Mode: navigate\r\n", "GET", "/") == 200);
+  CHECK(status("Sec-Fetch-Site: cross-site\r\nSec-Fetch-Mode: cors\r\n", "GET", "/api/state") == 403);
+  CHECK(status("Sec-Fetch-Site: cross-site\r\nSec-Fetch-Mode: navigate\r\n", "POST", "/api/command", jog) == 403);
   CHECK(s.state()["encoders"][0] == before + 7);  // only that last one moved it
   // A cross-origin teach writes nothing.
   CHECK(status("Origin: http://evil.example\r\nContent-Type: text/plain\r\n", "POST", "/api/command",
@@ -259,7 +264,7 @@ TEST_CASE("only this server's own Host and Origin: DNS rebinding and cross-origi
   CHECK(rs::testing::readBytes(s.path) == kHostileProgram);
 }
 
-TEST_CASE("bodies up to 16 KiB whatever their Content-Type; over it 413 saying so", "[teach][live][hostile]") {
+TEST_CASE("bodies up to 16 KiB whatever their Content-Type, over it 413 saying so", "[teach][live][hostile]") {
   HostileServed s;
   // curl -d's default type: cpp-httplib refused it over 8 KiB as "over 16384 bytes".
   std::string body = R"({"op":"jog","motor":0,"delta":3})";
@@ -317,7 +322,7 @@ TEST_CASE("numbers that do not fit 32 bits are malformed, never wrapped", "[teac
   CHECK(s.state()["encoders"][0] == -2);
 }
 
-TEST_CASE("a point name longer than the language allows is refused; the longest allowed compiles",
+TEST_CASE("a point name longer than the language allows is refused, the longest allowed compiles",
           "[teach][live][hostile]") {
   HostileServed s;
   const std::string longest(64, 'P'), tooLong(65, 'P');

@@ -3,10 +3,9 @@
 // at PROG.rsp.tmp is never followed (its target was overwritten), one
 // planted at PROG.rsp.bak is replaced rather than followed, a program that
 // is a link stays a link, and nothing is left beside the program.
-#include <catch2/catch.hpp>
-
 #include <sys/stat.h>
 
+#include <catch2/catch.hpp>
 #include <filesystem>
 
 #include "teach/program_file.h"
@@ -65,7 +64,7 @@ TEST_CASE("teach never follows a link planted at PROG.rsp.tmp or PROG.rsp.bak", 
   CHECK(rs::testing::readBytes(path).ends_with("\nA 1 2 3 4\n"));
 }
 
-TEST_CASE("a program that is a link stays a link; its target is taught", "[teach][write]") {
+TEST_CASE("a program that is a link stays a link, its target is taught", "[teach][write]") {
   const rs::testing::TempDir dir;
   fs::create_directories(dir.path() / "src");
   const std::string target = dir.write("src/p.rsp", "        END\nPOINTS\n");
