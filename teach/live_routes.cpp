@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <httplib.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <random>
 
@@ -16,6 +17,10 @@ namespace {
 // The answer the handlers of the request being answered on this thread
 // fill in (cpp-httplib's handlers see only the request and the response).
 thread_local LiveAnswer* tAnswer = nullptr;
+// Whether cpp-httplib read the request far enough to route it (its
+// pre-routing handler ran); when not, it answers on its own, without our
+// headers, and keeps the connection.
+thread_local bool tRouted = false;
 
 void replyJson(httplib::Response& res, int status, const nlohmann::json& body) {
   res.status = status;
@@ -60,6 +65,7 @@ const char* reasonOf(int status) {
     case 408: return "Request Timeout";
     case 411: return "Length Required";
     case 413: return "Payload Too Large";
+    case 414: return "URI Too Long";
     case 431: return "Request Header Fields Too Large";
     case 503: return "Service Unavailable";
     default: return "Error";
@@ -119,6 +125,7 @@ LiveRoutes::LiveRoutes(LiveSource& source, std::string token, ServerAddress addr
   http.set_payload_max_length(kMaxBody);
   http.set_keep_alive_max_count(1000);  // as announced in Keep-Alive: the server's own timeouts decide
   http.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    tRouted = true;
     res.set_header("Cache-Control", "no-store");
     res.set_header("X-Content-Type-Options", "nosniff");
     res.set_header("Referrer-Policy", "no-referrer");
@@ -187,6 +194,7 @@ LiveAnswer LiveRoutes::answer(std::string_view request, const std::string& peer)
   LiveAnswer a;
   MemoryStream stream(whole, a.response, peer);
   tAnswer = &a;
+  tRouted = false;
   bool closed = false;
   http_->process_request(stream, false, closed, [](httplib::Request&) {});
   tAnswer = nullptr;
@@ -195,8 +203,14 @@ LiveAnswer LiveRoutes::answer(std::string_view request, const std::string& peer)
     // Allowed (every check passed): the server writes the stream's head and events.
     a.response.clear();
     a.close = false;
-  } else if (a.response.empty()) {
-    a.response = plainResponse(400, "not an HTTP request", true);
+  } else if (a.response.empty() || !tRouted) {
+    // A request cpp-httplib could not read (a request line or header line
+    // it cannot parse, a path over its limit): what it would answer does
+    // not follow the request's method (a HEAD got a body, which a client
+    // reads as the next answer), so the answer is ours and ends the connection.
+    const int status = a.response.size() > 12 ? std::atoi(a.response.c_str() + 9) : 0;
+    a.response = status == 414 ? plainResponse(414, "the request's path is too long", true)
+                               : plainResponse(400, "not an HTTP request (a line of its head cannot be read)", true);
     a.close = true;
   }
   return a;

@@ -264,6 +264,36 @@ TEST_CASE("only this server's own Host and Origin: DNS rebinding and cross-origi
   CHECK(rs::testing::readBytes(s.path) == kHostileProgram);
 }
 
+TEST_CASE("a request whose head cannot be read gets 400 and the connection ends", "[teach][live][hostile]") {
+  // Found by fuzz_live_http: cpp-httplib answered a request line it could
+  // not read itself, with a body even to HEAD, and kept the connection, so
+  // a client read that body as the next answer.
+  HostileServed s;
+  for (const std::string method : {"HEAD", "GET"}) {
+    Socket c(s.port());
+    // A NUL in the path (cpp-httplib cannot read the request line).
+    c.send(fmt::format("{} /api/st{}ate?token={} HTTP/1.1\r\nHost: {}\r\n\r\n", method, std::string(1, '\0'),
+                       s.server->token(), s.host()) +
+           s.request("GET", "/api/state", ""));
+    const std::string answer = c.receiveAll(5);
+    INFO(method << ": " << answer);
+    CHECK(rawhttp::statusOf(answer) == 400);
+    CHECK_THAT(answer, Catch::Contains("Connection: close\r\n"));
+    CHECK_THAT(answer, Catch::Contains("a line of its head cannot be read"));
+    CHECK(answer.find("HTTP/1.1", 1) == std::string::npos);  // the request after it is not answered
+    CHECK(c.closedByServer());
+  }
+  // A path over cpp-httplib's 8 KiB: 414, ours, and the connection ends too.
+  Socket longPath(s.port());
+  longPath.send(fmt::format("GET {}&x={} HTTP/1.1\r\nHost: {}\r\n\r\n", s.q("/api/state"), std::string(9000, 'a'),
+                            s.host()));
+  const std::string tooLong = longPath.receiveAll(5);
+  CHECK(rawhttp::statusOf(tooLong) == 414);
+  CHECK_THAT(tooLong, Catch::Contains("the request's path is too long"));
+  CHECK(longPath.closedByServer());
+  CHECK(rawhttp::statusOf(s.exchange(s.request("GET", "/api/state", ""))) == 200);  // and the server goes on
+}
+
 TEST_CASE("bodies up to 16 KiB whatever their Content-Type, over it 413 saying so", "[teach][live][hostile]") {
   HostileServed s;
   // curl -d's default type: cpp-httplib refused it over 8 KiB as "over 16384 bytes".
