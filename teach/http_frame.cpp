@@ -41,6 +41,14 @@ RequestFrame refused(int status, std::string message) {
 
 RequestFrame frameRequest(std::string_view bytes, std::size_t maxHead, std::size_t maxBody) {
   const std::size_t end = bytes.substr(0, maxHead + kHeadEnd.size()).find(kHeadEnd);
+  // A line of the head that ends in a bare LF: cpp-httplib ends lines there,
+  // these frames only at CR LF, so the two would read different headers (a
+  // Content-Length or an Expect one of them does not see). Refused as soon
+  // as it arrives, whatever follows.
+  const std::string_view head =
+      bytes.substr(0, end == std::string_view::npos ? maxHead + kHeadEnd.size() : end + kHeadEnd.size());
+  for (std::size_t lf = head.find('\n'); lf != std::string_view::npos; lf = head.find('\n', lf + 1))
+    if (lf == 0 || head[lf - 1] != '\r') return refused(400, "a line of the request's head ends in a bare LF, not CR LF");
   if (end == std::string_view::npos) {
     if (bytes.size() >= maxHead + kHeadEnd.size())
       return refused(431, fmt::format("the request's head is over {}", base::sizeText(maxHead)));
@@ -48,11 +56,11 @@ RequestFrame frameRequest(std::string_view bytes, std::size_t maxHead, std::size
   }
   RequestFrame f;
   f.headLength = end + kHeadEnd.size();
-  const std::string_view head = bytes.substr(0, end + 2);  // the last header line keeps its CR LF
+  const std::string_view lines = bytes.substr(0, end + 2);  // the last header line keeps its CR LF
   std::size_t lengths = 0;
   std::size_t body = 0;
   bool lengthOk = true, chunked = false;
-  eachHeader(head, [&](std::string_view name, std::string_view value, std::size_t) {
+  eachHeader(lines, [&](std::string_view name, std::string_view value, std::size_t) {
     if (base::sameName(name, "Content-Length")) {
       ++lengths;
       body = 0;

@@ -5,7 +5,9 @@
 // (none without it). What cannot be framed is refused with the status to
 // answer: a head over its limit (431), a body over its limit (413, from
 // Content-Length, before it is read), a chunked body (411: the page and
-// curl send Content-Length), a Content-Length that is not one number (400).
+// curl send Content-Length), a Content-Length that is not one number, or a
+// head line that ends in a bare LF (400: cpp-httplib would read other
+// headers than these frames do).
 #pragma once
 
 #include <cstddef>

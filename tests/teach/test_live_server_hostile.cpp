@@ -294,6 +294,25 @@ TEST_CASE("a request whose head cannot be read gets 400 and the connection ends"
   CHECK(rawhttp::statusOf(s.exchange(s.request("GET", "/api/state", ""))) == 200);  // and the server goes on
 }
 
+TEST_CASE("a head line ending in a bare LF is refused at once: no header hidden from the framing",
+          "[teach][live][hostile]") {
+  // Found by fuzz_live_http: cpp-httplib ends a header line at a bare LF,
+  // the server's framing only at CR LF, so a Content-Length (or an Expect)
+  // after a bare LF was read by one and not the other: the body was framed
+  // as the next request.
+  HostileServed s;
+  const std::string jog = R"({"op":"jog","motor":0,"delta":5})";
+  Socket c(s.port());
+  c.send(fmt::format("POST {} HTTP/1.1\r\nHost: {}\nContent-Length: {}\r\n\r\n{}", s.q("/api/command"), s.host(),
+                     jog.size(), jog));
+  const std::string answer = c.receiveAll(5);
+  CHECK(rawhttp::statusOf(answer) == 400);
+  CHECK_THAT(answer, Catch::Contains("ends in a bare LF"));
+  CHECK(answer.find("HTTP/1.1", 1) == std::string::npos);
+  CHECK(c.closedByServer());
+  CHECK(s.state()["encoders"][0] == 0);
+}
+
 TEST_CASE("bodies up to 16 KiB whatever their Content-Type, over it 413 saying so", "[teach][live][hostile]") {
   HostileServed s;
   // curl -d's default type: cpp-httplib refused it over 8 KiB as "over 16384 bytes".
