@@ -31,42 +31,6 @@ constexpr std::size_t kReadPiece = 16 * 1024;
 constexpr auto kLinger = 2s;          // reading what a client still sends after our last answer, so it gets it
 constexpr auto kAcceptPause = 100ms;  // out of file descriptors: accept again after this
 
-enum class Phase {
-  kReading,  // waiting for a whole request (or writing the answer to the last one)
-  kWorking,  // a worker has its request
-  kStream,   // an event stream
-  kClosing,  // our side is done; reading what still comes for a moment
-};
-
-struct Connection {
-  int fd = -1;
-  std::string peer;
-  Phase phase = Phase::kReading;
-  std::string in;
-  std::string out;
-  std::size_t sent = 0;
-  bool closeAfter = false;
-  bool peerDone = false;  // the client sent its end: answered, then closed
-  bool continueSent = false;
-  Clock::time_point waitingSince;  // the request timeout's start: connected, or the last answer sent
-  Clock::time_point lastWrite;     // the last progress writing `out`
-  std::uint64_t revision = 0;      // a stream: the revision it was last sent
-  Clock::time_point lastEvent;
-
-  bool pending() const { return sent < out.size(); }
-};
-
-struct Job {
-  std::uint64_t id;
-  std::string request;
-  std::string peer;
-};
-
-struct Done {
-  std::uint64_t id;
-  LiveAnswer answer;
-};
-
 std::string peerAddress(const sockaddr_storage& addr) {
   char text[INET6_ADDRSTRLEN] = {};
   if (addr.ss_family == AF_INET)
@@ -114,7 +78,46 @@ int listenOn(const std::string& host, int port, int& boundPort, std::string& err
 
 }  // namespace
 
+// The connections and the work on them: nested here, not in the anonymous
+// namespace, since Loop (a member of LiveServer) holds them (a unity build
+// warns of a class with linkage holding types without).
 struct LiveServer::Loop {
+  enum class Phase {
+    kReading,  // waiting for a whole request (or writing the answer to the last one)
+    kWorking,  // a worker has its request
+    kStream,   // an event stream
+    kClosing,  // our side is done; reading what still comes for a moment
+  };
+
+  struct Connection {
+    int fd = -1;
+    std::string peer;
+    Phase phase = Phase::kReading;
+    std::string in;
+    std::string out;
+    std::size_t sent = 0;
+    bool closeAfter = false;
+    bool peerDone = false;  // the client sent its end: answered, then closed
+    bool continueSent = false;
+    Clock::time_point waitingSince;  // the request timeout's start: connected, or the last answer sent
+    Clock::time_point lastWrite;     // the last progress writing `out`
+    std::uint64_t revision = 0;      // a stream: the revision it was last sent
+    Clock::time_point lastEvent;
+
+    bool pending() const { return sent < out.size(); }
+  };
+
+  struct Job {
+    std::uint64_t id;
+    std::string request;
+    std::string peer;
+  };
+
+  struct Done {
+    std::uint64_t id;
+    LiveAnswer answer;
+  };
+
   Loop(LiveServer& server, int listener, int port)
       : owner(server),
         limits(server.limits_),
