@@ -61,46 +61,4 @@ FileRead readFile(const std::string& path, std::size_t limit) {
   return result;
 }
 
-bool writeFileAtomically(const std::string& path, const std::function<bool(std::ostream&)>& write,
-                         std::string& error) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      error = std::strerror(errno);
-      return false;
-    }
-    const bool written = write(out);
-    out.flush();
-    if (!written || !out) {
-      error = "write error";
-      out.close();
-      std::remove(tmp.c_str());
-      return false;
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    error = ec.message();
-    std::remove(tmp.c_str());
-    return false;
-  }
-  return true;
-}
-
-bool writeFileAtomically(const std::string& path, std::string_view bytes, std::string& error) {
-  return writeFileAtomically(
-      path,
-      [bytes](std::ostream& out) {
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        return static_cast<bool>(out);
-      },
-      error);
-}
-
-bool writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string& error) {
-  return writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), error);
-}
-
 }  // namespace rs::base

@@ -3,13 +3,20 @@
 // but rescans the section), a whole guarded write (read back, hash,
 // atomic write) of a 1,000-point program, and a jog's round trip through
 // the live server on 127.0.0.1 (HTTP POST, the simulated move, the state
-// republished), with the page's and the state's sizes. Prints figures for
-// docs/performance.md; not a test.
+// republished), with the page's and the state's sizes, alone and beside
+// 50 slow connections (25 silent, 25 with a request cut short) and 8 event
+// streams that never read (issue 26: eight of them froze the pendant).
+// Prints figures for docs/performance.md; not a test.
+#include <arpa/inet.h>
 #include <fmt/format.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <thread>
 #include <vector>
 
 #include "base/file_io.h"
@@ -27,6 +34,19 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double micros(Clock::duration d) { return std::chrono::duration<double, std::micro>(d).count(); }
+
+// A connection to 127.0.0.1:port that sends `bytes` and then nothing, never reading.
+int slowClient(int port, const std::string& bytes, int receiveBuffer) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (receiveBuffer > 0) ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &receiveBuffer, sizeof receiveBuffer);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(static_cast<std::uint16_t>(port));
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) return -1;
+  if (!bytes.empty() && ::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL) < 0) return -1;
+  return fd;
+}
 
 struct Stats {
   double median = 0, p95 = 0, best = 0;
@@ -104,6 +124,41 @@ int main() {
     }
     const Stats j = stats(jogs);
     fmt::print("jog round trip over HTTP (scara-pick, keep-alive): median {:.0f} us, p95 {:.0f} us\n", j.median, j.p95);
+    // The same beside clients that hold connections and streams open.
+    std::vector<int> slow;
+    const std::string host = fmt::format("Host: 127.0.0.1:{}\r\n", server.port());
+    for (int i = 0; i < 25; ++i) slow.push_back(slowClient(server.port(), "", 0));
+    for (int i = 0; i < 25; ++i)
+      slow.push_back(
+          slowClient(server.port(), "POST " + route + " HTTP/1.1\r\n" + host + "Content-Length: 40\r\nX-Slow: ", 0));
+    for (int i = 0; i < 8; ++i)
+      slow.push_back(
+          slowClient(server.port(), "GET /api/events?token=" + server.token() + " HTTP/1.1\r\n" + host + "\r\n", 4096));
+    if (std::find(slow.begin(), slow.end(), -1) != slow.end()) return 1;
+    for (int i = 0; i < 200 && server.eventStreams() < 8; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::vector<double> crowded, fresh;
+    for (int i = 0; i < 500; ++i) {
+      const std::string body = fmt::format(R"({{"op":"jog","motor":0,"delta":{}}})", i % 2 ? -10 : 10);
+      auto t0 = Clock::now();
+      const auto r = client.Post(route, body, "application/json");
+      if (!r || r->status != 200) return 1;
+      crowded.push_back(micros(Clock::now() - t0));
+      if (i % 5 == 0) {  // a new connection each time: accepted beside the crowd
+        httplib::Client once("127.0.0.1", server.port());
+        t0 = Clock::now();
+        const auto f = once.Post(route, body, "application/json");
+        if (!f || f->status != 200) return 1;
+        fresh.push_back(micros(Clock::now() - t0));
+      }
+    }
+    const Stats c = stats(crowded), f = stats(fresh);
+    fmt::print(
+        "jog beside 50 slow connections and 8 unread event streams: median {:.0f} us ({:.2f}x alone), p95 {:.0f} us, "
+        "slowest {:.0f} us; on a new connection each: median {:.0f} us, slowest {:.0f} us\n",
+        c.median, c.median / j.median, c.p95, *std::max_element(crowded.begin(), crowded.end()), f.median,
+        *std::max_element(fresh.begin(), fresh.end()));
+    for (int fd : slow) ::close(fd);
     fmt::print("page {} KiB, state {} bytes after a jog (with its motion frames)\n", source.page().size() / 1024,
                source.state().size());
   }

@@ -12,13 +12,26 @@ using Json = nlohmann::json;
 
 Outcome bad(std::string message) { return {false, std::move(message), true}; }
 
+// A JSON value as a 32-bit integer, or nullopt. nlohmann-json keeps a
+// number of 2^63 and above as unsigned: read as a signed one it would wrap
+// (18446744073709551615 would be -1), so each kind is checked as itself.
+std::optional<std::int32_t> int32Of(const Json& v) {
+  if (v.is_number_unsigned()) {
+    const std::uint64_t u = v.get<std::uint64_t>();
+    if (u > static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max())) return std::nullopt;
+    return static_cast<std::int32_t>(u);
+  }
+  if (!v.is_number_integer()) return std::nullopt;
+  const std::int64_t i = v.get<std::int64_t>();
+  if (i < std::numeric_limits<std::int32_t>::min() || i > std::numeric_limits<std::int32_t>::max()) return std::nullopt;
+  return static_cast<std::int32_t>(i);
+}
+
 // The argument `key` as a 32-bit integer, or nullopt.
 std::optional<std::int32_t> intArg(const Json& r, const char* key) {
   const auto it = r.find(key);
-  if (it == r.end() || !it->is_number_integer()) return std::nullopt;
-  const std::int64_t v = it->get<std::int64_t>();
-  if (v < std::numeric_limits<std::int32_t>::min() || v > std::numeric_limits<std::int32_t>::max()) return std::nullopt;
-  return static_cast<std::int32_t>(v);
+  if (it == r.end()) return std::nullopt;
+  return int32Of(*it);
 }
 
 std::optional<std::string> stringArg(const Json& r, const char* key) {
@@ -43,7 +56,8 @@ Outcome applyCommand(Pendant& p, const Json& r) {
   if (*op == "jog" || *op == "set") {
     const auto motor = intArg(r, "motor"), amount = intArg(r, *op == "jog" ? "delta" : "value");
     if (!motor || *motor < 0 || !amount)
-      return bad(fmt::format("{} needs \"motor\" (0-based) and \"{}\", whole numbers", *op, *op == "jog" ? "delta" : "value"));
+      return bad(fmt::format("{} needs \"motor\" (0-based) and \"{}\", whole numbers from -2147483648 to 2147483647",
+                             *op, *op == "jog" ? "delta" : "value"));
     return *op == "jog" ? p.jog(static_cast<std::size_t>(*motor), *amount)
                         : p.setMotor(static_cast<std::size_t>(*motor), *amount);
   }
@@ -52,10 +66,9 @@ Outcome applyCommand(Pendant& p, const Json& r) {
     if (it == r.end() || !it->is_array() || it->size() > 64) return bad("moveTo needs \"values\", one per motor");
     std::vector<std::int32_t> values;
     for (const Json& v : *it) {
-      if (!v.is_number_integer() || v.get<std::int64_t>() < std::numeric_limits<std::int32_t>::min() ||
-          v.get<std::int64_t>() > std::numeric_limits<std::int32_t>::max())
-        return bad("moveTo's values are whole numbers");
-      values.push_back(static_cast<std::int32_t>(v.get<std::int64_t>()));
+      const std::optional<std::int32_t> value = int32Of(v);
+      if (!value) return bad("moveTo's values are whole numbers from -2147483648 to 2147483647");
+      values.push_back(*value);
     }
     return p.moveTo(values);
   }

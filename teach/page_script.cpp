@@ -173,6 +173,12 @@ const std::string_view kScript = R"JS('use strict';
   fetch('api/state?token=' + encodeURIComponent(token)).then((r) => r.json()).then(receive);
   const events = new EventSource('api/events?token=' + encodeURIComponent(token));
   events.onmessage = (e) => receive(JSON.parse(e.data));
+  events.onerror = () => {
+    // Refused (too many pages open) or the server gone: say so, once.
+    if (events.readyState !== EventSource.CLOSED) return;
+    el('message').textContent = 'live updates stopped (the server ended, or too many of its pages are open): reload the page';
+    el('message').parentElement.classList.add('failed');
+  };
 
   // ---- Points: teach, go to, re-teach and delete (after a yes), rename.
   function ask(question, command) {

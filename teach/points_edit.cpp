@@ -64,6 +64,8 @@ constexpr std::string_view kBom = "\xEF\xBB\xBF";
 
 std::string checkPointName(std::string_view name) {
   if (name.empty()) return "a point needs a name";
+  if (name.size() > vm::kMaxNameLength)  // the compiler would refuse the program
+    return fmt::format("a point name has at most {} characters (this one has {})", vm::kMaxNameLength, name.size());
   auto letter = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; };
   auto digit = [](char c) { return c >= '0' && c <= '9'; };
   if (!letter(name[0]) || !std::all_of(name.begin(), name.end(), [&](char c) { return letter(c) || digit(c); }))

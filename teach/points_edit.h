@@ -67,7 +67,8 @@ class PointsText {
 };
 
 /// Why `name` cannot name a new point ("" when it can): the language's
-/// name syntax, not a reserved word (an instruction, ON, OFF, POINTS).
+/// name syntax, at most 64 characters (vm::kMaxNameLength), not a reserved
+/// word (an instruction, ON, OFF, POINTS).
 std::string checkPointName(std::string_view name);
 
 }  // namespace rs::teach

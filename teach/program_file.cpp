@@ -1,8 +1,9 @@
 #include "teach/program_file.h"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 
-#include "base/file_io.h"
+#include "base/file_swap.h"
 
 namespace rs::teach {
 
@@ -18,7 +19,7 @@ std::uint64_t textHash(std::string_view bytes) {
 }
 
 std::optional<ProgramFile> ProgramFile::load(const std::string& path, std::string& error) {
-  base::FileRead read = base::readFile(path, kMaxProgramBytes);
+  base::FileRead read = base::readFileWhenQuiet(path, kMaxProgramBytes);
   if (!read.bytes) {
     error = fmt::format("cannot read {}: {}", path, read.error);
     return std::nullopt;
@@ -40,24 +41,38 @@ std::string ProgramFile::reload() {
 }
 
 std::string ProgramFile::write(PointsText next) {
-  base::FileRead now = base::readFile(path_, kMaxProgramBytes);
-  if (!now.bytes) return fmt::format("cannot read {} before writing it: {}", path_, now.error);
-  if (textHash(*now.bytes) != hash_)
-    return fmt::format(
-        "{} changed on disk since teach read it (someone edited it): not written, so their change is kept; "
-        "reload the file to teach on top of it",
-        path_);
+  const std::string expected = points_.text();  // the bytes this session last saw, exactly
   std::string error;
   if (!backedUp_) {
-    if (!base::writeFileAtomically(path_ + ".bak", *now.bytes, error))
+    // The backup is no more readable than the program: it gets its mode.
+    struct stat st {};
+    base::WriteOptions backup;
+    backup.followLinks = false;  // a name teach makes up: a link planted there is replaced, not followed
+    if (::stat(path_.c_str(), &st) == 0) backup.mode = static_cast<unsigned>(st.st_mode & 0777);
+    if (!base::writeFileAtomically(path_ + ".bak", expected, error, backup))
       return fmt::format("cannot write {}.bak: {}; {} not written", path_, error, path_);
     backedUp_ = true;
   }
   const std::string text = next.text();
-  if (!base::writeFileAtomically(path_, text, error)) return fmt::format("cannot write {}: {}", path_, error);
-  points_ = std::move(next);
-  hash_ = textHash(text);
-  return {};
+  const base::SwapResult written = base::replaceFileIfUnchanged(path_, expected, text);
+  switch (written.outcome) {
+    case base::SwapOutcome::kWritten:
+      points_ = std::move(next);
+      hash_ = textHash(text);
+      return {};
+    case base::SwapOutcome::kChanged:
+      return fmt::format(
+          "{} changed on disk since teach read it (someone edited it): not written, so their change is kept; "
+          "reload the file to teach on top of it",
+          path_);
+    case base::SwapOutcome::kBusy:
+      return fmt::format(
+          "{} is being written by another program right now (an editor saving it?): not written, so nothing of "
+          "theirs is lost; try again in a moment",
+          path_);
+    case base::SwapOutcome::kFailed: break;
+  }
+  return fmt::format("cannot write {}: {}", path_, written.error);
 }
 
 }  // namespace rs::teach

@@ -1,10 +1,12 @@
 // The program file a teach session edits: read once, its points edited in
 // memory (points_edit.h), written back after every change. Someone may
-// edit the file in an editor meanwhile: every write first reads the file
-// again and refuses when its hash is not the one of the text the session
-// loaded or last wrote (their change would be lost). A write is atomic (a
-// temporary file renamed into place, base/file_io.h); the first write of a
-// session keeps the file as it was loaded in PROG.rsp.bak.
+// edit the file in an editor meanwhile: every write replaces the file only
+// while it holds exactly the text the session loaded or last wrote
+// (base/file_swap.h: compared under a lease, exchanged, checked, undone
+// when an editor saved in between), so their change is never lost; the
+// write is refused, and says why, when the file changed or an editor is
+// saving it. The file keeps its mode; the first write of a session keeps
+// the file as it was in PROG.rsp.bak, with the program's mode.
 #pragma once
 
 #include <cstdint>

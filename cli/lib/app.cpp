@@ -100,7 +100,10 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   ProgramCommandOptions po;
   CLI::App* compile = app.add_subcommand("compile", "Compile a program to a bytecode image");
   compile->add_option("file", po.program.file, "Program source")->required();
-  compile->add_option("-o,--output", po.output, "Image file to write (.rsb)")->required();
+  compile
+      ->add_option("-o,--output", po.output,
+                   "Image file to write (.rsb; - for standard output; a device or FIFO is written in place)")
+      ->required();
   addCellOptions(compile, po.program);
   addMaxErrorsOption(compile, po.program);
   CLI::App* disasm = app.add_subcommand("disasm", "List the bytecode of a program or image");

@@ -97,6 +97,7 @@ int debugCommand(const DebugOptions& o, std::istream& in, std::ostream& out, std
   out << fmt::format("robotsim debug: {} ({} instructions); help lists the commands\n",
                      base::safeText(spec->image->sourceName), spec->image->code.size());
   std::shared_ptr<DebugView> view;
+  PageLink link;  // --open's way in for the browser; removed when the session ends
   if (o.view) {
     std::string error;
     view = DebugView::start(session, o.program.file, error);
@@ -105,7 +106,8 @@ int debugCommand(const DebugOptions& o, std::istream& in, std::ostream& out, std
       return kExitBadInput;
     }
     out << "live view: " << view->url() << '\n' << std::flush;
-    if (o.open && !openBrowser(view->url())) err << "robotsim: note: could not start xdg-open; open the URL yourself\n";
+    if (std::string why; o.open && !openBrowser(view->url(), link, why))
+      err << "robotsim: note: " << why << "; open the URL yourself\n";
   }
   console.showStop(session.lastStop());
 

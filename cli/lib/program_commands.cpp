@@ -49,8 +49,9 @@ int compileCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostre
     err << fmt::format("{}: error: cannot write: {}\n", base::safeText(o.output), error);
     return kExitBadInput;
   }
-  out << fmt::format("{} -> {} ({} instructions)\n", base::safeText(o.program.file), base::safeText(o.output),
-                     program.image->code.size());
+  // With -o - the image is standard output: the note goes beside the errors.
+  (o.output == "-" ? err : out) << fmt::format("{} -> {} ({} instructions)\n", base::safeText(o.program.file),
+                                               base::safeText(o.output), program.image->code.size());
   return kExitOk;
 }
 

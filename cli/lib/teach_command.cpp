@@ -59,7 +59,10 @@ CLI::App* addTeachCommand(CLI::App& app, TeachOptions& o) {
   cmd->add_option("file", o.request.program.file, "Program source (.rsp) whose points to teach")->required();
   addCellOptions(cmd, o.request.program);
   addSerialOptions(cmd, o.request.serial);
-  CLI::Option* open = cmd->add_flag("--open", o.open, "Open the page in a browser (xdg-open)");
+  CLI::Option* open =
+      cmd->add_flag("--open", o.open,
+                    "Open the page in a browser (xdg-open, given a private file that leads to the URL: the token never "
+                    "appears on a command line)");
   CLI::Option* listen =
       cmd->add_option("--listen", o.listen,
                       "Serve on HOST[:PORT] instead of 127.0.0.1 and a free port (another machine can then reach "
@@ -109,7 +112,9 @@ int teachCommand(const TeachOptions& o, std::ostream& out, std::ostream& err) {
   out << fmt::format("robotsim teach: {} on {}{}\n", o.request.program.file, pendant.cell().name,
                      o.request.serial.active() ? " with the robot on " + o.request.serial.device : "");
   out << "  " << server.url() << "\n  (Ctrl-C stops)\n" << std::flush;
-  if (o.open && !openBrowser(server.url())) err << "robotsim: note: could not start xdg-open; open the URL yourself\n";
+  PageLink link;  // the browser's way in, never the token on a command line; removed when teach ends
+  if (std::string why; o.open && !openBrowser(server.url(), link, why))
+    err << "robotsim: note: " << why << "; open the URL yourself\n";
   while (!interrupt.flag().load()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   server.stop();
   out << fmt::format("robotsim teach: stopped; {} has {} points\n", o.request.program.file,

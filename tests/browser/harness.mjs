@@ -84,8 +84,8 @@ export function watchdog(seconds, context, cleanUp) {
 /// `binary args` started with its output kept as it comes (`out`, `err`);
 /// `match(pattern)` waits for the first match in the output, rejected when
 /// the process exits first.
-export function started(binary, args, stdin = 'ignore') {
-  const proc = spawn(binary, args, { stdio: [stdin, 'pipe', 'pipe'] });
+export function started(binary, args, stdin = 'ignore', env = process.env) {
+  const proc = spawn(binary, args, { stdio: [stdin, 'pipe', 'pipe'], env });
   const p = { proc, out: '', err: '' };
   proc.stdout.on('data', (d) => { p.out += d; });
   proc.stderr.on('data', (d) => { p.err += d; });

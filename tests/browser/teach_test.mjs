@@ -14,8 +14,10 @@
 // for byte (worked out by hand: see the comment at `golden` below) and its
 // .bak the program as it was; a write refused after the file changed on
 // disk, the file left as the other editor wrote it; Ctrl-C stops the
-// server. Saves DIR/teach.png (and, with --images, docs screenshots).
-import { execFileSync, spawn } from 'node:child_process';
+// server; --open hands xdg-open a private file (never the token) that
+// brings the browser to the page, and removes it at the end. Saves
+// DIR/teach.png (and, with --images, docs screenshots).
+import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -215,22 +217,34 @@ try {
   const code = await exited;
   check(code === 0 && /stopped; .* has 4 points/.test(teach.out), 'Ctrl-C stops robotsim teach', `exit ${code}`);
 
-  // ---- --open: the URL goes to xdg-open (a stand-in on PATH that writes it down)
+  // ---- --open: xdg-open (a stand-in on PATH that writes down what it is
+  // given) gets a private file, never the token (a command line is
+  // readable by every user); the browser, given that file, ends on the page.
   const bin = path.join(work, 'bin');
+  const runtime = path.join(work, 'runtime');
   fs.mkdirSync(bin);
+  fs.mkdirSync(runtime, { mode: 0o700 });
   fs.writeFileSync(path.join(bin, 'xdg-open'), '#!/bin/sh\nprintf "%s" "$1" > "$(dirname "$0")/opened"\n', { mode: 0o755 });
-  const opener = spawn(opt.robotsim, ['teach', program, '--cell', 'scara-pick', '--open'],
-                       { stdio: ['ignore', 'pipe', 'pipe'], env: { ...process.env, PATH: bin + ':' + process.env.PATH } });
-  let openerOut = '';
-  opener.stdout.on('data', (d) => { openerOut += d; });
+  const opener = started(opt.robotsim, ['teach', program, '--cell', 'scara-pick', '--open'], 'ignore',
+                         { ...process.env, PATH: bin + ':' + process.env.PATH, XDG_RUNTIME_DIR: runtime });
+  const printed = (await opener.match(teachUrl))[0];
   const openedFile = path.join(bin, 'opened');
   for (let i = 0; i < 100 && !fs.existsSync(openedFile); i++) await new Promise((r) => setTimeout(r, 50));
-  const openerExit = new Promise((r) => opener.on('exit', (code) => r(code)));
-  opener.kill('SIGINT');
+  const given = fs.existsSync(openedFile) ? fs.readFileSync(openedFile, 'utf8') : '';
+  const token = new URL(printed).searchParams.get('token');
+  check(given.startsWith(runtime + '/') && !given.includes(token) && (fs.statSync(given).mode & 0o777) === 0o600,
+        '--open hands xdg-open a file only this user can read, not the token', given);
+  context = await launch(chromium, opt.chromium, profile, { width: 1280, height: 860 });
+  const opage = context.pages()[0] ?? await context.newPage();
+  await opage.goto('file://' + given);
+  await opage.waitForURL(printed, { timeout: 10000 });
+  await opage.waitForFunction(() => window.robotsim && window.robotsim.state, null, { timeout: 10000 });
+  check(opage.url() === printed, 'the browser, given that file, ends on the page the URL names');
+  await context.close();
+  const openerExit = new Promise((r) => opener.proc.on('exit', (code) => r(code)));
+  opener.proc.kill('SIGINT');
   await openerExit;
-  const printed = openerOut.match(teachUrl);
-  check(fs.existsSync(openedFile) && printed && fs.readFileSync(openedFile, 'utf8') === printed[0],
-        '--open hands the URL it printed to xdg-open');
+  check(!fs.existsSync(given), 'the file is removed when teach ends');
 
   // ---- with a device: robotsim emulate on a pty, robotsim teach --device on it
   emulator = started(opt.robotsim, ['emulate', '--speed', '10'], 'pipe');

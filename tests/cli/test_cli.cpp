@@ -162,7 +162,8 @@ TEST_CASE("cli: compile, disasm, tokens, ast, help exit codes", "[cli]") {
     CHECK(runCli({"compile", good}).code == 2);
     const CliResult w = runCli({"compile", good, "-o", dir.file("no/such/dir/x.rsb")});
     CHECK(w.code == 2);
-    CHECK(w.err == dir.file("no/such/dir/x.rsb") + ": error: cannot write: No such file or directory\n");
+    CHECK(w.err == dir.file("no/such/dir/x.rsb") + ": error: cannot write: cannot create a temporary file in " +
+                       dir.file("no/such/dir") + ": No such file or directory\n");
   }
   SECTION("disasm") {
     CHECK(runCli({"disasm", good}).code == 0);

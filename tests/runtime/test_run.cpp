@@ -24,7 +24,7 @@ using rs::vm::StopReason;
 
 constexpr Micros kRunSecond = 1'000'000;
 
-const std::string kExamples = rendertest::kSourceDir + "/examples/";
+const std::string kRunExamples = rendertest::kSourceDir + "/examples/";
 
 struct Case {
   std::string program;  // under examples/
@@ -42,14 +42,14 @@ const std::vector<Case> kCases = {
 
 rs::runtime::Stimuli stimuliOf(const Case& c) {
   if (c.stimuli.empty()) return {};
-  rs::runtime::StimuliParse parsed = rs::runtime::loadStimuliFile(kExamples + c.stimuli);
+  rs::runtime::StimuliParse parsed = rs::runtime::loadStimuliFile(kRunExamples + c.stimuli);
   REQUIRE(parsed.errors.empty());
   return parsed.stimuli;
 }
 
 std::unique_ptr<Run> runOf(const Case& c) {
   const rs::workcell::Workcell cell = rendertest::cell(c.cell);
-  return rendertest::runOf(rendertest::compile(kExamples + c.program, cell), &cell, stimuliOf(c), /*log=*/true);
+  return rendertest::runOf(rendertest::compile(kRunExamples + c.program, cell), &cell, stimuliOf(c), /*log=*/true);
 }
 
 // A run that writes its JSON trace into `out`.
