@@ -144,12 +144,21 @@ json benchStartup(const Options& options) {
   const Samples& check = s[1];
   row("robotsim help", floor);
   row(fmt::format("robotsim check {} lines", program.lines), check);
-  const double ms = check.best() * 1e3;
-  fmt::print("  robotsim check, best {:.2f} ms (target <= 20 ms: {})\n", ms,
-             ms <= 20 ? std::string("met") : fmt::format("missed by {:.0f}%", (ms / 20 - 1) * 100));
-  return {{"lines", program.lines}, {"instructions", program.instructions},
-          {"help", toJson(floor)},  {"check", toJson(check)},
-          {"target_s", 0.020},      {"target_met", check.best() <= 0.020}};
+  const double ms = check.best() * 1e3, cpuMs = check.cpuBest() * 1e3;
+  const auto verdictOf = [](double v) {
+    return v <= 20 ? std::string("met") : fmt::format("missed by {:.0f}%", (v / 20 - 1) * 100);
+  };
+  // The target is wall time (what a person waits); on a shared machine that
+  // includes waiting for a core, so the CPU time's verdict is printed too.
+  fmt::print("  robotsim check, best {:.2f} ms (target <= 20 ms: {}); CPU {:.2f} ms ({})\n", ms, verdictOf(ms), cpuMs,
+             verdictOf(cpuMs));
+  return {{"lines", program.lines},
+          {"instructions", program.instructions},
+          {"help", toJson(floor)},
+          {"check", toJson(check)},
+          {"target_s", 0.020},
+          {"target_met", check.best() <= 0.020},
+          {"target_met_cpu", check.cpuBest() <= 0.020}};
 }
 
 // --- 4. Run snapshots ------------------------------------------------------------
