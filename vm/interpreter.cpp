@@ -51,6 +51,16 @@ struct Cursor {
   std::uint64_t steps;
 };
 
+// The opcodes computeRun's switch runs; the table must agree that none of
+// them acts on the machine (a flag added to one later fails here).
+constexpr Op kComputeOps[] = {Op::Set, Op::Add, Op::JmpVar, Op::Goto};
+consteval bool computeOpsAgree() {
+  for (const Op op : kComputeOps)
+    if (has(op, kUsesMachine)) return false;
+  return true;
+}
+static_assert(computeOpsAgree(), "computeRun runs only opcodes that do not act on the machine");
+
 // The instructions that only compute (SET, ADD, JMPVAR, GOTO), in a loop
 // of their own that calls nothing, so that its state stays in registers
 // and its switch of four cases compiles to a few compares: from `pc` until
