@@ -41,8 +41,9 @@ class ByteWriter {
     out.insert(out.end(), s.begin(), s.begin() + static_cast<std::ptrdiff_t>(n));
     spillIfFull();
   }
-  void bytes(const std::vector<std::uint8_t>& b) {
-    out.insert(out.end(), b.begin(), b.end());
+  void bytes(const std::vector<std::uint8_t>& b) { bytes(b.data(), b.size()); }
+  void bytes(const std::uint8_t* data, std::size_t n) {
+    out.insert(out.end(), data, data + n);
     spillIfFull();
   }
   /// Hands what is held to the spill, if there is one.

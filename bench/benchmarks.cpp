@@ -20,90 +20,118 @@ namespace {
 
 using nlohmann::json;
 
-constexpr long kLoopIterations = 10'000'000;
-
 // --- 1. VM dispatch ----------------------------------------------------------------
 
 // Times Run::runToEnd alone (compiled and verified once, a fresh run per
 // measurement) and checks that the loop really counted to the end. The
 // loop takes no simulated time, so the clock-standing-still limit is off.
-Measurement vmLoop(const std::shared_ptr<const vm::Image>& image, std::uint64_t& steps) {
-  return [image, &steps, n = slotOf(*image, "N")] {
+Measurement vmLoop(const std::shared_ptr<const vm::Image>& image, long iterations, std::uint64_t& steps) {
+  return [image, iterations, &steps, n = slotOf(*image, "N")] {
     runtime::RunSpec spec;
     spec.image = image;
-    spec.limits.maxSteps = 3 * static_cast<std::uint64_t>(kLoopIterations);
+    spec.limits.maxSteps = 3 * static_cast<std::uint64_t>(iterations);
     spec.limits.maxStepsPerInstant = 0;
     runtime::Run run(std::move(spec));
     const Stopwatch clock;
     const vm::RunOutcome outcome = run.runToEnd();
     const Sample sample = clock.stop();
     const std::int32_t counted = run.interpreter().variables()[n];
-    if (!outcome.ok() || counted != kLoopIterations)
+    if (!outcome.ok() || counted != iterations)
       throw std::runtime_error(fmt::format("the VM loop stopped early ({}): N = {}", outcome.message, counted));
     steps = outcome.steps;
     return sample;
   };
 }
 
+// A Lua interpreter compared with ours: the loop and an empty script, each
+// a whole process, so that its start-up can be subtracted.
+struct LuaPeer {
+  std::string name;  // as printed and in bench.json
+  std::vector<std::string> command;  // the interpreter and its options, before the script
+  std::size_t first = 0;             // index of its loop's Samples (the empty script's is next)
+};
+
+// What the peer's loop costs beyond its start-up, and our loop over that.
+json comparePeer(const LuaPeer& peer, const Samples& ours, const Samples& raw, const Samples& empty) {
+  row(fmt::format("{} loop (whole process, raw)", peer.name), raw);
+  row(fmt::format("{} empty script (start-up)", peer.name), empty);
+  const double net = raw.best() - empty.best(), netMedian = raw.median() - empty.median();
+  const double netCpu = raw.cpuBest() - empty.cpuBest();
+  json out = {{"command", peer.command}, {"raw", toJson(raw)}, {"empty", toJson(empty)}, {"target_ratio", 1.0}};
+  // A loop that took no longer than the start-up cannot be compared with:
+  // said, never printed as a ratio (a --smoke run on a busy machine).
+  if (net <= 0 || netMedian <= 0 || netCpu <= 0) {
+    fmt::print("  ratio ours / {}: not measurable (its loop took no longer than its start-up)\n", peer.name);
+    out["ratio_corrected"] = "not measurable";
+    return out;
+  }
+  fmt::print("  {:<40} best {}  median {}  [cpu {}]\n", fmt::format("{} loop minus start-up", peer.name), millis(net),
+             millis(netMedian), millis(netCpu));
+  // The verdict is by CPU time: on a shared machine the wall time includes
+  // waiting for a core, which a process started beside others gets more of.
+  const double ratio = ours.best() / net, ratioCpu = ours.cpuBest() / netCpu;
+  fmt::print("  ratio ours / {}, start-up subtracted: CPU {}; best {:.2f}; median {:.2f}; raw process {:.2f}\n",
+             peer.name, verdict(ratioCpu, 1), ratio, ours.median() / netMedian, ours.best() / raw.best());
+  out["corrected"] = {{"best_s", net}, {"median_s", netMedian}, {"cpu_best_s", netCpu}};
+  out["ratio_corrected"] = ratio;
+  out["ratio_corrected_median"] = ours.median() / netMedian;
+  out["ratio_corrected_cpu"] = ratioCpu;
+  out["ratio_raw"] = ours.best() / raw.best();
+  out["target_met"] = ratioCpu <= 1.0;
+  return out;
+}
+
 }  // namespace
 
 json benchDispatch(const Options& options) {
-  fmt::print("\n[1] VM dispatch: SET/ADD/JMPVAR loop, {} iterations\n", kLoopIterations);
+  const long iterations = sized(options, 10'000'000L, 1'000'000L);
+  fmt::print("\n[1] VM dispatch: SET/ADD/JMPVAR loop, {} iterations\n", iterations);
   const diag::SourceFile source("dispatch.rsp",
-                                    fmt::format("SET N 0\nloop: ADD N 1\nJMPVAR N < {} loop\nEND\n", kLoopIterations));
+                                fmt::format("SET N 0\nloop: ADD N 1\nJMPVAR N < {} loop\nEND\n", iterations));
   const auto image = std::make_shared<const vm::Image>(compileOrThrow(source, launch::defaultTarget()));
   if (const vm::VerifyError e = vm::verify(*image); !e.message.empty())
     throw std::runtime_error("the dispatch image does not verify: " + e.message);
 
   std::uint64_t steps = 0;
-  std::vector<Measurement> runs{vmLoop(image, steps)};
-  const bool lua = canRun({options.lua, "-v"});
-  if (lua) {
-    runs.push_back(
-        processMeasurement({options.lua, writeInput(options, "dispatch.lua", luaCountedLoop(kLoopIterations))}));
-    runs.push_back(processMeasurement({options.lua, writeInput(options, "empty.lua", "")}));
+  std::vector<Measurement> runs{vmLoop(image, iterations, steps)};
+  // The same loop for both peers: LuaJIT runs Lua 5.1 code, and this is.
+  const std::string loop = writeInput(options, "dispatch.lua", luaCountedLoop(iterations));
+  const std::string empty = writeInput(options, "empty.lua", "");
+  std::vector<LuaPeer> peers;
+  std::string skipped;
+  for (LuaPeer peer : {LuaPeer{"lua5.4", {options.lua}}, LuaPeer{"luajit -joff", {options.luajit, "-joff"}}}) {
+    std::vector<std::string> version = peer.command;
+    version.push_back("-v");
+    if (!canRun(version)) {
+      skipped += fmt::format("  {} comparison skipped: cannot run {}\n", peer.name, peer.command.front());
+      continue;
+    }
+    peer.first = runs.size();
+    std::vector<std::string> withLoop = peer.command, withEmpty = peer.command;
+    withLoop.push_back(loop);
+    withEmpty.push_back(empty);
+    runs.push_back(processMeasurement(withLoop));
+    runs.push_back(processMeasurement(withEmpty));
+    peers.push_back(std::move(peer));
   }
-  progress(fmt::format("interleaved, 1 warm-up + {} rounds: Run::runToEnd in-process{}", options.reps,
-                       lua ? fmt::format(", {0} loop, {0} empty script (processes)", options.lua) : ""));
+  std::string what = "Run::runToEnd in-process";
+  for (const LuaPeer& p : peers) what += fmt::format(", {0} loop, {0} empty script", p.name);
+  progress(fmt::format("interleaved, 1 warm-up + {} rounds: {}", options.reps, what));
   const std::vector<Samples> s = interleave(runs, options.reps);
   const Samples& ours = s[0];
   row("robotsim VM (in-process run)", ours,
       fmt::format("{} steps, {:.2f} ns/instruction", steps, ours.best() * 1e9 / static_cast<double>(steps)));
-  json out = {{"iterations", kLoopIterations}, {"steps", steps}, {"ours", toJson(ours)}};
-  if (!lua) {
-    fmt::print("  Lua comparison skipped: cannot run {}\n", options.lua);
-    out["lua_skipped"] = true;
-    return out;
-  }
-  const Samples& luaRaw = s[1];
-  const Samples& luaEmpty = s[2];
-  const double netBest = luaRaw.best() - luaEmpty.best();
-  const double netMedian = luaRaw.median() - luaEmpty.median();
-  row("lua5.4 loop (whole process, raw)", luaRaw);
-  row("lua5.4 empty script (startup)", luaEmpty);
-  fmt::print("  {:<40} best {}  median {}\n", "lua5.4 loop minus startup", millis(netBest), millis(netMedian));
-  const double ratio = ours.best() / netBest;
-  const double ratioRaw = ours.best() / luaRaw.best();
-  fmt::print("  ratio ours / Lua, startup subtracted (best) {}\n", verdict(ratio, 1));
-  fmt::print("  ratio ours / Lua, raw process (best)        {:.2f}\n", ratioRaw);
-  fmt::print("  ratio ours / Lua, startup subtracted (median) {:.2f}\n", ours.median() / netMedian);
-  const double ratioCpu = ours.cpuBest() / (luaRaw.cpuBest() - luaEmpty.cpuBest());
-  fmt::print("  ratio ours / Lua, startup subtracted (CPU)  {:.2f}\n", ratioCpu);
-  out["lua_raw"] = toJson(luaRaw);
-  out["lua_empty"] = toJson(luaEmpty);
-  out["lua_corrected"] = {{"best_s", netBest}, {"median_s", netMedian}};
-  out["ratio_corrected"] = ratio;
-  out["ratio_corrected_median"] = ours.median() / netMedian;
-  out["ratio_raw"] = ratioRaw;
-  out["ratio_corrected_cpu"] = ratioCpu;
-  out["target_ratio"] = 1.0;
-  out["target_met"] = ratio <= 1.0;
+  json out = {{"iterations", iterations}, {"steps", steps}, {"ours", toJson(ours)}, {"peers", json::object()}};
+  for (const LuaPeer& p : peers) out["peers"][p.name] = comparePeer(p, ours, s[p.first], s[p.first + 1]);
+  fmt::print("{}", skipped);
+  // The goal (issue 23): no slower than LuaJIT's interpreter.
+  out["target"] = "ours / luajit -joff <= 1 by CPU time, start-up subtracted";
   return out;
 }
 
 json benchStartup(const Options& options) {
   fmt::print("\n[3] Startup: robotsim check, whole process\n");
-  const GeneratedProgram program = robotProgramOfLines(1000);
+  const GeneratedProgram program = robotProgramOfLines(sized<std::size_t>(options, 1000, 100));
   const std::string path = writeInput(options, "startup-1000.rsp", program.text);
   progress(
       fmt::format("1 warm-up + {} rounds: robotsim help (the process floor), robotsim check on {} lines "
@@ -116,19 +144,27 @@ json benchStartup(const Options& options) {
   const Samples& check = s[1];
   row("robotsim help", floor);
   row(fmt::format("robotsim check {} lines", program.lines), check);
-  const double ms = check.best() * 1e3;
-  fmt::print("  robotsim check, best {:.2f} ms (target <= 20 ms: {})\n", ms,
-             ms <= 20 ? std::string("met") : fmt::format("missed by {:.0f}%", (ms / 20 - 1) * 100));
-  return {{"lines", program.lines}, {"instructions", program.instructions},
-          {"help", toJson(floor)},  {"check", toJson(check)},
-          {"target_s", 0.020},      {"target_met", check.best() <= 0.020}};
+  const double ms = check.best() * 1e3, cpuMs = check.cpuBest() * 1e3;
+  const auto verdictOf = [](double v) {
+    return v <= 20 ? std::string("met") : fmt::format("missed by {:.0f}%", (v / 20 - 1) * 100);
+  };
+  // The target is wall time (what a person waits); on a shared machine that
+  // includes waiting for a core, so the CPU time's verdict is printed too.
+  fmt::print("  robotsim check, best {:.2f} ms (target <= 20 ms: {}); CPU {:.2f} ms ({})\n", ms, verdictOf(ms), cpuMs,
+             verdictOf(cpuMs));
+  return {{"lines", program.lines},
+          {"instructions", program.instructions},
+          {"help", toJson(floor)},
+          {"check", toJson(check)},
+          {"target_s", 0.020},
+          {"target_met", check.best() <= 0.020},
+          {"target_met_cpu", check.cpuBest() <= 0.020}};
 }
 
 // --- 4. Run snapshots ------------------------------------------------------------
 
 namespace {
 
-constexpr int kSnapshotLoops = 20'000;
 constexpr std::uint64_t kSnapshotEvery = 300;
 
 // A run of the snapshot program on scara-pick, keeping a log.
@@ -145,7 +181,8 @@ std::unique_ptr<runtime::Run> snapshotRun(const std::shared_ptr<const vm::Image>
 }  // namespace
 
 json benchSnapshot(const Options& options) {
-  fmt::print("\n[6] Run snapshots: a {}-loop program on scara-pick, logged\n", kSnapshotLoops);
+  const int loops = sized(options, 20'000, 200);
+  fmt::print("\n[6] Run snapshots: a {}-loop program on scara-pick, logged\n", loops);
   compiler::Library library(compiler::librarySearchPath({}));
   const std::optional<workcell::Workcell> found = library.workcell("scara-pick");
   if (!found) throw std::runtime_error("the library has no scara-pick workcell");
@@ -153,7 +190,7 @@ json benchSnapshot(const Options& options) {
   const diag::SourceFile source(
       "snapshot.rsp", fmt::format("SET N 0\nloop: ADD N 1\nMOVE 10 0 0 0 0\nMOVE -10 0 0 0 60\nGOSUB sub\n"
                                   "MOVE 0 0 0 0 -60\nJMPVAR N < {} loop\nEND\nsub: OUTSIG 1 ON\nOUTSIG 1 OFF\nRETURN\n",
-                                  kSnapshotLoops));
+                                  loops));
   const auto image = std::make_shared<const vm::Image>(compileOrThrow(source, launch::cellTarget(*cell)));
   std::uint64_t steps = 0, snapshots = 0;
   const Measurement plain = [&] {
@@ -218,12 +255,12 @@ json benchSnapshot(const Options& options) {
 // --- 5. robotsim test ----------------------------------------------------------------
 
 json benchTestSuite(const Options& options) {
-  constexpr int kPrograms = 1000;
-  fmt::print("\n[7] robotsim test: {} generated programs, 3 expectations each, -j 2, whole process\n", kPrograms);
+  const int programs = sized(options, 1000, 20);
+  fmt::print("\n[7] robotsim test: {} generated programs, 3 expectations each, -j 2, whole process\n", programs);
   const std::filesystem::path dir = std::filesystem::path(options.workDir) / "testsuite";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  for (int i = 0; i < kPrograms; ++i) {
+  for (int i = 0; i < programs; ++i) {
     // k loops of two 100-unit moves of E at 400 units/s: 0.5 s each.
     const int k = 1 + i % 20;
     writeInput(options, fmt::format("testsuite/t{:04}.rsp", i),
@@ -235,10 +272,10 @@ json benchTestSuite(const Options& options) {
                        dir.string()));
   const std::vector<Samples> s =
       interleave({processMeasurement({options.robotsim, "test", dir.string(), "-j", "2"})}, options.reps);
-  row("robotsim test, 1000 programs", s[0],
-      fmt::format("{:.2f} ms per test; target <= 2 s: {}", s[0].best() * 1e3 / kPrograms,
+  row(fmt::format("robotsim test, {} programs", programs), s[0],
+      fmt::format("{:.2f} ms per test; target <= 2 s for 1000: {}", s[0].best() * 1e3 / programs,
                   s[0].best() <= 2.0 ? "met" : "missed"));
-  return {{"programs", kPrograms}, {"jobs", 2}, {"run", toJson(s[0])}, {"target_s", 2.0},
+  return {{"programs", programs}, {"jobs", 2}, {"run", toJson(s[0])}, {"target_s", 2.0},
           {"target_met", s[0].best() <= 2.0}};
 }
 

@@ -12,21 +12,35 @@ namespace rs::bench {
 
 struct Options {
   int reps = 5;
+  /// The smallest sizes: every benchmark runs through and prints its
+  /// figures, which then measure nothing (the test suite's bench-smoke
+  /// tests run each mode so, to see that none has rotted).
+  bool smoke = false;
   std::string robotsim = "robotsim";  // the CLI binary
   std::string lua = "lua5.4";
+  std::string luajit = "luajit";      // run with -joff: its interpreter, not its JIT compiler
   std::string luac = "luac5.4";
   std::string workDir = "bench-work";  // generated inputs go here
   std::string jsonPath;                // empty: no summary file
 };
 
+/// `full`, or `smoke` with --smoke.
+template <typename T>
+T sized(const Options& options, T full, T smoke) {
+  return options.smoke ? smoke : full;
+}
+
 /// VM dispatch: a 10,000,000-iteration SET/ADD/JMPVAR loop run in-process,
-/// against the same loop in a `lua5.4` process (startup subtracted).
+/// against the same loop in a `lua5.4` process and in a `luajit -joff`
+/// process (each with its start-up subtracted). Target: no slower than
+/// LuaJIT's interpreter.
 nlohmann::json benchDispatch(const Options& options);
 
 /// Compile throughput at 10k, 100k and 1M instructions, in-process and as a
 /// `robotsim compile` process, and `luac5.4 -p` on a Lua file of the same
-/// line count as the 100k program. Also image bytes per instruction and the
-/// peak RSS of compiling 1M instructions.
+/// line count as the 100k program (target: 1.3 times luac's CPU time).
+/// Also image bytes per instruction and the peak RSS of compiling 1M
+/// instructions.
 nlohmann::json benchCompile(const Options& options);
 
 /// Compile memory: the peak RSS of `robotsim compile` on programs of 1M

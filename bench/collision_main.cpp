@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "bench/bench_args.h"
 #include "compiler/compiler.h"
 #include "compiler/library.h"
 #include "launch/program.h"
@@ -75,7 +76,11 @@ constexpr const char* kProgram =
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int reps = argc > 1 ? std::atoi(argv[1]) : 5;
+  const rs::bench::CountArgument counts[] = {{"REPS", "runs (the best is printed)", 5, 1}};
+  const rs::bench::BenchArguments args = rs::bench::parseBenchArguments(
+      argc, argv, "collision_bench", "GJK against libfcl, and the swept check of a run (docs/performance.md).", counts);
+  if (args.exitCode) return *args.exitCode;
+  const int reps = static_cast<int>(args[0]);
   constexpr long kCalls = 1'000'000;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> size(0.2, 2.0);

@@ -106,9 +106,11 @@ json sizeJson(const SizeResult& r) {
 json benchCompile(const Options& options) {
   fmt::print("\n[2] Compile throughput: generated programs, every instruction kind\n");
   std::vector<SizeResult> sizes;
-  sizes.push_back(prepareSize(options, "10k", 10'000));
-  sizes.push_back(prepareSize(options, "100k", 100'000));
-  sizes.push_back(prepareSize(options, "1M", 1'000'000));
+  // Three sizes ten times apart; --smoke: a thousandth of each.
+  const std::size_t scale = sized<std::size_t>(options, 1, 1000);
+  sizes.push_back(prepareSize(options, "10k", 10'000 / scale));
+  sizes.push_back(prepareSize(options, "100k", 100'000 / scale));
+  sizes.push_back(prepareSize(options, "1M", 1'000'000 / scale));
   for (SizeResult& r : sizes) measureSize(options, r);
 
   json out = {{"sizes", json::array()}};
@@ -159,16 +161,19 @@ json benchCompile(const Options& options) {
       perSecond(mid.program.lines, s[0]));
   row(fmt::format("luac5.4 -p       {:>7} lines (process)", mid.program.lines), s[1],
       perSecond(mid.program.lines, s[1]));
-  const double ratio = s[0].best() / s[1].best();
-  fmt::print("  ratio robotsim compile / luac -p (best)   {}\n", verdict(ratio, 3));
+  // The target (issue 23) is by CPU time: on the shared machine wall
+  // time includes waiting for a core, which neither program controls.
+  constexpr double kTarget = 1.3;
+  const double ratio = s[0].best() / s[1].best(), ratioCpu = s[0].cpuBest() / s[1].cpuBest();
+  fmt::print("  ratio robotsim compile / luac -p (CPU)    {}\n", verdict(ratioCpu, kTarget));
+  fmt::print("  ratio robotsim compile / luac -p (best)   {:.2f}\n", ratio);
   fmt::print("  ratio robotsim compile / luac -p (median) {:.2f}\n", s[0].median() / s[1].median());
-  fmt::print("  ratio robotsim compile / luac -p (CPU)    {:.2f}\n", s[0].cpuBest() / s[1].cpuBest());
   out["luac_pair"] = {{"lines", mid.program.lines}, {"robotsim", toJson(s[0])}, {"luac", toJson(s[1])}};
   out["ratio_100k_over_luac"] = ratio;
   out["ratio_100k_over_luac_median"] = s[0].median() / s[1].median();
-  out["ratio_100k_over_luac_cpu"] = s[0].cpuBest() / s[1].cpuBest();
-  out["target_ratio"] = 3.0;
-  out["target_met"] = ratio <= 3.0;
+  out["ratio_100k_over_luac_cpu"] = ratioCpu;
+  out["target_ratio_cpu"] = kTarget;
+  out["target_met"] = ratioCpu <= kTarget;
   return out;
 }
 
@@ -272,11 +277,13 @@ json benchErrors(const Options& options) {
   // Each text is freed once written, and every peak RSS is taken before
   // anything is measured: wait4's peak is the driver's when that is larger.
   // The one-line cases (10 MB texts) go before the 16 MB one.
-  cases.push_back(prepareErrors(options, "10k-lines", errorProgram(10'000)));
-  cases.push_back(prepareErrors(options, "100k-lines", errorProgram(100'000)));
-  cases.push_back(prepareErrors(options, "1-line-10MB-stray", oneLineOfStrayCharacters(100'000)));
-  cases.push_back(prepareErrors(options, "1-line-10MB-words", oneLineOfWords(10'000'000)));
-  cases.push_back(prepareErrors(options, "1M-lines", errorProgram(1'000'000)));
+  // --smoke: a thousandth of each size.
+  const std::size_t scale = sized<std::size_t>(options, 1, 1000);
+  cases.push_back(prepareErrors(options, "10k-lines", errorProgram(10'000 / scale)));
+  cases.push_back(prepareErrors(options, "100k-lines", errorProgram(100'000 / scale)));
+  cases.push_back(prepareErrors(options, "1-line-10MB-stray", oneLineOfStrayCharacters(100'000 / scale)));
+  cases.push_back(prepareErrors(options, "1-line-10MB-words", oneLineOfWords(10'000'000 / scale)));
+  cases.push_back(prepareErrors(options, "1M-lines", errorProgram(1'000'000 / scale)));
   std::rotate(cases.begin() + 2, cases.begin() + 4, cases.end());  // 10k, 100k, 1M lines, then one line
   for (ErrorCase& c : cases) measureErrors(options, c);
 
@@ -299,8 +306,9 @@ json benchErrors(const Options& options) {
       "process 100k/10k {:.1f}, 1M/100k {:.1f}\n",
       growth(1, 0, false), growth(2, 1, false), growth(1, 0, true), growth(2, 1, true));
   const double oneLine = cases[3].process.best();
-  fmt::print("  one 10 MB line with 100,000 errors: robotsim check {:.0f} ms (target: well under a second: {})\n",
-             oneLine * 1e3, oneLine < 0.5 ? "met" : "missed");
+  fmt::print("  one {:.1f} MB line with {} errors: robotsim check {:.0f} ms (target for 10 MB: well under a second: {})\n",
+             static_cast<double>(cases[3].bytes) / 1e6, cases[3].program.errors, oneLine * 1e3,
+             oneLine < 0.5 ? "met" : "missed");
   out["growth"] = {{"in_process_100k_over_10k", growth(1, 0, false)},
                    {"in_process_1m_over_100k", growth(2, 1, false)},
                    {"process_100k_over_10k", growth(1, 0, true)},

@@ -26,14 +26,14 @@ namespace {
 
 constexpr long kLoops = 111'111;  // 9 instructions a loop: 1,000,001 in all, with SET
 
-runtime::RunSpec debugSpec() {
+runtime::RunSpec debugSpec(long loops) {
   compiler::Library library(compiler::librarySearchPath({}));
   const std::optional<workcell::Workcell> found = library.workcell("scara-pick");
   if (!found) throw std::runtime_error("the library has no scara-pick workcell");
   const diag::SourceFile source(
       "reverse.rsp", fmt::format("SET N 0\nloop: ADD N 1\nMOVE 10 0 0 0 0\nMOVE -10 0 0 0 60\nGOSUB sub\n"
                                  "MOVE 0 0 0 0 -60\nJMPVAR N < {} loop\nEND\nsub: OUTSIG 1 ON\nOUTSIG 1 OFF\nRETURN\n",
-                                 kLoops));
+                                 loops));
   compiler::CompileResult compiled = compiler::compile(source, launch::cellTarget(*found));
   if (!compiled.image) throw std::runtime_error("the reverse-step program did not compile");
   runtime::RunSpec spec;
@@ -79,8 +79,10 @@ nlohmann::json benchViewPublish(const runtime::RunSpec& spec) {
 }  // namespace
 
 nlohmann::json benchDebug(const Options& options) {
-  fmt::print("\n[9] Reverse steps: a {}-loop program on scara-pick, one snapshot every K instructions\n", kLoops);
-  const runtime::RunSpec spec = debugSpec();
+  const long loops = sized(options, kLoops, kLoops / 1000);
+  const std::uint64_t moments = sized<std::uint64_t>(options, 200, 10);
+  fmt::print("\n[9] Reverse steps: a {}-loop program on scara-pick, one snapshot every K instructions\n", loops);
+  const runtime::RunSpec spec = debugSpec(loops);
   nlohmann::json out = nlohmann::json::object();
   double plainBest = 1e9;
   for (int rep = 0; rep < std::max(1, options.reps / 2); ++rep) {
@@ -109,8 +111,8 @@ nlohmann::json benchDebug(const Options& options) {
       // 200 moments spread over the run: every other one a multiple of K
       // (the worst case: the step back re-runs K - 1 instructions), the
       // others a little after a spread-out place.
-      for (std::uint64_t i = 0; i < 200; ++i) {
-        const std::uint64_t base = steps * i / 200;
+      for (std::uint64_t i = 0; i < moments; ++i) {
+        const std::uint64_t base = steps * i / moments;
         std::uint64_t at = i % 2 == 0 ? std::max<std::uint64_t>(k, base / k * k) : base + (i * 7919) % k + 1;
         at = std::min(at, steps);
         session.reverseStep(UINT64_MAX);

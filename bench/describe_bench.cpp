@@ -5,7 +5,7 @@
 // motors and 30 points; best and median of N runs. Run by `make bench`;
 // figures in docs/performance.md. Not a test: it prints numbers.
 //
-//   describe_bench [REPS]
+//   describe_bench [--smoke] [REPS]
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_args.h"
 #include "compiler/library.h"
 #include "model/workcell/reach.h"
 #include "teach/pendant_state.h"
@@ -37,8 +38,14 @@ void measure(const std::string& what, int reps, int inner, F&& f) {
 
 }  // namespace
 
+constexpr rs::bench::CountArgument kDescribeCounts[] = {{"REPS", "runs (best and median printed)", 5, 1}};
+
 int main(int argc, char** argv) {
-  const int reps = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+  const rs::bench::BenchArguments args = rs::bench::parseBenchArguments(
+      argc, argv, "describe_bench", "describe's reach search and a terminal-pendant screen (docs/performance.md).",
+      kDescribeCounts);
+  if (args.exitCode) return *args.exitCode;
+  const int reps = static_cast<int>(args[0]);
   fmt::print("describe and the terminal pendant, best and median of {}\n", reps);
   rs::compiler::Library library(rs::compiler::librarySearchPath({}));
   double sink = 0;  // keeps the work observable
@@ -63,7 +70,7 @@ int main(int argc, char** argv) {
   for (int p = 0; p < 30; ++p) state.points.push_back({fmt::format("P{}", p), {p, -p, 10 * p, 0, 120}, 10u + p, true});
   state.message = "taught P29 = 29 -29 290 0 120 (written to examples/pick_and_place.rsp)";
   const rs::teach::tui::Selection selection{0, 20, 10, false};
-  measure("terminal pendant screen, 80x24, 30 points", reps, 10000, [&] {
+  measure("terminal pendant screen, 80x24, 30 points", reps, args.smoke ? 100 : 10000, [&] {
     sink += static_cast<double>(rs::teach::tui::layoutScreen(state, selection, {}, "", 80, 24).marks.size());
   });
   fmt::print("  (checksum {:.6g})\n", sink);

@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+#include "bench/bench_args.h"
 #include "compiler/library.h"
 #include "model/kinematics/angles.h"
 #include "model/kinematics/chain_data.h"
@@ -93,9 +94,15 @@ KDL::Frame kdlFrame(const kin::ToolTarget& t) {
 
 }  // namespace
 
+constexpr rs::bench::CountArgument kCounts[] = {{"CALLS", "calls per run, per arm", 1'000'000, 1'000},
+                                                {"REPS", "runs (the best is printed)", 5, 1}};
+
 int main(int argc, char** argv) {
-  const long calls = argc > 1 ? std::atol(argv[1]) : 1'000'000;
-  const int reps = argc > 2 ? std::atoi(argv[2]) : 5;
+  const rs::bench::BenchArguments args = rs::bench::parseBenchArguments(
+      argc, argv, "ik_bench", "Inverse kinematics of every library arm, ns per call (docs/performance.md).", kCounts);
+  if (args.exitCode) return *args.exitCode;
+  const long calls = args[0];
+  const int reps = static_cast<int>(args[1]);
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(ROBOTSIM_SOURCE_DIR) / "stdlib/robots"))
     if (e.path().extension() == ".rsd") files.push_back(e.path());

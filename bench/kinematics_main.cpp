@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "bench/bench_args.h"
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/chain_model.h"
 #include "model/kinematics/forward_kinematics.h"
@@ -26,9 +27,15 @@ kin::ChainModel puma560() {
 
 }  // namespace
 
+constexpr rs::bench::CountArgument kCounts[] = {{"CALLS", "calls per run", 5'000'000, 1'000},
+                                                {"REPS", "runs (the best is printed)", 5, 1}};
+
 int main(int argc, char** argv) {
-  const long calls = argc > 1 ? std::atol(argv[1]) : 5'000'000;
-  const int reps = argc > 2 ? std::atoi(argv[2]) : 5;
+  const rs::bench::BenchArguments args = rs::bench::parseBenchArguments(
+      argc, argv, "kinematics_bench", "Forward kinematics of a 6-axis arm, ns per call (docs/performance.md).", kCounts);
+  if (args.exitCode) return *args.exitCode;
+  const long calls = args[0];
+  const int reps = static_cast<int>(args[1]);
   const kin::ChainModel model = puma560();
   kin::ChainData data(model);
   // 1024 joint vectors made up front (fixed seed), so the loop only computes.

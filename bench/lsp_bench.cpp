@@ -23,16 +23,15 @@ namespace {
 
 using lsp::Json;
 
-constexpr int kLines = 10'000;
 const std::string kUri = "file:///bench/big.rsp";
 
-// A program of about kLines lines as people write them: blocks of ten
+// A program of about `lines` lines as people write them: blocks of ten
 // lines with a label, a loop on a variable, moves, a subroutine call, I/O
 // and comments; 100 taught points at the end.
-std::string program() {
+std::string program(int lines) {
   std::string s = "; generated for the language server benchmark\n";
   int line = 1, block = 0;
-  while (line + 10 < kLines - 102) {
+  while (line + 10 < lines - 102) {
     s += fmt::format("b{}:     SET N{} 0                 ; block {}\n", block, block % 50, block);
     s += fmt::format("        MOVE 10 -10 5 0 0           ; a small step\n");
     s += fmt::format("        ADD N{} 1\n", block % 50);
@@ -109,16 +108,17 @@ void report(nlohmann::json& out, const std::string& key, const std::string& what
 }  // namespace
 
 nlohmann::json benchLsp(const Options& options) {
-  fmt::print("\nlanguage server on a {}-line program\n", kLines);
-  const std::string text = program();
-  const auto digit = find(text, "MOVE 10 -10 5", kLines / 2);  // the "1" of "10" in the middle of the file
+  const int lines = sized(options, 10'000, 1'000);
+  fmt::print("\nlanguage server on a {}-line program\n", lines);
+  const std::string text = program(lines);
+  const auto digit = find(text, "MOVE 10 -10 5", lines / 2);  // the "1" of "10" in the middle of the file
   const std::pair<int, int> digitPos{digit.first, digit.second + 5};
-  const auto point = find(text, "MOVEP P", kLines / 2);
+  const auto point = find(text, "MOVEP P", lines / 2);
   const std::pair<int, int> pointPos{point.first, point.second + 7};
-  const auto gotoLine = find(text, "GOTO b", kLines / 2);
+  const auto gotoLine = find(text, "GOTO b", lines / 2);
   const std::pair<int, int> labelPos{gotoLine.first, gotoLine.second + 5};
-  const auto mnemonic = find(text, "MOVE 10", kLines / 2);
-  nlohmann::json out = {{"lines", kLines}};
+  const auto mnemonic = find(text, "MOVE 10", lines / 2);
+  nlohmann::json out = {{"lines", lines}};
 
   // Peak memory: a robotsim lsp process given the whole session on stdin.
   {

@@ -23,7 +23,6 @@ namespace rs::bench {
 
 namespace {
 
-constexpr std::size_t kDocumentBytes = std::size_t{50} * 1000 * 1000;
 const std::string kFormatUri = "file:///bench/format.rsp";
 
 // Line i of the document: blocks of five instructions, each block a label,
@@ -51,9 +50,9 @@ std::string frame(const std::string& body) { return lsp::frameMessage(body); }
 
 // The session: the document's didOpen is written in pieces, its length
 // worked out first.
-std::uintmax_t writeSession(const std::string& path, bool format) {
+std::uintmax_t writeSession(const std::string& path, bool format, std::size_t documentBytes) {
   std::size_t lines = 0, bytes = 0, json = 0;
-  for (; bytes < kDocumentBytes; ++lines) {
+  for (; bytes < documentBytes; ++lines) {
     const std::string line = formatLine(lines);
     bytes += line.size(), json += escaped(line).size();
   }
@@ -85,13 +84,14 @@ std::uintmax_t writeSession(const std::string& path, bool format) {
 }  // namespace
 
 nlohmann::json benchLspFormat(const Options& options) {
-  fmt::print("\nlanguage server: formatting a {} MB document\n", kDocumentBytes / 1'000'000);
+  const std::size_t documentBytes = sized(options, std::size_t{50'000'000}, std::size_t{200'000});
+  fmt::print("\nlanguage server: formatting a {} MB document\n", static_cast<double>(documentBytes) / 1e6);
   std::filesystem::create_directories(options.workDir);
   nlohmann::json out;
   double document = 0;
   for (const bool format : {false, true}) {
     const std::string session = options.workDir + (format ? "/lsp_format.bin" : "/lsp_open.bin");
-    document = static_cast<double>(writeSession(session, format));
+    document = static_cast<double>(writeSession(session, format, documentBytes));
     progress(format ? "open, format, exit" : "open, exit");
     const std::string reply = options.workDir + "/lsp_format_reply.bin";
     const ProcessRun run =
@@ -99,7 +99,7 @@ nlohmann::json benchLspFormat(const Options& options) {
     if (run.exitCode != 0) throw std::runtime_error("robotsim lsp did not exit 0 on the formatting session");
     if (run.maxRssKiB <= selfPeakRssKiB()) throw std::runtime_error("robotsim lsp's peak RSS is not measurable");
     const std::uintmax_t replied = std::filesystem::file_size(reply);
-    if (format && replied < kDocumentBytes) throw std::runtime_error("the formatting answer is missing");
+    if (format && replied < documentBytes) throw std::runtime_error("the formatting answer is missing");
     if (!format && replied > 4096) throw std::runtime_error("the document was not opened as it should be");
     const double mib = static_cast<double>(run.maxRssKiB) / 1024;
     out[format ? "open_format" : "open"] = {{"seconds", run.seconds},   {"cpu_seconds", run.cpuSeconds},

@@ -30,18 +30,17 @@ namespace {
 
 using lsp::Json;
 
-constexpr int kRunLines = 10'000;
 const std::string kRunUri = "file:///bench/run.rsp";
 
-// About kRunLines lines: blocks of ten (a label, a counted loop of two
+// About `size` lines: blocks of ten (a label, a counted loop of two
 // small moves out and back, a move to a taught point, two outputs, a
 // subroutine call, a jump to the next block), one RETURN a block, 100
 // points near home, all clear of the cell's table, pallet and blocks; the
 // last instruction waits for an input nothing turns on.
-std::string runProgram() {
+std::string runProgram(int size) {
   std::string s = "; cell: scara-pick\n; generated for the language server's run benchmark\n";
   int lines = 2, blocks = 0;
-  while (lines + 11 + 2 + 101 < kRunLines) {
+  while (lines + 11 + 2 + 101 < size) {
     const int n = blocks % 50, out = blocks % 8 + 1;
     s += fmt::format("b{}:     SET N{} 0                 ; block {}\n", blocks, n, blocks);
     s += fmt::format("l{}:     MOVE 40 -40 0 0 0           ; out\n", blocks);
@@ -116,10 +115,11 @@ class WatchedServer {
 }  // namespace
 
 nlohmann::json benchLspRuns(const Options& options) {
-  fmt::print("\nlanguage server: run-time diagnostics of a {}-line program on scara-pick\n", kRunLines);
-  const std::string text = runProgram();
+  const int size = sized(options, 10'000, 400);
+  fmt::print("\nlanguage server: run-time diagnostics of a {}-line program on scara-pick\n", size);
+  const std::string text = runProgram(size);
   // The "0" of "40" in the middle block's first move: 40 and 41 in turn.
-  const std::size_t middle = text.find(fmt::format("l{}:", (kRunLines / 11) / 2));
+  const std::size_t middle = text.find(fmt::format("l{}:", (size / 11) / 2));
   const std::size_t digit = text.find("40", middle) + 1;
   const int line = static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(digit), '\n'));
   const int character = static_cast<int>(digit - text.rfind('\n', digit) - 1);

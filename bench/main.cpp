@@ -4,25 +4,40 @@
 #include <fmt/format.h>
 #include <sys/utsname.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <thread>
 
+#include "base/file_io.h"
+#include "bench/bench_args.h"
 #include "bench/benchmarks.h"
 
 namespace {
 
 using rs::bench::Options;
 
+constexpr std::string_view kModes[] = {"memory", "testrun", "dispatch", "compile",  "startup",    "snapshot",
+                                       "test",   "errors",  "lsp",      "lsp_runs", "lsp_format", "debug"};
+
 constexpr std::string_view kUsage =
-    "usage: robotsim_bench [--reps N] [--json FILE]\n"
+    "usage: robotsim_bench [--reps N] [--smoke] [--json FILE]\n"
     "                      [--only memory|testrun|dispatch|compile|startup|snapshot|test|errors|lsp|lsp_runs|lsp_format|debug]\n"
-    "                      [--robotsim PATH] [--lua PATH] [--luac PATH] [--workdir DIR]\n";
+    "                      [--robotsim PATH] [--lua PATH] [--luajit PATH] [--luac PATH] [--workdir DIR]\n"
+    "The benchmarks of docs/performance.md: prints their figures, and writes them to FILE as JSON.\n"
+    "  --reps N      repetitions of each measurement, best and median printed (default 5)\n"
+    "  --smoke       the smallest sizes: checks that every benchmark runs and prints (the test suite's\n"
+    "                bench-smoke tests); the figures then measure nothing\n"
+    "  --only MODE   one benchmark instead of all\n"
+    "  --robotsim, --lua, --luajit, --luac   the programs compared (default: found in PATH; a peer that\n"
+    "                cannot be run is skipped, and the output says so)\n"
+    "  --workdir DIR where the generated inputs are written (default bench-work)\n";
 
 std::string firstLine(const std::string& path, std::string_view prefix = {}) {
   std::ifstream in(path);
@@ -49,39 +64,45 @@ std::string loadAverage() { return firstLine("/proc/loadavg"); }
 bool parse(int argc, char** argv, Options& o, std::string& only) {
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
+    if (arg == "--smoke") {
+      o.smoke = true;
+      continue;
+    }
     if (i + 1 >= argc) {
-      std::cerr << "robotsim_bench: " << arg << " needs a value\n";
+      std::cerr << "robotsim_bench: error: " << arg << (arg.starts_with("--") ? " needs a value\n" : " is not an option\n");
       return false;
     }
     const std::string value = argv[++i];
-    if (arg == "--reps")
-      o.reps = std::atoi(value.c_str());
-    else if (arg == "--json")
+    if (arg == "--reps") {
+      const std::optional<long> n = rs::bench::parseCount(value);
+      if (!n || *n > 1000) {
+        std::cerr << "robotsim_bench: error: --reps takes a whole number from 1 to 1000, not '" << value << "'\n";
+        return false;
+      }
+      o.reps = static_cast<int>(*n);
+    } else if (arg == "--json") {
       o.jsonPath = value;
-    else if (arg == "--only")
+    } else if (arg == "--only") {
       only = value;
-    else if (arg == "--robotsim")
+    } else if (arg == "--robotsim") {
       o.robotsim = value;
-    else if (arg == "--lua")
+    } else if (arg == "--lua") {
       o.lua = value;
-    else if (arg == "--luac")
+    } else if (arg == "--luajit") {
+      o.luajit = value;
+    } else if (arg == "--luac") {
       o.luac = value;
-    else if (arg == "--workdir")
+    } else if (arg == "--workdir") {
       o.workDir = value;
-    else {
-      std::cerr << "robotsim_bench: unknown option " << arg << "\n";
+    } else {
+      std::cerr << "robotsim_bench: error: unknown option " << arg << "\n";
       return false;
     }
   }
-  if (o.reps < 1) {
-    std::cerr << "robotsim_bench: --reps must be at least 1\n";
-    return false;
-  }
-  if (!only.empty() && only != "memory" && only != "testrun" && only != "dispatch" && only != "compile" &&
-      only != "startup" && only != "snapshot" && only != "test" && only != "errors" && only != "lsp" &&
-      only != "lsp_runs" && only != "lsp_format" && only != "debug") {
-    std::cerr << "robotsim_bench: --only takes memory, testrun, dispatch, compile, startup, snapshot, test, errors, lsp, "
-                 "lsp_runs, lsp_format or debug\n";
+  if (!only.empty() && std::find(std::begin(kModes), std::end(kModes), only) == std::end(kModes)) {
+    std::cerr << "robotsim_bench: error: --only takes memory, testrun, dispatch, compile, startup, snapshot, test, "
+                 "errors, lsp, lsp_runs, lsp_format or debug, not '"
+              << only << "'\n";
     return false;
   }
   return true;
@@ -101,7 +122,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   nlohmann::json summary = {{"machine", machine()}, {"reps", options.reps}, {"load_start", loadAverage()}};
-  fmt::print("robotsim_bench: wall time, best (minimum) and median of {} repetitions\n", options.reps);
+  summary["smoke"] = options.smoke;
+  fmt::print("robotsim_bench: wall time, best (minimum) and median of {} repetitions{}\n", options.reps,
+             options.smoke ? " (--smoke: the smallest sizes, the figures measure nothing)" : "");
   fmt::print("machine: {} CPUs, {}, Linux {}, built by {}\n", summary["machine"]["cpus"].get<unsigned>(),
              summary["machine"]["cpu_model"].get<std::string>(), summary["machine"]["kernel"].get<std::string>(),
              summary["machine"]["compiler"].get<std::string>());
@@ -127,10 +150,9 @@ int main(int argc, char** argv) {
   summary["load_end"] = loadAverage();
   fmt::print("\nload average at end: {}\n", loadAverage());
   if (!options.jsonPath.empty()) {
-    std::ofstream out(options.jsonPath, std::ios::trunc);
-    out << summary.dump(2) << "\n";
-    if (!out.flush()) {
-      std::cerr << "robotsim_bench: error: cannot write " << options.jsonPath << "\n";
+    std::string error;
+    if (!rs::base::writeFileAtomically(options.jsonPath, summary.dump(2) + "\n", error)) {
+      std::cerr << "robotsim_bench: error: cannot write " << options.jsonPath << ": " << error << "\n";
       return 1;
     }
     fmt::print("summary written to {}\n", options.jsonPath);

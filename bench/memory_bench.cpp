@@ -70,7 +70,7 @@ json benchMemory(const Options& options) {
       {"jumps", "lN: GOTO lN+1", [](std::size_t i) { return fmt::format("l{}: GOTO l{}\n", i, i + 1); }, "", 0},
       {"errors", "x (an unknown instruction)", [](std::size_t) { return std::string("x\n"); }, "", 2},
   };
-  constexpr std::size_t kSmall = 1'000'000, kLarge = 2'000'000;
+  const std::size_t fewerLines = sized<std::size_t>(options, 1'000'000, 1'000), moreLines = 2 * fewerLines;
   progress("a one-line program: the process's fixed part");
   const MemoryCase one{"one", "END", [](std::size_t) { return std::string("END\n"); }, "", 0};
   const MemoryPoint floor = measureCase(options, one, 1);
@@ -79,14 +79,14 @@ json benchMemory(const Options& options) {
   json out = {{"fixed_kib", floor.maxRssKiB}, {"cases", json::array()}, {"target_growth_per_byte", 5.0}};
   bool allMet = true;
   for (const MemoryCase& c : cases) {
-    progress(fmt::format("{} and {} lines of '{}'", kSmall, kLarge, c.what));
+    progress(fmt::format("{} and {} lines of '{}'", fewerLines, moreLines, c.what));
     // The jumps' last target must exist: the program ends on that label.
-    MemoryCase sized = c;
+    MemoryCase ofSize = c;
     const auto measure = [&](std::size_t n) {
-      if (c.label == "jumps") sized.last = fmt::format("l{}: END\n", n);
-      return measureCase(options, sized, n);
+      if (c.label == "jumps") ofSize.last = fmt::format("l{}: END\n", n);
+      return measureCase(options, ofSize, n);
     };
-    const MemoryPoint small = measure(kSmall), large = measure(kLarge);
+    const MemoryPoint small = measure(fewerLines), large = measure(moreLines);
     const double growth = static_cast<double>(large.maxRssKiB - small.maxRssKiB) * 1024 /
                           static_cast<double>(large.bytes - small.bytes);
     const double whole = static_cast<double>(large.maxRssKiB) * 1024 / static_cast<double>(large.bytes);
@@ -101,8 +101,8 @@ json benchMemory(const Options& options) {
                             {"growth_per_byte", growth},
                             {"whole_over_source", whole}});
   }
-  fmt::print("  growth = (peak at {}M lines - peak at {}M) / (their size difference): bytes of memory a source byte\n",
-             kLarge / 1'000'000, kSmall / 1'000'000);
+  fmt::print("  growth = (peak at {} lines - peak at {}) / (their size difference): bytes of memory a source byte\n",
+             moreLines, fewerLines);
   out["target_met"] = allMet;
   return out;
 }

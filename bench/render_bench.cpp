@@ -2,7 +2,7 @@
 // 1024x768 PNG), in-process, best and median of N runs; and the files for
 // the browser's frame-time bench (tests/browser/frame_bench.mjs).
 //
-//   render_bench [--reps N] [--workdir DIR]
+//   render_bench [--smoke] [--reps N] [--workdir DIR]
 //
 // Writes DIR/bench-cell.rsd (a SCOROBOT-like arm whose five links and
 // gripper hold 5,016 lines) and DIR/bench.rsp (ten back-and-forth moves of
@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_args.h"
 #include "compiler/library.h"
 #include "runtime/render/draw.h"
 #include "runtime/render/picture.h"
@@ -130,16 +131,44 @@ void print(const char* what, const Stats& s, const std::string& extra = {}) {
 
 }  // namespace
 
+constexpr const char* kRenderUsage =
+    "usage: render_bench [--smoke] [--reps N] [--workdir DIR]\n"
+    "A still of a 5,016-line workcell (SVG, 1024x768 PNG), in-process (docs/render.md).\n"
+    "  --reps N       runs (best and median printed; default 15, with --smoke 1)\n"
+    "  --workdir DIR  where the cell and program for tests/browser/frame_bench.mjs are written\n"
+    "                 (default: robotsim-render-bench in the temporary folder)\n"
+    "  --smoke        one run: checks that the benchmark runs and prints, measures nothing\n";
+
 int main(int argc, char** argv) {
-  int reps = 15;
+  std::optional<long> repsGiven;
+  bool smoke = false;
   std::filesystem::path dir = std::filesystem::temp_directory_path() / "robotsim-render-bench";
-  for (int i = 1; i + 1 < argc; i += 2) {
+  for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--reps")
-      reps = std::max(1, std::atoi(argv[i + 1]));
-    else if (a == "--workdir")
-      dir = argv[i + 1];
+    if (a == "--help" || a == "-h") {
+      fmt::print("{}", kRenderUsage);
+      return 0;
+    }
+    if (a == "--smoke") {
+      smoke = true;
+      continue;
+    }
+    const bool takesValue = a == "--reps" || a == "--workdir";
+    if (!takesValue || i + 1 >= argc) {
+      fmt::print(stderr, "render_bench: error: {}\n{}",
+                 takesValue ? a + " needs a value" : "unknown argument '" + a + "'", kRenderUsage);
+      return 2;
+    }
+    const std::string value = argv[++i];
+    if (a == "--workdir") {
+      dir = value;
+    } else if (!(repsGiven = rs::bench::parseCount(value))) {
+      fmt::print(stderr, "render_bench: error: --reps takes a whole number from 1 to {}, not '{}'\n{}",
+                 rs::bench::kMaxCount, value, kRenderUsage);
+      return 2;
+    }
   }
+  const int reps = static_cast<int>(repsGiven.value_or(smoke ? 1 : 15));
   std::filesystem::create_directories(dir);
   const auto cellPath = dir / "bench-cell.rsd", programPath = dir / "bench.rsp";
   std::ofstream(cellPath) << benchCell();

@@ -7,6 +7,8 @@
 // 50 slow connections (25 silent, 25 with a request cut short) and 8 event
 // streams that never read (issue 26: eight of them froze the pendant).
 // Prints figures for docs/performance.md; not a test.
+//
+//   teach_bench [--smoke] [POINTS [REPS [JOGS]]]
 #include <arpa/inet.h>
 #include <fmt/format.h>
 #include <netinet/in.h>
@@ -15,11 +17,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdlib.h>
+
 #include <filesystem>
 #include <thread>
 #include <vector>
 
 #include "base/file_io.h"
+#include "bench/bench_args.h"
 #include "compiler/library.h"
 #include "launch/program.h"
 #include "teach/live_server.h"
@@ -56,45 +61,64 @@ Stats stats(std::vector<double> v) {
   return {v[v.size() / 2], v[v.size() * 95 / 100], v.front()};
 }
 
+int fail(const std::string& why) {
+  fmt::print(stderr, "teach_bench: error: {}\n", why);
+  return 1;
+}
+
 std::string program(int points) {
   std::string text = "        MOVEP P0                ; a program\n        END\nPOINTS\n";
   for (int i = 0; i < points; ++i) text += fmt::format("P{:<6} {:5} {:5} {:5} {:5} {:5}\n", i, i % 900, -i % 500, 0, 0, 0);
   return text;
 }
 
+constexpr rs::bench::CountArgument kTeachCounts[] = {
+    {"POINTS", "points of the program edited", 10'000, 100},
+    {"REPS", "edits and guarded writes timed (median printed)", 21, 3},
+    {"JOGS", "jogs over HTTP timed", 500, 10}};
+
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  const rs::bench::BenchArguments args = rs::bench::parseBenchArguments(
+      argc, argv, "teach_bench", "The teach pendant: POINTS edits, guarded writes, a jog over HTTP (docs/performance.md).",
+      kTeachCounts);
+  if (args.exitCode) return *args.exitCode;
+  const int points = static_cast<int>(args[0]), reps = static_cast<int>(args[1]), jogCount = static_cast<int>(args[2]);
   using rs::teach::PointsText;
   const std::vector<std::int32_t> values{1, 2, 3, 4, 5};
   {
-    const std::string text = program(10'000);
+    const std::string text = program(points);
     std::vector<double> add, replace;
-    for (int r = 0; r < 21; ++r) {
+    for (int r = 0; r < reps; ++r) {
       PointsText p(text);
       auto t0 = Clock::now();
-      if (!p.add("NEWPOINT", values).empty()) return 1;
+      if (!p.add("NEWPOINT", values).empty()) return fail("a POINTS add was refused");
       auto t1 = Clock::now();
-      if (!p.replace("P5000", values).empty()) return 1;
+      if (!p.replace(fmt::format("P{}", points / 2), values).empty()) return fail("a POINTS replace was refused");
       auto t2 = Clock::now();
       add.push_back(micros(t1 - t0)), replace.push_back(micros(t2 - t1));
     }
     const Stats a = stats(add), b = stats(replace);
-    fmt::print("POINTS edit, 10,000 points ({} KiB): add median {:.0f} us (best {:.0f}), replace median {:.0f} us\n",
+    fmt::print("POINTS edit, {} points ({} KiB): add median {:.0f} us (best {:.0f}), replace median {:.0f} us\n", points,
                text.size() / 1024, a.median, a.best, b.median);
   }
-  const auto dir = std::filesystem::temp_directory_path() / "robotsim-teach-bench";
-  std::filesystem::create_directories(dir);
+  // A folder of its own: two runs at once (two build trees' tests) must
+  // not remove each other's files.
+  std::string pattern = (std::filesystem::temp_directory_path() / "robotsim-teach-bench-XXXXXX").string();
+  if (!mkdtemp(pattern.data())) return fail("cannot make a temporary folder");
+  const std::filesystem::path dir = pattern;
   {
     const std::string path = (dir / "big.rsp").string();
     std::string error;
-    if (!rs::base::writeFileAtomically(path, program(1'000), error)) return 1;
+    if (!rs::base::writeFileAtomically(path, program(1'000), error)) return fail(error);
     std::optional<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path, error);
+    if (!file) return fail(error);
     std::vector<double> writes;
-    for (int r = 0; r < 21; ++r) {
+    for (int r = 0; r < reps; ++r) {
       const auto t0 = Clock::now();
       if (!file->change([&](PointsText& p) { const std::vector<std::int32_t> v{r, 0, 0, 0, 0};
-        return p.replace("P10", v); }).empty()) return 1;
+        return p.replace("P10", v); }).empty()) return fail("a guarded write was refused");
       writes.push_back(micros(Clock::now() - t0));
     }
     const Stats w = stats(writes);
@@ -105,21 +129,23 @@ int main() {
     auto cell = std::make_shared<const rs::workcell::Workcell>(*library.workcell("scara-pick"));
     const std::string path = (dir / "jog.rsp").string();
     std::string error;
-    if (!rs::base::writeFileAtomically(path, "        END\nPOINTS\n", error)) return 1;
-    rs::teach::Pendant pendant(cell, rs::launch::cellTarget(*cell).motors, *rs::teach::ProgramFile::load(path, error));
+    if (!rs::base::writeFileAtomically(path, "        END\nPOINTS\n", error)) return fail(error);
+    std::optional<rs::teach::ProgramFile> jogFile = rs::teach::ProgramFile::load(path, error);
+    if (!jogFile) return fail(error);
+    rs::teach::Pendant pendant(cell, rs::launch::cellTarget(*cell).motors, *jogFile);
     rs::teach::PendantSource source(pendant, rs::teach::teachPageHtml(*cell, path));
     rs::teach::LiveServer server(source, rs::teach::randomToken());
-    if (!server.start("127.0.0.1", 0, error)) return 1;
+    if (!server.start("127.0.0.1", 0, error)) return fail(error);
     httplib::Client client("127.0.0.1", server.port());
     client.set_keep_alive(true);
     client.set_tcp_nodelay(true);
     const std::string route = "/api/command?token=" + server.token();
     std::vector<double> jogs;
-    for (int i = 0; i < 500; ++i) {
+    for (int i = 0; i < jogCount; ++i) {
       const std::string body = fmt::format(R"({{"op":"jog","motor":0,"delta":{}}})", i % 2 ? -10 : 10);
       const auto t0 = Clock::now();
       const auto r = client.Post(route, body, "application/json");
-      if (!r || r->status != 200) return 1;
+      if (!r || r->status != 200) return fail("a jog was not answered 200");
       jogs.push_back(micros(Clock::now() - t0));
     }
     const Stats j = stats(jogs);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bench/bench_support.h"
+#include "bench/benchmarks.h"
 
 namespace rs::bench {
 
@@ -49,30 +50,36 @@ json benchTestRun(const Options& options) {
   json out;
   std::filesystem::create_directories(std::filesystem::path(options.workDir) / "testrun" / "submissions");
 
-  progress("robotsim test on 100,000,000 instructions; run --profile (a RunLog) on 10,000,000 of the same loop");
-  const std::string program = writeInput(options, "testrun/long.rsp", longProgram("100000000"));
+  const long instructions = sized(options, 100'000'000L, 100'000L), logged10 = instructions / 10;
+  progress(fmt::format("robotsim test on {} instructions; run --profile (a RunLog) on {} of the same loop",
+                       instructions, logged10));
+  const std::string program = writeInput(options, "testrun/long.rsp", longProgram(std::to_string(instructions)));
   const ProcessRun tested = runExpecting({options.robotsim, "test", program}, 0);
-  const ProcessRun logged = runExpecting(
-      {options.robotsim, "run", program, "--profile", "--max-steps", "10000000", "--max-time", "30000"}, 1);
+  const ProcessRun logged = runExpecting({options.robotsim, "run", program, "--profile", "--max-steps",
+                                          std::to_string(logged10), "--max-time", "30000"},
+                                         1);
   if (tested.maxRssKiB <= selfPeakRssKiB()) fmt::print("  (the driver's own peak hides robotsim test's)\n");
-  const double logBytes = static_cast<double>(logged.maxRssKiB) * 1024 / 1e7;
-  fmt::print("  robotsim test, 1e8 instructions: peak {:.1f} MiB, {:.2f} s CPU; target < 100 MB: {}\n",
-             mib(tested.maxRssKiB), tested.cpuSeconds, tested.maxRssKiB * 1024 < 100'000'000 ? "met" : "missed");
+  const double logBytes = static_cast<double>(logged.maxRssKiB) * 1024 / static_cast<double>(logged10);
+  fmt::print("  robotsim test, {:.0e} instructions: peak {:.1f} MiB, {:.2f} s CPU; target < 100 MB: {}\n",
+             static_cast<double>(instructions), mib(tested.maxRssKiB), tested.cpuSeconds,
+             tested.maxRssKiB * 1024 < 100'000'000 ? "met" : "missed");
   fmt::print(
-      "  the same loop logged (run --profile), 1e7 instructions: peak {:.1f} MiB, {:.1f} bytes an "
+      "  the same loop logged (run --profile), {:.0e} instructions: peak {:.1f} MiB, {:.1f} bytes an "
       "instruction (1e8: {:.2f} GB)\n",
-      mib(logged.maxRssKiB), logBytes, logBytes * 1e8 / 1e9);
-  out["long_run"] = {{"instructions", 100'000'000},
+      static_cast<double>(logged10), mib(logged.maxRssKiB), logBytes, logBytes * 1e8 / 1e9);
+  out["long_run"] = {{"instructions", instructions},
                      {"test_max_rss_kib", tested.maxRssKiB},
                      {"test_cpu_s", tested.cpuSeconds},
-                     {"logged_instructions", 10'000'000},
+                     {"logged_instructions", logged10},
                      {"logged_max_rss_kib", logged.maxRssKiB},
                      {"logged_bytes_per_instruction", logBytes}};
 
-  progress("one '; expect: motors' line of 10k, 100k and 1M terms, robotsim test, whole process");
+  const int largest = sized(options, 1'000'000, 1'000);
+  progress(fmt::format("one '; expect: motors' line of {}, {} and {} terms, robotsim test, whole process",
+                       largest / 100, largest / 10, largest));
   json terms = json::array();
   double previous = 0;
-  for (const int n : {10'000, 100'000, 1'000'000}) {
+  for (const int n : {largest / 100, largest / 10, largest}) {
     std::string line = "; expect: motors";
     for (int i = 0; i < n; ++i) line += i % 2 ? " D=0" : " E=100";
     const std::string path =
@@ -85,7 +92,7 @@ json benchTestRun(const Options& options) {
     previous = s[0].best();
   }
   out["motors_line"] = terms;
-  fmt::print("  1M terms: target < 1 s: {}\n", previous < 1.0 ? "met" : "missed");
+  fmt::print("  {} terms: target < 1 s: {}\n", largest, previous < 1.0 ? "met" : "missed");
 
   progress("a submission that never ends, robotsim test --spec on scara-pick: grading's limits, and 3,600 s");
   writeInput(options, "testrun/submissions/forever.rsp",
@@ -95,8 +102,9 @@ json benchTestRun(const Options& options) {
   const std::string grading =
       writeInput(options, "testrun/grading.rstest", "scenario on the cell\ntest: cell scara-pick\nexpect: finished\n");
   const std::string before = writeInput(options, "testrun/before.rstest",
-                                        "scenario on the cell\ntest: cell scara-pick\ntest: max-time 3600\n"
-                                        "test: max-steps 100000000\nexpect: finished\n");
+                                        fmt::format("scenario on the cell\ntest: cell scara-pick\ntest: max-time {}\n"
+                                                    "test: max-steps 100000000\nexpect: finished\n",
+                                                    sized(options, 3600, 36)));
   const std::string folder = options.workDir + "/testrun/submissions";
   std::vector<double> gradingCpu, beforeCpu;
   for (int r = 0; r < options.reps; ++r) {

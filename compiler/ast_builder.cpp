@@ -16,33 +16,25 @@ void Builder::finish() {
                 "label-without-instruction");
 }
 
-// Splits a line's tokens into label, head word and operands. Every child of
-// a LineContext is a token node; after error recovery some are error nodes
-// for tokens the parser skipped (already reported), which are left out.
-void Builder::line(P::LineContext* l, bool recovered) {
-  std::vector<const antlr4::Token*>& tokens = tokens_;
-  tokens.clear();
-  for (antlr4::tree::ParseTree* child : l->children) {
-    if (recovered && dynamic_cast<antlr4::tree::ErrorNode*>(child)) continue;
-    tokens.push_back(static_cast<antlr4::tree::TerminalNode*>(child)->getSymbol());
-  }
+// Splits a line's tokens into label, head word and operands.
+void Builder::line(std::span<const RawToken> tokens) {
   if (tokens.empty()) return;  // blank line
-  if (tokens[0]->getType() != P::IDENT)
+  if (tokens[0].type != P::IDENT)
     return diag_.error(posOf(tokens[0]), fmt::format("unexpected '{}': a line starts with an instruction, a label "
                                                      "or a point name",
                                                      diag::excerpt(textOf(src_, tokens[0]))),
                        "syntax");
-  const bool labelled = tokens.size() >= 2 && tokens[1]->getType() == P::COLON;
+  const bool labelled = tokens.size() >= 2 && tokens[1].type == P::COLON;
   std::size_t next = labelled ? 2 : 0;
-  const antlr4::Token* headToken = nullptr;
-  if (next < tokens.size() && tokens[next]->getType() == P::IDENT) headToken = tokens[next++];
+  const RawToken* headToken = nullptr;
+  if (next < tokens.size() && tokens[next].type == P::IDENT) headToken = &tokens[next++];
   std::vector<Word>& words = words_;
   words.clear();
   for (; next < tokens.size(); ++next) {
-    if (tokens[next]->getType() == P::COLON)
+    if (tokens[next].type == P::COLON)
       return diag_.error(posOf(tokens[next]),
                          "unexpected ':': a label is a name followed by ':' at the start of a line", "syntax");
-    words.push_back({tokens[next]->getType(), textOf(src_, tokens[next]), posOf(tokens[next])});
+    words.push_back({tokens[next].type, textOf(src_, tokens[next]), posOf(tokens[next])});
   }
   if (labelled) {
     const std::string_view label = textOf(src_, tokens[0]);
@@ -67,10 +59,10 @@ void Builder::line(P::LineContext* l, bool recovered) {
     }
     return;
   }
-  const std::string_view head = textOf(src_, headToken);
+  const std::string_view head = textOf(src_, *headToken);
   if (sameName(head, "POINTS") && words.empty()) {
     if (inPoints_)
-      return diag_.error(posOf(headToken),
+      return diag_.error(posOf(*headToken),
                          fmt::format("POINTS appears twice (the section began on line {})", pointsHeader_.line),
                          "duplicate-points-section", {diag_.relatedAt(pointsHeader_, "the POINTS section begins here")});
     if (!pendingLabel_.empty()) {
@@ -79,15 +71,15 @@ void Builder::line(P::LineContext* l, bool recovered) {
       pendingLabel_ = {};
     }
     inPoints_ = true;
-    pointsHeader_ = posOf(headToken);
+    pointsHeader_ = posOf(*headToken);
     sink_.pointsHeader(pointsHeader_);
     return;
   }
-  if (inPoints_) return point(headToken, words);
+  if (inPoints_) return point(*headToken, words);
   if (looksLikePoint(head, words)) {
     // A point row after the program's END without a POINTS line: say so
     // once, then read this row and the rest as the points they are.
-    const diag::Pos pos = posOf(headToken);
+    const diag::Pos pos = posOf(*headToken);
     diag_.error(pos,
                 fmt::format("'{}' is not an instruction: it looks like a taught point, but no POINTS line comes "
                             "before it",
@@ -103,9 +95,9 @@ void Builder::line(P::LineContext* l, bool recovered) {
     inPoints_ = true;
     pointsHeader_ = pos;
     sink_.pointsHeader(pointsHeader_);
-    return point(headToken, words);
+    return point(*headToken, words);
   }
-  instruction(headToken, words);
+  instruction(*headToken, words);
 }
 
 // After an END, a word that is no instruction (nor one letter away from
@@ -118,7 +110,7 @@ bool Builder::looksLikePoint(std::string_view head, const std::vector<Word>& wor
   return std::all_of(words.begin(), words.end(), [](const Word& w) { return w.type == P::NUMBER; });
 }
 
-void Builder::instruction(const antlr4::Token* head, const std::vector<Word>& words) {
+void Builder::instruction(const RawToken& head, const std::vector<Word>& words) {
   Instruction& in = in_;
   std::vector<Value> values = std::move(in.values);
   values.clear();
@@ -174,25 +166,40 @@ class Collect final : public AstSink {
 using detail::Builder;
 using detail::P;
 
-void buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
+void buildAst(const diag::SourceFile& source, LineReader& lines, std::span<const vm::MotorSpec> motors,
               diag::Diagnostics& diagnostics, AstSink& sink) {
   Builder b(source, motors, diagnostics, sink);
-  while (antlr4::ParserRuleContext* l = parser.next()) b.line(static_cast<P::LineContext*>(l), parser.recovered());
+  for (std::span<const RawToken> words; lines.next(words);) b.line(words);
   b.finish();
 }
 
+// A line of the whole file's tree as the lexer's tokens: every child of a
+// LineContext is a token node (a SourceToken from the TokenArray); after
+// error recovery some are error nodes for tokens the parser skipped
+// (already reported), which are left out.
 Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics) {
   Collect collect(tree.source());
   Builder b(tree.source(), motors, diagnostics, collect);
-  for (P::LineContext* l : static_cast<P::ProgramContext*>(tree.root())->line()) b.line(l, tree.recovered());
+  std::vector<RawToken> words;
+  for (P::LineContext* l : static_cast<P::ProgramContext*>(tree.root())->line()) {
+    words.clear();
+    for (antlr4::tree::ParseTree* child : l->children) {
+      if (tree.recovered() && dynamic_cast<antlr4::tree::ErrorNode*>(child)) continue;
+      const antlr4::Token* t = static_cast<antlr4::tree::TerminalNode*>(child)->getSymbol();
+      words.push_back({t->getType(), t->getStartIndex(), t->getStopIndex() + 1,
+                       {static_cast<std::uint32_t>(t->getLine()),
+                        static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)}});
+    }
+    b.line(words);
+  }
   b.finish();
   return std::move(collect.program);
 }
 
-Program buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
+Program buildAst(const diag::SourceFile& source, LineReader& lines, std::span<const vm::MotorSpec> motors,
                  diag::Diagnostics& diagnostics) {
   Collect collect(source);
-  buildAst(source, parser, motors, diagnostics, collect);
+  buildAst(source, lines, motors, diagnostics, collect);
   return std::move(collect.program);
 }
 

@@ -1,4 +1,4 @@
-// Parse tree -> AST. Checks each line's shape against the opcode table
+// A line's words -> AST. Checks each line's shape against the opcode table
 // (how many operands, of which kind) and converts numbers, so later passes
 // work on typed operands only.
 #pragma once
@@ -7,6 +7,7 @@
 
 #include "compiler/ast.h"
 #include "diag/diagnostic.h"
+#include "compiler/line_reader.h"
 #include "compiler/parse_tree.h"
 #include "vm/image.h"
 
@@ -25,14 +26,14 @@ class AstSink {
   virtual void point(const PointDef& point) = 0;
 };
 
-/// From each line's parse tree in turn, to `sink`.
-void buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
+/// From each line's words in turn, to `sink` (the compiler's way).
+void buildAst(const diag::SourceFile& source, LineReader& lines, std::span<const vm::MotorSpec> motors,
               diag::Diagnostics& diagnostics, AstSink& sink);
 
 /// From the whole file's parse tree (`robotsim ast`).
 Program buildAst(ParseTree& tree, std::span<const vm::MotorSpec> motors, diag::Diagnostics& diagnostics);
-/// From each line's parse tree in turn: the same AST.
-Program buildAst(const diag::SourceFile& source, LineParser& parser, std::span<const vm::MotorSpec> motors,
+/// From each line's words in turn: the same AST.
+Program buildAst(const diag::SourceFile& source, LineReader& lines, std::span<const vm::MotorSpec> motors,
                  diag::Diagnostics& diagnostics);
 
 

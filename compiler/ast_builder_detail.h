@@ -13,6 +13,7 @@
 #include "RobotProgramParser.h"
 #include "base/ascii.h"
 #include "compiler/ast_builder.h"
+#include "compiler/lexer.h"
 
 namespace rs::compiler::detail {
 
@@ -20,13 +21,11 @@ using P = rs_grammar::RobotProgramParser;
 
 using base::sameName;
 
-inline diag::Pos posOf(const antlr4::Token* t) {
-  return {static_cast<std::uint32_t>(t->getLine()), static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)};
-}
+inline diag::Pos posOf(const RawToken& t) { return t.pos; }
 
 // The written text of a token: a view into the source, not a copy.
-inline std::string_view textOf(const diag::SourceFile& src, const antlr4::Token* t) {
-  return std::string_view(src.text()).substr(t->getStartIndex(), t->getStopIndex() + 1 - t->getStartIndex());
+inline std::string_view textOf(const diag::SourceFile& src, const RawToken& t) {
+  return std::string_view(src.text()).substr(t.begin, t.end - t.begin);
 }
 
 struct Word {  // one operand as written
@@ -43,13 +42,13 @@ class Builder {
   Builder(const diag::SourceFile& src, std::span<const vm::MotorSpec> motors, diag::Diagnostics& d, AstSink& sink)
       : src_(src), motors_(motors), diag_(d), sink_(sink) {}
 
-  /// `recovered`: the parser met syntax errors on this line (already reported).
-  void line(P::LineContext* line, bool recovered);
+  /// One line's words, in order (no NEWLINE or EOF).
+  void line(std::span<const RawToken> tokens);
   void finish();
 
  private:
-  void instruction(const antlr4::Token* head, const std::vector<Word>& words);
-  void point(const antlr4::Token* head, const std::vector<Word>& words);
+  void instruction(const RawToken& head, const std::vector<Word>& words);
+  void point(const RawToken& head, const std::vector<Word>& words);
   bool operands(Instruction& in, std::string_view mnemonic, const std::vector<Word>& w);
   bool looksLikePoint(std::string_view head, const std::vector<Word>& words) const;
   bool pose(PointDef& p, const std::vector<Word>& words);
@@ -79,7 +78,6 @@ class Builder {
   PointDef point_;  // the same
   std::uint32_t instructions_ = 0;
   diag::Pos pointsHeader_;
-  std::vector<const antlr4::Token*> tokens_;  // of the current line (kept for its capacity)
   std::vector<Word> words_;
   bool inPoints_ = false;
   std::uint32_t endLine_ = 0;  // the last END instruction's line, 0 before any

@@ -9,7 +9,7 @@
 
 namespace rs::compiler::detail {
 
-void Builder::point(const antlr4::Token* head, const std::vector<Word>& words) {
+void Builder::point(const RawToken& head, const std::vector<Word>& words) {
   PointDef& p = point_;
   std::vector<Value> values = std::move(p.values);
   values.clear();

@@ -5,7 +5,7 @@
 #include "compiler/ast_builder.h"
 #include "compiler/checks.h"
 #include "compiler/lexer.h"
-#include "compiler/parse_tree.h"
+#include "compiler/line_reader.h"
 #include "RobotProgramParser.h"
 
 namespace rs::compiler {
@@ -58,13 +58,13 @@ CompileResult compileTo(const diag::SourceFile& source, const Target& target, st
     return result;
   }
   diag::Diagnostics diagnostics(source.name(), keepDiagnostics);
-  LineParser parser(source, diagnostics);
+  LineReader lines(source, diagnostics);
   Checker checker(target, source, diagnostics);
   if (observer) {
     Tee tee(checker, *observer);
-    buildAst(source, parser, target.motors, diagnostics, tee);
+    buildAst(source, lines, target.motors, diagnostics, tee);
   } else {
-    buildAst(source, parser, target.motors, diagnostics, checker);
+    buildAst(source, lines, target.motors, diagnostics, checker);
   }
   result.image = checker.finish();
   result.diagnostics = diagnostics.sorted();

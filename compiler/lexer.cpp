@@ -157,20 +157,12 @@ std::string SourceToken::toString() const {
                      static_cast<long long>(getType()), line_, col_ - 1);
 }
 
-TokenArray::TokenArray(Lexer& lexer, std::string_view source, Mode mode)
-    : lexer_(lexer), source_(source), mode_(mode) {
-  if (mode == Mode::WholeFile) tokens_.reserve(source.size() / 4 + 1);
-  fill();
-}
-
-void TokenArray::fill() {
-  base_ += tokens_.size();
-  tokens_.clear();
-  p_ = 0;
+TokenArray::TokenArray(Lexer& lexer, std::string_view source) : lexer_(lexer), source_(source) {
+  tokens_.reserve(source.size() / 4 + 1);
   for (;;) {
     const RawToken raw = lexer_.scan();
-    tokens_.emplace_back(source_, raw, base_ + tokens_.size());
-    if (raw.type == antlr4::Token::EOF || (mode_ == Mode::OneLine && raw.type == P::NEWLINE)) break;
+    tokens_.emplace_back(source_, raw, tokens_.size());
+    if (raw.type == antlr4::Token::EOF) break;
   }
 }
 
@@ -188,42 +180,28 @@ size_t TokenArray::LA(ssize_t i) {
 }
 
 antlr4::Token* TokenArray::get(size_t index) const {
-  if (index < base_ || index - base_ >= tokens_.size())
-    throw antlr4::IndexOutOfBoundsException("token index out of range");
-  return const_cast<SourceToken*>(&tokens_[index - base_]);
+  if (index >= tokens_.size()) throw antlr4::IndexOutOfBoundsException("token index out of range");
+  return const_cast<SourceToken*>(&tokens_[index]);
 }
 
-void TokenArray::seek(size_t index) {
-  // Only within the tokens held: ANTLR seeks back to where prediction began.
-  p_ = std::min(index < base_ ? 0 : index - base_, tokens_.size() - 1);
-}
+void TokenArray::seek(size_t index) { p_ = std::min(index, tokens_.size() - 1); }
 
 void TokenArray::consume() {
   if (tokens_[p_].getType() == antlr4::Token::EOF) throw antlr4::IllegalStateException("cannot consume EOF");
-  // The parser itself never goes past a line's NEWLINE in OneLine mode:
-  // its tree points into this line's tokens. nextLine() moves on.
-  if (mode_ == Mode::OneLine && p_ + 1 == tokens_.size())
-    throw antlr4::IllegalStateException("cannot consume past the end of the line");
   ++p_;
-}
-
-bool TokenArray::nextLine() {
-  if (mode_ != Mode::OneLine || tokens_.back().getType() == antlr4::Token::EOF) return false;
-  fill();
-  return true;
 }
 
 std::string TokenArray::getText(const antlr4::misc::Interval& interval) {
   std::string out;
   if (interval.a < 0 || interval.b < 0) return out;
-  const auto first = std::max(static_cast<size_t>(interval.a), base_);
+  const auto first = static_cast<size_t>(interval.a);
   const auto last = std::min(static_cast<size_t>(interval.b), size() - 1);
   for (auto i = first; i <= last; ++i)
-    if (tokens_[i - base_].getType() != antlr4::Token::EOF) out += tokens_[i - base_].getText();
+    if (tokens_[i].getType() != antlr4::Token::EOF) out += tokens_[i].getText();
   return out;
 }
 
-std::string TokenArray::getText() { return getText(antlr4::misc::Interval(base_, size() - 1)); }
+std::string TokenArray::getText() { return getText(antlr4::misc::Interval(size_t{0}, size() - 1)); }
 
 std::string TokenArray::getText(antlr4::RuleContext* ctx) { return getText(ctx->getSourceInterval()); }
 

@@ -91,19 +91,14 @@ class Lexer final : public antlr4::TokenSource {
 };
 
 /// The lexer's tokens served to the parser through ANTLR's TokenStream
-/// interface, from one contiguous store: no per-token allocation, no
-/// buffering logic on every consume(). Two ways to hold them:
-///  - WholeFile: every token of the file, for a parse tree of the whole
-///    program (`robotsim ast --tree`);
-///  - OneLine: the tokens of the current line only, up to and including its
-///    NEWLINE (or EOF); consuming that last token lexes the next line into
-///    the same store. The compiler parses this way, so its memory does not
-///    grow with the file (see LineParser in parse_tree.h).
-/// Token indices are those of the whole file in both.
+/// interface, from one contiguous store holding every token of the file
+/// (for a parse tree of the whole program: `robotsim ast --tree`): no
+/// per-token allocation, no buffering logic on every consume(). The
+/// compiler itself reads the lexer's words without the parser
+/// (LineReader, line_reader.h).
 class TokenArray final : public antlr4::TokenStream {
  public:
-  enum class Mode { WholeFile, OneLine };
-  TokenArray(Lexer& lexer, std::string_view source, Mode mode);
+  TokenArray(Lexer& lexer, std::string_view source);
 
   antlr4::Token* LT(ssize_t k) override;
   antlr4::Token* get(size_t index) const override;
@@ -116,25 +111,16 @@ class TokenArray final : public antlr4::TokenStream {
   size_t LA(ssize_t i) override;
   ssize_t mark() override { return 0; }
   void release(ssize_t) override {}
-  size_t index() override { return base_ + p_; }
+  size_t index() override { return p_; }
   void seek(size_t index) override;
-  size_t size() override { return base_ + tokens_.size(); }
+  size_t size() override { return tokens_.size(); }
   std::string getSourceName() const override { return lexer_.getSourceName(); }
 
-  /// OneLine mode: drops the current line's tokens and lexes the next line.
-  /// False (and nothing changes) at the last line, or in WholeFile mode.
-  bool nextLine();
-
  private:
-  /// Appends tokens up to the next NEWLINE or EOF (OneLine) or the end (WholeFile).
-  void fill();
-
   Lexer& lexer_;
   std::string_view source_;
-  Mode mode_;
-  std::vector<SourceToken> tokens_;  // never reallocated while the parser holds pointers (see fill)
-  size_t base_ = 0;                  // file index of tokens_[0]
-  size_t p_ = 0;                     // current token, relative to base_
+  std::vector<SourceToken> tokens_;  // filled once: never reallocated while the parser holds pointers
+  size_t p_ = 0;                     // current token
 };
 
 /// Token type name as the grammar spells it ("IDENT", "NUMBER", ...).

@@ -7,10 +7,12 @@
 
 namespace rs::compiler {
 
+namespace {
+
 using P = rs_grammar::RobotProgramParser;
 
-// Turns an ANTLR syntax error into a diagnostic (see the constructor for
-// why there should never be one).
+// Turns an ANTLR syntax error into a diagnostic (see configure() for why
+// there should never be one).
 class SyntaxErrors final : public antlr4::BaseErrorListener {
  public:
   explicit SyntaxErrors(diag::Diagnostics& d) : diagnostics_(d) {}
@@ -26,12 +28,9 @@ class SyntaxErrors final : public antlr4::BaseErrorListener {
   diag::Diagnostics& diagnostics_;
 };
 
-namespace {
-
 // The grammar accepts any sequence of words on a line, so the recovery
 // bookkeeping ANTLR's default strategy does before every loop iteration
-// (sync() copies an IntervalSet each time: 16% of a compile) can never
-// pay off. Errors, should one ever occur, are still reported and
+// (sync() copies an IntervalSet each time) can never pay off. Errors, should one ever occur, are still reported and
 // recovered from by the default strategy's other methods.
 class NoLoopSync final : public antlr4::DefaultErrorStrategy {
  public:
@@ -65,7 +64,7 @@ void configure(P& parser, SyntaxErrors& listener) {
 ParseTree::ParseTree(const diag::SourceFile& source, diag::Diagnostics& diagnostics)
     : source_(source),
       lexer_(std::make_unique<Lexer>(source, diagnostics)),
-      tokens_(std::make_unique<TokenArray>(*lexer_, source.text(), TokenArray::Mode::WholeFile)),
+      tokens_(std::make_unique<TokenArray>(*lexer_, source.text())),
       parser_(std::make_unique<RobotProgramParser>(tokens_.get())) {
   const std::size_t errorsBefore = diagnostics.errorCount();
   SyntaxErrors listener(diagnostics);
@@ -76,42 +75,6 @@ ParseTree::ParseTree(const diag::SourceFile& source, diag::Diagnostics& diagnost
 }
 
 ParseTree::~ParseTree() = default;
-
-LineParser::LineParser(const diag::SourceFile& source, diag::Diagnostics& diagnostics)
-    : diagnostics_(diagnostics),
-      lexer_(std::make_unique<Lexer>(source, diagnostics)),
-      tokens_(std::make_unique<TokenArray>(*lexer_, source.text(), TokenArray::Mode::OneLine)),
-      listener_(std::make_unique<SyntaxErrors>(diagnostics)),
-      parser_(std::make_unique<RobotProgramParser>(tokens_.get())) {
-  configure(*parser_, *listener_);
-}
-
-LineParser::~LineParser() = default;
-
-antlr4::ParserRuleContext* LineParser::next() {
-  for (;;) {
-    parser_->getTreeTracker().reset();  // the previous line's tree
-    // `line` stops before its NEWLINE or EOF (the lexer makes no other
-    // token the rule does not take).
-    if (started_ && !tokens_->nextLine()) return nullptr;
-    started_ = true;
-    const std::size_t errorsBefore = diagnostics_.errorCount();
-    try {
-      antlr4::ParserRuleContext* line = parser_->line();
-      recovered_ = diagnostics_.errorCount() > errorsBefore;
-      return line;
-    } catch (const antlr4::IllegalStateException&) {
-      // Error recovery tried to go past the line's end (the error itself
-      // was reported): the line is dropped, and parsing goes on.
-      if (diagnostics_.errorCount() == errorsBefore) {
-        const antlr4::Token* t = tokens_->LT(1);
-        diagnostics_.error({static_cast<std::uint32_t>(t->getLine()),
-                            static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)},
-                           "syntax error: this line cannot be parsed", "syntax");
-      }
-    }
-  }
-}
 
 std::string ParseTree::toStringTree() {
   return root_->toStringTree(parser_.get());

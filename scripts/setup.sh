@@ -28,16 +28,18 @@ packages=(
 # libncurses-dev: the terminal pendant (robotsim teach --tui) draws with ncurses.
 # Catch2 and the unit tests build with the tree; the browser test drives a
 # real Chromium with playwright-core (pinned in tests/browser/package-lock.json);
-# lcov's genhtml reads robotsim test's coverage files; lua5.4 and libfcl-dev
-# are the benchmarks' peers (collision_bench times libfcl beside robotsim's
-# own GJK; robotsim itself does not link libfcl); neovim's built-in LSP client drives the language server
+# lcov's genhtml reads robotsim test's coverage files; lua5.4, luajit and
+# libfcl-dev are the benchmarks' peers (the VM's dispatch loop is held to
+# LuaJIT's interpreter, `luajit -joff`, and compared with Lua 5.4's;
+# collision_bench times libfcl beside robotsim's own GJK; robotsim itself
+# links none of them); neovim's built-in LSP client drives the language server
 # end to end (the editor_neovim test); clang and its runtime (libFuzzer)
 # build the sanitizer and fuzzing build; unzip lists the VS Code package;
 # tmux gives the terminal pendant's test a real terminal (a pseudo-terminal
 # with a terminal emulator behind it) whose screen it reads. Orocos KDL is
 # the inverse-kinematics benchmark's peer and independent check
 # (bench/ik_bench.cpp; the benchmark builds without it).
-[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 libfcl-dev neovim clang libclang-rt-14-dev unzip tmux
+[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 luajit libfcl-dev neovim clang libclang-rt-14-dev unzip tmux
   liborocos-kdl-dev)
 
 missing=()

@@ -1,10 +1,14 @@
 #include "vm/image_file.h"
 
 #include <fmt/format.h>
-#include <unordered_map>
+#include <zlib.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstddef>
 #include <cstring>
+#include <type_traits>
+#include <unordered_map>
 
 #include "base/ascii.h"
 #include "base/byte_io.h"
@@ -62,6 +66,22 @@ bool hasMotionSection(const Image& im) {
   return false;
 }
 
+// On a little-endian machine an instruction's 12 bytes in memory are its
+// 12 bytes in the file (op, a, b, c, d; no padding), and a constant's 4
+// bytes are too: they are copied as they are, a piece at a time, instead
+// of field by field (a third of writing an image).
+constexpr bool kInstrInFileLayout = std::endian::native == std::endian::little && sizeof(Instr) == kInstrBytes &&
+                                    offsetof(Instr, a) == 1 && offsetof(Instr, b) == 2 && offsetof(Instr, c) == 4 &&
+                                    offsetof(Instr, d) == 8;
+
+template <class T>
+void bulk(ByteWriter& w, const std::vector<T>& items) {
+  constexpr std::size_t kPiece = 4096;  // items a copy: the writer spills between them
+  static_assert(std::is_trivially_copyable_v<T>);
+  for (std::size_t i = 0; i < items.size(); i += kPiece)
+    w.bytes(reinterpret_cast<const std::uint8_t*>(items.data() + i), std::min(kPiece, items.size() - i) * sizeof(T));
+}
+
 void writePayload(ByteWriter& w, const Image& im) {
   w.str(im.sourceName);
   w.str(im.robotName);
@@ -78,17 +98,25 @@ void writePayload(ByteWriter& w, const Image& im) {
     w.f64(m.precision);
   }
   w.u32(static_cast<std::uint32_t>(im.code.size()));
-  for (const Instr& in : im.code) {
-    w.u8(static_cast<std::uint8_t>(in.op));
-    w.u8(in.a);
-    w.u16(in.b);
-    w.i32(in.c);
-    w.i32(in.d);
+  if constexpr (kInstrInFileLayout) {
+    bulk(w, im.code);
+  } else {
+    for (const Instr& in : im.code) {
+      w.u8(static_cast<std::uint8_t>(in.op));
+      w.u8(in.a);
+      w.u16(in.b);
+      w.i32(in.c);
+      w.i32(in.d);
+    }
   }
   for (std::uint32_t line : im.lines) w.u32(line);
   for (std::uint32_t col : im.columns) w.u32(col);
   w.u32(static_cast<std::uint32_t>(im.constants.size()));
-  for (std::int32_t k : im.constants) w.i32(k);
+  if constexpr (std::endian::native == std::endian::little) {
+    bulk(w, im.constants);
+  } else {
+    for (std::int32_t k : im.constants) w.i32(k);
+  }
   w.u32(static_cast<std::uint32_t>(im.variables.size()));
   for (const std::string& v : im.variables) w.str(v);
   w.u32(static_cast<std::uint32_t>(im.points.size()));
@@ -207,29 +235,11 @@ void readNames(ByteReader& r, Image& im) {
 std::uint32_t crc32(const std::uint8_t* data, std::size_t size) { return crc32Update(0, data, size); }
 
 std::uint32_t crc32Update(std::uint32_t crc, const std::uint8_t* data, std::size_t size) {
-  // CRC-32 (IEEE 802.3, reflected polynomial 0xEDB88320), table built once.
-  // Four bytes per step ("slicing by 4"): t[k][b] is the CRC of byte b
-  // followed by k zero bytes, so four table lookups replace four steps.
-  static const auto t = [] {
-    std::array<std::array<std::uint32_t, 256>, 4> t{};
-    for (std::uint32_t i = 0; i < 256; ++i) {
-      std::uint32_t c = i;
-      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      t[0][i] = c;
-    }
-    for (std::uint32_t i = 0; i < 256; ++i)
-      for (std::size_t k = 1; k < 4; ++k) t[k][i] = t[0][t[k - 1][i] & 0xFF] ^ (t[k - 1][i] >> 8);
-    return t;
-  }();
-  std::uint32_t c = crc ^ 0xFFFFFFFFu;
-  std::size_t i = 0;
-  for (; i + 4 <= size; i += 4) {
-    c ^= std::uint32_t{data[i]} | std::uint32_t{data[i + 1]} << 8 | std::uint32_t{data[i + 2]} << 16 |
-         std::uint32_t{data[i + 3]} << 24;
-    c = t[3][c & 0xFF] ^ t[2][(c >> 8) & 0xFF] ^ t[1][(c >> 16) & 0xFF] ^ t[0][c >> 24];
-  }
-  for (; i < size; ++i) c = t[0][(c ^ data[i]) & 0xFF] ^ (c >> 8);
-  return c ^ 0xFFFFFFFFu;
+  // zlib's CRC-32 (Debian's zlib1g, which robotsim links for PNG already):
+  // the same IEEE 802.3 CRC, several bytes a step, about three times the
+  // speed of the four-bytes-a-step table it replaced (docs/performance.md).
+  if (size == 0) return crc;
+  return static_cast<std::uint32_t>(crc32_z(crc, data, size));
 }
 
 namespace {
@@ -260,23 +270,42 @@ std::vector<std::uint8_t> writeImage(const Image& image) {
 }
 
 bool writeImage(const Image& image, std::ostream& out) {
-  // The header comes first and holds the payload's CRC: one pass through
-  // the payload computes it, a second writes it, 64 KiB at a time. The
-  // bytes are writeImage(image)'s, never held whole.
+  // The header comes first and holds the payload's size and CRC. On a
+  // stream that can seek (a file, a string stream) the payload is written
+  // once, behind a header of zeros that is rewritten at the end; on one
+  // that cannot (a pipe), one pass through the payload computes them and a
+  // second writes it. 64 KiB at a time either way: the bytes are
+  // writeImage(image)'s, never held whole.
   constexpr std::size_t kChunk = std::size_t{64} << 10;
-  std::uint32_t crc = 0;
-  std::size_t size = 0;
-  ByteWriter summing(
-      [&](const std::vector<std::uint8_t>& piece) {
-        crc = crc32Update(crc, piece.data(), piece.size());
-        size += piece.size();
-      },
-      kChunk);
-  writePayload(summing, image);
-  summing.flush();
   const auto put = [&out](const std::vector<std::uint8_t>& piece) {
     out.write(reinterpret_cast<const char*>(piece.data()), static_cast<std::streamsize>(piece.size()));
   };
+  std::uint32_t crc = 0;
+  std::size_t size = 0;
+  const auto sum = [&](const std::vector<std::uint8_t>& piece) {
+    crc = crc32Update(crc, piece.data(), piece.size());
+    size += piece.size();
+  };
+  const std::ostream::pos_type start = out.tellp();
+  if (start != std::ostream::pos_type(-1)) {
+    put(imageHeader(image, 0, 0));
+    ByteWriter writing(
+        [&](const std::vector<std::uint8_t>& piece) {
+          sum(piece);
+          put(piece);
+        },
+        kChunk);
+    writePayload(writing, image);
+    writing.flush();
+    const std::ostream::pos_type end = out.tellp();
+    out.seekp(start);
+    put(imageHeader(image, size, crc));
+    out.seekp(end);
+    return static_cast<bool>(out);
+  }
+  ByteWriter summing(sum, kChunk);
+  writePayload(summing, image);
+  summing.flush();
   put(imageHeader(image, size, crc));
   ByteWriter writing(put, kChunk);
   writePayload(writing, image);

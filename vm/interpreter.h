@@ -114,6 +114,21 @@ class Interpreter {
   Status move(const Instr& in);
   Status moveTo(std::span<const std::int32_t> targets);
   RunOutcome finish(StopReason reason, std::string message, std::uint32_t index);
+  /// What the loop does after an instruction that acts on the machine.
+  enum class AfterCall : std::uint8_t { Next, Pause, Stopped };
+  /// Runs instruction `at` (which acts on the machine) and checks what the
+  /// call did: a failure or the time limit finishes the run (Stopped,
+  /// with `next` and `steps` saved), a moved clock renews `check`, a
+  /// clock past the pause time asks for a pause. Out of the loop's way:
+  /// its Status and messages are strings, which the loop never touches.
+  AfterCall machineStep(const Instr& in, std::uint32_t at, std::uint32_t next, std::uint64_t steps,
+                        const RunLimits& limits, const PausePoints& pause, std::uint64_t& check);
+  /// The loop's ways out: a pause before `next`; a finished run (state
+  /// saved, `index` the instruction it ended on); the step count checked.
+  RunOutcome pauseAt(std::uint32_t next, std::uint64_t steps);
+  RunOutcome stopAt(StopReason reason, std::string message, std::uint32_t index, std::uint32_t next,
+                    std::uint64_t steps);
+  RunOutcome checkpoint(const RunLimits& limits, std::uint32_t pc, std::uint64_t steps);
   /// The dispatch loop; `kWatched`: with an observer or breakpoints (the
   /// loop without them checks nothing per step beyond one step count).
   template <bool kWatched>

@@ -1,8 +1,9 @@
-// The compiler parses one line at a time (LineParser over a OneLine
-// TokenArray); `robotsim ast --tree` parses the whole file at once
-// (ParseTree). Both must give the same AST and the same diagnostics for
-// every input, good or bad; and the one-line token store must hold only
-// its line and refuse to be walked past it.
+// The compiler reads one line's words at a time straight from the lexer
+// (LineReader); `robotsim ast --tree` parses the whole file with the
+// generated ANTLR parser (ParseTree). Both must give the same AST and the
+// same diagnostics for every input, good or bad: this is what shows that
+// the compiler may skip the parser (the grammar's `line` rule takes any
+// sequence of the lexer's words).
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -13,6 +14,7 @@
 #include "RobotProgramParser.h"
 #include "compiler/ast_builder.h"
 #include "compiler/lexer.h"
+#include "compiler/line_reader.h"
 #include "compiler/parse_tree.h"
 #include "stdlib/default_robot.h"
 
@@ -87,8 +89,8 @@ Both parseBothWays(const std::string& name, const std::string& text) {
   }
   {
     diag::Diagnostics d(name);
-    LineParser parser(source, d);
-    b.lineAst = describe(buildAst(source, parser, motors, d));
+    LineReader lines(source, d);
+    b.lineAst = describe(buildAst(source, lines, motors, d));
     b.lineDiagnostics = describe(d.sorted());
   }
   return b;
@@ -96,7 +98,7 @@ Both parseBothWays(const std::string& name, const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("line-by-line parsing gives the whole-file AST for every example", "[compiler][parser]") {
+TEST_CASE("line-by-line reading gives the whole-file AST for every example", "[compiler][parser]") {
   for (const char* example : {"counted_loop", "first_moves", "nested_subroutines", "pick_and_place",
                               "sensor_branching", "soft_home", "workcell_view"}) {
     INFO(example);
@@ -109,7 +111,7 @@ TEST_CASE("line-by-line parsing gives the whole-file AST for every example", "[c
   }
 }
 
-TEST_CASE("line-by-line parsing gives the whole-file AST and errors for bad input", "[compiler][parser]") {
+TEST_CASE("line-by-line reading gives the whole-file AST and errors for bad input", "[compiler][parser]") {
   const std::vector<std::string> programs = {
       "",
       "\n\n\n",
@@ -130,59 +132,59 @@ TEST_CASE("line-by-line parsing gives the whole-file AST and errors for bad inpu
   }
 }
 
-TEST_CASE("a OneLine token array holds one line and is not walked past it", "[compiler][parser]") {
-  const std::string text = "MOVE 1 -2\nloop: END\n";
+namespace {
+
+// The words of each line, as "text@line:col" joined by spaces, one line each.
+std::vector<std::string> linesRead(const std::string& text) {
   const diag::SourceFile source("t.rsp", text);
   diag::Diagnostics d("t.rsp");
-  Lexer lexer(source, d);
-  TokenArray tokens(lexer, source.text(), TokenArray::Mode::OneLine);
-
-  REQUIRE(tokens.LA(1) == P::IDENT);
-  CHECK(tokens.LT(1)->getText() == "MOVE");
-  CHECK(tokens.size() == 4);  // MOVE 1 -2 NEWLINE: this line only
-  tokens.consume();
-  CHECK(tokens.LT(1)->getText() == "1");
-  CHECK(tokens.LT(2)->getText() == "-2");
-  CHECK(tokens.LT(-1)->getText() == "MOVE");
-  tokens.consume();
-  tokens.consume();
-  REQUIRE(tokens.LA(1) == P::NEWLINE);
-  CHECK(tokens.LA(2) == P::NEWLINE);  // lookahead stops at the line's end
-  CHECK_THROWS_AS(tokens.consume(), antlr4::IllegalStateException);
-
-  REQUIRE(tokens.nextLine());
-  const antlr4::Token* label = tokens.LT(1);
-  CHECK(label->getText() == "loop");
-  CHECK(label->getTokenIndex() == 4);  // indices count the whole file
-  CHECK(label->getLine() == 2);
-  CHECK(label->getCharPositionInLine() == 0);
-  CHECK(label->getStartIndex() == 10);
-  CHECK(label->getStopIndex() == 13);
-  CHECK(tokens.index() == 4);
-  CHECK_THROWS_AS(tokens.get(0), antlr4::IndexOutOfBoundsException);  // the first line is gone
-  CHECK(tokens.get(5)->getType() == P::COLON);
-  CHECK(tokens.getText() == "loop:END\n");
-
-  REQUIRE(tokens.nextLine());  // the empty last line: EOF only
-  CHECK(tokens.LA(1) == antlr4::Token::EOF);
-  CHECK(tokens.LT(1)->getText() == "<EOF>");
-  CHECK(tokens.LT(1)->getTokenIndex() == 8);
-  CHECK_THROWS_AS(tokens.consume(), antlr4::IllegalStateException);
-  CHECK_FALSE(tokens.nextLine());
-  CHECK(tokens.LA(1) == antlr4::Token::EOF);
+  LineReader reader(source, d);
+  std::vector<std::string> out;
+  for (std::span<const RawToken> words; reader.next(words);) {
+    std::string line;
+    for (const RawToken& w : words)
+      line += (line.empty() ? "" : " ") + text.substr(w.begin, w.end - w.begin) + "@" + std::to_string(w.pos.line) +
+              ":" + std::to_string(w.pos.col);
+    out.push_back(line);
+  }
+  return out;
 }
 
-TEST_CASE("a WholeFile token array holds every token and seeks anywhere", "[compiler][parser]") {
+}  // namespace
+
+TEST_CASE("a line reader gives each line's words and the lines ANTLR's program rule sees", "[compiler][parser]") {
+  using Lines = std::vector<std::string>;
+  CHECK(linesRead("MOVE 1 -2\nloop: END\n") == Lines{"MOVE@1:1 1@1:6 -2@1:8", "loop@2:1 :@2:5 END@2:7", ""});
+  CHECK(linesRead("END") == Lines{"END@1:1"});  // no line break: one line
+  CHECK(linesRead("") == Lines{""});
+  CHECK(linesRead("\n\r\n; note\n") == Lines{"", "", "", ""});  // N breaks, N + 1 lines
+  CHECK(linesRead("GOTO x ; to x\r\n\tEND") == Lines{"GOTO@1:1 x@1:6", "END@2:2"});
+  CHECK(linesRead("JMPVAR N<3 l") == Lines{"JMPVAR@1:1 N@1:8 <@1:9 3@1:10 l@1:12"});
+}
+
+TEST_CASE("a line reader is done after the last line, and stays done", "[compiler][parser]") {
+  const diag::SourceFile source("t.rsp", "END\n");
+  diag::Diagnostics d("t.rsp");
+  LineReader reader(source, d);
+  std::span<const RawToken> words;
+  REQUIRE(reader.next(words));
+  CHECK(words.size() == 1);
+  REQUIRE(reader.next(words));
+  CHECK(words.empty());
+  CHECK_FALSE(reader.next(words));
+  CHECK_FALSE(reader.next(words));
+}
+
+TEST_CASE("a token array holds every token of the file and seeks anywhere", "[compiler][parser]") {
   const std::string text = "GOTO 1\nEND";
   const diag::SourceFile source("t.rsp", text);
   diag::Diagnostics d("t.rsp");
   Lexer lexer(source, d);
-  TokenArray tokens(lexer, source.text(), TokenArray::Mode::WholeFile);
+  TokenArray tokens(lexer, source.text());
   CHECK(tokens.size() == 5);  // GOTO 1 NEWLINE END EOF
   tokens.seek(3);
   CHECK(tokens.LT(1)->getText() == "END");
   CHECK(tokens.LT(1)->toString() == "[@3,7:9='END',<1>,2:0]");
-  CHECK_FALSE(tokens.nextLine());
   tokens.consume();
   CHECK(tokens.LA(1) == antlr4::Token::EOF);
   CHECK(tokens.get(1)->getText() == "1");
@@ -204,7 +206,7 @@ TEST_CASE("a parser token is small and carries no copy of its text", "[compiler]
   CHECK(t.getCharPositionInLine() == 8);
 }
 
-TEST_CASE("line-by-line and whole-file parsing agree on 500 random programs", "[compiler][parser]") {
+TEST_CASE("line-by-line reading and whole-file parsing agree on 500 random programs", "[compiler][parser]") {
   // Words from every token type, keywords in both cases, bad characters and
   // line breaks of both kinds; a fixed seed keeps the test reproducible.
   const std::vector<std::string> words = {

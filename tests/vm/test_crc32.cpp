@@ -1,7 +1,8 @@
-// The image checksum: CRC-32 as zlib and IEEE 802.3 define it, checked
-// against the standard check value and against zlib's crc32() (an
-// independent implementation) on every length and alignment that matters
-// to a four-bytes-at-a-time loop.
+// The image checksum: CRC-32 as zlib and IEEE 802.3 define it. robotsim
+// calls zlib's crc32_z (vm/image_file.cpp); these check the wrapper
+// against the standard check value, and against zlib's older crc32() entry
+// on every length and alignment that matters to a loop of several bytes a
+// step, and over pieces.
 #include <catch2/catch.hpp>
 
 #include <zlib.h>

@@ -14,7 +14,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <ostream>
 #include <sstream>
+#include <streambuf>
 #include <string>
 #include <vector>
 
@@ -441,18 +443,52 @@ TEST_CASE("huge counts are refused before anything is allocated", "[verifier]") 
   }
 }
 
+namespace {
+
+// A stream that cannot seek (tellp() gives -1), as a pipe: what it was
+// given, in order.
+class PipeLikeBuffer final : public std::streambuf {
+ public:
+  std::string written;
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (c != traits_type::eof()) written += traits_type::to_char_type(c);
+    return traits_type::not_eof(c);
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    written.append(s, static_cast<std::size_t>(n));
+    return n;
+  }
+};
+
+}  // namespace
+
 TEST_CASE("an image streamed to a file has the bytes of the image in memory", "[verifier]") {
   // 20,000 instructions: 400 KB of payload, several of the writer's 64 KiB
-  // pieces; and a one-instruction image, less than one piece.
+  // pieces; and a one-instruction image, less than one piece. A stream that
+  // seeks gets the payload in one pass and its header last; one that cannot
+  // gets two passes: the same bytes.
   std::string big;
   for (int i = 0; i < 20000; ++i) big += "MOVE " + std::to_string(i % 90) + " 2 3 4 5\n";
   for (const std::string& text : {big + "END\n", std::string("END\n")}) {
     const Image im = compileOk(text);
-    std::ostringstream streamed;
-    REQUIRE(rs::vm::writeImage(im, streamed));
     const Bytes inMemory = rs::vm::writeImage(im);
+    std::ostringstream streamed;
+    streamed << "before";  // the image need not start the stream
+    REQUIRE(rs::vm::writeImage(im, streamed));
+    streamed << "after";
     const std::string s = streamed.str();
-    CHECK(Bytes(s.begin(), s.end()) == inMemory);
-    CHECK(rs::vm::loadImage(s).error.empty());
+    REQUIRE(s.size() == 6 + inMemory.size() + 5);
+    CHECK(s.substr(0, 6) == "before");
+    CHECK(s.substr(s.size() - 5) == "after");
+    CHECK(Bytes(s.begin() + 6, s.end() - 5) == inMemory);
+    CHECK(rs::vm::loadImage(s.substr(6, inMemory.size())).error.empty());
+
+    PipeLikeBuffer pipe;
+    std::ostream piped(&pipe);
+    REQUIRE(piped.tellp() == std::ostream::pos_type(-1));
+    REQUIRE(rs::vm::writeImage(im, piped));
+    CHECK(Bytes(pipe.written.begin(), pipe.written.end()) == inMemory);
   }
 }

@@ -199,10 +199,34 @@ TEST_CASE("JMPVAR compares with <, > and =", "[vm]") {
     bool taken;
   };
   // N is 5.
-  const Case cases[] = {{"<", 6, true}, {"<", 5, false}, {">", 4, true}, {">", 5, false},
-                        {"=", 5, true}, {"=", 4, false}, {"<", -6, false}, {">", -6, true}};
+  const Case cases[] = {{"<", 6, true},  {"<", 5, false}, {"<", 4, false}, {">", 4, true},  {">", 5, false},
+                        {">", 6, false}, {"=", 5, true},  {"=", 4, false}, {"=", 6, false}, {"<", -6, false},
+                        {">", -6, true}};
   for (const Case& c : cases) {
     const std::string text = std::string("SET N 5\nJMPVAR N ") + c.compare + " " + std::to_string(c.value) +
+                             " yes\nSET R 1\nEND\nyes: SET R 2\nEND\n";
+    INFO(text);
+    const Run r = run(text);
+    requireEnded(r);
+    CHECK(r.var("R") == (c.taken ? 2 : 1));
+  }
+}
+
+TEST_CASE("JMPVAR compares the whole 32-bit range without overflow", "[vm]") {
+  // The loop compares by the sign of the difference: at the ends of the
+  // range a subtraction in 32 bits would overflow and give the wrong sign.
+  struct Case {
+    const char* n;
+    const char* compare;
+    const char* value;
+    bool taken;
+  };
+  const Case cases[] = {{"2147483647", ">", "-2147483648", true},  {"2147483647", "<", "-2147483648", false},
+                        {"-2147483648", "<", "2147483647", true},  {"-2147483648", ">", "2147483647", false},
+                        {"-2147483648", "=", "2147483647", false}, {"-2147483648", "=", "-2147483648", true},
+                        {"2147483647", "=", "2147483647", true},   {"2147483647", "<", "2147483647", false}};
+  for (const Case& c : cases) {
+    const std::string text = std::string("SET N ") + c.n + "\nJMPVAR N " + c.compare + " " + c.value +
                              " yes\nSET R 1\nEND\nyes: SET R 2\nEND\n";
     INFO(text);
     const Run r = run(text);
