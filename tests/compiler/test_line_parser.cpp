@@ -32,7 +32,7 @@ std::string readFile(const std::string& path) {
 }
 
 // Every field of every node, written out: two ASTs are equal when these are.
-std::string describe(const Program& p) {
+std::string describeParsed(const Program& p) {
   std::ostringstream o;
   auto pos = [&](diag::Pos x) { o << '@' << x.line << ':' << x.col << ' '; };
   auto values = [&](const std::vector<Value>& vs) {
@@ -66,7 +66,7 @@ std::string describe(const Program& p) {
   return o.str();
 }
 
-std::string describe(const std::vector<diag::Diagnostic>& ds) {
+std::string describeParsed(const std::vector<diag::Diagnostic>& ds) {
   std::ostringstream o;
   for (const diag::Diagnostic& d : ds)
     o << d.pos.line << ':' << d.pos.col << ' ' << severityName(d.severity) << ' ' << d.message << '\n';
@@ -84,14 +84,14 @@ Both parseBothWays(const std::string& name, const std::string& text) {
   {
     diag::Diagnostics d(name);
     ParseTree tree(source, d);
-    b.wholeAst = describe(buildAst(tree, motors, d));
-    b.wholeDiagnostics = describe(d.sorted());
+    b.wholeAst = describeParsed(buildAst(tree, motors, d));
+    b.wholeDiagnostics = describeParsed(d.sorted());
   }
   {
     diag::Diagnostics d(name);
     LineReader lines(source, d);
-    b.lineAst = describe(buildAst(source, lines, motors, d));
-    b.lineDiagnostics = describe(d.sorted());
+    b.lineAst = describeParsed(buildAst(source, lines, motors, d));
+    b.lineDiagnostics = describeParsed(d.sorted());
   }
   return b;
 }

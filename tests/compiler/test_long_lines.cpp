@@ -25,7 +25,7 @@ using rs::diag::Pos;
 using rs::diag::Severity;
 using rs::diag::SourceFile;
 
-rs::compiler::Target rhino() { return {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth}; }
+rs::compiler::Target longLinesTarget() { return {"rhino-scara", rs::stdlib::rhinoScaraMotors(), rs::vm::kDefaultCallDepth}; }
 
 // The byte offset of column `col` of `line`, counted from the line's start
 // one character at a time (a byte that is not UTF-8 is one character).
@@ -120,7 +120,7 @@ TEST_CASE("the source line under a diagnostic is an excerpt around the column", 
 TEST_CASE("a message quotes at most 64 characters of a word", "[compiler]") {
   const std::string word(100'000, 'x');
   const SourceFile source("w.rsp", "MOVE " + word + " 0 0 0 0\n" + word + "\nEND\n");
-  const rs::compiler::CompileResult r = rs::compiler::compile(source, rhino());
+  const rs::compiler::CompileResult r = rs::compiler::compile(source, longLinesTarget());
   REQUIRE(r.diagnostics.size() == 2);
   const std::string quoted = std::string(64, 'x') + "\xE2\x80\xA6";
   CHECK(r.diagnostics[0].message == "expected an encoder value, found '" + quoted + "'");
@@ -138,7 +138,7 @@ TEST_CASE("a line gives the parser at most kMaxLineWords words", "[compiler]") {
   for (int i = 0; i < 1'000'000; ++i) text += " x";
   text += " ; comment\r\nEND\n";
   const SourceFile source("m.rsp", text);
-  const rs::compiler::CompileResult r = rs::compiler::compile(source, rhino());
+  const rs::compiler::CompileResult r = rs::compiler::compile(source, longLinesTarget());
   REQUIRE(r.diagnostics.size() == kMaxLineWords);
   for (std::uint32_t i = 0; i + 1 < kMaxLineWords; ++i) {
     CHECK(r.diagnostics[i].pos == Pos{1, 6 + 2 * i});
@@ -154,7 +154,7 @@ TEST_CASE("a line gives the parser at most kMaxLineWords words", "[compiler]") {
   // 64 words are fine.
   std::string full = "P1";
   for (std::uint32_t i = 1; i < kMaxLineWords; ++i) full += " 0";
-  CHECK(rs::compiler::compile(SourceFile("f.rsp", "END\nPOINTS\n" + full + "\n"), rhino()).diagnostics.size() == 1);
+  CHECK(rs::compiler::compile(SourceFile("f.rsp", "END\nPOINTS\n" + full + "\n"), longLinesTarget()).diagnostics.size() == 1);
 }
 
 TEST_CASE("a collector with a limit keeps the first diagnostics by position", "[diag]") {
@@ -195,8 +195,8 @@ TEST_CASE("compile keeps the first diagnostics when asked, and counts the others
   std::string text;
   for (int i = 0; i < 1000; ++i) text += i == 500 ? "OUTSIG 9 @\n" : "FOO\n";
   const SourceFile source("k.rsp", text);
-  const rs::compiler::CompileResult all = rs::compiler::compile(source, rhino());
-  const rs::compiler::CompileResult some = rs::compiler::compile(source, rhino(), 5);
+  const rs::compiler::CompileResult all = rs::compiler::compile(source, longLinesTarget());
+  const rs::compiler::CompileResult some = rs::compiler::compile(source, longLinesTarget(), 5);
   REQUIRE(all.diagnostics.size() == 1001);
   CHECK(all.omitted.errors == 0);
   REQUIRE(some.diagnostics.size() == 5);
