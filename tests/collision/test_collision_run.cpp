@@ -1,6 +1,7 @@
-// Collisions in the run layer: a snapshot keeps how many were found, so a
-// restored run finds the same ones again, at the same times; and a run on
-// a cell with collisions off has no checker at all.
+// Collisions in the run layer: a snapshot keeps the ones found so far, so a
+// restored run (back or forwards) has them and finds the later ones again,
+// at the same times; and a run on a cell with collisions off has no
+// checker at all.
 #include <catch2/catch.hpp>
 
 #include "../render/render_test_util.h"
@@ -30,7 +31,7 @@ TEST_CASE("a restored run finds the same collisions again", "[collision][runtime
   rs::runtime::Run run(spec);
   run.step(1);
   const rs::runtime::RunSnapshot after1 = run.snapshot();
-  CHECK(after1.collisions == 1);
+  CHECK(after1.collisions.size() == 1);
   REQUIRE(run.runToEnd().ok());
   const auto all = found(run);
   REQUIRE(all.size() == 3);
@@ -44,6 +45,13 @@ TEST_CASE("a restored run finds the same collisions again", "[collision][runtime
   CHECK(found(run).size() == 1);
   REQUIRE(run.runToEnd().ok());
   CHECK(found(run) == all);
+  // Forwards too, as a debugger does when it jumps to a later snapshot
+  // from an earlier moment: the collisions found by then come back.
+  const rs::runtime::RunSnapshot atEnd = run.snapshot();
+  run.restore(after1);
+  run.restore(atEnd);
+  CHECK(found(run) == all);
+  CHECK(run.snapshot() == atEnd);
 
   spec.collisions = rs::runtime::CollisionMode::Off;
   rs::runtime::Run unchecked(spec);
