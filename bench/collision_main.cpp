@@ -1,153 +1,103 @@
-// Collision benchmark (issue 14, "Collisions"): robotsim's own GJK on point
-// hulls (model/workcell/gjk.h) against libfcl 0.7 (Debian's libfcl-dev,
-// when found at configure time) on the same random box pairs, and the cost
-// of the swept check of a whole run: a SCARA program on the library's
-// scara-pick cell with --collisions=error against off. Run by `make bench`;
-// figures go to docs/performance.md ("Collisions").
-#include <chrono>
-#include <cstdio>
-#include <memory>
-#include <random>
-#include <vector>
+// Collision benchmark (issues 14 and 23), `collision_bench`, run by `make
+// bench`; figures go to docs/performance.md ("Collisions"):
+//  - gjk: robotsim's own GJK on point hulls (model/workcell/gjk.h) against
+//    libfcl 0.7 (Debian's libfcl-dev, when found at configure time) on the
+//    same random box pairs;
+//  - sweep: the swept check of a whole run, a SCARA program over the whole
+//    range on scara-pick: poses checked and the time of each move, answered
+//    from memory and swept afresh;
+//  - runs: the targets of issue 23, a run with --collisions=error against
+//    the same run with off (CPU time), for a long loop and a long
+//    pick-and-place on scara-pick, puma-cell and xr4-cell, and simulated
+//    seconds per CPU second (bench/collision_runs.cpp);
+//  - test: `robotsim test -j 2` on 1,000 copies of the examples, with
+//    collisions and without (needs --robotsim).
+#include <fmt/format.h>
 
-#include "bench/bench_args.h"
-#include "compiler/compiler.h"
-#include "compiler/library.h"
-#include "launch/program.h"
-#include "model/workcell/collision_model.h"
-#include "model/workcell/gjk.h"
-#include "runtime/run/run.h"
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <string>
 
-#ifdef ROBOTSIM_BENCH_FCL
-#include <fcl/geometry/shape/box.h>
-#include <fcl/narrowphase/collision.h>
-#include <fcl/narrowphase/collision_object.h>
-#endif
+#include "bench/collision_runs.h"
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-using Eigen::Isometry3d;
-using Eigen::Vector3d;
+constexpr const char* kUsage =
+    "usage: collision_bench [--smoke] [--reps N] [--only gjk|sweep|runs|test] [--robotsim PATH] [--workdir DIR] [REPS]\n"
+    "  --reps N         repetitions of each measurement, best kept (default 5)\n"
+    "  --only PART      one part of the benchmark (default: all; test needs --robotsim)\n"
+    "  --robotsim PATH  the robotsim binary, for the test part\n"
+    "  --workdir DIR    where the test part writes its copies of the examples (default: collision-bench)\n"
+    "  --smoke          every part once at a tiny size (for the test suite: it runs and prints)\n";
 
-struct Pair {
-  Vector3d halfA, halfB;
-  Isometry3d A, B;
-};
-
-Isometry3d randomPose(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  Eigen::Quaterniond q(u(rng), u(rng), u(rng), u(rng));
-  Isometry3d T = Isometry3d::Identity();
-  T.linear() = q.normalized().toRotationMatrix();
-  T.translation() = 3 * Vector3d(u(rng), u(rng), u(rng));
-  return T;
+bool positiveInt(const char* text, int& out) {
+  char* end = nullptr;
+  const long v = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || v < 1 || v > 1000) return false;
+  out = static_cast<int>(v);
+  return true;
 }
-
-std::vector<Vector3d> corners(const Vector3d& h) {
-  std::vector<Vector3d> c;
-  for (int i = 0; i < 8; ++i) c.emplace_back((i & 4 ? 1 : -1) * h.x(), (i & 2 ? 1 : -1) * h.y(), (i & 1 ? 1 : -1) * h.z());
-  return c;
-}
-
-template <typename F>
-double bestNsPerCall(int reps, long calls, F&& f) {
-  double best = 1e300;
-  for (int r = 0; r < reps; ++r) {
-    const auto start = Clock::now();
-    for (long i = 0; i < calls; ++i) f(i);
-    const double ns = std::chrono::duration<double, std::nano>(Clock::now() - start).count();
-    best = std::min(best, ns / static_cast<double>(calls));
-  }
-  return best;
-}
-
-// A SCARA program that sweeps its arm over the whole range, up and down,
-// with the gripper opening and closing: every move checked.
-constexpr const char* kProgram =
-    "        SET N 0\n"
-    "loop:   MOVETO 1000 -550 0 0 0\n"
-    "        MOVETO -1000 550 0 700 120\n"
-    "        MOVETO 0 0 0 -700 0\n"
-    "        ADD N 1\n"
-    "        JMPVAR N < 50 loop\n"
-    "        END\n";
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const rs::bench::CountArgument counts[] = {{"REPS", "runs (the best is printed)", 5, 1}};
-  const rs::bench::BenchArguments args = rs::bench::parseBenchArguments(
-      argc, argv, "collision_bench", "GJK against libfcl, and the swept check of a run (docs/performance.md).", counts);
-  if (args.exitCode) return *args.exitCode;
-  const int reps = static_cast<int>(args[0]);
-  constexpr long kCalls = 1'000'000;
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> size(0.2, 2.0);
-  std::vector<Pair> pairs(1024);
-  for (Pair& p : pairs) p = {{size(rng), size(rng), size(rng)}, {size(rng), size(rng), size(rng)}, randomPose(rng), randomPose(rng)};
-  std::vector<std::vector<Vector3d>> ca, cb;
-  for (const Pair& p : pairs) ca.push_back(corners(p.halfA)), cb.push_back(corners(p.halfB));
-
-  std::printf("collision tests on 1024 random box pairs (about half overlap), best of %d\n", reps);
-  long hits = 0;
-  const double gjk = bestNsPerCall(reps, kCalls, [&](long i) {
-    const std::size_t k = static_cast<std::size_t>(i & 1023);
-    hits += rs::workcell::hullsOverlap({ca[k], &pairs[k].A}, {cb[k], &pairs[k].B});
-  });
-  std::printf("  robotsim GJK on 8-point hulls  %7.1f ns per pair (%ld overlaps)\n", gjk, hits);
-#ifdef ROBOTSIM_BENCH_FCL
-  std::vector<std::unique_ptr<fcl::CollisionObjectd>> oa, ob;
-  for (const Pair& p : pairs) {
-    oa.push_back(std::make_unique<fcl::CollisionObjectd>(std::make_shared<fcl::Boxd>(2 * p.halfA), p.A));
-    ob.push_back(std::make_unique<fcl::CollisionObjectd>(std::make_shared<fcl::Boxd>(2 * p.halfB), p.B));
+  rs::bench::CollisionBenchOptions options;
+  std::string only;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto value = [&]() -> const char* {
+      if (i + 1 >= argc) {
+        std::cerr << "collision_bench: error: " << arg << " needs a value\n" << kUsage;
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (arg == "--help" || arg == "-h") {
+      std::cout << kUsage;
+      return 0;
+    } else if (arg == "--reps") {
+      const char* v = value();
+      if (!positiveInt(v, options.reps)) {
+        std::cerr << "collision_bench: error: --reps takes a whole number from 1 to 1000, not '" << v << "'\n";
+        return 2;
+      }
+    } else if (arg == "--only") {
+      only = value();
+      if (only != "gjk" && only != "sweep" && only != "runs" && only != "test") {
+        std::cerr << "collision_bench: error: --only takes gjk, sweep, runs or test, not '" << only << "'\n";
+        return 2;
+      }
+    } else if (arg == "--robotsim") {
+      options.robotsim = value();
+    } else if (arg == "--workdir") {
+      options.workDir = value();
+    } else if (arg == "--smoke") {
+      options.smoke = true;
+    } else if (!arg.empty() && arg[0] != '-') {  // the old form: collision_bench REPS
+      if (!positiveInt(arg.c_str(), options.reps)) {
+        std::cerr << "collision_bench: error: REPS must be a whole number from 1 to 1000, not '" << arg << "'\n"
+                  << kUsage;
+        return 2;
+      }
+    } else {
+      std::cerr << "collision_bench: error: unknown argument '" << arg << "'\n" << kUsage;
+      return 2;
+    }
   }
-  long fclHits = 0;
-  const fcl::CollisionRequestd request;
-  const double fclNs = bestNsPerCall(reps, kCalls, [&](long i) {
-    const std::size_t k = static_cast<std::size_t>(i & 1023);
-    fcl::CollisionResultd result;
-    fcl::collide(oa[k].get(), ob[k].get(), request, result);
-    fclHits += result.isCollision();
-  });
-  std::printf("  libfcl 0.7 Boxd / Boxd         %7.1f ns per pair (%ld overlaps)\n", fclNs, fclHits);
-#else
-  std::printf("  libfcl: not found at configure time, not compared\n");
-#endif
-
-  // The swept check of a whole run.
-  rs::compiler::Library library(rs::compiler::librarySearchPath({}));
-  std::optional<rs::workcell::Workcell> cell = library.workcell("scara-pick");
-  if (!cell) return 1;
-  auto shared = std::make_shared<const rs::workcell::Workcell>(*cell);
-  const rs::diag::SourceFile source("sweep.rsp", kProgram);
-  rs::compiler::CompileResult compiled = rs::compiler::compile(source, rs::launch::cellTarget(*cell));
-  if (!compiled.image) return 1;
-  auto image = std::make_shared<const rs::vm::Image>(*compiled.image);
-  const auto runOnce = [&](rs::runtime::CollisionMode mode, std::uint64_t* checks, double* simulated) {
-    rs::runtime::RunSpec spec;
-    spec.image = image;
-    spec.cell = shared;
-    spec.collisions = mode;
-    rs::runtime::Run run(std::move(spec));
-    const auto start = Clock::now();
-    const rs::vm::RunOutcome outcome = run.runToEnd();
-    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-    if (!outcome.ok()) std::printf("  (the run stopped: %s)\n", outcome.message.c_str());
-    if (checks) *checks = run.collisionWatch() ? run.collisionWatch()->checks() : 0;
-    if (simulated) *simulated = static_cast<double>(run.clock()) / 1e6;
-    return ms;
-  };
-  double off = 1e300, on = 1e300, simulated = 0;
-  std::uint64_t checks = 0;
-  for (int r = 0; r < reps; ++r) {
-    off = std::min(off, runOnce(rs::runtime::CollisionMode::Off, nullptr, nullptr));
-    on = std::min(on, runOnce(rs::runtime::CollisionMode::Error, &checks, &simulated));
+  if (options.smoke) options.reps = 1;
+  if (only == "test" && options.robotsim.empty()) {
+    std::cerr << "collision_bench: error: --only test needs --robotsim PATH\n";
+    return 2;
   }
-  std::printf("swept check, rhino-scara on scara-pick, 150 moves over the whole range (%.1f s simulated)\n", simulated);
-  std::printf("  --collisions=off    %8.2f ms\n", off);
-  std::printf("  --collisions=error  %8.2f ms: %llu poses checked, %.2f us per pose, %.1f us per move\n", on,
-              static_cast<unsigned long long>(checks), (on - off) * 1e3 / static_cast<double>(checks),
-              (on - off) * 1e3 / 150);
+  try {
+    if (only.empty() || only == "gjk") rs::bench::benchGjk(options);
+    if (only.empty() || only == "sweep") rs::bench::benchSweep(options);
+    if (only.empty() || only == "runs") rs::bench::benchWorkcellRuns(options);
+    if ((only.empty() && !options.robotsim.empty()) || only == "test") rs::bench::benchTestExamples(options);
+  } catch (const std::exception& e) {
+    std::cerr << "collision_bench: error: " << e.what() << "\n";
+    return 1;
+  }
   return 0;
 }

@@ -23,6 +23,8 @@ std::size_t snapshotBytes(const runtime::RunSnapshot& s) {
   b += s.machine.schedule.reactive.size() * (sizeof(runtime::InputSchedule::State::Pending) + kSetNodeOverhead);
   if (s.world) b += heapBytes(s.world->grasp.resting);
   if (s.log) b += heapBytes(s.log->moves);
+  b += heapBytes(s.collisions);
+  for (const runtime::CollisionEvent& e : s.collisions) b += heapBytes(e.encoders);
   return b;
 }
 

@@ -23,6 +23,7 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
     ++state_.emptyCloses;
   }
   if (!change) return;
+  ++revision_;
   if (change->held) ++state_.takes;
   const std::size_t o = change->object;
   state_.last = change->held ? GraspEvent{end, o, true, grasping_.heldOffset()}
@@ -34,6 +35,7 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
 void World::reset(vm::Micros at) {
   const std::optional<std::size_t> held = grasping_.held();
   grasping_.reset();
+  ++revision_;
   if (!held) return;
   state_.last = {at, *held, false, grasping_.restingPose(*held)};
   ++state_.events;
@@ -78,6 +80,7 @@ World::State World::state() const {
 void World::restore(const State& s) {
   state_ = s;
   grasping_.restore(s.grasp);
+  ++revision_;
 }
 
 }  // namespace rs::runtime

@@ -71,6 +71,15 @@ class World {
   /// happens after `at` (a closing move still under way) has not happened yet.
   Eigen::Isometry3d objectPose(std::size_t o, std::span<const std::int32_t> encoders,
                                vm::Micros at = INT64_MAX) const;
+  /// Where object `o` rests now (its last resting place while it is held).
+  const Eigen::Isometry3d& restingPose(std::size_t o) const { return grasping_.restingPose(o); }
+  /// F_E_object of the held object (meaningful while one is held).
+  const Eigen::Isometry3d& heldOffset() const { return grasping_.heldOffset(); }
+  /// Changes whenever what is held or where an object rests may have
+  /// changed (a take, a let-go, RESET, restore): a cache of anything that
+  /// depends on them is still good while this stays the same. Not part of
+  /// the state: it only ever grows.
+  std::uint64_t revision() const { return revision_; }
   /// The tool centre point in world coordinates, when the robot has a chain.
   std::optional<std::array<double, 3>> tcp(std::span<const std::int32_t> encoders) const;
 
@@ -115,6 +124,7 @@ class World {
   mutable workcell::Grasping grasping_;
   mutable std::optional<workcell::ToolTracker> tool_;
   State state_;  // all but the grasp, which grasping_ keeps
+  std::uint64_t revision_ = 0;
 };
 
 }  // namespace rs::runtime

@@ -129,7 +129,7 @@ CollisionModel::CollisionModel(const Workcell& cell, std::size_t robot) : cell_(
     length[static_cast<std::size_t>(i)] = std::hypot(joint.dh.a, d);
   }
   // The reach of each body from the origin of its own frame.
-  std::vector<double> bodyReach(robotBodies_.size(), 0.0);
+  std::vector<double> bodyReach(robotBodies_.size(), 0.0), fingerWeights(robotBodies_.size(), 0.0);
   const kinematics::GripperModel& g = r.gripper.model;
   for (std::size_t b = 0; b < robotBodies_.size(); ++b) {
     const CollisionBody& body = robotBodies_[b];
@@ -140,10 +140,23 @@ CollisionModel::CollisionModel(const Workcell& cell, std::size_t robot) : cell_(
       double aroundAxis = 0;
       for (const CollisionPiece& piece : body.pieces)
         for (const Vector3d& p : piece.points) aroundAxis = std::max(aroundAxis, distanceToLine(p, axis));
-      fingerWeight_ = std::max(fingerWeight_, std::abs(g.precision) * M_PI / 180.0 * aroundAxis);
+      fingerWeights[b] = std::abs(g.precision) * M_PI / 180.0 * aroundAxis;
+      fingerWeight_ = std::max(fingerWeight_, fingerWeights[b]);
     } else {
       bodyReach[b] = reachOf(body, M);
     }
+  }
+  gripperMotor_ = motors;
+  hasGripper_ = r.hasGripper;
+  const std::size_t columns = motors + (r.hasGripper ? 1 : 0);
+  bodyWeights_.assign(robotBodies_.size() * columns, 0.0);
+  bodyRadii_.assign(robotBodies_.size() * static_cast<std::size_t>(n), 0.0);
+  fingerWeights_ = fingerWeights;
+  revolute_.assign(static_cast<std::size_t>(n), 0);
+  jointRates_.assign(static_cast<std::size_t>(n) * motors, 0.0);
+  for (std::size_t j = 0; j < static_cast<std::size_t>(n); ++j) {
+    revolute_[j] = jointScale_[j] != 1.0;
+    for (std::size_t m = 0; m < motors; ++m) jointRates_[j * motors + m] = dqde_[j][m] * jointScale_[j];
   }
   staticRho_.assign(static_cast<std::size_t>(n), 0.0);
   toReach_.assign(static_cast<std::size_t>(n), 0.0);
@@ -153,14 +166,47 @@ CollisionModel::CollisionModel(const Workcell& cell, std::size_t robot) : cell_(
     std::vector<double> toFrame(static_cast<std::size_t>(n) + 1, 0.0);
     for (int f = i; f <= n; ++f) fromAxis += length[static_cast<std::size_t>(f)], toFrame[static_cast<std::size_t>(f)] = fromAxis;
     toReach_[j] = toFrame[static_cast<std::size_t>(n)];
-    for (std::size_t b = 0; b < robotBodies_.size(); ++b)
-      if (robotBodies_[b].frame >= i)
-        staticRho_[j] = std::max(staticRho_[j], toFrame[static_cast<std::size_t>(robotBodies_[b].frame)] + bodyReach[b]);
+    for (std::size_t b = 0; b < robotBodies_.size(); ++b) {
+      if (robotBodies_[b].frame < i) continue;
+      const double rho = toFrame[static_cast<std::size_t>(robotBodies_[b].frame)] + bodyReach[b];
+      bodyRadii_[b * static_cast<std::size_t>(n) + j] = rho;
+      staticRho_[j] = std::max(staticRho_[j], rho);
+      // This body alone: joint i moves it by |dq| times its own distance from the axis.
+      const double perUnit = jointScale_[j] != 1.0 ? jointScale_[j] * rho : 1.0;
+      for (std::size_t m = 0; m < motors; ++m) bodyWeights_[b * columns + m] += dqde_[j][m] * perUnit;
+    }
   }
-  gripperMotor_ = motors;
-  hasGripper_ = r.hasGripper;
-  motorWeights_.assign(motors + (r.hasGripper ? 1 : 0), 0.0);
+  if (r.hasGripper)
+    for (std::size_t b = 0; b < robotBodies_.size(); ++b) bodyWeights_[b * columns + motors] = fingerWeights[b];
+  motorWeights_.assign(columns, 0.0);
   motorWeightsCarrying(0.0, motorWeights_);
+}
+
+std::span<const double> CollisionModel::bodyWeights(std::size_t body) const {
+  const std::size_t columns = motorWeights_.size();
+  return std::span<const double>(bodyWeights_).subspan(body * columns, columns);
+}
+
+std::span<const double> CollisionModel::jointRates(std::size_t j) const {
+  const std::size_t motors = static_cast<std::size_t>(gripperMotor_);
+  return std::span<const double>(jointRates_).subspan(j * motors, motors);
+}
+
+std::span<const double> CollisionModel::bodyRadii(std::size_t body) const {
+  const std::size_t joints = revolute_.size();
+  return std::span<const double>(bodyRadii_).subspan(body * joints, joints);
+}
+
+void CollisionModel::carriedRadii(double reach, std::span<double> out) const {
+  for (std::size_t j = 0; j < toReach_.size() && j < out.size(); ++j) out[j] = toReach_[j] + reach;
+}
+
+void CollisionModel::carriedWeights(double reach, std::span<double> out) const {
+  std::fill(out.begin(), out.end(), 0.0);
+  for (std::size_t j = 0; j < dqde_.size(); ++j) {
+    const double perUnit = jointScale_[j] != 1.0 ? jointScale_[j] * (toReach_[j] + reach) : 1.0;
+    for (std::size_t m = 0; m < dqde_[j].size() && m < out.size(); ++m) out[m] += dqde_[j][m] * perUnit;
+  }
 }
 
 void CollisionModel::motorWeightsCarrying(double reach, std::span<double> out) const {
@@ -213,6 +259,8 @@ CollisionData::CollisionData(const CollisionModel& model) : model_(model) {
   objectBoxPose_.assign(model.objectBodies_.size(), Eigen::Isometry3d::Identity());
   objectBoxOk_.assign(model.objectBodies_.size(), 0);
   heldBoxes_.assign(most, Eigen::AlignedBox3d());
+  robotHull_.assign(model.robotBodies_.size(), Eigen::AlignedBox3d());
+  objectHull_.assign(model.objectBodies_.size(), Eigen::AlignedBox3d());
   if (model.robot_ < model.cell_->robots.size() && !model.chain_) {  // a bare base: where it was placed
     const PlacedRobot& placed = model.cell_->robots[model.robot_];
     for (Eigen::Isometry3d& p : robotPoses_) p = placed.F_world_design;
@@ -240,17 +288,19 @@ void CollisionData::pose(std::span<const std::int32_t> encoders) {
   }
 }
 
-namespace {
-
-// The world boxes around each piece of a body at pose T: what the exact
-// test is asked about only when two of them meet.
-void boundsOf(const CollisionBody& body, const Eigen::Isometry3d& T, Eigen::AlignedBox3d* out) {
+void pieceBoxes(const CollisionBody& body, const Eigen::Isometry3d& T, Eigen::AlignedBox3d* out) {
   for (std::size_t i = 0; i < body.pieces.size(); ++i) {
     Eigen::AlignedBox3d box;
     for (const Vector3d& p : body.pieces[i].points) box.extend(T * p);
     out[i] = box;
   }
 }
+
+bool isGripperPart(const CollisionBody& b) {
+  return b.ref.kind == BodyKind::GripperBase || b.ref.kind == BodyKind::Finger2 || b.ref.kind == BodyKind::Finger3;
+}
+
+namespace {
 
 bool bodiesOverlap(const CollisionBody& a, const Eigen::Isometry3d& Ta, const Eigen::AlignedBox3d* boxesA,
                    const CollisionBody& b, const Eigen::Isometry3d& Tb, const Eigen::AlignedBox3d* boxesB) {
@@ -269,11 +319,20 @@ bool belowFloor(const CollisionBody& body, const Eigen::AlignedBox3d* boxes, dou
   return false;
 }
 
-bool isGripperPart(const CollisionBody& b) {
-  return b.ref.kind == BodyKind::GripperBase || b.ref.kind == BodyKind::Finger2 || b.ref.kind == BodyKind::Finger3;
-}
-
 }  // namespace
+
+// Objects rarely move: their boxes (and the union of them) are kept until
+// their pose changes.
+const Eigen::AlignedBox3d* CollisionData::objectBoxes(std::size_t o, const Eigen::Isometry3d& pose) {
+  if (!objectBoxOk_[o] || objectBoxPose_[o].matrix() != pose.matrix()) {
+    pieceBoxes(model_.objectBodies_[o], pose, objectBoxes_[o].data());
+    objectHull_[o].setEmpty();
+    for (const Eigen::AlignedBox3d& box : objectBoxes_[o]) objectHull_[o].extend(box);
+    objectBoxPose_[o] = pose;
+    objectBoxOk_[o] = 1;
+  }
+  return objectBoxes_[o].data();
+}
 
 // `on(contact)` returns true to stop. With `statics`, link 0 (frame 0) is
 // checked against the floor and the objects too (the home check).
@@ -283,20 +342,12 @@ void CollisionData::scan(std::span<const std::int32_t> encoders, const Collision
   const auto& robot = model_.robotBodies_;
   const auto& objects = model_.objectBodies_;
   for (std::size_t b = 0; b < robot.size(); ++b)
-    boundsOf(robot[b], robotPoses_[b], robotBoxes_[b].data());
+    pieceBoxes(robot[b], robotPoses_[b], robotBoxes_[b].data());
   const std::optional<double> floor = model_.cell_->floor;
   const bool statics = on.statics;
   const int last = static_cast<int>(F_world_i_.size()) - 1;
   const auto objectPose = [&](std::size_t o) -> const Eigen::Isometry3d& { return query.objectPoses[o]; };
-  // Objects rarely move: their boxes are kept until their pose changes.
-  const auto objectBoxes = [&](std::size_t o) -> const Eigen::AlignedBox3d* {
-    if (!objectBoxOk_[o] || objectBoxPose_[o].matrix() != query.objectPoses[o].matrix()) {
-      boundsOf(objects[o], query.objectPoses[o], objectBoxes_[o].data());
-      objectBoxPose_[o] = query.objectPoses[o];
-      objectBoxOk_[o] = 1;
-    }
-    return objectBoxes_[o].data();
-  };
+  const auto objectBoxes = [&](std::size_t o) { return this->objectBoxes(o, query.objectPoses[o]); };
   for (std::size_t b = 0; b < robot.size(); ++b) {
     const CollisionBody& body = robot[b];
     if (body.pieces.empty() || (body.frame == 0 && !statics)) {
@@ -320,7 +371,7 @@ void CollisionData::scan(std::span<const std::int32_t> encoders, const Collision
   if (!query.held || *query.held >= objects.size()) return;
   const CollisionBody& held = objects[*query.held];
   const Eigen::Isometry3d T = F_world_i_.back() * query.heldOffset;
-  boundsOf(held, T, heldBoxes_.data());
+  pieceBoxes(held, T, heldBoxes_.data());
   if (floor && belowFloor(held, heldBoxes_.data(), *floor))
     if (on({held.ref, {BodyKind::Floor, 0}})) return;
   for (std::size_t o = 0; o < objects.size(); ++o) {

@@ -24,6 +24,8 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -95,6 +97,36 @@ class CollisionModel {
   /// The same when carrying an object whose points lie within `reach` of
   /// the tool centre point.
   void motorWeightsCarrying(double reach, std::span<double> out) const;
+  /// The same for robot part `body` alone (an index into robotBodies()):
+  /// a link near the base moves less per count than the gripper, and a
+  /// part moves not at all for a motor that drives no joint below it. A
+  /// finger's gripper-motor weight is its own turn about its axis.
+  std::span<const double> bodyWeights(std::size_t body) const;
+  /// The same for the carried object alone, its points within `reach` of
+  /// the tool centre point (it moves with the end-effector frame, not
+  /// with the gripper motor).
+  void carriedWeights(double reach, std::span<double> out) const;
+  /// The same, joint by joint, for bounds that look at directions (the
+  /// swept check): the arm's joints (joint j + 1 at index j) and, per count
+  /// of each arm motor, how far each turns (radians, for a revolute joint)
+  /// or slides (length units): |dq_j/de_m|.
+  std::size_t jointCount() const { return revolute_.size(); }
+  bool revolute(std::size_t j) const { return revolute_[j] != 0; }
+  std::span<const double> jointRates(std::size_t j) const;
+  /// Robot part `body`: per joint, a bound on the distance from the
+  /// joint's axis to the part's points over every pose (0 for a joint above
+  /// the part's frame: it does not move the part).
+  std::span<const double> bodyRadii(std::size_t body) const;
+  /// The same for the carried object, its points within `reach` of the
+  /// tool centre point.
+  void carriedRadii(double reach, std::span<double> out) const;
+  /// Part `body`'s weight for the gripper motor (a finger's turn about its
+  /// axis; 0 for any other part), and that motor's index (one past the
+  /// arm's motors) when the robot has a gripper.
+  double fingerWeight(std::size_t body) const { return fingerWeights_.empty() ? 0.0 : fingerWeights_[body]; }
+  std::optional<std::size_t> gripperMotor() const {
+    return hasGripper_ ? std::optional<std::size_t>(gripperMotor_) : std::nullopt;
+  }
   /// The largest distance a point moves for one count of one motor (the
   /// resolution below which the sweep cannot go).
   double countStep() const;
@@ -108,6 +140,11 @@ class CollisionModel {
   std::vector<Eigen::Isometry3d> M_;  // per frame: F_world_i(home)⁻¹ · F_world_design
   std::vector<CollisionBody> robotBodies_, objectBodies_;
   std::vector<double> motorWeights_;
+  std::vector<double> bodyWeights_;  // robot bodies × motorWeights_.size()
+  std::vector<char> revolute_;        // per joint
+  std::vector<double> jointRates_;    // joints × arm motors
+  std::vector<double> bodyRadii_;     // robot bodies × joints
+  std::vector<double> fingerWeights_; // per robot body
   // Per joint i (index i-1): |dq_i/de_m| per motor, whether revolute (in
   // radians per degree), the bound on |o_{i-1} − o_n| over all poses.
   std::vector<std::vector<double>> dqde_;
@@ -117,6 +154,13 @@ class CollisionModel {
   double fingerWeight_ = 0;
 };
 
+/// The world box round each piece of `body` at pose `T` (into `out`, one
+/// per piece): the exact test is asked about two pieces only when their
+/// boxes meet.
+void pieceBoxes(const CollisionBody& body, const Eigen::Isometry3d& T, Eigen::AlignedBox3d* out);
+/// The gripper's base or a finger.
+bool isGripperPart(const CollisionBody& body);
+
 /// What else the check needs to know besides the robot's motors.
 struct CollisionQuery {
   std::span<const Eigen::Isometry3d> objectPoses;  ///< F_world_design of each object at rest
@@ -125,6 +169,56 @@ struct CollisionQuery {
   /// The objects the gripper's parts may overlap: those the tool centre
   /// point is in at the start and at the end of the move.
   std::optional<std::size_t> exempt, exemptToo;
+};
+
+/// A gap between a moving part and what it is checked against, which
+/// stands still or moves with arm frame `from` (the floor and the objects:
+/// 0; another part of the robot: its frame): no point of the part is
+/// nearer than `distance` to it along `normal`, a unit vector (either way).
+/// To touch it, some point of the part must move at least that far along
+/// that direction relative to frame `from`, which only the joints above
+/// `from` can do.
+struct Gap {
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();
+  double distance = 0;
+  std::size_t from = 0;
+};
+
+/// What the swept check learns of one moving part at a pose: its nearest
+/// gaps, each with its direction, and a bound on its distance to all else
+/// it is checked against, in any direction and relative to the world (the
+/// gaps that did not fit).
+struct PartClearance {
+  static constexpr std::size_t kGaps = 16;
+  std::array<Gap, kGaps> gaps;
+  std::size_t count = 0;
+  double elsewhere = 0;  ///< set by reset() to +infinity
+
+  void reset();
+  /// Keeps the kGaps smallest gaps; a larger one goes to `elsewhere`.
+  void add(const Gap& gap);
+  /// The distance to the nearest of all, in any direction.
+  double least() const;
+};
+
+class CollisionData;
+
+/// What findContactOrClearance asks of the motion still to come, to leave
+/// out the gaps a part cannot close before the move ends. Parts are
+/// numbered as PartClearance's: robot parts, then the carried object.
+class SweepMotion {
+ public:
+  /// The arm is posed for the check (`data`'s frame() and partBox() are
+  /// this pose's): before anything else is asked.
+  virtual void posed(const CollisionData& data) = 0;
+  /// How far a point of `part` can still move, in any direction.
+  virtual double anyWay(std::size_t part) = 0;
+  /// How far along `normal` (a unit vector, either way), relative to arm
+  /// frame `from`.
+  virtual double along(std::size_t part, const Eigen::Vector3d& normal, std::size_t from) = 0;
+
+ protected:
+  ~SweepMotion() = default;
 };
 
 /// The workspace: poses of every part for one check.
@@ -137,6 +231,27 @@ class CollisionData {
   /// against the floor, the objects, the other links; then the carried
   /// object. No allocation.
   std::optional<Contact> findContact(std::span<const std::int32_t> encoders, const CollisionQuery& query);
+  /// What the swept check asks at one pose (conservative advancement):
+  /// the first overlap, exactly as findContact finds it; when there is
+  /// none, for each robot part (index into robotBodies()) and, last, the
+  /// carried object, its gaps to the floor, the objects and the parts of
+  /// the robot below it that it could close before the move ends
+  /// (`motion` says how far it can still go: a gap it cannot close is left
+  /// out): while every part keeps within its gaps, no pair that is checked
+  /// can meet. A gap is a whole body's while their boxes are apart, else a
+  /// piece's, refined by GJK. `clearance` has robotBodies().size() + 1
+  /// entries. No allocation.
+  std::optional<Contact> findContactOrClearance(std::span<const std::int32_t> encoders, const CollisionQuery& query,
+                                                SweepMotion& motion, std::span<PartClearance> clearance);
+  /// Frame i (0..n) of the arm in the world at the last pose checked:
+  /// joint i + 1 turns about (or slides along) its z axis.
+  const Eigen::Isometry3d& frame(std::size_t i) const { return F_world_i_[i]; }
+  /// The world box round robot part `part` (robotBodies() order; one past
+  /// them: the carried object) at the last findContactOrClearance without
+  /// a contact.
+  const Eigen::AlignedBox3d& partBox(std::size_t part) const {
+    return part < robotHull_.size() ? robotHull_[part] : heldHull_;
+  }
   /// Every overlap at that pose, in the same order (for pictures and
   /// checkAtHome; allocates). `withStatic`: link 0 against the floor and
   /// the objects too.
@@ -151,6 +266,8 @@ class CollisionData {
   template <typename OnContact>
   void scan(std::span<const std::int32_t> encoders, const CollisionQuery& query, OnContact&& on);
   void pose(std::span<const std::int32_t> encoders);
+  // Object o's piece boxes at `pose`, kept until its pose changes.
+  const Eigen::AlignedBox3d* objectBoxes(std::size_t o, const Eigen::Isometry3d& pose);
 
   const CollisionModel& model_;
   std::optional<kinematics::ChainData> chainData_;
@@ -164,6 +281,9 @@ class CollisionData {
   std::vector<Eigen::Isometry3d> objectBoxPose_;
   std::vector<char> objectBoxOk_;
   std::vector<Eigen::AlignedBox3d> heldBoxes_;
+  // The union of each body's piece boxes (the broad phase of the clearance).
+  std::vector<Eigen::AlignedBox3d> robotHull_, objectHull_;
+  Eigen::AlignedBox3d heldHull_;
 };
 
 /// Every overlap of the cell's first robot at its home pose, objects where

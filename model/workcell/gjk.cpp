@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace rs::workcell {
 
@@ -11,6 +12,8 @@ namespace {
 using Eigen::Vector3d;
 
 constexpr int kMaxIterations = 64;
+// A clearance within this share of the distance is good enough.
+constexpr double kCloseEnough = 0.98;
 
 // The point of the hull farthest along world direction d.
 Vector3d support(const PlacedHull& h, const Vector3d& d) {
@@ -141,37 +144,68 @@ struct Simplex {
   }
 };
 
-// Runs GJK; returns the distance (0 for an overlap). With `stopIfApart`,
-// returns a positive value as soon as a separating plane is found.
-double gjk(const PlacedHull& a, const PlacedHull& b, bool stopIfApart) {
+// What a run of GJK answers: whether the hulls overlap (it stops at the
+// first separating plane), their distance, or a lower bound on it that is
+// refined only up to a bound the caller needs.
+enum class Ask : std::uint8_t { Overlap, Distance, Clearance };
+
+// The least positive double: "apart, but no useful bound".
+constexpr double kApart = 4.9406564584124654e-324;
+
+// Runs GJK; returns the distance (0 for an overlap). Asked for an overlap,
+// returns a positive value as soon as a separating plane is found. Asked
+// for a clearance, goes the same way until that plane (so it decides an
+// overlap exactly as the overlap question does), then keeps the best lower
+// bound v·w/|v| it has seen and stops once it reaches `enough`.
+double gjk(const PlacedHull& a, const PlacedHull& b, Ask ask, double enough = 0, Vector3d* normal = nullptr) {
   Vector3d v = support(a, Vector3d::UnitX()) - support(b, -Vector3d::UnitX());
   // How close to zero counts as touching: relative to the shapes' size.
   const double scale = std::max(1.0, v.norm());
   const double touching2 = 1e-18 * scale * scale;
+  bool separated = false;  // a separating plane has been seen (Clearance)
+  double lower = kApart;   // the best lower bound so far, once separated
+  const auto apart = [&](double distance) { return ask == Ask::Clearance ? lower : distance; };
   Simplex s;
   s.p[0] = v, s.n = 1;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
     const double v2 = v.squaredNorm();
-    if (v2 <= touching2) return 0.0;
+    if (v2 <= touching2) return separated ? lower : 0.0;
     const Vector3d w = support(a, -v) - support(b, v);
     const double vw = v.dot(w);
-    if (stopIfApart && vw > 0) return std::sqrt(v2);  // a plane with normal v separates them
-    if (v2 - vw <= 1e-12 * v2) return std::sqrt(v2);   // no nearer point: converged
+    if (vw > 0) {
+      if (ask == Ask::Overlap) return std::sqrt(v2);  // a plane with normal v separates them
+      if (ask == Ask::Clearance) {
+        separated = true;
+        if (const double bound = vw / std::sqrt(v2); bound > lower) {
+          lower = bound;
+          if (normal) *normal = v / std::sqrt(v2);
+        }
+        // Enough asked for, or within 2% of the distance (|v| bounds it
+        // from above): more iterations would hardly change what it allows.
+        if (lower >= enough || vw >= kCloseEnough * v2) return lower;
+      }
+    }
+    if (v2 - vw <= 1e-12 * v2) return apart(std::sqrt(v2));  // no nearer point: converged
     bool duplicate = false;
     for (int i = 0; i < s.n; ++i) duplicate |= s.p[static_cast<std::size_t>(i)] == w;
-    if (duplicate) return std::sqrt(v2);
+    if (duplicate) return apart(std::sqrt(v2));
     s.p[static_cast<std::size_t>(s.n++)] = w;
     bool inside = false;
     v = s.closest(inside);
-    if (inside) return 0.0;
+    if (inside) return separated ? lower : 0.0;
   }
+  if (ask == Ask::Clearance) return separated || v.norm() != 0.0 ? lower : 0.0;
   return v.norm();
 }
 
 }  // namespace
 
-bool hullsOverlap(const PlacedHull& a, const PlacedHull& b) { return gjk(a, b, true) == 0.0; }
+bool hullsOverlap(const PlacedHull& a, const PlacedHull& b) { return gjk(a, b, Ask::Overlap) == 0.0; }
 
-double hullDistance(const PlacedHull& a, const PlacedHull& b) { return gjk(a, b, false); }
+double hullDistance(const PlacedHull& a, const PlacedHull& b) { return gjk(a, b, Ask::Distance); }
+
+double hullClearance(const PlacedHull& a, const PlacedHull& b, double enough, Eigen::Vector3d* normal) {
+  return gjk(a, b, Ask::Clearance, enough, normal);
+}
 
 }  // namespace rs::workcell

@@ -27,4 +27,13 @@ bool hullsOverlap(const PlacedHull& a, const PlacedHull& b);
 /// iteration; for tests and for messages.
 double hullDistance(const PlacedHull& a, const PlacedHull& b);
 
+/// For the swept check: 0 exactly when hullsOverlap says they overlap
+/// (the same iteration, up to the first separating plane); otherwise a
+/// positive lower bound L on their distance, refined until it reaches
+/// `enough` or 98% of the distance. With `normal`, the unit
+/// direction n of the plane that gives L: (p − q)·n ≥ L for every point p
+/// of `a` and q of `b`. A pair that is apart with no useful bound yet
+/// (numerically touching) gets the least positive double and no normal.
+double hullClearance(const PlacedHull& a, const PlacedHull& b, double enough, Eigen::Vector3d* normal = nullptr);
+
 }  // namespace rs::workcell

@@ -257,7 +257,7 @@ RunSnapshot Run::snapshot() const {
   if (sim_) s.machine = sim_->state();
   if (world_) s.world = world_->state();
   if (logger_) s.log = logger_->log().mark();
-  if (watch_) s.collisions = watch_->events().size();
+  if (watch_) s.collisions.assign(watch_->events().begin(), watch_->events().end());
   return s;
 }
 
@@ -270,7 +270,7 @@ void Run::restore(const RunSnapshot& s) {
   emptyClosesSeen_ = world_ ? world_->emptyCloseCount() : 0;
   lastStepClosedEmpty_ = false;
   if (emptyClosesSeen_ == 0) firstEmptyClose_.reset();
-  if (watch_ && s.collisions <= watch_->events().size()) watch_->mutableEvents().resize(s.collisions);
+  if (watch_) watch_->mutableEvents() = s.collisions;
   if (logger_ && s.log && sim_) logger_->restore(*s.log, *sim_);
   cause_ = PauseCause::None;
 }

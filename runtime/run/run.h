@@ -93,7 +93,10 @@ struct RunSnapshot {
   SimMachine::State machine;
   std::optional<World::State> world;
   std::optional<RunLog::Mark> log;
-  std::size_t collisions = 0;  ///< how many had been found
+  /// Every collision found so far (in error mode one at most): restoring
+  /// puts them back, whether the run is behind or ahead of the snapshot.
+  /// What else the swept check keeps is a cache (runtime/sweep_memo.h).
+  std::vector<CollisionEvent> collisions;
   bool operator==(const RunSnapshot&) const = default;
 };
 

@@ -111,3 +111,35 @@ TEST_CASE("GJK on a lone segment, a flat plate and boxes that touch", "[collisio
   T.translation() = Vector3d(0.999, 0.2, 0.3);
   CHECK(hullsOverlap({cube, &I}, {cube, &T}));
 }
+
+TEST_CASE("GJK's clearance: 0 exactly for an overlap, else a lower bound on the distance with its separating plane",
+          "[collision][gjk]") {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> size(0.1, 1.5), enoughOf(0.0, 3.0);
+  int apart = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Box a{{size(rng), size(rng), size(rng)}, randomPose(rng, 3)};
+    const Box b{{size(rng), size(rng), size(rng)}, randomPose(rng, 3)};
+    const std::vector<Vector3d> ca = a.corners(), cb = b.corners();
+    const rs::workcell::PlacedHull ha{ca, &a.pose}, hb{cb, &b.pose};
+    const double enough = enoughOf(rng);
+    Vector3d normal = Vector3d::Zero();
+    const double clearance = rs::workcell::hullClearance(ha, hb, enough, &normal);
+    INFO("pair " << i);
+    CHECK((clearance == 0.0) == hullsOverlap(ha, hb));
+    if (clearance == 0.0) continue;
+    ++apart;
+    const double distance = rs::workcell::hullDistance(ha, hb);
+    CHECK(clearance <= distance * (1 + 1e-9));
+    // Refined until it is enough or within 2% of the distance.
+    CHECK((clearance >= enough || clearance >= 0.98 * distance * (1 - 1e-9)));
+    if (normal.isZero()) continue;  // numerically touching: no plane
+    CHECK(normal.norm() == Approx(1.0));
+    // The plane: every corner of a at least `clearance` beyond every corner of b.
+    double least = 1e300;
+    for (const Vector3d& p : ca)
+      for (const Vector3d& q : cb) least = std::min(least, (a.pose * p - b.pose * q).dot(normal));
+    CHECK(least >= clearance - 1e-9);
+  }
+  CHECK(apart > 500);
+}

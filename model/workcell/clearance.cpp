@@ -1,0 +1,195 @@
+// The clearance of one pose, for the swept check's conservative
+// advancement (runtime/collision_watch.h): the same pairs in the same order
+// as CollisionData::scan, the same overlap decision for each (the first
+// overlap is findContact's), and for each moving part the gaps it could
+// close before its move ends, each a distance along a direction. A gap
+// comes from the world boxes first (two boxes apart are separated along
+// the vector between their nearest points, and so is everything inside
+// them): a whole body's while the union of its boxes is apart from the
+// other's, else each piece's; a piece's gap that the part could close is
+// refined by GJK, whose separating plane gives a distance and a direction
+// of its own.
+#include <algorithm>
+#include <limits>
+
+#include "model/workcell/collision_model.h"
+#include "model/workcell/gjk.h"
+
+namespace rs::workcell {
+
+namespace {
+
+constexpr double kFar = std::numeric_limits<double>::infinity();
+
+// One side of a pair: a body at a pose, its piece boxes and their union.
+struct Side {
+  const CollisionBody* body;
+  const Eigen::Isometry3d* pose;
+  const Eigen::AlignedBox3d* boxes;
+  const Eigen::AlignedBox3d* all;
+};
+
+// The gap between two boxes: its length, and the unit vector along it
+// (the boxes' nearest points differ by it); 0 when they meet.
+double boxGap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, Eigen::Vector3d& along) {
+  const Eigen::Vector3d gap = (b.min() - a.max()).cwiseMax(0.0) - (a.min() - b.max()).cwiseMax(0.0);
+  const double length2 = gap.squaredNorm();
+  if (length2 == 0) return 0.0;
+  const double length = std::sqrt(length2);
+  along = gap / length;
+  return length;
+}
+
+// Where a pair's gaps go: the moving part's list, relative to the frame
+// the other side moves with; a gap the part cannot close is left out.
+struct Sink {
+  SweepMotion& motion;
+  PartClearance& gaps;
+  std::size_t part, from;
+  double anyWay;  // how far the part can still go in any direction
+  bool closable(const Eigen::Vector3d& normal, double distance) const {
+    return distance < anyWay && distance <= motion.along(part, normal, from);
+  }
+  void add(const Eigen::Vector3d& normal, double distance) const {
+    if (closable(normal, distance)) gaps.add({normal, distance, from});
+  }
+};
+
+// false when the bodies overlap (some pair of pieces whose boxes meet and
+// whose hulls overlap: bodiesOverlap's decision); otherwise the gaps the
+// mover `a` could close go to `sink`.
+bool pairGaps(const Side& a, const Side& b, const Sink& sink) {
+  Eigen::Vector3d along = Eigen::Vector3d::UnitY();
+  if (const double far = boxGap(*a.all, *b.all, along); far > 0 && !sink.closable(along, far))
+    return true;  // no two boxes meet: no overlap, and nothing to close
+  for (std::size_t i = 0; i < a.body->pieces.size(); ++i)
+    for (std::size_t k = 0; k < b.body->pieces.size(); ++k) {
+      const double boxes = boxGap(a.boxes[i], b.boxes[k], along);
+      if (boxes > 0 && !sink.closable(along, boxes)) continue;
+      // Boxes that meet need the exact test (an overlap); boxes apart that
+      // the part could close get GJK's distance and direction.
+      Eigen::Vector3d normal = along;
+      const double exact = hullClearance({a.body->pieces[i].points, a.pose}, {b.body->pieces[k].points, b.pose},
+                                         sink.anyWay, &normal);
+      if (exact == 0.0 && boxes == 0.0) return false;  // boxes apart never overlap, as in findContact
+      if (exact > boxes) sink.add(normal, exact);
+      else sink.add(along, boxes);
+    }
+  return true;
+}
+
+// The lowest point of the body's pieces above the floor (negative: below).
+double aboveFloor(const CollisionBody& body, const Eigen::AlignedBox3d* boxes, double floor) {
+  double least = kFar;
+  for (std::size_t i = 0; i < body.pieces.size(); ++i)
+    if (!boxes[i].isEmpty()) least = std::min(least, boxes[i].min().y() - floor);
+  return least;
+}
+
+}  // namespace
+
+void PartClearance::reset() {
+  count = 0;
+  elsewhere = kFar;
+}
+
+void PartClearance::add(const Gap& gap) {
+  if (count < kGaps) {
+    gaps[count++] = gap;
+    return;
+  }
+  std::size_t widest = 0;
+  for (std::size_t i = 1; i < kGaps; ++i)
+    if (gaps[i].distance > gaps[widest].distance) widest = i;
+  if (gap.distance < gaps[widest].distance) {
+    elsewhere = std::min(elsewhere, gaps[widest].distance);
+    gaps[widest] = gap;
+  } else {
+    elsewhere = std::min(elsewhere, gap.distance);
+  }
+}
+
+double PartClearance::least() const {
+  double d = elsewhere;
+  for (std::size_t i = 0; i < count; ++i) d = std::min(d, gaps[i].distance);
+  return d;
+}
+
+std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std::int32_t> encoders,
+                                                             const CollisionQuery& query, SweepMotion& motion,
+                                                             std::span<PartClearance> clearance) {
+  pose(encoders);
+  const auto& robot = model_.robotBodies_;
+  const auto& objects = model_.objectBodies_;
+  const std::size_t heldIndex = robot.size();
+  for (PartClearance& c : clearance) c.reset();
+  for (std::size_t b = 0; b < robot.size(); ++b) {
+    pieceBoxes(robot[b], robotPoses_[b], robotBoxes_[b].data());
+    robotHull_[b].setEmpty();
+    for (const Eigen::AlignedBox3d& box : robotBoxes_[b]) robotHull_[b].extend(box);
+  }
+  const bool holds = query.held && *query.held < objects.size();
+  const Eigen::Isometry3d heldPose = F_world_i_.back() * query.heldOffset;
+  heldHull_.setEmpty();
+  if (holds) {
+    pieceBoxes(objects[*query.held], heldPose, heldBoxes_.data());
+    for (std::size_t i = 0; i < objects[*query.held].pieces.size(); ++i) heldHull_.extend(heldBoxes_[i]);
+  }
+  motion.posed(*this);
+
+  const std::optional<double> floor = model_.cell_->floor;
+  const int last = static_cast<int>(F_world_i_.size()) - 1;
+  const auto robotSide = [&](std::size_t b) { return Side{&robot[b], &robotPoses_[b], robotBoxes_[b].data(), &robotHull_[b]}; };
+  const auto objectSide = [&](std::size_t o) {
+    const Eigen::AlignedBox3d* boxes = objectBoxes(o, query.objectPoses[o]);
+    return Side{&objects[o], &query.objectPoses[o], boxes, &objectHull_[o]};
+  };
+  // The gaps of a mover (a part, its side, how far it can go) to what
+  // stands still (from 0) or moves with the arm's frame `from`.
+  struct Mover {
+    std::size_t part;
+    Side side;
+    double anyWay;
+  };
+  const auto against = [&](const Mover& m, const Side& other, std::size_t from) {
+    return !pairGaps(m.side, other, Sink{motion, clearance[m.part], m.part, from, m.anyWay});
+  };
+  const auto underFloor = [&](const Mover& m, const Eigen::AlignedBox3d* boxes) {
+    if (!floor) return false;
+    const double d = aboveFloor(*m.side.body, boxes, *floor);
+    if (d < 0) return true;
+    Sink{motion, clearance[m.part], m.part, 0, m.anyWay}.add(Eigen::Vector3d::UnitY(), d);
+    return false;
+  };
+  for (std::size_t b = 0; b < robot.size(); ++b) {
+    const CollisionBody& body = robot[b];
+    if (body.pieces.empty()) continue;
+    const Mover self{b, robotSide(b), motion.anyWay(b)};
+    if (body.frame != 0) {
+      if (underFloor(self, robotBoxes_[b].data())) return Contact{body.ref, {BodyKind::Floor, 0}};
+      for (std::size_t o = 0; o < objects.size(); ++o) {
+        if (query.held == o || (isGripperPart(body) && (query.exempt == o || query.exemptToo == o))) continue;
+        if (against(self, objectSide(o), 0)) return Contact{body.ref, objects[o].ref};
+      }
+    }
+    for (std::size_t c = 0; c < robot.size(); ++c) {
+      if (robot[c].frame > body.frame - 2 || robot[c].pieces.empty()) continue;
+      if (against(self, robotSide(c), static_cast<std::size_t>(robot[c].frame))) return Contact{body.ref, robot[c].ref};
+    }
+  }
+  if (!holds) return std::nullopt;
+  const CollisionBody& held = objects[*query.held];
+  const Mover self{heldIndex, Side{&held, &heldPose, heldBoxes_.data(), &heldHull_}, motion.anyWay(heldIndex)};
+  if (underFloor(self, heldBoxes_.data())) return Contact{held.ref, {BodyKind::Floor, 0}};
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    if (o == *query.held) continue;
+    if (against(self, objectSide(o), 0)) return Contact{held.ref, objects[o].ref};
+  }
+  for (std::size_t c = 0; c < robot.size(); ++c) {
+    if (robot[c].frame > last - 2 || robot[c].pieces.empty()) continue;
+    if (against(self, robotSide(c), static_cast<std::size_t>(robot[c].frame))) return Contact{held.ref, robot[c].ref};
+  }
+  return std::nullopt;
+}
+
+}  // namespace rs::workcell

@@ -1,0 +1,59 @@
+// What the swept check remembers (docs/models.md, "Collisions"): the
+// verdict of each move it has swept, under an exact encoding of everything
+// the verdict depends on, so that a loop that makes the same moves in the
+// same world pays for each of them once. A move's verdict is a function of
+// its start and end encoders (the motors' profiles and speeds are the
+// image's, fixed for a run; every motor starts with the move), what the
+// gripper carries and how (its F_E_object), and where every object rests;
+// its times counted from the move's start are the same whenever it is
+// made. So the memory is a pure cache: what it holds never changes a
+// result, only how much a result costs; a restored run (a reverse step)
+// finds there the moves it makes again. Bounded: when full it forgets
+// everything at once (deterministic, and cheap to reason about).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "model/workcell/collision_model.h"
+#include "vm/machine.h"
+
+namespace rs::runtime {
+
+/// A move's verdict, its time counted from the move's start.
+struct SweepVerdict {
+  bool collides = false;
+  vm::Micros after = 0;  ///< from the start to the first check that saw the overlap
+  workcell::Contact contact;
+  std::vector<std::int32_t> encoders;  ///< every motor at that check
+};
+
+class SweepMemo {
+ public:
+  /// Moves remembered at most, and sets of resting places.
+  static constexpr std::size_t kMoves = 16384, kPlaces = 1024;
+
+  /// A number for a set of resting poses: the same poses, bit for bit, get
+  /// the same number while they are remembered; a number is never given to
+  /// other poses.
+  std::uint64_t placesId(std::span<const Eigen::Isometry3d> poses);
+
+  /// The verdict remembered under `key`, or null.
+  const SweepVerdict* find(const std::vector<std::uint64_t>& key) const;
+  void remember(const std::vector<std::uint64_t>& key, SweepVerdict verdict);
+  std::size_t size() const { return verdicts_.size(); }
+
+ private:
+  struct KeyHash {
+    std::size_t operator()(const std::vector<std::uint64_t>& key) const;
+  };
+  std::unordered_map<std::vector<std::uint64_t>, SweepVerdict, KeyHash> verdicts_;
+  std::unordered_map<std::string, std::uint64_t> places_;
+  std::uint64_t nextPlaces_ = 0;
+};
+
+}  // namespace rs::runtime
