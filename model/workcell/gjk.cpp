@@ -45,12 +45,14 @@ struct Simplex {
     const Vector3d ab = b - a;
     const double len2 = ab.squaredNorm();
     const double t = len2 > 0 ? std::clamp(-a.dot(ab) / len2, 0.0, 1.0) : 0.0;
+    // Worked out before `keep`, which moves the points `a` and `b` refer to.
+    const Vector3d closestPoint = a + t * ab;
     if (reduce) {
       if (t <= 0) keep({ia});
       else if (t >= 1) keep({ib});
       else keep({ia, ib});
     }
-    return a + t * ab;
+    return closestPoint;
   }
 
   // Ericson, "Real-Time Collision Detection" 5.1.5, for the origin, with a
@@ -64,10 +66,10 @@ struct Simplex {
       return closestOnDegenerateTriangle(ia, ib, ic, reduce);
     const Vector3d ap = -a;
     const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-    if (d1 <= 0 && d2 <= 0) return reduce ? keep({ia}), a : a;
+    if (d1 <= 0 && d2 <= 0) return reduce ? (keep({ia}), p[0]) : a;
     const Vector3d bp = -b;
     const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-    if (d3 >= 0 && d4 <= d3) return reduce ? keep({ib}), b : b;
+    if (d3 >= 0 && d4 <= d3) return reduce ? (keep({ib}), p[0]) : b;
     const double vc = d1 * d4 - d3 * d2;
     if (vc <= 0 && d1 >= 0 && d3 <= 0) {
       const Vector3d r = a + d1 / (d1 - d3) * ab;
@@ -76,7 +78,7 @@ struct Simplex {
     }
     const Vector3d cp = -c;
     const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-    if (d6 >= 0 && d5 <= d6) return reduce ? keep({ic}), c : c;
+    if (d6 >= 0 && d5 <= d6) return reduce ? (keep({ic}), p[0]) : c;
     const double vb = d5 * d2 - d1 * d6;
     if (vb <= 0 && d2 >= 0 && d6 <= 0) {
       const Vector3d r = a + d2 / (d2 - d6) * ac;
