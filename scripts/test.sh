@@ -14,7 +14,8 @@ echo "== unit tests and fuzz targets under AddressSanitizer + UndefinedBehaviorS
 # hooks (harmless to the unit tests), and each fuzz target runs a short,
 # fixed number of inputs as a CTest test (label fuzz; docs/reliability.md).
 # The language server's million-line document runs in Release only (50x
-# slower here, and the same code).
+# slower here, and the same code), and so do the tests labelled slow (the
+# collision differential test: tests/CMakeLists.txt).
 # Ninja as for build/ (scripts/build.sh says why); a build-asan/ already
 # configured keeps its generator.
 generator=()
@@ -23,4 +24,4 @@ CC=clang CXX=clang++ cmake -S . -B build-asan "${generator[@]}" -DCMAKE_BUILD_TY
   -DROBOTSIM_WERROR=ON >/dev/null
 cmake --build build-asan -j "$(nproc)" --target robotsim_tests robotsim_fuzzers
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest -j "$(nproc)" --output-on-failure -LE 'browser|vscode' -E '1,000,000-line')
+  ctest -j "$(nproc)" --output-on-failure -LE 'browser|vscode|slow' -E '1,000,000-line')
