@@ -68,6 +68,9 @@ RELEASE AT -130 800 0          GRIP 0
   // it), then the first block on the table 150 to the side and back; the
   // block is lifted off the table by the shoulder alone (a move of several
   // joints at their own speeds would dip it into the table on the way).
+  // Taken and put back at the same height (there is no gravity: a block
+  // put back 6 higher than it was taken rose 6 a loop, and the wrist went
+  // 6 deeper into it each time, until it hit it in the fourth loop).
   out.push_back({"puma-cell", "long loop", std::string(kLongLoop) + R"(P1 AT 450 400 -150 APPROACH 0 -1 0 NORMAL 0 0 1 GRIP 0
 P2 AT 430 420 -130 GRIP 0
 )", 333'335});
@@ -75,8 +78,8 @@ P2 AT 430 420 -130 GRIP 0
                  fmt::format(kPickAndPlace, "        MOVETO 0 0 900 0 0 0 0\n        MOVETO 0 -900 900 0 0 0 0\n        MOVEP UP\n",
                              "        MOVE 0 -20 0 0 0 0 0\n", "{}") + R"(UP      AT 400 1000 0 APPROACH 0 -1 0 NORMAL 0 0 1 GRIP 0
 ABOVE   AT 620 950 0       GRIP 0
-PICK    AT 620 775 0       GRIP 0
-TAKE    AT 620 775 0       GRIP 100
+PICK    AT 620 781 0       GRIP 0
+TAKE    AT 620 781 0       GRIP 100
 LIFT    AT 620 950 0       GRIP 100
 OVER    AT 620 950 150     GRIP 100
 PLACE   AT 620 781 150     GRIP 100
@@ -88,7 +91,8 @@ PICKC   AT 620 781 0       GRIP 100
 RELEASE AT 620 781 0       GRIP 0
 )", 20'000});
   // xr4-cell: the first block across the pallet and back, lifted off the
-  // pallet by the shoulder alone.
+  // pallet by the shoulder alone; taken and put back at the same height, as
+  // on puma-cell (a finger hit the block in the fifth loop).
   out.push_back({"xr4-cell", "long loop", std::string(kLongLoop) + R"(P1 AT 250 950 0 APPROACH 0 -1 0 GRIP 0
 P2 AT 270 960 20 GRIP 0
 )", 333'335});
@@ -102,8 +106,8 @@ DROP    AT 320 806 0       GRIP 0
 RETAKE  AT 320 806 0       GRIP 115
 OVERC   AT 320 900 0       GRIP 115
 LIFTC   AT 240 900 -40     GRIP 115
-PICKC   AT 240 806 -40     GRIP 115
-RELEASE AT 240 806 -40     GRIP 0
+PICKC   AT 240 801 -40     GRIP 115
+RELEASE AT 240 801 -40     GRIP 0
 )", 20'000});
   return out;
 }

@@ -21,7 +21,7 @@ std::size_t snapshotBytes(const runtime::RunSnapshot& s) {
   b += heapBytes(s.vm.variables) + heapBytes(s.vm.callStack) + heapBytes(s.vm.softHome) + s.vm.outcome.message.capacity();
   b += heapBytes(s.machine.positions) + heapBytes(s.machine.segments);
   b += s.machine.schedule.reactive.size() * (sizeof(runtime::InputSchedule::State::Pending) + kSetNodeOverhead);
-  if (s.world) b += heapBytes(s.world->grasp.resting);
+  if (s.world) b += heapBytes(s.world->grasp.resting) + heapBytes(s.world->grasp.letGo);
   if (s.log) b += heapBytes(s.log->moves);
   b += heapBytes(s.collisions);
   for (const runtime::CollisionEvent& e : s.collisions) b += heapBytes(e.encoders);

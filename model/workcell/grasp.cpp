@@ -15,6 +15,7 @@ Grasping::Grasping(const Workcell& cell, std::size_t robot) : cell_(&cell) {
     resting_.push_back(o.F_world_design);
     boxes_.push_back(boundsOf(o.shape));
   }
+  letGo_.assign(resting_.size(), std::nullopt);
   if (robot >= cell.robots.size()) return;
   const PlacedRobot& placed = cell.robots[robot];
   if (!placed.robot.hasGripper || !placed.robot.chain) return;
@@ -57,7 +58,9 @@ std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, 
     if (!held_) return std::nullopt;
     // Let go where the object is as the opening begins.
     const std::size_t o = *held_;
-    resting_[o] = tool_->frame(before) * offset_;
+    const Eigen::Isometry3d F_world_E = tool_->frame(before);
+    resting_[o] = F_world_E * offset_;
+    letGo_[o] = LetGo{F_world_E, offset_};
     held_.reset();
     return GraspChange{o, false};
   }
@@ -66,13 +69,16 @@ std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, 
   const std::optional<std::size_t> o = objectAt(F_world_E.translation());
   if (!o) return std::nullopt;
   held_ = o;
-  offset_ = F_world_E.inverse(Eigen::Isometry) * resting_[*o];
+  const std::optional<LetGo>& letGo = letGo_[*o];
+  offset_ = letGo && letGo->frame.matrix() == F_world_E.matrix() ? letGo->offset
+                                                                  : F_world_E.inverse(Eigen::Isometry) * resting_[*o];
   return GraspChange{*o, true};
 }
 
 void Grasping::reset() {
   held_.reset();
   for (std::size_t o = 0; o < resting_.size(); ++o) resting_[o] = cell_->objects[o].F_world_design;
+  letGo_.assign(resting_.size(), std::nullopt);
 }
 
 Eigen::Isometry3d Grasping::toolFrame(std::span<const std::int32_t> encoders) {

@@ -82,26 +82,44 @@ class Grasping {
   Eigen::Vector3d boxCentre(std::size_t o) const { return resting_[o] * boxes_[o].center(); }
   bool hasGripper() const { return tool_.has_value(); }
 
+  /// How an object was let go where it rests: the end-effector frame then
+  /// and its F_E_object. A take with the end-effector at that very frame
+  /// holds it by that offset again, the exact value of
+  /// frame⁻¹·(frame·offset), which rounding would otherwise drift by an ulp
+  /// or two a take: a loop that puts a block down and takes it again then
+  /// leaves the world bit for bit as it was, so the swept check's memory of
+  /// moves (runtime/sweep_memo.h) answers its moves again.
+  struct LetGo {
+    Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
+    Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
+    bool operator==(const LetGo& o) const {
+      return frame.matrix() == o.frame.matrix() && offset.matrix() == o.offset.matrix();
+    }
+  };
   /// What a grasp changes, for snapshots of a run.
   struct State {
     std::optional<std::size_t> held;
     Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
     std::vector<Eigen::Isometry3d> resting;
+    std::vector<std::optional<LetGo>> letGo;  ///< per object: how it was let go where it rests (none: placed there)
     bool operator==(const State& o) const {  // exact: a restored run must be bit for bit the same
-      if (held != o.held || offset.matrix() != o.offset.matrix() || resting.size() != o.resting.size()) return false;
+      if (held != o.held || offset.matrix() != o.offset.matrix() || resting.size() != o.resting.size() ||
+          letGo != o.letGo)
+        return false;
       for (std::size_t i = 0; i < resting.size(); ++i)
         if (resting[i].matrix() != o.resting[i].matrix()) return false;
       return true;
     }
   };
-  State state() const { return {held_, offset_, resting_}; }
-  void restore(const State& s) { held_ = s.held, offset_ = s.offset, resting_ = s.resting; }
+  State state() const { return {held_, offset_, resting_, letGo_}; }
+  void restore(const State& s) { held_ = s.held, offset_ = s.offset, resting_ = s.resting, letGo_ = s.letGo; }
 
  private:
   const Workcell* cell_;
   std::optional<ToolTracker> tool_;  // empty: the robot has no gripper
   std::size_t gripperMotor_ = 0;
   std::vector<Eigen::Isometry3d> resting_;
+  std::vector<std::optional<LetGo>> letGo_;  // per object, as State::letGo
   std::vector<Eigen::AlignedBox3d> boxes_;  // in each object's design coordinates
   std::optional<std::size_t> held_;
   Eigen::Isometry3d offset_ = Eigen::Isometry3d::Identity();

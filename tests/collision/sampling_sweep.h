@@ -25,10 +25,12 @@ struct SampledHit {
 
 /// The first check of the move (machine's latest segments, from `before`
 /// at `start` to `end`) that sees an overlap, with the world as it was
-/// during the move; `checks` counts the poses checked.
+/// during the move; `checks` counts the poses checked. `step` is the
+/// travel bound between checks (the product's was kSweepStep).
 std::optional<SampledHit> samplingSweep(const rs::workcell::CollisionModel& model, rs::workcell::CollisionData& data,
                                         const rs::runtime::SimMachine& machine, const rs::runtime::World& world,
                                         std::span<const std::int32_t> before, std::span<const std::int32_t> after,
-                                        rs::vm::Micros start, rs::vm::Micros end, std::uint64_t& checks);
+                                        rs::vm::Micros start, rs::vm::Micros end, std::uint64_t& checks,
+                                        double step = rs::workcell::kSweepStep);
 
 }  // namespace collisiontest
