@@ -5,21 +5,12 @@
 #include <cmath>
 
 #include "base/ascii.h"
+#include "launch/run_diagnostics.h"
 
 namespace rs::testrun {
 
-std::string_view statusWord(vm::StopReason reason) {
-  switch (reason) {
-    case vm::StopReason::End: return "finished";
-    case vm::StopReason::RuntimeError: return "runtime error";
-    case vm::StopReason::Deadlock: return "deadlock";
-    case vm::StopReason::StepLimit: return "step limit";
-    case vm::StopReason::TimeLimit: return "time limit";
-    case vm::StopReason::InstantLimit: return "clock standing still";
-    case vm::StopReason::Paused: return "paused";
-  }
-  return "finished";
-}
+// One table of a stop's names: the one check and run print.
+std::string_view statusWord(vm::StopReason reason) { return launch::stopReasonName(reason); }
 
 namespace {
 
