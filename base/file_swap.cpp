@@ -142,6 +142,37 @@ std::string restore(const std::string& tmp, const std::string& target, struct st
 
 SwapResult failed(std::string error) { return {SwapOutcome::kFailed, std::move(error)}; }
 
+// A write lease on our temporary (open for writing by us alone): from the
+// exchange until the write is settled, whoever opens our file at the name
+// (an editor reading the file to build its next save on) waits; the break
+// is signalled to no one, as in openLeased. false where leases are refused.
+bool leaseForWriting(int fd) {
+  ::fcntl(fd, F_SETSIG, SIGURG);
+  if (::fcntl(fd, F_SETLEASE, F_WRLCK) != 0) return false;
+  ::fcntl(fd, F_SETOWN, 0);
+  return true;
+}
+
+// After an undone exchange, before the lease on our file ends: a program
+// that opened our file while it was at the name gets, once the lease ends,
+// the bytes of the file at the name now (the newest file anyone saved),
+// not ours that never stood: an editor building its next save on what it
+// read then keeps its own last save. Best effort: nothing else depends on it.
+void takeBytesOfFileAt(int ours, const std::string& target) {
+  const Descriptor now(::open(target.c_str(), O_RDONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK));
+  struct stat st {};
+  if (now.get() < 0 || ::fstat(now.get(), &st) != 0 || !S_ISREG(st.st_mode)) return;
+  const std::optional<std::string> bytes = readUpTo(now.get(), static_cast<std::size_t>(st.st_size));
+  if (!bytes) return;
+  for (std::size_t done = 0; done < bytes->size();) {
+    const ssize_t n = ::pwrite(ours, bytes->data() + done, bytes->size() - done, static_cast<off_t>(done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;
+    done += static_cast<std::size_t>(n);
+  }
+  (void)::ftruncate(ours, static_cast<off_t>(bytes->size()));
+}
+
 }  // namespace
 
 FileRead readFileWhenQuiet(const std::string& path, std::size_t limit) {
@@ -188,6 +219,10 @@ SwapResult replaceFileIfUnchanged(const std::string& path, std::string_view expe
     ::unlink(tmp.c_str());
     return failed(error);
   }
+  const bool oursLeased = leaseForWriting(ours.get());
+  const auto endOursLease = [&] {
+    if (oursLeased) ::fcntl(ours.get(), F_SETLEASE, F_UNLCK);
+  };
 
   // A writer asking for the old file while it was leased, or a change of
   // it, makes the write give way (kBusy); another file at the name (an
@@ -226,11 +261,15 @@ SwapResult replaceFileIfUnchanged(const std::string& path, std::string_view expe
   struct stat cameOut {};
   const bool wasChecked = ::lstat(tmp.c_str(), &cameOut) == 0 && sameFile(cameOut, checked);
   if (wasChecked && stillQuiet()) {
+    endOursLease();
     ::unlink(tmp.c_str());
     syncFolderOf(target);
     return {SwapOutcome::kWritten, {}};
   }
-  if (const std::string kept = restore(tmp, target, oursStat); !kept.empty())
+  const std::string kept = restore(tmp, target, oursStat);
+  if (oursLeased) takeBytesOfFileAt(ours.get(), target);
+  endOursLease();
+  if (!kept.empty())
     return failed(fmt::format("another program kept replacing the file; a version of it is kept in {}", kept));
   return {wasChecked ? SwapOutcome::kBusy : SwapOutcome::kChanged, {}};
 }

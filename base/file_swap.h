@@ -17,7 +17,9 @@
 //      not the file that was compared (an editor saving atomically renamed
 //      its file in meanwhile), or an editor asked to write the old file
 //      while it was leased, or it changed, the exchange is undone, so that
-//      their file is at the name again, and nothing of ours stays.
+//      their file is at the name again, and nothing of ours stays. Our file
+//      carries a write lease meanwhile: whoever opens it while it is at the
+//      name waits, and then reads the bytes of their file, not ours.
 // Where the file system cannot exchange, a plain rename follows a last
 // check; where no lease can be had (a file of another owner, a network
 // file system), the stat of the file is compared instead.
