@@ -10,7 +10,7 @@
 
 #include "bench/benchmarks.h"
 #include "bench/timing.h"
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "diag/source_file.h"
 #include "vm/image.h"
 

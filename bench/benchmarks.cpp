@@ -5,11 +5,12 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "base/seconds.h"
 #include "bench/bench_support.h"
 #include "bench/generate.h"
 #include "bench/timing.h"
-#include "compiler/compiler.h"
-#include "compiler/library.h"
+#include "compiler/program/compiler.h"
+#include "compiler/description/library.h"
 #include "launch/program.h"
 #include "runtime/run/run.h"
 #include "vm/verify.h"
@@ -266,7 +267,7 @@ json benchTestSuite(const Options& options) {
     writeInput(options, fmt::format("testsuite/t{:04}.rsp", i),
                fmt::format("; expect: finished\n; expect: variable N = {0}\n; expect: time = {1}\n"
                            "SET N 0\nloop: ADD N 1\nMOVE 100 0 0 0 0\nMOVE -100 0 0 0 0\nJMPVAR N < {0} loop\nEND\n",
-                           k, vm::formatSeconds(vm::Micros{k} * 500'000)));
+                           k, base::formatSeconds(vm::Micros{k} * 500'000)));
   }
   progress(fmt::format("1 warm-up + {} runs of robotsim test {} -j 2 (every test must pass)", options.reps,
                        dir.string()));

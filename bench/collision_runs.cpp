@@ -9,8 +9,8 @@
 
 #include "bench/collision_programs.h"
 #include "bench/timing.h"
-#include "compiler/compiler.h"
-#include "compiler/library.h"
+#include "compiler/program/compiler.h"
+#include "compiler/description/library.h"
 #include "launch/program.h"
 #include "runtime/run/run.h"
 

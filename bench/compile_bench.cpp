@@ -9,7 +9,7 @@
 
 #include "bench/bench_support.h"
 #include "bench/generate.h"
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "launch/program.h"
 #include "vm/image_file.h"
 

@@ -14,8 +14,8 @@
 
 #include "bench/benchmarks.h"
 #include "bench/timing.h"
-#include "compiler/compiler.h"
-#include "compiler/library.h"
+#include "compiler/program/compiler.h"
+#include "compiler/description/library.h"
 #include "debug/session.h"
 #include "launch/program.h"
 #include "teach/run_source.h"

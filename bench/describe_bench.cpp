@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "bench/bench_args.h"
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "model/workcell/reach.h"
 #include "teach/pendant_state.h"
 #include "teach/tui/tui_screen.h"

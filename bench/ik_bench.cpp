@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "bench/bench_args.h"
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "model/kinematics/angles.h"
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/forward_kinematics.h"

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "bench/bench_args.h"
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "runtime/render/draw.h"
 #include "runtime/render/picture.h"
 #include "runtime/render/png.h"

@@ -25,7 +25,7 @@
 
 #include "base/file_io.h"
 #include "bench/bench_args.h"
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "launch/program.h"
 #include "teach/live_server.h"
 #include "teach/page.h"

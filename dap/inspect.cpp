@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "base/seconds.h"
 #include "base/text.h"
 #include "dap/adapter.h"
 #include "vm/disasm.h"
@@ -97,7 +98,7 @@ Adapter::Reply Adapter::variables(const Json& args) {
       }
       break;
     case kClock:
-      out.push_back(variable("time", fmt::format("{} s", vm::formatSeconds(v.clock))));
+      out.push_back(variable("time", fmt::format("{} s", base::formatSeconds(v.clock))));
       out.push_back(variable("steps", std::to_string(v.steps)));
       break;
     default:
@@ -114,7 +115,7 @@ Adapter::Reply Adapter::evaluate(const Json& args) {
   const std::int64_t value = debug::valueOf(session_->run(), x);
   std::string shown = std::to_string(value);
   if (x.kind == debug::Expression::Kind::Input || x.kind == debug::Expression::Kind::Output) shown = value ? "on" : "off";
-  if (x.kind == debug::Expression::Kind::Clock) shown = fmt::format("{} s", vm::formatSeconds(value));
+  if (x.kind == debug::Expression::Kind::Clock) shown = fmt::format("{} s", base::formatSeconds(value));
   return Json{{"result", shown}, {"variablesReference", 0}};
 }
 

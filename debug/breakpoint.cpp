@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "base/seconds.h"
 #include "base/text.h"
 
 namespace rs::debug {
@@ -11,7 +12,7 @@ std::string Breakpoint::where() const {
     case Kind::Line: return fmt::format("line {}", line);
     case Kind::Label: return fmt::format("label {}, line {}", base::safeText(label), line);
     case Kind::Instruction: return fmt::format("@{}, line {}", instruction + 1, line);
-    case Kind::Time: return fmt::format("at {} s", vm::formatSeconds(time));
+    case Kind::Time: return fmt::format("at {} s", base::formatSeconds(time));
     case Kind::When: return fmt::format("when {}", when.text);
   }
   return {};

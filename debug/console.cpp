@@ -7,8 +7,9 @@
 
 #include "base/ascii.h"
 #include "base/near_names.h"
+#include "base/seconds.h"
 #include "base/text.h"
-#include "runtime/stimuli_text.h"
+#include "compiler/stimuli/stimuli_text.h"
 #include "vm/disasm.h"
 
 namespace rs::debug {
@@ -101,7 +102,7 @@ std::string shown(std::string_view text) {
 }
 
 std::optional<vm::Micros> seconds(std::string_view text, std::string& error) {
-  const runtime::text::SecondsParse s = runtime::text::parseSeconds(text);
+  const stimuli::text::SecondsParse s = stimuli::text::parseSeconds(text);
   if (!s.error.empty()) {
     error = s.error;
     return std::nullopt;
@@ -122,7 +123,7 @@ void Console::showStop(const Stop& stop) {
   const runtime::RunView v = session_.view();
   if (stop.reason != StopReason::Step) out_ << stop.message << '\n';
   out_ << fmt::format("line {} @{}, step {}, clock {} s{}\n", v.line, v.instruction + 1, v.steps,
-                      vm::formatSeconds(v.clock), v.finished ? " (the run is over)" : "");
+                      base::formatSeconds(v.clock), v.finished ? " (the run is over)" : "");
   const std::string text = sourceLine(v.line);
   if (!text.empty()) out_ << fmt::format("{:>5} | {}\n", v.line, text);
   else out_ << fmt::format("{:>5} | {}\n", v.line, vm::instructionText(session_.run().image(), v.instruction));
@@ -333,7 +334,7 @@ void Console::printCommand(std::string_view args) {
       out_ << fmt::format("{} {} at ({:.3f}, {:.3f}, {:.3f}){}{}\n", number++, base::safeText(o.name), o.at.x(), o.at.y(),
                           o.at.z(), o.held ? ", held" : "", o.moved ? ", moved" : "");
   } else if (args == "clock") {
-    out_ << fmt::format("clock = {} s (step {})\n", vm::formatSeconds(v.clock), v.steps);
+    out_ << fmt::format("clock = {} s (step {})\n", base::formatSeconds(v.clock), v.steps);
   } else {
     auto e = parseExpression(image, ioWords(args));
     if (auto* problem = std::get_if<std::string>(&e)) return error(*problem);
@@ -361,7 +362,7 @@ void Console::setCommand(std::string_view args) {
   if (auto problem = session_.setInput(static_cast<int>(*n), on)) return error(*problem);
   const runtime::RunView v = session_.view();
   out_ << fmt::format("input {} is {} from step {} (clock {} s) on\n", *n, on ? "on" : "off", v.steps,
-                      vm::formatSeconds(v.clock));
+                      base::formatSeconds(v.clock));
 }
 
 void Console::listCommand(std::string_view args) {

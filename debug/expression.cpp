@@ -7,8 +7,8 @@
 
 #include "base/ascii.h"
 #include "base/text.h"
-#include "runtime/input_schedule.h"
-#include "runtime/stimuli_text.h"
+#include "runtime/sim/input_schedule.h"
+#include "compiler/stimuli/stimuli_text.h"
 
 namespace rs::debug {
 
@@ -143,7 +143,7 @@ std::variant<Condition, std::string> parseCondition(const vm::Image& image, std:
   else if (base::sameName(right, "off")) c.right = 0;
   else if (const auto n = integer(right)) c.right = *n;
   else if (c.left.kind == Expression::Kind::Clock) {
-    const runtime::text::SecondsParse s = runtime::text::parseSeconds(right);
+    const stimuli::text::SecondsParse s = stimuli::text::parseSeconds(right);
     if (!s.error.empty()) return fmt::format("'{}': {}", shown(right), s.error);
     c.right = s.micros;
   } else {

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "base/ascii.h"
+#include "base/seconds.h"
 #include "base/text.h"
 #include "runtime/run/empty_close.h"
 
@@ -296,7 +297,7 @@ Stop Session::forward(const Target& target) {
   } else if (done || run_->interpreter().steps() >= target.steps) {
     s = {StopReason::Step, "step done", {}};
   } else if (run_->clock() > target.time) {
-    s = {StopReason::Time, fmt::format("the clock passed {} s", vm::formatSeconds(target.time)), {}};
+    s = {StopReason::Time, fmt::format("the clock passed {} s", base::formatSeconds(target.time)), {}};
   } else {
     s = {StopReason::Pause, "paused", {}};
   }
@@ -331,7 +332,7 @@ Stop Session::until(vm::Micros time) {
   Target t;
   t.time = time;
   if (run_->clock() > time && !run_->finished())
-    return stopped({StopReason::Time, fmt::format("the clock is already past {} s", vm::formatSeconds(time)), {}});
+    return stopped({StopReason::Time, fmt::format("the clock is already past {} s", base::formatSeconds(time)), {}});
   return forward(t);
 }
 
@@ -391,10 +392,10 @@ Stop Session::gotoTime(vm::Micros t) {
   timeline_->goToTime(t);
   if (run_->finished() && run_->clock() <= t) {
     Stop s = finishedStop(false);
-    s.message += fmt::format(" before {} s", vm::formatSeconds(t));
+    s.message += fmt::format(" before {} s", base::formatSeconds(t));
     return stopped(std::move(s));
   }
-  return stopped({StopReason::Time, fmt::format("the clock passed {} s", vm::formatSeconds(t)), {}});
+  return stopped({StopReason::Time, fmt::format("the clock passed {} s", base::formatSeconds(t)), {}});
 }
 
 std::optional<std::string> Session::setInput(int input, bool on) {

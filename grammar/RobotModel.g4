@@ -6,7 +6,7 @@
 // -20 COLOR RED", "JOINT 1 REVOLUTE LETTER E ..."). As for programs, the
 // grammar stays flat: which statements a block takes and what their
 // arguments are is checked when the parse tree becomes the model
-// (compiler/description.cpp), where a message can say exactly what was
+// (compiler/description/description.cpp), where a message can say exactly what was
 // expected. Unlike programs, descriptions are lexed by the lexer ANTLR
 // generates from this file: they are small, and speed does not matter.
 grammar RobotModel;

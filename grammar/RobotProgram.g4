@@ -8,7 +8,7 @@
 // turned into the AST, where a message can say exactly what was expected.
 //
 // The build generates the parser (and this lexer) with the antlr4 tool; the
-// compiler feeds the parser from a hand-written lexer (compiler/lexer.cpp)
+// compiler feeds the parser from a hand-written lexer (compiler/program/lexer.cpp)
 // that produces exactly these token types, several times faster.
 grammar RobotProgram;
 

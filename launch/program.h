@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "compiler/compiler.h"
-#include "compiler/library.h"
+#include "compiler/program/compiler.h"
+#include "compiler/description/library.h"
 #include "diag/diagnostic.h"
 #include "model/workcell/model.h"
 #include "vm/image.h"

@@ -4,35 +4,35 @@
 
 #include "base/file_io.h"
 #include "launch/program.h"
-#include "runtime/serial/interrupt.h"
-#include "runtime/serial/rhino_machine.h"
-#include "runtime/serial/serial_log.h"
-#include "runtime/serial/serial_port.h"
+#include "runtime/rhino/interrupt.h"
+#include "runtime/rhino/rhino_machine.h"
+#include "runtime/rhino/serial_log.h"
+#include "runtime/rhino/serial_port.h"
 
 namespace rs::launch {
 
 namespace {
 
-using serial::Dialect;
-using serial::RhinoSettings;
+using rhino::Dialect;
+using rhino::RhinoSettings;
 
 // Everything a serial run owns besides the machine, in the order it must be
 // torn down (last member first): the log link, the port, the log, the
 // clock, and last the Ctrl-C handler.
 struct Connection {
-  std::unique_ptr<serial::InterruptGuard> guard;
-  serial::SteadyClock clock;
-  std::unique_ptr<serial::SerialLog> log;
-  std::unique_ptr<serial::SerialPort> port;
-  std::unique_ptr<serial::LoggedLink> logged;
+  std::unique_ptr<rhino::InterruptGuard> guard;
+  rhino::SteadyClock clock;
+  std::unique_ptr<rhino::SerialLog> log;
+  std::unique_ptr<rhino::SerialPort> port;
+  std::unique_ptr<rhino::LoggedLink> logged;
 };
 
 // The bytes a second Ctrl-C writes from the signal handler.
 std::string emergencyStop(const RhinoSettings& s, const std::vector<vm::MotorSpec>& motors) {
   std::string bytes;
-  for (const std::string& c : serial::stopCommands(s.dialect, motors)) {
+  for (const std::string& c : rhino::stopCommands(s.dialect, motors)) {
     bytes += c;
-    bytes += serial::lineEndBytes(s.lineEnd);
+    bytes += rhino::lineEndBytes(s.lineEnd);
   }
   return bytes;
 }
@@ -41,18 +41,18 @@ std::string emergencyStop(const RhinoSettings& s, const std::vector<vm::MotorSpe
 
 bool buildSettings(const std::string& dialectText, const std::string& file, const std::vector<std::string>& sets,
                    RhinoSettings& settings, std::vector<diag::Diagnostic>& diags) {
-  settings = serial::defaultSettings(dialectText == "mark4" ? Dialect::Mark4 : Dialect::Mark3);
+  settings = rhino::defaultSettings(dialectText == "mark4" ? Dialect::Mark4 : Dialect::Mark3);
   const std::size_t before = diags.size();
   if (!file.empty()) {
     const base::FileRead text = base::readFile(file, kMaxInputBytes);
     if (!text.bytes) {
       diags.push_back({file, {}, diag::Severity::Error, "cannot read serial settings: " + text.error});
     } else {
-      for (diag::Diagnostic& d : serial::applySettingsText(settings, *text.bytes, file)) diags.push_back(std::move(d));
+      for (diag::Diagnostic& d : rhino::applySettingsText(settings, *text.bytes, file)) diags.push_back(std::move(d));
     }
   }
   for (const std::string& s : sets)
-    if (std::string error = serial::applySettingArg(settings, s); !error.empty())
+    if (std::string error = rhino::applySettingArg(settings, s); !error.empty())
       diags.push_back({"--serial-set", {}, diag::Severity::Error, std::move(error)});
   return diags.size() == before;
 }
@@ -71,22 +71,22 @@ std::unique_ptr<vm::Machine> openRhino(const SerialRequest& o, const std::vector
   };
   auto conn = std::make_shared<Connection>();
   if (!o.logFile.empty()) {
-    conn->log = serial::SerialLog::create(o.logFile, error);
+    conn->log = rhino::SerialLog::create(o.logFile, error);
     if (!conn->log) return failed();
   }
-  conn->port = serial::SerialPort::open(o.device, settings.line, error);
+  conn->port = rhino::SerialPort::open(o.device, settings.line, error);
   if (!conn->port) {
     if (conn->log) conn->log->comment("cannot open: " + error);
     return failed();
   }
-  conn->guard = std::make_unique<serial::InterruptGuard>();
+  conn->guard = std::make_unique<rhino::InterruptGuard>();
   conn->guard->setEmergencyStop(conn->port->fd(), emergencyStop(settings, motors));
-  serial::Link* link = conn->port.get();
+  rhino::Link* link = conn->port.get();
   if (conn->log) {
-    conn->logged = std::make_unique<serial::LoggedLink>(*conn->port, *conn->log, conn->clock);
+    conn->logged = std::make_unique<rhino::LoggedLink>(*conn->port, *conn->log, conn->clock);
     link = conn->logged.get();
   }
-  auto machine = std::make_unique<serial::RhinoMachine>(motors, settings, *link, conn->clock, conn->log.get(),
+  auto machine = std::make_unique<rhino::RhinoMachine>(motors, settings, *link, conn->clock, conn->log.get(),
                                                         &conn->guard->flag());
   machine->keepAlive(conn);
   machine->setWaitLimit(maxTime);

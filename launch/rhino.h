@@ -1,7 +1,7 @@
 // A real Rhino controller (or `robotsim emulate`) as the machine of a run:
 // the serial options of run and check, the settings they build, and the
 // port, log and Ctrl-C handler a serial run owns. Everything that speaks
-// the protocol is in runtime/serial; this file only puts it together.
+// the protocol is in runtime/rhino; this file only puts it together.
 // docs/serial.md is the user's guide.
 #pragma once
 
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
-#include "runtime/serial/settings.h"
+#include "runtime/rhino/settings.h"
 #include "vm/image.h"
 #include "vm/machine.h"
 
@@ -29,7 +29,7 @@ struct SerialRequest {
 /// Defaults for the dialect ("mark3" or "mark4"), then the settings file,
 /// then each KEY=VALUE; false, with every problem in `diags`, when any is bad.
 bool buildSettings(const std::string& dialect, const std::string& file, const std::vector<std::string>& sets,
-                   serial::RhinoSettings& settings, std::vector<diag::Diagnostic>& diags);
+                   rhino::RhinoSettings& settings, std::vector<diag::Diagnostic>& diags);
 
 /// Opens the port, installs the Ctrl-C handler (until the machine goes),
 /// makes first contact. Null, with the problems in `diags`, when anything

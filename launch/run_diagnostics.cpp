@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "base/seconds.h"
 #include "runtime/run/empty_close.h"
 
 namespace rs::launch {
@@ -55,7 +56,7 @@ std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::Coll
   if (const runtime::CollisionWatch* watch = run.collisionWatch(); watch && mode == runtime::CollisionMode::Warn)
     for (const runtime::CollisionEvent& e : run.collisions()) {
       const bool known = e.instruction < image.code.size();
-      const std::string seconds = vm::formatSeconds(e.at);
+      const std::string seconds = base::formatSeconds(e.at);
       out.push_back({file, known ? diag::Pos{image.lines[e.instruction], image.columns[e.instruction]} : diag::Pos{},
                      diag::Severity::Warning,
                      fmt::format("collision at {} s: {} (--collisions=warn: the run went on)", seconds,

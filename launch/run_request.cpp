@@ -1,6 +1,6 @@
 #include "launch/run_request.h"
 
-#include "runtime/stimuli_text.h"
+#include "compiler/stimuli/stimuli_text.h"
 
 #include <fmt/format.h>
 
@@ -17,19 +17,19 @@ std::string_view RunRequest::firstGiven() const {
   return "";
 }
 
-bool loadStimuli(const RunRequest& request, runtime::Stimuli& stimuli, std::vector<diag::Diagnostic>& diags) {
+bool loadStimuli(const RunRequest& request, stimuli::Stimuli& stimuli, std::vector<diag::Diagnostic>& diags) {
   bool ok = true;
   const auto add = [&](const diag::Diagnostic& e) {
     diags.push_back(e);
     ok = false;
   };
   if (!request.stimuliFile.empty()) {
-    runtime::StimuliParse parsed = runtime::loadStimuliFile(request.stimuliFile);
+    stimuli::StimuliParse parsed = stimuli::loadStimuliFile(request.stimuliFile);
     for (const auto& e : parsed.errors) add(e);
     stimuli = std::move(parsed.stimuli);
   }
   for (const std::string& arg : request.inputs) {
-    runtime::StimulusArgParse parsed = runtime::parseStimulusArg(arg, "--input");
+    stimuli::StimulusArgParse parsed = stimuli::parseStimulusArg(arg, "--input");
     if (parsed.error) add(*parsed.error);
     if (parsed.change) stimuli.changes.push_back(*parsed.change);
   }
@@ -38,7 +38,7 @@ bool loadStimuli(const RunRequest& request, runtime::Stimuli& stimuli, std::vect
 
 std::optional<vm::Micros> maxTimeOf(const RunRequest& request, std::vector<diag::Diagnostic>& diags) {
   if (request.maxTime.empty()) return vm::RunLimits{}.maxTime;
-  const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(request.maxTime);
+  const stimuli::text::SecondsParse parsed = stimuli::text::parseSeconds(request.maxTime);
   if (parsed.error.empty()) return parsed.micros;
   diags.push_back({"--max-time", {}, diag::Severity::Error, parsed.error, {},
                    "a time is seconds with at most 6 decimals, from 0 to 1000000"});

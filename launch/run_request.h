@@ -12,7 +12,7 @@
 #include "diag/diagnostic.h"
 #include "launch/program.h"
 #include "runtime/run/run.h"
-#include "runtime/stimuli.h"
+#include "compiler/stimuli/stimuli.h"
 
 namespace rs::launch {
 
@@ -29,7 +29,7 @@ struct RunRequest {
 
 /// Stimuli from the stimuli file (when named) and the --input changes, in
 /// that order; every error becomes a diagnostic. False on any error.
-bool loadStimuli(const RunRequest& request, runtime::Stimuli& stimuli, std::vector<diag::Diagnostic>& diags);
+bool loadStimuli(const RunRequest& request, stimuli::Stimuli& stimuli, std::vector<diag::Diagnostic>& diags);
 
 /// --collisions' mode (error when not given), or a diagnostic.
 std::optional<runtime::CollisionMode> collisionsOf(const RunRequest& request, std::vector<diag::Diagnostic>& diags);

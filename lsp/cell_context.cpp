@@ -2,7 +2,7 @@
 
 #include <system_error>
 
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "launch/program.h"
 #include "stdlib/default_robot.h"
 

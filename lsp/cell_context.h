@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/codegen.h"
+#include "compiler/program/codegen.h"
 #include "model/workcell/model.h"
 
 namespace rs::lsp {

@@ -8,7 +8,7 @@
 #include "launch/run_request.h"
 #include "lsp/program_analysis.h"
 #include "runtime/run/run.h"
-#include "runtime/stimuli.h"
+#include "compiler/stimuli/stimuli.h"
 
 namespace rs::lsp {
 
@@ -127,9 +127,9 @@ CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, 
   // The stimuli file beside the program, from the editor's text when it
   // holds one (check would read the saved file).
   if (options.stimuliText || !options.stimuliPath.empty()) {
-    runtime::StimuliParse parsed = options.stimuliText
-                                       ? runtime::parseStimuli(*options.stimuliText, options.stimuliFile)
-                                       : runtime::loadStimuliFile(options.stimuliPath);
+    stimuli::StimuliParse parsed = options.stimuliText
+                                       ? stimuli::parseStimuli(*options.stimuliText, options.stimuliFile)
+                                       : stimuli::loadStimuliFile(options.stimuliPath);
     if (!parsed.errors.empty()) {
       out.end = CheckedRun::End::NotRun;
       out.diagnostics.push_back({analysis.source().name(), {}, diag::Severity::Note,

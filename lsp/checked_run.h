@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
-#include "runtime/collision_watch.h"
+#include "runtime/sim/collision_watch.h"
 #include "vm/interpreter.h"
 
 namespace rs::runtime {

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "launch/cell_directive.h"
 #include "lsp/cell_context.h"
 #include "lsp/checked_run.h"

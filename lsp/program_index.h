@@ -20,7 +20,7 @@
 #include <string_view>
 #include <vector>
 
-#include "compiler/ast_builder.h"
+#include "compiler/program/ast_builder.h"
 #include "diag/source_file.h"
 
 namespace rs::lsp {

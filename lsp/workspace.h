@@ -12,7 +12,7 @@
 #include "lsp/cell_context.h"
 #include "lsp/document.h"
 #include "lsp/program_analysis.h"
-#include "runtime/collision_watch.h"
+#include "runtime/sim/collision_watch.h"
 
 namespace rs::lsp {
 

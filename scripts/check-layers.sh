@@ -10,7 +10,8 @@
 # (RobotProgramParser.h, ...). Prints one `file:line: error:` per bad
 # include and exits 1 if there is any; exits 0 and prints a one-line
 # summary otherwise. Also fails when the list itself names an unknown or a
-# later layer, or when a source file belongs to no layer.
+# later layer, when a source file belongs to no layer, and when the list
+# allows an edge no include uses (the list is the code's edges exactly).
 set -euo pipefail
 root=${1:-"$(cd "$(dirname "$0")/.." && pwd)"}
 layers="$(dirname "$0")/layers.txt"
@@ -79,7 +80,8 @@ awk -v layersFile="$layers" '
         to = layerOf(inc)
         if (to == "") { printf "%s:%d: error: include \"%s\" is in no layer\n", file, lineNo, inc; bad = 1; continue }
       }
-      if (to == from || index(allowed[from], " " to " ") > 0) continue
+      if (to == from) continue
+      if (index(allowed[from], " " to " ") > 0) { used[from " " to] = 1; continue }
       printf "%s:%d: error: %s includes \"%s\" of layer %s, which %s may not include (%s)\n",
              file, lineNo, from, inc, to, from, layersFile
       bad = 1
@@ -87,6 +89,14 @@ awk -v layersFile="$layers" '
     close(file)
   }
   END {
+    for (l in allowed) {
+      m = split(allowed[l], deps, " ")
+      for (i = 1; i <= m; i++)
+        if (deps[i] != "" && !((l " " deps[i]) in used)) {
+          printf "%s: error: layer %s may include %s, but no file of it does: drop the edge\n", layersFile, l, deps[i]
+          bad = 1
+        }
+    }
     if (bad) exit 1
-    printf "layers: %d files, %d includes, every one points down (%s)\n", files, includes, layersFile
+    printf "layers: %d files, %d includes, every one points down, every allowed edge used (%s)\n", files, includes, layersFile
   }'

@@ -4,7 +4,8 @@
 
 #include <algorithm>
 
-#include "runtime/serial/rhino_machine.h"
+#include "base/seconds.h"
+#include "runtime/rhino/rhino_machine.h"
 #include "vm/interpreter.h"
 
 namespace rs::teach {
@@ -50,7 +51,7 @@ Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm:
 Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, ProgramFile file,
                  std::unique_ptr<vm::Machine> device, std::string deviceName)
     : cell_(std::move(cell)), motors_(std::move(motors)), file_(std::move(file)), device_(std::move(deviceName)) {
-  rhino_ = dynamic_cast<serial::RhinoMachine*>(device.get());
+  rhino_ = dynamic_cast<rhino::RhinoMachine*>(device.get());
   run_ = std::make_unique<runtime::Run>(specFor(cell_, motors_), std::move(device));
   message_ = fmt::format("teaching {} on {} with the robot on {}", file_.path(), cell_->name, device_);
 }
@@ -93,7 +94,7 @@ Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
     const runtime::CollisionEvent hit = watch->events()[seen];
     run_->restore(*before);
     return refuse(fmt::format("refused: the move to {} collides {} s into it: {}; nothing moved", valuesText(targets),
-                              vm::formatSeconds(hit.at - start), watch->describe(hit.contact)));
+                              base::formatSeconds(hit.at - start), watch->describe(hit.contact)));
   }
   if (!status) {
     moved_ = false;

@@ -25,7 +25,7 @@
 #include "teach/program_file.h"
 #include "vm/machine.h"
 
-namespace rs::serial {
+namespace rs::rhino {
 class RhinoMachine;
 }
 
@@ -95,7 +95,7 @@ class Pendant {
   ProgramFile file_;
   std::unique_ptr<runtime::Run> run_;
   std::string device_;
-  serial::RhinoMachine* rhino_ = nullptr;      // the device, when it is a Rhino (owned by run_)
+  rhino::RhinoMachine* rhino_ = nullptr;      // the device, when it is a Rhino (owned by run_)
   std::optional<runtime::RunSnapshot> start_;  // simulation: what reset cell restores
   std::uint8_t inputs_ = 0;                    // simulation: the pendant's input switches
   bool moved_ = false;                         // the last operation was a move

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "base/ascii.h"
+#include "base/seconds.h"
 #include "launch/run_diagnostics.h"
 
 namespace rs::testrun {
@@ -14,7 +15,7 @@ std::string_view statusWord(vm::StopReason reason) { return launch::stopReasonNa
 
 namespace {
 
-std::string seconds(vm::Micros t) { return vm::formatSeconds(t) + " s"; }
+std::string seconds(vm::Micros t) { return base::formatSeconds(t) + " s"; }
 std::string onOff(bool on) { return on ? "ON" : "OFF"; }
 
 class Checker {
@@ -94,7 +95,7 @@ class Checker {
       const auto [from, to] = *e.during;
       if (const std::optional<WatchedMoment>& m = a.moment)
         fail(e, fmt::format("expected {} {} during {}..{}; it was {} at {} ({})", what, onOff(e.on),
-                            vm::formatSeconds(from), seconds(to), onOff(!e.on), seconds(m->at), cause(e.kind, *m)));
+                            base::formatSeconds(from), seconds(to), onOff(!e.on), seconds(m->at), cause(e.kind, *m)));
       return;
     }
     const std::uint8_t bits = output ? run_.machine().outputs() : run_.machine().inputs();
@@ -126,7 +127,7 @@ class Checker {
     if (!w.beyond) return;
     const WatchedMove& move = *w.beyond;
     fail(e, fmt::format("expected motor {} never {} {}; it moved to {} at line {} ({}..{})", letter,
-                        e.on ? "above" : "below", bound, move.to, move.line, vm::formatSeconds(move.start),
+                        e.on ? "above" : "below", bound, move.to, move.line, base::formatSeconds(move.start),
                         seconds(move.end)));
   }
 
@@ -151,7 +152,7 @@ class Checker {
         const auto [from, to] = *e.during;
         if (const std::optional<WatchedMoment>& m = w.moment)
           fail(e, fmt::format("expected variable {} = {} during {}..{}; it was {} at {} ({})", image_.variables[s],
-                              e.value, vm::formatSeconds(from), seconds(to), m->value, seconds(m->at),
+                              e.value, base::formatSeconds(from), seconds(to), m->value, seconds(m->at),
                               cause(e.kind, *m)));
         return;
       }

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "base/ascii.h"
-#include "runtime/stimuli_text.h"
+#include "compiler/stimuli/stimuli_text.h"
 #include "testrun/golden_trace.h"
 
 namespace rs::testrun {
@@ -102,7 +102,7 @@ class LineReader {
   bool seconds(std::string_view what, vm::Micros& micros) {
     const std::optional<Word> w = take(what);
     if (!w) return false;
-    const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(w->text);
+    const stimuli::text::SecondsParse parsed = stimuli::text::parseSeconds(w->text);
     if (!parsed.error.empty()) return failAt(w->col, parsed.error);
     micros = parsed.micros;
     return true;
@@ -167,9 +167,9 @@ bool moment(LineReader& r, Expectation& e) {
   const std::optional<Word> w = r.take("a window A..B in seconds");
   if (!w) return false;
   const std::size_t dots = w->text.find("..");
-  const runtime::text::SecondsParse a = runtime::text::parseSeconds(w->text.substr(0, dots));
-  const runtime::text::SecondsParse b =
-      runtime::text::parseSeconds(dots == std::string_view::npos ? std::string_view() : w->text.substr(dots + 2));
+  const stimuli::text::SecondsParse a = stimuli::text::parseSeconds(w->text.substr(0, dots));
+  const stimuli::text::SecondsParse b =
+      stimuli::text::parseSeconds(dots == std::string_view::npos ? std::string_view() : w->text.substr(dots + 2));
   if (dots == std::string_view::npos || !a.error.empty() || !b.error.empty() || b.micros < a.micros)
     return r.failAt(w->col, fmt::format("expected a window A..B in seconds with A <= B (e.g. 2..5.5), got '{}'", w->text));
   e.during = {a.micros, b.micros};

@@ -11,6 +11,7 @@
 #include "launch/run_request.h"
 #include "runtime/run/empty_close.h"
 #include "runtime/run/run.h"
+#include "runtime/run/trace.h"
 #include "testrun/evaluate.h"
 #include "testrun/expectation.h"
 #include "testrun/golden_trace.h"
@@ -113,13 +114,9 @@ struct GoldenTrace {
 // The golden files of a test's trace expectations, each inside the test's
 // folder; false (the test cannot start) when one leads out of it.
 bool openGoldenTraces(const ParsedExpectations& parsed, const std::string& settingsFile,
-                      const RunnerOptions& options, std::vector<GoldenTrace>& traces, TestResult& r) {
+                      std::vector<GoldenTrace>& traces, TestResult& r) {
   for (const Expectation& e : parsed.expectations) {
     if (e.kind != ExpectKind::Trace) continue;
-    if (!options.traceMaker) {
-      r.problems.push_back({settingsFile, e.pos, diag::Severity::Error, "no trace writer: cannot check the trace"});
-      continue;
-    }
     const GoldenFile golden = goldenFile(settingsFile, e.name);
     if (!golden.error.empty()) {
       r.status = TestStatus::Error;
@@ -177,7 +174,7 @@ class StopWhenOver final : public vm::StepObserver {
 // the one compared) and its trace streamed into the golden file, which is
 // written whole or not at all.
 void rewriteGoldenTrace(const GoldenTrace& t, const runtime::RunSpec& spec, const std::string& settingsFile,
-                        const RunnerOptions& options, TestResult& r) {
+                        TestResult& r) {
   bool tooLarge = false;
   std::string error;
   const bool written = base::writeFileAtomically(
@@ -186,9 +183,9 @@ void rewriteGoldenTrace(const GoldenTrace& t, const runtime::RunSpec& spec, cons
         CappedSink sink(*file.rdbuf(), launch::kMaxInputBytes);
         std::ostream out(&sink);
         runtime::Run again(spec);
-        const std::unique_ptr<vm::StepObserver> writer = options.traceMaker(out, again);
+        runtime::TraceWriter writer(out, runtime::TraceFormat::Text, again);
         StopWhenOver stop(sink);
-        again.observe(*writer);
+        again.observe(writer);
         again.observe(stop);
         again.runToEnd();
         tooLarge = sink.over();
@@ -208,7 +205,7 @@ void rewriteGoldenTrace(const GoldenTrace& t, const runtime::RunSpec& spec, cons
 void judgeTrace(const GoldenTrace& t, const runtime::RunSpec* again, const std::string& settingsFile,
                 const RunnerOptions& options, TestResult& r) {
   if (t.read.bytes && t.comparer->same()) return;
-  if (options.update && again) return rewriteGoldenTrace(t, *again, settingsFile, options, r);
+  if (options.update && again) return rewriteGoldenTrace(t, *again, settingsFile, r);
   const Expectation& e = *t.expectation;
   if (!t.read.bytes) {
     r.problems.push_back({settingsFile, e.pos, diag::Severity::Error,
@@ -274,7 +271,7 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   }
 
   std::vector<GoldenTrace> traces;
-  if (!openGoldenTraces(parsed, settingsFile, options, traces, r)) return;
+  if (!openGoldenTraces(parsed, settingsFile, traces, r)) return;
   launch::RunRequest run;
   run.stimuliFile = besideProgram(settingsFile, parsed.settings.stimuliFile, false);
   run.inputs = parsed.settings.inputs;
@@ -304,7 +301,7 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   if (watch) running.observe(*watch);
   if (counter) running.observe(*counter);
   for (GoldenTrace& t : traces) {
-    t.writer = options.traceMaker(*t.stream, running);
+    t.writer = std::make_unique<runtime::TraceWriter>(*t.stream, runtime::TraceFormat::Text, running);
     running.observe(*t.writer);
   }
   const vm::RunOutcome outcome = running.runToEnd();

@@ -47,17 +47,11 @@ struct TestResult {
   std::vector<std::string> updated;
 };
 
-/// Writes a run's trace (as `robotsim run --trace` does) into a stream:
-/// the command line hands its trace writer down, so that `expect: trace`
-/// compares exactly what users see.
-using TraceMaker = std::function<std::unique_ptr<vm::StepObserver>(std::ostream&, const runtime::Run&)>;
-
 struct RunnerOptions {
   std::vector<std::string> libDirs;  ///< --lib
   bool coverage = false;             ///< count what each run executes
   bool update = false;               ///< write golden traces that differ or are missing
   std::string collisions;            ///< --collisions (empty: error)
-  TraceMaker traceMaker = {};        ///< needed for `expect: trace`
 };
 
 /// What grading (`--spec`) allows a submission's run when its scenario sets

@@ -18,7 +18,7 @@ enum class JointKind : std::uint8_t { Revolute = 0, Prismatic = 1, Gripper = 2 }
 
 /// One motor as the program sees it: a letter, how far one encoder unit
 /// turns (degrees) or slides (length units), its encoder range and speed,
-/// and how it gets to speed (runtime/motion.h: constant speed by default,
+/// and how it gets to speed (runtime/sim/motion.h: constant speed by default,
 /// a trapezoid with an acceleration, a fixed time for a gripper with an
 /// actuation time).
 struct MotorSpec {
@@ -34,7 +34,7 @@ struct MotorSpec {
 };
 
 /// Bounds of the motion settings, checked by the description reader and
-/// the verifier; they keep runtime/motion.h's integer arithmetic exact.
+/// the verifier; they keep runtime/sim/motion.h's integer arithmetic exact.
 inline constexpr std::int32_t kMaxAcceleration = 1'000'000'000;  // encoder units per second²
 inline constexpr std::int32_t kMaxSecondsToSpeed = 1000;         // speed / acceleration at most this
 inline constexpr std::int32_t kMaxActuation = 60'000'000;        // microseconds (a minute)

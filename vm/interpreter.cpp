@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "base/seconds.h"
+
 namespace rs::vm {
 
 namespace {
@@ -120,14 +122,6 @@ Interpreter::Interpreter(const Image& image, Machine& machine)
   state_.clockSeen = machine.now();
 }
 
-std::string formatSeconds(Micros t) {
-  const char* sign = t < 0 ? "-" : "";
-  const std::uint64_t u = t < 0 ? 0 - static_cast<std::uint64_t>(t) : static_cast<std::uint64_t>(t);
-  // Round to the nearest millisecond, halves up: same digits on every machine.
-  const std::uint64_t ms = (u + 500) / 1000;
-  return fmt::format("{}{}.{:03}", sign, ms / 1000, ms % 1000);
-}
-
 // Defence in depth behind the Machine contract (targets already in range):
 // the same words as SimMachine's own check.
 Status Interpreter::moveTo(std::span<const std::int32_t> targets) {
@@ -199,7 +193,7 @@ Interpreter::AfterCall Interpreter::machineStep(const Instr& in, std::uint32_t a
   const Micros now = machine_.now();
   if (now > limits.maxTime)
     return stop(StopReason::TimeLimit, fmt::format("simulated time limit of {} s passed (clock at {} s)",
-                                                   formatSeconds(limits.maxTime), formatSeconds(now)));
+                                                   base::formatSeconds(limits.maxTime), base::formatSeconds(now)));
   if (now != st.clockSeen) {
     st.clockSeen = now, st.stillSince = steps;
     check = nextCheck(limits, pause, st.stillSince);
@@ -343,7 +337,7 @@ RunOutcome Interpreter::checkpoint(const RunLimits& limits, std::uint32_t pc, st
   if (steps - state_.stillSince >= stillLimit)
     return stopAt(StopReason::InstantLimit,
                   fmt::format("{} instructions ran at {} s without the simulated clock moving", stillLimit,
-                              formatSeconds(state_.clockSeen)),
+                              base::formatSeconds(state_.clockSeen)),
                   pc, pc, steps);
   return pauseAt(pc, steps);
 }

@@ -140,7 +140,4 @@ class Interpreter {
   std::vector<std::int32_t> target_;  // scratch, sized once
 };
 
-/// Seconds with millisecond digits, e.g. "12.345" (for messages and traces).
-std::string formatSeconds(Micros t);
-
 }  // namespace rs::vm

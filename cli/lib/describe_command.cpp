@@ -9,7 +9,7 @@
 #include "base/number_text.h"
 #include "base/text.h"
 #include "cli/lib/app.h"
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/forward_kinematics.h"
 #include "model/workcell/reach.h"

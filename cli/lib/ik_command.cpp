@@ -11,7 +11,7 @@
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/number_args.h"
 #include "cli/lib/robot_commands.h"
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "diag/diagnostic.h"
 #include "model/kinematics/ik.h"
 #include "model/workcell/pose_solver.h"

@@ -8,7 +8,7 @@
 #include <cstdint>
 
 #include "base/text.h"
-#include "runtime/stimuli_text.h"
+#include "compiler/stimuli/stimuli_text.h"
 
 namespace rs::cli {
 
@@ -110,7 +110,7 @@ CLI::Validator numberListArg(const NumberRule& rule) {
 }
 
 bool parseSecondsArg(const std::string& text, std::string_view option, std::int64_t& micros, std::ostream& err) {
-  const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(text);
+  const stimuli::text::SecondsParse parsed = stimuli::text::parseSeconds(text);
   if (!parsed.error.empty()) {
     err << fmt::format("{}: error: {}\n  hint: {}\n", option, parsed.error, kSecondsHint);
     return false;
@@ -122,7 +122,7 @@ bool parseSecondsArg(const std::string& text, std::string_view option, std::int6
 CLI::Validator secondsArg() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        const runtime::text::SecondsParse parsed = runtime::text::parseSeconds(text);
+        const stimuli::text::SecondsParse parsed = stimuli::text::parseSeconds(text);
         return parsed.error.empty() ? std::string() : fmt::format("error: {}\n  hint: {}", parsed.error, kSecondsHint);
       },
       "");

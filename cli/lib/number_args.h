@@ -97,7 +97,7 @@ CLI::Validator numberArg(const NumberRule& rule);
 CLI::Validator numberListArg(const NumberRule& rule);
 
 /// Seconds (render --at): exact to the microsecond, as the stimuli's times
-/// (runtime/stimuli_text.h: digits with at most 6 decimals, at most
+/// (compiler/stimuli/stimuli_text.h: digits with at most 6 decimals, at most
 /// 1000000); a problem is printed as "OPTION: error: ..." with a hint.
 inline constexpr std::string_view kSecondsHint = "a time is seconds with at most 6 decimals, from 0 to 1000000";
 bool parseSecondsArg(const std::string& text, std::string_view option, std::int64_t& micros, std::ostream& err);

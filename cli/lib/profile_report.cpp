@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "base/seconds.h"
 #include "base/text.h"
 #include "vm/interpreter.h"
 
@@ -19,7 +20,7 @@ std::string percent(vm::Micros part, vm::Micros total) {
   return fmt::format("{}.{} %", permille / 10, permille % 10);
 }
 
-std::string seconds(vm::Micros t) { return vm::formatSeconds(t) + " s"; }
+std::string seconds(vm::Micros t) { return base::formatSeconds(t) + " s"; }
 
 std::string splitColumns(const TimeSplit& s) {
   return fmt::format("{:>11} {:>11} {:>11} {:>11}", seconds(s.total()), seconds(s.moving), seconds(s.waiting),

@@ -5,7 +5,7 @@
 #include "base/file_io.h"
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "vm/disasm.h"
 #include "vm/image_file.h"
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "base/file_io.h"
+#include "base/seconds.h"
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/number_args.h"
@@ -288,7 +289,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     (o.dump.empty() ? out : err) << fmt::format(
         "{} -> {} ({}x{} pixels, {}, {} bytes{})\n", what, base::safeText(o.output), camera.width, camera.height,
         *format == render::ImageFormat::Png ? "PNG" : "SVG", bytes,
-        moment ? fmt::format(", at {} s", vm::formatSeconds(*moment)) : "");
+        moment ? fmt::format(", at {} s", base::formatSeconds(*moment)) : "");
   }
   return stoppedByCollision ? kExitRunFailed : kExitOk;
 }
@@ -343,10 +344,10 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   const std::string html = render::animationHtml(input, frames);
   if (!write(o.output, std::vector<std::uint8_t>(html.begin(), html.end()), err)) return kExitBadInput;
   out << fmt::format("{} -> {} ({} instructions executed, {} s simulated{})\n", base::safeText(o.program.file),
-                     base::safeText(o.output), recording.steps.size(), vm::formatSeconds(recording.end),
+                     base::safeText(o.output), recording.steps.size(), base::formatSeconds(recording.end),
                      frames.decimated() ? fmt::format("; the page shows {} frames: every event, and the first "
                                                       "instruction to start in each {} s",
-                                                      frames.log.steps.size(), vm::formatSeconds(frames.slot))
+                                                      frames.log.steps.size(), base::formatSeconds(frames.slot))
                                         : "");
   return outcome.ok() ? kExitOk : kExitRunFailed;
 }

@@ -6,9 +6,10 @@
 #include <nlohmann/json.hpp>
 #include <span>
 
+#include "base/seconds.h"
 #include "base/text.h"
 #include "cli/lib/profile_report.h"
-#include "cli/lib/trace.h"
+#include "runtime/run/trace.h"
 #include "launch/run_diagnostics.h"
 #include "runtime/run/empty_close.h"
 
@@ -36,9 +37,9 @@ namespace {
 // After a controller failure, stop was sent: a motor that was moving (or had
 // a move sent) stopped somewhere between the last position the controller
 // confirmed and the target the program commanded.
-void printFault(std::ostream& out, const serial::FaultState& f) {
+void printFault(std::ostream& out, const rhino::FaultState& f) {
   std::string uncertain;
-  for (const serial::FaultState::Motor& m : f.motors)
+  for (const rhino::FaultState::Motor& m : f.motors)
     if (m.uncertain())
       uncertain += fmt::format("{}{} between {} (last confirmed) and {} (last commanded)", uncertain.empty() ? "" : "; ",
                                m.letter, m.confirmed, m.commanded);
@@ -68,7 +69,7 @@ void printCollisions(std::ostream& out, const runtime::Run& run) {
   if (events.empty()) out << "  collisions      none\n";
   for (std::size_t i = 0; i < events.size() && i < kShownCollisions; ++i)
     out << fmt::format("  {:<15} line {}, {} s: {}\n", i == 0 ? "collisions" : "", lineOf(run, events[i]),
-                       vm::formatSeconds(events[i].at), base::safeText(watch->describe(events[i].contact)));
+                       base::formatSeconds(events[i].at), base::safeText(watch->describe(events[i].contact)));
   if (events.size() > kShownCollisions)
     out << fmt::format("  {:<15} and {} more\n", "", events.size() - kShownCollisions);
 }
@@ -83,19 +84,19 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   const std::string where = o.ok() ? "" : fmt::format(" at line {}", im.lines[o.index]);
   out << fmt::format("run of {} on {}: {}{}\n", base::safeText(im.sourceName), base::safeText(im.robotName),
                      launch::stopReasonName(o.reason), where);
-  out << fmt::format("  {}  {} s\n", r.realTime ? "elapsed time   " : "simulated time", vm::formatSeconds(m.now()));
+  out << fmt::format("  {}  {} s\n", r.realTime ? "elapsed time   " : "simulated time", base::formatSeconds(m.now()));
   out << fmt::format("  instructions    {} executed\n", o.steps);
   std::string motors;
   const auto pos = m.positions();
   for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? "  " : "", im.motors[i].letter, pos[i]);
   out << fmt::format("  motors          {}\n", motors);
   if (r.fault) printFault(out, *r.fault);
-  if (const auto tcp = r.run->tcp()) out << fmt::format("  tool centre     {}\n", pointText(*tcp));
+  if (const auto tcp = r.run->tcp()) out << fmt::format("  tool centre     {}\n", runtime::pointText(*tcp));
   const std::vector<runtime::ObjectView> objects = r.run->objects();
   for (std::size_t o = 0; o < objects.size(); ++o) {
     const runtime::ObjectView& e = objects[o];
     out << fmt::format("  {:<15} {} at {}{}\n", fmt::format("object {}", o + 1), base::safeText(e.name),
-                       pointText({e.at.x(), e.at.y(), e.at.z()}), e.held ? ", held" : e.moved ? ", moved" : "");
+                       runtime::pointText({e.at.x(), e.at.y(), e.at.z()}), e.held ? ", held" : e.moved ? ", moved" : "");
   }
   if (const auto w = runtime::gripperWarning(*r.run, im.sourceName))  // the warning printed before
     out << fmt::format("  gripper         closed {}, took nothing (the warning at line {})\n",
@@ -103,8 +104,8 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
                                                          : fmt::format("{} times", r.run->world()->closeCount()),
                        w->pos.line);
   printCollisions(out, *r.run);
-  out << fmt::format("  outputs         {}  (ON: {})\n", lampText(m.outputs()), lampList(m.outputs()));
-  out << fmt::format("  inputs          {}  (ON: {})\n", lampText(m.inputs()), lampList(m.inputs()));
+  out << fmt::format("  outputs         {}  (ON: {})\n", runtime::lampText(m.outputs()), lampList(m.outputs()));
+  out << fmt::format("  inputs          {}  (ON: {})\n", runtime::lampText(m.inputs()), lampList(m.inputs()));
   std::string vars;
   for (std::size_t i = 0; i < im.variables.size(); ++i)
     vars += fmt::format("{}{}={}", i ? "  " : "", base::safeText(im.variables[i]), r.run->interpreter().variables()[i]);
@@ -125,18 +126,18 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     j["motors"] = motors;
     if (r.fault) {
       Json uncertain = Json::array(), on = Json::array();
-      for (const serial::FaultState::Motor& mo : r.fault->motors)
+      for (const rhino::FaultState::Motor& mo : r.fault->motors)
         if (mo.uncertain())
           uncertain.push_back({{"motor", std::string(1, mo.letter)}, {"confirmed", mo.confirmed}, {"commanded", mo.commanded}});
       for (int i = 0; i < 8; ++i)
         if ((r.fault->outputsOn >> i) & 1) on.push_back(i + 1);
       j["fault"] = {{"message", r.fault->failure}, {"uncertain_motors", uncertain}, {"outputs_left_on", on}};
     }
-    if (const auto tcp = r.run->tcp()) j["tcp"] = roundedPoint(*tcp);
+    if (const auto tcp = r.run->tcp()) j["tcp"] = runtime::roundedPoint(*tcp);
     if (r.run->cell()) {
       Json objects = Json::array();
       for (const runtime::ObjectView& e : r.run->objects())
-        objects.push_back({{"name", e.name}, {"at", roundedPoint({e.at.x(), e.at.y(), e.at.z()})}, {"held", e.held},
+        objects.push_back({{"name", e.name}, {"at", runtime::roundedPoint({e.at.x(), e.at.y(), e.at.z()})}, {"held", e.held},
                            {"moved", e.moved}});
       j["objects"] = objects;
     }

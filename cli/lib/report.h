@@ -8,7 +8,7 @@
 #include "diag/diagnostic.h"
 #include "runtime/run/profile.h"
 #include "runtime/run/run.h"
-#include "runtime/serial/rhino_machine.h"
+#include "runtime/rhino/rhino_machine.h"
 #include "vm/interpreter.h"
 
 namespace rs::cli {
@@ -23,7 +23,7 @@ struct RunReport {
   diag::Omitted omitted;                      // found beyond those kept
   /// A serial run that ended in a controller failure: which motors' places
   /// are uncertain, which outputs were left ON.
-  std::optional<serial::FaultState> fault;
+  std::optional<rhino::FaultState> fault;
   std::optional<runtime::Profile> profile;  // --profile: where the time went
   bool ok() const;
 };

@@ -8,7 +8,7 @@
 #include "base/text.h"
 #include "cli/lib/app.h"
 #include "cli/lib/number_args.h"
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/forward_kinematics.h"
 #include "model/kinematics/joint_values.h"

@@ -2,12 +2,13 @@
 
 #include <fmt/format.h>
 
+#include "base/seconds.h"
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/profile_report.h"
 #include "cli/lib/report.h"
 #include "cli/lib/run_warnings.h"
-#include "cli/lib/trace.h"
+#include "runtime/run/trace.h"
 #include "launch/run_diagnostics.h"
 #include "runtime/run/run.h"
 
@@ -57,14 +58,14 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   launch::printDiagnostics(err, program.diagnostics, program);  // warnings
 
   std::unique_ptr<runtime::Run> run;
-  const serial::RhinoMachine* controller = nullptr;  // owned by the run
+  const rhino::RhinoMachine* controller = nullptr;  // owned by the run
   if (o.serial.active()) {
     std::vector<diag::Diagnostic> problems;
     std::unique_ptr<vm::Machine> rhino =
         launch::openRhino(o.serial, spec->image->motors, spec->limits.maxTime, problems);
     launch::printDiagnostics(err, problems, program);
     if (!rhino) return kExitRunFailed;
-    controller = dynamic_cast<const serial::RhinoMachine*>(rhino.get());
+    controller = dynamic_cast<const rhino::RhinoMachine*>(rhino.get());
     run = std::make_unique<runtime::Run>(*spec, std::move(rhino));
   } else {
     runtime::RunSpec simulated = *spec;
@@ -72,9 +73,9 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     run = std::make_unique<runtime::Run>(simulated);
   }
   report.realTime = o.serial.active();
-  std::optional<TraceWriter> trace;
+  std::optional<runtime::TraceWriter> trace;
   if (!o.trace.empty()) {
-    trace.emplace(out, o.trace == "json" ? TraceFormat::Json : TraceFormat::Text, *run);
+    trace.emplace(out, o.trace == "json" ? runtime::TraceFormat::Json : runtime::TraceFormat::Text, *run);
     run->observe(*trace);
   }
   const vm::RunOutcome outcome = run->runToEnd();
@@ -93,7 +94,7 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);
   else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", base::safeText(image.sourceName),
-                          outcome.steps, vm::formatSeconds(run->clock()));
+                          outcome.steps, base::formatSeconds(run->clock()));
   if (!json && report.profile) printTextProfile(out, *report.profile);
   return outcome.ok() && !failedStrict ? kExitOk : kExitRunFailed;
 }

@@ -17,21 +17,21 @@
 #include "base/text.h"
 #include "cli/lib/app.h"
 #include "cli/lib/number_args.h"
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "launch/program.h"
 #include "launch/rhino.h"
-#include "runtime/serial/emulator.h"
-#include "runtime/serial/interrupt.h"
-#include "runtime/serial/rhino_machine.h"
-#include "runtime/serial/serial_port.h"
-#include "runtime/stimuli_text.h"
+#include "runtime/rhino/emulator.h"
+#include "runtime/rhino/interrupt.h"
+#include "runtime/rhino/rhino_machine.h"
+#include "runtime/rhino/serial_port.h"
+#include "compiler/stimuli/stimuli_text.h"
 #include "stdlib/default_robot.h"
 
 namespace rs::cli {
 namespace {
 
-using serial::Dialect;
-using serial::RhinoSettings;
+using rhino::Dialect;
+using rhino::RhinoSettings;
 
 // A whole number in lo..hi: an optional '+' (or a '-' for a signed type),
 // digits, and nothing else ("5x", "1e3", "" and "-1" for a count are not).
@@ -49,7 +49,7 @@ std::optional<T> parseWhole(std::string_view token, T lo, T hi) {
 
 std::string helpSettingsList() {
   std::string keys;
-  for (const auto& [key, value] : serial::listSettings(serial::defaultSettings(Dialect::Mark3))) {
+  for (const auto& [key, value] : rhino::listSettings(rhino::defaultSettings(Dialect::Mark3))) {
     if (key.rfind("switch.", 0) == 0 && key != "switch.A") continue;
     if (key.rfind("input.", 0) == 0 && key != "input.1") continue;
     if (key.rfind("output.", 0) == 0 && key != "output.1.on" && key != "output.1.off") continue;
@@ -62,8 +62,8 @@ std::string helpSettingsList() {
 CLI::Validator settingValidator() {
   return CLI::Validator(
       [](std::string& arg) {
-        RhinoSettings scratch = serial::defaultSettings(Dialect::Mark3);
-        return serial::applySettingArg(scratch, arg);
+        RhinoSettings scratch = rhino::defaultSettings(Dialect::Mark3);
+        return rhino::applySettingArg(scratch, arg);
       },
       "KEY=VALUE");
 }
@@ -100,11 +100,11 @@ CLI::App* addPortsCommand(CLI::App& app, PortsOptions& o) {
 }
 
 int portsCommand(const PortsOptions& o, std::ostream& out, std::ostream&) {
-  std::vector<serial::PortInfo> ports = serial::listPorts(o.root);
+  std::vector<rhino::PortInfo> ports = rhino::listPorts(o.root);
   std::size_t hidden = 0;
   if (!o.all) {
     const auto before = ports.size();
-    std::erase_if(ports, [](const serial::PortInfo& p) { return !p.likely; });
+    std::erase_if(ports, [](const rhino::PortInfo& p) { return !p.likely; });
     hidden = before - ports.size();
   }
   if (o.json) {
@@ -184,7 +184,7 @@ namespace {
 constexpr std::uint64_t kMaxFaultAfter = 1'000'000'000'000;
 
 struct EmulatorSession {
-  serial::PtyEmulator& emu;
+  rhino::PtyEmulator& emu;
   std::ostream& out;
   bool quit = false;
   vm::Micros waitUntil = 0;  // script: next line not before
@@ -214,24 +214,24 @@ std::string consoleCommand(EmulatorSession& s, const std::string& line) {
     s.emu.forceSwitch(letter, w[2] == "auto" ? std::nullopt : std::optional<bool>(w[2] == "closed"));
     s.out << fmt::format("switch {} {}\n", letter, w[2]);
   } else if (verb == "fault" && (w.size() == 2 || (w.size() == 4 && w[2] == "after"))) {
-    serial::FaultPlan plan;
-    if (!serial::parseFault(w[1], plan.kind)) return "fault takes silence, garbage, slow, hangup or off";
+    rhino::FaultPlan plan;
+    if (!rhino::parseFault(w[1], plan.kind)) return "fault takes silence, garbage, slow, hangup or off";
     if (w.size() == 4) {
       const auto after = parseWhole<std::uint64_t>(w[3], 0, kMaxFaultAfter);
       if (!after)
         return fmt::format("fault KIND after N: N is a whole number of commands 0..{}, not {}", kMaxFaultAfter,
-                           runtime::text::quoted(w[3]));
+                           stimuli::text::quoted(w[3]));
       plan.after = *after;
     }
     s.emu.setFault(plan);
   } else if (verb == "status") {
-    const serial::EmulatorSnapshot snap = s.emu.snapshot();
+    const rhino::EmulatorSnapshot snap = s.emu.snapshot();
     s.out << s.emu.statusLine() << '\n';
-    for (const serial::EmulatedMotor& m : snap.motors)
+    for (const rhino::EmulatedMotor& m : snap.motors)
       s.out << fmt::format("  motor {}: position {}, step rate {}/s{}\n", m.letter, m.position, std::lround(m.rate),
                            m.used ? "" : " (not in the robot)");
   } else if (verb == "wait" && w.size() == 2) {
-    const runtime::text::SecondsParse sec = runtime::text::parseSeconds(w[1]);
+    const stimuli::text::SecondsParse sec = stimuli::text::parseSeconds(w[1]);
     if (!sec.error.empty()) return "wait: " + sec.error;
     s.waitUntil = s.emu.now() + sec.micros;
   } else {
@@ -268,7 +268,7 @@ std::string motorList(const std::vector<vm::MotorSpec>& motors) {
 }  // namespace
 
 int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err) {
-  serial::EmulatorConfig config;
+  rhino::EmulatorConfig config;
   std::vector<diag::Diagnostic> problems;
   if (!launch::buildSettings(o.dialect, o.settingsFile, o.settings, config.settings, problems)) {
     for (const diag::Diagnostic& d : problems) err << diag::render(d, nullptr);
@@ -284,7 +284,7 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
     if (!robot) return kExitBadInput;
     config.motors = compiler::motorTable(*robot);
   }
-  if (std::string e = serial::unsupportedMotor(config.settings.dialect, config.motors); !e.empty()) {
+  if (std::string e = rhino::unsupportedMotor(config.settings.dialect, config.motors); !e.empty()) {
     err << "robotsim: error: " << e << '\n';
     return kExitBadInput;
   }
@@ -295,7 +295,7 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
   config.rateScale = o.speed;
   config.latency = static_cast<vm::Micros>(std::llround(o.latency * 1e6));
   config.switchWidth = o.switchWidth;
-  serial::parseFault(o.fault, config.fault.kind);
+  rhino::parseFault(o.fault, config.fault.kind);
   config.fault.after = o.faultAfter;
   config.fault.slowDelay = static_cast<vm::Micros>(std::llround(o.slowDelay * 1e6));
   std::vector<std::string> script;
@@ -309,7 +309,7 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
     for (std::string line; std::getline(lines, line);) script.push_back(line);
   }
 
-  std::unique_ptr<serial::PtyEmulator> emu = serial::PtyEmulator::open(config, error);
+  std::unique_ptr<rhino::PtyEmulator> emu = rhino::PtyEmulator::open(config, error);
   if (!emu) {
     err << "robotsim: error: " << error << '\n';
     return kExitRunFailed;
@@ -321,19 +321,19 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
     std::filesystem::create_symlink(emu->path(), o.link, ec);
     if (ec) err << fmt::format("robotsim: warning: cannot make the link {}: {}\n", o.link, ec.message());
   }
-  const std::string dialect(serial::dialectName(config.settings.dialect));
-  out << fmt::format("Rhino {} controller emulator on {}{}\n", serial::dialectTitle(config.settings.dialect), emu->path(),
+  const std::string dialect(rhino::dialectName(config.settings.dialect));
+  out << fmt::format("Rhino {} controller emulator on {}{}\n", rhino::dialectTitle(config.settings.dialect), emu->path(),
                      o.link.empty() ? "" : " (also " + o.link + ")");
   out << fmt::format("robot {}: motors {}; line {}\n", o.robot, motorList(config.motors),
                      describe(config.settings.line));
   out << fmt::format("connect: robotsim run PROGRAM --device {} --dialect {}\n", o.link.empty() ? emu->path() : o.link,
                      dialect);
-  if (config.fault.kind != serial::FaultKind::None)
-    out << fmt::format("fault: {} after {} commands\n", serial::faultName(config.fault.kind), config.fault.after);
+  if (config.fault.kind != rhino::FaultKind::None)
+    out << fmt::format("fault: {} after {} commands\n", rhino::faultName(config.fault.kind), config.fault.after);
   out << (o.noStdin ? "Ctrl-C quits.\n" : "Type 'help' for commands; Ctrl-C or 'quit' stops.\n");
   out.flush();
 
-  serial::InterruptGuard guard;
+  rhino::InterruptGuard guard;
   EmulatorSession session{*emu, out};
   const bool statusLine = !o.quiet && &out == &std::cout && ::isatty(STDOUT_FILENO);
   bool stdinOpen = !o.noStdin;

@@ -1,6 +1,6 @@
 // The Rhino serial backend on the command line: the --device options of
 // run and check, `robotsim ports` and `robotsim emulate`. Everything is in
-// runtime/serial; this file only parses flags, opens, prints.
+// runtime/rhino; this file only parses flags, opens, prints.
 // docs/serial.md is the user's guide.
 #pragma once
 

@@ -12,7 +12,7 @@
 #include "cli/lib/open_browser.h"
 #include "cli/lib/options.h"
 #include "cli/lib/serial_commands.h"
-#include "runtime/serial/interrupt.h"
+#include "runtime/rhino/interrupt.h"
 #include "teach/live_server.h"
 #include "teach/page.h"
 #include "teach/pendant_source.h"
@@ -90,7 +90,7 @@ int teachCommand(const TeachOptions& o, std::ostream& out, std::ostream& err) {
     err << fmt::format("--listen: error: '{}' is not HOST or HOST:PORT\n", o.listen);
     return kExitBadInput;
   }
-  const serial::InterruptGuard interrupt;  // Ctrl-C raises its flag: the loop below stops the server
+  const rhino::InterruptGuard interrupt;  // Ctrl-C raises its flag: the loop below stops the server
   teach::OpenedPendant opened = teach::openPendant(o.request);
   if (!opened.ok()) {
     launch::printDiagnostics(err, opened.diagnostics, opened.loaded);

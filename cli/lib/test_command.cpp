@@ -10,11 +10,12 @@
 #include <thread>
 
 #include "base/file_io.h"
+#include "base/seconds.h"
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/number_args.h"
 #include "cli/lib/options.h"
-#include "cli/lib/trace.h"
+#include "runtime/run/trace.h"
 #include "diag/diagnostic.h"
 #include "testrun/suite.h"
 #include "vm/interpreter.h"
@@ -97,7 +98,7 @@ std::string gradeTable(const std::vector<testrun::TestResult>& results, bool csv
   if (csv) {
     out = "file,passed,scenarios,simulated_seconds,first_problem\n";
     for (const Row& r : rows)
-      out += fmt::format("{},{},{},{},{}\n", quote(r.file), r.passed, r.total, vm::formatSeconds(r.time),
+      out += fmt::format("{},{},{},{},{}\n", quote(r.file), r.passed, r.total, base::formatSeconds(r.time),
                          quote(r.firstProblem));
     return out;
   }
@@ -106,7 +107,7 @@ std::string gradeTable(const std::vector<testrun::TestResult>& results, bool csv
   out = fmt::format("{:<{}}  passed  simulated   first problem\n", "program", width);
   for (const Row& r : rows) {
     std::string line = fmt::format("{:<{}}  {:>6}  {:>9} s  {}", r.file, width, fmt::format("{}/{}", r.passed, r.total),
-                                   vm::formatSeconds(r.time), r.firstProblem);
+                                   base::formatSeconds(r.time), r.firstProblem);
     while (line.back() == ' ') line.pop_back();
     out += line + '\n';
   }
@@ -168,9 +169,6 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
   runner.coverage = o.coverage || !o.lcov.empty();
   runner.update = o.update;
   runner.collisions = o.collisions;
-  runner.traceMaker = [](std::ostream& to, const runtime::Run& run) -> std::unique_ptr<vm::StepObserver> {
-    return std::make_unique<TraceWriter>(to, TraceFormat::Text, run);
-  };
   testrun::runTests(selection, runner, jobs, o.spec, [&](const testrun::TestResult& r) {
     passed += r.status == testrun::TestStatus::Passed;
     failed += r.status == testrun::TestStatus::Failed;
@@ -180,7 +178,7 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
                          testrun::statusName(r.status));
       if (r.status == testrun::TestStatus::Passed)
         out << fmt::format(" ({} expectation{}, {} s simulated{})", r.expectations, r.expectations == 1 ? "" : "s",
-                           vm::formatSeconds(r.simulated),
+                           base::formatSeconds(r.simulated),
                            r.warnings.empty() ? std::string()
                                               : fmt::format(", {} warning{}", r.warnings.size(),
                                                             r.warnings.size() == 1 ? "" : "s"));

@@ -15,7 +15,7 @@
 
 #include "base/ascii.h"
 #include "base/near_names.h"
-#include "compiler/ast_builder.h"
+#include "compiler/program/ast_builder.h"
 #include "lsp/features/features.h"
 #include "lsp/protocol.h"
 #include "vm/opcodes.h"

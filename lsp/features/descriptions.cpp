@@ -10,13 +10,13 @@
 #include "base/ascii.h"
 #include "base/file_io.h"
 #include "base/number_text.h"
-#include "compiler/description.h"
-#include "compiler/library.h"
+#include "compiler/description/description.h"
+#include "compiler/description/library.h"
 #include "lsp/features/features.h"
 #include "lsp/protocol.h"
 #include "lsp/uri.h"
 #include "model/kinematics/dh.h"
-#include "runtime/stimuli.h"
+#include "compiler/stimuli/stimuli.h"
 
 namespace rs::lsp {
 
@@ -207,7 +207,7 @@ Json descriptionDefinition(const Document& doc, Encoding enc, Position at, const
 }
 
 Json stimuliDiagnostics(const Document& doc, Encoding enc) {
-  const runtime::StimuliParse parsed = runtime::parseStimuli(doc.text(), nameOf(doc));
+  const stimuli::StimuliParse parsed = stimuli::parseStimuli(doc.text(), nameOf(doc));
   Json out = Json::array();
   for (const diag::Diagnostic& d : parsed.errors) {
     // Stimuli columns count bytes: convert through UTF-8.
@@ -238,13 +238,13 @@ Json stimuliSymbols(const Document& doc, Encoding enc) {
 Json stimuliHover(const Document& doc, Encoding enc, Position at) {
   const std::string_view code = codeOf(doc.line(at.line));
   if (code.find_first_not_of(" \t") == std::string_view::npos) return nullptr;
-  const runtime::StimuliParse one = runtime::parseStimuli(code, "line");
+  const stimuli::StimuliParse one = stimuli::parseStimuli(code, "line");
   if (!one.errors.empty()) return nullptr;
   const auto state = [](bool on) { return on ? "ON" : "OFF"; };
   std::string text;
-  for (const runtime::InputChange& c : one.stimuli.changes)
+  for (const stimuli::InputChange& c : one.stimuli.changes)
     text = fmt::format("at {} input {} turns {}", formatSeconds(c.at), c.input, state(c.on));
-  for (const runtime::ReactiveRule& r : one.stimuli.rules)
+  for (const stimuli::ReactiveRule& r : one.stimuli.rules)
     text = fmt::format("whenever output {} turns {}, input {} turns {} {} later", r.output, state(r.outputOn), r.input,
                        state(r.inputOn), formatSeconds(r.delay));
   if (text.empty()) return nullptr;

@@ -25,8 +25,8 @@
 #include <algorithm>
 
 #include "base/ascii.h"
-#include "compiler/compiler.h"
-#include "compiler/lexer.h"
+#include "compiler/program/compiler.h"
+#include "compiler/program/lexer.h"
 #include "lsp/features/features.h"
 #include "lsp/protocol.h"
 

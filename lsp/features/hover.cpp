@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "base/number_text.h"
+#include "base/seconds.h"
 #include "lsp/features/features.h"
 #include "lsp/protocol.h"
 #include "model/workcell/tool_tracker.h"
@@ -30,7 +31,7 @@ std::string motorList(const std::vector<vm::MotorSpec>& motors) {
     out += fmt::format("{}- `{}` {}, {}..{}, {} units/s", out.empty() ? "" : "\n", m.letter, kind, m.min, m.max, m.speed);
     // Only when set, so a constant-speed motor reads as it always did.
     if (m.acceleration > 0) out += fmt::format(", {} units/s²", m.acceleration);
-    if (m.actuation > 0) out += fmt::format(", {} s a move", vm::formatSeconds(m.actuation));
+    if (m.actuation > 0) out += fmt::format(", {} s a move", base::formatSeconds(m.actuation));
   }
   return out;
 }

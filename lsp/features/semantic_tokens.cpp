@@ -1,7 +1,7 @@
 // textDocument/semanticTokens/full: the compiler's lexer gives the words,
 // the index says what each name is; comments are what follows ';'.
-#include "compiler/compiler.h"
-#include "compiler/lexer.h"
+#include "compiler/program/compiler.h"
+#include "compiler/program/lexer.h"
 #include "base/ascii.h"
 #include "lsp/features/features.h"
 

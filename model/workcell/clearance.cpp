@@ -1,5 +1,5 @@
 // The clearance of one pose, for the swept check's conservative
-// advancement (runtime/collision_watch.h): the same pairs in the same order
+// advancement (runtime/sim/collision_watch.h): the same pairs in the same order
 // as CollisionData::scan, the same overlap decision for each (the first
 // overlap is findContact's), and for each moving part the gaps it could
 // close before its move ends, each a distance along a direction. A gap

@@ -88,7 +88,7 @@ class Grasping {
   /// frame⁻¹·(frame·offset), which rounding would otherwise drift by an ulp
   /// or two a take: a loop that puts a block down and takes it again then
   /// leaves the world bit for bit as it was, so the swept check's memory of
-  /// moves (runtime/sweep_memo.h) answers its moves again.
+  /// moves (runtime/sim/sweep_memo.h) answers its moves again.
   struct LetGo {
     Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
     Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();

@@ -58,7 +58,7 @@ struct Gripper {
   std::int32_t min = 0, max = 0;  // min = open, max = closed
   std::int32_t speed = 200;
   std::int32_t acceleration = 0;  // encoder units per second², 0 = constant speed
-  std::int32_t actuation = 0;     // microseconds every move takes, 0 = by speed (runtime/motion.h)
+  std::int32_t actuation = 0;     // microseconds every move takes, 0 = by speed (runtime/sim/motion.h)
   kinematics::GripperModel model;  // r2, r3, F_G_E, precision
 };
 
@@ -69,7 +69,7 @@ struct JointSpec {
   std::int32_t min = 0, max = 0;
   bool coupling = false;
   std::int32_t speed = 400;  // encoder units per second
-  std::int32_t acceleration = 0;  // encoder units per second², 0 = constant speed (runtime/motion.h)
+  std::int32_t acceleration = 0;  // encoder units per second², 0 = constant speed (runtime/sim/motion.h)
 };
 
 /// A robot: links 0..n in order (0 = base) with their home frames F_design_i,

@@ -3,7 +3,7 @@
 //
 //   time t  -> the step in progress (binary search on the steps' starts)
 //           -> each motor's encoder count (its last segment through
-//              runtime/motion.h's profile, rounded as positionAt rounds)
+//              runtime/sim/motion.h's profile, rounded as positionAt rounds)
 //           -> the shared drawing code (page_draw_script.cpp): forward
 //              kinematics, the camera, one stroke per EGA colour.
 //
@@ -61,7 +61,7 @@ const std::string_view kScript = R"JS('use strict';
     return lo - 1;
   }
   function stepAt(t) { return lastUpTo(run.start, t); }
-  // runtime/motion.h's profiles, exactly: constant speed in doubles (every
+  // runtime/sim/motion.h's profiles, exactly: constant speed in doubles (every
   // product stays below 2^53), the rest in BigInt.
   function phasesOf(v, a, d) {  // BigInts; [ta, tc] in whole microseconds
     const M = 1000000n;

@@ -20,12 +20,12 @@
 #include <vector>
 
 #include "model/workcell/model.h"
-#include "runtime/cell_machine.h"
-#include "runtime/collision_watch.h"
+#include "runtime/sim/cell_machine.h"
+#include "runtime/sim/collision_watch.h"
 #include "runtime/run/run_log.h"
-#include "runtime/sim_machine.h"
-#include "runtime/stimuli.h"
-#include "runtime/world.h"
+#include "runtime/sim/sim_machine.h"
+#include "compiler/stimuli/stimuli.h"
+#include "runtime/sim/world.h"
 #include "vm/image.h"
 #include "vm/interpreter.h"
 
@@ -35,11 +35,11 @@ namespace rs::runtime {
 struct RunSpec {
   std::shared_ptr<const vm::Image> image;          ///< verified (vm::verify)
   std::shared_ptr<const workcell::Workcell> cell;  ///< may be null; its first robot runs the program
-  Stimuli stimuli;
+  stimuli::Stimuli stimuli;
   vm::RunLimits limits;
   bool log = false;  ///< keep a RunLog (simulated machine only)
   /// On a workcell, on the simulated machine: what a collision during a
-  /// move does (runtime/collision_watch.h); a run with Off checks nothing.
+  /// move does (runtime/sim/collision_watch.h); a run with Off checks nothing.
   CollisionMode collisions = CollisionMode::Error;
 };
 
@@ -95,7 +95,7 @@ struct RunSnapshot {
   std::optional<RunLog::Mark> log;
   /// Every collision found so far (in error mode one at most): restoring
   /// puts them back, whether the run is behind or ahead of the snapshot.
-  /// What else the swept check keeps is a cache (runtime/sweep_memo.h).
+  /// What else the swept check keeps is a cache (runtime/sim/sweep_memo.h).
   std::vector<CollisionEvent> collisions;
   bool operator==(const RunSnapshot&) const = default;
 };
@@ -181,7 +181,7 @@ class Run {
   const vm::Image& image() const { return *spec_.image; }
   const workcell::Workcell* cell() const { return spec_.cell.get(); }
   const vm::RunLimits& limits() const { return spec_.limits; }
-  const Stimuli& stimuli() const { return spec_.stimuli; }
+  const stimuli::Stimuli& stimuli() const { return spec_.stimuli; }
   const vm::Interpreter& interpreter() const { return *interpreter_; }
   /// The machine the program drives (with the world's reactions, on a cell).
   const vm::Machine& machine() const { return *front_; }

@@ -11,8 +11,8 @@
 #include <optional>
 #include <vector>
 
-#include "runtime/sim_machine.h"
-#include "runtime/world.h"
+#include "runtime/sim/sim_machine.h"
+#include "runtime/sim/world.h"
 #include "vm/interpreter.h"
 
 namespace rs::runtime {
@@ -57,7 +57,7 @@ struct VariableWrite {
   bool operator==(const VariableWrite&) const = default;
 };
 
-/// A take or a let-go (runtime/world.h) during step `step`.
+/// A take or a let-go (runtime/sim/world.h) during step `step`.
 struct GraspRecord {
   std::uint32_t step = 0;
   GraspEvent event;
@@ -136,7 +136,7 @@ RunState stateAtStep(const RunLog& log, std::size_t step, vm::Micros t);
 /// Variable slot `slot`'s value at time t (after every write due at t).
 std::int32_t variableAt(const RunLog& log, std::uint32_t slot, vm::Micros t);
 
-/// positionAt (runtime/motion.h, what SimMachine answers) for one logged move.
+/// positionAt (runtime/sim/motion.h, what SimMachine answers) for one logged move.
 std::int32_t positionAt(const MotorMove& move, const vm::MotorSpec& motor, vm::Micros t);
 
 }  // namespace rs::runtime

@@ -29,7 +29,7 @@ struct CrashRestore {
 } crash;
 
 // The SIGINT handler in force before the pendant's: with --device, the
-// serial layer's (runtime/serial/interrupt.h), which makes a move under
+// serial layer's (runtime/rhino/interrupt.h), which makes a move under
 // way stop every motor at the first Ctrl-C and writes stop to the port and
 // exits at a second. The pendant's handler calls it too, so Ctrl-C stops a
 // real robot as in a run.

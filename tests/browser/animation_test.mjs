@@ -82,7 +82,7 @@ fs.writeFileSync(highProgram, ['MOVETO -2800 2800 0 0', 'MOVETO -2800 2800 1100 
 const highHtml = path.join(out, 'high.html');
 robotsim(['animate', highProgram, '--cell', 'gantry-cell', '-o', highHtml]);
 const gantryStills = stills(gantryProgram, 'gantry-cell', Object.values(GANTRY_AT));
-// The IRB 120's joints accelerate (runtime/motion.h, mirrored in the page
+// The IRB 120's joints accelerate (runtime/sim/motion.h, mirrored in the page
 // with BigInt): a trapezoid on G and F (0 to 0.449287 s), a triangle on E
 // (to 0.533805 s), the gripper's fixed 0.1 s (to 0.633805 s); moments in
 // each phase of each.

@@ -17,9 +17,9 @@
 #include "tests/cli/cli_support.h"
 #include "tests/vm/image_support.h"
 #include "cli/lib/report.h"
-#include "cli/lib/trace.h"
-#include "compiler/compiler.h"
-#include "compiler/library.h"
+#include "runtime/run/trace.h"
+#include "compiler/program/compiler.h"
+#include "compiler/description/library.h"
 #include "diag/source_file.h"
 #include "launch/program.h"
 #include "runtime/run/run.h"
@@ -388,8 +388,8 @@ TEST_CASE("cli: the trace and the summary escape every name", "[cli]") {
   spec.cell = std::make_shared<const rs::workcell::Workcell>(*cell);
   rs::runtime::Run run(std::move(spec));
   std::ostringstream text, jsonTrace, summary;
-  rs::cli::TraceWriter textWriter(text, rs::cli::TraceFormat::Text, run);
-  rs::cli::TraceWriter jsonWriter(jsonTrace, rs::cli::TraceFormat::Json, run);
+  rs::runtime::TraceWriter textWriter(text, rs::runtime::TraceFormat::Text, run);
+  rs::runtime::TraceWriter jsonWriter(jsonTrace, rs::runtime::TraceFormat::Json, run);
   run.observe(textWriter);
   run.observe(jsonWriter);
   REQUIRE(run.runToEnd().ok());

@@ -13,8 +13,8 @@
 #include <span>
 
 #include "model/workcell/collision_model.h"
-#include "runtime/sim_machine.h"
-#include "runtime/world.h"
+#include "runtime/sim/sim_machine.h"
+#include "runtime/sim/world.h"
 
 namespace collisiontest {
 

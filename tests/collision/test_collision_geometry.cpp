@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "model/workcell/collision_model.h"
 #include "tests/cli/cli_support.h"
 

@@ -11,7 +11,7 @@
 #include <cmath>
 
 #include "../render/render_test_util.h"
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "model/workcell/collision_model.h"
 #include "runtime/run/run.h"
 

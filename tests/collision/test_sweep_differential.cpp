@@ -20,7 +20,7 @@
 
 #include <random>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "launch/program.h"
 #include "model/workcell/pose_solver.h"
 #include "runtime/run/run.h"

@@ -3,7 +3,7 @@
 // a related location, which the CLI prints as a note.
 #include <catch2/catch.hpp>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "stdlib/default_robot.h"
 #include "tests/cli/cli_support.h"
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "compiler/compiler.h"
-#include "compiler/description.h"
+#include "compiler/program/compiler.h"
+#include "compiler/description/description.h"
 #include "diag/diagnostic.h"
 #include "stdlib/default_robot.h"
 

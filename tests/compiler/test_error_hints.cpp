@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "diag/diagnostic.h"
 #include "stdlib/default_robot.h"
 

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "RobotProgramParser.h"
-#include "compiler/ast_builder.h"
-#include "compiler/lexer.h"
-#include "compiler/line_reader.h"
-#include "compiler/parse_tree.h"
+#include "compiler/program/ast_builder.h"
+#include "compiler/program/lexer.h"
+#include "compiler/program/line_reader.h"
+#include "compiler/program/parse_tree.h"
 #include "stdlib/default_robot.h"
 
 namespace {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "compiler/compiler.h"
-#include "compiler/lexer.h"
+#include "compiler/program/compiler.h"
+#include "compiler/program/lexer.h"
 #include "diag/diagnostic.h"
 #include "stdlib/default_robot.h"
 

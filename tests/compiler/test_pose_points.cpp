@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 #include <string>
 
-#include "compiler/compiler.h"
-#include "compiler/library.h"
+#include "compiler/program/compiler.h"
+#include "compiler/description/library.h"
 #include "launch/program.h"
 #include "model/workcell/tool_tracker.h"
 #include "vm/disasm.h"

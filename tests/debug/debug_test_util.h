@@ -8,7 +8,7 @@
 #include <string>
 
 #include "../render/render_test_util.h"
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "launch/program.h"
 #include "runtime/run/run.h"
 
@@ -17,7 +17,7 @@ namespace debugtest {
 inline const std::string kExamples = rendertest::kSourceDir + "/examples/";
 
 /// `text` compiled for the default robot (no workcell).
-inline rs::runtime::RunSpec specOf(const std::string& text, rs::runtime::Stimuli stimuli = {}) {
+inline rs::runtime::RunSpec specOf(const std::string& text, rs::stimuli::Stimuli stimuli = {}) {
   const rs::diag::SourceFile source("program.rsp", text);
   rs::compiler::CompileResult p = rs::compiler::compile(source, rs::launch::defaultTarget());
   for (const auto& d : p.diagnostics) INFO(d.message);

@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 
+#include "base/seconds.h"
 #include "cli/lib/debug_view.h"
 #include "debug/console.h"
 #include "tests/cli/cli_support.h"
@@ -77,7 +78,7 @@ void checkAgainstConsole(Viewed& v, const json& s) {
   CHECK(v.run("print tcp") == fmt::format("tcp = ({:.3f}, {:.3f}, {:.3f})\n", tcp[0].get<double>(), tcp[1].get<double>(),
                                           tcp[2].get<double>()));
   CHECK(v.run("print clock") == fmt::format("clock = {} s (step {})\n",
-                                            rs::vm::formatSeconds(s["clock"].get<rs::vm::Micros>()),
+                                            rs::base::formatSeconds(s["clock"].get<rs::vm::Micros>()),
                                             s["steps"].get<std::uint64_t>()));
 }
 

@@ -28,8 +28,8 @@ int programCount() {
 
 // Timed changes on random inputs at random times within the first 30 s:
 // WAITFOR and JMPIN in the generated programs then take other branches.
-rs::runtime::Stimuli randomStimuli(std::mt19937_64& rng) {
-  rs::runtime::Stimuli s;
+rs::stimuli::Stimuli randomStimuli(std::mt19937_64& rng) {
+  rs::stimuli::Stimuli s;
   const int n = static_cast<int>(rng() % 6);
   for (int i = 0; i < n; ++i)
     s.changes.push_back({static_cast<rs::vm::Micros>(rng() % 30'000'000), static_cast<int>(1 + rng() % 8), rng() % 2 == 0});

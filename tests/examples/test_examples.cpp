@@ -34,8 +34,8 @@
 #include "cli/lib/app.h"
 #include "cli/lib/exit_codes.h"
 #include "launch/program.h"
-#include "compiler/compiler.h"
-#include "compiler/library.h"
+#include "compiler/program/compiler.h"
+#include "compiler/description/library.h"
 #include "tests/cli/cli_support.h"
 #include "vm/opcodes.h"
 

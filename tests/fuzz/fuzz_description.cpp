@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::filesystem::path file = [] {

@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "launch/program.h"
 #include "teach/http_frame.h"
 #include "teach/live_routes.h"

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "diag/diagnostic.h"
 #include "launch/program.h"
 #include "vm/image_file.h"

@@ -10,43 +10,43 @@
 #include <vector>
 
 #include "launch/program.h"
-#include "runtime/serial/link.h"
-#include "runtime/serial/rhino_machine.h"
-#include "runtime/serial/settings.h"
+#include "runtime/rhino/link.h"
+#include "runtime/rhino/rhino_machine.h"
+#include "runtime/rhino/settings.h"
 
 namespace {
 
-class ReplayLink final : public rs::serial::Link {
+class ReplayLink final : public rs::rhino::Link {
  public:
-  ReplayLink(std::span<const std::uint8_t> replies, rs::serial::ManualClock& clock) : rest_(replies), clock_(clock) {}
+  ReplayLink(std::span<const std::uint8_t> replies, rs::rhino::ManualClock& clock) : rest_(replies), clock_(clock) {}
 
-  rs::serial::IoResult write(std::span<const std::uint8_t> bytes, rs::serial::Micros) override {
+  rs::rhino::IoResult write(std::span<const std::uint8_t> bytes, rs::rhino::Micros) override {
     // One reply per command line: the next record becomes readable.
     if (!bytes.empty() && (bytes.back() == '\r' || bytes.back() == '\n') && !rest_.empty()) {
       const std::size_t n = std::min<std::size_t>(rest_[0], rest_.size() - 1);
       pending_.insert(pending_.end(), rest_.begin() + 1, rest_.begin() + 1 + static_cast<std::ptrdiff_t>(n));
       rest_ = rest_.subspan(1 + n);
     }
-    return rs::serial::IoResult::ok(bytes.size());
+    return rs::rhino::IoResult::ok(bytes.size());
   }
 
-  rs::serial::IoResult read(std::span<std::uint8_t> buffer, rs::serial::Micros timeout) override {
+  rs::rhino::IoResult read(std::span<std::uint8_t> buffer, rs::rhino::Micros timeout) override {
     if (pending_.empty()) {
-      if (rest_.empty() && timeout > 0 && ++idle_ > 1000) return rs::serial::IoResult::closed("end of the fuzz input");
+      if (rest_.empty() && timeout > 0 && ++idle_ > 1000) return rs::rhino::IoResult::closed("end of the fuzz input");
       clock_.sleepFor(timeout);
-      return rs::serial::IoResult::timeout();
+      return rs::rhino::IoResult::timeout();
     }
     const std::size_t n = std::min(buffer.size(), pending_.size());
     std::copy_n(pending_.begin(), n, buffer.begin());
     pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(n));
-    return rs::serial::IoResult::ok(n);
+    return rs::rhino::IoResult::ok(n);
   }
 
   std::string name() const override { return "fuzz"; }
 
  private:
   std::span<const std::uint8_t> rest_;
-  rs::serial::ManualClock& clock_;
+  rs::rhino::ManualClock& clock_;
   std::vector<std::uint8_t> pending_;
   int idle_ = 0;
 };
@@ -56,10 +56,10 @@ class ReplayLink final : public rs::serial::Link {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   static const std::vector<rs::vm::MotorSpec> motors = rs::launch::defaultTarget().motors;
-  const auto dialect = (data[0] & 1) ? rs::serial::Dialect::Mark4 : rs::serial::Dialect::Mark3;
-  rs::serial::ManualClock clock;
+  const auto dialect = (data[0] & 1) ? rs::rhino::Dialect::Mark4 : rs::rhino::Dialect::Mark3;
+  rs::rhino::ManualClock clock;
   ReplayLink link(std::span(data + 1, size - 1), clock);
-  rs::serial::RhinoMachine machine(motors, rs::serial::defaultSettings(dialect), link, clock);
+  rs::rhino::RhinoMachine machine(motors, rs::rhino::defaultSettings(dialect), link, clock);
   if (!machine.open()) return 0;
   std::vector<std::int32_t> target;
   for (const rs::vm::MotorSpec& m : motors) target.push_back(m.min + (m.max - m.min) / 3);

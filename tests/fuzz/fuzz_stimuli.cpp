@@ -3,9 +3,9 @@
 #include <cstdint>
 #include <string_view>
 
-#include "runtime/stimuli.h"
+#include "compiler/stimuli/stimuli.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  (void)rs::runtime::parseStimuli(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.stim");
+  (void)rs::stimuli::parseStimuli(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.stim");
   return 0;
 }

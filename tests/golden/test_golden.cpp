@@ -40,7 +40,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "tests/cli/cli_support.h"
 
 namespace {

@@ -16,7 +16,7 @@
 #include <random>
 #include <vector>
 
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/forward_kinematics.h"
 #include "model/kinematics/ik.h"

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "model/kinematics/angles.h"
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/forward_kinematics.h"

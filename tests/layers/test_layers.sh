@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The layer check (scripts/check-layers.sh) passes on the tree, and fails
 # on copies of it with an include planted that points up, or sideways into
-# a layer that is not allowed, naming the file, the line and the layers.
+# a layer that is not allowed, naming the file, the line and the layers,
+# and on a list that allows an edge no include uses.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 check="$root/scripts/check-layers.sh"
@@ -26,16 +27,25 @@ expect_failure() {  # FILE LINE-TO-PLANT EXPECTED-TEXT
   fi
   echo "ok: '$2' in $1 is refused"
 }
-expect_failure vm/opcodes.cpp '#include "compiler/compiler.h"' \
+expect_failure vm/opcodes.cpp '#include "compiler/program/compiler.h"' \
   'vm/opcodes.cpp:'
-expect_failure vm/opcodes.cpp '#include "compiler/compiler.h"' \
-  'vm includes "compiler/compiler.h" of layer compiler, which vm may not include'
+expect_failure vm/opcodes.cpp '#include "compiler/program/compiler.h"' \
+  'vm includes "compiler/program/compiler.h" of layer compiler/program, which vm may not include'
 expect_failure model/kinematics/frame.cpp '#include "model/workcell/model.h"' \
   'model/kinematics includes "model/workcell/model.h" of layer model/workcell'
-expect_failure runtime/sim_machine.cpp '#include "runtime/render/scene.h"' \
-  'runtime includes "runtime/render/scene.h" of layer runtime/render'
+expect_failure runtime/sim/sim_machine.cpp '#include "runtime/render/scene.h"' \
+  'runtime/sim includes "runtime/render/scene.h" of layer runtime/render'
 expect_failure diag/diagnostic.cpp '#include "../vm/opcodes.h"' \
   'diag includes "vm/opcodes.h" of layer vm'
-expect_failure compiler/lexer.cpp '#include "nowhere.h"' \
+expect_failure compiler/program/lexer.cpp '#include "nowhere.h"' \
   'include "nowhere.h" names no file of the tree'
-echo "layers: every planted upward include was caught"
+# An edge the list allows and no include uses: refused, naming the edge.
+copy
+sed -i 's|^teach/tui *: .*|& vm|' "$work/tree/scripts/layers.txt"
+if out=$(bash "$check" "$work/tree" 2>&1); then
+  echo "FAIL: the check passed with an unused edge teach/tui -> vm in the list" >&2; exit 1
+fi
+grep -qF 'layer teach/tui may include vm, but no file of it does' <<<"$out" ||
+  { echo "FAIL: expected the unused edge named in:" >&2; echo "$out" >&2; exit 1; }
+echo "ok: an allowed edge no include uses is refused"
+echo "layers: every planted upward include and the unused edge were caught"

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "cli/lib/app.h"
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "model/kinematics/gripper.h"
 #include "stdlib/default_robot.h"
 #include "tests/cli/cli_support.h"

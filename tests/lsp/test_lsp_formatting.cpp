@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "launch/program.h"
 #include "lsp/features/features.h"
 #include "lsp/program_analysis.h"

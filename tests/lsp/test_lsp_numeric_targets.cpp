@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "launch/program.h"
 #include "tests/lsp/lsp_session.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "tests/models/models_support.h"
 
 namespace rs::testing {

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "tests/cli/cli_support.h"
 
 namespace rs::testing {

@@ -23,7 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "model/workcell/cell_file.h"
 #include "model/workcell/tool_tracker.h"
 #include "tests/models/models_support.h"

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "compiler/description.h"
-#include "compiler/library.h"
+#include "compiler/description/description.h"
+#include "compiler/description/library.h"
 #include "tests/models/description_errors_support.h"
 
 namespace {

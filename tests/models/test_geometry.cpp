@@ -17,8 +17,8 @@
 #include <tuple>
 #include <vector>
 
-#include "compiler/description.h"
-#include "compiler/library.h"
+#include "compiler/description/description.h"
+#include "compiler/description/library.h"
 #include "tests/models/models_support.h"
 
 namespace {

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/library.h"
+#include "compiler/description/library.h"
 #include "tests/models/models_support.h"
 
 namespace {

@@ -12,8 +12,8 @@
 #include <memory>
 
 #include "base/file_io.h"
-#include "compiler/compiler.h"
-#include "compiler/library.h"
+#include "compiler/program/compiler.h"
+#include "compiler/description/library.h"
 #include "launch/program.h"
 #include "model/workcell/model.h"
 #include "runtime/run/run.h"
@@ -58,7 +58,7 @@ inline rs::vm::Image compile(const std::string& path, const rs::workcell::Workce
 /// (its fingers graze the pallet: docs/models.md, "Collisions") pass
 /// CollisionMode::Off.
 inline std::unique_ptr<rs::runtime::Run> runOf(const rs::vm::Image& image, const rs::workcell::Workcell* c,
-                                               rs::runtime::Stimuli stimuli = {}, bool log = false,
+                                               rs::stimuli::Stimuli stimuli = {}, bool log = false,
                                                rs::runtime::CollisionMode collisions = rs::runtime::CollisionMode::Error) {
   rs::runtime::RunSpec spec;
   spec.collisions = collisions;

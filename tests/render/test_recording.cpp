@@ -19,7 +19,7 @@ struct Recorded {
   rs::vm::RunOutcome outcome;
 };
 
-Recorded record(const rs::vm::Image& image, const rs::runtime::Stimuli& stimuli) {
+Recorded record(const rs::vm::Image& image, const rs::stimuli::Stimuli& stimuli) {
   const auto run = rendertest::runOf(image, nullptr, stimuli, /*log=*/true);
   Recorded r;
   r.outcome = run->runToEnd();
@@ -28,7 +28,7 @@ Recorded record(const rs::vm::Image& image, const rs::runtime::Stimuli& stimuli)
 }
 
 // Every 37 ms, and at every step boundary: the recording and the machine agree.
-void checkAgainstMachine(const rs::vm::Image& image, const rs::runtime::Stimuli& stimuli) {
+void checkAgainstMachine(const rs::vm::Image& image, const rs::stimuli::Stimuli& stimuli) {
   const Recorded r = record(image, stimuli);
   std::vector<Micros> times;
   for (Micros t = 0; t <= r.rec.end + kSecondUs / 10; t += 37'000) times.push_back(t);
@@ -94,7 +94,7 @@ TEST_CASE("VIEW, WINDOW, outputs and RESET are recorded at their steps", "[rende
 TEST_CASE("Inputs change at their stimulus times, even inside a DELAY", "[render]") {
   const rs::workcell::Workcell cell = rendertest::cell("scara-pick");
   const rs::vm::Image image = rendertest::compileText("OUTSIG 1 ON\nDELAY 5\nOUTSIG 1 OFF\nDELAY 1\nEND\n", cell);
-  rs::runtime::Stimuli stimuli;
+  rs::stimuli::Stimuli stimuli;
   stimuli.changes = {{2 * kSecondUs, 3, true}, {kSecondUs * 7 / 2, 3, false}};
   stimuli.rules = {{1, true, 2, true, kSecondUs * 3 / 2}, {1, false, 2, false, 0}};
   const Recorded r = record(image, stimuli);

@@ -1,4 +1,4 @@
-// The motion profiles (runtime/motion.h): durations and positions of a
+// The motion profiles (runtime/sim/motion.h): durations and positions of a
 // trapezoid, a triangle and a fixed-time gripper worked out by hand from
 // the kinematics of constant acceleration (s = a·t²/2, v = a·t), the
 // constant-speed profile unchanged, SimMachine and RunLog::stateAt on the
@@ -7,9 +7,9 @@
 
 #include <random>
 
-#include "runtime/motion.h"
+#include "runtime/sim/motion.h"
 #include "runtime/run/run_log.h"
-#include "runtime/sim_machine.h"
+#include "runtime/sim/sim_machine.h"
 #include "vm/image_file.h"
 
 namespace {

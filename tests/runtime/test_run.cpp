@@ -11,9 +11,9 @@
 #include <thread>
 
 #include "../render/render_test_util.h"
-#include "cli/lib/trace.h"
+#include "runtime/run/trace.h"
 #include "runtime/run/run.h"
-#include "runtime/stimuli.h"
+#include "compiler/stimuli/stimuli.h"
 
 namespace {
 
@@ -40,9 +40,9 @@ const std::vector<Case> kCases = {
     {"sensor_branching.rsp", "scara-pick", "sensor_branching.stim"},
 };
 
-rs::runtime::Stimuli stimuliOf(const Case& c) {
+rs::stimuli::Stimuli stimuliOf(const Case& c) {
   if (c.stimuli.empty()) return {};
-  rs::runtime::StimuliParse parsed = rs::runtime::loadStimuliFile(kRunExamples + c.stimuli);
+  rs::stimuli::StimuliParse parsed = rs::stimuli::loadStimuliFile(kRunExamples + c.stimuli);
   REQUIRE(parsed.errors.empty());
   return parsed.stimuli;
 }
@@ -56,9 +56,9 @@ std::unique_ptr<Run> runOf(const Case& c) {
 struct Traced {
   std::ostringstream out;
   std::unique_ptr<Run> run;
-  std::unique_ptr<rs::cli::TraceWriter> trace;
+  std::unique_ptr<rs::runtime::TraceWriter> trace;
   explicit Traced(const Case& c) : run(runOf(c)) {
-    trace = std::make_unique<rs::cli::TraceWriter>(out, rs::cli::TraceFormat::Json, *run);
+    trace = std::make_unique<rs::runtime::TraceWriter>(out, rs::runtime::TraceFormat::Json, *run);
     run->observe(*trace);
   }
   std::string take() {
@@ -68,7 +68,7 @@ struct Traced {
   }
 };
 
-Run& simple(std::unique_ptr<Run>& holder, const std::string& text, rs::runtime::Stimuli stimuli = {},
+Run& simple(std::unique_ptr<Run>& holder, const std::string& text, rs::stimuli::Stimuli stimuli = {},
             rs::vm::RunLimits limits = {}) {
   const rs::workcell::Workcell cell = rendertest::cell("scara-pick");
   rs::vm::Image image = rendertest::compileText(text, cell);
@@ -254,8 +254,8 @@ TEST_CASE("a loop that never lets the clock move stops with its own reason", "[r
 }
 
 TEST_CASE("a rule that cannot keep up with its output is a runtime error naming the rule", "[run]") {
-  rs::runtime::StimuliParse parsed =
-      rs::runtime::parseStimuli("; the conveyor\nwhen output 1 on then input 1 on after 10\n", "flicker.stim");
+  rs::stimuli::StimuliParse parsed =
+      rs::stimuli::parseStimuli("; the conveyor\nwhen output 1 on then input 1 on after 10\n", "flicker.stim");
   REQUIRE(parsed.errors.empty());
   std::unique_ptr<Run> holder;
   const rs::vm::RunOutcome o =

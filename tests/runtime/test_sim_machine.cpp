@@ -6,15 +6,15 @@
 #include <limits>
 #include <vector>
 
-#include "runtime/sim_machine.h"
-#include "runtime/stimuli.h"
+#include "runtime/sim/sim_machine.h"
+#include "compiler/stimuli/stimuli.h"
 #include "stdlib/default_robot.h"
 
 namespace {
 
-using rs::runtime::InputChange;
+using rs::stimuli::InputChange;
 using rs::runtime::SimMachine;
-using rs::runtime::Stimuli;
+using rs::stimuli::Stimuli;
 using rs::vm::Micros;
 using rs::vm::Status;
 using Targets = std::vector<std::int32_t>;
@@ -26,7 +26,7 @@ SimMachine scara(Stimuli stimuli = {}) {
 }
 
 Stimuli parsed(std::string_view text) {
-  auto result = rs::runtime::parseStimuli(text, "test.stim");
+  auto result = rs::stimuli::parseStimuli(text, "test.stim");
   REQUIRE(result.errors.empty());
   return result.stimuli;
 }

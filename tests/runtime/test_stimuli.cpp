@@ -6,14 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "runtime/stimuli.h"
+#include "compiler/stimuli/stimuli.h"
 
 namespace {
 
-using rs::runtime::InputChange;
-using rs::runtime::parseStimuli;
-using rs::runtime::parseStimulusArg;
-using rs::runtime::ReactiveRule;
+using rs::stimuli::InputChange;
+using rs::stimuli::parseStimuli;
+using rs::stimuli::parseStimulusArg;
+using rs::stimuli::ReactiveRule;
 using rs::diag::Diagnostic;
 
 // What a stimuli error must say, compared with the diagnostic the parser gave.
@@ -66,7 +66,7 @@ TEST_CASE("an empty file or one of comments is an empty model", "[stimuli]") {
   CHECK(parseStimuli("", "e").errors.empty());
   const auto result = parseStimuli("; nothing\n   \n;; at 1 input 9 on\n", "e");
   CHECK(result.errors.empty());
-  CHECK(result.stimuli == rs::runtime::Stimuli{});
+  CHECK(result.stimuli == rs::stimuli::Stimuli{});
 }
 
 TEST_CASE("seconds convert exactly to microseconds", "[stimuli]") {
@@ -227,11 +227,11 @@ TEST_CASE("bad command-line stimuli say where and what", "[stimuli][cli]") {
 }
 
 TEST_CASE("an unreadable stimuli file is one error", "[stimuli]") {
-  const auto missing = rs::runtime::loadStimuliFile("/nonexistent/dir/cell.stim");
+  const auto missing = rs::stimuli::loadStimuliFile("/nonexistent/dir/cell.stim");
   REQUIRE(missing.errors.size() == 1);
   CHECK(missing.errors[0] ==
         StimuliError{"/nonexistent/dir/cell.stim", 0, 0, "cannot read the stimuli file: No such file or directory"});
-  const auto dir = rs::runtime::loadStimuliFile("/");
+  const auto dir = rs::stimuli::loadStimuliFile("/");
   REQUIRE(dir.errors.size() == 1);
   CHECK(dir.errors[0].message == "cannot read the stimuli file: is a directory");
 }

@@ -11,7 +11,7 @@
 #include <fstream>
 
 #include "base/file_io.h"
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "launch/program.h"
 #include "teach/points_edit.h"
 #include "teach/program_file.h"

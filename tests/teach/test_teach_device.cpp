@@ -1,5 +1,5 @@
 // The teach pendant with a device: `robotsim emulate`'s engine on a real
-// pseudo-terminal (runtime/serial/emulator.h), opened the way `robotsim
+// pseudo-terminal (runtime/rhino/emulator.h), opened the way `robotsim
 // teach --device` opens it (teach::openPendant), driven through the live
 // server's HTTP API as the page drives it. After a series of jogs the
 // emulator's motors stand where the page says; a controller that falls
@@ -11,7 +11,7 @@
 
 #include "../render/render_test_util.h"
 #include "launch/program.h"
-#include "runtime/serial/emulator.h"
+#include "runtime/rhino/emulator.h"
 #include "teach/live_server.h"
 #include "teach/page.h"
 #include "teach/pendant_source.h"
@@ -24,12 +24,12 @@
 namespace {
 
 using nlohmann::json;
-using rs::serial::Dialect;
+using rs::rhino::Dialect;
 
 struct DeviceRig {
   rs::testing::TempDir dir;
   std::string path = dir.write("p.rsp", "        END\nPOINTS\n");
-  std::unique_ptr<rs::serial::PtyEmulator> emulator;
+  std::unique_ptr<rs::rhino::PtyEmulator> emulator;
   rs::teach::OpenedPendant opened;
   std::unique_ptr<rs::teach::PendantSource> source;
   std::unique_ptr<rs::teach::LiveServer> server;
@@ -38,13 +38,13 @@ struct DeviceRig {
   DeviceRig(Dialect dialect, std::array<std::int32_t, 8> start = {}) {
     const rs::workcell::Workcell cell = rendertest::cell("scara-pick");
     motors = rs::launch::cellTarget(cell).motors;
-    rs::serial::EmulatorConfig c;
-    c.settings = rs::serial::defaultSettings(dialect);
+    rs::rhino::EmulatorConfig c;
+    c.settings = rs::rhino::defaultSettings(dialect);
     c.motors = motors;
     c.rateScale = 10;  // the moves take a tenth of the robot's time
     c.start = start;
     std::string error;
-    emulator = rs::serial::PtyEmulator::open(c, error);
+    emulator = rs::rhino::PtyEmulator::open(c, error);
     REQUIRE(emulator);
     emulator->start();
     rs::teach::TeachRequest request;
@@ -80,7 +80,7 @@ struct DeviceRig {
   }
   // The emulator's motors in the robot's order.
   std::vector<std::int32_t> emulated() {
-    const rs::serial::EmulatorSnapshot s = emulator->snapshot();
+    const rs::rhino::EmulatorSnapshot s = emulator->snapshot();
     std::vector<std::int32_t> out;
     for (const rs::vm::MotorSpec& m : motors) out.push_back(s.motors[static_cast<std::size_t>(m.letter - 'A')].position);
     return out;
@@ -140,7 +140,7 @@ TEST_CASE("teach --device: a controller silent during a jog stops everything and
     REQUIRE(rig.command({{"op", "jog"}, {"motor", 0}, {"delta", 20}})["ok"] == true);
     // Silent from the jog's second command on: the move is sent, its
     // progress is never reported.
-    rig.emulator->setFault({rs::serial::FaultKind::Silence, 1});  // counted from now
+    rig.emulator->setFault({rs::rhino::FaultKind::Silence, 1});  // counted from now
     const json r = rig.command({{"op", "jog"}, {"motor", 0}, {"delta", 300}});
     CHECK(r["ok"] == false);
     const json state = rig.state();
@@ -151,7 +151,7 @@ TEST_CASE("teach --device: a controller silent during a jog stops everything and
     const std::vector<std::int32_t> stopped = rig.emulated();
     std::this_thread::sleep_for(std::chrono::milliseconds(150));
     CHECK(rig.emulated() == stopped);
-    const rs::serial::EmulatorSnapshot s = rig.emulator->snapshot();
+    const rs::rhino::EmulatorSnapshot s = rig.emulator->snapshot();
     for (const auto& m : s.motors) {
       CHECK_FALSE(m.running);
       CHECK(m.registerSteps == 0);

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "stdlib/default_robot.h"
 #include "vm/image_file.h"
 

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.h"
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "stdlib/default_robot.h"
 #include "vm/image_file.h"
 

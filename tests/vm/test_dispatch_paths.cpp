@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "runtime/run/run.h"
 #include "stdlib/default_robot.h"
 #include "vm/interpreter.h"

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "runtime/run/run.h"
 #include "stdlib/default_robot.h"
 #include "tests/vm/image_support.h"

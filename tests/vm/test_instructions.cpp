@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "compiler/compiler.h"
+#include "compiler/program/compiler.h"
 #include "runtime/run/run.h"
-#include "runtime/stimuli.h"
+#include "compiler/stimuli/stimuli.h"
 #include "stdlib/default_robot.h"
 #include "vm/interpreter.h"
 #include "vm/verify.h"
@@ -26,10 +26,10 @@
 namespace {
 
 using rs::compiler::Target;
-using rs::runtime::InputChange;
-using rs::runtime::ReactiveRule;
+using rs::stimuli::InputChange;
+using rs::stimuli::ReactiveRule;
 using rs::runtime::SimMachine;
-using rs::runtime::Stimuli;
+using rs::stimuli::Stimuli;
 using rs::vm::Micros;
 using rs::vm::RunLimits;
 using rs::vm::StopReason;

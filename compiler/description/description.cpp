@@ -1,0 +1,168 @@
+#include "compiler/description/description.h"
+
+#include <array>
+#include <fmt/format.h>
+
+#include "RobotModelLexer.h"
+#include "RobotModelParser.h"
+#include "base/ascii.h"
+#include "compiler/program/compiler.h"
+#include "compiler/description/description_parser.h"
+
+namespace rs::compiler {
+
+namespace description_detail {
+
+namespace {
+
+using MP = rs_grammar::RobotModelParser;
+
+std::string_view blockName(Block b) {
+  switch (b) {
+    case Block::Link: return "LINK";
+    case Block::Object: return "OBJECT";
+    case Block::Gripper: return "GRIPPER";
+    case Block::Robot: return "ROBOT";
+    case Block::Workcell: return "WORKCELL";
+    case Block::None: break;
+  }
+  return "";
+}
+
+}  // namespace
+
+// A line with an error damages the definition it belongs to (and, in a
+// robot, the link or joint it was about): see ShapeDef.
+void Parser::line(const std::vector<Word>& words, diag::Pos lineEnd) {
+  const Block before = block_;
+  const std::size_t errors = diag_.errorCount();
+  readLine(words, lineEnd);
+  if (diag_.errorCount() > errors) markDamaged(before == Block::None ? block_ : before);
+}
+
+void Parser::markDamaged(Block b) {
+  switch (b) {
+    case Block::Link: if (!f_.links.empty()) f_.links.back().damaged = true; break;
+    case Block::Object: if (!f_.objects.empty()) f_.objects.back().damaged = true; break;
+    case Block::Gripper: if (!f_.grippers.empty()) f_.grippers.back().damaged = true; break;
+    case Block::Workcell: if (!f_.workcells.empty()) f_.workcells.back().damaged = true; break;
+    case Block::Robot:
+      if (f_.robots.empty()) break;
+      f_.robots.back().damaged = true;
+      if (robotItem_ == Item::Joint) f_.robots.back().joints.back().damaged = true;
+      if (robotItem_ == Item::Link) f_.robots.back().links.back().damaged = true;
+      break;
+    case Block::None: break;
+  }
+}
+
+void Parser::readLine(const std::vector<Word>& words, diag::Pos lineEnd) {
+  if (words.empty()) return;
+  for (const Word& w : words)
+    if (w.type == MP::OTHER) return diag_.error(w.pos, fmt::format("unexpected character '{}'", w.text));
+  Cursor c(words, lineEnd, diag_);
+  if (block_ == Block::None) return open(c, words[0]);
+  if (c.keyword("END")) {
+    if (!c.atEnd()) diag_.error(c.pos(), fmt::format("END takes nothing after it, found '{}'", c.peek().text));
+    block_ = Block::None;
+    return;
+  }
+  while (!c.atEnd()) {
+    bool ok = false;
+    switch (block_) {
+      case Block::Link: ok = shapeClause(c, f_.links.back()); break;
+      case Block::Object: ok = shapeClause(c, f_.objects.back()); break;
+      case Block::Gripper: ok = gripperClause(c, f_.grippers.back()); break;
+      case Block::Robot: ok = robotClause(c, f_.robots.back()); break;
+      case Block::Workcell: ok = workcellClause(c, f_.workcells.back()); break;
+      case Block::None: break;
+    }
+    if (!ok) return;
+  }
+}
+
+void Parser::open(Cursor& c, const Word& head) {
+  static constexpr std::array<Block, 5> kinds{Block::Link, Block::Object, Block::Gripper, Block::Robot, Block::Workcell};
+  Block kind = Block::None;
+  for (Block k : kinds)
+    if (c.keyword(blockName(k))) kind = k;
+  if (kind == Block::None) {
+    constexpr std::string_view kBlockKinds = "LINK, OBJECT, GRIPPER, ROBOT or WORKCELL";
+    diag_.error(head.pos, fmt::format("expected {}, found '{}'", kBlockKinds, head.text),
+                diag::Hint{head.type == MP::NAME ? didYouMean(head.text, kBlockKinds) : std::string()});
+    return;
+  }
+  // Without a name the block still opens (the error is reported), so the
+  // lines inside it are read as what they are, not as stray text.
+  NameRef name;
+  if (!c.name(name, fmt::format("a name for the {}", blockName(kind)))) {
+  } else if (!c.atEnd()) {
+    diag_.error(c.pos(), fmt::format("unexpected '{}' after the {} name (statements go on the next lines)",
+                                     c.peek().text, blockName(kind)));
+  }
+  block_ = kind;
+  blockPos_ = head.pos;
+  robotItem_ = Item::None;
+  color_ = Color::White;
+  switch (kind) {
+    case Block::Link: f_.links.emplace_back(), f_.links.back().name = name.name, f_.links.back().pos = head.pos; break;
+    case Block::Object: f_.objects.emplace_back(), f_.objects.back().name = name.name, f_.objects.back().pos = head.pos; break;
+    case Block::Gripper: f_.grippers.push_back({}), f_.grippers.back().name = name.name, f_.grippers.back().pos = head.pos; break;
+    case Block::Robot: f_.robots.push_back({}), f_.robots.back().name = name.name, f_.robots.back().pos = head.pos; break;
+    case Block::Workcell: f_.workcells.push_back({name.name, head.pos, {}}); break;
+    case Block::None: break;
+  }
+}
+
+void Parser::finish() {
+  if (block_ != Block::None)
+    diag_.error(blockPos_, fmt::format("{} has no END", blockName(block_)));
+}
+
+}  // namespace description_detail
+
+using description_detail::Color;
+using description_detail::kColorNames;
+using description_detail::Parser;
+using description_detail::Word;
+using MP = rs_grammar::RobotModelParser;
+
+std::optional<workcell::Color> colorByName(std::string_view word) {
+  for (std::size_t i = 0; i < kColorNames.size(); ++i)
+    if (base::sameName(word, kColorNames[i]) || word == std::to_string(i)) return static_cast<Color>(i);
+  return std::nullopt;
+}
+
+std::string_view colorName(workcell::Color color) { return kColorNames[static_cast<std::size_t>(color)]; }
+
+DescriptionFile parseDescription(std::unique_ptr<diag::SourceFile> source, diag::Diagnostics& diagnostics) {
+  DescriptionFile file;
+  file.source = std::move(source);
+  if (auto bad = checkEncoding(*file.source, "descriptions")) {
+    diagnostics.add(bad->pos, bad->severity, bad->message);
+    return file;
+  }
+  antlr4::ANTLRInputStream input(file.source->text());
+  rs_grammar::RobotModelLexer lexer(&input);
+  lexer.removeErrorListeners();  // OTHER matches any character: no lexer errors
+  antlr4::CommonTokenStream tokens(&lexer);
+  MP parser(&tokens);
+  parser.removeErrorListeners();  // the grammar accepts any words on a line
+  MP::DescriptionContext* root = parser.description();
+  Parser p(file, diagnostics);
+  for (MP::LineContext* l : root->line()) {
+    std::vector<Word> words;
+    for (antlr4::tree::ParseTree* child : l->children) {
+      const antlr4::Token* t = static_cast<antlr4::tree::TerminalNode*>(child)->getSymbol();
+      words.push_back({t->getType(), t->getText(),
+                       {static_cast<std::uint32_t>(t->getLine()), static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)}});
+    }
+    const diag::Pos end = words.empty() ? diag::Pos{} : diag::Pos{words.back().pos.line,
+                                              words.back().pos.col + static_cast<std::uint32_t>(words.back().text.size())};
+    p.line(words, end);
+  }
+  p.finish();
+  return file;
+}
+
+}  // namespace rs::compiler

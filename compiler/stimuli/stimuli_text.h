@@ -1,0 +1,39 @@
+// Word-level helpers shared by the stimuli file parser and the command-line
+// parser: keywords, seconds, line numbers, and tokens quoted for messages.
+// Internal to runtime/.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "vm/machine.h"
+
+namespace rs::stimuli::text {
+
+/// ASCII case-insensitive equality; keywords are ASCII, the locale plays no part.
+bool equalsKeyword(std::string_view token, std::string_view keyword);
+
+/// `token` in single quotes, safe to print: bytes outside printable ASCII
+/// become \xNN and a long token is cut short with "...".
+std::string quoted(std::string_view token);
+
+/// Seconds as exact microseconds, or an error message (`micros` is then 0).
+struct SecondsParse {
+  vm::Micros micros = 0;
+  std::string error;
+};
+
+/// Parses `DIGITS [. DIGITS]` with at most 6 decimals and at most 1e6 s,
+/// digit by digit: no floating point, no overflow on any length.
+SecondsParse parseSeconds(std::string_view token);
+
+/// An input or output line number 1..8, or an error message.
+struct LineNumberParse {
+  int value = 0;
+  std::string error;
+};
+
+/// Parses a line number; `what` ("input", "output") names it in errors.
+LineNumberParse parseLineNumber(std::string_view token, std::string_view what);
+
+}  // namespace rs::stimuli::text

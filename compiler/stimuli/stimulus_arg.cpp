@@ -1,0 +1,51 @@
+// The command-line form of one timed input change:
+//
+//   arg := N '=' STATE [ '@' SECONDS ]      e.g. 3=ON@1.5, 2=off
+//
+// No blanks inside; STATE in any case; without '@' the change is at time 0.
+#include <fmt/format.h>
+
+#include <climits>
+
+#include "compiler/stimuli/stimuli.h"
+#include "compiler/stimuli/stimuli_text.h"
+
+namespace rs::stimuli {
+namespace {
+
+constexpr std::string_view kForm = "(the form is N=ON@T or N=OFF@T, e.g. 3=ON@1.5)";
+
+StimulusArgParse failAt(std::string_view origin, std::size_t offset, std::string message) {
+  const std::uint32_t column = offset >= UINT32_MAX ? UINT32_MAX : static_cast<std::uint32_t>(offset) + 1;
+  return {std::nullopt, diag::Diagnostic{std::string(origin), {1, column}, diag::Severity::Error, std::move(message)}};
+}
+
+}  // namespace
+
+StimulusArgParse parseStimulusArg(std::string_view arg, std::string_view origin) {
+  const auto equals = arg.find('=');
+  if (equals == std::string_view::npos)
+    return failAt(origin, arg.size(), fmt::format("expected '=' after the input number {}", kForm));
+  if (equals == 0)
+    return failAt(origin, 0, fmt::format("expected an input number 1..8 before '=' {}", kForm));
+  const auto number = text::parseLineNumber(arg.substr(0, equals), "input");
+  if (!number.error.empty()) return failAt(origin, 0, number.error);
+
+  const auto at = arg.find('@', equals);
+  const auto state = arg.substr(equals + 1, at == std::string_view::npos ? at : at - equals - 1);
+  const bool on = text::equalsKeyword(state, "on");
+  if (!on && !text::equalsKeyword(state, "off"))
+    return failAt(origin, equals + 1,
+                  state.empty()
+                      ? fmt::format("expected ON or OFF after '=' {}", kForm)
+                      : fmt::format("expected ON or OFF after '=', got {}", text::quoted(state)));
+  if (at == std::string_view::npos) return {InputChange{0, number.value, on}, std::nullopt};
+
+  const auto time = arg.substr(at + 1);
+  if (time.empty()) return failAt(origin, at + 1, "expected a time in seconds after '@'");
+  const auto seconds = text::parseSeconds(time);
+  if (!seconds.error.empty()) return failAt(origin, at + 1, seconds.error);
+  return {InputChange{seconds.micros, number.value, on}, std::nullopt};
+}
+
+}  // namespace rs::stimuli

@@ -1,0 +1,168 @@
+#include "runtime/run/trace.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "base/seconds.h"
+#include "base/text.h"
+#include "runtime/run/empty_close.h"
+#include "vm/disasm.h"
+
+namespace rs::runtime {
+
+namespace {
+
+// The variable an instruction wrote, if any (slot b).
+bool writesVariable(const vm::Instr& in) { return vm::has(in.op, vm::kWritesVariable); }
+
+double seconds(vm::Micros t) { return static_cast<double>(t) / 1e6; }
+
+}  // namespace
+
+std::string pointText(const std::array<double, 3>& p) {
+  const auto num = [](double v) {
+    std::string s = fmt::format("{:.2f}", v);
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s == "-0" ? std::string("0") : s;
+  };
+  return fmt::format("({}, {}, {})", num(p[0]), num(p[1]), num(p[2]));
+}
+
+std::array<double, 3> roundedPoint(const std::array<double, 3>& p) {
+  std::array<double, 3> r{};
+  for (std::size_t i = 0; i < 3; ++i) r[i] = std::round(p[i] * 1e4) / 1e4 + 0.0;
+  return r;
+}
+
+std::string lampText(std::uint8_t bits) {
+  std::string s(8, '.');
+  for (int i = 0; i < 8; ++i)
+    if (bits & (1u << i)) s[static_cast<std::size_t>(i)] = static_cast<char>('1' + i);
+  return s;
+}
+
+std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell& cell) {
+  return fmt::format("{} {} (object {})", event.held ? "takes" : "lets go of",
+                     base::safeText(cell.objects[event.object].shape.name),
+                     event.object + 1);
+}
+
+std::string closesOnNothingText(const runtime::EmptyClose& e, const workcell::Workcell& cell) {
+  const std::string nearest = runtime::emptyCloseText(e, cell);
+  return nearest.empty() ? std::string("closes on nothing") : "closes on nothing (" + nearest + ")";
+}
+
+TraceWriter::TraceWriter(std::ostream& out, TraceFormat format, const runtime::Run& run)
+    : out_(out), format_(format), run_(run) {}
+
+bool TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
+  if (format_ == TraceFormat::Text) text(vm, index);
+  else json(vm, index);
+  collisionEvents();
+  return false;
+}
+
+void TraceWriter::finish() { collisionEvents(); }
+
+// One line per collision found since the last step traced: its time, the
+// move's line, the parts.
+void TraceWriter::collisionEvents() {
+  const auto events = run_.collisions();
+  const runtime::CollisionWatch* watch = run_.collisionWatch();
+  for (; collisionsShown_ < events.size() && watch; ++collisionsShown_) {
+    const runtime::CollisionEvent& e = events[collisionsShown_];
+    const std::uint32_t line = e.instruction < run_.image().lines.size() ? run_.image().lines[e.instruction] : 0;
+    if (format_ == TraceFormat::Text) {
+      out_ << fmt::format("{:>10}  collision at line {}: {}\n", base::formatSeconds(e.at), line,
+                          base::safeText(watch->describe(e.contact)));
+    } else {
+      const workcell::CollisionModel& m = watch->model();
+      nlohmann::ordered_json j;
+      j["event"] = "collision";
+      j["time"] = seconds(e.at);
+      j["line"] = line;
+      j["instr"] = e.instruction + 1;
+      j["part"] = m.describe(e.contact.a);
+      j["hits"] = m.describe(e.contact.b);
+      out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+    }
+  }
+}
+
+void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
+  const vm::Image& im = vm.image();
+  if (!headerDone_) {
+    // Wide enough for every motor at the longest value its range allows.
+    for (const vm::MotorSpec& m : im.motors)
+      motorsWidth_ += 3 + std::max(fmt::formatted_size("{}", m.min), fmt::formatted_size("{}", m.max));
+    out_ << fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {:<8}  {}{}\n", "time", "instr", "line", "instruction",
+                        "motors", motorsWidth_, "outputs", run_.world() ? fmt::format("{:<28}  ", "tool centre point") : "",
+                        "changed");
+    headerDone_ = true;
+  }
+  std::string motors;
+  const auto pos = vm.machine().positions();
+  for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? " " : "", im.motors[i].letter, pos[i]);
+  const vm::Instr& in = im.code[index];
+  std::string changed = writesVariable(in)
+                            ? fmt::format("{}={}", base::safeText(im.variables[in.b]), vm.variables()[in.b])
+                            : std::string();
+  if (const runtime::GraspEvent* g = run_.graspOfLastStep())
+    changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.world()->cell());
+  if (in.op == vm::Op::MoveP && !im.points[in.b].origin.empty())
+    changed += (changed.empty() ? "" : "  ") + fmt::format("{} from {}", base::safeText(im.points[in.b].name),
+                                                           base::safeText(im.points[in.b].origin));
+  if (const runtime::EmptyClose* e = run_.emptyCloseOfLastStep())
+    changed += std::string(changed.empty() ? "" : "  ") + closesOnNothingText(*e, run_.world()->cell());
+  const std::optional<std::array<double, 3>> tool = run_.world() ? run_.world()->tcp(pos) : std::nullopt;
+  const std::string tcp = tool ? fmt::format("{:<28}  ", pointText(*tool)) : std::string();
+  std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}{}", base::formatSeconds(vm.machine().now()),
+                                index + 1, im.lines[index], vm::instructionText(im, index), motors, motorsWidth_,
+                                lampText(vm.machine().outputs()), tcp, changed);
+  while (!row.empty() && row.back() == ' ') row.pop_back();
+  out_ << row << '\n';
+}
+
+void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
+  const vm::Image& im = vm.image();
+  const vm::Instr& in = im.code[index];
+  nlohmann::ordered_json j;
+  j["time"] = seconds(vm.machine().now());
+  j["instr"] = index + 1;
+  j["line"] = im.lines[index];
+  j["op"] = vm::info(in.op).name;
+  j["text"] = vm::instructionText(im, index);
+  nlohmann::ordered_json motors = nlohmann::ordered_json::object();
+  const auto pos = vm.machine().positions();
+  for (std::size_t i = 0; i < pos.size(); ++i) motors[std::string(1, im.motors[i].letter)] = pos[i];
+  j["motors"] = motors;
+  nlohmann::ordered_json outputs = nlohmann::ordered_json::array();
+  for (int i = 0; i < 8; ++i) outputs.push_back(((vm.machine().outputs() >> i) & 1) != 0);
+  j["outputs"] = outputs;
+  if (const runtime::World* world = run_.world())
+    if (const auto tool = world->tcp(pos)) j["tcp"] = roundedPoint(*tool);
+  nlohmann::ordered_json changed = nlohmann::ordered_json::object();
+  if (writesVariable(in)) changed[im.variables[in.b]] = vm.variables()[in.b];
+  j["changed"] = changed;
+  if (in.op == vm::Op::MoveP && !im.points[in.b].origin.empty()) j["point_from"] = im.points[in.b].origin;
+  if (const runtime::GraspEvent* g = run_.graspOfLastStep())
+    j["grasp"] = {{"object", g->object + 1}, {"name", run_.world()->cell().objects[g->object].shape.name},
+                  {"held", g->held}};
+  if (const runtime::EmptyClose* e = run_.emptyCloseOfLastStep()) {
+    nlohmann::ordered_json empty;
+    empty["tcp"] = roundedPoint({e->tcp.x(), e->tcp.y(), e->tcp.z()});
+    if (e->nearest) {
+      empty["nearest"] = *e->nearest + 1;
+      empty["name"] = run_.world()->cell().objects[*e->nearest].shape.name;
+      empty["distance"] = std::round(e->distance * 1e4) / 1e4;
+      const Eigen::Vector3d offset = e->centre - e->tcp;
+      empty["centre_offset"] = roundedPoint({offset.x(), offset.y(), offset.z()});
+    }
+    empty["text"] = closesOnNothingText(*e, run_.world()->cell());
+    j["closes_on_nothing"] = empty;
+  }
+  out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+}
+
+}  // namespace rs::runtime

@@ -1,0 +1,57 @@
+// A machine in a workcell: passes every call on to the machine that moves
+// the motors (the simulation, or a real Rhino) and lets the world react to
+// what it did — the gripper closing or opening, RESET. The run puts it in
+// front of its machine when the program runs on a workcell.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "runtime/sim/collision_watch.h"
+#include "runtime/sim/sim_machine.h"
+#include "runtime/sim/world.h"
+#include "vm/machine.h"
+
+namespace rs::runtime {
+
+class CellMachine final : public vm::Machine {
+ public:
+  /// Both must outlive this.
+  CellMachine(vm::Machine& motion, World& world)
+      : motion_(motion), world_(world), before_(motion.positions().size(), 0) {}
+
+  /// Checks every move on the simulated machine `timeline` (the machine
+  /// this one stands in front of) for collisions; with CollisionMode::Error
+  /// a move that collides fails with the collision's message. Both must
+  /// outlive this.
+  void watchCollisions(const SimMachine& timeline, CollisionWatch& watch, CollisionMode mode) {
+    timeline_ = &timeline, watch_ = &watch, mode_ = mode;
+  }
+
+  vm::Status moveTo(std::span<const std::int32_t> targets) override;
+  std::span<const std::int32_t> positions() const override { return motion_.positions(); }
+  vm::Status setOutput(int output, bool on) override { return motion_.setOutput(output, on); }
+  bool input(int input) override { return motion_.input(input); }
+  vm::Status waitFor(int input, bool on) override { return motion_.waitFor(input, on); }
+  vm::Status delay(vm::Micros duration) override { return motion_.delay(duration); }
+  vm::Status hardHome() override;
+  vm::Status reset() override;
+  void window(std::int32_t x, std::int32_t y, std::int32_t z) override { motion_.window(x, y, z); }
+  void view(std::int32_t x, std::int32_t y, std::int32_t z) override { motion_.view(x, y, z); }
+  vm::Micros now() const override { return motion_.now(); }
+  std::uint8_t outputs() const override { return motion_.outputs(); }
+  std::uint8_t inputs() const override { return motion_.inputs(); }
+
+ private:
+  template <typename Move>
+  vm::Status moveAndReact(Move&& move);
+
+  vm::Machine& motion_;
+  World& world_;
+  const SimMachine* timeline_ = nullptr;
+  CollisionWatch* watch_ = nullptr;
+  CollisionMode mode_ = CollisionMode::Off;
+  std::vector<std::int32_t> before_;  // scratch, sized once
+};
+
+}  // namespace rs::runtime

@@ -1,0 +1,121 @@
+#include "runtime/sim/collision_watch.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "runtime/sim/world.h"
+
+namespace rs::runtime {
+
+std::string_view collisionModeName(CollisionMode mode) {
+  switch (mode) {
+    case CollisionMode::Error: return "error";
+    case CollisionMode::Warn: return "warn";
+    case CollisionMode::Off: return "off";
+  }
+  return "";
+}
+
+std::optional<CollisionMode> collisionModeByName(std::string_view name) {
+  for (CollisionMode m : {CollisionMode::Error, CollisionMode::Warn, CollisionMode::Off})
+    if (name == collisionModeName(m)) return m;
+  return std::nullopt;
+}
+
+CollisionWatch::CollisionWatch(const workcell::Workcell& cell)
+    : model_(cell), data_(model_), bounds_(model_), clearance_(model_.robotBodies().size() + 1),
+      poses_(cell.objects.size()) {}
+
+std::string CollisionWatch::describe(const workcell::Contact& contact) const {
+  return fmt::format("{} hits {}", model_.describe(contact.a), model_.describe(contact.b));
+}
+
+// Everything a move's verdict depends on, exactly: where the objects rest
+// (a number per set of places), what is carried and how, and the motors at
+// both ends.
+void CollisionWatch::keyOf(const World& world, std::span<const std::int32_t> before,
+                           std::span<const std::int32_t> after) {
+  if (worldRevision_ != world.revision()) {
+    for (std::size_t o = 0; o < poses_.size(); ++o) poses_[o] = world.restingPose(o);
+    placesId_ = memo_.placesId(poses_);
+    worldRevision_ = world.revision();
+  }
+  key_.clear();
+  key_.push_back(placesId_);
+  const std::optional<std::size_t> held = world.held();
+  key_.push_back(held ? *held + 1 : 0);
+  if (held) {
+    const Eigen::Matrix<double, 3, 4> offset = world.heldOffset().affine();
+    for (int i = 0; i < 12; ++i) key_.push_back(std::bit_cast<std::uint64_t>(offset.data()[i]));
+  }
+  for (std::size_t m = 0; m < before.size() && m < after.size(); ++m)
+    key_.push_back(static_cast<std::uint64_t>(static_cast<std::uint32_t>(before[m])) << 32 |
+                   static_cast<std::uint32_t>(after[m]));
+}
+
+const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const World& world,
+                                            std::span<const std::int32_t> before, std::span<const std::int32_t> after,
+                                            vm::Micros start, vm::Micros end) {
+  if (!model_.movable()) return nullptr;
+  ++moves_;
+  keyOf(world, before, after);
+  const SweepVerdict* verdict = memo_.find(key_);
+  SweepVerdict fresh;
+  if (verdict) {
+    ++remembered_;
+  } else {
+    fresh = advance(machine, world.collisionQuery(before, after, poses_), before, after, start, end);
+    memo_.remember(key_, fresh);
+    verdict = &fresh;
+  }
+  if (!verdict->collides) return nullptr;
+  events_.push_back({start + verdict->after, verdict->contact, verdict->encoders});
+  return &events_.back();
+}
+
+// The largest share of its allowance any limit has used by time t.
+double CollisionWatch::used(const SimMachine& machine, vm::Micros t) {
+  for (std::size_t m = 0; m < probe_.size(); ++m) probe_[m] = machine.positionAt(m, t);
+  return bounds_.used(probe_);
+}
+
+SweepVerdict CollisionWatch::advance(const SimMachine& machine, const workcell::CollisionQuery& query,
+                                     std::span<const std::int32_t> before, std::span<const std::int32_t> after,
+                                     vm::Micros start, vm::Micros end) {
+  std::optional<double> carried;
+  if (query.held) {
+    double reach = 0;
+    for (const workcell::CollisionPiece& piece : model_.objectBodies()[*query.held].pieces)
+      for (const Eigen::Vector3d& p : piece.points) reach = std::max(reach, (query.heldOffset * p).norm());
+    carried = reach;
+  }
+  bounds_.startMove(carried);
+  at_.assign(before.begin(), before.end());
+  probe_.assign(before.begin(), before.end());
+  vm::Micros t = start;
+  while (true) {
+    ++checks_;
+    bounds_.setCheck(at_, after);
+    if (const std::optional<workcell::Contact> c = data_.findContactOrClearance(at_, query, bounds_, clearance_))
+      return {true, t - start, *c, at_};
+    if (t >= end || !bounds_.limit(clearance_)) return {};
+    // The latest time within every limit (to 1/512 of the rest of the
+    // move); when one count already goes farther, the first time it moves.
+    vm::Micros next = end;
+    if (used(machine, end) > 1) {
+      vm::Micros lo = t, hi = end;  // used(lo) <= 1 < used(hi)
+      const vm::Micros fine = (end - t) / 512;
+      while (hi - lo > 1 && (hi - lo > fine || lo == t)) {
+        const vm::Micros mid = lo + (hi - lo) / 2;
+        (used(machine, mid) <= 1 ? lo : hi) = mid;
+      }
+      next = lo > t ? lo : hi;
+    }
+    t = next;
+    for (std::size_t m = 0; m < at_.size(); ++m) at_[m] = machine.positionAt(m, t);
+  }
+}
+
+}  // namespace rs::runtime

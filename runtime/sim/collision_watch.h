@@ -1,0 +1,101 @@
+// Collisions during moves (docs/models.md, "Collisions"): every move of the
+// robot that runs the program is checked along the way, not only at its
+// ends, by conservative advancement. At each check the pose's clearance
+// says, for every moving part, how far it can go before it could touch
+// anything (CollisionData::findContactOrClearance); the next check is the
+// latest time at which no part has gone farther than its clearance, or
+// than workcell::kSweepStep where its clearance is less: free space costs a
+// check or two, and only near contact are checks as close as the bound.
+// How far a part has gone from time t to t' is bounded by the encoder
+// counts each motor covered times the part's weight for that motor
+// (CollisionModel::bodyWeights); each motor moves one way during a move,
+// so the counts covered between two checks bound every moment in between.
+// The machine says where each motor is at time t (SimMachine::positionAt,
+// whatever profile it follows). Deterministic: the same move is checked at
+// the same times. A move made before in the same world is answered from
+// memory (runtime/sim/sweep_memo.h), with the same verdict.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "model/workcell/collision_model.h"
+#include "runtime/sim/sim_machine.h"
+#include "runtime/sim/sweep_memo.h"
+#include "runtime/sim/sweep_motion.h"
+#include "vm/machine.h"
+
+namespace rs::runtime {
+
+class World;
+
+/// What a collision does to a run: stop it (a runtime error), note it, or
+/// nothing (no checks at all).
+enum class CollisionMode : std::uint8_t { Error, Warn, Off };
+
+/// "error", "warn", "off".
+std::string_view collisionModeName(CollisionMode mode);
+std::optional<CollisionMode> collisionModeByName(std::string_view name);
+
+/// A collision found during a move: the first check of the move at which
+/// two parts overlapped.
+struct CollisionEvent {
+  vm::Micros at = 0;                   ///< simulated time of that check
+  workcell::Contact contact;
+  std::vector<std::int32_t> encoders;  ///< every motor at `at`
+  std::uint32_t instruction = UINT32_MAX;  ///< the move's instruction (0-based), once the run knows it
+  bool operator==(const CollisionEvent&) const = default;
+};
+
+class CollisionWatch {
+ public:
+  /// The first robot of `cell` (which must outlive the watch) moves.
+  explicit CollisionWatch(const workcell::Workcell& cell);
+
+  /// Checks the move the machine just made from `before` (its positions at
+  /// `start`) to its positions at `end`, with the world as it was during
+  /// the move. Returns the first collision, also kept in events().
+  const CollisionEvent* sweep(const SimMachine& machine, const World& world, std::span<const std::int32_t> before,
+                              std::span<const std::int32_t> after, vm::Micros start, vm::Micros end);
+
+  const workcell::CollisionModel& model() const { return model_; }
+  std::span<const CollisionEvent> events() const { return events_; }
+  std::vector<CollisionEvent>& mutableEvents() { return events_; }
+  /// How many checks (poses) the sweeps have made so far.
+  std::uint64_t checks() const { return checks_; }
+  /// Moves checked so far, and how many of them were answered from memory.
+  std::uint64_t moves() const { return moves_; }
+  std::uint64_t remembered() const { return remembered_; }
+  /// Forget every remembered verdict (for measuring the sweep itself).
+  void forget() {
+    memo_ = SweepMemo();
+    worldRevision_.reset();
+  }
+  /// "link 2 (upper_arm) hits object 3 (block)".
+  std::string describe(const workcell::Contact& contact) const;
+
+ private:
+  SweepVerdict advance(const SimMachine& machine, const workcell::CollisionQuery& query,
+                       std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
+                       vm::Micros end);
+  void keyOf(const World& world, std::span<const std::int32_t> before, std::span<const std::int32_t> after);
+  double used(const SimMachine& machine, vm::Micros t);
+
+  workcell::CollisionModel model_;
+  workcell::CollisionData data_;
+  MotionBounds bounds_;
+  std::vector<workcell::PartClearance> clearance_;  // per part: this check's gaps
+  std::vector<CollisionEvent> events_;
+  SweepMemo memo_;
+  std::optional<std::uint64_t> worldRevision_;  // the world's revision placesId_ was taken at
+  std::uint64_t placesId_ = 0;
+  std::vector<std::uint64_t> key_;         // scratch: this move's key
+  std::vector<Eigen::Isometry3d> poses_;   // scratch: every object's resting pose
+  std::vector<std::int32_t> at_, probe_;   // scratch: motors at the last check, at a time tried
+  std::uint64_t checks_ = 0, moves_ = 0, remembered_ = 0;
+};
+
+}  // namespace rs::runtime

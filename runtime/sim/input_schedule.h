@@ -1,0 +1,123 @@
+// The input changes still to come in a run, in the order they take effect:
+// by time, and at equal times the timed stimuli first (in file order), then
+// the changes reactive rules scheduled (in the order the rules fired).
+//
+// The timed changes are fixed when the run starts and shared (a snapshot
+// keeps only a cursor into them); the reactive ones are few in any sane
+// run but unbounded in a program that switches an output faster than a
+// rule's delay, so they live in an ordered set (logarithmic inserts) of at
+// most kMaxPendingReactive entries.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <set>
+#include <span>
+#include <vector>
+
+#include "compiler/stimuli/stimuli.h"
+
+namespace rs::runtime {
+
+/// Reactive changes that may wait to happen at once; one more is a runtime
+/// error (docs/stimuli.md).
+inline constexpr std::size_t kMaxPendingReactive = 100'000;
+
+class InputSchedule {
+ public:
+  /// Starts with the timed changes (those naming an input outside 1..8
+  /// are dropped).
+  explicit InputSchedule(std::span<const stimuli::InputChange> timed);
+
+  /// Adds a change after every pending one due at the same time. Callers
+  /// never schedule before the time they last applied. False (and nothing
+  /// added) when kMaxPendingReactive changes already wait.
+  bool schedule(const stimuli::InputChange& change);
+
+  /// Applies, in order, every pending change due at or before `t` to the
+  /// input mask `inputs` (bit 0 = input 1) and forgets it. `onChange`, when
+  /// given, hears each change that altered the mask: (time, mask after).
+  template <typename OnChange>
+  void applyUntil(vm::Micros t, std::uint8_t& inputs, OnChange&& onChange);
+  void applyUntil(vm::Micros t, std::uint8_t& inputs) {
+    applyUntil(t, inputs, [](vm::Micros, std::uint8_t) {});
+  }
+
+  /// The earliest pending time after whose changes `input` reads `on`,
+  /// starting from the mask `inputs`; nullopt when no pending change does it.
+  /// A pulse that starts and ends at the same time is never seen.
+  std::optional<vm::Micros> whenReads(int input, bool on, std::uint8_t inputs) const;
+
+  /// True when some pending change names `input`.
+  bool hasPendingFor(int input) const;
+  std::size_t pendingReactive() const { return reactive_.size(); }
+
+  /// What changes during a run: a snapshot is a cursor and the (few)
+  /// reactive changes that wait.
+  struct State {
+    std::size_t nextTimed = 0;
+    std::uint64_t nextSeq = 0;
+    struct Pending {
+      vm::Micros at;
+      std::uint64_t seq;  // scheduling order, for ties
+      int input;
+      bool on;
+      bool operator<(const Pending& o) const { return at != o.at ? at < o.at : seq < o.seq; }
+      bool operator==(const Pending&) const = default;
+    };
+    std::set<Pending> reactive;
+    bool operator==(const State&) const = default;
+  };
+  State state() const { return {nextTimed_, nextSeq_, reactive_}; }
+  void restore(const State& s) { nextTimed_ = s.nextTimed, nextSeq_ = s.nextSeq, reactive_ = s.reactive; }
+
+ private:
+  using Pending = State::Pending;
+  // The next change in effect order: a timed one wins a tie.
+  const stimuli::InputChange* nextTimed() const { return nextTimed_ < timed_->size() ? &(*timed_)[nextTimed_] : nullptr; }
+  template <typename Visit>
+  void forEachPending(Visit&& visit) const;
+
+  std::shared_ptr<const std::vector<stimuli::InputChange>> timed_;  // sorted by time, stable
+  std::size_t nextTimed_ = 0;
+  std::uint64_t nextSeq_ = 0;
+  std::set<Pending> reactive_;
+};
+
+/// The bit of line n (1..8) in an input or output mask; 0 outside 1..8.
+constexpr std::uint8_t lineBit(int n) {
+  return n >= 1 && n <= 8 ? static_cast<std::uint8_t>(1u << (n - 1)) : 0;
+}
+
+inline std::uint8_t withLine(std::uint8_t mask, int line, bool on) {
+  const auto bit = lineBit(line);
+  return on ? static_cast<std::uint8_t>(mask | bit) : static_cast<std::uint8_t>(mask & ~bit);
+}
+
+template <typename OnChange>
+void InputSchedule::applyUntil(vm::Micros t, std::uint8_t& inputs, OnChange&& onChange) {
+  while (true) {
+    const stimuli::InputChange* timed = nextTimed();
+    const bool timedDue = timed && timed->at <= t;
+    const bool reactiveDue = !reactive_.empty() && reactive_.begin()->at <= t;
+    if (!timedDue && !reactiveDue) return;
+    vm::Micros at;
+    std::uint8_t after;
+    if (timedDue && (!reactiveDue || timed->at <= reactive_.begin()->at)) {
+      at = timed->at, after = withLine(inputs, timed->input, timed->on);
+      ++nextTimed_;
+    } else {
+      const Pending& p = *reactive_.begin();
+      at = p.at, after = withLine(inputs, p.input, p.on);
+      reactive_.erase(reactive_.begin());
+    }
+    if (after != inputs) {
+      inputs = after;
+      onChange(at, inputs);
+    }
+  }
+}
+
+}  // namespace rs::runtime

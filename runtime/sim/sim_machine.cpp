@@ -1,0 +1,193 @@
+#include "runtime/sim/sim_machine.h"
+
+#include "base/seconds.h"
+#include "vm/interpreter.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+
+namespace rs::runtime {
+namespace {
+
+using vm::Micros;
+using vm::Status;
+
+constexpr Micros kClockLimit = std::numeric_limits<Micros>::max();
+bool validLine(int n) { return lineBit(n) != 0; }
+
+const char* onOff(bool on) { return on ? "ON" : "OFF"; }
+
+std::int64_t saturatingAdd(std::int64_t a, std::int64_t b) {
+  if (b > 0 && a > std::numeric_limits<std::int64_t>::max() - b)
+    return std::numeric_limits<std::int64_t>::max();
+  if (b < 0 && a < std::numeric_limits<std::int64_t>::min() - b)
+    return std::numeric_limits<std::int64_t>::min();
+  return a + b;
+}
+
+// Degrees kept in 0..359 so that endless VIEW loops cannot overflow.
+std::int64_t addDegrees(std::int64_t angle, std::int32_t by) {
+  const auto sum = (angle + by) % 360;
+  return sum < 0 ? sum + 360 : sum;
+}
+
+}  // namespace
+
+SimMachine::SimMachine(std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli)
+    : motors_(std::move(motors)),
+      rules_(std::move(stimuli.rules)),
+      schedule_(stimuli.changes),
+      positions_(motors_.size(), 0),
+      home_(motors_.size(), 0),
+      segments_(motors_.size()) {
+  schedule_.applyUntil(now_, inputs_);
+}
+
+// Applies the stimuli due by now, telling the listener of each change.
+void SimMachine::applyInputs() {
+  if (inputListener_)
+    schedule_.applyUntil(now_, inputs_, inputListener_);
+  else
+    schedule_.applyUntil(now_, inputs_);
+}
+
+bool SimMachine::setInputNow(int input, bool on) {
+  if (lineBit(input) == 0) return false;
+  applyInputs();
+  if (!schedule_.schedule({now_, input, on})) return false;
+  applyInputs();
+  return true;
+}
+
+SimMachine::State SimMachine::state() const {
+  return {positions_, segments_, now_, outputs_, inputs_, windowShift_, viewRotation_, schedule_.state()};
+}
+
+void SimMachine::restore(const State& s) {
+  positions_ = s.positions, segments_ = s.segments, now_ = s.now;
+  outputs_ = s.outputs, inputs_ = s.inputs;
+  windowShift_ = s.windowShift, viewRotation_ = s.viewRotation;
+  schedule_.restore(s.schedule);
+}
+
+Micros SimMachine::travelTime(std::size_t motor, std::int32_t target) const {
+  return runtime::travelTime(motors_[motor], std::abs(std::int64_t{target} - positions_[motor]));
+}
+
+Status SimMachine::checkTargets(std::span<const std::int32_t> targets) const {
+  if (targets.size() != motors_.size())
+    return Status::fault(
+        fmt::format("move has {} targets for {} motors", targets.size(), motors_.size()));
+  Micros longest = 0;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const auto& m = motors_[i];
+    if (targets[i] < m.min || targets[i] > m.max)
+      return Status::fault(fmt::format("motor {} target {} is outside its range {}..{}", m.letter,
+                                       targets[i], m.min, m.max));
+    if (m.speed <= 0 && targets[i] != positions_[i])
+      return Status::fault(fmt::format("motor {} cannot move: its speed is {}", m.letter, m.speed));
+    longest = std::max(longest, travelTime(i, targets[i]));
+  }
+  if (now_ > kClockLimit - longest) return Status::fault("the virtual clock overflowed");
+  return Status::ok();
+}
+
+Status SimMachine::moveTo(std::span<const std::int32_t> targets) {
+  if (auto checked = checkTargets(targets); !checked) return checked;
+  Micros longest = 0;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const Micros duration = travelTime(i, targets[i]);
+    segments_[i] = {positions_[i], targets[i], now_, now_ + duration};
+    positions_[i] = targets[i];
+    longest = std::max(longest, duration);
+  }
+  advanceBy(longest);
+  return Status::ok();
+}
+
+std::int32_t SimMachine::positionAt(std::size_t motor, Micros t) const {
+  if (motor >= segments_.size()) return 0;
+  return runtime::positionAt(segments_[motor], motors_[motor], t);
+}
+
+Status SimMachine::hardHome() { return moveTo(home_); }
+
+Status SimMachine::reset() {
+  for (std::size_t i = 0; i < positions_.size(); ++i) {
+    positions_[i] = home_[i];
+    segments_[i] = {home_[i], home_[i], now_, now_};
+  }
+  return Status::ok();
+}
+
+Status SimMachine::setOutput(int output, bool on) {
+  if (!validLine(output))
+    return Status::fault(fmt::format("output {} does not exist (outputs are 1..8)", output));
+  const auto bit = lineBit(output);
+  if (((outputs_ & bit) != 0) == on) return Status::ok();  // no change, no rule fires
+  outputs_ = withLine(outputs_, output, on);
+  Status fired = fireRules(output, on);
+  applyInputs();  // rules with no delay act at once
+  return fired;
+}
+
+Status SimMachine::fireRules(int output, bool on) {
+  for (const auto& rule : rules_) {
+    if (rule.output != output || rule.outputOn != on) continue;
+    if (!schedule_.schedule({saturatingAdd(now_, std::max<Micros>(rule.delay, 0)), rule.input, rule.inputOn}))
+      return Status::fault(fmt::format(
+          "the stimuli rule {}'when output {} {} then input {} {} after {}' has {} input changes waiting to happen: "
+          "output {} switches faster than the rule's delay",
+          rule.line ? fmt::format("of line {} ", rule.line) : std::string(), rule.output, onOff(rule.outputOn),
+          rule.input, onOff(rule.inputOn), base::formatSeconds(rule.delay), kMaxPendingReactive, output));
+  }
+  return Status::ok();
+}
+
+bool SimMachine::input(int input) {
+  applyInputs();
+  return (inputs_ & lineBit(input)) != 0;
+}
+
+Status SimMachine::waitFor(int input, bool on) {
+  if (!validLine(input))
+    return Status::fault(fmt::format("input {} does not exist (inputs are 1..8)", input));
+  if (this->input(input) == on) return Status::ok();
+  const auto when = schedule_.whenReads(input, on, inputs_);
+  if (!when)
+    return Status::deadlock(
+        fmt::format("input {} never turns {}: {}", input, onOff(on),
+                    schedule_.hasPendingFor(input)
+                        ? fmt::format("no scheduled stimulus leaves it {}", onOff(on))
+                        : std::string("no stimulus is scheduled")));
+  advanceBy(*when - now_);
+  return Status::ok();
+}
+
+Status SimMachine::delay(Micros duration) {
+  if (duration < 0) return Status::fault(fmt::format("delay of {} us is negative", duration));
+  if (now_ > kClockLimit - duration) return Status::fault("the virtual clock overflowed");
+  advanceBy(duration);
+  return Status::ok();
+}
+
+// The one place the clock moves: inputs always match now().
+void SimMachine::advanceBy(Micros duration) {
+  now_ += duration;
+  applyInputs();
+}
+
+void SimMachine::window(std::int32_t x, std::int32_t y, std::int32_t z) {
+  windowShift_ = {saturatingAdd(windowShift_.x, x), saturatingAdd(windowShift_.y, y),
+                  saturatingAdd(windowShift_.z, z)};
+}
+
+void SimMachine::view(std::int32_t x, std::int32_t y, std::int32_t z) {
+  viewRotation_ = {addDegrees(viewRotation_.x, x), addDegrees(viewRotation_.y, y),
+                   addDegrees(viewRotation_.z, z)};
+}
+
+}  // namespace rs::runtime

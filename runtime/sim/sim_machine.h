@@ -1,0 +1,122 @@
+// The simulated machine: motors that move at their configured speeds (and
+// accelerations: runtime/sim/motion.h) on a virtual clock, eight outputs, and eight inputs driven by the stimuli.
+// Deterministic: the same calls with the same stimuli give the same results
+// on every run. Time is integer microseconds and only moves forward.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "runtime/sim/input_schedule.h"
+#include "runtime/sim/motion.h"
+#include "compiler/stimuli/stimuli.h"
+#include "vm/image.h"
+#include "vm/machine.h"
+
+namespace rs::runtime {
+
+/// Three accumulated camera values (WINDOW shift, VIEW rotation).
+struct CameraTriple {
+  std::int64_t x = 0;
+  std::int64_t y = 0;
+  std::int64_t z = 0;
+  bool operator==(const CameraTriple&) const = default;
+};
+
+class SimMachine final : public vm::Machine {
+ public:
+  /// Motors start at encoder 0, outputs and inputs OFF, the clock at 0
+  /// (stimuli due at time 0 have already applied).
+  SimMachine(std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli);
+
+  /// Every motor moves at once, each with its own profile (motion.h);
+  /// returns when the slowest arrives. Fault (no motion) on a wrong target count, a target
+  /// outside a motor's range or a clock overflow.
+  vm::Status moveTo(std::span<const std::int32_t> targets) override;
+  std::span<const std::int32_t> positions() const override { return positions_; }
+
+  /// When the output changes state, the rules for it schedule their inputs;
+  /// Fault when a rule would leave more than kMaxPendingReactive changes
+  /// waiting (an output switched faster than the rule's delay).
+  vm::Status setOutput(int output, bool on) override;
+  bool input(int input) override;
+  /// Advances the clock to the first time the input reads `on`; Deadlock if
+  /// no pending change ever makes it so (no output changes while waiting).
+  vm::Status waitFor(int input, bool on) override;
+  vm::Status delay(vm::Micros duration) override;
+
+  /// moveTo(all zeros), at motor speed.
+  vm::Status hardHome() override;
+  /// Every motor back to encoder 0 instantly; outputs, inputs and the clock
+  /// are unchanged.
+  vm::Status reset() override;
+
+  /// Shift the workcell by (x, y, z): adds to the previous shifts.
+  void window(std::int32_t x, std::int32_t y, std::int32_t z) override;
+  /// Rotate the workcell by (x, y, z) degrees: adds up, kept in 0..359.
+  void view(std::int32_t x, std::int32_t y, std::int32_t z) override;
+
+  /// Input `input` (1..8) turns `on` now, as a timed stimulus at the
+  /// present time would (after the changes already due now): what a
+  /// debugger's `set input` does. Changes still to come may turn it back.
+  /// False when the input is out of range or the schedule is full.
+  bool setInputNow(int input, bool on);
+
+  vm::Micros now() const override { return now_; }
+  std::uint8_t outputs() const override { return outputs_; }
+  std::uint8_t inputs() const override { return inputs_; }
+
+  const std::vector<vm::MotorSpec>& motors() const { return motors_; }
+  /// The latest move of motor `motor` (index in motor-table order).
+  const MotorSegment& segment(std::size_t motor) const { return segments_[motor]; }
+  /// Encoder position of `motor` at time `t`: runtime::positionAt of its
+  /// latest segment. Before the segment began
+  /// it answers the segment's start (older moves are not kept); 0 for a
+  /// motor index out of range.
+  std::int32_t positionAt(std::size_t motor, vm::Micros t) const;
+
+  CameraTriple windowShift() const { return windowShift_; }
+  CameraTriple viewRotation() const { return viewRotation_; }
+
+  /// Called with (time, inputs after) whenever the input mask changes, at
+  /// the time of the stimulus (which may fall inside a move or a DELAY).
+  void onInputChange(std::function<void(vm::Micros, std::uint8_t)> listener) { inputListener_ = std::move(listener); }
+
+  /// Everything that changes during a run, for snapshots.
+  struct State {
+    std::vector<std::int32_t> positions;
+    std::vector<MotorSegment> segments;
+    vm::Micros now = 0;
+    std::uint8_t outputs = 0, inputs = 0;
+    CameraTriple windowShift, viewRotation;
+    InputSchedule::State schedule;
+    bool operator==(const State&) const = default;
+  };
+  State state() const;
+  void restore(const State& state);
+
+ private:
+  vm::Status checkTargets(std::span<const std::int32_t> targets) const;
+  vm::Micros travelTime(std::size_t motor, std::int32_t target) const;
+  void advanceBy(vm::Micros duration);
+  vm::Status fireRules(int output, bool on);
+  void applyInputs();
+
+  std::vector<vm::MotorSpec> motors_;
+  std::vector<stimuli::ReactiveRule> rules_;
+  InputSchedule schedule_;
+  std::vector<std::int32_t> positions_;
+  std::vector<std::int32_t> home_;  // all zeros, for hardHome()
+  std::vector<MotorSegment> segments_;
+  vm::Micros now_ = 0;
+  std::uint8_t outputs_ = 0;
+  std::uint8_t inputs_ = 0;
+  CameraTriple windowShift_;
+  CameraTriple viewRotation_;
+  std::function<void(vm::Micros, std::uint8_t)> inputListener_;
+};
+
+}  // namespace rs::runtime

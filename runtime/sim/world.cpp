@@ -1,0 +1,86 @@
+#include "runtime/sim/world.h"
+
+namespace rs::runtime {
+
+World::World(const workcell::Workcell& cell) : cell_(cell), grasping_(cell) {
+  if (!cell.robots.empty() && cell.robots.front().robot.chain) tool_.emplace(cell.robots.front());
+}
+
+void World::moved(std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
+                  vm::Micros end) {
+  const bool closing = grasping_.closes(before, after);
+  const bool heldBefore = grasping_.held().has_value();
+  const std::optional<workcell::GraspChange> change = grasping_.step(before, after);
+  if (closing) ++state_.closes;
+  if (closing && !heldBefore && !change && !cell_.objects.empty()) {
+    EmptyClose& e = state_.lastEmptyClose;
+    e.at = end;
+    e.tcp = grasping_.toolFrame(after).translation();
+    const auto nearest = grasping_.nearestObject(e.tcp);
+    e.nearest = nearest ? std::optional<std::size_t>(nearest->first) : std::nullopt;
+    e.distance = nearest ? nearest->second : 0.0;
+    e.centre = nearest ? grasping_.boxCentre(nearest->first) : Eigen::Vector3d::Zero();
+    ++state_.emptyCloses;
+  }
+  if (!change) return;
+  ++revision_;
+  if (change->held) ++state_.takes;
+  const std::size_t o = change->object;
+  state_.last = change->held ? GraspEvent{end, o, true, grasping_.heldOffset()}
+                             : GraspEvent{start, o, false, grasping_.restingPose(o)};
+  if (change->held) state_.heldSince = end;
+  ++state_.events;
+}
+
+void World::reset(vm::Micros at) {
+  const std::optional<std::size_t> held = grasping_.held();
+  grasping_.reset();
+  ++revision_;
+  if (!held) return;
+  state_.last = {at, *held, false, grasping_.restingPose(*held)};
+  ++state_.events;
+}
+
+Eigen::Isometry3d World::objectPose(std::size_t o, std::span<const std::int32_t> encoders, vm::Micros at) const {
+  if (grasping_.held() == o && at < state_.heldSince) return grasping_.restingPose(o);
+  return grasping_.objectPose(o, encoders);
+}
+
+std::optional<std::array<double, 3>> World::tcp(std::span<const std::int32_t> encoders) const {
+  if (!tool_) return std::nullopt;
+  return tool_->tcp(encoders);
+}
+
+workcell::CollisionQuery World::collisionQuery(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
+                                              std::vector<Eigen::Isometry3d>& poses) const {
+  workcell::CollisionQuery q;
+  for (std::size_t o = 0; o < poses.size(); ++o) poses[o] = grasping_.restingPose(o);
+  q.held = grasping_.held();
+  q.heldOffset = grasping_.heldOffset();
+  q.objectPoses = poses;
+  if (!grasping_.hasGripper()) return q;
+  if (q.held && grasping_.opens(before, after)) {
+    // Let go as the move starts, where it is: the fingers open round it.
+    poses[*q.held] = grasping_.toolFrame(before) * q.heldOffset;
+    q.exempt = q.held;
+    q.held.reset();
+  } else {
+    q.exempt = grasping_.objectAt(grasping_.toolFrame(before).translation());
+  }
+  q.exemptToo = grasping_.objectAt(grasping_.toolFrame(after).translation());
+  return q;
+}
+
+World::State World::state() const {
+  State s = state_;
+  s.grasp = grasping_.state();
+  return s;
+}
+
+void World::restore(const State& s) {
+  state_ = s;
+  grasping_.restore(s.grasp);
+  ++revision_;
+}
+
+}  // namespace rs::runtime
