@@ -18,7 +18,7 @@ std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) 
     case vm::StopReason::InstantLimit: return "give the loop a DELAY, a move or a WAITFOR, or a way out";
     case vm::StopReason::RuntimeError:
       // The main program ran on into a subroutine: its END is missing.
-      if (image.code[outcome.index].op == vm::Op::Return)  // its one failure: an empty call stack
+      if (vm::has(image.code[outcome.index].op, vm::kReturns))  // its one failure: an empty call stack
         return "did the program run on into a subroutine? an END before the subroutine stops it there";
       return "";
     case vm::StopReason::End:

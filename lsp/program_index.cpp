@@ -125,7 +125,7 @@ std::string upper(std::string_view s) {
 
 void ProgramIndex::finish() {
   for (const IndexedInstruction& in : instructions_)
-    if (in.known && in.op == vm::Op::Gosub && !in.targetLabel.empty()) subroutines_.insert(upper(in.targetLabel));
+    if (in.known && vm::has(in.op, vm::kCalls) && !in.targetLabel.empty()) subroutines_.insert(upper(in.targetLabel));
 }
 
 bool ProgramIndex::isSubroutine(std::string_view label) const { return subroutines_.count(upper(label)) > 0; }

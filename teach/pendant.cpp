@@ -7,6 +7,7 @@
 #include "base/seconds.h"
 #include "runtime/rhino/rhino_machine.h"
 #include "vm/interpreter.h"
+#include "vm/motor_range.h"
 
 namespace rs::teach {
 
@@ -80,10 +81,9 @@ Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
   if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
   if (targets.size() != motors_.size())
     return refuse(fmt::format("{} values for {} motors", targets.size(), motors_.size()), true);
-  for (std::size_t i = 0; i < targets.size(); ++i)
-    if (targets[i] < motors_[i].min || targets[i] > motors_[i].max)
-      return refuse(fmt::format("motor {}: {} is outside its range {}..{}: nothing moved", motors_[i].letter, targets[i],
-                                motors_[i].min, motors_[i].max));
+  if (const auto i = vm::firstOutOfRange(motors_, targets))
+    return refuse(fmt::format("motor {}: {} is {}: nothing moved", motors_[*i].letter, targets[*i],
+                              vm::outsideRange(motors_[*i])));
   const vm::Micros start = run_->clock();
   const runtime::CollisionWatch* watch = run_->collisionWatch();
   std::optional<runtime::RunSnapshot> before;

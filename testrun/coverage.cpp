@@ -10,8 +10,7 @@
 namespace rs::testrun {
 
 bool isBranch(const vm::Image& image, std::uint32_t i) {
-  const vm::Op op = image.code[i].op;
-  return op == vm::Op::JmpIn || op == vm::Op::JmpVar;
+  return vm::has(image.code[i].op, vm::kBranches);
 }
 
 CoverageCounter::CoverageCounter(std::shared_ptr<const vm::Image> image) {

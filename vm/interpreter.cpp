@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "base/seconds.h"
+#include "vm/motor_range.h"
 
 namespace rs::vm {
 
@@ -123,14 +124,10 @@ Interpreter::Interpreter(const Image& image, Machine& machine)
 }
 
 // Defence in depth behind the Machine contract (targets already in range):
-// the same words as SimMachine's own check.
+// the same check and words as SimMachine's own.
 Status Interpreter::moveTo(std::span<const std::int32_t> targets) {
-  for (std::size_t i = 0; i < targets.size(); ++i) {
-    const MotorSpec& m = image_.motors[i];
-    if (targets[i] < m.min || targets[i] > m.max)
-      return Status::fault(
-          fmt::format("motor {} target {} is outside its range {}..{}", m.letter, targets[i], m.min, m.max));
-  }
+  if (const auto i = firstOutOfRange(image_.motors, targets))
+    return Status::fault(targetOutsideRange(image_.motors[*i], targets[*i]));
   return machine_.moveTo(targets);
 }
 
@@ -140,9 +137,9 @@ Status Interpreter::move(const Instr& in) {
     for (std::size_t i = 0; i < target_.size(); ++i) {
       const std::int64_t t = std::int64_t{now[i]} + image_.constants[static_cast<std::size_t>(in.c) + i];
       const MotorSpec& m = image_.motors[i];
-      if (t < m.min || t > m.max)
-        return Status::fault(fmt::format("{} takes motor {} to {}, outside its range {}..{}", info(in.op).name,
-                                         m.letter, t, m.min, m.max));
+      if (!inRange(m, t))
+        return Status::fault(
+            fmt::format("{} takes motor {} to {}, {}", info(in.op).name, m.letter, t, outsideRange(m)));
       target_[i] = static_cast<std::int32_t>(t);
     }
     return machine_.moveTo(target_);

@@ -94,7 +94,9 @@ inline constexpr std::array<FormatInfo, kFormatCount> kFormats{{
 constexpr const FormatInfo& info(Format f) { return kFormats[static_cast<std::size_t>(f)]; }
 
 /// Flags: how an opcode affects control flow, the motors and the variables.
-enum OpFlag : std::uint8_t {
+/// Every layer outside vm/ asks these (and the format), never an opcode by
+/// name (docs/architecture.md, "Instruction facts"; the layers test checks).
+enum OpFlag : std::uint16_t {
   kFallsThrough = 1 << 0,  // the next instruction may run after this one
                            // (for GOSUB: once the subroutine returns)
   kJumps = 1 << 1,         // d is a jump target
@@ -102,20 +104,25 @@ enum OpFlag : std::uint8_t {
   kRelative = 1 << 3,      // its motor values are offsets from where the motors are, not targets
   kWritesVariable = 1 << 4,  // writes variable slot b
   kUsesMachine = 1 << 5,   // acts on the machine: may fail, may take time
+  kCalls = 1 << 6,         // pushes the return point and jumps to subroutine d (GOSUB)
+  kReturns = 1 << 7,       // pops the return point and goes there (RETURN)
+  kBranches = 1 << 8,      // jumps to d or falls through, on a condition
+  kWaits = 1 << 9,         // its time is spent waiting (for an input or the clock), not moving
+  kEnds = 1 << 10,         // stops the run (END)
 };
 
 struct OpInfo {
   Op op;
   std::string_view name;  // upper-case mnemonic as written in programs
   Format format;
-  std::uint8_t flags;
+  std::uint16_t flags;
   std::string_view meaning;  // one line, for `robotsim help` and listings
   std::string_view detail;   // `robotsim help NAME`: what the paper leaves open, as robotsim decides it
   std::string_view example;  // one line of source
 };
 
-inline constexpr std::uint8_t kFT = kFallsThrough;
-inline constexpr std::uint8_t kMach = kUsesMachine;
+inline constexpr std::uint16_t kFT = kFallsThrough;
+inline constexpr std::uint16_t kMach = kUsesMachine;
 
 inline constexpr std::array<OpInfo, kOpCount> kOps{{
     {Op::Move, "MOVE", Format::MotorVector, kFT | kMach | kMovesMotors | kRelative,
@@ -130,17 +137,18 @@ inline constexpr std::array<OpInfo, kOpCount> kOps{{
      "The point is defined after the POINTS line of the same file.", "MOVEP PICK"},
     {Op::Goto, "GOTO", Format::Target, kJumps, "jump unconditionally",
      "The line is an instruction number (1 = first instruction) or a label.", "GOTO loop"},
-    {Op::JmpIn, "JMPIN", Format::InputJump, kFT | kJumps, "jump if an input is ON (or OFF)",
+    {Op::JmpIn, "JMPIN", Format::InputJump, kFT | kJumps | kBranches, "jump if an input is ON (or OFF)",
      "Reads input 1..8 now; jumps if it is in the given state, else continues.", "JMPIN 3 ON done"},
     {Op::OutSig, "OUTSIG", Format::Output, kFT | kMach, "switch an output ON or OFF",
      "Outputs are numbered 1..8 and start OFF.", "OUTSIG 1 ON"},
-    {Op::JmpVar, "JMPVAR", Format::VarCompare, kFT | kJumps, "jump if a variable compares true with a value",
+    {Op::JmpVar, "JMPVAR", Format::VarCompare, kFT | kJumps | kBranches,
+     "jump if a variable compares true with a value",
      "Variables are 32-bit integers that start at 0; compares with <, > or =.", "JMPVAR N < 10 loop"},
-    {Op::Gosub, "GOSUB", Format::Target, kFT | kJumps, "call a subroutine",
+    {Op::Gosub, "GOSUB", Format::Target, kFT | kJumps | kCalls, "call a subroutine",
      "Calls nest up to 64 deep; deeper is a runtime error.", "GOSUB pick"},
-    {Op::Return, "RETURN", Format::None, 0, "return from a subroutine",
+    {Op::Return, "RETURN", Format::None, kReturns, "return from a subroutine",
      "Returns to the instruction after the last GOSUB.", "RETURN"},
-    {Op::WaitFor, "WAITFOR", Format::Input, kFT | kMach, "wait until an input is ON (or OFF)",
+    {Op::WaitFor, "WAITFOR", Format::Input, kFT | kMach | kWaits, "wait until an input is ON (or OFF)",
      "Waits (in simulated time) until the input is in the state; a wait nothing can end is a deadlock error.",
      "WAITFOR 2 ON"},
     {Op::Add, "ADD", Format::VarValue, kFT | kWritesVariable, "add a value to a variable",
@@ -151,7 +159,7 @@ inline constexpr std::array<OpInfo, kOpCount> kOps{{
      "Shifts the view of the workcell by x, y, z (whole numbers).", "WINDOW 0 -100 0"},
     {Op::View, "VIEW", Format::Triple, kFT | kMach, "rotate the view of the workcell about x, y, z",
      "Rotates the view of the workcell by x, y, z degrees (whole numbers).", "VIEW 30 0 45"},
-    {Op::Delay, "DELAY", Format::Millis, kFT | kMach, "wait a number of seconds",
+    {Op::Delay, "DELAY", Format::Millis, kFT | kMach | kWaits, "wait a number of seconds",
      "Seconds, with up to three decimals (milliseconds); at most one day.", "DELAY 0.25"},
     {Op::HrdHome, "HRDHOME", Format::None, kFT | kMach | kMovesMotors, "move every motor to encoder position 0",
      "Every motor moves to encoder position 0 at its speed.", "HRDHOME"},
@@ -162,7 +170,8 @@ inline constexpr std::array<OpInfo, kOpCount> kOps{{
      "Moves to the SETSOFT position (all zeros before any SETSOFT).", "GOSOFT"},
     {Op::Set, "SET", Format::VarValue, kFT | kWritesVariable, "assign a value to a variable",
      "Assigns a whole number to a variable.", "SET N 0"},
-    {Op::End, "END", Format::None, 0, "end the program", "Ends the run. Running past the last instruction ends it too.",
+    {Op::End, "END", Format::None, kEnds, "end the program",
+     "Ends the run. Running past the last instruction ends it too.",
      "END"},
 }};
 
@@ -191,6 +200,29 @@ consteval bool flagsAgree() {
   return true;
 }
 static_assert(flagsAgree(), "an opcode's flags contradict its format, or it lacks a help text");
+
+// The control-flow flags say one thing each: a call jumps to a subroutine
+// by line and comes back (falls through); a branch is every other jump
+// that may fall through; a return and an end neither fall through nor
+// jump; a wait takes time on the machine without moving; a program that
+// can call can return.
+consteval bool controlFlagsAgree() {
+  int calls = 0, returns = 0, ends = 0;
+  for (const OpInfo& op : kOps) {
+    const bool jumps = op.flags & kJumps, fallsThrough = op.flags & kFallsThrough;
+    if ((op.flags & kCalls) && (!jumps || !fallsThrough || op.format != Format::Target)) return false;
+    if (((op.flags & kBranches) != 0) != (jumps && fallsThrough && !(op.flags & kCalls))) return false;
+    if ((op.flags & (kReturns | kEnds)) && (jumps || fallsThrough || op.format != Format::None)) return false;
+    if ((op.flags & kReturns) && (op.flags & kEnds)) return false;
+    if (!jumps && !fallsThrough && !(op.flags & (kReturns | kEnds))) return false;  // where would it go?
+    if ((op.flags & kWaits) && (!(op.flags & kUsesMachine) || (op.flags & kMovesMotors))) return false;
+    calls += (op.flags & kCalls) ? 1 : 0;
+    returns += (op.flags & kReturns) ? 1 : 0;
+    ends += (op.flags & kEnds) ? 1 : 0;
+  }
+  return (calls > 0) == (returns > 0) && ends > 0;
+}
+static_assert(controlFlagsAgree(), "an opcode's call, return, branch, wait or end flag contradicts its others");
 
 constexpr const OpInfo& info(Op op) { return kOps[static_cast<std::size_t>(op)]; }
 constexpr bool has(Op op, OpFlag flag) { return (info(op).flags & flag) != 0; }

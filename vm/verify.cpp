@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "vm/motor_range.h"
+
 namespace rs::vm {
 
 namespace {
@@ -37,8 +39,6 @@ std::string checkMotors(const Image& image) {
   }
   return {};
 }
-
-bool inRange(const MotorSpec& m, std::int32_t v) { return v >= m.min && v <= m.max; }
 
 // Checks one instruction's operands by its format: every field the format
 // uses is in range, every field it does not use is zero.

@@ -124,7 +124,7 @@ void Builder::instruction(const RawToken& head, const std::vector<Word>& words) 
   const std::string_view mnemonic = textOf(src_, head);
   if (const auto op = vm::opByName(mnemonic)) {
     in.op = *op;
-    if (*op == vm::Op::End) endLine_ = in.pos.line;
+    if (vm::has(*op, vm::kEnds)) endLine_ = in.pos.line;
     operands(in, vm::info(*op).name, words);
   } else {
     in.known = false;

@@ -12,6 +12,7 @@
 
 #include "base/ascii.h"
 #include "base/near_names.h"
+#include "vm/motor_range.h"
 
 namespace rs::compiler {
 
@@ -218,8 +219,8 @@ void Translator::instruction(const Instruction& in) {
     if (keep) s.image.code.emplace_back();
     return;
   }
-  if (in.op == vm::Op::Gosub) s.anyGosub = true;
-  if (in.op == vm::Op::Return && !keep) s.returnsAfterError.push_back(in.pos);
+  if (vm::has(in.op, vm::kCalls)) s.anyGosub = true;
+  if (vm::has(in.op, vm::kReturns) && !keep) s.returnsAfterError.push_back(in.pos);
   std::uint32_t target = 0;
   std::uint16_t slot = 0;
   if (vm::info(in.op).flags & vm::kJumps) target = s.jump(in, index);
@@ -264,9 +265,9 @@ void Translator::point(const PointDef& p) {
   if (p.values.size() != s.motors().size()) return;  // arity already reported
   for (std::size_t m = 0; m < s.motors().size(); ++m) {
     const vm::MotorSpec& spec = s.motors()[m];
-    if (p.values[m].number < spec.min || p.values[m].number > spec.max)
-      s.diag.error(p.values[m].pos, fmt::format("point {}: value {} for motor {} is outside its range {}..{}", p.name,
-                                                p.values[m].number, spec.letter, spec.min, spec.max),
+    if (!vm::inRange(spec, p.values[m].number))
+      s.diag.error(p.values[m].pos, fmt::format("point {}: value {} for motor {} is {}", p.name, p.values[m].number,
+                                                spec.letter, vm::outsideRange(spec)),
                    "value-out-of-range");
   }
 }
@@ -359,7 +360,7 @@ std::uint16_t Translator::State::variable(const Instruction& in) {
     firstRead.push_back({});
   }
   const std::uint32_t slot = it->second.index;
-  if (in.op == vm::Op::JmpVar) {
+  if (!vm::has(in.op, vm::kWritesVariable)) {  // a comparison reads it
     if (firstRead[slot].line == 0) firstRead[slot] = in.namePos;
   } else {
     assigned[slot] = true;
@@ -370,7 +371,7 @@ std::uint16_t Translator::State::variable(const Instruction& in) {
 void Translator::State::checkIo(const Instruction& in) {
   if (in.io.pos.line == 0) return;
   if (in.io.number < 1 || in.io.number > vm::kIoCount) {
-    const bool output = in.op == vm::Op::OutSig;
+    const bool output = vm::info(in.op).format == vm::Format::Output;
     diag.error(in.io.pos, fmt::format("{} {} is outside 1..8", output ? "output" : "input", in.io.number),
                "io-out-of-range");
   }
@@ -390,9 +391,9 @@ void Translator::State::checkTargets(const Instruction& in) {
         diag.error(v.pos, fmt::format("MOVE by {} can never keep motor {} within its range {}..{}", v.number,
                                       spec.letter, spec.min, spec.max),
                    "value-out-of-range");
-    } else if (v.number < spec.min || v.number > spec.max) {
-      diag.error(v.pos, fmt::format("{} target {} for motor {} is outside its range {}..{}", name, v.number,
-                                    spec.letter, spec.min, spec.max),
+    } else if (!vm::inRange(spec, v.number)) {
+      diag.error(v.pos, fmt::format("{} target {} for motor {} is {}", name, v.number, spec.letter,
+                                    vm::outsideRange(spec)),
                    "value-out-of-range");
     }
   }
@@ -463,7 +464,7 @@ std::vector<bool> Translator::State::reachable(const std::vector<std::uint32_t>&
       work.push_back(i + 1);
       continue;
     }
-    const std::uint8_t flags = vm::info(image.code[i].op).flags;
+    const std::uint16_t flags = vm::info(image.code[i].op).flags;
     if (flags & vm::kFallsThrough) work.push_back(i + 1);
     if (flags & vm::kJumps) work.push_back(static_cast<std::uint32_t>(image.code[i].d));
   }
@@ -478,7 +479,7 @@ void Translator::State::analyseFlow() {
   if (diag.hasErrors()) {
     if (anyGosub) return;
     for (std::size_t i = 0; i < code.size(); ++i)
-      if (known[i] && code[i].op == vm::Op::Return)
+      if (known[i] && vm::has(code[i].op, vm::kReturns))
         diag.error(posOf(i), "RETURN without any GOSUB in the program", "unmatched-return");
     for (const diag::Pos& pos : returnsAfterError)
       diag.error(pos, "RETURN without any GOSUB in the program", "unmatched-return");
@@ -486,10 +487,10 @@ void Translator::State::analyseFlow() {
   }
   std::vector<std::uint32_t> subroutines;
   for (std::size_t i = 0; i < code.size(); ++i)
-    if (known[i] && code[i].op == vm::Op::Gosub) subroutines.push_back(static_cast<std::uint32_t>(code[i].d));
+    if (known[i] && vm::has(code[i].op, vm::kCalls)) subroutines.push_back(static_cast<std::uint32_t>(code[i].d));
   const std::vector<bool> inSubroutine = reachable(subroutines);
   for (std::size_t i = 0; i < code.size(); ++i) {
-    if (!known[i] || code[i].op != vm::Op::Return || inSubroutine[i]) continue;
+    if (!known[i] || !vm::has(code[i].op, vm::kReturns) || inSubroutine[i]) continue;
     diag.error(posOf(i), subroutines.empty() ? std::string("RETURN without any GOSUB in the program")
                                              : std::string("RETURN that no GOSUB can reach"),
                "unmatched-return");

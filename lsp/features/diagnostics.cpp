@@ -85,7 +85,7 @@ Flow flowOf(const ProgramIndex& index, bool followCalls) {
   };
   Flow flow{std::vector<bool>(code.size(), false), std::vector<bool>(code.size(), false)};
   for (const IndexedInstruction& in : code)
-    if (in.known && in.op == vm::Op::Gosub)
+    if (in.known && vm::has(in.op, vm::kCalls))
       if (const auto t = targetOf(in); t && *t < code.size()) flow.entry[*t] = true;
   std::vector<std::uint32_t> work{0};
   while (!work.empty()) {
@@ -93,9 +93,9 @@ Flow flowOf(const ProgramIndex& index, bool followCalls) {
     work.pop_back();
     if (i >= code.size() || flow.reached[i]) continue;
     flow.reached[i] = true;
-    const std::uint8_t flags = code[i].known ? vm::info(code[i].op).flags : std::uint8_t{vm::kFallsThrough};
+    const std::uint16_t flags = code[i].known ? vm::info(code[i].op).flags : std::uint16_t{vm::kFallsThrough};
     if (flags & vm::kFallsThrough) work.push_back(i + 1);
-    if ((flags & vm::kJumps) && (followCalls || code[i].op != vm::Op::Gosub))
+    if ((flags & vm::kJumps) && (followCalls || !(flags & vm::kCalls)))
       if (const auto t = targetOf(code[i])) work.push_back(*t);
   }
   return flow;

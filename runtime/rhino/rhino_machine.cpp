@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "base/seconds.h"
+#include "vm/motor_range.h"
 
 namespace rs::rhino {
 namespace {
@@ -104,10 +105,8 @@ Status RhinoMachine::moveTo(std::span<const std::int32_t> targets) {
     return Status::fault(fmt::format("move has {} targets for {} motors", targets.size(), motors_.size()));
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const vm::MotorSpec& m = motors_[i];
-    if (targets[i] < m.min || targets[i] > m.max)
-      return Status::fault(
-          fmt::format("motor {} target {} is outside its range {}..{}: nothing was sent to the controller", m.letter,
-                      targets[i], m.min, m.max));
+    if (!vm::inRange(m, targets[i]))
+      return Status::fault(vm::targetOutsideRange(m, targets[i]) + ": nothing was sent to the controller");
   }
   if (std::string refused = controller_->refuse(targets); !refused.empty())
     return Status::fault(refused + ": nothing was sent to the controller");

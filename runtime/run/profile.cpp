@@ -96,7 +96,7 @@ Profile profileOf(const vm::Image& image, const RunLog& log, std::size_t slowest
     const vm::Instr& in = image.code[step.index];
     const vm::Micros t = step.end - step.start;
     Kind kind = Kind::Other;
-    if (in.op == vm::Op::WaitFor || in.op == vm::Op::Delay) kind = Kind::Waiting;
+    if (vm::has(in.op, vm::kWaits)) kind = Kind::Waiting;
     if (vm::has(in.op, vm::kMovesMotors)) {
       bool arm = false, any = false;
       const MotorMove* last = nullptr;
@@ -132,7 +132,7 @@ Profile profileOf(const vm::Image& image, const RunLog& log, std::size_t slowest
     for (std::size_t routine : calls.active()) add(subroutines[routineTarget[routine]].time, kind, t);
     // A GOSUB that went through (the next step is its target) enters the
     // subroutine; a RETURN leaves the innermost one.
-    if (in.op == vm::Op::Gosub && s + 1 < log.steps.size() &&
+    if (vm::has(in.op, vm::kCalls) && s + 1 < log.steps.size() &&
         log.steps[s + 1].index == static_cast<std::uint32_t>(in.d)) {
       const auto target = static_cast<std::uint32_t>(in.d);
       auto [it, fresh] = routineId.try_emplace(target, routineTarget.size());
@@ -140,7 +140,7 @@ Profile profileOf(const vm::Image& image, const RunLog& log, std::size_t slowest
       NamedTime& routine = subroutines[target];
       if (routine.count++ == 0) routine.name = nameAt(target), routine.line = image.lines[target];
       calls.push(it->second);
-    } else if (in.op == vm::Op::Return) {
+    } else if (vm::has(in.op, vm::kReturns)) {
       calls.pop();
     }
   }

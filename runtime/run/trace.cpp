@@ -110,7 +110,7 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
                             : std::string();
   if (const runtime::GraspEvent* g = run_.graspOfLastStep())
     changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.world()->cell());
-  if (in.op == vm::Op::MoveP && !im.points[in.b].origin.empty())
+  if (vm::info(in.op).format == vm::Format::Point && !im.points[in.b].origin.empty())
     changed += (changed.empty() ? "" : "  ") + fmt::format("{} from {}", base::safeText(im.points[in.b].name),
                                                            base::safeText(im.points[in.b].origin));
   if (const runtime::EmptyClose* e = run_.emptyCloseOfLastStep())
@@ -145,7 +145,8 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   nlohmann::ordered_json changed = nlohmann::ordered_json::object();
   if (writesVariable(in)) changed[im.variables[in.b]] = vm.variables()[in.b];
   j["changed"] = changed;
-  if (in.op == vm::Op::MoveP && !im.points[in.b].origin.empty()) j["point_from"] = im.points[in.b].origin;
+  if (vm::info(in.op).format == vm::Format::Point && !im.points[in.b].origin.empty())
+    j["point_from"] = im.points[in.b].origin;
   if (const runtime::GraspEvent* g = run_.graspOfLastStep())
     j["grasp"] = {{"object", g->object + 1}, {"name", run_.world()->cell().objects[g->object].shape.name},
                   {"held", g->held}};

@@ -2,6 +2,7 @@
 
 #include "base/seconds.h"
 #include "vm/interpreter.h"
+#include "vm/motor_range.h"
 
 #include <fmt/format.h>
 
@@ -84,9 +85,7 @@ Status SimMachine::checkTargets(std::span<const std::int32_t> targets) const {
   Micros longest = 0;
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const auto& m = motors_[i];
-    if (targets[i] < m.min || targets[i] > m.max)
-      return Status::fault(fmt::format("motor {} target {} is outside its range {}..{}", m.letter,
-                                       targets[i], m.min, m.max));
+    if (!vm::inRange(m, targets[i])) return Status::fault(vm::targetOutsideRange(m, targets[i]));
     if (m.speed <= 0 && targets[i] != positions_[i])
       return Status::fault(fmt::format("motor {} cannot move: its speed is {}", m.letter, m.speed));
     longest = std::max(longest, travelTime(i, targets[i]));

@@ -2,7 +2,8 @@
 # The layer check (scripts/check-layers.sh) passes on the tree, and fails
 # on copies of it with an include planted that points up, or sideways into
 # a layer that is not allowed, naming the file, the line and the layers,
-# and on a list that allows an edge no include uses.
+# and on a list that allows an edge no include uses; then the opcode-name
+# check (test_opcode_names.sh).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 check="$root/scripts/check-layers.sh"
@@ -49,3 +50,5 @@ grep -qF 'layer teach/tui may include vm, but no file of it does' <<<"$out" ||
   { echo "FAIL: expected the unused edge named in:" >&2; echo "$out" >&2; exit 1; }
 echo "ok: an allowed edge no include uses is refused"
 echo "layers: every planted upward include and the unused edge were caught"
+# No layer outside vm/ matches an opcode by name (docs/architecture.md).
+bash "$(dirname "$0")/test_opcode_names.sh"

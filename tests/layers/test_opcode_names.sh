@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# The opcode-name check (scripts/check-opcode-names.sh) passes on the tree,
+# and fails on copies of it with a match by an opcode's name planted outside
+# vm/ (a comparison either way round, a case label, a set, `using enum`),
+# naming the file, the line and the opcode; naming an opcode without
+# matching it (a default value, an instruction built) and another enum's
+# Op (debug's Condition::Op::Eq) pass.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+check="$root/scripts/check-opcode-names.sh"
+bash "$check" "$root"
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+copy() {
+  rm -rf "$work/tree" && mkdir -p "$work/tree"
+  (cd "$root" && find base diag model vm stdlib compiler runtime launch teach testrun wire lsp debug dap cli bench \
+     \( -name '*.h' -o -name '*.cpp' \) -type f -print | tar cf - -T -) | tar xf - -C "$work/tree"
+}
+expect_failure() {  # FILE LINE-TO-PLANT EXPECTED-TEXT
+  copy
+  echo "$2" >> "$work/tree/$1"
+  if out=$(bash "$check" "$work/tree" 2>&1); then
+    echo "FAIL: the check passed with '$2' planted in $1" >&2; exit 1
+  fi
+  if ! grep -qF "$3" <<<"$out"; then
+    echo "FAIL: expected '$3' in:" >&2; echo "$out" >&2; exit 1
+  fi
+  echo "ok: '$2' in $1 is refused"
+}
+expect_pass() {  # FILE LINE-TO-PLANT
+  copy
+  echo "$2" >> "$work/tree/$1"
+  if ! out=$(bash "$check" "$work/tree" 2>&1); then
+    echo "FAIL: the check refused '$2' in $1:" >&2; echo "$out" >&2; exit 1
+  fi
+  echo "ok: '$2' in $1 passes"
+}
+lines=$(wc -l < "$root/testrun/coverage.cpp")
+expect_failure testrun/coverage.cpp 'bool b(vm::Op op) { return op == vm::Op::JmpIn; }' \
+  "testrun/coverage.cpp:$((lines + 1)): error: opcode Op::JmpIn matched by name outside vm/"
+expect_failure runtime/run/profile.cpp 'bool b(vm::Op op) { return rs::vm::Op::Gosub!=op; }' \
+  'error: opcode Op::Gosub matched by name outside vm/'
+expect_failure lsp/program_index.cpp 'int f(vm::Op op) { switch (op) { case vm::Op::Return: return 1; default: return 0; } }' \
+  'error: opcode Op::Return matched by name outside vm/'
+expect_failure cli/lib/app.cpp 'const std::set<vm::Op> waits{vm::Op::WaitFor, vm::Op::Delay};' \
+  'error: opcode Op::WaitFor matched by name outside vm/'
+expect_failure launch/run_diagnostics.cpp 'using enum vm::Op;' \
+  'error: opcode using enum vm::Op matched by name outside vm/'
+expect_failure bench/generate.cpp 'bool e(Op op) { return op==Op::End; }' \
+  'error: opcode Op::End matched by name outside vm/'
+expect_pass lsp/program_index.cpp 'struct Planted { vm::Op op = vm::Op::End; };'
+expect_pass compiler/program/codegen.cpp 'const vm::Instr planted{vm::Op::MoveTo, 0, 2, 0, 0};'
+expect_pass debug/expression.cpp 'bool planted(Condition c) { return c.op == Condition::Op::Eq; }'
+echo "opcode names: every planted match by name outside vm/ was caught, every mere naming passed"
