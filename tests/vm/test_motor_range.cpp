@@ -11,7 +11,7 @@
 
 namespace {
 
-rs::vm::MotorSpec motor(char letter, std::int32_t min, std::int32_t max) {
+constexpr rs::vm::MotorSpec motor(char letter, std::int32_t min, std::int32_t max) {
   rs::vm::MotorSpec m;
   m.letter = letter, m.min = min, m.max = max;
   return m;
