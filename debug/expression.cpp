@@ -68,7 +68,8 @@ diag::Result<Expression> parseExpression(const vm::Image& image, std::string_vie
       return diag::refusal(fmt::format("'{}': {} takes a line number 1..8", shown(text), word));
     return Expression{kind, static_cast<std::uint32_t>(*n), fmt::format("{} {}", word, *n)};
   }
-  return diag::refusal(fmt::format("'{}' is not a variable of the program, a motor letter, 'in N', 'out N' or 'clock'", shown(text)));
+  return diag::refusal(
+      fmt::format("'{}' is not a variable of the program, a motor letter, 'in N', 'out N' or 'clock'", shown(text)));
 }
 
 std::int64_t valueOf(const runtime::Run& run, const Expression& e) {
@@ -179,7 +180,8 @@ diag::Result<HitCondition> parseHitCondition(std::string_view text) {
   else if (text.starts_with("%")) h.op = HitCondition::Op::Every, text.remove_prefix(1);
   const auto n = integer(trimmed(text));
   if (!n || *n < 1)
-    return diag::refusal(fmt::format("'{}': a hit count is N, >= N, == N or % N, with N a whole number from 1", shown(text)));
+    return diag::refusal(
+        fmt::format("'{}': a hit count is N, >= N, == N or % N, with N a whole number from 1", shown(text)));
   h.n = static_cast<std::uint64_t>(*n);
   return h;
 }

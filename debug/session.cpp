@@ -117,7 +117,8 @@ diag::Result<int> Session::breakAtLabel(std::string_view label) {
 
 diag::Result<int> Session::breakAtInstruction(std::uint32_t index) {
   const std::size_t size = run_->image().code.size();
-  if (index >= size) return diag::refusal(fmt::format("no instruction @{}: the program has @1 to @{}", index + 1, size));
+  if (index >= size)
+    return diag::refusal(fmt::format("no instruction @{}: the program has @1 to @{}", index + 1, size));
   Breakpoint b;
   b.id = nextId();
   b.kind = Breakpoint::Kind::Instruction;

@@ -215,7 +215,8 @@ std::optional<workcell::Gripper> Library::buildGripper(const GripperDef& gripper
                : part == kinematics::kGripperApproach ? def->approach[0].pos
                                                       : def->normal[0].pos;
       }};
-  for (const kinematics::KinematicsError& e : model.errors) diagnostics_.push_back(compiler::kinematicsDiagnostic(e, places));
+  for (const kinematics::KinematicsError& e : model.errors)
+    diagnostics_.push_back(compiler::kinematicsDiagnostic(e, places));
   if (!model.ok()) return std::nullopt;
   g.model = *model.value;
   return g;

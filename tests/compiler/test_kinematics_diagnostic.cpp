@@ -113,8 +113,8 @@ TEST_CASE("kinematics diagnostic: a pose problem points at the part of the pose,
                                                 {PoseField::Normal, {40, 30}},
                                                 {PoseField::Grip, {40, 5}}};
   for (const auto& [field, pos] : expected) {
-    const auto d = kinematicsDiagnostic(PoseProblem{field, "the pose is out of reach", "move it closer", "pose-unreachable"},
-                                        places);
+    const auto d = kinematicsDiagnostic(
+        PoseProblem{field, "the pose is out of reach", "move it closer", "pose-unreachable"}, places);
     CHECK(d.file == "p.rsp");
     CHECK(d.pos == pos);
     CHECK(d.message == "point P1: the pose is out of reach");

@@ -114,8 +114,7 @@ TEST_CASE("serial failures: a line nobody reads is blocked (a real pseudo-termin
   Status s = Status::ok();
   for (int i = 0; i < 1'000'000 && s; ++i) s = session.send("E+1000");
   CHECK(s.code == Status::Code::Fault);
-  CHECK(s.message == "the serial line to " + pty.slave +
-                         " is blocked: \"E+1000\" could not be sent within 0.200 s");
+  CHECK(s.message == "the serial line to " + pty.slave + " is blocked: \"E+1000\" could not be sent within 0.200 s");
   CHECK_FALSE(session.portGone());
   CHECK_THAT(logText.str(), Catch::Contains("  (not sent: write timed out)\n"));
 }
