@@ -112,8 +112,8 @@ int main(int argc, char** argv) {
     const std::string path = (dir / "big.rsp").string();
     std::string error;
     if (!rs::base::writeFileAtomically(path, program(1'000), error)) return fail(error);
-    std::optional<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path, error);
-    if (!file) return fail(error);
+    rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path);
+    if (!file) return fail(file.failure().message);
     std::vector<double> writes;
     for (int r = 0; r < reps; ++r) {
       const auto t0 = Clock::now();
@@ -130,8 +130,8 @@ int main(int argc, char** argv) {
     const std::string path = (dir / "jog.rsp").string();
     std::string error;
     if (!rs::base::writeFileAtomically(path, "        END\nPOINTS\n", error)) return fail(error);
-    std::optional<rs::teach::ProgramFile> jogFile = rs::teach::ProgramFile::load(path, error);
-    if (!jogFile) return fail(error);
+    rs::diag::Result<rs::teach::ProgramFile> jogFile = rs::teach::ProgramFile::load(path);
+    if (!jogFile) return fail(jogFile.failure().message);
     rs::teach::Pendant pendant(cell, rs::launch::cellTarget(*cell).motors, *jogFile);
     rs::teach::PendantSource source(pendant, rs::teach::teachPageHtml(*cell, path));
     rs::teach::LiveServer server(source, rs::teach::randomToken());

@@ -131,8 +131,8 @@ Adapter::Reply Adapter::dispatch(const std::string& command, const Json& args) {
   if (state_ == State::Terminated) return Error{fmt::format("{}: the debug session has been terminated", command)};
   if (command == "stepOut") {
     auto r = session_->finish();
-    if (auto* problem = std::get_if<std::string>(&r)) return Error{*problem};
-    pending_ = [this, stop = std::get<debug::Stop>(r)] { reportStop(stop); };
+    if (!r) return Error{r.failure().message};
+    pending_ = [this, stop = *r] { reportStop(stop); };
     // finish() has already run: the response still goes first.
     return Json(nullptr);
   }
@@ -228,25 +228,25 @@ Adapter::Reply Adapter::setBreakpoints(const Json& args) {
     const std::int64_t line = b.at("line").get<std::int64_t>();
     Json result = {{"verified", false}, {"line", line}};
     auto made = line >= 1 && line <= UINT32_MAX ? session_->breakAtLine(static_cast<std::uint32_t>(line))
-                                                : std::variant<int, std::string>(std::string("no such line"));
-    if (auto* problem = std::get_if<std::string>(&made)) {
-      result["message"] = *problem;
+                                                : diag::Result<int>(diag::refusal("no such line"));
+    if (!made) {
+      result["message"] = made.failure().message;
       out.push_back(result);
       continue;
     }
-    const int id = std::get<int>(made);
+    const int id = *made;
     std::optional<debug::Condition> condition;
     std::optional<debug::HitCondition> hits;
     std::string problem;
     if (const std::string c = stringArg(b, "condition"); !c.empty()) {
       auto parsed = debug::parseCondition(image, debug::ioWords(c));
-      if (auto* e = std::get_if<std::string>(&parsed)) problem = *e;
-      else condition = std::get<debug::Condition>(parsed);
+      if (!parsed) problem = parsed.failure().message;
+      else condition = *parsed;
     }
     if (const std::string h = stringArg(b, "hitCondition"); !h.empty() && problem.empty()) {
       auto parsed = debug::parseHitCondition(h);
-      if (auto* e = std::get_if<std::string>(&parsed)) problem = *e;
-      else hits = std::get<debug::HitCondition>(parsed);
+      if (!parsed) problem = parsed.failure().message;
+      else hits = *parsed;
     }
     if (!problem.empty()) {
       session_->remove(id);

@@ -110,8 +110,8 @@ Adapter::Reply Adapter::variables(const Json& args) {
 Adapter::Reply Adapter::evaluate(const Json& args) {
   const std::string text = args.at("expression").get<std::string>();
   auto e = debug::parseExpression(session_->run().image(), debug::ioWords(text));
-  if (auto* problem = std::get_if<std::string>(&e)) return Error{*problem};
-  const debug::Expression& x = std::get<debug::Expression>(e);
+  if (!e) return Error{e.failure().message};
+  const debug::Expression& x = *e;
   const std::int64_t value = debug::valueOf(session_->run(), x);
   std::string shown = std::to_string(value);
   if (x.kind == debug::Expression::Kind::Input || x.kind == debug::Expression::Kind::Output) shown = value ? "on" : "off";

@@ -101,12 +101,9 @@ std::string shown(std::string_view text) {
   return s;
 }
 
-std::optional<vm::Micros> seconds(std::string_view text, std::string& error) {
+diag::Result<vm::Micros> seconds(std::string_view text) {
   const stimuli::text::SecondsParse s = stimuli::text::parseSeconds(text);
-  if (!s.error.empty()) {
-    error = s.error;
-    return std::nullopt;
-  }
+  if (!s.error.empty()) return diag::refusal(s.error);
   return s.micros;
 }
 
@@ -161,10 +158,12 @@ bool Console::execute(std::string_view line) {
       error(fmt::format("{} needs a time in seconds (usage: {})", name, command->usage));
       return std::nullopt;
     }
-    std::string problem;
-    const auto t = seconds(args, problem);
-    if (!t) error(problem);
-    return t;
+    const auto t = seconds(args);
+    if (!t) {
+      error(t.failure().message);
+      return std::nullopt;
+    }
+    return std::optional<vm::Micros>(*t);
   };
   if (name == "quit") return false;
   if (name == "help") help(args);
@@ -182,8 +181,8 @@ bool Console::execute(std::string_view line) {
   else if (name == "finish") {
     if (noArgs()) {
       auto r = session_.finish();
-      if (auto* problem = std::get_if<std::string>(&r)) error(*problem);
-      else moved(std::get<Stop>(r));
+      if (!r) error(r.failure().message);
+      else moved(*r);
     }
   }
   else if (name == "continue") { if (noArgs()) moved(session_.resume()); }
@@ -235,29 +234,28 @@ void Console::breakCommand(std::string_view args) {
   if (ifAt < w.size()) {
     const std::size_t end = hitsAt > ifAt ? hitsAt : w.size();
     auto c = parseCondition(image, ioWords(joined(std::span(w).subspan(ifAt + 1, end - ifAt - 1))));
-    if (auto* problem = std::get_if<std::string>(&c)) return error(*problem);
-    condition = std::get<Condition>(c);
+    if (!c) return error(c.failure().message);
+    condition = *c;
   }
   std::optional<HitCondition> hits;
   if (hitsAt < w.size()) {
     const std::size_t end = ifAt > hitsAt ? ifAt : w.size();
     auto h = parseHitCondition(joined(std::span(w).subspan(hitsAt + 1, end - hitsAt - 1)));
-    if (auto* problem = std::get_if<std::string>(&h)) return error(*problem);
-    hits = std::get<HitCondition>(h);
+    if (!h) return error(h.failure().message);
+    hits = *h;
   }
-  std::variant<int, std::string> made;
+  diag::Result<int> made = diag::refusal("no place");  // every place below sets it
   std::string note;
   if (base::sameName(place[0], "at")) {
     if (place.size() != 2) return error("break at TIME takes one time in seconds, e.g. break at 2.5");
-    std::string problem;
-    const auto t = seconds(place[1], problem);
-    if (!t) return error(problem);
+    const auto t = seconds(place[1]);
+    if (!t) return error(t.failure().message);
     made = session_.breakAtTime(*t);
   } else if (base::sameName(place[0], "when")) {
     if (place.size() < 2) return error("break when needs a condition: output N on|off, input N on|off, VAR = VALUE");
     auto c = parseCondition(image, ioWords(joined(place.subspan(1))));
-    if (auto* problem = std::get_if<std::string>(&c)) return error(*problem);
-    made = session_.breakWhen(std::get<Condition>(c));
+    if (!c) return error(c.failure().message);
+    made = session_.breakWhen(*c);
   } else if (place.size() != 1) {
     return error(fmt::format("'{}' is not a place: LINE, LABEL, @N, at TIME or when COND", shown(joined(place))));
   } else if (place[0].front() == '@') {
@@ -272,8 +270,8 @@ void Console::breakCommand(std::string_view args) {
   } else {
     made = session_.breakAtLabel(place[0]);
   }
-  if (auto* problem = std::get_if<std::string>(&made)) return error(*problem);
-  const int id = std::get<int>(made);
+  if (!made) return error(made.failure().message);
+  const int id = *made;
   session_.qualify(id, condition, hits);
   for (const Breakpoint& b : session_.breakpoints())
     if (b.id == id) out_ << fmt::format("breakpoint {}: {}{}\n", id, b.describe(), note);
@@ -337,8 +335,8 @@ void Console::printCommand(std::string_view args) {
     out_ << fmt::format("clock = {} s (step {})\n", base::formatSeconds(v.clock), v.steps);
   } else {
     auto e = parseExpression(image, ioWords(args));
-    if (auto* problem = std::get_if<std::string>(&e)) return error(*problem);
-    const Expression& x = std::get<Expression>(e);
+    if (!e) return error(e.failure().message);
+    const Expression& x = *e;
     out_ << fmt::format("{} = {}\n", base::safeText(x.name), valueOf(session_.run(), x));
   }
 }
@@ -346,8 +344,8 @@ void Console::printCommand(std::string_view args) {
 void Console::watchCommand(std::string_view args) {
   if (args.empty()) return error("watch needs something to watch: VAR, output N, input N or a motor letter");
   auto e = parseExpression(session_.run().image(), ioWords(args));
-  if (auto* problem = std::get_if<std::string>(&e)) return error(*problem);
-  const Expression& x = std::get<Expression>(e);
+  if (!e) return error(e.failure().message);
+  const Expression& x = *e;
   const int id = session_.watch(x);
   out_ << fmt::format("watch {}: {} (now {})\n", id, base::safeText(x.name), valueOf(session_.run(), x));
 }

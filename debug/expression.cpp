@@ -48,9 +48,9 @@ std::string shown(std::string_view text) { return base::safeText(text.substr(0, 
 
 }  // namespace
 
-std::variant<Expression, std::string> parseExpression(const vm::Image& image, std::string_view text) {
+diag::Result<Expression> parseExpression(const vm::Image& image, std::string_view text) {
   text = trimmed(text);
-  if (text.empty()) return std::string("an expression is a variable, a motor letter, 'in N', 'out N' or 'clock'");
+  if (text.empty()) return diag::refusal("an expression is a variable, a motor letter, 'in N', 'out N' or 'clock'");
   for (std::size_t s = 0; s < image.variables.size(); ++s)
     if (base::sameName(image.variables[s], text))
       return Expression{Expression::Kind::Variable, static_cast<std::uint32_t>(s), image.variables[s]};
@@ -65,10 +65,11 @@ std::variant<Expression, std::string> parseExpression(const vm::Image& image, st
     if (rest.size() == text.size() - word.size() && !rest.empty() && rest.front() != ' ') continue;  // "input"
     const auto n = integer(rest);
     if (!n || *n < 1 || *n > 8)
-      return fmt::format("'{}': {} takes a line number 1..8", shown(text), word);
+      return diag::refusal(fmt::format("'{}': {} takes a line number 1..8", shown(text), word));
     return Expression{kind, static_cast<std::uint32_t>(*n), fmt::format("{} {}", word, *n)};
   }
-  return fmt::format("'{}' is not a variable of the program, a motor letter, 'in N', 'out N' or 'clock'", shown(text));
+  return diag::refusal(
+      fmt::format("'{}' is not a variable of the program, a motor letter, 'in N', 'out N' or 'clock'", shown(text)));
 }
 
 std::int64_t valueOf(const runtime::Run& run, const Expression& e) {
@@ -121,9 +122,9 @@ bool Condition::holds(const runtime::Run& run) const {
   return false;
 }
 
-std::variant<Condition, std::string> parseCondition(const vm::Image& image, std::string_view text) {
+diag::Result<Condition> parseCondition(const vm::Image& image, std::string_view text) {
   text = trimmed(text);
-  if (text.empty()) return std::string("a condition is missing: NAME OP VALUE, with OP one of = <> < <= > >=");
+  if (text.empty()) return diag::refusal("a condition is missing: NAME OP VALUE, with OP one of = <> < <= > >=");
   std::size_t at = std::string_view::npos;
   Condition c;
   std::size_t opLength = 0;
@@ -134,20 +135,20 @@ std::variant<Condition, std::string> parseCondition(const vm::Image& image, std:
         break;
       }
   if (at == std::string_view::npos)
-    return fmt::format("'{}': a condition is NAME OP VALUE, with OP one of = <> < <= > >=", shown(text));
+    return diag::refusal(fmt::format("'{}': a condition is NAME OP VALUE, with OP one of = <> < <= > >=", shown(text)));
   auto left = parseExpression(image, text.substr(0, at));
-  if (auto* error = std::get_if<std::string>(&left)) return *error;
-  c.left = std::get<Expression>(left);
+  if (!left) return left.failure();
+  c.left = *left;
   const std::string_view right = trimmed(text.substr(at + opLength));
   if (base::sameName(right, "on")) c.right = 1;
   else if (base::sameName(right, "off")) c.right = 0;
   else if (const auto n = integer(right)) c.right = *n;
   else if (c.left.kind == Expression::Kind::Clock) {
     const stimuli::text::SecondsParse s = stimuli::text::parseSeconds(right);
-    if (!s.error.empty()) return fmt::format("'{}': {}", shown(right), s.error);
+    if (!s.error.empty()) return diag::refusal(fmt::format("'{}': {}", shown(right), s.error));
     c.right = s.micros;
   } else {
-    return fmt::format("'{}' is not a whole number (or on, off)", shown(right));
+    return diag::refusal(fmt::format("'{}' is not a whole number (or on, off)", shown(right)));
   }
   c.text = fmt::format("{} {} {}", base::safeText(c.left.name), opText(c.op), c.right);
   return c;
@@ -171,7 +172,7 @@ std::string HitCondition::text() const {
   return {};
 }
 
-std::variant<HitCondition, std::string> parseHitCondition(std::string_view text) {
+diag::Result<HitCondition> parseHitCondition(std::string_view text) {
   text = trimmed(text);
   HitCondition h;
   if (text.starts_with(">=")) text.remove_prefix(2);
@@ -179,7 +180,8 @@ std::variant<HitCondition, std::string> parseHitCondition(std::string_view text)
   else if (text.starts_with("%")) h.op = HitCondition::Op::Every, text.remove_prefix(1);
   const auto n = integer(trimmed(text));
   if (!n || *n < 1)
-    return fmt::format("'{}': a hit count is N, >= N, == N or % N, with N a whole number from 1", shown(text));
+    return diag::refusal(
+        fmt::format("'{}': a hit count is N, >= N, == N or % N, with N a whole number from 1", shown(text)));
   h.n = static_cast<std::uint64_t>(*n);
   return h;
 }

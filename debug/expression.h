@@ -10,6 +10,7 @@
 #include <string_view>
 #include <variant>
 
+#include "diag/result.h"
 #include "runtime/run/run.h"
 
 namespace rs::debug {
@@ -24,7 +25,7 @@ struct Expression {
 /// `text` as an expression of `image`'s program: a variable (any case;
 /// variables come before motor letters), a motor letter, `in N`, `out N`,
 /// `clock`. A message saying what is wrong otherwise.
-std::variant<Expression, std::string> parseExpression(const vm::Image& image, std::string_view text);
+diag::Result<Expression> parseExpression(const vm::Image& image, std::string_view text);
 
 /// The value at the run's moment (inputs and outputs 0 or 1).
 std::int64_t valueOf(const runtime::Run& run, const Expression& e);
@@ -40,7 +41,7 @@ struct Condition {
   bool holds(const runtime::Run& run) const;
 };
 
-std::variant<Condition, std::string> parseCondition(const vm::Image& image, std::string_view text);
+diag::Result<Condition> parseCondition(const vm::Image& image, std::string_view text);
 
 /// When a breakpoint stops, counting the times its place was reached (with
 /// its condition true): from the Nth on, only the Nth, or every Nth.
@@ -53,7 +54,7 @@ struct HitCondition {
 };
 
 /// "N", ">= N", "== N", "% N" (DAP's hitCondition; the terminal's `hits`).
-std::variant<HitCondition, std::string> parseHitCondition(std::string_view text);
+diag::Result<HitCondition> parseHitCondition(std::string_view text);
 
 /// The words people type for inputs and outputs, as expressions:
 /// "output 2" -> "out 2", "input 1 on" -> "in 1 = 1", "output 3 off" ->

@@ -88,9 +88,9 @@ std::vector<std::uint32_t> lineStarts(const vm::Image& image, std::uint32_t line
 
 }  // namespace
 
-std::variant<int, std::string> Session::breakAtLine(std::uint32_t line) {
+diag::Result<int> Session::breakAtLine(std::uint32_t line) {
   const std::uint32_t at = lineWithCode(line);
-  if (at == 0) return fmt::format("no instruction on line {} or after it", line);
+  if (at == 0) return diag::refusal(fmt::format("no instruction on line {} or after it", line));
   Breakpoint b;
   b.id = nextId();
   b.kind = Breakpoint::Kind::Line;
@@ -100,9 +100,9 @@ std::variant<int, std::string> Session::breakAtLine(std::uint32_t line) {
   return breakpoints_.back().id;
 }
 
-std::variant<int, std::string> Session::breakAtLabel(std::string_view label) {
+diag::Result<int> Session::breakAtLabel(std::string_view label) {
   const std::optional<std::uint32_t> at = run_->labelInstruction(label);
-  if (!at) return fmt::format("the program has no label '{}'", base::safeText(label.substr(0, 60)));
+  if (!at) return diag::refusal(fmt::format("the program has no label '{}'", base::safeText(label.substr(0, 60))));
   Breakpoint b;
   b.id = nextId();
   b.kind = Breakpoint::Kind::Label;
@@ -115,9 +115,10 @@ std::variant<int, std::string> Session::breakAtLabel(std::string_view label) {
   return breakpoints_.back().id;
 }
 
-std::variant<int, std::string> Session::breakAtInstruction(std::uint32_t index) {
+diag::Result<int> Session::breakAtInstruction(std::uint32_t index) {
   const std::size_t size = run_->image().code.size();
-  if (index >= size) return fmt::format("no instruction @{}: the program has @1 to @{}", index + 1, size);
+  if (index >= size)
+    return diag::refusal(fmt::format("no instruction @{}: the program has @1 to @{}", index + 1, size));
   Breakpoint b;
   b.id = nextId();
   b.kind = Breakpoint::Kind::Instruction;
@@ -128,8 +129,8 @@ std::variant<int, std::string> Session::breakAtInstruction(std::uint32_t index) 
   return breakpoints_.back().id;
 }
 
-std::variant<int, std::string> Session::breakAtTime(vm::Micros t) {
-  if (t < 0) return std::string("a time is not negative");
+diag::Result<int> Session::breakAtTime(vm::Micros t) {
+  if (t < 0) return diag::refusal("a time is not negative");
   Breakpoint b;
   b.id = nextId();
   b.kind = Breakpoint::Kind::Time;
@@ -318,9 +319,9 @@ Stop Session::next() {
   return forward(t);
 }
 
-std::variant<Stop, std::string> Session::finish() {
+diag::Result<Stop> Session::finish() {
   const std::size_t depth = run_->interpreter().callDepth();
-  if (depth == 0 || run_->finished()) return std::string("not in a subroutine: the call stack is empty");
+  if (depth == 0 || run_->finished()) return diag::refusal("not in a subroutine: the call stack is empty");
   Target t;
   t.done = [depth](const runtime::Run& r) { return r.interpreter().callDepth() < depth; };
   return forward(t);

@@ -23,6 +23,7 @@
 
 #include "debug/breakpoint.h"
 #include "debug/timeline.h"
+#include "diag/result.h"
 #include "runtime/run/run.h"
 
 namespace rs::debug {
@@ -74,11 +75,11 @@ class Session {
 
   // --- breakpoints and watches --------------------------------------------
   /// Before line `line` (or the first line with code after it).
-  std::variant<int, std::string> breakAtLine(std::uint32_t line);
-  std::variant<int, std::string> breakAtLabel(std::string_view label);
+  diag::Result<int> breakAtLine(std::uint32_t line);
+  diag::Result<int> breakAtLabel(std::string_view label);
   /// Before instruction `index` (0-based; messages number from 1, as disasm).
-  std::variant<int, std::string> breakAtInstruction(std::uint32_t index);
-  std::variant<int, std::string> breakAtTime(vm::Micros t);
+  diag::Result<int> breakAtInstruction(std::uint32_t index);
+  diag::Result<int> breakAtTime(vm::Micros t);
   /// When `condition` becomes true (`when out 2 = 1`, `when N = 3`).
   int breakWhen(Condition condition);
   /// Adds a condition and a hit count to breakpoint `id`; false if none.
@@ -98,7 +99,7 @@ class Session {
   /// One instruction, over a GOSUB (until it returns).
   Stop next();
   /// Until the current subroutine returns; an error when none is running.
-  std::variant<Stop, std::string> finish();
+  diag::Result<Stop> finish();
   /// Until a breakpoint, a watch, or the end.
   Stop resume();
   /// Until the clock passes `t` (or a breakpoint, or the end).

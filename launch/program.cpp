@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <ostream>
 
-#include "base/file_io.h"
+#include "diag/read_input.h"
 #include "launch/cell_directive.h"
 #include "model/workcell/cell_file.h"
 #include "stdlib/default_robot.h"
@@ -53,9 +53,12 @@ bool endsWithImageSuffix(std::string_view path) {
 
 // FILE's bytes, or nothing with the reason in `into`.
 std::optional<std::string> readBytes(const std::string& path, LoadedProgram& into) {
-  base::FileRead read = base::readFile(path, kMaxInputBytes);
-  if (!read.bytes) into.diagnostics.push_back(wholeFileError(path, "cannot read file: " + read.error));
-  return std::move(read.bytes);
+  diag::Result<std::string> read = diag::readInput(path, kMaxInputBytes, "cannot read file");
+  if (!read) {
+    into.diagnostics.push_back(read.failure());
+    return std::nullopt;
+  }
+  return std::move(read).value();
 }
 
 // The request with its cell: --cell when given, else the program source's
@@ -72,11 +75,11 @@ ProgramRequest withDirective(const ProgramRequest& request, const std::string& b
 // are an image.
 void readProgram(const std::string& path, std::string bytes, const compiler::Target& target, LoadedProgram& into) {
   if (vm::looksLikeImage(bytes)) {
-    vm::LoadResult loaded = vm::loadImage(bytes);
-    if (!loaded.error.empty())
-      into.diagnostics.push_back(wholeFileError(path, loaded.error));
+    diag::Result<vm::Image> loaded = vm::loadImage(bytes, path);
+    if (!loaded)
+      into.diagnostics.push_back(loaded.failure());
     else
-      into.image = std::make_shared<const vm::Image>(std::move(loaded.image));
+      into.image = std::make_shared<const vm::Image>(std::move(loaded).value());
     return;
   }
   if (endsWithImageSuffix(path))

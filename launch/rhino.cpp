@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "base/file_io.h"
+#include "diag/read_input.h"
 #include "launch/program.h"
 #include "runtime/rhino/interrupt.h"
 #include "runtime/rhino/rhino_machine.h"
@@ -44,11 +44,11 @@ bool buildSettings(const std::string& dialectText, const std::string& file, cons
   settings = rhino::defaultSettings(dialectText == "mark4" ? Dialect::Mark4 : Dialect::Mark3);
   const std::size_t before = diags.size();
   if (!file.empty()) {
-    const base::FileRead text = base::readFile(file, kMaxInputBytes);
-    if (!text.bytes) {
-      diags.push_back({file, {}, diag::Severity::Error, "cannot read serial settings: " + text.error});
+    const diag::Result<std::string> text = diag::readInput(file, kMaxInputBytes, "cannot read serial settings");
+    if (!text) {
+      diags.push_back(text.failure());
     } else {
-      for (diag::Diagnostic& d : rhino::applySettingsText(settings, *text.bytes, file)) diags.push_back(std::move(d));
+      for (diag::Diagnostic& d : rhino::applySettingsText(settings, *text, file)) diags.push_back(std::move(d));
     }
   }
   for (const std::string& s : sets)

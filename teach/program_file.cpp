@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 
 #include "base/file_swap.h"
+#include "diag/read_input.h"
 
 namespace rs::teach {
 
@@ -18,12 +19,9 @@ std::uint64_t textHash(std::string_view bytes) {
   return h;
 }
 
-std::optional<ProgramFile> ProgramFile::load(const std::string& path, std::string& error) {
+diag::Result<ProgramFile> ProgramFile::load(const std::string& path) {
   base::FileRead read = base::readFileWhenQuiet(path, kMaxProgramBytes);
-  if (!read.bytes) {
-    error = fmt::format("cannot read {}: {}", path, read.error);
-    return std::nullopt;
-  }
+  if (!read.bytes) return diag::fromFileRead("robotsim", std::move(read), "cannot read " + path).failure();
   ProgramFile f;
   f.path_ = path;
   f.points_ = PointsText(*read.bytes);
@@ -32,9 +30,8 @@ std::optional<ProgramFile> ProgramFile::load(const std::string& path, std::strin
 }
 
 std::string ProgramFile::reload() {
-  std::string error;
-  std::optional<ProgramFile> again = load(path_, error);
-  if (!again) return error;
+  diag::Result<ProgramFile> again = load(path_);
+  if (!again) return again.failure().message;
   points_ = std::move(again->points_);
   hash_ = again->hash_;
   return {};

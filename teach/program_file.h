@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "diag/result.h"
 #include "teach/points_edit.h"
 
 namespace rs::teach {
@@ -24,8 +25,9 @@ std::uint64_t textHash(std::string_view bytes);
 
 class ProgramFile {
  public:
-  /// Reads `path`; nullopt with `error` set when it cannot be read.
-  static std::optional<ProgramFile> load(const std::string& path, std::string& error);
+  /// Reads `path`; when it cannot be read, a diagnostic for the whole
+  /// command ("robotsim: error: cannot read PATH: REASON").
+  static diag::Result<ProgramFile> load(const std::string& path);
 
   const std::string& path() const { return path_; }
   const PointsText& points() const { return points_; }

@@ -16,10 +16,9 @@ diag::Diagnostic error(const std::string& file, std::string message, std::string
 
 OpenedPendant openPendant(const TeachRequest& request) {
   OpenedPendant out;
-  std::string why;
-  std::optional<ProgramFile> file = ProgramFile::load(request.program.file, why);
+  diag::Result<ProgramFile> file = ProgramFile::load(request.program.file);
   if (!file) {
-    out.diagnostics.push_back(error("robotsim", why));
+    out.diagnostics.push_back(file.failure());
     return out;
   }
   const std::string text = file->points().text();

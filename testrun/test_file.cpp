@@ -7,6 +7,7 @@
 #include <streambuf>
 
 #include "base/file_io.h"
+#include "diag/read_input.h"
 #include "launch/program.h"
 #include "launch/run_request.h"
 #include "runtime/run/empty_close.h"
@@ -320,13 +321,13 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
 }
 
 std::shared_ptr<const diag::SourceFile> readSource(const std::string& path, TestResult& r) {
-  const base::FileRead read = base::readFile(path, launch::kMaxInputBytes);
-  if (!read.bytes) {
+  diag::Result<std::string> read = diag::readInput(path, launch::kMaxInputBytes, "cannot read");
+  if (!read) {
     r.status = TestStatus::Error;
-    r.problems.push_back({path, {}, diag::Severity::Error, "cannot read: " + read.error});
+    r.problems.push_back(read.failure());
     return nullptr;
   }
-  return std::make_shared<const diag::SourceFile>(path, *read.bytes);
+  return std::make_shared<const diag::SourceFile>(path, std::move(read).value());
 }
 
 bool isScenarioFile(const std::string& path) { return fs::path(path).extension() == ".rstest"; }

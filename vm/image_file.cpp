@@ -318,7 +318,14 @@ bool looksLikeImage(std::string_view bytes) {
          std::memcmp(bytes.data(), kImageMagic.data(), kImageMagic.size()) == 0;
 }
 
-LoadResult loadImage(std::string_view bytes) {
+namespace {
+
+struct LoadResult {
+  Image image;
+  std::string error;  // empty when the image loaded and verified
+};
+
+LoadResult decodeImage(std::string_view bytes) {
   LoadResult result;
   if (!looksLikeImage(bytes)) return {{}, "not a robotsim image (bad magic number)"};
   if (bytes.size() > kMaxImageBytes) return {{}, "image larger than 1 GiB"};
@@ -357,6 +364,14 @@ LoadResult loadImage(std::string_view bytes) {
   if (r.failed) return {{}, "malformed image: " + r.error};
   if (VerifyError e = verify(im); !e.message.empty()) return {{}, "image rejected by the verifier: " + e.message};
   return result;
+}
+
+}  // namespace
+
+diag::Result<Image> loadImage(std::string_view bytes, const std::string& file) {
+  LoadResult decoded = decodeImage(bytes);
+  if (!decoded.error.empty()) return diag::Diagnostic{file, {}, diag::Severity::Error, std::move(decoded.error)};
+  return std::move(decoded.image);
 }
 
 }  // namespace rs::vm

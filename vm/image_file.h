@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "diag/result.h"
 #include "vm/image.h"
 
 namespace rs::vm {
@@ -32,15 +33,10 @@ bool writeImage(const Image& image, std::ostream& out);
 /// True if the bytes start with the image magic number (whatever the name).
 bool looksLikeImage(std::string_view bytes);
 
-struct LoadResult {
-  Image image;
-  std::string error;  // empty when the image loaded and verified
-};
-
 /// Decodes and verifies. Never trusts a count or an index from the file:
-/// a truncated, corrupt or hostile file gets an error, not undefined
-/// behaviour.
-LoadResult loadImage(std::string_view bytes);
+/// a truncated, corrupt or hostile file gets a diagnostic for the whole
+/// of `file` (the name it is reported under), not undefined behaviour.
+diag::Result<Image> loadImage(std::string_view bytes, const std::string& file = {});
 
 std::uint32_t crc32(const std::uint8_t* data, std::size_t size);
 /// The CRC of what `crc` was the CRC of, followed by `data` (crc32Update(0, ...) = crc32).

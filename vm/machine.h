@@ -13,11 +13,18 @@ namespace rs::vm {
 /// Virtual time in microseconds since the start of the run.
 using Micros = std::int64_t;
 
+/// What a machine call did, and what one read or write of the serial line
+/// to a controller did (runtime/rhino's Link): one status for both, since
+/// the line's failures become the machine's. A machine call answers Ok,
+/// Deadlock or Fault; Timeout and Closed are the line's own, which
+/// rhino::Session turns into a Fault that says what the line was doing.
 struct Status {
   enum class Code : std::uint8_t {
     Ok,
-    Deadlock,   // a wait that nothing will ever satisfy
-    Fault,      // the machine failed (limit, controller error, ...)
+    Deadlock,  // a wait that nothing will ever satisfy
+    Fault,     // the machine failed (limit, controller error, a system error on the line, ...)
+    Timeout,   // the line: nothing arrived (or could be written) in time
+    Closed,    // the line: the other end went away (hang-up, device unplugged)
   };
   Code code = Code::Ok;
   std::string message;
@@ -25,6 +32,8 @@ struct Status {
   static Status ok() { return {}; }
   static Status deadlock(std::string m) { return {Code::Deadlock, std::move(m)}; }
   static Status fault(std::string m) { return {Code::Fault, std::move(m)}; }
+  static Status timeout() { return {Code::Timeout, {}}; }
+  static Status closed(std::string m) { return {Code::Closed, std::move(m)}; }
   explicit operator bool() const { return code == Code::Ok; }
 };
 

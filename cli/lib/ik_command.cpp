@@ -12,6 +12,7 @@
 #include "cli/lib/number_args.h"
 #include "cli/lib/robot_commands.h"
 #include "compiler/description/library.h"
+#include "compiler/program/kinematics_diagnostic.h"
 #include "diag/diagnostic.h"
 #include "model/kinematics/ik.h"
 #include "model/workcell/pose_solver.h"
@@ -127,8 +128,7 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
   const std::string robotName = base::safeText(placed.robot.name);
   const kinematics::IkFamily family = solver.ik().family();
   if (!r.ok()) {
-    err << fmt::format("robotsim: error: {}: {}\n", robotName, r.problem->message);
-    if (!r.problem->hint.empty()) err << fmt::format("  hint: {}\n", r.problem->hint);
+    err << diag::render(compiler::kinematicsDiagnostic(*r.problem, {"robotsim", placed.robot.name, {}}), nullptr);
     return kExitBadInput;
   }
   std::string pose = fmt::format("AT {}{} {} {}", request.robotFrame ? "ROBOT " : "", formatNumber(o.position[0]),

@@ -5,6 +5,7 @@
 #include "base/file_io.h"
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
+#include "diag/read_input.h"
 #include "compiler/program/compiler.h"
 #include "vm/disasm.h"
 #include "vm/image_file.h"
@@ -17,16 +18,16 @@ namespace {
 template <typename Dump>
 int sourceView(const launch::ProgramRequest& request, std::ostream& out, std::ostream& err, Dump dump) {
   const std::string& file = request.file;
-  base::FileRead text = base::readFile(file, launch::kMaxInputBytes);
-  if (!text.bytes) {
-    err << fmt::format("{}: error: cannot read file: {}\n", base::safeText(file), text.error);
+  diag::Result<std::string> text = diag::readInput(file, launch::kMaxInputBytes, "cannot read file");
+  if (!text) {
+    err << fmt::format("{}: error: {}\n", base::safeText(file), text.failure().message);
     return kExitBadInput;
   }
-  if (vm::looksLikeImage(*text.bytes)) {
+  if (vm::looksLikeImage(*text)) {
     err << fmt::format("{}: error: this is a compiled image; try robotsim disasm\n", base::safeText(file));
     return kExitBadInput;
   }
-  const diag::SourceFile source(file, std::move(*text.bytes));
+  const diag::SourceFile source(file, std::move(text).value());
   diag::Diagnostics diags(file, request.maxErrors);
   out << dump(source, diags);
   launch::printDiagnostics(

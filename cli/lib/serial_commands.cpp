@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "base/file_io.h"
+#include "diag/read_input.h"
 #include "base/text.h"
 #include "cli/lib/app.h"
 #include "cli/lib/number_args.h"
@@ -240,23 +241,22 @@ std::string consoleCommand(EmulatorSession& s, const std::string& line) {
   return {};
 }
 
-bool parseStart(const std::string& text, std::array<std::int32_t, 8>& start, std::string& error) {
+// --start L=N,...: where each of the motors A..H starts (`start`, the others as they were).
+diag::Result<std::array<std::int32_t, 8>> parseStart(const std::string& text, std::array<std::int32_t, 8> start) {
+  const auto refused = [](std::string message) {
+    return diag::Diagnostic{"robotsim", {}, diag::Severity::Error, std::move(message)};
+  };
   std::istringstream in(text);
   for (std::string item; std::getline(in, item, ',');) {
     const std::size_t eq = item.find('=');
     const char letter = item.empty() ? 0 : static_cast<char>(std::toupper(item[0]));
-    if (eq != 1 || letter < 'A' || letter > 'H') {
-      error = fmt::format("--start: '{}' is not L=N (motor letter A..H, encoder count)", item);
-      return false;
-    }
+    if (eq != 1 || letter < 'A' || letter > 'H')
+      return refused(fmt::format("--start: '{}' is not L=N (motor letter A..H, encoder count)", item));
     const auto v = parseWhole<std::int32_t>(std::string_view(item).substr(2), -1'000'000, 1'000'000);
-    if (!v) {
-      error = fmt::format("--start: '{}' is not L=N with N in -1000000..1000000", item);
-      return false;
-    }
+    if (!v) return refused(fmt::format("--start: '{}' is not L=N with N in -1000000..1000000", item));
     start[static_cast<std::size_t>(letter - 'A')] = *v;
   }
-  return true;
+  return start;
 }
 
 std::string motorList(const std::vector<vm::MotorSpec>& motors) {
@@ -288,10 +288,12 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
     err << "robotsim: error: " << e << '\n';
     return kExitBadInput;
   }
-  if (!parseStart(o.start, config.start, error)) {
-    err << "robotsim: error: " << error << '\n';
+  const diag::Result<std::array<std::int32_t, 8>> start = parseStart(o.start, config.start);
+  if (!start) {
+    err << "robotsim: error: " << start.failure().message << '\n';
     return kExitBadInput;
   }
+  config.start = *start;
   config.rateScale = o.speed;
   config.latency = static_cast<vm::Micros>(std::llround(o.latency * 1e6));
   config.switchWidth = o.switchWidth;
@@ -300,12 +302,12 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
   config.fault.slowDelay = static_cast<vm::Micros>(std::llround(o.slowDelay * 1e6));
   std::vector<std::string> script;
   if (!o.script.empty()) {
-    const base::FileRead text = base::readFile(o.script, launch::kMaxInputBytes);
-    if (!text.bytes) {
-      err << fmt::format("{}: error: cannot read the script: {}\n", o.script, text.error);
+    const diag::Result<std::string> text = diag::readInput(o.script, launch::kMaxInputBytes, "cannot read the script");
+    if (!text) {
+      err << fmt::format("{}: error: {}\n", o.script, text.failure().message);
       return kExitBadInput;
     }
-    std::istringstream lines(*text.bytes);
+    std::istringstream lines(*text);
     for (std::string line; std::getline(lines, line);) script.push_back(line);
   }
 

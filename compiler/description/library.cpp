@@ -1,6 +1,7 @@
 #include "compiler/description/library.h"
 
-#include "base/file_io.h"
+#include "compiler/program/kinematics_diagnostic.h"
+#include "diag/read_input.h"
 
 #include <cstdlib>
 #include <fmt/format.h>
@@ -99,17 +100,16 @@ const DescriptionFile* Library::load(const fs::path& path) {
   std::error_code ec;
   const std::string key = fs::weakly_canonical(path, ec).string();
   if (auto it = byPath_.find(key); it != byPath_.end()) return it->second;
-  base::FileRead read;
-  if (auto open = overlay_.find(key); open != overlay_.end()) read.bytes = std::move(open->second);
-  else read = base::readFile(path.string(), kMaxDescriptionBytes);
-  if (!read.bytes) {
-    diagnostics_.push_back(
-        {path.string(), {}, diag::Severity::Error, "cannot read description file: " + read.error});
+  std::optional<diag::Result<std::string>> read;
+  if (auto open = overlay_.find(key); open != overlay_.end()) read.emplace(std::move(open->second));
+  else read.emplace(diag::readInput(path.string(), kMaxDescriptionBytes, "cannot read description file"));
+  if (!*read) {
+    diagnostics_.push_back(read->failure());
     return nullptr;
   }
   diag::Diagnostics d(path.string());
   auto file = std::make_unique<DescriptionFile>(
-      parseDescription(std::make_unique<diag::SourceFile>(path.string(), std::move(*read.bytes)), d));
+      parseDescription(std::make_unique<diag::SourceFile>(path.string(), std::move(**read)), d));
   for (const diag::Diagnostic& diag : d.sorted()) diagnostics_.push_back(diag);
   files_.push_back(std::move(file));
   byPath_[key] = files_.back().get();
@@ -207,14 +207,16 @@ std::optional<workcell::Gripper> Library::buildGripper(const GripperDef& gripper
   const kinematics::GripperPoints points{def->axis2[0].v, def->axis2[1].v, def->axis3[0].v,  def->axis3[1].v,
                                          def->normal[0].v, def->normal[1].v, def->approach[0].v, def->approach[1].v};
   kinematics::Result<kinematics::GripperModel> model = kinematics::makeGripper(points, def->precision);
-  for (const kinematics::KinematicsError& e : model.errors) {
-    // The kinematics core says which vector the error is about; point at its line.
-    const diag::Pos pos = e.index == kinematics::kGripperAxis2      ? def->axis2[0].pos
-                          : e.index == kinematics::kGripperAxis3    ? def->axis3[0].pos
-                          : e.index == kinematics::kGripperApproach ? def->approach[0].pos
-                                                                    : def->normal[0].pos;
-    error(at, pos, fmt::format("gripper '{}': {}", def->name, e.message));
-  }
+  // The kinematics core says which vector the error is about; point at its line.
+  const compiler::KinematicsPlaces places{
+      at.source->name(), fmt::format("gripper '{}'", def->name), def->normal[0].pos, {}, [&](int part) {
+        return part == kinematics::kGripperAxis2      ? def->axis2[0].pos
+               : part == kinematics::kGripperAxis3    ? def->axis3[0].pos
+               : part == kinematics::kGripperApproach ? def->approach[0].pos
+                                                      : def->normal[0].pos;
+      }};
+  for (const kinematics::KinematicsError& e : model.errors)
+    diagnostics_.push_back(compiler::kinematicsDiagnostic(e, places));
   if (!model.ok()) return std::nullopt;
   g.model = *model.value;
   return g;
@@ -255,7 +257,8 @@ std::optional<workcell::Robot> Library::checkRobot(const RobotDef& def, const De
       continue;
     }
     auto frame = kinematics::frameFromPoints(l.origin.v, l.xPoint.v, l.zPoint.v, {}, static_cast<int>(i));
-    for (const auto& e : frame.errors) error(from, l.origin.pos, fmt::format("link '{}': {}", l.link.name, e.message));
+    const compiler::KinematicsPlaces places{from.source->name(), fmt::format("link '{}'", l.link.name), l.origin.pos};
+    for (const auto& e : frame.errors) diagnostics_.push_back(compiler::kinematicsDiagnostic(e, places));
     if (frame.ok()) robot.frames.push_back(*frame.value);
     else ok = false;
   }
@@ -304,13 +307,15 @@ std::optional<workcell::Robot> Library::checkRobot(const RobotDef& def, const De
     drives.push_back({j.precision, -1, j.coupling});
   }
   auto chain = kinematics::ChainModel::fromFrames(robot.frames, types, drives);
-  for (const kinematics::KinematicsError& e : chain.errors) {
-    const bool jointError = e.kind == kinematics::ErrorKind::BadCoupling || e.kind == kinematics::ErrorKind::BadPrecision;
-    const diag::Pos pos = jointError && e.index >= 1 && static_cast<std::size_t>(e.index) <= def.joints.size()
-                        ? def.joints[static_cast<std::size_t>(e.index - 1)].pos
-                        : frameErrorPos(def, def.gripper, e.index);
-    error(from, pos, fmt::format("robot '{}': {}", def.name, e.message));
-  }
+  compiler::KinematicsPlaces places{from.source->name(), fmt::format("robot '{}'", def.name), def.pos};
+  places.joint = [&def](int joint) {
+    return joint >= 1 && static_cast<std::size_t>(joint) <= def.joints.size()
+               ? def.joints[static_cast<std::size_t>(joint - 1)].pos
+               : diag::Pos{};
+  };
+  places.frame = [&def](int frame) { return frameErrorPos(def, def.gripper, frame); };
+  for (const kinematics::KinematicsError& e : chain.errors)
+    diagnostics_.push_back(compiler::kinematicsDiagnostic(e, places));
   if (!chain.ok()) return std::nullopt;
   robot.chain = std::move(chain.value);
   return robot;

@@ -1,5 +1,6 @@
 #include "compiler/program/translator.h"
 
+#include "compiler/program/kinematics_diagnostic.h"
 #include "model/workcell/pose_solver.h"
 
 #include <fmt/format.h>
@@ -300,13 +301,15 @@ void Translator::State::resolvePose(const PointDef& p, std::span<const std::int3
   if (pose.gripGiven) request.grip = static_cast<std::int32_t>(pose.grip.number);
   const workcell::PoseResult r = poser->solve(request, reference, referenceQ);
   if (!r.ok()) {
-    const workcell::PoseProblem& problem = *r.problem;
-    const diag::Pos at = problem.field == workcell::PoseField::Approach ? pose.approach.pos
-                         : problem.field == workcell::PoseField::Normal ? pose.normal.pos
-                         : problem.field == workcell::PoseField::Grip   ? pose.grip.pos
-                                                                        : pose.at.pos;
-    diag.error(at.line ? at : pose.at.pos, fmt::format("point {}: {}", p.name, problem.message),
-               diag::Hint{problem.hint}, problem.code);
+    const KinematicsPlaces places{{}, fmt::format("point {}", p.name), pose.at.pos, {}, {}, {},
+                                  [&pose](workcell::PoseField field) {
+                                    return field == workcell::PoseField::Approach ? pose.approach.pos
+                                           : field == workcell::PoseField::Normal ? pose.normal.pos
+                                           : field == workcell::PoseField::Grip   ? pose.grip.pos
+                                                                                  : pose.at.pos;
+                                  }};
+    diag::Diagnostic d = kinematicsDiagnostic(*r.problem, places);
+    diag.add(d.pos, d.severity, std::move(d.message), d.code, {}, std::move(d.hint));
     return;
   }
   point.values = r.encoders;

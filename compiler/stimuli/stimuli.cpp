@@ -10,7 +10,7 @@
 // parser goes on with the next line, so one run reports every bad line.
 #include "compiler/stimuli/stimuli.h"
 
-#include "base/file_io.h"
+#include "diag/read_input.h"
 
 #include <fmt/format.h>
 
@@ -203,12 +203,9 @@ StimuliParse parseStimuli(std::string_view text, std::string_view fileName) {
 
 StimuliParse loadStimuliFile(const std::filesystem::path& path) {
   const auto name = path.string();
-  const auto fileError = [&](std::string message) {
-    return StimuliParse{{}, {{name, {}, diag::Severity::Error, std::move(message)}}};
-  };
-  const base::FileRead read = base::readFile(name, kMaxFileBytes);
-  if (!read.bytes) return fileError("cannot read the stimuli file: " + read.error);
-  return parseStimuli(*read.bytes, name);
+  diag::Result<std::string> read = diag::readInput(name, kMaxFileBytes, "cannot read the stimuli file");
+  if (!read) return StimuliParse{{}, std::move(read).failures()};
+  return parseStimuli(*read, name);
 }
 
 }  // namespace rs::stimuli

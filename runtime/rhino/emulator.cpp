@@ -250,20 +250,21 @@ LoopbackLink::LoopbackLink(EmulatorEngine& engine, ManualClock& clock) : engine_
   byteTime_ = std::max<Micros>(1, Micros{bits} * 1'000'000 / line.baud);
 }
 
-IoResult LoopbackLink::write(std::span<const std::uint8_t> bytes, Micros) {
-  if (engine_.hungUp()) return IoResult::closed("emulator: the port hung up");
+vm::Status LoopbackLink::write(std::span<const std::uint8_t> bytes, Micros) {
+  if (engine_.hungUp()) return vm::Status::closed("emulator: the port hung up");
   clock_.sleepFor(byteTime_ * static_cast<Micros>(bytes.size()));
   engine_.receive(bytes, clock_.now());
-  return IoResult::ok(bytes.size());
+  return vm::Status::ok();
 }
 
-IoResult LoopbackLink::read(std::span<std::uint8_t> buffer, Micros timeout) {
+vm::Status LoopbackLink::read(std::span<std::uint8_t> buffer, Micros timeout, std::size_t& count) {
+  count = 0;
   if (pending_.empty()) {
-    if (engine_.hungUp()) return IoResult::closed("emulator: the port hung up");
+    if (engine_.hungUp()) return vm::Status::closed("emulator: the port hung up");
     const std::optional<Micros> due = engine_.nextReplyAt();
     if (!due || *due > clock_.now() + timeout) {
       clock_.sleepFor(timeout);
-      return IoResult::timeout();
+      return vm::Status::timeout();
     }
     clock_.advanceTo(*due);
     const std::vector<std::uint8_t> bytes = engine_.takeReplies(clock_.now());
@@ -272,7 +273,8 @@ IoResult LoopbackLink::read(std::span<std::uint8_t> buffer, Micros timeout) {
   const std::size_t n = std::min(buffer.size(), pending_.size());
   std::copy_n(pending_.begin(), n, buffer.begin());
   pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(n));
-  return IoResult::ok(n);
+  count = n;
+  return vm::Status::ok();
 }
 
 }  // namespace rs::rhino

@@ -197,8 +197,8 @@ class PtyEmulator {
 class LoopbackLink final : public Link {
  public:
   LoopbackLink(EmulatorEngine& engine, ManualClock& clock);
-  IoResult write(std::span<const std::uint8_t> bytes, Micros timeout) override;
-  IoResult read(std::span<std::uint8_t> buffer, Micros timeout) override;
+  vm::Status write(std::span<const std::uint8_t> bytes, Micros timeout) override;
+  vm::Status read(std::span<std::uint8_t> buffer, Micros timeout, std::size_t& count) override;
   std::string name() const override { return "emulator"; }
 
  private:

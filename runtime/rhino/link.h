@@ -15,34 +15,21 @@ namespace rs::rhino {
 
 using vm::Micros;
 
-/// What one read or write did.
-struct IoResult {
-  enum class Kind : std::uint8_t {
-    Ok,       // `count` bytes moved (a read returns at least one)
-    Timeout,  // nothing arrived (or could be written) in time
-    Closed,   // the other end went away: hang-up, device unplugged
-    Error,    // any other system error; `message` says which
-  };
-  Kind kind = Kind::Ok;
-  std::size_t count = 0;
-  std::string message;
-
-  static IoResult ok(std::size_t n) { return {Kind::Ok, n, {}}; }
-  static IoResult timeout() { return {Kind::Timeout, 0, {}}; }
-  static IoResult closed(std::string m) { return {Kind::Closed, 0, std::move(m)}; }
-  static IoResult error(std::string m) { return {Kind::Error, 0, std::move(m)}; }
-  explicit operator bool() const { return kind == Kind::Ok; }
-};
-
 /// A byte channel to a controller. Not thread-safe; one user at a time.
+/// Each read or write answers the machine's own vm::Status: Ok, Timeout
+/// (nothing arrived, or could be written, in time), Closed (the other end
+/// went away: hang-up, device unplugged; the message says how) or Fault
+/// (any other system error; the message says which). Session::ioFailure
+/// is the one place these become what the run reports.
 class Link {
  public:
   virtual ~Link() = default;
   /// Writes every byte or fails; waits at most `timeout` for room.
-  virtual IoResult write(std::span<const std::uint8_t> bytes, Micros timeout) = 0;
-  /// Reads what has arrived, up to `buffer.size()` bytes; waits at most
-  /// `timeout` for the first byte. A zero timeout only looks.
-  virtual IoResult read(std::span<std::uint8_t> buffer, Micros timeout) = 0;
+  virtual vm::Status write(std::span<const std::uint8_t> bytes, Micros timeout) = 0;
+  /// Reads what has arrived, up to `buffer.size()` bytes, and sets `count`
+  /// (at least one when Ok, else 0); waits at most `timeout` for the first
+  /// byte. A zero timeout only looks.
+  virtual vm::Status read(std::span<std::uint8_t> buffer, Micros timeout, std::size_t& count) = 0;
   /// A name for messages: the device path, "emulator", ...
   virtual std::string name() const = 0;
 };

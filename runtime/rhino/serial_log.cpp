@@ -66,21 +66,21 @@ void SerialLog::event(Micros t, std::string_view text) {
   out_->flush();
 }
 
-IoResult LoggedLink::write(std::span<const std::uint8_t> bytes, Micros timeout) {
+vm::Status LoggedLink::write(std::span<const std::uint8_t> bytes, Micros timeout) {
   const Micros t = clock_.now();
-  IoResult r = inner_.write(bytes, timeout);
+  vm::Status r = inner_.write(bytes, timeout);
   if (r)
     log_.sent(t, bytes);
   else
-    log_.sent(t, bytes, r.kind == IoResult::Kind::Timeout ? "write timed out" : r.message);
+    log_.sent(t, bytes, r.code == vm::Status::Code::Timeout ? "write timed out" : r.message);
   return r;
 }
 
-IoResult LoggedLink::read(std::span<std::uint8_t> buffer, Micros timeout) {
-  IoResult r = inner_.read(buffer, timeout);
+vm::Status LoggedLink::read(std::span<std::uint8_t> buffer, Micros timeout, std::size_t& count) {
+  vm::Status r = inner_.read(buffer, timeout, count);
   if (r)
-    log_.received(clock_.now(), buffer.first(r.count));
-  else if (r.kind == IoResult::Kind::Closed || r.kind == IoResult::Kind::Error)
+    log_.received(clock_.now(), buffer.first(count));
+  else if (r.code == vm::Status::Code::Closed || r.code == vm::Status::Code::Fault)
     log_.event(clock_.now(), r.message);
   return r;
 }

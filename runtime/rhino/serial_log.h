@@ -49,8 +49,8 @@ std::string escapeBytes(std::span<const std::uint8_t> bytes);
 class LoggedLink final : public Link {
  public:
   LoggedLink(Link& inner, SerialLog& log, const Clock& clock) : inner_(inner), log_(log), clock_(clock) {}
-  IoResult write(std::span<const std::uint8_t> bytes, Micros timeout) override;
-  IoResult read(std::span<std::uint8_t> buffer, Micros timeout) override;
+  vm::Status write(std::span<const std::uint8_t> bytes, Micros timeout) override;
+  vm::Status read(std::span<std::uint8_t> buffer, Micros timeout, std::size_t& count) override;
   std::string name() const override { return inner_.name(); }
 
  private:

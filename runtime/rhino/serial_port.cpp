@@ -168,7 +168,7 @@ SerialPort::~SerialPort() {
   ::close(fd_);
 }
 
-IoResult SerialPort::write(std::span<const std::uint8_t> bytes, Micros timeout) {
+vm::Status SerialPort::write(std::span<const std::uint8_t> bytes, Micros timeout) {
   const std::int64_t deadline = steadyMicros() + std::max<Micros>(timeout, 0);
   std::size_t done = 0;
   while (done < bytes.size()) {
@@ -180,37 +180,41 @@ IoResult SerialPort::write(std::span<const std::uint8_t> bytes, Micros timeout) 
     if (n < 0 && errno == EINTR) continue;
     if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) {
       if (errno == EIO || errno == ENXIO || errno == ENODEV || errno == EPIPE)
-        return IoResult::closed(fmt::format("{}: the port is gone ({})", path_, std::strerror(errno)));
-      return IoResult::error(fmt::format("{}: write failed: {}", path_, std::strerror(errno)));
+        return vm::Status::closed(fmt::format("{}: the port is gone ({})", path_, std::strerror(errno)));
+      return vm::Status::fault(fmt::format("{}: write failed: {}", path_, std::strerror(errno)));
     }
     const int ready = waitFor(fd_, POLLOUT, deadline - steadyMicros());
     if (ready == 0 && steadyMicros() < deadline) continue;  // a signal: part of a line cannot be taken back
-    if (ready == 0) return IoResult::timeout();
-    if (ready < 0) return IoResult::error(fmt::format("{}: poll failed: {}", path_, std::strerror(errno)));
+    if (ready == 0) return vm::Status::timeout();
+    if (ready < 0) return vm::Status::fault(fmt::format("{}: poll failed: {}", path_, std::strerror(errno)));
     if ((ready & (POLLHUP | POLLERR | POLLNVAL)) && !(ready & POLLOUT))
-      return IoResult::closed(fmt::format("{}: the port hung up", path_));
+      return vm::Status::closed(fmt::format("{}: the port hung up", path_));
   }
-  return IoResult::ok(done);
+  return vm::Status::ok();
 }
 
 // A signal ends the wait early with a timeout: the Session looks at the
 // Ctrl-C flag and reads again with the time that is left.
-IoResult SerialPort::read(std::span<std::uint8_t> buffer, Micros timeout) {
+vm::Status SerialPort::read(std::span<std::uint8_t> buffer, Micros timeout, std::size_t& count) {
+  count = 0;
   const int ready = waitFor(fd_, POLLIN, timeout);
-  if (ready == 0) return IoResult::timeout();
-  if (ready < 0) return IoResult::error(fmt::format("{}: poll failed: {}", path_, std::strerror(errno)));
+  if (ready == 0) return vm::Status::timeout();
+  if (ready < 0) return vm::Status::fault(fmt::format("{}: poll failed: {}", path_, std::strerror(errno)));
   for (;;) {
     const ssize_t n = ::read(fd_, buffer.data(), buffer.size());
-    if (n > 0) return IoResult::ok(static_cast<std::size_t>(n));
-    if (n == 0) return IoResult::closed(fmt::format("{}: the port hung up", path_));
+    if (n > 0) {
+      count = static_cast<std::size_t>(n);
+      return vm::Status::ok();
+    }
+    if (n == 0) return vm::Status::closed(fmt::format("{}: the port hung up", path_));
     if (errno == EINTR) continue;
     if (errno == EAGAIN || errno == EWOULDBLOCK) {
-      if (ready & (POLLHUP | POLLERR | POLLNVAL)) return IoResult::closed(fmt::format("{}: the port hung up", path_));
-      return IoResult::timeout();
+      if (ready & (POLLHUP | POLLERR | POLLNVAL)) return vm::Status::closed(fmt::format("{}: the port hung up", path_));
+      return vm::Status::timeout();
     }
     if (errno == EIO || errno == ENXIO || errno == ENODEV)
-      return IoResult::closed(fmt::format("{}: the port is gone ({})", path_, std::strerror(errno)));
-    return IoResult::error(fmt::format("{}: read failed: {}", path_, std::strerror(errno)));
+      return vm::Status::closed(fmt::format("{}: the port is gone ({})", path_, std::strerror(errno)));
+    return vm::Status::fault(fmt::format("{}: read failed: {}", path_, std::strerror(errno)));
   }
 }
 

@@ -38,8 +38,8 @@ class SerialPort final : public Link {
   SerialPort(const SerialPort&) = delete;
   SerialPort& operator=(const SerialPort&) = delete;
 
-  IoResult write(std::span<const std::uint8_t> bytes, Micros timeout) override;
-  IoResult read(std::span<std::uint8_t> buffer, Micros timeout) override;
+  vm::Status write(std::span<const std::uint8_t> bytes, Micros timeout) override;
+  vm::Status read(std::span<std::uint8_t> buffer, Micros timeout, std::size_t& count) override;
   std::string name() const override { return path_; }
   int fd() const { return fd_; }
 

@@ -28,12 +28,12 @@ void Session::note(std::string_view text) {
 
 // A read that timed out because Ctrl-C cut the wait short is an
 // interruption, not a silent controller.
-vm::Status Session::ioFailure(const IoResult& r, std::string_view command, bool writing) {
+vm::Status Session::ioFailure(const vm::Status& r, std::string_view command, bool writing) {
   std::string message;
   silent_ = false;
-  switch (r.kind) {
-    case IoResult::Kind::Ok: return vm::Status::ok();
-    case IoResult::Kind::Timeout:
+  switch (r.code) {
+    case vm::Status::Code::Ok: return vm::Status::ok();
+    case vm::Status::Code::Timeout:
       if (!writing)
         if (auto s = checkInterrupt(); !s) return s;
       message = writing ? fmt::format("the serial line to {} is blocked: \"{}\" could not be sent within {} s", device_,
@@ -42,13 +42,14 @@ vm::Status Session::ioFailure(const IoResult& r, std::string_view command, bool 
                                       escapeBytes(bytesOf(command)), base::formatSeconds(settings_.timeout));
       silent_ = !writing;
       break;
-    case IoResult::Kind::Closed:
+    case vm::Status::Code::Closed:
       gone_ = true;
       message = fmt::format("the serial port {} hung up at \"{}\" (the controller is gone)", device_,
                             escapeBytes(bytesOf(command)));
       note(r.message);
       break;
-    case IoResult::Kind::Error:
+    case vm::Status::Code::Fault:
+    case vm::Status::Code::Deadlock:  // no link answers it
       message = fmt::format("serial I/O error at \"{}\": {}", escapeBytes(bytesOf(command)), r.message);
       break;
   }
@@ -76,17 +77,17 @@ vm::Status Session::send(std::string_view command) {
 
 // A link read ends early with nothing when a signal cuts its wait short
 // (SerialPort): read again with the time left, unless it was Ctrl-C.
-IoResult Session::readBy(std::span<std::uint8_t> buffer, Micros deadline) {
+vm::Status Session::readBy(std::span<std::uint8_t> buffer, Micros deadline, std::size_t& count) {
   for (;;) {
-    IoResult r = link_.read(buffer, std::max<Micros>(deadline - clock_.now(), 0));
-    if (r.kind != IoResult::Kind::Timeout || clock_.now() >= deadline || !checkInterrupt()) return r;
+    vm::Status r = link_.read(buffer, std::max<Micros>(deadline - clock_.now(), 0), count);
+    if (r.code != vm::Status::Code::Timeout || clock_.now() >= deadline || !checkInterrupt()) return r;
   }
 }
 
 vm::Status Session::sendUnchecked(std::string_view command) {
   std::string line(command);
   line += lineEndBytes(settings_.lineEnd);
-  const IoResult r = link_.write(bytesOf(line), settings_.timeout);
+  const vm::Status r = link_.write(bytesOf(line), settings_.timeout);
   return ioFailure(r, command, true);
 }
 
@@ -95,9 +96,10 @@ vm::Status Session::sendUnchecked(std::string_view command) {
 vm::Status Session::expectQuiet(std::string_view command) {
   std::vector<std::uint8_t> got = std::exchange(unread_, {});
   std::array<std::uint8_t, 64> buf{};
-  const IoResult r = link_.read(buf, 0);
-  if (!r && r.kind != IoResult::Kind::Timeout) return ioFailure(r, command, false);
-  if (r) got.insert(got.end(), buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(r.count));
+  std::size_t count = 0;
+  const vm::Status r = link_.read(buf, 0, count);
+  if (!r && r.code != vm::Status::Code::Timeout) return ioFailure(r, command, false);
+  if (r) got.insert(got.end(), buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(count));
   const bool whitespace = settings_.dialect == Dialect::Mark4 &&
                           std::all_of(got.begin(), got.end(), [](std::uint8_t b) { return b == '\r' || b == '\n'; });
   if (got.empty() || whitespace) return vm::Status::ok();
@@ -111,7 +113,8 @@ vm::Status Session::queryByte(std::string_view command, std::uint8_t& reply) {
   if (auto s = expectQuiet(command); !s) return s;
   if (auto s = send(command); !s) return s;
   std::array<std::uint8_t, 1> buf{};
-  const IoResult r = readBy(buf, clock_.now() + settings_.timeout);
+  std::size_t count = 0;
+  const vm::Status r = readBy(buf, clock_.now() + settings_.timeout, count);
   if (!r) return ioFailure(r, command, false);
   reply = buf[0];
   return vm::Status::ok();
@@ -124,13 +127,14 @@ vm::Status Session::queryNumber(std::string_view command, long& value) {
   std::vector<std::uint8_t> reply;
   for (;;) {
     std::array<std::uint8_t, 32> buf{};
-    const IoResult r = readBy(buf, deadline);
+    std::size_t count = 0;
+    const vm::Status r = readBy(buf, deadline, count);
     if (!r) {
-      if (r.kind == IoResult::Kind::Timeout && !reply.empty() && checkInterrupt())
+      if (r.code == vm::Status::Code::Timeout && !reply.empty() && checkInterrupt())
         return garbage(command, reply, "a decimal number ended by CR; the CR never came");
       return ioFailure(r, command, false);
     }
-    reply.insert(reply.end(), buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(r.count));
+    reply.insert(reply.end(), buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(count));
     while (!reply.empty() && reply.front() == '\n') reply.erase(reply.begin());  // LF left from CR LF
     const auto cr = std::find(reply.begin(), reply.end(), '\r');
     if (cr != reply.end()) {

@@ -55,9 +55,9 @@ class Session {
   void setDevice(std::string name) { device_ = std::move(name); }
 
  private:
-  vm::Status ioFailure(const IoResult& r, std::string_view command, bool writing);
+  vm::Status ioFailure(const vm::Status& r, std::string_view command, bool writing);
   vm::Status expectQuiet(std::string_view command);
-  IoResult readBy(std::span<std::uint8_t> buffer, Micros deadline);
+  vm::Status readBy(std::span<std::uint8_t> buffer, Micros deadline, std::size_t& count);
 
   Link& link_;
   Clock& clock_;

@@ -22,7 +22,7 @@ TEST_CASE("onStop hears every stop with the view of the stopped moment", "[debug
     held.push_back(!v.objects.empty() && (v.objects[1].held || v.objects[2].held));
     CHECK(v.tcp.has_value());
   });
-  REQUIRE(std::holds_alternative<int>(session.breakAtLabel("place")));
+  REQUIRE(session.breakAtLabel("place").ok());
   const Stop first = session.resume();
   session.reverseStep(3);
   session.gotoTime(0);

@@ -46,11 +46,11 @@ extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t s
 #endif
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  rs::vm::LoadResult loaded = rs::vm::loadImage(view(data, size));
-  if (!loaded.error.empty()) return 0;
-  (void)rs::vm::disassemble(loaded.image);
+  rs::diag::Result<rs::vm::Image> loaded = rs::vm::loadImage(view(data, size));
+  if (!loaded.ok()) return 0;
+  (void)rs::vm::disassemble(loaded.value());
   rs::runtime::RunSpec spec;
-  spec.image = std::make_shared<const rs::vm::Image>(std::move(loaded.image));
+  spec.image = std::make_shared<const rs::vm::Image>(std::move(loaded).value());
   spec.limits.maxSteps = 20'000;
   spec.limits.maxStepsPerInstant = 20'000;
   spec.limits.maxTime = rs::vm::Micros{600} * 1'000'000;

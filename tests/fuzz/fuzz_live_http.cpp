@@ -127,9 +127,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::ofstream out(programPath(), std::ios::binary | std::ios::trunc);
     out << kProgram;
   }
-  std::string error;
-  std::optional<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(programPath(), error);
-  require(file.has_value());
+  rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(programPath());
+  require(file.ok());
   rs::teach::Pendant pendant(gantry(), rs::launch::cellTarget(*gantry()).motors, std::move(*file));
   rs::teach::PendantSource source(pendant, "<!DOCTYPE html><title>teach</title>");
   const rs::teach::LiveRoutes routes(source, kToken, rs::teach::ServerAddress{"127.0.0.1", 8080});

@@ -18,9 +18,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const rs::diag::Diagnostic& d : result.diagnostics) (void)rs::diag::render(d, &source);
   if (result.image) {
     const std::vector<std::uint8_t> bytes = rs::vm::writeImage(*result.image);
-    const rs::vm::LoadResult loaded =
+    const rs::diag::Result<rs::vm::Image> loaded =
         rs::vm::loadImage(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-    if (!loaded.error.empty()) std::abort();  // the compiler wrote an image its own loader refuses
+    if (!loaded.ok()) std::abort();  // the compiler wrote an image its own loader refuses
   }
   return 0;
 }

@@ -20,26 +20,28 @@ class ReplayLink final : public rs::rhino::Link {
  public:
   ReplayLink(std::span<const std::uint8_t> replies, rs::rhino::ManualClock& clock) : rest_(replies), clock_(clock) {}
 
-  rs::rhino::IoResult write(std::span<const std::uint8_t> bytes, rs::rhino::Micros) override {
+  rs::vm::Status write(std::span<const std::uint8_t> bytes, rs::rhino::Micros) override {
     // One reply per command line: the next record becomes readable.
     if (!bytes.empty() && (bytes.back() == '\r' || bytes.back() == '\n') && !rest_.empty()) {
       const std::size_t n = std::min<std::size_t>(rest_[0], rest_.size() - 1);
       pending_.insert(pending_.end(), rest_.begin() + 1, rest_.begin() + 1 + static_cast<std::ptrdiff_t>(n));
       rest_ = rest_.subspan(1 + n);
     }
-    return rs::rhino::IoResult::ok(bytes.size());
+    return rs::vm::Status::ok();
   }
 
-  rs::rhino::IoResult read(std::span<std::uint8_t> buffer, rs::rhino::Micros timeout) override {
+  rs::vm::Status read(std::span<std::uint8_t> buffer, rs::rhino::Micros timeout, std::size_t& count) override {
+    count = 0;
     if (pending_.empty()) {
-      if (rest_.empty() && timeout > 0 && ++idle_ > 1000) return rs::rhino::IoResult::closed("end of the fuzz input");
+      if (rest_.empty() && timeout > 0 && ++idle_ > 1000) return rs::vm::Status::closed("end of the fuzz input");
       clock_.sleepFor(timeout);
-      return rs::rhino::IoResult::timeout();
+      return rs::vm::Status::timeout();
     }
     const std::size_t n = std::min(buffer.size(), pending_.size());
     std::copy_n(pending_.begin(), n, buffer.begin());
     pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(n));
-    return rs::rhino::IoResult::ok(n);
+    count = n;
+    return rs::vm::Status::ok();
   }
 
   std::string name() const override { return "fuzz"; }

@@ -370,10 +370,10 @@ bool cellMatchesMotors(const rs::vm::Image& im) {
 TEST_CASE("cell wiring: a corrupt cell section is refused, never a crash", "[models]") {
   TempDir dir;
   const std::string original = compiledImage(dir);
-  const rs::vm::LoadResult loaded = rs::vm::loadImage(original);
-  REQUIRE(loaded.error.empty());
-  REQUIRE(cellMatchesMotors(loaded.image));
-  const std::size_t cellBytes = loaded.image.cell.size();
+  const rs::diag::Result<rs::vm::Image> loaded = rs::vm::loadImage(original);
+  REQUIRE(loaded.ok());
+  REQUIRE(cellMatchesMotors(loaded.value()));
+  const std::size_t cellBytes = loaded.value().cell.size();
   REQUIRE(cellBytes > 100);
   REQUIRE(original.size() > cellBytes + 24);
   const std::size_t start = original.size() - cellBytes;  // the cell is the last section
@@ -396,8 +396,8 @@ TEST_CASE("cell wiring: a corrupt cell section is refused, never a crash", "[mod
               r.err.find("image rejected: its cell's robot does not match its motor table") != std::string::npos ||
               r.err.find("malformed image") != std::string::npos)));
     } else {
-      const rs::vm::LoadResult l = rs::vm::loadImage(bytes);
-      if (!cellMatchesMotors(l.image)) acceptedMismatch.push_back(at - start);
+      const rs::diag::Result<rs::vm::Image> l = rs::vm::loadImage(bytes);
+      if (!cellMatchesMotors(l.value())) acceptedMismatch.push_back(at - start);
     }
   }
   // The magic, version and counts are structural: flipping any of them must
@@ -425,10 +425,10 @@ TEST_CASE("cell wiring: a corrupt cell section is refused, never a crash", "[mod
 TEST_CASE("cell wiring: disasm and check refuse a corrupt cell section as run does", "[models]") {
   TempDir dir;
   const std::string original = compiledImage(dir);
-  const rs::vm::LoadResult loaded = rs::vm::loadImage(original);
-  REQUIRE(loaded.error.empty());
+  const rs::diag::Result<rs::vm::Image> loaded = rs::vm::loadImage(original);
+  REQUIRE(loaded.ok());
   REQUIRE(runCli({"disasm", dir.file("p.rsb")}).code == 0);
-  const std::size_t start = original.size() - loaded.image.cell.size();  // the cell is the last section
+  const std::size_t start = original.size() - loaded.value().cell.size();  // the cell is the last section
   SECTION("a bad magic number") {
     std::string bytes = original;
     bytes[start] = static_cast<char>(bytes[start] ^ 0xFF);
@@ -443,10 +443,10 @@ TEST_CASE("cell wiring: disasm and check refuse a corrupt cell section as run do
     }
   }
   SECTION("a cell whose robot does not match the motor table") {
-    rs::workcell::CellDecode decoded = rs::workcell::decodeCell(loaded.image.cell);
+    rs::workcell::CellDecode decoded = rs::workcell::decodeCell(loaded.value().cell);
     REQUIRE(decoded.cell);
     decoded.cell->robots.front().robot.joints.front().max = 10;
-    rs::vm::Image im = loaded.image;
+    rs::vm::Image im = loaded.value();
     im.cell = rs::workcell::encodeCell(*decoded.cell);
     const auto bytes = rs::vm::writeImage(im);
     const std::string path = dir.write("mismatch.rsb", std::string(bytes.begin(), bytes.end()));
@@ -465,13 +465,13 @@ TEST_CASE("cell wiring: disasm and check refuse a corrupt cell section as run do
 // quote it.
 TEST_CASE("cell wiring: a cell section name with a control character is refused", "[models]") {
   TempDir dir;
-  const rs::vm::LoadResult loaded = rs::vm::loadImage(compiledImage(dir));
-  REQUIRE(loaded.error.empty());
+  const rs::diag::Result<rs::vm::Image> loaded = rs::vm::loadImage(compiledImage(dir));
+  REQUIRE(loaded.ok());
   const auto forged = [&](auto change) {
-    rs::workcell::CellDecode decoded = rs::workcell::decodeCell(loaded.image.cell);
+    rs::workcell::CellDecode decoded = rs::workcell::decodeCell(loaded.value().cell);
     REQUIRE(decoded.cell);
     change(*decoded.cell);
-    rs::vm::Image im = loaded.image;
+    rs::vm::Image im = loaded.value();
     im.cell = rs::workcell::encodeCell(*decoded.cell);
     const auto bytes = rs::vm::writeImage(im);
     return dir.write("forged.rsb", std::string(bytes.begin(), bytes.end()));
@@ -493,14 +493,14 @@ TEST_CASE("cell wiring: a cell section name with a control character is refused"
 TEST_CASE("cell wiring: an image whose cell's robot disagrees with its motor table is refused", "[models]") {
   TempDir dir;
   const std::string original = compiledImage(dir);
-  const rs::vm::LoadResult loaded = rs::vm::loadImage(original);
-  REQUIRE(loaded.error.empty());
-  const auto decoded = rs::workcell::decodeCell(loaded.image.cell);
+  const rs::diag::Result<rs::vm::Image> loaded = rs::vm::loadImage(original);
+  REQUIRE(loaded.ok());
+  const auto decoded = rs::workcell::decodeCell(loaded.value().cell);
   REQUIRE(decoded.cell);
   const auto tamper = [&](auto change) {
     rs::workcell::Workcell cell = *decoded.cell;
     change(cell.robots.front().robot.joints.front());
-    rs::vm::Image im = loaded.image;
+    rs::vm::Image im = loaded.value();
     im.cell = rs::workcell::encodeCell(cell);
     const auto bytes = rs::vm::writeImage(im);
     dir.write("t.rsb", std::string(bytes.begin(), bytes.end()));

@@ -10,12 +10,14 @@
 #include "runtime/sim/motion.h"
 #include "runtime/run/run_log.h"
 #include "runtime/sim/sim_machine.h"
+#include "tests/vm/image_support.h"
 #include "vm/image_file.h"
 
 namespace {
 
 using rs::runtime::coveredAt;
 using rs::runtime::travelTime;
+using rs::testing::loadError;
 using rs::vm::JointKind;
 using rs::vm::Micros;
 using rs::vm::MotorSpec;
@@ -147,9 +149,9 @@ TEST_CASE("an image keeps its 1.0 bytes unless a motor has an acceleration or an
   const std::vector<std::uint8_t> timed = rs::vm::writeImage(image);
   CHECK(timed[10] == 1);
   CHECK(timed.size() == plain.size() + 2 * 8);
-  const rs::vm::LoadResult back = rs::vm::loadImage({reinterpret_cast<const char*>(timed.data()), timed.size()});
-  REQUIRE(back.error.empty());
-  CHECK(back.image.motors == image.motors);
+  const rs::diag::Result<rs::vm::Image> back = rs::vm::loadImage({reinterpret_cast<const char*>(timed.data()), timed.size()});
+  REQUIRE(back.ok());
+  CHECK(back.value().motors == image.motors);
   // A 1.1 header over a motion section of zeros: refused, since a 1.0
   // image says the same.
   std::vector<std::uint8_t> zeros = plain;
@@ -161,14 +163,14 @@ TEST_CASE("an image keeps its 1.0 bytes unless a motor has an acceleration or an
   const std::size_t payload = zeros.size() - rs::vm::kImageHeaderBytes;
   le32(12, static_cast<std::uint32_t>(payload));
   le32(16, rs::vm::crc32(zeros.data() + rs::vm::kImageHeaderBytes, payload));
-  CHECK_THAT(rs::vm::loadImage({reinterpret_cast<const char*>(zeros.data()), zeros.size()}).error,
+  CHECK_THAT(loadError(rs::vm::loadImage({reinterpret_cast<const char*>(zeros.data()), zeros.size()})),
              Catch::Contains("a motion section in which no motor has an acceleration or an actuation time"));
   // The verifier refuses a motor that would take 1000 s to reach its speed
   // (which keeps motion.h's arithmetic in 128 bits), a negative
   // acceleration, and an actuation time on an arm joint.
   const auto refused = [&](const rs::vm::Image& im) {
     const std::vector<std::uint8_t> b = rs::vm::writeImage(im);
-    return rs::vm::loadImage({reinterpret_cast<const char*>(b.data()), b.size()}).error;
+    return loadError(rs::vm::loadImage({reinterpret_cast<const char*>(b.data()), b.size()}));
   };
   rs::vm::Image slow = image;
   slow.motors[0].speed = 5000, slow.motors[0].acceleration = 5;
@@ -179,6 +181,6 @@ TEST_CASE("an image keeps its 1.0 bytes unless a motor has an acceleration or an
   CHECK_THAT(refused(slow), Catch::Contains("acceleration -1 is outside"));
   image.motors[0].actuation = 1000;
   const std::vector<std::uint8_t> bad = rs::vm::writeImage(image);
-  CHECK_THAT(rs::vm::loadImage({reinterpret_cast<const char*>(bad.data()), bad.size()}).error,
+  CHECK_THAT(loadError(rs::vm::loadImage({reinterpret_cast<const char*>(bad.data()), bad.size()})),
              Catch::Contains("has an actuation time but is not a gripper"));
 }

@@ -23,9 +23,8 @@ struct GantryPendant {
   GantryPendant(const std::string& name, const std::string& program)
       : path(dir.write(name, program)),
         cell(std::make_shared<const workcell::Workcell>(rendertest::cell("gantry-cell"))) {
-    std::string error;
-    std::optional<teach::ProgramFile> file = teach::ProgramFile::load(path, error);
-    INFO(error);
+    diag::Result<teach::ProgramFile> file = teach::ProgramFile::load(path);
+    INFO((file ? std::string() : file.failure().message));
     REQUIRE(file);
     pendant = std::make_unique<teach::Pendant>(cell, launch::cellTarget(*cell).motors, std::move(*file));
   }

@@ -38,12 +38,12 @@ struct HostileServed {
   std::unique_ptr<rs::teach::PendantSource> source;
   std::unique_ptr<rs::teach::LiveServer> server;
   explicit HostileServed(rs::teach::LiveLimits limits = {}) {
-    std::string error;
-    std::optional<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path, error);
+    rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path);
     REQUIRE(file);
     pendant = std::make_unique<rs::teach::Pendant>(cell, rs::launch::cellTarget(*cell).motors, std::move(*file));
     source = std::make_unique<rs::teach::PendantSource>(*pendant, rs::teach::teachPageHtml(*cell, path));
     server = std::make_unique<rs::teach::LiveServer>(*source, rs::teach::randomToken(), limits);
+    std::string error;
     REQUIRE(server->start("127.0.0.1", 0, error));
   }
   int port() const { return server->port(); }

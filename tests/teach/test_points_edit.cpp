@@ -167,8 +167,7 @@ TEST_CASE("points: the compiled image differs in the changed points only", "[tea
 TEST_CASE("program file: written atomically with a .bak, refused after an edit on disk", "[teach]") {
   const rs::testing::TempDir dir;
   const std::string path = dir.write("p.rsp", kPointsProgram);
-  std::string error;
-  std::optional<rs::teach::ProgramFile> f = rs::teach::ProgramFile::load(path, error);
+  rs::diag::Result<rs::teach::ProgramFile> f = rs::teach::ProgramFile::load(path);
   REQUIRE(f);
   CHECK(f->hash() == rs::teach::textHash(kPointsProgram));
   REQUIRE(f->change([](PointsText& p) { return p.add("NEW", v({1, 2, 3, 4, 5})); }).empty());

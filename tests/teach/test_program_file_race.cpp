@@ -53,8 +53,7 @@ struct RaceCount {
 RaceCount race(bool inPlace) {
   const rs::testing::TempDir dir;
   const std::string path = dir.write("p.rsp", "        END\nPOINTS\nHOME  0 0 0 0\n");
-  std::string error;
-  std::optional<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path, error);
+  rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path);
   REQUIRE(file);
   std::atomic<bool> editing{true};
   std::atomic<int> failedSaves{0};

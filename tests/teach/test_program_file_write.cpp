@@ -32,8 +32,7 @@ TEST_CASE("a teach write keeps a 0600 program 0600, and its .bak too", "[teach][
   const rs::testing::TempDir dir;
   const std::string path = dir.write("p.rsp", "        END\nPOINTS\n");
   REQUIRE(::chmod(path.c_str(), 0600) == 0);
-  std::string error;
-  std::optional<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path, error);
+  rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path);
   REQUIRE(file);
   REQUIRE(addPoint(*file, "A").empty());
   REQUIRE(addPoint(*file, "B").empty());
@@ -53,8 +52,7 @@ TEST_CASE("teach never follows a link planted at PROG.rsp.tmp or PROG.rsp.bak", 
   const std::string victim2 = dir.write("victim2", "precious 2\n");
   fs::create_symlink(victim1, path + ".tmp");
   fs::create_symlink(victim2, path + ".bak");
-  std::string error;
-  std::optional<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path, error);
+  rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path);
   REQUIRE(file);
   REQUIRE(addPoint(*file, "A").empty());
   CHECK(rs::testing::readBytes(victim1) == "precious 1\n");
@@ -70,8 +68,7 @@ TEST_CASE("a program that is a link stays a link, its target is taught", "[teach
   const std::string target = dir.write("src/p.rsp", "        END\nPOINTS\n");
   REQUIRE(::chmod(target.c_str(), 0640) == 0);
   fs::create_symlink("src/p.rsp", dir.file("p.rsp"));
-  std::string error;
-  std::optional<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(dir.file("p.rsp"), error);
+  rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(dir.file("p.rsp"));
   REQUIRE(file);
   REQUIRE(addPoint(*file, "A").empty());
   CHECK(fs::is_symlink(dir.file("p.rsp")));

@@ -79,7 +79,9 @@ inline Image tiny() {
 
 inline std::string_view view(const Bytes& b) { return {reinterpret_cast<const char*>(b.data()), b.size()}; }
 
-inline std::string loadError(const Bytes& b) { return rs::vm::loadImage(view(b)).error; }
+/// The loader's message, "" when the image loaded.
+inline std::string loadError(const rs::diag::Result<rs::vm::Image>& r) { return r.ok() ? std::string() : r.failure().message; }
+inline std::string loadError(const Bytes& b) { return loadError(rs::vm::loadImage(view(b))); }
 inline std::string loadError(const Image& im) { return loadError(rs::vm::writeImage(im)); }
 
 }  // namespace rs::testing

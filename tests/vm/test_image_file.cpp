@@ -103,11 +103,11 @@ TEST_CASE("write then load gives back the same image", "[verifier]") {
     INFO(text);
     const Image im = compileOk(text);
     const Bytes bytes = rs::vm::writeImage(im);
-    const rs::vm::LoadResult loaded = rs::vm::loadImage(view(bytes));
-    REQUIRE(loaded.error.empty());
-    CHECK(loaded.image == im);
+    const rs::diag::Result<rs::vm::Image> loaded = rs::vm::loadImage(view(bytes));
+    REQUIRE(loaded.ok());
+    CHECK(loaded.value() == im);
     // Same image, same bytes.
-    CHECK(rs::vm::writeImage(loaded.image) == bytes);
+    CHECK(rs::vm::writeImage(loaded.value()) == bytes);
     CHECK(rs::vm::looksLikeImage(view(bytes)));
   }
 }
@@ -135,9 +135,9 @@ TEST_CASE("every image the compiler produces loads back", "[verifier]") {
   const std::string n64(64, 'N');
   const Image im = compileOk(n64 + ": SET " + n64 + " 1\nMOVEP " + n64 + "\nEND\nPOINTS\n" + n64 + " 0 0 0 0 0\n");
   REQUIRE(im.variables == std::vector<std::string>{n64});
-  const rs::vm::LoadResult loaded = rs::vm::loadImage(view(rs::vm::writeImage(im)));
-  CHECK(loaded.error == "");
-  CHECK(loaded.image == im);
+  const rs::diag::Result<rs::vm::Image> loaded = rs::vm::loadImage(view(rs::vm::writeImage(im)));
+  CHECK(loaded.ok());
+  CHECK(loaded.value() == im);
 
   const std::string n65(65, 'V');
   for (const std::string& text : {"SET " + n65 + " 1\nEND\n", n65 + ": SET N 1\nEND\n",
@@ -158,9 +158,9 @@ TEST_CASE("every image the compiler produces loads back", "[verifier]") {
 TEST_CASE("a source name longer than 255 bytes is cut, the image still loads", "[verifier]") {
   Image im = tiny();
   im.sourceName = std::string(300, 's');
-  const rs::vm::LoadResult loaded = rs::vm::loadImage(view(rs::vm::writeImage(im)));
-  REQUIRE(loaded.error == "");
-  CHECK(loaded.image.sourceName == std::string(255, 's'));
+  const rs::diag::Result<rs::vm::Image> loaded = rs::vm::loadImage(view(rs::vm::writeImage(im)));
+  REQUIRE(loaded.ok());
+  CHECK(loaded.value().sourceName == std::string(255, 's'));
 }
 
 TEST_CASE("an image cut short at any length is rejected", "[verifier]") {
@@ -200,19 +200,19 @@ TEST_CASE("flipping any single bit of an image is detected", "[verifier]") {
   for (std::size_t bit = 0; bit < good.size() * 8; ++bit) {
     Bytes b = good;
     b[bit / 8] ^= static_cast<std::uint8_t>(1u << (bit % 8));
-    const rs::vm::LoadResult r = rs::vm::loadImage(view(b));
+    const rs::diag::Result<rs::vm::Image> r = rs::vm::loadImage(view(b));
     const std::size_t byte = bit / 8;
     if (byte == 10 || byte == 11) {
       // The minor version is not covered by the CRC; 1.1 and later carry
       // a motion section after the cell, which this 1.0 image lacks: any
       // flipped minor bit makes the reader look for it and stop.
-      if (r.error == "malformed image: unexpected end of file") ++minorRefused;
-      else problems.push_back("minor version bit " + std::to_string(bit) + ": " + r.error);
+      if (loadError(r) == "malformed image: unexpected end of file") ++minorRefused;
+      else problems.push_back("minor version bit " + std::to_string(bit) + ": " + loadError(r));
       continue;
     }
-    if (r.error.empty()) problems.push_back("bit " + std::to_string(bit) + " accepted");
-    else if (byte >= kHeader && r.error != "image checksum mismatch (the file is corrupt)")
-      problems.push_back("payload bit " + std::to_string(bit) + ": " + r.error);
+    if (r.ok()) problems.push_back("bit " + std::to_string(bit) + " accepted");
+    else if (byte >= kHeader && loadError(r) != "image checksum mismatch (the file is corrupt)")
+      problems.push_back("payload bit " + std::to_string(bit) + ": " + loadError(r));
   }
   INFO((problems.empty() ? std::string() : problems.front()));
   CHECK(problems.empty());
@@ -231,16 +231,16 @@ TEST_CASE("hostile payloads with a correct CRC: rejected clearly, or sound", "[v
       Bytes b = good;
       b[bit / 8] ^= static_cast<std::uint8_t>(1u << (bit % 8));
       fixHeader(b);
-      const rs::vm::LoadResult r = rs::vm::loadImage(view(b));
-      if (!r.error.empty()) {
+      const rs::diag::Result<rs::vm::Image> r = rs::vm::loadImage(view(b));
+      if (!r.ok()) {
         ++rejected;
-        const bool known = r.error.rfind("malformed image: ", 0) == 0 ||
-                           r.error.rfind("image rejected by the verifier: ", 0) == 0;
-        if (!known || !printable(r.error)) unclear.push_back(r.error);
+        const bool known = loadError(r).rfind("malformed image: ", 0) == 0 ||
+                           loadError(r).rfind("image rejected by the verifier: ", 0) == 0;
+        if (!known || !printable(loadError(r))) unclear.push_back(loadError(r));
         continue;
       }
       ++accepted;
-      exerciseAccepted(r.image);
+      exerciseAccepted(r.value());
     }
     INFO((unclear.empty() ? std::string() : unclear.front()));
     CHECK(unclear.empty());
@@ -392,9 +392,9 @@ TEST_CASE("loader: names the compiler could never write", "[verifier]") {
   SECTION("the source name may be any bytes: it is kept and escaped when printed") {
     Image odd = im;
     odd.sourceName = "\x1b]0;pwned\x07.rsp";
-    const rs::vm::LoadResult r = rs::vm::loadImage(view(rs::vm::writeImage(odd)));
-    REQUIRE(r.error == "");
-    CHECK(r.image.sourceName == odd.sourceName);
+    const rs::diag::Result<rs::vm::Image> r = rs::vm::loadImage(view(rs::vm::writeImage(odd)));
+    REQUIRE(r.ok());
+    CHECK(r.value().sourceName == odd.sourceName);
   }
 }
 
@@ -483,7 +483,7 @@ TEST_CASE("an image streamed to a file has the bytes of the image in memory", "[
     CHECK(s.substr(0, 6) == "before");
     CHECK(s.substr(s.size() - 5) == "after");
     CHECK(Bytes(s.begin() + 6, s.end() - 5) == inMemory);
-    CHECK(rs::vm::loadImage(s.substr(6, inMemory.size())).error.empty());
+    CHECK(rs::vm::loadImage(s.substr(6, inMemory.size())).ok());
 
     PipeLikeBuffer pipe;
     std::ostream piped(&pipe);
