@@ -8,8 +8,7 @@
 
 namespace rs::cli {
 
-CLI::App* addDapCommand(CLI::App& app) {
-  CLI::App* cmd = app.add_subcommand("dap", "Run the debug adapter (Debug Adapter Protocol) on stdin/stdout, for editors");
+void addDapOptions(CLI::App* cmd) {
   cmd->footer(
       "Speaks the Debug Adapter Protocol over stdin and stdout (Content-Length framing, as robotsim lsp).\n"
       "launch takes program, and optionally cell, stimuli, inputs (N=ON@T strings), maxSteps, maxTime,\n"
@@ -17,7 +16,6 @@ CLI::App* addDapCommand(CLI::App& app) {
       "== N, % N); exception breakpoints deadlock, runtimeError, limit; stepping in, over, out and back\n"
       "(stepBack, reverseContinue); scopes Variables, Motors (with TCP), Inputs/Outputs, Objects, Clock;\n"
       "evaluate a variable, a motor letter, in N, out N. Editors start it themselves: docs/debugging.md.");
-  return cmd;
 }
 
 int dapCommand(std::ostream& err) {

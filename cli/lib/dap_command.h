@@ -10,7 +10,7 @@ class App;
 
 namespace rs::cli {
 
-CLI::App* addDapCommand(CLI::App& app);
+void addDapOptions(CLI::App* cmd);
 /// Serves until disconnect or the end of input: 0 after disconnect, 1 when
 /// the client left without one.
 int dapCommand(std::ostream& err);

@@ -46,8 +46,7 @@ void interactive(DebugTerminal& terminal, debug::Console& console, std::ostream&
 
 }  // namespace
 
-CLI::App* addDebugCommand(CLI::App& app, DebugOptions& o) {
-  CLI::App* cmd = app.add_subcommand("debug", "Debug a program: breakpoints, stepping, and stepping backwards");
+void addDebugOptions(CLI::App* cmd, DebugOptions& o) {
   cmd->add_option("file", o.program.file, "Program source or compiled image")->required();
   addCellOptions(cmd, o.program);
   addMaxErrorsOption(cmd, o.program);
@@ -69,7 +68,6 @@ CLI::App* addDebugCommand(CLI::App& app, DebugOptions& o) {
       "(batch mode). Going backwards re-runs from snapshots: docs/debugging.md.\n"
       "--view prints the page's address (127.0.0.1 and a free port, a secret token in the URL); the page\n"
       "follows every stop, forwards and backwards, and refuses to jog or teach (robotsim teach does that).");
-  return cmd;
 }
 
 int debugCommand(const DebugOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {

@@ -26,7 +26,7 @@ struct DebugOptions {
   bool open = false;     // --open: and a browser opens it
 };
 
-CLI::App* addDebugCommand(CLI::App& app, DebugOptions& o);
+void addDebugOptions(CLI::App* cmd, DebugOptions& o);
 /// 0 after quit or the end of the commands; 2 when the program, its cell,
 /// stimuli or limits, or the command file cannot be read.
 int debugCommand(const DebugOptions& o, std::istream& in, std::ostream& out, std::ostream& err);

@@ -225,4 +225,8 @@ int describeCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
   return kExitOk;
 }
 
+void addDescribeOptions(CLI::App* cmd, RobotQuery& q) {
+  addRobotArguments(cmd, q, "Workcell or robot: description file (.rsd) or library name, e.g. scara-pick");
+}
+
 }  // namespace rs::cli

@@ -11,6 +11,9 @@
 
 namespace rs::cli {
 
+/// Its options: the cell or robot, --lib, --json.
+void addDescribeOptions(CLI::App* cmd, RobotQuery& q);
+
 /// Uses q.robot (the cell or robot), q.libDirs and q.json.
 int describeCommand(const RobotQuery& q, std::ostream& out, std::ostream& err);
 

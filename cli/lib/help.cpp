@@ -1,10 +1,12 @@
 #include "cli/lib/help.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "base/ascii.h"
 #include "base/near_names.h"
 #include "base/text.h"
+#include "cli/lib/exit_codes.h"
 #include "vm/opcodes.h"
 
 namespace rs::cli {
@@ -62,6 +64,23 @@ std::string unknownInstructionMessage(std::string_view word) {
   const std::vector<std::string_view> like = instructionsLike(word);
   return fmt::format("no instruction named '{}'{} (robotsim help lists them)", shown,
                      like.empty() ? "" : fmt::format("; did you mean {}?", alternatives(like)));
+}
+
+void addHelpOptions(CLI::App* cmd, std::string& topic) {
+  cmd->add_option("instruction", topic, "Instruction name, e.g. JMPVAR");
+}
+
+int helpCommand(const std::string& topic, std::ostream& out, std::ostream& err) {
+  if (topic.empty()) {
+    out << instructionSummary();
+    return kExitOk;
+  }
+  if (auto text = instructionHelp(topic)) {
+    out << *text;
+    return kExitOk;
+  }
+  err << "robotsim: error: " << unknownInstructionMessage(topic) << '\n';
+  return kExitBadInput;
 }
 
 }  // namespace rs::cli

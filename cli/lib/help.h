@@ -2,11 +2,21 @@
 #pragma once
 
 #include <optional>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace rs::cli {
+
+/// `robotsim help`'s argument, and the command: the summary without a
+/// topic, one instruction's help with one, exit 2 for an unknown one.
+void addHelpOptions(CLI::App* cmd, std::string& topic);
+int helpCommand(const std::string& topic, std::ostream& out, std::ostream& err);
 
 /// One line per instruction: usage and meaning.
 std::string instructionSummary();

@@ -49,8 +49,7 @@ std::string configText(std::uint8_t config, kinematics::IkFamily family) {
 
 }  // namespace
 
-CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
-  CLI::App* cmd = app.add_subcommand("ik", "Encoder counts that put the tool at a pose (inverse kinematics), as a POINTS line");
+void addIkOptions(CLI::App* cmd, IkOptions& o) {
   cmd->add_option("robot", o.target, "Robot or workcell: description file (.rsd) or library name, e.g. puma-cell")
       ->required();
   cmd->add_option("xyz", o.position, "The tool centre point X Y Z")
@@ -83,7 +82,6 @@ CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
       "point; of several solutions the quickest move from it within the motors' ranges is chosen, as the\n"
       "compiler does for a point written 'NAME AT X Y Z ...' (docs/language.md). Negative numbers: put\n"
       "'--' before X Y Z when X starts with '-', e.g. robotsim ik scara-pick -- -130 800 0.");
-  return cmd;
 }
 
 int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {

@@ -28,7 +28,7 @@ struct IkOptions {
   bool json = false;
 };
 
-CLI::App* addIkCommand(CLI::App& app, IkOptions& o);
+void addIkOptions(CLI::App* cmd, IkOptions& o);
 int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err);
 
 }  // namespace rs::cli

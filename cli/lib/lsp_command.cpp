@@ -8,9 +8,7 @@
 
 namespace rs::cli {
 
-CLI::App* addLspCommand(CLI::App& app, LspOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "lsp", "Run the language server (LSP 3.17) on stdin/stdout, for editors");
+void addLspOptions(CLI::App* cmd, LspOptions& o) {
   cmd->footer(
       "Speaks the Language Server Protocol 3.17 over stdin and stdout (Content-Length framing): diagnostics as\n"
       "you type, hover, completion, signature help, go to definition, references, rename, symbols, folding,\n"
@@ -19,7 +17,6 @@ CLI::App* addLspCommand(CLI::App& app, LspOptions& o) {
       "the cell its '; cell: NAME' comment names, else the setting robotsim.cell, else the default robot.\n"
       "Editors start it themselves; docs/lsp.md lists the features and settings.");
   cmd->add_flag("--stdio", o.stdio, "Use stdin and stdout (the default and only transport; accepted for clients)");
-  return cmd;
 }
 
 int lspCommand(const LspOptions&, std::ostream& err) {

@@ -15,7 +15,7 @@ struct LspOptions {
   bool stdio = false;  // --stdio: what clients pass; stdio is the only transport
 };
 
-CLI::App* addLspCommand(CLI::App& app, LspOptions& o);
+void addLspOptions(CLI::App* cmd, LspOptions& o);
 /// Serves until `exit` or the end of input; 0 after shutdown and exit, 1
 /// otherwise (as LSP asks).
 int lspCommand(const LspOptions& o, std::ostream& err);

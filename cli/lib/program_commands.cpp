@@ -1,10 +1,12 @@
 #include "cli/lib/program_commands.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "base/file_io.h"
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/options.h"
 #include "diag/read_input.h"
 #include "compiler/program/compiler.h"
 #include "vm/disasm.h"
@@ -86,6 +88,33 @@ int astCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& 
   }
   return sourceView(o.program, out, err,
                     [&](const diag::SourceFile& s, auto& d) { return compiler::dumpAst(s, target, o.tree, d); });
+}
+
+void addCompileOptions(CLI::App* cmd, ProgramCommandOptions& o) {
+  cmd->add_option("file", o.program.file, "Program source")->required();
+  cmd->add_option("-o,--output", o.output,
+                  "Image file to write (.rsb; - for standard output; a device or FIFO is written in place)")
+      ->required();
+  addCellOptions(cmd, o.program);
+  addMaxErrorsOption(cmd, o.program);
+}
+
+void addDisasmOptions(CLI::App* cmd, ProgramCommandOptions& o) {
+  cmd->add_option("file", o.program.file, "Program source or compiled image")->required();
+  addCellOptions(cmd, o.program);
+  addMaxErrorsOption(cmd, o.program);
+}
+
+void addTokensOptions(CLI::App* cmd, ProgramCommandOptions& o) {
+  cmd->add_option("file", o.program.file, "Program source")->required();
+  addMaxErrorsOption(cmd, o.program);
+}
+
+void addAstOptions(CLI::App* cmd, ProgramCommandOptions& o) {
+  cmd->add_option("file", o.program.file, "Program source")->required();
+  cmd->add_flag("--tree", o.tree, "Also print ANTLR's parse tree");
+  addCellOptions(cmd, o.program);
+  addMaxErrorsOption(cmd, o.program);
 }
 
 }  // namespace rs::cli

@@ -7,6 +7,10 @@
 
 #include "launch/program.h"
 
+namespace CLI {
+class App;
+}
+
 namespace rs::cli {
 
 struct ProgramCommandOptions {
@@ -14,6 +18,12 @@ struct ProgramCommandOptions {
   std::string output;  // compile -o
   bool tree = false;   // ast --tree
 };
+
+/// The options of each (one ProgramCommandOptions serves all four).
+void addCompileOptions(CLI::App* cmd, ProgramCommandOptions& o);
+void addDisasmOptions(CLI::App* cmd, ProgramCommandOptions& o);
+void addTokensOptions(CLI::App* cmd, ProgramCommandOptions& o);
+void addAstOptions(CLI::App* cmd, ProgramCommandOptions& o);
 
 int compileCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err);
 int disasmCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& err);

@@ -368,38 +368,32 @@ void addCommon(CLI::App* cmd, RenderOptions& o, const std::string& maxStepsDefau
 
 }  // namespace
 
-RenderCommands::RenderCommands(CLI::App& app) {
-  render_ = app.add_subcommand("render", "Draw a workcell (PNG or SVG), at its placed pose or during a run");
-  render_->add_option("cell", o_.program.cell, "Workcell (or robot) description file or library name")->required();
-  render_->add_option("--program", o_.program.file, "Run this program on the workcell's first robot");
-  render_->add_option("--at", o_.at,
-                      "The moment of the run to draw, in seconds (default: its end, or the collision that stopped it)")
+void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
+  cmd->add_option("cell", o.program.cell, "Workcell (or robot) description file or library name")->required();
+  cmd->add_option("--program", o.program.file, "Run this program on the workcell's first robot");
+  cmd->add_option("--at", o.at,
+                  "The moment of the run to draw, in seconds (default: its end, or the collision that stopped it)")
       ->transform(secondsArg());
-  render_->add_flag("--collision-shapes", o_.collisionShapes,
-                    "Also draw the collision geometry (each BOX, the hull of the LINEs, COLLIDE boxes) in light "
-                    "magenta; parts that overlap are drawn red either way");
-  render_->add_option("-o,--output", o_.output, "Picture to write: FILE.png or FILE.svg");
-  render_->add_option("--size", o_.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
-  render_->add_option("--center", o_.center,
-                      "Zoom about the world point X,Y,Z (default: the base of the workcell's first robot)")
+  cmd->add_flag("--collision-shapes", o.collisionShapes,
+                "Also draw the collision geometry (each BOX, the hull of the LINEs, COLLIDE boxes) in light "
+                "magenta; parts that overlap are drawn red either way");
+  cmd->add_option("-o,--output", o.output, "Picture to write: FILE.png or FILE.svg");
+  cmd->add_option("--size", o.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
+  cmd->add_option("--center", o.center,
+                  "Zoom about the world point X,Y,Z (default: the base of the workcell's first robot)")
       ->transform(numberListArg(rules::kCoordinate));
-  render_->add_flag("--dump-lines{text}", o_.dump, "Print the projected 2-D lines: --dump-lines (text) or =json");
-  addLibOption(render_, o_.program);
-  addMaxErrorsOption(render_, o_.program);
-  addCommon(render_, o_, std::to_string(vm::RunLimits{}.maxSteps));
-
-  animate_ = app.add_subcommand("animate", "Write a self-contained HTML page that replays a program's run");
-  animate_->add_option("program", o_.program.file, "Program source (.rsp) or compiled image (.rsb)")->required();
-  addCellOptions(animate_, o_.program);
-  addMaxErrorsOption(animate_, o_.program);
-  animate_->add_option("-o,--output", o_.output, "HTML file to write")->required();
-  addCommon(animate_, o_, std::to_string(kAnimateMaxSteps));
+  cmd->add_flag("--dump-lines{text}", o.dump, "Print the projected 2-D lines: --dump-lines (text) or =json");
+  addLibOption(cmd, o.program);
+  addMaxErrorsOption(cmd, o.program);
+  addCommon(cmd, o, std::to_string(vm::RunLimits{}.maxSteps));
 }
 
-std::optional<int> RenderCommands::run(std::ostream& out, std::ostream& err) const {
-  if (render_->parsed()) return renderCommand(o_, out, err);
-  if (animate_->parsed()) return animateCommand(o_, out, err);
-  return std::nullopt;
+void addAnimateOptions(CLI::App* cmd, RenderOptions& o) {
+  cmd->add_option("program", o.program.file, "Program source (.rsp) or compiled image (.rsb)")->required();
+  addCellOptions(cmd, o.program);
+  addMaxErrorsOption(cmd, o.program);
+  cmd->add_option("-o,--output", o.output, "HTML file to write")->required();
+  addCommon(cmd, o, std::to_string(kAnimateMaxSteps));
 }
 
 }  // namespace rs::cli

@@ -48,19 +48,9 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err);
 std::optional<Eigen::Vector3d> zoomPivot(const workcell::Workcell& cell);
 int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err);
 
-/// Adds both subcommands to `app`; after app.parse, run() answers the exit
-/// code when one of them was chosen.
-class RenderCommands {
- public:
-  explicit RenderCommands(CLI::App& app);
-  RenderCommands(const RenderCommands&) = delete;  // the app holds pointers into it
-  RenderCommands& operator=(const RenderCommands&) = delete;
-  std::optional<int> run(std::ostream& out, std::ostream& err) const;
-
- private:
-  RenderOptions o_;
-  CLI::App* render_ = nullptr;
-  CLI::App* animate_ = nullptr;
-};
+/// The options of `render` and of `animate` (commands.cpp's table names
+/// both): one RenderOptions serves either.
+void addRenderOptions(CLI::App* cmd, RenderOptions& o);
+void addAnimateOptions(CLI::App* cmd, RenderOptions& o);
 
 }  // namespace rs::cli

@@ -1,5 +1,7 @@
 #include "cli/lib/robot_commands.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cmath>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -256,6 +258,37 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
            "angles in (-180, 180]; --json gives full precision)\n";
   }
   return kExitOk;
+}
+
+void addRobotArguments(CLI::App* cmd, RobotQuery& q, const char* what) {
+  cmd->add_option("robot", q.robot, what)->required();
+  cmd->add_option("--lib", q.libDirs, "Also look up names in this directory (repeatable)")->allow_extra_args(false);
+  cmd->add_flag("--json", q.json, "Print one JSON object");
+}
+
+namespace {
+
+void addJointOptions(CLI::App* cmd, RobotQuery& q) {
+  cmd->add_option("--theta", q.theta, "Joint values v,v,... (degrees; a prismatic joint's d)")
+      ->transform(numberListArg(rules::kJointValue));
+  cmd->add_option("--encoders", q.encoders, "Encoder counts v,v,... (default: the home position)")
+      ->transform(numberListArg(rules::kEncoderCount));
+}
+
+}  // namespace
+
+void addTableOptions(CLI::App* cmd, RobotQuery& q) { addRobotArguments(cmd, q); }
+
+void addMatrixOptions(CLI::App* cmd, RobotQuery& q) {
+  addRobotArguments(cmd, q);
+  cmd->add_option("i", q.from, "Frame I (0 = base)")->required()->transform(numberArg(rules::kFrameNumber));
+  cmd->add_option("j", q.to, "Frame J")->required()->transform(numberArg(rules::kFrameNumber));
+  addJointOptions(cmd, q);
+}
+
+void addWhereOptions(CLI::App* cmd, RobotQuery& q) {
+  addRobotArguments(cmd, q, "Workcell or robot: description file (.rsd) or library name, e.g. scara-pick or scorobot");
+  addJointOptions(cmd, q);
 }
 
 }  // namespace rs::cli

@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace rs::cli {
 
 struct RobotQuery {
@@ -18,6 +22,14 @@ struct RobotQuery {
   std::string theta;                 // "v,v,..." joint values (degrees or d)
   std::string encoders;              // "v,v,..." encoder counts
 };
+
+/// The robot argument, --lib and --json of table, matrix, where and
+/// describe; `what` is the argument's help.
+void addRobotArguments(CLI::App* cmd, RobotQuery& q,
+                       const char* what = "Robot description file (.rsd) or library name, e.g. scorobot");
+void addTableOptions(CLI::App* cmd, RobotQuery& q);
+void addMatrixOptions(CLI::App* cmd, RobotQuery& q);
+void addWhereOptions(CLI::App* cmd, RobotQuery& q);
 
 int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err);
 int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err);

@@ -1,13 +1,16 @@
 #include "cli/lib/run_command.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "base/seconds.h"
 #include "base/text.h"
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/options.h"
 #include "cli/lib/profile_report.h"
 #include "cli/lib/report.h"
 #include "cli/lib/run_warnings.h"
+#include "cli/lib/serial_commands.h"
 #include "runtime/run/trace.h"
 #include "launch/run_diagnostics.h"
 #include "runtime/run/run.h"
@@ -97,6 +100,41 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
                           outcome.steps, base::formatSeconds(run->clock()));
   if (!json && report.profile) printTextProfile(out, *report.profile);
   return outcome.ok() && !failedStrict ? kExitOk : kExitRunFailed;
+}
+
+namespace {
+
+// run and check share everything but --trace, --profile and --strict, which
+// come between the program file and the rest.
+void addRunLikeFile(CLI::App* cmd, RunCommandOptions& o) {
+  cmd->add_option("file", o.program.file, "Program source or compiled image")->required();
+}
+
+void addRunLikeRest(CLI::App* cmd, RunCommandOptions& o) {
+  addCellOptions(cmd, o.program);
+  addMaxErrorsOption(cmd, o.program);
+  cmd->add_option("--format", o.format, "Summary format: text or json")->check(CLI::IsMember({"text", "json"}));
+  addRunOptions(cmd, o.run);
+  addSerialOptions(cmd, o.serial);
+}
+
+}  // namespace
+
+void addRunCommandOptions(CLI::App* cmd, RunCommandOptions& o) {
+  addRunLikeFile(cmd, o);
+  cmd->add_flag("--trace{text}", o.trace, "Print each executed instruction: --trace (text) or --trace=json");
+  cmd->add_flag("--profile", o.profile,
+                "Where the time went: by source line, label and subroutine, moving vs waiting vs gripper, the "
+                "slowest moves (with --format=json: a \"profile\" member); --max-steps then defaults to 10000000");
+  addRunLikeRest(cmd, o);
+}
+
+void addCheckCommandOptions(CLI::App* cmd, RunCommandOptions& o) {
+  addRunLikeFile(cmd, o);
+  cmd->add_flag("--strict", o.strict,
+                "Every warning fails the check: the compile's and the cell's (exit 2, nothing runs), the run's "
+                "(exit 1)");
+  addRunLikeRest(cmd, o);
 }
 
 }  // namespace rs::cli

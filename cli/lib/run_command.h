@@ -9,6 +9,10 @@
 #include "launch/rhino.h"
 #include "launch/run_request.h"
 
+namespace CLI {
+class App;
+}
+
 namespace rs::cli {
 
 /// `run --profile`'s step limit when --max-steps is not given.
@@ -23,6 +27,10 @@ struct RunCommandOptions {
   bool strict = false;          // check: warnings fail too
   bool profile = false;         // run: where the time went (runtime/run/profile.h)
 };
+
+/// The options of `run` and of `check` (one RunCommandOptions serves both).
+void addRunCommandOptions(CLI::App* cmd, RunCommandOptions& o);
+void addCheckCommandOptions(CLI::App* cmd, RunCommandOptions& o);
 
 /// run (`check` false) or check; returns the exit code.
 int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err);

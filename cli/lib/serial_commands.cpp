@@ -92,12 +92,10 @@ void addSerialOptions(CLI::App* cmd, launch::SerialRequest& o) {
 
 // --- robotsim ports --------------------------------------------------------------
 
-CLI::App* addPortsCommand(CLI::App& app, PortsOptions& o) {
-  CLI::App* cmd = app.add_subcommand("ports", "List the serial devices a Rhino controller may be on");
+void addPortsOptions(CLI::App* cmd, PortsOptions& o) {
   cmd->add_flag("--all", o.all, "Also list /dev/ttyS* nodes with no UART behind them");
   cmd->add_flag("--json", o.json, "Print one JSON object");
   cmd->add_option("--dev", o.root, "Look in this directory instead of /dev");
-  return cmd;
 }
 
 int portsCommand(const PortsOptions& o, std::ostream& out, std::ostream&) {
@@ -136,9 +134,7 @@ int portsCommand(const PortsOptions& o, std::ostream& out, std::ostream&) {
 
 // --- robotsim emulate --------------------------------------------------------------
 
-CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "emulate", "Play a Rhino controller on a pseudo-terminal: run programs with --device on it, no robot needed");
+void addEmulateOptions(CLI::App* cmd, EmulateOptions& o) {
   cmd->footer(
       "Console commands (standard input or --script, one per line):\n"
       "  in N on|off              set input N (1..8)\n"
@@ -176,7 +172,6 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
   cmd->add_flag("--no-stdin", o.noStdin, "Do not read console commands from standard input");
   cmd->add_flag("-q,--quiet", o.quiet, "No status line and no event lines");
   cmd->add_flag("-v,--verbose", o.verbose, "Print every command the host sends");
-  return cmd;
 }
 
 namespace {

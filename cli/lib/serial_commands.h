@@ -28,7 +28,7 @@ struct PortsOptions {
   bool json = false;
   std::string root = "/dev";
 };
-CLI::App* addPortsCommand(CLI::App& app, PortsOptions& o);
+void addPortsOptions(CLI::App* cmd, PortsOptions& o);
 int portsCommand(const PortsOptions& o, std::ostream& out, std::ostream& err);
 
 struct EmulateOptions {
@@ -51,7 +51,7 @@ struct EmulateOptions {
   bool quiet = false;
   bool verbose = false;
 };
-CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o);
+void addEmulateOptions(CLI::App* cmd, EmulateOptions& o);
 /// Runs until Ctrl-C, `quit`, --duration or a hang-up fault. Reads console
 /// commands from standard input unless noStdin.
 int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err);

@@ -53,9 +53,7 @@ bool isLoopback(const std::string& host) {
   return host == "localhost" || host == "::1" || host.starts_with("127.");
 }
 
-CLI::App* addTeachCommand(CLI::App& app, TeachOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "teach", "Jog the robot in its workcell on a live page and teach points into the program's POINTS section");
+void addTeachOptions(CLI::App* cmd, TeachOptions& o) {
   cmd->add_option("file", o.request.program.file, "Program source (.rsp) whose points to teach")->required();
   addCellOptions(cmd, o.request.program);
   addSerialOptions(cmd, o.request.serial);
@@ -80,7 +78,6 @@ CLI::App* addTeachCommand(CLI::App& app, TeachOptions& o) {
       "file as it was is kept in PROG.rsp.bak). The URL carries a secret token; Ctrl-C stops the server. "
       "--tui shows the same pendant in the terminal instead, with the same keys (? lists them, q quits). "
       "docs/teach.md has the whole guide.");
-  return cmd;
 }
 
 int teachCommand(const TeachOptions& o, std::ostream& out, std::ostream& err) {

@@ -20,7 +20,7 @@ struct TeachOptions {
   bool tui = false;    ///< --tui: the terminal pendant instead (teach_tui_command.h)
 };
 
-CLI::App* addTeachCommand(CLI::App& app, TeachOptions& o);
+void addTeachOptions(CLI::App* cmd, TeachOptions& o);
 int teachCommand(const TeachOptions& o, std::ostream& out, std::ostream& err);
 
 /// --listen's HOST[:PORT] ([V6]:PORT for IPv6); false when malformed.

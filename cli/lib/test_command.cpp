@@ -116,9 +116,7 @@ std::string gradeTable(const std::vector<testrun::TestResult>& results, bool csv
 
 }  // namespace
 
-CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "test", "Check programs against the expectations written in them (folders: every .rsp, recursively)");
+void addTestOptions(CLI::App* cmd, TestOptions& o) {
   cmd->add_option("paths", o.paths, "Programs and folders (default: the current folder)");
   cmd->add_option("--lib", o.libDirs, "Also look up description names in this directory (repeatable)")
       ->allow_extra_args(false);
@@ -138,7 +136,6 @@ CLI::App* addTestCommand(CLI::App& app, TestOptions& o) {
                               testrun::kGradingMaxSteps, testrun::kGradingMaxSeconds));
   cmd->add_flag("--update", o.update, "Write the golden traces of 'expect: trace FILE' from the runs (not when CI is set)");
   addCollisionsOption(cmd, o.collisions);
-  return cmd;
 }
 
 int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {

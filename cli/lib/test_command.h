@@ -29,7 +29,7 @@ struct TestOptions {
   std::string collisions; // --collisions error|warn|off
 };
 
-CLI::App* addTestCommand(CLI::App& app, TestOptions& o);
+void addTestOptions(CLI::App* cmd, TestOptions& o);
 int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err);
 
 }  // namespace rs::cli

@@ -1,0 +1,7 @@
+// robotsim_gen_docs: robotsim's man pages and bash completion script, from
+// the command table. All the work is in cli/lib/gen_docs.cpp.
+#include <iostream>
+
+#include "cli/lib/gen_docs.h"
+
+int main(int argc, char** argv) { return rs::cli::genDocsCommand(argc, argv, std::cout, std::cerr); }

@@ -1,0 +1,124 @@
+#include "cli/lib/commands.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <array>
+#include <iostream>
+
+#include "cli/lib/dap_command.h"
+#include "cli/lib/describe_command.h"
+#include "cli/lib/exit_codes.h"
+#include "cli/lib/help.h"
+#include "cli/lib/teach_tui_command.h"
+
+namespace rs::cli {
+
+namespace {
+
+using Values = CommandValues;
+using Io = CommandStreams;
+
+// --trace takes an optional value, which CLI11 cannot check as it reads it.
+int runHandler(const Values& v, const Io& io) {
+  if (!v.run.trace.empty() && v.run.trace != "text" && v.run.trace != "json") {
+    io.err << fmt::format("robotsim: error: --trace takes text or json, not '{}'\n", v.run.trace);
+    return kExitBadInput;
+  }
+  return runOrCheck(v.run, false, io.out, io.err);
+}
+
+int teachHandler(const Values& v, const Io& io) {
+  return v.teach.tui ? teachTuiCommand(v.teach, io.out, io.err) : teachCommand(v.teach, io.out, io.err);
+}
+
+// The rows, in `robotsim --help`'s order. The lambdas only pick the
+// command's options out of CommandValues.
+constexpr std::array kCommands{
+    Command{"run", "Run a program (.rsp source or .rsb image) in simulation",
+            [](CLI::App* c, Values& v) { addRunCommandOptions(c, v.run); }, runHandler},
+    Command{"check", "Compile, verify and simulate; exit 0 only if all is well",
+            [](CLI::App* c, Values& v) { addCheckCommandOptions(c, v.run); },
+            [](const Values& v, const Io& io) { return runOrCheck(v.run, true, io.out, io.err); }},
+    Command{"compile", "Compile a program to a bytecode image",
+            [](CLI::App* c, Values& v) { addCompileOptions(c, v.program); },
+            [](const Values& v, const Io& io) { return compileCommand(v.program, io.out, io.err); }},
+    Command{"disasm", "List the bytecode of a program or image",
+            [](CLI::App* c, Values& v) { addDisasmOptions(c, v.program); },
+            [](const Values& v, const Io& io) { return disasmCommand(v.program, io.out, io.err); }},
+    Command{"tokens", "Show the tokens the lexer produces",
+            [](CLI::App* c, Values& v) { addTokensOptions(c, v.program); },
+            [](const Values& v, const Io& io) { return tokensCommand(v.program, io.out, io.err); }},
+    Command{"ast", "Show the abstract syntax tree", [](CLI::App* c, Values& v) { addAstOptions(c, v.program); },
+            [](const Values& v, const Io& io) { return astCommand(v.program, io.out, io.err); }},
+    Command{"table", "Print a robot's D-H table (the paper's TABLE, Fig. 6)",
+            [](CLI::App* c, Values& v) { addTableOptions(c, v.robot); },
+            [](const Values& v, const Io& io) { return tableCommand(v.robot, io.out, io.err); }},
+    Command{"matrix", "Print the matrix taking frame J coordinates to frame I (the paper's MATRIX)",
+            [](CLI::App* c, Values& v) { addMatrixOptions(c, v.robot); },
+            [](const Values& v, const Io& io) { return matrixCommand(v.robot, io.out, io.err); }},
+    Command{"where",
+            "Print the tool centre point for given encoder values: in a workcell's world coordinates for a CELL, in "
+            "a robot's design coordinates for a ROBOT",
+            [](CLI::App* c, Values& v) { addWhereOptions(c, v.robot); },
+            [](const Values& v, const Io& io) { return whereCommand(v.robot, io.out, io.err); }},
+    Command{"describe",
+            "Describe a workcell (or a robot alone): motors, ranges, speeds, reach, every object's box, centre and "
+            "what it stands on, inputs and outputs",
+            [](CLI::App* c, Values& v) { addDescribeOptions(c, v.robot); },
+            [](const Values& v, const Io& io) { return describeCommand(v.robot, io.out, io.err); }},
+    Command{"ik", "Encoder counts that put the tool at a pose (inverse kinematics), as a POINTS line",
+            [](CLI::App* c, Values& v) { addIkOptions(c, v.ik); },
+            [](const Values& v, const Io& io) { return ikCommand(v.ik, io.out, io.err); }},
+    Command{"ports", "List the serial devices a Rhino controller may be on",
+            [](CLI::App* c, Values& v) { addPortsOptions(c, v.ports); },
+            [](const Values& v, const Io& io) { return portsCommand(v.ports, io.out, io.err); }},
+    Command{"emulate",
+            "Play a Rhino controller on a pseudo-terminal: run programs with --device on it, no robot needed",
+            [](CLI::App* c, Values& v) { addEmulateOptions(c, v.emulate); },
+            [](const Values& v, const Io& io) { return emulateCommand(v.emulate, io.out, io.err); }},
+    Command{"render", "Draw a workcell (PNG or SVG), at its placed pose or during a run",
+            [](CLI::App* c, Values& v) { addRenderOptions(c, v.render); },
+            [](const Values& v, const Io& io) { return renderCommand(v.render, io.out, io.err); }},
+    Command{"animate", "Write a self-contained HTML page that replays a program's run",
+            [](CLI::App* c, Values& v) { addAnimateOptions(c, v.render); },
+            [](const Values& v, const Io& io) { return animateCommand(v.render, io.out, io.err); }},
+    Command{"teach", "Jog the robot in its workcell on a live page and teach points into the program's POINTS section",
+            [](CLI::App* c, Values& v) { addTeachOptions(c, v.teach); }, teachHandler},
+    Command{"test", "Check programs against the expectations written in them (folders: every .rsp, recursively)",
+            [](CLI::App* c, Values& v) { addTestOptions(c, v.test); },
+            [](const Values& v, const Io& io) { return testCommand(v.test, io.out, io.err); }},
+    Command{"lsp", "Run the language server (LSP 3.17) on stdin/stdout, for editors",
+            [](CLI::App* c, Values& v) { addLspOptions(c, v.lsp); },
+            [](const Values& v, const Io& io) { return lspCommand(v.lsp, io.err); }},
+    Command{"debug", "Debug a program: breakpoints, stepping, and stepping backwards",
+            [](CLI::App* c, Values& v) { addDebugOptions(c, v.debug); },
+            [](const Values& v, const Io& io) { return debugCommand(v.debug, io.in, io.out, io.err); }},
+    Command{"dap", "Run the debug adapter (Debug Adapter Protocol) on stdin/stdout, for editors",
+            [](CLI::App* c, Values&) { addDapOptions(c); }, [](const Values&, const Io& io) { return dapCommand(io.err); }},
+    Command{"help", "Explain the instruction set, or one instruction",
+            [](CLI::App* c, Values& v) { addHelpOptions(c, v.helpTopic); },
+            [](const Values& v, const Io& io) { return helpCommand(v.helpTopic, io.out, io.err); }},
+};
+
+}  // namespace
+
+std::span<const Command> commandTable() { return kCommands; }
+
+CommandLine::CommandLine() : app_{std::string(kRobotsimHelp)} {
+  app_.name("robotsim");
+  app_.require_subcommand(1);
+  for (const Command& command : kCommands) {
+    CLI::App* cmd = app_.add_subcommand(std::string(command.name), std::string(command.help));
+    command.addOptions(cmd, values_);
+    subcommands_.push_back(cmd);
+  }
+}
+
+const Command* CommandLine::parsedCommand() const {
+  for (std::size_t i = 0; i < subcommands_.size(); ++i)
+    if (subcommands_[i]->parsed()) return &kCommands[i];
+  return nullptr;
+}
+
+}  // namespace rs::cli

@@ -1,0 +1,58 @@
+#include "cli/lib/gen_docs.h"
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <string>
+
+#include "base/file_write.h"
+#include "cli/lib/bash_completion.h"
+#include "cli/lib/commands.h"
+#include "cli/lib/exit_codes.h"
+#include "cli/lib/man_page.h"
+
+namespace rs::cli {
+
+namespace {
+
+bool writeDocFile(const std::string& path, const std::string& bytes, std::ostream& err) {
+  std::string error;
+  if (base::writeFileAtomically(path, bytes, error)) return true;
+  err << "robotsim_gen_docs: error: " << error << '\n';
+  return false;
+}
+
+}  // namespace
+
+int genDocsCommand(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CLI::App app{"Write robotsim's man pages and bash completion script from its command table"};
+  app.name("robotsim_gen_docs");
+  std::string manDir, bashFile;
+  app.add_option("--man", manDir, "Write robotsim.1 and robotsim-COMMAND.1 for every command into this folder")
+      ->check(CLI::ExistingDirectory);
+  app.add_option("--bash", bashFile, "Write the bash completion script to this file");
+  app.footer("At least one of --man and --bash; existing files are replaced whole, never half-written.");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e, out, err) == 0 ? kExitOk : kExitBadInput;
+  }
+  if (manDir.empty() && bashFile.empty()) {
+    err << "robotsim_gen_docs: error: nothing to write\n  give --man DIR, --bash FILE or both\n";
+    return kExitBadInput;
+  }
+  const CommandLine commandLine;
+  if (!manDir.empty()) {
+    const std::filesystem::path dir(manDir);
+    if (!writeDocFile((dir / manPageFileName("")).string(), robotsimManPage(commandLine), err))
+      return kExitBadInput;
+    const auto table = commandTable();
+    for (std::size_t i = 0; i < table.size(); ++i)
+      if (!writeDocFile((dir / manPageFileName(table[i].name)).string(), commandManPage(commandLine, i), err))
+        return kExitBadInput;
+  }
+  if (!bashFile.empty() && !writeDocFile(bashFile, bashCompletion(commandLine), err)) return kExitBadInput;
+  return kExitOk;
+}
+
+}  // namespace rs::cli
