@@ -31,7 +31,7 @@ TEST_CASE("a restored run finds the same collisions again", "[collision][runtime
   rs::runtime::Run run(spec);
   run.step(1);
   const rs::runtime::RunSnapshot after1 = run.snapshot();
-  CHECK(after1.collisions.size() == 1);
+  CHECK(after1.rig.collisions.size() == 1);
   REQUIRE(run.runToEnd().ok());
   const auto all = found(run);
   REQUIRE(all.size() == 3);

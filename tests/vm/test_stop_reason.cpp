@@ -32,7 +32,7 @@ TEST_CASE("every stop reason has a run word, a debugger word and an adapter reas
   }
 }
 
-TEST_CASE("a run's end is said as run, check and test said it; the debugger lumps the limits") {
+TEST_CASE("a run's end is said as run, check and test said it, and the debugger lumps the limits") {
   CHECK(rs::vm::stopReasonName(StopReason::End) == "finished");
   CHECK(rs::vm::stopReasonName(StopReason::RuntimeError) == "runtime error");
   CHECK(rs::vm::stopReasonName(StopReason::Deadlock) == "deadlock");
@@ -50,7 +50,7 @@ TEST_CASE("a run's end is said as run, check and test said it; the debugger lump
   CHECK(rs::vm::debuggerName(StopReason::Pause) == "pause");
 }
 
-TEST_CASE("the adapter's reasons are the protocol's: exception for a run that is over") {
+TEST_CASE("the adapter's reasons are the protocol's, exception for a run that is over") {
   // The `stopped` event's reasons the Debug Adapter Protocol names.
   const std::set<std::string_view> protocol = {"step",  "breakpoint", "exception",           "pause",
                                                "entry", "goto",       "function breakpoint", "data breakpoint",
