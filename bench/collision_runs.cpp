@@ -51,9 +51,9 @@ Timed timedRun(const runtime::RunSpec& base, runtime::CollisionMode mode) {
   Timed t;
   t.sample = clock.stop();
   if (!outcome.ok()) throw std::runtime_error("a benchmark run stopped: " + outcome.message);
-  t.simulated = static_cast<double>(run.clock()) / 1e6;
+  t.simulated = static_cast<double>(run.rig().clock()) / 1e6;
   t.steps = run.interpreter().steps();
-  if (const runtime::CollisionWatch* w = run.collisionWatch())
+  if (const runtime::CollisionWatch* w = run.rig().collisionWatch())
     t.moves = w->moves(), t.remembered = w->remembered(), t.checks = w->checks();
   return t;
 }

@@ -281,37 +281,25 @@ void Adapter::reportStop(const debug::Stop& stop) {
   const auto stopped = [&](std::string_view reason, const std::string& text) {
     Json body = {{"reason", reason}, {"threadId", kThread}, {"allThreadsStopped", true}, {"description", text}};
     if (!stop.breakpoints.empty()) body["hitBreakpointIds"] = stop.breakpoints;
-    if (reason == "exception") body["text"] = text;
+    if (stop.finished()) body["text"] = text;  // an exception stop
     event("stopped", std::move(body));
   };
-  switch (stop.reason) {
-    case StopReason::Entry: return stopped("entry", stop.message);
-    case StopReason::Breakpoint: return stopped("breakpoint", stop.message);
-    case StopReason::Watch: return stopped("data breakpoint", stop.message);
-    case StopReason::Step:
-    case StopReason::Start: return stopped("step", stop.message);
-    case StopReason::Time: return stopped("goto", stop.message);
-    case StopReason::Pause: return stopped("pause", stop.message);
-    case StopReason::End:
-      output("console", stop.message + "\n");  // "the program ended", with the gripper warning if any
-      event("terminated");
-      event("exited", {{"exitCode", 0}});
-      state_ = State::Terminated;
-      return;
-    case StopReason::Deadlock:
-    case StopReason::RuntimeError:
-    case StopReason::Limit: {
-      const bool stops = stop.reason == StopReason::Deadlock       ? stopOnDeadlock_
-                         : stop.reason == StopReason::RuntimeError ? stopOnRuntimeError_
-                                                                   : stopOnLimit_;
-      if (stops) return stopped("exception", stop.message);
-      output("stderr", stop.message + "\n");
-      event("terminated");
-      event("exited", {{"exitCode", 1}});
-      state_ = State::Terminated;
-      return;
-    }
+  if (!stop.finished()) return stopped(vm::adapterReason(stop.reason), stop.message);
+  if (stop.reason == StopReason::End) {
+    output("console", stop.message + "\n");  // "the program ended", with the gripper warning if any
+    event("terminated");
+    event("exited", {{"exitCode", 0}});
+    state_ = State::Terminated;
+    return;
   }
+  const bool stops = stop.reason == StopReason::Deadlock       ? stopOnDeadlock_
+                     : stop.reason == StopReason::RuntimeError ? stopOnRuntimeError_
+                                                               : stopOnLimit_;
+  if (stops) return stopped(vm::adapterReason(stop.reason), stop.message);  // "exception"
+  output("stderr", stop.message + "\n");
+  event("terminated");
+  event("exited", {{"exitCode", 1}});
+  state_ = State::Terminated;
 }
 
 }  // namespace rs::dap

@@ -77,13 +77,13 @@ std::int64_t valueOf(const runtime::Run& run, const Expression& e) {
     case Expression::Kind::Variable:
       return run.interpreter().variables()[e.index];
     case Expression::Kind::Motor:
-      return run.motors()[e.index];
+      return run.rig().motors()[e.index];
     case Expression::Kind::Input:
-      return (run.machine().inputs() & runtime::lineBit(static_cast<int>(e.index))) != 0;
+      return (run.rig().machine().inputs() & runtime::lineBit(static_cast<int>(e.index))) != 0;
     case Expression::Kind::Output:
-      return (run.machine().outputs() & runtime::lineBit(static_cast<int>(e.index))) != 0;
+      return (run.rig().machine().outputs() & runtime::lineBit(static_cast<int>(e.index))) != 0;
     case Expression::Kind::Clock:
-      return run.clock();
+      return run.rig().clock();
   }
   return 0;
 }

@@ -11,23 +11,6 @@
 
 namespace rs::debug {
 
-std::string_view reasonName(StopReason reason) {
-  switch (reason) {
-    case StopReason::Entry: return "entry";
-    case StopReason::Breakpoint: return "breakpoint";
-    case StopReason::Watch: return "watch";
-    case StopReason::Step: return "step";
-    case StopReason::Time: return "time";
-    case StopReason::Pause: return "pause";
-    case StopReason::Start: return "start";
-    case StopReason::End: return "end";
-    case StopReason::Deadlock: return "deadlock";
-    case StopReason::RuntimeError: return "runtime error";
-    case StopReason::Limit: return "limit";
-  }
-  return "";
-}
-
 // Where a forward run is going, besides the breakpoints.
 struct Session::Target {
   std::uint64_t steps = UINT64_MAX;
@@ -43,7 +26,7 @@ class Session::Probe {
  public:
   explicit Probe(const Session& s) : s_(s) {}
   void capture(const runtime::Run& r) {
-    clock = r.clock();
+    clock = r.rig().clock();
     held.resize(s_.breakpoints_.size());
     for (std::size_t i = 0; i < held.size(); ++i)
       held[i] = s_.breakpoints_[i].kind == Breakpoint::Kind::When && s_.breakpoints_[i].when.holds(r);
@@ -101,7 +84,7 @@ diag::Result<int> Session::breakAtLine(std::uint32_t line) {
 }
 
 diag::Result<int> Session::breakAtLabel(std::string_view label) {
-  const std::optional<std::uint32_t> at = run_->labelInstruction(label);
+  const std::optional<std::uint32_t> at = runtime::labelInstruction(run_->image(), label);
   if (!at) return diag::refusal(fmt::format("the program has no label '{}'", base::safeText(label.substr(0, 60))));
   Breakpoint b;
   b.id = nextId();
@@ -202,7 +185,7 @@ bool Session::stopsHere(const runtime::Run& r, const Probe& before, bool countin
         at = std::find(b.instructions.begin(), b.instructions.end(), pc) != b.instructions.end();
         break;
       case Breakpoint::Kind::Time:
-        at = before.clock <= b.time && r.clock() > b.time;
+        at = before.clock <= b.time && r.rig().clock() > b.time;
         break;
       case Breakpoint::Kind::When:
         at = b.when.holds(r) && !(i < before.held.size() && before.held[i]);
@@ -222,29 +205,12 @@ bool Session::stopsHere(const runtime::Run& r, const Probe& before, bool countin
   return !ids.empty();
 }
 
-namespace {
-
-StopReason reasonOf(vm::StopReason r) {
-  switch (r) {
-    case vm::StopReason::End: return StopReason::End;
-    case vm::StopReason::Deadlock: return StopReason::Deadlock;
-    case vm::StopReason::RuntimeError: return StopReason::RuntimeError;
-    case vm::StopReason::StepLimit:
-    case vm::StopReason::TimeLimit:
-    case vm::StopReason::InstantLimit: return StopReason::Limit;
-    case vm::StopReason::Paused: return StopReason::Pause;
-  }
-  return StopReason::Pause;
-}
-
-}  // namespace
-
 Stop Session::finishedStop(bool already) const {
   const vm::RunOutcome outcome = *run_->outcome();
   Stop s;
-  s.reason = reasonOf(outcome.reason);
+  s.reason = outcome.reason;
   std::string what = outcome.ok() ? std::string("the program ended")
-                                  : fmt::format("{}: {}", reasonName(s.reason), base::safeText(outcome.message));
+                                  : fmt::format("{}: {}", vm::debuggerName(s.reason), base::safeText(outcome.message));
   // What `robotsim run` warns about at the end, said where the run ends.
   if (const auto w = runtime::gripperWarning(*run_, run_->image().sourceName))
     what += fmt::format("; warning at line {}: {}", w->pos.line, base::safeText(w->message));
@@ -297,7 +263,7 @@ Stop Session::forward(const Target& target) {
     for (const std::string& p : parts) s.message += (s.message.empty() ? "" : ", ") + p;
   } else if (done || run_->interpreter().steps() >= target.steps) {
     s = {StopReason::Step, "step done", {}};
-  } else if (run_->clock() > target.time) {
+  } else if (run_->rig().clock() > target.time) {
     s = {StopReason::Time, fmt::format("the clock passed {} s", base::formatSeconds(target.time)), {}};
   } else {
     s = {StopReason::Pause, "paused", {}};
@@ -332,7 +298,7 @@ Stop Session::resume() { return forward({}); }
 Stop Session::until(vm::Micros time) {
   Target t;
   t.time = time;
-  if (run_->clock() > time && !run_->finished())
+  if (run_->rig().clock() > time && !run_->finished())
     return stopped({StopReason::Time, fmt::format("the clock is already past {} s", base::formatSeconds(time)), {}});
   return forward(t);
 }
@@ -391,7 +357,7 @@ Stop Session::reverseContinue() {
 
 Stop Session::gotoTime(vm::Micros t) {
   timeline_->goToTime(t);
-  if (run_->finished() && run_->clock() <= t) {
+  if (run_->finished() && run_->rig().clock() <= t) {
     Stop s = finishedStop(false);
     s.message += fmt::format(" before {} s", base::formatSeconds(t));
     return stopped(std::move(s));

@@ -28,32 +28,18 @@
 
 namespace rs::debug {
 
-enum class StopReason : std::uint8_t {
-  Entry,         ///< the session starts before the first instruction
-  Breakpoint,
-  Watch,         ///< a watched value changed
-  Step,          ///< a step, next, finish, reverse step or reverse next is done
-  Time,          ///< until or goto-time reached its time
-  Pause,         ///< interrupted (Ctrl-C, the adapter's pause)
-  Start,         ///< going backwards reached the start of the run
-  End,           ///< the program ended (END, or past the last instruction)
-  Deadlock,
-  RuntimeError,
-  Limit,         ///< a step, time or still-clock limit
-};
-
-/// "breakpoint", "deadlock", ... (one word or two, for messages and DAP).
-std::string_view reasonName(StopReason reason);
+/// Why the session stopped: the one stop-reason type (vm/stop_reason.h).
+/// A session says Entry, Breakpoint, Watch, Step, Time, Pause and Start,
+/// and a finished run's reason (End, RuntimeError, Deadlock, a limit);
+/// vm::debuggerName says each.
+using vm::StopReason;
 
 struct Stop {
   StopReason reason = StopReason::Entry;
   std::string message;          ///< what happened, one line (names already made safe to print)
   std::vector<int> breakpoints;  ///< the breakpoints and watches that stopped it
   /// The run is over: it ended, deadlocked, failed or hit a limit.
-  bool finished() const {
-    return reason == StopReason::End || reason == StopReason::Deadlock || reason == StopReason::RuntimeError ||
-           reason == StopReason::Limit;
-  }
+  bool finished() const { return vm::isOver(reason); }
 };
 
 struct SessionOptions {

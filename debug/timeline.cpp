@@ -19,12 +19,12 @@ std::size_t heapBytes(const std::vector<T>& v) {
 std::size_t snapshotBytes(const runtime::RunSnapshot& s) {
   std::size_t b = sizeof s;
   b += heapBytes(s.vm.variables) + heapBytes(s.vm.callStack) + heapBytes(s.vm.softHome) + s.vm.outcome.message.capacity();
-  b += heapBytes(s.machine.positions) + heapBytes(s.machine.segments);
-  b += s.machine.schedule.reactive.size() * (sizeof(runtime::InputSchedule::State::Pending) + kSetNodeOverhead);
-  if (s.world) b += heapBytes(s.world->grasp.resting) + heapBytes(s.world->grasp.letGo);
+  b += heapBytes(s.rig.machine.positions) + heapBytes(s.rig.machine.segments);
+  b += s.rig.machine.schedule.reactive.size() * (sizeof(runtime::InputSchedule::State::Pending) + kSetNodeOverhead);
+  if (s.rig.world) b += heapBytes(s.rig.world->grasp.resting) + heapBytes(s.rig.world->grasp.letGo);
   if (s.log) b += heapBytes(s.log->moves);
-  b += heapBytes(s.collisions);
-  for (const runtime::CollisionEvent& e : s.collisions) b += heapBytes(e.encoders);
+  b += heapBytes(s.rig.collisions);
+  for (const runtime::CollisionEvent& e : s.rig.collisions) b += heapBytes(e.encoders);
   return b;
 }
 
@@ -36,7 +36,7 @@ Timeline::Timeline(runtime::Run& run, std::uint64_t interval, std::size_t budget
 void Timeline::keep() {
   const std::uint64_t steps = run_.interpreter().steps();
   if (snapshots_.count(steps)) return;
-  Stored s{run_.snapshot(), editsApplied_, run_.clock(), 0};
+  Stored s{run_.snapshot(), editsApplied_, run_.rig().clock(), 0};
   s.bytes = snapshotBytes(s.snapshot);
   bytes_ += s.bytes;
   snapshots_.emplace(steps, std::move(s));
@@ -70,7 +70,7 @@ void Timeline::applyDueEdits() {
   const std::uint64_t steps = run_.interpreter().steps();
   while (editsApplied_ < edits_.size() && edits_[editsApplied_].steps <= steps && !run_.finished()) {
     const InputEdit& e = edits_[editsApplied_++];
-    run_.setInput(e.input, e.on);
+    run_.rig().setInput(e.input, e.on);
   }
 }
 
@@ -98,10 +98,10 @@ vm::RunOutcome Timeline::forward(const runtime::RunUntil& until, const std::func
     // (or the caller's) stop here. At the boundary the run names the step
     // count first, so the caller's time, instructions and lines are
     // looked at again.
-    const bool ownBoundary = run_.pauseCause() == runtime::PauseCause::Steps && steps == cap && cap < until.steps;
+    const bool ownBoundary = run_.pauseCause() == vm::StopReason::Step && steps == cap && cap < until.steps;
     if (!ownBoundary) return outcome;
     const std::uint32_t pc = run_.interpreter().pc();
-    if (run_.clock() > until.time) return outcome;
+    if (run_.rig().clock() > until.time) return outcome;
     if (std::find(until.instructions.begin(), until.instructions.end(), pc) != until.instructions.end()) return outcome;
     if (pc < image.code.size() && (pc == 0 || image.lines[pc - 1] != image.lines[pc]) &&
         std::find(until.lines.begin(), until.lines.end(), image.lines[pc]) != until.lines.end())
@@ -135,9 +135,9 @@ void Timeline::goToTime(vm::Micros t) {
   auto it = snapshots_.end();
   do --it;
   while (it != snapshots_.begin() && it->second.clock > t);
-  const bool fromHere = !run_.finished() && run_.clock() <= t && run_.interpreter().steps() >= it->first;
+  const bool fromHere = !run_.finished() && run_.rig().clock() <= t && run_.interpreter().steps() >= it->first;
   if (!fromHere) {
-    if (run_.finished() && run_.clock() <= t) return;  // the run ended before t
+    if (run_.finished() && run_.rig().clock() <= t) return;  // the run ended before t
     run_.restore(it->second.snapshot);
     editsApplied_ = it->second.editsApplied;
   }
@@ -183,7 +183,7 @@ bool Timeline::setInput(int input, bool on) {
     bytes_ -= it->second.bytes;
     it = snapshots_.erase(it);
   }
-  if (!run_.setInput(input, on)) return false;
+  if (!run_.rig().setInput(input, on)) return false;
   edits_.push_back({steps, input, on});
   editsApplied_ = edits_.size();
   return true;

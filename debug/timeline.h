@@ -43,7 +43,7 @@ std::size_t snapshotBytes(const runtime::RunSnapshot& s);
 
 class Timeline {
  public:
-  /// `run` must be simulated (run.canSnapshot()) and outlive the timeline;
+  /// `run` must be simulated (run.rig().canSnapshot()) and outlive the timeline;
   /// it is taken where it stands (normally at its start).
   explicit Timeline(runtime::Run& run, std::uint64_t interval = kDefaultSnapshotInterval,
                     std::size_t budget = kDefaultSnapshotBudget);

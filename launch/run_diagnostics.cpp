@@ -21,31 +21,16 @@ std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) 
       if (vm::has(image.code[outcome.index].op, vm::kReturns))  // its one failure: an empty call stack
         return "did the program run on into a subroutine? an END before the subroutine stops it there";
       return "";
-    case vm::StopReason::End:
-    case vm::StopReason::Paused: return "";
+    default: return "";  // it ended, or it paused
   }
-  return "";
 }
 
 }  // namespace
 
-std::string_view stopReasonName(vm::StopReason reason) {
-  switch (reason) {
-    case vm::StopReason::End: return "finished";
-    case vm::StopReason::RuntimeError: return "runtime error";
-    case vm::StopReason::Deadlock: return "deadlock";
-    case vm::StopReason::StepLimit: return "step limit";
-    case vm::StopReason::TimeLimit: return "time limit";
-    case vm::StopReason::InstantLimit: return "clock standing still";
-    case vm::StopReason::Paused: return "paused";
-  }
-  return "?";
-}
-
 diag::Diagnostic stopDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {
   const diag::Pos pos{image.lines[outcome.index], image.columns[outcome.index]};
   return {file, pos, diag::Severity::Error,
-          fmt::format("{}: {} (instruction {})", stopReasonName(outcome.reason), outcome.message, outcome.index + 1),
+          fmt::format("{}: {} (instruction {})", vm::stopReasonName(outcome.reason), outcome.message, outcome.index + 1),
           {}, std::string(hintFor(image, outcome))};
 }
 
@@ -53,8 +38,8 @@ std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::Coll
                                           const std::string& file) {
   std::vector<diag::Diagnostic> out;
   const vm::Image& image = run.image();
-  if (const runtime::CollisionWatch* watch = run.collisionWatch(); watch && mode == runtime::CollisionMode::Warn)
-    for (const runtime::CollisionEvent& e : run.collisions()) {
+  if (const runtime::CollisionWatch* watch = run.rig().collisionWatch(); watch && mode == runtime::CollisionMode::Warn)
+    for (const runtime::CollisionEvent& e : run.rig().collisions()) {
       const bool known = e.instruction < image.code.size();
       const std::string seconds = base::formatSeconds(e.at);
       out.push_back({file, known ? diag::Pos{image.lines[e.instruction], image.columns[e.instruction]} : diag::Pos{},

@@ -18,9 +18,6 @@
 
 namespace rs::launch {
 
-/// "finished", "runtime error", "deadlock", "step limit", ...
-std::string_view stopReasonName(vm::StopReason reason);
-
 /// A run that stopped early, as an error at the instruction's source
 /// position: "collision: collision at 1.2 s: link 2 ... (instruction 7)",
 /// with a hint where the command line can help (--max-steps, --input).

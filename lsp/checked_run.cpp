@@ -55,7 +55,7 @@ class Timer final : public vm::StepObserver {
 };
 
 std::string summaryOf(const runtime::Run& run, const vm::RunOutcome& outcome) {
-  const std::string at = formatSeconds(run.clock());
+  const std::string at = formatSeconds(run.rig().clock());
   const std::uint32_t line = run.image().lines[outcome.index];
   switch (outcome.reason) {
     case vm::StopReason::End: return fmt::format("finished at {}", at);
@@ -65,8 +65,8 @@ std::string summaryOf(const runtime::Run& run, const vm::RunOutcome& outcome) {
     case vm::StopReason::StepLimit:
     case vm::StopReason::TimeLimit:
     case vm::StopReason::InstantLimit:
-      return fmt::format("stopped by the {} at {} (line {})", launch::stopReasonName(outcome.reason), at, line);
-    case vm::StopReason::Paused: break;
+      return fmt::format("stopped by the {} at {} (line {})", vm::stopReasonName(outcome.reason), at, line);
+    default: break;  // paused
   }
   return {};
 }
@@ -81,7 +81,7 @@ diag::Diagnostic budgetNote(const runtime::Run& run, const std::string& file, st
           diag::Severity::Note,
           fmt::format("the editor's run stopped here after {} s of checking ({} instructions, {} simulated), before "
                       "the program ended: what comes after is not checked in the editor",
-                      static_cast<double>(budget.count()) / 1000.0, run.interpreter().steps(), formatSeconds(run.clock())),
+                      static_cast<double>(budget.count()) / 1000.0, run.interpreter().steps(), formatSeconds(run.rig().clock())),
           "run-not-finished",
           "robotsim check runs it to its end"};
 }
@@ -148,7 +148,7 @@ CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, 
   control.attach(&run);
   vm::RunOutcome outcome = run.runToEnd();
   control.attach(nullptr);
-  out.clock = run.clock();
+  out.clock = run.rig().clock();
   out.steps = run.interpreter().steps();
   if (run.finished()) {
     out.outcome = outcome;

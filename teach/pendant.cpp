@@ -6,33 +6,11 @@
 
 #include "base/seconds.h"
 #include "runtime/rhino/rhino_machine.h"
-#include "vm/interpreter.h"
 #include "vm/motor_range.h"
 
 namespace rs::teach {
 
 namespace {
-
-// The run's program: one END. The pendant never steps it; the run is there
-// for its machine, world, views and snapshots.
-std::shared_ptr<const vm::Image> idleImage(const std::vector<vm::MotorSpec>& motors, const std::string& robot) {
-  auto image = std::make_shared<vm::Image>();
-  image->sourceName = "teach";
-  image->robotName = robot;
-  image->motors = motors;
-  image->code.push_back(vm::Instr{});
-  image->lines.push_back(0);
-  image->columns.push_back(0);
-  return image;
-}
-
-runtime::RunSpec specFor(const std::shared_ptr<const workcell::Workcell>& cell,
-                         const std::vector<vm::MotorSpec>& motors) {
-  runtime::RunSpec spec;
-  spec.image = idleImage(motors, cell->robots.front().robot.name);
-  spec.cell = cell;
-  return spec;
-}
 
 std::string valuesText(std::span<const std::int32_t> v) {
   std::string s;
@@ -44,8 +22,8 @@ std::string valuesText(std::span<const std::int32_t> v) {
 
 Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, ProgramFile file)
     : cell_(std::move(cell)), motors_(std::move(motors)), file_(std::move(file)) {
-  run_ = std::make_unique<runtime::Run>(specFor(cell_, motors_));
-  start_ = run_->snapshot();
+  rig_ = std::make_unique<runtime::Rig>(cell_, motors_, stimuli::Stimuli{}, runtime::CollisionMode::Error);
+  start_ = rig_->snapshot();
   message_ = fmt::format("teaching {} on {}", file_.path(), cell_->name);
 }
 
@@ -53,7 +31,7 @@ Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm:
                  std::unique_ptr<vm::Machine> device, std::string deviceName)
     : cell_(std::move(cell)), motors_(std::move(motors)), file_(std::move(file)), device_(std::move(deviceName)) {
   rhino_ = dynamic_cast<rhino::RhinoMachine*>(device.get());
-  run_ = std::make_unique<runtime::Run>(specFor(cell_, motors_), std::move(device));
+  rig_ = std::make_unique<runtime::Rig>(cell_, std::move(device));
   message_ = fmt::format("teaching {} on {} with the robot on {}", file_.path(), cell_->name, device_);
 }
 
@@ -73,9 +51,9 @@ Outcome Pendant::refuse(std::string message, bool bad) {
 
 // The one path that moves the robot: the fault check, the soft limits
 // (each motor's encoder range) before anything moves or is sent, then the
-// run's machine, so the world reacts as in a run. On the simulated machine
-// the run checks the move for collisions (docs/models.md); a move that
-// collides is refused and undone (the run restored to before it), so the
+// rig's machine, so the world reacts as in a run. On the simulated machine
+// the rig checks the move for collisions (docs/models.md); a move that
+// collides is refused and undone (the rig restored to before it), so the
 // robot never stands in a collision (docs/teach.md).
 Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
   if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
@@ -84,15 +62,15 @@ Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
   if (const auto i = vm::firstOutOfRange(motors_, targets))
     return refuse(fmt::format("motor {}: {} is {}: nothing moved", motors_[*i].letter, targets[*i],
                               vm::outsideRange(motors_[*i])));
-  const vm::Micros start = run_->clock();
-  const runtime::CollisionWatch* watch = run_->collisionWatch();
-  std::optional<runtime::RunSnapshot> before;
-  if (watch) before = run_->snapshot();
+  const vm::Micros start = rig_->clock();
+  const runtime::CollisionWatch* watch = rig_->collisionWatch();
+  std::optional<runtime::RigSnapshot> before;
+  if (watch) before = rig_->snapshot();
   const std::size_t seen = watch ? watch->events().size() : 0;
-  const vm::Status status = run_->machine().moveTo(targets);
+  const vm::Status status = rig_->machine().moveTo(targets);
   if (watch && watch->events().size() > seen) {
     const runtime::CollisionEvent hit = watch->events()[seen];
-    run_->restore(*before);
+    rig_->restore(*before);
     return refuse(fmt::format("refused: the move to {} collides {} s into it: {}; nothing moved", valuesText(targets),
                               base::formatSeconds(hit.at - start), watch->describe(hit.contact)));
   }
@@ -103,22 +81,22 @@ Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
   }
   moved_ = true;
   moveStart_ = start;
-  moveEnd_ = run_->clock();
+  moveEnd_ = rig_->clock();
   if (rhino_) {
     // The controller's switches, read after every move: the page shows them as they are now.
-    run_->machine().input(1);
+    rig_->machine().input(1);
     if (!rhino_->failure().empty()) {
       fault_ = rhino_->failure();
       return done({false, fault_});
     }
   }
-  return done({true, fmt::format("moved to {}", valuesText(run_->motors()))});
+  return done({true, fmt::format("moved to {}", valuesText(rig_->motors()))});
 }
 
 Outcome Pendant::jog(std::size_t motor, std::int32_t delta) {
   if (motor >= motors_.size()) return refuse(fmt::format("there is no motor {}", motor + 1), true);
   const vm::MotorSpec& m = motors_[motor];
-  std::vector<std::int32_t> targets(run_->motors().begin(), run_->motors().end());
+  std::vector<std::int32_t> targets(rig_->motors().begin(), rig_->motors().end());
   const std::int64_t wanted = std::int64_t{targets[motor]} + delta;
   const std::int32_t to = static_cast<std::int32_t>(std::clamp<std::int64_t>(wanted, m.min, m.max));
   if (to == targets[motor] && delta != 0)
@@ -131,7 +109,7 @@ Outcome Pendant::jog(std::size_t motor, std::int32_t delta) {
 
 Outcome Pendant::setMotor(std::size_t motor, std::int32_t value) {
   if (motor >= motors_.size()) return refuse(fmt::format("there is no motor {}", motor + 1), true);
-  std::vector<std::int32_t> targets(run_->motors().begin(), run_->motors().end());
+  std::vector<std::int32_t> targets(rig_->motors().begin(), rig_->motors().end());
   targets[motor] = value;
   return moveTo(targets);
 }
@@ -147,7 +125,7 @@ Outcome Pendant::gripper(bool close) {
   if (!g) return refuse(fmt::format("robot {} has no gripper", cell_->robots.front().robot.name));
   Outcome o = setMotor(*g, close ? motors_[*g].max : motors_[*g].min);
   if (o.ok) {
-    const std::optional<std::size_t> held = run_->world() ? run_->world()->held() : std::nullopt;
+    const std::optional<std::size_t> held = rig_->world() ? rig_->world()->held() : std::nullopt;
     message_ = o.message = close ? (held ? fmt::format("gripper closed: holds {}", cell_->objects[*held].shape.name)
                                          : std::string("gripper closed: holds nothing"))
                                  : std::string("gripper open");
@@ -162,13 +140,13 @@ Outcome Pendant::edit(const std::function<std::string(PointsText&)>& change, std
 }
 
 Outcome Pendant::teach(std::string_view name) {
-  const std::vector<std::int32_t> now(run_->motors().begin(), run_->motors().end());
+  const std::vector<std::int32_t> now(rig_->motors().begin(), rig_->motors().end());
   return edit([&](PointsText& p) { return p.add(name, now); },
               fmt::format("taught {} = {} (written to {})", name, valuesText(now), file_.path()));
 }
 
 Outcome Pendant::reteach(std::string_view name) {
-  const std::vector<std::int32_t> now(run_->motors().begin(), run_->motors().end());
+  const std::vector<std::int32_t> now(rig_->motors().begin(), rig_->motors().end());
   return edit([&](PointsText& p) { return p.replace(name, now); },
               fmt::format("re-taught {} = {} (written to {})", name, valuesText(now), file_.path()));
 }
@@ -208,7 +186,7 @@ Outcome Pendant::setOutput(int line, bool on) {
   if (line < 1 || line > 8) return refuse(fmt::format("outputs are 1..8, not {}", line), true);
   if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
   moved_ = false;
-  const vm::Status st = run_->machine().setOutput(line, on);
+  const vm::Status st = rig_->machine().setOutput(line, on);
   if (!st) {
     if (!device_.empty()) fault_ = st.message;
     return done({false, st.message});
@@ -218,14 +196,14 @@ Outcome Pendant::setOutput(int line, bool on) {
 
 Outcome Pendant::resetCell() {
   if (start_) {
-    run_->restore(*start_);
+    rig_->restore(*start_);
     inputs_ = 0;
     moved_ = false;
     return done({true, "cell reset: motors at 0, every object where the cell placed it, lines OFF"});
   }
   if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
-  const vm::Micros start = run_->clock();
-  const vm::Status st = run_->machine().reset();
+  const vm::Micros start = rig_->clock();
+  const vm::Status st = rig_->machine().reset();
   if (!st) {
     fault_ = st.message;
     moved_ = false;
@@ -233,7 +211,7 @@ Outcome Pendant::resetCell() {
   }
   moved_ = true;
   moveStart_ = start;
-  moveEnd_ = run_->clock();
+  moveEnd_ = rig_->clock();
   return done({true, "cell reset: the robot back where teach found it, every object where the cell placed it"});
 }
 
@@ -249,8 +227,8 @@ Outcome Pendant::readPosition() {
   if (!rhino_->reportsPositions())
     return done({true, fmt::format("a Mark III cannot report its encoders: the counts are those tracked since teach "
                                    "started, {}",
-                                   valuesText(run_->motors()))});
-  return done({true, fmt::format("read from the controller: {}", valuesText(run_->motors()))});
+                                   valuesText(rig_->motors()))});
+  return done({true, fmt::format("read from the controller: {}", valuesText(rig_->motors()))});
 }
 
 Outcome Pendant::reload() {
@@ -266,18 +244,18 @@ std::vector<Eigen::Isometry3d> Pendant::placements() const {
 }
 
 // The last move, every kFrameStep (at most 250 frames), then its end: the
-// run knows where each motor was at any time of its last move
-// (Run::motorsAt) and where each object was (Run::objects).
+// rig knows where each motor was at any time of its last move
+// (Rig::motorsAt) and where each object was (Rig::objects).
 std::vector<MotionFrame> Pendant::frames() const {
   std::vector<MotionFrame> out;
-  if (!moved_ || !run_->sim() || moveEnd_ <= moveStart_) return out;
+  if (!moved_ || !rig_->sim() || moveEnd_ <= moveStart_) return out;
   const vm::Micros length = moveEnd_ - moveStart_;
   const vm::Micros step = std::max(kFrameStep, (length + 249) / 250);
   for (vm::Micros t = 0;; t = std::min(t + step, length)) {
     MotionFrame f;
     f.at = t;
-    f.encoders = run_->motorsAt(moveStart_ + t);
-    for (const runtime::ObjectView& o : run_->objects(moveStart_ + t)) f.objects.push_back(o.pose);
+    f.encoders = rig_->motorsAt(moveStart_ + t);
+    for (const runtime::ObjectView& o : rig_->objects(moveStart_ + t)) f.objects.push_back(o.pose);
     out.push_back(std::move(f));
     if (t == length) break;
   }
@@ -291,15 +269,15 @@ PendantState Pendant::state() const {
   s.cell = cell_->name;
   s.device = device_;
   s.motors = motors_;
-  s.encoders.assign(run_->motors().begin(), run_->motors().end());
-  s.tcp = run_->tcp();
+  s.encoders.assign(rig_->motors().begin(), rig_->motors().end());
+  s.tcp = rig_->tcp();
   s.gripper = gripperState(motors_, s.encoders);
-  s.inputs = device_.empty() ? inputs_ : run_->machine().inputs();
-  s.outputs = run_->machine().outputs();
-  for (const runtime::ObjectView& o : run_->objects())
+  s.inputs = device_.empty() ? inputs_ : rig_->machine().inputs();
+  s.outputs = rig_->machine().outputs();
+  for (const runtime::ObjectView& o : rig_->objects())
     s.objects.push_back({std::string(o.name), o.pose, o.held, o.moved});
   for (const PointRow& p : file_.points().points()) s.points.push_back({p.name, p.values, p.line + 1, p.readable});
-  s.clock = run_->clock();
+  s.clock = rig_->clock();
   s.motion = frames();
   s.message = message_;
   s.failed = failed_;

@@ -1,11 +1,11 @@
 // A teach pendant over a workcell: the paper's WORKCELL module with TEACH.
-// The robot stands in a runtime::Run (never stepped: the pendant drives its
-// machine directly), so the world reacts to every move exactly as in a run
-// (objects taken at the end of a closing move, carried, let go), the tool
-// centre point and every object come from the run's one forward-kinematics
-// path, and on the simulated machine "reset cell" is a restore of the
-// run's first snapshot. With a device, the run's machine is the Rhino
-// controller: every jog moves the real robot, after the same soft-limit
+// The robot stands in a runtime::Rig, with no program: the pendant drives
+// its machine directly, so the world reacts to every move exactly as in a
+// run (objects taken at the end of a closing move, carried, let go), the
+// tool centre point and every object come from the rig's one
+// forward-kinematics path, and on the simulated machine "reset cell" is a
+// restore of the rig's first snapshot. With a device, the rig's machine is
+// the Rhino controller: every jog moves the real robot, after the same soft-limit
 // check.
 //
 // Every operation returns an Outcome and leaves its message in the state;
@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "model/workcell/model.h"
-#include "runtime/run/run.h"
+#include "runtime/run/rig.h"
 #include "teach/pendant_state.h"
 #include "teach/program_file.h"
 #include "vm/machine.h"
@@ -93,10 +93,10 @@ class Pendant {
   std::shared_ptr<const workcell::Workcell> cell_;
   std::vector<vm::MotorSpec> motors_;
   ProgramFile file_;
-  std::unique_ptr<runtime::Run> run_;
+  std::unique_ptr<runtime::Rig> rig_;
   std::string device_;
-  rhino::RhinoMachine* rhino_ = nullptr;      // the device, when it is a Rhino (owned by run_)
-  std::optional<runtime::RunSnapshot> start_;  // simulation: what reset cell restores
+  rhino::RhinoMachine* rhino_ = nullptr;      // the device, when it is a Rhino (owned by rig_)
+  std::optional<runtime::RigSnapshot> start_;  // simulation: what reset cell restores
   std::uint8_t inputs_ = 0;                    // simulation: the pendant's input switches
   bool moved_ = false;                         // the last operation was a move
   vm::Micros moveStart_ = 0, moveEnd_ = 0;

@@ -27,7 +27,7 @@ void RunSource::publish(const runtime::Run& run, const std::string& message) {
   const runtime::RunView v = run.view();
   PendantState s;
   s.program = program_;
-  s.cell = run.cell() ? run.cell()->name : "";
+  s.cell = run.rig().cell() ? run.rig().cell()->name : "";
   s.motors = run.image().motors;
   s.encoders = v.motors;
   s.tcp = v.tcp;
@@ -38,8 +38,8 @@ void RunSource::publish(const runtime::Run& run, const std::string& message) {
   s.clock = v.clock;
   s.message = message;
   std::vector<Eigen::Isometry3d> placed;
-  if (run.cell())
-    for (const workcell::PlacedObject& o : run.cell()->objects) placed.push_back(o.F_world_design);
+  if (run.rig().cell())
+    for (const workcell::PlacedObject& o : run.rig().cell()->objects) placed.push_back(o.F_world_design);
   s.revision = revision() + 1;  // publish() is called from one thread only
   nlohmann::ordered_json json = pendantJson(s, placed);
   json["readOnly"] = true;

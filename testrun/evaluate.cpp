@@ -6,12 +6,9 @@
 
 #include "base/ascii.h"
 #include "base/seconds.h"
-#include "launch/run_diagnostics.h"
+#include "vm/stop_reason.h"
 
 namespace rs::testrun {
-
-// One table of a stop's names: the one check and run print.
-std::string_view statusWord(vm::StopReason reason) { return launch::stopReasonName(reason); }
 
 namespace {
 
@@ -27,7 +24,7 @@ class Checker {
 
   // Where the run ended, for messages: "at line 9 (4.175 s)".
   std::string ending() const {
-    return fmt::format("at line {}, {}", image_.lines[outcome_.index], seconds(run_.clock()));
+    return fmt::format("at line {}, {}", image_.lines[outcome_.index], seconds(run_.rig().clock()));
   }
 
   void fail(const Expectation& e, std::string message) {
@@ -38,16 +35,16 @@ class Checker {
     const bool reasonOk = outcome_.reason == e.reason;
     const bool lineOk = e.line == 0 || image_.lines[outcome_.index] == e.line;
     if (reasonOk && lineOk) return;
-    std::string want(statusWord(e.reason));
+    std::string want(vm::stopReasonName(e.reason));
     if (e.line) want += fmt::format(" at line {}", e.line);
-    std::string got(statusWord(outcome_.reason));
+    std::string got(vm::stopReasonName(outcome_.reason));
     got += " " + ending();
     if (!outcome_.message.empty()) got += ": " + outcome_.message;
     fail(e, fmt::format("expected the run to end: {}; it ended: {}", want, got));
   }
 
   void time(const Expectation& e) {
-    const vm::Micros t = run_.clock();
+    const vm::Micros t = run_.rig().clock();
     const bool ok = e.compare == Compare::AtMost    ? t <= e.micros
                     : e.compare == Compare::AtLeast ? t >= e.micros
                                                     : t == e.micros;
@@ -57,7 +54,7 @@ class Checker {
   }
 
   void motors(const Expectation& e) {
-    const auto now = run_.motors();
+    const auto now = run_.rig().motors();
     for (const auto& [letter, value] : e.motors) {
       std::size_t m = 0;
       while (m < image_.motors.size() && image_.motors[m].letter != letter) ++m;
@@ -98,7 +95,7 @@ class Checker {
                             base::formatSeconds(from), seconds(to), onOff(!e.on), seconds(m->at), cause(e.kind, *m)));
       return;
     }
-    const std::uint8_t bits = output ? run_.machine().outputs() : run_.machine().inputs();
+    const std::uint8_t bits = output ? run_.rig().machine().outputs() : run_.rig().machine().inputs();
     const bool v = ((bits >> (e.number - 1)) & 1) != 0;
     if (v != e.on) fail(e, fmt::format("expected {} {} at the end; it is {} {}", what, onOff(e.on), onOff(v), ending()));
   }
@@ -174,14 +171,14 @@ class Checker {
   }
 
   bool needsCell(const Expectation& e) {
-    if (run_.world()) return true;
+    if (run_.rig().world()) return true;
     fail(e, "the run has no workcell: name one with '; test: cell NAME'");
     return false;
   }
 
   void tcp(const Expectation& e) {
     if (!needsCell(e)) return;
-    const std::optional<std::array<double, 3>> at = run_.tcp();
+    const std::optional<std::array<double, 3>> at = run_.rig().tcp();
     if (!at) return fail(e, "the robot has no kinematic chain, so no tool centre point");
     if (distance(*at, e.point) > e.tolerance)
       fail(e, fmt::format("expected the tool centre point at {} within {}; it is at {} {}", point(e.point),
@@ -202,7 +199,7 @@ class Checker {
 
   void object(const Expectation& e) {
     if (!needsCell(e)) return;
-    const std::vector<runtime::ObjectView> all = run_.objects();
+    const std::vector<runtime::ObjectView> all = run_.rig().objects();
     const std::vector<runtime::ObjectView> found = objectsNamed(e, all);
     if (found.empty()) return;
     if (e.kind == ExpectKind::ObjectHeld) {
@@ -227,9 +224,9 @@ class Checker {
   // that line; "no collision": none at all.
   void collision(const Expectation& e) {
     if (!needsCell(e)) return;
-    const runtime::CollisionWatch* watch = run_.collisionWatch();
+    const runtime::CollisionWatch* watch = run_.rig().collisionWatch();
     if (!watch) return fail(e, "the run checked no collisions (--collisions=off)");
-    const auto events = run_.collisions();
+    const auto events = run_.rig().collisions();
     const auto lineOf = [&](const runtime::CollisionEvent& c) {
       return c.instruction < image_.lines.size() ? image_.lines[c.instruction] : 0u;
     };

@@ -23,7 +23,4 @@ namespace rs::testrun {
 std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const std::vector<Expectation>& expectations,
                                        const std::string& file, bool impliedFinished, const RunWatch* watch);
 
-/// "finished", "deadlock", "step limit", ... as expectations spell them.
-std::string_view statusWord(vm::StopReason reason);
-
 }  // namespace rs::testrun

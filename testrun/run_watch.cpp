@@ -39,7 +39,7 @@ bool RunWatch::needed(const std::vector<Expectation>& expectations) {
 RunWatch::RunWatch(runtime::Run& run, const std::vector<Expectation>& expectations)
     : run_(run), expectations_(expectations), answers_(expectations.size()) {
   const vm::Image& image = run.image();
-  const runtime::SimMachine& sim = *run.sim();
+  const runtime::SimMachine& sim = *run.rig().sim();
   boundsOf_.resize(image.motors.size());
   bool anyVariable = false;
   const auto add = [&](std::size_t i) {
@@ -127,7 +127,7 @@ void RunWatch::finish(const vm::RunOutcome& outcome) {
 // First every moment before its start is settled (the clock has passed
 // it), as of the steps before; then its effects count.
 void RunWatch::step(std::uint32_t index, const vm::Interpreter* vm) {
-  const runtime::SimMachine& sim = *run_.sim();
+  const runtime::SimMachine& sim = *run_.rig().sim();
   const vm::Micros start = lastNow_, end = sim.now();
   settleInputs(start);
   if (pending_ && pendingAt_ < start) finishLevel();

@@ -236,7 +236,7 @@ void hintLimit(const vm::RunOutcome& outcome, const TestSettings& settings, bool
                        kGradingMaxSeconds);
   if (hint.empty()) return;
   for (diag::Diagnostic& d : r.problems)
-    if (d.hint.empty() && d.message.find(statusWord(outcome.reason)) != std::string::npos) d.hint = hint;
+    if (d.hint.empty() && d.message.find(vm::stopReasonName(outcome.reason)) != std::string::npos) d.hint = hint;
 }
 
 // The program at `program` checked against `parsed`, whose file names are
@@ -308,7 +308,7 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   const vm::RunOutcome outcome = running.runToEnd();
   if (watch) watch->finish(outcome);
   if (counter) r.coverage = counter->coverage();
-  r.simulated = running.clock();
+  r.simulated = running.rig().clock();
   r.steps = outcome.steps;
   r.expectations = parsed.expectations.size() + (parsed.statesStatus() ? 0 : 1);
   // An expectation of a scenario file points into it.

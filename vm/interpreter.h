@@ -16,6 +16,7 @@
 
 #include "vm/image.h"
 #include "vm/machine.h"
+#include "vm/stop_reason.h"
 
 namespace rs::vm {
 
@@ -25,16 +26,6 @@ struct RunLimits {
   /// Instructions in a row while the clock stands still (a loop that never
   /// moves, waits or delays); 0 = no limit.
   std::uint64_t maxStepsPerInstant = 10'000'000;
-};
-
-enum class StopReason : std::uint8_t {
-  End,           // END, or ran past the last instruction
-  RuntimeError,  // bad value, call stack overflow, machine fault
-  Deadlock,      // WAITFOR that nothing will satisfy
-  StepLimit,
-  TimeLimit,
-  InstantLimit,  // maxStepsPerInstant instructions without the clock moving
-  Paused,        // a pause point was reached: the run can go on
 };
 
 struct RunOutcome {

@@ -14,7 +14,7 @@ DebugView::DebugView(const workcell::Workcell& cell, const std::string& program)
 DebugView::~DebugView() { server_.stop(); }
 
 std::shared_ptr<DebugView> DebugView::start(debug::Session& session, const std::string& program, std::string& error) {
-  const workcell::Workcell* cell = session.run().cell();
+  const workcell::Workcell* cell = session.run().rig().cell();
   if (!cell) {
     error = "--view draws the workcell: give one with --cell CELL (or a '; cell:' line in the program)";
     return nullptr;
@@ -37,7 +37,7 @@ std::shared_ptr<DebugView> DebugView::start(debug::Session& session, const std::
 }
 
 void DebugView::publish(const debug::Session& session, const debug::Stop& stop) {
-  source_.publish(session.run(), stop.message.empty() ? std::string(debug::reasonName(stop.reason)) : stop.message);
+  source_.publish(session.run(), stop.message.empty() ? std::string(vm::debuggerName(stop.reason)) : stop.message);
 }
 
 }  // namespace rs::cli

@@ -238,7 +238,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
       const vm::Image& image = run->image();
       launch::printDiagnostics(err, {launch::stopDiagnostic(image, m.outcome, image.sourceName)}, loaded);
       // A collision stopped the run: draw it as it happened.
-      const auto hits = run->collisions();
+      const auto hits = run->rig().collisions();
       stoppedByCollision = run->finished() && !hits.empty() && hits.back().instruction == m.outcome.index &&
                            m.outcome.reason == vm::StopReason::RuntimeError;
       if (!stoppedByCollision) {
@@ -249,7 +249,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
       m.clock = hits.back().at;
       m.objects.clear();
       m.held.reset();
-      for (const runtime::ObjectView& v : run->objects(hits.back().at)) {
+      for (const runtime::ObjectView& v : run->rig().objects(hits.back().at)) {
         if (v.held) m.held = m.objects.size();
         m.objects.push_back(v.pose);
       }
@@ -315,9 +315,9 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   input.run = &recording;
   input.listing = listing(loaded);
   input.camera = camera;
-  if (const runtime::CollisionWatch* watch = run->collisionWatch()) {
+  if (const runtime::CollisionWatch* watch = run->rig().collisionWatch()) {
     const auto robotBodies = watch->model().robotBodies();
-    for (const runtime::CollisionEvent& e : run->collisions()) {
+    for (const runtime::CollisionEvent& e : run->rig().collisions()) {
       render::CollisionMark mark{e.at, e.at, {}, {}};
       if (const std::optional<std::uint32_t> step = stepOfCollision(recording, e)) {  // its move: an event
         mark.end = recording.steps[*step].end;

@@ -10,7 +10,7 @@
 #include "base/text.h"
 #include "cli/lib/profile_report.h"
 #include "runtime/run/trace.h"
-#include "launch/run_diagnostics.h"
+#include "vm/stop_reason.h"
 #include "runtime/run/empty_close.h"
 
 namespace rs::cli {
@@ -63,9 +63,9 @@ std::uint32_t lineOf(const runtime::Run& run, const runtime::CollisionEvent& e) 
 }
 
 void printCollisions(std::ostream& out, const runtime::Run& run) {
-  const runtime::CollisionWatch* watch = run.collisionWatch();
+  const runtime::CollisionWatch* watch = run.rig().collisionWatch();
   if (!watch) return;
-  const auto events = run.collisions();
+  const auto events = run.rig().collisions();
   if (events.empty()) out << "  collisions      none\n";
   for (std::size_t i = 0; i < events.size() && i < kShownCollisions; ++i)
     out << fmt::format("  {:<15} line {}, {} s: {}\n", i == 0 ? "collisions" : "", lineOf(run, events[i]),
@@ -79,11 +79,11 @@ void printCollisions(std::ostream& out, const runtime::Run& run) {
 void printTextSummary(std::ostream& out, const RunReport& r) {
   if (!r.run || !r.run->outcome()) return;
   const vm::Image& im = r.run->image();
-  const vm::Machine& m = r.run->machine();
+  const vm::Machine& m = r.run->rig().machine();
   const vm::RunOutcome o = *r.run->outcome();
   const std::string where = o.ok() ? "" : fmt::format(" at line {}", im.lines[o.index]);
   out << fmt::format("run of {} on {}: {}{}\n", base::safeText(im.sourceName), base::safeText(im.robotName),
-                     launch::stopReasonName(o.reason), where);
+                     vm::stopReasonName(o.reason), where);
   out << fmt::format("  {}  {} s\n", r.realTime ? "elapsed time   " : "simulated time", base::formatSeconds(m.now()));
   out << fmt::format("  instructions    {} executed\n", o.steps);
   std::string motors;
@@ -91,8 +91,8 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? "  " : "", im.motors[i].letter, pos[i]);
   out << fmt::format("  motors          {}\n", motors);
   if (r.fault) printFault(out, *r.fault);
-  if (const auto tcp = r.run->tcp()) out << fmt::format("  tool centre     {}\n", runtime::pointText(*tcp));
-  const std::vector<runtime::ObjectView> objects = r.run->objects();
+  if (const auto tcp = r.run->rig().tcp()) out << fmt::format("  tool centre     {}\n", runtime::pointText(*tcp));
+  const std::vector<runtime::ObjectView> objects = r.run->rig().objects();
   for (std::size_t o = 0; o < objects.size(); ++o) {
     const runtime::ObjectView& e = objects[o];
     out << fmt::format("  {:<15} {} at {}{}\n", fmt::format("object {}", o + 1), base::safeText(e.name),
@@ -100,8 +100,8 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   }
   if (const auto w = runtime::gripperWarning(*r.run, im.sourceName))  // the warning printed before
     out << fmt::format("  gripper         closed {}, took nothing (the warning at line {})\n",
-                       r.run->world()->closeCount() == 1 ? std::string("once")
-                                                         : fmt::format("{} times", r.run->world()->closeCount()),
+                       r.run->rig().world()->closeCount() == 1 ? std::string("once")
+                                                         : fmt::format("{} times", r.run->rig().world()->closeCount()),
                        w->pos.line);
   printCollisions(out, *r.run);
   out << fmt::format("  outputs         {}  (ON: {})\n", runtime::lampText(m.outputs()), lampList(m.outputs()));
@@ -117,7 +117,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
   j["status"] = r.ok() ? "ok" : "error";
   if (r.run && r.run->outcome()) {
     const vm::Image& im = r.run->image();
-    const vm::Machine& m = r.run->machine();
+    const vm::Machine& m = r.run->rig().machine();
     j["time"] = static_cast<double>(m.now()) / 1e6;
     j["steps"] = r.run->outcome()->steps;
     Json motors = Json::object();
@@ -133,17 +133,17 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
         if ((r.fault->outputsOn >> i) & 1) on.push_back(i + 1);
       j["fault"] = {{"message", r.fault->failure}, {"uncertain_motors", uncertain}, {"outputs_left_on", on}};
     }
-    if (const auto tcp = r.run->tcp()) j["tcp"] = runtime::roundedPoint(*tcp);
-    if (r.run->cell()) {
+    if (const auto tcp = r.run->rig().tcp()) j["tcp"] = runtime::roundedPoint(*tcp);
+    if (r.run->rig().cell()) {
       Json objects = Json::array();
-      for (const runtime::ObjectView& e : r.run->objects())
+      for (const runtime::ObjectView& e : r.run->rig().objects())
         objects.push_back({{"name", e.name}, {"at", runtime::roundedPoint({e.at.x(), e.at.y(), e.at.z()})}, {"held", e.held},
                            {"moved", e.moved}});
       j["objects"] = objects;
     }
-    if (const runtime::CollisionWatch* watch = r.run->collisionWatch()) {
+    if (const runtime::CollisionWatch* watch = r.run->rig().collisionWatch()) {
       Json collisions = Json::array();
-      for (const runtime::CollisionEvent& e : r.run->collisions())
+      for (const runtime::CollisionEvent& e : r.run->rig().collisions())
         collisions.push_back({{"line", lineOf(*r.run, e)},
                               {"time", static_cast<double>(e.at) / 1e6},
                               {"part", watch->model().describe(e.contact.a)},

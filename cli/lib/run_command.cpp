@@ -97,7 +97,7 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   if (json) printJsonSummary(out, report);
   else if (!check || !report.ok()) printTextSummary(out, report);
   else out << fmt::format("{}: ok ({} instructions executed, {} s simulated)\n", base::safeText(image.sourceName),
-                          outcome.steps, base::formatSeconds(run->clock()));
+                          outcome.steps, base::formatSeconds(run->rig().clock()));
   if (!json && report.profile) printTextProfile(out, *report.profile);
   return outcome.ok() && !failedStrict ? kExitOk : kExitRunFailed;
 }

@@ -7,7 +7,7 @@
 // them once it is made.
 #include <fmt/format.h>
 
-#include "launch/run_diagnostics.h"
+#include "vm/stop_reason.h"
 #include "lsp/features/features.h"
 #include "lsp/protocol.h"
 
@@ -32,7 +32,7 @@ Json inlayHints(const ProgramContext& p, const Range& range) {
     const std::uint32_t line = in.pos.line - 1;
     const Position end{line, unitsOf(codeOf(p.doc.line(line)), p.enc)};
     std::string label = stops ? fmt::format("stops {} ({})", formatSeconds(run->clock),
-                                            launch::stopReasonName(run->outcome->reason))
+                                            vm::stopReasonName(run->outcome->reason))
                               : fmt::format("ends {}", formatSeconds(t.end));
     if (t.runs > 1 && !stops) label += fmt::format(" (first of {})", t.runs);
     out.push_back({{"position", toJson(end)}, {"label", label}, {"paddingLeft", true}});

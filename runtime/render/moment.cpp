@@ -10,15 +10,15 @@ Moment momentOf(runtime::Run& run, vm::Micros at) {
   Moment m;
   m.at = at;
   m.outcome = run.runUntilTime(at);
-  m.clock = run.clock();
-  m.reached = m.outcome.ok() || (m.outcome.paused() && run.pauseCause() == runtime::PauseCause::Time) ||
+  m.clock = run.rig().clock();
+  m.reached = m.outcome.ok() || (m.outcome.paused() && run.pauseCause() == vm::StopReason::Time) ||
               (m.outcome.reason == vm::StopReason::TimeLimit && m.clock > at);
-  m.encoders = run.motorsAt(at);
-  for (const runtime::ObjectView& o : run.objects(at)) {
+  m.encoders = run.rig().motorsAt(at);
+  for (const runtime::ObjectView& o : run.rig().objects(at)) {
     if (o.held) m.held = m.objects.size();
     m.objects.push_back(o.pose);
   }
-  if (const runtime::SimMachine* sim = run.sim()) {
+  if (const runtime::SimMachine* sim = run.rig().sim()) {
     m.view = sim->viewRotation();
     m.window = sim->windowShift();
   }

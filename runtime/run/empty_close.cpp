@@ -64,8 +64,8 @@ std::string emptyCloseText(const EmptyClose& e, const workcell::Workcell& cell) 
 }
 
 std::optional<diag::Diagnostic> gripperWarning(const Run& run, const std::string& file) {
-  const World* world = run.world();
-  const auto first = run.firstEmptyClose();
+  const World* world = run.rig().world();
+  const auto first = run.rig().firstEmptyClose();
   if (!world || !first || world->takeCount() > 0) return std::nullopt;
   const vm::Image& image = run.image();
   const std::uint32_t index = first->first;

@@ -19,13 +19,11 @@
 #include <span>
 #include <vector>
 
-#include "model/workcell/model.h"
-#include "runtime/sim/cell_machine.h"
-#include "runtime/sim/collision_watch.h"
-#include "runtime/run/run_log.h"
-#include "runtime/sim/sim_machine.h"
 #include "compiler/stimuli/stimuli.h"
-#include "runtime/sim/world.h"
+#include "model/workcell/model.h"
+#include "runtime/run/rig.h"
+#include "runtime/run/run_log.h"
+#include "runtime/sim/collision_watch.h"
 #include "vm/image.h"
 #include "vm/interpreter.h"
 
@@ -52,22 +50,10 @@ struct RunUntil {
   std::function<bool(const class Run&)> when;  ///< after a step, when this says so
 };
 
-/// Why a run paused (when its outcome is vm::StopReason::Paused).
-enum class PauseCause : std::uint8_t { None, Steps, Time, Instruction, Condition, Requested };
-
 /// A call frame as a debugger shows it: the GOSUB that made it.
 struct CallFrame {
   std::uint32_t gosub = 0;   ///< 0-based instruction of the GOSUB
   std::uint32_t line = 0;    ///< its source line
-};
-
-/// An object of the workcell at the run's moment.
-struct ObjectView {
-  std::string_view name;
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< F_world_design
-  Eigen::Vector3d at = Eigen::Vector3d::Zero();            ///< its AT corner in the world
-  bool held = false;                                       ///< by the gripper of the robot that runs the program
-  bool moved = false;                                      ///< away from where the cell placed it
 };
 
 /// A read-only picture of a run at its current moment.
@@ -90,19 +76,19 @@ struct RunView {
 /// Everything that changes in a run on the simulated machine.
 struct RunSnapshot {
   vm::InterpreterState vm;
-  SimMachine::State machine;
-  std::optional<World::State> world;
+  RigSnapshot rig;
   std::optional<RunLog::Mark> log;
-  /// Every collision found so far (in error mode one at most): restoring
-  /// puts them back, whether the run is behind or ahead of the snapshot.
-  /// What else the swept check keeps is a cache (runtime/sim/sweep_memo.h).
-  std::vector<CollisionEvent> collisions;
   bool operator==(const RunSnapshot&) const = default;
 };
 
+/// The instruction a label of `image` names (as the source spells it, any
+/// case), or nullopt.
+std::optional<std::uint32_t> labelInstruction(const vm::Image& image, std::string_view label);
+
 class Run {
  public:
-  /// On the simulated machine, with the spec's stimuli.
+  /// On a simulated rig made of the spec's cell, the image's motors and
+  /// the spec's stimuli.
   explicit Run(RunSpec spec);
   /// On another machine (a real controller): no snapshots, no log; the
   /// spec's stimuli are not used.
@@ -116,55 +102,6 @@ class Run {
   /// Called after every step, in the order added (after the world has
   /// reacted and the log has the step). Must outlive the run.
   void observe(vm::StepObserver& observer);
-
-  /// Runs until the program ends, fails or hits a limit (or a pause is
-  /// requested). The outcome's reason is Paused when it did not finish.
-  vm::RunOutcome runToEnd() { return runUntil({}); }
-  /// Runs `n` instructions (fewer if the run finishes).
-  vm::RunOutcome step(std::uint64_t n = 1);
-  vm::RunOutcome runUntil(const RunUntil& until);
-  vm::RunOutcome runUntilTime(vm::Micros t);
-  vm::RunOutcome runUntilLine(std::uint32_t line);
-  /// Before the instruction a label names (as the source spells it, any
-  /// case); nullopt, without running, when the program has no such label.
-  std::optional<vm::RunOutcome> runUntilLabel(std::string_view label);
-  /// The instruction a label names, any case.
-  std::optional<std::uint32_t> labelInstruction(std::string_view label) const;
-  /// Why the last call paused.
-  PauseCause pauseCause() const { return cause_; }
-  /// Makes a running call pause soon (from any thread).
-  void requestPause() { pauseRequested_.store(true, std::memory_order_relaxed); }
-
-  bool finished() const { return interpreter_->finished(); }
-  /// How the run finished (empty while it can go on).
-  std::optional<vm::RunOutcome> outcome() const;
-
-  RunView view() const;
-  vm::Micros clock() const { return machine().now(); }
-  std::span<const std::int32_t> motors() const { return machine().positions(); }
-  /// Every motor at time `t`, between the start of the last step and now
-  /// (SimMachine::positionAt: a move in progress at t); now's on another machine.
-  std::vector<std::int32_t> motorsAt(vm::Micros t) const;
-  std::optional<std::array<double, 3>> tcp() const;
-  std::vector<ObjectView> objects(vm::Micros at = INT64_MAX) const;
-  /// The take or let-go of the step just run, or null (what a trace shows
-  /// beside the step; right after a restore, null).
-  const GraspEvent* graspOfLastStep() const { return lastStepGrasped_ ? &world_->lastEvent() : nullptr; }
-  /// A closing move of the step just run that took nothing, or null.
-  const EmptyClose* emptyCloseOfLastStep() const { return lastStepClosedEmpty_ ? &world_->lastEmptyClose() : nullptr; }
-  /// The instruction of the first closing move that took nothing, and
-  /// where it left the tool centre point.
-  std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose() const { return firstEmptyClose_; }
-  /// Every collision found so far (in warn mode, every one; in error mode,
-  /// the one that stopped the run), each with its instruction.
-  std::span<const CollisionEvent> collisions() const;
-  /// The collision checker, or null when the run checks none (no
-  /// workcell, not simulated, or CollisionMode::Off).
-  const CollisionWatch* collisionWatch() const { return watch_ ? &*watch_ : nullptr; }
-
-  /// Input `input` turns `on` now (SimMachine::setInputNow; the log hears
-  /// of it). False on a real machine or for an input outside 1..8.
-  bool setInput(int input, bool on) { return sim_ && sim_->setInputNow(input, on); }
   /// Calls `listener` with (time, inputs after) whenever the simulated
   /// machine's inputs change, at the stimulus's time, which may fall inside
   /// a move or a DELAY (after the log, when kept, has heard of it): what a
@@ -172,52 +109,61 @@ class Run {
   /// machine.
   bool onInputChange(std::function<void(vm::Micros, std::uint8_t)> listener);
 
-  bool canSnapshot() const { return sim_ != nullptr; }
-  /// The whole state (the simulated machine only: check canSnapshot()).
+  /// Runs until `until` says to pause, or the program ends, fails or hits
+  /// a limit (or a pause is requested): the outcome's reason is Paused
+  /// when it did not finish. The shorthands below each fill one condition.
+  vm::RunOutcome runUntil(const RunUntil& until);
+  vm::RunOutcome runToEnd() { return runUntil({}); }
+  /// `n` instructions (fewer if the run finishes).
+  vm::RunOutcome step(std::uint64_t n = 1);
+  vm::RunOutcome runUntilTime(vm::Micros t);
+  vm::RunOutcome runUntilLine(std::uint32_t line);
+  /// Before the instruction a label names (as the source spells it, any
+  /// case); nullopt, without running, when the program has no such label.
+  std::optional<vm::RunOutcome> runUntilLabel(std::string_view label);
+  /// Why the last call paused (vm/stop_reason.h): Step (RunUntil::steps),
+  /// Time, Breakpoint (an instruction or line), Condition or Pause (asked
+  /// for); when it did not pause, its outcome's reason; Paused before any
+  /// call and after a restore.
+  vm::StopReason pauseCause() const { return cause_; }
+  /// Makes a running call pause soon (from any thread).
+  void requestPause() { pauseRequested_.store(true, std::memory_order_relaxed); }
+  /// How the run finished (empty while it can go on).
+  std::optional<vm::RunOutcome> outcome() const;
+  bool finished() const { return interpreter_->finished(); }
+
+  /// The run at its current moment, to look at.
+  RunView view() const;
+  /// What the program runs on: the cell, the machine, the world, the
+  /// collisions, the clock, the motors.
+  const Rig& rig() const { return *rig_; }
+  Rig& rig() { return *rig_; }
+  const vm::Image& image() const { return *spec_.image; }
+  const RunSpec& spec() const { return spec_; }
+  const vm::Interpreter& interpreter() const { return *interpreter_; }
+  /// The log, or null when the spec did not ask for one.
+  const RunLog* log() const { return logger_ ? &logger_->log() : nullptr; }
+
+  /// The whole state (the simulated machine only: check rig().canSnapshot()).
   RunSnapshot snapshot() const;
   /// Back to a snapshot of this run; it then goes on exactly as it did.
   void restore(const RunSnapshot& snapshot);
 
-  const vm::Image& image() const { return *spec_.image; }
-  const workcell::Workcell* cell() const { return spec_.cell.get(); }
-  const vm::RunLimits& limits() const { return spec_.limits; }
-  const stimuli::Stimuli& stimuli() const { return spec_.stimuli; }
-  const vm::Interpreter& interpreter() const { return *interpreter_; }
-  /// The machine the program drives (with the world's reactions, on a cell).
-  const vm::Machine& machine() const { return *front_; }
-  vm::Machine& machine() { return *front_; }
-  /// The simulated machine, or null on a real one.
-  const SimMachine* sim() const { return sim_; }
-  /// The world, or null without a workcell.
-  const World* world() const { return world_ ? &*world_ : nullptr; }
-  /// The log, or null when the spec did not ask for one.
-  const RunLog* log() const { return logger_ ? &logger_->log() : nullptr; }
-
  private:
   class Observers;
-  void build(vm::Machine& motion);
-  PauseCause causeOf(const vm::RunOutcome& outcome, const RunUntil& until, std::uint64_t sliceEnd) const;
+  void build(std::unique_ptr<Rig> rig);
+  std::optional<vm::StopReason> causeOf(const vm::RunOutcome& outcome, const RunUntil& until,
+                                        std::uint64_t sliceEnd) const;
 
   RunSpec spec_;
-  std::unique_ptr<vm::Machine> motion_;   // moves the motors, when the run owns them
-  SimMachine* sim_ = nullptr;             // motion_, when simulated
-  std::optional<World> world_;
-  std::optional<CellMachine> cellMachine_;
-  vm::Machine* front_ = nullptr;          // what the interpreter drives
+  std::unique_ptr<Rig> rig_;
   std::optional<RunLogger> logger_;
   std::unique_ptr<vm::Interpreter> interpreter_;
   std::unique_ptr<Observers> observers_;
   std::vector<std::uint8_t> breakpoints_;  // scratch for RunUntil's instructions and lines
-  std::uint64_t graspEventsSeen_ = 0;  // the world's event count before the step being run
-  bool lastStepGrasped_ = false;
-  std::uint64_t emptyClosesSeen_ = 0;
-  bool lastStepClosedEmpty_ = false;
-  std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose_;
-  std::optional<CollisionWatch> watch_;
-  void noteCollisions(std::uint32_t instruction);
   std::vector<std::function<void(vm::Micros, std::uint8_t)>> inputListeners_;
   std::atomic<bool> pauseRequested_ = false;
-  PauseCause cause_ = PauseCause::None;
+  vm::StopReason cause_ = vm::StopReason::Paused;
 };
 
 }  // namespace rs::runtime

@@ -68,8 +68,8 @@ void TraceWriter::finish() { collisionEvents(); }
 // One line per collision found since the last step traced: its time, the
 // move's line, the parts.
 void TraceWriter::collisionEvents() {
-  const auto events = run_.collisions();
-  const runtime::CollisionWatch* watch = run_.collisionWatch();
+  const auto events = run_.rig().collisions();
+  const runtime::CollisionWatch* watch = run_.rig().collisionWatch();
   for (; collisionsShown_ < events.size() && watch; ++collisionsShown_) {
     const runtime::CollisionEvent& e = events[collisionsShown_];
     const std::uint32_t line = e.instruction < run_.image().lines.size() ? run_.image().lines[e.instruction] : 0;
@@ -97,7 +97,7 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
     for (const vm::MotorSpec& m : im.motors)
       motorsWidth_ += 3 + std::max(fmt::formatted_size("{}", m.min), fmt::formatted_size("{}", m.max));
     out_ << fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {:<8}  {}{}\n", "time", "instr", "line", "instruction",
-                        "motors", motorsWidth_, "outputs", run_.world() ? fmt::format("{:<28}  ", "tool centre point") : "",
+                        "motors", motorsWidth_, "outputs", run_.rig().world() ? fmt::format("{:<28}  ", "tool centre point") : "",
                         "changed");
     headerDone_ = true;
   }
@@ -108,14 +108,14 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
   std::string changed = writesVariable(in)
                             ? fmt::format("{}={}", base::safeText(im.variables[in.b]), vm.variables()[in.b])
                             : std::string();
-  if (const runtime::GraspEvent* g = run_.graspOfLastStep())
-    changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.world()->cell());
+  if (const runtime::GraspEvent* g = run_.rig().graspOfLastStep())
+    changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.rig().world()->cell());
   if (vm::info(in.op).format == vm::Format::Point && !im.points[in.b].origin.empty())
     changed += (changed.empty() ? "" : "  ") + fmt::format("{} from {}", base::safeText(im.points[in.b].name),
                                                            base::safeText(im.points[in.b].origin));
-  if (const runtime::EmptyClose* e = run_.emptyCloseOfLastStep())
-    changed += std::string(changed.empty() ? "" : "  ") + closesOnNothingText(*e, run_.world()->cell());
-  const std::optional<std::array<double, 3>> tool = run_.world() ? run_.world()->tcp(pos) : std::nullopt;
+  if (const runtime::EmptyClose* e = run_.rig().emptyCloseOfLastStep())
+    changed += std::string(changed.empty() ? "" : "  ") + closesOnNothingText(*e, run_.rig().world()->cell());
+  const std::optional<std::array<double, 3>> tool = run_.rig().world() ? run_.rig().world()->tcp(pos) : std::nullopt;
   const std::string tcp = tool ? fmt::format("{:<28}  ", pointText(*tool)) : std::string();
   std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}{}", base::formatSeconds(vm.machine().now()),
                                 index + 1, im.lines[index], vm::instructionText(im, index), motors, motorsWidth_,
@@ -140,27 +140,27 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   nlohmann::ordered_json outputs = nlohmann::ordered_json::array();
   for (int i = 0; i < 8; ++i) outputs.push_back(((vm.machine().outputs() >> i) & 1) != 0);
   j["outputs"] = outputs;
-  if (const runtime::World* world = run_.world())
+  if (const runtime::World* world = run_.rig().world())
     if (const auto tool = world->tcp(pos)) j["tcp"] = roundedPoint(*tool);
   nlohmann::ordered_json changed = nlohmann::ordered_json::object();
   if (writesVariable(in)) changed[im.variables[in.b]] = vm.variables()[in.b];
   j["changed"] = changed;
   if (vm::info(in.op).format == vm::Format::Point && !im.points[in.b].origin.empty())
     j["point_from"] = im.points[in.b].origin;
-  if (const runtime::GraspEvent* g = run_.graspOfLastStep())
-    j["grasp"] = {{"object", g->object + 1}, {"name", run_.world()->cell().objects[g->object].shape.name},
+  if (const runtime::GraspEvent* g = run_.rig().graspOfLastStep())
+    j["grasp"] = {{"object", g->object + 1}, {"name", run_.rig().world()->cell().objects[g->object].shape.name},
                   {"held", g->held}};
-  if (const runtime::EmptyClose* e = run_.emptyCloseOfLastStep()) {
+  if (const runtime::EmptyClose* e = run_.rig().emptyCloseOfLastStep()) {
     nlohmann::ordered_json empty;
     empty["tcp"] = roundedPoint({e->tcp.x(), e->tcp.y(), e->tcp.z()});
     if (e->nearest) {
       empty["nearest"] = *e->nearest + 1;
-      empty["name"] = run_.world()->cell().objects[*e->nearest].shape.name;
+      empty["name"] = run_.rig().world()->cell().objects[*e->nearest].shape.name;
       empty["distance"] = std::round(e->distance * 1e4) / 1e4;
       const Eigen::Vector3d offset = e->centre - e->tcp;
       empty["centre_offset"] = roundedPoint({offset.x(), offset.y(), offset.z()});
     }
-    empty["text"] = closesOnNothingText(*e, run_.world()->cell());
+    empty["text"] = closesOnNothingText(*e, run_.rig().world()->cell());
     j["closes_on_nothing"] = empty;
   }
   out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';

@@ -11,7 +11,7 @@ namespace {
 
 std::vector<std::pair<rs::vm::Micros, std::uint32_t>> found(const rs::runtime::Run& run) {
   std::vector<std::pair<rs::vm::Micros, std::uint32_t>> out;
-  for (const rs::runtime::CollisionEvent& e : run.collisions()) out.emplace_back(e.at, e.instruction);
+  for (const rs::runtime::CollisionEvent& e : run.rig().collisions()) out.emplace_back(e.at, e.instruction);
   return out;
 }
 
@@ -31,7 +31,7 @@ TEST_CASE("a restored run finds the same collisions again", "[collision][runtime
   rs::runtime::Run run(spec);
   run.step(1);
   const rs::runtime::RunSnapshot after1 = run.snapshot();
-  CHECK(after1.collisions.size() == 1);
+  CHECK(after1.rig.collisions.size() == 1);
   REQUIRE(run.runToEnd().ok());
   const auto all = found(run);
   REQUIRE(all.size() == 3);
@@ -56,6 +56,6 @@ TEST_CASE("a restored run finds the same collisions again", "[collision][runtime
   spec.collisions = rs::runtime::CollisionMode::Off;
   rs::runtime::Run unchecked(spec);
   REQUIRE(unchecked.runToEnd().ok());
-  CHECK(unchecked.collisionWatch() == nullptr);
-  CHECK(unchecked.collisions().empty());
+  CHECK(unchecked.rig().collisionWatch() == nullptr);
+  CHECK(unchecked.rig().collisions().empty());
 }

@@ -78,12 +78,12 @@ Sweep sweepThrough(const rs::workcell::Workcell& base, const rs::vm::Image& imag
   spec.collisions = rs::runtime::CollisionMode::Warn;
   rs::runtime::Run run(std::move(spec));
   REQUIRE(run.runToEnd().ok());
-  REQUIRE(run.collisionWatch());
-  for (const rs::runtime::CollisionEvent& e : run.collisions()) {
+  REQUIRE(run.rig().collisionWatch());
+  for (const rs::runtime::CollisionEvent& e : run.rig().collisions()) {
     CHECK(e.contact.a == rs::workcell::BodyRef{rs::workcell::BodyKind::Link, 1});
     CHECK(e.contact.b == rs::workcell::BodyRef{rs::workcell::BodyKind::Object, 0});
   }
-  return {run.collisions().size(), run.collisionWatch()->checks()};
+  return {run.rig().collisions().size(), run.rig().collisionWatch()->checks()};
 }
 
 }  // namespace

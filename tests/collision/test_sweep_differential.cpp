@@ -282,15 +282,15 @@ Verdict productVerdict(const rs::workcell::Workcell& cell, const rs::vm::Image& 
   spec.limits.maxTime = rs::vm::Micros{1} << 50;
   rs::runtime::Run run(std::move(spec));
   const rs::vm::RunOutcome outcome = run.runToEnd();
-  checks += run.collisionWatch() ? run.collisionWatch()->checks() : 0;
+  checks += run.rig().collisionWatch() ? run.rig().collisionWatch()->checks() : 0;
   Verdict v;
-  if (run.collisions().empty()) {
+  if (run.rig().collisions().empty()) {
     INFO(outcome.message);
     REQUIRE(outcome.ok());
     return v;
   }
   REQUIRE_FALSE(outcome.ok());
-  const rs::runtime::CollisionEvent& e = run.collisions().front();
+  const rs::runtime::CollisionEvent& e = run.rig().collisions().front();
   CHECK(outcome.index == e.instruction);
   v.move = e.instruction;
   v.at = e.at;

@@ -65,13 +65,13 @@ TEST_CASE("a pick-and-place loop is swept once: later loops come from memory", "
   // the second loop's world is the first loop's with the block where the
   // first left it; from the third on, each loop's world is the one before.
   REQUIRE(run.step(2 * 15 + 1).reason == rs::vm::StopReason::Paused);  // SET, then 15 instructions a loop
-  const rs::runtime::CollisionWatch* watch = run.collisionWatch();
+  const rs::runtime::CollisionWatch* watch = run.rig().collisionWatch();
   REQUIRE(watch);
   const std::uint64_t sweptInTwo = watch->moves() - watch->remembered();
   CHECK(watch->moves() == 2 * 13);
   const rs::runtime::RunSnapshot afterTwo = run.snapshot();
   REQUIRE(run.runToEnd().ok());
-  CHECK(run.collisions().empty());
+  CHECK(run.rig().collisions().empty());
   CHECK(watch->moves() == kLoops * 13);
   // Not one move after the second loop swept afresh (before the fix every
   // one was: moves - remembered grew by 13 a loop).

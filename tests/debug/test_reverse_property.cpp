@@ -42,7 +42,7 @@ void checkProgram(const rs::runtime::RunSpec& spec, std::mt19937_64& rng) {
   Run whole(spec);
   whole.runToEnd();
   const std::uint64_t total = whole.interpreter().steps();
-  const rs::vm::Micros end = whole.clock();
+  const rs::vm::Micros end = whole.rig().clock();
   Session session(spec, {1 + rng() % 200, rs::debug::kDefaultSnapshotBudget});
   for (int trial = 0; trial < 8; ++trial) {
     const std::uint64_t at = rng() % (total + 1);
@@ -98,7 +98,7 @@ TEST_CASE("set input is replayed: back before the change and forward again gives
     session.step(rng() % (total / 2 + 1));
     const int input = static_cast<int>(1 + rng() % 8);
     REQUIRE_FALSE(session.setInput(input, true));
-    REQUIRE((session.run().machine().inputs() & (1u << (input - 1))) != 0);
+    REQUIRE((session.run().rig().machine().inputs() & (1u << (input - 1))) != 0);
     session.step(1 + rng() % (total / 2 + 1));
     if (session.run().finished()) session.reverseStep(1);
     session.reverseStep(rng() % (session.run().interpreter().steps() + 1));

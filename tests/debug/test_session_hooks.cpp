@@ -28,7 +28,7 @@ TEST_CASE("onStop hears every stop with the view of the stopped moment", "[debug
   session.gotoTime(0);
   session.resume();
   REQUIRE(heard.size() == 4);
-  CHECK(heard[0] == std::pair{StopReason::Breakpoint, first.reason == StopReason::Breakpoint ? session.run().clock() : 0});
+  CHECK(heard[0] == std::pair{StopReason::Breakpoint, first.reason == StopReason::Breakpoint ? session.run().rig().clock() : 0});
   CHECK(heard[1].first == StopReason::Step);
   CHECK(heard[1].second <= heard[0].second);
   CHECK(heard[2].first == StopReason::Time);

@@ -53,7 +53,7 @@ Jiggled jiggled() {
       rendertest::runOf(rendertest::compileText(kJiggle, cell), &cell, {}, true, rs::runtime::CollisionMode::Warn);
   REQUIRE(run->runToEnd().ok());
   Jiggled j{*run->log(), {}};
-  for (const rs::runtime::CollisionEvent& e : run->collisions())
+  for (const rs::runtime::CollisionEvent& e : run->rig().collisions())
     for (std::uint32_t s = 0; s < j.log.steps.size(); ++s)
       if (j.log.steps[s].index == e.instruction && j.log.steps[s].start <= e.at && e.at <= j.log.steps[s].end)
         j.collisionSteps.push_back(s);

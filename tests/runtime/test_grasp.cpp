@@ -34,7 +34,7 @@ class Collect final : public rs::vm::StepObserver {
     StepView v;
     const auto pos = vm.machine().positions();
     v.motors.assign(pos.begin(), pos.end());
-    const rs::runtime::World& world = *run_.world();
+    const rs::runtime::World& world = *run_.rig().world();
     if (world.eventCount() != seen_) v.change = world.lastEvent();
     seen_ = world.eventCount();
     for (std::size_t o = 0; o < world.cell().objects.size(); ++o)
@@ -53,7 +53,7 @@ std::vector<StepView> run(const rs::workcell::Workcell& cell, const std::string&
   // Grasping alone: these moves hold the gantry's gripper at a block's
   // middle, where its fingers graze the pallet as they close (a collision).
   const auto r = rendertest::runOf(rendertest::compileText(program, cell), &cell, {}, false, rs::runtime::CollisionMode::Off);
-  REQUIRE(r->world());
+  REQUIRE(r->rig().world());
   Collect collect(*r);
   r->observe(collect);
   const rs::vm::RunOutcome outcome = r->runToEnd();

@@ -25,7 +25,7 @@ namespace {
 //  8    RETURN (twice)            0
 // Total 5 s: moving 1 + 0.5 + 0.5 + 0.5 = 2.5 s (50 %), waiting 2 s (40 %),
 // gripper 0.5 s (10 %); five moves.
-const char* kProgram =
+const char* kProfiledProgram =
     "        MOVETO 400 0 0 0 0\n"
     "        DELAY 2\n"
     "        GOSUB grab\n"
@@ -39,7 +39,7 @@ const char* kProgram =
 
 TEST_CASE("run --profile --format=json gives the hand-computed times", "[profile]") {
   rs::testing::TempDir dir;
-  const std::string program = dir.write("p.rsp", kProgram);
+  const std::string program = dir.write("p.rsp", kProfiledProgram);
   const rs::testing::CliResult r = rs::testing::runCli({"run", program, "--profile", "--format=json"});
   INFO(r.err);
   REQUIRE(r.code == 0);
@@ -101,7 +101,7 @@ TEST_CASE("run --profile --format=json gives the hand-computed times", "[profile
 
 TEST_CASE("run --profile prints the same figures as text", "[profile]") {
   rs::testing::TempDir dir;
-  const std::string program = dir.write("p.rsp", kProgram);
+  const std::string program = dir.write("p.rsp", kProfiledProgram);
   const rs::testing::CliResult r = rs::testing::runCli({"run", program, "--profile"});
   REQUIRE(r.code == 0);
   CHECK_THAT(r.out, Catch::Contains("profile: 5.000 s simulated, 5 moves"));
@@ -116,7 +116,7 @@ TEST_CASE("run --profile prints the same figures as text", "[profile]") {
 
 TEST_CASE("run --profile refuses a real controller", "[profile]") {
   rs::testing::TempDir dir;
-  const std::string program = dir.write("p.rsp", kProgram);
+  const std::string program = dir.write("p.rsp", kProfiledProgram);
   const rs::testing::CliResult r = rs::testing::runCli({"run", program, "--profile", "--device", "/dev/null"});
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Contains("--profile: error:"));

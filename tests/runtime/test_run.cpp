@@ -17,7 +17,6 @@
 
 namespace {
 
-using rs::runtime::PauseCause;
 using rs::runtime::Run;
 using rs::vm::Micros;
 using rs::vm::StopReason;
@@ -95,7 +94,7 @@ TEST_CASE("run to a moment, snapshot, run on, restore, run on again: the same tr
       INFO("snapshot after step " << at);
       Traced t(c);
       t.run->step(at);
-      CHECK(t.run->pauseCause() == PauseCause::Steps);
+      CHECK(t.run->pauseCause() == StopReason::Step);
       const std::string before = t.take();
       const rs::runtime::RunSnapshot snap = t.run->snapshot();
       const rs::vm::RunOutcome first = t.run->runToEnd();
@@ -163,12 +162,12 @@ TEST_CASE("step, run until a line, a label, a time or a condition, and look", "[
   CHECK(v.variables[0].first == "N");
 
   CHECK(run.step().paused());
-  CHECK(run.pauseCause() == PauseCause::Steps);
+  CHECK(run.pauseCause() == StopReason::Step);
   CHECK(run.view().line == 2);
 
   const rs::vm::RunOutcome atSub = run.runUntilLine(6);
   CHECK(atSub.paused());
-  CHECK(run.pauseCause() == PauseCause::Instruction);
+  CHECK(run.pauseCause() == StopReason::Breakpoint);
   v = run.view();
   CHECK(v.line == 6);
   REQUIRE(v.callStack.size() == 1);
@@ -182,18 +181,18 @@ TEST_CASE("step, run until a line, a label, a time or a condition, and look", "[
   CHECK(run.view().variables[0].second == 2);
   CHECK(run.view().clock == kRunSecond / 4);
   CHECK_FALSE(run.runUntilLabel("nowhere").has_value());
-  CHECK(run.labelInstruction("loop") == std::optional<std::uint32_t>(1));
+  CHECK(rs::runtime::labelInstruction(run.image(), "loop") == std::optional<std::uint32_t>(1));
 
   // The third MOVE ends at 0.75 s: the first step past 0.6 s.
   CHECK(run.runUntilTime(600'000).paused());
-  CHECK(run.pauseCause() == PauseCause::Time);
-  CHECK(run.clock() == 3 * kRunSecond / 4);
+  CHECK(run.pauseCause() == StopReason::Time);
+  CHECK(run.rig().clock() == 3 * kRunSecond / 4);
   CHECK(run.view().line == 7);
 
   rs::runtime::RunUntil until;
   until.when = [](const Run& r) { return r.interpreter().variables()[0] == 5; };
   CHECK(run.runUntil(until).paused());
-  CHECK(run.pauseCause() == PauseCause::Condition);
+  CHECK(run.pauseCause() == StopReason::Condition);
   CHECK(run.view().line == 3);  // right after the ADD that made N 5
 
   const rs::vm::RunOutcome end = run.runToEnd();
@@ -231,7 +230,7 @@ TEST_CASE("a run pauses when asked from another thread, and goes on", "[run]") {
   const rs::vm::RunOutcome o = run.runToEnd();
   asker.join();
   CHECK(o.paused());
-  CHECK(run.pauseCause() == PauseCause::Requested);
+  CHECK(run.pauseCause() == StopReason::Pause);
   const std::uint64_t steps = run.view().steps;
   CHECK(steps > 0);
   CHECK(run.step(10).paused());

@@ -90,7 +90,7 @@ Run runImage(rs::vm::Image image, Stimuli stimuli = {}, RunLimits limits = {}) {
   spec.stimuli = std::move(stimuli);
   spec.limits = limits;
   r.run = std::make_unique<rs::runtime::Run>(std::move(spec));
-  r.machine = r.run->sim();
+  r.machine = r.run->rig().sim();
   r.run->observe(r.trace);
   r.outcome = r.run->runToEnd();
   const auto vars = r.run->interpreter().variables();

@@ -1,0 +1,112 @@
+#include "runtime/run/rig.h"
+
+namespace rs::runtime {
+
+Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli,
+         CollisionMode collisions)
+    : cell_(std::move(cell)) {
+  auto sim = std::make_unique<SimMachine>(std::move(motors), std::move(stimuli));
+  sim_ = sim.get();
+  motion_ = std::move(sim);
+  build(*motion_, collisions);
+}
+
+Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::unique_ptr<vm::Machine> machine)
+    : cell_(std::move(cell)), motion_(std::move(machine)) {
+  build(*motion_, CollisionMode::Off);
+}
+
+Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, vm::Machine& machine) : cell_(std::move(cell)) {
+  build(machine, CollisionMode::Off);
+}
+
+Rig::~Rig() = default;
+
+// The world reacts inside the machine call: the cell machine stands in
+// front of the motion machine, so by the time anyone hears of a move, the
+// hold has changed. Only the simulated machine's moves can be swept.
+void Rig::build(vm::Machine& motion, CollisionMode collisions) {
+  front_ = &motion;
+  if (!cell_) return;
+  world_.emplace(*cell_);
+  cellMachine_.emplace(motion, *world_);
+  front_ = &*cellMachine_;
+  if (sim_ && collisions != CollisionMode::Off) {
+    watch_.emplace(*cell_);
+    cellMachine_->watchCollisions(*sim_, *watch_, collisions);
+  }
+}
+
+void Rig::afterStep(std::uint32_t instruction) {
+  if (world_) {
+    lastStepGrasped_ = world_->eventCount() != graspEventsSeen_;
+    graspEventsSeen_ = world_->eventCount();
+    lastStepClosedEmpty_ = world_->emptyCloseCount() != emptyClosesSeen_;
+    emptyClosesSeen_ = world_->emptyCloseCount();
+    if (lastStepClosedEmpty_ && !firstEmptyClose_) firstEmptyClose_.emplace(instruction, world_->lastEmptyClose());
+  }
+  noteCollisions(instruction);
+}
+
+// The watch does not know which instruction moved: the run tells it after
+// each step (and after the step that failed).
+void Rig::noteCollisions(std::uint32_t instruction) {
+  if (!watch_) return;
+  for (auto it = watch_->mutableEvents().rbegin(); it != watch_->mutableEvents().rend() && it->instruction == UINT32_MAX; ++it)
+    it->instruction = instruction;
+}
+
+std::span<const CollisionEvent> Rig::collisions() const {
+  return watch_ ? watch_->events() : std::span<const CollisionEvent>();
+}
+
+std::vector<std::int32_t> Rig::motorsAt(vm::Micros t) const {
+  const auto now = motors();
+  std::vector<std::int32_t> at(now.begin(), now.end());
+  if (sim_ && t < sim_->now())
+    for (std::size_t i = 0; i < at.size(); ++i) at[i] = sim_->positionAt(i, t);
+  return at;
+}
+
+std::optional<std::array<double, 3>> Rig::tcp() const {
+  if (!world_) return std::nullopt;
+  return world_->tcp(motors());
+}
+
+std::vector<ObjectView> Rig::objects(vm::Micros at) const {
+  std::vector<ObjectView> out;
+  if (!world_) return out;
+  const std::vector<std::int32_t> encoders = motorsAt(at);
+  for (std::size_t o = 0; o < cell_->objects.size(); ++o) {
+    const workcell::PlacedObject& placed = cell_->objects[o];
+    ObjectView v;
+    v.name = placed.shape.name;
+    v.pose = world_->objectPose(o, encoders, at);
+    v.at = v.pose * workcell::atCorner(placed.shape);
+    v.held = world_->held() == o && at >= world_->heldSince();
+    v.moved = (v.pose.matrix() - placed.F_world_design.matrix()).cwiseAbs().maxCoeff() > 1e-9;
+    out.push_back(v);
+  }
+  return out;
+}
+
+RigSnapshot Rig::snapshot() const {
+  RigSnapshot s;
+  if (sim_) s.machine = sim_->state();
+  if (world_) s.world = world_->state();
+  if (watch_) s.collisions.assign(watch_->events().begin(), watch_->events().end());
+  return s;
+}
+
+void Rig::restore(const RigSnapshot& s) {
+  if (sim_) sim_->restore(s.machine);
+  if (world_ && s.world) world_->restore(*s.world);
+  graspEventsSeen_ = world_ ? world_->eventCount() : 0;
+  lastStepGrasped_ = false;
+  emptyClosesSeen_ = world_ ? world_->emptyCloseCount() : 0;
+  lastStepClosedEmpty_ = false;
+  if (emptyClosesSeen_ == 0) firstEmptyClose_.reset();
+  if (watch_) watch_->mutableEvents() = s.collisions;
+}
+
+}  // namespace rs::runtime

@@ -1,0 +1,132 @@
+// The rig: what a program runs on, and what a teach pendant drives with no
+// program at all. The workcell (or none), the machine that moves the
+// motors (simulated, or a real controller), the world that reacts to it
+// (what the gripper holds, where each object is), the collision watch,
+// and on the simulated machine a snapshot of all of these.
+//
+//   Rig rig(cell, motors, stimuli, CollisionMode::Error);
+//   rig.machine().moveTo(targets);
+//   std::optional<std::array<double, 3>> at = rig.tcp();
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "compiler/stimuli/stimuli.h"
+#include "model/workcell/model.h"
+#include "runtime/sim/cell_machine.h"
+#include "runtime/sim/collision_watch.h"
+#include "runtime/sim/sim_machine.h"
+#include "runtime/sim/world.h"
+#include "vm/machine.h"
+
+namespace rs::runtime {
+
+/// An object of the workcell at the rig's moment.
+struct ObjectView {
+  std::string_view name;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< F_world_design
+  Eigen::Vector3d at = Eigen::Vector3d::Zero();            ///< its AT corner in the world
+  bool held = false;                                       ///< by the gripper of the robot that runs the program
+  bool moved = false;                                      ///< away from where the cell placed it
+};
+
+/// Everything that changes in a rig on the simulated machine.
+struct RigSnapshot {
+  SimMachine::State machine;
+  std::optional<World::State> world;
+  /// Every collision found so far (in error mode one at most): restoring
+  /// puts them back, whether the rig is behind or ahead of the snapshot.
+  /// What else the swept check keeps is a cache (runtime/sim/sweep_memo.h).
+  std::vector<CollisionEvent> collisions;
+  bool operator==(const RigSnapshot&) const = default;
+};
+
+class Rig {
+ public:
+  /// On the simulated machine, with these motors and input stimuli. On a
+  /// workcell (may be null; its first robot is driven) the world reacts,
+  /// and collisions are checked unless `collisions` is Off.
+  Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli,
+      CollisionMode collisions);
+  /// On another machine (a real controller): no snapshots, no collision check.
+  Rig(std::shared_ptr<const workcell::Workcell> cell, std::unique_ptr<vm::Machine> machine);
+  /// The same on a machine the caller keeps (it must outlive the rig).
+  Rig(std::shared_ptr<const workcell::Workcell> cell, vm::Machine& machine);
+  Rig(const Rig&) = delete;
+  Rig& operator=(const Rig&) = delete;
+  ~Rig();
+
+  const workcell::Workcell* cell() const { return cell_.get(); }
+  /// The machine to drive (with the world's reactions, on a cell).
+  const vm::Machine& machine() const { return *front_; }
+  vm::Machine& machine() { return *front_; }
+  /// The simulated machine, or null on a real one.
+  const SimMachine* sim() const { return sim_; }
+  SimMachine* sim() { return sim_; }
+  /// The world, or null without a workcell.
+  const World* world() const { return world_ ? &*world_ : nullptr; }
+
+  vm::Micros clock() const { return machine().now(); }
+  std::span<const std::int32_t> motors() const { return machine().positions(); }
+  /// Every motor at time `t`, between the start of the last move and now
+  /// (SimMachine::positionAt: a move in progress at t); now's on another machine.
+  std::vector<std::int32_t> motorsAt(vm::Micros t) const;
+  std::optional<std::array<double, 3>> tcp() const;
+  std::vector<ObjectView> objects(vm::Micros at = INT64_MAX) const;
+  /// Input `input` turns `on` now (SimMachine::setInputNow). False on a
+  /// real machine or for an input outside 1..8.
+  bool setInput(int input, bool on) { return sim_ && sim_->setInputNow(input, on); }
+
+  /// Every collision found so far (in warn mode, every one; in error mode,
+  /// the one that stopped the run), each with its instruction.
+  std::span<const CollisionEvent> collisions() const;
+  /// The collision checker, or null when the rig checks none (no
+  /// workcell, not simulated, or CollisionMode::Off).
+  const CollisionWatch* collisionWatch() const { return watch_ ? &*watch_ : nullptr; }
+
+  /// A program's step at instruction `instruction` is done: the rig notes
+  /// what it took or let go, a close on nothing, and which instruction
+  /// made the collisions just found (the watch does not know).
+  void afterStep(std::uint32_t instruction);
+  /// Collisions found by a step that failed belong to its instruction.
+  void noteCollisions(std::uint32_t instruction);
+  /// The take or let-go of the step just run, or null (what a trace shows
+  /// beside the step; right after a restore, null).
+  const GraspEvent* graspOfLastStep() const { return lastStepGrasped_ ? &world_->lastEvent() : nullptr; }
+  /// A closing move of the step just run that took nothing, or null.
+  const EmptyClose* emptyCloseOfLastStep() const { return lastStepClosedEmpty_ ? &world_->lastEmptyClose() : nullptr; }
+  /// The instruction of the first closing move that took nothing, and
+  /// where it left the tool centre point.
+  std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose() const { return firstEmptyClose_; }
+
+  bool canSnapshot() const { return sim_ != nullptr; }
+  /// The whole state (the simulated machine only: check canSnapshot()).
+  RigSnapshot snapshot() const;
+  /// Back to a snapshot of this rig.
+  void restore(const RigSnapshot& snapshot);
+
+ private:
+  void build(vm::Machine& motion, CollisionMode collisions);
+
+  std::shared_ptr<const workcell::Workcell> cell_;
+  std::unique_ptr<vm::Machine> motion_;  // moves the motors, when the rig owns them
+  SimMachine* sim_ = nullptr;            // motion_, when simulated
+  std::optional<World> world_;
+  std::optional<CellMachine> cellMachine_;
+  std::optional<CollisionWatch> watch_;
+  vm::Machine* front_ = nullptr;  // what is driven
+  std::uint64_t graspEventsSeen_ = 0;  // the world's event count before the step being run
+  bool lastStepGrasped_ = false;
+  std::uint64_t emptyClosesSeen_ = 0;
+  bool lastStepClosedEmpty_ = false;
+  std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose_;
+};
+
+}  // namespace rs::runtime
