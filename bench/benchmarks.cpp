@@ -211,7 +211,7 @@ json benchSnapshot(const Options& options) {
     while (!run->finished()) {
       last = run->snapshot();
       ++taken;
-      run->step(kSnapshotEvery);
+      run->runUntil({.moreSteps = kSnapshotEvery});
     }
     const Sample sample = clock.stop();
     if (!run->outcome()->ok() || last.vm.steps == 0) throw std::runtime_error("the snapshot run failed");
@@ -221,7 +221,7 @@ json benchSnapshot(const Options& options) {
   // Restoring: back to the middle of the run, 10,000 times.
   const Measurement restores = [&] {
     auto run = snapshotRun(image, cell);
-    run->step(steps / 2);
+    run->runUntil({.moreSteps = steps / 2});
     const runtime::RunSnapshot middle = run->snapshot();
     run->runToEnd();
     const Stopwatch clock;

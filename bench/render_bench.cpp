@@ -194,12 +194,12 @@ int main(int argc, char** argv) {
   const Stats png = time(reps, [&] {
     poser.setEncoders(0, pose);
     const rs::render::Picture p = rs::render::makePicture(poser, camera, fit, {"bench-cell", 1.0});
-    pngBytes = rs::render::encodePicture(p, rs::render::ImageFormat::Png).bytes.size();
+    pngBytes = rs::render::encodePicture(p, rs::render::ImageFormat::Png)->size();
   });
   const Stats svg = time(reps, [&] {
     poser.setEncoders(0, pose);
     const rs::render::Picture p = rs::render::makePicture(poser, camera, fit, {"bench-cell", 1.0});
-    svgBytes = rs::render::encodePicture(p, rs::render::ImageFormat::Svg).bytes.size();
+    svgBytes = rs::render::encodePicture(p, rs::render::ImageFormat::Svg)->size();
   });
   // The PNG encoder alone, on an image of the same size.
   std::vector<std::uint8_t> gray(1024 * 3, 0x10);

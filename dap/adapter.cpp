@@ -223,7 +223,7 @@ Adapter::Reply Adapter::setBreakpoints(const Json& args) {
   }
   for (int id : lineBreakpoints_) session_->remove(id);
   lineBreakpoints_.clear();
-  const vm::Image& image = session_->run().image();
+  const vm::Image& image = *session_->run().spec().image;
   for (const Json& b : args.value("breakpoints", Json::array())) {
     const std::int64_t line = b.at("line").get<std::int64_t>();
     Json result = {{"verified", false}, {"line", line}};

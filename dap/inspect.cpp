@@ -34,12 +34,12 @@ std::string Adapter::frameName(std::uint32_t line, std::uint32_t instruction) co
     text = debug::trimmed(text.substr(0, text.find(';')));
     if (!text.empty()) return base::safeText(text);
   }
-  return base::safeText(vm::instructionText(session_->run().image(), instruction));
+  return base::safeText(vm::instructionText(*session_->run().spec().image, instruction));
 }
 
 Adapter::Reply Adapter::stackTrace(const Json& args) {
   const runtime::RunView v = session_->view();
-  const vm::Image& image = session_->run().image();
+  const vm::Image& image = *session_->run().spec().image;
   Json source = {{"name", std::filesystem::path(sourcePath_).filename().string()}, {"path", sourcePath_}};
   Json frames = Json::array();
   frames.push_back({{"id", 0},
@@ -75,7 +75,7 @@ Adapter::Reply Adapter::scopes(const Json& args) {
 Adapter::Reply Adapter::variables(const Json& args) {
   const std::int64_t ref = args.at("variablesReference").get<std::int64_t>();
   const runtime::RunView v = session_->view();
-  const vm::Image& image = session_->run().image();
+  const vm::Image& image = *session_->run().spec().image;
   Json out = Json::array();
   switch (ref) {
     case kVariables:
@@ -109,7 +109,7 @@ Adapter::Reply Adapter::variables(const Json& args) {
 
 Adapter::Reply Adapter::evaluate(const Json& args) {
   const std::string text = args.at("expression").get<std::string>();
-  auto e = debug::parseExpression(session_->run().image(), debug::ioWords(text));
+  auto e = debug::parseExpression(*session_->run().spec().image, debug::ioWords(text));
   if (!e) return Error{e.failure().message};
   const debug::Expression& x = *e;
   const std::int64_t value = debug::valueOf(session_->run(), x);

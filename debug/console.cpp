@@ -102,9 +102,7 @@ std::string shown(std::string_view text) {
 }
 
 diag::Result<vm::Micros> seconds(std::string_view text) {
-  const stimuli::text::SecondsParse s = stimuli::text::parseSeconds(text);
-  if (!s.error.empty()) return diag::refusal(s.error);
-  return s.micros;
+  return stimuli::text::parseSeconds(text);
 }
 
 }  // namespace
@@ -123,7 +121,7 @@ void Console::showStop(const Stop& stop) {
                       base::formatSeconds(v.clock), v.finished ? " (the run is over)" : "");
   const std::string text = sourceLine(v.line);
   if (!text.empty()) out_ << fmt::format("{:>5} | {}\n", v.line, text);
-  else out_ << fmt::format("{:>5} | {}\n", v.line, vm::instructionText(session_.run().image(), v.instruction));
+  else out_ << fmt::format("{:>5} | {}\n", v.line, vm::instructionText(*session_.run().spec().image, v.instruction));
 }
 
 bool Console::execute(std::string_view line) {
@@ -229,7 +227,7 @@ void Console::breakCommand(std::string_view args) {
     error("break needs a place: LINE, LABEL, @N, at TIME or when COND (help break)");
     return;
   }
-  const vm::Image& image = session_.run().image();
+  const vm::Image& image = *session_.run().spec().image;
   std::optional<Condition> condition;
   if (ifAt < w.size()) {
     const std::size_t end = hitsAt > ifAt ? hitsAt : w.size();
@@ -308,7 +306,7 @@ void Console::infoCommand(std::string_view args) {
 
 void Console::printCommand(std::string_view args) {
   const runtime::RunView v = session_.view();
-  const vm::Image& image = session_.run().image();
+  const vm::Image& image = *session_.run().spec().image;
   if (args.empty() || args == "variables") {
     if (v.variables.empty()) out_ << "the program has no variables\n";
     for (const auto& [name, value] : v.variables) out_ << fmt::format("{} = {}\n", base::safeText(name), value);
@@ -343,7 +341,7 @@ void Console::printCommand(std::string_view args) {
 
 void Console::watchCommand(std::string_view args) {
   if (args.empty()) return error("watch needs something to watch: VAR, output N, input N or a motor letter");
-  auto e = parseExpression(session_.run().image(), ioWords(args));
+  auto e = parseExpression(*session_.run().spec().image, ioWords(args));
   if (!e) return error(e.failure().message);
   const Expression& x = *e;
   const int id = session_.watch(x);
@@ -380,7 +378,7 @@ void Console::listCommand(std::string_view args) {
 }
 
 void Console::disasmCommand(std::string_view args) {
-  const vm::Image& image = session_.run().image();
+  const vm::Image& image = *session_.run().spec().image;
   const std::uint32_t current = session_.view().instruction;
   std::uint32_t centre = current;
   if (!args.empty()) {
@@ -398,7 +396,7 @@ void Console::disasmCommand(std::string_view args) {
 // One frame: where, and the source line (or the instruction, without source).
 std::string Console::frameText(std::uint32_t line, std::uint32_t instruction) const {
   std::string text(trimmed(sourceLine(line)));
-  if (text.empty()) text = vm::instructionText(session_.run().image(), instruction);
+  if (text.empty()) text = vm::instructionText(*session_.run().spec().image, instruction);
   return fmt::format("{:<16} {}", fmt::format("line {} @{}", line, instruction + 1), text);
 }
 

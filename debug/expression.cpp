@@ -144,9 +144,9 @@ diag::Result<Condition> parseCondition(const vm::Image& image, std::string_view 
   else if (base::sameName(right, "off")) c.right = 0;
   else if (const auto n = integer(right)) c.right = *n;
   else if (c.left.kind == Expression::Kind::Clock) {
-    const stimuli::text::SecondsParse s = stimuli::text::parseSeconds(right);
-    if (!s.error.empty()) return diag::refusal(fmt::format("'{}': {}", shown(right), s.error));
-    c.right = s.micros;
+    const diag::Result<vm::Micros> s = stimuli::text::parseSeconds(right);
+    if (!s) return diag::refusal(fmt::format("'{}': {}", shown(right), s.failure().message));
+    c.right = *s;
   } else {
     return diag::refusal(fmt::format("'{}' is not a whole number (or on, off)", shown(right)));
   }

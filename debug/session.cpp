@@ -54,7 +54,7 @@ Session::~Session() = default;
 
 std::uint32_t Session::lineWithCode(std::uint32_t line) const {
   std::uint32_t best = 0;
-  for (std::uint32_t l : run_->image().lines)
+  for (std::uint32_t l : run_->spec().image->lines)
     if (l >= line && (best == 0 || l < best)) best = l;
   return best;
 }
@@ -78,35 +78,35 @@ diag::Result<int> Session::breakAtLine(std::uint32_t line) {
   b.id = nextId();
   b.kind = Breakpoint::Kind::Line;
   b.line = at;
-  b.instructions = lineStarts(run_->image(), at);
+  b.instructions = lineStarts(*run_->spec().image, at);
   breakpoints_.push_back(std::move(b));
   return breakpoints_.back().id;
 }
 
 diag::Result<int> Session::breakAtLabel(std::string_view label) {
-  const std::optional<std::uint32_t> at = runtime::labelInstruction(run_->image(), label);
+  const std::optional<std::uint32_t> at = runtime::labelInstruction(*run_->spec().image, label);
   if (!at) return diag::refusal(fmt::format("the program has no label '{}'", base::safeText(label.substr(0, 60))));
   Breakpoint b;
   b.id = nextId();
   b.kind = Breakpoint::Kind::Label;
-  for (const vm::Label& l : run_->image().labels)
-    if (base::sameName(run_->image().labelName(l), label)) b.label = run_->image().labelName(l);
+  for (const vm::Label& l : run_->spec().image->labels)
+    if (base::sameName(run_->spec().image->labelName(l), label)) b.label = run_->spec().image->labelName(l);
   b.instruction = *at;
-  b.line = run_->image().lines[*at];
+  b.line = run_->spec().image->lines[*at];
   b.instructions = {*at};
   breakpoints_.push_back(std::move(b));
   return breakpoints_.back().id;
 }
 
 diag::Result<int> Session::breakAtInstruction(std::uint32_t index) {
-  const std::size_t size = run_->image().code.size();
+  const std::size_t size = run_->spec().image->code.size();
   if (index >= size)
     return diag::refusal(fmt::format("no instruction @{}: the program has @1 to @{}", index + 1, size));
   Breakpoint b;
   b.id = nextId();
   b.kind = Breakpoint::Kind::Instruction;
   b.instruction = index;
-  b.line = run_->image().lines[index];
+  b.line = run_->spec().image->lines[index];
   b.instructions = {index};
   breakpoints_.push_back(std::move(b));
   return breakpoints_.back().id;
@@ -212,7 +212,7 @@ Stop Session::finishedStop(bool already) const {
   std::string what = outcome.ok() ? std::string("the program ended")
                                   : fmt::format("{}: {}", vm::debuggerName(s.reason), base::safeText(outcome.message));
   // What `robotsim run` warns about at the end, said where the run ends.
-  if (const auto w = runtime::gripperWarning(*run_, run_->image().sourceName))
+  if (const auto w = runtime::gripperWarning(*run_, run_->spec().image->sourceName))
     what += fmt::format("; warning at line {}: {}", w->pos.line, base::safeText(w->message));
   s.message = already ? fmt::format("the run is over ({}); go back with reverse-step or goto-time", what) : what;
   return s;

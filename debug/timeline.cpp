@@ -81,10 +81,11 @@ vm::RunOutcome Timeline::forward(const runtime::RunUntil& until, const std::func
   slice.instructions = until.instructions;
   slice.lines = until.lines;
   if (until.when) slice.when = [&until](const runtime::Run& r) { return until.when(r); };
-  const vm::Image& image = run_.image();
+  const vm::Image& image = *run_.spec().image;
+  const std::uint64_t stepEnd = until.stepEnd(run_.interpreter().steps());
   for (;;) {
     applyDueEdits();
-    const std::uint64_t cap = std::min(until.steps, nextBoundary());
+    const std::uint64_t cap = std::min(stepEnd, nextBoundary());
     slice.steps = cap;
     const vm::RunOutcome outcome = run_.runUntil(slice);
     if (!outcome.paused()) return outcome;
@@ -98,7 +99,7 @@ vm::RunOutcome Timeline::forward(const runtime::RunUntil& until, const std::func
     // (or the caller's) stop here. At the boundary the run names the step
     // count first, so the caller's time, instructions and lines are
     // looked at again.
-    const bool ownBoundary = run_.pauseCause() == vm::StopReason::Step && steps == cap && cap < until.steps;
+    const bool ownBoundary = run_.pauseCause() == vm::StopReason::Step && steps == cap && cap < stepEnd;
     if (!ownBoundary) return outcome;
     const std::uint32_t pc = run_.interpreter().pc();
     if (run_.rig().clock() > until.time) return outcome;

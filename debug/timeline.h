@@ -58,7 +58,7 @@ class Timeline {
   /// To the moment after exactly `steps` instructions (or the end, if the
   /// run ends before).
   void goToStep(std::uint64_t steps);
-  /// To the moment a fresh run paused by Run::runUntilTime(t) would be at:
+  /// To the moment a fresh run paused by Run::runUntil({.time = t}) would be at:
   /// right after the instruction that takes the clock past t (or the end).
   void goToTime(vm::Micros t);
 

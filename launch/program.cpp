@@ -24,15 +24,15 @@ diag::Diagnostic wholeFileError(const std::string& file, std::string message) {
 // The workcell an image carries, checked against the image itself (its
 // robot must have exactly the image's motors); an error message, or empty.
 std::string decodeImageCell(const vm::Image& image, std::shared_ptr<const workcell::Workcell>& cell) {
-  workcell::CellDecode decoded = workcell::decodeCell(image.cell);
-  if (!decoded.cell) return decoded.error;
-  if (decoded.cell->robots.empty()) return "its cell has no robot";
+  diag::Result<workcell::Workcell> decoded = workcell::decodeCell(image.cell);
+  if (!decoded) return decoded.failure().message;
+  if (decoded->robots.empty()) return "its cell has no robot";
   // The cell's bytes hold the geometry; how motors accelerate is in the
   // image's motor table alone (an image's 1.1 motion section), so that a
   // cell of constant-speed motors keeps the bytes it always had. The
   // robot takes the image's accelerations and actuation time, then the
   // rest must match exactly.
-  workcell::Robot& robot = decoded.cell->robots.front().robot;
+  workcell::Robot& robot = decoded->robots.front().robot;
   if (robot.joints.size() + (robot.hasGripper ? 1 : 0) == image.motors.size()) {
     for (std::size_t i = 0; i < robot.joints.size(); ++i) robot.joints[i].acceleration = image.motors[i].acceleration;
     if (robot.hasGripper) {
@@ -41,7 +41,7 @@ std::string decodeImageCell(const vm::Image& image, std::shared_ptr<const workce
     }
   }
   if (compiler::motorTable(robot) != image.motors) return "its cell's robot does not match its motor table";
-  cell = std::make_shared<const workcell::Workcell>(std::move(*decoded.cell));
+  cell = std::make_shared<const workcell::Workcell>(std::move(decoded).value());
   return {};
 }
 

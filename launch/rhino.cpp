@@ -48,12 +48,17 @@ bool buildSettings(const std::string& dialectText, const std::string& file, cons
     if (!text) {
       diags.push_back(text.failure());
     } else {
-      for (diag::Diagnostic& d : rhino::applySettingsText(settings, *text, file)) diags.push_back(std::move(d));
+      diag::Result<RhinoSettings> applied = rhino::applySettingsText(settings, *text, file);
+      if (applied) settings = std::move(applied).value();
+      const std::vector<diag::Diagnostic>& bad = applied.failures();
+      diags.insert(diags.end(), bad.begin(), bad.end());
     }
   }
-  for (const std::string& s : sets)
-    if (std::string error = rhino::applySettingArg(settings, s); !error.empty())
-      diags.push_back({"--serial-set", {}, diag::Severity::Error, std::move(error)});
+  for (const std::string& s : sets) {
+    diag::Result<RhinoSettings> applied = rhino::applySettingArg(settings, s);
+    if (applied) settings = std::move(applied).value();
+    else diags.push_back(applied.failure());
+  }
   return diags.size() == before;
 }
 

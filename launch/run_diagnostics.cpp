@@ -37,7 +37,7 @@ diag::Diagnostic stopDiagnostic(const vm::Image& image, const vm::RunOutcome& ou
 std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::CollisionMode mode,
                                           const std::string& file) {
   std::vector<diag::Diagnostic> out;
-  const vm::Image& image = run.image();
+  const vm::Image& image = *run.spec().image;
   if (const runtime::CollisionWatch* watch = run.rig().collisionWatch(); watch && mode == runtime::CollisionMode::Warn)
     for (const runtime::CollisionEvent& e : run.rig().collisions()) {
       const bool known = e.instruction < image.code.size();
@@ -59,7 +59,7 @@ std::vector<diag::Diagnostic> runDiagnostics(const runtime::Run& run, runtime::C
                                              const std::string& file) {
   std::vector<diag::Diagnostic> out;
   if (const std::optional<vm::RunOutcome> outcome = run.outcome(); outcome && !outcome->ok())
-    out.push_back(stopDiagnostic(run.image(), *outcome, file));
+    out.push_back(stopDiagnostic(*run.spec().image, *outcome, file));
   for (diag::Diagnostic& w : runWarnings(run, mode, file)) out.push_back(std::move(w));
   return out;
 }

@@ -24,23 +24,23 @@ bool loadStimuli(const RunRequest& request, stimuli::Stimuli& stimuli, std::vect
     ok = false;
   };
   if (!request.stimuliFile.empty()) {
-    stimuli::StimuliParse parsed = stimuli::loadStimuliFile(request.stimuliFile);
-    for (const auto& e : parsed.errors) add(e);
-    stimuli = std::move(parsed.stimuli);
+    diag::Result<stimuli::Stimuli> parsed = stimuli::loadStimuliFile(request.stimuliFile);
+    for (const auto& e : parsed.failures()) add(e);
+    if (parsed) stimuli = std::move(parsed).value();
   }
   for (const std::string& arg : request.inputs) {
-    stimuli::StimulusArgParse parsed = stimuli::parseStimulusArg(arg, "--input");
-    if (parsed.error) add(*parsed.error);
-    if (parsed.change) stimuli.changes.push_back(*parsed.change);
+    const diag::Result<stimuli::InputChange> parsed = stimuli::parseStimulusArg(arg, "--input");
+    if (parsed) stimuli.changes.push_back(*parsed);
+    else add(parsed.failure());
   }
   return ok;
 }
 
 std::optional<vm::Micros> maxTimeOf(const RunRequest& request, std::vector<diag::Diagnostic>& diags) {
   if (request.maxTime.empty()) return vm::RunLimits{}.maxTime;
-  const stimuli::text::SecondsParse parsed = stimuli::text::parseSeconds(request.maxTime);
-  if (parsed.error.empty()) return parsed.micros;
-  diags.push_back({"--max-time", {}, diag::Severity::Error, parsed.error, {},
+  const diag::Result<vm::Micros> parsed = stimuli::text::parseSeconds(request.maxTime);
+  if (parsed) return *parsed;
+  diags.push_back({"--max-time", {}, diag::Severity::Error, parsed.failure().message, {},
                    "a time is seconds with at most 6 decimals, from 0 to 1000000"});
   return std::nullopt;
 }

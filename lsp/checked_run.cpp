@@ -56,7 +56,7 @@ class Timer final : public vm::StepObserver {
 
 std::string summaryOf(const runtime::Run& run, const vm::RunOutcome& outcome) {
   const std::string at = formatSeconds(run.rig().clock());
-  const std::uint32_t line = run.image().lines[outcome.index];
+  const std::uint32_t line = run.spec().image->lines[outcome.index];
   switch (outcome.reason) {
     case vm::StopReason::End: return fmt::format("finished at {}", at);
     case vm::StopReason::RuntimeError:
@@ -74,10 +74,10 @@ std::string summaryOf(const runtime::Run& run, const vm::RunOutcome& outcome) {
 // The run stopped by the editor's budget: a note where it stopped, so
 // that no line is left looking checked when it was not.
 diag::Diagnostic budgetNote(const runtime::Run& run, const std::string& file, std::chrono::milliseconds budget) {
-  const auto last = static_cast<std::uint32_t>(run.image().code.size() - 1);
+  const auto last = static_cast<std::uint32_t>(run.spec().image->code.size() - 1);
   const std::uint32_t index = std::min(run.interpreter().pc(), last);
   return {file,
-          {run.image().lines[index], run.image().columns[index]},
+          {run.spec().image->lines[index], run.spec().image->columns[index]},
           diag::Severity::Note,
           fmt::format("the editor's run stopped here after {} s of checking ({} instructions, {} simulated), before "
                       "the program ended: what comes after is not checked in the editor",
@@ -127,10 +127,10 @@ CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, 
   // The stimuli file beside the program, from the editor's text when it
   // holds one (check would read the saved file).
   if (options.stimuliText || !options.stimuliPath.empty()) {
-    stimuli::StimuliParse parsed = options.stimuliText
-                                       ? stimuli::parseStimuli(*options.stimuliText, options.stimuliFile)
-                                       : stimuli::loadStimuliFile(options.stimuliPath);
-    if (!parsed.errors.empty()) {
+    diag::Result<stimuli::Stimuli> parsed = options.stimuliText
+                                                ? stimuli::parseStimuli(*options.stimuliText, options.stimuliFile)
+                                                : stimuli::loadStimuliFile(options.stimuliPath);
+    if (!parsed) {
       out.end = CheckedRun::End::NotRun;
       out.diagnostics.push_back({analysis.source().name(), {}, diag::Severity::Note,
                                  fmt::format("not run in the editor: the stimuli file beside it, {}, has errors",
@@ -139,7 +139,7 @@ CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, 
       out.summary = "not made (its stimuli file has errors)";
       return out;
     }
-    spec->stimuli = std::move(parsed.stimuli);
+    spec->stimuli = std::move(parsed).value();
   }
   out.times.resize(spec->image->code.size());
   Timer timer(out.times, control, deadline);

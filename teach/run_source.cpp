@@ -28,7 +28,7 @@ void RunSource::publish(const runtime::Run& run, const std::string& message) {
   PendantState s;
   s.program = program_;
   s.cell = run.rig().cell() ? run.rig().cell()->name : "";
-  s.motors = run.image().motors;
+  s.motors = run.spec().image->motors;
   s.encoders = v.motors;
   s.tcp = v.tcp;
   s.gripper = gripperState(s.motors, s.encoders);

@@ -14,15 +14,15 @@ bool isInside(const fs::path& folder, const fs::path& path) {
   return true;
 }
 
-Resolved resolve(const fs::path& path, bool mustExist) {
+diag::Result<fs::path> resolve(const fs::path& path, bool mustExist) {
   std::error_code ec;
-  Resolved r;
+  fs::path target;
   // Absolute first: of a relative path none of whose parts exists,
   // weakly_canonical gives back the relative path.
   const fs::path absolute = fs::absolute(path, ec);
-  if (!ec) r.target = mustExist ? fs::canonical(absolute, ec) : fs::weakly_canonical(absolute, ec);
-  if (ec) r.error = ec.message();
-  return r;
+  if (!ec) target = mustExist ? fs::canonical(absolute, ec) : fs::weakly_canonical(absolute, ec);
+  if (ec) return diag::refusal(ec.message());
+  return target;
 }
 
 }  // namespace rs::testrun

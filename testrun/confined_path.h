@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "diag/result.h"
+
 namespace rs::testrun {
 
 /// Whether `path` lies inside `folder` (or is it); both canonical.
@@ -14,11 +16,8 @@ bool isInside(const std::filesystem::path& folder, const std::filesystem::path& 
 
 /// Where `path` leads once every symbolic link is followed (the parts that
 /// do not exist yet kept as written), or the system's reason it cannot be
-/// followed (a loop, a link to nowhere when `mustExist`).
-struct Resolved {
-  std::filesystem::path target;
-  std::string error;  ///< set when it cannot be resolved
-};
-Resolved resolve(const std::filesystem::path& path, bool mustExist);
+/// followed (a loop, a link to nowhere when `mustExist`) as a failure with
+/// no place (diag::refusal): the caller says whose path it was.
+diag::Result<std::filesystem::path> resolve(const std::filesystem::path& path, bool mustExist);
 
 }  // namespace rs::testrun

@@ -18,7 +18,7 @@ std::string onOff(bool on) { return on ? "ON" : "OFF"; }
 class Checker {
  public:
   Checker(const runtime::Run& run, const std::string& file)
-      : run_(run), image_(run.image()), outcome_(*run.outcome()), file_(file) {}
+      : run_(run), image_(*run.spec().image), outcome_(*run.outcome()), file_(file) {}
 
   std::vector<diag::Diagnostic> failures;
 
@@ -265,7 +265,7 @@ std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const std::vecto
     finished.kind = ExpectKind::Status;
     finished.reason = vm::StopReason::End;
     const vm::RunOutcome o = *run.outcome();
-    finished.pos = {run.image().lines[o.index], run.image().columns[o.index]};
+    finished.pos = {run.spec().image->lines[o.index], run.spec().image->columns[o.index]};
     c.status(finished);
   }
   const WatchAnswer none;

@@ -2,13 +2,17 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <span>
 
 #include "base/ascii.h"
 #include "compiler/stimuli/stimuli_text.h"
 #include "testrun/golden_trace.h"
+#include "vm/stop_reason.h"
 
 namespace rs::testrun {
 
@@ -69,6 +73,14 @@ class LineReader {
     ++next_;
     return true;
   }
+  /// Takes the words `phrase` is made of when they all come next.
+  bool acceptPhrase(std::span<const std::string_view> phrase) {
+    if (next_ + phrase.size() > words_.size()) return false;
+    for (std::size_t i = 0; i < phrase.size(); ++i)
+      if (!is(words_[next_ + i], phrase[i])) return false;
+    next_ += phrase.size();
+    return true;
+  }
   std::optional<Word> take(std::string_view what) {
     if (done()) return fail(fmt::format("expected {}", what)), std::nullopt;
     return words_[next_++];
@@ -102,9 +114,9 @@ class LineReader {
   bool seconds(std::string_view what, vm::Micros& micros) {
     const std::optional<Word> w = take(what);
     if (!w) return false;
-    const stimuli::text::SecondsParse parsed = stimuli::text::parseSeconds(w->text);
-    if (!parsed.error.empty()) return failAt(w->col, parsed.error);
-    micros = parsed.micros;
+    const diag::Result<vm::Micros> parsed = stimuli::text::parseSeconds(w->text);
+    if (!parsed) return failAt(w->col, parsed.failure().message);
+    micros = *parsed;
     return true;
   }
   bool onOff(bool& on) {
@@ -131,9 +143,53 @@ class LineReader {
   std::optional<diag::Diagnostic> error_;
 };
 
-constexpr std::string_view kSubjects =
-    "finished, deadlock, step limit, time limit, clock standing still, runtime error, time, motors, motor, output, "
-    "input, variable, tcp, object, trace, no collision, collides with";
+// The stops an expectation names, in the order its error lists them: every
+// reason that ends a run (a new one fails to compile until it is here),
+// each said with the run's words of vm/stop_reason.h's table.
+constexpr std::array kStatusReasons{vm::StopReason::End,       vm::StopReason::Deadlock,
+                                    vm::StopReason::StepLimit, vm::StopReason::TimeLimit,
+                                    vm::StopReason::InstantLimit, vm::StopReason::RuntimeError};
+constexpr bool namesEveryEnd() {
+  for (int r = 0; vm::isOver(static_cast<vm::StopReason>(r)); ++r)
+    if (std::find(kStatusReasons.begin(), kStatusReasons.end(), static_cast<vm::StopReason>(r)) == kStatusReasons.end())
+      return false;
+  return true;
+}
+static_assert(namesEveryEnd(), "an expectation must be able to name every way a run ends");
+
+// The other subjects, after the stops in the error's list.
+constexpr std::string_view kOtherSubjects =
+    "time, motors, motor, output, input, variable, tcp, object, trace, no collision, collides with";
+
+std::vector<std::string_view> phraseOf(vm::StopReason reason) {
+  std::vector<std::string_view> words;
+  std::string_view name = vm::stopReasonName(reason);
+  for (std::size_t space; (space = name.find(' ')) != std::string_view::npos; name.remove_prefix(space + 1))
+    words.push_back(name.substr(0, space));
+  words.push_back(name);
+  return words;
+}
+
+const std::string& subjects() {
+  static const std::string list = [] {
+    std::string out;
+    for (vm::StopReason reason : kStatusReasons) out += fmt::format("{}, ", vm::stopReasonName(reason));
+    return out + std::string(kOtherSubjects);
+  }();
+  return list;
+}
+
+// A stop's first word that also begins another subject ('time'): only the
+// whole phrase makes it the stop.
+bool beginsOtherSubject(std::string_view word) {
+  for (std::string_view rest = kOtherSubjects; !rest.empty();) {
+    const std::size_t comma = rest.find(", ");
+    const std::string_view subject = rest.substr(0, comma);
+    if (base::sameName(subject.substr(0, subject.find(' ')), word)) return true;
+    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 2);
+  }
+  return false;
+}
 
 // `at line N` after a status: where the run must stop.
 bool stopLine(LineReader& r, Expectation& e) {
@@ -144,14 +200,19 @@ bool stopLine(LineReader& r, Expectation& e) {
   return true;
 }
 
+// A stop by its words: the first word names it (and the rest must follow),
+// unless that word begins another subject too.
 bool status(LineReader& r, Expectation& e) {
-  e.kind = ExpectKind::Status;
-  if (r.accept("finished")) return e.reason = vm::StopReason::End, stopLine(r, e);
-  if (r.accept("deadlock")) return e.reason = vm::StopReason::Deadlock, stopLine(r, e);
-  if (r.accept("step")) return e.reason = vm::StopReason::StepLimit, r.keyword("limit") && stopLine(r, e);
-  if (r.accept("clock"))
-    return e.reason = vm::StopReason::InstantLimit, r.keyword("standing") && r.keyword("still") && stopLine(r, e);
-  if (r.accept("runtime")) return e.reason = vm::StopReason::RuntimeError, r.keyword("error") && stopLine(r, e);
+  for (vm::StopReason reason : kStatusReasons) {
+    const std::vector<std::string_view> phrase = phraseOf(reason);
+    bool named = r.acceptPhrase(phrase);
+    if (!named && !beginsOtherSubject(phrase.front()) && r.accept(phrase.front())) {
+      named = true;
+      for (std::size_t i = 1; i < phrase.size() && named; ++i) named = r.keyword(phrase[i]);
+      if (!named) return false;
+    }
+    if (named) return e.kind = ExpectKind::Status, e.reason = reason, stopLine(r, e);
+  }
   return false;
 }
 
@@ -167,12 +228,12 @@ bool moment(LineReader& r, Expectation& e) {
   const std::optional<Word> w = r.take("a window A..B in seconds");
   if (!w) return false;
   const std::size_t dots = w->text.find("..");
-  const stimuli::text::SecondsParse a = stimuli::text::parseSeconds(w->text.substr(0, dots));
-  const stimuli::text::SecondsParse b =
+  const diag::Result<vm::Micros> a = stimuli::text::parseSeconds(w->text.substr(0, dots));
+  const diag::Result<vm::Micros> b =
       stimuli::text::parseSeconds(dots == std::string_view::npos ? std::string_view() : w->text.substr(dots + 2));
-  if (dots == std::string_view::npos || !a.error.empty() || !b.error.empty() || b.micros < a.micros)
+  if (dots == std::string_view::npos || !a || !b || *b < *a)
     return r.failAt(w->col, fmt::format("expected a window A..B in seconds with A <= B (e.g. 2..5.5), got '{}'", w->text));
-  e.during = {a.micros, b.micros};
+  e.during = {*a, *b};
   return true;
 }
 
@@ -180,7 +241,7 @@ bool withinNumber(LineReader& r, double& tolerance) { return !r.accept("within")
 
 bool expectation(LineReader& r, Expectation& e) {
   const Word* first = r.peek();
-  if (!first) return r.fail(fmt::format("expected what to expect: {}", kSubjects));
+  if (!first) return r.fail(fmt::format("expected what to expect: {}", subjects()));
   if (status(r, e)) return r.end();
   if (r.error()) return false;
   if (r.accept("time")) {
@@ -188,8 +249,6 @@ bool expectation(LineReader& r, Expectation& e) {
     if (r.accept("<=")) e.compare = Compare::AtMost;
     else if (r.accept(">=")) e.compare = Compare::AtLeast;
     else if (r.accept("=")) e.compare = Compare::Equal;
-    else if (r.accept("limit"))
-      return e.kind = ExpectKind::Status, e.reason = vm::StopReason::TimeLimit, stopLine(r, e) && r.end();
     else return r.fail("expected <=, >= or = after 'time'");
     return r.seconds("a time in seconds", e.micros) && r.end();
   }
@@ -308,7 +367,7 @@ bool expectation(LineReader& r, Expectation& e) {
     e.on = !r.accept("not");
     return r.keyword("held") && r.end();
   }
-  return r.fail(fmt::format("unknown expectation '{}': expect one of {}", first->text, kSubjects));
+  return r.fail(fmt::format("unknown expectation '{}': expect one of {}", first->text, subjects()));
 }
 
 bool setting(LineReader& r, TestSettings& s) {

@@ -26,28 +26,23 @@ bool staysUnderFolder(std::string_view name) {
   return !normal.empty() && *normal.begin() != ".." && normal != ".";
 }
 
-GoldenFile goldenFile(const std::string& testFile, const std::string& name) {
-  GoldenFile g;
+diag::Result<std::string> goldenFile(const std::string& testFile, const std::string& name) {
   const fs::path folder = fs::path(testFile).parent_path();
-  g.path = (folder / name).lexically_normal().string();
-  if (!staysUnderFolder(name)) {
-    g.error = fmt::format(
+  std::string path = (folder / name).lexically_normal().string();
+  if (!staysUnderFolder(name))
+    return diag::refusal(fmt::format(
         "the golden trace '{}' is not under the test's folder: name it relative to the folder, "
         "without '..' leading out",
-        name);
-    return g;
-  }
-  const Resolved home = resolve(folder.empty() ? fs::path(".") : folder, true);
-  const Resolved target = resolve(g.path, false);
-  if (!home.error.empty() || !target.error.empty()) {
-    g.error =
-        fmt::format("cannot follow the golden trace {}: {}", g.path, home.error.empty() ? target.error : home.error);
-    return g;
-  }
-  if (!isInside(home.target, target.target))
-    g.error = fmt::format("the golden trace {} leads out of the test's folder (to {}): refused", g.path,
-                          target.target.string());
-  return g;
+        name));
+  const diag::Result<fs::path> home = resolve(folder.empty() ? fs::path(".") : folder, true);
+  const diag::Result<fs::path> target = resolve(path, false);
+  if (!home || !target)
+    return diag::refusal(fmt::format("cannot follow the golden trace {}: {}", path,
+                                     home ? target.failure().message : home.failure().message));
+  if (!isInside(*home, *target))
+    return diag::refusal(
+        fmt::format("the golden trace {} leads out of the test's folder (to {}): refused", path, target->string()));
+  return path;
 }
 
 std::string TraceComparer::expected() const {

@@ -11,16 +11,14 @@
 #include <string>
 #include <string_view>
 
+#include "diag/result.h"
+
 namespace rs::testrun {
 
-/// The golden file `name` of the test `testFile`: relative to the test's
-/// folder and inside it once symbolic links are followed; else `error`
-/// says where it leads.
-struct GoldenFile {
-  std::string path;
-  std::string error;
-};
-GoldenFile goldenFile(const std::string& testFile, const std::string& name);
+/// The path of the golden file `name` of the test `testFile`: relative to
+/// the test's folder and inside it once symbolic links are followed; else a
+/// failure with no place (diag::refusal) that says where it leads.
+diag::Result<std::string> goldenFile(const std::string& testFile, const std::string& name);
 
 /// Whether a golden file's name, as written, stays under the test's folder
 /// (relative, no `..` that leaves it): checked when the line is read.

@@ -38,7 +38,7 @@ bool RunWatch::needed(const std::vector<Expectation>& expectations) {
 
 RunWatch::RunWatch(runtime::Run& run, const std::vector<Expectation>& expectations)
     : run_(run), expectations_(expectations), answers_(expectations.size()) {
-  const vm::Image& image = run.image();
+  const vm::Image& image = *run.spec().image;
   const runtime::SimMachine& sim = *run.rig().sim();
   boundsOf_.resize(image.motors.size());
   bool anyVariable = false;
@@ -132,7 +132,7 @@ void RunWatch::step(std::uint32_t index, const vm::Interpreter* vm) {
   settleInputs(start);
   if (pending_ && pendingAt_ < start) finishLevel();
   settleSteps(start);
-  const vm::Image& image = run_.image();
+  const vm::Image& image = *run_.spec().image;
   const std::uint32_t line = image.lines[index];
   if (vm && !variables_.empty()) {
     const vm::Instr& in = image.code[index];

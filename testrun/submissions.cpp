@@ -25,13 +25,14 @@ void visitEntry(const fs::path& entry, const fs::file_status& own, const fs::pat
     if (fs::is_regular_file(own) && isProgramName(entry)) files.insert(name);
     return;
   }
-  const Resolved to = resolve(entry, true);
+  const diag::Result<fs::path> to = resolve(entry, true);
   std::error_code ec;
-  const fs::file_status target = to.error.empty() ? fs::status(to.target, ec) : fs::file_status();
-  if (!to.error.empty() || !isInside(folder, to.target)) {
+  const fs::file_status target = to ? fs::status(*to, ec) : fs::file_status();
+  if (!to || !isInside(folder, *to)) {
     // Only what would have been graded, or walked, is worth a word.
     if (isProgramName(entry) || fs::is_directory(target))
-      refused.push_back({name, to.error.empty() ? to.target.string() : std::string(), folder.string(), to.error});
+      refused.push_back(
+          {name, to ? to->string() : std::string(), folder.string(), to ? std::string() : to.failure().message});
     return;
   }
   if (fs::is_regular_file(target) && isProgramName(entry)) files.insert(name);
@@ -48,33 +49,34 @@ SubmissionWalk findSubmissions(const std::vector<std::string>& paths) {
     if (ec || !fs::exists(st)) {
       const fs::file_status own = fs::symlink_status(p, ec);
       if (!ec && fs::is_symlink(own)) {  // a link to nowhere, named
-        const Resolved folder = resolve(fs::absolute(p).parent_path(), true);
-        walk.refused.push_back(
-            {fs::path(p).lexically_normal().string(), "", folder.target.string(), resolve(p, true).error});
+        const diag::Result<fs::path> folder = resolve(fs::absolute(p).parent_path(), true);
+        const diag::Result<fs::path> link = resolve(p, true);
+        walk.refused.push_back({fs::path(p).lexically_normal().string(), "", folder ? folder->string() : std::string(),
+                                link ? std::string() : link.failure().message});
         continue;
       }
       walk.errors.push_back({p, {}, diag::Severity::Error, "no such file or folder"});
       continue;
     }
     if (!fs::is_directory(st)) {  // a file named: confined to its own folder
-      const Resolved folder = resolve(fs::absolute(p).parent_path(), true);
-      if (!folder.error.empty()) {
-        walk.errors.push_back({p, {}, diag::Severity::Error, "cannot follow its folder: " + folder.error});
+      const diag::Result<fs::path> folder = resolve(fs::absolute(p).parent_path(), true);
+      if (!folder) {
+        walk.errors.push_back({p, {}, diag::Severity::Error, "cannot follow its folder: " + folder.failure().message});
         continue;
       }
-      visitEntry(p, fs::symlink_status(p, ec), folder.target, files, walk.refused);
+      visitEntry(p, fs::symlink_status(p, ec), *folder, files, walk.refused);
       continue;
     }
-    const Resolved folder = resolve(p, true);
-    if (!folder.error.empty()) {
-      walk.errors.push_back({p, {}, diag::Severity::Error, "cannot follow: " + folder.error});
+    const diag::Result<fs::path> folder = resolve(p, true);
+    if (!folder) {
+      walk.errors.push_back({p, {}, diag::Severity::Error, "cannot follow: " + folder.failure().message});
       continue;
     }
     fs::recursive_directory_iterator it(p, fs::directory_options::skip_permission_denied, ec), end;
     for (; !ec && it != end; it.increment(ec)) {
       std::error_code own;
       const fs::file_status status = it->symlink_status(own);
-      if (!own) visitEntry(it->path(), status, folder.target, files, walk.refused);
+      if (!own) visitEntry(it->path(), status, *folder, files, walk.refused);
     }
     if (ec) walk.errors.push_back({p, {}, diag::Severity::Error, "cannot list: " + ec.message()});
   }

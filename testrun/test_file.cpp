@@ -118,17 +118,17 @@ bool openGoldenTraces(const ParsedExpectations& parsed, const std::string& setti
                       std::vector<GoldenTrace>& traces, TestResult& r) {
   for (const Expectation& e : parsed.expectations) {
     if (e.kind != ExpectKind::Trace) continue;
-    const GoldenFile golden = goldenFile(settingsFile, e.name);
-    if (!golden.error.empty()) {
+    const diag::Result<std::string> golden = goldenFile(settingsFile, e.name);
+    if (!golden) {
       r.status = TestStatus::Error;
-      r.problems.push_back({settingsFile, e.pos, diag::Severity::Error, golden.error, {},
+      r.problems.push_back({settingsFile, e.pos, diag::Severity::Error, golden.failure().message, {},
                             "golden traces live under the folder of the test that names them"});
       continue;
     }
     GoldenTrace& t = traces.emplace_back();
     t.expectation = &e;
-    t.path = golden.path;
-    t.read = base::readFile(golden.path, launch::kMaxInputBytes);
+    t.path = *golden;
+    t.read = base::readFile(*golden, launch::kMaxInputBytes);
     t.comparer = std::make_unique<TraceComparer>(t.read.bytes ? std::string_view(*t.read.bytes) : std::string_view());
     t.stream = std::make_unique<std::ostream>(t.comparer.get());
   }

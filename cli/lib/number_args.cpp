@@ -110,20 +110,20 @@ CLI::Validator numberListArg(const NumberRule& rule) {
 }
 
 bool parseSecondsArg(const std::string& text, std::string_view option, std::int64_t& micros, std::ostream& err) {
-  const stimuli::text::SecondsParse parsed = stimuli::text::parseSeconds(text);
-  if (!parsed.error.empty()) {
-    err << fmt::format("{}: error: {}\n  hint: {}\n", option, parsed.error, kSecondsHint);
+  const diag::Result<vm::Micros> parsed = stimuli::text::parseSeconds(text);
+  if (!parsed) {
+    err << fmt::format("{}: error: {}\n  hint: {}\n", option, parsed.failure().message, kSecondsHint);
     return false;
   }
-  micros = parsed.micros;
+  micros = *parsed;
   return true;
 }
 
 CLI::Validator secondsArg() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        const stimuli::text::SecondsParse parsed = stimuli::text::parseSeconds(text);
-        return parsed.error.empty() ? std::string() : fmt::format("error: {}\n  hint: {}", parsed.error, kSecondsHint);
+        const diag::Result<vm::Micros> parsed = stimuli::text::parseSeconds(text);
+        return parsed ? std::string() : fmt::format("error: {}\n  hint: {}", parsed.failure().message, kSecondsHint);
       },
       "");
 }

@@ -233,9 +233,9 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   if (run) {
     render::Moment m = render::momentOf(*run, o.at.empty() ? INT64_MAX : at);
     if (o.at.empty() && run->finished())  // at a moment --at picks, the run has not ended
-      printRunWarnings(err, launch::runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
+      printRunWarnings(err, launch::runWarnings(*run, prepared.collisions, run->spec().image->sourceName), loaded);
     if (!m.reached || (o.at.empty() && !m.outcome.ok())) {
-      const vm::Image& image = run->image();
+      const vm::Image& image = *run->spec().image;
       launch::printDiagnostics(err, {launch::stopDiagnostic(image, m.outcome, image.sourceName)}, loaded);
       // A collision stopped the run: draw it as it happened.
       const auto hits = run->rig().collisions();
@@ -275,13 +275,13 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   else if (!o.dump.empty())
     render::dumpText(out, picture, cell);
   if (format) {
-    render::Encoded encoded = render::encodePicture(picture, *format);
-    if (encoded.bytes.empty()) {
-      err << fmt::format("{}: error: {}\n", base::safeText(o.output), encoded.error);
+    diag::Result<std::vector<std::uint8_t>> encoded = render::encodePicture(picture, *format);
+    if (!encoded) {
+      err << fmt::format("{}: error: {}\n", base::safeText(o.output), encoded.failure().message);
       return kExitBadInput;
     }
-    const std::size_t bytes = encoded.bytes.size();
-    if (!write(o.output, std::move(encoded.bytes), err)) return kExitBadInput;
+    const std::size_t bytes = encoded->size();
+    if (!write(o.output, std::move(encoded).value(), err)) return kExitBadInput;
     // What was written, as animate says it; on stderr when stdout carries
     // the --dump-lines listing.
     const std::string what = run ? fmt::format("{} on {}", base::safeText(o.program.file), base::safeText(cell.name))
@@ -332,13 +332,13 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
     }
   }
   if (!outcome.ok()) {
-    const vm::Image& image = run->image();
+    const vm::Image& image = *run->spec().image;
     const diag::Diagnostic d = launch::stopDiagnostic(image, outcome, image.sourceName);
     launch::printDiagnostics(err, {d}, loaded);
     input.outcome = d.pos.line ? fmt::format("line {}: {}", d.pos.line, d.message) : d.message;
   }
-  printRunWarnings(err, launch::runWarnings(*run, prepared.collisions, run->image().sourceName), loaded);
-  if (const auto w = runtime::gripperWarning(*run, run->image().sourceName))  // shown under END
+  printRunWarnings(err, launch::runWarnings(*run, prepared.collisions, run->spec().image->sourceName), loaded);
+  if (const auto w = runtime::gripperWarning(*run, run->spec().image->sourceName))  // shown under END
     input.warning = fmt::format("line {}: {}", w->pos.line, w->message);
   const render::Frames frames = render::framesOf(recording, input.eventSteps, input.frameRule);
   const std::string html = render::animationHtml(input, frames);

@@ -59,7 +59,7 @@ void printFault(std::ostream& out, const rhino::FaultState& f) {
 constexpr std::size_t kShownCollisions = 20;
 
 std::uint32_t lineOf(const runtime::Run& run, const runtime::CollisionEvent& e) {
-  return e.instruction < run.image().lines.size() ? run.image().lines[e.instruction] : 0;
+  return e.instruction < run.spec().image->lines.size() ? run.spec().image->lines[e.instruction] : 0;
 }
 
 void printCollisions(std::ostream& out, const runtime::Run& run) {
@@ -78,7 +78,7 @@ void printCollisions(std::ostream& out, const runtime::Run& run) {
 
 void printTextSummary(std::ostream& out, const RunReport& r) {
   if (!r.run || !r.run->outcome()) return;
-  const vm::Image& im = r.run->image();
+  const vm::Image& im = *r.run->spec().image;
   const vm::Machine& m = r.run->rig().machine();
   const vm::RunOutcome o = *r.run->outcome();
   const std::string where = o.ok() ? "" : fmt::format(" at line {}", im.lines[o.index]);
@@ -116,7 +116,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
   Json j;
   j["status"] = r.ok() ? "ok" : "error";
   if (r.run && r.run->outcome()) {
-    const vm::Image& im = r.run->image();
+    const vm::Image& im = *r.run->spec().image;
     const vm::Machine& m = r.run->rig().machine();
     j["time"] = static_cast<double>(m.now()) / 1e6;
     j["steps"] = r.run->outcome()->steps;

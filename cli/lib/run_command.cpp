@@ -85,7 +85,7 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   if (trace) trace->finish();
   report.run = run.get();
   if (controller) report.fault = controller->faultState();
-  const vm::Image& image = run->image();
+  const vm::Image& image = *run->spec().image;
   // The stop and the warnings of the run: the same words the editor shows (launch/run_diagnostics.h).
   // Under --strict the run's warnings fail the check (exit 1: the run is
   // what gave them).

@@ -63,8 +63,8 @@ std::string helpSettingsList() {
 CLI::Validator settingValidator() {
   return CLI::Validator(
       [](std::string& arg) {
-        RhinoSettings scratch = rhino::defaultSettings(Dialect::Mark3);
-        return rhino::applySettingArg(scratch, arg);
+        const diag::Result<RhinoSettings> applied = rhino::applySettingArg(rhino::defaultSettings(Dialect::Mark3), arg);
+        return applied ? std::string() : applied.failure().message;
       },
       "KEY=VALUE");
 }
@@ -227,9 +227,9 @@ std::string consoleCommand(EmulatorSession& s, const std::string& line) {
       s.out << fmt::format("  motor {}: position {}, step rate {}/s{}\n", m.letter, m.position, std::lround(m.rate),
                            m.used ? "" : " (not in the robot)");
   } else if (verb == "wait" && w.size() == 2) {
-    const stimuli::text::SecondsParse sec = stimuli::text::parseSeconds(w[1]);
-    if (!sec.error.empty()) return "wait: " + sec.error;
-    s.waitUntil = s.emu.now() + sec.micros;
+    const diag::Result<vm::Micros> sec = stimuli::text::parseSeconds(w[1]);
+    if (!sec) return "wait: " + sec.failure().message;
+    s.waitUntil = s.emu.now() + *sec;
   } else {
     return fmt::format("unknown command '{}' (type help)", line);
   }

@@ -77,17 +77,19 @@ class LineParser {
   bool lineNumber(int& n, std::string_view what) {
     const auto token = take(fmt::format("expected an {} number 1..8 after '{}'", what, what));
     if (!token) return false;
-    const auto parsed = text::parseLineNumber(token->text, what);
-    n = parsed.value;
-    return parsed.error.empty() || fail(*token, parsed.error);
+    const diag::Result<int> parsed = text::parseLineNumber(token->text, what);
+    if (!parsed) return fail(*token, parsed.failure().message);
+    n = *parsed;
+    return true;
   }
 
   bool seconds(vm::Micros& t, std::string_view missing) {
     const auto token = take(std::string(missing));
     if (!token) return false;
-    const auto parsed = text::parseSeconds(token->text);
-    t = parsed.micros;
-    return parsed.error.empty() || fail(*token, parsed.error);
+    const diag::Result<vm::Micros> parsed = text::parseSeconds(token->text);
+    if (!parsed) return fail(*token, parsed.failure().message);
+    t = *parsed;
+    return true;
   }
 
   // Nothing but blanks (or a comment) left on the line.
@@ -182,29 +184,31 @@ std::optional<Failure> parseLine(std::string_view line, Stimuli& out) {
 
 }  // namespace
 
-StimuliParse parseStimuli(std::string_view text, std::string_view fileName) {
-  StimuliParse result;
+diag::Result<Stimuli> parseStimuli(std::string_view text, std::string_view fileName) {
+  Stimuli stimuli;
+  std::vector<diag::Diagnostic> errors;
   text = diag::withoutByteOrderMark(text);
   std::size_t lineNo = 0;
   while (true) {
     ++lineNo;
     const auto newline = text.find('\n');
     const auto line = text.substr(0, newline);
-    const std::size_t rulesBefore = result.stimuli.rules.size();
-    if (auto failure = parseLine(line, result.stimuli))
-      result.errors.push_back({std::string(fileName), {clampToU32(lineNo), clampToU32(failure->offset + 1)},
-                               diag::Severity::Error, std::move(failure->message)});
-    if (result.stimuli.rules.size() > rulesBefore) result.stimuli.rules.back().line = clampToU32(lineNo);
+    const std::size_t rulesBefore = stimuli.rules.size();
+    if (auto failure = parseLine(line, stimuli))
+      errors.push_back({std::string(fileName), {clampToU32(lineNo), clampToU32(failure->offset + 1)},
+                        diag::Severity::Error, std::move(failure->message)});
+    if (stimuli.rules.size() > rulesBefore) stimuli.rules.back().line = clampToU32(lineNo);
     if (newline == std::string_view::npos) break;
     text.remove_prefix(newline + 1);
   }
-  return result;
+  if (!errors.empty()) return diag::Result<Stimuli>(std::move(errors));
+  return stimuli;
 }
 
-StimuliParse loadStimuliFile(const std::filesystem::path& path) {
+diag::Result<Stimuli> loadStimuliFile(const std::filesystem::path& path) {
   const auto name = path.string();
   diag::Result<std::string> read = diag::readInput(name, kMaxFileBytes, "cannot read the stimuli file");
-  if (!read) return StimuliParse{{}, std::move(read).failures()};
+  if (!read) return diag::Result<Stimuli>(std::move(read).failures());
   return parseStimuli(*read, name);
 }
 

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "diag/diagnostic.h"
+#include "diag/result.h"
 #include "vm/machine.h"
 
 namespace rs::stimuli {
@@ -46,30 +46,18 @@ struct Stimuli {
   bool operator==(const Stimuli&) const = default;
 };
 
-/// A parsed stimuli file: the model of every good line, and one error per
-/// bad line (all of them, in line order). Bad lines add nothing to the model.
-struct StimuliParse {
-  Stimuli stimuli;
-  /// One error per bad line: line and column 1-based, counting bytes; line
-  /// 0 when the whole file is at fault (it cannot be read).
-  std::vector<diag::Diagnostic> errors;
-};
-
-/// Parses stimuli text (any bytes). `fileName` only labels the errors.
-StimuliParse parseStimuli(std::string_view text, std::string_view fileName);
+/// Parses stimuli text (any bytes) into its model, or one failure per bad
+/// line (all of them, in line order: line and column 1-based, counting
+/// bytes). `fileName` only labels the failures.
+diag::Result<Stimuli> parseStimuli(std::string_view text, std::string_view fileName);
 
 /// Reads and parses a stimuli file; an unreadable or oversized file is one
-/// error with line 0.
-StimuliParse loadStimuliFile(const std::filesystem::path& path);
-
-/// One command-line stimulus: exactly one of the two is set.
-struct StimulusArgParse {
-  std::optional<InputChange> change;
-  std::optional<diag::Diagnostic> error;  // line 1, column within the argument
-};
+/// failure with line 0.
+diag::Result<Stimuli> loadStimuliFile(const std::filesystem::path& path);
 
 /// Parses the command-line form `N=ON@T` or `N=OFF@T` (e.g. `3=ON@1.5`;
-/// without `@T` the time is 0). `origin` labels the error (its `file`).
-StimulusArgParse parseStimulusArg(std::string_view arg, std::string_view origin = "command line");
+/// without `@T` the time is 0). `origin` labels the failure (its `file`;
+/// line 1, the column within the argument).
+diag::Result<InputChange> parseStimulusArg(std::string_view arg, std::string_view origin = "command line");
 
 }  // namespace rs::stimuli

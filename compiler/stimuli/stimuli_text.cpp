@@ -57,16 +57,16 @@ std::string quoted(std::string_view token) {
   return out + "'";
 }
 
-SecondsParse parseSeconds(std::string_view token) {
+diag::Result<vm::Micros> parseSeconds(std::string_view token) {
   if (token.starts_with('-') && looksLikeSeconds(token.substr(1)))
-    return {0, fmt::format("time must not be negative, got {}", quoted(token))};
+    return diag::refusal(fmt::format("time must not be negative, got {}", quoted(token)));
   if (!looksLikeSeconds(token))
-    return {0, fmt::format("bad time {}: expected seconds such as 2 or 1.5", quoted(token))};
+    return diag::refusal(fmt::format("bad time {}: expected seconds such as 2 or 1.5", quoted(token)));
   const auto dot = token.find('.');
   const auto whole = stripLeadingZeros(token.substr(0, dot));
   const auto decimals = dot == std::string_view::npos ? std::string_view{} : token.substr(dot + 1);
   if (decimals.size() > kMaxDecimals)
-    return {0, fmt::format("time {} has more than {} decimals", quoted(token), kMaxDecimals)};
+    return diag::refusal(fmt::format("time {} has more than {} decimals", quoted(token), kMaxDecimals));
   // 7 digits hold the largest allowed whole part (1000000) without overflow.
   vm::Micros micros = whole.size() <= 7 ? digitsValue(whole) * 1'000'000 : kMaxStimulusTime + 1;
   std::int64_t scale = 100'000;
@@ -75,21 +75,19 @@ SecondsParse parseSeconds(std::string_view token) {
     scale /= 10;
   }
   if (micros > kMaxStimulusTime)
-    return {0, fmt::format("time {} is past the limit of 1000000 seconds", quoted(token))};
-  return {micros, {}};
+    return diag::refusal(fmt::format("time {} is past the limit of 1000000 seconds", quoted(token)));
+  return micros;
 }
 
-LineNumberParse parseLineNumber(std::string_view token, std::string_view what) {
+diag::Result<int> parseLineNumber(std::string_view token, std::string_view what) {
   if (!allDigits(token))
-    return {0,
-            fmt::format("expected an {} number 1..{}, got {}", what, vm::kIoCount, quoted(token))};
+    return diag::refusal(fmt::format("expected an {} number 1..{}, got {}", what, vm::kIoCount, quoted(token)));
   const auto digits = stripLeadingZeros(token);
   const int value = digits.size() == 1 ? digits[0] - '0' : 0;  // longer is out of range
   if (value < 1 || value > vm::kIoCount)
-    return {0,
-            fmt::format("{} number must be 1..{}, got {}", what, vm::kIoCount,
-                        digits.size() <= kMaxQuotedBytes ? std::string(digits) : quoted(digits))};
-  return {value, {}};
+    return diag::refusal(fmt::format("{} number must be 1..{}, got {}", what, vm::kIoCount,
+                                     digits.size() <= kMaxQuotedBytes ? std::string(digits) : quoted(digits)));
+  return value;
 }
 
 }  // namespace rs::stimuli::text

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "diag/result.h"
 #include "vm/machine.h"
 
 namespace rs::stimuli::text {
@@ -17,23 +18,14 @@ bool equalsKeyword(std::string_view token, std::string_view keyword);
 /// become \xNN and a long token is cut short with "...".
 std::string quoted(std::string_view token);
 
-/// Seconds as exact microseconds, or an error message (`micros` is then 0).
-struct SecondsParse {
-  vm::Micros micros = 0;
-  std::string error;
-};
+/// Seconds as exact microseconds: parses `DIGITS [. DIGITS]` with at most
+/// 6 decimals and at most 1e6 s, digit by digit: no floating point, no
+/// overflow on any length. A failure has no place (diag::refusal): the
+/// caller knows where the token stands.
+diag::Result<vm::Micros> parseSeconds(std::string_view token);
 
-/// Parses `DIGITS [. DIGITS]` with at most 6 decimals and at most 1e6 s,
-/// digit by digit: no floating point, no overflow on any length.
-SecondsParse parseSeconds(std::string_view token);
-
-/// An input or output line number 1..8, or an error message.
-struct LineNumberParse {
-  int value = 0;
-  std::string error;
-};
-
-/// Parses a line number; `what` ("input", "output") names it in errors.
-LineNumberParse parseLineNumber(std::string_view token, std::string_view what);
+/// An input or output line number 1..8; `what` ("input", "output") names
+/// it in the failure, which has no place either.
+diag::Result<int> parseLineNumber(std::string_view token, std::string_view what);
 
 }  // namespace rs::stimuli::text

@@ -15,21 +15,21 @@ namespace {
 
 constexpr std::string_view kForm = "(the form is N=ON@T or N=OFF@T, e.g. 3=ON@1.5)";
 
-StimulusArgParse failAt(std::string_view origin, std::size_t offset, std::string message) {
+diag::Diagnostic failAt(std::string_view origin, std::size_t offset, std::string message) {
   const std::uint32_t column = offset >= UINT32_MAX ? UINT32_MAX : static_cast<std::uint32_t>(offset) + 1;
-  return {std::nullopt, diag::Diagnostic{std::string(origin), {1, column}, diag::Severity::Error, std::move(message)}};
+  return {std::string(origin), {1, column}, diag::Severity::Error, std::move(message)};
 }
 
 }  // namespace
 
-StimulusArgParse parseStimulusArg(std::string_view arg, std::string_view origin) {
+diag::Result<InputChange> parseStimulusArg(std::string_view arg, std::string_view origin) {
   const auto equals = arg.find('=');
   if (equals == std::string_view::npos)
     return failAt(origin, arg.size(), fmt::format("expected '=' after the input number {}", kForm));
   if (equals == 0)
     return failAt(origin, 0, fmt::format("expected an input number 1..8 before '=' {}", kForm));
   const auto number = text::parseLineNumber(arg.substr(0, equals), "input");
-  if (!number.error.empty()) return failAt(origin, 0, number.error);
+  if (!number) return failAt(origin, 0, number.failure().message);
 
   const auto at = arg.find('@', equals);
   const auto state = arg.substr(equals + 1, at == std::string_view::npos ? at : at - equals - 1);
@@ -39,13 +39,13 @@ StimulusArgParse parseStimulusArg(std::string_view arg, std::string_view origin)
                   state.empty()
                       ? fmt::format("expected ON or OFF after '=' {}", kForm)
                       : fmt::format("expected ON or OFF after '=', got {}", text::quoted(state)));
-  if (at == std::string_view::npos) return {InputChange{0, number.value, on}, std::nullopt};
+  if (at == std::string_view::npos) return InputChange{0, *number, on};
 
   const auto time = arg.substr(at + 1);
   if (time.empty()) return failAt(origin, at + 1, "expected a time in seconds after '@'");
   const auto seconds = text::parseSeconds(time);
-  if (!seconds.error.empty()) return failAt(origin, at + 1, seconds.error);
-  return {InputChange{seconds.micros, number.value, on}, std::nullopt};
+  if (!seconds) return failAt(origin, at + 1, seconds.failure().message);
+  return InputChange{*seconds, *number, on};
 }
 
 }  // namespace rs::stimuli

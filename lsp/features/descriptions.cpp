@@ -207,9 +207,9 @@ Json descriptionDefinition(const Document& doc, Encoding enc, Position at, const
 }
 
 Json stimuliDiagnostics(const Document& doc, Encoding enc) {
-  const stimuli::StimuliParse parsed = stimuli::parseStimuli(doc.text(), nameOf(doc));
+  const diag::Result<stimuli::Stimuli> parsed = stimuli::parseStimuli(doc.text(), nameOf(doc));
   Json out = Json::array();
-  for (const diag::Diagnostic& d : parsed.errors) {
+  for (const diag::Diagnostic& d : parsed.failures()) {
     // Stimuli columns count bytes: convert through UTF-8.
     const Position start = d.pos.line == 0 ? Position{} : Position{d.pos.line - 1, d.pos.col - 1};
     const std::uint32_t line = start.line;
@@ -238,13 +238,13 @@ Json stimuliSymbols(const Document& doc, Encoding enc) {
 Json stimuliHover(const Document& doc, Encoding enc, Position at) {
   const std::string_view code = codeOf(doc.line(at.line));
   if (code.find_first_not_of(" \t") == std::string_view::npos) return nullptr;
-  const stimuli::StimuliParse one = stimuli::parseStimuli(code, "line");
-  if (!one.errors.empty()) return nullptr;
+  const diag::Result<stimuli::Stimuli> one = stimuli::parseStimuli(code, "line");
+  if (!one) return nullptr;
   const auto state = [](bool on) { return on ? "ON" : "OFF"; };
   std::string text;
-  for (const stimuli::InputChange& c : one.stimuli.changes)
+  for (const stimuli::InputChange& c : one->changes)
     text = fmt::format("at {} input {} turns {}", formatSeconds(c.at), c.input, state(c.on));
-  for (const stimuli::ReactiveRule& r : one.stimuli.rules)
+  for (const stimuli::ReactiveRule& r : one->rules)
     text = fmt::format("whenever output {} turns {}, input {} turns {} {} later", r.output, state(r.outputOn), r.input,
                        state(r.inputOn), formatSeconds(r.delay));
   if (text.empty()) return nullptr;

@@ -159,11 +159,11 @@ std::vector<std::uint8_t> encodeCell(const Workcell& cell) {
   return o.out;
 }
 
-CellDecode decodeCell(std::span<const std::uint8_t> bytes) {
+diag::Result<Workcell> decodeCell(std::span<const std::uint8_t> bytes) {
   In in(bytes);
-  if (in.u32() != kCellMagic) return {std::nullopt, "cell section: bad magic number"};
+  if (in.u32() != kCellMagic) return diag::refusal("cell section: bad magic number");
   if (const std::uint16_t v = in.u16(); v != kCellVersion)
-    return {std::nullopt, fmt::format("cell section: version {} is not supported", v)};
+    return diag::refusal(fmt::format("cell section: version {} is not supported", v));
   Workcell cell;
   cell.name = in.name();
   const std::size_t nr = in.count(16, "robot");
@@ -179,8 +179,8 @@ CellDecode decodeCell(std::span<const std::uint8_t> bytes) {
     cell.objects.push_back({std::move(s), place});
   }
   if (!in.failed && !in.atEnd()) in.fail("unexpected bytes after the last object");
-  if (in.failed) return {std::nullopt, "cell section: " + in.error};
-  return {std::move(cell), {}};
+  if (in.failed) return diag::refusal("cell section: " + in.error);
+  return cell;
 }
 
 }  // namespace rs::workcell

@@ -9,19 +9,16 @@
 #include <string>
 #include <vector>
 
+#include "diag/result.h"
 #include "model/workcell/model.h"
 
 namespace rs::workcell {
 
 std::vector<std::uint8_t> encodeCell(const Workcell& cell);
 
-struct CellDecode {
-  std::optional<Workcell> cell;
-  std::string error;  // set when cell is empty
-};
-
 /// Decodes and re-derives every robot's chain; a malformed or hostile blob
-/// gets an error, never undefined behaviour.
-CellDecode decodeCell(std::span<const std::uint8_t> bytes);
+/// gets a failure ("cell section: ..."), never undefined behaviour. The
+/// failure has no place: the image's reader names the file.
+diag::Result<Workcell> decodeCell(std::span<const std::uint8_t> bytes);
 
 }  // namespace rs::workcell

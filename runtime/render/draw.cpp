@@ -140,7 +140,9 @@ cairo_status_t readBytes(void* closure, unsigned char* data, unsigned int length
   return CAIRO_STATUS_SUCCESS;
 }
 
-Encoded failed(cairo_status_t status) { return {{}, std::string("cairo: ") + cairo_status_to_string(status)}; }
+diag::Diagnostic failed(cairo_status_t status) {
+  return diag::refusal(std::string("cairo: ") + cairo_status_to_string(status));
+}
 
 }  // namespace
 
@@ -154,13 +156,13 @@ std::optional<ImageFormat> formatFromPath(std::string_view path) {
   return std::nullopt;
 }
 
-Encoded encodePicture(const Picture& picture, ImageFormat format) {
+diag::Result<std::vector<std::uint8_t>> encodePicture(const Picture& picture, ImageFormat format) {
   if (picture.width <= 0 || picture.height <= 0 || picture.width > 16384 || picture.height > 16384)
-    return {{}, "image size out of range (1..16384 pixels)"};
-  Encoded result;
+    return diag::refusal("image size out of range (1..16384 pixels)");
+  std::vector<std::uint8_t> bytes;
   Surface surface(format == ImageFormat::Png
                       ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, picture.width, picture.height)
-                      : cairo_svg_surface_create_for_stream(appendBytes, &result.bytes, picture.width, picture.height));
+                      : cairo_svg_surface_create_for_stream(appendBytes, &bytes, picture.width, picture.height));
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return failed(cairo_surface_status(surface.get()));
   {
     Context cr(cairo_create(surface.get()));
@@ -171,7 +173,7 @@ Encoded encodePicture(const Picture& picture, ImageFormat format) {
     cairo_surface_flush(surface.get());
     const unsigned char* data = cairo_image_surface_get_data(surface.get());
     const int stride = cairo_image_surface_get_stride(surface.get());
-    result.bytes = encodePng(picture.width, picture.height, [&](int y, std::uint8_t* rgb) {
+    bytes = encodePng(picture.width, picture.height, [&](int y, std::uint8_t* rgb) {
       const unsigned char* row = data + static_cast<std::ptrdiff_t>(y) * stride;
       for (int x = 0; x < picture.width; ++x, rgb += 3) {
         std::uint32_t px;
@@ -181,28 +183,23 @@ Encoded encodePicture(const Picture& picture, ImageFormat format) {
         rgb[2] = static_cast<std::uint8_t>(px);
       }
     });
-    if (result.bytes.empty()) return {{}, "zlib: cannot compress the image"};
+    if (bytes.empty()) return diag::refusal("zlib: cannot compress the image");
   } else {
     cairo_surface_finish(surface.get());
     if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return failed(cairo_surface_status(surface.get()));
   }
-  return result;
+  return bytes;
 }
 
-Decoded decodePng(const std::vector<std::uint8_t>& png) {
+diag::Result<Decoded> decodePng(const std::vector<std::uint8_t>& png) {
   Reader reader{&png};
   Surface surface(cairo_image_surface_create_from_png_stream(readBytes, &reader));
-  Decoded out;
-  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
-    out.error = std::string("cairo: ") + cairo_status_to_string(cairo_surface_status(surface.get()));
-    return out;
-  }
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return failed(cairo_surface_status(surface.get()));
   cairo_surface_flush(surface.get());
   const cairo_format_t format = cairo_image_surface_get_format(surface.get());
-  if (format != CAIRO_FORMAT_RGB24 && format != CAIRO_FORMAT_ARGB32) {
-    out.error = "unsupported PNG pixel format";
-    return out;
-  }
+  if (format != CAIRO_FORMAT_RGB24 && format != CAIRO_FORMAT_ARGB32)
+    return diag::refusal("unsupported PNG pixel format");
+  Decoded out;
   out.width = cairo_image_surface_get_width(surface.get());
   out.height = cairo_image_surface_get_height(surface.get());
   const int stride = cairo_image_surface_get_stride(surface.get());

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "diag/result.h"
 #include "runtime/render/picture.h"
 
 namespace rs::render {
@@ -30,22 +31,18 @@ enum class ImageFormat : std::uint8_t { Png, Svg };
 /// From the file name: ".png" or ".svg" (any case); nothing otherwise.
 std::optional<ImageFormat> formatFromPath(std::string_view path);
 
-struct Encoded {
-  std::vector<std::uint8_t> bytes;
-  std::string error;  ///< set when bytes is empty
-};
-
-/// The picture as a PNG or SVG file's bytes.
-Encoded encodePicture(const Picture& picture, ImageFormat format);
+/// The picture as a PNG or SVG file's bytes (never empty), or why not (a
+/// size out of range, cairo's or zlib's refusal) as a failure with no
+/// place: the caller names the output file.
+diag::Result<std::vector<std::uint8_t>> encodePicture(const Picture& picture, ImageFormat format);
 
 /// A decoded image, 8-bit RGB per pixel (for tests and tools).
 struct Decoded {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgb;  ///< width·height·3 bytes, rows top down
-  std::string error;
 };
 
-/// Decodes PNG bytes with cairo.
-Decoded decodePng(const std::vector<std::uint8_t>& png);
+/// Decodes PNG bytes with cairo, or says why not (a failure with no place).
+diag::Result<Decoded> decodePng(const std::vector<std::uint8_t>& png);
 
 }  // namespace rs::render

@@ -9,7 +9,7 @@ namespace rs::render {
 Moment momentOf(runtime::Run& run, vm::Micros at) {
   Moment m;
   m.at = at;
-  m.outcome = run.runUntilTime(at);
+  m.outcome = run.runUntil({.time = at});
   m.clock = run.rig().clock();
   m.reached = m.outcome.ok() || (m.outcome.paused() && run.pauseCause() == vm::StopReason::Time) ||
               (m.outcome.reason == vm::StopReason::TimeLimit && m.clock > at);

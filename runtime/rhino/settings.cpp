@@ -139,6 +139,9 @@ RhinoSettings defaultSettings(Dialect d) {
   return s;
 }
 
+namespace {
+
+// Applies one `key=value`; returns "" or what is wrong.
 std::string applySetting(RhinoSettings& s, std::string_view rawKey, std::string_view rawValue) {
   const std::string key = lower(trim(rawKey));
   const std::string_view value = trim(rawValue);
@@ -259,13 +262,17 @@ std::string applySetting(RhinoSettings& s, std::string_view rawKey, std::string_
   return {};
 }
 
-std::string applySettingArg(RhinoSettings& s, std::string_view arg) {
+}  // namespace
+
+diag::Result<RhinoSettings> applySettingArg(RhinoSettings s, std::string_view arg) {
   const std::size_t eq = arg.find('=');
-  if (eq == std::string_view::npos) return fmt::format("serial setting '{}': expected KEY=VALUE", arg);
-  return applySetting(s, arg.substr(0, eq), arg.substr(eq + 1));
+  std::string error = eq == std::string_view::npos ? fmt::format("serial setting '{}': expected KEY=VALUE", arg)
+                                                   : applySetting(s, arg.substr(0, eq), arg.substr(eq + 1));
+  if (!error.empty()) return diag::Diagnostic{"--serial-set", {}, diag::Severity::Error, std::move(error)};
+  return s;
 }
 
-std::vector<diag::Diagnostic> applySettingsText(RhinoSettings& s, std::string_view text, std::string_view name) {
+diag::Result<RhinoSettings> applySettingsText(RhinoSettings s, std::string_view text, std::string_view name) {
   std::vector<diag::Diagnostic> errors;
   text = diag::withoutByteOrderMark(text);
   std::uint32_t lineNo = 0;
@@ -287,7 +294,8 @@ std::vector<diag::Diagnostic> applySettingsText(RhinoSettings& s, std::string_vi
     const std::uint32_t col = offset >= UINT32_MAX ? UINT32_MAX : static_cast<std::uint32_t>(offset) + 1;
     errors.push_back({std::string(name), {lineNo, col}, diag::Severity::Error, e});
   }
-  return errors;
+  if (!errors.empty()) return diag::Result<RhinoSettings>(std::move(errors));
+  return s;
 }
 
 std::vector<std::pair<std::string, std::string>> listSettings(const RhinoSettings& s) {

@@ -5,13 +5,14 @@
 // key for `--serial-set KEY=VALUE`; the table is in docs/serial.md.
 #pragma once
 
-#include "diag/diagnostic.h"
 #include <array>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "diag/diagnostic.h"
+#include "diag/result.h"
 #include "runtime/rhino/serial_port.h"
 
 namespace rs::rhino {
@@ -70,13 +71,13 @@ struct RhinoSettings {
 /// inputs active high).
 RhinoSettings defaultSettings(Dialect d);
 
-/// Applies one `key=value`; returns "" or what is wrong.
-std::string applySetting(RhinoSettings& s, std::string_view key, std::string_view value);
-/// Applies "KEY=VALUE" (the --serial-set form).
-std::string applySettingArg(RhinoSettings& s, std::string_view arg);
-/// Applies a settings file's text: one `key = value` per line, `#` comments.
-/// One error per bad line, at the key's line and column (`name` is its file).
-std::vector<diag::Diagnostic> applySettingsText(RhinoSettings& s, std::string_view text, std::string_view name);
+/// `s` with "KEY=VALUE" (the --serial-set form) applied, or what is wrong
+/// with it, as a failure of `--serial-set`.
+diag::Result<RhinoSettings> applySettingArg(RhinoSettings s, std::string_view arg);
+/// `s` with a settings file's text applied: one `key = value` per line, `#`
+/// comments. Or one failure per bad line, at the key's line and column
+/// (`name` is its file).
+diag::Result<RhinoSettings> applySettingsText(RhinoSettings s, std::string_view text, std::string_view name);
 
 /// Every key with its current value, in documentation order.
 std::vector<std::pair<std::string, std::string>> listSettings(const RhinoSettings& s);

@@ -67,7 +67,7 @@ std::optional<diag::Diagnostic> gripperWarning(const Run& run, const std::string
   const World* world = run.rig().world();
   const auto first = run.rig().firstEmptyClose();
   if (!world || !first || world->takeCount() > 0) return std::nullopt;
-  const vm::Image& image = run.image();
+  const vm::Image& image = *run.spec().image;
   const std::uint32_t index = first->first;
   const EmptyClose& e = first->second;
   const std::uint64_t closes = world->closeCount();

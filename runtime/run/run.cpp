@@ -90,45 +90,19 @@ std::optional<vm::RunOutcome> Run::outcome() const {
   return interpreter_->state().outcome;
 }
 
-vm::RunOutcome Run::step(std::uint64_t n) {
-  RunUntil until;
-  until.steps = interpreter_->steps() + std::min(n, UINT64_MAX - interpreter_->steps());
-  return runUntil(until);
-}
-
-vm::RunOutcome Run::runUntilTime(vm::Micros t) {
-  RunUntil until;
-  until.time = t;
-  return runUntil(until);
-}
-
-vm::RunOutcome Run::runUntilLine(std::uint32_t line) {
-  RunUntil until;
-  until.lines.push_back(line);
-  return runUntil(until);
-}
-
 std::optional<std::uint32_t> labelInstruction(const vm::Image& image, std::string_view label) {
   for (const vm::Label& l : image.labels)
     if (base::sameName(image.labelName(l), label)) return l.index;
   return std::nullopt;
 }
 
-std::optional<vm::RunOutcome> Run::runUntilLabel(std::string_view label) {
-  const std::optional<std::uint32_t> at = labelInstruction(*spec_.image, label);
-  if (!at) return std::nullopt;
-  RunUntil until;
-  until.instructions.push_back(*at);
-  return runUntil(until);
-}
-
 // Why the interpreter paused; nullopt at the end of a slice (go on).
 std::optional<vm::StopReason> Run::causeOf(const vm::RunOutcome& outcome, const RunUntil& until,
-                                           std::uint64_t sliceEnd) const {
+                                           std::uint64_t stepEnd, std::uint64_t sliceEnd) const {
   using vm::StopReason;
   if (!outcome.paused()) return outcome.reason;
   if (observers_->conditionMet) return StopReason::Condition;
-  if (interpreter_->steps() >= until.steps) return StopReason::Step;
+  if (interpreter_->steps() >= stepEnd) return StopReason::Step;
   if (rig_->clock() > until.time) return StopReason::Time;
   if (outcome.index < breakpoints_.size() && breakpoints_[outcome.index]) return StopReason::Breakpoint;
   if (interpreter_->steps() >= sliceEnd) return std::nullopt;
@@ -155,15 +129,17 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
   observers_->conditionMet = false;
   vm::StepObserver* observer = observers_->any() ? observers_.get() : nullptr;
 
+  const std::uint64_t stepEnd = until.stepEnd(interpreter_->steps());
+
   vm::RunOutcome outcome;
   while (true) {
     const std::uint64_t sliceEnd = interpreter_->steps() + kSlice;
     vm::PausePoints pause;
-    pause.atSteps = std::min(until.steps, sliceEnd);
+    pause.atSteps = std::min(stepEnd, sliceEnd);
     pause.afterTime = until.time;
     if (anyBreak) pause.before = breakpoints_;
     outcome = interpreter_->run(spec_.limits, observer, pause);
-    const std::optional<vm::StopReason> cause = causeOf(outcome, until, sliceEnd);
+    const std::optional<vm::StopReason> cause = causeOf(outcome, until, stepEnd, sliceEnd);
     if (cause) {
       cause_ = *cause;
       break;

@@ -1,7 +1,7 @@
 // A run of a program: the one place where an image, its workcell, the input
 // stimuli, the limits, a machine and the observers are put together. It can
-// run to the end, step, run until an instruction, a source line, a
-// simulated time or a condition, pause (also when asked from another
+// run to the end, or until a step count, an instruction, a source line, a
+// simulated time or a condition (one RunUntil says which), pause (also when asked from another
 // thread) and go on, and hand out what a debugger, a test runner or a
 // teach pendant needs to look at. On the simulated machine its whole state
 // can be saved and put back (snapshot/restore): the same run goes on the
@@ -12,6 +12,7 @@
 //   vm::RunOutcome outcome = run.runToEnd();
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -44,10 +45,18 @@ struct RunSpec {
 /// Where a run pauses. Unset conditions cost nothing.
 struct RunUntil {
   std::uint64_t steps = UINT64_MAX;        ///< total instructions executed reaches this
+  std::uint64_t moreSteps = UINT64_MAX;    ///< this many instructions run in this call (a step: 1)
   vm::Micros time = INT64_MAX;             ///< the clock passes this (vm::PausePoints::afterTime)
-  std::vector<std::uint32_t> instructions;  ///< before one of these runs (0-based), not the first
-  std::vector<std::uint32_t> lines;         ///< before the first instruction of one of these source lines
-  std::function<bool(const class Run&)> when;  ///< after a step, when this says so
+  // Every member has its initializer, so that `runUntil({.time = t})` names
+  // only what it sets (GCC warns of a member left without one).
+  std::vector<std::uint32_t> instructions{};  ///< before one of these runs (0-based), not the first
+  std::vector<std::uint32_t> lines{};         ///< before the first instruction of one of these source lines
+  std::function<bool(const class Run&)> when{};  ///< after a step, when this says so
+
+  /// The total step count at which a call that starts at `now` pauses.
+  std::uint64_t stepEnd(std::uint64_t now) const {
+    return std::min(steps, now + std::min(moreSteps, UINT64_MAX - now));
+  }
 };
 
 /// A call frame as a debugger shows it: the GOSUB that made it.
@@ -111,16 +120,10 @@ class Run {
 
   /// Runs until `until` says to pause, or the program ends, fails or hits
   /// a limit (or a pause is requested): the outcome's reason is Paused
-  /// when it did not finish. The shorthands below each fill one condition.
+  /// when it did not finish. A step is `runUntil({.moreSteps = 1})`, a
+  /// label's place `runUntil({.instructions = {*labelInstruction(...)}})`.
   vm::RunOutcome runUntil(const RunUntil& until);
   vm::RunOutcome runToEnd() { return runUntil({}); }
-  /// `n` instructions (fewer if the run finishes).
-  vm::RunOutcome step(std::uint64_t n = 1);
-  vm::RunOutcome runUntilTime(vm::Micros t);
-  vm::RunOutcome runUntilLine(std::uint32_t line);
-  /// Before the instruction a label names (as the source spells it, any
-  /// case); nullopt, without running, when the program has no such label.
-  std::optional<vm::RunOutcome> runUntilLabel(std::string_view label);
   /// Why the last call paused (vm/stop_reason.h): Step (RunUntil::steps),
   /// Time, Breakpoint (an instruction or line), Condition or Pause (asked
   /// for); when it did not pause, its outcome's reason; Paused before any
@@ -135,10 +138,9 @@ class Run {
   /// The run at its current moment, to look at.
   RunView view() const;
   /// What the program runs on: the cell, the machine, the world, the
-  /// collisions, the clock, the motors.
+  /// collisions, the clock, the motors. The program is `spec().image`.
   const Rig& rig() const { return *rig_; }
   Rig& rig() { return *rig_; }
-  const vm::Image& image() const { return *spec_.image; }
   const RunSpec& spec() const { return spec_; }
   const vm::Interpreter& interpreter() const { return *interpreter_; }
   /// The log, or null when the spec did not ask for one.
@@ -153,7 +155,7 @@ class Run {
   class Observers;
   void build(std::unique_ptr<Rig> rig);
   std::optional<vm::StopReason> causeOf(const vm::RunOutcome& outcome, const RunUntil& until,
-                                        std::uint64_t sliceEnd) const;
+                                        std::uint64_t stepEnd, std::uint64_t sliceEnd) const;
 
   RunSpec spec_;
   std::unique_ptr<Rig> rig_;

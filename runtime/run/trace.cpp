@@ -72,7 +72,8 @@ void TraceWriter::collisionEvents() {
   const runtime::CollisionWatch* watch = run_.rig().collisionWatch();
   for (; collisionsShown_ < events.size() && watch; ++collisionsShown_) {
     const runtime::CollisionEvent& e = events[collisionsShown_];
-    const std::uint32_t line = e.instruction < run_.image().lines.size() ? run_.image().lines[e.instruction] : 0;
+    const auto& lines = run_.spec().image->lines;
+    const std::uint32_t line = e.instruction < lines.size() ? lines[e.instruction] : 0;
     if (format_ == TraceFormat::Text) {
       out_ << fmt::format("{:>10}  collision at line {}: {}\n", base::formatSeconds(e.at), line,
                           base::safeText(watch->describe(e.contact)));

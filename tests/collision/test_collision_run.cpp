@@ -29,7 +29,7 @@ TEST_CASE("a restored run finds the same collisions again", "[collision][runtime
   spec.cell = std::make_shared<const rs::workcell::Workcell>(cell);
   spec.collisions = rs::runtime::CollisionMode::Warn;
   rs::runtime::Run run(spec);
-  run.step(1);
+  run.runUntil({.moreSteps = 1});
   const rs::runtime::RunSnapshot after1 = run.snapshot();
   CHECK(after1.rig.collisions.size() == 1);
   REQUIRE(run.runToEnd().ok());

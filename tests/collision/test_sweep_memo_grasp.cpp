@@ -64,7 +64,8 @@ TEST_CASE("a pick-and-place loop is swept once: later loops come from memory", "
   // Two loops: the block goes from its placement to the place and back, so
   // the second loop's world is the first loop's with the block where the
   // first left it; from the third on, each loop's world is the one before.
-  REQUIRE(run.step(2 * 15 + 1).reason == rs::vm::StopReason::Paused);  // SET, then 15 instructions a loop
+  // SET, then 15 instructions a loop
+  REQUIRE(run.runUntil({.moreSteps = 2 * 15 + 1}).reason == rs::vm::StopReason::Paused);
   const rs::runtime::CollisionWatch* watch = run.rig().collisionWatch();
   REQUIRE(watch);
   const std::uint64_t sweptInTwo = watch->moves() - watch->remembered();

@@ -4,7 +4,7 @@
 // one before (RunSnapshot: interpreter, machine, input schedule, world),
 // stepping back lands on the state a fresh run reaches after as many
 // instructions, and goto-time T gives the state of a fresh run paused at T
-// (Run::runUntilTime). Small snapshot intervals make the re-execution
+// (Run::runUntil with a time). Small snapshot intervals make the re-execution
 // start from many different snapshots. CI runs a modest count;
 // ROBOTSIM_DEBUG_PROPERTY_RUNS=N runs N programs (2,000 take about a second).
 #include <catch2/catch.hpp>
@@ -55,7 +55,7 @@ void checkProgram(const rs::runtime::RunSpec& spec, std::mt19937_64& rng) {
     const std::uint64_t landed = session.run().interpreter().steps();
     REQUIRE(landed == at - std::min(back, at));
     Run fresh(spec);
-    fresh.step(landed);
+    fresh.runUntil({.moreSteps = landed});
     REQUIRE(session.run().snapshot() == fresh.snapshot());
     session.step(at - landed);
     REQUIRE(session.run().snapshot() == before);
@@ -63,7 +63,7 @@ void checkProgram(const rs::runtime::RunSpec& spec, std::mt19937_64& rng) {
     const rs::vm::Micros t = static_cast<rs::vm::Micros>(rng() % static_cast<std::uint64_t>(end + 2));
     session.gotoTime(t);
     Run timed(spec);
-    timed.runUntilTime(t);
+    timed.runUntil({.time = t});
     INFO("goto-time " << t << " us of " << end);
     REQUIRE(session.run().snapshot() == timed.snapshot());
   }
@@ -138,7 +138,7 @@ TEST_CASE("snapshots over the memory budget: the interval doubles, memory stays 
     else session.step(at - now);
     REQUIRE(session.run().interpreter().steps() == at);
     Run fresh(spec);
-    fresh.step(at);
+    fresh.runUntil({.moreSteps = at});
     REQUIRE(session.run().snapshot() == fresh.snapshot());
     session.step(rng() % 100);
   }

@@ -8,8 +8,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   for (const rs::rhino::Dialect d : {rs::rhino::Dialect::Mark3, rs::rhino::Dialect::Mark4}) {
-    rs::rhino::RhinoSettings settings = rs::rhino::defaultSettings(d);
-    (void)rs::rhino::applySettingsText(settings, text, "fuzz.cfg");
+    (void)rs::rhino::applySettingsText(rs::rhino::defaultSettings(d), text, "fuzz.cfg");
   }
   return 0;
 }

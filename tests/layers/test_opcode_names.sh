@@ -10,32 +10,9 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 check="$root/scripts/check-opcode-names.sh"
 bash "$check" "$root"
 
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-copy() {
-  rm -rf "$work/tree" && mkdir -p "$work/tree"
-  (cd "$root" && find base diag model vm stdlib compiler runtime launch teach testrun wire lsp debug dap cli bench \
-     \( -name '*.h' -o -name '*.cpp' \) -type f -print | tar cf - -T -) | tar xf - -C "$work/tree"
-}
-expect_failure() {  # FILE LINE-TO-PLANT EXPECTED-TEXT
-  copy
-  echo "$2" >> "$work/tree/$1"
-  if out=$(bash "$check" "$work/tree" 2>&1); then
-    echo "FAIL: the check passed with '$2' planted in $1" >&2; exit 1
-  fi
-  if ! grep -qF "$3" <<<"$out"; then
-    echo "FAIL: expected '$3' in:" >&2; echo "$out" >&2; exit 1
-  fi
-  echo "ok: '$2' in $1 is refused"
-}
-expect_pass() {  # FILE LINE-TO-PLANT
-  copy
-  echo "$2" >> "$work/tree/$1"
-  if ! out=$(bash "$check" "$work/tree" 2>&1); then
-    echo "FAIL: the check refused '$2' in $1:" >&2; echo "$out" >&2; exit 1
-  fi
-  echo "ok: '$2' in $1 passes"
-}
+copied=(base diag model vm stdlib compiler runtime launch teach testrun wire lsp debug dap cli bench
+        \( -name '*.h' -o -name '*.cpp' \) -type f)
+source "$root/tests/support/planted_tree.sh"
 lines=$(wc -l < "$root/testrun/coverage.cpp")
 expect_failure testrun/coverage.cpp 'bool b(vm::Op op) { return op == vm::Op::JmpIn; }' \
   "testrun/coverage.cpp:$((lines + 1)): error: opcode Op::JmpIn matched by name outside vm/"

@@ -353,8 +353,8 @@ std::string compiledImage(const TempDir& dir) {
 // True if the decoded cell's first robot gives exactly the image's motor table.
 bool cellMatchesMotors(const rs::vm::Image& im) {
   const auto decoded = rs::workcell::decodeCell(im.cell);
-  if (!decoded.cell || decoded.cell->robots.empty()) return false;
-  const auto motors = rs::compiler::motorTable(decoded.cell->robots.front().robot);
+  if (!decoded || decoded->robots.empty()) return false;
+  const auto motors = rs::compiler::motorTable(decoded->robots.front().robot);
   if (motors.size() != im.motors.size()) return false;
   for (std::size_t i = 0; i < motors.size(); ++i) {
     const auto &a = motors[i], &b = im.motors[i];
@@ -443,11 +443,11 @@ TEST_CASE("cell wiring: disasm and check refuse a corrupt cell section as run do
     }
   }
   SECTION("a cell whose robot does not match the motor table") {
-    rs::workcell::CellDecode decoded = rs::workcell::decodeCell(loaded.value().cell);
-    REQUIRE(decoded.cell);
-    decoded.cell->robots.front().robot.joints.front().max = 10;
+    rs::diag::Result<rs::workcell::Workcell> decoded = rs::workcell::decodeCell(loaded.value().cell);
+    REQUIRE(decoded.ok());
+    decoded->robots.front().robot.joints.front().max = 10;
     rs::vm::Image im = loaded.value();
-    im.cell = rs::workcell::encodeCell(*decoded.cell);
+    im.cell = rs::workcell::encodeCell(*decoded);
     const auto bytes = rs::vm::writeImage(im);
     const std::string path = dir.write("mismatch.rsb", std::string(bytes.begin(), bytes.end()));
     for (const char* cmd : {"run", "check", "disasm"}) {
@@ -468,11 +468,11 @@ TEST_CASE("cell wiring: a cell section name with a control character is refused"
   const rs::diag::Result<rs::vm::Image> loaded = rs::vm::loadImage(compiledImage(dir));
   REQUIRE(loaded.ok());
   const auto forged = [&](auto change) {
-    rs::workcell::CellDecode decoded = rs::workcell::decodeCell(loaded.value().cell);
-    REQUIRE(decoded.cell);
-    change(*decoded.cell);
+    rs::diag::Result<rs::workcell::Workcell> decoded = rs::workcell::decodeCell(loaded.value().cell);
+    REQUIRE(decoded.ok());
+    change(*decoded);
     rs::vm::Image im = loaded.value();
-    im.cell = rs::workcell::encodeCell(*decoded.cell);
+    im.cell = rs::workcell::encodeCell(*decoded);
     const auto bytes = rs::vm::writeImage(im);
     return dir.write("forged.rsb", std::string(bytes.begin(), bytes.end()));
   };
@@ -496,9 +496,9 @@ TEST_CASE("cell wiring: an image whose cell's robot disagrees with its motor tab
   const rs::diag::Result<rs::vm::Image> loaded = rs::vm::loadImage(original);
   REQUIRE(loaded.ok());
   const auto decoded = rs::workcell::decodeCell(loaded.value().cell);
-  REQUIRE(decoded.cell);
+  REQUIRE(decoded.ok());
   const auto tamper = [&](auto change) {
-    rs::workcell::Workcell cell = *decoded.cell;
+    rs::workcell::Workcell cell = *decoded;
     change(cell.robots.front().robot.joints.front());
     rs::vm::Image im = loaded.value();
     im.cell = rs::workcell::encodeCell(cell);

@@ -41,12 +41,13 @@ TEST_CASE("A PNG still shows each line in its EGA colour where the line is", "[r
   for (const std::string name : {"scara-pick", "puma-cell", "scorobot-cell"}) {
     INFO(name);
     const Picture pic = picture(name);
-    const rs::render::Encoded png = rs::render::encodePicture(pic, rs::render::ImageFormat::Png);
-    REQUIRE(png.error.empty());
-    REQUIRE(png.bytes.size() > 8);
-    CHECK(std::string(png.bytes.begin() + 1, png.bytes.begin() + 4) == "PNG");
-    const Decoded d = rs::render::decodePng(png.bytes);
-    REQUIRE(d.error.empty());
+    const auto png = rs::render::encodePicture(pic, rs::render::ImageFormat::Png);
+    REQUIRE(png.ok());
+    REQUIRE(png->size() > 8);
+    CHECK(std::string(png->begin() + 1, png->begin() + 4) == "PNG");
+    const auto decoded = rs::render::decodePng(*png);
+    REQUIRE(decoded.ok());
+    const Decoded& d = *decoded;
     REQUIRE(d.width == 1024);
     REQUIRE(d.height == 768);
     // The background where nothing is drawn.
@@ -103,7 +104,7 @@ TEST_CASE("The legend is drawn at the top left", "[render]") {
   REQUIRE(pic.legend.size() == 2);
   CHECK(pic.legend[0] == "scara-pick   t = 1.500 s");
   CHECK(pic.legend[1] == "rhino-scara  E=0 D=0 C=0 B=0 A=0");
-  const Decoded d = rs::render::decodePng(rs::render::encodePicture(pic, rs::render::ImageFormat::Png).bytes);
+  const Decoded d = rs::render::decodePng(rs::render::encodePicture(pic, rs::render::ImageFormat::Png).value()).value();
   int text = 0;
   for (int y = 8; y < 40; ++y)
     for (int x = 8; x < 200; ++x) text += colorDistance(pixel(d, x, y), rs::render::kEga[7]) < 90;
@@ -112,9 +113,9 @@ TEST_CASE("The legend is drawn at the top left", "[render]") {
 
 TEST_CASE("SVG comes from the same drawing code", "[render]") {
   const Picture pic = picture("scara-pick");
-  const rs::render::Encoded svg = rs::render::encodePicture(pic, rs::render::ImageFormat::Svg);
-  REQUIRE(svg.error.empty());
-  const std::string text(svg.bytes.begin(), svg.bytes.end());
+  const auto svg = rs::render::encodePicture(pic, rs::render::ImageFormat::Svg);
+  REQUIRE(svg.ok());
+  const std::string text(svg->begin(), svg->end());
   CHECK(text.rfind("<?xml", 0) == 0);
   CHECK(text.find("<svg") != std::string::npos);
   CHECK(text.find("width=\"1024") != std::string::npos);
@@ -128,15 +129,20 @@ TEST_CASE("Sizes, formats and undecodable bytes", "[render]") {
   small.width = 64;
   small.height = 48;
   const Decoded d =
-      rs::render::decodePng(rs::render::encodePicture(picture("scorobot", small), rs::render::ImageFormat::Png).bytes);
+      rs::render::decodePng(rs::render::encodePicture(picture("scorobot", small), rs::render::ImageFormat::Png).value())
+          .value();
   CHECK(d.width == 64);
   CHECK(d.height == 48);
   CHECK(rs::render::formatFromPath("a/b.PNG") == rs::render::ImageFormat::Png);
   CHECK(rs::render::formatFromPath("x.svg") == rs::render::ImageFormat::Svg);
   CHECK_FALSE(rs::render::formatFromPath("x.jpg"));
   CHECK_FALSE(rs::render::formatFromPath("png"));
-  CHECK_FALSE(rs::render::decodePng({'n', 'o', 't'}).error.empty());
+  const auto notPng = rs::render::decodePng({'n', 'o', 't'});
+  REQUIRE_FALSE(notPng.ok());
+  CHECK(notPng.failure().message.rfind("cairo: ", 0) == 0);
   Picture bad;
   bad.width = 0;
-  CHECK_FALSE(rs::render::encodePicture(bad, rs::render::ImageFormat::Png).error.empty());
+  const auto refused = rs::render::encodePicture(bad, rs::render::ImageFormat::Png);
+  REQUIRE_FALSE(refused.ok());
+  CHECK(refused.failure().message == "image size out of range (1..16384 pixels)");
 }

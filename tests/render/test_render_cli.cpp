@@ -37,13 +37,13 @@ TEST_CASE("render writes a PNG and an SVG of a library workcell", "[render][cli]
   INFO(png.err);
   REQUIRE(png.code == 0);
   const std::string bytes = readBytes(dir.file("cell.png"));
-  const rs::render::Decoded d = rs::render::decodePng({bytes.begin(), bytes.end()});
-  CHECK(d.error.empty());
-  CHECK(d.width == 1024);
-  CHECK(d.height == 768);
+  const auto d = rs::render::decodePng({bytes.begin(), bytes.end()});
+  REQUIRE(d.ok());
+  CHECK(d->width == 1024);
+  CHECK(d->height == 768);
   REQUIRE(runCli({"render", "scara-pick", "--size", "320x200", "-o", dir.file("small.PNG")}).code == 0);
   const std::string small = readBytes(dir.file("small.PNG"));
-  CHECK(rs::render::decodePng({small.begin(), small.end()}).width == 320);
+  CHECK(rs::render::decodePng({small.begin(), small.end()})->width == 320);
   REQUIRE(runCli({"render", "scara-pick", "--axes", "--view", "0,90,0", "-o", dir.file("cell.svg")}).code == 0);
   CHECK(readBytes(dir.file("cell.svg")).rfind("<?xml", 0) == 0);
 }

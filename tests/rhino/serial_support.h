@@ -5,6 +5,7 @@
 #pragma once
 
 #include <catch2/catch.hpp>
+#include <initializer_list>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -67,6 +68,31 @@ struct LoopbackRig {
         link(engine, clock),
         logged(link, log, clock),
         machine(motors, s, logged, clock, &log, interrupt) {}
+};
+
+/// Through a real pseudo-terminal, on the wall clock: the emulator made of
+/// `config` (with `inputsOn` switched on) started behind the terminal, the
+/// port open on its other end with the settings' line, a clock, and a log
+/// for a LoggedLink when the test wants one. What every test of a fault on
+/// the line sets up first.
+struct PtyLine {
+  std::unique_ptr<PtyEmulator> emu;
+  std::unique_ptr<SerialPort> port;
+  SteadyClock clock;
+  std::ostringstream logText;
+  SerialLog log{logText};
+
+  PtyLine(const RhinoSettings& s, const EmulatorConfig& config, std::initializer_list<int> inputsOn = {}) {
+    std::string error;
+    emu = PtyEmulator::open(config, error);
+    INFO(error);
+    REQUIRE(emu);
+    for (int input : inputsOn) emu->setInput(input, true);
+    emu->start();
+    port = SerialPort::open(emu->path(), s.line, error);
+    INFO(error);
+    REQUIRE(port);
+  }
 };
 
 /// What a run left behind, for comparing two machines.

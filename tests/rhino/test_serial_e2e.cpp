@@ -49,17 +49,9 @@ RunResult simulate(const vm::Image& image) {
 
 RunResult onEmulator(const vm::Image& image, Dialect d) {
   const RhinoSettings settings = testSettings(d);
-  std::string error;
-  auto emu = PtyEmulator::open(emulatorFor(settings, image.motors), error);
-  REQUIRE(emu);
-  emu->setInput(3, true);
-  emu->setInput(6, true);
-  emu->start();
-  auto port = SerialPort::open(emu->path(), settings.line, error);
-  INFO(error);
-  REQUIRE(port);
-  SteadyClock clock;
-  RhinoMachine machine(image.motors, settings, *port, clock);
+  PtyLine line(settings, emulatorFor(settings, image.motors), {3, 6});
+  const auto& emu = line.emu;
+  RhinoMachine machine(image.motors, settings, *line.port, line.clock);
   const vm::Status opened = machine.open();
   INFO(opened.message);
   REQUIRE(opened);
@@ -101,14 +93,9 @@ TEST_CASE("positions mid-program match the simulation after every move", "[seria
   const vm::Image image = compileFor("MOVETO 333 17\nMOVE -500 50\nMOVETO 0 120\nEND\n", fastMotors());
   for (const Dialect d : {Dialect::Mark3, Dialect::Mark4}) {
     const RhinoSettings settings = testSettings(d);
-    std::string error;
-    auto emu = PtyEmulator::open(emulatorFor(settings, image.motors), error);
-    REQUIRE(emu);
-    emu->start();
-    auto port = SerialPort::open(emu->path(), settings.line, error);
-    REQUIRE(port);
-    SteadyClock clock;
-    RhinoMachine machine(image.motors, settings, *port, clock);
+    PtyLine line(settings, emulatorFor(settings, image.motors));
+    const auto& emu = line.emu;
+    RhinoMachine machine(image.motors, settings, *line.port, line.clock);
     REQUIRE(machine.open());
     rs::runtime::SimMachine sim(image.motors, {});
     const std::vector<std::vector<std::int32_t>> targets = {{333, 17}, {-167, 67}, {0, 120}};

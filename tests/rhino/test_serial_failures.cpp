@@ -43,6 +43,24 @@ struct Pty {
   Pty& operator=(const Pty&) = delete;
 };
 
+// A Mark III port open on a real pseudo-terminal that nothing answers, a
+// log and the wall clock: the pseudo-terminal tests differ only in what
+// they do to it.
+struct PtyPort {
+  Pty pty;
+  RhinoSettings settings = testing::testSettings(Dialect::Mark3);
+  std::unique_ptr<SerialPort> port;
+  SteadyClock clock;
+  std::ostringstream logText;
+  SerialLog log{logText};
+  PtyPort() {
+    std::string error;
+    port = SerialPort::open(pty.slave, settings.line, error);
+    INFO(error);
+    REQUIRE(port);
+  }
+};
+
 // A Mark III session on the in-process emulator with `fault` from the start.
 struct EmulatorSession {
   RhinoSettings settings = testing::testSettings(Dialect::Mark3);
@@ -98,44 +116,28 @@ TEST_CASE("serial failures: a controller that hangs up is gone, and the log says
 }
 
 TEST_CASE("serial failures: a line nobody reads is blocked (a real pseudo-terminal)", "[rhino][serial]") {
-  Pty pty;
-  RhinoSettings settings = testing::testSettings(Dialect::Mark3);
-  std::string error;
-  std::unique_ptr<SerialPort> port = SerialPort::open(pty.slave, settings.line, error);
-  INFO(error);
-  REQUIRE(port);
-  SteadyClock clock;
-  std::ostringstream logText;
-  SerialLog log(logText);
-  LoggedLink logged(*port, log, clock);
-  Session session(logged, clock, settings, &log, nullptr);
-  session.setDevice(pty.slave);
+  PtyPort p;
+  LoggedLink logged(*p.port, p.log, p.clock);
+  Session session(logged, p.clock, p.settings, &p.log, nullptr);
+  session.setDevice(p.pty.slave);
   // The terminal's buffers take some kilobytes; then a write waits 0.2 s and gives up.
   Status s = Status::ok();
   for (int i = 0; i < 1'000'000 && s; ++i) s = session.send("E+1000");
   CHECK(s.code == Status::Code::Fault);
-  CHECK(s.message == "the serial line to " + pty.slave + " is blocked: \"E+1000\" could not be sent within 0.200 s");
+  CHECK(s.message == "the serial line to " + p.pty.slave + " is blocked: \"E+1000\" could not be sent within 0.200 s");
   CHECK_FALSE(session.portGone());
-  CHECK_THAT(logText.str(), Catch::Contains("  (not sent: write timed out)\n"));
+  CHECK_THAT(p.logText.str(), Catch::Contains("  (not sent: write timed out)\n"));
 }
 
 TEST_CASE("serial failures: a port whose other end closed is gone (a real pseudo-terminal)", "[rhino][serial]") {
-  Pty pty;
-  RhinoSettings settings = testing::testSettings(Dialect::Mark3);
-  std::string error;
-  std::unique_ptr<SerialPort> port = SerialPort::open(pty.slave, settings.line, error);
-  INFO(error);
-  REQUIRE(port);
-  pty.close();
-  SteadyClock clock;
-  std::ostringstream logText;
-  SerialLog log(logText);
-  Session session(*port, clock, settings, &log, nullptr);
-  session.setDevice(pty.slave);
+  PtyPort p;
+  p.pty.close();
+  Session session(*p.port, p.clock, p.settings, &p.log, nullptr);
+  session.setDevice(p.pty.slave);
   std::uint8_t reply = 0;
   const Status s = session.queryByte("I", reply);
   CHECK(s.code == Status::Code::Fault);
-  CHECK(s.message == "the serial port " + pty.slave + " hung up at \"I\" (the controller is gone)");
+  CHECK(s.message == "the serial port " + p.pty.slave + " hung up at \"I\" (the controller is gone)");
   CHECK(session.portGone());
-  CHECK_THAT(logText.str(), Catch::Contains(" ! " + pty.slave + ": the port "));
+  CHECK_THAT(p.logText.str(), Catch::Contains(" ! " + p.pty.slave + ": the port "));
 }

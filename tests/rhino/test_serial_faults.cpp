@@ -27,20 +27,13 @@ FaultRun runWithFault(Dialect d, FaultKind kind, std::uint64_t after) {
   const RhinoSettings settings = testSettings(d);
   EmulatorConfig config = emulatorFor(settings, motors);
   config.fault = {kind, after, 1'000'000};  // slow: answers 1 s late, the timeout is 0.2 s
-  std::string error;
-  auto emu = PtyEmulator::open(config, error);
-  REQUIRE(emu);
-  emu->start();
-  auto port = SerialPort::open(emu->path(), settings.line, error);
-  REQUIRE(port);
-  SteadyClock clock;
-  std::ostringstream logText;
-  SerialLog log(logText);
-  LoggedLink logged(*port, log, clock);
+  PtyLine line(settings, config);
+  const auto& emu = line.emu;
+  LoggedLink logged(*line.port, line.log, line.clock);
   const auto t0 = std::chrono::steady_clock::now();
   FaultRun r;
   {
-    RhinoMachine machine(motors, settings, logged, clock, &log);
+    RhinoMachine machine(motors, settings, logged, line.clock, &line.log);
     REQUIRE(machine.open());
     r.outcome = runOn(image, machine, {}).outcome;
   }
@@ -51,7 +44,7 @@ FaultRun runWithFault(Dialect d, FaultKind kind, std::uint64_t after) {
     if (!got.empty() && (got.back() == "AX" || got.back() == "MA")) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  r.log = logText.str();
+  r.log = line.logText.str();
   r.received = emu->received();
   r.after = emu->snapshot();
   return r;
@@ -132,14 +125,8 @@ TEST_CASE("a controller silent from the start fails at open, before any move", "
     const RhinoSettings settings = testSettings(d);
     EmulatorConfig config = emulatorFor(settings, motors);
     config.fault = {FaultKind::Silence, 0, 0};
-    std::string error;
-    auto emu = PtyEmulator::open(config, error);
-    REQUIRE(emu);
-    emu->start();
-    auto port = SerialPort::open(emu->path(), settings.line, error);
-    REQUIRE(port);
-    SteadyClock clock;
-    RhinoMachine machine(motors, settings, *port, clock);
+    PtyLine line(settings, config);
+    RhinoMachine machine(motors, settings, *line.port, line.clock);
     const vm::Status st = machine.open();
     CHECK_FALSE(st);
     CHECK_THAT(st.message, Catch::StartsWith(d == Dialect::Mark3 ? "no working Mark III controller on /dev/"

@@ -99,15 +99,10 @@ TEST_CASE("Ctrl-C during a long move on a pty stops the motors within a poll", "
   auto motors = twoMotors();
   motors[0].speed = 200;  // 900 steps: 4.5 s if nobody stops it
   const RhinoSettings settings = testSettings(Dialect::Mark3);
-  std::string error;
-  auto emu = PtyEmulator::open(emulatorFor(settings, motors), error);
-  REQUIRE(emu);
-  emu->start();
-  auto port = SerialPort::open(emu->path(), settings.line, error);
-  REQUIRE(port);
-  SteadyClock clock;
+  PtyLine line(settings, emulatorFor(settings, motors));
+  const auto& emu = line.emu;
   InterruptGuard guard;
-  RhinoMachine machine(motors, settings, *port, clock, nullptr, &guard.flag());
+  RhinoMachine machine(motors, settings, *line.port, line.clock, nullptr, &guard.flag());
   REQUIRE(machine.open());
   // Ctrl-C once the motor is on its way (not after a fixed delay: on a
   // loaded machine the move may start late), then time the stop from there.
@@ -141,15 +136,10 @@ TEST_CASE("Ctrl-C while a read waits on a silent controller ends the wait at onc
   const auto motors = twoMotors();
   RhinoSettings settings = testSettings(Dialect::Mark3);
   settings.timeout = 10'000'000;  // the read would wait 10 s for an answer
-  std::string error;
-  auto emu = PtyEmulator::open(emulatorFor(settings, motors), error);
-  REQUIRE(emu);
-  emu->start();
-  auto port = SerialPort::open(emu->path(), settings.line, error);
-  REQUIRE(port);
-  SteadyClock clock;
+  PtyLine line(settings, emulatorFor(settings, motors));
+  const auto& emu = line.emu;
   InterruptGuard guard;
-  RhinoMachine machine(motors, settings, *port, clock, nullptr, &guard.flag());
+  RhinoMachine machine(motors, settings, *line.port, line.clock, nullptr, &guard.flag());
   REQUIRE(machine.open());
   emu->setFault({FaultKind::Silence, 1, 0});  // obeys "E+40", never answers "E?"
   // The signal goes to this thread, blocked in poll(), not to the presser.

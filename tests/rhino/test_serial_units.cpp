@@ -17,6 +17,18 @@ std::span<const std::uint8_t> bytes(std::string_view s) {
   return {reinterpret_cast<const std::uint8_t*>(s.data()), s.size()};
 }
 
+// Applies a --serial-set argument to `s` as the command line does: "" when
+// it is taken, else what the failure says (and `s` is as it was).
+std::string appliedOrWhy(RhinoSettings& s, std::string_view arg) {
+  rs::diag::Result<RhinoSettings> applied = applySettingArg(s, arg);
+  if (!applied) {
+    CHECK(applied.failure().file == "--serial-set");
+    return applied.failure().message;
+  }
+  s = std::move(applied).value();
+  return {};
+}
+
 std::string replies(EmulatorEngine& e, std::string_view commands, Micros at) {
   e.receive(bytes(commands), at);
   const auto out = e.takeReplies(at + 1'000'000);
@@ -32,31 +44,36 @@ TEST_CASE("serial settings: defaults, overrides, errors", "[serial]") {
   CHECK(s.refill == 15);
   CHECK(s.switches[2] == BitSource{'I', 0});  // C on I bit 0 [S]
   CHECK(s.switches[7] == BitSource{'I', 5});  // H on I bit 5 [S]
-  CHECK(applySettingArg(s, "baud=19200").empty());
-  CHECK(applySettingArg(s, "parity=odd").empty());
-  CHECK(applySettingArg(s, "stop-bits=1").empty());
-  CHECK(applySettingArg(s, "flow=rtscts").empty());
+  CHECK(appliedOrWhy(s, "baud=19200").empty());
+  CHECK(appliedOrWhy(s, "parity=odd").empty());
+  CHECK(appliedOrWhy(s, "stop-bits=1").empty());
+  CHECK(appliedOrWhy(s, "flow=rtscts").empty());
   CHECK(describe(s.line) == "19200 7O1, RTS/CTS flow control");
-  CHECK(applySettingArg(s, "timeout=0.25").empty());
+  CHECK(appliedOrWhy(s, "timeout=0.25").empty());
   CHECK(s.timeout == 250'000);
-  CHECK(applySettingArg(s, "switch.A=K5").empty());
+  CHECK(appliedOrWhy(s, "switch.A=K5").empty());
   CHECK(s.switches[0] == BitSource{'K', 5});
-  CHECK(applySettingArg(s, "output.3.on=P{n}+").empty());
-  CHECK(applySettingArg(s, "baud=12345") == "baud=12345: expected a standard baud rate (9600, 19200, ...)");
-  CHECK(applySettingArg(s, "chunk=200") == "chunk=200: expected 1..127 steps");
+  CHECK(appliedOrWhy(s, "output.3.on=P{n}+").empty());
+  CHECK(appliedOrWhy(s, "baud=12345") == "baud=12345: expected a standard baud rate (9600, 19200, ...)");
+  CHECK(appliedOrWhy(s, "chunk=200") == "chunk=200: expected 1..127 steps");
   // refill=0 would stall every long Mark III move (no chunk after the first).
-  CHECK(applySettingArg(s, "refill=0") == "refill=0: expected 1..127 steps (0 would stall every long move)");
-  CHECK(applySettingArg(s, "refill=128") == "refill=128: expected 1..127 steps (0 would stall every long move)");
+  CHECK(appliedOrWhy(s, "refill=0") == "refill=0: expected 1..127 steps (0 would stall every long move)");
+  CHECK(appliedOrWhy(s, "refill=128") == "refill=128: expected 1..127 steps (0 would stall every long move)");
   CHECK(s.refill == 15);
-  CHECK(applySettingArg(s, "refill=1").empty());
+  CHECK(appliedOrWhy(s, "refill=1").empty());
   CHECK(s.refill == 1);
-  CHECK(applySettingArg(s, "output.1.on={x}") == "output.1.on={x}: expected a command, optionally with {n} and {port}");
-  CHECK_THAT(applySettingArg(s, "nonsense=1"), Catch::StartsWith("unknown serial setting 'nonsense'"));
-  CHECK(applySettingArg(s, "chunk") == "serial setting 'chunk': expected KEY=VALUE");
-  const auto errors = applySettingsText(s, "# lab robot\nchunk = 30\nrefill=10\n  parity = maybe\n", "lab.cfg");
-  REQUIRE(errors.size() == 1);
-  CHECK(rs::diag::render(errors[0], nullptr) == "lab.cfg:4:3: error: parity=maybe: expected none, even or odd\n");
-  CHECK(s.chunk == 30);
+  CHECK(appliedOrWhy(s, "output.1.on={x}") == "output.1.on={x}: expected a command, optionally with {n} and {port}");
+  CHECK_THAT(appliedOrWhy(s, "nonsense=1"), Catch::StartsWith("unknown serial setting 'nonsense'"));
+  CHECK(appliedOrWhy(s, "chunk") == "serial setting 'chunk': expected KEY=VALUE");
+  const auto bad = applySettingsText(s, "# lab robot\nchunk = 30\nrefill=10\n  parity = maybe\n", "lab.cfg");
+  REQUIRE_FALSE(bad.ok());
+  REQUIRE(bad.failures().size() == 1);
+  CHECK(rs::diag::render(bad.failure(), nullptr) == "lab.cfg:4:3: error: parity=maybe: expected none, even or odd\n");
+  // A file with a bad line gives no settings; without it, every line applies.
+  const auto good = applySettingsText(s, "# lab robot\nchunk = 30\nrefill=10\n", "lab.cfg");
+  REQUIRE(good.ok());
+  CHECK(good->chunk == 30);
+  CHECK(good->refill == 10);
   CHECK(defaultSettings(Dialect::Mark4).inputsActiveLow == false);
   CHECK(listSettings(defaultSettings(Dialect::Mark3)).size() == 52);
 }

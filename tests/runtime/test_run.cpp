@@ -41,9 +41,9 @@ const std::vector<Case> kCases = {
 
 rs::stimuli::Stimuli stimuliOf(const Case& c) {
   if (c.stimuli.empty()) return {};
-  rs::stimuli::StimuliParse parsed = rs::stimuli::loadStimuliFile(kRunExamples + c.stimuli);
-  REQUIRE(parsed.errors.empty());
-  return parsed.stimuli;
+  rs::diag::Result<rs::stimuli::Stimuli> parsed = rs::stimuli::loadStimuliFile(kRunExamples + c.stimuli);
+  REQUIRE(parsed.ok());
+  return std::move(parsed).value();
 }
 
 std::unique_ptr<Run> runOf(const Case& c) {
@@ -93,7 +93,7 @@ TEST_CASE("run to a moment, snapshot, run on, restore, run on again: the same tr
     for (const std::uint64_t at : {std::uint64_t{1}, total / 3, total / 2, total - 1}) {
       INFO("snapshot after step " << at);
       Traced t(c);
-      t.run->step(at);
+      t.run->runUntil({.moreSteps = at});
       CHECK(t.run->pauseCause() == StopReason::Step);
       const std::string before = t.take();
       const rs::runtime::RunSnapshot snap = t.run->snapshot();
@@ -129,14 +129,14 @@ TEST_CASE("snapshots every 10 steps, restored out of order, replay the same step
   std::vector<rs::runtime::RunSnapshot> snaps;
   while (!t.run->finished()) {
     snaps.push_back(t.run->snapshot());
-    t.run->step(10);
+    t.run->runUntil({.moreSteps = 10});
   }
   t.take();
   REQUIRE(snaps.size() > 2);
   for (std::size_t i : {snaps.size() - 1, std::size_t{0}, snaps.size() / 2}) {
     INFO("snapshot " << i);
     t.run->restore(snaps[i]);
-    t.run->step(10);
+    t.run->runUntil({.moreSteps = 10});
     std::string want;
     for (std::size_t l = 10 * i; l < std::min(lines.size(), 10 * i + 10); ++l) want += lines[l] + '\n';
     CHECK(t.take() == want);
@@ -161,11 +161,11 @@ TEST_CASE("step, run until a line, a label, a time or a condition, and look", "[
   REQUIRE(v.variables.size() == 1);
   CHECK(v.variables[0].first == "N");
 
-  CHECK(run.step().paused());
+  CHECK(run.runUntil({.moreSteps = 1}).paused());
   CHECK(run.pauseCause() == StopReason::Step);
   CHECK(run.view().line == 2);
 
-  const rs::vm::RunOutcome atSub = run.runUntilLine(6);
+  const rs::vm::RunOutcome atSub = run.runUntil({.lines = {6}});
   CHECK(atSub.paused());
   CHECK(run.pauseCause() == StopReason::Breakpoint);
   v = run.view();
@@ -176,15 +176,17 @@ TEST_CASE("step, run until a line, a label, a time or a condition, and look", "[
   CHECK(v.steps == 3);
 
   // A breakpoint the run stands on does not stop it again at once.
-  CHECK(run.runUntilLabel("SUB").has_value());
+  const std::optional<std::uint32_t> sub = rs::runtime::labelInstruction(*run.spec().image, "SUB");
+  REQUIRE(sub == std::optional<std::uint32_t>(5));
+  CHECK(run.runUntil({.instructions = {*sub}}).paused());
   CHECK(run.view().line == 6);
   CHECK(run.view().variables[0].second == 2);
   CHECK(run.view().clock == kRunSecond / 4);
-  CHECK_FALSE(run.runUntilLabel("nowhere").has_value());
-  CHECK(rs::runtime::labelInstruction(run.image(), "loop") == std::optional<std::uint32_t>(1));
+  CHECK_FALSE(rs::runtime::labelInstruction(*run.spec().image, "nowhere"));
+  CHECK(rs::runtime::labelInstruction(*run.spec().image, "loop") == std::optional<std::uint32_t>(1));
 
   // The third MOVE ends at 0.75 s: the first step past 0.6 s.
-  CHECK(run.runUntilTime(600'000).paused());
+  CHECK(run.runUntil({.time = 600'000}).paused());
   CHECK(run.pauseCause() == StopReason::Time);
   CHECK(run.rig().clock() == 3 * kRunSecond / 4);
   CHECK(run.view().line == 7);
@@ -201,7 +203,7 @@ TEST_CASE("step, run until a line, a label, a time or a condition, and look", "[
   CHECK(run.outcome() == std::optional(end));
   CHECK(run.view().line == 5);  // the END it ended on
   CHECK(run.view().motors[0] == 500);
-  CHECK(run.step() == end);  // a finished run stays finished
+  CHECK(run.runUntil({.moreSteps = 1}) == end);  // a finished run stays finished
 }
 
 TEST_CASE("stepping one instruction at a time gives the run the uninterrupted run gives", "[run]") {
@@ -210,7 +212,7 @@ TEST_CASE("stepping one instruction at a time gives the run the uninterrupted ru
   const rs::vm::RunOutcome end = whole.run->runToEnd();
   Traced stepped(c);
   std::uint64_t calls = 0;
-  while (!stepped.run->finished()) stepped.run->step(), ++calls;
+  while (!stepped.run->finished()) stepped.run->runUntil({.moreSteps = 1}), ++calls;
   CHECK(calls == end.steps);
   CHECK(stepped.run->outcome() == std::optional(end));
   CHECK(stepped.take() == whole.take());
@@ -233,8 +235,14 @@ TEST_CASE("a run pauses when asked from another thread, and goes on", "[run]") {
   CHECK(run.pauseCause() == StopReason::Pause);
   const std::uint64_t steps = run.view().steps;
   CHECK(steps > 0);
-  CHECK(run.step(10).paused());
+  CHECK(run.runUntil({.moreSteps = 10}).paused());
   CHECK(run.view().steps == steps + 10);
+  // A total and a count from here: the nearer of the two pauses it.
+  CHECK(run.runUntil({.steps = steps + 15, .moreSteps = 100}).paused());
+  CHECK(run.view().steps == steps + 15);
+  CHECK(run.runUntil({.steps = steps + 100, .moreSteps = 3}).paused());
+  CHECK(run.view().steps == steps + 18);
+  CHECK(run.pauseCause() == StopReason::Step);
 }
 
 TEST_CASE("a loop that never lets the clock move stops with its own reason", "[run]") {
@@ -253,12 +261,12 @@ TEST_CASE("a loop that never lets the clock move stops with its own reason", "[r
 }
 
 TEST_CASE("a rule that cannot keep up with its output is a runtime error naming the rule", "[run]") {
-  rs::stimuli::StimuliParse parsed =
+  rs::diag::Result<rs::stimuli::Stimuli> parsed =
       rs::stimuli::parseStimuli("; the conveyor\nwhen output 1 on then input 1 on after 10\n", "flicker.stim");
-  REQUIRE(parsed.errors.empty());
+  REQUIRE(parsed.ok());
   std::unique_ptr<Run> holder;
   const rs::vm::RunOutcome o =
-      simple(holder, "loop: OUTSIG 1 ON\nOUTSIG 1 OFF\nGOTO loop\n", parsed.stimuli).runToEnd();
+      simple(holder, "loop: OUTSIG 1 ON\nOUTSIG 1 OFF\nGOTO loop\n", *parsed).runToEnd();
   CHECK(o.reason == StopReason::RuntimeError);
   CHECK(o.message.find("the stimuli rule of line 2 'when output 1 ON then input 1 ON after 10.000' has 100000 input "
                        "changes waiting to happen") != std::string::npos);

@@ -27,8 +27,8 @@ SimMachine scara(Stimuli stimuli = {}) {
 
 Stimuli parsed(std::string_view text) {
   auto result = rs::stimuli::parseStimuli(text, "test.stim");
-  REQUIRE(result.errors.empty());
-  return result.stimuli;
+  REQUIRE(result.ok());
+  return std::move(result).value();
 }
 
 Targets positionsOf(const SimMachine& m) { return {m.positions().begin(), m.positions().end()}; }

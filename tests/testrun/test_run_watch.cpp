@@ -275,11 +275,11 @@ TEST_CASE("RunWatch answers every expectation as the whole RunLog does, on rando
     watch.finish(outcome);
     (outcome.ok() ? finished : stopped) += 1;
     for (std::size_t i = 0; i < expectations.size(); ++i) {
-      const std::vector<std::string>& names = run.image().variables;
+      const std::vector<std::string>& names = run.spec().image->variables;
       if (expectations[i].kind == ExpectKind::Variable &&
           std::find(names.begin(), names.end(), expectations[i].name) == names.end())
         continue;  // evaluate says the program has no such variable
-      const WatchAnswer want = fromLog(*run.log(), run.image(), expectations[i]);
+      const WatchAnswer want = fromLog(*run.log(), *run.spec().image, expectations[i]);
       const WatchAnswer& got = watch.answer(i);
       INFO("round " << round << ", expectation " << i << " (kind " << static_cast<int>(expectations[i].kind) << ")");
       CHECK(answerText(got) == answerText(want));

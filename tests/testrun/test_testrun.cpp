@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -13,6 +15,7 @@
 #include "diag/source_file.h"
 #include "testrun/expectation.h"
 #include "testrun/suite.h"
+#include "vm/stop_reason.h"
 #include "tests/cli/cli_support.h"
 
 namespace {
@@ -128,6 +131,43 @@ TEST_CASE("expectations: a bad line is an error at the word that is wrong, and e
   CHECK(got[7].first == rs::diag::Pos{8, 16});
   CHECK(got[8].first == rs::diag::Pos{9, 10});
   CHECK(p.expectations.empty());
+}
+
+TEST_CASE("expectations: every way a run ends is read by its words in vm/stop_reason.h's table", "[testrun]") {
+  // A reason added to the table, or a word changed there, must be what
+  // `; expect:` reads and what docs/testing.md shows: the two cannot drift.
+  std::ifstream docFile(kSource + "/docs/testing.md");
+  const std::string doc((std::istreambuf_iterator<char>(docFile)), std::istreambuf_iterator<char>());
+  REQUIRE_FALSE(doc.empty());
+  int ends = 0;
+  for (int i = 0; rs::vm::isOver(static_cast<rs::vm::StopReason>(i)); ++i, ++ends) {
+    const auto reason = static_cast<rs::vm::StopReason>(i);
+    const std::string words(rs::vm::stopReasonName(reason));
+    INFO(words);
+    const auto p = parse("; expect: " + words + "\n; expect: " + words + " at line 3\n");
+    REQUIRE(p.errors.empty());
+    REQUIRE(p.expectations.size() == 2);
+    CHECK(p.expectations[0].kind == ExpectKind::Status);
+    CHECK(p.expectations[0].reason == reason);
+    CHECK(p.expectations[0].line == 0);
+    CHECK(p.expectations[1].reason == reason);
+    CHECK(p.expectations[1].line == 3);
+    CHECK(doc.find("expect: " + words) != std::string::npos);
+  }
+  CHECK(ends == 6);
+  // The list of subjects a bad line is told, as it read before the words
+  // came from the table (written here by hand).
+  const auto bad = parse("; expect: teleport\n");
+  REQUIRE(bad.errors.size() == 1);
+  CHECK(bad.errors[0].message ==
+        "unknown expectation 'teleport': expect one of finished, deadlock, step limit, time limit, clock standing "
+        "still, runtime error, time, motors, motor, output, input, variable, tcp, object, trace, no collision, "
+        "collides with");
+  // A stop's first word alone still names it, and says which word is missing.
+  const auto step = parse("; expect: step limits\n; expect: time\n");
+  REQUIRE(step.errors.size() == 2);
+  CHECK(step.errors[0].message == "expected 'limit', got 'limits'");
+  CHECK(step.errors[1].message == "expected <=, >= or = after 'time'");
 }
 
 TEST_CASE("robotsim test: the examples and the passing tests pass", "[testrun][cli]") {

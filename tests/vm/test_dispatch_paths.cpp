@@ -84,7 +84,7 @@ Ended runWay(const std::shared_ptr<const rs::vm::Image>& image, bool watched, st
   if (watched) run.observe(watching);
   RunOutcome outcome;
   do {
-    outcome = slice ? run.step(slice) : run.runToEnd();
+    outcome = slice ? run.runUntil({.moreSteps = slice}) : run.runToEnd();
   } while (outcome.paused());
   // The observer hears of every step that ran, not of one that failed.
   const bool failed = outcome.reason == rs::vm::StopReason::RuntimeError || outcome.reason == rs::vm::StopReason::Deadlock;
