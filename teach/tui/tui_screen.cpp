@@ -193,8 +193,8 @@ struct ActionGroup {
   std::string_view help;
 };
 constexpr ActionGroup kGroups[] = {
-    {KeyAction::PrevMotor, KeyAction::NextMotor, "select the motor above / below"},
-    {KeyAction::JogMinus, KeyAction::JogPlus, "jog the selected motor by -step / +step"},
+    {KeyAction::PrevMotor, KeyAction::NextMotor, "select the motor (world, tool: the axis) above / below"},
+    {KeyAction::JogMinus, KeyAction::JogPlus, "jog the selected motor or axis by -step / +step"},
     {KeyAction::Step1, KeyAction::Step100, "jog step 1, 10, 100 (counts, lengths; 1, 5, 15 deg)"},
     {KeyAction::OpenGripper, KeyAction::CloseGripper, "open / close the gripper"},
     {KeyAction::PrevPoint, KeyAction::NextPoint, "select the point above / below"},

@@ -129,7 +129,7 @@ expect_screen "x -225  y 840  z 0"
 keys i 3                                 # input 3 on
 expect_screen "INPUTS   . . # . . . . ."
 keys '?'                                 # the key help, from the shared key map
-expect_screen " Left Right - + jog the selected motor by -step / +step"
+expect_screen " Left Right - + jog the selected motor or axis by -step / +step"
 keys '?'
 # Too small a terminal gets a request, then the panel again.
 tm resize-window -t t -x 70 -y 20
