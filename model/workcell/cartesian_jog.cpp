@@ -77,7 +77,7 @@ JogPose CartesianJog::poseAt(std::span<const std::int32_t> encoders) const {
   for (const kinematics::IkSolution& s : all.view()) {
     double gap = 0;
     for (std::size_t i = 0; i < p.q.size(); ++i) gap += jointGap(chain.joints()[i].type(), s.q[i], p.q[i]);
-    if (gap < nearest) nearest = gap, p.config = s.config;
+    if (gap < nearest) nearest = gap, p.config = s.config, p.configKnown = true;
   }
   return p;
 }
@@ -152,7 +152,7 @@ JogResult CartesianJog::jog(const JogPose& pose, JogFrame frame, std::string_vie
   const bool six = ik_.family() == IkFamily::Articulated6 || ik_.family() == IkFamily::Spherical6;
   target.approachGiven = target.normalGiven = six || axis->rotation;
   const std::span<const std::uint8_t> configs = ik_.configurations();
-  const bool known = std::find(configs.begin(), configs.end(), pose.config) != configs.end();
+  const bool known = pose.configKnown && std::find(configs.begin(), configs.end(), pose.config) != configs.end();
   const kinematics::IkSolutions solved = known ? ik_.solveConfig(target, pose.q, pose.config) : ik_.solve(target, pose.q);
   if (!solved.ok()) {
     const kinematics::IkErrorKind kind = solved.error.kind;
@@ -198,6 +198,7 @@ JogResult CartesianJog::jog(const JogPose& pose, JogFrame frame, std::string_vie
   }
   r.pose.q = q;
   r.pose.config = best->config;
+  r.pose.configKnown = true;
   r.pose.tool = F_world_0_ * jogChainFrame(chain, q);
   return r;
 }

@@ -55,6 +55,7 @@ struct JogPose {
   Eigen::Isometry3d tool = Eigen::Isometry3d::Identity();  ///< F_world_tool
   std::vector<std::int32_t> encoders;                      ///< every motor (arm joints, then the gripper)
   std::uint8_t config = 0;                                 ///< kinematics::IkConfig bits the arm stands in
+  bool configKnown = false;  ///< false at a singular pose, where the inverse kinematics gives no configuration
 };
 
 struct JogResult {
