@@ -28,6 +28,7 @@ body.cartesian #motors tr.selected td { background: none; }
 .row input[type=text] { background: var(--bg); color: #fff; border: 1px solid var(--line); font: inherit;
   padding: 2px 5px; width: 14ch; }
 #tcp { color: #fff; }
+#approach { color: var(--dim); }
 #inputs .lamp, #outputs .lamp { cursor: pointer; }
 #points { list-style: none; margin: 0 8px; padding: 0; max-height: 180px; overflow: auto; background: var(--bg);
           border: 1px solid var(--line); min-height: 2.5em; }
@@ -66,7 +67,7 @@ step <select id="step" aria-label="jog step">
 <h2>Gripper</h2>
 <div class="row"><span class="pendant"><button id="open">open</button><button id="close">close</button></span> <span id="gripper"></span></div>
 <h2>Tool centre point (world)</h2>
-<div class="row"><span id="tcp"></span></div>
+<div class="row"><span id="tcp"></span> <span id="approach"></span></div>
 <h2>Inputs<span class="pendant"> (click to switch)</span></h2>
 <div id="inputs" class="lamps"></div>
 <h2>Outputs</h2>

@@ -168,8 +168,8 @@ const std::string_view kScript = R"JS('use strict';
       if (document.activeElement !== r.slider) r.slider.value = String(v);
     });
     el('gripper').textContent = st.gripper;
-    el('tcp').textContent = st.tcp ? '(' + st.tcp.map((x) => x.toFixed(2)).join(', ') + ')' +
-      (st.approach ? '  approach (' + st.approach.map((x) => x.toFixed(3)).join(', ') + ')' : '') : 'no chain';
+    el('tcp').textContent = st.tcp ? '(' + st.tcp.map((x) => x.toFixed(2)).join(', ') + ')' : 'no chain';
+    el('approach').textContent = st.approach ? 'approach (' + st.approach.map((x) => x.toFixed(3)).join(', ') + ')' : '';
     buildAxes();
     [...el('inputs').children].forEach((d, i) => d.classList.toggle('on', st.inputs[i]));
     [...el('outputs').children].forEach((d, i) => d.classList.toggle('on', st.outputs[i]));

@@ -94,7 +94,7 @@ std::vector<JogAxis> CartesianJog::axes(const JogPose& pose, JogFrame frame) con
   const auto about = [&](const Eigen::Vector3d& u, const std::string& name, const std::string& what) {
     const int k = alongFrameAxis(axesOf, u);
     if (k >= 0) out.push_back({fmt::format("R{}", kAxisLetters[k]), true, axesOf.col(k), fmt::format("about {}, {}", where(k), what)});
-    else out.push_back({name, true, u.normalized(), "about " + what});
+    else out.push_back({name, true, u.normalized(), "about the joints' axis, " + what});
   };
   const kinematics::ChainModel& chain = ik_.model();
   switch (ik_.family()) {
@@ -110,7 +110,7 @@ std::vector<JogAxis> CartesianJog::axes(const JogPose& pose, JogFrame frame) con
       break;
     }
     case IkFamily::Scara:
-      if (ik_.shape().run.revolutes == 3) about(F_world_0_.linear().col(2), "HEADING", "the joints' axis (the heading)");
+      if (ik_.shape().run.revolutes == 3) about(F_world_0_.linear().col(2), "HEADING", "the heading");
       break;
     case IkFamily::Cartesian:
     case IkFamily::Numeric: break;

@@ -148,7 +148,7 @@ expect_screen "went to ABOVE"
 keys m
 expect_screen "mode world (m: joint, world, tool)"
 expect_screen " WORLD AXES"
-expect_screen "RY      about the world's Y, the joints' axis"
+expect_screen "RY      about the world's Y, the heading"
 keys 2 Right
 expect_screen "world jog X +10 length units: tool centre point at -201.169 828 76.5545"
 # The panel's point is forward kinematics of the whole counts: within 1 length unit (E turns 0.1175
@@ -160,9 +160,10 @@ keys m
 expect_screen " TOOL AXES"
 keys Down Down Right
 expect_screen "tool jog Z +10 length units: tool centre point at -201.169 818 76.5545"
+tcp_before=$(screen | grep '^   x ')
 keys m m 3 Right                         # tool, joint, world: Z still selected
 expect_screen "world jog Z +100 length units refused (reach): the point is"
-expect_screen "nothing moved"
+[ "$(screen | grep '^   x ')" = "$tcp_before" ] || fail "a refused jog moved the tool: $(screen | grep '^   x ')"
 keys m m
 expect_screen "mode joint (m: joint, world, tool)"
 expect_screen " MOTORS"
