@@ -232,8 +232,8 @@ try {
   await page.keyboard.press('m');
   check((await selection()).mode === 'tool' && /Tool axes/.test(await page.locator('#axesTitle').textContent()),
         'm again: tool');
-  await page.keyboard.press('ArrowDown');
-  await page.keyboard.press('ArrowDown');
+  // The row stays where it was (RY, the fourth: in tool it is RZ); one up is Z.
+  await page.keyboard.press('ArrowUp');
   check((await selection()).axis === 'Z', '  the arrows select the axis', (await selection()).axis);
   await page.keyboard.press('ArrowRight');
   await page.waitForFunction(() => window.robotsim.state.message.startsWith('tool jog Z +10 length units'), null,
