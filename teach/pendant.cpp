@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "base/number_text.h"
-
 #include "base/seconds.h"
 #include "runtime/rhino/rhino_machine.h"
 #include "vm/motor_range.h"
@@ -84,8 +83,9 @@ Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
   if (watch && watch->events().size() > seen) {
     const runtime::CollisionEvent hit = watch->events()[seen];
     rig_->restore(*before);
-    return refuseAt(workcell::JogLimit::Collision, fmt::format("refused: the move to {} collides {} s into it: {}; nothing moved", valuesText(targets),
-                              base::formatSeconds(hit.at - start), watch->describe(hit.contact)));
+    return refuseAt(workcell::JogLimit::Collision,
+                    fmt::format("refused: the move to {} collides {} s into it: {}; nothing moved", valuesText(targets),
+                                base::formatSeconds(hit.at - start), watch->describe(hit.contact)));
   }
   if (!status) {
     moved_ = false;
