@@ -1,8 +1,9 @@
 #include "model/workcell/cartesian_jog.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "model/kinematics/angles.h"
 #include "model/kinematics/dh.h"
@@ -93,18 +94,23 @@ std::vector<JogAxis> CartesianJog::axes(const JogPose& pose, JogFrame frame) con
   // A rotation about a fixed axis of the arm, named by the frame's axis it lies along (else by `name`).
   const auto about = [&](const Eigen::Vector3d& u, const std::string& name, const std::string& what) {
     const int k = alongFrameAxis(axesOf, u);
-    if (k >= 0) out.push_back({fmt::format("R{}", kAxisLetters[k]), true, axesOf.col(k), fmt::format("about {}, {}", where(k), what)});
-    else out.push_back({name, true, u.normalized(), "about the joints' axis, " + what});
+    if (k >= 0)
+      out.push_back(
+          {fmt::format("R{}", kAxisLetters[k]), true, axesOf.col(k), fmt::format("about {}, {}", where(k), what)});
+    else
+      out.push_back({name, true, u.normalized(), "about the joints' axis, " + what});
   };
   const kinematics::ChainModel& chain = ik_.model();
   switch (ik_.family()) {
     case IkFamily::Articulated6:
     case IkFamily::Spherical6:
-      for (int k = 0; k < 3; ++k) out.push_back({fmt::format("R{}", kAxisLetters[k]), true, axesOf.col(k), "about " + where(k)});
+      for (int k = 0; k < 3; ++k)
+        out.push_back({fmt::format("R{}", kAxisLetters[k]), true, axesOf.col(k), "about " + where(k)});
       break;
     case IkFamily::Articulated5: {
       // Pitch: about the axis the pitch joints share (z_1), through the tool centre point; roll: about the approach.
-      const Eigen::Vector3d z1 = F_world_0_.linear() * kinematics::dhTransform(chain.joint(1).dh, pose.q[0]).linear().col(2);
+      const Eigen::Vector3d z1 =
+          F_world_0_.linear() * kinematics::dhTransform(chain.joint(1).dh, pose.q[0]).linear().col(2);
       out.push_back({"PITCH", true, z1.normalized(), "pitch: about the axis of the arm's pitch joints"});
       out.push_back({"ROLL", true, pose.tool.linear().col(2), "roll: about the tool's z (the approach)"});
       break;
@@ -136,7 +142,8 @@ JogResult CartesianJog::jog(const JogPose& pose, JogFrame frame, std::string_vie
   r.rotation = axis->rotation;
   Eigen::Isometry3d wanted = pose.tool;
   if (axis->rotation)
-    wanted.linear() = Eigen::AngleAxisd(amount * kinematics::kDegToRad, axis->direction).toRotationMatrix() * pose.tool.linear();
+    wanted.linear() =
+        Eigen::AngleAxisd(amount * kinematics::kDegToRad, axis->direction).toRotationMatrix() * pose.tool.linear();
   else
     wanted.translation() += amount * axis->direction;
 
@@ -153,12 +160,13 @@ JogResult CartesianJog::jog(const JogPose& pose, JogFrame frame, std::string_vie
   target.approachGiven = target.normalGiven = six || axis->rotation;
   const std::span<const std::uint8_t> configs = ik_.configurations();
   const bool known = pose.configKnown && std::find(configs.begin(), configs.end(), pose.config) != configs.end();
-  const kinematics::IkSolutions solved = known ? ik_.solveConfig(target, pose.q, pose.config) : ik_.solve(target, pose.q);
+  const kinematics::IkSolutions solved =
+      known ? ik_.solveConfig(target, pose.q, pose.config) : ik_.solve(target, pose.q);
   if (!solved.ok()) {
     const kinematics::IkErrorKind kind = solved.error.kind;
-    const JogLimit limit = kind == kinematics::IkErrorKind::Singular ? JogLimit::Singularity
+    const JogLimit limit = kind == kinematics::IkErrorKind::Singular           ? JogLimit::Singularity
                            : kind == kinematics::IkErrorKind::OrientationFixed ? JogLimit::Axis
-                                                                                : JogLimit::Reach;
+                                                                               : JogLimit::Reach;
     return refuse(limit, solved.error.message);
   }
   // The solution nearest where the arm stands (the one, on its configuration), each revolute joint by whole
@@ -176,13 +184,15 @@ JogResult CartesianJog::jog(const JogPose& pose, JogFrame frame, std::string_vie
     if (chain.joints()[i].type() != JointType::Revolute) continue;
     q[i] = pose.q[i] + kinematics::normalizeDegrees(q[i] - pose.q[i]);
     if (std::abs(q[i] - pose.q[i]) > maxTurn)
-      return refuse(JogLimit::Singularity,
-                    fmt::format("near-singular pose: joint {} would turn {:.3g} degrees for this step (more than {:.3g})",
-                                i + 1, std::abs(q[i] - pose.q[i]), maxTurn));
+      return refuse(
+          JogLimit::Singularity,
+          fmt::format("near-singular pose: joint {} would turn {:.3g} degrees for this step (more than {:.3g})", i + 1,
+                      std::abs(q[i] - pose.q[i]), maxTurn));
   }
   // Encoder counts (a coupled joint's motor also carries the joint before it), each within its motor's range.
   r.pose.encoders = pose.encoders;
-  r.pose.encoders.resize(std::max<std::size_t>(r.pose.encoders.size(), static_cast<std::size_t>(chain.encoderCount())), 0);
+  r.pose.encoders.resize(std::max<std::size_t>(r.pose.encoders.size(), static_cast<std::size_t>(chain.encoderCount())),
+                         0);
   for (std::size_t i = 0; i < n; ++i) {
     const kinematics::Joint& j = chain.joints()[i];
     double raw = q[i];
@@ -190,10 +200,10 @@ JogResult CartesianJog::jog(const JogPose& pose, JogFrame frame, std::string_vie
     const std::int64_t count = std::llround((raw - j.home) / j.precision);
     const JointSpec& spec = robot.joints[static_cast<std::size_t>(j.encoder)];
     if (count < spec.min || count > spec.max)
-      return refuse(JogLimit::Range,
-                    fmt::format("motor {} would go to {} (joint {} at {:.4g} {}), outside its range {}..{}", spec.letter,
-                                count, i + 1, q[i], j.type() == JointType::Revolute ? "degrees" : "length units",
-                                spec.min, spec.max));
+      return refuse(
+          JogLimit::Range,
+          fmt::format("motor {} would go to {} (joint {} at {:.4g} {}), outside its range {}..{}", spec.letter, count,
+                      i + 1, q[i], j.type() == JointType::Revolute ? "degrees" : "length units", spec.min, spec.max));
     r.pose.encoders[static_cast<std::size_t>(j.encoder)] = static_cast<std::int32_t>(count);
   }
   r.pose.q = q;

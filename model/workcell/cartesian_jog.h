@@ -37,7 +37,7 @@ struct JogAxis {
   std::string name;       ///< "X", "Y", "Z"; "RX", "RY", "RZ"; "PITCH", "ROLL", "HEADING" where no frame axis is it
   bool rotation = false;  ///< turns about the axis (degrees) rather than moving along it (length units)
   Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  ///< in world coordinates, unit length
-  std::string help;       ///< "along the world's X", "about the tool's z (the approach)"
+  std::string help;                                      ///< "along the world's X", "about the tool's z (the approach)"
 };
 
 /// Why a jog was refused: the limit it met.
@@ -59,10 +59,10 @@ struct JogPose {
 };
 
 struct JogResult {
-  JogPose pose;                      ///< where the jog goes (when ok)
-  std::optional<JogLimit> limit;     ///< set when refused
-  std::string message;               ///< why it was refused, a sentence without a position
-  bool rotation = false;             ///< the axis turns (the amount is degrees)
+  JogPose pose;                   ///< where the jog goes (when ok)
+  std::optional<JogLimit> limit;  ///< set when refused
+  std::string message;            ///< why it was refused, a sentence without a position
+  bool rotation = false;          ///< the axis turns (the amount is degrees)
   bool ok() const { return !limit.has_value(); }
 };
 

@@ -15,9 +15,10 @@
 // kSphereAxes axes (a Fibonacci sphere) times angles in steps of
 // kTurnDegrees. An orientation between the grid's steps can still be given
 // with --approach/--normal, which the refusal's hint says.
+#include <fmt/format.h>
+
 #include <Eigen/Geometry>
 #include <cmath>
-#include <fmt/format.h>
 #include <numbers>
 
 #include "model/kinematics/angles.h"
@@ -94,7 +95,7 @@ PoseResult PoseSolver::solveAnyOrientation(const PoseRequest& request, std::span
   if (request.approach || request.normal) {
     // One axis written: a six-axis arm kept the other from the previous point, and giving it may help.
     if (sixAxes && !(request.approach && request.normal))
-      first.problem->hint += fmt::format("; the {} was kept from the previous point: give {} too", 
+      first.problem->hint += fmt::format("; the {} was kept from the previous point: give {} too",
                                          request.approach ? "normal" : "approach",
                                          request.optionWords ? (request.approach ? "--normal" : "--approach")
                                                              : (request.approach ? "NORMAL" : "APPROACH"));
@@ -116,9 +117,8 @@ PoseResult PoseSolver::solveAnyOrientation(const PoseRequest& request, std::span
   }
   PoseResult refused = first;
   refused.orientationsTried = static_cast<int>(turns.size());
-  const std::string tried =
-      fmt::format("{} other orientation{} the arm leaves free {} tried", turns.size(), turns.size() == 1 ? "" : "s",
-                  turns.size() == 1 ? "was" : "were");
+  const std::string tried = fmt::format("{} other orientation{} the arm leaves free {} tried", turns.size(),
+                                        turns.size() == 1 ? "" : "s", turns.size() == 1 ? "was" : "were");
   if (!reachedSome)
     refused.problem->hint = fmt::format("{}, and none reaches the point: move it nearer the robot", tried);
   else

@@ -3,11 +3,10 @@
 // where`, forward kinematics from the encoder counts that does not use the
 // jog code or the inverse kinematics; every refusal leaves the motors and
 // the clock as they were and names its limit.
-#include <catch2/catch.hpp>
-#include <nlohmann/json.hpp>
-
 #include <Eigen/Geometry>
+#include <catch2/catch.hpp>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "../render/render_test_util.h"
 #include "base/file_io.h"
@@ -72,7 +71,6 @@ JogValues ikEncoders(const std::vector<std::string>& args) {
   return e;
 }
 
-
 // The arm's motors and clock are as they were, the state names the limit.
 void checkRefused(const Pendant& p, const rs::teach::Outcome& o, const JogValues& before, std::int64_t clock,
                   const std::string& limit) {
@@ -94,13 +92,15 @@ JogValues pumaReachingBack() {
 
 double largestTurn(const JogValues& a, const JogValues& b) {
   double most = 0;
-  for (std::size_t i = 0; i + 1 < a.size(); ++i) most = std::max(most, std::abs(a[i] - b[i]) * 0.1);  // 0.1 degree a count
+  for (std::size_t i = 0; i + 1 < a.size(); ++i)
+    most = std::max(most, std::abs(a[i] - b[i]) * 0.1);  // 0.1 degree a count
   return most;
 }
 
 }  // namespace
 
-TEST_CASE("world jog: ten steps of +10 along X move the tool 100 along the world's X, orientation kept", "[teach][jog]") {
+TEST_CASE("world jog: ten steps of +10 along X move the tool 100 along the world's X, orientation kept",
+          "[teach][jog]") {
   JogFixture f("puma-cell");
   Pendant& p = *f.pendant;
   const JogValues start = pumaReachingBack();
@@ -151,8 +151,8 @@ TEST_CASE("tool jog: +10 along the tool's z moves along the approach; a turn abo
   REQUIRE(p.jogCartesian(JogFrame::World, "RY", 5).ok);
   const WherePose turned = whereAt("puma-cell", p.state().encoders);
   CHECK((turned.position - down.position).norm() < 1.0);
-  const Eigen::Matrix3d wanted = Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix() *
-                                 down.rotation;
+  const Eigen::Matrix3d wanted =
+      Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix() * down.rotation;
   CHECK((turned.rotation - wanted).cwiseAbs().maxCoeff() < 0.01);
 }
 
@@ -218,8 +218,9 @@ TEST_CASE("a cartesian jog past a motor's range is refused, nothing moved, and n
   const rs::teach::Outcome o = p.jogCartesian(JogFrame::World, "X", 100);
   checkRefused(p, o, JogValues{5000, 0, 0, 0}, 5'000'000, "range");
   // Joint 1's value is its D-H d: home 500 plus 0.1 x 6000.
-  CHECK(o.message == "world jog X +100 length units refused (range): motor X would go to 6000 (joint 1 at 1100 length "
-                     "units), outside its range -5000..5000; nothing moved");
+  CHECK(o.message ==
+        "world jog X +100 length units refused (range): motor X would go to 6000 (joint 1 at 1100 length "
+        "units), outside its range -5000..5000; nothing moved");
 }
 
 TEST_CASE("a cartesian jog into a collision is refused, nothing moved, and names it", "[teach][jog]") {
@@ -245,17 +246,18 @@ TEST_CASE("jogCartesian as a JSON command, and its malformed requests", "[teach]
   Pendant& p = *f.pendant;
   // The gantry's tool centre point is (500 + X/10, 200 - Y/10, 400 + Z/10): +10 along the world's Z is 100
   // counts of motor Z (the second); it has no rotation to jog.
-  const rs::teach::Outcome o =
-      rs::teach::applyCommand(p, nlohmann::json{{"op", "jogCartesian"}, {"frame", "world"}, {"axis", "Z"}, {"amount", 10}});
+  const rs::teach::Outcome o = rs::teach::applyCommand(
+      p, nlohmann::json{{"op", "jogCartesian"}, {"frame", "world"}, {"axis", "Z"}, {"amount", 10}});
   INFO(o.message);
   CHECK(o.ok);
   CHECK(p.state().encoders == JogValues{0, 100, 0, 0});
   CHECK(p.state().toolAxes.size() == 3);
-  for (const nlohmann::json& bad : {nlohmann::json{{"op", "jogCartesian"}, {"frame", "joint"}, {"axis", "X"}, {"amount", 1}},
-                                    nlohmann::json{{"op", "jogCartesian"}, {"frame", "world"}, {"amount", 1}},
-                                    nlohmann::json{{"op", "jogCartesian"}, {"frame", "tool"}, {"axis", "X"}, {"amount", "1"}},
-                                    nlohmann::json{{"op", "jogCartesian"}, {"frame", "tool"}, {"axis", "X"}, {"amount", 1e300}},
-                                    nlohmann::json{{"op", "jogCartesian"}, {"frame", "tool"}, {"axis", "RX"}, {"amount", 1}}}) {
+  for (const nlohmann::json& bad :
+       {nlohmann::json{{"op", "jogCartesian"}, {"frame", "joint"}, {"axis", "X"}, {"amount", 1}},
+        nlohmann::json{{"op", "jogCartesian"}, {"frame", "world"}, {"amount", 1}},
+        nlohmann::json{{"op", "jogCartesian"}, {"frame", "tool"}, {"axis", "X"}, {"amount", "1"}},
+        nlohmann::json{{"op", "jogCartesian"}, {"frame", "tool"}, {"axis", "X"}, {"amount", 1e300}},
+        nlohmann::json{{"op", "jogCartesian"}, {"frame", "tool"}, {"axis", "RX"}, {"amount", 1}}}) {
     const rs::teach::Outcome r = rs::teach::applyCommand(p, bad);
     INFO(bad.dump() << ": " << r.message);
     CHECK_FALSE(r.ok);
