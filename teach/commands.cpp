@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <limits>
 
 namespace rs::teach {
@@ -60,6 +61,16 @@ Outcome applyCommand(Pendant& p, const Json& r) {
                              *op, *op == "jog" ? "delta" : "value"));
     return *op == "jog" ? p.jog(static_cast<std::size_t>(*motor), *amount)
                         : p.setMotor(static_cast<std::size_t>(*motor), *amount);
+  }
+  if (*op == "jogCartesian") {
+    const auto frame = stringArg(r, "frame"), axis = stringArg(r, "axis");
+    const auto amount = r.find("amount");
+    if (!frame || (*frame != "world" && *frame != "tool") || !axis || amount == r.end() || !amount->is_number() ||
+        !std::isfinite(amount->get<double>()) || std::abs(amount->get<double>()) > 1e6)
+      return bad("jogCartesian needs \"frame\" (\"world\" or \"tool\"), \"axis\" (a name of the state's jogAxes) and "
+                 "\"amount\", a number of length units or degrees up to 1000000 either way");
+    return p.jogCartesian(*frame == "world" ? workcell::JogFrame::World : workcell::JogFrame::Tool, *axis,
+                          amount->get<double>());
   }
   if (*op == "moveTo") {
     const auto it = r.find("values");

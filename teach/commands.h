@@ -10,6 +10,7 @@
 //   {"op":"goTo","name":"P1"}             {"op":"input","line":3}  (toggles)
 //   {"op":"output","line":3,"on":true}    {"op":"reset"}
 //   {"op":"readPosition"}                 {"op":"reload"}
+//   {"op":"jogCartesian","frame":"world","axis":"X","amount":10}  (frame "world" or "tool"; degrees for a turn)
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -22,6 +22,7 @@ std::string pageHtml(const workcell::Workcell& cell, const std::string& program,
   const nlohmann::ordered_json drawing = render::cellDrawing(cell, camera);
   for (const auto& [key, value] : drawing.items()) model[key] = value;
   model["keys"] = keysJson();
+  model["jogDegrees"] = jogDegreesJson();
   std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   html +=
       "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; "

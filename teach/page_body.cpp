@@ -9,7 +9,14 @@ const std::string_view kStyle = R"CSS(
 #fault { display: none; margin: 6px 12px; padding: 6px 8px; background: #3a0d0d; color: #ff5555;
          border: 1px solid #ff5555; font-weight: bold; white-space: pre-wrap; }
 #fault.on { display: block; }
-#motors tr.selected td { background: #2a2a10; }
+#motors tr.selected td, #axes tr.selected td { background: #2a2a10; }
+#axesBox { display: none; }
+#axesBox.on { display: block; }
+#axes td.jog { white-space: nowrap; }
+#axes td.help { color: var(--dim); font-size: 11px; }
+#axes td.jog button { background: #23283a; color: var(--text); border: 1px solid var(--line); border-radius: 3px;
+  font: inherit; padding: 1px 8px; cursor: pointer; }
+body.cartesian #motors tr.selected td { background: none; }
 #motors td.jog { white-space: nowrap; }
 #motors td.jog button, .row button, #confirm button { background: #23283a; color: var(--text);
   border: 1px solid var(--line); border-radius: 3px; font: inherit; padding: 1px 8px; cursor: pointer; }
@@ -21,6 +28,7 @@ const std::string_view kStyle = R"CSS(
 .row input[type=text] { background: var(--bg); color: #fff; border: 1px solid var(--line); font: inherit;
   padding: 2px 5px; width: 14ch; }
 #tcp { color: #fff; }
+#approach { color: var(--dim); }
 #inputs .lamp, #outputs .lamp { cursor: pointer; }
 #points { list-style: none; margin: 0 8px; padding: 0; max-height: 180px; overflow: auto; background: var(--bg);
           border: 1px solid var(--line); min-height: 2.5em; }
@@ -49,13 +57,17 @@ const std::string_view kBody = R"HTML(<div id="app">
 <div id="viewonly">Read-only: this page follows <b>robotsim debug</b> and shows the run where it stopped.
 Jog and teach with robotsim teach.</div>
 <div id="where"></div>
-<h2>Motors (encoder counts)<span class="pendant"> &middot; step <select id="step" aria-label="jog step">
-<option value="1">1</option><option value="10" selected>10</option><option value="100">100</option></select></span></h2>
+<h2>Motors (encoder counts)<span class="pendant"> &middot; jog <select id="mode" aria-label="jog mode">
+<option value="joint" selected>joint</option><option value="world">world</option><option value="tool">tool</option></select>
+step <select id="step" aria-label="jog step">
+<option value="1">1</option><option value="10" selected>10</option><option value="100">100</option></select>
+<span id="stepUnit">counts</span></span></h2>
 <table id="motors"></table>
+<div id="axesBox" class="pendant"><h2 id="axesTitle">World axes</h2><table id="axes"></table></div>
 <h2>Gripper</h2>
 <div class="row"><span class="pendant"><button id="open">open</button><button id="close">close</button></span> <span id="gripper"></span></div>
 <h2>Tool centre point (world)</h2>
-<div class="row"><span id="tcp"></span></div>
+<div class="row"><span id="tcp"></span> <span id="approach"></span></div>
 <h2>Inputs<span class="pendant"> (click to switch)</span></h2>
 <div id="inputs" class="lamps"></div>
 <h2>Outputs</h2>

@@ -22,6 +22,7 @@ const std::string_view kScript = R"JS('use strict';
   const el = (id) => document.getElementById(id);
   const still = { view: [0, 0, 0], window: [0, 0, 0] };
   const S = { state: null, selectedMotor: 0, selectedPoint: null, step: 10, axes: !!model.camera.axes,
+              mode: 'joint', selectedAxis: 0, axisNames: '',
               anim: null, shown: null, pending: 0, confirm: null };
   el('title').textContent = model.title;
   // Read-only (the debugger's view of a stopped run): the pendant's
@@ -105,6 +106,57 @@ const std::string_view kScript = R"JS('use strict';
     S.selectedMotor = Math.max(0, Math.min(S.state.motors.length - 1, i));
     motorRows.forEach((r, k) => r.tr.classList.toggle('selected', k === S.selectedMotor));
   }
+  // ---- Jog modes: joint (the motors' rows), world and tool (the axes the
+  // state lists for each, through the inverse kinematics on the server).
+  function jogAxes() { return S.state ? S.state.jogAxes[S.mode] || [] : []; }
+  function buildAxes() {
+    const axes = jogAxes(), names = S.mode + ':' + axes.map((a) => a.name + '/' + a.help).join(',');
+    if (names === S.axisNames) return;
+    S.axisNames = names;
+    el('axes').textContent = '';
+    axes.forEach((a, i) => {
+      const tr = document.createElement('tr');
+      tr.innerHTML = '<td class="m"><b></b></td><td class="help"></td>' +
+        '<td class="jog"><button class="minus" aria-label="minus">&minus;</button><button class="plus" aria-label="plus">+</button></td>';
+      tr.dataset.axis = a.name;
+      tr.querySelector('b').textContent = a.name;
+      tr.querySelector('.help').textContent = a.help;
+      tr.querySelector('.minus').addEventListener('click', () => { selectAxis(i); jogAxis(-1); });
+      tr.querySelector('.plus').addEventListener('click', () => { selectAxis(i); jogAxis(1); });
+      tr.addEventListener('click', () => selectAxis(i));
+      el('axes').append(tr);
+    });
+    selectAxis(S.selectedAxis);
+  }
+  function selectAxis(i) {
+    const n = jogAxes().length;
+    S.selectedAxis = Math.max(0, Math.min(n - 1, i));
+    [...el('axes').children].forEach((tr, k) => tr.classList.toggle('selected', k === S.selectedAxis));
+  }
+  function jogAxis(sign) {
+    const a = jogAxes()[S.selectedAxis];
+    if (!a) return;
+    const amount = sign * (a.rotation ? model.jogDegrees[String(S.step)] : S.step);
+    return send({ op: 'jogCartesian', frame: S.mode, axis: a.name, amount });
+  }
+  function setMode(mode) {
+    if (mode !== 'joint' && S.state && !S.state.jogAxes.world.length) {
+      el('message').textContent = 'this robot has no kinematic chain: it jogs joint by joint only';
+      mode = 'joint';
+    }
+    S.mode = mode;
+    el('mode').value = mode;
+    const cartesian = mode !== 'joint';
+    document.body.classList.toggle('cartesian', cartesian);
+    el('axesBox').classList.toggle('on', cartesian);
+    el('axesTitle').textContent = mode === 'world' ? 'World axes (the cell\'s)' : 'Tool axes (the tool\'s own)';
+    showStep();
+    buildAxes();
+  }
+  function showStep() {
+    el('stepUnit').textContent = S.mode === 'joint' ? 'counts'
+      : 'length units, ' + model.jogDegrees[String(S.step)] + ' degrees';
+  }
   function selectPoint(name) {
     S.selectedPoint = name;
     for (const li of el('points').children) li.classList.toggle('selected', li.dataset.name === name);
@@ -117,6 +169,8 @@ const std::string_view kScript = R"JS('use strict';
     });
     el('gripper').textContent = st.gripper;
     el('tcp').textContent = st.tcp ? '(' + st.tcp.map((x) => x.toFixed(2)).join(', ') + ')' : 'no chain';
+    el('approach').textContent = st.approach ? 'approach (' + st.approach.map((x) => x.toFixed(3)).join(', ') + ')' : '';
+    buildAxes();
     [...el('inputs').children].forEach((d, i) => d.classList.toggle('on', st.inputs[i]));
     [...el('outputs').children].forEach((d, i) => d.classList.toggle('on', st.outputs[i]));
     const list = el('points');
@@ -204,11 +258,12 @@ const std::string_view kScript = R"JS('use strict';
     then(S.selectedPoint);
   };
   const actions = {
-    prevMotor: () => selectMotor(S.selectedMotor - 1),
-    nextMotor: () => selectMotor(S.selectedMotor + 1),
-    jogMinus: () => send({ op: 'jog', motor: S.selectedMotor, delta: -S.step }),
-    jogPlus: () => send({ op: 'jog', motor: S.selectedMotor, delta: S.step }),
+    prevMotor: () => (S.mode === 'joint' ? selectMotor(S.selectedMotor - 1) : selectAxis(S.selectedAxis - 1)),
+    nextMotor: () => (S.mode === 'joint' ? selectMotor(S.selectedMotor + 1) : selectAxis(S.selectedAxis + 1)),
+    jogMinus: () => (S.mode === 'joint' ? send({ op: 'jog', motor: S.selectedMotor, delta: -S.step }) : jogAxis(-1)),
+    jogPlus: () => (S.mode === 'joint' ? send({ op: 'jog', motor: S.selectedMotor, delta: S.step }) : jogAxis(1)),
     step1: () => setStep(1), step10: () => setStep(10), step100: () => setStep(100),
+    jogMode: () => setMode(S.mode === 'joint' ? 'world' : S.mode === 'world' ? 'tool' : 'joint'),
     openGripper: () => send({ op: 'gripper', close: false }),
     closeGripper: () => send({ op: 'gripper', close: true }),
     teach: () => (el('teachName').value.trim() ? teach() : el('teachName').focus()),
@@ -226,14 +281,15 @@ const std::string_view kScript = R"JS('use strict';
     help: () => el('keys').classList.toggle('on'),
     quit: () => {},
   };
-  function setStep(n) { S.step = n; el('step').value = String(n); }
+  function setStep(n) { S.step = n; el('step').value = String(n); showStep(); }
   function movePointSelection(d) {
     const pts = S.state ? S.state.points : [];
     if (!pts.length) return;
     const at = pts.findIndex((p) => p.name === S.selectedPoint);
     selectPoint(pts[Math.max(0, Math.min(pts.length - 1, at < 0 ? 0 : at + d))].name);
   }
-  el('step').addEventListener('change', () => { S.step = Number(el('step').value) || 1; });
+  el('step').addEventListener('change', () => { S.step = Number(el('step').value) || 1; showStep(); });
+  el('mode').addEventListener('change', () => setMode(el('mode').value));
   el('open').addEventListener('click', actions.openGripper);
   el('close').addEventListener('click', actions.closeGripper);
   el('teach').addEventListener('click', teach);
@@ -263,7 +319,10 @@ const std::string_view kScript = R"JS('use strict';
   window.robotsim = {
     model,
     get state() { return S.state; },
-    get selection() { return { motor: S.selectedMotor, point: S.selectedPoint, step: S.step }; },
+    get selection() {
+      const a = jogAxes()[S.selectedAxis];
+      return { motor: S.selectedMotor, point: S.selectedPoint, step: S.step, mode: S.mode, axis: a ? a.name : null };
+    },
     get busy() { return S.pending > 0 || !!S.anim; },
     get shown() { return S.shown; },
     // The still's projection of the shown pose (no mouse): lines in

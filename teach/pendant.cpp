@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
+#include "base/number_text.h"
 #include "base/seconds.h"
 #include "runtime/rhino/rhino_machine.h"
 #include "vm/motor_range.h"
@@ -24,6 +26,7 @@ Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm:
     : cell_(std::move(cell)), motors_(std::move(motors)), file_(std::move(file)) {
   rig_ = std::make_unique<runtime::Rig>(cell_, motors_, stimuli::Stimuli{}, runtime::CollisionMode::Error);
   start_ = rig_->snapshot();
+  if (cell_->robots.front().robot.chain) cartesian_.emplace(cell_->robots.front());
   message_ = fmt::format("teaching {} on {}", file_.path(), cell_->name);
 }
 
@@ -32,12 +35,14 @@ Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm:
     : cell_(std::move(cell)), motors_(std::move(motors)), file_(std::move(file)), device_(std::move(deviceName)) {
   rhino_ = dynamic_cast<rhino::RhinoMachine*>(device.get());
   rig_ = std::make_unique<runtime::Rig>(cell_, std::move(device));
+  if (cell_->robots.front().robot.chain) cartesian_.emplace(cell_->robots.front());
   message_ = fmt::format("teaching {} on {} with the robot on {}", file_.path(), cell_->name, device_);
 }
 
 Pendant::~Pendant() = default;
 
 Outcome Pendant::done(Outcome o) {
+  if (o.ok) limit_.clear();
   message_ = o.message;
   failed_ = !o.ok;
   ++revision_;
@@ -46,7 +51,14 @@ Outcome Pendant::done(Outcome o) {
 
 Outcome Pendant::refuse(std::string message, bool bad) {
   moved_ = false;
+  limit_.clear();
   return done({false, std::move(message), bad});
+}
+
+Outcome Pendant::refuseAt(workcell::JogLimit limit, std::string message) {
+  moved_ = false;
+  limit_ = workcell::jogLimitName(limit);
+  return done({false, std::move(message)});
 }
 
 // The one path that moves the robot: the fault check, the soft limits
@@ -60,8 +72,8 @@ Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
   if (targets.size() != motors_.size())
     return refuse(fmt::format("{} values for {} motors", targets.size(), motors_.size()), true);
   if (const auto i = vm::firstOutOfRange(motors_, targets))
-    return refuse(fmt::format("motor {}: {} is {}: nothing moved", motors_[*i].letter, targets[*i],
-                              vm::outsideRange(motors_[*i])));
+    return refuseAt(workcell::JogLimit::Range, fmt::format("motor {}: {} is {}: nothing moved", motors_[*i].letter,
+                                                           targets[*i], vm::outsideRange(motors_[*i])));
   const vm::Micros start = rig_->clock();
   const runtime::CollisionWatch* watch = rig_->collisionWatch();
   std::optional<runtime::RigSnapshot> before;
@@ -71,8 +83,9 @@ Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
   if (watch && watch->events().size() > seen) {
     const runtime::CollisionEvent hit = watch->events()[seen];
     rig_->restore(*before);
-    return refuse(fmt::format("refused: the move to {} collides {} s into it: {}; nothing moved", valuesText(targets),
-                              base::formatSeconds(hit.at - start), watch->describe(hit.contact)));
+    return refuseAt(workcell::JogLimit::Collision,
+                    fmt::format("refused: the move to {} collides {} s into it: {}; nothing moved", valuesText(targets),
+                                base::formatSeconds(hit.at - start), watch->describe(hit.contact)));
   }
   if (!status) {
     moved_ = false;
@@ -100,10 +113,45 @@ Outcome Pendant::jog(std::size_t motor, std::int32_t delta) {
   const std::int64_t wanted = std::int64_t{targets[motor]} + delta;
   const std::int32_t to = static_cast<std::int32_t>(std::clamp<std::int64_t>(wanted, m.min, m.max));
   if (to == targets[motor] && delta != 0)
-    return refuse(fmt::format("motor {} is at the end of its range ({})", m.letter, to));
+    return refuseAt(workcell::JogLimit::Range, fmt::format("motor {} is at the end of its range ({})", m.letter, to));
   targets[motor] = to;
   Outcome o = moveTo(targets);
   if (o.ok && to != wanted) message_ = o.message = fmt::format("motor {} stopped at the end of its range, {}", m.letter, to);
+  return o;
+}
+
+workcell::JogPose Pendant::jogStart() const {
+  const std::span<const std::int32_t> now = rig_->motors();
+  bool still = jogPose_.has_value() && jogPose_->encoders.size() == now.size();
+  for (std::size_t i = 0; still && i < now.size(); ++i)
+    if (motors_[i].kind != vm::JointKind::Gripper && jogPose_->encoders[i] != now[i]) still = false;
+  workcell::JogPose from = still ? *jogPose_ : cartesian_->poseAt(now);
+  from.encoders.assign(now.begin(), now.end());  // the gripper stays as it is now
+  return from;
+}
+
+Outcome Pendant::jogCartesian(workcell::JogFrame frame, std::string_view axis, double amount) {
+  if (!cartesian_)
+    return refuse(fmt::format("robot {} has no kinematic chain: only joint jogs", cell_->robots.front().robot.name));
+  if (!std::isfinite(amount)) return refuse("a jog's amount is a finite number", true);
+  const workcell::JogPose from = jogStart();
+  const workcell::JogResult r = cartesian_->jog(from, frame, axis, amount);
+  const std::string what = fmt::format("{} jog {} {}{} {}", workcell::jogFrameName(frame), axis, amount < 0 ? "" : "+",
+                                       base::formatNumber(amount), r.rotation ? "degrees" : "length units");
+  if (!r.ok()) {
+    if (*r.limit == workcell::JogLimit::Axis) return refuse(r.message, true);
+    return refuseAt(*r.limit, fmt::format("{} refused ({}): {}; nothing moved", what, workcell::jogLimitName(*r.limit),
+                                          r.message));
+  }
+  Outcome o = moveTo(r.pose.encoders);
+  if (!o.ok) {
+    if (!limit_.empty()) message_ = o.message = fmt::format("{} refused ({}): {}", what, limit_, o.message);
+    return o;
+  }
+  jogPose_ = r.pose;
+  const Eigen::Vector3d p = r.pose.tool.translation();
+  message_ = o.message = fmt::format("{}: tool centre point at {} {} {}", what, base::formatNumber(p.x()),
+                                     base::formatNumber(p.y()), base::formatNumber(p.z()));
   return o;
 }
 
@@ -271,6 +319,15 @@ PendantState Pendant::state() const {
   s.motors = motors_;
   s.encoders.assign(rig_->motors().begin(), rig_->motors().end());
   s.tcp = rig_->tcp();
+  if (cartesian_) {
+    const workcell::JogPose pose = jogStart();
+    const Eigen::Matrix3d R = pose.tool.linear();
+    s.approach = std::array<double, 3>{R(0, 2), R(1, 2), R(2, 2)};
+    s.normal = std::array<double, 3>{R(0, 0), R(1, 0), R(2, 0)};
+    for (const workcell::JogFrame frame : {workcell::JogFrame::World, workcell::JogFrame::Tool})
+      for (const workcell::JogAxis& a : cartesian_->axes(pose, frame))
+        (frame == workcell::JogFrame::World ? s.worldAxes : s.toolAxes).push_back({a.name, a.rotation, a.help});
+  }
   s.gripper = gripperState(motors_, s.encoders);
   s.inputs = device_.empty() ? inputs_ : rig_->machine().inputs();
   s.outputs = rig_->machine().outputs();
@@ -281,6 +338,7 @@ PendantState Pendant::state() const {
   s.motion = frames();
   s.message = message_;
   s.failed = failed_;
+  s.limit = limit_;
   s.fault = fault_;
   s.fileHash = file_.hash();
   return s;

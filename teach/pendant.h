@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "model/workcell/cartesian_jog.h"
 #include "model/workcell/model.h"
 #include "runtime/run/rig.h"
 #include "teach/pendant_state.h"
@@ -51,6 +52,14 @@ class Pendant {
 
   /// Motor `motor` by `delta` counts; stops at its range's end.
   Outcome jog(std::size_t motor, std::int32_t delta);
+  /// The tool by `amount` (length units, or degrees for a turn) along or
+  /// about `axis` of the cell's frame (World) or the tool's own (Tool):
+  /// through the inverse kinematics, on the configuration the arm stands
+  /// in; refused, with nothing moved, at the limit it meets (the state's
+  /// `limit`: range, reach, singularity, collision). Repeated jogs start
+  /// from the exact pose the last one reached, so they do not drift by the
+  /// rounding to encoder counts.
+  Outcome jogCartesian(workcell::JogFrame frame, std::string_view axis, double amount);
   /// Motor `motor` to `value` (refused outside its range).
   Outcome setMotor(std::size_t motor, std::int32_t value);
   /// Every motor to `targets`, at motor speed (refused outside a range).
@@ -86,6 +95,10 @@ class Pendant {
  private:
   Outcome done(Outcome o);
   Outcome refuse(std::string message, bool bad = false);
+  Outcome refuseAt(workcell::JogLimit limit, std::string message);
+  /// Where a Cartesian jog starts: the last jog's exact pose while the arm's motors are still where it put
+  /// them, else the pose at the motors' counts.
+  workcell::JogPose jogStart() const;
   Outcome edit(const std::function<std::string(PointsText&)>& change, std::string message);
   std::optional<std::size_t> gripperMotor() const;
   std::vector<MotionFrame> frames() const;
@@ -100,7 +113,9 @@ class Pendant {
   std::uint8_t inputs_ = 0;                    // simulation: the pendant's input switches
   bool moved_ = false;                         // the last operation was a move
   vm::Micros moveStart_ = 0, moveEnd_ = 0;
-  std::string message_, fault_;
+  std::optional<workcell::CartesianJog> cartesian_;  // when the robot has a chain
+  std::optional<workcell::JogPose> jogPose_;         // the last Cartesian jog's exact pose
+  std::string message_, fault_, limit_;
   bool failed_ = false;
   std::uint64_t revision_ = 1;
 };

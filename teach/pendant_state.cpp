@@ -78,15 +78,26 @@ Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& pl
   Json motion = Json::array();
   for (const MotionFrame& f : s.motion)
     motion.push_back({{"at", f.at}, {"encoders", f.encoders}, {"objects", objectPoses(f.objects, placed)}});
-  Json tcp = nullptr;
-  if (s.tcp) tcp = {(*s.tcp)[0], (*s.tcp)[1], (*s.tcp)[2]};
+  const auto triple = [](const std::optional<std::array<double, 3>>& v) {
+    Json j = nullptr;
+    if (v) j = {(*v)[0], (*v)[1], (*v)[2]};
+    return j;
+  };
+  const auto axes = [](const std::vector<PendantJogAxis>& list) {
+    Json a = Json::array();
+    for (const PendantJogAxis& x : list) a.push_back({{"name", x.name}, {"rotation", x.rotation}, {"help", x.help}});
+    return a;
+  };
   return {{"revision", s.revision},
           {"program", s.program},
           {"cell", s.cell},
           {"device", s.device},
           {"motors", motors},
           {"encoders", s.encoders},
-          {"tcp", tcp},
+          {"tcp", triple(s.tcp)},
+          {"approach", triple(s.approach)},
+          {"normal", triple(s.normal)},
+          {"jogAxes", {{"world", axes(s.worldAxes)}, {"tool", axes(s.toolAxes)}}},
           {"gripper", gripperName(s.gripper)},
           {"inputs", lines(s.inputs)},
           {"outputs", lines(s.outputs)},
@@ -96,6 +107,7 @@ Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& pl
           {"motion", motion},
           {"message", s.message},
           {"failed", s.failed},
+          {"limit", s.limit},
           {"fault", s.fault},
           {"fileHash", fmt::format("{:016x}", s.fileHash)}};
 }

@@ -42,6 +42,14 @@ struct MotionFrame {
   std::vector<Eigen::Isometry3d> objects;  ///< each object's F_world_design
 };
 
+/// An axis a world or tool jog moves along or turns about
+/// (workcell::JogAxis, without its direction).
+struct PendantJogAxis {
+  std::string name;  ///< "X", "RZ", "PITCH"
+  bool rotation = false;
+  std::string help;
+};
+
 struct PendantState {
   std::uint64_t revision = 0;  ///< grows with every change
   std::string program;         ///< the program file
@@ -50,6 +58,10 @@ struct PendantState {
   std::vector<vm::MotorSpec> motors;
   std::vector<std::int32_t> encoders;
   std::optional<std::array<double, 3>> tcp;  ///< in the cell's world coordinates
+  /// The tool's approach (z) and normal (x) in world coordinates (with a chain).
+  std::optional<std::array<double, 3>> approach, normal;
+  /// The axes of a world and of a tool jog at this pose (empty without a chain).
+  std::vector<PendantJogAxis> worldAxes, toolAxes;
   GripperState gripper = GripperState::None;
   std::uint8_t inputs = 0, outputs = 0;  ///< bit 0 = line 1
   std::vector<PendantObject> objects;
@@ -58,6 +70,9 @@ struct PendantState {
   std::vector<MotionFrame> motion;  ///< the last move, time-stepped (empty after a non-move)
   std::string message;  ///< what the last operation did, or why it did not
   bool failed = false;  ///< the last operation was refused or failed
+  /// The limit a refused move met: "range", "reach", "singularity",
+  /// "collision" (workcell::jogLimitName), "" otherwise.
+  std::string limit;
   std::string fault;    ///< the device failed: every motor stopped, nothing more is sent
   std::uint64_t fileHash = 0;
 };
@@ -69,12 +84,13 @@ GripperState gripperState(const std::vector<vm::MotorSpec>& motors, const std::v
 
 /// The page's JSON: {"revision", "program", "cell", "device", "motors":
 /// [{"letter", "kind", "min", "max", "speed"}], "encoders", "tcp" (or
-/// null), "gripper", "inputs", "outputs" (arrays of eight booleans),
+/// null), "approach", "normal" (or null), "jogAxes": {"world": [{"name",
+/// "rotation", "help"}], "tool": [...]}, "gripper", "inputs", "outputs" (arrays of eight booleans),
 /// "objects": [{"name", "pose" (12 numbers, column-major 3x4: F_world ·
 /// F_placed⁻¹, what takes the object's drawing from where the cell placed
 /// it to where it is), "held", "moved"}], "points": [{"name", "values",
 /// "line", "readable"}], "clock", "motion": [{"at", "encoders",
-/// "objects"}], "message", "failed", "fault", "fileHash" (16 hex digits)}.
+/// "objects"}], "message", "failed", "limit", "fault", "fileHash" (16 hex digits)}.
 /// `placed` holds each object's F_world_design where the cell placed it.
 nlohmann::ordered_json pendantJson(const PendantState& state, const std::vector<Eigen::Isometry3d>& placed);
 

@@ -121,7 +121,8 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
     if (!numbers(o.from, "--from", rules::kEncoderCount, reference.size(), v, err)) return kExitBadInput;
     for (std::size_t i = 0; i < v.size(); ++i) reference[i] = static_cast<std::int32_t>(std::lround(v[i]));
   }
-  const workcell::PoseResult r = solver.solve(request, reference);
+  request.optionWords = true;
+  const workcell::PoseResult r = solver.solveAnyOrientation(request, reference);
   const std::vector<vm::MotorSpec> motors = compiler::motorTable(placed.robot);
   const std::string robotName = base::safeText(placed.robot.name);
   const kinematics::IkFamily family = solver.ik().family();
@@ -143,6 +144,10 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
     j["in_range"] = r.inRange;
     if (o.solution) j["solution"] = o.solution;
     j["joints"] = r.q;
+    j["approach"] = {r.rotation(0, 2), r.rotation(1, 2), r.rotation(2, 2)};
+    j["normal"] = {r.rotation(0, 0), r.rotation(1, 0), r.rotation(2, 0)};
+    j["orientations_tried"] = r.orientationsTried;
+    j["turned"] = r.turned;
     Json enc = Json::object();
     for (std::size_t i = 0; i < r.encoders.size(); ++i) enc[std::string(1, motors[i].letter)] = r.encoders[i];
     j["encoders"] = enc;
@@ -160,6 +165,16 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
     out << fmt::format("  {} solution{}, {} within the motors' ranges; chosen: {} (the quickest move from {})\n",
                        r.solutions, r.solutions == 1 ? "" : "s", r.inRange, configText(r.config, family),
                        o.from.empty() ? "home" : "--from");
+  if (r.orientationsTried > 0) {
+    const auto axis = [&](int c) {
+      return fmt::format("{},{},{}", formatNumber(r.rotation(0, c)), formatNumber(r.rotation(1, c)),
+                         formatNumber(r.rotation(2, c)));
+    };
+    out << fmt::format("  the orientation kept from {} does not reach it; free orientation {} tried, turned {} "
+                       "degrees from it, does: --approach {} --normal {}\n",
+                       o.from.empty() ? "home" : "--from", r.orientationsTried, formatNumber(r.turned), axis(2),
+                       axis(0));
+  }
   std::string joints;
   for (std::size_t i = 0; i < r.q.size(); ++i)
     joints += fmt::format("{}{}", i ? "  " : "", formatNumber(r.q[i]));

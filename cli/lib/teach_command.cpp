@@ -74,8 +74,9 @@ void addTeachOptions(CLI::App* cmd, TeachOptions& o) {
   cmd->footer(
       "The page shows the workcell, each motor's encoder count with jog buttons and a slider, the gripper, the "
       "tool centre point, the inputs and outputs and the program's points; TEACH names the current pose as a "
-      "point. Every change of the points is written to the program at once (only its POINTS rows change; the "
-      "file as it was is kept in PROG.rsp.bak). The URL carries a secret token; Ctrl-C stops the server. "
+      "point. Jogs move a motor (joint mode) or the tool along and about the cell's axes (world) or its own "
+      "(tool), through the inverse kinematics; m switches the mode. Every change of the points is written to "
+      "the program at once (only its POINTS rows change; the file as it was is kept in PROG.rsp.bak). The URL carries a secret token; Ctrl-C stops the server. "
       "--tui shows the same pendant in the terminal instead, with the same keys (? lists them, q quits). "
       "docs/teach.md has the whole guide.");
 }

@@ -43,26 +43,39 @@ PoseSolver::PoseSolver(const PlacedRobot& robot)
       F_world_0_(robot.F_world_design * robot.robot.frames.front()),
       F_design_0_(robot.robot.frames.front()) {}
 
+PoseSolver::Kept PoseSolver::kept(std::span<const std::int32_t> reference, std::span<const double> referenceQ) const {
+  const ChainModel& chain = ik_.model();
+  const auto n = static_cast<std::size_t>(chain.size());
+  Kept k;
+  k.refQ.assign(n, 0.0);
+  k.refEncoders.assign(reference.begin(), reference.end());
+  k.refEncoders.resize(std::max<std::size_t>(k.refEncoders.size(), static_cast<std::size_t>(chain.encoderCount())), 0.0);
+  kinematics::jointValuesFromEncoders(chain, std::span<const double>(k.refEncoders), k.refQ);
+  if (referenceQ.size() == n) k.refQ.assign(referenceQ.begin(), referenceQ.end());
+  k.R_ref = toolFrame(chain, k.refQ).linear();
+  return k;
+}
+
 PoseResult PoseSolver::solve(const PoseRequest& request, std::span<const std::int32_t> reference,
                              std::span<const double> referenceQ) const {
-  PoseResult result;
-  const ChainModel& chain = ik_.model();
-  const Robot& robot = robot_.robot;
-  const auto n = static_cast<std::size_t>(chain.size());
-  const auto fail = [&](PoseField field, std::string message, std::string hint, std::string_view code) {
-    result.problem = PoseProblem{field, std::move(message), std::move(hint), code};
+  const Kept k = kept(reference, referenceQ);
+  kinematics::ToolTarget target;
+  if (std::optional<PoseProblem> problem = targetOf(request, k, target)) {
+    PoseResult result;
+    result.problem = std::move(problem);
     return result;
-  };
-  std::vector<double> refQ(n);
-  std::vector<double> refEncoders(reference.begin(), reference.end());
-  refEncoders.resize(std::max<std::size_t>(refEncoders.size(), static_cast<std::size_t>(chain.encoderCount())), 0.0);
-  kinematics::jointValuesFromEncoders(chain, std::span<const double>(refEncoders), refQ);
-  if (referenceQ.size() == n) refQ.assign(referenceQ.begin(), referenceQ.end());
-  const Eigen::Matrix3d R_ref = toolFrame(chain, refQ).linear();
+  }
+  return solveTarget(request, target, k, reference);
+}
 
+std::optional<PoseProblem> PoseSolver::targetOf(const PoseRequest& request, const Kept& k,
+                                                kinematics::ToolTarget& target) const {
+  const auto fail = [](PoseField field, std::string message, std::string hint, std::string_view code) {
+    return std::optional<PoseProblem>(PoseProblem{field, std::move(message), std::move(hint), code});
+  };
+  const Eigen::Matrix3d& R_ref = k.R_ref;
   // The target in frame 0; what is not written comes from the previous point.
   const Eigen::Isometry3d& F_X_0 = frame0(request.robotFrame);
-  kinematics::ToolTarget target;
   target.position = F_X_0.inverse() * request.position;
   Eigen::Vector3d a = R_ref.col(2), nrm = R_ref.col(0);
   if (request.approach) {
@@ -93,7 +106,32 @@ PoseResult PoseSolver::solve(const PoseRequest& request, std::span<const std::in
   target.rotation.col(0) = nrm;
   target.rotation.col(1) = a.cross(nrm);
   target.rotation.col(2) = a;
+  return std::nullopt;
+}
 
+std::string PoseSolver::orientationWords(const PoseRequest& request, const Eigen::Matrix3d& R_0) const {
+  const Eigen::Matrix3d R = frame0(request.robotFrame).linear() * R_0;
+  const char* sep = request.optionWords ? "," : " ";
+  const auto axis = [&](int c) {
+    const auto num = [](double v) { return fmt::format("{:.4g}", std::abs(v) < 5e-5 ? 0.0 : v); };
+    return fmt::format("{}{}{}{}{}", num(R(0, c)), sep, num(R(1, c)), sep, num(R(2, c)));
+  };
+  return request.optionWords ? fmt::format("--approach {} --normal {}", axis(2), axis(0))
+                             : fmt::format("APPROACH {} NORMAL {}", axis(2), axis(0));
+}
+
+PoseResult PoseSolver::solveTarget(const PoseRequest& request, const kinematics::ToolTarget& target, const Kept& from,
+                                   std::span<const std::int32_t> reference) const {
+  PoseResult result;
+  const ChainModel& chain = ik_.model();
+  const Robot& robot = robot_.robot;
+  const auto n = static_cast<std::size_t>(chain.size());
+  const auto fail = [&](PoseField field, std::string message, std::string hint, std::string_view code) {
+    result.problem = PoseProblem{field, std::move(message), std::move(hint), code};
+    return result;
+  };
+  const std::vector<double>& refQ = from.refQ;
+  const std::vector<double>& refEncoders = from.refEncoders;
   const kinematics::IkSolutions solved =
       request.configuration ? ik_.solveConfig(target, refQ, *request.configuration) : ik_.solve(target, refQ);
   if (!solved.ok()) {
@@ -109,12 +147,7 @@ PoseResult PoseSolver::solve(const PoseRequest& request, std::span<const std::in
       const kinematics::IkSolutions near = ik_.solve(free, refQ);
       if (near.ok()) {
         const std::vector<double> q(near.solutions[0].q.begin(), near.solutions[0].q.begin() + static_cast<long>(n));
-        const Eigen::Matrix3d R = F_X_0.linear() * toolFrame(chain, q).linear();
-        const auto axis = [&](int c) {
-          const auto num = [](double v) { return fmt::format("{:.4g}", std::abs(v) < 5e-5 ? 0.0 : v); };
-          return fmt::format("{} {} {}", num(R(0, c)), num(R(1, c)), num(R(2, c)));
-        };
-        hint = fmt::format("here it reaches APPROACH {} NORMAL {}", axis(2), axis(0));
+        hint = "here it reaches " + orientationWords(request, toolFrame(chain, q).linear());
       }
     }
     return fail(field, solved.error.message, hint,
@@ -206,6 +239,7 @@ PoseResult PoseSolver::solve(const PoseRequest& request, std::span<const std::in
   counts.resize(std::max<std::size_t>(counts.size(), static_cast<std::size_t>(chain.encoderCount())), 0.0);
   kinematics::jointValuesFromEncoders(chain, std::span<const double>(counts), q);
   result.rounding = (toolFrame(chain, q).translation() - target.position).norm();
+  result.rotation = frame0(request.robotFrame).linear() * toolFrame(chain, result.q).linear();
   return result;
 }
 

@@ -29,6 +29,9 @@ struct PoseRequest {
   /// InverseKinematics::configurations()), solved alone; unset: every
   /// solution, the quickest move in range chosen.
   std::optional<std::uint8_t> configuration;
+  /// Hints name the orientation as `robotsim ik`'s options (--approach
+  /// X,Y,Z --normal X,Y,Z), not as a program writes it (APPROACH X Y Z).
+  bool optionWords = false;
 };
 
 /// Which part of a request a problem is about (where a message points).
@@ -50,6 +53,12 @@ struct PoseResult {
   int solutions = 0;                   ///< how many solutions the pose has (before ranges)
   int inRange = 0;                     ///< how many of them fit the motors' ranges
   double rounding = 0;                 ///< how far rounding to encoder counts moves the tool centre point
+  /// solveAnyOrientation: how many free orientations were tried besides the
+  /// kept one (0: the kept one did), and how far the chosen one is turned
+  /// from it (degrees).
+  int orientationsTried = 0;
+  double turned = 0;
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< the tool's n, s, a reached, in the request's coordinates
   std::optional<PoseProblem> problem;  ///< set when there is no answer
   bool ok() const { return !problem.has_value(); }
 };
@@ -67,6 +76,14 @@ class PoseSolver {
   PoseResult solve(const PoseRequest& request, std::span<const std::int32_t> reference,
                    std::span<const double> referenceQ = {}) const;
 
+  /// As solve(), but a request with a position only (no approach, no
+  /// normal) whose kept orientation does not reach it (out of reach, near a
+  /// singular pose, a motor out of range) tries every orientation the arm
+  /// leaves free before it refuses, nearest the kept one first
+  /// (pose_orientation_search.cpp): the heading of a SCARA with a roll
+  /// joint, the pitch of a five-axis arm, any turn of a six-axis wrist.
+  PoseResult solveAnyOrientation(const PoseRequest& request, std::span<const std::int32_t> reference) const;
+
   const kinematics::InverseKinematics& ik() const { return ik_; }
   /// How many motors a point has (arm joints, then the gripper if any).
   std::size_t motorCount() const { return robot_.robot.joints.size() + (robot_.robot.hasGripper ? 1 : 0); }
@@ -74,6 +91,18 @@ class PoseSolver {
   const Eigen::Isometry3d& frame0(bool robotFrame) const { return robotFrame ? F_design_0_ : F_world_0_; }
 
  private:
+  // What is kept from the previous point: its joint values, its counts, its tool's rotation in frame 0.
+  struct Kept {
+    std::vector<double> refQ, refEncoders;
+    Eigen::Matrix3d R_ref = Eigen::Matrix3d::Identity();
+  };
+  Kept kept(std::span<const std::int32_t> reference, std::span<const double> referenceQ) const;
+  std::optional<PoseProblem> targetOf(const PoseRequest& request, const Kept& k, kinematics::ToolTarget& target) const;
+  PoseResult solveTarget(const PoseRequest& request, const kinematics::ToolTarget& target, const Kept& k,
+                         std::span<const std::int32_t> reference) const;
+  /// "APPROACH x y z NORMAL x y z" (or the options) of a rotation in frame 0.
+  std::string orientationWords(const PoseRequest& request, const Eigen::Matrix3d& R_0) const;
+
   const PlacedRobot& robot_;
   kinematics::InverseKinematics ik_;
   Eigen::Isometry3d F_world_0_, F_design_0_;

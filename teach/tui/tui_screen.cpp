@@ -69,11 +69,31 @@ std::string keyLabel(std::string_view key) {
   return std::string(key);
 }
 
+// The axes of a Cartesian jog in the selection's mode, one a row; X, Y, Z
+// with the tool centre point's coordinate in world mode.
+int axesPanel(Canvas& c, const PendantState& s, const Selection& sel, int row, int bottom) {
+  const std::vector<PendantJogAxis>& axes = sel.mode == JogMode::World ? s.worldAxes : s.toolAxes;
+  for (std::size_t a = 0; a < axes.size() && row < bottom; ++a, ++row) {
+    std::string line = fmt::format("{:<7} {}", axes[a].name, axes[a].help);
+    if (a == sel.axis) c.put(row, 1, ">");
+    c.put(row, 3, line, kLeftWidth);
+    if (a == sel.axis) c.mark(row, 1, kLeftWidth - 2, Paint::Selected);
+  }
+  return row;
+}
+
 int motorsPanel(Canvas& c, const PendantState& s, const Selection& sel, int row, int bottom) {
-  c.put(row, 1, "MOTORS");
-  c.mark(row, 1, 6, Paint::Title);
-  c.put(row, 28, fmt::format("jog step {}", sel.step), kLeftWidth);
-  ++row;
+  const bool joint = sel.mode == JogMode::Joint;
+  const std::string title = joint ? "MOTORS" : sel.mode == JogMode::World ? "WORLD AXES" : "TOOL AXES";
+  c.put(row, 1, title);
+  c.mark(row, 1, static_cast<int>(title.size()), Paint::Title);
+  const std::string step = joint ? fmt::format("jog step {}", sel.step)
+                                 : fmt::format("jog step {}, {} deg", sel.step, formatNumber(jogDegrees(sel.step)));
+  c.put(row, kLeftWidth - 1 - static_cast<int>(step.size()), step, kLeftWidth);
+  c.put(row + 1, 3, fmt::format("mode {} (m: joint, world, tool)", jogModeName(sel.mode)), kLeftWidth);
+  c.mark(row + 1, 8, static_cast<int>(jogModeName(sel.mode).size()), Paint::Selected);
+  row += 2;
+  if (!joint) return axesPanel(c, s, sel, row, bottom);
   for (std::size_t m = 0; m < s.motors.size() && row < bottom; ++m, ++row) {
     const vm::MotorSpec& spec = s.motors[m];
     const std::int32_t value = m < s.encoders.size() ? s.encoders[m] : 0;
@@ -97,7 +117,12 @@ int worldPanel(Canvas& c, const PendantState& s, int row, int bottom) {
             kLeftWidth);
     else
       c.put(row + 1, 3, "(the robot has no chain)", kLeftWidth);
-    row += 3;
+    if (s.approach)
+      c.put(row + 2, 3,
+            fmt::format("approach {} {} {}", formatNumber((*s.approach)[0], 3), formatNumber((*s.approach)[1], 3),
+                        formatNumber((*s.approach)[2], 3)),
+            kLeftWidth);
+    row += s.approach ? 4 : 3;
   }
   if (row + 3 <= bottom) {
     c.put(row, 10, "1 2 3 4 5 6 7 8");
@@ -168,9 +193,9 @@ struct ActionGroup {
   std::string_view help;
 };
 constexpr ActionGroup kGroups[] = {
-    {KeyAction::PrevMotor, KeyAction::NextMotor, "select the motor above / below"},
-    {KeyAction::JogMinus, KeyAction::JogPlus, "jog the selected motor by -step / +step"},
-    {KeyAction::Step1, KeyAction::Step100, "jog step 1, 10, 100 counts"},
+    {KeyAction::PrevMotor, KeyAction::NextMotor, "select the motor (world, tool: the axis) above / below"},
+    {KeyAction::JogMinus, KeyAction::JogPlus, "jog the selected motor or axis by -step / +step"},
+    {KeyAction::Step1, KeyAction::Step100, "jog step 1, 10, 100 (counts, lengths; 1, 5, 15 deg)"},
     {KeyAction::OpenGripper, KeyAction::CloseGripper, "open / close the gripper"},
     {KeyAction::PrevPoint, KeyAction::NextPoint, "select the point above / below"},
 };
@@ -256,7 +281,7 @@ Screen layoutScreen(const PendantState& state, const Selection& selection, const
     c.screen().cursorRow = rows - 1;
     c.screen().cursorCol = std::min(end, cols - 1);
   } else {
-    c.put(rows - 1, 0, "Left/Right jog  Up/Down motor  1 2 3 step  o c grip  t teach  g go to  ? keys");
+    c.put(rows - 1, 0, "Left/Right jog  Up/Down select  m mode  1 2 3 step  o c grip  t teach  ? keys");
     c.mark(rows - 1, 0, cols, Paint::Dim);
   }
   return c.screen();

@@ -7,8 +7,11 @@
 //
 //   row 0      title: program, cell, simulation or device; "? keys  q quit"
 //   row 1      rule
-//   rows 2..   left: MOTORS (letter, joint type, value in counts, range),
-//              TOOL CENTRE POINT (world), INPUTS, OUTPUTS, what is held;
+//   rows 2..   left: the jog mode and step; MOTORS (letter, joint type,
+//              value in counts, range) in joint mode, or the WORLD or TOOL
+//              AXES a Cartesian jog moves along or turns about;
+//              TOOL CENTRE POINT (world) and the approach, INPUTS,
+//              OUTPUTS, what is held;
 //              right: POINTS (name, values), scrolled to the selection
 //   rows-3     rule
 //   rows-2     the last operation's message (a device fault first)
@@ -23,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "teach/keys.h"
 #include "teach/pendant_state.h"
 
 namespace rs::teach::tui {
@@ -30,10 +34,13 @@ namespace rs::teach::tui {
 /// The smallest terminal the layout fits (a VT100's).
 inline constexpr int kMinCols = 80, kMinRows = 24;
 
-/// What the terminal keeps itself: the motor and point the keys act on,
-/// the jog step, whether the key help is shown.
+/// What the terminal keeps itself: the jog mode, the motor (joint mode) or
+/// axis (world, tool) and the point the keys act on, the jog step, whether
+/// the key help is shown.
 struct Selection {
+  JogMode mode = JogMode::Joint;
   std::size_t motor = 0;
+  std::size_t axis = 0;
   std::size_t point = 0;
   std::int32_t step = 10;
   bool help = false;

@@ -21,6 +21,8 @@ bool isYes(std::string_view key) { return key == "y" || key == "Y"; }
 void Session::clampSelection() {
   const PendantState s = pendant_.state();
   if (!s.motors.empty()) selection_.motor = std::min(selection_.motor, s.motors.size() - 1);
+  const std::vector<PendantJogAxis>& axes = selection_.mode == JogMode::Tool ? s.toolAxes : s.worldAxes;
+  selection_.axis = axes.empty() ? 0 : std::min(selection_.axis, axes.size() - 1);
   if (!s.points.empty()) selection_.point = std::min(selection_.point, s.points.size() - 1);
   else selection_.point = 0;
 }
@@ -61,19 +63,40 @@ bool Session::press(std::string_view key) {
     note_ = fmt::format("no key {} (? lists the keys)", key);
     return true;
   }
-  const std::size_t motors = pendant_.state().motors.size();
+  const PendantState now = pendant_.state();
+  const bool joint = selection_.mode == JogMode::Joint;
+  const std::vector<PendantJogAxis>& axes = selection_.mode == JogMode::World ? now.worldAxes : now.toolAxes;
+  std::size_t& row = joint ? selection_.motor : selection_.axis;
+  const std::size_t rows = joint ? now.motors.size() : axes.size();
+  const auto jog = [&](int sign) {
+    if (joint) {
+      pendant_.jog(selection_.motor, sign * selection_.step);
+    } else if (selection_.axis < axes.size()) {
+      const PendantJogAxis& a = axes[selection_.axis];
+      pendant_.jogCartesian(selection_.mode == JogMode::World ? workcell::JogFrame::World : workcell::JogFrame::Tool,
+                            a.name, sign * (a.rotation ? jogDegrees(selection_.step) : selection_.step));
+    }
+  };
   switch (binding->action) {
     case KeyAction::PrevMotor:
-      if (selection_.motor > 0) --selection_.motor;
+      if (row > 0) --row;
       break;
     case KeyAction::NextMotor:
-      if (selection_.motor + 1 < motors) ++selection_.motor;
+      if (row + 1 < rows) ++row;
       break;
-    case KeyAction::JogMinus: pendant_.jog(selection_.motor, -selection_.step); break;
-    case KeyAction::JogPlus: pendant_.jog(selection_.motor, selection_.step); break;
+    case KeyAction::JogMinus: jog(-1); break;
+    case KeyAction::JogPlus: jog(1); break;
     case KeyAction::Step1: selection_.step = 1; break;
     case KeyAction::Step10: selection_.step = 10; break;
     case KeyAction::Step100: selection_.step = 100; break;
+    case KeyAction::JogMode:
+      if (now.worldAxes.empty()) {
+        note_ = "this robot has no kinematic chain: it jogs joint by joint only";
+      } else {
+        selection_.mode = nextJogMode(selection_.mode);
+        note_ = fmt::format("jog mode {}", jogModeName(selection_.mode));
+      }
+      break;
     case KeyAction::OpenGripper: pendant_.gripper(false); break;
     case KeyAction::CloseGripper: pendant_.gripper(true); break;
     case KeyAction::Teach: ask(Asking::TeachName, "name of the new point (Enter teaches, Esc cancels): "); break;

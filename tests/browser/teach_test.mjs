@@ -9,7 +9,8 @@
 // Checks: the page loads and draws without fetching anything but its own
 // server; two motors jogged with the buttons and the keys; a slider; two
 // points taught, one re-taught after a confirmation; going to a point
-// animates the move and ends on the point; an input toggled; the program
+// animates the move and ends on the point; an input toggled; the jog
+// modes (world and tool jogs by key and button, a refusal); the program
 // file written equals tests/browser/golden/teach_pick_and_place.rsp byte
 // for byte (worked out by hand: see the comment at `golden` below) and its
 // .bak the program as it was; a write refused after the file changed on
@@ -189,6 +190,71 @@ try {
   const written = fs.readFileSync(program, 'utf8');
   check(written === golden, 'the program written equals the golden file byte for byte');
   check(fs.readFileSync(program + '.bak', 'utf8') === original, 'PROG.rsp.bak holds the program as it was');
+
+  // ---- jog modes (docs/teach.md, "Jog modes"): m goes joint -> world ->
+  // tool; the mode and the step's units show; in world, X +10 moves the
+  // tool centre point 10 along the cell's X (the state's tcp is the rig's
+  // forward kinematics of the counts, not the jog's arithmetic: within
+  // one length unit of the counts' rounding); RY turns the tool about the
+  // point; in tool, Z goes along the approach (down: y falls); a jog out
+  // of reach is refused and moves nothing.
+  await page.locator('#cell').click({ position: { x: 5, y: 5 } });
+  const selection = () => page.evaluate(() => window.robotsim.selection);
+  const near = (a, b) => Math.abs(a - b) <= 1;
+  await page.keyboard.press('m');
+  check((await selection()).mode === 'world' && (await page.locator('#mode').inputValue()) === 'world',
+        'm switches the jog mode to world, and the mode menu shows it');
+  check(await page.locator('#axesBox.on').isVisible(), '  the world axes are listed');
+  const axisNames = await page.locator('#axes tr').evaluateAll((trs) => trs.map((tr) => tr.dataset.axis));
+  check(JSON.stringify(axisNames) === '["X","Y","Z","RY"]', '  X, Y, Z and the SCARA\'s turn about the world\'s Y',
+        axisNames.join(' '));
+  await page.keyboard.press('2');
+  check((await page.locator('#stepUnit').textContent()) === 'length units, 5 degrees', '  the step in its units',
+        await page.locator('#stepUnit').textContent());
+  let jogFrom = await state();
+  await page.keyboard.press('ArrowRight');
+  await page.waitForFunction(() => window.robotsim.state.message.startsWith('world jog X +10 length units'), null,
+                             { timeout: 10000 });
+  await settled();
+  let jogTo = await state();
+  check(near(jogTo.tcp[0], jogFrom.tcp[0] + 10) && near(jogTo.tcp[1], jogFrom.tcp[1]) && near(jogTo.tcp[2], jogFrom.tcp[2]),
+        'world X +10 by the key moves the tool centre point 10 along X', `${jogFrom.tcp} -> ${jogTo.tcp}`);
+  jogFrom = jogTo;
+  await page.locator('#axes tr[data-axis="RY"] button.plus').click();
+  await page.waitForFunction(() => window.robotsim.state.message.startsWith('world jog RY +5 degrees'), null,
+                             { timeout: 10000 });
+  await settled();
+  jogTo = await state();
+  check(near(jogTo.tcp[0], jogFrom.tcp[0]) && near(jogTo.tcp[2], jogFrom.tcp[2]) &&
+        JSON.stringify(jogTo.encoders) !== JSON.stringify(jogFrom.encoders),
+        'RY + (the button) turns the tool about the point, which stays', `${jogFrom.tcp} -> ${jogTo.tcp}`);
+  jogFrom = jogTo;
+  await page.keyboard.press('m');
+  check((await selection()).mode === 'tool' && /Tool axes/.test(await page.locator('#axesTitle').textContent()),
+        'm again: tool');
+  // The row stays where it was (RY, the fourth: in tool it is RZ); one up is Z.
+  await page.keyboard.press('ArrowUp');
+  check((await selection()).axis === 'Z', '  the arrows select the axis', (await selection()).axis);
+  await page.keyboard.press('ArrowRight');
+  await page.waitForFunction(() => window.robotsim.state.message.startsWith('tool jog Z +10 length units'), null,
+                             { timeout: 10000 });
+  await settled();
+  jogTo = await state();
+  check(near(jogTo.tcp[1], jogFrom.tcp[1] - 10) && near(jogTo.tcp[0], jogFrom.tcp[0]),
+        'tool Z +10 moves 10 along the approach (down)', `${jogFrom.tcp} -> ${jogTo.tcp}`);
+  jogFrom = jogTo;
+  await page.evaluate(() => window.robotsim.send({ op: 'jogCartesian', frame: 'world', axis: 'X', amount: 1000 }));
+  await page.waitForFunction(() => window.robotsim.state.limit === 'reach', null, { timeout: 10000 });
+  jogTo = await state();
+  const refusedText = await page.locator('#message').textContent();
+  check(/^world jog X \+1000 length units refused \(reach\): .*; nothing moved$/.test(refusedText) &&
+        await page.locator('#status.failed').isVisible() && JSON.stringify(jogTo.encoders) === JSON.stringify(jogFrom.encoders),
+        'a jog out of reach is refused, shown, and moves nothing', refusedText);
+  await page.locator('#cell').click({ position: { x: 5, y: 5 } });
+  await page.keyboard.press('m');
+  check((await selection()).mode === 'joint' && !(await page.locator('#axesBox').isVisible()) &&
+        (await page.locator('#stepUnit').textContent()) === 'counts', 'm again: back to joint, in counts');
+  if (opt.images) await page.screenshot({ path: path.join(opt.images, 'teach-jog.png'), clip: { x: 900, y: 0, width: 380, height: 500 } });
 
   // ---- someone edits the file: the next write is refused and says so
   const theirs = original + '; edited in another editor\n';

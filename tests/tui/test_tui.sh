@@ -129,13 +129,44 @@ expect_screen "x -225  y 840  z 0"
 keys i 3                                 # input 3 on
 expect_screen "INPUTS   . . # . . . . ."
 keys '?'                                 # the key help, from the shared key map
-expect_screen " Left Right - + jog the selected motor by -step / +step"
+expect_screen " Left Right - + jog the selected motor or axis by -step / +step"
 keys '?'
 # Too small a terminal gets a request, then the panel again.
 tm resize-window -t t -x 70 -y 20
 expect_screen "robotsim teach needs 80x24"
 tm resize-window -t t -x 80 -y 24
 expect_screen "TOOL CENTRE POINT (world)"
+# Jog modes (docs/teach.md, "Jog modes"): from ABOVE (200 -30 100 20 0,
+# the tool centre point worked out above), m switches to world: the axes
+# of a SCARA with a roll joint, X +10 moves the point 10 along the cell's
+# X (the message gives the exact pose, the panel the counts' rounding);
+# then tool: Z +10 goes 10 further along the approach, which points down
+# (y falls by 10); Z +100 in world leaves the arm's reach (225 from its
+# axis): refused, and nothing moves; m (twice) goes back to joint.
+keys NPage g
+expect_screen "went to ABOVE"
+keys m
+expect_screen "mode world (m: joint, world, tool)"
+expect_screen " WORLD AXES"
+expect_screen "RY      about the world's Y, the heading"
+keys 2 Right
+expect_screen "world jog X +10 length units: tool centre point at -201.169 828 76.5545"
+# The panel's point is forward kinematics of the whole counts: within 1 length unit (E turns 0.1175
+# degrees a count, D 0.2233: about 0.45 at most at this reach).
+x=$(screen | sed -n 's/^   x \(-\{0,1\}[0-9.]*\)  y .*/\1/p' | head -1)
+awk -v x="$x" 'BEGIN { exit !(x != "" && x + 201.169 < 1 && x + 201.169 > -1) }' ||
+  fail "after world X +10 the tool centre point's x is '$x', not within 1 of -201.169"
+keys m
+expect_screen " TOOL AXES"
+keys Down Down Right
+expect_screen "tool jog Z +10 length units: tool centre point at -201.169 818 76.5545"
+tcp_before=$(screen | grep '^   x ')
+keys m m 3 Right                         # tool, joint, world: Z still selected
+expect_screen "world jog Z +100 length units refused (reach): the point is"
+[ "$(screen | grep '^   x ')" = "$tcp_before" ] || fail "a refused jog moved the tool: $(screen | grep '^   x ')"
+keys m m
+expect_screen "mode joint (m: joint, world, tool)"
+expect_screen " MOTORS"
 keys q
 finished
 [ "$(cat "$work/code")" = 0 ] || fail "q exits $(cat "$work/code"), not 0"

@@ -72,23 +72,25 @@ TEST_CASE("tui: the first screen, 80x24, every panel", "[teach][tui]") {
   CHECK(f.row(0)[63] == '~');
   CHECK(f.row(0).substr(66) == "? keys  q quit");
   CHECK(f.row(1) == std::string(80, '-'));
-  CHECK(f.left(2) == " MOTORS                     jog step 10");
+  CHECK(f.left(2) == " MOTORS                         jog step 10");
+  CHECK(f.left(3) == "   mode joint (m: joint, world, tool)");
   // Letter, joint type, value in counts, range; the gripper open at 0.
-  CHECK(f.left(3) == " > X prismatic       0  -5000..5000");
-  CHECK(f.left(4) == "   Z prismatic       0  -3400..3400");
-  CHECK(f.left(5) == "   Y prismatic       0  -2000..2000");
-  CHECK(f.left(6) == "   A gripper         0  0..104  open");
-  CHECK(f.left(8) == " TOOL CENTRE POINT (world)");
-  CHECK(f.left(9) == "   x 500  y 200  z 400");
-  CHECK(f.left(11) == "          1 2 3 4 5 6 7 8");
-  CHECK(f.left(12) == " INPUTS   . . . . . . . .");
-  CHECK(f.left(13) == " OUTPUTS  . . . . . . . .");
-  CHECK(f.left(15) == " HOLDS    nothing");
+  CHECK(f.left(4) == " > X prismatic       0  -5000..5000");
+  CHECK(f.left(5) == "   Z prismatic       0  -3400..3400");
+  CHECK(f.left(6) == "   Y prismatic       0  -2000..2000");
+  CHECK(f.left(7) == "   A gripper         0  0..104  open");
+  CHECK(f.left(9) == " TOOL CENTRE POINT (world)");
+  CHECK(f.left(10) == "   x 500  y 200  z 400");
+  CHECK(f.left(11) == "   approach 0 -1 0");
+  CHECK(f.left(13) == "          1 2 3 4 5 6 7 8");
+  CHECK(f.left(14) == " INPUTS   . . . . . . . .");
+  CHECK(f.left(15) == " OUTPUTS  . . . . . . . .");
+  CHECK(f.left(17) == " HOLDS    nothing");
   // The points panel: name, then each value right-aligned to its column.
   CHECK(f.row(2).substr(44) == "| POINTS (1)");
   CHECK(f.row(3).substr(44) == "| > OVER -2800 2800 1000 0");
   CHECK(f.row(21) == std::string(80, '-'));
-  CHECK(f.row(23).rfind("Left/Right jog  Up/Down motor", 0) == 0);
+  CHECK(f.row(23) == "Left/Right jog  Up/Down select  m mode  1 2 3 step  o c grip  t teach  ? keys");
   CHECK(s.cursorRow == -1);
 }
 
@@ -99,11 +101,11 @@ TEST_CASE("tui: jog keys move the selected motor by the step, and the tool centr
   CHECK(f.pendant->state().encoders[0] == 210);
   f.press({"ArrowDown", "1", "ArrowLeft", "-"});  // Z -2
   CHECK(f.pendant->state().encoders[1] == -2);
-  CHECK(f.left(2) == " MOTORS                     jog step 1");
-  CHECK(f.left(3) == "   X prismatic     210  -5000..5000");
-  CHECK(f.left(4) == " > Z prismatic      -2  -3400..3400");
+  CHECK(f.left(2) == " MOTORS                          jog step 1");
+  CHECK(f.left(4) == "   X prismatic     210  -5000..5000");
+  CHECK(f.left(5) == " > Z prismatic      -2  -3400..3400");
   // (500 + 21, 200, 400 - 0.2)
-  CHECK(f.left(9) == "   x 521  y 200  z 399.8");
+  CHECK(f.left(10) == "   x 521  y 200  z 399.8");
   // The selection stops at the first and last motor.
   f.press({"ArrowUp", "ArrowUp", "ArrowUp"});
   CHECK(f.session->selection().motor == 0);
@@ -164,31 +166,32 @@ TEST_CASE("tui: go to, inputs, help, a small terminal and quit", "[teach][tui]")
   Fixture f;
   f.press({"g"});
   CHECK(f.pendant->state().encoders == std::vector<std::int32_t>{-2800, 2800, 1000, 0});
-  CHECK(f.left(9) == "   x 220  y 100  z 680");
+  CHECK(f.left(10) == "   x 220  y 100  z 680");
   f.press({"i", "5"});
-  CHECK(f.left(12) == " INPUTS   . . . . # . . .");
+  CHECK(f.left(14) == " INPUTS   . . . . # . . .");
   f.press({"i", "9"});
   CHECK(f.row(22) == "inputs are 1..8, not 9");
   f.press({"u", "2"});
-  CHECK(f.left(13) == " OUTPUTS  . # . . . . . .");
+  CHECK(f.left(15) == " OUTPUTS  . # . . . . . .");
   f.press({"u", "2"});
-  CHECK(f.left(13) == " OUTPUTS  . . . . . . . .");
+  CHECK(f.left(15) == " OUTPUTS  . . . . . . . .");
   f.press({"?"});
   // Every key of the shared key map is listed, paired actions on one line,
   // then the terminal's own keys: one column, rows 2..22.
-  CHECK(f.row(2) == " Up Down        select the motor above / below");
-  CHECK(f.row(3) == " Left Right - + jog the selected motor by -step / +step");
-  CHECK(f.row(4) == " 1 2 3          jog step 1, 10, 100 counts");
-  CHECK(f.row(5) == " o c            open / close the gripper");
-  CHECK(f.row(6) == " t              teach: name the current pose as a new point");
-  CHECK(f.row(11) == " PgUp PgDn      select the point above / below");
-  CHECK(f.row(17) == " u 1..8         switch an output");
-  CHECK(f.row(18) == " l              read the program file again (after an edit elsewhere)");
+  CHECK(f.row(2) == " Up Down        select the motor (world, tool: the axis) above / below");
+  CHECK(f.row(3) == " Left Right - + jog the selected motor or axis by -step / +step");
+  CHECK(f.row(4) == " 1 2 3          jog step 1, 10, 100 (counts, lengths; 1, 5, 15 deg)");
+  CHECK(f.row(5) == " m              jog mode: joint, world, tool (in turn)");
+  CHECK(f.row(6) == " o c            open / close the gripper");
+  CHECK(f.row(7) == " t              teach: name the current pose as a new point");
+  CHECK(f.row(12) == " PgUp PgDn      select the point above / below");
+  CHECK(f.row(18) == " u 1..8         switch an output");
+  CHECK(f.row(19) == " l              read the program file again (after an edit elsewhere)");
   CHECK(f.row(23) == "KEYS, as on the web page: ? hides them, q quits");
   for (const rs::teach::KeyBinding& k : rs::teach::kKeys) {
     INFO(k.key);
     bool listed = false;
-    for (int r = 2; r <= 18; ++r) {
+    for (int r = 2; r <= 19; ++r) {
       const std::string label = f.row(r).substr(1, 14) + " ";
       listed |= label.find(std::string(k.key.substr(0, 5) == "Arrow" ? k.key.substr(5) : k.key) + " ") !=
                     std::string::npos ||
@@ -212,14 +215,14 @@ TEST_CASE("tui: the gripper closes on the block at a point and the panel says wh
   Fixture f;
   f.press({"g", "ArrowDown", "ArrowDown", "3", "ArrowRight", "ArrowRight", "ArrowRight", "ArrowRight", "2"});
   for (int i = 0; i < 9; ++i) f.press({"ArrowRight"});
-  CHECK(f.left(5) == " > Y prismatic    1490  -2000..2000");
-  CHECK(f.left(9) == "   x 220  y 51  z 680");
+  CHECK(f.left(6) == " > Y prismatic    1490  -2000..2000");
+  CHECK(f.left(10) == "   x 220  y 51  z 680");
   f.press({"c"});
-  CHECK(f.left(6) == "   A gripper       104  0..104  closed");
-  CHECK(f.left(15) == " HOLDS    block (object 2)");
+  CHECK(f.left(7) == "   A gripper       104  0..104  closed");
+  CHECK(f.left(17) == " HOLDS    block (object 2)");
   f.press({"o"});
-  CHECK(f.left(6) == "   A gripper         0  0..104  open");
-  CHECK(f.left(15) == " HOLDS    nothing");
+  CHECK(f.left(7) == "   A gripper         0  0..104  open");
+  CHECK(f.left(17) == " HOLDS    nothing");
 }
 
 TEST_CASE("tui: l reads the file again after an edit elsewhere, and teaching goes on on top of it", "[teach][tui]") {
@@ -233,4 +236,35 @@ TEST_CASE("tui: l reads the file again after an edit elsewhere, and teaching goe
   f.press({"t", "A", "Enter"});
   // The new row under OVER, above the editor's comment.
   CHECK(f.text() == kProgram + "A          0     0     0    0\n; an editor was here\n");
+}
+
+TEST_CASE("tui: m switches the jog mode; in world the arrows select an axis and jog the tool along it",
+          "[teach][tui][jog]") {
+  Fixture f;
+  f.press({"m"});
+  CHECK(f.session->selection().mode == rs::teach::JogMode::World);
+  CHECK(f.left(2) == " WORLD AXES              jog step 10, 5 deg");
+  CHECK(f.left(3) == "   mode world (m: joint, world, tool)");
+  // The gantry's axes: X, Y, Z and no turn (it has none).
+  CHECK(f.left(4) == " > X       along the world's X");
+  CHECK(f.left(5) == "   Y       along the world's Y");
+  CHECK(f.left(6) == "   Z       along the world's Z");
+  CHECK(f.row(22) == "jog mode world");
+  // Z +10 twice, by the step of 10 (the gantry's Z is 0.1 a count: 200 counts), then X -1.
+  f.press({"ArrowDown", "ArrowDown", "ArrowDown", "ArrowRight", "+"});
+  CHECK(f.session->selection().axis == 2);
+  CHECK(f.pendant->state().encoders == std::vector<std::int32_t>{0, 200, 0, 0});
+  CHECK(f.row(22) == "world jog Z +10 length units: tool centre point at 500 200 420");
+  f.press({"ArrowUp", "ArrowUp", "1", "ArrowLeft"});
+  CHECK(f.pendant->state().encoders == std::vector<std::int32_t>{-10, 200, 0, 0});
+  CHECK(f.left(9) == "   x 499  y 200  z 420");  // three axes rows: the point one row higher than under four motors
+  // Tool, then back to joint.
+  f.press({"m"});
+  CHECK(f.left(2) == " TOOL AXES                jog step 1, 1 deg");
+  CHECK(f.left(4).rfind(" > X       along the tool's x (the normal)", 0) == 0);
+  f.press({"m"});
+  CHECK(f.left(2) == " MOTORS                          jog step 1");
+  // In joint mode the arrows move motors again.
+  f.press({"ArrowRight"});
+  CHECK(f.pendant->state().encoders == std::vector<std::int32_t>{-9, 200, 0, 0});
 }
