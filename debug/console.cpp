@@ -42,8 +42,8 @@ const std::vector<Console::Command>& Console::commands() {
        "go back to the last breakpoint or watch; the last moment one of them would have stopped the run going "
        "forwards (hit counts aside), else the start"},
       {"goto-time", "gt", "goto-time TIME",
-       "go to the moment TIME seconds; where a run paused at TIME stands (right after the instruction that takes the "
-       "clock past it), forwards or backwards"},
+       "go to the moment TIME seconds; exactly, forwards or backwards: inside a move (or a DELAY) the instruction "
+       "under way is the current one and motors, tcp and objects show the pose at TIME"},
       {"print", "p", "print [VAR|motors|tcp|io|objects|clock|in N|out N|LETTER]",
        "show a value; a variable (all of them without an argument), the motors, the tool centre point, inputs and "
        "outputs, the workcell's objects, the clock, one input or output, one motor"},

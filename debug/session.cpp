@@ -259,15 +259,16 @@ std::string Session::emptyCloseNote(std::uint64_t emptyClosesBefore) const {
   return fmt::format("the gripper closed on nothing{}{}", times, nearest.empty() ? "" : ": " + nearest);
 }
 
-void Session::standAtCollision(const std::vector<int>& ids) {
+bool Session::standAtCollision(const std::vector<int>& ids) {
   const bool collisionStop = std::any_of(ids.begin(), ids.end(), [this](int id) {
     const Breakpoint* b = find(id);
     return b && b->kind == Breakpoint::Kind::Collision;
   });
   const auto events = run_->rig().collisions();
-  if (!collisionStop || events.empty()) return;
+  if (!collisionStop || events.empty()) return false;
   const runtime::CollisionEvent& e = events.back();
   if (e.at < run_->rig().clock() && e.instruction < run_->spec().image->code.size()) moment_ = Moment{e.at, e.instruction};
+  return true;
 }
 
 void Session::standWithin(vm::Micros t) {
@@ -308,6 +309,7 @@ Stop Session::stopped(Stop stop) {
 }
 
 Stop Session::forward(const Target& target) {
+  const bool within = moment_.has_value();
   moment_.reset();
   if (run_->finished()) return stopped(finishedStop(true));
   const std::uint64_t closesBefore = emptyCloses();
@@ -316,6 +318,13 @@ Stop Session::forward(const Target& target) {
   std::vector<int> ids;
   std::vector<std::string> notes;
   bool done = false;
+  // From inside an instruction under way, the run already stands after it:
+  // that moment (the instruction finished) is the first one forwards.
+  bool already = false;
+  if (within) {
+    if (target.breakpoints) already = stopsHere(*run_, probe, true, ids, notes);
+    if (run_->interpreter().steps() >= target.steps || (target.done && target.done(*run_))) done = already = true;
+  }
   runtime::RunUntil until;
   until.steps = target.steps;
   until.time = target.time;
@@ -331,14 +340,14 @@ Stop Session::forward(const Target& target) {
   // Nothing to look at after each step: the interpreter runs unwatched.
   const bool watched = target.breakpoints && (!breakpoints_.empty() || !watches_.empty());
   if (!watched && !target.done) until.when = nullptr;
-  timeline_->forward(until, interrupted_);
+  if (!already) timeline_->forward(until, interrupted_);
   if (run_->finished()) {
     Stop s = finishedStop(false);
     s.note = emptyCloseNote(closesBefore);
     return stopped(std::move(s));
   }
   Stop s;
-  if (timeline_->wasInterrupted()) {
+  if (!already && timeline_->wasInterrupted()) {
     s = {StopReason::Pause, "interrupted", {}};
   } else if (!ids.empty()) {
     const bool onlyWatches = std::none_of(ids.begin(), ids.end(), [this](int id) { return find(id) != nullptr; });
@@ -350,8 +359,7 @@ Stop Session::forward(const Target& target) {
     for (std::size_t i = 0, w = 0; i < ids.size(); ++i)
       if (!find(ids[i]) && w < notes.size()) parts.push_back(fmt::format("watch {}: {}", ids[i], notes[w++]));
     for (const std::string& p : parts) s.message += (s.message.empty() ? "" : ", ") + p;
-    standAtCollision(ids);
-    if (moment_) s.message += ": " + collisionText();
+    if (standAtCollision(ids)) s.message += ": " + collisionText();
   } else if (done || run_->interpreter().steps() >= target.steps) {
     s = {StopReason::Step, "step done", {}};
   } else if (run_->rig().clock() > target.time) {
@@ -365,7 +373,8 @@ Stop Session::forward(const Target& target) {
 
 Stop Session::step(std::uint64_t n) {
   Target t;
-  const std::uint64_t now = run_->interpreter().steps();
+  // Inside an instruction under way, it is not done yet: it is the first.
+  const std::uint64_t now = run_->interpreter().steps() - (moment_ ? 1 : 0);
   t.steps = now + std::min(n, UINT64_MAX - now);
   return forward(t);
 }
@@ -388,6 +397,8 @@ diag::Result<Stop> Session::finish() {
 Stop Session::resume() { return forward({}); }
 
 Stop Session::until(vm::Micros time) {
+  // Inside an instruction under way that ends after `time`: that moment.
+  if (moment_ && time >= moment_->time && time < run_->rig().clock()) return gotoTime(time);
   Target t;
   t.time = time;
   if (run_->rig().clock() > time && !run_->finished())
@@ -447,8 +458,7 @@ Stop Session::reverseContinue() {
     else if (w < foundNotes.size()) part = fmt::format("watch {}: {}", foundIds[i], foundNotes[w++]);
     s.message += (s.message.empty() ? "" : ", ") + part;
   }
-  standAtCollision(foundIds);
-  if (moment_) s.message += ": " + collisionText();
+  if (standAtCollision(foundIds)) s.message += ": " + collisionText();
   return stopped(std::move(s));
 }
 
@@ -474,6 +484,8 @@ std::optional<std::string> Session::setInput(int input, bool on) {
   if (run_->finished()) return std::string("the run is over: go back first (reverse-step, goto-time)");
   if (input < 1 || input > 8) return fmt::format("there is no input {}: inputs are 1..8", input);
   if (!timeline_->setInput(input, on)) return std::string("too many input changes are waiting");
+  // A change applies between instructions: inside one under way, from its end.
+  moment_.reset();
   for (const StopObserver& o : observers_) o(*this, stop_);  // the same moment, another input
   return std::nullopt;
 }

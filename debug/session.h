@@ -119,7 +119,9 @@ class Session {
   /// way at t (a move, a DELAY), view() shows it at t.
   Stop gotoTime(vm::Micros t);
 
-  /// Input `input` turns `on` from now on; reverse execution replays it.
+  /// Input `input` turns `on` from now on (inside an instruction under way,
+  /// from its end, where the session then stands); reverse execution
+  /// replays it.
   /// An error message when the run is over or the input is not 1..8.
   std::optional<std::string> setInput(int input, bool on);
 
@@ -139,9 +141,9 @@ class Session {
                  std::vector<std::string>& notes);
   Stop finishedStop(bool already) const;
   Stop stopped(Stop stop);
-  /// The collision found last, and the ids of the collision breakpoints
-  /// among `ids`: the session then stands at the moment of the contact.
-  void standAtCollision(const std::vector<int>& ids);
+  /// When a collision breakpoint is among `ids`: the session stands at the
+  /// moment of the last collision's first contact (true).
+  bool standAtCollision(const std::vector<int>& ids);
   /// Runs back one instruction to see which one is under way at `t`.
   void standWithin(vm::Micros t);
   /// A close on nothing among the instructions since `emptyClosesBefore`.

@@ -71,14 +71,18 @@ std::string headerSummary(const std::string& text, const std::string& name) {
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (line.empty() || line.front() != ';') break;
     line.remove_prefix(1);
-    while (!line.empty() && line.front() == ' ') line.remove_prefix(1);
+    while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
     if (line.empty()) break;  // the header's first paragraph ends
     if (!joined.empty()) joined += ' ';
     joined += line;
   }
-  // The first sentence: up to a full stop that ends a line or precedes a space.
+  // The first sentence: up to a full stop at the end or before a space and
+  // a word that is not a number ("Figs. 4-7" goes on).
+  const auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
   for (std::size_t i = 0; i < joined.size(); ++i)
-    if (joined[i] == '.' && (i + 1 == joined.size() || joined[i + 1] == ' ')) {
+    if (joined[i] == '.' && (i + 1 == joined.size() ||
+                             (joined[i + 1] == ' ' && i + 2 < joined.size() && !isDigit(joined[i + 2])))) {
       joined.resize(i + 1);
       break;
     }

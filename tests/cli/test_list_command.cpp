@@ -149,4 +149,6 @@ TEST_CASE("list: a header's first sentence, its lines joined, without NAME: befo
   CHECK(headerSummary("; no full stop\n\n; elsewhere. x\n", "x") == "no full stop");
   CHECK(headerSummary("OBJECT x\nEND\n", "x").empty());
   CHECK(headerSummary("; v1.5 of it. Then\n", "y") == "v1.5 of it.");
+  CHECK(headerSummary("; arm: of the paper's Figs. 4-7 (its Fig. 2 kind). Lengths\n", "arm") ==
+        "of the paper's Figs. 4-7 (its Fig. 2 kind).");
 }

@@ -83,7 +83,8 @@ TEST_CASE("dap: the collision filter stops at the first contact, the scopes show
       dapArmRequest(6, "evaluate", {{"expression", "clock"}}) +
       dapArmRequest(7, "continue", {{"threadId", 1}}) +
       dapArmRequest(8, "setExceptionBreakpoints", {{"filters", {"bogus"}}}) +
-      dapArmRequest(9, "disconnect", Json::object()));
+      dapArmRequest(9, "continue", {{"threadId", 1}}) + dapArmRequest(10, "continue", {{"threadId", 1}}) +
+      dapArmRequest(11, "disconnect", Json::object()));
   const Json* set = responseTo(messages, 3);
   REQUIRE(set);
   CHECK(set->at("success") == true);
@@ -107,8 +108,13 @@ TEST_CASE("dap: the collision filter stops at the first contact, the scopes show
   REQUIRE(clock);
   const double seconds = std::stod(clock->at("body").at("result").get<std::string>());
   CHECK(seconds == Approx(2.8 + counts / 800.0).margin(0.0015));
-  // After it the run goes on (warn mode) to its end.
+  // After it the run goes on (warn mode) to its end; any other stop on
+  // the way is another collision's.
   CHECK(eventsNamed(messages, "terminated").size() == 1);
+  for (const Json& stop : stops) {
+    CHECK(stop["body"]["reason"] == "exception");
+    CHECK(stop["body"]["text"].get<std::string>().find("(collision): ") != std::string::npos);
+  }
   // A filter the adapter does not offer is refused, and the adapter goes on.
   const Json* bogus = responseTo(messages, 8);
   REQUIRE(bogus);
