@@ -44,14 +44,14 @@ std::string dapArmProgram(int y) {
          "        END\n";
 }
 
-std::vector<Json> eventsNamed(const std::vector<Json>& messages, const std::string& name) {
+std::vector<Json> dapArmEvents(const std::vector<Json>& messages, const std::string& name) {
   std::vector<Json> found;
   for (const Json& m : messages)
     if (m.value("type", "") == "event" && m.value("event", "") == name) found.push_back(m);
   return found;
 }
 
-const Json* responseTo(const std::vector<Json>& messages, int seq) {
+const Json* dapArmResponseTo(const std::vector<Json>& messages, int seq) {
   for (const Json& m : messages)
     if (m.value("type", "") == "response" && m.value("request_seq", -1) == seq) return &m;
   return nullptr;
@@ -61,7 +61,7 @@ const Json* responseTo(const std::vector<Json>& messages, int seq) {
 
 TEST_CASE("dap: the collision and warning exception filters are announced, off by default", "[debug][dap][moving-arm]") {
   const std::vector<Json> messages = dapArmServe(dapArmRequest(1, "initialize", {{"adapterID", "robotsim"}}));
-  const Json* init = responseTo(messages, 1);
+  const Json* init = dapArmResponseTo(messages, 1);
   REQUIRE(init);
   std::vector<std::string> names;
   for (const Json& f : init->at("body").at("exceptionBreakpointFilters")) {
@@ -85,11 +85,11 @@ TEST_CASE("dap: the collision filter stops at the first contact, the scopes show
       dapArmRequest(8, "setExceptionBreakpoints", {{"filters", {"bogus"}}}) +
       dapArmRequest(9, "continue", {{"threadId", 1}}) + dapArmRequest(10, "continue", {{"threadId", 1}}) +
       dapArmRequest(11, "disconnect", Json::object()));
-  const Json* set = responseTo(messages, 3);
+  const Json* set = dapArmResponseTo(messages, 3);
   REQUIRE(set);
   CHECK(set->at("success") == true);
   CHECK(set->at("body").at("breakpoints").size() == 1);
-  const std::vector<Json> stops = eventsNamed(messages, "stopped");
+  const std::vector<Json> stops = dapArmEvents(messages, "stopped");
   REQUIRE(stops.size() >= 1);
   const Json& body = stops[0].at("body");
   CHECK(body.at("reason") == "exception");
@@ -99,24 +99,24 @@ TEST_CASE("dap: the collision filter stops at the first contact, the scopes show
   CHECK(text.find("hits object 1 (pallet) at 4.6") != std::string::npos);
   // At the contact the ram has come down about 1500 counts (the fingers'
   // ends at the deck), 1.875 s into line 2, which starts at 2.8 s.
-  const Json* y = responseTo(messages, 5);
+  const Json* y = dapArmResponseTo(messages, 5);
   REQUIRE(y);
   const int counts = std::stoi(y->at("body").at("result").get<std::string>());
   CHECK(counts >= 1490);
   CHECK(counts <= 1510);
-  const Json* clock = responseTo(messages, 6);
+  const Json* clock = dapArmResponseTo(messages, 6);
   REQUIRE(clock);
   const double seconds = std::stod(clock->at("body").at("result").get<std::string>());
   CHECK(seconds == Approx(2.8 + counts / 800.0).margin(0.0015));
   // After it the run goes on (warn mode) to its end; any other stop on
   // the way is another collision's.
-  CHECK(eventsNamed(messages, "terminated").size() == 1);
+  CHECK(dapArmEvents(messages, "terminated").size() == 1);
   for (const Json& stop : stops) {
     CHECK(stop["body"]["reason"] == "exception");
     CHECK(stop["body"]["text"].get<std::string>().find("(collision): ") != std::string::npos);
   }
   // A filter the adapter does not offer is refused, and the adapter goes on.
-  const Json* bogus = responseTo(messages, 8);
+  const Json* bogus = dapArmResponseTo(messages, 8);
   REQUIRE(bogus);
   CHECK(bogus->at("success") == false);
   CHECK(bogus->at("message").get<std::string>().find("no exception filter 'bogus'") != std::string::npos);
@@ -135,7 +135,7 @@ TEST_CASE("dap: a close on nothing stops under the warning filter and is said at
                     dapArmRequest(3, "setExceptionBreakpoints", {{"filters", {"warning", "deadlock"}}}) +
                     dapArmRequest(4, "configurationDone", Json::object()) +
                     dapArmRequest(5, "disconnect", Json::object()));
-    const std::vector<Json> stops = eventsNamed(messages, "stopped");
+    const std::vector<Json> stops = dapArmEvents(messages, "stopped");
     REQUIRE(stops.size() == 1);
     CHECK(stops[0]["body"]["reason"] == "exception");
     CHECK(stops[0]["body"]["text"].get<std::string>().find("warning: a gripper closing on nothing") != std::string::npos);
@@ -148,7 +148,7 @@ TEST_CASE("dap: a close on nothing stops under the warning filter and is said at
                     dapArmRequest(4, "stepIn", {{"threadId", 1}}) + dapArmRequest(5, "stepIn", {{"threadId", 1}}) +
                     dapArmRequest(6, "stepIn", {{"threadId", 1}}) + dapArmRequest(7, "disconnect", Json::object()));
     std::vector<std::string> console;
-    for (const Json& e : eventsNamed(messages, "output")) console.push_back(e["body"]["output"].get<std::string>());
+    for (const Json& e : dapArmEvents(messages, "output")) console.push_back(e["body"]["output"].get<std::string>());
     REQUIRE(console.size() == 1);  // once: at the third step, which ran the close
     CHECK(console[0] == note);
     // The output event comes between the third step's response and its stop.

@@ -95,7 +95,9 @@ TEST_CASE("debug: break collision stops at the moment of the first contact", "[d
   // Down 1700 counts: the fingers' lower ends (20 below the tool centre
   // point) meet the deck (y 30) when the tool centre point is at y 50,
   // Y = 1500, 1500/800 = 1.875 s into line 2: at 4.675 s; the move would
-  // end at 2.8 + 1700/800 = 4.925 s.
+  // end at 2.8 + 1700/800 = 4.925 s. The swept check finds the overlap
+  // within its step (docs/models.md, "Collisions"): at 4.675 s or a little
+  // after, and the pose shown is the one at the time shown.
   const CliResult r = debugSession(dir, gantryLowering(1700),
                                    "break collision\ncontinue\nprint tcp\nprint objects\ncontinue\n",
                                    {"--collisions=warn"});
@@ -109,11 +111,12 @@ TEST_CASE("debug: break collision stops at the moment of the first contact", "[d
   const std::size_t place = r.out.find("line 2 @2, step 1, clock ", stop);
   REQUIRE(place != std::string::npos);
   REQUIRE(std::sscanf(r.out.c_str() + place, "line 2 @2, step 1, clock %lf", &clock) == 1);
-  CHECK(clock >= 4.670);
-  CHECK(clock <= 4.680);
+  CHECK(clock >= 4.675);
+  CHECK(clock <= 4.690);
   const auto contact = tcpAfter(r.out, "breakpoint 1 (collision)");
   CHECK(contact[0] == Approx(220).margin(1e-6));
-  CHECK(contact[1] == Approx(50).margin(0.5));
+  CHECK(contact[1] <= 50.0);
+  CHECK(contact[1] == Approx(200 - (clock - 2.8) * 800 / 10).margin(0.1));  // Y at 800/s, whole counts
   // The block has not moved; its centre is the one worked out above.
   CHECK(r.out.find("2 block at (200.000, 30.000, 700.000), centre (220.000, 50.000, 680.000)\n") != std::string::npos);
 }

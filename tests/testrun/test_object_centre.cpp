@@ -57,7 +57,7 @@ TEST_CASE("robotsim test: object N centre at X Y Z, and failures that name the o
   CHECK(r.out.find(":3:3:") == std::string::npos);
   CHECK(r.out.find(":4:3:") == std::string::npos);
   CHECK(r.out.find(program + ":5:3: error: expected object 3 (block) centre at (300.00, 150.00, 680.00) within 0.5 at "
-                             "the end; its centre is at (300.00, 50.00, 680.00) (the run ended at line 4, 4.550 s)\n") !=
+                             "the end; its centre is at (300.00, 50.00, 680.00) (the run ended at line 12, 4.550 s)\n") !=
         std::string::npos);
   CHECK(r.out.find(program + ":6:3: error: expected object 2 (block) at (220.00, 150.00, 680.00) within 0.5 at the "
                              "end; it is at (200.00, 130.00, 700.00)") != std::string::npos);
