@@ -39,19 +39,25 @@ std::vector<std::string> freeSpotCellNames() {
   return names;
 }
 
-bool isWorkSurface(const std::string& name) { return name == "table" || name == "pallet" || name == "conveyor"; }
+// A table or a pallet, as the issue asks; a cell with neither (adept-cell:
+// two conveyors) puts the block down on a conveyor's belt.
+bool isWorkSurface(const Workcell& cell, const std::string& name) {
+  const bool tableOrPallet = std::any_of(cell.objects.begin(), cell.objects.end(), [](const PlacedObject& o) {
+    return o.shape.name == "table" || o.shape.name == "pallet";
+  });
+  return tableOrPallet ? name == "table" || name == "pallet" : name == "conveyor";
+}
 
 // The heights of a shape's level lines (both ends at one y) in the world:
-// where a box can stand on it.
+// where a box can stand on it (supportOf decides whether it does).
 std::vector<double> levelHeights(const PlacedObject& o) {
   std::vector<double> ys;
   for (const rs::workcell::Segment& s : o.shape.segments) {
     const Eigen::Vector3d a = o.F_world_design * s.a, b = o.F_world_design * s.b;
     if (std::abs(a.y() - b.y()) < 1e-9) ys.push_back(std::round(a.y() * 1e6) / 1e6);
   }
-  std::sort(ys.begin(), ys.end());
+  std::sort(ys.begin(), ys.end());  // lowest first: a belt before its side guides' tops
   ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
-  std::reverse(ys.begin(), ys.end());  // highest first
   return ys;
 }
 
@@ -93,7 +99,7 @@ std::optional<FreeSpot> findFreeSpot(const Workcell& cell) {
   const std::vector<std::int32_t> home(solver.motorCount(), 0);
   const double step = size.x() / 2;
   for (std::size_t s = 0; s < cell.objects.size(); ++s) {
-    if (!isWorkSurface(cell.objects[s].shape.name)) continue;
+    if (!isWorkSurface(cell, cell.objects[s].shape.name)) continue;
     const Eigen::AlignedBox3d top = rs::workcell::worldBoxOf(cell.objects[s].shape, cell.objects[s].F_world_design);
     for (double y : levelHeights(cell.objects[s]))
       for (double x = top.min().x(); x + size.x() <= top.max().x() + 1e-9; x += step)
@@ -149,4 +155,23 @@ TEST_CASE("Every library workcell has a free spot its robot can reach and put a 
       CHECK(tool.linear().col(2).dot(Eigen::Vector3d(0, -1, 0)) > 0.99);
     }
   }
+}
+
+TEST_CASE("The free-spot search fails where there is none: scara-pick without its pallet", "[library][free-spot]") {
+  // The SCARA stands on the table (frame 0 at y 750) and joint C takes the
+  // tool centre point down to y 798 at most (encoder 350 x 0.12 below its
+  // home 840): a block on the table would have its centre at 770, out of
+  // reach. Only the pallet's deck (y 780, centres at 800) lifts a block
+  // within reach, so without the pallet there is no spot.
+  rs::compiler::Library lib(rs::compiler::librarySearchPath({}));
+  std::optional<Workcell> cell = lib.workcell("scara-pick");
+  REQUIRE(cell);
+  REQUIRE(findFreeSpot(*cell));
+  const auto pallet = std::find_if(cell->objects.begin(), cell->objects.end(),
+                                   [](const PlacedObject& o) { return o.shape.name == "pallet"; });
+  REQUIRE(pallet != cell->objects.end());
+  // The blocks stay (a block is the shape the search puts down); they float
+  // where the pallet was, which the search does not mind.
+  cell->objects.erase(pallet);
+  CHECK_FALSE(findFreeSpot(*cell));
 }
