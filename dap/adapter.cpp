@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -160,7 +161,15 @@ Adapter::Reply Adapter::initialize(const Json&) {
       {"exceptionBreakpointFilters",
        Json::array({{{"filter", "deadlock"}, {"label", "Deadlock"}, {"default", true}},
                     {{"filter", "runtimeError"}, {"label", "Runtime error"}, {"default", true}},
-                    {{"filter", "limit"}, {"label", "Step or time limit"}, {"default", true}}})},
+                    {{"filter", "limit"}, {"label", "Step or time limit"}, {"default", true}},
+                    {{"filter", "collision"},
+                     {"label", "Collision"},
+                     {"description", "Stop at the moment of each collision (the pose at the first contact)"},
+                     {"default", false}},
+                    {{"filter", "warning"},
+                     {"label", "Gripper closing on nothing"},
+                     {"description", "Stop after a closing move that took no object"},
+                     {"default", false}}})},
   };
 }
 
@@ -173,6 +182,7 @@ Adapter::Reply Adapter::launch(const Json& args) {
   if (args.contains("lib")) program.libDirs = args["lib"].get<std::vector<std::string>>();
   launch::RunRequest run;
   run.stimuliFile = stringArg(args, "stimuli");
+  run.collisions = stringArg(args, "collisions");  // error | warn | off, as --collisions
   if (args.contains("inputs")) run.inputs = args["inputs"].get<std::vector<std::string>>();
   if (args.contains("maxSteps")) {
     const Json& n = args["maxSteps"];
@@ -263,14 +273,29 @@ Adapter::Reply Adapter::setBreakpoints(const Json& args) {
 }
 
 Adapter::Reply Adapter::setExceptionBreakpoints(const Json& args) {
+  const Json filters = args.value("filters", Json::array());
+  for (const Json& f : filters) {
+    const std::string name = f.is_string() ? f.get<std::string>() : f.dump();
+    if (name != "deadlock" && name != "runtimeError" && name != "limit" && name != "collision" && name != "warning")
+      return Error{fmt::format("no exception filter '{}': deadlock, runtimeError, limit, collision, warning",
+                               base::safeText(name))};
+  }
   stopOnDeadlock_ = stopOnRuntimeError_ = stopOnLimit_ = false;
+  if (session_)
+    for (int id : exceptionBreakpoints_) session_->remove(id);
+  exceptionBreakpoints_.clear();
   Json out = Json::array();
-  for (const Json& f : args.value("filters", Json::array())) {
+  for (const Json& f : filters) {
     const std::string name = f.get<std::string>();
     if (name == "deadlock") stopOnDeadlock_ = true;
     else if (name == "runtimeError") stopOnRuntimeError_ = true;
     else if (name == "limit") stopOnLimit_ = true;
-    else return Error{fmt::format("no exception filter '{}': deadlock, runtimeError, limit", base::safeText(name))};
+    else if (!session_) {
+      out.push_back({{"verified", false}, {"message", "launch the program first"}});
+      continue;
+    } else {
+      exceptionBreakpoints_.push_back(name == "collision" ? session_->breakOnCollision() : session_->breakOnWarning());
+    }
     out.push_back({{"verified", true}});
   }
   return Json{{"breakpoints", out}};
@@ -284,6 +309,16 @@ void Adapter::reportStop(const debug::Stop& stop) {
     if (stop.finished()) body["text"] = text;  // an exception stop
     event("stopped", std::move(body));
   };
+  if (!stop.note.empty()) output("console", stop.note + "\n");  // a close on nothing, said at the step
+  const bool exception = std::any_of(stop.breakpoints.begin(), stop.breakpoints.end(), [this](int id) {
+    return std::find(exceptionBreakpoints_.begin(), exceptionBreakpoints_.end(), id) != exceptionBreakpoints_.end();
+  });
+  if (exception && !stop.finished()) {
+    Json body = {{"reason", "exception"}, {"threadId", kThread}, {"allThreadsStopped", true},
+                 {"description", stop.message}, {"text", stop.message}, {"hitBreakpointIds", stop.breakpoints}};
+    event("stopped", std::move(body));
+    return;
+  }
   if (!stop.finished()) return stopped(vm::adapterReason(stop.reason), stop.message);
   if (stop.reason == StopReason::End) {
     output("console", stop.message + "\n");  // "the program ended", with the gripper warning if any

@@ -84,6 +84,9 @@ class Adapter {
   std::vector<int> lineBreakpoints_;  // session ids from setBreakpoints
   bool stopOnEntry_ = false;
   bool stopOnDeadlock_ = true, stopOnRuntimeError_ = true, stopOnLimit_ = true;
+  // Session ids of the breakpoints the "collision" and "warning" exception
+  // filters made (a stop by one of them is reported as an exception).
+  std::vector<int> exceptionBreakpoints_;
   std::function<bool()> poll_;
   std::function<void()> pending_;  // the move a request asked for, run after its response
 };

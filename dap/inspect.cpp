@@ -93,7 +93,8 @@ Adapter::Reply Adapter::variables(const Json& args) {
     case kObjects:
       for (std::size_t n = 0; n < v.objects.size(); ++n) {
         const runtime::ObjectView& o = v.objects[n];
-        out.push_back(variable(fmt::format("{}: {}", n + 1, base::safeText(o.name)), point({o.at.x(), o.at.y(), o.at.z()}) + (o.held ? ", held" : "") +
+        out.push_back(variable(fmt::format("{}: {}", n + 1, base::safeText(o.name)), point({o.at.x(), o.at.y(), o.at.z()}) + ", centre " +
+                                                           point({o.centre.x(), o.centre.y(), o.centre.z()}) + (o.held ? ", held" : "") +
                                                            (o.moved ? ", moved" : "")));
       }
       break;
@@ -112,7 +113,7 @@ Adapter::Reply Adapter::evaluate(const Json& args) {
   auto e = debug::parseExpression(*session_->run().spec().image, debug::ioWords(text));
   if (!e) return Error{e.failure().message};
   const debug::Expression& x = *e;
-  const std::int64_t value = debug::valueOf(session_->run(), x);
+  const std::int64_t value = debug::valueIn(session_->view(), x);  // at the session's moment
   std::string shown = std::to_string(value);
   if (x.kind == debug::Expression::Kind::Input || x.kind == debug::Expression::Kind::Output) shown = value ? "on" : "off";
   if (x.kind == debug::Expression::Kind::Clock) shown = fmt::format("{} s", base::formatSeconds(value));

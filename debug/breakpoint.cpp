@@ -14,6 +14,8 @@ std::string Breakpoint::where() const {
     case Kind::Instruction: return fmt::format("@{}, line {}", instruction + 1, line);
     case Kind::Time: return fmt::format("at {} s", base::formatSeconds(time));
     case Kind::When: return fmt::format("when {}", when.text);
+    case Kind::Collision: return "collision";
+    case Kind::Warning: return "warning: a gripper closing on nothing";
   }
   return {};
 }

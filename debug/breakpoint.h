@@ -1,6 +1,7 @@
 // Where and when a debugging session stops: breakpoints (before an
 // instruction, a line or a label; when the clock passes a time; when a
-// condition on an output, an input or a variable becomes true), each with
+// condition on an output, an input or a variable becomes true; at a
+// collision; at a warning: a gripper closing on nothing), each with
 // an optional condition and hit count, and watches (stop when a value
 // changes). Breakpoints and watches share one numbering, as in gdb.
 #pragma once
@@ -15,7 +16,7 @@
 namespace rs::debug {
 
 struct Breakpoint {
-  enum class Kind : std::uint8_t { Line, Label, Instruction, Time, When };
+  enum class Kind : std::uint8_t { Line, Label, Instruction, Time, When, Collision, Warning };
   int id = 0;
   Kind kind = Kind::Line;
   std::uint32_t line = 0;       ///< Line: where it stands (the first line with code at or after the one asked)
@@ -30,7 +31,8 @@ struct Breakpoint {
   std::uint64_t hitCount = 0;  ///< times reached (with the condition true) running forwards
 
   /// "line 12", "label LOOP, line 3", "@7, line 5" (instructions numbered
-  /// from 1, as robotsim disasm lists them), "at 1.500 s", "when out 2 = 1".
+  /// from 1, as robotsim disasm lists them), "at 1.500 s", "when out 2 = 1",
+  /// "collision", "warning".
   std::string where() const;
   /// where() with " if N = 3" and " hits >= 2" when set.
   std::string describe() const;

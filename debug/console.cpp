@@ -23,9 +23,11 @@ struct Console::Command {
 
 const std::vector<Console::Command>& Console::commands() {
   static const std::vector<Command> kCommands = {
-      {"break", "b", "break LINE|LABEL|@N|at TIME|when COND [if COND] [hits N]",
+      {"break", "b", "break LINE|LABEL|@N|at TIME|when COND|collision|warning [if COND] [hits N]",
        "stop at a place or a moment; before a LINE, a LABEL or instruction @N (numbered as disasm lists them), "
-       "right after the clock passes TIME, or as COND becomes true (output N on|off, input N on|off, VAR = VALUE); "
+       "right after the clock passes TIME, or as COND becomes true (output N on|off, input N on|off, VAR = VALUE), "
+       "at the moment of a collision (the pose at the first contact), or at a warning (a gripper closing on "
+       "nothing); "
        "if COND: only when COND holds then; hits N: from the Nth time on (== N: only the Nth, % N: every Nth)"},
       {"delete", "d", "delete [ID...]", "delete breakpoints and watches (all of them without an ID)"},
       {"info", "i", "info breakpoints", "list the breakpoints and watches, with their hit counts"},
@@ -40,8 +42,8 @@ const std::vector<Console::Command>& Console::commands() {
        "go back to the last breakpoint or watch; the last moment one of them would have stopped the run going "
        "forwards (hit counts aside), else the start"},
       {"goto-time", "gt", "goto-time TIME",
-       "go to the moment TIME seconds; where a run paused at TIME stands (right after the instruction that takes the "
-       "clock past it), forwards or backwards"},
+       "go to the moment TIME seconds; exactly, forwards or backwards: inside a move (or a DELAY) the instruction "
+       "under way is the current one and motors, tcp and objects show the pose at TIME"},
       {"print", "p", "print [VAR|motors|tcp|io|objects|clock|in N|out N|LETTER]",
        "show a value; a variable (all of them without an argument), the motors, the tool centre point, inputs and "
        "outputs, the workcell's objects, the clock, one input or output, one motor"},
@@ -117,6 +119,7 @@ std::string Console::sourceLine(std::uint32_t line) const {
 void Console::showStop(const Stop& stop) {
   const runtime::RunView v = session_.view();
   if (stop.reason != StopReason::Step) out_ << stop.message << '\n';
+  if (!stop.note.empty()) out_ << stop.note << '\n';
   out_ << fmt::format("line {} @{}, step {}, clock {} s{}\n", v.line, v.instruction + 1, v.steps,
                       base::formatSeconds(v.clock), v.finished ? " (the run is over)" : "");
   const std::string text = sourceLine(v.line);
@@ -224,7 +227,7 @@ void Console::breakCommand(std::string_view args) {
   const std::size_t placeEnd = std::min(ifAt, hitsAt);
   const std::span<const std::string_view> place(w.data(), placeEnd);
   if (place.empty()) {
-    error("break needs a place: LINE, LABEL, @N, at TIME or when COND (help break)");
+    error("break needs a place: LINE, LABEL, @N, at TIME, when COND, collision or warning (help break)");
     return;
   }
   const vm::Image& image = *session_.run().spec().image;
@@ -254,8 +257,13 @@ void Console::breakCommand(std::string_view args) {
     auto c = parseCondition(image, ioWords(joined(place.subspan(1))));
     if (!c) return error(c.failure().message);
     made = session_.breakWhen(*c);
+  } else if (place.size() == 1 && base::sameName(place[0], "collision")) {
+    made = session_.breakOnCollision();
+  } else if (place.size() == 1 && base::sameName(place[0], "warning")) {
+    made = session_.breakOnWarning();
   } else if (place.size() != 1) {
-    return error(fmt::format("'{}' is not a place: LINE, LABEL, @N, at TIME or when COND", shown(joined(place))));
+    return error(fmt::format("'{}' is not a place: LINE, LABEL, @N, at TIME, when COND, collision or warning",
+                             shown(joined(place))));
   } else if (place[0].front() == '@') {
     const auto n = count(place[0].substr(1));
     if (!n || *n == 0 || *n > UINT32_MAX) return error(fmt::format("'{}': @N takes an instruction number from 1", shown(place[0])));
@@ -327,15 +335,16 @@ void Console::printCommand(std::string_view args) {
     if (v.objects.empty()) out_ << "no objects: the program runs without a workcell (--cell), or it has none\n";
     std::size_t number = 1;  // as the cell numbers them (and robotsim test's `object N`)
     for (const runtime::ObjectView& o : v.objects)
-      out_ << fmt::format("{} {} at ({:.3f}, {:.3f}, {:.3f}){}{}\n", number++, base::safeText(o.name), o.at.x(), o.at.y(),
-                          o.at.z(), o.held ? ", held" : "", o.moved ? ", moved" : "");
+      out_ << fmt::format("{} {} at ({:.3f}, {:.3f}, {:.3f}), centre ({:.3f}, {:.3f}, {:.3f}){}{}\n", number++,
+                          base::safeText(o.name), o.at.x(), o.at.y(), o.at.z(), o.centre.x(), o.centre.y(), o.centre.z(),
+                          o.held ? ", held" : "", o.moved ? ", moved" : "");
   } else if (args == "clock") {
     out_ << fmt::format("clock = {} s (step {})\n", base::formatSeconds(v.clock), v.steps);
   } else {
     auto e = parseExpression(image, ioWords(args));
     if (!e) return error(e.failure().message);
     const Expression& x = *e;
-    out_ << fmt::format("{} = {}\n", base::safeText(x.name), valueOf(session_.run(), x));
+    out_ << fmt::format("{} = {}\n", base::safeText(x.name), valueIn(v, x));
   }
 }
 

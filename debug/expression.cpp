@@ -88,6 +88,22 @@ std::int64_t valueOf(const runtime::Run& run, const Expression& e) {
   return 0;
 }
 
+std::int64_t valueIn(const runtime::RunView& view, const Expression& e) {
+  switch (e.kind) {
+    case Expression::Kind::Variable:
+      return e.index < view.variables.size() ? view.variables[e.index].second : 0;
+    case Expression::Kind::Motor:
+      return e.index < view.motors.size() ? view.motors[e.index] : 0;
+    case Expression::Kind::Input:
+      return (view.inputs & runtime::lineBit(static_cast<int>(e.index))) != 0;
+    case Expression::Kind::Output:
+      return (view.outputs & runtime::lineBit(static_cast<int>(e.index))) != 0;
+    case Expression::Kind::Clock:
+      return view.clock;
+  }
+  return 0;
+}
+
 namespace {
 
 constexpr std::pair<std::string_view, Condition::Op> kOps[] = {

@@ -29,6 +29,9 @@ diag::Result<Expression> parseExpression(const vm::Image& image, std::string_vie
 
 /// The value at the run's moment (inputs and outputs 0 or 1).
 std::int64_t valueOf(const runtime::Run& run, const Expression& e);
+/// The same in a view of the run (the session's moment: inside a move
+/// after goto-time, Session::view()).
+std::int64_t valueIn(const runtime::RunView& view, const Expression& e);
 
 /// EXPRESSION OP NUMBER, with OP one of = == <> != < <= > >=; `on` and `off`
 /// are 1 and 0.

@@ -20,13 +20,16 @@ struct Session::Target {
 };
 
 // The values at the moment before, for the stops that happen as something
-// changes: the clock (time breakpoints), each `when` breakpoint's truth,
-// each watched value.
+// changes: the clock (time breakpoints), the collisions found and the
+// closes on nothing so far, each `when` breakpoint's truth, each watched
+// value.
 class Session::Probe {
  public:
   explicit Probe(const Session& s) : s_(s) {}
   void capture(const runtime::Run& r) {
     clock = r.rig().clock();
+    collisions = r.rig().collisions().size();
+    emptyCloses = r.rig().world() ? r.rig().world()->emptyCloseCount() : 0;
     held.resize(s_.breakpoints_.size());
     for (std::size_t i = 0; i < held.size(); ++i)
       held[i] = s_.breakpoints_[i].kind == Breakpoint::Kind::When && s_.breakpoints_[i].when.holds(r);
@@ -34,6 +37,8 @@ class Session::Probe {
     for (std::size_t i = 0; i < values.size(); ++i) values[i] = valueOf(r, s_.watches_[i].what);
   }
   vm::Micros clock = 0;
+  std::size_t collisions = 0;
+  std::uint64_t emptyCloses = 0;
   std::vector<bool> held;
   std::vector<std::int64_t> values;
 
@@ -122,6 +127,22 @@ diag::Result<int> Session::breakAtTime(vm::Micros t) {
   return breakpoints_.back().id;
 }
 
+int Session::breakOnCollision() {
+  Breakpoint b;
+  b.id = nextId();
+  b.kind = Breakpoint::Kind::Collision;
+  breakpoints_.push_back(std::move(b));
+  return breakpoints_.back().id;
+}
+
+int Session::breakOnWarning() {
+  Breakpoint b;
+  b.id = nextId();
+  b.kind = Breakpoint::Kind::Warning;
+  breakpoints_.push_back(std::move(b));
+  return breakpoints_.back().id;
+}
+
 int Session::breakWhen(Condition condition) {
   Breakpoint b;
   b.id = nextId();
@@ -190,6 +211,12 @@ bool Session::stopsHere(const runtime::Run& r, const Probe& before, bool countin
       case Breakpoint::Kind::When:
         at = b.when.holds(r) && !(i < before.held.size() && before.held[i]);
         break;
+      case Breakpoint::Kind::Collision:
+        at = r.rig().collisions().size() > before.collisions;
+        break;
+      case Breakpoint::Kind::Warning:
+        at = r.rig().world() && r.rig().world()->emptyCloseCount() > before.emptyCloses;
+        break;
     }
     if (!at || (b.condition && !b.condition->holds(r))) continue;
     if (counting && ++b.hitCount && b.hits && !b.hits->stopsAt(b.hitCount)) continue;
@@ -203,6 +230,63 @@ bool Session::stopsHere(const runtime::Run& r, const Probe& before, bool countin
     }
   }
   return !ids.empty();
+}
+
+runtime::RunView Session::view() const {
+  runtime::RunView v = run_->view();
+  if (!moment_ || v.finished) return v;
+  const runtime::Rig& rig = run_->rig();
+  v.clock = moment_->time;
+  v.motors = rig.motorsAt(moment_->time);
+  if (const runtime::World* world = rig.world()) v.tcp = world->tcp(v.motors);
+  v.objects = rig.objects(moment_->time);
+  v.instruction = moment_->instruction;
+  v.line = run_->spec().image->lines[moment_->instruction];
+  v.steps = v.steps > 0 ? v.steps - 1 : 0;  // the instruction under way is not done
+  return v;
+}
+
+std::uint64_t Session::emptyCloses() const {
+  const runtime::World* world = run_->rig().world();
+  return world ? world->emptyCloseCount() : 0;
+}
+
+std::string Session::emptyCloseNote(std::uint64_t emptyClosesBefore) const {
+  const std::uint64_t now = emptyCloses();
+  if (now <= emptyClosesBefore || !run_->rig().cell()) return {};
+  const std::string nearest = runtime::emptyCloseText(run_->rig().world()->lastEmptyClose(), *run_->rig().cell());
+  const std::string times = now - emptyClosesBefore == 1 ? std::string() : fmt::format(" ({} times)", now - emptyClosesBefore);
+  return fmt::format("the gripper closed on nothing{}{}", times, nearest.empty() ? "" : ": " + nearest);
+}
+
+bool Session::standAtCollision(const std::vector<int>& ids) {
+  const bool collisionStop = std::any_of(ids.begin(), ids.end(), [this](int id) {
+    const Breakpoint* b = find(id);
+    return b && b->kind == Breakpoint::Kind::Collision;
+  });
+  const auto events = run_->rig().collisions();
+  if (!collisionStop || events.empty()) return false;
+  const runtime::CollisionEvent& e = events.back();
+  if (e.at < run_->rig().clock() && e.instruction < run_->spec().image->code.size()) moment_ = Moment{e.at, e.instruction};
+  return true;
+}
+
+void Session::standWithin(vm::Micros t) {
+  const std::uint64_t steps = run_->interpreter().steps();
+  if (steps == 0 || run_->finished() || run_->rig().clock() <= t) return;
+  timeline_->goToStep(steps - 1);
+  if (run_->rig().clock() == t) return;  // t falls between two instructions: stand there
+  const std::uint32_t underWay = run_->interpreter().pc();
+  timeline_->goToStep(steps);
+  moment_ = Moment{t, underWay};
+}
+
+std::string Session::collisionText() const {
+  const auto events = run_->rig().collisions();
+  const runtime::CollisionWatch* watch = run_->rig().collisionWatch();
+  if (events.empty() || !watch) return {};
+  const runtime::CollisionEvent& e = events.back();
+  return fmt::format("{} at {} s", watch->describe(e.contact), base::formatSeconds(e.at));
 }
 
 Stop Session::finishedStop(bool already) const {
@@ -225,12 +309,22 @@ Stop Session::stopped(Stop stop) {
 }
 
 Stop Session::forward(const Target& target) {
+  const bool within = moment_.has_value();
+  moment_.reset();
   if (run_->finished()) return stopped(finishedStop(true));
+  const std::uint64_t closesBefore = emptyCloses();
   Probe probe(*this);
   probe.capture(*run_);
   std::vector<int> ids;
   std::vector<std::string> notes;
   bool done = false;
+  // From inside an instruction under way, the run already stands after it:
+  // that moment (the instruction finished) is the first one forwards.
+  bool already = false;
+  if (within) {
+    if (target.breakpoints) already = stopsHere(*run_, probe, true, ids, notes);
+    if (run_->interpreter().steps() >= target.steps || (target.done && target.done(*run_))) done = already = true;
+  }
   runtime::RunUntil until;
   until.steps = target.steps;
   until.time = target.time;
@@ -246,10 +340,14 @@ Stop Session::forward(const Target& target) {
   // Nothing to look at after each step: the interpreter runs unwatched.
   const bool watched = target.breakpoints && (!breakpoints_.empty() || !watches_.empty());
   if (!watched && !target.done) until.when = nullptr;
-  timeline_->forward(until, interrupted_);
-  if (run_->finished()) return stopped(finishedStop(false));
+  if (!already) timeline_->forward(until, interrupted_);
+  if (run_->finished()) {
+    Stop s = finishedStop(false);
+    s.note = emptyCloseNote(closesBefore);
+    return stopped(std::move(s));
+  }
   Stop s;
-  if (timeline_->wasInterrupted()) {
+  if (!already && timeline_->wasInterrupted()) {
     s = {StopReason::Pause, "interrupted", {}};
   } else if (!ids.empty()) {
     const bool onlyWatches = std::none_of(ids.begin(), ids.end(), [this](int id) { return find(id) != nullptr; });
@@ -261,6 +359,7 @@ Stop Session::forward(const Target& target) {
     for (std::size_t i = 0, w = 0; i < ids.size(); ++i)
       if (!find(ids[i]) && w < notes.size()) parts.push_back(fmt::format("watch {}: {}", ids[i], notes[w++]));
     for (const std::string& p : parts) s.message += (s.message.empty() ? "" : ", ") + p;
+    if (standAtCollision(ids)) s.message += ": " + collisionText();
   } else if (done || run_->interpreter().steps() >= target.steps) {
     s = {StopReason::Step, "step done", {}};
   } else if (run_->rig().clock() > target.time) {
@@ -268,12 +367,14 @@ Stop Session::forward(const Target& target) {
   } else {
     s = {StopReason::Pause, "paused", {}};
   }
+  s.note = emptyCloseNote(closesBefore);
   return stopped(std::move(s));
 }
 
 Stop Session::step(std::uint64_t n) {
   Target t;
-  const std::uint64_t now = run_->interpreter().steps();
+  // Inside an instruction under way, it is not done yet: it is the first.
+  const std::uint64_t now = run_->interpreter().steps() - (moment_ ? 1 : 0);
   t.steps = now + std::min(n, UINT64_MAX - now);
   return forward(t);
 }
@@ -296,6 +397,8 @@ diag::Result<Stop> Session::finish() {
 Stop Session::resume() { return forward({}); }
 
 Stop Session::until(vm::Micros time) {
+  // Inside an instruction under way that ends after `time`: that moment.
+  if (moment_ && time >= moment_->time && time < run_->rig().clock()) return gotoTime(time);
   Target t;
   t.time = time;
   if (run_->rig().clock() > time && !run_->finished())
@@ -306,6 +409,7 @@ Stop Session::until(vm::Micros time) {
 // --- backwards ------------------------------------------------------------------
 
 Stop Session::reverseStep(std::uint64_t n) {
+  moment_.reset();
   const std::uint64_t now = run_->interpreter().steps();
   if (now == 0) return stopped({StopReason::Start, "already at the start of the run", {}});
   timeline_->goToStep(now - std::min(n, now));
@@ -314,6 +418,7 @@ Stop Session::reverseStep(std::uint64_t n) {
 }
 
 Stop Session::reverseNext() {
+  moment_.reset();
   if (run_->interpreter().steps() == 0) return stopped({StopReason::Start, "already at the start of the run", {}});
   const std::size_t depth = run_->interpreter().callDepth();
   const auto found = timeline_->lastMatch([](const runtime::Run&) {},
@@ -326,6 +431,7 @@ Stop Session::reverseNext() {
 }
 
 Stop Session::reverseContinue() {
+  moment_.reset();
   if (run_->interpreter().steps() == 0) return stopped({StopReason::Start, "already at the start of the run", {}});
   Probe probe(*this);
   std::vector<int> ids, foundIds;
@@ -352,23 +458,34 @@ Stop Session::reverseContinue() {
     else if (w < foundNotes.size()) part = fmt::format("watch {}: {}", foundIds[i], foundNotes[w++]);
     s.message += (s.message.empty() ? "" : ", ") + part;
   }
+  if (standAtCollision(foundIds)) s.message += ": " + collisionText();
   return stopped(std::move(s));
 }
 
 Stop Session::gotoTime(vm::Micros t) {
+  moment_.reset();
   timeline_->goToTime(t);
   if (run_->finished() && run_->rig().clock() <= t) {
     Stop s = finishedStop(false);
     s.message += fmt::format(" before {} s", base::formatSeconds(t));
     return stopped(std::move(s));
   }
-  return stopped({StopReason::Time, fmt::format("the clock passed {} s", base::formatSeconds(t)), {}});
+  standWithin(t);
+  if (!moment_) return stopped({StopReason::Time, fmt::format("at {} s", base::formatSeconds(t)), {}});
+  const std::string_view what = vm::has(run_->spec().image->code[moment_->instruction].op, vm::kMovesMotors)
+                                    ? "the move" : "the instruction";
+  return stopped({StopReason::Time,
+                  fmt::format("at {} s, in the middle of {} of line {} (it ends at {} s)", base::formatSeconds(t), what,
+                              run_->spec().image->lines[moment_->instruction], base::formatSeconds(run_->rig().clock())),
+                  {}});
 }
 
 std::optional<std::string> Session::setInput(int input, bool on) {
   if (run_->finished()) return std::string("the run is over: go back first (reverse-step, goto-time)");
   if (input < 1 || input > 8) return fmt::format("there is no input {}: inputs are 1..8", input);
   if (!timeline_->setInput(input, on)) return std::string("too many input changes are waiting");
+  // A change applies between instructions: inside one under way, from its end.
+  moment_.reset();
   for (const StopObserver& o : observers_) o(*this, stop_);  // the same moment, another input
   return std::nullopt;
 }

@@ -38,6 +38,9 @@ struct Stop {
   StopReason reason = StopReason::Entry;
   std::string message;          ///< what happened, one line (names already made safe to print)
   std::vector<int> breakpoints;  ///< the breakpoints and watches that stopped it
+  /// What the instructions run on the way did that is worth saying even
+  /// at a plain step: a gripper that closed on nothing ("" if nothing).
+  std::string note = {};
   /// The run is over: it ended, deadlocked, failed or hit a limit.
   bool finished() const { return vm::isOver(reason); }
 };
@@ -55,7 +58,12 @@ class Session {
   ~Session();
 
   const runtime::Run& run() const { return *run_; }
-  runtime::RunView view() const { return run_->view(); }
+  /// The run at the session's moment. After goto-time into the middle of
+  /// a move (or a DELAY), and at a collision, that moment lies inside the
+  /// instruction under way: the clock, the motors, the tool centre point
+  /// and the objects are theirs at that time, the instruction and line the
+  /// one under way, and the steps those done before it.
+  runtime::RunView view() const;
   const Stop& lastStop() const { return stop_; }
   const Timeline& timeline() const { return *timeline_; }
 
@@ -68,6 +76,13 @@ class Session {
   diag::Result<int> breakAtTime(vm::Micros t);
   /// When `condition` becomes true (`when out 2 = 1`, `when N = 3`).
   int breakWhen(Condition condition);
+  /// At every collision the run's check finds (a run with --collisions=warn
+  /// goes on after it; with error it ends there anyway): the session
+  /// stands at the moment of the first contact.
+  int breakOnCollision();
+  /// At every closing move that takes nothing (what the trace notes and
+  /// the run's warning is about).
+  int breakOnWarning();
   /// Adds a condition and a hit count to breakpoint `id`; false if none.
   bool qualify(int id, std::optional<Condition> condition, std::optional<HitCondition> hits);
   int watch(Expression what);
@@ -99,11 +114,14 @@ class Session {
   /// Back to the last moment a breakpoint or watch would have stopped the
   /// run going forwards (hit counts aside), else to the start.
   Stop reverseContinue();
-  /// Where a fresh run paused at time `t` would stand, forwards or back
-  /// (breakpoints are not looked at).
+  /// To the moment `t` exactly, forwards or back (breakpoints are not
+  /// looked at): after the instructions done by then; when one is under
+  /// way at t (a move, a DELAY), view() shows it at t.
   Stop gotoTime(vm::Micros t);
 
-  /// Input `input` turns `on` from now on; reverse execution replays it.
+  /// Input `input` turns `on` from now on (inside an instruction under way,
+  /// from its end, where the session then stands); reverse execution
+  /// replays it.
   /// An error message when the run is over or the input is not 1..8.
   std::optional<std::string> setInput(int input, bool on);
 
@@ -123,6 +141,16 @@ class Session {
                  std::vector<std::string>& notes);
   Stop finishedStop(bool already) const;
   Stop stopped(Stop stop);
+  /// When a collision breakpoint is among `ids`: the session stands at the
+  /// moment of the last collision's first contact (true).
+  bool standAtCollision(const std::vector<int>& ids);
+  /// Runs back one instruction to see which one is under way at `t`.
+  void standWithin(vm::Micros t);
+  /// A close on nothing among the instructions since `emptyClosesBefore`.
+  std::string emptyCloseNote(std::uint64_t emptyClosesBefore) const;
+  std::uint64_t emptyCloses() const;
+  /// The last collision, said as the run's report says it, with its time.
+  std::string collisionText() const;
   int nextId() { return nextId_++; }
   Breakpoint* find(int id);
 
@@ -132,6 +160,13 @@ class Session {
   std::vector<Watch> watches_;
   int nextId_ = 1;
   Stop stop_;
+  // The moment inside the instruction under way that view() shows (the run
+  // stands after that instruction).
+  struct Moment {
+    vm::Micros time = 0;
+    std::uint32_t instruction = 0;
+  };
+  std::optional<Moment> moment_;
   std::vector<StopObserver> observers_;
   std::function<bool()> interrupted_;
 };

@@ -186,37 +186,51 @@ class Checker {
   }
 
   // Objects by name (any of them with that name), or by number (1-based).
-  std::vector<runtime::ObjectView> objectsNamed(const Expectation& e, const std::vector<runtime::ObjectView>& all) {
-    std::vector<runtime::ObjectView> found;
+  // The objects an expectation names: by number (as the cell numbers them
+  // from 1) or by name (every object of that name).
+  std::vector<std::size_t> objectsNamed(const Expectation& e, const std::vector<runtime::ObjectView>& all) {
+    std::vector<std::size_t> found;
     std::size_t number = 0;
     const bool byNumber = !e.name.empty() && e.name.find_first_not_of("0123456789") == std::string::npos &&
                           e.name.size() < 6 && (number = std::stoul(e.name)) >= 1 && number <= all.size();
     for (std::size_t i = 0; i < all.size(); ++i)
-      if (byNumber ? i + 1 == number : base::sameName(all[i].name, e.name)) found.push_back(all[i]);
+      if (byNumber ? i + 1 == number : base::sameName(all[i].name, e.name)) found.push_back(i);
     if (found.empty()) fail(e, fmt::format("the workcell has no object '{}'", e.name));
     return found;
+  }
+
+  // "object 5 (block)", "objects 2, 3 (block)": numbers and name, as the
+  // run summary and the debugger show them.
+  static std::string objectsLabel(const std::vector<std::size_t>& found, const std::vector<runtime::ObjectView>& all) {
+    std::string numbers;
+    for (std::size_t i : found) numbers += fmt::format("{}{}", numbers.empty() ? "" : ", ", i + 1);
+    return fmt::format("object{} {} ({})", found.size() == 1 ? "" : "s", numbers, base::safeText(all[found[0]].name));
   }
 
   void object(const Expectation& e) {
     if (!needsCell(e)) return;
     const std::vector<runtime::ObjectView> all = run_.rig().objects();
-    const std::vector<runtime::ObjectView> found = objectsNamed(e, all);
+    const std::vector<std::size_t> found = objectsNamed(e, all);
     if (found.empty()) return;
+    const std::string label = objectsLabel(found, all);
     if (e.kind == ExpectKind::ObjectHeld) {
-      for (const runtime::ObjectView& o : found)
-        if (o.held == e.on) return;
-      fail(e, fmt::format("expected {} {}held at the end; it is {}held {}", e.name, e.on ? "" : "not ",
-                          e.on ? "not " : "", ending()));
+      for (std::size_t i : found)
+        if (all[i].held == e.on) return;
+      fail(e, fmt::format("expected {} {}held at the end; {} {}held {}", label, e.on ? "" : "not ",
+                          found.size() == 1 ? "it is" : "they are", e.on ? "not " : "", ending()));
       return;
     }
     std::string where;
-    for (const runtime::ObjectView& o : found) {
-      const std::array<double, 3> at{o.at.x(), o.at.y(), o.at.z()};
+    for (std::size_t i : found) {
+      const Eigen::Vector3d& p = e.centre ? all[i].centre : all[i].at;
+      const std::array<double, 3> at{p.x(), p.y(), p.z()};
       if (distance(at, e.point) <= e.tolerance) return;
       where += (where.empty() ? "" : ", ") + point(at);
     }
-    fail(e, fmt::format("expected {} at {} within {} at the end; {} at {} (the run ended {})", e.name, point(e.point),
-                        e.tolerance, found.size() == 1 ? "it is" : "they are", where, ending()));
+    const bool one = found.size() == 1;
+    const std::string now = e.centre ? (one ? "its centre is" : "their centres are") : (one ? "it is" : "they are");
+    fail(e, fmt::format("expected {} {}at {} within {} at the end; {} at {} (the run ended {})", label,
+                        e.centre ? "centre " : "", point(e.point), e.tolerance, now, where, ending()));
   }
 
   // "collides with NAME [at line N]": a collision one of whose parts is a

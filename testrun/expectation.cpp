@@ -358,7 +358,9 @@ bool expectation(LineReader& r, Expectation& e) {
     const std::optional<Word> name = r.take("an object name");
     if (!name) return false;
     e.name = name->text;
-    if (r.accept("at")) {
+    e.centre = r.accept("centre");
+    if (e.centre && !r.keyword("at")) return false;
+    if (e.centre || r.accept("at")) {
       e.kind = ExpectKind::ObjectAt;
       return r.real("x", e.point[0]) && r.real("y", e.point[1]) && r.real("z", e.point[2]) &&
              withinNumber(r, e.tolerance) && r.end();

@@ -34,7 +34,7 @@ enum class ExpectKind : std::uint8_t {
   Pulses,        // output N pulses K times
   Variable,      // variable V = N
   Tcp,           // tcp X Y Z [within D]
-  ObjectAt,      // object NAME at X Y Z [within D]
+  ObjectAt,      // object NAME at X Y Z [within D]: its AT corner; object NAME centre at X Y Z [within D]: its centre
   ObjectHeld,    // object NAME held | object NAME not held
   Order,         // (input|output) N on|off before (input|output) M on|off: the first times
   MotorBound,    // motor E never above N | motor E never below N: during the whole run
@@ -75,6 +75,7 @@ struct Expectation {
   std::uint32_t count = 0;
   // Variable, ObjectAt, ObjectHeld
   std::string name;
+  bool centre = false;  ///< ObjectAt: the centre of the object's box, not its AT corner
   std::int32_t value = 0;
   std::array<double, 3> point{};
   double tolerance = 0.5;

@@ -15,6 +15,7 @@
 
 #include "cli/lib/debug_command.h"
 #include "cli/lib/ik_command.h"
+#include "cli/lib/list_command.h"
 #include "cli/lib/lsp_command.h"
 #include "cli/lib/program_commands.h"
 #include "cli/lib/render_commands.h"
@@ -35,6 +36,7 @@ struct CommandValues {
   ProgramCommandOptions program;
   RobotQuery robot;
   IkOptions ik;
+  ListOptions list;
   PortsOptions ports;
   EmulateOptions emulate;
   RenderOptions render;

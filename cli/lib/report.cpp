@@ -95,8 +95,10 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   const std::vector<runtime::ObjectView> objects = r.run->rig().objects();
   for (std::size_t o = 0; o < objects.size(); ++o) {
     const runtime::ObjectView& e = objects[o];
-    out << fmt::format("  {:<15} {} at {}{}\n", fmt::format("object {}", o + 1), base::safeText(e.name),
-                       runtime::pointText({e.at.x(), e.at.y(), e.at.z()}), e.held ? ", held" : e.moved ? ", moved" : "");
+    out << fmt::format("  {:<15} {} at {}, centre {}{}\n", fmt::format("object {}", o + 1), base::safeText(e.name),
+                       runtime::pointText({e.at.x(), e.at.y(), e.at.z()}),
+                       runtime::pointText({e.centre.x(), e.centre.y(), e.centre.z()}),
+                       e.held ? ", held" : e.moved ? ", moved" : "");
   }
   if (const auto w = runtime::gripperWarning(*r.run, im.sourceName))  // the warning printed before
     out << fmt::format("  gripper         closed {}, took nothing (the warning at line {})\n",
@@ -137,7 +139,8 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     if (r.run->rig().cell()) {
       Json objects = Json::array();
       for (const runtime::ObjectView& e : r.run->rig().objects())
-        objects.push_back({{"name", e.name}, {"at", runtime::roundedPoint({e.at.x(), e.at.y(), e.at.z()})}, {"held", e.held},
+        objects.push_back({{"name", e.name}, {"at", runtime::roundedPoint({e.at.x(), e.at.y(), e.at.z()})},
+                           {"centre", runtime::roundedPoint({e.centre.x(), e.centre.y(), e.centre.z()})}, {"held", e.held},
                            {"moved", e.moved}});
       j["objects"] = objects;
     }

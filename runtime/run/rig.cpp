@@ -83,6 +83,8 @@ std::vector<ObjectView> Rig::objects(vm::Micros at) const {
     v.name = placed.shape.name;
     v.pose = world_->objectPose(o, encoders, at);
     v.at = v.pose * workcell::atCorner(placed.shape);
+    const Eigen::AlignedBox3d bounds = workcell::boundsOf(placed.shape);
+    v.centre = bounds.isEmpty() ? v.at : Eigen::Vector3d(v.pose * bounds.center());
     v.held = world_->held() == o && at >= world_->heldSince();
     v.moved = (v.pose.matrix() - placed.F_world_design.matrix()).cwiseAbs().maxCoeff() > 1e-9;
     out.push_back(v);

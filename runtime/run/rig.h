@@ -33,6 +33,7 @@ struct ObjectView {
   std::string_view name;
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< F_world_design
   Eigen::Vector3d at = Eigen::Vector3d::Zero();            ///< its AT corner in the world
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();        ///< the centre of its box (its lines' bounds) in the world
   bool held = false;                                       ///< by the gripper of the robot that runs the program
   bool moved = false;                                      ///< away from where the cell placed it
 };

@@ -87,7 +87,7 @@ TEST_CASE("the worked session's example: robotsim test fails the buggy copy and 
           "[debug][transcript]") {
   const rs::testing::CliResult bug = rs::testing::runCli({"test", debugtest::kExamples + "debugging/gantry_pick_bug.rsp"});
   CHECK(bug.code == 1);
-  CHECK(bug.out.find("expected 3 at (750.00, 30.00, 200.00) within 0.01 at the end; it is at (280.00, 30.00, 700.00)") !=
+  CHECK(bug.out.find("expected object 3 (block) at (750.00, 30.00, 200.00) within 0.01 at the end; it is at (280.00, 30.00, 700.00)") !=
         std::string::npos);
   const rs::testing::CliResult fixed = rs::testing::runCli({"test", debugtest::kExamples + "gantry_pick.rsp"});
   CHECK(fixed.code == 0);

@@ -131,10 +131,10 @@ TEST_CASE("debug --view serves the stopped moment after every command, forwards 
     const std::uint64_t steps = s["steps"];
     if (seen.count(steps)) CHECK(moment(s) == seen[steps]);
   }
-  // goto-time 0 stands right after the first instruction (the one that
-  // takes the clock past 0), where `step` stood first.
-  CHECK(s["steps"] == 1);
-  CHECK(moment(s) == seen[1]);
+  // goto-time 0 stands at 0 s exactly: before the first instruction, as
+  // the session stood at its start (the first move starts at 0 s).
+  CHECK(s["steps"] == 0);
+  CHECK(moment(s) == seen[0]);
 }
 
 TEST_CASE("debug --view: set input shows at once, the page refuses commands, the token is needed",

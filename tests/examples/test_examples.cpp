@@ -289,7 +289,9 @@ TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pal
   // (1 mm above its middle) and let go at (670, 51, 180): moved by (450, 0,
   // -500), AT corner (650, 30, 200). Block 2 (AT 280 30 700): from (300,
   // 51, 680) to (770, 51, 180), by (470, 0, -500): (750, 30, 200). The
-  // pallets stay.
+  // pallets stay. Centres: a block's AT corner + (20, 20, -20) (a 40 cube
+  // drawn with that corner at (0, 0, 40)), a pallet's + (120, 15, -80)
+  // (240 x 30 x 160, the same corner).
   const Result r = robotsim({"run", (kExamples / "gantry_pick.rsp").string(), "--cell", "gantry-cell", "--format=json"});
   INFO("stderr: " << r.err);
   REQUIRE(r.code == rs::cli::kExitOk);
@@ -300,10 +302,10 @@ TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pal
   CHECK(j.at("steps") == 26);
   CHECK(j.at("motors") == Json::parse(R"({"X": 0, "Z": 0, "Y": 0, "A": 0})"));
   const Json want = Json::parse(R"([
-    {"name": "pallet", "at": [150.0, 0.0, 760.0], "held": false, "moved": false},
-    {"name": "block",  "at": [650.0, 30.0, 200.0], "held": false, "moved": true},
-    {"name": "block",  "at": [750.0, 30.0, 200.0], "held": false, "moved": true},
-    {"name": "pallet", "at": [610.0, 0.0, 260.0], "held": false, "moved": false}])");
+    {"name": "pallet", "at": [150.0, 0.0, 760.0], "centre": [270.0, 15.0, 680.0], "held": false, "moved": false},
+    {"name": "block",  "at": [650.0, 30.0, 200.0], "centre": [670.0, 50.0, 180.0], "held": false, "moved": true},
+    {"name": "block",  "at": [750.0, 30.0, 200.0], "centre": [770.0, 50.0, 180.0], "held": false, "moved": true},
+    {"name": "pallet", "at": [610.0, 0.0, 260.0], "centre": [730.0, 15.0, 180.0], "held": false, "moved": false}])");
   CHECK(j.at("objects") == want);
 }
 

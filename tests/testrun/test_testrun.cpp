@@ -314,7 +314,7 @@ TEST_CASE("robotsim test: objects and the tool centre point on a workcell", "[te
                                         "END\n");
   const CliResult r = runCli({"test", program, "--collisions=off"});  // the fingers graze the pallet
   CHECK(r.code == 1);
-  CHECK(r.out.find(program + ":5:3: error: expected 3 held at the end; it is not held at line 8") != std::string::npos);
+  CHECK(r.out.find(program + ":5:3: error: expected object 3 (block) held at the end; it is not held at line 8") != std::string::npos);
   CHECK(r.out.find(":2:3:") == std::string::npos);
   CHECK(r.out.find(":3:3:") == std::string::npos);
   CHECK(r.out.find(":4:3:") == std::string::npos);

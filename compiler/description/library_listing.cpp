@@ -1,0 +1,123 @@
+#include "compiler/description/library_listing.h"
+
+#include <algorithm>
+#include <array>
+#include <set>
+#include <string_view>
+#include <system_error>
+
+#include "base/file_io.h"
+#include "compiler/description/description.h"
+#include "diag/diagnostic.h"
+
+namespace rs::compiler {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A library file is small; this only keeps a stray huge file from being read.
+constexpr std::size_t kListedFileBytes = std::size_t{4} << 20;
+
+// The kinds in the order the listing shows them, with their folders.
+struct ListedKind {
+  std::string_view kind, folder;
+};
+constexpr std::array<ListedKind, 4> kListedKinds{{
+    {"robot", "robots"}, {"gripper", "grippers"}, {"object", "objects"}, {"workcell", "workcells"}}};
+
+int kindOrder(const std::string& kind) {
+  for (std::size_t i = 0; i < kListedKinds.size(); ++i)
+    if (kListedKinds[i].kind == kind) return static_cast<int>(i);
+  return static_cast<int>(kListedKinds.size());
+}
+
+template <typename Def>
+bool defines(const std::vector<Def>& defs, const std::string& name) {
+  return std::any_of(defs.begin(), defs.end(), [&](const Def& d) { return d.name == name; });
+}
+
+// The kind a lookup of NAME finds in this file ("" if it defines no NAME).
+std::string kindDefined(const DescriptionFile& f, const std::string& name) {
+  if (defines(f.workcells, name)) return "workcell";
+  if (defines(f.robots, name)) return "robot";
+  if (defines(f.grippers, name)) return "gripper";
+  if (defines(f.objects, name)) return "object";
+  return "";
+}
+
+// The .rsd files of one directory, sorted, so that the listing is the same
+// on every file system.
+std::vector<fs::path> rsdFiles(const fs::path& dir) {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return files;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->path().extension() == ".rsd" && it->is_regular_file(ec)) files.push_back(it->path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace
+
+std::string headerSummary(const std::string& text, const std::string& name) {
+  std::string joined;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t end = text.find('\n', at);
+    if (end == std::string::npos) end = text.size();
+    std::string_view line(text.data() + at, end - at);
+    at = end + 1;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (line.empty() || line.front() != ';') break;
+    line.remove_prefix(1);
+    while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
+    if (line.empty()) break;  // the header's first paragraph ends
+    if (!joined.empty()) joined += ' ';
+    joined += line;
+  }
+  // The first sentence: up to a full stop at the end or before a space and
+  // a word that is not a number ("Figs. 4-7" goes on).
+  const auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
+  for (std::size_t i = 0; i < joined.size(); ++i)
+    if (joined[i] == '.' && (i + 1 == joined.size() ||
+                             (joined[i + 1] == ' ' && i + 2 < joined.size() && !isDigit(joined[i + 2])))) {
+      joined.resize(i + 1);
+      break;
+    }
+  const std::string prefix = name + ": ";
+  if (joined.compare(0, prefix.size(), prefix) == 0) joined.erase(0, prefix.size());
+  return joined;
+}
+
+LibraryListing listLibrary(const std::vector<fs::path>& searchPath) {
+  LibraryListing listing{searchPath, {}};
+  std::set<std::string> found;  // kind and name of each entry found, for hiding
+  for (const fs::path& dir : searchPath) {
+    std::vector<fs::path> files = rsdFiles(dir);
+    for (const ListedKind& k : kListedKinds)
+      for (fs::path& f : rsdFiles(dir / k.folder)) files.push_back(std::move(f));
+    for (const fs::path& file : files) {
+      base::FileRead read = base::readFile(file.string(), kListedFileBytes);
+      if (!read.bytes) continue;
+      const std::string name = file.stem().string();
+      std::string summary = headerSummary(*read.bytes, name);
+      diag::Diagnostics ignored(file.string());
+      const DescriptionFile parsed =
+          parseDescription(std::make_unique<diag::SourceFile>(file.string(), std::move(*read.bytes)), ignored);
+      const std::string kind = kindDefined(parsed, name);
+      if (kind.empty()) continue;
+      const bool hidden = !found.insert(kind + ' ' + name).second;
+      listing.entries.push_back({kind, name, file, std::move(summary), hidden});
+    }
+  }
+  // stable: a hidden entry stays after the one found first on the path.
+  std::stable_sort(listing.entries.begin(), listing.entries.end(), [](const LibraryEntry& a, const LibraryEntry& b) {
+    const int ka = kindOrder(a.kind), kb = kindOrder(b.kind);
+    return ka != kb ? ka < kb : a.name < b.name;
+  });
+  return listing;
+}
+
+}  // namespace rs::compiler
