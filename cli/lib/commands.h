@@ -16,6 +16,7 @@
 #include "cli/lib/debug_command.h"
 #include "cli/lib/ik_command.h"
 #include "cli/lib/lsp_command.h"
+#include "cli/lib/plot_command.h"
 #include "cli/lib/program_commands.h"
 #include "cli/lib/render_commands.h"
 #include "cli/lib/robot_commands.h"
@@ -38,6 +39,7 @@ struct CommandValues {
   PortsOptions ports;
   EmulateOptions emulate;
   RenderOptions render;
+  PlotOptions plot;
   TeachOptions teach;
   TestOptions test;
   LspOptions lsp;
