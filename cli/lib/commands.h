@@ -17,6 +17,7 @@
 #include "cli/lib/ik_command.h"
 #include "cli/lib/list_command.h"
 #include "cli/lib/lsp_command.h"
+#include "cli/lib/plot_command.h"
 #include "cli/lib/program_commands.h"
 #include "cli/lib/render_commands.h"
 #include "cli/lib/robot_commands.h"
@@ -40,6 +41,7 @@ struct CommandValues {
   PortsOptions ports;
   EmulateOptions emulate;
   RenderOptions render;
+  PlotOptions plot;
   TeachOptions teach;
   TestOptions test;
   LspOptions lsp;

@@ -14,6 +14,7 @@
 #include "cli/lib/exit_codes.h"
 #include "cli/lib/number_args.h"
 #include "cli/lib/options.h"
+#include "cli/lib/plot_command.h"
 #include "cli/lib/report.h"
 #include "cli/lib/run_warnings.h"
 #include "launch/run_diagnostics.h"
@@ -340,6 +341,16 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   printRunWarnings(err, launch::runWarnings(*run, prepared.collisions, run->spec().image->sourceName), loaded);
   if (const auto w = runtime::gripperWarning(*run, run->spec().image->sourceName))  // shown under END
     input.warning = fmt::format("line {}: {}", w->pos.line, w->message);
+  // The chart under the scrub bar: from the whole log, whatever the frames keep.
+  render::ChartInput chartInput;
+  chartInput.cell = loaded.cell.get();
+  chartInput.run = &recording;
+  const std::vector<std::uint32_t> lineOf = run->spec().image->lines.toVector();
+  chartInput.lineOf = lineOf;
+  chartInput.marks = chartMarks(*run, input.outcome);
+  chartInput.title = fmt::format("{} on {}", base::safeText(input.listing.name), base::safeText(loaded.cell->name));
+  const render::Chart chart = render::chartOf(chartInput);
+  input.chart = &chart;
   const render::Frames frames = render::framesOf(recording, input.eventSteps, input.frameRule);
   const std::string html = render::animationHtml(input, frames);
   if (!write(o.output, std::vector<std::uint8_t>(html.begin(), html.end()), err)) return kExitBadInput;

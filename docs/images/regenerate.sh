@@ -22,3 +22,6 @@ for file in "$stdlib"/workcells/*.rsd; do
   "$robotsim" render "$name" --size 800x600 -o "$here/cell-$name.png"
   echo "docs/images/cell-$name.png"
 done
+# The chart of a run (docs/render.md, "Charts of a run").
+"$robotsim" plot "$here/../../examples/gantry_pick.rsp" --cell gantry-cell -o "$here/plot-gantry-pick.png"
+echo "docs/images/plot-gantry-pick.png"

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/render/chart_draw.h"
 #include "runtime/render/draw.h"
 #include "runtime/render/page.h"
 #include "runtime/render/palette.h"
@@ -204,6 +205,17 @@ Json animationModel(const AnimationInput& input, const Frames& frames) {
   model["run"] = withCollisions(runModel(frames.log, cell, input.outcome), input.collisions);
   if (frames.decimated()) model["run"]["frames"] = {{"steps", frames.runSteps}, {"slot", frames.slot}};
   if (!input.warning.empty()) model["run"]["warning"] = input.warning;  // only when there is one
+  if (input.chart) {
+    const ChartLayout layout = chartLayout(*input.chart);
+    const Encoded svg = encodeChart(*input.chart, layout, ImageFormat::Svg);
+    if (!svg.bytes.empty())
+      model["chart"] = {{"svg", std::string(svg.bytes.begin(), svg.bytes.end())},
+                        {"width", layout.width},
+                        {"height", layout.height},
+                        {"left", layout.left},
+                        {"right", layout.right},
+                        {"end", layout.end}};
+  }
   return model;
 }
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "runtime/render/camera.h"
+#include "runtime/render/chart.h"
 #include "runtime/render/frames.h"
 #include "runtime/run/run_log.h"
 #include "model/workcell/model.h"
@@ -58,6 +59,8 @@ struct AnimationInput {
   /// frames (frames.h).
   std::vector<std::uint32_t> eventSteps;
   FrameRule frameRule;
+  /// The run's chart, drawn under the scrub bar (chart_draw.h); may be null.
+  const Chart* chart = nullptr;
 };
 
 /// The page's data: {"title", "cell", "fit", "camera", "style", "robots",
@@ -78,6 +81,8 @@ struct AnimationInput {
 /// "end" (µs), "robotParts" and "objects" (an array of indices each). The
 /// steps are the run's frames (frames.h); when a long run was cut down,
 /// "run"."frames" says so: {"steps": the run's steps, "slot": µs}.
+/// With a chart, "chart": {"svg" (the picture, kChartWidth wide), "width",
+/// "height" (pixels), "left", "right" (the x of time 0 and of "end", µs)}.
 nlohmann::ordered_json animationModel(const AnimationInput& input);
 /// The same from frames already made of input.run.
 nlohmann::ordered_json animationModel(const AnimationInput& input, const Frames& frames);

@@ -165,7 +165,32 @@ const std::string_view kScript = R"JS('use strict';
   function currentLine() {
     return S.k >= 0 && S.k < steps ? model.program.lineOf[run.index[S.k]] || 0 : 0;
   }
+  // The run's chart under the scrub bar (chart_draw.h, the picture `robotsim
+  // plot` draws): the cursor stands at the time shown, a click seeks to the
+  // time under it. model.chart: its SVG, its size in pixels, the x of time 0
+  // ("left") and of the run's end ("right").
+  const chart = model.chart, chartImg = el('chart'), chartCursor = el('chartCursor');
+  function chartX(t) { return chart.left + (chart.right - chart.left) * (chart.end > 0 ? t / chart.end : 0); }
+  function chartTimeAt(x) {
+    return chart.end > 0 ? Math.round(((x - chart.left) / (chart.right - chart.left)) * chart.end) : 0;
+  }
+  function placeChartCursor() {
+    if (chart) chartCursor.style.left = (chartX(S.t) * chartImg.clientWidth) / chart.width + 'px';
+  }
+  if (chart) {
+    chartImg.src = 'data:image/svg+xml;charset=utf-8,' + encodeURIComponent(chart.svg);
+    chartImg.addEventListener('load', placeChartCursor);
+    chartImg.addEventListener('click', (e) => {
+      const r = chartImg.getBoundingClientRect();
+      pause();
+      setTime(chartTimeAt(((e.clientX - r.left) * chart.width) / r.width));
+    });
+    window.addEventListener('resize', placeChartCursor);
+  } else {
+    el('chartPane').style.display = 'none';
+  }
   function updatePanel() {
+    placeChartCursor();
     timeText.textContent = (S.t / 1e6).toFixed(3) + ' / ' + (run.end / 1e6).toFixed(3) + ' s';
     if (!scrubbing) timeline.value = String(S.t);
     const line = currentLine();

@@ -48,9 +48,17 @@ html, body { margin: 0; height: 100%; background: var(--bg); color: var(--text);
 #timeline { flex: 1; min-width: 80px; accent-color: var(--accent); }
 #time { min-width: 17ch; text-align: right; color: #fff; }
 label { color: var(--dim); }
+#app.with-chart { grid-template-rows: 1fr auto auto; }
+#app.with-chart #side { grid-row: 1 / span 3; }
+#chartPane { grid-column: 1; grid-row: 3; max-height: 40vh; overflow-y: auto; background: var(--bg);
+             border-top: 1px solid var(--line); }
+#chartWrap { position: relative; }
+#chart { display: block; width: 100%; height: auto; cursor: pointer; }
+#chartCursor { position: absolute; top: 0; bottom: 0; width: 2px; margin-left: -1px; background: var(--accent);
+               pointer-events: none; opacity: .85; }
 )CSS";
 
-const std::string_view kBody = R"HTML(<div id="app">
+const std::string_view kBody = R"HTML(<div id="app" class="with-chart">
 <div id="view"><canvas id="cell" aria-label="workcell"></canvas>
 <div id="hint">drag: rotate &middot; wheel: zoom &middot; double-click: reset view &middot; space: play</div></div>
 <aside id="side">
@@ -79,6 +87,8 @@ const std::string_view kBody = R"HTML(<div id="app">
 <label><input type="checkbox" id="axes"> axes</label>
 <button id="resetView" title="back to the starting view">reset view</button>
 </div>
+<div id="chartPane"><div id="chartWrap"><img id="chart" alt="the run over time: motors, tool centre point, gripper, inputs, outputs, source lines">
+<div id="chartCursor"></div></div></div>
 </div>
 )HTML";
 

@@ -1,0 +1,374 @@
+#include "runtime/render/chart_draw.h"
+
+#include <cairo-svg.h>
+#include <cairo.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+
+#include "base/seconds.h"
+#include "runtime/render/palette.h"
+#include "runtime/render/png.h"
+
+namespace rs::render {
+
+namespace {
+
+// Pixels.
+constexpr double kChartLeft = 150, kChartRightMargin = 20, kChartTitle = 34;
+constexpr double kLaneGap = 6, kLanePad = 4;
+constexpr double kMotorLane = 56, kTcpLane = 84, kGripperLane = 48, kDigitalRow = 8;
+constexpr double kLinesLane = 22, kAxis = 28, kNoteLine = 16, kChartBottom = 10;
+constexpr std::size_t kNotesShown = 6;  // marks listed under the axis; the rest counted
+constexpr double kSmallText = 11, kTitleText = 13;
+constexpr Rgb kGrid = {0x2A, 0x2F, 0x40};
+
+struct ChartSurfaceFree {
+  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+};
+struct ChartContextFree {
+  void operator()(cairo_t* c) const { cairo_destroy(c); }
+};
+
+void chartColor(cairo_t* cr, Rgb c, double alpha = 1.0) {
+  cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
+}
+
+double laneHeight(LaneKind kind) {
+  switch (kind) {
+    case LaneKind::Motor: return kMotorLane;
+    case LaneKind::Tcp: return kTcpLane;
+    case LaneKind::Gripper: return kGripperLane;
+    case LaneKind::Inputs:
+    case LaneKind::Outputs: break;
+  }
+  return 8 * kDigitalRow;
+}
+
+bool isDigitalLane(LaneKind kind) { return kind == LaneKind::Inputs || kind == LaneKind::Outputs; }
+
+std::size_t notesOf(const Chart& chart) {
+  return std::min(chart.marks.size(), kNotesShown) + (chart.marks.size() > kNotesShown ? 1 : 0);
+}
+
+void chartText(cairo_t* cr, double x, double y, const std::string& s, double size, Rgb color, bool alignRight = false) {
+  cairo_set_font_size(cr, size);
+  if (alignRight) {
+    cairo_text_extents_t ext;
+    cairo_text_extents(cr, s.c_str(), &ext);
+    x -= ext.x_advance;
+  }
+  chartColor(cr, color);
+  cairo_move_to(cr, x, y);
+  cairo_show_text(cr, s.c_str());
+}
+
+double chartTextWidth(cairo_t* cr, const std::string& s, double size) {
+  cairo_set_font_size(cr, size);
+  cairo_text_extents_t ext;
+  cairo_text_extents(cr, s.c_str(), &ext);
+  return ext.x_advance;
+}
+
+// A value as a lane's scale shows it: whole counts, lengths with up to 2 decimals.
+std::string scaleText(double v, bool length) {
+  std::string s = length ? fmt::format("{:.2f}", v) : fmt::format("{:.0f}", v);
+  if (length) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  if (s == "-0") s = "0";
+  return s;
+}
+
+// The lowest and highest value of a lane's series (a flat lane gets ±1).
+std::pair<double, double> rangeOf(const Chart& chart, const ChartLane& lane) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (const std::size_t s : lane.series)
+    for (const double v : chart.series[s].values) lo = std::min(lo, v), hi = std::max(hi, v);
+  if (!(lo <= hi)) lo = hi = 0;
+  if (hi - lo < 1e-9) lo -= 1, hi += 1;
+  return {lo, hi};
+}
+
+// A series drawn as a polyline through its samples; a flat stretch keeps
+// only its ends.
+void analogPath(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const std::vector<double>& v,
+                const ChartBox& box, double lo, double hi) {
+  const auto y = [&](double value) {
+    return box.y1 - kLanePad - (value - lo) / (hi - lo) * (box.y1 - box.y0 - 2 * kLanePad);
+  };
+  const std::size_t n = v.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool keep = i == 0 || i + 1 == n || v[i] != v[i - 1] || v[i] != v[i + 1];
+    if (!keep) continue;
+    const double x = layout.xOf(chart.times[i]);
+    if (i == 0)
+      cairo_move_to(cr, x, y(v[i]));
+    else
+      cairo_line_to(cr, x, y(v[i]));
+  }
+}
+
+// An on/off series as steps in row `row` of a digital lane: the level a
+// sample found holds until the next sample.
+void digitalPath(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const std::vector<double>& v,
+                 const ChartBox& box, std::size_t row) {
+  const double top = box.y0 + static_cast<double>(row) * kDigitalRow;
+  const auto y = [&](double value) { return value > 0.5 ? top + 1.5 : top + kDigitalRow - 1.5; };
+  if (v.empty()) return;
+  cairo_move_to(cr, layout.xOf(chart.times[0]), y(v[0]));
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    if (v[i] == v[i - 1]) continue;
+    const double x = layout.xOf(chart.times[i]);
+    cairo_line_to(cr, x, y(v[i - 1]));
+    cairo_line_to(cr, x, y(v[i]));
+  }
+  cairo_line_to(cr, layout.xOf(chart.times.back()), y(v.back()));
+}
+
+// Bands where the gripper holds an object (the "held" series > 0).
+void heldBands(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const ChartBox& box) {
+  const auto held = std::find_if(chart.series.begin(), chart.series.end(),
+                                 [](const ChartSeries& s) { return s.column == "held"; });
+  if (held == chart.series.end()) return;
+  const std::vector<double>& v = held->values;
+  for (std::size_t i = 0; i < v.size();) {
+    if (v[i] <= 0) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j + 1 < v.size() && v[j + 1] > 0) ++j;
+    const double x0 = layout.xOf(chart.times[i]), x1 = layout.xOf(chart.times[std::min(j + 1, v.size() - 1)]);
+    cairo_rectangle(cr, x0, box.y0, std::max(x1 - x0, 1.0), box.y1 - box.y0);
+    i = j + 1;
+  }
+  chartColor(cr, rgb(chart_colors::kHeld), 0.45);
+  cairo_fill(cr);
+}
+
+void drawLane(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const ChartLane& lane, const ChartBox& box) {
+  cairo_rectangle(cr, box.x0, box.y0, box.x1 - box.x0, box.y1 - box.y0);
+  chartColor(cr, chart_colors::kLane);
+  cairo_fill(cr);
+  chartText(cr, 8, box.y0 + 12, lane.label, kSmallText, rgb(workcell::Color::LightGray));
+  cairo_set_line_width(cr, 1.25);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  if (isDigitalLane(lane.kind)) {
+    const workcell::Color color = lane.kind == LaneKind::Inputs ? chart_colors::kInput : chart_colors::kOutput;
+    for (std::size_t r = 0; r < lane.series.size(); ++r) {
+      chartText(cr, box.x0 - 6, box.y0 + static_cast<double>(r + 1) * kDigitalRow - 0.5, std::to_string(r + 1), 8,
+           rgb(workcell::Color::DarkGray), true);
+      digitalPath(cr, chart, layout, chart.series[lane.series[r]].values, box, r);
+      chartColor(cr, rgb(color));
+      cairo_stroke(cr);
+    }
+    return;
+  }
+  if (lane.kind == LaneKind::Gripper) heldBands(cr, chart, layout, box);
+  const auto [lo, hi] = rangeOf(chart, lane);
+  const bool length = lane.kind == LaneKind::Tcp;
+  const Rgb dim = rgb(workcell::Color::DarkGray);
+  chartText(cr, box.x0 - 6, box.y0 + kLanePad + 8, scaleText(hi, length), kSmallText, dim, true);
+  chartText(cr, box.x0 - 6, box.y1 - kLanePad, scaleText(lo, length), kSmallText, dim, true);
+  for (std::size_t k = 0; k < lane.series.size(); ++k) {
+    analogPath(cr, chart, layout, chart.series[lane.series[k]].values, box, lo, hi);
+    const workcell::Color color = lane.kind == LaneKind::Tcp       ? chart_colors::kTcp[k % 3]
+                                  : lane.kind == LaneKind::Gripper ? chart_colors::kGripper
+                                                                   : chart_colors::kMotor;
+    chartColor(cr, rgb(color));
+    cairo_stroke(cr);
+  }
+  if (length)  // which colour is which axis
+    for (std::size_t k = 0; k < 3; ++k)
+      chartText(cr, 8 + 14 * static_cast<double>(k), box.y0 + 26, std::string(1, "xyz"[k]), kSmallText,
+           rgb(chart_colors::kTcp[k]));
+}
+
+// The time axis: a tick and its seconds every 1, 2 or 5 times a power of
+// ten, about ten of them, with a faint grid line across the lanes.
+void drawTimeAxis(cairo_t* cr, const Chart& chart, const ChartLayout& layout) {
+  const vm::Micros tick = chartInterval(chart.end, 10);
+  const double y = layout.lines.y1 + 2;
+  cairo_set_line_width(cr, 1);
+  for (vm::Micros t = 0; t <= chart.end; t += tick) {
+    const double x = std::round(layout.xOf(t)) + 0.5;
+    cairo_move_to(cr, x, layout.top);
+    cairo_line_to(cr, x, layout.bottom);
+  }
+  chartColor(cr, kGrid);
+  cairo_stroke(cr);
+  for (vm::Micros t = 0; t <= chart.end; t += tick) {
+    std::string s = base::formatSeconds(t);
+    while (s.find('.') != std::string::npos && (s.back() == '0' || s.back() == '.')) s.pop_back();
+    const double x = layout.xOf(t), w = chartTextWidth(cr, s, kSmallText);
+    chartText(cr, std::clamp(x - w / 2, layout.left - w / 2, layout.right - w), y + 14, s, kSmallText,
+         rgb(workcell::Color::LightGray));
+  }
+  chartText(cr, layout.left - 6, y + 14, "s", kSmallText, rgb(workcell::Color::DarkGray), true);
+}
+
+// The source lines that ran: a tick where each starts, its number beside
+// it where there is room. Changes closer than half a pixel share a tick.
+void drawSourceLines(cairo_t* cr, const Chart& chart, const ChartLayout& layout) {
+  const ChartBox& box = layout.lines;
+  cairo_rectangle(cr, box.x0, box.y0, box.x1 - box.x0, box.y1 - box.y0);
+  chartColor(cr, chart_colors::kLane);
+  cairo_fill(cr);
+  chartText(cr, 8, box.y1 - 7, "source line", kSmallText, rgb(workcell::Color::LightGray));
+  cairo_set_line_width(cr, 1);
+  double lastTick = -1e9;
+  for (const LineChange& c : chart.lineChanges) {
+    const double x = layout.xOf(c.at);
+    if (x - lastTick < 0.5) continue;
+    cairo_move_to(cr, x, box.y0);
+    cairo_line_to(cr, x, box.y1);
+    lastTick = x;
+  }
+  chartColor(cr, rgb(chart_colors::kLine));
+  cairo_stroke(cr);
+  double labelEnd = -1e9;
+  for (const LineChange& c : chart.lineChanges) {
+    const double x = layout.xOf(c.at) + 2;
+    const std::string s = std::to_string(c.line);
+    const double w = chartTextWidth(cr, s, kSmallText);
+    if (x < labelEnd + 3 || x + w > box.x1) continue;
+    chartText(cr, x, box.y1 - 7, s, kSmallText, rgb(workcell::Color::White));
+    labelEnd = x + w;
+  }
+}
+
+workcell::Color markColor(MarkKind kind) {
+  switch (kind) {
+    case MarkKind::Collision: return chart_colors::kCollision;
+    case MarkKind::Stop: return chart_colors::kStop;
+    case MarkKind::Warning: break;
+  }
+  return chart_colors::kWarning;
+}
+
+const char* markWord(MarkKind kind) {
+  switch (kind) {
+    case MarkKind::Collision: return "collision";
+    case MarkKind::Stop: return "stop";
+    case MarkKind::Warning: break;
+  }
+  return "warning";
+}
+
+// Each mark a vertical line across the lanes with its number above; the
+// first few listed under the axis with their time and words.
+void drawMarks(cairo_t* cr, const Chart& chart, const ChartLayout& layout) {
+  for (std::size_t i = 0; i < chart.marks.size(); ++i) {
+    const ChartMark& m = chart.marks[i];
+    const double x = layout.xOf(m.at);
+    cairo_set_line_width(cr, m.kind == MarkKind::Collision ? 2 : 1.5);
+    cairo_move_to(cr, x, layout.top);
+    cairo_line_to(cr, x, layout.bottom);
+    chartColor(cr, rgb(markColor(m.kind)));
+    cairo_stroke(cr);
+    if (i < kNotesShown) chartText(cr, x + 2, layout.top - 3, std::to_string(i + 1), kSmallText, rgb(markColor(m.kind)));
+  }
+  double y = layout.bottom + kAxis + 4;
+  for (std::size_t i = 0; i < chart.marks.size() && i < kNotesShown; ++i, y += kNoteLine) {
+    const ChartMark& m = chart.marks[i];
+    chartText(cr, 8, y, fmt::format("{}  {} s  {}: {}", i + 1, base::formatSeconds(m.at), markWord(m.kind), m.text),
+         kSmallText, rgb(markColor(m.kind)));
+  }
+  if (chart.marks.size() > kNotesShown)
+    chartText(cr, 8, y, fmt::format("and {} more marks", chart.marks.size() - kNotesShown), kSmallText,
+         rgb(workcell::Color::LightGray));
+}
+
+void drawChart(cairo_t* cr, const Chart& chart, const ChartLayout& layout) {
+  chartColor(cr, kBackground);
+  cairo_paint(cr);
+  cairo_select_font_face(cr, "monospace", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  std::string title = chart.title.empty() ? std::string("run") : chart.title;
+  title += fmt::format("   0 to {} s", base::formatSeconds(chart.end));
+  if (chart.times.size() > 1)
+    title += fmt::format(", a sample every {} s", base::formatSeconds(chart.times[1] - chart.times[0]));
+  chartText(cr, 8, 18, title, kTitleText, rgb(workcell::Color::White));
+  for (std::size_t l = 0; l < chart.lanes.size(); ++l) drawLane(cr, chart, layout, chart.lanes[l], layout.lanes[l]);
+  drawSourceLines(cr, chart, layout);
+  drawTimeAxis(cr, chart, layout);
+  drawMarks(cr, chart, layout);
+}
+
+cairo_status_t appendChartBytes(void* closure, const unsigned char* data, unsigned int length) {
+  auto* out = static_cast<std::vector<std::uint8_t>*>(closure);
+  out->insert(out->end(), data, data + length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+Encoded chartFailed(cairo_status_t status) { return {{}, std::string("cairo: ") + cairo_status_to_string(status)}; }
+
+}  // namespace
+
+double ChartLayout::xOf(vm::Micros t) const {
+  if (end <= 0) return left;
+  return left + (right - left) * static_cast<double>(t) / static_cast<double>(end);
+}
+
+ChartLayout chartLayout(const Chart& chart, int width) {
+  ChartLayout layout;
+  layout.width = std::clamp(width, kChartMinWidth, kChartMaxWidth);
+  layout.left = kChartLeft;
+  layout.right = layout.width - kChartRightMargin;
+  layout.end = chart.end;
+  double y = kChartTitle;
+  layout.top = y;
+  for (const ChartLane& lane : chart.lanes) {
+    const double h = laneHeight(lane.kind);
+    layout.lanes.push_back({layout.left, y, layout.right, y + h});
+    y += h + kLaneGap;
+  }
+  layout.lines = {layout.left, y, layout.right, y + kLinesLane};
+  layout.bottom = layout.lines.y1;
+  y = layout.bottom + kAxis + static_cast<double>(notesOf(chart)) * kNoteLine + kChartBottom;
+  layout.height = static_cast<int>(std::ceil(y));
+  return layout;
+}
+
+Encoded encodeChart(const Chart& chart, const ChartLayout& layout, ImageFormat format) {
+  if (layout.width <= 0 || layout.height <= 0 || layout.width > kChartMaxWidth || layout.height > kChartMaxWidth)
+    return {{}, "chart size out of range"};
+  Encoded result;
+  std::unique_ptr<cairo_surface_t, ChartSurfaceFree> surface(
+      format == ImageFormat::Png
+          ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height)
+          : cairo_svg_surface_create_for_stream(appendChartBytes, &result.bytes, layout.width, layout.height));
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return chartFailed(cairo_surface_status(surface.get()));
+  {
+    std::unique_ptr<cairo_t, ChartContextFree> cr(cairo_create(surface.get()));
+    drawChart(cr.get(), chart, layout);
+    if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) return chartFailed(cairo_status(cr.get()));
+  }
+  if (format == ImageFormat::Svg) {
+    cairo_surface_finish(surface.get());
+    if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
+      return chartFailed(cairo_surface_status(surface.get()));
+    return result;
+  }
+  cairo_surface_flush(surface.get());
+  const unsigned char* data = cairo_image_surface_get_data(surface.get());
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  result.bytes = encodePng(layout.width, layout.height, [&](int y, std::uint8_t* out) {
+    const unsigned char* row = data + static_cast<std::ptrdiff_t>(y) * stride;
+    for (int x = 0; x < layout.width; ++x, out += 3) {
+      std::uint32_t px;
+      std::memcpy(&px, row + 4 * x, 4);  // native-endian 0x00RRGGBB
+      out[0] = static_cast<std::uint8_t>(px >> 16);
+      out[1] = static_cast<std::uint8_t>(px >> 8);
+      out[2] = static_cast<std::uint8_t>(px);
+    }
+  });
+  if (result.bytes.empty()) return {{}, "zlib: cannot compress the image"};
+  return result;
+}
+
+}  // namespace rs::render
