@@ -287,6 +287,12 @@ std::optional<LineProblem> LinePlanner::plan(const Line& line, std::span<const s
     // Each motor's share of the knot, as far as it moves the tool on its
     // own: the most a motor running ahead of the others (a controller that
     // moves each motor at its own speed) takes the tool off the lock-step path.
+    // Which motors lead: in the first half of the line those that carry
+    // the tool forward (it never falls back behind where it started: a
+    // block lifted off a pallet does not dip into it), in the second half
+    // those that carry it back (it never runs past where it ends: a block
+    // set down does not sink into what it lands on).
+    const bool firstHalf = s + s1 < 1.0;
     const Eigen::Vector3d here = tcpOf(path.prev_, path);
     double travel = 0;
     std::uint32_t lead = 0;
@@ -296,7 +302,8 @@ std::optional<LineProblem> LinePlanner::plan(const Line& line, std::span<const s
       const Eigen::Vector3d share = tcpOf(path.mid_, path) - here;
       travel += share.norm();
       const auto motor = static_cast<unsigned>(joints[i].encoder);
-      if (share.dot(forward) > 0 && motor < 32) lead |= 1u << motor;
+      const double along = share.dot(forward);
+      if ((firstHalf ? along > 0 : along < 0) && motor < 32) lead |= 1u << motor;
     }
     if (travel > kKnotTravel) close = false;
     if (!close && canHalve) { ds /= 2; continue; }

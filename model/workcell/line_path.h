@@ -53,7 +53,8 @@ class LinePath {
   std::size_t size() const { return motors_ == 0 ? 0 : knots_.size() / motors_; }
   std::span<const std::int32_t> knot(std::size_t k) const { return {knots_.data() + k * motors_, motors_}; }
   /// The motors that lead in knot k (vm::Machine::moveLockStep's `lead`):
-  /// those whose share of the knot carries the tool forward along the line.
+  /// in the first half of the line those whose share of the knot carries
+  /// the tool forward along it, in the second half those that carry it back.
   std::uint32_t lead(std::size_t k) const { return leads_[k]; }
 
  private:

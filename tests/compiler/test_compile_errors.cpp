@@ -490,8 +490,10 @@ TEST_CASE("a straight-line move needs the robot's kinematics, and APPRO and DEPA
                      err(2, 1, "DEPART" + needs),
                      err(3, 7, "APPRO goes 1 to 100000 length units, found 100001"),
                      err(3, 1, "APPRO" + needs)});
-  expectDiagnostics("APPRO\nEND\n", {err(1, 1, "APPRO expects 1 operand (APPRO <length>), found 0")});
-  expectDiagnostics("DEPART UP\nEND\n", {err(1, 8, "expected a distance in length units, found 'UP'")});
+  expectDiagnostics("APPRO\nEND\n",
+                    {err(1, 1, "APPRO expects 1 operand (APPRO <length>), found 0"), err(1, 1, "APPRO" + needs)});
+  expectDiagnostics("DEPART UP\nEND\n",
+                    {err(1, 8, "expected a distance in length units, found 'UP'"), err(1, 1, "DEPART" + needs)});
   const CompileResult r = compileText("DEPART -5\nEND\n");
   bool hinted = false;
   for (const Diagnostic& d : r.diagnostics) hinted = hinted || d.hint.find("use the other one") != std::string::npos;

@@ -53,8 +53,12 @@ TEST_CASE("MOVES on the gantry: four knots in lock-step, timed by hand", "[runti
   // (40, 16). Each takes its slowest motor at full speed, 10 counts at
   // 1000/s = 10 ms, and the other motor keeps pace: 5 ms in, X is at
   // 10 * 5 / 10 = 5 and Z at 4 * 5 / 10 = 2 (a MOVETO would have Z at 5
-  // by then, off the line). 27 ms in: the third knot, 7 ms of 10: X 27,
-  // Z 8 + floor(4 * 7 / 10) = 10. The whole line 40 ms.
+  // by then, off the line). Both motors carry the tool forward along the
+  // line, so in the first half of the line both lead (each takes a count as
+  // soon as it is begun), in the second half neither does (each takes it
+  // when it is done). 27 ms in: the third knot, 7 ms of 10: X 20 + 7 = 27,
+  // Z 8 + floor(4 * 7 / 10) = 10. 3 ms in, Z is at ceil(4 * 3 / 10) = 2.
+  // The whole line 40 ms.
   const LineRun r = runLine("gantry-cell", "        MOVES DIAG\n        END\nPOINTS\nDIAG 40 16 0 0\n");
   INFO(r.outcome.message);
   REQUIRE(r.outcome.ok());
@@ -75,6 +79,9 @@ TEST_CASE("MOVES on the gantry: four knots in lock-step, timed by hand", "[runti
   }
   CHECK(rs::runtime::stateAt(log, 5 * kMs).encoders == std::vector<std::int32_t>{5, 2, 0, 0});
   CHECK(rs::runtime::stateAt(log, 27 * kMs).encoders == std::vector<std::int32_t>{27, 10, 0, 0});
+  CHECK(rs::runtime::stateAt(log, 3 * kMs).encoders == std::vector<std::int32_t>{3, 2, 0, 0});
+  CHECK(log.moves[1][0].lead);
+  CHECK_FALSE(log.moves[1][2].lead);
   CHECK(r.run->rig().motors()[0] == 40);
 }
 
@@ -115,11 +122,12 @@ TEST_CASE("a line whose start only the run knows is checked when it starts, in t
   const std::string atCompile = compileMessage("xr4-cell", "        MOVEP A\n        MOVES B\n        END\n" + points);
   CHECK(atCompile.find("MOVES ") == 0);
   CHECK(atCompile.find("along the line") != std::string::npos);
-  // A label on MOVES: something may jump there, so the compiler does not
-  // know where the line starts; the run finds the same problem.
-  const LineRun r = runLine("xr4-cell", "        MOVEP A\nacross: MOVES B\n        END\n" + points);
+  // A jump to MOVES: the compiler does not follow where the arm stands
+  // across jumps, so it does not know where this line starts; the run
+  // finds the same problem when the line starts.
+  const LineRun r = runLine("xr4-cell", "        MOVEP A\n        GOTO across\nacross: MOVES B\n        END\n" + points);
   CHECK(r.outcome.reason == rs::vm::StopReason::RuntimeError);
-  CHECK(r.outcome.index == 1);
+  CHECK(r.outcome.index == 2);
   CHECK(r.outcome.message == atCompile);
 }
 
