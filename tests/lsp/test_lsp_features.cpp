@@ -91,7 +91,7 @@ TEST_CASE("lsp: hover on the straight-line moves gives their help from the opcod
            "        END\n"
            "POINTS\n"
            "ABOVE AT 240 870 -40 APPROACH 0 -1 0\n"
-           "DOWN AT 240 830 -40 APPROACH 0 -1 0\n");
+           "DOWN AT 240 850 -40 APPROACH 0 -1 0\n");
   CHECK(o.s.diagnostics(kUri) == Json::array());
   const std::string moves = o.hoverText(2, 9).get<std::string>();
   CHECK(moves.starts_with("**MOVES** — instruction 2\n\n`MOVES <point>`: move the tool centre point along a straight "

@@ -23,6 +23,13 @@
 
 namespace {
 
+// Pause once this many instructions have run.
+rs::runtime::RunUntil liftStepsUntil(std::uint64_t steps) {
+  rs::runtime::RunUntil until;
+  until.steps = steps;
+  return until;
+}
+
 struct LiftCase {
   std::size_t block = 0;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
@@ -65,7 +72,7 @@ void liftsStraightUp(const std::string& cellName) {
   INFO(program);
   auto run = rendertest::runOf(rendertest::compileText(program, cell), &cell);
   const Eigen::Isometry3d before = run->rig().world()->objectPose(lift.block, run->rig().motors());
-  REQUIRE(run->runUntil(rs::runtime::RunUntil{.steps = 3}).paused());
+  REQUIRE(run->runUntil(liftStepsUntil(3)).paused());
   REQUIRE(run->rig().world()->held() == std::optional<std::size_t>(lift.block));
   const auto grasped = run->rig().tcp();
   const rs::vm::RunOutcome outcome = run->runToEnd();

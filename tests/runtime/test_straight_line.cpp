@@ -16,6 +16,13 @@
 
 namespace {
 
+// Pause once this many instructions have run.
+rs::runtime::RunUntil lineStepsUntil(std::uint64_t steps) {
+  rs::runtime::RunUntil until;
+  until.steps = steps;
+  return until;
+}
+
 using rs::vm::Micros;
 
 constexpr Micros kLineSecond = 1'000'000;
@@ -95,7 +102,7 @@ TEST_CASE("APPRO and DEPART move the tool along its approach axis and back", "[r
   auto run = rendertest::runOf(rendertest::compileText("APPRO 20\nDEPART 20\nEND\n", cell), &cell, {}, true);
   const auto home = run->rig().tcp();
   REQUIRE(home);
-  REQUIRE(run->runUntil(rs::runtime::RunUntil{.steps = 1}).paused());
+  REQUIRE(run->runUntil(lineStepsUntil(1)).paused());
   const auto low = run->rig().tcp();
   REQUIRE(low);
   CHECK(std::abs((*low)[0] - (*home)[0]) < 1e-9);
