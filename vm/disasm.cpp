@@ -42,6 +42,7 @@ std::string operands(const Image& im, const Instr& in) {
     case Format::VarValue: return fmt::format("{} {}", safeText(im.variables[in.b]), in.c);
     case Format::Triple: return values(k + in.c, 3);
     case Format::Millis: return millisText(in.c);
+    case Format::Distance: return fmt::format("{}", in.c);
   }
   return {};
 }

@@ -14,8 +14,9 @@ namespace {
 // The opcodes the dispatch loop hands to machineStep: exactly those the
 // opcode table marks as acting on the machine (checked below), so a new
 // opcode's flags decide where the loop runs it.
-constexpr Op kMachineOps[] = {Op::Move,   Op::MoveTo, Op::MoveP, Op::OutSig,  Op::WaitFor, Op::Reset,
-                              Op::Window, Op::View,   Op::Delay, Op::HrdHome, Op::GoSoft};
+constexpr Op kMachineOps[] = {Op::Move,  Op::MoveTo,  Op::MoveP,  Op::OutSig, Op::WaitFor,
+                              Op::Reset, Op::Window,  Op::View,   Op::Delay,  Op::HrdHome,
+                              Op::GoSoft, Op::MoveS, Op::Appro, Op::Depart};
 
 consteval bool machineOpsAgree() {
   std::size_t flagged = 0;
@@ -149,6 +150,14 @@ Status Interpreter::move(const Instr& in) {
     case Op::MoveP: return moveTo(image_.points[in.b].values);
     case Op::HrdHome: return machine_.hardHome();
     case Op::GoSoft: return moveTo(state_.softHome);
+    case Op::MoveS: {
+      const std::span<const std::int32_t> targets = image_.points[in.b].values;
+      if (const auto i = firstOutOfRange(image_.motors, targets))
+        return Status::fault(targetOutsideRange(image_.motors[*i], targets[*i]));
+      return machine_.moveLine(targets);
+    }
+    case Op::Appro: return machine_.moveAlongTool(in.c);
+    case Op::Depart: return machine_.moveAlongTool(-in.c);
     default: return Status::fault("not a motion instruction");
   }
 }
@@ -172,7 +181,10 @@ Interpreter::AfterCall Interpreter::machineStep(const Instr& in, std::uint32_t a
     case Op::MoveTo:
     case Op::MoveP:
     case Op::HrdHome:
-    case Op::GoSoft: status = move(in); break;
+    case Op::GoSoft:
+    case Op::MoveS:
+    case Op::Appro:
+    case Op::Depart: status = move(in); break;
     case Op::Reset: status = machine_.reset(); break;
     case Op::Window: machine_.window(k[in.c], k[in.c + 1], k[in.c + 2]); break;
     case Op::View: machine_.view(k[in.c], k[in.c + 1], k[in.c + 2]); break;
@@ -292,6 +304,9 @@ RunOutcome Interpreter::loop(const RunLimits& limits, StepObserver* observer, co
       case Op::Delay:
       case Op::HrdHome:
       case Op::GoSoft:
+      case Op::MoveS:
+      case Op::Appro:
+      case Op::Depart:
         switch (machineStep(in, at, pc, steps, limits, pause, check)) {
           case AfterCall::Next: break;
           case AfterCall::Stopped: return st.outcome;

@@ -44,6 +44,25 @@ class Machine {
   /// Moves every motor to an absolute encoder target and returns once the
   /// last motor has arrived. Targets were already checked against the ranges.
   virtual Status moveTo(std::span<const std::int32_t> targets) = 0;
+  /// Moves every motor in lock-step to `targets` (one small move of a
+  /// straight line): all start now, each at a constant rate, and all
+  /// arrive together, as soon as the slowest motor at its full speed can.
+  /// A motor whose bit is set in `lead` (bit 0 = the first motor) takes
+  /// each whole count as soon as it is begun, the others when it is
+  /// finished: the motors that carry the tool forward along the line step
+  /// ahead, the others behind, so the tool never falls back along it (a
+  /// block lifted off a pallet does not dip into it). Targets were already
+  /// checked against the ranges.
+  virtual Status moveLockStep(std::span<const std::int32_t> targets, std::uint32_t lead) = 0;
+  /// MOVES: the tool centre point along a straight line to the pose that
+  /// `targets` put it at (APPRO, DEPART: `distance` length units along the
+  /// tool's approach axis, back for a negative one). Only a machine that
+  /// knows the robot's kinematics can (runtime/sim's CellMachine): the
+  /// others answer a Fault.
+  virtual Status moveLine(std::span<const std::int32_t> /*targets*/) { return Status::fault(kNeedsKinematics); }
+  virtual Status moveAlongTool(std::int32_t /*distance*/) { return Status::fault(kNeedsKinematics); }
+  static constexpr const char* kNeedsKinematics =
+      "a straight-line move needs the robot's kinematics: run the program on a workcell or robot (--cell)";
   /// Current encoder position of every motor, in motor-table order.
   virtual std::span<const std::int32_t> positions() const = 0;
 

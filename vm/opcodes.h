@@ -46,9 +46,14 @@ enum class Op : std::uint8_t {
   GoSoft,   //                motors := soft home
   Set,      // b=V c=N        V[b] := N
   End,      //                stop
+  // After the paper (docs/language.md, "After the paper"): the tool moved
+  // along a straight line, worked out from the robot's kinematics.
+  MoveS,    // b=P            tool centre point along a line to points[P]
+  Appro,    // c=L            tool centre point L length units along its approach axis
+  Depart,   // c=L            tool centre point L length units back along its approach axis
 };
 
-inline constexpr std::size_t kOpCount = static_cast<std::size_t>(Op::End) + 1;
+inline constexpr std::size_t kOpCount = static_cast<std::size_t>(Op::Depart) + 1;
 
 /// Operand format: which fields an opcode uses and what they mean. The
 /// verifier checks and the disassembler prints by format, never by opcode.
@@ -64,6 +69,7 @@ enum class Format : std::uint8_t {
   VarValue,      // b = variable slot, c = value
   Triple,        // c = first of three constants
   Millis,        // c = milliseconds, 0 .. kMaxDelayMillis
+  Distance,      // c = length units, 1 .. kMaxToolDistance
 };
 
 /// What a format looks like in source: how many operands it takes and the
@@ -75,7 +81,7 @@ struct FormatInfo {
   std::string_view usage;  ///< after the mnemonic, e.g. " <input> ON|OFF <line>"
 };
 
-inline constexpr std::size_t kFormatCount = static_cast<std::size_t>(Format::Millis) + 1;
+inline constexpr std::size_t kFormatCount = static_cast<std::size_t>(Format::Distance) + 1;
 
 inline constexpr std::array<FormatInfo, kFormatCount> kFormats{{
     {Format::None, "None", 0, ""},
@@ -89,6 +95,7 @@ inline constexpr std::array<FormatInfo, kFormatCount> kFormats{{
     {Format::VarValue, "VarValue", 2, " <variable> <value>"},
     {Format::Triple, "Triple", 3, " <x> <y> <z>"},
     {Format::Millis, "Millis", 1, " <seconds>"},
+    {Format::Distance, "Distance", 1, " <length>"},
 }};
 
 constexpr const FormatInfo& info(Format f) { return kFormats[static_cast<std::size_t>(f)]; }
@@ -109,6 +116,8 @@ enum OpFlag : std::uint16_t {
   kBranches = 1 << 8,      // jumps to d or falls through, on a condition
   kWaits = 1 << 9,         // its time is spent waiting (for an input or the clock), not moving
   kEnds = 1 << 10,         // stops the run (END)
+  kStraight = 1 << 11,     // moves the tool along a straight line: needs the robot's kinematics
+  kStraightBack = 1 << 12, // with a distance: back along the tool's approach axis (DEPART)
 };
 
 struct OpInfo {
@@ -173,6 +182,25 @@ inline constexpr std::array<OpInfo, kOpCount> kOps{{
     {Op::End, "END", Format::None, kEnds, "end the program",
      "Ends the run. Running past the last instruction ends it too.",
      "END"},
+    {Op::MoveS, "MOVES", Format::Point, kFT | kMach | kMovesMotors | kStraight,
+     "move the tool centre point along a straight line to a taught point",
+     "After the paper (VAL's MOVES). The tool centre point runs along the straight line to the point's position "
+     "while the orientation the arm controls turns evenly to the point's; the gripper keeps its opening. The arm "
+     "stays in one configuration and within 0.1 length units of the line, plus its encoders' resolution. Each small "
+     "move of the motors takes as long as its slowest motor needs at full speed. Needs the robot's kinematics "
+     "(--cell); a path that leaves the reach, a motor's range or its configuration, or passes near a singular "
+     "pose, is an error at the instruction (at compile time where the start is known).",
+     "MOVES ABOVE"},
+    {Op::Appro, "APPRO", Format::Distance, kFT | kMach | kMovesMotors | kStraight,
+     "move the tool straight along its approach axis by a distance",
+     "After the paper (VAL's APPRO). The tool centre point moves the whole number of length units along the "
+     "tool's approach axis (z, towards what the gripper points at), keeping its orientation, as MOVES does.",
+     "APPRO 50"},
+    {Op::Depart, "DEPART", Format::Distance, kFT | kMach | kMovesMotors | kStraight | kStraightBack,
+     "move the tool straight back along its approach axis by a distance",
+     "After the paper (VAL's DEPART). The tool centre point moves the whole number of length units against the "
+     "tool's approach axis (away from what the gripper points at), keeping its orientation, as MOVES does.",
+     "DEPART 50"},
 }};
 
 // The tables are indexed by opcode and by format: keep them in enum order.
@@ -195,6 +223,10 @@ consteval bool flagsAgree() {
                                        op.format == Format::VarCompare))
       return false;
     if ((op.flags & kMovesMotors) && !(op.flags & kUsesMachine)) return false;
+    if ((op.flags & kStraight) &&
+        (!(op.flags & kMovesMotors) || (op.format != Format::Point && op.format != Format::Distance)))
+      return false;
+    if ((op.flags & kStraightBack) && (!(op.flags & kStraight) || op.format != Format::Distance)) return false;
     if (op.meaning.empty() || op.detail.empty() || op.example.empty()) return false;
   }
   return true;
@@ -244,6 +276,7 @@ inline constexpr std::array<std::string_view, 3> kCompareSymbols{"<", ">", "="};
 
 inline constexpr int kIoCount = 8;                        // inputs and outputs 1..8
 inline constexpr std::int32_t kMaxDelayMillis = 86'400'000;  // one day
+inline constexpr std::int32_t kMaxToolDistance = 100'000;    // APPRO, DEPART: length units
 
 /// One decoded instruction.
 struct Instr {

@@ -100,6 +100,10 @@ std::string checkOperands(const Image& image, const Instr& in) {
       if (in.a || in.b || in.d) return "unused operand fields are not zero";
       if (in.c < 0 || in.c > kMaxDelayMillis) return fmt::format("delay {} ms out of range", in.c);
       return {};
+    case Format::Distance:
+      if (in.a || in.b || in.d) return "unused operand fields are not zero";
+      if (in.c < 1 || in.c > kMaxToolDistance) return fmt::format("distance {} outside 1..{}", in.c, kMaxToolDistance);
+      return {};
   }
   return "unknown operand format";
 }

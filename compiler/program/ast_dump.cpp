@@ -40,6 +40,7 @@ std::string operands(const Instruction& in) {
     case vm::Format::VarValue: return fmt::format(" variable={} value={}", in.name, in.value.number);
     case vm::Format::Triple: return fmt::format(" xyz={}", valueList(in.values));
     case vm::Format::Millis: return fmt::format(" milliseconds={}", in.value.number);
+    case vm::Format::Distance: return fmt::format(" distance={}", in.value.number);
   }
   return {};
 }

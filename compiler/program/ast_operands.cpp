@@ -60,6 +60,7 @@ bool Builder::operands(Instruction& in, std::string_view mnemonic, const std::ve
       return all({name(w[0], "a variable name", in.name, in.namePos), integer(w[1], "a value", in.value)});
     case vm::Format::Triple: return integers(w, "a number", in.values);
     case vm::Format::Millis: return seconds(w[0], in.value);
+    case vm::Format::Distance: return integer(w[0], "a distance in length units", in.value);
   }
   return false;
 }

@@ -45,7 +45,8 @@ vm::Instr encode(const Instruction& in, std::uint16_t slot, std::uint32_t target
       out.c = static_cast<std::int32_t>(in.value.number);
       break;
     case vm::Format::Triple: out.c = addConstants(constants, in.values); break;
-    case vm::Format::Millis: out.c = static_cast<std::int32_t>(in.value.number); break;
+    case vm::Format::Millis:
+    case vm::Format::Distance: out.c = static_cast<std::int32_t>(in.value.number); break;
   }
   return out;
 }

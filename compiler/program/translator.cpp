@@ -1,6 +1,7 @@
 #include "compiler/program/translator.h"
 
 #include "compiler/program/kinematics_diagnostic.h"
+#include "compiler/program/line_check.h"
 #include "model/workcell/pose_solver.h"
 
 #include <fmt/format.h>
@@ -160,6 +161,7 @@ struct Translator::State {
   std::uint16_t variable(const Instruction& in);
   void checkIo(const Instruction& in);
   void checkTargets(const Instruction& in);
+  void checkDistance(const Instruction& in);
   void resolve();
   void resolvePose(const PointDef& p, std::span<const std::int32_t> reference, std::span<const double> referenceQ,
                    vm::Point& point);
@@ -235,8 +237,16 @@ void Translator::instruction(const Instruction& in) {
     case vm::Format::Input:
     case vm::Format::Output: s.checkIo(in); break;
     case vm::Format::MotorVector: s.checkTargets(in); break;
+    case vm::Format::Distance: s.checkDistance(in); break;
     default: break;
   }
+  if (vm::has(in.op, vm::kStraight) && !s.robot)
+    s.diag.error(in.pos,
+                 fmt::format("{} moves the tool along a straight line, which needs the robot's kinematics: this "
+                             "program is compiled for motors alone",
+                             vm::info(in.op).name),
+                 diag::Hint{"compile and run it on a workcell or a robot: --cell xr4-cell, or '; cell: NAME' in the program"},
+                 "needs-kinematics");
   if (keep) s.image.code.push_back(encode(in, slot, target, s.image.constants));
 }
 
@@ -330,6 +340,7 @@ std::optional<vm::Image> Translator::finish() {
   s.resolve();
   s.warnUnassignedVariables();
   s.analyseFlow();
+  if (!s.diag.hasErrors() && s.robot && s.robot->robot.chain) checkLinePaths(s.image, *s.robot, s.diag);
   if (s.diag.hasErrors()) return std::nullopt;
   return std::move(s.image);
 }
@@ -378,6 +389,20 @@ void Translator::State::checkIo(const Instruction& in) {
     diag.error(in.io.pos, fmt::format("{} {} is outside 1..8", output ? "output" : "input", in.io.number),
                "io-out-of-range");
   }
+}
+
+// APPRO and DEPART go a whole number of length units, forward or back by
+// their name: the distance itself is positive.
+void Translator::State::checkDistance(const Instruction& in) {
+  if (in.value.pos.line == 0) return;
+  const std::int64_t d = in.value.number;
+  if (d >= 1 && d <= vm::kMaxToolDistance) return;
+  diag.error(in.value.pos,
+             fmt::format("{} goes 1 to {} length units, found {}", vm::info(in.op).name, vm::kMaxToolDistance, d),
+             diag::Hint{d <= 0 ? "APPRO goes along the tool's approach axis and DEPART back along it: use the other "
+                                 "one with a positive distance"
+                               : "split the move, or use MOVES to a point"},
+             "value-out-of-range");
 }
 
 // Absolute targets must lie in each motor's range; a relative MOVE larger

@@ -73,6 +73,7 @@ std::string snippet(const ProgramContext& p, const vm::OpInfo& op) {
     case vm::Format::VarValue: s += " ${1:N} ${2:0}"; break;
     case vm::Format::Triple: s += " ${1:0} ${2:0} ${3:0}"; break;
     case vm::Format::Millis: s += " ${1:1}"; break;
+    case vm::Format::Distance: s += " ${1:50}"; break;
   }
   return s;
 }

@@ -114,9 +114,15 @@ Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const 
   Json moves = Json::array();
   for (const std::vector<runtime::MotorMove>& list : rec.moves) {
     Json step = Json::array(), from = Json::array(), to = Json::array(), t0 = Json::array(), t1 = Json::array();
-    for (const runtime::MotorMove& m : list)
+    Json lock = Json::array();
+    bool anyLock = false;
+    for (const runtime::MotorMove& m : list) {
       step.push_back(m.step), from.push_back(m.from), to.push_back(m.to), t0.push_back(m.start), t1.push_back(m.end);
-    moves.push_back({{"step", step}, {"from", from}, {"to", to}, {"start", t0}, {"end", t1}});
+      lock.push_back(m.lockStep ? (m.lead ? 2 : 1) : 0), anyLock |= m.lockStep;
+    }
+    Json entry = {{"step", step}, {"from", from}, {"to", to}, {"start", t0}, {"end", t1}};
+    if (anyLock) entry["lock"] = lock;  // 1 lock-step, 2 leading: only with straight lines, so other pages keep their bytes
+    moves.push_back(std::move(entry));
   }
   Json outStep = Json::array(), outMask = Json::array();
   for (const runtime::OutputChange& o : rec.outputs) outStep.push_back(o.step), outMask.push_back(o.outputs);

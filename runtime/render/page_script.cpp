@@ -84,13 +84,20 @@ const std::string_view kScript = R"JS('use strict';
     const from = mv.from[i], to = mv.to[i];
     if (t <= mv.start[i]) return from;
     if (t >= mv.end[i]) return to;
-    const covered = coveredAt(motor, Math.abs(to - from), t - mv.start[i]);
+    const lock = mv.lock ? mv.lock[i] : 0;  // 1 lock-step, 2 lock-step leading (motion.h)
+    const part = BigInt(Math.abs(to - from)) * BigInt(t - mv.start[i]), span = BigInt(mv.end[i] - mv.start[i]);
+    const covered = lock === 2 ? Number((part + span - 1n) / span)
+        : lock === 1 ? Number(part / span)
+        : coveredAt(motor, Math.abs(to - from), t - mv.start[i]);
     return to > from ? from + covered : from - covered;
   }
   const current = { enc: new Int32Array(motorCount), outputs: 0, inputs: 0, view: [0, 0, 0], window: [0, 0, 0] };
   function stateAt(k, t, st) {
     for (let m = 0; m < motorCount; m++) {
-      const mv = run.moves[m], i = k < 0 ? -1 : lastUpTo(mv.step, k);
+      const mv = run.moves[m];
+      let i = k < 0 ? -1 : lastUpTo(mv.step, k);
+      // a step of several moves (a straight line's knots): the one under way at t
+      while (i > 0 && mv.start[i] > t && mv.step[i - 1] === mv.step[i]) i--;
       st.enc[m] = i < 0 ? 0 : positionAt(mv, i, run.motors[m], t);
     }
     const o = k < 0 ? -1 : lastUpTo(run.outputs.step, k);

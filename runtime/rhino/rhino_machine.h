@@ -61,6 +61,13 @@ class RhinoMachine final : public vm::Machine {
   void keepAlive(std::shared_ptr<void> thing) { owned_.push_back(std::move(thing)); }
 
   vm::Status moveTo(std::span<const std::int32_t> targets) override;
+  /// One small move of a straight line: sent as a move like any other, each
+  /// motor at the speed the controller gives it (the controllers have no
+  /// command that makes motors arrive together: docs/serial.md, "Straight
+  /// lines").
+  vm::Status moveLockStep(std::span<const std::int32_t> targets, std::uint32_t /*lead*/) override {
+    return moveTo(targets);
+  }
   std::span<const std::int32_t> positions() const override { return positions_; }
   vm::Status setOutput(int output, bool on) override;
   bool input(int input) override;

@@ -38,6 +38,9 @@ RunLogger::RunLogger(SimMachine& machine, const World* world) : machine_(machine
   // move: the machine says when, as it applies them. Several changes at one
   // time leave one level, the last.
   machine.onInputChange([this](vm::Micros at, std::uint8_t mask) { inputChanged(at, mask); });
+  // A straight line is many small moves within one step: each is kept as
+  // the machine makes it, under the step in progress.
+  machine.onMove([this] { recordMoves(static_cast<std::uint32_t>(log_.steps.size())); });
 }
 
 void RunLogger::inputChanged(vm::Micros at, std::uint8_t mask) {
@@ -70,17 +73,22 @@ void RunLogger::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
   record(index);
 }
 
-void RunLogger::record(std::uint32_t index) {
-  const auto step = static_cast<std::uint32_t>(log_.steps.size());
-  const vm::Micros now = machine_.now();
-  log_.steps.push_back({index, lastNow_, now});
+void RunLogger::recordMoves(std::uint32_t step) {
   for (std::size_t m = 0; m < lastSegment_.size(); ++m) {
     const MotorSegment& s = machine_.segment(m);
     if (s == lastSegment_[m]) continue;
     lastSegment_[m] = s;
-    if (s.from != s.to || s.to != lastPosition_[m]) log_.moves[m].push_back({step, s.from, s.to, s.start, s.end});
+    if (s.from != s.to || s.to != lastPosition_[m])
+      log_.moves[m].push_back({step, s.from, s.to, s.start, s.end, s.lockStep, s.lead});
     lastPosition_[m] = s.to;
   }
+}
+
+void RunLogger::record(std::uint32_t index) {
+  const auto step = static_cast<std::uint32_t>(log_.steps.size());
+  const vm::Micros now = machine_.now();
+  log_.steps.push_back({index, lastNow_, now});
+  recordMoves(step);
   if (const std::uint8_t outputs = machine_.outputs(); outputs != lastOutputs_) {
     log_.outputs.push_back({step, outputs});
     lastOutputs_ = outputs;
@@ -111,7 +119,7 @@ void RunLogger::restore(const RunLog::Mark& mark, const SimMachine& machine) {
 }
 
 std::int32_t positionAt(const MotorMove& move, const vm::MotorSpec& motor, vm::Micros t) {
-  return positionAt(MotorSegment{move.from, move.to, move.start, move.end}, motor, t);
+  return positionAt(MotorSegment{move.from, move.to, move.start, move.end, move.lockStep, move.lead}, motor, t);
 }
 
 RunState stateAtStep(const RunLog& log, std::size_t step, vm::Micros t) {
@@ -119,7 +127,18 @@ RunState stateAtStep(const RunLog& log, std::size_t step, vm::Micros t) {
   s.step = step;
   s.encoders.assign(log.motors.size(), 0);
   for (std::size_t m = 0; m < log.motors.size(); ++m)
-    if (const MotorMove* move = lastUpTo(log.moves[m], step)) s.encoders[m] = positionAt(*move, log.motors[m], t);
+    if (const MotorMove* move = lastUpTo(log.moves[m], step)) {
+      // A step of several moves (a straight line's knots): the one under way at t.
+      if (move->start > t) {
+        const std::vector<MotorMove>& list = log.moves[m];
+        const auto first = std::lower_bound(list.begin(), list.end(), move->step,
+                                            [](const MotorMove& x, std::uint32_t st) { return x.step < st; });
+        const auto last = list.begin() + (move - list.data()) + 1;
+        const auto at = std::upper_bound(first, last, t, [](vm::Micros v, const MotorMove& x) { return v < x.start; });
+        move = &*(at == first ? first : at - 1);
+      }
+      s.encoders[m] = positionAt(*move, log.motors[m], t);
+    }
   if (const OutputChange* o = lastUpTo(log.outputs, step)) s.outputs = o->outputs;
   if (const CameraChange* c = lastUpTo(log.cameras, step)) s.view = c->view, s.window = c->window;
   auto level = std::upper_bound(log.inputs.begin(), log.inputs.end(), t,

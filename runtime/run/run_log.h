@@ -29,6 +29,8 @@ struct MotorMove {
   std::uint32_t step = 0;
   std::int32_t from = 0, to = 0;
   vm::Micros start = 0, end = 0;
+  bool lockStep = false;  ///< one small move of a straight line (MotorSegment::lockStep)
+  bool lead = false;      ///< MotorSegment::lead
 };
 
 /// The output mask after step `step`, when that step changed it.
@@ -105,6 +107,7 @@ class RunLogger {
 
  private:
   void record(std::uint32_t index);
+  void recordMoves(std::uint32_t step);
   void takeStateOf(const SimMachine& machine);
 
   const SimMachine& machine_;

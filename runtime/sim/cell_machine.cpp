@@ -16,7 +16,9 @@ vm::Status CellMachine::moveAndReact(Move&& move) {
   vm::Status status = move();
   if (!status) return status;
   if (watch_ && mode_ != CollisionMode::Off) {
-    const CollisionEvent* hit = watch_->sweep(*timeline_, world_, before_, motion_.positions(), start, motion_.now());
+    const CollisionEvent* hit =
+        inLine_ ? watch_->sweep(*timeline_, world_, before_, motion_.positions(), start, motion_.now(), lineFrom_, lineTo_)
+                : watch_->sweep(*timeline_, world_, before_, motion_.positions(), start, motion_.now());
     if (hit && mode_ == CollisionMode::Error)
       return vm::Status::fault(
           fmt::format("collision at {} s: {}", base::formatSeconds(hit->at), watch_->describe(hit->contact)));
@@ -27,6 +29,47 @@ vm::Status CellMachine::moveAndReact(Move&& move) {
 
 vm::Status CellMachine::moveTo(std::span<const std::int32_t> targets) {
   return moveAndReact([&] { return motion_.moveTo(targets); });
+}
+
+vm::Status CellMachine::moveLockStep(std::span<const std::int32_t> targets, std::uint32_t lead) {
+  return moveAndReact([&] { return motion_.moveLockStep(targets, lead); });
+}
+
+bool CellMachine::planner() {
+  if (planner_) return true;
+  const workcell::Workcell& cell = world_.cell();
+  if (cell.robots.empty() || !cell.robots.front().robot.chain) return false;
+  planner_ = std::make_unique<workcell::LinePlanner>(cell.robots.front());
+  path_ = std::make_unique<workcell::LinePath>(*planner_);
+  return true;
+}
+
+// Every knot in turn: the world reacts to each (a grasp, a collision), as
+// it would to a program of small moves.
+vm::Status CellMachine::runPath(const std::optional<workcell::LineProblem>& problem) {
+  if (problem) return vm::Status::fault(problem->message);
+  if (path_->size() == 0) return vm::Status::ok();
+  const auto from = motion_.positions();
+  const auto to = path_->knot(path_->size() - 1);
+  lineFrom_.assign(from.begin(), from.end());
+  lineTo_.assign(to.begin(), to.end());
+  inLine_ = true;
+  vm::Status status = vm::Status::ok();
+  for (std::size_t k = 0; k < path_->size() && status; ++k) status = moveLockStep(path_->knot(k), path_->lead(k));
+  inLine_ = false;
+  return status;
+}
+
+vm::Status CellMachine::moveLine(std::span<const std::int32_t> targets) {
+  if (!planner()) return vm::Machine::moveLine(targets);
+  if (targets.size() != planner_->motorCount())
+    return vm::Status::fault(fmt::format("move has {} targets for {} motors", targets.size(), planner_->motorCount()));
+  return runPath(planner_->planTo(motion_.positions(), targets, *path_));
+}
+
+vm::Status CellMachine::moveAlongTool(std::int32_t distance) {
+  if (!planner()) return vm::Machine::moveAlongTool(distance);
+  return runPath(planner_->planAlongTool(motion_.positions(), distance, *path_, distance > 0 ? "APPRO" : "DEPART"));
 }
 
 vm::Status CellMachine::hardHome() {

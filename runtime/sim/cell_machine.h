@@ -5,7 +5,10 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
+
+#include "model/workcell/line_path.h"
 
 #include "runtime/sim/collision_watch.h"
 #include "runtime/sim/sim_machine.h"
@@ -29,6 +32,12 @@ class CellMachine final : public vm::Machine {
   }
 
   vm::Status moveTo(std::span<const std::int32_t> targets) override;
+  vm::Status moveLockStep(std::span<const std::int32_t> targets, std::uint32_t lead) override;
+  /// The line planned (model/workcell/line_path.h) and run knot by knot,
+  /// each knot a lock-step move swept and reacted to like any move. Fault:
+  /// a robot without a chain, or the planner's problem in its words.
+  vm::Status moveLine(std::span<const std::int32_t> targets) override;
+  vm::Status moveAlongTool(std::int32_t distance) override;
   std::span<const std::int32_t> positions() const override { return motion_.positions(); }
   vm::Status setOutput(int output, bool on) override { return motion_.setOutput(output, on); }
   bool input(int input) override { return motion_.input(input); }
@@ -45,6 +54,9 @@ class CellMachine final : public vm::Machine {
  private:
   template <typename Move>
   vm::Status moveAndReact(Move&& move);
+  /// The planner and its path, made at the first straight line; null when the robot has no chain.
+  bool planner();
+  vm::Status runPath(const std::optional<workcell::LineProblem>& problem);
 
   vm::Machine& motion_;
   World& world_;
@@ -52,6 +64,12 @@ class CellMachine final : public vm::Machine {
   CollisionWatch* watch_ = nullptr;
   CollisionMode mode_ = CollisionMode::Off;
   std::vector<std::int32_t> before_;  // scratch, sized once
+  std::unique_ptr<workcell::LinePlanner> planner_;
+  std::unique_ptr<workcell::LinePath> path_;
+  // The line being run, while its knots are: their sweeps take the
+  // gripper's exemptions from its ends (CollisionWatch::sweep).
+  bool inLine_ = false;
+  std::vector<std::int32_t> lineFrom_, lineTo_;
 };
 
 }  // namespace rs::runtime

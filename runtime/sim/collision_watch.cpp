@@ -57,16 +57,23 @@ void CollisionWatch::keyOf(const World& world, std::span<const std::int32_t> bef
 
 const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const World& world,
                                             std::span<const std::int32_t> before, std::span<const std::int32_t> after,
-                                            vm::Micros start, vm::Micros end) {
+                                            vm::Micros start, vm::Micros end, std::span<const std::int32_t> lineFrom,
+                                            std::span<const std::int32_t> lineTo) {
   if (!model_.movable()) return nullptr;
   ++moves_;
+  const bool knot = !lineFrom.empty() && !lineTo.empty();
   keyOf(world, before, after);
+  if (knot)  // the exemptions come from the line's ends: they are part of the verdict's key
+    for (std::size_t m = 0; m < lineFrom.size() && m < lineTo.size(); ++m)
+      key_.push_back(static_cast<std::uint64_t>(static_cast<std::uint32_t>(lineFrom[m])) << 32 |
+                     static_cast<std::uint32_t>(lineTo[m]));
   const SweepVerdict* verdict = memo_.find(key_);
   SweepVerdict fresh;
   if (verdict) {
     ++remembered_;
   } else {
-    fresh = advance(machine, world.collisionQuery(before, after, poses_), before, after, start, end);
+    fresh = advance(machine, world.collisionQuery(knot ? lineFrom : before, knot ? lineTo : after, poses_), before,
+                    after, start, end);
     memo_.remember(key_, fresh);
     verdict = &fresh;
   }

@@ -57,9 +57,14 @@ class CollisionWatch {
 
   /// Checks the move the machine just made from `before` (its positions at
   /// `start`) to its positions at `end`, with the world as it was during
-  /// the move. Returns the first collision, also kept in events().
+  /// the move. Returns the first collision, also kept in events(). For a
+  /// knot of a straight line, `lineFrom` and `lineTo` are the line's ends:
+  /// the gripper may overlap the objects its tool centre point is in at
+  /// those, as in one move from lineFrom to lineTo (a MOVES down round a
+  /// block is judged as a MOVEP to it is).
   const CollisionEvent* sweep(const SimMachine& machine, const World& world, std::span<const std::int32_t> before,
-                              std::span<const std::int32_t> after, vm::Micros start, vm::Micros end);
+                              std::span<const std::int32_t> after, vm::Micros start, vm::Micros end,
+                              std::span<const std::int32_t> lineFrom = {}, std::span<const std::int32_t> lineTo = {});
 
   const workcell::CollisionModel& model() const { return model_; }
   std::span<const CollisionEvent> events() const { return events_; }

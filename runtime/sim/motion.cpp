@@ -62,11 +62,19 @@ std::int64_t coveredAt(const vm::MotorSpec& motor, std::int64_t distance, vm::Mi
   return static_cast<std::int64_t>(Wide{distance} * u / whole);
 }
 
+vm::Micros lockStepTime(const vm::MotorSpec& motor, std::int64_t distance) {
+  if (distance <= 0) return 0;
+  return (distance * 1'000'000 + motor.speed - 1) / motor.speed;
+}
+
 std::int32_t positionAt(const MotorSegment& s, const vm::MotorSpec& motor, vm::Micros t) {
   if (t <= s.start) return s.from;
   if (t >= s.end) return s.to;
   const std::int64_t distance = s.to > s.from ? std::int64_t{s.to} - s.from : std::int64_t{s.from} - s.to;
-  const std::int64_t covered = coveredAt(motor, distance, t - s.start);
+  const Wide span = s.end - s.start, part = Wide{distance} * (t - s.start);
+  const std::int64_t covered = !s.lockStep ? coveredAt(motor, distance, t - s.start)
+                               : s.lead    ? static_cast<std::int64_t>((part + span - 1) / span)
+                                           : static_cast<std::int64_t>(part / span);
   return static_cast<std::int32_t>(s.to > s.from ? s.from + covered : s.from - covered);
 }
 

@@ -33,12 +33,18 @@
 namespace rs::runtime {
 
 /// A motor's move: it left `from` at `start` and reaches `to` at `end`.
-/// Motors that did not move have from == to and start == end.
+/// Motors that did not move have from == to and start == end. A lock-step
+/// move (one small move of a straight line, every motor arriving together)
+/// runs at a constant rate from start to end whatever the motor's profile.
 struct MotorSegment {
   std::int32_t from = 0;
   std::int32_t to = 0;
   vm::Micros start = 0;
   vm::Micros end = 0;
+  bool lockStep = false;
+  /// Lock-step only: the motor takes each whole count as soon as it is
+  /// begun (rounded toward `to`), not when it is finished.
+  bool lead = false;
   bool operator==(const MotorSegment&) const = default;
 };
 
@@ -52,8 +58,14 @@ vm::Micros travelTime(const vm::MotorSpec& motor, std::int64_t distance);
 /// 0 at the start, `distance` from the end on, never decreasing.
 std::int64_t coveredAt(const vm::MotorSpec& motor, std::int64_t distance, vm::Micros elapsed);
 
+/// Microseconds a lock-step move of `distance` (>= 0) takes `motor` at its
+/// full speed, without its acceleration: ceil(distance / speed).
+vm::Micros lockStepTime(const vm::MotorSpec& motor, std::int64_t distance);
+
 /// Encoder position at time `t` of `motor` running `segment`: `from` until
-/// the start, `to` from the end, and in between from + or − coveredAt.
+/// the start, `to` from the end, and in between from + or − coveredAt (a
+/// lock-step segment: distance · elapsed / duration, rounded toward from,
+/// or toward `to` when it leads).
 /// What "where is the arm at time t" means everywhere.
 std::int32_t positionAt(const MotorSegment& segment, const vm::MotorSpec& motor, vm::Micros t);
 

@@ -104,6 +104,24 @@ Status SimMachine::moveTo(std::span<const std::int32_t> targets) {
     longest = std::max(longest, duration);
   }
   advanceBy(longest);
+  if (moveListener_) moveListener_();
+  return Status::ok();
+}
+
+Status SimMachine::moveLockStep(std::span<const std::int32_t> targets, std::uint32_t lead) {
+  if (auto checked = checkTargets(targets); !checked) return checked;
+  Micros longest = 0;
+  for (std::size_t i = 0; i < targets.size(); ++i)
+    longest = std::max(longest, lockStepTime(motors_[i], std::abs(std::int64_t{targets[i]} - positions_[i])));
+  if (now_ > kClockLimit - longest) return Status::fault("the virtual clock overflowed");
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const bool moves = targets[i] != positions_[i];
+    const bool ahead = i < 32 && ((lead >> i) & 1u) != 0;
+    segments_[i] = {positions_[i], targets[i], now_, moves ? now_ + longest : now_, moves, moves && ahead};
+    positions_[i] = targets[i];
+  }
+  advanceBy(longest);
+  if (moveListener_) moveListener_();
   return Status::ok();
 }
 

@@ -36,6 +36,10 @@ class SimMachine final : public vm::Machine {
   /// returns when the slowest arrives. Fault (no motion) on a wrong target count, a target
   /// outside a motor's range or a clock overflow.
   vm::Status moveTo(std::span<const std::int32_t> targets) override;
+  /// Every motor at a constant rate, all arriving together when the
+  /// slowest at full speed can (lockStepTime), the `lead` motors a count
+  /// ahead (MotorSegment::lead); the same faults as moveTo.
+  vm::Status moveLockStep(std::span<const std::int32_t> targets, std::uint32_t lead) override;
   std::span<const std::int32_t> positions() const override { return positions_; }
 
   /// When the output changes state, the rules for it schedule their inputs;
@@ -84,6 +88,9 @@ class SimMachine final : public vm::Machine {
   /// Called with (time, inputs after) whenever the input mask changes, at
   /// the time of the stimulus (which may fall inside a move or a DELAY).
   void onInputChange(std::function<void(vm::Micros, std::uint8_t)> listener) { inputListener_ = std::move(listener); }
+  /// Called after every move (and RESET) the machine makes, with its
+  /// segments set: a straight line makes many within one instruction.
+  void onMove(std::function<void()> listener) { moveListener_ = std::move(listener); }
 
   /// Everything that changes during a run, for snapshots.
   struct State {
@@ -117,6 +124,7 @@ class SimMachine final : public vm::Machine {
   CameraTriple windowShift_;
   CameraTriple viewRotation_;
   std::function<void(vm::Micros, std::uint8_t)> inputListener_;
+  std::function<void()> moveListener_;
 };
 
 }  // namespace rs::runtime

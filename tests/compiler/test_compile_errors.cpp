@@ -475,3 +475,27 @@ TEST_CASE("render: GNU format, the source line and a caret", "[compiler]") {
     CHECK(render(whole, &source) == "w.rsp: error: cannot read file: is a directory\n");
   }
 }
+
+TEST_CASE("a straight-line move needs the robot's kinematics, and APPRO and DEPART a positive length",
+          "[compiler][straight]") {
+  const std::string needs =
+      " moves the tool along a straight line, which needs the robot's kinematics: this program is compiled for "
+      "motors alone";
+  expectDiagnostics("MOVES P\nAPPRO 5\nDEPART 5\nEND\nPOINTS\nP 0 0 0 0 0\n",
+                    {err(1, 1, "MOVES" + needs), err(2, 1, "APPRO" + needs), err(3, 1, "DEPART" + needs)});
+  expectDiagnostics("APPRO 0\nDEPART -5\nAPPRO 100001\nEND\n",
+                    {err(1, 7, "APPRO goes 1 to 100000 length units, found 0"),
+                     err(1, 1, "APPRO" + needs),
+                     err(2, 8, "DEPART goes 1 to 100000 length units, found -5"),
+                     err(2, 1, "DEPART" + needs),
+                     err(3, 7, "APPRO goes 1 to 100000 length units, found 100001"),
+                     err(3, 1, "APPRO" + needs)});
+  expectDiagnostics("APPRO\nEND\n",
+                    {err(1, 1, "APPRO expects 1 operand (APPRO <length>), found 0"), err(1, 1, "APPRO" + needs)});
+  expectDiagnostics("DEPART UP\nEND\n",
+                    {err(1, 8, "expected a distance in length units, found 'UP'"), err(1, 1, "DEPART" + needs)});
+  const CompileResult r = compileText("DEPART -5\nEND\n");
+  bool hinted = false;
+  for (const Diagnostic& d : r.diagnostics) hinted = hinted || d.hint.find("use the other one") != std::string::npos;
+  CHECK(hinted);
+}

@@ -82,6 +82,25 @@ TEST_CASE("lsp: diagnostics as you type, with codes and related places", "[lsp][
   CHECK(d2[0]["range"] == range(4, 8, 4, 14));
 }
 
+TEST_CASE("lsp: hover on the straight-line moves gives their help from the opcode table", "[lsp][features]") {
+  // On the XR-4's cell (the "; cell:" line), a line down to a point and back up.
+  Opened o("; cell: xr4-cell\n"
+           "        MOVEP ABOVE\n"
+           "        MOVES DOWN\n"
+           "        DEPART 20\n"
+           "        END\n"
+           "POINTS\n"
+           "ABOVE AT 240 870 -40 APPROACH 0 -1 0\n"
+           "DOWN AT 240 850 -40 APPROACH 0 -1 0\n");
+  CHECK(o.s.diagnostics(kUri) == Json::array());
+  const std::string moves = o.hoverText(2, 9).get<std::string>();
+  CHECK(moves.starts_with("**MOVES** — instruction 2\n\n`MOVES <point>`: move the tool centre point along a straight "
+                          "line to a taught point"));
+  const std::string depart = o.hoverText(3, 9).get<std::string>();
+  CHECK(depart.starts_with("**DEPART** — instruction 3\n\n`DEPART <length>`: move the tool straight back along its "
+                           "approach axis by a distance"));
+}
+
 TEST_CASE("lsp: hover", "[lsp][features]") {
   Opened o;
   const std::string move = o.hoverText(2, 9).get<std::string>();
@@ -268,7 +287,10 @@ TEST_CASE("lsp: completion by the operand's kind", "[lsp][features]") {
   CHECK(complete(3, 17) == Json::parse(R"([{"label":"<","kind":24,"detail":"comparison"},{"label":">","kind":24,"detail":"comparison"},{"label":"=","kind":24,"detail":"comparison"}])"));
   CHECK(complete(5, 14) == Json::parse(R"([{"label":"P1","kind":21,"detail":"0 0 0 0 0"}])"));
   const Json ops = complete(6, 10);
-  REQUIRE(ops.size() == 20);
+  REQUIRE(ops.size() == 23);  // the paper's 20, then MOVES, APPRO, DEPART
+  CHECK(ops[20]["label"] == "MOVES");
+  CHECK(ops[21]["insertText"] == "APPRO ${1:50}");
+  CHECK(ops[22]["label"] == "DEPART");
   CHECK(ops[0]["label"] == "MOVE");
   CHECK(ops[0]["insertText"] == "MOVE ${1:0} ${2:0} ${3:0} ${4:0} ${5:0}");
   CHECK(ops[0]["insertTextFormat"] == 2);

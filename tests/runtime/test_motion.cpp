@@ -184,3 +184,29 @@ TEST_CASE("an image keeps its 1.0 bytes unless a motor has an acceleration or an
   CHECK_THAT(loadError(rs::vm::loadImage({reinterpret_cast<const char*>(bad.data()), bad.size()})),
              Catch::Contains("has an actuation time but is not a gripper"));
 }
+
+TEST_CASE("a lock-step move: every motor at a constant rate, all arriving together, leaders a count ahead",
+          "[motion][straight]") {
+  // Motor 1: 10 counts at 1000/s is 10 ms; motor 2: 3 counts at 100/s is
+  // 30 ms: the move takes 30 ms, and motor 1 is slowed to keep pace. At
+  // 4 ms motor 1 has done 10 * 4 / 30 = 1.33 counts and motor 2 0.4: rounded
+  // toward where they started, 1 and 0; a leader rounds toward where it
+  // goes, 2 and 1. At 0 both are where they started, at 30 ms where they go.
+  const MotorSpec fast{'A', JointKind::Revolute, 1.0, -100, 100, 1000};
+  const MotorSpec slow{'B', JointKind::Revolute, 1.0, -100, 100, 100, 5000};  // its acceleration does not apply
+  CHECK(rs::runtime::lockStepTime(fast, 10) == 10'000);
+  CHECK(rs::runtime::lockStepTime(slow, 3) == 30'000);
+  for (const std::uint32_t lead : {0u, 3u}) {
+    rs::runtime::SimMachine sim({fast, slow}, {});
+    REQUIRE(sim.moveLockStep(std::vector<std::int32_t>{10, -3}, lead));
+    CHECK(sim.now() == 30'000);
+    CHECK(sim.positionAt(0, 0) == 0);
+    CHECK(sim.positionAt(1, 0) == 0);
+    CHECK(sim.positionAt(0, 4'000) == (lead ? 2 : 1));
+    CHECK(sim.positionAt(1, 4'000) == (lead ? -1 : 0));
+    CHECK(sim.positionAt(0, 29'999) == (lead ? 10 : 9));
+    CHECK(sim.positionAt(0, 30'000) == 10);
+    CHECK(sim.positionAt(1, 30'000) == -3);
+    CHECK(sim.segment(0).end == sim.segment(1).end);
+  }
+}

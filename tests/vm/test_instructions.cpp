@@ -1,4 +1,5 @@
-// The semantics of the 20 instructions, run on the simulated machine.
+// The semantics of the paper's 20 instructions, run on the simulated machine (the
+// straight-line moves, which need a workcell: tests/runtime/test_straight_line.cpp).
 //
 // Programs are compiled from source and run by the interpreter on a
 // SimMachine. Expected times are worked out by hand in the comments: a

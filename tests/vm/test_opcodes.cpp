@@ -69,7 +69,8 @@ TEST_CASE("docs/bytecode.md's opcode table agrees with kOps", "[vm][opcodes][doc
         {rs::vm::kFallsThrough, 'F'}, {rs::vm::kJumps, 'J'},          {rs::vm::kMovesMotors, 'M'},
         {rs::vm::kRelative, 'R'},     {rs::vm::kWritesVariable, 'W'}, {rs::vm::kUsesMachine, 'X'},
         {rs::vm::kCalls, 'C'},        {rs::vm::kReturns, 'P'},        {rs::vm::kBranches, 'B'},
-        {rs::vm::kWaits, 'A'},        {rs::vm::kEnds, 'E'}};
+        {rs::vm::kWaits, 'A'},        {rs::vm::kEnds, 'E'},           {rs::vm::kStraight, 'L'},
+        {rs::vm::kStraightBack, 'K'}};
     for (const auto& [flag, letter] : letters)
       if (rs::vm::has(op.op, flag)) flags += flags.empty() ? std::string(1, letter) : std::string(" ") + letter;
     CHECK(c[4] == (flags.empty() ? "–" : flags));
