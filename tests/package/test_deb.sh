@@ -4,7 +4,7 @@
 # root (scripts/debian-root.sh makes it) installs it with
 # `apt-get install ./robotsim_*.deb` (dependencies from Debian's
 # repositories); a user with no source tree then runs a program on a
-# library cell, `robotsim test` on an example folder and a language server
+# library cell, `robotsim test` on the examples' passing folder and a language server
 # exchange (initialize, a file with an error, its diagnostics) from a folder
 # of their own; `apt-get remove --purge` and `autoremove --purge` take it all
 # away, which is checked by comparing the root's file list before the
@@ -87,7 +87,7 @@ grep -E "^(Need to get|After this operation)" "$work/install.log" || true
 
 step "as a user: a program on a library cell, robotsim test, --version"
 cp "$root/usr/share/doc/robotsim/examples/gantry_pick.rsp" "$root/home/student/work/"
-cp -r "$root/usr/share/doc/robotsim/examples/tests/passing" "$root/home/student/work/passing"
+cp -r "$root/usr/share/doc/robotsim/examples" "$root/home/student/work/examples"
 chroot "$root" chown -R student:student /home/student/work
 if as_user robotsim run gantry_pick.rsp --cell gantry-cell >"$work/run.out" 2>&1; then
   (cd "$work" && cp "$source/examples/gantry_pick.rsp" . && "$build/robotsim" run gantry_pick.rsp --cell gantry-cell >"$work/run-build-tree.out" 2>&1)
@@ -96,8 +96,9 @@ if as_user robotsim run gantry_pick.rsp --cell gantry-cell >"$work/run.out" 2>&1
 else
   fail "robotsim run on gantry-cell failed in the root: $(head -3 "$work/run.out")"
 fi
-as_user robotsim test passing >"$work/test.out" 2>&1 || fail "robotsim test passing failed: $(tail -3 "$work/test.out")"
-grep -q "passed" "$work/test.out" || fail "robotsim test printed no summary: $(tail -3 "$work/test.out")"
+as_user robotsim test examples/tests/passing >"$work/test.out" 2>&1 ||
+  fail "robotsim test examples/tests/passing failed: $(tail -3 "$work/test.out")"
+grep -Eq "^[1-9][0-9]* passed, 0 failed, 0 errors" "$work/test.out" || fail "robotsim test's summary: $(tail -1 "$work/test.out")"
 version_json=$(as_user robotsim --version --format=json)
 case "$version_json" in
   *'"library":"/usr/share/robotsim/stdlib"'*) ;;
