@@ -37,6 +37,14 @@ std::optional<int> unknownCommand(CLI::App& app, int argc, const char* const* ar
 }  // namespace
 
 int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  // `robotsim --version [--format json]` is `robotsim version [...]`: the
+  // conventional spelling, one implementation.
+  std::vector<const char*> versionArgs;
+  if (argc >= 2 && std::string_view(argv[1]) == "--version") {
+    versionArgs.assign(argv, argv + argc);
+    versionArgs[1] = "version";
+    argv = versionArgs.data();
+  }
   CommandLine commandLine;
   CLI::App& app = commandLine.app();
   if (const std::optional<int> code = unknownCommand(app, argc, argv, err)) return *code;

@@ -105,6 +105,9 @@ constexpr std::array kCommands{
     Command{"help", "Explain the instruction set, or one instruction",
             [](CLI::App* c, Values& v) { addHelpOptions(c, v.helpTopic); },
             [](const Values& v, const Io& io) { return helpCommand(v.helpTopic, io.out, io.err); }},
+    Command{"version", "Print the version, the commit and build type, and where the library of robots and cells is",
+            [](CLI::App* c, Values& v) { addVersionOptions(c, v.versionFormat); },
+            [](const Values& v, const Io& io) { return versionCommand(v.versionFormat, io.out); }},
 };
 
 }  // namespace
@@ -114,6 +117,8 @@ std::span<const Command> commandTable() { return kCommands; }
 CommandLine::CommandLine() : app_{std::string(kRobotsimHelp)} {
   app_.name("robotsim");
   app_.require_subcommand(1);
+  app_.footer("robotsim --version (or robotsim version) prints the version and where the library of robots and "
+              "cells is.");
   for (const Command& command : kCommands) {
     CLI::App* cmd = app_.add_subcommand(std::string(command.name), std::string(command.help));
     command.addOptions(cmd, values_);

@@ -25,6 +25,7 @@
 #include "cli/lib/serial_commands.h"
 #include "cli/lib/teach_command.h"
 #include "cli/lib/test_command.h"
+#include "cli/lib/version_command.h"
 
 namespace rs::cli {
 
@@ -47,6 +48,7 @@ struct CommandValues {
   LspOptions lsp;
   DebugOptions debug;
   std::string helpTopic;
+  std::string versionFormat;
 };
 
 /// The streams a command talks on.

@@ -1,5 +1,6 @@
 #include "compiler/description/library.h"
 
+#include "compiler/description/library_dir.h"
 #include "compiler/program/kinematics_diagnostic.h"
 #include "diag/read_input.h"
 
@@ -58,7 +59,8 @@ diag::Pos frameErrorPos(const RobotDef& def, const NameRef& gripperRef, int inde
 }  // namespace
 
 std::vector<fs::path> librarySearchPath(const std::vector<std::string>& libDirs) {
-  std::vector<fs::path> path{fs::path(ROBOTSIM_STDLIB_DIR)};
+  std::vector<fs::path> path;
+  if (std::optional<fs::path> own = libraryDir()) path.push_back(std::move(*own));
   for (const std::string& d : libDirs) path.emplace_back(d);
   if (const char* env = std::getenv("ROBOTSIM_PATH")) {
     std::stringstream entries(env);

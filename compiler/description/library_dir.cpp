@@ -1,0 +1,36 @@
+#include "compiler/description/library_dir.h"
+
+#include <system_error>
+
+#include "base/self_path.h"
+
+// Set by CMake (CMakeLists.txt, "install"): the library's folder relative
+// to the executable's, in an installed prefix and in a flat folder.
+#ifndef ROBOTSIM_LIBRARY_FROM_BINDIR
+#error "ROBOTSIM_LIBRARY_FROM_BINDIR: the build defines it (CMakeLists.txt)"
+#endif
+#ifndef ROBOTSIM_LIBRARY_FROM_PREFIX
+#error "ROBOTSIM_LIBRARY_FROM_PREFIX: the build defines it (CMakeLists.txt)"
+#endif
+
+namespace rs::compiler {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> libraryDirCandidates() {
+  const fs::path exe = base::runningExecutable();
+  if (exe.empty()) return {};
+  const fs::path dir = exe.parent_path();
+  return {(dir / ROBOTSIM_LIBRARY_FROM_BINDIR).lexically_normal(),
+          (dir / ROBOTSIM_LIBRARY_FROM_PREFIX).lexically_normal()};
+}
+
+std::optional<fs::path> libraryDir() {
+  for (const fs::path& candidate : libraryDirCandidates()) {
+    std::error_code ec;
+    if (fs::is_directory(candidate, ec)) return candidate;
+  }
+  return std::nullopt;
+}
+
+}  // namespace rs::compiler

@@ -1,0 +1,24 @@
+// Where robotsim's own library of robots, grippers, objects and workcells
+// is: found from the running executable, never from a path compiled in from
+// the tree it was built in, so that an installed or copied robotsim works
+// with its source gone (docs/install.md, "Where the library is").
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+namespace rs::compiler {
+
+/// The folders robotsim looks in for its library, in order, from the
+/// running executable's folder EXE: EXE/../share/robotsim/stdlib (an
+/// installed prefix: bin/ beside share/; the relative path is CMake's, from
+/// GNUInstallDirs) and EXE/share/robotsim/stdlib (a folder holding the
+/// executable and share/, as the build tree is laid out). Empty when the
+/// system will not say where the executable is.
+std::vector<std::filesystem::path> libraryDirCandidates();
+
+/// The first of libraryDirCandidates() that is a folder, or nullopt.
+std::optional<std::filesystem::path> libraryDir();
+
+}  // namespace rs::compiler
