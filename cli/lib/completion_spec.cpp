@@ -43,8 +43,9 @@ CompletionOption optionOf(const CLI::Option& opt) {
   for (const std::string& s : opt.get_snames()) o.names.push_back("-" + s);
   for (const std::string& l : opt.get_lnames()) o.names.push_back("--" + l);
   o.help = opt.get_description();
-  // A flag (--trace{text} too: its value only ever follows '=').
-  if (opt.get_type_size() == 0) return o;
+  // A flag (CLI11 expects no value after it; --trace{text} too: its value
+  // only ever follows '=').
+  if (opt.get_expected_max() == 0 || opt.get_type_size() == 0) return o;
   o.choices = choicesOf(opt.get_type_name());
   o.value = valueKind(opt, o.choices);
   o.valueName = opt.get_option_text();

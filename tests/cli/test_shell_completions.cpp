@@ -197,6 +197,8 @@ TEST_CASE("bash completes library names, fixed words and positional cells", "[cl
   CHECK(bench.bash("robotsim emulate --robot p") == stdlibNames(false, "p"));
   CHECK(bench.bash("robotsim emulate --robot p").count("puma-cell") == 0);
   CHECK(bench.bash("robotsim render ''") == stdlibNames(true));
+  // A flag takes no value: the word after it is still the cell argument.
+  CHECK(bench.bash("robotsim render --axes ''") == stdlibNames(true));
   CHECK(bench.bash("robotsim describe pu") == stdlibNames(true, "pu"));
   CHECK(bench.bash("robotsim ik --frame robot pu") == std::set<std::string>{"puma-cell", "puma560"});
   CHECK(bench.bash("robotsim run prog.rsp --format ''") == std::set<std::string>{"json", "text"});
@@ -228,6 +230,7 @@ TEST_CASE("zsh's completion system completes robotsim from _robotsim", "[cli][co
   CHECK(bench.zsh("robotsim run prog.rsp --cell ") == stdlibNames(true));
   CHECK(bench.zsh("robotsim emulate --robot ") == stdlibNames(false));
   CHECK(bench.zsh("robotsim render ") == stdlibNames(true));
+  CHECK(bench.zsh("robotsim render --axes ") == stdlibNames(true));
   CHECK(bench.zsh("robotsim test --format ") == std::set<std::string>{"csv", "json", "text"});
 }
 
@@ -245,6 +248,7 @@ TEST_CASE("fish completes robotsim from robotsim.fish", "[cli][completion]") {
   CHECK(bench.fish("robotsim run prog.rsp --cell ") == stdlibNames(true));
   CHECK(bench.fish("robotsim emulate --robot ") == stdlibNames(false));
   CHECK(bench.fish("robotsim render ") == stdlibNames(true));
+  CHECK(bench.fish("robotsim render --axes ") == stdlibNames(true));
   CHECK(bench.fish("robotsim render gantry-cell ").empty());
   CHECK(bench.fish("robotsim test --format ") == std::set<std::string>{"csv", "json", "text"});
   // Each command with its help, as fish shows it.
