@@ -1,4 +1,4 @@
-// robotsim_gen_docs: robotsim's man pages and bash completion script, from
+// robotsim_gen_docs: robotsim's man pages and bash, zsh and fish completions, from
 // the command table. All the work is in cli/lib/gen_docs.cpp.
 #include <iostream>
 

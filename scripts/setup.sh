@@ -38,9 +38,13 @@ packages=(
 # tmux gives the terminal pendant's test a real terminal (a pseudo-terminal
 # with a terminal emulator behind it) whose screen it reads. Orocos KDL is
 # the inverse-kinematics benchmark's peer and independent check
-# (bench/ik_bench.cpp; the benchmark builds without it).
+# (bench/ik_bench.cpp; the benchmark builds without it). zsh and fish test
+# the shell completions with their own completion machinery; parallel and
+# openssh-server (an sshd the test starts on loopback, no service) and rsync
+# (parallel copies files with it) run the
+# grading recipe of docs/testing.md over ssh.
 [ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 luajit libfcl-dev neovim clang libclang-rt-14-dev unzip tmux
-  liborocos-kdl-dev)
+  liborocos-kdl-dev zsh fish parallel openssh-server rsync)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -10,6 +10,8 @@
 #include "base/near_names.h"
 #include "base/text.h"
 #include "cli/lib/commands.h"
+#include "cli/lib/completion_query.h"
+#include "cli/lib/completion_spec.h"
 
 namespace rs::cli {
 
@@ -45,6 +47,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
     versionArgs[1] = "version";
     argv = versionArgs.data();
   }
+  // The shell completions' hidden query (completion_query.h), before the table's commands.
+  if (argc >= 2 && argv[1] == kCompleteQueryWord) return completionQuery(argc - 2, argv + 2, out, err);
   CommandLine commandLine;
   CLI::App& app = commandLine.app();
   if (const std::optional<int> code = unknownCommand(app, argc, argv, err)) return *code;

@@ -1,7 +1,9 @@
-// robotsim's bash completion script, written from the command table and
-// CLI11's lists of each command's options: the first word completes to a
-// command, a word starting with '-' to that command's options, anything
-// else to file names. robotsim_gen_docs writes it.
+// robotsim's bash completion script, written from the command table
+// (completion_spec.h): the first word completes to a command, a word
+// starting with '-' to that command's options, the value of --cell, --robot
+// and of a command's cell or robot argument to the library's names (asked
+// of robotsim itself: `robotsim __complete`), an option's fixed words to
+// those words, anything else to file names. robotsim_gen_docs writes it.
 #pragma once
 
 #include <string>

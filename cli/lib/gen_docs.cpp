@@ -9,7 +9,9 @@
 #include "cli/lib/bash_completion.h"
 #include "cli/lib/commands.h"
 #include "cli/lib/exit_codes.h"
+#include "cli/lib/fish_completion.h"
 #include "cli/lib/man_page.h"
+#include "cli/lib/zsh_completion.h"
 
 namespace rs::cli {
 
@@ -25,20 +27,22 @@ bool writeDocFile(const std::string& path, const std::string& bytes, std::ostrea
 }  // namespace
 
 int genDocsCommand(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  CLI::App app{"Write robotsim's man pages and bash completion script from its command table"};
+  CLI::App app{"Write robotsim's man pages and its bash, zsh and fish completions from its command table"};
   app.name("robotsim_gen_docs");
-  std::string manDir, bashFile;
+  std::string manDir, bashFile, zshFile, fishFile;
   app.add_option("--man", manDir, "Write robotsim.1 and robotsim-COMMAND.1 for every command into this folder")
       ->check(CLI::ExistingDirectory);
-  app.add_option("--bash", bashFile, "Write the bash completion script to this file");
-  app.footer("At least one of --man and --bash; existing files are replaced whole, never half-written.");
+  app.add_option("--bash", bashFile, "Write the bash completion script to this file (installed as robotsim)");
+  app.add_option("--zsh", zshFile, "Write the zsh completion function to this file (installed as _robotsim)");
+  app.add_option("--fish", fishFile, "Write the fish completions to this file (installed as robotsim.fish)");
+  app.footer("At least one of --man, --bash, --zsh and --fish; existing files are replaced whole, never half-written.");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e, out, err) == 0 ? kExitOk : kExitBadInput;
   }
-  if (manDir.empty() && bashFile.empty()) {
-    err << "robotsim_gen_docs: error: nothing to write\n  give --man DIR, --bash FILE or both\n";
+  if (manDir.empty() && bashFile.empty() && zshFile.empty() && fishFile.empty()) {
+    err << "robotsim_gen_docs: error: nothing to write\n  give --man DIR, --bash FILE, --zsh FILE or --fish FILE\n";
     return kExitBadInput;
   }
   const CommandLine commandLine;
@@ -52,6 +56,8 @@ int genDocsCommand(int argc, const char* const* argv, std::ostream& out, std::os
         return kExitBadInput;
   }
   if (!bashFile.empty() && !writeDocFile(bashFile, bashCompletion(commandLine), err)) return kExitBadInput;
+  if (!zshFile.empty() && !writeDocFile(zshFile, zshCompletion(commandLine), err)) return kExitBadInput;
+  if (!fishFile.empty() && !writeDocFile(fishFile, fishCompletion(commandLine), err)) return kExitBadInput;
   return kExitOk;
 }
 

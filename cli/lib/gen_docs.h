@@ -1,6 +1,7 @@
 // robotsim_gen_docs as a function (cli/gen_docs.cpp calls it, tests run
-// it in-process): writes the man pages (man_page.h) and the bash completion
-// script (bash_completion.h) made from the command table. A build-time
+// it in-process): writes the man pages (man_page.h) and the bash, zsh and
+// fish completions (bash_completion.h, zsh_completion.h, fish_completion.h)
+// made from the command table. A build-time
 // tool, not a robotsim command: robotsim's commands stay exactly the
 // table's, and the distribution's build runs this one.
 #pragma once

@@ -5,7 +5,8 @@
 // editor), and the debugger: the debug type "robotsim" runs `robotsim dap`
 // (the Debug Adapter Protocol, stepping backwards too) and the "Debug
 // robot program" command debugs the file in the editor. What each command
-// runs is in commands.js.
+// runs is in commands.js; which robotsim runs it, in locate.js (PATH, then
+// the usual install places, else a message naming the setting to change).
 'use strict';
 
 const fs = require('fs');
@@ -15,13 +16,26 @@ const { execFile } = require('child_process');
 const vscode = require('vscode');
 const { LanguageClient, TransportKind } = require('vscode-languageclient/node');
 const { commandArgs, debugConfiguration, animationTitle } = require('./commands');
+const { locateRobotsim } = require('./locate');
 
 let client;
+
+// The robotsim command robotsim.path names or locate.js finds; when there
+// is none, an error with a button that opens the setting, and undefined.
+function robotsimCommand(setting) {
+  const folders = vscode.workspace.workspaceFolders;
+  const found = locateRobotsim(setting, { base: folders && folders.length ? folders[0].uri.fsPath : process.cwd() });
+  if (found.path) return found.path;
+  vscode.window.showErrorMessage(found.error, 'Open Settings').then((choice) => {
+    if (choice === 'Open Settings') vscode.commands.executeCommand('workbench.action.openSettings', 'robotsim.path');
+  });
+  return undefined;
+}
 
 function settings() {
   const config = vscode.workspace.getConfiguration('robotsim');
   return {
-    path: config.get('path', 'robotsim'),
+    path: config.get('path', ''),
     cell: config.get('cell', ''),
     lib: config.get('lib', []),
     collisions: config.get('collisions', 'error'),
@@ -44,9 +58,11 @@ async function runTask(command) {
   const document = vscode.window.activeTextEditor.document;
   await document.save();
   const s = settings();
+  const robotsim = robotsimCommand(s.path);
+  if (!robotsim) return;
   const args = commandArgs(command, file, s, { exists: fs.existsSync, text: document.getText() });
   const task = new vscode.Task({ type: 'robotsim', command, file }, vscode.TaskScope.Workspace,
-    `${command} ${path.basename(file)}`, 'robotsim', new vscode.ProcessExecution(s.path, args), ['$robotsim']);
+    `${command} ${path.basename(file)}`, 'robotsim', new vscode.ProcessExecution(robotsim, args), ['$robotsim']);
   await vscode.tasks.executeTask(task);
 }
 
@@ -58,9 +74,11 @@ async function animate(context) {
   const document = vscode.window.activeTextEditor.document;
   await document.save();
   const s = settings();
+  const robotsim = robotsimCommand(s.path);
+  if (!robotsim) return;
   const out = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'robotsim-')), 'animation.html');
   const args = commandArgs('animate', file, s, { out, exists: fs.existsSync, text: document.getText() });
-  execFile(s.path, args, (error, _stdout, stderr) => {
+  execFile(robotsim, args, (error, _stdout, stderr) => {
     if (error) {
       vscode.window.showErrorMessage(`ROBOTSIM animate: ${stderr.trim() || error.message}`);
       return;
@@ -84,7 +102,10 @@ async function debugProgram() {
 
 function registerDebugger(context) {
   context.subscriptions.push(vscode.debug.registerDebugAdapterDescriptorFactory('robotsim', {
-    createDebugAdapterDescriptor: () => new vscode.DebugAdapterExecutable(settings().path, ['dap']),
+    createDebugAdapterDescriptor: () => {
+      const robotsim = robotsimCommand(settings().path);
+      return robotsim ? new vscode.DebugAdapterExecutable(robotsim, ['dap']) : undefined;
+    },
   }));
   // F5 without a launch.json: debug the program in the editor.
   context.subscriptions.push(vscode.debug.registerDebugConfigurationProvider('robotsim', {
@@ -104,8 +125,24 @@ function registerDebugger(context) {
 
 function activate(context) {
   registerDebugger(context);
+  for (const command of ['run', 'check', 'test', 'render'])
+    context.subscriptions.push(vscode.commands.registerCommand(`robotsim.${command}`, () => runTask(command)));
+  context.subscriptions.push(vscode.commands.registerCommand('robotsim.animate', () => animate(context)));
+  registerTasks(context);
+  startServer();
+  // Set after the message: the server starts then, no reload needed.
+  context.subscriptions.push(vscode.workspace.onDidChangeConfiguration((e) => {
+    if (e.affectsConfiguration('robotsim.path') && !client) startServer();
+  }));
+}
+
+// The language server, when there is a robotsim to run it (else the
+// message from robotsimCommand).
+function startServer() {
   const s = settings();
-  const serverOptions = { command: s.path, args: ['lsp'], transport: TransportKind.stdio };
+  const robotsim = robotsimCommand(s.path);
+  if (!robotsim) return;
+  const serverOptions = { command: robotsim, args: ['lsp'], transport: TransportKind.stdio };
   const clientOptions = {
     documentSelector: [
       { scheme: 'file', language: 'robotsim-program' },
@@ -117,20 +154,21 @@ function activate(context) {
   };
   client = new LanguageClient('robotsim', 'ROBOTSIM', serverOptions, clientOptions);
   client.start();
+}
 
-  for (const command of ['run', 'check', 'test', 'render'])
-    context.subscriptions.push(vscode.commands.registerCommand(`robotsim.${command}`, () => runTask(command)));
-  context.subscriptions.push(vscode.commands.registerCommand('robotsim.animate', () => animate(context)));
+function registerTasks(context) {
   context.subscriptions.push(vscode.tasks.registerTaskProvider('robotsim', {
     provideTasks: () => [],
     resolveTask(task) {
       const file = task.definition.file || activeFile();
       if (!file) return undefined;
       const text = fs.existsSync(file) ? fs.readFileSync(file, 'utf8') : '';
+      const robotsim = robotsimCommand(settings().path);
+      if (!robotsim) return undefined;
       const args = [...commandArgs(task.definition.command, file, settings(), { exists: fs.existsSync, text }),
                     ...(task.definition.args || [])];
       return new vscode.Task(task.definition, task.scope || vscode.TaskScope.Workspace, task.name, 'robotsim',
-        new vscode.ProcessExecution(settings().path, args), ['$robotsim']);
+        new vscode.ProcessExecution(robotsim, args), ['$robotsim']);
     },
   }));
 }

@@ -3,8 +3,9 @@
 // arguments run against the real robotsim, the problem matcher on
 // robotsim's real output, the snippets compiled by robotsim, the debugger's
 // contribution and its launch configurations driving the real `robotsim
-// dap`, the TextMate grammars (vscode-tmgrammar-test) and the packaged
-// .vsix (@vscode/vsce).
+// dap`, the TextMate grammars (vscode-tmgrammar-test), the packaged .vsix
+// (@vscode/vsce), how the extension finds robotsim, and its activation in
+// a scripted session.
 //   node test/run-tests.js --robotsim PATH
 'use strict';
 
@@ -101,6 +102,127 @@ test('a program\'s own ; cell: line wins over the setting', () => {
   assert.deepEqual(commandArgs('render', 'f.rsp', {}, { out: 'o.png' }), ['render', 'rhino-scara', '--program', 'f.rsp', '-o', 'o.png']);
 });
 
+// Which robotsim the extension runs (src/locate.js), with real folders and
+// files: PATH first, then the install places, a non-executable file
+// skipped, a path setting taken as it is; and the message when none holds it.
+test('the extension finds robotsim on PATH, then in the install places, else says which setting to change', () => {
+  const { locateRobotsim, installPlaces } = require('../src/locate');
+  const base = fs.mkdtempSync(path.join(tmp, 'locate-'));
+  const dir = (name) => { const d = path.join(base, name); fs.mkdirSync(d, { recursive: true }); return d; };
+  const onPath = dir('on-path'), empty = dir('empty'), place = dir('place'), plain = dir('plain'), home = dir('home');
+  fs.symlinkSync(robotsim, path.join(onPath, 'robotsim'));
+  fs.writeFileSync(path.join(plain, 'robotsim'), 'not executable\n', { mode: 0o644 });
+  fs.copyFileSync(robotsim, path.join(place, 'robotsim'));
+  fs.chmodSync(path.join(place, 'robotsim'), 0o755);
+  const env = (...dirs) => ({ PATH: dirs.join(path.delimiter) });
+
+  assert.deepEqual(installPlaces('/home/u'), ['/usr/local/bin', '/usr/bin', '/home/u/.local/bin', '/opt/robotsim/bin']);
+  // PATH first, in its order; a file without the execute bit is no command.
+  let found = locateRobotsim('', { env: env(plain, onPath), home, places: [place] });
+  assert.equal(found.path, path.join(onPath, 'robotsim'));
+  // Not on PATH: the install places.
+  found = locateRobotsim('', { env: env(empty, plain), home, places: [empty, place] });
+  assert.equal(found.path, path.join(place, 'robotsim'));
+  assert.equal(locateRobotsim('robotsim', { env: env(), home, places: [place] }).path, path.join(place, 'robotsim'));
+  // What was found runs.
+  const r = spawnSync(found.path, ['--help'], { encoding: 'utf8' });
+  assert.equal(r.status, 0);
+  assert.match(r.stdout, /robotsim: compile, check, run/);
+
+  // Nowhere: the message names PATH, every place and the setting.
+  const missing = locateRobotsim('', { env: env(empty, plain), home, places: installPlaces(home).map((p) => path.join(base, 'no' + p)) });
+  assert.equal(missing.path, undefined);
+  assert.match(missing.error, /^ROBOTSIM: the robotsim command is not on PATH nor in /);
+  assert.match(missing.error, /set "robotsim\.path" \(Settings > Extensions > ROBOTSIM\) to the full path/);
+  assert.deepEqual(missing.looked, [empty, plain, ...installPlaces(home).map((p) => path.join(base, 'no' + p))]
+    .map((d) => path.join(d, 'robotsim')));
+  // The default list of places is in the message when none is given.
+  const defaultPlaces = locateRobotsim('no-such-robotsim-command', { env: env(empty), home });
+  for (const p of installPlaces(home)) assert.ok(defaultPlaces.error.includes(p), p);
+
+  // A path setting: as it is (absolute, ~/, relative to the workspace folder), never searched.
+  assert.equal(locateRobotsim(path.join(place, 'robotsim'), { env: env(onPath) }).path, path.join(place, 'robotsim'));
+  fs.mkdirSync(path.join(home, 'bin'));
+  fs.symlinkSync(robotsim, path.join(home, 'bin', 'robotsim'));
+  assert.equal(locateRobotsim('~/bin/robotsim', { env: env(), home }).path, path.join(home, 'bin', 'robotsim'));
+  assert.equal(locateRobotsim('place/robotsim', { env: env(), home, base }).path, path.join(place, 'robotsim'));
+  const gone = locateRobotsim(path.join(base, 'gone', 'robotsim'), { env: env(onPath), home });
+  assert.match(gone.error, /robotsim\.path is .*gone\/robotsim, which does not exist: set "robotsim\.path"/);
+  assert.match(locateRobotsim(path.join(plain, 'robotsim'), { env: env(onPath) }).error, /which is not an executable file/);
+});
+
+// The extension's activation in a scripted session: VS Code cannot run
+// here, so its API is a recorder of what the extension asks of it (the
+// real robotsim and the real folders otherwise). With robotsim on PATH the
+// language server is `FOUND lsp`; without it, no server and the message
+// with the button that opens robotsim.path.
+function activateWith(PATH, setting) {
+  const Module = require('module');
+  const seen = { errors: [], servers: [], commands: [], opened: [] };
+  const vscode = {
+    workspace: {
+      workspaceFolders: undefined,
+      getConfiguration: () => ({ get: (key, fallback) => (key === 'path' ? setting : fallback) }),
+      onDidChangeConfiguration: () => ({ dispose() {} }),
+    },
+    window: {
+      showErrorMessage: (message, ...buttons) => {
+        seen.errors.push({ message, buttons });
+        return Promise.resolve(buttons[0]);
+      },
+    },
+    commands: {
+      registerCommand: (name) => { seen.commands.push(name); return { dispose() {} }; },
+      executeCommand: (...args) => { seen.opened.push(args); return Promise.resolve(); },
+    },
+    debug: { registerDebugAdapterDescriptorFactory: () => ({}), registerDebugConfigurationProvider: () => ({}) },
+    tasks: { registerTaskProvider: () => ({}) },
+  };
+  class LanguageClient {
+    constructor(id, name, serverOptions) { seen.servers.push(serverOptions); }
+    start() {}
+    stop() {}
+  }
+  const load = Module._load;
+  Module._load = function (request, ...rest) {
+    if (request === 'vscode') return vscode;
+    if (request === 'vscode-languageclient/node') return { LanguageClient, TransportKind: { stdio: 0 } };
+    return load.call(this, request, ...rest);
+  };
+  const savedPath = process.env.PATH;
+  const extensionFile = require.resolve('../src/extension');
+  try {
+    delete require.cache[extensionFile];
+    process.env.PATH = PATH;
+    require(extensionFile).activate({ subscriptions: [] });
+  } finally {
+    Module._load = load;
+    process.env.PATH = savedPath;
+    delete require.cache[extensionFile];
+  }
+  return seen;
+}
+
+test('activation starts robotsim lsp from PATH, or shows the message with the setting to open', async () => {
+  const bin = fs.mkdtempSync(path.join(tmp, 'activate-'));
+  fs.symlinkSync(robotsim, path.join(bin, 'robotsim'));
+  const found = activateWith(bin, '');
+  assert.deepEqual(found.errors, []);
+  assert.deepEqual(found.servers.map((s) => [s.command, s.args]), [[path.join(bin, 'robotsim'), ['lsp']]]);
+  assert.ok(found.commands.includes('robotsim.run'));
+
+  const { installPlaces } = require('../src/locate');
+  const installed = installPlaces(os.homedir()).some((d) => fs.existsSync(path.join(d, 'robotsim')));
+  const lost = activateWith(fs.mkdtempSync(path.join(tmp, 'activate-empty-')), installed ? '/nonexistent/robotsim' : '');
+  assert.deepEqual(lost.servers, []);
+  assert.equal(lost.errors.length, 1);
+  assert.match(lost.errors[0].message, /robotsim\.path/);
+  assert.deepEqual(lost.errors[0].buttons, ['Open Settings']);
+  await new Promise((resolve) => setImmediate(resolve));
+  assert.deepEqual(lost.opened, [['workbench.action.openSettings', 'robotsim.path']]);
+  assert.ok(lost.commands.includes('robotsim.run'), 'the commands are there, to say the same when used');
+});
+
 test('Render writes a PNG and Animate a self-contained HTML page', () => {
   const file = path.join(root, 'examples', 'first_moves.rsp');
   const png = path.join(tmp, 'first_moves.png');
@@ -187,7 +309,8 @@ test('the debugger is contributed: type robotsim, breakpoints in programs, snipp
   for (const c of d.initialConfigurations) assert.equal(c.type, 'robotsim');
   assert.ok(manifest.activationEvents.includes('onDebugResolve:robotsim'));
   const source = fs.readFileSync(path.join(here, 'src', 'extension.js'), 'utf8');
-  assert.match(source, /new vscode\.DebugAdapterExecutable\(settings\(\)\.path, \['dap'\]\)/);
+  // The adapter is the robotsim the extension finds (src/locate.js), run as `robotsim dap`.
+  assert.match(source, /const robotsim = robotsimCommand\(settings\(\)\.path\);\s+return robotsim \? new vscode\.DebugAdapterExecutable\(robotsim, \['dap'\]\)/);
 });
 
 test('Debug robot program: its launch configuration', () => {
