@@ -10,6 +10,7 @@
 #include "base/near_names.h"
 #include "base/text.h"
 #include "cli/lib/commands.h"
+#include "cli/lib/helpers.h"
 
 namespace rs::cli {
 
@@ -40,6 +41,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   CommandLine commandLine;
   CLI::App& app = commandLine.app();
   if (const std::optional<int> code = unknownCommand(app, argc, argv, err)) return *code;
+  // Before parsing: the main binary's table has no options for these rows.
+  if (const Command* row = commandLeftToHelper(commandTable(), argc, argv)) return execHelper(row->name, argc, argv, err);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
