@@ -38,11 +38,12 @@ std::optional<int> unknownCommand(CLI::App& app, int argc, const char* const* ar
 }  // namespace
 
 int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  // Before the parser is made (a third of the start-up): the main binary's
+  // table has no options for these rows, their helper parses its own.
+  if (const Command* row = commandLeftToHelper(commandTable(), argc, argv)) return execHelper(row->name, argc, argv, err);
   CommandLine commandLine;
   CLI::App& app = commandLine.app();
   if (const std::optional<int> code = unknownCommand(app, argc, argv, err)) return *code;
-  // Before parsing: the main binary's table has no options for these rows.
-  if (const Command* row = commandLeftToHelper(commandTable(), argc, argv)) return execHelper(row->name, argc, argv, err);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -69,7 +69,7 @@ TEST_CASE("a command run by its helper gives the bytes the whole command gives i
   // A picture, an animation page, a bad input and a help page: output
   // files, both streams and the exit code.
   const std::vector<std::vector<std::string>> commands{
-      {"render", "scara-pick", "--view", "iso", "-o", "@.svg"},
+      {"render", "scara-pick", "-o", "@.svg"},
       {"animate", ROBOTSIM_SOURCE_DIR "/examples/stack_blocks.rsp", "--cell", "scara-pick", "-o", "@.html"},
       {"render", "no-such-cell", "-o", "@.png"},
       {"teach", "--help"},
@@ -87,8 +87,11 @@ TEST_CASE("a command run by its helper gives the bytes the whole command gives i
       }
     }
     CAPTURE(words);
-    const CliResult a = runProcess(dir, kHelpersMainBinary.string(), viaHelper);
+    CliResult a = runProcess(dir, kHelpersMainBinary.string(), viaHelper);
     const CliResult b = runCli(inProcess);
+    // The summary line names the output file, which differs by name only.
+    for (std::size_t at = 0; (at = a.out.find(dir.file("helper"), at)) != std::string::npos;)
+      a.out.replace(at, dir.file("helper").size(), dir.file("inprocess"));
     CHECK(a.code == b.code);
     CHECK(a.out == b.out);
     CHECK(a.err == b.err);
@@ -96,7 +99,13 @@ TEST_CASE("a command run by its helper gives the bytes the whole command gives i
     if (last.rfind('@', 0) == 0) {
       const std::string made = readBytes(dir.file("helper" + last.substr(1)));
       CHECK(made == readBytes(dir.file("inprocess" + last.substr(1))));
-      CHECK((a.code != 0 || !made.empty()));
+      if (words[1] == "no-such-cell") {
+        CHECK(a.code == 2);
+        CHECK(made.empty());
+      } else {
+        CHECK(a.code == 0);
+        CHECK(!made.empty());
+      }
     }
   }
 }
