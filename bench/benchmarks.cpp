@@ -159,7 +159,8 @@ json benchStartup(const Options& options) {
           {"check", toJson(check)},
           {"target_s", 0.020},
           {"target_met", check.best() <= 0.020},
-          {"target_met_cpu", check.cpuBest() <= 0.020}};
+          {"target_met_cpu", check.cpuBest() <= 0.020},
+          {"peers", benchStartupPeers(options)}};
 }
 
 // --- 4. Run snapshots ------------------------------------------------------------

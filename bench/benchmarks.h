@@ -61,6 +61,12 @@ nlohmann::json benchTestRun(const Options& options);
 /// Startup: `robotsim check` on a 1,000-line program, whole process.
 nlohmann::json benchStartup(const Options& options);
 
+/// Issue 25's start-up targets, paired in one run: `robotsim check` on a
+/// 3-line program and `robotsim help` against `luac5.4 -v` (target: 2 times
+/// its time), and the peak RSS of a one-line `robotsim compile` read by GNU
+/// time (target: half of the 13 MiB before). Part of `--only startup`.
+nlohmann::json benchStartupPeers(const Options& options);
+
 /// Run snapshots: a run on the library's scara-pick cell (moves, a
 /// subroutine, outputs, a log), to the end without snapshots and with one
 /// every 300 instructions; the cost of one snapshot and one restore.

@@ -19,7 +19,7 @@ packages=(
   build-essential cmake make ninja-build pkg-config
   antlr4 libantlr4-runtime-dev default-jre-headless
   libeigen3-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
-  libmimalloc-dev libcairo2-dev libedit-dev
+  libcairo2-dev libedit-dev
   libcpp-httplib-dev libncurses-dev
 )
 # ninja-build: scripts/build.sh builds with Ninja, which keeps both cores
@@ -35,7 +35,8 @@ packages=(
 # links none of them); neovim's built-in LSP client drives the language server
 # end to end (the editor_neovim test); clang and its runtime (libFuzzer)
 # build the sanitizer and fuzzing build; unzip lists the VS Code package;
-# tmux gives the terminal pendant's test a real terminal (a pseudo-terminal
+# GNU time reads the peak memory of a one-line compile (robotsim_bench
+# --only startup); tmux gives the terminal pendant's test a real terminal (a pseudo-terminal
 # with a terminal emulator behind it) whose screen it reads. Orocos KDL is
 # the inverse-kinematics benchmark's peer and independent check
 # (bench/ik_bench.cpp; the benchmark builds without it). zsh and fish test
@@ -44,7 +45,7 @@ packages=(
 # (parallel copies files with it) run the
 # grading recipe of docs/testing.md over ssh.
 [ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 luajit libfcl-dev neovim clang libclang-rt-14-dev unzip tmux
-  liborocos-kdl-dev zsh fish parallel openssh-server rsync)
+  liborocos-kdl-dev zsh fish parallel openssh-server rsync time)
 
 missing=()
 for p in "${packages[@]}"; do

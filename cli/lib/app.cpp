@@ -12,6 +12,7 @@
 #include "cli/lib/commands.h"
 #include "cli/lib/completion_query.h"
 #include "cli/lib/completion_spec.h"
+#include "cli/lib/helpers.h"
 
 namespace rs::cli {
 
@@ -49,6 +50,9 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   }
   // The shell completions' hidden query (completion_query.h), before the table's commands.
   if (argc >= 2 && argv[1] == kCompleteQueryWord) return completionQuery(argc - 2, argv + 2, out, err);
+  // Before the parser is made (a third of the start-up): the main binary's
+  // table has no options for these rows, their helper parses its own.
+  if (const Command* row = commandLeftToHelper(commandTable(), argc, argv)) return execHelper(row->name, argc, argv, err);
   CommandLine commandLine;
   CLI::App& app = commandLine.app();
   if (const std::optional<int> code = unknownCommand(app, argc, argv, err)) return *code;

@@ -28,9 +28,16 @@ int runHandler(const Values& v, const Io& io) {
   return runOrCheck(v.run, false, io.out, io.err);
 }
 
-int teachHandler(const Values& v, const Io& io) {
-  return v.teach.tui ? teachTuiCommand(v.teach, io.out, io.err) : teachCommand(v.teach, io.out, io.err);
-}
+// The rows run by a helper name their functions through RS_IN_HELPER. The
+// main binary compiles its own copy of this file with
+// ROBOTSIM_MAIN_COMMAND_TABLE, where those are null: nothing there refers to
+// the renderer, the HTTP server, ncurses or libedit, so they are not linked
+// (the helpers link this library's copy, with every function).
+#ifdef ROBOTSIM_MAIN_COMMAND_TABLE
+#define RS_IN_HELPER(...) nullptr
+#else
+#define RS_IN_HELPER(...) __VA_ARGS__
+#endif
 
 // The rows, in `robotsim --help`'s order. The lambdas only pick the
 // command's options out of CommandValues.
@@ -81,16 +88,20 @@ constexpr std::array kCommands{
             [](CLI::App* c, Values& v) { addEmulateOptions(c, v.emulate); },
             [](const Values& v, const Io& io) { return emulateCommand(v.emulate, io.out, io.err); }},
     Command{"render", "Draw a workcell (PNG or SVG), at its placed pose or during a run",
-            [](CLI::App* c, Values& v) { addRenderOptions(c, v.render); },
-            [](const Values& v, const Io& io) { return renderCommand(v.render, io.out, io.err); }},
+            RS_IN_HELPER([](CLI::App* c, Values& v) { addRenderOptions(c, v.render); }),
+            RS_IN_HELPER([](const Values& v, const Io& io) { return renderCommand(v.render, io.out, io.err); }), true},
     Command{"animate", "Write a self-contained HTML page that replays a program's run",
-            [](CLI::App* c, Values& v) { addAnimateOptions(c, v.render); },
-            [](const Values& v, const Io& io) { return animateCommand(v.render, io.out, io.err); }},
+            RS_IN_HELPER([](CLI::App* c, Values& v) { addAnimateOptions(c, v.render); }),
+            RS_IN_HELPER([](const Values& v, const Io& io) { return animateCommand(v.render, io.out, io.err); }), true},
     Command{"plot", "Chart a program's run over time (SVG or PNG), or write its samples as CSV",
-            [](CLI::App* c, Values& v) { addPlotOptions(c, v.plot); },
-            [](const Values& v, const Io& io) { return plotCommand(v.plot, io.out, io.err); }},
+            RS_IN_HELPER([](CLI::App* c, Values& v) { addPlotOptions(c, v.plot); }),
+            RS_IN_HELPER([](const Values& v, const Io& io) { return plotCommand(v.plot, io.out, io.err); }), true},
     Command{"teach", "Jog the robot in its workcell on a live page and teach points into the program's POINTS section",
-            [](CLI::App* c, Values& v) { addTeachOptions(c, v.teach); }, teachHandler},
+            RS_IN_HELPER([](CLI::App* c, Values& v) { addTeachOptions(c, v.teach); }),
+            RS_IN_HELPER([](const Values& v, const Io& io) {
+              return v.teach.tui ? teachTuiCommand(v.teach, io.out, io.err) : teachCommand(v.teach, io.out, io.err);
+            }),
+            true},
     Command{"test", "Check programs against the expectations written in them (folders: every .rsp, recursively)",
             [](CLI::App* c, Values& v) { addTestOptions(c, v.test); },
             [](const Values& v, const Io& io) { return testCommand(v.test, io.out, io.err); }},
@@ -98,8 +109,9 @@ constexpr std::array kCommands{
             [](CLI::App* c, Values& v) { addLspOptions(c, v.lsp); },
             [](const Values& v, const Io& io) { return lspCommand(v.lsp, io.err); }},
     Command{"debug", "Debug a program: breakpoints, stepping, and stepping backwards",
-            [](CLI::App* c, Values& v) { addDebugOptions(c, v.debug); },
-            [](const Values& v, const Io& io) { return debugCommand(v.debug, io.in, io.out, io.err); }},
+            RS_IN_HELPER([](CLI::App* c, Values& v) { addDebugOptions(c, v.debug); }),
+            RS_IN_HELPER([](const Values& v, const Io& io) { return debugCommand(v.debug, io.in, io.out, io.err); }),
+            true},
     Command{"dap", "Run the debug adapter (Debug Adapter Protocol) on stdin/stdout, for editors",
             [](CLI::App* c, Values&) { addDapOptions(c); }, [](const Values&, const Io& io) { return dapCommand(io.err); }},
     Command{"help", "Explain the instruction set, or one instruction",
@@ -109,6 +121,7 @@ constexpr std::array kCommands{
             [](CLI::App* c, Values& v) { addVersionOptions(c, v.versionFormat); },
             [](const Values& v, const Io& io) { return versionCommand(v.versionFormat, io.out); }},
 };
+#undef RS_IN_HELPER
 
 }  // namespace
 
@@ -121,7 +134,7 @@ CommandLine::CommandLine() : app_{std::string(kRobotsimHelp)} {
               "cells is.");
   for (const Command& command : kCommands) {
     CLI::App* cmd = app_.add_subcommand(std::string(command.name), std::string(command.help));
-    command.addOptions(cmd, values_);
+    if (command.addOptions != nullptr) command.addOptions(cmd, values_);
     subcommands_.push_back(cmd);
   }
 }

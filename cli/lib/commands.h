@@ -61,8 +61,14 @@ struct CommandStreams {
 struct Command {
   std::string_view name;
   std::string_view help;  ///< one line: `robotsim --help`, the man page's NAME
+  /// Null in the main binary's copy of the table for a row run by a helper.
   void (*addOptions)(CLI::App* cmd, CommandValues& values);
-  int (*run)(const CommandValues& values, const CommandStreams& io);  ///< the exit code
+  /// The exit code. Null in the main binary's copy for a row run by a helper.
+  int (*run)(const CommandValues& values, const CommandStreams& io);
+  /// Needs the renderer, the HTTP server or a terminal library: the
+  /// installed `robotsim` execs its helper `robotsim-NAME` (cli/lib/helpers.h),
+  /// which links them, so that no other command loads them.
+  bool inHelper = false;
 };
 
 /// Every command, in the order `robotsim --help` lists them.

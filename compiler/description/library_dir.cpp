@@ -5,9 +5,14 @@
 #include "base/self_path.h"
 
 // Set by CMake (CMakeLists.txt, "install"): the library's folder relative
-// to the executable's, in an installed prefix and in a flat folder.
+// to the executable's, in an installed prefix (from the command's folder,
+// and from the helpers' LIBEXECDIR/robotsim), and in a flat folder (and
+// from its libexec/robotsim: the build tree's helpers).
 #ifndef ROBOTSIM_LIBRARY_FROM_BINDIR
 #error "ROBOTSIM_LIBRARY_FROM_BINDIR: the build defines it (CMakeLists.txt)"
+#endif
+#ifndef ROBOTSIM_LIBRARY_FROM_LIBEXECDIR
+#error "ROBOTSIM_LIBRARY_FROM_LIBEXECDIR: the build defines it (CMakeLists.txt)"
 #endif
 #ifndef ROBOTSIM_LIBRARY_FROM_PREFIX
 #error "ROBOTSIM_LIBRARY_FROM_PREFIX: the build defines it (CMakeLists.txt)"
@@ -22,7 +27,9 @@ std::vector<fs::path> libraryDirCandidates() {
   if (exe.empty()) return {};
   const fs::path dir = exe.parent_path();
   return {(dir / ROBOTSIM_LIBRARY_FROM_BINDIR).lexically_normal(),
-          (dir / ROBOTSIM_LIBRARY_FROM_PREFIX).lexically_normal()};
+          (dir / ROBOTSIM_LIBRARY_FROM_PREFIX).lexically_normal(),
+          (dir / ROBOTSIM_LIBRARY_FROM_LIBEXECDIR).lexically_normal(),
+          (dir / "../.." / ROBOTSIM_LIBRARY_FROM_PREFIX).lexically_normal()};
 }
 
 std::optional<fs::path> libraryDir() {
