@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <string_view>
 
 #include "base/seconds.h"
 #include "runtime/render/palette.h"
@@ -305,6 +306,22 @@ cairo_status_t appendChartBytes(void* closure, const unsigned char* data, unsign
   return CAIRO_STATUS_SUCCESS;
 }
 
+// cairo numbers the SVG's surface ("<g id=\"surface6\">") with a counter
+// of the whole process: the chart always says surface1, so that the same
+// run gives the same bytes in one process as in a fresh one.
+void sameSurfaceId(std::vector<std::uint8_t>& svg) {
+  const std::string_view text(reinterpret_cast<const char*>(svg.data()), svg.size());
+  constexpr std::string_view kOpen = "<g id=\"surface";
+  const std::size_t at = text.find(kOpen);
+  if (at == std::string_view::npos) return;
+  const std::size_t digits = at + kOpen.size();
+  std::size_t end = digits;
+  while (end < text.size() && text[end] >= '0' && text[end] <= '9') ++end;
+  if (end == digits || end >= text.size() || text[end] != '"') return;
+  svg.erase(svg.begin() + static_cast<std::ptrdiff_t>(digits), svg.begin() + static_cast<std::ptrdiff_t>(end));
+  svg.insert(svg.begin() + static_cast<std::ptrdiff_t>(digits), '1');
+}
+
 Encoded chartFailed(cairo_status_t status) { return {{}, std::string("cairo: ") + cairo_status_to_string(status)}; }
 
 }  // namespace
@@ -352,6 +369,7 @@ Encoded encodeChart(const Chart& chart, const ChartLayout& layout, ImageFormat f
     cairo_surface_finish(surface.get());
     if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
       return chartFailed(cairo_surface_status(surface.get()));
+    sameSurfaceId(result.bytes);
     return result;
   }
   cairo_surface_flush(surface.get());

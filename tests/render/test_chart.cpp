@@ -179,7 +179,8 @@ TEST_CASE("plot's CSV: motors, TCP, I/O and lines equal the values worked out by
 
 TEST_CASE("plot --every samples at that interval; a gripper's take shows in held", "[render][chart][cli]") {
   const TempDir dir;
-  // examples/gantry_pick.rsp's first pick: block 1 taken at the end of the
+  // examples/gantry_pick.rsp's first pick: its first block (object 2, as
+  // `describe gantry-cell` numbers it) taken at the end of the
   // closing move (2.8 + 1.8625 + 0.5 = 5.1625 s), carried until the gripper
   // opens over the right pallet.
   const auto r = runCli({"plot", rendertest::kSourceDir + "/examples/gantry_pick.rsp", "--cell", "gantry-cell",
@@ -194,7 +195,7 @@ TEST_CASE("plot --every samples at that interval; a gripper's take shows in held
   for (const auto& row : t.rows) {
     const std::int64_t at = chartMicros(row.at("time_s"));
     if (at <= 5'000'000) CHECK(row.at("held") == "0");
-    if (at >= 5'250'000 && at <= 7'000'000) CHECK(row.at("held") == "1");
+    if (at >= 5'250'000 && at <= 7'000'000) CHECK(row.at("held") == "2");  // block 1 is object 2, after pallet 1
   }
 }
 
