@@ -32,10 +32,14 @@ std::vector<fs::path> libraryDirCandidates() {
           (dir / "../.." / ROBOTSIM_LIBRARY_FROM_PREFIX).lexically_normal()};
 }
 
+// Links resolved: in the build tree the library's files are the source's
+// stdlib/ (an editor's go-to-definition lands on the file a developer edits).
 std::optional<fs::path> libraryDir() {
   for (const fs::path& candidate : libraryDirCandidates()) {
     std::error_code ec;
-    if (fs::is_directory(candidate, ec)) return candidate;
+    if (!fs::is_directory(candidate, ec)) continue;
+    const fs::path real = fs::canonical(candidate, ec);
+    return ec ? candidate : real;
   }
   return std::nullopt;
 }

@@ -20,7 +20,8 @@ namespace rs::compiler {
 /// when the system will not say where the executable is.
 std::vector<std::filesystem::path> libraryDirCandidates();
 
-/// The first of libraryDirCandidates() that is a folder, or nullopt.
+/// The first of libraryDirCandidates() that is a folder, links resolved
+/// (the build tree's gives the source's stdlib/), or nullopt.
 std::optional<std::filesystem::path> libraryDir();
 
 }  // namespace rs::compiler
