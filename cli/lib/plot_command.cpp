@@ -148,13 +148,13 @@ int plotCommand(const PlotOptions& o, std::ostream& out, std::ostream& err) {
     what = fmt::format("{} samples", chart.times.size());
   } else {
     const render::ChartLayout layout = render::chartLayout(chart, o.width);
-    render::Encoded encoded =
+    diag::Result<std::vector<std::uint8_t>> encoded =
         render::encodeChart(chart, layout, format == "png" ? render::ImageFormat::Png : render::ImageFormat::Svg);
-    if (encoded.bytes.empty()) {
-      err << fmt::format("{}: error: {}\n", base::safeText(o.output), encoded.error);
+    if (!encoded) {
+      err << fmt::format("{}: error: {}\n", base::safeText(o.output), encoded.failure().message);
       return kExitBadInput;
     }
-    bytes = std::move(encoded.bytes);
+    bytes = std::move(encoded).value();
     what = fmt::format("{}x{} pixels, {} samples", layout.width, layout.height, chart.times.size());
   }
   std::string error;

@@ -213,9 +213,9 @@ Json animationModel(const AnimationInput& input, const Frames& frames) {
   if (!input.warning.empty()) model["run"]["warning"] = input.warning;  // only when there is one
   if (input.chart) {
     const ChartLayout layout = chartLayout(*input.chart);
-    const Encoded svg = encodeChart(*input.chart, layout, ImageFormat::Svg);
-    if (!svg.bytes.empty())
-      model["chart"] = {{"svg", std::string(svg.bytes.begin(), svg.bytes.end())},
+    const diag::Result<std::vector<std::uint8_t>> svg = encodeChart(*input.chart, layout, ImageFormat::Svg);
+    if (svg)
+      model["chart"] = {{"svg", std::string(svg->begin(), svg->end())},
                         {"width", layout.width},
                         {"height", layout.height},
                         {"left", layout.left},

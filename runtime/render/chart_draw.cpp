@@ -322,7 +322,9 @@ void sameSurfaceId(std::vector<std::uint8_t>& svg) {
   svg.insert(svg.begin() + static_cast<std::ptrdiff_t>(digits), '1');
 }
 
-Encoded chartFailed(cairo_status_t status) { return {{}, std::string("cairo: ") + cairo_status_to_string(status)}; }
+diag::Diagnostic chartFailed(cairo_status_t status) {
+  return diag::refusal(std::string("cairo: ") + cairo_status_to_string(status));
+}
 
 }  // namespace
 
@@ -351,14 +353,15 @@ ChartLayout chartLayout(const Chart& chart, int width) {
   return layout;
 }
 
-Encoded encodeChart(const Chart& chart, const ChartLayout& layout, ImageFormat format) {
+diag::Result<std::vector<std::uint8_t>> encodeChart(const Chart& chart, const ChartLayout& layout,
+                                                    ImageFormat format) {
   if (layout.width <= 0 || layout.height <= 0 || layout.width > kChartMaxWidth || layout.height > kChartMaxWidth)
-    return {{}, "chart size out of range"};
-  Encoded result;
+    return diag::refusal("chart size out of range");
+  std::vector<std::uint8_t> bytes;
   std::unique_ptr<cairo_surface_t, ChartSurfaceFree> surface(
       format == ImageFormat::Png
           ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height)
-          : cairo_svg_surface_create_for_stream(appendChartBytes, &result.bytes, layout.width, layout.height));
+          : cairo_svg_surface_create_for_stream(appendChartBytes, &bytes, layout.width, layout.height));
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return chartFailed(cairo_surface_status(surface.get()));
   {
     std::unique_ptr<cairo_t, ChartContextFree> cr(cairo_create(surface.get()));
@@ -369,13 +372,13 @@ Encoded encodeChart(const Chart& chart, const ChartLayout& layout, ImageFormat f
     cairo_surface_finish(surface.get());
     if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
       return chartFailed(cairo_surface_status(surface.get()));
-    sameSurfaceId(result.bytes);
-    return result;
+    sameSurfaceId(bytes);
+    return bytes;
   }
   cairo_surface_flush(surface.get());
   const unsigned char* data = cairo_image_surface_get_data(surface.get());
   const int stride = cairo_image_surface_get_stride(surface.get());
-  result.bytes = encodePng(layout.width, layout.height, [&](int y, std::uint8_t* out) {
+  bytes = encodePng(layout.width, layout.height, [&](int y, std::uint8_t* out) {
     const unsigned char* row = data + static_cast<std::ptrdiff_t>(y) * stride;
     for (int x = 0; x < layout.width; ++x, out += 3) {
       std::uint32_t px;
@@ -385,8 +388,8 @@ Encoded encodeChart(const Chart& chart, const ChartLayout& layout, ImageFormat f
       out[2] = static_cast<std::uint8_t>(px);
     }
   });
-  if (result.bytes.empty()) return {{}, "zlib: cannot compress the image"};
-  return result;
+  if (bytes.empty()) return diag::refusal("zlib: cannot compress the image");
+  return bytes;
 }
 
 }  // namespace rs::render

@@ -41,7 +41,8 @@ inline constexpr int kChartMaxWidth = 16384;
 ChartLayout chartLayout(const Chart& chart, int width = kChartWidth);
 
 /// The chart as a PNG or SVG file's bytes (the same inputs give the same bytes).
-Encoded encodeChart(const Chart& chart, const ChartLayout& layout, ImageFormat format);
+diag::Result<std::vector<std::uint8_t>> encodeChart(const Chart& chart, const ChartLayout& layout,
+                                                    ImageFormat format);
 
 /// The colours of a chart, for the page and for tests that read a picture.
 namespace chart_colors {
