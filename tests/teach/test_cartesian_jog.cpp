@@ -130,7 +130,7 @@ TEST_CASE("world jog: ten steps of +10 along X move the tool 100 along the world
   CHECK(p.state().message.rfind("world jog X +10 length units: tool centre point at ", 0) == 0);
 }
 
-TEST_CASE("tool jog: +10 along the tool's z moves along the approach; a turn about the world's Y keeps the point",
+TEST_CASE("tool jog: +10 along the tool's z moves along the approach, a turn about the world's Y keeps the point",
           "[teach][jog]") {
   JogFixture f("puma-cell");
   Pendant& p = *f.pendant;

@@ -238,7 +238,7 @@ TEST_CASE("tui: l reads the file again after an edit elsewhere, and teaching goe
   CHECK(f.text() == kProgram + "A          0     0     0    0\n; an editor was here\n");
 }
 
-TEST_CASE("tui: m switches the jog mode; in world the arrows select an axis and jog the tool along it",
+TEST_CASE("tui: m switches the jog mode, in world the arrows select an axis and jog the tool along it",
           "[teach][tui][jog]") {
   Fixture f;
   f.press({"m"});
