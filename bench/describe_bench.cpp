@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
   state.gripper = rs::teach::GripperState::Closed;
   for (int p = 0; p < 30; ++p) state.points.push_back({fmt::format("P{}", p), {p, -p, 10 * p, 0, 120}, 10u + p, true});
   state.message = "taught P29 = 29 -29 290 0 120 (written to examples/pick_and_place.rsp)";
-  const rs::teach::tui::Selection selection{0, 20, 10, false};
+  const rs::teach::tui::Selection selection{.mode = rs::teach::JogMode::Joint, .motor = 0, .axis = 0, .point = 20, .step = 10, .help = false};
   measure("terminal pendant screen, 80x24, 30 points", reps, args.smoke ? 100 : 10000, [&] {
     sink += static_cast<double>(rs::teach::tui::layoutScreen(state, selection, {}, "", 80, 24).marks.size());
   });

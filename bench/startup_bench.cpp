@@ -17,23 +17,6 @@ namespace {
 
 constexpr double kStartupTargetRatio = 2.0;
 constexpr double kFixedPeakBeforeMiB = 13.0;  // the one-line compile before issue 25 (docs/performance.md)
-constexpr const char* kGnuTime = "/usr/bin/time";
-
-// The peak RSS of `argv` in KiB, as GNU time reads it with wait4 from a
-// child it forked itself: our own wait4 would report at least this driver's
-// peak (timing.h), larger than what is measured here.
-long peakRssKiBByTime(const Options& options, const std::vector<std::string>& argv) {
-  const std::string report = options.workDir + "/startup-rss.txt";
-  std::vector<std::string> timed{kGnuTime, "-f", "%M", "-o", report};
-  timed.insert(timed.end(), argv.begin(), argv.end());
-  const ProcessRun run = runProcess(timed);
-  if (run.exitCode != 0) throw std::runtime_error(fmt::format("{} exited {}", argv.front(), run.exitCode));
-  std::ifstream in(report);
-  long kib = 0;
-  if (!(in >> kib) || kib <= 0) throw std::runtime_error("GNU time wrote no peak RSS to " + report);
-  return kib;
-}
-
 }  // namespace
 
 nlohmann::json benchStartupPeers(const Options& options) {
@@ -72,7 +55,7 @@ nlohmann::json benchStartupPeers(const Options& options) {
   }
   long least = 0;
   for (int i = 0; i < options.reps; ++i) {
-    const long kib = peakRssKiBByTime(options, {options.robotsim, "compile", one, "-o", image});
+    const long kib = peakRssKiBByGnuTime(options.workDir, {options.robotsim, "compile", one, "-o", image}, 0);
     least = least == 0 ? kib : std::min(least, kib);
   }
   const double mib = static_cast<double>(least) / 1024;

@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstring>
 #include <ctime>
+#include <fstream>
 #include <stdexcept>
 
 extern char** environ;
@@ -122,6 +123,28 @@ long selfPeakRssKiB() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss;
+}
+
+long peakRssKiBByGnuTime(const std::string& workDir, const std::vector<std::string>& argv, int exitCode) {
+  const std::string report = workDir + "/peak-rss.txt";
+  std::vector<std::string> timed{kGnuTime, "-f", "%M", "-o", report};
+  timed.insert(timed.end(), argv.begin(), argv.end());
+  const ProcessRun run = runProcess(timed);
+  if (run.exitCode != exitCode)
+    throw std::runtime_error(fmt::format("{} exited {}, not {}", argv.front(), run.exitCode, exitCode));
+  // The last line: GNU time writes "Command exited with non-zero status N" before it.
+  std::ifstream in(report);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  long kib = 0;
+  try {
+    kib = std::stol(last);
+  } catch (const std::exception&) {
+    kib = 0;
+  }
+  if (kib <= 0) throw std::runtime_error("GNU time (/usr/bin/time) wrote no peak RSS to " + report);
+  return kib;
 }
 
 }  // namespace rs::bench

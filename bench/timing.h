@@ -52,6 +52,14 @@ struct ProcessRun {
 // it is the child's own only when larger than selfPeakRssKiB() was.
 long selfPeakRssKiB();
 
+/// The child's own peak RSS in KiB, as GNU time (/usr/bin/time, Debian's
+/// `time`) reads it with wait4 from a child it forked itself (so not
+/// raised to this driver's, as ProcessRun::maxRssKiB is). Its report goes
+/// to a file in `workDir`. Throws when the command does not exit with
+/// `exitCode` or GNU time reports nothing.
+inline constexpr const char* kGnuTime = "/usr/bin/time";
+long peakRssKiBByGnuTime(const std::string& workDir, const std::vector<std::string>& argv, int exitCode);
+
 /// Runs argv[0] (searched in PATH when it has no slash) with stdin, stdout
 /// and stderr on /dev/null and waits for it. Throws std::runtime_error when
 /// it cannot be spawned.

@@ -26,10 +26,13 @@ std::vector<fs::path> libraryDirCandidates() {
   const fs::path exe = base::runningExecutable();
   if (exe.empty()) return {};
   const fs::path dir = exe.parent_path();
+  // A helper program (robotsim-render and its links) looks from LIBEXECDIR/robotsim;
+  // robotsim itself never does, so a lone copy of it finds no library two folders up.
+  if (exe.filename().string().starts_with("robotsim-"))
+    return {(dir / ROBOTSIM_LIBRARY_FROM_LIBEXECDIR).lexically_normal(),
+            (dir / "../.." / ROBOTSIM_LIBRARY_FROM_PREFIX).lexically_normal()};
   return {(dir / ROBOTSIM_LIBRARY_FROM_BINDIR).lexically_normal(),
-          (dir / ROBOTSIM_LIBRARY_FROM_PREFIX).lexically_normal(),
-          (dir / ROBOTSIM_LIBRARY_FROM_LIBEXECDIR).lexically_normal(),
-          (dir / "../.." / ROBOTSIM_LIBRARY_FROM_PREFIX).lexically_normal()};
+          (dir / ROBOTSIM_LIBRARY_FROM_PREFIX).lexically_normal()};
 }
 
 // Links resolved: in the build tree the library's files are the source's

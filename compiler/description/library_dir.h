@@ -14,10 +14,11 @@ namespace rs::compiler {
 /// running executable's folder EXE: EXE/../share/robotsim/stdlib (an
 /// installed prefix: bin/ beside share/; the relative path is CMake's, from
 /// GNUInstallDirs) and EXE/share/robotsim/stdlib (a folder holding the
-/// executable and share/, as the build tree is laid out); then the same
-/// two from a helper program's folder, LIBEXECDIR/robotsim (render,
-/// animate, plot, teach and debug run there: cli/lib/helpers.h). Empty
-/// when the system will not say where the executable is.
+/// executable and share/, as the build tree is laid out). A helper program
+/// (`robotsim-NAME`, in LIBEXECDIR/robotsim: render, animate, plot, teach
+/// and debug run there, cli/lib/helpers.h) looks instead from its folder to
+/// the installed library and to the build tree's (EXE/../../share/...).
+/// Empty when the system will not say where the executable is.
 std::vector<std::filesystem::path> libraryDirCandidates();
 
 /// The first of libraryDirCandidates() that is a folder, links resolved

@@ -85,10 +85,13 @@ const std::string_view kScript = R"JS('use strict';
     if (t <= mv.start[i]) return from;
     if (t >= mv.end[i]) return to;
     const lock = mv.lock ? mv.lock[i] : 0;  // 1 lock-step, 2 lock-step leading (motion.h)
-    const part = BigInt(Math.abs(to - from)) * BigInt(t - mv.start[i]), span = BigInt(mv.end[i] - mv.start[i]);
+    // The machine's clock is whole microseconds; the page's time between them
+    // (playback, a click on the chart) stands at the one before.
+    const elapsed = Math.floor(t - mv.start[i]);
+    const part = BigInt(Math.abs(to - from)) * BigInt(elapsed), span = BigInt(mv.end[i] - mv.start[i]);
     const covered = lock === 2 ? Number((part + span - 1n) / span)
         : lock === 1 ? Number(part / span)
-        : coveredAt(motor, Math.abs(to - from), t - mv.start[i]);
+        : coveredAt(motor, Math.abs(to - from), elapsed);
     return to > from ? from + covered : from - covered;
   }
   const current = { enc: new Int32Array(motorCount), outputs: 0, inputs: 0, view: [0, 0, 0], window: [0, 0, 0] };

@@ -117,7 +117,7 @@ TEST_CASE("docs/models.md's table of the library is what robotsim list prints", 
   }
 }
 
-TEST_CASE("robotsim list --lib: the directory joins the path; a name found first hides a later one", "[cli][list]") {
+TEST_CASE("robotsim list --lib: the directory joins the path, and a name found first hides a later one", "[cli][list]") {
   ::unsetenv("ROBOTSIM_PATH");
   const rs::testing::TempDir dir;
   std::filesystem::create_directories(dir.path() / "objects");

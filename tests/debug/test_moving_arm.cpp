@@ -121,7 +121,7 @@ TEST_CASE("debug: break collision stops at the moment of the first contact", "[d
   CHECK(r.out.find("2 block at (200.000, 30.000, 700.000), centre (220.000, 50.000, 680.000)\n") != std::string::npos);
 }
 
-TEST_CASE("debug: a step over a close that takes nothing says so; break warning stops there", "[debug][moving-arm]") {
+TEST_CASE("debug: a step over a close that takes nothing says so, and break warning stops there", "[debug][moving-arm]") {
   const TempDir dir;
   // Down 1100 counts: the tool centre point at y 90, 40 above the block's
   // centre (y 50) and 20 above its top (y 70), when line 3 closes.

@@ -72,7 +72,7 @@ void checkProgram(const rs::runtime::RunSpec& spec, std::mt19937_64& rng) {
     if (stood + 1 == timed.interpreter().steps()) {  // t falls between two instructions: the session stands at t
       CHECK(session.run().rig().clock() == t);
       Run exact(spec);
-      exact.step(stood);
+      exact.runUntil({.moreSteps = stood});
       REQUIRE(session.run().snapshot() == exact.snapshot());
     } else {
       REQUIRE(session.run().snapshot() == timed.snapshot());

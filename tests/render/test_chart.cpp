@@ -177,7 +177,7 @@ TEST_CASE("plot's CSV: motors, TCP, I/O and lines equal the values worked out by
   }
 }
 
-TEST_CASE("plot --every samples at that interval; a gripper's take shows in held", "[render][chart][cli]") {
+TEST_CASE("plot --every samples at that interval, and a gripper's take shows in held", "[render][chart][cli]") {
   const TempDir dir;
   // examples/gantry_pick.rsp's first pick: its first block (object 2, as
   // `describe gantry-cell` numbers it) taken at the end of the
@@ -237,7 +237,7 @@ TEST_CASE("a chart marks a collision within its move and the empty grasp at its 
   }
 }
 
-TEST_CASE("plot writes the same bytes for the same run; the PNG decodes", "[render][chart][cli]") {
+TEST_CASE("plot writes the same bytes for the same run, and the PNG decodes", "[render][chart][cli]") {
   const TempDir dir;
   const std::string prog = dir.write("graze.rsp", kChartGrazeProgram);
   for (const char* ext : {"svg", "png"}) {
@@ -254,8 +254,9 @@ TEST_CASE("plot writes the same bytes for the same run; the PNG decodes", "[rend
   }
   CHECK(readBytes(dir.file("a.svg")).rfind("<?xml", 0) == 0);
   const std::string png = readBytes(dir.file("a.png"));
-  const rs::render::Decoded d = rs::render::decodePng({png.begin(), png.end()});
-  REQUIRE(d.error.empty());
+  const rs::diag::Result<rs::render::Decoded> decoded = rs::render::decodePng({png.begin(), png.end()});
+  REQUIRE(decoded);
+  const rs::render::Decoded& d = *decoded;
   CHECK(d.width == 1200);
   // The height the layout gives: 4 lanes of 56, 84 and 48 px... worked out
   // from the lanes rather than trusted: X, Z, Y (3 motors), TCP, gripper,
@@ -277,7 +278,7 @@ TEST_CASE("plot writes the same bytes for the same run; the PNG decodes", "[rend
                             dir.file("w.png")});
   REQUIRE(wide.code == 0);
   const std::string w = readBytes(dir.file("w.png"));
-  CHECK(rs::render::decodePng({w.begin(), w.end()}).width == 800);
+  CHECK(rs::render::decodePng({w.begin(), w.end()})->width == 800);
 }
 
 TEST_CASE("the chart's SVG, read by python3's XML parser, has every series and mark where the samples put them",

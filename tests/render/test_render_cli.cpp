@@ -157,8 +157,14 @@ TEST_CASE("animate writes one self-contained page with the run in it", "[render]
   const std::string html = readBytes(dir.file("run.html"));
   CHECK(html.rfind("<!DOCTYPE html>", 0) == 0);
   // Nothing to fetch: no external references, and a policy that forbids them.
+  // The chart's SVG declares its XML namespaces, names that are never fetched:
+  // those two, as the model's JSON escapes them, are the only http:// allowed.
+  std::string fetchable = html;
+  for (const std::string ns : {"xmlns=\\\"http://www.w3.org/2000/svg\\\"",
+                               "xmlns:xlink=\\\"http://www.w3.org/1999/xlink\\\""})
+    for (std::size_t at; (at = fetchable.find(ns)) != std::string::npos;) fetchable.erase(at, ns.size());
   for (const char* ref : {" src=", " href=", "http://", "https://", "@import", "url("})
-    CHECK(html.find(ref) == std::string::npos);
+    CHECK(fetchable.find(ref) == std::string::npos);
   CHECK(html.find("default-src 'none'") != std::string::npos);
   const auto model = pageModel(html);
   CHECK(model["cell"] == "scara-pick");
