@@ -54,6 +54,10 @@ class Machine {
   /// block lifted off a pallet does not dip into it). Targets were already
   /// checked against the ranges.
   virtual Status moveLockStep(std::span<const std::int32_t> targets, std::uint32_t lead) = 0;
+  /// The lock-step moves of one straight line follow: a machine that can
+  /// answer where a motor was at an earlier moment of the line (the
+  /// simulated one, for a debugger stopped inside it) keeps them from here.
+  virtual void beginPath() {}
   /// MOVES: the tool centre point along a straight line to the pose that
   /// `targets` put it at (APPRO, DEPART: `distance` length units along the
   /// tool's approach axis, back for a negative one). Only a machine that

@@ -54,6 +54,7 @@ vm::Status CellMachine::runPath(const std::optional<workcell::LineProblem>& prob
   lineFrom_.assign(from.begin(), from.end());
   lineTo_.assign(to.begin(), to.end());
   inLine_ = true;
+  motion_.beginPath();
   vm::Status status = vm::Status::ok();
   for (std::size_t k = 0; k < path_->size() && status; ++k) status = moveLockStep(path_->knot(k), path_->lead(k));
   inLine_ = false;

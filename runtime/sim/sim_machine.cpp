@@ -64,11 +64,11 @@ bool SimMachine::setInputNow(int input, bool on) {
 }
 
 SimMachine::State SimMachine::state() const {
-  return {positions_, segments_, now_, outputs_, inputs_, windowShift_, viewRotation_, schedule_.state()};
+  return {positions_, segments_, path_, now_, outputs_, inputs_, windowShift_, viewRotation_, schedule_.state()};
 }
 
 void SimMachine::restore(const State& s) {
-  positions_ = s.positions, segments_ = s.segments, now_ = s.now;
+  positions_ = s.positions, segments_ = s.segments, path_ = s.path, now_ = s.now;
   outputs_ = s.outputs, inputs_ = s.inputs;
   windowShift_ = s.windowShift, viewRotation_ = s.viewRotation;
   schedule_.restore(s.schedule);
@@ -103,6 +103,7 @@ Status SimMachine::moveTo(std::span<const std::int32_t> targets) {
     positions_[i] = targets[i];
     longest = std::max(longest, duration);
   }
+  path_.clear();
   advanceBy(longest);
   if (moveListener_) moveListener_();
   return Status::ok();
@@ -120,13 +121,22 @@ Status SimMachine::moveLockStep(std::span<const std::int32_t> targets, std::uint
     segments_[i] = {positions_[i], targets[i], now_, moves ? now_ + longest : now_, moves, moves && ahead};
     positions_[i] = targets[i];
   }
+  path_.insert(path_.end(), segments_.begin(), segments_.end());
   advanceBy(longest);
   if (moveListener_) moveListener_();
   return Status::ok();
 }
 
+void SimMachine::beginPath() { path_.clear(); }
+
 std::int32_t SimMachine::positionAt(std::size_t motor, Micros t) const {
   if (motor >= segments_.size()) return 0;
+  // Inside a line: the latest of its knots begun by t (the first when none is).
+  const std::size_t n = segments_.size();
+  for (std::size_t k = path_.size() / n; k-- > 0;) {
+    const MotorSegment& knot = path_[k * n + motor];
+    if (knot.start <= t || k == 0) return runtime::positionAt(knot, motors_[motor], t);
+  }
   return runtime::positionAt(segments_[motor], motors_[motor], t);
 }
 
@@ -137,6 +147,7 @@ Status SimMachine::reset() {
     positions_[i] = home_[i];
     segments_[i] = {home_[i], home_[i], now_, now_};
   }
+  path_.clear();
   return Status::ok();
 }
 

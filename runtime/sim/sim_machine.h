@@ -40,6 +40,9 @@ class SimMachine final : public vm::Machine {
   /// slowest at full speed can (lockStepTime), the `lead` motors a count
   /// ahead (MotorSegment::lead); the same faults as moveTo.
   vm::Status moveLockStep(std::span<const std::int32_t> targets, std::uint32_t lead) override;
+  /// The line's lock-step moves are kept from here until the next move of
+  /// another kind, so that positionAt answers inside any of them.
+  void beginPath() override;
   std::span<const std::int32_t> positions() const override { return positions_; }
 
   /// When the output changes state, the rules for it schedule their inputs;
@@ -77,9 +80,10 @@ class SimMachine final : public vm::Machine {
   /// The latest move of motor `motor` (index in motor-table order).
   const MotorSegment& segment(std::size_t motor) const { return segments_[motor]; }
   /// Encoder position of `motor` at time `t`: runtime::positionAt of its
-  /// latest segment. Before the segment began
-  /// it answers the segment's start (older moves are not kept); 0 for a
-  /// motor index out of range.
+  /// latest segment, or, inside a straight line, of the line's lock-step
+  /// move under way at `t`. Before the segment (or the line) began it
+  /// answers its start (older moves are not kept); 0 for a motor index out
+  /// of range.
   std::int32_t positionAt(std::size_t motor, vm::Micros t) const;
 
   CameraTriple windowShift() const { return windowShift_; }
@@ -96,6 +100,7 @@ class SimMachine final : public vm::Machine {
   struct State {
     std::vector<std::int32_t> positions;
     std::vector<MotorSegment> segments;
+    std::vector<MotorSegment> path;  ///< the line's lock-step moves, knot by knot (motors() each)
     vm::Micros now = 0;
     std::uint8_t outputs = 0, inputs = 0;
     CameraTriple windowShift, viewRotation;
@@ -118,6 +123,9 @@ class SimMachine final : public vm::Machine {
   std::vector<std::int32_t> positions_;
   std::vector<std::int32_t> home_;  // all zeros, for hardHome()
   std::vector<MotorSegment> segments_;
+  // The current straight line's lock-step moves, knot-major (beginPath);
+  // cleared, its capacity kept, by the next line or any other move.
+  std::vector<MotorSegment> path_;
   vm::Micros now_ = 0;
   std::uint8_t outputs_ = 0;
   std::uint8_t inputs_ = 0;

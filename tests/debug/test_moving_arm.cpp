@@ -14,6 +14,7 @@
 // stand beside the block, over the deck.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -137,4 +138,39 @@ TEST_CASE("debug: a step over a close that takes nothing says so, and break warn
   CHECK(r.out.find(note) > r.out.find("line 3 @3, step 2"));  // and not at the steps before
   CHECK(r.out.find("breakpoint 1 (warning: a gripper closing on nothing)\n" + note + "line 4 @4, step 3") !=
         std::string::npos);
+}
+
+// examples/straight_lift.rsp on xr4-cell: DEPART 50 runs from 2.311 s to
+// 2.731 s and lifts the tool centre point from y 810.05 to 860.11 (the
+// trace's poses), then MOVES TAKE brings it back down by 3.149 s. A stop
+// inside either is inside one of the line's many lock-step moves, not at
+// the line's last one: the pose is on the vertical line (x 240.1, z -40.2
+// within the line's bound of 0.1 plus a few counts) and rises, then falls,
+// with the time asked.
+TEST_CASE("debug: goto-time inside a straight line shows the pose on the line at that time", "[debug][moving-arm]") {
+  const TempDir dir;
+  const std::vector<double> times{2.35, 2.45, 2.55, 2.65, 2.80, 2.95, 3.10};
+  std::string commands;
+  for (double t : times) commands += "goto-time " + std::to_string(t) + "\nprint tcp\n";
+  const std::string cmds = dir.write("line.cmds", commands);
+  const CliResult r = runCli({"debug", std::string(ROBOTSIM_SOURCE_DIR) + "/examples/straight_lift.rsp", "-x", cmds});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  std::vector<double> ys;
+  std::size_t from = 0;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const std::size_t at = r.out.find("tcp = (", from);
+    REQUIRE(at != std::string::npos);
+    double x = 0, y = 0, z = 0;
+    REQUIRE(std::sscanf(r.out.c_str() + at, "tcp = (%lf, %lf, %lf)", &x, &y, &z) == 3);
+    CHECK(std::abs(x - 240.2) < 1.0);
+    CHECK(std::abs(z + 40.2) < 1.0);
+    CHECK(y > 810.0);
+    CHECK(y < 860.2);
+    ys.push_back(y);
+    from = at + 1;
+  }
+  // Up through DEPART (the first four), down through MOVES (the last three).
+  for (std::size_t i = 1; i < 4; ++i) CHECK(ys[i] > ys[i - 1] + 5.0);
+  for (std::size_t i = 5; i < ys.size(); ++i) CHECK(ys[i] < ys[i - 1] - 5.0);
 }
