@@ -95,8 +95,9 @@ TEST_CASE("robotsim list: every library file, one line each, and the path search
       ++files;
       const std::string name = e.path().stem().string();
       INFO(kind << " " << name);
+      const std::string& kindWord = kind;  // a lambda cannot capture a structured binding before C++20's clang 16
       CHECK(std::count_if(rows.begin(), rows.end(), [&](const ListedRow& row) {
-              return row.kind == kind && row.name == name && !row.what.empty();
+              return row.kind == kindWord && row.name == name && !row.what.empty();
             }) == 1);
     }
   CHECK(rows.size() == files);
