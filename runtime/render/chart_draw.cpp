@@ -1,18 +1,14 @@
 #include "runtime/render/chart_draw.h"
 
-#include <cairo-svg.h>
 #include <cairo.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <memory>
 #include <string_view>
 
 #include "base/seconds.h"
 #include "runtime/render/palette.h"
-#include "runtime/render/png.h"
 
 namespace rs::render {
 
@@ -26,13 +22,6 @@ constexpr double kLinesLane = 22, kAxis = 28, kNoteLine = 16, kChartBottom = 10;
 constexpr std::size_t kNotesShown = 6;  // marks listed under the axis; the rest counted
 constexpr double kSmallText = 11, kTitleText = 13;
 constexpr Rgb kGrid = {0x2A, 0x2F, 0x40};
-
-struct ChartSurfaceFree {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
-struct ChartContextFree {
-  void operator()(cairo_t* c) const { cairo_destroy(c); }
-};
 
 void chartColor(cairo_t* cr, Rgb c, double alpha = 1.0) {
   cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
@@ -300,12 +289,6 @@ void drawChart(cairo_t* cr, const Chart& chart, const ChartLayout& layout) {
   drawMarks(cr, chart, layout);
 }
 
-cairo_status_t appendChartBytes(void* closure, const unsigned char* data, unsigned int length) {
-  auto* out = static_cast<std::vector<std::uint8_t>*>(closure);
-  out->insert(out->end(), data, data + length);
-  return CAIRO_STATUS_SUCCESS;
-}
-
 // cairo numbers the SVG's surface ("<g id=\"surface6\">") with a counter
 // of the whole process: the chart always says surface1, so that the same
 // run gives the same bytes in one process as in a fresh one.
@@ -320,10 +303,6 @@ void sameSurfaceId(std::vector<std::uint8_t>& svg) {
   if (end == digits || end >= text.size() || text[end] != '"') return;
   svg.erase(svg.begin() + static_cast<std::ptrdiff_t>(digits), svg.begin() + static_cast<std::ptrdiff_t>(end));
   svg.insert(svg.begin() + static_cast<std::ptrdiff_t>(digits), '1');
-}
-
-diag::Diagnostic chartFailed(cairo_status_t status) {
-  return diag::refusal(std::string("cairo: ") + cairo_status_to_string(status));
 }
 
 }  // namespace
@@ -355,40 +334,10 @@ ChartLayout chartLayout(const Chart& chart, int width) {
 
 diag::Result<std::vector<std::uint8_t>> encodeChart(const Chart& chart, const ChartLayout& layout,
                                                     ImageFormat format) {
-  if (layout.width <= 0 || layout.height <= 0 || layout.width > kChartMaxWidth || layout.height > kChartMaxWidth)
-    return diag::refusal("chart size out of range");
-  std::vector<std::uint8_t> bytes;
-  std::unique_ptr<cairo_surface_t, ChartSurfaceFree> surface(
-      format == ImageFormat::Png
-          ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height)
-          : cairo_svg_surface_create_for_stream(appendChartBytes, &bytes, layout.width, layout.height));
-  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return chartFailed(cairo_surface_status(surface.get()));
-  {
-    std::unique_ptr<cairo_t, ChartContextFree> cr(cairo_create(surface.get()));
-    drawChart(cr.get(), chart, layout);
-    if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) return chartFailed(cairo_status(cr.get()));
-  }
-  if (format == ImageFormat::Svg) {
-    cairo_surface_finish(surface.get());
-    if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
-      return chartFailed(cairo_surface_status(surface.get()));
-    sameSurfaceId(bytes);
-    return bytes;
-  }
-  cairo_surface_flush(surface.get());
-  const unsigned char* data = cairo_image_surface_get_data(surface.get());
-  const int stride = cairo_image_surface_get_stride(surface.get());
-  bytes = encodePng(layout.width, layout.height, [&](int y, std::uint8_t* out) {
-    const unsigned char* row = data + static_cast<std::ptrdiff_t>(y) * stride;
-    for (int x = 0; x < layout.width; ++x, out += 3) {
-      std::uint32_t px;
-      std::memcpy(&px, row + 4 * x, 4);  // native-endian 0x00RRGGBB
-      out[0] = static_cast<std::uint8_t>(px >> 16);
-      out[1] = static_cast<std::uint8_t>(px >> 8);
-      out[2] = static_cast<std::uint8_t>(px);
-    }
-  });
-  if (bytes.empty()) return diag::refusal("zlib: cannot compress the image");
+  if (layout.width > kChartMaxWidth || layout.height > kChartMaxWidth) return diag::refusal("chart size out of range");
+  diag::Result<std::vector<std::uint8_t>> bytes =
+      encodeDrawing(layout.width, layout.height, format, [&](cairo_t* cr) { drawChart(cr, chart, layout); });
+  if (bytes && format == ImageFormat::Svg) sameSurfaceId(*bytes);
   return bytes;
 }
 

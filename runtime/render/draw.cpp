@@ -156,26 +156,26 @@ std::optional<ImageFormat> formatFromPath(std::string_view path) {
   return std::nullopt;
 }
 
-diag::Result<std::vector<std::uint8_t>> encodePicture(const Picture& picture, ImageFormat format) {
-  if (picture.width <= 0 || picture.height <= 0 || picture.width > 16384 || picture.height > 16384)
+diag::Result<std::vector<std::uint8_t>> encodeDrawing(int width, int height, ImageFormat format,
+                                                      const std::function<void(cairo_t*)>& paint) {
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
     return diag::refusal("image size out of range (1..16384 pixels)");
   std::vector<std::uint8_t> bytes;
-  Surface surface(format == ImageFormat::Png
-                      ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, picture.width, picture.height)
-                      : cairo_svg_surface_create_for_stream(appendBytes, &bytes, picture.width, picture.height));
+  Surface surface(format == ImageFormat::Png ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)
+                                             : cairo_svg_surface_create_for_stream(appendBytes, &bytes, width, height));
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return failed(cairo_surface_status(surface.get()));
   {
     Context cr(cairo_create(surface.get()));
-    draw(cr.get(), picture, format == ImageFormat::Svg);
+    paint(cr.get());
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) return failed(cairo_status(cr.get()));
   }
   if (format == ImageFormat::Png) {
     cairo_surface_flush(surface.get());
     const unsigned char* data = cairo_image_surface_get_data(surface.get());
     const int stride = cairo_image_surface_get_stride(surface.get());
-    bytes = encodePng(picture.width, picture.height, [&](int y, std::uint8_t* rgb) {
+    bytes = encodePng(width, height, [&](int y, std::uint8_t* rgb) {
       const unsigned char* row = data + static_cast<std::ptrdiff_t>(y) * stride;
-      for (int x = 0; x < picture.width; ++x, rgb += 3) {
+      for (int x = 0; x < width; ++x, rgb += 3) {
         std::uint32_t px;
         std::memcpy(&px, row + 4 * x, 4);  // native-endian 0x00RRGGBB
         rgb[0] = static_cast<std::uint8_t>(px >> 16);
@@ -189,6 +189,11 @@ diag::Result<std::vector<std::uint8_t>> encodePicture(const Picture& picture, Im
     if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return failed(cairo_surface_status(surface.get()));
   }
   return bytes;
+}
+
+diag::Result<std::vector<std::uint8_t>> encodePicture(const Picture& picture, ImageFormat format) {
+  return encodeDrawing(picture.width, picture.height, format,
+                       [&](cairo_t* cr) { draw(cr, picture, format == ImageFormat::Svg); });
 }
 
 diag::Result<Decoded> decodePng(const std::vector<std::uint8_t>& png) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,6 +12,8 @@
 
 #include "diag/result.h"
 #include "runtime/render/picture.h"
+
+typedef struct _cairo cairo_t;  // cairo.h's, so that this header needs none of cairo's
 
 namespace rs::render {
 
@@ -35,6 +38,12 @@ std::optional<ImageFormat> formatFromPath(std::string_view path);
 /// size out of range, cairo's or zlib's refusal) as a failure with no
 /// place: the caller names the output file.
 diag::Result<std::vector<std::uint8_t>> encodePicture(const Picture& picture, ImageFormat format);
+
+/// What `paint` draws on a `width` x `height` cairo surface (1..16384
+/// pixels), as PNG or SVG bytes, or why not: the one encoder of pictures
+/// and charts.
+diag::Result<std::vector<std::uint8_t>> encodeDrawing(int width, int height, ImageFormat format,
+                                                      const std::function<void(cairo_t*)>& paint);
 
 /// A decoded image, 8-bit RGB per pixel (for tests and tools).
 struct Decoded {
