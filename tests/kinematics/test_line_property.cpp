@@ -70,7 +70,7 @@ double lineDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Ei
 }  // namespace
 
 TEST_CASE("straight lines of every library arm stay within the bound and end on the point",
-          "[kinematics][straight][property]") {
+          "[kinematics][straight][property][slow]") {
   const int want = lineSamples();
   const auto files = kintest::libraryRobots();
   REQUIRE(files.size() >= 6);
