@@ -3,7 +3,7 @@
 // session on its stdin: initialize, the document opened, a hover (which
 // makes its analysis: the compile and the index of names), formatting,
 // then shutdown and exit; and the same session without the formatting. Their
-// peak RSS (wait4) and wall times, against the document's size: what
+// peak RSS (by GNU time) and wall times, against the document's size: what
 // formatting adds, and the whole. The document is written to the session
 // file as it is generated, so that the driver stays far smaller than the
 // server it measures. Every line of it is laid out anew (blanks before
@@ -94,10 +94,15 @@ nlohmann::json benchLspFormat(const Options& options) {
     document = static_cast<double>(writeSession(session, format, documentBytes));
     progress(format ? "open, format, exit" : "open, exit");
     const std::string reply = options.workDir + "/lsp_format_reply.bin";
-    const ProcessRun run =
-        runProcess({"sh", "-c", fmt::format("exec '{}' lsp < '{}' > '{}'", options.robotsim, session, reply)});
+    // The peak by GNU time, whose own wait4 sees robotsim alone: a small
+    // session's peak is below this driver's, which a spawned child's
+    // rusage would report instead.
+    const std::string report = options.workDir + "/lsp_format_peak.txt";
+    ProcessRun run = runProcess({"sh", "-c",
+                                 fmt::format("exec {} -f %M -o '{}' '{}' lsp < '{}' > '{}'", kGnuTime, report,
+                                             options.robotsim, session, reply)});
     if (run.exitCode != 0) throw std::runtime_error("robotsim lsp did not exit 0 on the formatting session");
-    if (run.maxRssKiB <= selfPeakRssKiB()) throw std::runtime_error("robotsim lsp's peak RSS is not measurable");
+    run.maxRssKiB = gnuTimePeakKiB(report);
     const std::uintmax_t replied = std::filesystem::file_size(reply);
     if (format && replied < documentBytes) throw std::runtime_error("the formatting answer is missing");
     if (!format && replied > 4096) throw std::runtime_error("the document was not opened as it should be");

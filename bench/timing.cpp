@@ -132,6 +132,10 @@ long peakRssKiBByGnuTime(const std::string& workDir, const std::vector<std::stri
   const ProcessRun run = runProcess(timed);
   if (run.exitCode != exitCode)
     throw std::runtime_error(fmt::format("{} exited {}, not {}", argv.front(), run.exitCode, exitCode));
+  return gnuTimePeakKiB(report);
+}
+
+long gnuTimePeakKiB(const std::string& report) {
   // The last line: GNU time writes "Command exited with non-zero status N" before it.
   std::ifstream in(report);
   std::string line, last;

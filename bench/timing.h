@@ -59,6 +59,8 @@ long selfPeakRssKiB();
 /// `exitCode` or GNU time reports nothing.
 inline constexpr const char* kGnuTime = "/usr/bin/time";
 long peakRssKiBByGnuTime(const std::string& workDir, const std::vector<std::string>& argv, int exitCode);
+/// The peak RSS that `/usr/bin/time -f %M -o REPORT` wrote, in KiB; throws if none.
+long gnuTimePeakKiB(const std::string& report);
 
 /// Runs argv[0] (searched in PATH when it has no slash) with stdin, stdout
 /// and stderr on /dev/null and waits for it. Throws std::runtime_error when

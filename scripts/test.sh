@@ -17,7 +17,9 @@ echo "== unit tests and fuzz targets under AddressSanitizer + UndefinedBehaviorS
 # slower here, and the same code), and so do the peak memory of
 # `robotsim test` on 100,000,000 instructions (the sanitizers' shadow memory
 # is no measure of robotsim's, and the run takes minutes here) and the tests
-# labelled slow (the collision differential test: tests/CMakeLists.txt).
+# labelled slow (the collision differential test: tests/CMakeLists.txt), and
+# the checks of the tree and its docs (labels layers and docs: scripts
+# reading files, the same in both builds).
 # Ninja as for build/ (scripts/build.sh says why); a build-asan/ already
 # configured keeps its generator.
 generator=()
@@ -26,4 +28,4 @@ CC=clang CXX=clang++ cmake -S . -B build-asan "${generator[@]}" -DCMAKE_BUILD_TY
   -DROBOTSIM_WERROR=ON >/dev/null
 cmake --build build-asan -j "$(nproc)" --target robotsim_tests robotsim_fuzzers
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest -j "$(nproc)" --output-on-failure -LE 'browser|vscode|slow' -E '1,000,000-line|100,000,000-instruction|run by its helper gives the bytes')
+  ctest -j "$(nproc)" --output-on-failure -LE 'browser|vscode|slow|layers|docs' -E '1,000,000-line|100,000,000-instruction|run by its helper gives the bytes')

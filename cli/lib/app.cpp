@@ -53,7 +53,8 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
   // Before the parser is made (a third of the start-up): the main binary's
   // table has no options for these rows, their helper parses its own.
   if (const Command* row = commandLeftToHelper(commandTable(), argc, argv)) return execHelper(row->name, argc, argv, err);
-  CommandLine commandLine;
+  // Only the named command's options: the others are never parsed.
+  CommandLine commandLine(argc >= 2 ? std::string_view(argv[1]) : std::string_view());
   CLI::App& app = commandLine.app();
   if (const std::optional<int> code = unknownCommand(app, argc, argv, err)) return *code;
   try {

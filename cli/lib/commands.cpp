@@ -127,14 +127,18 @@ constexpr std::array kCommands{
 
 std::span<const Command> commandTable() { return kCommands; }
 
-CommandLine::CommandLine() : app_{std::string(kRobotsimHelp)} {
+CommandLine::CommandLine() : CommandLine({}, true) {}
+
+CommandLine::CommandLine(std::string_view command) : CommandLine(command, false) {}
+
+CommandLine::CommandLine(std::string_view command, bool everyRow) : app_{std::string(kRobotsimHelp)} {
   app_.name("robotsim");
   app_.require_subcommand(1);
   app_.footer("robotsim --version (or robotsim version) prints the version and where the library of robots and "
               "cells is.");
-  for (const Command& command : kCommands) {
-    CLI::App* cmd = app_.add_subcommand(std::string(command.name), std::string(command.help));
-    if (command.addOptions != nullptr) command.addOptions(cmd, values_);
+  for (const Command& row : kCommands) {
+    CLI::App* cmd = app_.add_subcommand(std::string(row.name), std::string(row.help));
+    if (row.addOptions != nullptr && (everyRow || command == row.name)) row.addOptions(cmd, values_);
     subcommands_.push_back(cmd);
   }
 }

@@ -83,7 +83,12 @@ inline constexpr std::string_view kRobotsimHelp =
 /// pointers into `values`, so a CommandLine stays where it is made.
 class CommandLine {
  public:
+  /// Every row with its options (the man pages, the completions).
   CommandLine();
+  /// Every row, but only the row named `command` with its options: a run
+  /// parses one command, and adding the options of all of them was a fifth
+  /// of robotsim's start-up. An unknown name gives every row bare.
+  explicit CommandLine(std::string_view command);
   CommandLine(const CommandLine&) = delete;
   CommandLine& operator=(const CommandLine&) = delete;
 
@@ -96,6 +101,8 @@ class CommandLine {
   const Command* parsedCommand() const;
 
  private:
+  CommandLine(std::string_view command, bool everyRow);
+
   CommandValues values_;
   CLI::App app_;
   std::vector<CLI::App*> subcommands_;

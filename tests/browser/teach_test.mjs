@@ -261,7 +261,9 @@ try {
   fs.writeFileSync(program, theirs);
   await page.fill('#teachName', 'LATE');
   await page.click('#teach');
-  await page.waitForFunction(() => window.robotsim.state.failed, null, { timeout: 10000 });
+  // The jog's refusal above left the state failed: wait for the teach's own answer.
+  await page.waitForFunction((before) => window.robotsim.state.failed && window.robotsim.state.message !== before,
+                             refusedText, { timeout: 10000 });
   const refusal = await page.locator('#message').textContent();
   check(/changed on disk since teach read it \(someone edited it\)/.test(refusal), 'a write after an edit on disk is refused',
         refusal);

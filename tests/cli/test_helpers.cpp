@@ -1,6 +1,7 @@
 // The main binary and its helper executables (cli/lib/helpers.h): the main
 // binary loads none of the libraries the helpers need (ldd, checked against
-// the helper's own list so that the check can fail), a command run by a
+// the helper's own list so that the check can fail; a static build's loads
+// no shared library at all), a command run by a
 // helper gives the same bytes as the whole command run in-process, a
 // missing helper is a clear error, and an installed layout finds its helper.
 #include <catch2/catch.hpp>
@@ -52,6 +53,8 @@ TEST_CASE("the main binary links none of the libraries only the helpers use", "[
   REQUIRE(main.code == 0);
   REQUIRE(helper.code == 0);
   INFO("ldd robotsim:\n" << main.out);
+  // ROBOTSIM_STATIC (the default outside the sanitizer build): static-pie.
+  CHECK((main.out.find("statically linked") != std::string::npos) == bool(ROBOTSIM_STATIC_COMMAND));
   for (const char* library : {"libcairo", "libssl", "libncurses", "libedit.", "libbrotli", "libcpp-httplib", "libX11"}) {
     CAPTURE(library);
     CHECK(main.out.find(library) == std::string::npos);
