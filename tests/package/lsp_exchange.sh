@@ -14,20 +14,24 @@ shift
 : >"$log"
 coproc SERVER { "$@" 2>>"$log.stderr"; }
 server_pid=$SERVER_PID
+# bash unsets SERVER when the server exits, which it may do as soon as it
+# reads `exit`: keep the descriptors' numbers.
+server_out=${SERVER[0]}
+server_in=${SERVER[1]}
 
 send() {
-  printf 'Content-Length: %d\r\n\r\n%s' "${#1}" "$1" >&"${SERVER[1]}"
+  printf 'Content-Length: %d\r\n\r\n%s' "${#1}" "$1" >&"$server_in"
 }
 # One message's body into $body; fails after 30 s of silence.
 receive() {
   local line length=""
-  while IFS= read -r -t 30 line <&"${SERVER[0]}"; do
+  while IFS= read -r -t 30 line <&"$server_out"; do
     line=${line%$'\r'}
     [ -z "$line" ] && break
     case "$line" in Content-Length:*) length=${line#Content-Length: } ;; esac
   done
   [ -n "$length" ] || { echo "no message header from the server" >>"$log"; return 1; }
-  IFS= read -r -t 30 -N "$length" body <&"${SERVER[0]}"
+  IFS= read -r -t 30 -N "$length" body <&"$server_out"
   printf '%s\n' "$body" >>"$log"
 }
 # Messages until one matches the pattern (at most 50).
@@ -54,5 +58,5 @@ esac
 send '{"jsonrpc":"2.0","id":2,"method":"shutdown"}'
 receive_until '*"id":2*'
 send '{"jsonrpc":"2.0","method":"exit"}'
-eval "exec ${SERVER[1]}>&-"
+eval "exec ${server_in}>&-"
 wait "$server_pid"
