@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "base/text.h"
 #include "dap/message_reader.h"
@@ -19,10 +22,25 @@ namespace {
 constexpr int kThread = 1;
 
 // A request's arguments, read with nlohmann's checked accessors: a wrong
-// type throws Json::exception, which handle() answers as a bad request.
+// type throws, which handle() answers as a bad request. The launch
+// arguments' own readers name the argument and what it takes, instead of
+// nlohmann's "[json.exception.type_error.302] type must be string".
+struct BadArgument : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 std::string stringArg(const Json& args, const char* name, std::string fallback = {}) {
   if (!args.contains(name) || args[name].is_null()) return fallback;
+  if (!args[name].is_string()) throw BadArgument(fmt::format("{} is a string, not {}", name, args[name].type_name()));
   return args.at(name).get<std::string>();
+}
+
+std::vector<std::string> stringsArg(const Json& args, const char* name) {
+  if (!args.contains(name) || args[name].is_null()) return {};
+  const Json& list = args[name];
+  if (!list.is_array() || !std::all_of(list.begin(), list.end(), [](const Json& j) { return j.is_string(); }))
+    throw BadArgument(fmt::format("{} is a list of strings", name));
+  return list.get<std::vector<std::string>>();
 }
 
 }  // namespace
@@ -81,6 +99,9 @@ void Adapter::handle(const Json& request) {
   } catch (const Json::exception& e) {
     // nlohmann-json reports a missing or mistyped argument by exception: at
     // this edge it becomes the client's error, never the adapter's end.
+    reply = Error{fmt::format("bad arguments for {}: {}", command, e.what())};
+    pending_ = nullptr;
+  } catch (const BadArgument& e) {
     reply = Error{fmt::format("bad arguments for {}: {}", command, e.what())};
     pending_ = nullptr;
   }
@@ -179,11 +200,11 @@ Adapter::Reply Adapter::launch(const Json& args) {
   program.file = stringArg(args, "program");
   if (program.file.empty()) return Error{"launch needs a program (the path of a .rsp or .rsb file)"};
   program.cell = stringArg(args, "cell");
-  if (args.contains("lib")) program.libDirs = args["lib"].get<std::vector<std::string>>();
+  program.libDirs = stringsArg(args, "lib");
   launch::RunRequest run;
   run.stimuliFile = stringArg(args, "stimuli");
   run.collisions = stringArg(args, "collisions");  // error | warn | off, as --collisions
-  if (args.contains("inputs")) run.inputs = args["inputs"].get<std::vector<std::string>>();
+  run.inputs = stringsArg(args, "inputs");
   if (args.contains("maxSteps")) {
     const Json& n = args["maxSteps"];
     if (!n.is_number_unsigned() || n.get<std::uint64_t>() == 0 || n.get<std::uint64_t>() > (std::uint64_t{1} << 62))

@@ -145,7 +145,12 @@ Outcome Pendant::jogCartesian(workcell::JogFrame frame, std::string_view axis, d
   }
   Outcome o = moveTo(r.pose.encoders);
   if (!o.ok) {
-    if (!limit_.empty()) message_ = o.message = fmt::format("{} refused ({}): {}", what, limit_, o.message);
+    if (!limit_.empty()) {
+      // "world jog X +10 length units refused (collision): the move to ...", not "...: refused: the move to ...".
+      std::string_view why = o.message;
+      if (why.starts_with("refused: ")) why.remove_prefix(std::string_view("refused: ").size());
+      message_ = o.message = fmt::format("{} refused ({}): {}", what, limit_, why);
+    }
     return o;
   }
   jogPose_ = r.pose;

@@ -3,8 +3,13 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli/lib/dap_command.h"
 #include "cli/lib/describe_command.h"
@@ -127,12 +132,46 @@ constexpr std::array kCommands{
 
 std::span<const Command> commandTable() { return kCommands; }
 
+namespace {
+
+// CLI11 keeps an option's Needs and Excludes as sets of pointers, so its
+// help lists them in the order of their addresses, which differs between
+// processes ("Excludes: --open --listen" in one, "--listen --open" in the
+// next). Listed by name, the help is the same bytes every time.
+class NamesInOrderFormatter : public CLI::Formatter {
+ public:
+  std::string make_option_opts(const CLI::Option* opt) const override {
+    std::string text = CLI::Formatter::make_option_opts(opt);
+    for (const std::string& label : {get_label("Needs"), get_label("Excludes")}) {
+      const std::string head = " " + label + ":";
+      const std::size_t at = text.find(head);
+      if (at == std::string::npos) continue;
+      const std::size_t from = at + head.size();
+      // The names run to the next label or the end; each is " --name".
+      std::size_t to = text.size();
+      for (const std::string& other : {get_label("Needs"), get_label("Excludes")})
+        if (const std::size_t next = text.find(" " + other + ":", from); next != std::string::npos) to = std::min(to, next);
+      std::vector<std::string> names;
+      std::istringstream words(text.substr(from, to - from));
+      for (std::string w; words >> w;) names.push_back(w);
+      std::sort(names.begin(), names.end());
+      std::string sorted;
+      for (const std::string& n : names) sorted += " " + n;
+      text.replace(from, to - from, sorted);
+    }
+    return text;
+  }
+};
+
+}  // namespace
+
 CommandLine::CommandLine() : CommandLine({}, true) {}
 
 CommandLine::CommandLine(std::string_view command) : CommandLine(command, false) {}
 
 CommandLine::CommandLine(std::string_view command, bool everyRow) : app_{std::string(kRobotsimHelp)} {
   app_.name("robotsim");
+  app_.formatter(std::make_shared<NamesInOrderFormatter>());  // subcommands take it as they are added
   app_.require_subcommand(1);
   app_.footer("robotsim --version (or robotsim version) prints the version and where the library of robots and "
               "cells is.");

@@ -1,6 +1,7 @@
-// Word-level helpers shared by the stimuli file parser and the command-line
-// parser: keywords, seconds, line numbers, and tokens quoted for messages.
-// Internal to runtime/.
+// Word-level helpers of the stimuli reader: keywords, seconds, line numbers,
+// and tokens quoted for messages. The other readers of the same words use
+// them too (the command line's numbers, the debugger's expressions, the test
+// expectations, a run request), so that a second reads the same everywhere.
 #pragma once
 
 #include <string>

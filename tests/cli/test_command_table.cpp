@@ -122,6 +122,32 @@ TEST_CASE("the row whose subcommand was parsed is the one that runs", "[cli][com
   CHECK(help.out.find("JMPVAR") != std::string::npos);
 }
 
+TEST_CASE("a command line with one command's options parses that command as the whole table does", "[cli][commands]") {
+  const auto table = commandTable();
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const std::string name(table[i].name);
+    CAPTURE(name);
+    const CommandLine whole, one{name};
+    CHECK(optionNames(one.subcommand(i)) == optionNames(whole.subcommand(i)));
+    CHECK(one.subcommand(i).help() == whole.subcommand(i).help());
+    // The other rows are there by name, without their options.
+    for (std::size_t j = 0; j < table.size(); ++j)
+      if (j != i) CHECK(one.subcommand(j).get_options().size() <= 1);  // at most --help
+  }
+}
+
+TEST_CASE("an option's Needs and Excludes are listed by name, the same in every process", "[cli][commands]") {
+  // CLI11 keeps them in sets of pointers: addresses, not names, would order them.
+  const auto table = commandTable();
+  const auto teach = std::find_if(table.begin(), table.end(), [](const auto& row) { return row.name == "teach"; });
+  REQUIRE(teach != table.end());
+  const CommandLine commandLine;
+  const std::string help = commandLine.subcommand(static_cast<std::size_t>(teach - table.begin())).help();
+  INFO(help);
+  CHECK(help.find("--tui Excludes: --listen --open") != std::string::npos);
+  CHECK(help.find("--dialect TEXT:{mark3,mark4} Needs: --device") != std::string::npos);
+}
+
 TEST_CASE("each command's man page names every option and argument the parser accepts", "[cli][commands][man]") {
   const CommandLine commandLine;
   const auto table = commandTable();

@@ -20,6 +20,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -109,6 +110,34 @@ TEST_CASE("dap session: exception breakpoints for deadlock, and the end of the p
 
 TEST_CASE("dap session: malformed messages and requests in the wrong order get error responses", "[debug][dap]") {
   checkSession("errors");
+}
+
+TEST_CASE("dap: a launch argument of the wrong type is named in the error, and the adapter goes on", "[debug][dap]") {
+  const std::string program = kDapDir + "../programs/wait_forever.rsp";
+  std::string bytes;
+  for (const std::string& body :
+       {std::string(R"({"seq":1,"type":"request","command":"initialize","arguments":{}})"),
+        R"({"seq":2,"type":"request","command":"launch","arguments":{"program":")" + program + R"(","collisions":7}})",
+        R"({"seq":3,"type":"request","command":"launch","arguments":{"program":")" + program + R"(","lib":"stdlib"}})",
+        R"({"seq":4,"type":"request","command":"launch","arguments":{"program":")" + program + R"(","inputs":[1]}})",
+        std::string(R"({"seq":5,"type":"request","command":"disconnect","arguments":{}})")})
+    bytes += rs::wire::frameMessage(body);
+  const Served s = serveBytes(bytes);
+  const std::map<int, std::string> expected{{2, "bad arguments for launch: collisions is a string, not number"},
+                                            {3, "bad arguments for launch: lib is a list of strings"},
+                                            {4, "bad arguments for launch: inputs is a list of strings"}};
+  std::map<int, Json> responses;
+  for (const Json& m : s.messages)
+    if (m.value("type", "") == "response") responses[m.at("request_seq").get<int>()] = m;
+  for (const auto& [seq, message] : expected) {
+    CAPTURE(seq);
+    REQUIRE(responses.count(seq) == 1);
+    CHECK(responses[seq].at("success") == false);
+    CHECK(responses[seq].at("message") == message);
+  }
+  // Still serving: the disconnect after them is answered.
+  REQUIRE(responses.count(5) == 1);
+  CHECK(responses[5].at("success") == true);
 }
 
 TEST_CASE("dap session: a client that leaves during a long run stops it, and the adapter exits 1", "[debug][dap]") {

@@ -237,7 +237,7 @@ TEST_CASE("a cartesian jog into a collision is refused, nothing moved, and names
     at = p.state().clock;
   }
   checkRefused(p, o, before, at, "collision");
-  CHECK(o.message.rfind("world jog Y -10 length units refused (collision): refused: the move to ", 0) == 0);
+  CHECK(o.message.rfind("world jog Y -10 length units refused (collision): the move to ", 0) == 0);
   CHECK(o.message.find("(pallet)") != std::string::npos);
 }
 
