@@ -11,15 +11,19 @@ bash "$check" "$root"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-copy() {
-  rm -rf "$work/tree" && mkdir -p "$work/tree"
-  # The whole source tree (docs may link to any of it), without builds.
-  (cd "$root" && tar cf - --exclude=./build --exclude='./build-*' --exclude=./.git --exclude=node_modules --exclude='*.vsix' .) |
-    tar xf - -C "$work/tree"
+# One copy of the whole source tree (docs may link to any of it), without
+# builds; each case plants its text in one file and puts the file back.
+mkdir -p "$work/tree"
+(cd "$root" && tar cf - --exclude=./build --exclude='./build-*' --exclude=./.git --exclude=node_modules --exclude='*.vsix' .) |
+  tar xf - -C "$work/tree"
+planted=""
+plant() {  # FILE TEXT: the last case's file as it was, then this one's text
+  [ -n "$planted" ] && cp "$root/$planted" "$work/tree/$planted"
+  planted=$1
+  printf '%s\n' "$2" >> "$work/tree/$1"
 }
 expect_failure() {  # FILE TEXT-TO-PLANT EXPECTED-MESSAGE
-  copy
-  printf '%s\n' "$2" >> "$work/tree/$1"
+  plant "$1" "$2"
   if out=$(bash "$check" "$work/tree" 2>&1); then
     echo "FAIL: the check passed with '$2' planted in $1" >&2; exit 1
   fi
@@ -29,8 +33,7 @@ expect_failure() {  # FILE TEXT-TO-PLANT EXPECTED-MESSAGE
   echo "ok: '$2' in $1 is refused"
 }
 expect_pass() {  # FILE TEXT-TO-PLANT
-  copy
-  printf '%s\n' "$2" >> "$work/tree/$1"
+  plant "$1" "$2"
   if ! out=$(bash "$check" "$work/tree" 2>&1); then
     echo "FAIL: the check refused '$2' in $1:" >&2; echo "$out" >&2; exit 1
   fi
