@@ -67,4 +67,14 @@ bool canRun(const std::vector<std::string>& argv) {
   }
 }
 
+ProcessRun runLspSession(const Options& options, const std::string& sessionPath, const std::string& replyPath) {
+  const std::string report = options.workDir + "/lsp_peak.txt";
+  ProcessRun run = runProcess({"sh", "-c",
+                               fmt::format("exec {} -f %M -o '{}' '{}' lsp < '{}' > '{}'", kGnuTime, report,
+                                           options.robotsim, sessionPath, replyPath)});
+  if (run.exitCode != 0) throw std::runtime_error("robotsim lsp did not exit 0 on the session " + sessionPath);
+  run.maxRssKiB = gnuTimePeakKiB(report);
+  return run;
+}
+
 }  // namespace rs::bench

@@ -37,4 +37,10 @@ std::size_t slotOf(const vm::Image& image, std::string_view name);
 /// True when `argv` runs and exits 0 (a tool that is installed).
 bool canRun(const std::vector<std::string>& argv);
 
+/// `robotsim lsp` given a whole session on its stdin, its answers to
+/// `replyPath`: wall and CPU time, and the peak RSS by GNU time, whose own
+/// wait4 sees the server alone (a spawned child's rusage reports this
+/// driver's peak when the server's is smaller). Throws unless it exits 0.
+ProcessRun runLspSession(const Options& options, const std::string& sessionPath, const std::string& replyPath);
+
 }  // namespace rs::bench

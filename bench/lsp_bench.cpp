@@ -130,12 +130,9 @@ nlohmann::json benchLsp(const Options& options) {
                           Json{{"jsonrpc", "2.0"}, {"method", "exit"}}})
       f << lsp::frameMessage(lsp::dumpJson(m));
     f.close();
-    const ProcessRun run =
-        runProcess({"sh", "-c", fmt::format("exec '{}' lsp < '{}' > /dev/null", options.robotsim, session)});
-    if (run.exitCode != 0) throw std::runtime_error("robotsim lsp did not exit 0 on the benchmark session");
+    const ProcessRun run = runLspSession(options, session, "/dev/null");
     const double mib = static_cast<double>(run.maxRssKiB) / 1024.0;
     out["peak_rss_mib"] = mib;
-    out["rss_is_child"] = run.maxRssKiB > selfPeakRssKiB();
     fmt::print("  {:<52} {:7.1f} MiB        (target 50 MiB{})\n", "peak RSS of robotsim lsp with the file open", mib,
                mib <= 50 ? "" : ", MISSED");
   }

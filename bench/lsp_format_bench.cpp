@@ -94,15 +94,7 @@ nlohmann::json benchLspFormat(const Options& options) {
     document = static_cast<double>(writeSession(session, format, documentBytes));
     progress(format ? "open, format, exit" : "open, exit");
     const std::string reply = options.workDir + "/lsp_format_reply.bin";
-    // The peak by GNU time, whose own wait4 sees robotsim alone: a small
-    // session's peak is below this driver's, which a spawned child's
-    // rusage would report instead.
-    const std::string report = options.workDir + "/lsp_format_peak.txt";
-    ProcessRun run = runProcess({"sh", "-c",
-                                 fmt::format("exec {} -f %M -o '{}' '{}' lsp < '{}' > '{}'", kGnuTime, report,
-                                             options.robotsim, session, reply)});
-    if (run.exitCode != 0) throw std::runtime_error("robotsim lsp did not exit 0 on the formatting session");
-    run.maxRssKiB = gnuTimePeakKiB(report);
+    const ProcessRun run = runLspSession(options, session, reply);
     const std::uintmax_t replied = std::filesystem::file_size(reply);
     if (format && replied < documentBytes) throw std::runtime_error("the formatting answer is missing");
     if (!format && replied > 4096) throw std::runtime_error("the document was not opened as it should be");
