@@ -63,6 +63,10 @@ RaceCount race(bool inPlace) {
       const std::string text = fmt::format("; edit {}\n", k) + rs::testing::readBytes(path);
       if (!(inPlace ? saveInPlace(path, text) : saveAtomically(path, text))) ++failedSaves;
       std::this_thread::sleep_for(std::chrono::microseconds(random() % 400));
+      // Now and then a pause as long as a slow machine's teach write (the
+      // sanitizer build on a loaded CI host took longer than every gap
+      // above, and teach never wrote: the race was not run).
+      if (k % 50 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     editing = false;
   });
