@@ -34,7 +34,10 @@ packages=(
 # collision_bench times libfcl beside robotsim's own GJK; robotsim itself
 # links none of them); neovim's built-in LSP client drives the language server
 # end to end (the editor_neovim test); clang and its runtime (libFuzzer)
-# build the sanitizer and fuzzing build; unzip lists the VS Code package;
+# build the sanitizer and fuzzing build, and llvm's llvm-symbolizer gives
+# their reports file:line (without it a sanitized process also warns of the
+# missing symbolizer on stderr, which a byte-for-byte test reads); unzip
+# lists the VS Code package;
 # GNU time reads the peak memory of a one-line compile (robotsim_bench
 # --only startup); tmux gives the terminal pendant's test a real terminal (a pseudo-terminal
 # with a terminal emulator behind it) whose screen it reads. Orocos KDL is
@@ -44,7 +47,7 @@ packages=(
 # openssh-server (an sshd the test starts on loopback, no service) and rsync
 # (parallel copies files with it) run the
 # grading recipe of docs/testing.md over ssh.
-[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 luajit libfcl-dev neovim clang libclang-rt-14-dev unzip tmux
+[ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 luajit libfcl-dev neovim clang libclang-rt-14-dev llvm unzip tmux
   liborocos-kdl-dev zsh fish parallel openssh-server rsync time)
 
 missing=()
