@@ -3,7 +3,13 @@
 #include <filesystem>
 #include <system_error>
 
+#include <fmt/format.h>
+
+#include <cctype>
+
 #include "base/ascii.h"
+#include "base/text.h"
+#include "launch/confined_path.h"
 
 namespace rs::launch {
 
@@ -59,6 +65,54 @@ std::string resolveCellName(const std::string& programFile, const std::string& n
   if (!std::filesystem::path(name).is_absolute() && std::filesystem::is_regular_file(beside, ec))
     return beside.string();
   return name;
+}
+
+namespace {
+
+// The directive's name as a message may quote it: made safe, and short.
+std::string quotedName(std::string_view name) {
+  constexpr std::size_t kLongest = 60;
+  if (name.size() <= kLongest) return "'" + base::safeText(name) + "'";
+  return "'" + base::safeText(name.substr(0, kLongest)) + "...'";
+}
+
+diag::Result<SubmissionCell> refused(const std::string& programFile, const CellDirective& d, const std::string& why) {
+  return diag::Diagnostic{programFile,
+                          d.pos,
+                          diag::Severity::Error,
+                          fmt::format("the cell {} is refused: {}", quotedName(d.name), why),
+                          "cell-outside-submission",
+                          "a submission's '; cell:' names a library robot or cell (robotsim list) or a .rsd file in "
+                          "its own folder"};
+}
+
+// A name as the library looks it up (stdlib's "scara-pick"): no path.
+bool isLibraryName(std::string_view name) {
+  if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
+  for (const char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.') return false;
+  return true;
+}
+
+}  // namespace
+
+diag::Result<SubmissionCell> resolveSubmissionCell(const std::string& programFile, const CellDirective& d) {
+  namespace fs = std::filesystem;
+  const fs::path written(d.name);
+  if (written.is_absolute()) return refused(programFile, d, "it is an absolute path");
+  std::error_code ec;
+  const fs::path besideFolder = fs::absolute(programFile, ec).parent_path();
+  const diag::Result<fs::path> folder = resolve(besideFolder, true);
+  if (ec || !folder) return refused(programFile, d, "the submission's own folder cannot be followed");
+  const fs::path beside = fs::path(programFile).parent_path() / written;
+  const bool exists = fs::exists(fs::symlink_status(beside, ec));
+  if (!exists && isLibraryName(d.name)) return SubmissionCell{d.name, true};
+  if (!exists) return refused(programFile, d, "there is no such file in the submission's folder");
+  const diag::Result<fs::path> target = resolve(beside, true);
+  if (!target) return refused(programFile, d, "its links cannot be followed");
+  if (!isInside(*folder, *target)) return refused(programFile, d, "it leads outside the submission's folder");
+  if (!fs::is_regular_file(*target, ec)) return refused(programFile, d, "it is not a regular file");
+  return SubmissionCell{beside.lexically_normal().string(), false};
 }
 
 }  // namespace rs::launch

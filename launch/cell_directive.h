@@ -7,13 +7,15 @@
 // a library cell or robot, or a description file (relative to the
 // program's folder). `--cell` wins over it; without either a program runs
 // on the default robot. The CLI (through loadProgram) and the language
-// server read it with the same function.
+// server read it with the same function. In grading (`robotsim test
+// --spec`) a submission's directive is confined: resolveSubmissionCell.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "diag/result.h"
 #include "diag/source_file.h"
 
 namespace rs::launch {
@@ -32,5 +34,19 @@ std::optional<CellDirective> findCellDirective(std::string_view text);
 /// name, else the name itself (a library name, or a path from the working
 /// directory).
 std::string resolveCellName(const std::string& programFile, const std::string& name);
+
+/// What a directive of a submission being graded may name, and nothing
+/// more: a library robot or cell (`libraryName`: then looked up on the
+/// library path only, never as a file from the working directory), or a
+/// file inside the submission's own folder once every link is followed.
+struct SubmissionCell {
+  std::string name;  ///< the library name, or the file beside the program
+  bool libraryName = false;
+};
+
+/// The directive of the submission `programFile` resolved as above, or an
+/// error at the directive that quotes at most its name, made safe; nothing
+/// it names outside the folder is opened.
+diag::Result<SubmissionCell> resolveSubmissionCell(const std::string& programFile, const CellDirective& directive);
 
 }  // namespace rs::launch

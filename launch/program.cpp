@@ -62,12 +62,26 @@ std::optional<std::string> readBytes(const std::string& path, LoadedProgram& int
 }
 
 // The request with its cell: --cell when given, else the program source's
-// "; cell:" directive (cell_directive.h).
-ProgramRequest withDirective(const ProgramRequest& request, const std::string& bytes) {
+// "; cell:" directive (cell_directive.h), confined for a submission; or
+// nothing, with the refusal in `into`.
+std::optional<ProgramRequest> withDirective(const ProgramRequest& request, const std::string& bytes,
+                                            LoadedProgram& into) {
   ProgramRequest r = request;
   if (!r.cell.empty() || vm::looksLikeImage(bytes)) return r;
-  if (const std::optional<CellDirective> d = findCellDirective(diag::withoutByteOrderMark(bytes)))
+  const std::optional<CellDirective> d = findCellDirective(diag::withoutByteOrderMark(bytes));
+  if (!d) return r;
+  if (!request.submission) {
     r.cell = resolveCellName(request.file, d->name);
+    return r;
+  }
+  diag::Result<SubmissionCell> cell = resolveSubmissionCell(request.file, *d);
+  if (!cell) {
+    into.source.emplace(request.file, bytes);  // for the caret under the directive
+    into.diagnostics.push_back(cell.failure());
+    return std::nullopt;
+  }
+  r.cell = cell->name;
+  r.cellFromLibraryOnly = cell->libraryName;
   return r;
 }
 
@@ -144,6 +158,7 @@ std::string omittedNote(const diag::Omitted& omitted) {
 
 std::shared_ptr<const workcell::Workcell> loadCell(const ProgramRequest& request, LoadedProgram& into) {
   auto library = std::make_shared<compiler::Library>(compiler::librarySearchPath(request.libDirs));
+  if (request.cellFromLibraryOnly) library->lookUpNamesOnly();
   into.descriptions = library;
   std::optional<workcell::Workcell> cell = library->workcell(request.cell);
   for (const diag::Diagnostic& d : library->diagnostics()) into.diagnostics.push_back(d);
@@ -156,7 +171,9 @@ LoadedProgram loadProgram(const ProgramRequest& given) {
   program.maxErrors = given.maxErrors;
   std::optional<std::string> bytes = readBytes(given.file, program);
   if (!bytes) return program;
-  const ProgramRequest request = withDirective(given, *bytes);
+  const std::optional<ProgramRequest> directed = withDirective(given, *bytes, program);
+  if (!directed) return program;
+  const ProgramRequest& request = *directed;
   if (request.cell.empty()) {
     readProgram(request.file, std::move(*bytes), defaultTarget(), program);
   } else {
@@ -193,7 +210,9 @@ LoadedProgram loadProgramToDraw(const ProgramRequest& given) {
   program.maxErrors = given.maxErrors;
   std::optional<std::string> bytes = readBytes(given.file, program);
   if (!bytes) return program;
-  const ProgramRequest request = withDirective(given, *bytes);
+  const std::optional<ProgramRequest> directed = withDirective(given, *bytes, program);
+  if (!directed) return program;
+  const ProgramRequest& request = *directed;
   if (!request.cell.empty()) {
     program.cell = loadCell(request, program);
     if (!program.cell) return program;

@@ -29,6 +29,13 @@ struct ProgramRequest {
   std::string file;                  ///< program source or image
   std::string cell;                  ///< --cell: workcell or robot, file or library name ("" = none)
   std::vector<std::string> libDirs;  ///< --lib
+  /// Grading (`robotsim test --spec`): the program is a submission, and its
+  /// "; cell:" directive may name only a library robot or cell or a file
+  /// inside its own folder (cell_directive.h's resolveSubmissionCell).
+  bool submission = false;
+  /// Set by the loader for such a directive's library name: looked up on
+  /// the library path only (compiler::Library::lookUpNamesOnly).
+  bool cellFromLibraryOnly = false;
   /// --max-errors: diagnostics kept and printed at most (0 = all); the rest
   /// are counted, and printDiagnostics says how many.
   std::size_t maxErrors = 0;

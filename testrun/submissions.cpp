@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <set>
 
-#include "testrun/confined_path.h"
+#include "launch/confined_path.h"
 
 namespace rs::testrun {
 
 namespace fs = std::filesystem;
+using launch::isInside;
+using launch::resolve;
 
 namespace {
 

@@ -246,6 +246,7 @@ void hintLimit(const vm::RunOutcome& outcome, const TestSettings& settings, bool
 void check(const std::string& program, const ParsedExpectations& parsed, const std::string& settingsFile,
            const RunnerOptions& options, bool grading, TestResult& r) {
   launch::ProgramRequest request{program, besideProgram(settingsFile, parsed.settings.cell, true), options.libDirs};
+  request.submission = grading;
   const launch::LoadedProgram loaded = launch::loadProgram(request);
   if (loaded.source && !r.sourceOf(loaded.source->name()))
     r.sources.push_back(std::make_shared<const diag::SourceFile>(*loaded.source));

@@ -135,6 +135,27 @@ std::optional<workcell::Color> colorByName(std::string_view word) {
 
 std::string_view colorName(workcell::Color color) { return kColorNames[static_cast<std::size_t>(color)]; }
 
+bool looksLikeDescription(std::string_view text) {
+  text = diag::withoutByteOrderMark(text);
+  std::size_t i = 0;
+  while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n' || text[i] == ';'))
+    if (text[i] == ';')
+      while (i < text.size() && text[i] != '\n') ++i;
+    else
+      ++i;
+  if (i == text.size()) return true;
+  // A word as the lexer's NAME reads it: the keyword must be all of it.
+  const auto nameChar = [](char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.' || c == '-';
+  };
+  std::size_t end = i;
+  while (end < text.size() && nameChar(text[end])) ++end;
+  const std::string_view word = text.substr(i, end - i);
+  for (const std::string_view block : {"LINK", "OBJECT", "GRIPPER", "ROBOT", "WORKCELL"})
+    if (base::sameName(word, block)) return true;
+  return false;
+}
+
 DescriptionFile parseDescription(std::unique_ptr<diag::SourceFile> source, diag::Diagnostics& diagnostics) {
   DescriptionFile file;
   file.source = std::move(source);

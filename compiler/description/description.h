@@ -117,6 +117,14 @@ struct DescriptionFile {
 /// Parses one description; every error goes to `diagnostics`.
 DescriptionFile parseDescription(std::unique_ptr<diag::SourceFile> source, diag::Diagnostics& diagnostics);
 
+/// Whether `text` starts as a description does: its first word (after
+/// blank lines, comments and a byte-order mark) opens a block (LINK,
+/// OBJECT, GRIPPER, ROBOT, WORKCELL, in any case), or it has no word at
+/// all. A file named as a cell that is not a `.rsd` and fails this is
+/// refused whole, so that no line of it is ever quoted (/etc/passwd given
+/// as a cell must not be printed back, line by line, in a report).
+bool looksLikeDescription(std::string_view text);
+
 /// Colour by EGA name ("LIGHTRED") or number ("12").
 std::optional<workcell::Color> colorByName(std::string_view word);
 std::string_view colorName(workcell::Color color);

@@ -1,5 +1,6 @@
 #include "compiler/description/library.h"
 
+#include "base/ascii.h"
 #include "compiler/description/library_dir.h"
 #include "compiler/program/kinematics_diagnostic.h"
 #include "diag/read_input.h"
@@ -56,6 +57,12 @@ diag::Pos frameErrorPos(const RobotDef& def, const NameRef& gripperRef, int inde
   return gripperRef.name.empty() ? def.pos : gripperRef.pos;
 }
 
+// "arm.rsd", "ARM.RSD": what a description file is called.
+bool isDescriptionName(const fs::path& path) {
+  const std::string ext = path.extension().string();
+  return base::sameName(ext, ".rsd");
+}
+
 }  // namespace
 
 std::vector<fs::path> librarySearchPath(const std::vector<std::string>& libDirs) {
@@ -107,6 +114,14 @@ const DescriptionFile* Library::load(const fs::path& path) {
   else read.emplace(diag::readInput(path.string(), kMaxDescriptionBytes, "cannot read description file"));
   if (!*read) {
     diagnostics_.push_back(read->failure());
+    return nullptr;
+  }
+  if (!isDescriptionName(path) && !looksLikeDescription(**read)) {
+    // Refused whole: its lines are not quoted back (docs/models.md).
+    diagnostics_.push_back({path.string(), {}, diag::Severity::Error,
+                            "not a robot or workcell description: its first word opens no LINK, OBJECT, GRIPPER, "
+                            "ROBOT or WORKCELL block",
+                            "not-a-description", "name a library robot or cell (robotsim list) or a .rsd file"});
     return nullptr;
   }
   diag::Diagnostics d(path.string());
@@ -410,7 +425,8 @@ void Library::checkAll(const DescriptionFile& f) {
 // library name.
 const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kind) {
   std::error_code ec;
-  if (fs::is_regular_file(fileOrName, ec) || overlay_.count(fs::weakly_canonical(fileOrName, ec).string()))
+  if (!libraryNamesOnly_ &&
+      (fs::is_regular_file(fileOrName, ec) || overlay_.count(fs::weakly_canonical(fileOrName, ec).string())))
     return load(fileOrName);
   // The kind's own folder first; a workcell may also be a lone robot.
   for (const fs::path& dir : searchPath_) {

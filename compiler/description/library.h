@@ -42,6 +42,11 @@ class Library {
   /// the first lookup.
   void overlay(const std::filesystem::path& path, std::string text);
 
+  /// From now on a root name (robot(), workcell()) is looked up on the
+  /// library path only, never as a file from the working directory: a
+  /// name a submission wrote (grading) cannot reach a file that way.
+  void lookUpNamesOnly() { libraryNamesOnly_ = true; }
+
   const std::vector<diag::Diagnostic>& diagnostics() const { return diagnostics_; }
   bool hasErrors() const;
   /// The source of a diagnostic's file, for rendering; null if unknown.
@@ -75,6 +80,7 @@ class Library {
   std::map<std::string, const DescriptionFile*> byPath_;
   std::map<std::string, std::string> overlay_;  // canonical path -> text
   std::vector<diag::Diagnostic> diagnostics_;
+  bool libraryNamesOnly_ = false;
   // Each robot and gripper is built (and its errors reported) once, however
   // many places use it.
   std::map<const RobotDef*, std::optional<workcell::Robot>> robots_;

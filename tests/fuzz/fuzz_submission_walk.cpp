@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "testrun/confined_path.h"
+#include "launch/confined_path.h"
 #include "testrun/submissions.h"
 
 namespace fs = std::filesystem;
@@ -136,7 +136,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const std::string& f : walk.files) {
     require(graded.insert(f).second);
     const fs::path target = fs::canonical(fs::absolute(f), ec);
-    require(!ec && rs::testrun::isInside(home, target) && fs::is_regular_file(target));
+    require(!ec && rs::launch::isInside(home, target) && fs::is_regular_file(target));
   }
   require(std::is_sorted(walk.files.begin(), walk.files.end()));
   std::set<std::string> refused;
@@ -146,7 +146,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   for (const fs::path& link : programLinks(root)) {
     const fs::path target = fs::canonical(link, ec);
-    const bool leaves = ec || !rs::testrun::isInside(home, target);
+    const bool leaves = ec || !rs::launch::isInside(home, target);
     require(!leaves || refused.count(fs::absolute(link).lexically_normal().string()) == 1);
   }
   fs::remove_all(base, ec);

@@ -93,6 +93,63 @@ TEST_CASE(
   CHECK_FALSE(hasEscape(csv.out));
 }
 
+TEST_CASE(
+    "robotsim test --spec: a submission's cell directive names a library cell or a file in its own folder, and no byte of "
+    "anything else is read or printed",
+    "[testrun][cli]") {
+  const TempDir dir;
+  const std::string spec = writeAssignment(dir);  // sets no 'test: cell'
+  fs::create_directories(dir.path() / "submissions" / "eve");
+  fs::create_directories(dir.path() / "submissions" / "other");
+  dir.write("submissions/other/secret.rsd", "SECRET-OTHER one two\nSECRET-OTHER three\n");
+  dir.write("submissions/eve/notes.txt", "SECRET-NOTES: not a description\n");
+  dir.write("submissions/eve/mine.rsd", "WORKCELL mine\n  ROBOT rhino-scara AT 0 0 0\nEND\n");
+  const fs::path eve = dir.path() / "submissions" / "eve";
+  fs::create_symlink("/etc/passwd", eve / "pw.rsd");
+  const auto submit = [&](const std::string& name, const std::string& cell) {
+    return dir.write("submissions/eve/" + name + ".rsp", "; cell: " + cell + "\nEND\n");
+  };
+  const std::string passwd = submit("passwd", "/etc/passwd");
+  const std::string environ = submit("environ", "/proc/self/environ");
+  const std::string up = submit("up", "../other/secret.rsd");
+  const std::string link = submit("link", "pw.rsd");
+  const std::string notes = submit("notes", "notes.txt");
+  const std::string escaped = submit("escaped", "\x1b]0;pwned\x07");
+  const std::string library = submit("library", "scara-pick");
+  const std::string own = submit("own", "mine.rsd");
+
+  const CliResult r = runCli({"test", "--spec", spec, eve.string()});
+  INFO(r.out << r.err);
+  for (const std::string leak : {"root:", "PATH=", "HOME=", "SECRET", "\x1b"}) {
+    INFO(leak);
+    CHECK(r.out.find(leak) == std::string::npos);
+    CHECK(r.err.find(leak) == std::string::npos);
+  }
+  for (const std::string& want :
+       {passwd + ":1:9: error: the cell '/etc/passwd' is refused: it is an absolute path\n",
+        environ + ":1:9: error: the cell '/proc/self/environ' is refused: it is an absolute path\n",
+        up + ":1:9: error: the cell '../other/secret.rsd' is refused: it leads outside the submission's folder\n",
+        link + ":1:9: error: the cell 'pw.rsd' is refused: it leads outside the submission's folder\n",
+        escaped + ":1:9: error: the cell '\\x1b]0;pwned\\x07' is refused",
+        (eve / "notes.txt").string() + ": error: not a robot or workcell description",
+        std::string("  hint: a submission's '; cell:' names a library robot or cell (robotsim list) or a .rsd file in "
+                    "its own folder\n"),
+        library + " [it ends] PASSED", own + " [it ends] PASSED"}) {
+    INFO(want);
+    CHECK(r.out.find(want) != std::string::npos);
+  }
+
+  // Outside grading the directive is the author's own: a file that is not a
+  // description is still refused whole, never quoted line by line.
+  const CliResult run = runCli({"check", passwd});
+  CHECK(run.code == 2);
+  CHECK(run.err.find("/etc/passwd: error: not a robot or workcell description") != std::string::npos);
+  CHECK(run.err.find("root:") == std::string::npos);
+  const CliResult cell = runCli({"check", library, "--cell", "/proc/self/environ"});
+  CHECK(cell.code == 2);
+  CHECK(cell.err.find("PATH=") == std::string::npos);
+}
+
 TEST_CASE("robotsim test: a golden trace lives under its test's folder, for reading and for --update",
           "[testrun][cli]") {
   const TempDir dir;

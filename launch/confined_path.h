@@ -1,4 +1,5 @@
 // Paths kept inside a folder: a golden trace inside its test's folder, a
+// grading submission's cell inside its own folder (cell_directive.h), a
 // submission inside the folder graded. Compared after every symbolic link
 // is followed, so that a link inside the folder cannot lead out of it.
 #pragma once
@@ -9,7 +10,7 @@
 
 #include "diag/result.h"
 
-namespace rs::testrun {
+namespace rs::launch {
 
 /// Whether `path` lies inside `folder` (or is it); both canonical.
 bool isInside(const std::filesystem::path& folder, const std::filesystem::path& path);
@@ -20,4 +21,4 @@ bool isInside(const std::filesystem::path& folder, const std::filesystem::path& 
 /// no place (diag::refusal): the caller says whose path it was.
 diag::Result<std::filesystem::path> resolve(const std::filesystem::path& path, bool mustExist);
 
-}  // namespace rs::testrun
+}  // namespace rs::launch

@@ -1,6 +1,6 @@
-#include "testrun/confined_path.h"
+#include "launch/confined_path.h"
 
-namespace rs::testrun {
+namespace rs::launch {
 
 namespace fs = std::filesystem;
 
@@ -25,4 +25,4 @@ diag::Result<fs::path> resolve(const fs::path& path, bool mustExist) {
   return target;
 }
 
-}  // namespace rs::testrun
+}  // namespace rs::launch
