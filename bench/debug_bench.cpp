@@ -16,9 +16,9 @@
 #include "bench/timing.h"
 #include "compiler/program/compiler.h"
 #include "compiler/description/library.h"
-#include "debug/session.h"
+#include "tools/debug/session.h"
 #include "launch/program.h"
-#include "teach/run_source.h"
+#include "tools/teach/run_source.h"
 
 namespace rs::bench {
 

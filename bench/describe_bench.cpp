@@ -17,8 +17,8 @@
 #include "bench/bench_args.h"
 #include "compiler/description/library.h"
 #include "model/workcell/reach.h"
-#include "teach/pendant_state.h"
-#include "teach/tui/tui_screen.h"
+#include "tools/teach/pendant_state.h"
+#include "tools/teach/tui/tui_screen.h"
 
 namespace {
 

@@ -14,8 +14,8 @@
 
 #include "bench/benchmarks.h"
 #include "bench/timing.h"
-#include "lsp/jsonrpc.h"
-#include "lsp/server.h"
+#include "tools/lsp/jsonrpc.h"
+#include "tools/lsp/server.h"
 
 namespace rs::bench {
 

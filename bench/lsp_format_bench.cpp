@@ -17,7 +17,7 @@
 #include "bench/bench_support.h"
 #include "bench/benchmarks.h"
 #include "bench/timing.h"
-#include "lsp/jsonrpc.h"
+#include "tools/lsp/jsonrpc.h"
 
 namespace rs::bench {
 

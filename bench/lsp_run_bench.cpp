@@ -21,8 +21,8 @@
 #include "bench/bench_support.h"
 #include "bench/benchmarks.h"
 #include "bench/timing.h"
-#include "lsp/jsonrpc.h"
-#include "lsp/server.h"
+#include "tools/lsp/jsonrpc.h"
+#include "tools/lsp/server.h"
 
 namespace rs::bench {
 

@@ -27,9 +27,9 @@
 #include "bench/bench_args.h"
 #include "compiler/description/library.h"
 #include "launch/program.h"
-#include "teach/live_server.h"
-#include "teach/page.h"
-#include "teach/pendant_source.h"
+#include "tools/live/live_server.h"
+#include "tools/teach/page.h"
+#include "tools/teach/pendant_source.h"
 
 // Last: its <resolv.h> defines _res, a name Eigen's headers use.
 #include <httplib.h>

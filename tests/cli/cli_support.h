@@ -16,7 +16,7 @@
 #include <system_error>
 #include <vector>
 
-#include "cli/lib/app.h"
+#include "tools/cli/lib/app.h"
 
 namespace rs::testing {
 

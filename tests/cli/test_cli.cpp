@@ -15,7 +15,7 @@
 
 #include "tests/cli/cli_programs.h"
 #include "tests/cli/cli_support.h"
-#include "cli/lib/report.h"
+#include "tools/cli/lib/report.h"
 #include "runtime/run/trace.h"
 #include "compiler/program/compiler.h"
 #include "compiler/description/library.h"

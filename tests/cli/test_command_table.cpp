@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/lib/bash_completion.h"
-#include "cli/lib/commands.h"
-#include "cli/lib/gen_docs.h"
-#include "cli/lib/man_page.h"
 #include "tests/cli/cli_support.h"
+#include "tools/cli/lib/bash_completion.h"
+#include "tools/cli/lib/commands.h"
+#include "tools/cli/lib/gen_docs.h"
+#include "tools/cli/lib/man_page.h"
 
 namespace {
 

@@ -2,8 +2,8 @@
 // (cli/lib/help.h), and the message with the word made printable.
 #include <catch2/catch.hpp>
 
-#include "cli/lib/help.h"
 #include "tests/cli/cli_support.h"
+#include "tools/cli/lib/help.h"
 
 using rs::cli::instructionsLike;
 using rs::testing::runCli;

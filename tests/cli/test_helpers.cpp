@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/lib/commands.h"
-#include "cli/lib/helpers.h"
 #include "tests/cli/cli_support.h"
+#include "tools/cli/lib/commands.h"
+#include "tools/cli/lib/helpers.h"
 
 namespace {
 

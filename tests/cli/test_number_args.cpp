@@ -5,8 +5,8 @@
 #include <catch2/catch.hpp>
 #include <sstream>
 
-#include "cli/lib/number_args.h"
 #include "tests/cli/cli_support.h"
+#include "tools/cli/lib/number_args.h"
 
 using rs::cli::NumberRead;
 using rs::cli::parseNumberList;

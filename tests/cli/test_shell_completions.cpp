@@ -17,13 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "cli/lib/bash_completion.h"
-#include "cli/lib/commands.h"
-#include "cli/lib/completion_query.h"
-#include "cli/lib/fish_completion.h"
-#include "cli/lib/man_page.h"
-#include "cli/lib/zsh_completion.h"
 #include "tests/cli/cli_support.h"
+#include "tools/cli/lib/bash_completion.h"
+#include "tools/cli/lib/commands.h"
+#include "tools/cli/lib/completion_query.h"
+#include "tools/cli/lib/fish_completion.h"
+#include "tools/cli/lib/man_page.h"
+#include "tools/cli/lib/zsh_completion.h"
 
 namespace {
 

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "dap/serve.h"
 #include "tests/cli/cli_support.h"
-#include "wire/framing.h"
-#include "wire/json.h"
+#include "tools/dap/serve.h"
+#include "tools/wire/framing.h"
+#include "tools/wire/json.h"
 
 namespace {
 

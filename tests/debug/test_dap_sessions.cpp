@@ -24,12 +24,12 @@
 #include <sstream>
 #include <thread>
 
-#include "dap/serve.h"
 #include "tests/cli/cli_support.h"
 #include "tests/debug/debug_test_util.h"
 #include "tests/support/piped_process.h"
-#include "wire/framing.h"
-#include "wire/json.h"
+#include "tools/dap/serve.h"
+#include "tools/wire/framing.h"
+#include "tools/wire/json.h"
 
 namespace {
 

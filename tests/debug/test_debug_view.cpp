@@ -11,10 +11,10 @@
 #include <sstream>
 
 #include "base/seconds.h"
-#include "cli/lib/debug_view.h"
-#include "debug/console.h"
 #include "tests/cli/cli_support.h"
 #include "tests/debug/debug_test_util.h"
+#include "tools/cli/lib/debug_view.h"
+#include "tools/debug/console.h"
 
 // Last: its <resolv.h> defines _res, a name Eigen's headers use.
 #include <httplib.h>

@@ -13,8 +13,8 @@
 #include <random>
 
 #include "bench/generate.h"
-#include "debug/session.h"
 #include "tests/debug/debug_test_util.h"
+#include "tools/debug/session.h"
 
 namespace {
 

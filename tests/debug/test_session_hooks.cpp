@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "debug/session.h"
 #include "tests/debug/debug_test_util.h"
+#include "tools/debug/session.h"
 
 using rs::debug::Session;
 using rs::debug::Stop;

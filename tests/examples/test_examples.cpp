@@ -31,8 +31,8 @@
 #include <nlohmann/json.hpp>
 
 #include "base/file_io.h"
-#include "cli/lib/app.h"
-#include "cli/lib/exit_codes.h"
+#include "tools/cli/lib/app.h"
+#include "tools/cli/lib/exit_codes.h"
 #include "launch/program.h"
 #include "compiler/program/compiler.h"
 #include "compiler/description/library.h"

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "wire/framing.h"
+#include "tools/wire/framing.h"
 
 namespace fuzz {
 

@@ -13,8 +13,8 @@
 #include <string_view>
 #include <vector>
 
-#include "dap/adapter.h"
-#include "wire/framing.h"
+#include "tools/dap/adapter.h"
+#include "tools/wire/framing.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "chunked_frames.h"
-#include "dap/adapter.h"
-#include "dap/message_reader.h"
+#include "tools/dap/adapter.h"
+#include "tools/dap/message_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using rs::dap::IncomingMessage;

@@ -21,10 +21,10 @@
 
 #include "compiler/description/library.h"
 #include "launch/program.h"
-#include "teach/http_frame.h"
-#include "teach/live_routes.h"
-#include "teach/page.h"
-#include "teach/pendant_source.h"
+#include "tools/live/http_frame.h"
+#include "tools/live/live_routes.h"
+#include "tools/teach/page.h"
+#include "tools/teach/pendant_source.h"
 
 namespace {
 

@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "lsp/jsonrpc.h"
-#include "lsp/server.h"
+#include "tools/lsp/jsonrpc.h"
+#include "tools/lsp/server.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "base/text.h"
-#include "lsp/server.h"
+#include "tools/lsp/server.h"
 
 extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t maxSize);
 

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "chunked_frames.h"
-#include "lsp/message_reader.h"
-#include "lsp/server.h"
+#include "tools/lsp/message_reader.h"
+#include "tools/lsp/server.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using rs::lsp::IncomingMessage;

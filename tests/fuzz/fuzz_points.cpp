@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "teach/points_edit.h"
+#include "tools/teach/points_edit.h"
 
 namespace {
 

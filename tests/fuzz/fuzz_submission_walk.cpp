@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "launch/confined_path.h"
-#include "testrun/submissions.h"
+#include "tools/testrun/submissions.h"
 
 namespace fs = std::filesystem;
 

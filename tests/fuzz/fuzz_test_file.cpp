@@ -5,7 +5,7 @@
 #include <string>
 
 #include "diag/source_file.h"
-#include "testrun/expectation.h"
+#include "tools/testrun/expectation.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -15,11 +15,11 @@
 #include <unistd.h>
 #include <vector>
 
-#include "cli/lib/app.h"
 #include "compiler/description/library.h"
 #include "model/kinematics/gripper.h"
 #include "stdlib/default_robot.h"
 #include "tests/cli/cli_support.h"
+#include "tools/cli/lib/app.h"
 
 namespace {
 

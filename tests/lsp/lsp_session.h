@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "lsp/server.h"
+#include "tools/lsp/server.h"
 
 namespace rs::testing {
 

@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "launch/cell_directive.h"
-#include "lsp/uri.h"
+#include "tools/lsp/uri.h"
 #include "tests/lsp/lsp_session.h"
 #include "tests/cli/cli_support.h"
 

@@ -3,9 +3,9 @@
 // diagnostics.
 #include <catch2/catch.hpp>
 
-#include "lsp/uri.h"
 #include "tests/cli/cli_support.h"
 #include "tests/lsp/lsp_session.h"
+#include "tools/lsp/uri.h"
 
 using rs::lsp::Json;
 using rs::testing::LspSession;

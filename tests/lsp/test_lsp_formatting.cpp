@@ -7,9 +7,9 @@
 
 #include "compiler/program/compiler.h"
 #include "launch/program.h"
-#include "lsp/features/features.h"
-#include "lsp/program_analysis.h"
 #include "tests/cli/cli_support.h"
+#include "tools/lsp/features/features.h"
+#include "tools/lsp/program_analysis.h"
 #include "vm/image_file.h"
 
 namespace fs = std::filesystem;

@@ -3,7 +3,7 @@
 // never end.
 #include <catch2/catch.hpp>
 
-#include "lsp/jsonrpc.h"
+#include "tools/lsp/jsonrpc.h"
 
 using rs::lsp::Frame;
 using rs::lsp::parseFrames;

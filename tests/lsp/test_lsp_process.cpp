@@ -8,8 +8,8 @@
 
 #include <string>
 
-#include "lsp/jsonrpc.h"
 #include "tests/support/piped_process.h"
+#include "tools/lsp/jsonrpc.h"
 
 namespace {
 

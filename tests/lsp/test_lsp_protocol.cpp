@@ -6,10 +6,10 @@
 #include <chrono>
 #include <sstream>
 
-#include "lsp/jsonrpc.h"
-#include "lsp/server.h"
-#include "lsp/transport.h"
 #include "tests/lsp/lsp_session.h"
+#include "tools/lsp/jsonrpc.h"
+#include "tools/lsp/server.h"
+#include "tools/lsp/transport.h"
 
 using rs::lsp::Json;
 using rs::testing::LspSession;

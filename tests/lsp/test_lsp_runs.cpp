@@ -10,11 +10,11 @@
 #include <chrono>
 #include <thread>
 
-#include "lsp/checked_run.h"
-#include "lsp/program_analysis.h"
-#include "lsp/uri.h"
 #include "tests/cli/cli_support.h"
 #include "tests/lsp/lsp_session.h"
+#include "tools/lsp/checked_run.h"
+#include "tools/lsp/program_analysis.h"
+#include "tools/lsp/uri.h"
 
 using rs::lsp::Json;
 using rs::testing::LspSession;

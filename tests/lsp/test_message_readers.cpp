@@ -4,8 +4,8 @@
 // and DAP rules, written out by hand.
 #include <catch2/catch.hpp>
 
-#include "dap/message_reader.h"
-#include "lsp/message_reader.h"
+#include "tools/dap/message_reader.h"
+#include "tools/lsp/message_reader.h"
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/lib/robot_commands.h"
 #include "tests/models/models_support.h"
+#include "tools/cli/lib/robot_commands.h"
 
 namespace {
 

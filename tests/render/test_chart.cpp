@@ -11,11 +11,11 @@
 #include <map>
 #include <sstream>
 
-#include "cli/lib/plot_command.h"
 #include "render_test_util.h"
 #include "runtime/render/chart.h"
 #include "runtime/render/chart_draw.h"
 #include "runtime/render/draw.h"
+#include "tools/cli/lib/plot_command.h"
 
 using rs::testing::readBytes;
 using rs::testing::runCli;

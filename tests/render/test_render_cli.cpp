@@ -4,12 +4,12 @@
 #include <fmt/format.h>
 #include <sstream>
 
-#include "cli/lib/render_commands.h"
 #include "render_test_util.h"
 #include "runtime/render/animation.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/draw.h"
 #include "runtime/render/scene.h"
+#include "tools/cli/lib/render_commands.h"
 
 using rs::testing::readBytes;
 using rs::testing::runCli;

@@ -13,9 +13,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "debug/session.h"
 #include "tests/cli/cli_support.h"
 #include "tests/debug/debug_test_util.h"
+#include "tools/debug/session.h"
 
 namespace {
 

@@ -13,8 +13,8 @@
 #include "../render/render_test_util.h"
 #include "base/file_io.h"
 #include "launch/program.h"
-#include "teach/pendant.h"
 #include "tests/cli/cli_support.h"
+#include "tools/teach/pendant.h"
 
 namespace rs::testing {
 

@@ -12,11 +12,11 @@
 
 #include "../render/render_test_util.h"
 #include "launch/program.h"
-#include "teach/live_server.h"
-#include "teach/page.h"
-#include "teach/pendant_source.h"
 #include "tests/cli/cli_support.h"
 #include "tests/teach/raw_http.h"
+#include "tools/live/live_server.h"
+#include "tools/teach/page.h"
+#include "tools/teach/pendant_source.h"
 
 // Last: its <resolv.h> defines _res, a name Eigen's headers use.
 #include <httplib.h>

@@ -11,11 +11,11 @@
 // (Y 1490), as gantry_pick does (docs/teach.md, "Collisions").
 #include <catch2/catch.hpp>
 
-#include "teach/commands.h"
-#include "teach/keys.h"
-#include "teach/pendant.h"
 #include "tests/cli/cli_support.h"
 #include "tests/teach/gantry_pendant.h"
+#include "tools/teach/commands.h"
+#include "tools/teach/keys.h"
+#include "tools/teach/pendant.h"
 
 namespace {
 

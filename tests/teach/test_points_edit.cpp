@@ -13,9 +13,9 @@
 #include "base/file_io.h"
 #include "compiler/program/compiler.h"
 #include "launch/program.h"
-#include "teach/points_edit.h"
-#include "teach/program_file.h"
 #include "tests/cli/cli_support.h"
+#include "tools/teach/points_edit.h"
+#include "tools/teach/program_file.h"
 
 namespace {
 

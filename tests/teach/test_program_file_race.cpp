@@ -20,8 +20,8 @@
 #include <random>
 #include <thread>
 
-#include "teach/program_file.h"
 #include "tests/cli/cli_support.h"
+#include "tools/teach/program_file.h"
 
 namespace {
 

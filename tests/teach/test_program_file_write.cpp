@@ -8,8 +8,8 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 
-#include "teach/program_file.h"
 #include "tests/cli/cli_support.h"
+#include "tools/teach/program_file.h"
 
 namespace {
 

@@ -4,8 +4,8 @@
 // tests/browser/teach_test.mjs (it runs until Ctrl-C).
 #include <catch2/catch.hpp>
 
-#include "cli/lib/teach_command.h"
 #include "tests/cli/cli_support.h"
+#include "tools/cli/lib/teach_command.h"
 
 using rs::testing::runCli;
 

@@ -12,11 +12,11 @@
 #include "../render/render_test_util.h"
 #include "launch/program.h"
 #include "runtime/rhino/emulator.h"
-#include "teach/live_server.h"
-#include "teach/page.h"
-#include "teach/pendant_source.h"
-#include "teach/session.h"
 #include "tests/cli/cli_support.h"
+#include "tools/live/live_server.h"
+#include "tools/teach/page.h"
+#include "tools/teach/pendant_source.h"
+#include "tools/teach/session.h"
 
 // Last: its <resolv.h> defines _res, a name Eigen's headers use.
 #include <httplib.h>

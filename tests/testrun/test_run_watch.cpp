@@ -18,8 +18,8 @@
 #include "launch/program.h"
 #include "launch/run_request.h"
 #include "runtime/run/run.h"
-#include "testrun/run_watch.h"
 #include "tests/cli/cli_support.h"
+#include "tools/testrun/run_watch.h"
 
 namespace {
 

@@ -13,8 +13,8 @@
 #include <sstream>
 
 #include "diag/source_file.h"
-#include "testrun/expectation.h"
-#include "testrun/suite.h"
+#include "tools/testrun/expectation.h"
+#include "tools/testrun/suite.h"
 #include "vm/stop_reason.h"
 #include "tests/cli/cli_support.h"
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "diag/source_file.h"
-#include "testrun/expectation.h"
 #include "tests/cli/cli_support.h"
+#include "tools/testrun/expectation.h"
 
 namespace {
 

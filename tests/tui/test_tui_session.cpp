@@ -13,11 +13,11 @@
 #include <memory>
 #include <string>
 
-#include "teach/keys.h"
-#include "teach/pendant.h"
-#include "teach/tui/tui_session.h"
 #include "tests/cli/cli_support.h"
 #include "tests/teach/gantry_pendant.h"
+#include "tools/teach/keys.h"
+#include "tools/teach/pendant.h"
+#include "tools/teach/tui/tui_session.h"
 
 namespace {
 

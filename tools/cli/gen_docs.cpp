@@ -2,6 +2,6 @@
 // the command table. All the work is in cli/lib/gen_docs.cpp.
 #include <iostream>
 
-#include "cli/lib/gen_docs.h"
+#include "tools/cli/lib/gen_docs.h"
 
 int main(int argc, char** argv) { return rs::cli::genDocsCommand(argc, argv, std::cout, std::cerr); }

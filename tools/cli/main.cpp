@@ -1,7 +1,7 @@
 // robotsim: the command-line entry point. All the work is in cli/lib.
 #include <iostream>
 
-#include "cli/lib/app.h"
+#include "tools/cli/lib/app.h"
 
 int main(int argc, char** argv) {
   std::ios::sync_with_stdio(false);

@@ -1,4 +1,4 @@
-#include "dap/adapter.h"
+#include "tools/dap/adapter.h"
 
 #include <fmt/format.h>
 
@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "base/text.h"
-#include "dap/message_reader.h"
 #include "launch/program.h"
 #include "launch/run_request.h"
+#include "tools/dap/message_reader.h"
 #include "vm/disasm.h"
 
 namespace rs::dap {

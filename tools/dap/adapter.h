@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-#include "debug/session.h"
 #include "diag/source_file.h"
-#include "wire/framing.h"
-#include "wire/json.h"
+#include "tools/debug/session.h"
+#include "tools/wire/framing.h"
+#include "tools/wire/json.h"
 
 namespace rs::dap {
 

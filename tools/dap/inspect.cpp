@@ -7,7 +7,7 @@
 
 #include "base/seconds.h"
 #include "base/text.h"
-#include "dap/adapter.h"
+#include "tools/dap/adapter.h"
 #include "vm/disasm.h"
 
 namespace rs::dap {

@@ -1,4 +1,4 @@
-#include "dap/message_reader.h"
+#include "tools/dap/message_reader.h"
 
 namespace rs::dap {
 

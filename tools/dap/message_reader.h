@@ -8,8 +8,8 @@
 
 #include <string>
 
-#include "wire/framing.h"
-#include "wire/json.h"
+#include "tools/wire/framing.h"
+#include "tools/wire/json.h"
 
 namespace rs::dap {
 

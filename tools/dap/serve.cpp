@@ -1,12 +1,12 @@
-#include "dap/serve.h"
+#include "tools/dap/serve.h"
 
 #include <deque>
 #include <vector>
 
-#include "dap/adapter.h"
-#include "dap/message_reader.h"
-#include "wire/framing.h"
-#include "wire/json.h"
+#include "tools/dap/adapter.h"
+#include "tools/dap/message_reader.h"
+#include "tools/wire/framing.h"
+#include "tools/wire/json.h"
 
 namespace rs::dap {
 

@@ -7,7 +7,7 @@
 
 #include <ostream>
 
-#include "wire/transport.h"
+#include "tools/wire/transport.h"
 
 namespace rs::dap {
 

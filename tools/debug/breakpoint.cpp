@@ -1,4 +1,4 @@
-#include "debug/breakpoint.h"
+#include "tools/debug/breakpoint.h"
 
 #include <fmt/format.h>
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "debug/expression.h"
+#include "tools/debug/expression.h"
 
 namespace rs::debug {
 

@@ -1,4 +1,4 @@
-#include "debug/console.h"
+#include "tools/debug/console.h"
 
 #include <fmt/format.h>
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <string_view>
 
-#include "debug/session.h"
 #include "diag/source_file.h"
+#include "tools/debug/session.h"
 
 namespace rs::debug {
 

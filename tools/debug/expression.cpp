@@ -1,4 +1,4 @@
-#include "debug/expression.h"
+#include "tools/debug/expression.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "debug/session.h"
+#include "tools/debug/session.h"
 
 #include <fmt/format.h>
 

@@ -21,10 +21,10 @@
 #include <variant>
 #include <vector>
 
-#include "debug/breakpoint.h"
-#include "debug/timeline.h"
 #include "diag/result.h"
 #include "runtime/run/run.h"
+#include "tools/debug/breakpoint.h"
+#include "tools/debug/timeline.h"
 
 namespace rs::debug {
 

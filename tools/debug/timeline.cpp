@@ -1,4 +1,4 @@
-#include "debug/timeline.h"
+#include "tools/debug/timeline.h"
 
 #include <algorithm>
 

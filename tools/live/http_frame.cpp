@@ -1,4 +1,4 @@
-#include "teach/http_frame.h"
+#include "tools/live/http_frame.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "teach/live_routes.h"
+#include "tools/live/live_routes.h"
 
 #include <fmt/format.h>
 #include <httplib.h>
@@ -8,7 +8,7 @@
 #include <random>
 
 #include "base/file_io.h"
-#include "teach/http_frame.h"
+#include "tools/live/http_frame.h"
 
 namespace rs::teach {
 

@@ -22,8 +22,8 @@
 #include <string>
 #include <string_view>
 
-#include "teach/live_source.h"
-#include "teach/request_origin.h"
+#include "tools/live/live_source.h"
+#include "tools/live/request_origin.h"
 
 namespace rs::teach {
 

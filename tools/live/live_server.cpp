@@ -1,4 +1,4 @@
-#include "teach/live_server.h"
+#include "tools/live/live_server.h"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -18,7 +18,7 @@
 #include <mutex>
 #include <vector>
 
-#include "teach/http_frame.h"
+#include "tools/live/http_frame.h"
 
 namespace rs::teach {
 

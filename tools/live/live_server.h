@@ -29,8 +29,8 @@
 #include <string>
 #include <thread>
 
-#include "teach/live_routes.h"
-#include "teach/live_source.h"
+#include "tools/live/live_routes.h"
+#include "tools/live/live_source.h"
 
 namespace rs::teach {
 

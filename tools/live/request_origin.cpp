@@ -1,4 +1,4 @@
-#include "teach/request_origin.h"
+#include "tools/live/request_origin.h"
 
 #include <arpa/inet.h>
 #include <fmt/format.h>

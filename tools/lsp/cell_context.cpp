@@ -1,4 +1,4 @@
-#include "lsp/cell_context.h"
+#include "tools/lsp/cell_context.h"
 
 #include <system_error>
 

@@ -1,4 +1,4 @@
-#include "lsp/checked_run.h"
+#include "tools/lsp/checked_run.h"
 
 #include <fmt/format.h>
 #include <time.h>
@@ -6,7 +6,7 @@
 #include "launch/program.h"
 #include "launch/run_diagnostics.h"
 #include "launch/run_request.h"
-#include "lsp/program_analysis.h"
+#include "tools/lsp/program_analysis.h"
 #include "runtime/run/run.h"
 #include "compiler/stimuli/stimuli.h"
 

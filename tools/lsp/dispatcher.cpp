@@ -1,4 +1,4 @@
-#include "lsp/dispatcher.h"
+#include "tools/lsp/dispatcher.h"
 
 #include <fmt/format.h>
 

@@ -14,8 +14,8 @@
 #include <string>
 #include <variant>
 
-#include "lsp/json.h"
-#include "lsp/params.h"
+#include "tools/lsp/json.h"
+#include "tools/lsp/params.h"
 
 namespace rs::lsp {
 

@@ -1,4 +1,4 @@
-#include "lsp/document.h"
+#include "tools/lsp/document.h"
 
 #include <algorithm>
 

@@ -2,7 +2,7 @@
 // a value is written out), under the server's names.
 #pragma once
 
-#include "wire/json.h"
+#include "tools/wire/json.h"
 
 namespace rs::lsp {
 

@@ -3,7 +3,7 @@
 // code).
 #pragma once
 
-#include "wire/framing.h"
+#include "tools/wire/framing.h"
 
 namespace rs::lsp {
 

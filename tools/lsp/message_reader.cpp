@@ -1,4 +1,4 @@
-#include "lsp/message_reader.h"
+#include "tools/lsp/message_reader.h"
 
 #include "base/text.h"
 #include "diag/source_file.h"

@@ -9,9 +9,9 @@
 
 #include <string>
 
-#include "lsp/dispatcher.h"
-#include "lsp/json.h"
-#include "lsp/jsonrpc.h"
+#include "tools/lsp/dispatcher.h"
+#include "tools/lsp/json.h"
+#include "tools/lsp/jsonrpc.h"
 
 namespace rs::lsp {
 

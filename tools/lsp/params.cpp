@@ -1,4 +1,4 @@
-#include "lsp/params.h"
+#include "tools/lsp/params.h"
 
 #include <fmt/format.h>
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <string_view>
 
-#include "lsp/json.h"
+#include "tools/lsp/json.h"
 
 namespace rs::lsp {
 

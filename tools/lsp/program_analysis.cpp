@@ -1,4 +1,4 @@
-#include "lsp/program_analysis.h"
+#include "tools/lsp/program_analysis.h"
 
 #include <fmt/format.h>
 

@@ -17,10 +17,10 @@
 
 #include "compiler/program/compiler.h"
 #include "launch/cell_directive.h"
-#include "lsp/cell_context.h"
-#include "lsp/checked_run.h"
-#include "lsp/document.h"
-#include "lsp/program_index.h"
+#include "tools/lsp/cell_context.h"
+#include "tools/lsp/checked_run.h"
+#include "tools/lsp/document.h"
+#include "tools/lsp/program_index.h"
 #include "vm/machine.h"
 
 namespace rs::lsp {

@@ -1,4 +1,4 @@
-#include "lsp/program_index.h"
+#include "tools/lsp/program_index.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "lsp/protocol.h"
+#include "tools/lsp/protocol.h"
 
 namespace rs::lsp {
 

@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "lsp/document.h"
-#include "lsp/json.h"
-#include "lsp/params.h"
+#include "tools/lsp/document.h"
+#include "tools/lsp/json.h"
+#include "tools/lsp/params.h"
 
 namespace rs::lsp {
 

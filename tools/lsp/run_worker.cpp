@@ -1,4 +1,4 @@
-#include "lsp/run_worker.h"
+#include "tools/lsp/run_worker.h"
 
 #include <algorithm>
 

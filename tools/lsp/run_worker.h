@@ -15,8 +15,8 @@
 #include <string>
 #include <thread>
 
-#include "lsp/json.h"
-#include "lsp/program_analysis.h"
+#include "tools/lsp/json.h"
+#include "tools/lsp/program_analysis.h"
 
 namespace rs::lsp {
 

@@ -1,13 +1,13 @@
-#include "lsp/server.h"
+#include "tools/lsp/server.h"
 
 #include <fmt/format.h>
 
 #include "base/file_io.h"
 #include "base/text.h"
-#include "lsp/params.h"
-#include "lsp/features/features.h"
-#include "lsp/protocol.h"
-#include "lsp/uri.h"
+#include "tools/lsp/params.h"
+#include "tools/lsp/features/features.h"
+#include "tools/lsp/protocol.h"
+#include "tools/lsp/uri.h"
 
 namespace rs::lsp {
 

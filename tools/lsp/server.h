@@ -23,14 +23,14 @@
 #include <string>
 #include <vector>
 
-#include "lsp/dispatcher.h"
-#include "lsp/document.h"
-#include "lsp/json.h"
-#include "lsp/jsonrpc.h"
-#include "lsp/message_reader.h"
-#include "lsp/run_worker.h"
-#include "lsp/transport.h"
-#include "lsp/workspace.h"
+#include "tools/lsp/dispatcher.h"
+#include "tools/lsp/document.h"
+#include "tools/lsp/json.h"
+#include "tools/lsp/jsonrpc.h"
+#include "tools/lsp/message_reader.h"
+#include "tools/lsp/run_worker.h"
+#include "tools/lsp/transport.h"
+#include "tools/lsp/workspace.h"
 
 namespace rs::lsp {
 

@@ -2,7 +2,7 @@
 // (wire/transport.h, shared with the debug adapter).
 #pragma once
 
-#include "wire/transport.h"
+#include "tools/wire/transport.h"
 
 namespace rs::lsp {
 

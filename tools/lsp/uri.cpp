@@ -1,4 +1,4 @@
-#include "lsp/uri.h"
+#include "tools/lsp/uri.h"
 
 #include <fmt/format.h>
 

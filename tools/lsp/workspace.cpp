@@ -1,11 +1,11 @@
-#include "lsp/workspace.h"
+#include "tools/lsp/workspace.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <system_error>
 
 #include "base/ascii.h"
-#include "lsp/uri.h"
+#include "tools/lsp/uri.h"
 
 namespace rs::lsp {
 

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "lsp/cell_context.h"
-#include "lsp/document.h"
-#include "lsp/program_analysis.h"
 #include "runtime/sim/collision_watch.h"
+#include "tools/lsp/cell_context.h"
+#include "tools/lsp/document.h"
+#include "tools/lsp/program_analysis.h"
 
 namespace rs::lsp {
 

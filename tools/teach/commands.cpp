@@ -1,4 +1,4 @@
-#include "teach/commands.h"
+#include "tools/teach/commands.h"
 
 #include <fmt/format.h>
 

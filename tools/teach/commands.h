@@ -15,7 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "teach/pendant.h"
+#include "tools/teach/pendant.h"
 
 namespace rs::teach {
 

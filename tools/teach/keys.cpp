@@ -1,4 +1,4 @@
-#include "teach/keys.h"
+#include "tools/teach/keys.h"
 
 namespace rs::teach {
 

@@ -1,4 +1,4 @@
-#include "teach/page.h"
+#include "tools/teach/page.h"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 
 #include "runtime/render/animation.h"
 #include "runtime/render/camera.h"
-#include "teach/keys.h"
+#include "tools/teach/keys.h"
 
 namespace rs::teach {
 

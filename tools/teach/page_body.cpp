@@ -1,6 +1,6 @@
 // The teach page's body and its own style rules (on top of the animation
 // page's style sheet, runtime/render/page_style.cpp, which it shares).
-#include "teach/page.h"
+#include "tools/teach/page.h"
 
 namespace rs::teach::page {
 

@@ -9,7 +9,7 @@
 // read-only mode (the model's readOnly: the debugger's view) the state is
 // a stopped run's (teach/run_source.h) and every command is refused.
 // window.robotsim exposes the state and the selection to tests.
-#include "teach/page.h"
+#include "tools/teach/page.h"
 
 namespace rs::teach::page {
 

@@ -1,4 +1,4 @@
-#include "teach/pendant.h"
+#include "tools/teach/pendant.h"
 
 #include <fmt/format.h>
 

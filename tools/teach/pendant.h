@@ -22,8 +22,8 @@
 #include "model/workcell/cartesian_jog.h"
 #include "model/workcell/model.h"
 #include "runtime/run/rig.h"
-#include "teach/pendant_state.h"
-#include "teach/program_file.h"
+#include "tools/teach/pendant_state.h"
+#include "tools/teach/program_file.h"
 #include "vm/machine.h"
 
 namespace rs::rhino {

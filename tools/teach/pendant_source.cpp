@@ -1,6 +1,6 @@
-#include "teach/pendant_source.h"
+#include "tools/teach/pendant_source.h"
 
-#include "teach/commands.h"
+#include "tools/teach/commands.h"
 
 namespace rs::teach {
 

@@ -7,8 +7,8 @@
 #include <mutex>
 #include <string>
 
-#include "teach/live_source.h"
-#include "teach/pendant.h"
+#include "tools/live/live_source.h"
+#include "tools/teach/pendant.h"
 
 namespace rs::teach {
 

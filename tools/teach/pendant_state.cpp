@@ -1,4 +1,4 @@
-#include "teach/pendant_state.h"
+#include "tools/teach/pendant_state.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "teach/points_edit.h"
+#include "tools/teach/points_edit.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "teach/program_file.h"
+#include "tools/teach/program_file.h"
 
 #include <fmt/format.h>
 #include <sys/stat.h>

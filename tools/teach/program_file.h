@@ -15,7 +15,7 @@
 #include <string_view>
 
 #include "diag/result.h"
-#include "teach/points_edit.h"
+#include "tools/teach/points_edit.h"
 
 namespace rs::teach {
 

@@ -1,6 +1,6 @@
-#include "teach/run_source.h"
+#include "tools/teach/run_source.h"
 
-#include "teach/pendant_state.h"
+#include "tools/teach/pendant_state.h"
 
 namespace rs::teach {
 

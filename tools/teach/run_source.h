@@ -11,7 +11,7 @@
 #include <string>
 
 #include "runtime/run/run.h"
-#include "teach/live_source.h"
+#include "tools/live/live_source.h"
 
 namespace rs::teach {
 

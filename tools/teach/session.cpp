@@ -1,4 +1,4 @@
-#include "teach/session.h"
+#include "tools/teach/session.h"
 
 #include "base/file_io.h"
 #include "launch/cell_directive.h"

@@ -11,7 +11,7 @@
 #include "diag/diagnostic.h"
 #include "launch/program.h"
 #include "launch/rhino.h"
-#include "teach/pendant.h"
+#include "tools/teach/pendant.h"
 
 namespace rs::teach {
 

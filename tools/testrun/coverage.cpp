@@ -1,4 +1,4 @@
-#include "testrun/coverage.h"
+#include "tools/testrun/coverage.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "testrun/evaluate.h"
+#include "tools/testrun/evaluate.h"
 
 #include <fmt/format.h>
 

@@ -10,8 +10,8 @@
 
 #include "diag/diagnostic.h"
 #include "runtime/run/run.h"
-#include "testrun/expectation.h"
-#include "testrun/run_watch.h"
+#include "tools/testrun/expectation.h"
+#include "tools/testrun/run_watch.h"
 
 namespace rs::testrun {
 

@@ -1,4 +1,4 @@
-#include "testrun/expectation.h"
+#include "tools/testrun/expectation.h"
 
 #include <fmt/format.h>
 
@@ -10,8 +10,8 @@
 
 #include "base/ascii.h"
 #include "compiler/stimuli/stimuli_text.h"
-#include "testrun/expectation_words.h"
-#include "testrun/golden_trace.h"
+#include "tools/testrun/expectation_words.h"
+#include "tools/testrun/golden_trace.h"
 #include "vm/stop_reason.h"
 
 namespace rs::testrun {

@@ -1,4 +1,4 @@
-#include "testrun/expectation_words.h"
+#include "tools/testrun/expectation_words.h"
 
 #include <fmt/format.h>
 

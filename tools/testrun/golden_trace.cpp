@@ -1,4 +1,4 @@
-#include "testrun/golden_trace.h"
+#include "tools/testrun/golden_trace.h"
 
 #include <fmt/format.h>
 

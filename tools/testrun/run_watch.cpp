@@ -1,4 +1,4 @@
-#include "testrun/run_watch.h"
+#include "tools/testrun/run_watch.h"
 
 #include "base/ascii.h"
 

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "runtime/run/run.h"
-#include "testrun/expectation.h"
+#include "tools/testrun/expectation.h"
 
 namespace rs::testrun {
 

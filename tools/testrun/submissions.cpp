@@ -1,4 +1,4 @@
-#include "testrun/submissions.h"
+#include "tools/testrun/submissions.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "testrun/suite.h"
+#include "tools/testrun/suite.h"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include <set>
 #include <thread>
 
-#include "testrun/submissions.h"
+#include "tools/testrun/submissions.h"
 
 namespace rs::testrun {
 

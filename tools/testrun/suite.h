@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
-#include "testrun/test_file.h"
+#include "tools/testrun/test_file.h"
 
 namespace rs::testrun {
 

@@ -1,4 +1,4 @@
-#include "testrun/test_file.h"
+#include "tools/testrun/test_file.h"
 
 #include <fmt/format.h>
 
@@ -13,10 +13,10 @@
 #include "runtime/run/empty_close.h"
 #include "runtime/run/run.h"
 #include "runtime/run/trace.h"
-#include "testrun/evaluate.h"
-#include "testrun/expectation.h"
-#include "testrun/golden_trace.h"
-#include "testrun/run_watch.h"
+#include "tools/testrun/evaluate.h"
+#include "tools/testrun/expectation.h"
+#include "tools/testrun/golden_trace.h"
+#include "tools/testrun/run_watch.h"
 #include "vm/image_file.h"
 
 namespace rs::testrun {

@@ -14,7 +14,7 @@
 #include "diag/diagnostic.h"
 #include "diag/source_file.h"
 #include "runtime/run/run.h"
-#include "testrun/coverage.h"
+#include "tools/testrun/coverage.h"
 #include "vm/machine.h"
 
 namespace rs::testrun {

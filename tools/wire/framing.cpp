@@ -1,4 +1,4 @@
-#include "wire/framing.h"
+#include "tools/wire/framing.h"
 
 #include <fmt/format.h>
 

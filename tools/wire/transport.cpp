@@ -1,4 +1,4 @@
-#include "wire/transport.h"
+#include "tools/wire/transport.h"
 
 #include <poll.h>
 #include <signal.h>

@@ -1,4 +1,4 @@
-#include "cli/lib/app.h"
+#include "tools/cli/lib/app.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -9,10 +9,10 @@
 
 #include "base/near_names.h"
 #include "base/text.h"
-#include "cli/lib/commands.h"
-#include "cli/lib/completion_query.h"
-#include "cli/lib/completion_spec.h"
-#include "cli/lib/helpers.h"
+#include "tools/cli/lib/commands.h"
+#include "tools/cli/lib/completion_query.h"
+#include "tools/cli/lib/completion_spec.h"
+#include "tools/cli/lib/helpers.h"
 
 namespace rs::cli {
 

@@ -3,7 +3,7 @@
 
 #include <ostream>
 
-#include "cli/lib/exit_codes.h"
+#include "tools/cli/lib/exit_codes.h"
 
 namespace rs::cli {
 

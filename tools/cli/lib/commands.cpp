@@ -1,4 +1,4 @@
-#include "cli/lib/commands.h"
+#include "tools/cli/lib/commands.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/lib/dap_command.h"
-#include "cli/lib/describe_command.h"
-#include "cli/lib/exit_codes.h"
-#include "cli/lib/help.h"
-#include "cli/lib/teach_tui_command.h"
+#include "tools/cli/lib/dap_command.h"
+#include "tools/cli/lib/describe_command.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/help.h"
+#include "tools/cli/lib/teach_tui_command.h"
 
 namespace rs::cli {
 

@@ -13,19 +13,19 @@
 #include <string_view>
 #include <vector>
 
-#include "cli/lib/debug_command.h"
-#include "cli/lib/ik_command.h"
-#include "cli/lib/list_command.h"
-#include "cli/lib/lsp_command.h"
-#include "cli/lib/plot_command.h"
-#include "cli/lib/program_commands.h"
-#include "cli/lib/render_commands.h"
-#include "cli/lib/robot_commands.h"
-#include "cli/lib/run_command.h"
-#include "cli/lib/serial_commands.h"
-#include "cli/lib/teach_command.h"
-#include "cli/lib/test_command.h"
-#include "cli/lib/version_command.h"
+#include "tools/cli/lib/debug_command.h"
+#include "tools/cli/lib/ik_command.h"
+#include "tools/cli/lib/list_command.h"
+#include "tools/cli/lib/lsp_command.h"
+#include "tools/cli/lib/plot_command.h"
+#include "tools/cli/lib/program_commands.h"
+#include "tools/cli/lib/render_commands.h"
+#include "tools/cli/lib/robot_commands.h"
+#include "tools/cli/lib/run_command.h"
+#include "tools/cli/lib/serial_commands.h"
+#include "tools/cli/lib/teach_command.h"
+#include "tools/cli/lib/test_command.h"
+#include "tools/cli/lib/version_command.h"
 
 namespace rs::cli {
 

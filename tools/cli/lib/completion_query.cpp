@@ -1,4 +1,4 @@
-#include "cli/lib/completion_query.h"
+#include "tools/cli/lib/completion_query.h"
 
 #include <filesystem>
 #include <set>
@@ -6,8 +6,8 @@
 #include <system_error>
 
 #include "base/text.h"
-#include "cli/lib/exit_codes.h"
 #include "compiler/description/library.h"
+#include "tools/cli/lib/exit_codes.h"
 
 namespace rs::cli {
 

@@ -1,4 +1,4 @@
-#include "cli/lib/completion_spec.h"
+#include "tools/cli/lib/completion_spec.h"
 
 #include <CLI/CLI.hpp>
 

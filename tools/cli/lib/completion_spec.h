@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/lib/commands.h"
+#include "tools/cli/lib/commands.h"
 
 namespace rs::cli {
 

@@ -1,10 +1,10 @@
-#include "cli/lib/dap_command.h"
+#include "tools/cli/lib/dap_command.h"
 
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
-#include "dap/serve.h"
-#include "wire/transport.h"
+#include "tools/dap/serve.h"
+#include "tools/wire/transport.h"
 
 namespace rs::cli {
 

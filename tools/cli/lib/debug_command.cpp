@@ -1,4 +1,4 @@
-#include "cli/lib/debug_command.h"
+#include "tools/cli/lib/debug_command.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -7,13 +7,13 @@
 #include <fstream>
 
 #include "base/text.h"
-#include "cli/lib/debug_terminal.h"
-#include "cli/lib/debug_view.h"
-#include "cli/lib/exit_codes.h"
-#include "cli/lib/open_browser.h"
-#include "cli/lib/options.h"
-#include "debug/console.h"
-#include "debug/session.h"
+#include "tools/cli/lib/debug_terminal.h"
+#include "tools/cli/lib/debug_view.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/open_browser.h"
+#include "tools/cli/lib/options.h"
+#include "tools/debug/console.h"
+#include "tools/debug/session.h"
 
 namespace rs::cli {
 

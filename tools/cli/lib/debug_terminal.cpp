@@ -1,4 +1,4 @@
-#include "cli/lib/debug_terminal.h"
+#include "tools/cli/lib/debug_terminal.h"
 
 #include <editline/readline.h>
 #include <fcntl.h>

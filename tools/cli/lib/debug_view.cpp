@@ -1,10 +1,10 @@
-#include "cli/lib/debug_view.h"
+#include "tools/cli/lib/debug_view.h"
 
 #include <fmt/format.h>
 #include <pthread.h>
 #include <signal.h>
 
-#include "teach/page.h"
+#include "tools/teach/page.h"
 
 namespace rs::cli {
 

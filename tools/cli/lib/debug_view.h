@@ -11,9 +11,9 @@
 #include <memory>
 #include <string>
 
-#include "debug/session.h"
-#include "teach/live_server.h"
-#include "teach/run_source.h"
+#include "tools/debug/session.h"
+#include "tools/live/live_server.h"
+#include "tools/teach/run_source.h"
 
 namespace rs::cli {
 

@@ -1,4 +1,4 @@
-#include "cli/lib/describe_command.h"
+#include "tools/cli/lib/describe_command.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -8,12 +8,12 @@
 
 #include "base/number_text.h"
 #include "base/text.h"
-#include "cli/lib/app.h"
 #include "compiler/description/library.h"
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/forward_kinematics.h"
 #include "model/workcell/reach.h"
 #include "model/workcell/support.h"
+#include "tools/cli/lib/app.h"
 
 namespace rs::cli {
 

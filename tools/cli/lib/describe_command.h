@@ -7,7 +7,7 @@
 
 #include <ostream>
 
-#include "cli/lib/robot_commands.h"
+#include "tools/cli/lib/robot_commands.h"
 
 namespace rs::cli {
 

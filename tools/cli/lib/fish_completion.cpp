@@ -1,11 +1,11 @@
-#include "cli/lib/fish_completion.h"
+#include "tools/cli/lib/fish_completion.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <vector>
 
-#include "cli/lib/completion_spec.h"
+#include "tools/cli/lib/completion_spec.h"
 
 namespace rs::cli {
 

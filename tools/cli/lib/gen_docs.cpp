@@ -1,4 +1,4 @@
-#include "cli/lib/gen_docs.h"
+#include "tools/cli/lib/gen_docs.h"
 
 #include <CLI/CLI.hpp>
 
@@ -6,12 +6,12 @@
 #include <string>
 
 #include "base/file_write.h"
-#include "cli/lib/bash_completion.h"
-#include "cli/lib/commands.h"
-#include "cli/lib/exit_codes.h"
-#include "cli/lib/fish_completion.h"
-#include "cli/lib/man_page.h"
-#include "cli/lib/zsh_completion.h"
+#include "tools/cli/lib/bash_completion.h"
+#include "tools/cli/lib/commands.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/fish_completion.h"
+#include "tools/cli/lib/man_page.h"
+#include "tools/cli/lib/zsh_completion.h"
 
 namespace rs::cli {
 

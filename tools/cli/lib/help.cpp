@@ -1,4 +1,4 @@
-#include "cli/lib/help.h"
+#include "tools/cli/lib/help.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -6,7 +6,7 @@
 #include "base/ascii.h"
 #include "base/near_names.h"
 #include "base/text.h"
-#include "cli/lib/exit_codes.h"
+#include "tools/cli/lib/exit_codes.h"
 #include "vm/opcodes.h"
 
 namespace rs::cli {

@@ -1,4 +1,4 @@
-#include "cli/lib/helpers.h"
+#include "tools/cli/lib/helpers.h"
 
 #include <unistd.h>
 
@@ -11,7 +11,7 @@
 
 #include "base/self_path.h"
 #include "base/text.h"
-#include "cli/lib/exit_codes.h"
+#include "tools/cli/lib/exit_codes.h"
 
 namespace rs::cli {
 

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "cli/lib/commands.h"
+#include "tools/cli/lib/commands.h"
 
 namespace rs::cli {
 

@@ -1,4 +1,4 @@
-#include "cli/lib/ik_command.h"
+#include "tools/cli/lib/ik_command.h"
 
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -8,14 +8,14 @@
 #include "base/ascii.h"
 #include "base/number_text.h"
 #include "base/text.h"
-#include "cli/lib/exit_codes.h"
-#include "cli/lib/number_args.h"
-#include "cli/lib/robot_commands.h"
 #include "compiler/description/library.h"
 #include "compiler/program/kinematics_diagnostic.h"
 #include "diag/diagnostic.h"
 #include "model/kinematics/ik.h"
 #include "model/workcell/pose_solver.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/number_args.h"
+#include "tools/cli/lib/robot_commands.h"
 
 namespace rs::cli {
 

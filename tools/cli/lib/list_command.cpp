@@ -1,4 +1,4 @@
-#include "cli/lib/list_command.h"
+#include "tools/cli/lib/list_command.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -6,9 +6,9 @@
 #include <algorithm>
 
 #include "base/text.h"
-#include "cli/lib/exit_codes.h"
 #include "compiler/description/library.h"
 #include "compiler/description/library_listing.h"
+#include "tools/cli/lib/exit_codes.h"
 
 namespace rs::cli {
 

@@ -1,10 +1,10 @@
-#include "cli/lib/lsp_command.h"
+#include "tools/cli/lib/lsp_command.h"
 
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
-#include "lsp/server.h"
-#include "lsp/transport.h"
+#include "tools/lsp/server.h"
+#include "tools/lsp/transport.h"
 
 namespace rs::cli {
 

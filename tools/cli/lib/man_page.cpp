@@ -1,4 +1,4 @@
-#include "cli/lib/man_page.h"
+#include "tools/cli/lib/man_page.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -8,7 +8,7 @@
 #include <sstream>
 #include <vector>
 
-#include "cli/lib/exit_codes.h"
+#include "tools/cli/lib/exit_codes.h"
 
 namespace rs::cli {
 

@@ -1,4 +1,4 @@
-#include "cli/lib/number_args.h"
+#include "tools/cli/lib/number_args.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "cli/lib/open_browser.h"
+#include "tools/cli/lib/open_browser.h"
 
 #include <fcntl.h>
 #include <fmt/format.h>

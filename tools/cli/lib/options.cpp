@@ -1,8 +1,8 @@
-#include "cli/lib/options.h"
+#include "tools/cli/lib/options.h"
 
 #include <CLI/CLI.hpp>
 
-#include "cli/lib/number_args.h"
+#include "tools/cli/lib/number_args.h"
 
 namespace rs::cli {
 

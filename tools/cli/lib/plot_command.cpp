@@ -1,4 +1,4 @@
-#include "cli/lib/plot_command.h"
+#include "tools/cli/lib/plot_command.h"
 
 #include <fmt/format.h>
 
@@ -9,14 +9,14 @@
 #include "base/file_io.h"
 #include "base/seconds.h"
 #include "base/text.h"
-#include "cli/lib/exit_codes.h"
-#include "cli/lib/number_args.h"
-#include "cli/lib/options.h"
-#include "cli/lib/render_commands.h"
-#include "cli/lib/run_warnings.h"
 #include "launch/run_diagnostics.h"
 #include "runtime/render/chart_draw.h"
 #include "runtime/run/empty_close.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/number_args.h"
+#include "tools/cli/lib/options.h"
+#include "tools/cli/lib/render_commands.h"
+#include "tools/cli/lib/run_warnings.h"
 
 namespace rs::cli {
 

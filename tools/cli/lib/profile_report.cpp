@@ -1,4 +1,4 @@
-#include "cli/lib/profile_report.h"
+#include "tools/cli/lib/profile_report.h"
 
 #include <fmt/format.h>
 

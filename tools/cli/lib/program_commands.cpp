@@ -1,12 +1,12 @@
-#include "cli/lib/program_commands.h"
+#include "tools/cli/lib/program_commands.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "base/file_io.h"
 #include "base/text.h"
-#include "cli/lib/exit_codes.h"
-#include "cli/lib/options.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/options.h"
 #include "diag/read_input.h"
 #include "compiler/program/compiler.h"
 #include "vm/disasm.h"

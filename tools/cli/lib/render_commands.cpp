@@ -1,4 +1,4 @@
-#include "cli/lib/render_commands.h"
+#include "tools/cli/lib/render_commands.h"
 
 #include <fmt/format.h>
 
@@ -11,12 +11,12 @@
 #include "base/file_io.h"
 #include "base/seconds.h"
 #include "base/text.h"
-#include "cli/lib/exit_codes.h"
-#include "cli/lib/number_args.h"
-#include "cli/lib/options.h"
-#include "cli/lib/plot_command.h"
-#include "cli/lib/report.h"
-#include "cli/lib/run_warnings.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/number_args.h"
+#include "tools/cli/lib/options.h"
+#include "tools/cli/lib/plot_command.h"
+#include "tools/cli/lib/report.h"
+#include "tools/cli/lib/run_warnings.h"
 #include "launch/run_diagnostics.h"
 #include "runtime/render/animation.h"
 #include "runtime/render/collision_marks.h"

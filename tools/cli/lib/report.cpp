@@ -1,4 +1,4 @@
-#include "cli/lib/report.h"
+#include "tools/cli/lib/report.h"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 
 #include "base/seconds.h"
 #include "base/text.h"
-#include "cli/lib/profile_report.h"
+#include "tools/cli/lib/profile_report.h"
 #include "runtime/run/trace.h"
 #include "vm/stop_reason.h"
 #include "runtime/run/empty_close.h"

@@ -1,4 +1,4 @@
-#include "cli/lib/robot_commands.h"
+#include "tools/cli/lib/robot_commands.h"
 
 #include <CLI/CLI.hpp>
 
@@ -8,12 +8,12 @@
 
 #include "base/number_text.h"
 #include "base/text.h"
-#include "cli/lib/app.h"
-#include "cli/lib/number_args.h"
 #include "compiler/description/library.h"
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/forward_kinematics.h"
 #include "model/kinematics/joint_values.h"
+#include "tools/cli/lib/app.h"
+#include "tools/cli/lib/number_args.h"
 
 namespace rs::cli {
 

@@ -1,16 +1,16 @@
-#include "cli/lib/run_command.h"
+#include "tools/cli/lib/run_command.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "base/seconds.h"
 #include "base/text.h"
-#include "cli/lib/exit_codes.h"
-#include "cli/lib/options.h"
-#include "cli/lib/profile_report.h"
-#include "cli/lib/report.h"
-#include "cli/lib/run_warnings.h"
-#include "cli/lib/serial_commands.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/options.h"
+#include "tools/cli/lib/profile_report.h"
+#include "tools/cli/lib/report.h"
+#include "tools/cli/lib/run_warnings.h"
+#include "tools/cli/lib/serial_commands.h"
 #include "runtime/run/trace.h"
 #include "launch/run_diagnostics.h"
 #include "runtime/run/run.h"

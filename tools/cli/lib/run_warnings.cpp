@@ -1,4 +1,4 @@
-#include "cli/lib/run_warnings.h"
+#include "tools/cli/lib/run_warnings.h"
 
 namespace rs::cli {
 

@@ -1,4 +1,4 @@
-#include "cli/lib/serial_commands.h"
+#include "tools/cli/lib/serial_commands.h"
 
 #include <fmt/format.h>
 #include <poll.h>
@@ -16,8 +16,8 @@
 #include "base/file_io.h"
 #include "diag/read_input.h"
 #include "base/text.h"
-#include "cli/lib/app.h"
-#include "cli/lib/number_args.h"
+#include "tools/cli/lib/app.h"
+#include "tools/cli/lib/number_args.h"
 #include "compiler/description/library.h"
 #include "launch/program.h"
 #include "launch/rhino.h"

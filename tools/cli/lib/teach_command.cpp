@@ -1,4 +1,4 @@
-#include "cli/lib/teach_command.h"
+#include "tools/cli/lib/teach_command.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -8,14 +8,14 @@
 #include <ostream>
 #include <thread>
 
-#include "cli/lib/exit_codes.h"
-#include "cli/lib/open_browser.h"
-#include "cli/lib/options.h"
-#include "cli/lib/serial_commands.h"
 #include "runtime/rhino/interrupt.h"
-#include "teach/live_server.h"
-#include "teach/page.h"
-#include "teach/pendant_source.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/open_browser.h"
+#include "tools/cli/lib/options.h"
+#include "tools/cli/lib/serial_commands.h"
+#include "tools/live/live_server.h"
+#include "tools/teach/page.h"
+#include "tools/teach/pendant_source.h"
 
 namespace rs::cli {
 

@@ -5,7 +5,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "teach/session.h"
+#include "tools/teach/session.h"
 
 namespace CLI {
 class App;

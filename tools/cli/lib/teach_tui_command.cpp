@@ -1,8 +1,8 @@
-#include "cli/lib/teach_tui_command.h"
+#include "tools/cli/lib/teach_tui_command.h"
 
-#include "cli/lib/exit_codes.h"
-#include "teach/session.h"
-#include "teach/tui/tui_curses.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/teach/session.h"
+#include "tools/teach/tui/tui_curses.h"
 
 namespace rs::cli {
 

@@ -6,7 +6,7 @@
 
 #include <ostream>
 
-#include "cli/lib/teach_command.h"
+#include "tools/cli/lib/teach_command.h"
 
 namespace rs::cli {
 

@@ -1,4 +1,4 @@
-#include "cli/lib/test_command.h"
+#include "tools/cli/lib/test_command.h"
 
 #include <fmt/format.h>
 
@@ -12,12 +12,12 @@
 #include "base/file_io.h"
 #include "base/seconds.h"
 #include "base/text.h"
-#include "cli/lib/exit_codes.h"
-#include "cli/lib/number_args.h"
-#include "cli/lib/options.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/number_args.h"
+#include "tools/cli/lib/options.h"
 #include "runtime/run/trace.h"
 #include "diag/diagnostic.h"
-#include "testrun/suite.h"
+#include "tools/testrun/suite.h"
 #include "vm/interpreter.h"
 
 namespace rs::cli {

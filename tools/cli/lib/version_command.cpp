@@ -1,4 +1,4 @@
-#include "cli/lib/version_command.h"
+#include "tools/cli/lib/version_command.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -6,9 +6,9 @@
 
 #include <ostream>
 
-#include "cli/lib/build_info.h"
-#include "cli/lib/exit_codes.h"
 #include "compiler/description/library_dir.h"
+#include "tools/cli/lib/build_info.h"
+#include "tools/cli/lib/exit_codes.h"
 
 namespace rs::cli {
 

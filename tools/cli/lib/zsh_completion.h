@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "cli/lib/commands.h"
+#include "tools/cli/lib/commands.h"
 
 namespace rs::cli {
 

@@ -16,8 +16,8 @@
 #include "base/ascii.h"
 #include "base/near_names.h"
 #include "compiler/program/ast_builder.h"
-#include "lsp/features/features.h"
-#include "lsp/protocol.h"
+#include "tools/lsp/features/features.h"
+#include "tools/lsp/protocol.h"
 #include "vm/opcodes.h"
 
 namespace rs::lsp {

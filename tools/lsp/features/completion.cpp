@@ -7,7 +7,7 @@
 #include <set>
 
 #include "base/ascii.h"
-#include "lsp/features/features.h"
+#include "tools/lsp/features/features.h"
 
 namespace rs::lsp {
 

@@ -12,9 +12,9 @@
 #include "base/number_text.h"
 #include "compiler/description/description.h"
 #include "compiler/description/library.h"
-#include "lsp/features/features.h"
-#include "lsp/protocol.h"
-#include "lsp/uri.h"
+#include "tools/lsp/features/features.h"
+#include "tools/lsp/protocol.h"
+#include "tools/lsp/uri.h"
 #include "model/kinematics/dh.h"
 #include "compiler/stimuli/stimuli.h"
 

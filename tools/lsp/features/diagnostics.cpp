@@ -8,9 +8,9 @@
 #include <map>
 
 #include "base/ascii.h"
-#include "lsp/features/features.h"
-#include "lsp/protocol.h"
-#include "lsp/uri.h"
+#include "tools/lsp/features/features.h"
+#include "tools/lsp/protocol.h"
+#include "tools/lsp/uri.h"
 
 namespace rs::lsp {
 

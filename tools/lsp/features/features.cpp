@@ -1,4 +1,4 @@
-#include "lsp/features/features.h"
+#include "tools/lsp/features/features.h"
 
 #include <cctype>
 

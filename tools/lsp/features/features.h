@@ -10,11 +10,11 @@
 #include <string_view>
 #include <vector>
 
-#include "lsp/dispatcher.h"
-#include "lsp/document.h"
-#include "lsp/json.h"
-#include "lsp/params.h"
-#include "lsp/program_analysis.h"
+#include "tools/lsp/dispatcher.h"
+#include "tools/lsp/document.h"
+#include "tools/lsp/json.h"
+#include "tools/lsp/params.h"
+#include "tools/lsp/program_analysis.h"
 
 namespace rs::lsp {
 

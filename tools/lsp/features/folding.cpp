@@ -1,7 +1,7 @@
 // Folding ranges: the POINTS section, blocks of two or more comment lines,
 // and subroutines (from the entry's label to the last instruction before
 // the next subroutine).
-#include "lsp/features/features.h"
+#include "tools/lsp/features/features.h"
 
 namespace rs::lsp {
 

@@ -27,8 +27,8 @@
 #include "base/ascii.h"
 #include "compiler/program/compiler.h"
 #include "compiler/program/lexer.h"
-#include "lsp/features/features.h"
-#include "lsp/protocol.h"
+#include "tools/lsp/features/features.h"
+#include "tools/lsp/protocol.h"
 
 namespace rs::lsp {
 

@@ -9,9 +9,9 @@
 
 #include "base/number_text.h"
 #include "base/seconds.h"
-#include "lsp/features/features.h"
-#include "lsp/protocol.h"
 #include "model/workcell/tool_tracker.h"
+#include "tools/lsp/features/features.h"
+#include "tools/lsp/protocol.h"
 #include "vm/interpreter.h"
 
 namespace rs::lsp {

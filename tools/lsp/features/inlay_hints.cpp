@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "vm/stop_reason.h"
-#include "lsp/features/features.h"
-#include "lsp/protocol.h"
+#include "tools/lsp/features/features.h"
+#include "tools/lsp/protocol.h"
 
 namespace rs::lsp {
 

@@ -5,9 +5,9 @@
 #include <fmt/format.h>
 
 #include "base/ascii.h"
-#include "lsp/features/features.h"
-#include "lsp/protocol.h"
-#include "lsp/uri.h"
+#include "tools/lsp/features/features.h"
+#include "tools/lsp/protocol.h"
+#include "tools/lsp/uri.h"
 #include "vm/opcodes.h"
 
 namespace rs::lsp {

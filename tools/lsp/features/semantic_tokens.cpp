@@ -3,7 +3,7 @@
 #include "compiler/program/compiler.h"
 #include "compiler/program/lexer.h"
 #include "base/ascii.h"
-#include "lsp/features/features.h"
+#include "tools/lsp/features/features.h"
 
 namespace rs::lsp {
 

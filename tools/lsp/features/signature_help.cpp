@@ -3,7 +3,7 @@
 // moves (letter, kind, range, speed).
 #include <fmt/format.h>
 
-#include "lsp/features/features.h"
+#include "tools/lsp/features/features.h"
 
 namespace rs::lsp {
 

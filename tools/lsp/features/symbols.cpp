@@ -2,9 +2,9 @@
 // other labels, the POINTS section with its points) and workspace symbols.
 #include <fmt/format.h>
 
-#include "lsp/features/features.h"
-#include "lsp/protocol.h"
-#include "lsp/uri.h"
+#include "tools/lsp/features/features.h"
+#include "tools/lsp/protocol.h"
+#include "tools/lsp/uri.h"
 
 namespace rs::lsp {
 

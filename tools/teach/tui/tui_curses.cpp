@@ -1,4 +1,4 @@
-#include "teach/tui/tui_curses.h"
+#include "tools/teach/tui/tui_curses.h"
 
 #include <curses.h>
 #include <signal.h>
@@ -11,7 +11,7 @@
 #include <vector>
 #include <fmt/format.h>
 
-#include "teach/tui/tui_session.h"
+#include "tools/teach/tui/tui_session.h"
 
 namespace rs::teach::tui {
 

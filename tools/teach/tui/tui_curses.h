@@ -18,7 +18,7 @@
 
 #include <string>
 
-#include "teach/pendant.h"
+#include "tools/teach/pendant.h"
 
 namespace rs::teach::tui {
 

@@ -1,4 +1,4 @@
-#include "teach/tui/tui_screen.h"
+#include "tools/teach/tui/tui_screen.h"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "base/number_text.h"
-#include "teach/keys.h"
+#include "tools/teach/keys.h"
 
 namespace rs::teach::tui {
 

@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
-#include "teach/keys.h"
-#include "teach/pendant_state.h"
+#include "tools/teach/keys.h"
+#include "tools/teach/pendant_state.h"
 
 namespace rs::teach::tui {
 

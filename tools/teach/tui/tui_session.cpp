@@ -1,10 +1,10 @@
-#include "teach/tui/tui_session.h"
+#include "tools/teach/tui/tui_session.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 
-#include "teach/keys.h"
+#include "tools/teach/keys.h"
 
 namespace rs::teach::tui {
 

@@ -17,8 +17,8 @@
 #include <string>
 #include <string_view>
 
-#include "teach/pendant.h"
-#include "teach/tui/tui_screen.h"
+#include "tools/teach/pendant.h"
+#include "tools/teach/tui/tui_screen.h"
 
 namespace rs::teach::tui {
 
