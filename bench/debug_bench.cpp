@@ -1,4 +1,4 @@
-// The debugger's backwards steps (debug/timeline.h): how the snapshot
+// The debugger's backwards steps (tools/debug/timeline.h): how the snapshot
 // interval K trades memory for the time of one reverse step, on a run of
 // about 1,000,000 instructions on the library's scara-pick cell (moves, a
 // subroutine, outputs, the world's grasping). For each K: the run forwards
@@ -56,7 +56,7 @@ double threadCpuSeconds() {
 }
 
 // What `debug --view` adds to every stop: the live view's publish of the
-// stopped moment (teach/run_source.h: the run's view as the page's JSON),
+// stopped moment (tools/teach/run_source.h: the run's view as the page's JSON),
 // at 200 moments spread over the run.
 nlohmann::json benchViewPublish(const runtime::RunSpec& spec) {
   debug::Session session(spec);
@@ -146,7 +146,7 @@ nlohmann::json benchDebug(const Options& options) {
                    {"reverse_step_median_cpu_ms", medianCpu * 1e3},
                    {"reverse_step_worst_cpu_ms", worstCpu * 1e3}});
   }
-  fmt::print("  default K = {} (debug/timeline.h); targets: a reverse step median <= 1 ms and worst <= 10 ms of CPU, "
+  fmt::print("  default K = {} (tools/debug/timeline.h); targets: a reverse step median <= 1 ms and worst <= 10 ms of CPU, "
              "snapshots < 64 MiB, all of this in under 10 s; collisions on (the default)\n",
              debug::kDefaultSnapshotInterval);
   out["view"] = benchViewPublish(spec);

@@ -1,7 +1,7 @@
 // describe_bench: what `robotsim describe` and the terminal pendant cost.
 // The reach search (model/workcell/reach.h: a grid of ~10^5 poses over the
 // motors' ranges, then a climb) for each library workcell, and laying out
-// one terminal-pendant screen (teach/tui/tui_screen.h) of 80x24 with five
+// one terminal-pendant screen (tools/teach/tui/tui_screen.h) of 80x24 with five
 // motors and 30 points; best and median of N runs. Run by `make bench`;
 // figures in docs/performance.md. Not a test: it prints numbers.
 //

@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
     if (!jogFile) return fail(jogFile.failure().message);
     rs::teach::Pendant pendant(cell, rs::launch::cellTarget(*cell).motors, *jogFile);
     rs::teach::PendantSource source(pendant, rs::teach::teachPageHtml(*cell, path));
-    rs::teach::LiveServer server(source, rs::teach::randomToken());
+    rs::live::LiveServer server(source, rs::live::randomToken());
     if (!server.start("127.0.0.1", 0, error)) return fail(error);
     httplib::Client client("127.0.0.1", server.port());
     client.set_keep_alive(true);

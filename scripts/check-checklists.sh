@@ -48,7 +48,7 @@ enum_names() { sed -n "/^enum class $1\b/,/^};/p" vm/opcodes.h | grep -oE '^[[:s
   tr -d ' \t' | paste -sd'|'; }
 ops=$(enum_names Op); formats=$(enum_names Format)
 case_re="\bcase[[:space:]]+((rs::)?vm::)?(Op::($ops)|Format::($formats))\b"
-switching=$(find base diag model vm stdlib compiler runtime launch teach testrun wire lsp debug dap cli bench \
+switching=$(find base diag model vm stdlib compiler runtime launch tools bench \
   \( -name '*.h' -o -name '*.cpp' \) -type f -print 2>/dev/null | LC_ALL=C sort | xargs grep -lE "$case_re" || true)
 listed=$(paths <<<"$instruction")
 while IFS= read -r f; do

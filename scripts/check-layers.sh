@@ -18,7 +18,7 @@ layers="$(dirname "$0")/layers.txt"
 [ -f "$root/scripts/layers.txt" ] && layers="$root/scripts/layers.txt"
 
 cd "$root"
-find base diag model vm stdlib compiler runtime launch teach testrun wire lsp debug dap cli bench tests \
+find base diag model vm stdlib compiler runtime launch tools bench tests \
   -path tests/browser/node_modules -prune -o \
   \( -name '*.h' -o -name '*.cpp' \) -type f -print 2>/dev/null | LC_ALL=C sort |
 awk -v layersFile="$layers" '

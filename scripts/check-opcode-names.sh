@@ -27,7 +27,7 @@ b='(^|[^:[:alnum:]_])'                   # not the tail of another enum's Op (Co
 pattern="(==|!=)[[:space:]]*$q|$b$q[[:space:]]*(==|!=)|\bcase[[:space:]]+$q|$b$q[[:space:]]*,[[:space:]]*$q"
 pattern="$pattern|\busing[[:space:]]+enum[[:space:]]+((rs::)?vm::)?Op\b"
 
-files=$(find base diag model stdlib compiler runtime launch teach testrun wire lsp debug dap cli bench \
+files=$(find base diag model stdlib compiler runtime launch tools bench \
   \( -name '*.h' -o -name '*.cpp' \) -type f -print 2>/dev/null | LC_ALL=C sort)
 bad=0
 if [ -n "$files" ]; then

@@ -16,7 +16,7 @@ namespace rs::compiler {
 /// GNUInstallDirs) and EXE/share/robotsim/stdlib (a folder holding the
 /// executable and share/, as the build tree is laid out). A helper program
 /// (`robotsim-NAME`, in LIBEXECDIR/robotsim: render, animate, plot, teach
-/// and debug run there, cli/lib/helpers.h) looks instead from its folder to
+/// and debug run there, tools/cli/lib/helpers.h) looks instead from its folder to
 /// the installed library and to the build tree's (EXE/../../share/...).
 /// Empty when the system will not say where the executable is.
 std::vector<std::filesystem::path> libraryDirCandidates();

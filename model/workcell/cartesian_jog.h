@@ -5,7 +5,7 @@
 // the arm stands in (no elbow or wrist flip), or refused with the limit it
 // met (range, reach, singularity) and nothing changed. Collisions are the
 // caller's: the pendant moves the rig, whose sweep checks the move
-// (teach/pendant.h). docs/teach.md, "Jog modes".
+// (tools/teach/pendant.h). docs/teach.md, "Jog modes".
 //
 // Which rotations there are is the arm's (docs/models.md, "Inverse
 // kinematics"): a six-axis wrist turns about any axis; a five-axis arm

@@ -2,7 +2,7 @@
 // every page shares (page_style.cpp, page_draw_script.cpp), and the
 // animation's body and script (page_style.cpp, page_script.cpp).
 // animation.cpp puts them around the model of a run; the teach pendant's
-// page (teach/) around a cell's drawing and its own panel.
+// page (tools/teach/) around a cell's drawing and its own panel.
 #pragma once
 
 #include <string_view>

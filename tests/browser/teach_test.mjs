@@ -47,7 +47,7 @@ const original = fs.readFileSync(path.join(source, 'examples/pick_and_place.rsp'
 const program = path.join(work, 'pick_and_place.rsp');
 fs.writeFileSync(program, original);
 // The golden file is the program with two rows after ABOVE_PRESS, laid
-// out by hand by the rule of teach/points_edit.h: FIRST (400 -29 120 100
+// out by hand by the rule of tools/teach/points_edit.h: FIRST (400 -29 120 100
 // 0, re-taught) and SECOND (400 -29 120 0 0); "120" is one wider than its
 // column (it ends at 27), so one space precedes it and the next column
 // catches up at 32.

@@ -1,4 +1,4 @@
-// The command table (cli/lib/commands.h) and what is made from it: the
+// The command table (tools/cli/lib/commands.h) and what is made from it: the
 // parser has one subcommand per row, in order, with the row's help; each
 // row's handler is the one that runs; the man pages (man_page.h) name every
 // option the parser accepts and render in man-db without a warning; the

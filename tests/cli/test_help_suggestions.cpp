@@ -1,5 +1,5 @@
 // `robotsim help WORD` for a word that is no instruction: the suggestion
-// (cli/lib/help.h), and the message with the word made printable.
+// (tools/cli/lib/help.h), and the message with the word made printable.
 #include <catch2/catch.hpp>
 
 #include "tests/cli/cli_support.h"

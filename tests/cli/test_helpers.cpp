@@ -1,4 +1,4 @@
-// The main binary and its helper executables (cli/lib/helpers.h): the main
+// The main binary and its helper executables (tools/cli/lib/helpers.h): the main
 // binary loads none of the libraries the helpers need (ldd, checked against
 // the helper's own list so that the check can fail; a static build's loads
 // no shared library at all), a command run by a

@@ -1,4 +1,4 @@
-// Numbers on the command line (cli/lib/number_args.h): one reader, every
+// Numbers on the command line (tools/cli/lib/number_args.h): one reader, every
 // command. Each number is finite, within what it counts and whole where it
 // must be; a bad one is refused at its option with a hint, before anything
 // is loaded or run.

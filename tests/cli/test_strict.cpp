@@ -1,9 +1,9 @@
 // `check --strict`: every kind of warning a compile or a run can give fails
 // the check (docs/cli.md, "check"). The kinds, from a search of the tree for
-// warning severities (compiler/, launch/, runtime/, cli/lib/):
+// warning severities (compiler/, launch/, runtime/, tools/cli/lib/):
 //   compile: unassigned-variable, unreachable-code (compiler/program/translator.cpp),
 //            home-collision (compiler/description/library.cpp, when the cell is loaded);
-//   run:     collision (--collisions=warn, cli/lib/run_warnings.cpp),
+//   run:     collision (--collisions=warn, tools/cli/lib/run_warnings.cpp),
 //            gripper-took-nothing (runtime/run/empty_close.cpp).
 // For each: without --strict the check passes (exit 0) with a warning; with
 // it the same text is an error marked [--strict], a compile warning stops

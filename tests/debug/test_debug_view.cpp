@@ -1,4 +1,4 @@
-// robotsim debug --view (cli/lib/debug_view.h): the live-view server
+// robotsim debug --view (tools/cli/lib/debug_view.h): the live-view server
 // follows a debugging session. A Console drives the session as a batch
 // would; after each command a client (cpp-httplib's, over 127.0.0.1)
 // reads /api/state and the test compares it with what the console's own

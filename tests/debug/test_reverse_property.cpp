@@ -1,4 +1,4 @@
-// The property behind stepping backwards (debug/timeline.h): for random
+// The property behind stepping backwards (tools/debug/timeline.h): for random
 // programs, random stimuli and random moments of their runs, stepping back
 // N instructions and forward N again gives a state byte-identical to the
 // one before (RunSnapshot: interpreter, machine, input schedule, world),

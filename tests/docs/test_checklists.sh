@@ -9,12 +9,12 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 check="$root/scripts/check-checklists.sh"
 bash "$check" "$root"
 
-copied=(base diag model vm stdlib compiler runtime launch teach testrun wire lsp debug dap cli bench docs examples
+copied=(base diag model vm stdlib compiler runtime launch tools bench docs examples
         editors/vscode/syntaxes scripts tests -path tests/browser/node_modules -prune -o -type f)
 source "$root/tests/support/planted_tree.sh"
 copy
-rm "$work/tree/lsp/features/completion.cpp"
-expect_refused "a named file gone" "the checklists name lsp/features/completion.cpp, which is not in the tree"
+rm "$work/tree/tools/lsp/features/completion.cpp"
+expect_refused "a named file gone" "the checklists name tools/lsp/features/completion.cpp, which is not in the tree"
 copy
 printf 'int planted(rs::vm::Format f) {\n  switch (f) {\n    case rs::vm::Format::None: return 0;\n    default: return 1;\n  }\n}\n' \
   >> "$work/tree/runtime/run/trace.cpp"

@@ -1,8 +1,8 @@
 // libFuzzer target: any bytes a client sends the teach pendant's server
 // on one connection. They are framed as the server frames them
-// (teach/http_frame.h), fed in pieces of 1 to 97 bytes as a socket cuts
+// (tools/live/http_frame.h), fed in pieces of 1 to 97 bytes as a socket cuts
 // them and checked against the frames of the whole; each whole request is
-// answered by the server's own routes (teach/live_routes.h: Host and
+// answered by the server's own routes (tools/live/live_routes.h: Host and
 // Origin, the token, the route, the body, the JSON command) over a real
 // pendant on the gantry cell, whose program is a file in a fresh folder.
 // Every request gets exactly one answer, a well-formed HTTP/1.1 response
@@ -80,13 +80,13 @@ Framed frames(std::string_view bytes, bool inPieces) {
     buffer.append(bytes.substr(at, n));
     at += n;
     for (;;) {
-      const rs::teach::RequestFrame frame = rs::teach::frameRequest(buffer, rs::teach::kMaxHead, rs::teach::kMaxBody);
-      if (frame.state == rs::teach::RequestFrame::State::kRefused) {
+      const rs::live::RequestFrame frame = rs::live::frameRequest(buffer, rs::live::kMaxHead, rs::live::kMaxBody);
+      if (frame.state == rs::live::RequestFrame::State::kRefused) {
         require(frame.status >= 400 && frame.status < 500 && !frame.message.empty());
         f.refusal = frame.status;
         break;
       }
-      if (frame.state == rs::teach::RequestFrame::State::kIncomplete) break;
+      if (frame.state == rs::live::RequestFrame::State::kIncomplete) break;
       require(frame.length >= frame.headLength && frame.length <= buffer.size());
       f.requests.push_back(buffer.substr(0, frame.length));
       buffer.erase(0, frame.length);
@@ -131,9 +131,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   require(file.ok());
   rs::teach::Pendant pendant(gantry(), rs::launch::cellTarget(*gantry()).motors, std::move(*file));
   rs::teach::PendantSource source(pendant, "<!DOCTYPE html><title>teach</title>");
-  const rs::teach::LiveRoutes routes(source, kToken, rs::teach::ServerAddress{"127.0.0.1", 8080});
+  const rs::live::LiveRoutes routes(source, kToken, rs::live::ServerAddress{"127.0.0.1", 8080});
   for (const std::string& request : whole.requests) {
-    const rs::teach::LiveAnswer a = routes.answer(request, "127.0.0.1");
+    const rs::live::LiveAnswer a = routes.answer(request, "127.0.0.1");
     if (a.openStream) {
       require(a.response.empty() && !a.close);
       continue;

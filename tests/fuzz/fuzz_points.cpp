@@ -1,5 +1,5 @@
 // libFuzzer target: any bytes as a program whose POINTS section teach
-// edits (teach/points_edit.h). Reading keeps every byte; every edit gives a
+// edits (tools/teach/points_edit.h). Reading keeps every byte; every edit gives a
 // text that reads back to the same rows and keeps every line but its own;
 // nothing crashes or goes superlinear.
 #include <cstdint>

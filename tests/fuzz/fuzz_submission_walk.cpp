@@ -1,5 +1,5 @@
 // libFuzzer target: `robotsim test --spec`'s walk of a submissions folder
-// (testrun/submissions.h) over any tree the bytes describe. Each input
+// (tools/testrun/submissions.h) over any tree the bytes describe. Each input
 // builds, in a fresh folder, directories, files, FIFOs and symbolic links
 // (to files and folders inside, to a folder beside it, absolute, to a device, to
 // nowhere, to themselves, through `..`), then walks it, named one of

@@ -9,7 +9,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 check="$root/scripts/check-layers.sh"
 bash "$check" "$root"
 
-copied=(base diag model vm stdlib grammar compiler runtime launch teach wire testrun lsp debug dap cli bench tests scripts
+copied=(base diag model vm stdlib grammar compiler runtime launch tools bench tests scripts
         -path tests/browser/node_modules -prune
         -o \( -name '*.h' -o -name '*.cpp' -o -name '*.txt' -o -name '*.sh' \) -type f)
 source "$root/tests/support/planted_tree.sh"
@@ -27,8 +27,8 @@ expect_failure compiler/program/lexer.cpp '#include "nowhere.h"' \
   'include "nowhere.h" names no file of the tree'
 # An edge the list allows and no include uses: refused, naming the edge.
 copy
-sed -i 's|^teach/tui *: .*|& vm|' "$work/tree/scripts/layers.txt"
-expect_refused "an unused edge teach/tui -> vm in the list" 'layer teach/tui may include vm, but no file of it does'
+sed -i 's|^tools/teach/tui *: .*|& vm|' "$work/tree/scripts/layers.txt"
+expect_refused "an unused edge tools/teach/tui -> vm in the list" 'layer tools/teach/tui may include vm, but no file of it does'
 echo "layers: every planted upward include and the unused edge were caught"
 # No layer outside vm/ matches an opcode by name (docs/architecture.md).
 bash "$(dirname "$0")/test_opcode_names.sh"

@@ -1,4 +1,4 @@
-// The framing of LSP messages (lsp/jsonrpc.h): well-formed frames, and the
+// The framing of LSP messages (tools/lsp/jsonrpc.h): well-formed frames, and the
 // recoveries from bad headers, oversized bodies and header blocks that
 // never end.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Every field of every message is read with its type checked (lsp/params.h):
+// Every field of every message is read with its type checked (tools/lsp/params.h):
 // a wrong one is InvalidParams naming the field, a notification's is
 // logged and changes nothing, and the server goes on. The sweep below
 // gives every field of a full initialize every other JSON type, the way

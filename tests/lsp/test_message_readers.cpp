@@ -1,5 +1,5 @@
 // The message readers of the language server and the debug adapter
-// (lsp/message_reader.h, dap/message_reader.h): what each makes of a frame
+// (tools/lsp/message_reader.h, tools/dap/message_reader.h): what each makes of a frame
 // before acting on it. Expected kinds and error codes are the JSON-RPC 2.0
 // and DAP rules, written out by hand.
 #include <catch2/catch.hpp>

@@ -140,7 +140,7 @@ completions=$(bash -c 'source "$1"; COMP_WORDS=(robotsim vers); COMP_CWORD=1; CO
 tarball=$work/source-package/robotsim-$version.tar.gz
 if [ -f "$tarball" ]; then
   tar tzf "$tarball" | LC_ALL=C sort >"$work/source-package.txt"
-  for f in CMakeLists.txt stdlib/workcells/gantry-cell.rsd cli/main.cpp docs/install.md editors/vscode/package.json \
+  for f in CMakeLists.txt stdlib/workcells/gantry-cell.rsd tools/cli/main.cpp docs/install.md editors/vscode/package.json \
     scripts/build_info.cmake; do
     grep -qx "robotsim-$version/$f" "$work/source-package.txt" || fail "the source tarball lacks $f"
   done

@@ -1,4 +1,4 @@
-// `robotsim run --profile` (runtime/run/profile.h, cli/lib/profile_report.h):
+// `robotsim run --profile` (runtime/run/profile.h, tools/cli/lib/profile_report.h):
 // a small program on the default robot whose every figure is worked out by
 // hand below from the motor speeds (stdlib/default_robot.cpp: E 400, D 400,
 // C 300, B 500 units/s, gripper A 200 units/s).

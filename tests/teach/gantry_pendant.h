@@ -1,4 +1,4 @@
-// A pendant (teach/pendant.h) on the library's gantry cell over a program
+// A pendant (tools/teach/pendant.h) on the library's gantry cell over a program
 // written to a fresh folder: the fixture the pendant's tests and the
 // terminal pendant's share. The cell's numbers, worked out by hand, are in
 // tests/teach/test_pendant.cpp.

@@ -1,4 +1,4 @@
-// The pendant's world and tool jogs (teach/pendant.h, jogCartesian;
+// The pendant's world and tool jogs (tools/teach/pendant.h, jogCartesian;
 // model/workcell/cartesian_jog.h). Every pose is checked with `robotsim
 // where`, forward kinematics from the encoder counts that does not use the
 // jog code or the inverse kinematics; every refusal leaves the motors and

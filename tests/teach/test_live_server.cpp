@@ -1,4 +1,4 @@
-// The live-view server (teach/live_server.h) from a test client
+// The live-view server (tools/live/live_server.h) from a test client
 // (cpp-httplib's own client, over 127.0.0.1): the token, the body limit,
 // unknown routes, malformed commands, a read-only source, the event
 // stream, and jogs sent at once from several clients.
@@ -31,13 +31,13 @@ struct Served {
       std::make_shared<const rs::workcell::Workcell>(rendertest::cell("gantry-cell"));
   std::unique_ptr<rs::teach::Pendant> pendant;
   std::unique_ptr<rs::teach::PendantSource> source;
-  std::unique_ptr<rs::teach::LiveServer> server;
+  std::unique_ptr<rs::live::LiveServer> server;
   Served() {
     rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path);
     REQUIRE(file);
     pendant = std::make_unique<rs::teach::Pendant>(cell, rs::launch::cellTarget(*cell).motors, std::move(*file));
     source = std::make_unique<rs::teach::PendantSource>(*pendant, rs::teach::teachPageHtml(*cell, path));
-    server = std::make_unique<rs::teach::LiveServer>(*source, rs::teach::randomToken());
+    server = std::make_unique<rs::live::LiveServer>(*source, rs::live::randomToken());
     std::string error;
     REQUIRE(server->start("127.0.0.1", 0, error));
   }
@@ -50,12 +50,12 @@ struct Served {
 };
 
 // A source that only shows: what the debugger serves for a stopped run.
-class ReadOnly final : public rs::teach::LiveSource {
+class ReadOnly final : public rs::live::LiveSource {
  public:
   std::string page() override { return "<!DOCTYPE html><title>view</title>"; }
   std::uint64_t revision() override { return 7; }
   std::string state() override { return R"({"stopped":true})"; }
-  rs::teach::LiveReply command(const json&) override {
+  rs::live::LiveReply command(const json&) override {
     return {403, {{"ok", false}, {"message", "this view is read-only"}}};
   }
 };
@@ -63,17 +63,17 @@ class ReadOnly final : public rs::teach::LiveSource {
 }  // namespace
 
 TEST_CASE("live server: tokens, compared whole", "[teach]") {
-  const std::string t = rs::teach::randomToken();
+  const std::string t = rs::live::randomToken();
   CHECK(t.size() == 32);
   CHECK(t.find_first_not_of("0123456789abcdef") == std::string::npos);
-  CHECK(t != rs::teach::randomToken());
-  CHECK(rs::teach::sameToken(t, t));
-  CHECK_FALSE(rs::teach::sameToken(t, t.substr(0, 31)));
-  CHECK_FALSE(rs::teach::sameToken(t, t + "0"));
-  CHECK_FALSE(rs::teach::sameToken("", ""));
+  CHECK(t != rs::live::randomToken());
+  CHECK(rs::live::sameToken(t, t));
+  CHECK_FALSE(rs::live::sameToken(t, t.substr(0, 31)));
+  CHECK_FALSE(rs::live::sameToken(t, t + "0"));
+  CHECK_FALSE(rs::live::sameToken("", ""));
   std::string other = t;
   other[31] = other[31] == 'a' ? 'b' : 'a';
-  CHECK_FALSE(rs::teach::sameToken(t, other));
+  CHECK_FALSE(rs::live::sameToken(t, other));
 }
 
 TEST_CASE("live server: every route needs the token, bad requests get 4xx", "[teach]") {
@@ -82,7 +82,7 @@ TEST_CASE("live server: every route needs the token, bad requests get 4xx", "[te
   CHECK(c.Get("/")->status == 403);
   CHECK(c.Get("/api/state?token=")->status == 403);
   CHECK(c.Get("/api/state?token=" + s.server->token().substr(1))->status == 403);
-  CHECK(c.Get("/?token=" + rs::teach::randomToken())->status == 403);
+  CHECK(c.Get("/?token=" + rs::live::randomToken())->status == 403);
   const auto page = c.Get(s.q("/"));
   REQUIRE(page);
   CHECK(page->status == 200);
@@ -98,7 +98,7 @@ TEST_CASE("live server: every route needs the token, bad requests get 4xx", "[te
   const auto malformed = c.Post(s.q("/api/command"), R"({"op":"jog","motor":"E"})", "application/json");
   CHECK(malformed->status == 400);
   CHECK(json::parse(malformed->body)["ok"] == false);
-  const std::string big(rs::teach::kMaxBody + 1, ' ');
+  const std::string big(rs::live::kMaxBody + 1, ' ');
   CHECK(c.Post(s.q("/api/command"), big, "application/json")->status == 413);
   CHECK(c.Post("/api/command", R"({"op":"reset"})", "application/json")->status == 403);  // no token: nothing done
   // A refusal as things stand is an answer, not a bad request.
@@ -180,7 +180,7 @@ TEST_CASE("live server: stop ends an open event stream at once", "[teach]") {
 
 TEST_CASE("live server: a read-only source refuses every command", "[teach]") {
   ReadOnly source;
-  rs::teach::LiveServer server(source, "0123456789abcdef0123456789abcdef");
+  rs::live::LiveServer server(source, "0123456789abcdef0123456789abcdef");
   std::string error;
   REQUIRE(server.start("127.0.0.1", 0, error));
   CHECK(server.url() == fmt::format("http://127.0.0.1:{}/?token=0123456789abcdef0123456789abcdef", server.port()));
@@ -231,7 +231,7 @@ TEST_CASE("a live server stopped the moment it started stops (a debug session th
   // cpp-httplib's listener ran; it then did nothing and the join hung.
   ReadOnly source;
   for (int i = 0; i < 50; ++i) {
-    rs::teach::LiveServer server(source, rs::teach::randomToken());
+    rs::live::LiveServer server(source, rs::live::randomToken());
     std::string error;
     REQUIRE(server.start("127.0.0.1", 0, error));
     server.stop();

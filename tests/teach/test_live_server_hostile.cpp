@@ -36,13 +36,13 @@ struct HostileServed {
       std::make_shared<const rs::workcell::Workcell>(rendertest::cell("gantry-cell"));
   std::unique_ptr<rs::teach::Pendant> pendant;
   std::unique_ptr<rs::teach::PendantSource> source;
-  std::unique_ptr<rs::teach::LiveServer> server;
-  explicit HostileServed(rs::teach::LiveLimits limits = {}) {
+  std::unique_ptr<rs::live::LiveServer> server;
+  explicit HostileServed(rs::live::LiveLimits limits = {}) {
     rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path);
     REQUIRE(file);
     pendant = std::make_unique<rs::teach::Pendant>(cell, rs::launch::cellTarget(*cell).motors, std::move(*file));
     source = std::make_unique<rs::teach::PendantSource>(*pendant, rs::teach::teachPageHtml(*cell, path));
-    server = std::make_unique<rs::teach::LiveServer>(*source, rs::teach::randomToken(), limits);
+    server = std::make_unique<rs::live::LiveServer>(*source, rs::live::randomToken(), limits);
     std::string error;
     REQUIRE(server->start("127.0.0.1", 0, error));
   }
@@ -121,7 +121,7 @@ TEST_CASE("50 slow connections and 8 streams nobody reads do not hold up a jog",
 }
 
 TEST_CASE("event streams hold no worker: one worker serves jogs beside 30 open streams", "[teach][live][hostile]") {
-  rs::teach::LiveLimits limits;
+  rs::live::LiveLimits limits;
   limits.workers = 1;
   HostileServed s(limits);
   std::vector<Socket> streams;
@@ -141,7 +141,7 @@ TEST_CASE("event streams hold no worker: one worker serves jogs beside 30 open s
 }
 
 TEST_CASE("event streams beyond the limit are refused with 503 and a reason", "[teach][live][hostile]") {
-  rs::teach::LiveLimits limits;
+  rs::live::LiveLimits limits;
   limits.maxEventStreams = 3;
   HostileServed s(limits);
   std::vector<Socket> streams;
@@ -179,7 +179,7 @@ TEST_CASE("a stream that does not read gets the newest state, not a pile of old 
 }
 
 TEST_CASE("connections beyond the bound per client take the place of the longest idle", "[teach][live][hostile]") {
-  rs::teach::LiveLimits limits;
+  rs::live::LiveLimits limits;
   limits.maxConnectionsPerClient = 10;
   HostileServed s(limits);
   std::vector<Socket> idle;
@@ -196,7 +196,7 @@ TEST_CASE("connections beyond the bound per client take the place of the longest
 }
 
 TEST_CASE("a request not whole in time gets 408, an idle connection just ends", "[teach][live][hostile]") {
-  rs::teach::LiveLimits limits;
+  rs::live::LiveLimits limits;
   limits.requestTimeout = std::chrono::milliseconds(200);
   HostileServed s(limits);
   Socket partial(s.port());
@@ -322,7 +322,7 @@ TEST_CASE("bodies up to 16 KiB whatever their Content-Type, over it 413 saying s
   std::string answer = s.exchange(s.request("POST", "/api/command", form, body));
   CHECK(rawhttp::statusOf(answer) == 200);
   CHECK(json::parse(rawhttp::bodyOf(answer))["ok"] == true);
-  body.append(rs::teach::kMaxBody - body.size(), ' ');  // exactly the limit
+  body.append(rs::live::kMaxBody - body.size(), ' ');  // exactly the limit
   CHECK(rawhttp::statusOf(s.exchange(s.request("POST", "/api/command", form, body))) == 200);
   body += ' ';
   answer = s.exchange(s.request("POST", "/api/command", form, body));

@@ -1,4 +1,4 @@
-// The teach pendant's core (teach/pendant.h) on the library's gantry cell,
+// The teach pendant's core (tools/teach/pendant.h) on the library's gantry cell,
 // whose kinematics are simple enough to check by hand: motors X Z Y
 // (prismatic, 0.1 mm per count; X ±5000 and Z ±3400 at 1000 counts/s, Y
 // ±2000 at 800/s) and the gripper A (0..104, 200/s); the tool centre

@@ -1,5 +1,5 @@
-// Lossless editing of the POINTS section (teach/points_edit.h) and the
-// program file's guarded write (teach/program_file.h).
+// Lossless editing of the POINTS section (tools/teach/points_edit.h) and the
+// program file's guarded write (tools/teach/program_file.h).
 //
 // Every expected text below was worked out by hand from the layout rule
 // (the column arithmetic is in the comments), not copied from the

@@ -32,7 +32,7 @@ struct DeviceRig {
   std::unique_ptr<rs::rhino::PtyEmulator> emulator;
   rs::teach::OpenedPendant opened;
   std::unique_ptr<rs::teach::PendantSource> source;
-  std::unique_ptr<rs::teach::LiveServer> server;
+  std::unique_ptr<rs::live::LiveServer> server;
   std::vector<rs::vm::MotorSpec> motors;
 
   DeviceRig(Dialect dialect, std::array<std::int32_t, 8> start = {}) {
@@ -58,7 +58,7 @@ struct DeviceRig {
     REQUIRE(opened.ok());
     source = std::make_unique<rs::teach::PendantSource>(*opened.pendant,
                                                         rs::teach::teachPageHtml(opened.pendant->cell(), path));
-    server = std::make_unique<rs::teach::LiveServer>(*source, rs::teach::randomToken());
+    server = std::make_unique<rs::live::LiveServer>(*source, rs::live::randomToken());
     REQUIRE(server->start("127.0.0.1", 0, error));
   }
   ~DeviceRig() {

@@ -1,4 +1,4 @@
-// `robotsim test` and the expectations it reads (testrun/, docs/testing.md).
+// `robotsim test` and the expectations it reads (tools/testrun/, docs/testing.md).
 // Every expected time, value and position below is worked out by hand from
 // the programs (motor speeds of the default Rhino SCARA: E and D 400, C 300,
 // B 500, A 200 units per second).

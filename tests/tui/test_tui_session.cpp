@@ -1,5 +1,5 @@
 // The terminal pendant without a terminal: keys pressed by their shared
-// key map names (teach/keys.h) into a Session over a real Pendant, and the
+// key map names (tools/teach/keys.h) into a Session over a real Pendant, and the
 // screen it lays out read as text. On the library's gantry cell, whose
 // numbers are simple by hand: motors X Z Y (prismatic, 0.1 per count) and
 // the gripper A (0..104); the tool centre point is at (500 + X/10,
@@ -120,7 +120,7 @@ TEST_CASE("tui: teach asks a name, writes the row and selects it", "[teach][tui]
   CHECK(f.row(23) == "name of the new point (Enter teaches, Esc cancels):");
   CHECK(f.screen().cursorRow == 23);
   f.press({"U", "P", "X", "Backspace", "Enter"});
-  // The new row under OVER, laid out like it (teach/points_edit.h): the
+  // The new row under OVER, laid out like it (tools/teach/points_edit.h): the
   // name at column 0, values right-aligned where OVER's end.
   CHECK(f.text() == kProgram + "UP       100     0     0    0\n");
   CHECK(f.row(4).substr(44) == "| > UP     100    0    0 0");

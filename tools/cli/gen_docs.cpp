@@ -1,5 +1,5 @@
 // robotsim_gen_docs: robotsim's man pages and bash, zsh and fish completions, from
-// the command table. All the work is in cli/lib/gen_docs.cpp.
+// the command table. All the work is in tools/cli/lib/gen_docs.cpp.
 #include <iostream>
 
 #include "tools/cli/lib/gen_docs.h"

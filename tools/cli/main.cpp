@@ -1,4 +1,4 @@
-// robotsim: the command-line entry point. All the work is in cli/lib.
+// robotsim: the command-line entry point. All the work is in tools/cli/lib.
 #include <iostream>
 
 #include "tools/cli/lib/app.h"

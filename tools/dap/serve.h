@@ -1,4 +1,4 @@
-// `robotsim dap` on a byte stream: frames in (wire/framing.h, the
+// `robotsim dap` on a byte stream: frames in (tools/wire/framing.h, the
 // language server's framing), the adapter, frames out. While a run is
 // going, the bytes that arrive are read between its slices, so a pause,
 // terminate or disconnect stops it and a client that vanishes (the end of

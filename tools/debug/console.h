@@ -1,7 +1,7 @@
 // The terminal debugger's commands, text in and text out: one line of a
 // gdb-style command (`break 12 if N = 3`, `reverse-step`, `print motors`)
 // is carried out on a Session and answered on a stream. The prompt, line
-// editing and history are the front end's (cli/); a test or a handout
+// editing and history are the front end's (tools/cli/); a test or a handout
 // drives this directly with the same lines. A bad command gets one clear
 // message and changes nothing: the session goes on.
 #pragma once

@@ -5,7 +5,7 @@
 #include "base/ascii.h"
 #include "base/file_io.h"
 
-namespace rs::teach {
+namespace rs::live {
 
 namespace {
 
@@ -95,4 +95,4 @@ void disarmExpect(std::string& request, std::size_t headLength) {
              });
 }
 
-}  // namespace rs::teach
+}  // namespace rs::live

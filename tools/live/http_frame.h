@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-namespace rs::teach {
+namespace rs::live {
 
 struct RequestFrame {
   enum class State { kIncomplete, kComplete, kRefused };
@@ -33,4 +33,4 @@ RequestFrame frameRequest(std::string_view bytes, std::size_t maxHead, std::size
 /// request is in, and cpp-httplib would answer "100 Continue" again.
 void disarmExpect(std::string& request, std::size_t headLength);
 
-}  // namespace rs::teach
+}  // namespace rs::live

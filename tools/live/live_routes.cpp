@@ -10,7 +10,7 @@
 #include "base/file_io.h"
 #include "tools/live/http_frame.h"
 
-namespace rs::teach {
+namespace rs::live {
 
 namespace {
 
@@ -216,4 +216,4 @@ LiveAnswer LiveRoutes::answer(std::string_view request, const std::string& peer)
   return a;
 }
 
-}  // namespace rs::teach
+}  // namespace rs::live

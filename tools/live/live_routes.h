@@ -1,4 +1,4 @@
-// The live-view server's answers (teach/live_server.h): one whole request
+// The live-view server's answers (tools/live/live_server.h): one whole request
 // in, the whole response out, with no socket in sight, so that a worker
 // never waits for a client and the fuzz target drives exactly what the
 // server runs. cpp-httplib parses the request, routes it and writes the
@@ -25,7 +25,7 @@
 #include "tools/live/live_source.h"
 #include "tools/live/request_origin.h"
 
-namespace rs::teach {
+namespace rs::live {
 
 inline constexpr std::size_t kMaxBody = 16 * 1024;
 inline constexpr std::size_t kMaxHead = 16 * 1024;
@@ -74,4 +74,4 @@ std::string stateEvent(std::string_view state);
 /// A comment line that keeps a quiet stream open (and finds closed ones).
 std::string_view keepAliveEvent();
 
-}  // namespace rs::teach
+}  // namespace rs::live

@@ -20,7 +20,7 @@
 
 #include "tools/live/http_frame.h"
 
-namespace rs::teach {
+namespace rs::live {
 
 namespace {
 
@@ -489,4 +489,4 @@ void LiveServer::stop() {
   loop_.reset();
 }
 
-}  // namespace rs::teach
+}  // namespace rs::live

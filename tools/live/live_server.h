@@ -32,7 +32,7 @@
 #include "tools/live/live_routes.h"
 #include "tools/live/live_source.h"
 
-namespace rs::teach {
+namespace rs::live {
 
 struct LiveLimits {
   std::size_t maxConnections = 512;
@@ -79,4 +79,4 @@ class LiveServer {
   std::unique_ptr<Loop> loop_;
 };
 
-}  // namespace rs::teach
+}  // namespace rs::live

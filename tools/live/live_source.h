@@ -3,14 +3,14 @@
 // it allows them, commands. The server (live_server.h) knows nothing of
 // robots: it checks the token, limits bodies, answers 4xx to bad requests
 // and pushes the state to the page whenever its revision changes; a
-// source knows nothing of HTTP. See teach/README.md, "The live-view server".
+// source knows nothing of HTTP. See tools/live/README.md.
 #pragma once
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 
-namespace rs::teach {
+namespace rs::live {
 
 /// A source's answer to a command: an HTTP status (200 carried out or
 /// refused as things stand, "ok" saying which: a point that does not
@@ -37,4 +37,4 @@ class LiveSource {
   virtual LiveReply command(const nlohmann::json& request) = 0;
 };
 
-}  // namespace rs::teach
+}  // namespace rs::live

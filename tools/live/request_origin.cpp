@@ -9,7 +9,7 @@
 #include "base/ascii.h"
 #include "base/text.h"
 
-namespace rs::teach {
+namespace rs::live {
 
 namespace {
 
@@ -105,4 +105,4 @@ std::string whyNotSameOrigin(const RequestOrigin& request, const ServerAddress& 
   return {};
 }
 
-}  // namespace rs::teach
+}  // namespace rs::live

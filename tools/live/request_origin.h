@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-namespace rs::teach {
+namespace rs::live {
 
 struct ServerAddress {
   std::string host;  ///< as it listens: "127.0.0.1", "::1", "0.0.0.0", "192.168.1.5"
@@ -32,4 +32,4 @@ struct RequestOrigin {
 /// An empty header is a missing one (a request without Host is refused).
 std::string whyNotSameOrigin(const RequestOrigin& request, const ServerAddress& server);
 
-}  // namespace rs::teach
+}  // namespace rs::live

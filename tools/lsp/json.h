@@ -1,4 +1,4 @@
-// JSON for the language server: wire/json.h (nlohmann-json and the one way
+// JSON for the language server: tools/wire/json.h (nlohmann-json and the one way
 // a value is written out), under the server's names.
 #pragma once
 

@@ -1,5 +1,5 @@
 // The language server's names for the Content-Length framing, which lives
-// in wire/framing.h (the debug adapter frames its messages with the same
+// in tools/wire/framing.h (the debug adapter frames its messages with the same
 // code).
 #pragma once
 

@@ -1,6 +1,6 @@
 // The language server: the lifecycle (initialize, initialized, shutdown,
 // exit), the document notifications, and every feature's method wired to
-// its function in lsp/features/. Messages come in batches, every message
+// its function in tools/lsp/features/. Messages come in batches, every message
 // that had arrived when the server last looked; diagnostics are published
 // once a batch is handled, for the documents it changed. That is the
 // debounce: while the client sends faster than the server checks, edits

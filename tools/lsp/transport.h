@@ -1,5 +1,5 @@
 // The language server's names for the byte streams under the protocol
-// (wire/transport.h, shared with the debug adapter).
+// (tools/wire/transport.h, shared with the debug adapter).
 #pragma once
 
 #include "tools/wire/transport.h"

@@ -2,12 +2,12 @@
 // code every page shares (robotsimDrawing, runtime/render/page_draw_script.cpp);
 // the state comes from the server (server-sent events at each new
 // revision, /api/state once at the start); every button and key posts one
-// command ({"op": ...}, teach/commands.h) and waits for the state to come
+// command ({"op": ...}, tools/teach/commands.h) and waits for the state to come
 // back. A move's motion frames (PendantState::motion) are played in real
 // time before the state's final pose is shown. The keys come from the
-// model (teach/keys.h), the same table the terminal pendant reads. In
+// model (tools/teach/keys.h), the same table the terminal pendant reads. In
 // read-only mode (the model's readOnly: the debugger's view) the state is
-// a stopped run's (teach/run_source.h) and every command is refused.
+// a stopped run's (tools/teach/run_source.h) and every command is refused.
 // window.robotsim exposes the state and the selection to tests.
 #include "tools/teach/page.h"
 

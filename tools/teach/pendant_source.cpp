@@ -27,7 +27,7 @@ std::string PendantSource::state() {
   return state_;
 }
 
-LiveReply PendantSource::command(const nlohmann::json& request) {
+live::LiveReply PendantSource::command(const nlohmann::json& request) {
   std::lock_guard lock(commands_);
   const Outcome o = applyCommand(pendant_, request);
   publish();

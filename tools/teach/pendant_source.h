@@ -12,7 +12,7 @@
 
 namespace rs::teach {
 
-class PendantSource final : public LiveSource {
+class PendantSource final : public live::LiveSource {
  public:
   /// `pendant` must outlive the source.
   PendantSource(Pendant& pendant, std::string page);
@@ -20,7 +20,7 @@ class PendantSource final : public LiveSource {
   std::string page() override { return page_; }
   std::uint64_t revision() override;
   std::string state() override;
-  LiveReply command(const nlohmann::json& request) override;
+  live::LiveReply command(const nlohmann::json& request) override;
 
   /// Publishes the pendant's state after a change made outside command().
   void publish();

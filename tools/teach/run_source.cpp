@@ -16,7 +16,7 @@ std::string RunSource::state() {
   return state_;
 }
 
-LiveReply RunSource::command(const nlohmann::json&) {
+live::LiveReply RunSource::command(const nlohmann::json&) {
   return {403,
           {{"ok", false},
            {"message", "read-only: this page follows robotsim debug; jog and teach with robotsim teach"},

@@ -15,7 +15,7 @@
 
 namespace rs::teach {
 
-class RunSource final : public LiveSource {
+class RunSource final : public live::LiveSource {
  public:
   /// `program` names the program in the state; nothing is served until
   /// the first publish() but an empty state.
@@ -24,7 +24,7 @@ class RunSource final : public LiveSource {
   std::string page() override { return page_; }
   std::uint64_t revision() override;
   std::string state() override;
-  LiveReply command(const nlohmann::json& request) override;
+  live::LiveReply command(const nlohmann::json& request) override;
 
   /// `run` at its current moment becomes the state (a new revision);
   /// `message` says how it got there (a breakpoint, a step, ...).

@@ -302,7 +302,7 @@ std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const std::vecto
       case ExpectKind::NoCollision:
       case ExpectKind::CollidesWith: c.collision(e); break;
       case ExpectKind::CompileError:
-      case ExpectKind::Trace: break;  // not a property of the run alone (testrun/test_file.cpp)
+      case ExpectKind::Trace: break;  // not a property of the run alone (tools/testrun/test_file.cpp)
     }
   }
   return c.failures;

@@ -18,7 +18,7 @@ namespace rs::testrun {
 struct Selection {
   std::vector<std::string> files;        ///< sorted, each once
   std::vector<diag::Diagnostic> errors;  ///< paths that do not exist or cannot be listed
-  /// Grading: the links refused (testrun/submissions.h), which are in
+  /// Grading: the links refused (tools/testrun/submissions.h), which are in
   /// `files` too, each with its problem.
   std::map<std::string, diag::Diagnostic> refused;
 };

@@ -53,7 +53,7 @@ std::string bashCompletion(const CommandLine& commandLine) {
   // Names, options and choices are plain words (the table's test checks),
   // so they stand in single quotes and compgen -W as they are.
   return fmt::format(R"bash(# bash completion for robotsim, written by robotsim_gen_docs from the command
-# table (cli/lib/commands.cpp): do not edit.
+# table (tools/cli/lib/commands.cpp): do not edit.
 
 # Library names (workcells and robots, or robots alone): robotsim itself
 # knows where its library is.

@@ -66,7 +66,7 @@ struct Command {
   /// The exit code. Null in the main binary's copy for a row run by a helper.
   int (*run)(const CommandValues& values, const CommandStreams& io);
   /// Needs the renderer, the HTTP server or a terminal library: the
-  /// installed `robotsim` execs its helper `robotsim-NAME` (cli/lib/helpers.h),
+  /// installed `robotsim` execs its helper `robotsim-NAME` (tools/cli/lib/helpers.h),
   /// which links them, so that no other command loads them.
   bool inHelper = false;
 };

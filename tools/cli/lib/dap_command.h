@@ -1,4 +1,4 @@
-// `robotsim dap`: the debug adapter (dap/) on standard input and output,
+// `robotsim dap`: the debug adapter (tools/dap/) on standard input and output,
 // for VS Code and other DAP clients. Its log goes to standard error.
 #pragma once
 

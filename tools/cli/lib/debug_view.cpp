@@ -9,7 +9,7 @@
 namespace rs::cli {
 
 DebugView::DebugView(const workcell::Workcell& cell, const std::string& program)
-    : source_(teach::runViewPageHtml(cell, program), program), server_(source_, teach::randomToken()) {}
+    : source_(teach::runViewPageHtml(cell, program), program), server_(source_, live::randomToken()) {}
 
 DebugView::~DebugView() { server_.stop(); }
 

@@ -1,11 +1,11 @@
 // robotsim debug --view: the live workcell page follows the debugger. The
-// teach pendant's live-view server (teach/live_server.h) serves a
-// read-only source (teach/run_source.h) that one Session observer feeds at
+// live-view server (tools/live/live_server.h) serves a
+// read-only source (tools/teach/run_source.h) that one Session observer feeds at
 // every stop, forwards or backwards (reverse steps, goto-time), and after
 // `set input`: the page draws the robot, the objects, the inputs and
 // outputs and the clock of the stopped moment, and refuses every command
 // (403). On 127.0.0.1 and a free port only, behind a fresh token. The glue
-// lives here because debug/ and teach/ may not include each other.
+// lives here because tools/debug/ and tools/teach/ may not include each other.
 #pragma once
 
 #include <memory>
@@ -36,7 +36,7 @@ class DebugView {
   void publish(const debug::Session& session, const debug::Stop& stop);
 
   teach::RunSource source_;
-  teach::LiveServer server_;
+  live::LiveServer server_;
 };
 
 }  // namespace rs::cli

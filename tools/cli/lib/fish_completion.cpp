@@ -66,7 +66,7 @@ std::string fishCompletion(const CommandLine& commandLine) {
                              c.name, i, fishQuoted(c.arguments[i].help));
   }
   return fmt::format(R"fish(# fish completion for robotsim, written by robotsim_gen_docs from the command
-# table (cli/lib/commands.cpp): do not edit.
+# table (tools/cli/lib/commands.cpp): do not edit.
 
 # Library names ($argv[1]: cells, workcells and robots; or robots): robotsim
 # itself knows where its library is.

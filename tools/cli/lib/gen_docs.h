@@ -1,4 +1,4 @@
-// robotsim_gen_docs as a function (cli/gen_docs.cpp calls it, tests run
+// robotsim_gen_docs as a function (tools/cli/gen_docs.cpp calls it, tests run
 // it in-process): writes the man pages (man_page.h) and the bash, zsh and
 // fish completions (bash_completion.h, zsh_completion.h, fish_completion.h)
 // made from the command table. A build-time

@@ -1,4 +1,4 @@
-// `robotsim lsp`: the language server (lsp/) on standard input and output,
+// `robotsim lsp`: the language server (tools/lsp/) on standard input and output,
 // for editors. Its log (framing problems, a client that left) goes to
 // standard error.
 #pragma once

@@ -96,7 +96,7 @@ int teachCommand(const TeachOptions& o, std::ostream& out, std::ostream& err) {
   }
   teach::Pendant& pendant = *opened.pendant;
   teach::PendantSource source(pendant, teach::teachPageHtml(pendant.cell(), o.request.program.file));
-  teach::LiveServer server(source, teach::randomToken());
+  live::LiveServer server(source, live::randomToken());
   std::string error;
   if (!server.start(host, port, error)) {
     err << "robotsim: error: " << error << '\n';

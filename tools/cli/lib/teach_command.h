@@ -1,5 +1,5 @@
 // `robotsim teach PROG.rsp --cell CELL [--device DEV] [--open] [--listen ADDR]`:
-// the teach pendant's live page (teach/), served until Ctrl-C.
+// the teach pendant's live page (tools/teach/), served until Ctrl-C.
 #pragma once
 
 #include <iosfwd>

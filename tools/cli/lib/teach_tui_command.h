@@ -1,5 +1,5 @@
 // `robotsim teach PROG.rsp --cell CELL --tui`: the terminal pendant
-// (teach/tui/) instead of the live page. The pendant is opened as the page
+// (tools/teach/tui/) instead of the live page. The pendant is opened as the page
 // opens it (teach::openPendant: the program file, the cell or the
 // program's "; cell:" line, the device); then the terminal is handed to it.
 #pragma once

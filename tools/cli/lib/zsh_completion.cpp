@@ -80,7 +80,7 @@ std::string zshCompletion(const CommandLine& commandLine) {
   }
   return fmt::format(R"zsh(#compdef robotsim
 # zsh completion for robotsim, written by robotsim_gen_docs from the command
-# table (cli/lib/commands.cpp): do not edit.
+# table (tools/cli/lib/commands.cpp): do not edit.
 
 # Library names (the last argument: cells, workcells and robots; or robots),
 # which robotsim itself knows where to find, and description files.

@@ -1,4 +1,4 @@
-// The language features, one file each under lsp/features/. Each is a
+// The language features, one file each under tools/lsp/features/. Each is a
 // function from a document (and its analysis) and the request's params to
 // the result's JSON; the server (server.cpp) maps method names to them.
 #pragma once

@@ -1,5 +1,5 @@
 // The terminal pendant's screen as text: what `robotsim teach --tui` shows,
-// laid out from the pendant's state (teach/pendant_state.h, the same value
+// laid out from the pendant's state (tools/teach/pendant_state.h, the same value
 // the web page reads) and the terminal's own selection, without a
 // terminal. A pure function, so a test can read the layout without
 // ncurses; tui_curses.cpp only copies it to the terminal and paints the

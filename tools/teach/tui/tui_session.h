@@ -1,5 +1,5 @@
 // The terminal pendant's keys: each key a person presses, named as the
-// shared key map names it (teach/keys.h: "ArrowLeft", "t", "PageDown"),
+// shared key map names it (tools/teach/keys.h: "ArrowLeft", "t", "PageDown"),
 // becomes one Pendant operation, or a question on the last row whose
 // answer does (a point's name; yes or no before re-teach, delete and
 // reset cell). No terminal here: tui_curses.cpp turns ncurses key codes
