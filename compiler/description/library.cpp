@@ -223,7 +223,7 @@ std::optional<workcell::Gripper> Library::buildGripper(const GripperDef& gripper
   if (!reachesSpeed(at, def->accelerationPos, g.speed, g.acceleration)) return std::nullopt;
   const kinematics::GripperPoints points{def->axis2[0].v, def->axis2[1].v, def->axis3[0].v,  def->axis3[1].v,
                                          def->normal[0].v, def->normal[1].v, def->approach[0].v, def->approach[1].v};
-  kinematics::Result<kinematics::GripperModel> model = kinematics::makeGripper(points, def->precision);
+  kinematics::Built<kinematics::GripperModel> model = kinematics::makeGripper(points, def->precision);
   // The kinematics core says which vector the error is about; point at its line.
   const compiler::KinematicsPlaces places{
       at.source->name(), fmt::format("gripper '{}'", def->name), def->normal[0].pos, {}, [&](int part) {
