@@ -86,7 +86,8 @@ class CollisionWatch {
   SweepVerdict advance(const SimMachine& machine, const workcell::CollisionQuery& query,
                        std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
                        vm::Micros end);
-  void keyOf(const World& world, std::span<const std::int32_t> before, std::span<const std::int32_t> after);
+  void keyOf(const World& world, std::span<const std::int32_t> before, std::span<const std::int32_t> after,
+             std::span<const std::int32_t> lineFrom, std::span<const std::int32_t> lineTo);
   double used(const SimMachine& machine, vm::Micros t);
 
   workcell::CollisionModel model_;
