@@ -26,13 +26,13 @@ diag::Diagnostic wholeFileError(const std::string& file, std::string message) {
 std::string decodeImageCell(const vm::Image& image, std::shared_ptr<const workcell::Workcell>& cell) {
   diag::Result<workcell::Workcell> decoded = workcell::decodeCell(image.cell);
   if (!decoded) return decoded.failure().message;
-  if (decoded->robots.empty()) return "its cell has no robot";
+  if (!decoded->drivenRobot()) return "its cell has no robot";
   // The cell's bytes hold the geometry; how motors accelerate is in the
   // image's motor table alone (an image's 1.1 motion section), so that a
   // cell of constant-speed motors keeps the bytes it always had. The
   // robot takes the image's accelerations and actuation time, then the
   // rest must match exactly.
-  workcell::Robot& robot = decoded->robots.front().robot;
+  workcell::Robot& robot = decoded->drivenRobot()->robot;
   if (robot.joints.size() + (robot.hasGripper ? 1 : 0) == image.motors.size()) {
     for (std::size_t i = 0; i < robot.joints.size(); ++i) robot.joints[i].acceleration = image.motors[i].acceleration;
     if (robot.hasGripper) {
@@ -108,7 +108,8 @@ void readProgram(const std::string& path, std::string bytes, const compiler::Tar
 }
 
 bool sameMotors(const vm::Image& image, const workcell::Workcell& cell) {
-  return !cell.robots.empty() && image.motors == compiler::motorTable(cell.robots.front().robot);
+  const workcell::PlacedRobot* driven = cell.drivenRobot();
+  return driven && image.motors == compiler::motorTable(driven->robot);
 }
 
 }  // namespace
@@ -118,9 +119,10 @@ compiler::Target defaultTarget() {
 }
 
 compiler::Target cellTarget(const workcell::Workcell& cell) {
-  const workcell::Robot& robot = cell.robots.front().robot;
+  const workcell::PlacedRobot& driven = *cell.drivenRobot();
+  const workcell::Robot& robot = driven.robot;
   compiler::Target target{robot.name, compiler::motorTable(robot), vm::kDefaultCallDepth, nullptr};
-  if (robot.chain) target.robot = std::make_shared<const workcell::PlacedRobot>(cell.robots.front());
+  if (robot.chain) target.robot = std::make_shared<const workcell::PlacedRobot>(driven);
   return target;
 }
 
@@ -236,7 +238,7 @@ LoadedProgram loadProgramToDraw(const ProgramRequest& given) {
     } else if (!sameMotors(image, *program.cell)) {
       program.diagnostics.push_back(wholeFileError(
           request.file, fmt::format("the image was compiled for robot '{}', whose motors differ from those of '{}'",
-                                    image.robotName, program.cell->robots.front().robot.name)));
+                                    image.robotName, program.cell->drivenRobot()->robot.name)));
     }
   }
   if (!program.ok()) program.image.reset();

@@ -72,7 +72,8 @@ std::shared_ptr<const workcell::Workcell> loadCell(const ProgramRequest& request
 
 /// The default machine: the paper's Rhino SCARA (stdlib/default_robot.h).
 compiler::Target defaultTarget();
-/// The machine of a workcell: its first robot's motors (arm, then gripper).
+/// The machine of a workcell: the motors (arm, then gripper) of the robot
+/// it drives (Workcell::drivenRobot; there must be one).
 compiler::Target cellTarget(const workcell::Workcell& cell);
 
 /// The diagnostics, each under its own file's source line when known: at

@@ -96,8 +96,8 @@ Chart chartOf(const ChartInput& input) {
   // Columns: each motor, the TCP, what the gripper holds, inputs, outputs.
   const std::size_t motors = log.motors.size();
   for (const vm::MotorSpec& m : log.motors) chart.series.push_back({std::string(1, m.letter), {}});
-  const workcell::PlacedRobot* robot =
-      input.cell && !input.cell->robots.empty() && input.cell->robots[0].robot.chain ? &input.cell->robots[0] : nullptr;
+  const workcell::PlacedRobot* driven = input.cell ? input.cell->drivenRobot() : nullptr;
+  const workcell::PlacedRobot* robot = driven && driven->robot.chain ? driven : nullptr;
   const std::size_t tcp = chart.series.size();
   if (robot)
     for (const char* c : {"tcp_x", "tcp_y", "tcp_z"}) chart.series.push_back({c, {}});

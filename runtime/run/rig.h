@@ -52,7 +52,7 @@ struct RigSnapshot {
 class Rig {
  public:
   /// On the simulated machine, with these motors and input stimuli. On a
-  /// workcell (may be null; its first robot is driven) the world reacts,
+  /// workcell (may be null; Workcell::drivenRobot is driven) the world reacts,
   /// and collisions are checked unless `collisions` is Off.
   Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli,
       CollisionMode collisions);

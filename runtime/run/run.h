@@ -33,7 +33,7 @@ namespace rs::runtime {
 /// What a run is made of.
 struct RunSpec {
   std::shared_ptr<const vm::Image> image;          ///< verified (vm::verify)
-  std::shared_ptr<const workcell::Workcell> cell;  ///< may be null; its first robot runs the program
+  std::shared_ptr<const workcell::Workcell> cell;  ///< may be null; Workcell::drivenRobot runs the program
   stimuli::Stimuli stimuli;
   vm::RunLimits limits;
   bool log = false;  ///< keep a RunLog (simulated machine only)

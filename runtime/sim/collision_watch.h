@@ -52,7 +52,8 @@ struct CollisionEvent {
 
 class CollisionWatch {
  public:
-  /// The first robot of `cell` (which must outlive the watch) moves.
+  /// The robot `cell` drives (Workcell::drivenRobot; the cell must outlive
+  /// the watch) moves.
   explicit CollisionWatch(const workcell::Workcell& cell);
 
   /// Checks the move the machine just made from `before` (its positions at

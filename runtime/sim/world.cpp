@@ -3,7 +3,7 @@
 namespace rs::runtime {
 
 World::World(const workcell::Workcell& cell) : cell_(cell), grasping_(cell) {
-  if (!cell.robots.empty() && cell.robots.front().robot.chain) tool_.emplace(cell.robots.front());
+  if (const workcell::PlacedRobot* driven = cell.drivenRobot(); driven && driven->robot.chain) tool_.emplace(*driven);
 }
 
 void World::moved(std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,

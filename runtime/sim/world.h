@@ -47,7 +47,8 @@ struct EmptyClose {
 
 class World {
  public:
-  /// The first robot of `cell` (which must outlive the world) runs the program.
+  /// The robot `cell` drives (Workcell::drivenRobot; the cell must outlive
+  /// the world) runs the program.
   explicit World(const workcell::Workcell& cell);
 
   /// The motors moved from `before` to `after`, from `start` to `end`.
