@@ -168,24 +168,12 @@ std::shared_ptr<const workcell::Workcell> loadCell(const ProgramRequest& request
   return std::make_shared<const workcell::Workcell>(std::move(*cell));
 }
 
-LoadedProgram loadProgram(const ProgramRequest& given) {
-  LoadedProgram program;
-  program.maxErrors = given.maxErrors;
-  std::optional<std::string> bytes = readBytes(given.file, program);
-  if (!bytes) return program;
-  const std::optional<ProgramRequest> directed = withDirective(given, *bytes, program);
-  if (!directed) return program;
-  const ProgramRequest& request = *directed;
-  if (request.cell.empty()) {
-    readProgram(request.file, std::move(*bytes), defaultTarget(), program);
-  } else {
-    program.cell = loadCell(request, program);
-    if (!program.cell) return program;
-    if (program.cell->robots.empty()) {
-      program.diagnostics.push_back(wholeFileError(request.cell, "the workcell has no robot to run the program"));
-      return program;
-    }
-    readProgram(request.file, std::move(*bytes), cellTarget(*program.cell), program);
+namespace {
+
+// run, check, compile, disasm: a source compiled for --cell carries that
+// cell; an image runs on the cell it carries, and refuses --cell.
+void fitToRun(const ProgramRequest& request, LoadedProgram& program) {
+  if (!request.cell.empty()) {
     if (program.image && !program.source) {
       program.image.reset();
       program.diagnostics.push_back(
@@ -196,7 +184,7 @@ LoadedProgram loadProgram(const ProgramRequest& given) {
       withCell->cell = workcell::encodeCell(*program.cell);
       program.image = std::move(withCell);
     }
-    return program;
+    return;
   }
   if (program.image && !program.image->cell.empty()) {
     if (const std::string error = decodeImageCell(*program.image, program.cell); !error.empty()) {
@@ -204,27 +192,12 @@ LoadedProgram loadProgram(const ProgramRequest& given) {
       program.image.reset();
     }
   }
-  return program;
 }
 
-LoadedProgram loadProgramToDraw(const ProgramRequest& given) {
-  LoadedProgram program;
-  program.maxErrors = given.maxErrors;
-  std::optional<std::string> bytes = readBytes(given.file, program);
-  if (!bytes) return program;
-  const std::optional<ProgramRequest> directed = withDirective(given, *bytes, program);
-  if (!directed) return program;
-  const ProgramRequest& request = *directed;
-  if (!request.cell.empty()) {
-    program.cell = loadCell(request, program);
-    if (!program.cell) return program;
-    if (program.cell->robots.empty()) {
-      program.diagnostics.push_back(wholeFileError(request.cell, "the workcell has no robot to run the program"));
-      return program;
-    }
-  }
-  readProgram(request.file, std::move(*bytes), program.cell ? cellTarget(*program.cell) : defaultTarget(), program);
-  if (!program.ok()) return program;
+// render, animate: a source needs --cell; an image is drawn on the cell it
+// carries, or on --cell's when its robot has the image's motors.
+void fitToDraw(const ProgramRequest& request, LoadedProgram& program) {
+  if (!program.ok()) return;
   const vm::Image& image = *program.image;
   if (program.source) {
     if (!program.cell) program.diagnostics.push_back(wholeFileError("robotsim", "which workcell? give it with --cell CELL"));
@@ -242,6 +215,34 @@ LoadedProgram loadProgramToDraw(const ProgramRequest& given) {
     }
   }
   if (!program.ok()) program.image.reset();
+}
+
+}  // namespace
+
+// The file read, its cell found (--cell or its directive) and loaded, the
+// program compiled for that cell's robot or the default one: the same for
+// every use; then what the use asks of the program and its cell.
+LoadedProgram loadProgram(const ProgramRequest& given, ProgramUse use) {
+  LoadedProgram program;
+  program.maxErrors = given.maxErrors;
+  std::optional<std::string> bytes = readBytes(given.file, program);
+  if (!bytes) return program;
+  const std::optional<ProgramRequest> directed = withDirective(given, *bytes, program);
+  if (!directed) return program;
+  const ProgramRequest& request = *directed;
+  if (!request.cell.empty()) {
+    program.cell = loadCell(request, program);
+    if (!program.cell) return program;
+    if (!program.cell->drivenRobot()) {
+      program.diagnostics.push_back(wholeFileError(request.cell, "the workcell has no robot to run the program"));
+      return program;
+    }
+  }
+  readProgram(request.file, std::move(*bytes), program.cell ? cellTarget(*program.cell) : defaultTarget(), program);
+  switch (use) {
+    case ProgramUse::Run: fitToRun(request, program); break;
+    case ProgramUse::Draw: fitToDraw(request, program); break;
+  }
   return program;
 }
 
