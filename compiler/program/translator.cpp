@@ -384,7 +384,7 @@ void Translator::State::checkIo(const Instruction& in) {
   if (in.io.pos.line == 0) return;
   if (in.io.number < 1 || in.io.number > vm::kIoCount) {
     const bool output = vm::info(in.op).format == vm::Format::Output;
-    diag.error(in.io.pos, fmt::format("{} {} is outside 1..8", output ? "output" : "input", in.io.number),
+    diag.error(in.io.pos, fmt::format("{} {} is outside 1..{}", output ? "output" : "input", in.io.number, vm::kIoCount),
                "io-out-of-range");
   }
 }

@@ -82,7 +82,7 @@ class Rig {
   std::optional<std::array<double, 3>> tcp() const;
   std::vector<ObjectView> objects(vm::Micros at = INT64_MAX) const;
   /// Input `input` turns `on` now (SimMachine::setInputNow). False on a
-  /// real machine or for an input outside 1..8.
+  /// real machine or for an input outside 1..vm::kIoCount.
   bool setInput(int input, bool on) { return sim_ && sim_->setInputNow(input, on); }
 
   /// Every collision found so far (in warn mode, every one; in error mode,

@@ -73,12 +73,12 @@ void Run::observe(vm::StepObserver& observer) { observers_->added.push_back(&obs
 
 // The machine holds one listener: the first one added takes the log's
 // place there and hands each change to the log, then to every listener.
-bool Run::onInputChange(std::function<void(vm::Micros, std::uint8_t)> listener) {
+bool Run::onInputChange(std::function<void(vm::Micros, vm::IoMask)> listener) {
   SimMachine* sim = rig_->sim();
   if (!sim) return false;
   inputListeners_.push_back(std::move(listener));
   if (inputListeners_.size() == 1)
-    sim->onInputChange([this](vm::Micros at, std::uint8_t mask) {
+    sim->onInputChange([this](vm::Micros at, vm::IoMask mask) {
       if (logger_) logger_->inputChanged(at, mask);
       for (const auto& l : inputListeners_) l(at, mask);
     });
