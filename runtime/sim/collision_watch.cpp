@@ -87,7 +87,7 @@ const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const Wor
     verdict = &fresh;
   }
   if (!verdict->collides) return nullptr;
-  events_.push_back({start + verdict->after, verdict->contact, verdict->encoders});
+  events_.push_back({start + verdict->after, verdict->contact, verdict->encoders, instruction_});
   return &events_.back();
 }
 
