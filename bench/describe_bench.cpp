@@ -55,8 +55,9 @@ int main(int argc, char** argv) {
       fmt::print("  {}: cannot load\n", name);
       return 1;
     }
-    measure(fmt::format("reach of {} ({} motors)", name, cell->robots.front().robot.joints.size()), reps, 1,
-            [&] { sink += rs::workcell::reachOf(cell->robots.front()).max.x(); });
+    const rs::workcell::PlacedRobot& driven = *cell->drivenRobot();
+    measure(fmt::format("reach of {} ({} motors)", name, driven.robot.joints.size()), reps, 1,
+            [&] { sink += rs::workcell::reachOf(driven).max.x(); });
   }
 
   rs::teach::PendantState state;

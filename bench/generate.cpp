@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <iterator>
 
+#include "vm/io_lines.h"
+
 namespace rs::bench {
 
 namespace {
@@ -40,7 +42,7 @@ std::string label(char kind, std::size_t k) { return fmt::format("{}{}:", kind, 
 // blocks. `first` is the 1-based number of the block's first instruction.
 void appendBlock(std::string& out, std::size_t k, std::size_t first, std::size_t points) {
   const std::size_t var = k % kVariables;
-  const int io = static_cast<int>(k % 8) + 1;
+  const int io = static_cast<int>(k % vm::kIoCount) + 1;
   auto o = std::back_inserter(out);
   fmt::format_to(o, "; block {}: a counted loop, an I/O handshake, a subroutine\n", k);
   fmt::format_to(o, "{:<7} MOVETO {}   ; absolute start\n", label('b', k), motorValues(k, 0));

@@ -16,6 +16,7 @@
 #include "bench/timing.h"
 #include "tools/lsp/jsonrpc.h"
 #include "tools/lsp/server.h"
+#include "vm/io_lines.h"
 
 namespace rs::bench {
 
@@ -37,8 +38,8 @@ std::string program(int lines) {
     s += fmt::format("        ADD N{} 1\n", block % 50);
     s += fmt::format("        JMPVAR N{} < 3 b{}\n", block % 50, block);
     s += fmt::format("        MOVEP P{}\n", block % 100);
-    s += fmt::format("        OUTSIG {} ON\n", block % 8 + 1);
-    s += fmt::format("        OUTSIG {} OFF\n", block % 8 + 1);
+    s += fmt::format("        OUTSIG {} ON\n", block % vm::kIoCount + 1);
+    s += fmt::format("        OUTSIG {} OFF\n", block % vm::kIoCount + 1);
     s += "; between blocks\n";
     s += fmt::format("        GOSUB s{}\n", block);
     s += fmt::format("        GOTO b{}\n", block + 1);

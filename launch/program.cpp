@@ -26,13 +26,13 @@ diag::Diagnostic wholeFileError(const std::string& file, std::string message) {
 std::string decodeImageCell(const vm::Image& image, std::shared_ptr<const workcell::Workcell>& cell) {
   diag::Result<workcell::Workcell> decoded = workcell::decodeCell(image.cell);
   if (!decoded) return decoded.failure().message;
-  if (decoded->robots.empty()) return "its cell has no robot";
+  if (!decoded->drivenRobot()) return "its cell has no robot";
   // The cell's bytes hold the geometry; how motors accelerate is in the
   // image's motor table alone (an image's 1.1 motion section), so that a
   // cell of constant-speed motors keeps the bytes it always had. The
   // robot takes the image's accelerations and actuation time, then the
   // rest must match exactly.
-  workcell::Robot& robot = decoded->robots.front().robot;
+  workcell::Robot& robot = decoded->drivenRobot()->robot;
   if (robot.joints.size() + (robot.hasGripper ? 1 : 0) == image.motors.size()) {
     for (std::size_t i = 0; i < robot.joints.size(); ++i) robot.joints[i].acceleration = image.motors[i].acceleration;
     if (robot.hasGripper) {
@@ -108,7 +108,8 @@ void readProgram(const std::string& path, std::string bytes, const compiler::Tar
 }
 
 bool sameMotors(const vm::Image& image, const workcell::Workcell& cell) {
-  return !cell.robots.empty() && image.motors == compiler::motorTable(cell.robots.front().robot);
+  const workcell::PlacedRobot* driven = cell.drivenRobot();
+  return driven && image.motors == compiler::motorTable(driven->robot);
 }
 
 }  // namespace
@@ -118,9 +119,10 @@ compiler::Target defaultTarget() {
 }
 
 compiler::Target cellTarget(const workcell::Workcell& cell) {
-  const workcell::Robot& robot = cell.robots.front().robot;
+  const workcell::PlacedRobot& driven = *cell.drivenRobot();
+  const workcell::Robot& robot = driven.robot;
   compiler::Target target{robot.name, compiler::motorTable(robot), vm::kDefaultCallDepth, nullptr};
-  if (robot.chain) target.robot = std::make_shared<const workcell::PlacedRobot>(cell.robots.front());
+  if (robot.chain) target.robot = std::make_shared<const workcell::PlacedRobot>(driven);
   return target;
 }
 
@@ -166,24 +168,12 @@ std::shared_ptr<const workcell::Workcell> loadCell(const ProgramRequest& request
   return std::make_shared<const workcell::Workcell>(std::move(*cell));
 }
 
-LoadedProgram loadProgram(const ProgramRequest& given) {
-  LoadedProgram program;
-  program.maxErrors = given.maxErrors;
-  std::optional<std::string> bytes = readBytes(given.file, program);
-  if (!bytes) return program;
-  const std::optional<ProgramRequest> directed = withDirective(given, *bytes, program);
-  if (!directed) return program;
-  const ProgramRequest& request = *directed;
-  if (request.cell.empty()) {
-    readProgram(request.file, std::move(*bytes), defaultTarget(), program);
-  } else {
-    program.cell = loadCell(request, program);
-    if (!program.cell) return program;
-    if (program.cell->robots.empty()) {
-      program.diagnostics.push_back(wholeFileError(request.cell, "the workcell has no robot to run the program"));
-      return program;
-    }
-    readProgram(request.file, std::move(*bytes), cellTarget(*program.cell), program);
+namespace {
+
+// run, check, compile, disasm: a source compiled for --cell carries that
+// cell; an image runs on the cell it carries, and refuses --cell.
+void fitToRun(const ProgramRequest& request, LoadedProgram& program) {
+  if (!request.cell.empty()) {
     if (program.image && !program.source) {
       program.image.reset();
       program.diagnostics.push_back(
@@ -194,7 +184,7 @@ LoadedProgram loadProgram(const ProgramRequest& given) {
       withCell->cell = workcell::encodeCell(*program.cell);
       program.image = std::move(withCell);
     }
-    return program;
+    return;
   }
   if (program.image && !program.image->cell.empty()) {
     if (const std::string error = decodeImageCell(*program.image, program.cell); !error.empty()) {
@@ -202,27 +192,12 @@ LoadedProgram loadProgram(const ProgramRequest& given) {
       program.image.reset();
     }
   }
-  return program;
 }
 
-LoadedProgram loadProgramToDraw(const ProgramRequest& given) {
-  LoadedProgram program;
-  program.maxErrors = given.maxErrors;
-  std::optional<std::string> bytes = readBytes(given.file, program);
-  if (!bytes) return program;
-  const std::optional<ProgramRequest> directed = withDirective(given, *bytes, program);
-  if (!directed) return program;
-  const ProgramRequest& request = *directed;
-  if (!request.cell.empty()) {
-    program.cell = loadCell(request, program);
-    if (!program.cell) return program;
-    if (program.cell->robots.empty()) {
-      program.diagnostics.push_back(wholeFileError(request.cell, "the workcell has no robot to run the program"));
-      return program;
-    }
-  }
-  readProgram(request.file, std::move(*bytes), program.cell ? cellTarget(*program.cell) : defaultTarget(), program);
-  if (!program.ok()) return program;
+// render, animate: a source needs --cell; an image is drawn on the cell it
+// carries, or on --cell's when its robot has the image's motors.
+void fitToDraw(const ProgramRequest& request, LoadedProgram& program) {
+  if (!program.ok()) return;
   const vm::Image& image = *program.image;
   if (program.source) {
     if (!program.cell) program.diagnostics.push_back(wholeFileError("robotsim", "which workcell? give it with --cell CELL"));
@@ -236,10 +211,38 @@ LoadedProgram loadProgramToDraw(const ProgramRequest& given) {
     } else if (!sameMotors(image, *program.cell)) {
       program.diagnostics.push_back(wholeFileError(
           request.file, fmt::format("the image was compiled for robot '{}', whose motors differ from those of '{}'",
-                                    image.robotName, program.cell->robots.front().robot.name)));
+                                    image.robotName, program.cell->drivenRobot()->robot.name)));
     }
   }
   if (!program.ok()) program.image.reset();
+}
+
+}  // namespace
+
+// The file read, its cell found (--cell or its directive) and loaded, the
+// program compiled for that cell's robot or the default one: the same for
+// every use; then what the use asks of the program and its cell.
+LoadedProgram loadProgram(const ProgramRequest& given, ProgramUse use) {
+  LoadedProgram program;
+  program.maxErrors = given.maxErrors;
+  std::optional<std::string> bytes = readBytes(given.file, program);
+  if (!bytes) return program;
+  const std::optional<ProgramRequest> directed = withDirective(given, *bytes, program);
+  if (!directed) return program;
+  const ProgramRequest& request = *directed;
+  if (!request.cell.empty()) {
+    program.cell = loadCell(request, program);
+    if (!program.cell) return program;
+    if (!program.cell->drivenRobot()) {
+      program.diagnostics.push_back(wholeFileError(request.cell, "the workcell has no robot to run the program"));
+      return program;
+    }
+  }
+  readProgram(request.file, std::move(*bytes), program.cell ? cellTarget(*program.cell) : defaultTarget(), program);
+  switch (use) {
+    case ProgramUse::Run: fitToRun(request, program); break;
+    case ProgramUse::Draw: fitToDraw(request, program); break;
+  }
   return program;
 }
 

@@ -5,6 +5,7 @@
 // with its file's text for the caret. The one place `--cell` is loaded.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -55,16 +56,26 @@ struct LoadedProgram {
   const diag::SourceFile* sourceOf(const std::string& file) const;
 };
 
-/// run, check, compile, disasm: the program compiled for --cell's first
-/// robot (the image then carries the cell), else for the cell its
-/// "; cell: NAME" directive names (cell_directive.h), else for the default
-/// robot; an image runs on the cell it carries, and refuses --cell.
-LoadedProgram loadProgram(const ProgramRequest& request);
+/// What a program is loaded for: what it must meet besides compiling.
+enum class ProgramUse : std::uint8_t {
+  /// run, check, compile, disasm: the program compiled for --cell's first
+  /// robot (the image then carries the cell), else for the cell its
+  /// "; cell: NAME" directive names (cell_directive.h), else for the default
+  /// robot; an image runs on the cell it carries, and refuses --cell.
+  Run,
+  /// render, animate: the same, except that an image may be drawn on the
+  /// --cell given (its robot must have the image's motors), and a program
+  /// needs a workcell (--cell, or one its image carries).
+  Draw,
+};
 
-/// render, animate: the same, except that an image may be drawn on the
-/// --cell given (its robot must have the image's motors), and a program
-/// needs a workcell (--cell, or one its image carries).
-LoadedProgram loadProgramToDraw(const ProgramRequest& request);
+/// The program of `request`, compiled or verified, with its cell, for `use`.
+LoadedProgram loadProgram(const ProgramRequest& request, ProgramUse use = ProgramUse::Run);
+
+/// loadProgram(request, ProgramUse::Draw), by the name its callers use.
+inline LoadedProgram loadProgramToDraw(const ProgramRequest& request) {
+  return loadProgram(request, ProgramUse::Draw);
+}
 
 /// --cell's workcell alone (render without a program, ast); its problems
 /// go to `into`, whose descriptions keep the files' text.
@@ -72,7 +83,8 @@ std::shared_ptr<const workcell::Workcell> loadCell(const ProgramRequest& request
 
 /// The default machine: the paper's Rhino SCARA (stdlib/default_robot.h).
 compiler::Target defaultTarget();
-/// The machine of a workcell: its first robot's motors (arm, then gripper).
+/// The machine of a workcell: the motors (arm, then gripper) of the robot
+/// it drives (Workcell::drivenRobot; there must be one).
 compiler::Target cellTarget(const workcell::Workcell& cell);
 
 /// The diagnostics, each under its own file's source line when known: at

@@ -11,21 +11,22 @@ namespace rs::vm {
 
 namespace {
 
-// The opcodes the dispatch loop hands to machineStep: exactly those the
-// opcode table marks as acting on the machine (checked below), so a new
-// opcode's flags decide where the loop runs it.
-constexpr Op kMachineOps[] = {Op::Move,  Op::MoveTo,  Op::MoveP,  Op::OutSig, Op::WaitFor,
-                              Op::Reset, Op::Window,  Op::View,   Op::Delay,  Op::HrdHome,
-                              Op::GoSoft, Op::MoveS, Op::Appro, Op::Depart};
-
-consteval bool machineOpsAgree() {
-  std::size_t flagged = 0;
-  for (const OpInfo& op : kOps) flagged += (op.flags & kUsesMachine) ? 1 : 0;
-  for (const Op op : kMachineOps)
-    if (!has(op, kUsesMachine)) return false;
-  return flagged == std::size(kMachineOps);
+// The opcodes whose flags include `flag`, as one bit each: a test of a
+// flag becomes a shift and a test, with no load from the table.
+consteval std::uint32_t opsWith(std::uint16_t flag) {
+  std::uint32_t bits = 0;
+  for (const OpInfo& op : kOps)
+    if (op.flags & flag) bits |= std::uint32_t{1} << static_cast<unsigned>(op.op);
+  return bits;
 }
-static_assert(machineOpsAgree(), "kMachineOps must list exactly the opcodes flagged kUsesMachine");
+static_assert(kOpCount <= 32, "opsWith keeps a bit per opcode");
+constexpr bool oneOf(std::uint32_t ops, Op op) { return ((ops >> static_cast<unsigned>(op)) & 1) != 0; }
+
+// The opcodes the dispatch loop hands to machineStep: those the opcode
+// table marks as acting on the machine, so a new opcode's flags decide
+// where the loop runs it; of those, the ones machineCall hands to move().
+constexpr std::uint32_t kMachineOps = opsWith(kUsesMachine);
+constexpr std::uint32_t kMotorOps = opsWith(kMovesMotors);
 
 // JMPVAR's comparison without a branch per kind: the sign of value - with
 // (-1, 0, 1) against the sign each comparison wants, in operand-a order
@@ -150,6 +151,7 @@ Status Interpreter::move(const Instr& in) {
     case Op::MoveP: return moveTo(image_.points[in.b].values);
     case Op::HrdHome: return machine_.hardHome();
     case Op::GoSoft: return moveTo(state_.softHome);
+    case Op::Reset: return machine_.reset();
     case Op::MoveS: {
       const std::span<const std::int32_t> targets = image_.points[in.b].values;
       if (const auto i = firstOutOfRange(image_.motors, targets))
@@ -162,6 +164,21 @@ Status Interpreter::move(const Instr& in) {
   }
 }
 
+// What an instruction that acts on the machine asks of it: a move (the
+// table's kMovesMotors) or one of the calls below.
+Status Interpreter::machineCall(const Instr& in) {
+  if (oneOf(kMotorOps, in.op)) return move(in);
+  const std::int32_t* const k = image_.constants.data();
+  switch (in.op) {
+    case Op::OutSig: return machine_.setOutput(in.a, in.b != 0);
+    case Op::WaitFor: return machine_.waitFor(in.a, in.b != 0);
+    case Op::Delay: return machine_.delay(Micros{in.c} * 1000);
+    case Op::Window: machine_.window(k[in.c], k[in.c + 1], k[in.c + 2]); return Status::ok();
+    case Op::View: machine_.view(k[in.c], k[in.c + 1], k[in.c + 2]); return Status::ok();
+    default: return Status::fault(fmt::format("{} does not act on the machine", info(in.op).name));
+  }
+}
+
 RunOutcome Interpreter::finish(StopReason reason, std::string message, std::uint32_t index) {
   state_.finished = true;
   state_.outcome = {reason, std::move(message), index, state_.steps};
@@ -171,25 +188,7 @@ RunOutcome Interpreter::finish(StopReason reason, std::string message, std::uint
 Interpreter::AfterCall Interpreter::machineStep(const Instr& in, std::uint32_t at, std::uint32_t next,
                                                 std::uint64_t steps, const RunLimits& limits,
                                                 const PausePoints& pause, std::uint64_t& check) {
-  const std::int32_t* const k = image_.constants.data();
-  Status status;
-  switch (in.op) {
-    case Op::OutSig: status = machine_.setOutput(in.a, in.b != 0); break;
-    case Op::WaitFor: status = machine_.waitFor(in.a, in.b != 0); break;
-    case Op::Delay: status = machine_.delay(Micros{in.c} * 1000); break;
-    case Op::Move:
-    case Op::MoveTo:
-    case Op::MoveP:
-    case Op::HrdHome:
-    case Op::GoSoft:
-    case Op::MoveS:
-    case Op::Appro:
-    case Op::Depart: status = move(in); break;
-    case Op::Reset: status = machine_.reset(); break;
-    case Op::Window: machine_.window(k[in.c], k[in.c + 1], k[in.c + 2]); break;
-    case Op::View: machine_.view(k[in.c], k[in.c + 1], k[in.c + 2]); break;
-    default: status = Status::fault(fmt::format("{} does not act on the machine", info(in.op).name)); break;
-  }
+  Status status = machineCall(in);
   InterpreterState& st = state_;
   const auto stop = [&](StopReason reason, std::string message) {
     st.pc = next, st.steps = steps;
@@ -291,22 +290,14 @@ RunOutcome Interpreter::loop(const RunLimits& limits, StepObserver* observer, co
         pc = size;
         endIndex = at;
         break;
-      // What acts on the machine (kMachineOps): the call, its failure, the
-      // clock and the limits on it, out of line.
-      case Op::Move:
-      case Op::MoveTo:
-      case Op::MoveP:
-      case Op::OutSig:
-      case Op::WaitFor:
-      case Op::Reset:
-      case Op::Window:
-      case Op::View:
-      case Op::Delay:
-      case Op::HrdHome:
-      case Op::GoSoft:
-      case Op::MoveS:
-      case Op::Appro:
-      case Op::Depart:
+      // Every other opcode acts on the machine (kMachineOps, from the
+      // table): the call, its failure, the clock and the limits on it, out
+      // of line. One the table leaves off the machine has no case here: a
+      // runtime error that names it.
+      default:
+        if (!oneOf(kMachineOps, in.op)) [[unlikely]]
+          return stopAt(StopReason::RuntimeError, fmt::format("{} has no case in the interpreter", info(in.op).name),
+                        at, pc, steps);
         switch (machineStep(in, at, pc, steps, limits, pause, check)) {
           case AfterCall::Next: break;
           case AfterCall::Stopped: return st.outcome;

@@ -102,7 +102,10 @@ class Interpreter {
   void restore(const InterpreterState& state) { state_ = state; }
 
  private:
+  /// Every instruction that moves the motors (kMovesMotors).
   Status move(const Instr& in);
+  /// Every instruction that acts on the machine (kUsesMachine).
+  Status machineCall(const Instr& in);
   Status moveTo(std::span<const std::int32_t> targets);
   RunOutcome finish(StopReason reason, std::string message, std::uint32_t index);
   /// What the loop does after an instruction that acts on the machine.

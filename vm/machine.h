@@ -8,6 +8,8 @@
 #include <span>
 #include <string>
 
+#include "vm/io_lines.h"
+
 namespace rs::vm {
 
 /// Virtual time in microseconds since the start of the run.
@@ -70,8 +72,8 @@ class Machine {
   /// Current encoder position of every motor, in motor-table order.
   virtual std::span<const std::int32_t> positions() const = 0;
 
-  virtual Status setOutput(int output, bool on) = 0;  // output 1..8
-  virtual bool input(int input) = 0;                   // input 1..8, now
+  virtual Status setOutput(int output, bool on) = 0;  // output 1..kIoCount
+  virtual bool input(int input) = 0;                   // input 1..kIoCount, now
   /// Returns once input `input` reads `on`; Deadlock if it never will.
   virtual Status waitFor(int input, bool on) = 0;
   virtual Status delay(Micros duration) = 0;
@@ -88,8 +90,8 @@ class Machine {
 
   virtual Micros now() const = 0;
   /// Outputs and inputs as bit masks, bit 0 = line 1.
-  virtual std::uint8_t outputs() const = 0;
-  virtual std::uint8_t inputs() const = 0;
+  virtual IoMask outputs() const = 0;
+  virtual IoMask inputs() const = 0;
 };
 
 }  // namespace rs::vm

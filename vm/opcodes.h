@@ -21,6 +21,8 @@
 #include <optional>
 #include <string_view>
 
+#include "vm/io_lines.h"
+
 namespace rs::vm {
 
 /// One opcode per ROBOTSIM instruction, in the paper's order.
@@ -62,9 +64,9 @@ enum class Format : std::uint8_t {
   MotorVector,   // b = motor count, c = first constant
   Point,         // b = point index
   Target,        // d = instruction index
-  InputJump,     // a = input 1..8, b = 0 OFF / 1 ON, d = instruction index
-  Output,        // a = output 1..8, b = 0 OFF / 1 ON
-  Input,         // a = input 1..8, b = 0 OFF / 1 ON
+  InputJump,     // a = input 1..kIoCount, b = 0 OFF / 1 ON, d = instruction index
+  Output,        // a = output 1..kIoCount, b = 0 OFF / 1 ON
+  Input,         // a = input 1..kIoCount, b = 0 OFF / 1 ON
   VarCompare,    // a = comparison, b = variable slot, c = value, d = index
   VarValue,      // b = variable slot, c = value
   Triple,        // c = first of three constants
@@ -131,6 +133,9 @@ struct OpInfo {
 };
 
 inline constexpr std::uint16_t kFT = kFallsThrough;
+
+// The help texts of JMPIN and OUTSIG below number the lines 1..8.
+static_assert(kIoCount == 8, "say the new number of lines in kOps' help texts");
 inline constexpr std::uint16_t kMach = kUsesMachine;
 
 inline constexpr std::array<OpInfo, kOpCount> kOps{{
@@ -274,7 +279,6 @@ bool isReservedWord(std::string_view word);
 enum class Compare : std::uint8_t { Less = 0, Greater = 1, Equal = 2 };
 inline constexpr std::array<std::string_view, 3> kCompareSymbols{"<", ">", "="};
 
-inline constexpr int kIoCount = 8;                        // inputs and outputs 1..8
 inline constexpr std::int32_t kMaxDelayMillis = 86'400'000;  // one day
 inline constexpr std::int32_t kMaxToolDistance = 100'000;    // APPRO, DEPART: length units
 

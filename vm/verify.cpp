@@ -10,7 +10,6 @@ namespace {
 
 constexpr std::size_t kMaxMotors = 26;
 
-bool validIo(std::uint8_t line) { return line >= 1 && line <= kIoCount; }
 bool validState(std::uint16_t state) { return state <= 1; }
 
 std::string checkMotors(const Image& image) {
@@ -73,14 +72,14 @@ std::string checkOperands(const Image& image, const Instr& in) {
       return {};
     case Format::InputJump:
       if (in.c) return "unused operand fields are not zero";
-      if (!validIo(in.a)) return fmt::format("input {} outside 1..8", in.a);
+      if (!isIoLine(in.a)) return fmt::format("input {} outside 1..{}", in.a, kIoCount);
       if (!validState(in.b)) return fmt::format("state {} is neither ON nor OFF", in.b);
       if (!target(in.d)) return fmt::format("jump target {} outside the code", in.d);
       return {};
     case Format::Output:
     case Format::Input:
       if (in.c || in.d) return "unused operand fields are not zero";
-      if (!validIo(in.a)) return fmt::format("line {} outside 1..8", in.a);
+      if (!isIoLine(in.a)) return fmt::format("line {} outside 1..{}", in.a, kIoCount);
       if (!validState(in.b)) return fmt::format("state {} is neither ON nor OFF", in.b);
       return {};
     case Format::VarCompare:

@@ -223,7 +223,7 @@ std::optional<workcell::Gripper> Library::buildGripper(const GripperDef& gripper
   if (!reachesSpeed(at, def->accelerationPos, g.speed, g.acceleration)) return std::nullopt;
   const kinematics::GripperPoints points{def->axis2[0].v, def->axis2[1].v, def->axis3[0].v,  def->axis3[1].v,
                                          def->normal[0].v, def->normal[1].v, def->approach[0].v, def->approach[1].v};
-  kinematics::Result<kinematics::GripperModel> model = kinematics::makeGripper(points, def->precision);
+  kinematics::Built<kinematics::GripperModel> model = kinematics::makeGripper(points, def->precision);
   // The kinematics core says which vector the error is about; point at its line.
   const compiler::KinematicsPlaces places{
       at.source->name(), fmt::format("gripper '{}'", def->name), def->normal[0].pos, {}, [&](int part) {
@@ -391,7 +391,8 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
 // docs/models.md, "Collisions": a robot that overlaps something at its
 // home pose is reported when its workcell is built, at its placement.
 void Library::reportHomeCollisions(const workcell::Workcell& cell, const WorkcellDef& def, const DescriptionFile& from) {
-  if (cell.robots.empty()) return;
+  const workcell::PlacedRobot* driven = cell.drivenRobot();
+  if (!driven) return;
   const std::vector<workcell::Contact> contacts = workcell::checkAtHome(cell);
   if (contacts.empty()) return;
   diag::Pos at = def.pos;
@@ -403,7 +404,7 @@ void Library::reportHomeCollisions(const workcell::Workcell& cell, const Workcel
   const workcell::CollisionModel model(cell);
   constexpr std::size_t kShown = 5;
   for (std::size_t i = 0; i < contacts.size() && i < kShown; ++i) {
-    std::string message = fmt::format("robot '{}' collides at its home pose: {} overlaps {}", cell.robots.front().robot.name,
+    std::string message = fmt::format("robot '{}' collides at its home pose: {} overlaps {}", driven->robot.name,
                                       model.describe(contacts[i].a), model.describe(contacts[i].b));
     if (i + 1 == kShown && contacts.size() > kShown) message += fmt::format(" (and {} more)", contacts.size() - kShown);
     diagnostics_.push_back({from.source->name(), at, diag::Severity::Warning, std::move(message), "home-collision",

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "base/ascii.h"
+#include "base/fnv1a.h"
 #include "base/near_names.h"
 #include "vm/motor_range.h"
 
@@ -27,9 +28,7 @@ constexpr std::size_t kMaxSlots = 65535;
 // without regard to ASCII case: no copy per lookup.
 struct CaseInsensitiveHash {
   std::size_t operator()(std::string_view s) const {
-    std::uint64_t h = 14695981039346656037ull;  // FNV-1a
-    for (char c : s) h = (h ^ static_cast<unsigned char>(base::asciiUpper(c))) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
+    return static_cast<std::size_t>(base::fnv1aIgnoringCase(s));
   }
 };
 
@@ -80,8 +79,7 @@ class LabelTable {
 
  private:
   static std::size_t hash(std::string_view s) {
-    std::uint64_t h = 14695981039346656037ull;  // FNV-1a, upper-cased
-    for (char c : s) h = (h ^ static_cast<unsigned char>(base::asciiUpper(c))) * 1099511628211ull;
+    const std::uint64_t h = base::fnv1aIgnoringCase(s);
     return static_cast<std::size_t>(h ^ (h >> 29));
   }
   std::size_t mask() const { return slots_.size() - 1; }
@@ -386,7 +384,7 @@ void Translator::State::checkIo(const Instruction& in) {
   if (in.io.pos.line == 0) return;
   if (in.io.number < 1 || in.io.number > vm::kIoCount) {
     const bool output = vm::info(in.op).format == vm::Format::Output;
-    diag.error(in.io.pos, fmt::format("{} {} is outside 1..8", output ? "output" : "input", in.io.number),
+    diag.error(in.io.pos, fmt::format("{} {} is outside 1..{}", output ? "output" : "input", in.io.number, vm::kIoCount),
                "io-out-of-range");
   }
 }

@@ -18,6 +18,7 @@
 #include <fstream>
 
 #include "compiler/stimuli/stimuli_text.h"
+#include "vm/io_lines.h"
 
 namespace rs::stimuli {
 namespace {
@@ -73,9 +74,9 @@ class LineParser {
                                     text::quoted(token->text)));
   }
 
-  // An input or output number 1..8 right after the keyword `what`.
+  // An input or output number 1..vm::kIoCount right after the keyword `what`.
   bool lineNumber(int& n, std::string_view what) {
-    const auto token = take(fmt::format("expected an {} number 1..8 after '{}'", what, what));
+    const auto token = take(fmt::format("expected an {} number 1..{} after '{}'", what, vm::kIoCount, what));
     if (!token) return false;
     const diag::Result<int> parsed = text::parseLineNumber(token->text, what);
     if (!parsed) return fail(*token, parsed.failure().message);

@@ -18,7 +18,7 @@ namespace rs::stimuli {
 /// Latest time a stimulus may name: 1e6 seconds, in microseconds.
 inline constexpr vm::Micros kMaxStimulusTime = 1'000'000LL * 1'000'000LL;
 
-/// At time `at`, input `input` (1..8) turns ON or OFF.
+/// At time `at`, input `input` (1..vm::kIoCount) turns ON or OFF.
 struct InputChange {
   vm::Micros at = 0;
   int input = 1;
@@ -26,7 +26,7 @@ struct InputChange {
   bool operator==(const InputChange&) const = default;
 };
 
-/// When output `output` (1..8) turns to `outputOn`, input `input` turns to
+/// When output `output` (1..vm::kIoCount) turns to `outputOn`, input `input` turns to
 /// `inputOn` after `delay` (>= 0) microseconds.
 struct ReactiveRule {
   int output = 1;

@@ -4,7 +4,7 @@
 
 #include "compiler/stimuli/stimuli.h"
 #include "base/ascii.h"
-#include "vm/opcodes.h"
+#include "vm/io_lines.h"
 
 namespace rs::stimuli::text {
 namespace {

@@ -25,7 +25,7 @@ std::string quoted(std::string_view token);
 /// caller knows where the token stands.
 diag::Result<vm::Micros> parseSeconds(std::string_view token);
 
-/// An input or output line number 1..8; `what` ("input", "output") names
+/// An input or output line number 1..vm::kIoCount; `what` ("input", "output") names
 /// it in the failure, which has no place either.
 diag::Result<int> parseLineNumber(std::string_view token, std::string_view what);
 

@@ -9,6 +9,7 @@
 
 #include "compiler/stimuli/stimuli.h"
 #include "compiler/stimuli/stimuli_text.h"
+#include "vm/io_lines.h"
 
 namespace rs::stimuli {
 namespace {
@@ -27,7 +28,7 @@ diag::Result<InputChange> parseStimulusArg(std::string_view arg, std::string_vie
   if (equals == std::string_view::npos)
     return failAt(origin, arg.size(), fmt::format("expected '=' after the input number {}", kForm));
   if (equals == 0)
-    return failAt(origin, 0, fmt::format("expected an input number 1..8 before '=' {}", kForm));
+    return failAt(origin, 0, fmt::format("expected an input number 1..{} before '=' {}", vm::kIoCount, kForm));
   const auto number = text::parseLineNumber(arg.substr(0, equals), "input");
   if (!number) return failAt(origin, 0, number.failure().message);
 

@@ -70,9 +70,9 @@ void checkPairs(std::span<const Joint> joints, std::vector<KinematicsError>& err
 
 }  // namespace
 
-Result<ChainModel> ChainModel::fromDh(const Eigen::Isometry3d& F_world_0, std::span<const DhRow> table,
+Built<ChainModel> ChainModel::fromDh(const Eigen::Isometry3d& F_world_0, std::span<const DhRow> table,
                                       std::span<const JointDrive> drives) {
-  Result<ChainModel> result;
+  Built<ChainModel> result;
   if (table.size() != drives.size()) {
     result.errors.push_back(
         {ErrorKind::CountMismatch, -1,
@@ -96,7 +96,7 @@ Result<ChainModel> ChainModel::fromDh(const Eigen::Isometry3d& F_world_0, std::s
   return result;
 }
 
-Result<ChainModel> ChainModel::fromFrames(std::span<const Eigen::Isometry3d> frames, std::span<const JointType> types,
+Built<ChainModel> ChainModel::fromFrames(std::span<const Eigen::Isometry3d> frames, std::span<const JointType> types,
                                           std::span<const JointDrive> drives, const Tolerances& tol) {
   auto table = deriveDh(frames, types, tol);
   if (!table.value) return {std::nullopt, std::move(table.errors)};

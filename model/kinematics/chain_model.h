@@ -44,13 +44,13 @@ class ChainModel {
   /// that differ, non-finite table values, a bad precision, an encoder index
   /// that is negative or shared, coupling ON for the last joint or between
   /// joints of different types (degrees cannot cancel length units).
-  static Result<ChainModel> fromDh(const Eigen::Isometry3d& F_world_0, std::span<const DhRow> table,
+  static Built<ChainModel> fromDh(const Eigen::Isometry3d& F_world_0, std::span<const DhRow> table,
                                    std::span<const JointDrive> drives);
 
   /// Derives the table from home frames F_0..F_n (deriveDh) and builds the
   /// model with F_world_0 = frames[0], i.e. the frames' coordinates are the
   /// world's. Reports the errors of both steps.
-  static Result<ChainModel> fromFrames(std::span<const Eigen::Isometry3d> frames, std::span<const JointType> types,
+  static Built<ChainModel> fromFrames(std::span<const Eigen::Isometry3d> frames, std::span<const JointType> types,
                                        std::span<const JointDrive> drives, const Tolerances& tol = {});
 
   /// The same chain with its base placed at `F_world_0` (a workcell's AT/ROTATE).

@@ -19,9 +19,9 @@ double clean(double value) { return std::abs(value) < 1e-12 ? 0.0 : value + 0.0;
 // x_i = R.col(0) must have no z component (perpendicular), and the line
 // through o_i along x_i must pass through the z axis (meet). Then
 // o_i = d z + a x_i, so d = p.z and a = p · x_i.
-Result<DhRow> deriveRow(const Eigen::Isometry3d& previous, const Eigen::Isometry3d& current, JointType type, int i,
+Built<DhRow> deriveRow(const Eigen::Isometry3d& previous, const Eigen::Isometry3d& current, JointType type, int i,
                         const Tolerances& tol) {
-  Result<DhRow> result;
+  Built<DhRow> result;
   const Eigen::Matrix3d R = previous.linear().transpose() * current.linear();
   const Eigen::Vector3d p = previous.linear().transpose() * (current.translation() - previous.translation());
   const Eigen::Vector3d x = R.col(0);
@@ -54,9 +54,9 @@ Result<DhRow> deriveRow(const Eigen::Isometry3d& previous, const Eigen::Isometry
 
 }  // namespace
 
-Result<std::vector<DhRow>> deriveDh(std::span<const Eigen::Isometry3d> frames, std::span<const JointType> types,
+Built<std::vector<DhRow>> deriveDh(std::span<const Eigen::Isometry3d> frames, std::span<const JointType> types,
                                     const Tolerances& tol) {
-  Result<std::vector<DhRow>> result;
+  Built<std::vector<DhRow>> result;
   if (frames.size() != types.size() + 1) {
     result.errors.push_back({ErrorKind::CountMismatch, -1,
                              fmt::format("{} joints need {} frames (base to end effector), but {} are given",

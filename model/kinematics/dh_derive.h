@@ -29,7 +29,7 @@ namespace rs::kinematics {
 /// frame choice, used by the library robots, puts x_i level with o_{i-1},
 /// so d_i = 0.) Intersecting axes give a_i = 0, coincident ones a_i = 0 and
 /// α_i = 0 or 180. Values within 1e-12 of zero come back as exactly 0.
-Result<std::vector<DhRow>> deriveDh(std::span<const Eigen::Isometry3d> frames, std::span<const JointType> types,
+Built<std::vector<DhRow>> deriveDh(std::span<const Eigen::Isometry3d> frames, std::span<const JointType> types,
                                     const Tolerances& tol = {});
 
 }  // namespace rs::kinematics

@@ -37,9 +37,12 @@ struct KinematicsError {
   bool operator==(const KinematicsError&) const = default;
 };
 
-/// A value, or every error found while trying to build it (never both).
+/// What building a part of the model gave: the part, or every error found
+/// while trying to build it (never both). Named apart from diag::Result,
+/// which carries Diagnostics: the description compiler turns these errors
+/// into those.
 template <class T>
-struct Result {
+struct Built {
   std::optional<T> value;
   std::vector<KinematicsError> errors;
   bool ok() const { return value.has_value(); }

@@ -23,9 +23,9 @@ KinematicsError zeroLength(std::string_view what, int index) {
 
 }  // namespace
 
-Result<Line> lineThrough(const Eigen::Vector3d& from, const Eigen::Vector3d& to, std::string_view name,
+Built<Line> lineThrough(const Eigen::Vector3d& from, const Eigen::Vector3d& to, std::string_view name,
                          const Tolerances& tol, int index) {
-  Result<Line> result;
+  Built<Line> result;
   if (!from.allFinite() || !to.allFinite()) {
     result.errors.push_back(notFinite(name, index));
     return result;
@@ -44,10 +44,10 @@ Result<Line> lineThrough(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
 
 // Checks every input before building, so that one call reports all of a
 // frame's problems (both axes degenerate, say) rather than the first.
-Result<Eigen::Isometry3d> frameFromAxes(const Eigen::Vector3d& origin, const Eigen::Vector3d& xDirection,
+Built<Eigen::Isometry3d> frameFromAxes(const Eigen::Vector3d& origin, const Eigen::Vector3d& xDirection,
                                         const Eigen::Vector3d& zDirection, const Tolerances& tol, int index,
                                         AxisNames names) {
-  Result<Eigen::Isometry3d> result;
+  Built<Eigen::Isometry3d> result;
   if (!origin.allFinite()) result.errors.push_back(notFinite("the origin", index));
   const double xLength = xDirection.norm();
   const double zLength = zDirection.norm();
@@ -84,7 +84,7 @@ Result<Eigen::Isometry3d> frameFromAxes(const Eigen::Vector3d& origin, const Eig
   return result;
 }
 
-Result<Eigen::Isometry3d> frameFromPoints(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& r,
+Built<Eigen::Isometry3d> frameFromPoints(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& r,
                                           const Tolerances& tol, int index) {
   return frameFromAxes(p, q - p, r - p, tol, index);
 }

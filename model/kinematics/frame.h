@@ -43,7 +43,7 @@ struct AxisNames {
 /// The line from `from` through `to`, direction normalised. Errors: a
 /// coordinate that is not finite, or the two points closer than
 /// `tol.length` ("<name> has zero length"). Errors carry `index`.
-Result<Line> lineThrough(const Eigen::Vector3d& from, const Eigen::Vector3d& to, std::string_view name,
+Built<Line> lineThrough(const Eigen::Vector3d& from, const Eigen::Vector3d& to, std::string_view name,
                          const Tolerances& tol = {}, int index = -1);
 
 /// The frame with origin `origin`, x axis along `xDirection` and z axis
@@ -51,13 +51,13 @@ Result<Line> lineThrough(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
 /// directions are normalised; z is then made exactly perpendicular to x.
 /// Errors (each carrying `index`): a coordinate that is not finite, an axis
 /// shorter than `tol.length`, or |cos(x, z)| > `tol.cosine`.
-Result<Eigen::Isometry3d> frameFromAxes(const Eigen::Vector3d& origin, const Eigen::Vector3d& xDirection,
+Built<Eigen::Isometry3d> frameFromAxes(const Eigen::Vector3d& origin, const Eigen::Vector3d& xDirection,
                                         const Eigen::Vector3d& zDirection, const Tolerances& tol = {}, int index = -1,
                                         AxisNames names = {});
 
 /// The frame given the description's way: x axis from `p` to `q`, z axis
 /// from `p` to `r` (so `p` is the origin). Same checks as frameFromAxes.
-Result<Eigen::Isometry3d> frameFromPoints(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& r,
+Built<Eigen::Isometry3d> frameFromPoints(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& r,
                                           const Tolerances& tol = {}, int index = -1);
 
 /// The rigid motion that turns points by `degrees` about `line`,

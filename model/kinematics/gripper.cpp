@@ -10,7 +10,7 @@ namespace {
 
 // The errors of one part, each marked with the part it is about.
 template <class T>
-void take(Result<T>& part, GripperPart which, std::vector<KinematicsError>& errors) {
+void take(Built<T>& part, GripperPart which, std::vector<KinematicsError>& errors) {
   for (KinematicsError e : part.errors) {
     e.index = which;
     errors.push_back(std::move(e));
@@ -21,8 +21,8 @@ std::string point(const Eigen::Vector3d& p) { return fmt::format("({:g}, {:g}, {
 
 }  // namespace
 
-Result<GripperModel> makeGripper(const GripperPoints& points, double precision, const Tolerances& tol) {
-  Result<GripperModel> result;
+Built<GripperModel> makeGripper(const GripperPoints& points, double precision, const Tolerances& tol) {
+  Built<GripperModel> result;
   auto r2 = lineThrough(points.r2From, points.r2To, "axis r2", tol);
   auto r3 = lineThrough(points.r3From, points.r3To, "axis r3", tol);
   take(r2, kGripperAxis2, result.errors);

@@ -47,7 +47,7 @@ enum GripperPart : int {
 /// non-finite axis, n not perpendicular to a, an approach vector that does
 /// not start at the normal vector's start (within tol.distance), a
 /// precision of zero or not finite.
-Result<GripperModel> makeGripper(const GripperPoints& points, double precision, const Tolerances& tol = {});
+Built<GripperModel> makeGripper(const GripperPoints& points, double precision, const Tolerances& tol = {});
 
 /// Where the fingers are relative to the gripper base: the motions, in G,
 /// that take each finger from its drawn (open) position to its current one.

@@ -416,7 +416,7 @@ std::vector<Contact> CollisionData::allContacts(std::span<const std::int32_t> en
 }
 
 std::vector<Contact> checkAtHome(const Workcell& cell) {
-  if (cell.robots.empty()) return {};
+  if (!cell.drivenRobot()) return {};
   const CollisionModel model(cell);
   CollisionData data(model);
   std::vector<Eigen::Isometry3d> poses;

@@ -77,7 +77,9 @@ class CollisionModel {
  public:
   /// Robot `robot` of `cell` (which must outlive the model) is the one that
   /// moves. A robot without a chain has only static parts.
-  explicit CollisionModel(const Workcell& cell, std::size_t robot = 0);
+  CollisionModel(const Workcell& cell, std::size_t robot);
+  /// The robot the cell's run drives moves (Workcell::drivenRobot).
+  explicit CollisionModel(const Workcell& cell) : CollisionModel(cell, cell.drivenRobotIndex()) {}
 
   const Workcell& cell() const { return *cell_; }
   /// Robot parts (links in order, then the gripper's base and fingers).
@@ -286,7 +288,7 @@ class CollisionData {
   Eigen::AlignedBox3d heldHull_;
 };
 
-/// Every overlap of the cell's first robot at its home pose, objects where
+/// Every overlap of the robot the cell drives (Workcell::drivenRobot) at its home pose, objects where
 /// the cell placed them, nothing exempt, link 0 included (what the
 /// description reader reports when it builds a workcell).
 std::vector<Contact> checkAtHome(const Workcell& cell);

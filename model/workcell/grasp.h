@@ -39,7 +39,9 @@ class Grasping {
  public:
   /// Tracks robot `robot` of `cell` (both must outlive this). A robot
   /// without a gripper never holds anything.
-  explicit Grasping(const Workcell& cell, std::size_t robot = 0);
+  Grasping(const Workcell& cell, std::size_t robot);
+  /// Tracks the robot the cell's run drives (Workcell::drivenRobot).
+  explicit Grasping(const Workcell& cell) : Grasping(cell, cell.drivenRobotIndex()) {}
 
   /// One step of the program moved the robot's motors (arm joints, then
   /// the gripper, as a program sees them) from `before` to `after`. With

@@ -118,6 +118,16 @@ struct Workcell {
   std::optional<double> floor;
   std::vector<PlacedRobot> robots;
   std::vector<PlacedObject> objects;
+
+  /// The robot a run drives, a program is compiled for and a pendant jogs:
+  /// for now the first placed. The one place that says which: a cell of
+  /// several robots changes this policy here.
+  std::size_t drivenRobotIndex() const { return 0; }
+  /// That robot, or null in a cell without robots.
+  const PlacedRobot* drivenRobot() const {
+    return drivenRobotIndex() < robots.size() ? &robots[drivenRobotIndex()] : nullptr;
+  }
+  PlacedRobot* drivenRobot() { return drivenRobotIndex() < robots.size() ? &robots[drivenRobotIndex()] : nullptr; }
 };
 
 }  // namespace rs::workcell

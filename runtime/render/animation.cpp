@@ -185,7 +185,7 @@ Json cellDrawing(const workcell::Workcell& cell, const Camera& camera) {
   const CellPoser poser(cell);
   const Fit fit = fitView(poser.homePoints(), camera);
   Json robots = Json::array();
-  for (std::size_t r = 0; r < cell.robots.size(); ++r) robots.push_back(robotModel(poser, r, r == 0));
+  for (std::size_t r = 0; r < cell.robots.size(); ++r) robots.push_back(robotModel(poser, r, r == cell.drivenRobotIndex()));
   Json objects = Json::array();
   for (std::size_t o = 0; o < cell.objects.size(); ++o)
     objects.push_back(part("object", static_cast<int>(o), 0, cell.objects[o].shape, cell.objects[o].F_world_design));

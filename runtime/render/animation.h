@@ -33,7 +33,7 @@ struct Listing {
 };
 
 /// A collision of the run, for the page: its parts turn red from `at` to
-/// `end` (the end of the move). `robotParts` index the first robot's
+/// `end` (the end of the move). `robotParts` index the driven robot's
 /// "parts" (links, then the gripper's base and fingers), `objects` the
 /// model's "objects".
 struct CollisionMark {
@@ -42,7 +42,7 @@ struct CollisionMark {
 };
 
 struct AnimationInput {
-  const workcell::Workcell* cell = nullptr;  ///< its first robot ran the program
+  const workcell::Workcell* cell = nullptr;  ///< its driven robot (Workcell::drivenRobot) ran the program
   const runtime::RunLog* run = nullptr;
   Listing listing;
   /// The starting camera. Its width x height (animate: the default
@@ -92,7 +92,7 @@ std::string animationHtml(const AnimationInput& input);
 std::string animationHtml(const AnimationInput& input, const Frames& frames);
 
 /// What every page draws a cell from: {"fit", "camera", "style",
-/// "robots", "objects"} (the first robot runs the program), as in
+/// "robots", "objects"} (the driven robot runs the program), as in
 /// animationModel. The shared drawing script (drawScript) reads it.
 nlohmann::ordered_json cellDrawing(const workcell::Workcell& cell, const Camera& camera);
 

@@ -96,8 +96,8 @@ Chart chartOf(const ChartInput& input) {
   // Columns: each motor, the TCP, what the gripper holds, inputs, outputs.
   const std::size_t motors = log.motors.size();
   for (const vm::MotorSpec& m : log.motors) chart.series.push_back({std::string(1, m.letter), {}});
-  const workcell::PlacedRobot* robot =
-      input.cell && !input.cell->robots.empty() && input.cell->robots[0].robot.chain ? &input.cell->robots[0] : nullptr;
+  const workcell::PlacedRobot* driven = input.cell ? input.cell->drivenRobot() : nullptr;
+  const workcell::PlacedRobot* robot = driven && driven->robot.chain ? driven : nullptr;
   const std::size_t tcp = chart.series.size();
   if (robot)
     for (const char* c : {"tcp_x", "tcp_y", "tcp_z"}) chart.series.push_back({c, {}});
@@ -107,9 +107,9 @@ Chart chartOf(const ChartInput& input) {
   const std::size_t held = chart.series.size();
   if (gripper) chart.series.push_back({"held", {}});
   const std::size_t inputs = chart.series.size();
-  for (int i = 1; i <= 8; ++i) chart.series.push_back({fmt::format("in{}", i), {}});
+  for (int i = 1; i <= vm::kIoCount; ++i) chart.series.push_back({fmt::format("in{}", i), {}});
   const std::size_t outputs = chart.series.size();
-  for (int i = 1; i <= 8; ++i) chart.series.push_back({fmt::format("out{}", i), {}});
+  for (int i = 1; i <= vm::kIoCount; ++i) chart.series.push_back({fmt::format("out{}", i), {}});
   for (ChartSeries& s : chart.series) s.values.reserve(n);
   chart.lines.reserve(n);
 
@@ -124,7 +124,7 @@ Chart chartOf(const ChartInput& input) {
       for (std::size_t a = 0; a < 3; ++a) chart.series[tcp + a].values.push_back(p[a]);
     }
     if (gripper) chart.series[held].values.push_back(heldObject.at(t));
-    for (int i = 0; i < 8; ++i) {
+    for (int i = 0; i < vm::kIoCount; ++i) {
       chart.series[inputs + static_cast<std::size_t>(i)].values.push_back((state.inputs >> i) & 1);
       chart.series[outputs + static_cast<std::size_t>(i)].values.push_back((state.outputs >> i) & 1);
     }
@@ -138,8 +138,9 @@ Chart chartOf(const ChartInput& input) {
       chart.lanes.push_back({LaneKind::Motor, fmt::format("{} {}", log.motors[m].letter, jointKindWord(log.motors[m].kind)), {m}});
   if (robot) chart.lanes.push_back({LaneKind::Tcp, "TCP x y z", {tcp, tcp + 1, tcp + 2}});
   if (gripper) chart.lanes.push_back({LaneKind::Gripper, fmt::format("{} gripper", log.motors[*gripper].letter), {*gripper}});
-  ChartLane in{LaneKind::Inputs, "inputs 1-8", {}}, out{LaneKind::Outputs, "outputs 1-8", {}};
-  for (std::size_t i = 0; i < 8; ++i) in.series.push_back(inputs + i), out.series.push_back(outputs + i);
+  ChartLane in{LaneKind::Inputs, fmt::format("inputs 1-{}", vm::kIoCount), {}},
+      out{LaneKind::Outputs, fmt::format("outputs 1-{}", vm::kIoCount), {}};
+  for (std::size_t i = 0; i < static_cast<std::size_t>(vm::kIoCount); ++i) in.series.push_back(inputs + i), out.series.push_back(outputs + i);
   chart.lanes.push_back(std::move(in));
   chart.lanes.push_back(std::move(out));
 

@@ -52,7 +52,7 @@ struct LineChange {
 };
 
 struct ChartInput {
-  const workcell::Workcell* cell = nullptr;  ///< its first robot ran the program; null: no TCP
+  const workcell::Workcell* cell = nullptr;  ///< its driven robot (Workcell::drivenRobot) ran the program; null: no TCP
   const runtime::RunLog* run = nullptr;
   std::span<const std::uint32_t> lineOf;     ///< the source line of each instruction (vm::Image::lines)
   std::vector<ChartMark> marks;

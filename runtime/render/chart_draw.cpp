@@ -35,7 +35,7 @@ double laneHeight(LaneKind kind) {
     case LaneKind::Inputs:
     case LaneKind::Outputs: break;
   }
-  return 8 * kDigitalRow;
+  return vm::kIoCount * kDigitalRow;
 }
 
 bool isDigitalLane(LaneKind kind) { return kind == LaneKind::Inputs || kind == LaneKind::Outputs; }

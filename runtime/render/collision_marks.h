@@ -20,7 +20,7 @@ namespace rs::render {
 inline constexpr workcell::Color kCollisionShapeColor = workcell::Color::LightMagenta;
 inline constexpr workcell::Color kCollidingColor = workcell::Color::Red;
 
-/// Every overlap of the first robot at motors `encoders` with the objects at
+/// Every overlap of the driven robot (Workcell::drivenRobot) at motors `encoders` with the objects at
 /// `objectPoses` (F_world_design each); the gripper's parts may overlap the
 /// object whose box holds the tool centre point (what it holds or takes).
 /// `held`: the object the gripper carries, at its pose in `objectPoses`;

@@ -100,7 +100,7 @@ void EmulatorEngine::setFault(FaultPlan plan) {
 }
 
 void EmulatorEngine::setInput(int line, bool on) {
-  if (line < 1 || line > 8) return;
+  if (line < 1 || line > kControllerLines) return;
   const auto bit = static_cast<std::uint8_t>(1u << (line - 1));
   inputs_ = on ? static_cast<std::uint8_t>(inputs_ | bit) : static_cast<std::uint8_t>(inputs_ & ~bit);
 }
@@ -233,7 +233,7 @@ std::string EmulatorEngine::statusLine() const {
   }
   const auto lines = [](std::uint8_t mask) {
     std::string s;
-    for (int i = 0; i < 8; ++i) s += ((mask >> i) & 1) ? static_cast<char>('1' + i) : '.';
+    for (int i = 0; i < kControllerLines; ++i) s += ((mask >> i) & 1) ? static_cast<char>('1' + i) : '.';
     return s;
   };
   line += fmt::format(" | out {} | in {} | {} cmds", lines(outputs_), lines(inputs_), commands_);

@@ -49,7 +49,7 @@ std::uint8_t EmulatorEngine::inquiryBits(char command) const {
     const BitSource& src = s.switches[static_cast<std::size_t>(i)];
     if (src.command == command && switchClosed(static_cast<char>('A' + i))) bits &= ~(1u << src.bit);
   }
-  for (int line = 0; line < 8; ++line) {
+  for (int line = 0; line < kControllerLines; ++line) {
     const BitSource& src = s.inputs[static_cast<std::size_t>(line)];
     if (src.command != command) continue;
     const bool on = (inputs_ >> line) & 1;
@@ -104,7 +104,7 @@ void EmulatorEngine::executeMark3(const std::string& c, Micros now) {
     setOutput(2, false);
   else if (c.size() > 1 && c[0] == 'P' && parseLong(c.substr(1), d) && d >= 0 && d <= 255) {
     const auto next = static_cast<std::uint8_t>((outputs_ & 0x03) | (d & 0xFC));
-    for (int line = 3; line <= 8; ++line)
+    for (int line = 3; line <= kControllerLines; ++line)
       if (((next ^ outputs_) >> (line - 1)) & 1) setOutput(line, (next >> (line - 1)) & 1);
   } else if (c == "Q") {
     for (EmulatedMotor& m : motors_) m.registerSteps = 0;
@@ -183,9 +183,9 @@ void EmulatorEngine::executeMark4(const std::string& c, Micros now) {
   } else if (name == "IP") {
     replyNumber(config_.settings.inputsActiveLow ? (~inputs_ & 0xFF) : inputs_, now);
   } else if (name == "IB") {
-    if (numberArg(1, 1, 8, v)) replyNumber(((inputs_ >> (v - 1)) & 1) != config_.settings.inputsActiveLow, now);
+    if (numberArg(1, 1, kControllerLines, v)) replyNumber(((inputs_ >> (v - 1)) & 1) != config_.settings.inputsActiveLow, now);
   } else if (name == "OB") {
-    if (numberArg(1, 1, 8, v) && numberArg(2, 0, 1, s)) {
+    if (numberArg(1, 1, kControllerLines, v) && numberArg(2, 0, 1, s)) {
       const auto bit = static_cast<std::uint8_t>(1u << (v - 1));
       outputs_ = s ? static_cast<std::uint8_t>(outputs_ | bit) : static_cast<std::uint8_t>(outputs_ & ~bit);
       event(fmt::format("output {} {}", v, s ? "ON" : "OFF"));

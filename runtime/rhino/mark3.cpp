@@ -83,26 +83,26 @@ class Mark3 final : public Controller {
     return Status::ok();
   }
 
-  Status readInputs(std::uint8_t& mask) override {
-    std::uint8_t result = 0;
+  Status readInputs(vm::IoMask& mask) override {
+    vm::IoMask result = 0;
     for (const char command : {'I', 'J', 'K'}) {
       bool used = false;
       for (const BitSource& b : cfg_.inputs) used = used || b.command == command;
       if (!used) continue;
       std::uint8_t bits = 0;
       if (auto st = readBits(command, bits); !st) return st;
-      for (std::size_t line = 0; line < 8; ++line) {
-        const BitSource& b = cfg_.inputs[line];
+      for (int line = 1; line <= vm::kIoCount; ++line) {
+        const BitSource& b = cfg_.inputs[static_cast<std::size_t>(line - 1)];
         if (b.command != command) continue;
         const bool high = ((bits >> b.bit) & 1) != 0;
-        if (high != cfg_.inputsActiveLow) result = static_cast<std::uint8_t>(result | (1u << line));
+        if (high != cfg_.inputsActiveLow) result = vm::withLine(result, line, true);
       }
     }
     mask = result;
     return Status::ok();
   }
 
-  Status writeOutput(int line, bool on, std::uint8_t mask) override {
+  Status writeOutput(int line, bool on, vm::IoMask mask) override {
     const std::size_t i = static_cast<std::size_t>(line - 1);
     const std::string& tmpl = on ? cfg_.outputOn[i] : cfg_.outputOff[i];
     if (tmpl.empty())

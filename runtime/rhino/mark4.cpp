@@ -106,15 +106,15 @@ class Mark4 final : public Controller {
     return Status::ok();
   }
 
-  Status readInputs(std::uint8_t& mask) override {
+  Status readInputs(vm::IoMask& mask) override {
     long v = 0;
     if (auto st = s_.queryNumber("IP", v); !st) return st;
     if (v < 0 || v > 255) return s_.garbage("IP", {}, fmt::format("an input port value 0..255, not {}", v));
-    mask = static_cast<std::uint8_t>(cfg_.inputsActiveLow ? ~v : v);
+    mask = static_cast<vm::IoMask>((cfg_.inputsActiveLow ? ~v : v) & 0xFF);  // the port is a byte
     return Status::ok();
   }
 
-  Status writeOutput(int line, bool on, std::uint8_t) override {
+  Status writeOutput(int line, bool on, vm::IoMask) override {
     return s_.send(fmt::format("OB,{},{}", line, on ? 1 : 0));
   }
 

@@ -12,8 +12,6 @@ namespace {
 
 using vm::Status;
 
-bool validLine(int n) { return n >= 1 && n <= 8; }
-std::uint8_t bit(int line) { return static_cast<std::uint8_t>(1u << (line - 1)); }
 const char* onOff(bool on) { return on ? "ON" : "OFF"; }
 
 }  // namespace
@@ -133,13 +131,13 @@ Status RhinoMachine::reset() { return moveTo(start_); }
 
 Status RhinoMachine::setOutput(int output, bool on) {
   if (Status st = ready(); !st) return st;
-  if (!validLine(output)) return Status::fault(fmt::format("output {} does not exist (outputs are 1..8)", output));
-  const std::uint8_t b = bit(output);
-  if ((written_ & b) && ((outputs_ & b) != 0) == on) return Status::ok();
-  const std::uint8_t next = on ? static_cast<std::uint8_t>(outputs_ | b) : static_cast<std::uint8_t>(outputs_ & ~b);
+  if (!vm::isIoLine(output))
+    return Status::fault(fmt::format("output {} does not exist (outputs are 1..{})", output, vm::kIoCount));
+  if (vm::lineIsOn(written_, output) && vm::lineIsOn(outputs_, output) == on) return Status::ok();
+  const vm::IoMask next = vm::withLine(outputs_, output, on);
   if (Status st = controller_->writeOutput(output, on, next); !st) return fail(st);
   outputs_ = next;
-  written_ = static_cast<std::uint8_t>(written_ | b);
+  written_ = vm::withLine(written_, output, true);
   return Status::ok();
 }
 
@@ -150,7 +148,7 @@ Status RhinoMachine::readPositions() {
 }
 
 Status RhinoMachine::readInputs() {
-  std::uint8_t mask = 0;
+  vm::IoMask mask = 0;
   if (Status st = controller_->readInputs(mask); !st) return fail(st);
   inputs_ = mask;
   return Status::ok();
@@ -159,16 +157,17 @@ Status RhinoMachine::readInputs() {
 // input() cannot report a failure: the controller is stopped at once and
 // the next instruction that talks to the machine ends the run.
 bool RhinoMachine::input(int input) {
-  if (!validLine(input) || !ready() || !readInputs()) return false;
-  return (inputs_ & bit(input)) != 0;
+  if (!vm::isIoLine(input) || !ready() || !readInputs()) return false;
+  return vm::lineIsOn(inputs_, input);
 }
 
 Status RhinoMachine::waitFor(int input, bool on) {
   if (Status st = ready(); !st) return st;
-  if (!validLine(input)) return Status::fault(fmt::format("input {} does not exist (inputs are 1..8)", input));
+  if (!vm::isIoLine(input))
+    return Status::fault(fmt::format("input {} does not exist (inputs are 1..{})", input, vm::kIoCount));
   for (;;) {
     if (Status st = readInputs(); !st) return st;
-    if (((inputs_ & bit(input)) != 0) == on) return Status::ok();
+    if (vm::lineIsOn(inputs_, input) == on) return Status::ok();
     if (now() >= waitLimit_)
       return Status::deadlock(fmt::format("input {} did not turn {} on the controller within {} s", input, onOff(on),
                                           base::formatSeconds(waitLimit_)));

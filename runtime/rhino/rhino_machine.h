@@ -40,7 +40,7 @@ struct FaultState {
     bool uncertain() const { return confirmed != commanded; }
   };
   std::vector<Motor> motors;
-  std::uint8_t outputsOn = 0;
+  vm::IoMask outputsOn = 0;
   std::string failure;
 };
 
@@ -87,8 +87,8 @@ class RhinoMachine final : public vm::Machine {
   void window(std::int32_t, std::int32_t, std::int32_t) override {}
   void view(std::int32_t, std::int32_t, std::int32_t) override {}
   vm::Micros now() const override;
-  std::uint8_t outputs() const override { return outputs_; }
-  std::uint8_t inputs() const override { return inputs_; }
+  vm::IoMask outputs() const override { return outputs_; }
+  vm::IoMask inputs() const override { return inputs_; }
 
   const std::vector<vm::MotorSpec>& motors() const { return motors_; }
   /// The fault that stopped the machine ("" while it is healthy).
@@ -117,9 +117,9 @@ class RhinoMachine final : public vm::Machine {
   std::vector<std::int32_t> commanded_;  // the last targets sent (a move's, or 0 for HRDHOME)
   Micros origin_ = 0;
   Micros waitLimit_ = Micros{3600} * 1'000'000;
-  std::uint8_t outputs_ = 0;
-  std::uint8_t written_ = 0;  // outputs written at least once
-  std::uint8_t inputs_ = 0;
+  vm::IoMask outputs_ = 0;
+  vm::IoMask written_ = 0;  // outputs written at least once
+  vm::IoMask inputs_ = 0;
   bool opened_ = false;
   std::string failure_;
   std::string openHint_;

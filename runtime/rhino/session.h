@@ -82,12 +82,12 @@ class Controller {
   virtual vm::Status move(std::span<const std::int32_t> targets, std::span<std::int32_t> positions) = 0;
   /// Homes every motor against its switch; positions end at 0.
   virtual vm::Status home(std::span<std::int32_t> positions) = 0;
-  virtual vm::Status readInputs(std::uint8_t& mask) = 0;
+  virtual vm::Status readInputs(vm::IoMask& mask) = 0;
   /// The controller's encoder counts, where it can report them (Mark IV);
   /// a Mark III has no such query: the counts the host tracked stay.
   virtual vm::Status readPositions(std::span<std::int32_t> positions) = 0;
-  /// Output `line` (1..8) turns `on`; `mask` is every output after the change.
-  virtual vm::Status writeOutput(int line, bool on, std::uint8_t mask) = 0;
+  /// Output `line` (1..vm::kIoCount) turns `on`; `mask` is every output after the change.
+  virtual vm::Status writeOutput(int line, bool on, vm::IoMask mask) = 0;
   /// Sends stop to every motor, whatever state the line is in; returns
   /// what was done, for the error message.
   virtual std::string stopAll() = 0;

@@ -90,6 +90,10 @@ bool validTemplate(std::string_view t) {
 }
 
 // "switch.E", "input.3", "output.3.on": the index, or -1.
+// A line's number in a setting's name is one digit ("input.8").
+static_assert(kControllerLines <= 9);
+constexpr char kLastLineDigit = static_cast<char>('0' + kControllerLines);
+
 int indexedKey(std::string_view key, std::string_view prefix, std::string_view suffix, char first, char last) {
   if (key.size() != prefix.size() + 1 + suffix.size() || key.substr(0, prefix.size()) != prefix ||
       key.substr(prefix.size() + 1) != suffix)
@@ -129,12 +133,12 @@ RhinoSettings defaultSettings(Dialect d) {
   s.switches[1] = {'J', 1};
   for (int m = 2; m < 8; ++m) s.switches[m] = {'I', m - 2};
   for (int i = 0; i < 4; ++i) s.inputs[i] = {'J', i + 2};
-  for (int i = 4; i < 8; ++i) s.inputs[i] = {'K', i - 4};
+  for (int i = 4; i < kControllerLines; ++i) s.inputs[i] = {'K', i - 4};
   s.outputOn[0] = "L";
   s.outputOff[0] = "M";
   s.outputOn[1] = "N";
   s.outputOff[1] = "O";
-  for (int i = 2; i < 8; ++i) s.outputOn[i] = s.outputOff[i] = "P{port}";
+  for (int i = 2; i < kControllerLines; ++i) s.outputOn[i] = s.outputOff[i] = "P{port}";
   s.inputsActiveLow = d == Dialect::Mark3;
   return s;
 }
@@ -210,7 +214,7 @@ std::string applySetting(RhinoSettings& s, std::string_view rawKey, std::string_
       return bad(key, value, "magnitude or signed");
   } else if (const int m = indexedKey(key, "switch.", "", 'A', 'H'); m >= 0) {
     if (!parseBitSource(value, s.switches[static_cast<std::size_t>(m)])) return bad(key, value, "I0..K5 or none");
-  } else if (const int i = indexedKey(key, "input.", "", '1', '8'); i >= 0) {
+  } else if (const int i = indexedKey(key, "input.", "", '1', kLastLineDigit); i >= 0) {
     if (!parseBitSource(value, s.inputs[static_cast<std::size_t>(i)])) return bad(key, value, "I0..K5 or none");
   } else if (key == "input-active") {
     if (v == "low")
@@ -219,10 +223,10 @@ std::string applySetting(RhinoSettings& s, std::string_view rawKey, std::string_
       s.inputsActiveLow = false;
     else
       return bad(key, value, "low or high");
-  } else if (const int on = indexedKey(key, "output.", ".on", '1', '8'); on >= 0) {
+  } else if (const int on = indexedKey(key, "output.", ".on", '1', kLastLineDigit); on >= 0) {
     if (!validTemplate(value)) return bad(key, value, "a command, optionally with {n} and {port}");
     s.outputOn[static_cast<std::size_t>(on)] = std::string(value);
-  } else if (const int off = indexedKey(key, "output.", ".off", '1', '8'); off >= 0) {
+  } else if (const int off = indexedKey(key, "output.", ".off", '1', kLastLineDigit); off >= 0) {
     if (!validTemplate(value)) return bad(key, value, "a command, optionally with {n} and {port}");
     s.outputOff[static_cast<std::size_t>(off)] = std::string(value);
   } else if (key == "home-order") {
@@ -317,10 +321,10 @@ std::vector<std::pair<std::string, std::string>> listSettings(const RhinoSetting
   for (int m = 0; m < 8; ++m)
     out.emplace_back(fmt::format("switch.{}", static_cast<char>('A' + m)),
                      bitSourceText(s.switches[static_cast<std::size_t>(m)]));
-  for (int i = 0; i < 8; ++i)
+  for (int i = 0; i < kControllerLines; ++i)
     out.emplace_back(fmt::format("input.{}", i + 1), bitSourceText(s.inputs[static_cast<std::size_t>(i)]));
   out.emplace_back("input-active", s.inputsActiveLow ? "low" : "high");
-  for (std::size_t i = 0; i < 8; ++i) {
+  for (std::size_t i = 0; i < s.outputOn.size(); ++i) {
     out.emplace_back(fmt::format("output.{}.on", i + 1), s.outputOn[i]);
     out.emplace_back(fmt::format("output.{}.off", i + 1), s.outputOff[i]);
   }

@@ -14,8 +14,15 @@
 #include "diag/diagnostic.h"
 #include "diag/result.h"
 #include "runtime/rhino/serial_port.h"
+#include "vm/io_lines.h"
 
 namespace rs::rhino {
+
+/// A Rhino controller's input lines, and its output lines: a byte each on
+/// the Mark III and the Mark IV. The settings map each of a program's
+/// lines onto one of them, so there must be as many.
+inline constexpr int kControllerLines = 8;
+static_assert(vm::kIoCount == kControllerLines, "each line of a program is one of the controller's (settings.h)");
 
 enum class Dialect : std::uint8_t { Mark3, Mark4 };
 
@@ -53,10 +60,10 @@ struct RhinoSettings {
   int refill = 15;                      // send the next chunk when fewer steps remain (1..127)
   bool signedRemaining = false;         // "<m>?" reply: 32 + |remaining| (false) or 32 + remaining
   std::array<BitSource, 8> switches;    // home switch of motors A..H
-  std::array<BitSource, 8> inputs;      // inputs 1..8
+  std::array<BitSource, kControllerLines> inputs;  // inputs 1..kControllerLines
   bool inputsActiveLow = true;          // a 0 bit reads as input ON
-  std::array<std::string, 8> outputOn;  // command templates: {n} line, {port} all outputs 0..255
-  std::array<std::string, 8> outputOff;
+  std::array<std::string, kControllerLines> outputOn;  // command templates: {n} line, {port} all outputs 0..255
+  std::array<std::string, kControllerLines> outputOff;
   std::string homeOrder;   // letters; empty: motor-table order
   int homeSearch = 0;      // steps to look for a switch; 0: the motor's whole range
   int homeDirection = -1;  // when the tracked position is 0: -1 or +1

@@ -38,22 +38,11 @@ void Rig::build(vm::Machine& motion, CollisionMode collisions) {
 }
 
 void Rig::afterStep(std::uint32_t instruction) {
-  if (world_) {
-    lastStepGrasped_ = world_->eventCount() != graspEventsSeen_;
-    graspEventsSeen_ = world_->eventCount();
-    lastStepClosedEmpty_ = world_->emptyCloseCount() != emptyClosesSeen_;
-    emptyClosesSeen_ = world_->emptyCloseCount();
-    if (lastStepClosedEmpty_ && !firstEmptyClose_) firstEmptyClose_.emplace(instruction, world_->lastEmptyClose());
-  }
-  noteCollisions(instruction);
-}
-
-// The watch does not know which instruction moved: the run tells it after
-// each step (and after the step that failed).
-void Rig::noteCollisions(std::uint32_t instruction) {
-  if (!watch_) return;
-  for (auto it = watch_->mutableEvents().rbegin(); it != watch_->mutableEvents().rend() && it->instruction == UINT32_MAX; ++it)
-    it->instruction = instruction;
+  if (!world_) return;
+  const World::StepEffects step = world_->takeStepEffects();
+  lastStepGrasped_ = step.grasped;
+  lastStepClosedEmpty_ = step.closedEmpty;
+  if (step.closedEmpty && !firstEmptyClose_) firstEmptyClose_.emplace(instruction, world_->lastEmptyClose());
 }
 
 std::span<const CollisionEvent> Rig::collisions() const {
@@ -103,12 +92,10 @@ RigSnapshot Rig::snapshot() const {
 void Rig::restore(const RigSnapshot& s) {
   if (sim_) sim_->restore(s.machine);
   if (world_ && s.world) world_->restore(*s.world);
-  graspEventsSeen_ = world_ ? world_->eventCount() : 0;
   lastStepGrasped_ = false;
-  emptyClosesSeen_ = world_ ? world_->emptyCloseCount() : 0;
   lastStepClosedEmpty_ = false;
-  if (emptyClosesSeen_ == 0) firstEmptyClose_.reset();
-  if (watch_) watch_->mutableEvents() = s.collisions;
+  if (!world_ || world_->emptyCloseCount() == 0) firstEmptyClose_.reset();
+  if (watch_) watch_->restoreEvents(s.collisions);
 }
 
 }  // namespace rs::runtime

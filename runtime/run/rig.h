@@ -52,7 +52,7 @@ struct RigSnapshot {
 class Rig {
  public:
   /// On the simulated machine, with these motors and input stimuli. On a
-  /// workcell (may be null; its first robot is driven) the world reacts,
+  /// workcell (may be null; Workcell::drivenRobot is driven) the world reacts,
   /// and collisions are checked unless `collisions` is Off.
   Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli,
       CollisionMode collisions);
@@ -82,7 +82,7 @@ class Rig {
   std::optional<std::array<double, 3>> tcp() const;
   std::vector<ObjectView> objects(vm::Micros at = INT64_MAX) const;
   /// Input `input` turns `on` now (SimMachine::setInputNow). False on a
-  /// real machine or for an input outside 1..8.
+  /// real machine or for an input outside 1..vm::kIoCount.
   bool setInput(int input, bool on) { return sim_ && sim_->setInputNow(input, on); }
 
   /// Every collision found so far (in warn mode, every one; in error mode,
@@ -92,12 +92,14 @@ class Rig {
   /// workcell, not simulated, or CollisionMode::Off).
   const CollisionWatch* collisionWatch() const { return watch_ ? &*watch_ : nullptr; }
 
-  /// A program's step at instruction `instruction` is done: the rig notes
-  /// what it took or let go, a close on nothing, and which instruction
-  /// made the collisions just found (the watch does not know).
+  /// A program's next step runs instruction `instruction`: the collisions
+  /// its moves find are that instruction's.
+  void beforeStep(std::uint32_t instruction) {
+    if (watch_) watch_->atInstruction(instruction);
+  }
+  /// A program's step at instruction `instruction` is done: the rig keeps
+  /// what the world recorded it did (a take or let-go, a close on nothing).
   void afterStep(std::uint32_t instruction);
-  /// Collisions found by a step that failed belong to its instruction.
-  void noteCollisions(std::uint32_t instruction);
   /// The take or let-go of the step just run, or null (what a trace shows
   /// beside the step; right after a restore, null).
   const GraspEvent* graspOfLastStep() const { return lastStepGrasped_ ? &world_->lastEvent() : nullptr; }
@@ -123,9 +125,7 @@ class Rig {
   std::optional<CellMachine> cellMachine_;
   std::optional<CollisionWatch> watch_;
   vm::Machine* front_ = nullptr;  // what is driven
-  std::uint64_t graspEventsSeen_ = 0;  // the world's event count before the step being run
   bool lastStepGrasped_ = false;
-  std::uint64_t emptyClosesSeen_ = 0;
   bool lastStepClosedEmpty_ = false;
   std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose_;
 };

@@ -15,8 +15,10 @@ constexpr std::uint64_t kSlice = std::uint64_t{1} << 20;
 }  // namespace
 
 // The one observer the interpreter calls: the rig first (what the step
-// took, let go or hit), then the log, then every observer added, then the
-// pause condition of the current call. It sees the run only as anyone does.
+// took or let go), then the log, then every observer added, then the
+// pause condition of the current call; last, the rig hears which
+// instruction runs next (what its moves hit is that one's). It sees the
+// run only as anyone does.
 class Run::Observers final : public vm::StepObserver {
  public:
   Observers(const Run& run, Rig& rig, RunLogger* logger) : run_(run), rig_(rig), logger_(logger) {}
@@ -26,6 +28,7 @@ class Run::Observers final : public vm::StepObserver {
     bool pause = false;
     for (vm::StepObserver* o : added) pause |= o->afterStep(vm, index);
     if (when && (*when)(run_)) conditionMet = true, pause = true;
+    rig_.beforeStep(vm.pc());
     return pause;
   }
   // Without a world, a log, an observer or a condition, a step needs no call.
@@ -73,12 +76,12 @@ void Run::observe(vm::StepObserver& observer) { observers_->added.push_back(&obs
 
 // The machine holds one listener: the first one added takes the log's
 // place there and hands each change to the log, then to every listener.
-bool Run::onInputChange(std::function<void(vm::Micros, std::uint8_t)> listener) {
+bool Run::onInputChange(std::function<void(vm::Micros, vm::IoMask)> listener) {
   SimMachine* sim = rig_->sim();
   if (!sim) return false;
   inputListeners_.push_back(std::move(listener));
   if (inputListeners_.size() == 1)
-    sim->onInputChange([this](vm::Micros at, std::uint8_t mask) {
+    sim->onInputChange([this](vm::Micros at, vm::IoMask mask) {
       if (logger_) logger_->inputChanged(at, mask);
       for (const auto& l : inputListeners_) l(at, mask);
     });
@@ -130,6 +133,7 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
   vm::StepObserver* observer = observers_->any() ? observers_.get() : nullptr;
 
   const std::uint64_t stepEnd = until.stepEnd(interpreter_->steps());
+  rig_->beforeStep(interpreter_->pc());
 
   vm::RunOutcome outcome;
   while (true) {
@@ -150,7 +154,6 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
     }
   }
   observers_->when = nullptr;
-  if (!outcome.paused() && !outcome.ok()) rig_->noteCollisions(outcome.index);
   if (logger_) logger_->finish(outcome);
   return outcome;
 }

@@ -33,7 +33,7 @@ namespace rs::runtime {
 /// What a run is made of.
 struct RunSpec {
   std::shared_ptr<const vm::Image> image;          ///< verified (vm::verify)
-  std::shared_ptr<const workcell::Workcell> cell;  ///< may be null; its first robot runs the program
+  std::shared_ptr<const workcell::Workcell> cell;  ///< may be null; Workcell::drivenRobot runs the program
   stimuli::Stimuli stimuli;
   vm::RunLimits limits;
   bool log = false;  ///< keep a RunLog (simulated machine only)
@@ -77,7 +77,7 @@ struct RunView {
   std::vector<std::pair<std::string_view, std::int32_t>> variables;  ///< in slot order
   std::vector<std::int32_t> motors;
   std::optional<std::array<double, 3>> tcp;  ///< on a workcell: the tool centre point in the world
-  std::uint8_t inputs = 0, outputs = 0;     ///< bit 0 = line 1
+  vm::IoMask inputs = 0, outputs = 0;       ///< bit 0 = line 1
   std::vector<ObjectView> objects;
   const RunLog* events = nullptr;  ///< everything so far, when the run keeps a log
 };
@@ -116,7 +116,7 @@ class Run {
   /// a move or a DELAY (after the log, when kept, has heard of it): what a
   /// checker that keeps no log needs. False, and never called, on another
   /// machine.
-  bool onInputChange(std::function<void(vm::Micros, std::uint8_t)> listener);
+  bool onInputChange(std::function<void(vm::Micros, vm::IoMask)> listener);
 
   /// Runs until `until` says to pause, or the program ends, fails or hits
   /// a limit (or a pause is requested): the outcome's reason is Paused
@@ -163,7 +163,7 @@ class Run {
   std::unique_ptr<vm::Interpreter> interpreter_;
   std::unique_ptr<Observers> observers_;
   std::vector<std::uint8_t> breakpoints_;  // scratch for RunUntil's instructions and lines
-  std::vector<std::function<void(vm::Micros, std::uint8_t)>> inputListeners_;
+  std::vector<std::function<void(vm::Micros, vm::IoMask)>> inputListeners_;
   std::atomic<bool> pauseRequested_ = false;
   vm::StopReason cause_ = vm::StopReason::Paused;
 };

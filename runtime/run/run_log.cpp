@@ -37,13 +37,13 @@ RunLogger::RunLogger(SimMachine& machine, const World* world) : machine_(machine
   // Inputs change at stimulus times, which may fall inside a DELAY or a
   // move: the machine says when, as it applies them. Several changes at one
   // time leave one level, the last.
-  machine.onInputChange([this](vm::Micros at, std::uint8_t mask) { inputChanged(at, mask); });
+  machine.onInputChange([this](vm::Micros at, vm::IoMask mask) { inputChanged(at, mask); });
   // A straight line is many small moves within one step: each is kept as
   // the machine makes it, under the step in progress.
   machine.onMove([this] { recordMoves(static_cast<std::uint32_t>(log_.steps.size())); });
 }
 
-void RunLogger::inputChanged(vm::Micros at, std::uint8_t mask) {
+void RunLogger::inputChanged(vm::Micros at, vm::IoMask mask) {
   std::vector<InputLevel>& levels = log_.inputs;
   if (levels.back().at == at) {
     levels.back().inputs = mask;
@@ -89,7 +89,7 @@ void RunLogger::record(std::uint32_t index) {
   const vm::Micros now = machine_.now();
   log_.steps.push_back({index, lastNow_, now});
   recordMoves(step);
-  if (const std::uint8_t outputs = machine_.outputs(); outputs != lastOutputs_) {
+  if (const vm::IoMask outputs = machine_.outputs(); outputs != lastOutputs_) {
     log_.outputs.push_back({step, outputs});
     lastOutputs_ = outputs;
   }

@@ -36,7 +36,7 @@ struct MotorMove {
 /// The output mask after step `step`, when that step changed it.
 struct OutputChange {
   std::uint32_t step = 0;
-  std::uint8_t outputs = 0;
+  vm::IoMask outputs = 0;
 };
 
 /// The accumulated VIEW and WINDOW after step `step`, when it changed them.
@@ -48,7 +48,7 @@ struct CameraChange {
 /// The input mask from time `at` on (after every change due at `at`).
 struct InputLevel {
   vm::Micros at = 0;
-  std::uint8_t inputs = 0;
+  vm::IoMask inputs = 0;
 };
 
 /// Step `step` wrote `value` into variable slot `slot` (SET, ADD).
@@ -103,7 +103,7 @@ class RunLogger {
   void restore(const RunLog::Mark& mark, const SimMachine& machine);
   /// The machine's inputs became `mask` at `at` (the logger listens to the
   /// machine itself; a Run that also hands changes on calls this).
-  void inputChanged(vm::Micros at, std::uint8_t mask);
+  void inputChanged(vm::Micros at, vm::IoMask mask);
 
  private:
   void record(std::uint32_t index);
@@ -115,7 +115,7 @@ class RunLogger {
   RunLog log_;
   std::vector<MotorSegment> lastSegment_;
   std::vector<std::int32_t> lastPosition_;
-  std::uint8_t lastOutputs_ = 0;
+  vm::IoMask lastOutputs_ = 0;
   CameraTriple lastView_, lastWindow_;
   vm::Micros lastNow_ = 0;
   std::uint64_t graspsSeen_ = 0;
@@ -125,7 +125,7 @@ class RunLogger {
 struct RunState {
   std::optional<std::size_t> step;     ///< the step in progress, if any started yet
   std::vector<std::int32_t> encoders;  ///< every motor
-  std::uint8_t outputs = 0, inputs = 0;
+  vm::IoMask outputs = 0, inputs = 0;
   CameraTriple view, window;
 };
 

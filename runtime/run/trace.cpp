@@ -35,10 +35,12 @@ std::array<double, 3> roundedPoint(const std::array<double, 3>& p) {
   return r;
 }
 
-std::string lampText(std::uint8_t bits) {
-  std::string s(8, '.');
-  for (int i = 0; i < 8; ++i)
-    if (bits & (1u << i)) s[static_cast<std::size_t>(i)] = static_cast<char>('1' + i);
+// One character a line: its digit when on, '.' when off.
+std::string lampText(vm::IoMask bits) {
+  static_assert(vm::kIoCount <= 9, "a lamp is one digit");
+  std::string s(vm::kIoCount, '.');
+  for (int line = 1; line <= vm::kIoCount; ++line)
+    if (vm::lineIsOn(bits, line)) s[static_cast<std::size_t>(line - 1)] = static_cast<char>('0' + line);
   return s;
 }
 
@@ -139,7 +141,7 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   for (std::size_t i = 0; i < pos.size(); ++i) motors[std::string(1, im.motors[i].letter)] = pos[i];
   j["motors"] = motors;
   nlohmann::ordered_json outputs = nlohmann::ordered_json::array();
-  for (int i = 0; i < 8; ++i) outputs.push_back(((vm.machine().outputs() >> i) & 1) != 0);
+  for (int line = 1; line <= vm::kIoCount; ++line) outputs.push_back(vm::lineIsOn(vm.machine().outputs(), line));
   j["outputs"] = outputs;
   if (const runtime::World* world = run_.rig().world())
     if (const auto tool = world->tcp(pos)) j["tcp"] = roundedPoint(*tool);

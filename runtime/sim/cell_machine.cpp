@@ -37,9 +37,9 @@ vm::Status CellMachine::moveLockStep(std::span<const std::int32_t> targets, std:
 
 bool CellMachine::planner() {
   if (planner_) return true;
-  const workcell::Workcell& cell = world_.cell();
-  if (cell.robots.empty() || !cell.robots.front().robot.chain) return false;
-  planner_ = std::make_unique<workcell::LinePlanner>(cell.robots.front());
+  const workcell::PlacedRobot* driven = world_.cell().drivenRobot();
+  if (!driven || !driven->robot.chain) return false;
+  planner_ = std::make_unique<workcell::LinePlanner>(*driven);
   path_ = std::make_unique<workcell::LinePath>(*planner_);
   return true;
 }

@@ -48,8 +48,8 @@ class CellMachine final : public vm::Machine {
   void window(std::int32_t x, std::int32_t y, std::int32_t z) override { motion_.window(x, y, z); }
   void view(std::int32_t x, std::int32_t y, std::int32_t z) override { motion_.view(x, y, z); }
   vm::Micros now() const override { return motion_.now(); }
-  std::uint8_t outputs() const override { return motion_.outputs(); }
-  std::uint8_t inputs() const override { return motion_.inputs(); }
+  vm::IoMask outputs() const override { return motion_.outputs(); }
+  vm::IoMask inputs() const override { return motion_.inputs(); }
 
  private:
   template <typename Move>

@@ -32,11 +32,25 @@ std::string CollisionWatch::describe(const workcell::Contact& contact) const {
   return fmt::format("{} hits {}", model_.describe(contact.a), model_.describe(contact.b));
 }
 
+namespace {
+
+// Two motor vectors into a memo key: each motor's pair of values in one word.
+void appendPairs(std::vector<std::uint64_t>& key, std::span<const std::int32_t> from,
+                 std::span<const std::int32_t> to) {
+  for (std::size_t m = 0; m < from.size() && m < to.size(); ++m)
+    key.push_back(static_cast<std::uint64_t>(static_cast<std::uint32_t>(from[m])) << 32 |
+                  static_cast<std::uint32_t>(to[m]));
+}
+
+}  // namespace
+
 // Everything a move's verdict depends on, exactly: where the objects rest
-// (a number per set of places), what is carried and how, and the motors at
-// both ends.
+// (a number per set of places), what is carried and how, the motors at
+// both ends, and for a knot of a straight line the line's ends (the
+// gripper's exemptions come from them).
 void CollisionWatch::keyOf(const World& world, std::span<const std::int32_t> before,
-                           std::span<const std::int32_t> after) {
+                           std::span<const std::int32_t> after, std::span<const std::int32_t> lineFrom,
+                           std::span<const std::int32_t> lineTo) {
   if (worldRevision_ != world.revision()) {
     for (std::size_t o = 0; o < poses_.size(); ++o) poses_[o] = world.restingPose(o);
     placesId_ = memo_.placesId(poses_);
@@ -50,9 +64,8 @@ void CollisionWatch::keyOf(const World& world, std::span<const std::int32_t> bef
     const Eigen::Matrix<double, 3, 4> offset = world.heldOffset().affine();
     for (int i = 0; i < 12; ++i) key_.push_back(std::bit_cast<std::uint64_t>(offset.data()[i]));
   }
-  for (std::size_t m = 0; m < before.size() && m < after.size(); ++m)
-    key_.push_back(static_cast<std::uint64_t>(static_cast<std::uint32_t>(before[m])) << 32 |
-                   static_cast<std::uint32_t>(after[m]));
+  appendPairs(key_, before, after);
+  if (!lineFrom.empty() && !lineTo.empty()) appendPairs(key_, lineFrom, lineTo);
 }
 
 const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const World& world,
@@ -62,11 +75,7 @@ const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const Wor
   if (!model_.movable()) return nullptr;
   ++moves_;
   const bool knot = !lineFrom.empty() && !lineTo.empty();
-  keyOf(world, before, after);
-  if (knot)  // the exemptions come from the line's ends: they are part of the verdict's key
-    for (std::size_t m = 0; m < lineFrom.size() && m < lineTo.size(); ++m)
-      key_.push_back(static_cast<std::uint64_t>(static_cast<std::uint32_t>(lineFrom[m])) << 32 |
-                     static_cast<std::uint32_t>(lineTo[m]));
+  keyOf(world, before, after, lineFrom, lineTo);
   const SweepVerdict* verdict = memo_.find(key_);
   SweepVerdict fresh;
   if (verdict) {
@@ -78,7 +87,7 @@ const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const Wor
     verdict = &fresh;
   }
   if (!verdict->collides) return nullptr;
-  events_.push_back({start + verdict->after, verdict->contact, verdict->encoders});
+  events_.push_back({start + verdict->after, verdict->contact, verdict->encoders, instruction_});
   return &events_.back();
 }
 

@@ -46,13 +46,14 @@ struct CollisionEvent {
   vm::Micros at = 0;                   ///< simulated time of that check
   workcell::Contact contact;
   std::vector<std::int32_t> encoders;  ///< every motor at `at`
-  std::uint32_t instruction = UINT32_MAX;  ///< the move's instruction (0-based), once the run knows it
+  std::uint32_t instruction = 0;       ///< the move's instruction (0-based)
   bool operator==(const CollisionEvent&) const = default;
 };
 
 class CollisionWatch {
  public:
-  /// The first robot of `cell` (which must outlive the watch) moves.
+  /// The robot `cell` drives (Workcell::drivenRobot; the cell must outlive
+  /// the watch) moves.
   explicit CollisionWatch(const workcell::Workcell& cell);
 
   /// Checks the move the machine just made from `before` (its positions at
@@ -66,9 +67,14 @@ class CollisionWatch {
                               std::span<const std::int32_t> after, vm::Micros start, vm::Micros end,
                               std::span<const std::int32_t> lineFrom = {}, std::span<const std::int32_t> lineTo = {});
 
+  /// The moves checked from now on are instruction `instruction`'s (the
+  /// run says so before each step): the collisions they find carry it.
+  void atInstruction(std::uint32_t instruction) { instruction_ = instruction; }
+
   const workcell::CollisionModel& model() const { return model_; }
   std::span<const CollisionEvent> events() const { return events_; }
-  std::vector<CollisionEvent>& mutableEvents() { return events_; }
+  /// Back to the collisions of a snapshot (Rig::restore).
+  void restoreEvents(std::vector<CollisionEvent> events) { events_ = std::move(events); }
   /// How many checks (poses) the sweeps have made so far.
   std::uint64_t checks() const { return checks_; }
   /// Moves checked so far, and how many of them were answered from memory.
@@ -86,7 +92,8 @@ class CollisionWatch {
   SweepVerdict advance(const SimMachine& machine, const workcell::CollisionQuery& query,
                        std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
                        vm::Micros end);
-  void keyOf(const World& world, std::span<const std::int32_t> before, std::span<const std::int32_t> after);
+  void keyOf(const World& world, std::span<const std::int32_t> before, std::span<const std::int32_t> after,
+             std::span<const std::int32_t> lineFrom, std::span<const std::int32_t> lineTo);
   double used(const SimMachine& machine, vm::Micros t);
 
   workcell::CollisionModel model_;
@@ -94,6 +101,7 @@ class CollisionWatch {
   MotionBounds bounds_;
   std::vector<workcell::PartClearance> clearance_;  // per part: this check's gaps
   std::vector<CollisionEvent> events_;
+  std::uint32_t instruction_ = 0;  // the instruction whose moves are checked
   SweepMemo memo_;
   std::optional<std::uint64_t> worldRevision_;  // the world's revision placesId_ was taken at
   std::uint64_t placesId_ = 0;

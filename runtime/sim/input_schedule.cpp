@@ -40,7 +40,7 @@ void InputSchedule::forEachPending(Visit&& visit) const {
   }
 }
 
-std::optional<vm::Micros> InputSchedule::whenReads(int input, bool on, std::uint8_t inputs) const {
+std::optional<vm::Micros> InputSchedule::whenReads(int input, bool on, vm::IoMask inputs) const {
   bool reads = (inputs & lineBit(input)) != 0;
   std::optional<vm::Micros> when;
   forEachPending([&](const stimuli::InputChange& c, bool lastAtThisTime) {

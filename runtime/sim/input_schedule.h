@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "compiler/stimuli/stimuli.h"
+#include "vm/io_lines.h"
 
 namespace rs::runtime {
 
@@ -27,8 +28,8 @@ inline constexpr std::size_t kMaxPendingReactive = 100'000;
 
 class InputSchedule {
  public:
-  /// Starts with the timed changes (those naming an input outside 1..8
-  /// are dropped).
+  /// Starts with the timed changes (those naming an input outside
+  /// 1..vm::kIoCount are dropped).
   explicit InputSchedule(std::span<const stimuli::InputChange> timed);
 
   /// Adds a change after every pending one due at the same time. Callers
@@ -40,15 +41,15 @@ class InputSchedule {
   /// input mask `inputs` (bit 0 = input 1) and forgets it. `onChange`, when
   /// given, hears each change that altered the mask: (time, mask after).
   template <typename OnChange>
-  void applyUntil(vm::Micros t, std::uint8_t& inputs, OnChange&& onChange);
-  void applyUntil(vm::Micros t, std::uint8_t& inputs) {
-    applyUntil(t, inputs, [](vm::Micros, std::uint8_t) {});
+  void applyUntil(vm::Micros t, vm::IoMask& inputs, OnChange&& onChange);
+  void applyUntil(vm::Micros t, vm::IoMask& inputs) {
+    applyUntil(t, inputs, [](vm::Micros, vm::IoMask) {});
   }
 
   /// The earliest pending time after whose changes `input` reads `on`,
   /// starting from the mask `inputs`; nullopt when no pending change does it.
   /// A pulse that starts and ends at the same time is never seen.
-  std::optional<vm::Micros> whenReads(int input, bool on, std::uint8_t inputs) const;
+  std::optional<vm::Micros> whenReads(int input, bool on, vm::IoMask inputs) const;
 
   /// True when some pending change names `input`.
   bool hasPendingFor(int input) const;
@@ -86,25 +87,20 @@ class InputSchedule {
   std::set<Pending> reactive_;
 };
 
-/// The bit of line n (1..8) in an input or output mask; 0 outside 1..8.
-constexpr std::uint8_t lineBit(int n) {
-  return n >= 1 && n <= 8 ? static_cast<std::uint8_t>(1u << (n - 1)) : 0;
-}
-
-inline std::uint8_t withLine(std::uint8_t mask, int line, bool on) {
-  const auto bit = lineBit(line);
-  return on ? static_cast<std::uint8_t>(mask | bit) : static_cast<std::uint8_t>(mask & ~bit);
-}
+// The masks' helpers live in vm/io_lines.h; the front ends still name
+// them here (runtime::lineBit) until they move (issue 33).
+using vm::lineBit;
+using vm::withLine;
 
 template <typename OnChange>
-void InputSchedule::applyUntil(vm::Micros t, std::uint8_t& inputs, OnChange&& onChange) {
+void InputSchedule::applyUntil(vm::Micros t, vm::IoMask& inputs, OnChange&& onChange) {
   while (true) {
     const stimuli::InputChange* timed = nextTimed();
     const bool timedDue = timed && timed->at <= t;
     const bool reactiveDue = !reactive_.empty() && reactive_.begin()->at <= t;
     if (!timedDue && !reactiveDue) return;
     vm::Micros at;
-    std::uint8_t after;
+    vm::IoMask after;
     if (timedDue && (!reactiveDue || timed->at <= reactive_.begin()->at)) {
       at = timed->at, after = withLine(inputs, timed->input, timed->on);
       ++nextTimed_;

@@ -17,7 +17,6 @@ using vm::Micros;
 using vm::Status;
 
 constexpr Micros kClockLimit = std::numeric_limits<Micros>::max();
-bool validLine(int n) { return lineBit(n) != 0; }
 
 const char* onOff(bool on) { return on ? "ON" : "OFF"; }
 
@@ -56,7 +55,7 @@ void SimMachine::applyInputs() {
 }
 
 bool SimMachine::setInputNow(int input, bool on) {
-  if (lineBit(input) == 0) return false;
+  if (!vm::isIoLine(input)) return false;
   applyInputs();
   if (!schedule_.schedule({now_, input, on})) return false;
   applyInputs();
@@ -152,11 +151,10 @@ Status SimMachine::reset() {
 }
 
 Status SimMachine::setOutput(int output, bool on) {
-  if (!validLine(output))
-    return Status::fault(fmt::format("output {} does not exist (outputs are 1..8)", output));
-  const auto bit = lineBit(output);
-  if (((outputs_ & bit) != 0) == on) return Status::ok();  // no change, no rule fires
-  outputs_ = withLine(outputs_, output, on);
+  if (!vm::isIoLine(output))
+    return Status::fault(fmt::format("output {} does not exist (outputs are 1..{})", output, vm::kIoCount));
+  if (vm::lineIsOn(outputs_, output) == on) return Status::ok();  // no change, no rule fires
+  outputs_ = vm::withLine(outputs_, output, on);
   Status fired = fireRules(output, on);
   applyInputs();  // rules with no delay act at once
   return fired;
@@ -177,12 +175,12 @@ Status SimMachine::fireRules(int output, bool on) {
 
 bool SimMachine::input(int input) {
   applyInputs();
-  return (inputs_ & lineBit(input)) != 0;
+  return vm::lineIsOn(inputs_, input);
 }
 
 Status SimMachine::waitFor(int input, bool on) {
-  if (!validLine(input))
-    return Status::fault(fmt::format("input {} does not exist (inputs are 1..8)", input));
+  if (!vm::isIoLine(input))
+    return Status::fault(fmt::format("input {} does not exist (inputs are 1..{})", input, vm::kIoCount));
   if (this->input(input) == on) return Status::ok();
   const auto when = schedule_.whenReads(input, on, inputs_);
   if (!when)

@@ -66,15 +66,15 @@ class SimMachine final : public vm::Machine {
   /// Rotate the workcell by (x, y, z) degrees: adds up, kept in 0..359.
   void view(std::int32_t x, std::int32_t y, std::int32_t z) override;
 
-  /// Input `input` (1..8) turns `on` now, as a timed stimulus at the
+  /// Input `input` (1..vm::kIoCount) turns `on` now, as a timed stimulus at the
   /// present time would (after the changes already due now): what a
   /// debugger's `set input` does. Changes still to come may turn it back.
   /// False when the input is out of range or the schedule is full.
   bool setInputNow(int input, bool on);
 
   vm::Micros now() const override { return now_; }
-  std::uint8_t outputs() const override { return outputs_; }
-  std::uint8_t inputs() const override { return inputs_; }
+  vm::IoMask outputs() const override { return outputs_; }
+  vm::IoMask inputs() const override { return inputs_; }
 
   const std::vector<vm::MotorSpec>& motors() const { return motors_; }
   /// The latest move of motor `motor` (index in motor-table order).
@@ -91,7 +91,7 @@ class SimMachine final : public vm::Machine {
 
   /// Called with (time, inputs after) whenever the input mask changes, at
   /// the time of the stimulus (which may fall inside a move or a DELAY).
-  void onInputChange(std::function<void(vm::Micros, std::uint8_t)> listener) { inputListener_ = std::move(listener); }
+  void onInputChange(std::function<void(vm::Micros, vm::IoMask)> listener) { inputListener_ = std::move(listener); }
   /// Called after every move (and RESET) the machine makes, with its
   /// segments set: a straight line makes many within one instruction.
   void onMove(std::function<void()> listener) { moveListener_ = std::move(listener); }
@@ -102,7 +102,7 @@ class SimMachine final : public vm::Machine {
     std::vector<MotorSegment> segments;
     std::vector<MotorSegment> path;  ///< the line's lock-step moves, knot by knot (motors() each)
     vm::Micros now = 0;
-    std::uint8_t outputs = 0, inputs = 0;
+    vm::IoMask outputs = 0, inputs = 0;
     CameraTriple windowShift, viewRotation;
     InputSchedule::State schedule;
     bool operator==(const State&) const = default;
@@ -127,11 +127,11 @@ class SimMachine final : public vm::Machine {
   // cleared, its capacity kept, by the next line or any other move.
   std::vector<MotorSegment> path_;
   vm::Micros now_ = 0;
-  std::uint8_t outputs_ = 0;
-  std::uint8_t inputs_ = 0;
+  vm::IoMask outputs_ = 0;
+  vm::IoMask inputs_ = 0;
   CameraTriple windowShift_;
   CameraTriple viewRotation_;
-  std::function<void(vm::Micros, std::uint8_t)> inputListener_;
+  std::function<void(vm::Micros, vm::IoMask)> inputListener_;
   std::function<void()> moveListener_;
 };
 

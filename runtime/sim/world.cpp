@@ -3,7 +3,7 @@
 namespace rs::runtime {
 
 World::World(const workcell::Workcell& cell) : cell_(cell), grasping_(cell) {
-  if (!cell.robots.empty() && cell.robots.front().robot.chain) tool_.emplace(cell.robots.front());
+  if (const workcell::PlacedRobot* driven = cell.drivenRobot(); driven && driven->robot.chain) tool_.emplace(*driven);
 }
 
 void World::moved(std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
@@ -21,6 +21,7 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
     e.distance = nearest ? nearest->second : 0.0;
     e.centre = nearest ? grasping_.boxCentre(nearest->first) : Eigen::Vector3d::Zero();
     ++state_.emptyCloses;
+    step_.closedEmpty = true;
   }
   if (!change) return;
   ++revision_;
@@ -30,6 +31,7 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
                              : GraspEvent{start, o, false, grasping_.restingPose(o)};
   if (change->held) state_.heldSince = end;
   ++state_.events;
+  step_.grasped = true;
 }
 
 void World::reset(vm::Micros at) {
@@ -39,6 +41,7 @@ void World::reset(vm::Micros at) {
   if (!held) return;
   state_.last = {at, *held, false, grasping_.restingPose(*held)};
   ++state_.events;
+  step_.grasped = true;
 }
 
 Eigen::Isometry3d World::objectPose(std::size_t o, std::span<const std::int32_t> encoders, vm::Micros at) const {
@@ -79,6 +82,7 @@ World::State World::state() const {
 
 void World::restore(const State& s) {
   state_ = s;
+  step_ = {};
   grasping_.restore(s.grasp);
   ++revision_;
 }

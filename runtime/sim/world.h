@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "model/workcell/collision_model.h"
@@ -47,7 +48,8 @@ struct EmptyClose {
 
 class World {
  public:
-  /// The first robot of `cell` (which must outlive the world) runs the program.
+  /// The robot `cell` drives (Workcell::drivenRobot; the cell must outlive
+  /// the world) runs the program.
   explicit World(const workcell::Workcell& cell);
 
   /// The motors moved from `before` to `after`, from `start` to `end`.
@@ -56,8 +58,7 @@ class World {
   /// RESET at time `at`: nothing held, every object where the cell placed it.
   void reset(vm::Micros at);
 
-  /// Counts every take and let-go so far: an observer that remembers the
-  /// count sees whether the last step changed the hold.
+  /// Counts every take and let-go so far.
   std::uint64_t eventCount() const { return state_.events; }
   /// The latest take or let-go (meaningful once eventCount() > 0).
   const GraspEvent& lastEvent() const { return state_.last; }
@@ -92,6 +93,15 @@ class World {
   std::uint64_t closeCount() const { return state_.closes; }
   std::uint64_t takeCount() const { return state_.takes; }
 
+  /// What the moves since the last call did, recorded as it happened: a
+  /// take or a let-go (then lastEvent() is it), a close on nothing (then
+  /// lastEmptyClose() is it). The rig asks after every step of a program.
+  struct StepEffects {
+    bool grasped = false;
+    bool closedEmpty = false;
+  };
+  StepEffects takeStepEffects() { return std::exchange(step_, {}); }
+
   /// The world as a move from `before` to `after` sees it, for the
   /// collision check: every object's resting pose (written into `poses`,
   /// sized for the objects), what is carried — nothing during an opening
@@ -124,6 +134,7 @@ class World {
   mutable workcell::Grasping grasping_;
   mutable std::optional<workcell::ToolTracker> tool_;
   State state_;  // all but the grasp, which grasping_ keeps
+  StepEffects step_;  // since the last takeStepEffects (a restore forgets them)
   std::uint64_t revision_ = 0;
 };
 

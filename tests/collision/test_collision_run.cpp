@@ -59,3 +59,44 @@ TEST_CASE("a restored run finds the same collisions again", "[collision][runtime
   CHECK(unchecked.rig().collisionWatch() == nullptr);
   CHECK(unchecked.rig().collisions().empty());
 }
+
+TEST_CASE("a collision carries the instruction that moved, run in one go or step by step", "[collision][runtime]") {
+  // Twice round a loop: down through the floor (instruction 1, from
+  // 2.25125 s as above) and back up from below it (instruction 2, at once),
+  // with instructions that do not move in between.
+  const rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
+  const rs::vm::Image image = rendertest::compileText(
+      "        SET N 0\n"
+      "loop:   MOVETO 0 0 2000 0\n"
+      "        MOVETO 0 0 0 0\n"
+      "        ADD N 1\n"
+      "        JMPVAR N < 2 loop\n"
+      "        END\n",
+      cell);
+  rs::runtime::RunSpec spec;
+  spec.image = std::make_shared<const rs::vm::Image>(image);
+  spec.cell = std::make_shared<const rs::workcell::Workcell>(cell);
+  spec.collisions = rs::runtime::CollisionMode::Warn;
+  rs::runtime::Run whole(spec);
+  REQUIRE(whole.runToEnd().ok());
+  const auto all = found(whole);
+  REQUIRE(all.size() == 4);
+  CHECK(all[0].second == 1);
+  CHECK(all[1].second == 2);
+  CHECK(all[2].second == 1);
+  CHECK(all[3].second == 2);
+
+  rs::runtime::Run stepped(spec);
+  for (int i = 0; i < 100 && !stepped.finished(); ++i) stepped.runUntil({.moreSteps = 1});
+  REQUIRE(stepped.finished());
+  CHECK(found(stepped) == all);
+
+  // In error mode the first collision stops the run at its instruction.
+  spec.collisions = rs::runtime::CollisionMode::Error;
+  rs::runtime::Run stopped(spec);
+  const rs::vm::RunOutcome outcome = stopped.runToEnd();
+  CHECK(outcome.reason == rs::vm::StopReason::RuntimeError);
+  CHECK(outcome.index == 1);
+  REQUIRE(found(stopped).size() == 1);
+  CHECK(found(stopped)[0] == all[0]);
+}
