@@ -16,7 +16,7 @@
 #include "bench/timing.h"
 #include "compiler/program/compiler.h"
 #include "compiler/description/library.h"
-#include "tools/debug/session.h"
+#include "tools/debug/debug_session.h"
 #include "launch/program.h"
 #include "tools/teach/run_source.h"
 
@@ -59,7 +59,7 @@ double threadCpuSeconds() {
 // stopped moment (tools/teach/run_source.h: the run's view as the page's JSON),
 // at 200 moments spread over the run.
 nlohmann::json benchViewPublish(const runtime::RunSpec& spec) {
-  debug::Session session(spec);
+  debug::DebugSession session(spec);
   teach::RunSource source("", "reverse.rsp");
   std::vector<double> publish;
   for (int i = 0; i < 200; ++i) {
@@ -100,7 +100,7 @@ nlohmann::json benchDebug(const Options& options) {
     std::uint64_t steps = 0;
     std::size_t memory = 0, count = 0;
     for (int rep = 0; rep < std::max(1, options.reps / 2); ++rep) {
-      debug::Session session(spec, {k, debug::kDefaultSnapshotBudget});
+      debug::DebugSession session(spec, {k, debug::kDefaultSnapshotBudget});
       const auto start = std::chrono::steady_clock::now();
       const debug::Stop end = session.resume();
       forwardBest = std::min(forwardBest, secondsSince(start));

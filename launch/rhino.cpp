@@ -62,8 +62,8 @@ bool buildSettings(const std::string& dialectText, const std::string& file, cons
   return diags.size() == before;
 }
 
-std::unique_ptr<vm::Machine> openRhino(const SerialRequest& o, const std::vector<vm::MotorSpec>& motors,
-                                       vm::Micros maxTime, std::vector<diag::Diagnostic>& diags) {
+std::unique_ptr<rhino::RhinoMachine> openRhino(const SerialRequest& o, const std::vector<vm::MotorSpec>& motors,
+                                               vm::Micros maxTime, std::vector<diag::Diagnostic>& diags) {
   RhinoSettings settings;
   if (!buildSettings(o.dialect, o.settingsFile, o.settings, settings, diags)) return nullptr;
   std::string error;

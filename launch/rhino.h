@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
+#include "runtime/rhino/rhino_machine.h"
 #include "runtime/rhino/settings.h"
 #include "vm/image.h"
 #include "vm/machine.h"
@@ -33,8 +34,9 @@ bool buildSettings(const std::string& dialect, const std::string& file, const st
 
 /// Opens the port, installs the Ctrl-C handler (until the machine goes),
 /// makes first contact. Null, with the problems in `diags`, when anything
-/// fails. `maxTime` bounds WAITFOR.
-std::unique_ptr<vm::Machine> openRhino(const SerialRequest& request, const std::vector<vm::MotorSpec>& motors,
-                                       vm::Micros maxTime, std::vector<diag::Diagnostic>& diags);
+/// fails. `maxTime` bounds WAITFOR. The machine's own type, so that a
+/// caller that reads the controller (its log, its sent commands) needs no cast.
+std::unique_ptr<rhino::RhinoMachine> openRhino(const SerialRequest& request, const std::vector<vm::MotorSpec>& motors,
+                                               vm::Micros maxTime, std::vector<diag::Diagnostic>& diags);
 
 }  // namespace rs::launch

@@ -19,7 +19,7 @@ using Micros = std::int64_t;
 /// to a controller did (runtime/rhino's Link): one status for both, since
 /// the line's failures become the machine's. A machine call answers Ok,
 /// Deadlock or Fault; Timeout and Closed are the line's own, which
-/// rhino::Session turns into a Fault that says what the line was doing.
+/// rhino::ControllerSession turns into a Fault that says what the line was doing.
 struct Status {
   enum class Code : std::uint8_t {
     Ok,

@@ -7,6 +7,7 @@
 #include "runtime/render/page.h"
 #include "runtime/render/palette.h"
 #include "runtime/render/scene.h"
+#include "vm/io_lines.h"
 
 namespace rs::render {
 
@@ -141,6 +142,8 @@ Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const 
           {"start", start},
           {"stop", stop},
           {"moves", moves},
+          {"driven", cell.drivenRobotIndex()},  // the robot a collision's robotParts are parts of
+          {"lines", vm::kIoCount},  // inputs and outputs each: the lamps the page draws
           {"outputs", {{"step", outStep}, {"mask", outMask}}},
           {"cameras", {{"step", camStep}, {"view", camView}, {"window", camWindow}}},
           {"inputs", {{"at", inAt}, {"mask", inMask}}},

@@ -127,7 +127,8 @@ const std::string_view kScript = R"JS('use strict';
     if (!c) return;
     for (let i = 0; i < c.at.length; i++) {
       if (t < c.at[i] || t > c.end[i]) continue;
-      for (const k of c.robotParts[i]) if (model.robots[0].parts[k]) model.robots[0].parts[k].hot = true;
+      const driven = model.robots[model.run.driven];
+      for (const k of c.robotParts[i]) if (driven && driven.parts[k]) driven.parts[k].hot = true;
       for (const k of c.objects[i]) if (model.objects[k]) model.objects[k].hot = true;
     }
   }
@@ -160,7 +161,7 @@ const std::string_view kScript = R"JS('use strict';
   });
   const lamps = { inputs: [], outputs: [] };
   for (const side of ['inputs', 'outputs']) {
-    for (let i = 1; i <= 8; i++) {
+    for (let i = 1; i <= run.lines; i++) {
       const d = document.createElement('div');
       d.className = 'lamp'; d.textContent = String(i); d.title = side.slice(0, -1) + ' ' + i;
       el(side).append(d); lamps[side].push(d);

@@ -61,7 +61,7 @@ Picture makePicture(const CellPoser& poser, const Camera& camera, const Fit& fit
   for (const Line3& l : lines) picture.lines.push_back({project(l.a), project(l.b), l.color, l.part});
   const workcell::Workcell& cell = poser.cell();
   // A robot alone is its own workcell: its name needs saying only once.
-  const bool robotAlone = cell.robots.size() == 1 && cell.robots.front().robot.name == caption.title;
+  const bool robotAlone = cell.robots.size() == 1 && cell.drivenRobot()->robot.name == caption.title;
   std::string title = robotAlone ? "" : base::safeText(caption.title);
   if (caption.seconds) title += fmt::format("{}t = {:.3f} s", title.empty() ? "" : "   ", *caption.seconds);
   if (!title.empty()) picture.legend.push_back(title);

@@ -19,7 +19,7 @@ using vm::Micros;
 /// Each read or write answers the machine's own vm::Status: Ok, Timeout
 /// (nothing arrived, or could be written, in time), Closed (the other end
 /// went away: hang-up, device unplugged; the message says how) or Fault
-/// (any other system error; the message says which). Session::ioFailure
+/// (any other system error; the message says which). ControllerSession::ioFailure
 /// is the one place these become what the run reports.
 class Link {
  public:

@@ -9,7 +9,7 @@
 #include <cstdlib>
 
 #include "base/seconds.h"
-#include "runtime/rhino/session.h"
+#include "runtime/rhino/controller_session.h"
 
 namespace rs::rhino {
 namespace {
@@ -32,7 +32,7 @@ struct Track {
 
 class Mark3 final : public Controller {
  public:
-  Mark3(Session& session, const std::vector<vm::MotorSpec>& motors)
+  Mark3(ControllerSession& session, const std::vector<vm::MotorSpec>& motors)
       : s_(session), cfg_(session.settings()), motors_(motors) {}
 
   Status begin(std::span<std::int32_t>) override {
@@ -237,14 +237,14 @@ class Mark3 final : public Controller {
     return Status::ok();
   }
 
-  Session& s_;
+  ControllerSession& s_;
   const RhinoSettings& cfg_;
   std::vector<vm::MotorSpec> motors_;
 };
 
 }  // namespace
 
-std::unique_ptr<Controller> makeMark3(Session& session, const std::vector<vm::MotorSpec>& motors) {
+std::unique_ptr<Controller> makeMark3(ControllerSession& session, const std::vector<vm::MotorSpec>& motors) {
   return std::make_unique<Mark3>(session, motors);
 }
 

@@ -8,7 +8,7 @@
 #include <cstdlib>
 
 #include "base/seconds.h"
-#include "runtime/rhino/session.h"
+#include "runtime/rhino/controller_session.h"
 
 namespace rs::rhino {
 namespace {
@@ -48,7 +48,7 @@ std::string errorMeaning(long code) {
 
 class Mark4 final : public Controller {
  public:
-  Mark4(Session& session, const std::vector<vm::MotorSpec>& motors)
+  Mark4(ControllerSession& session, const std::vector<vm::MotorSpec>& motors)
       : s_(session), cfg_(session.settings()), motors_(motors) {}
 
   Status begin(std::span<std::int32_t> positions) override {
@@ -166,14 +166,14 @@ class Mark4 final : public Controller {
     return Status::ok();
   }
 
-  Session& s_;
+  ControllerSession& s_;
   const RhinoSettings& cfg_;
   std::vector<vm::MotorSpec> motors_;
 };
 
 }  // namespace
 
-std::unique_ptr<Controller> makeMark4(Session& session, const std::vector<vm::MotorSpec>& motors) {
+std::unique_ptr<Controller> makeMark4(ControllerSession& session, const std::vector<vm::MotorSpec>& motors) {
   return std::make_unique<Mark4>(session, motors);
 }
 

@@ -20,7 +20,7 @@
 
 #include "runtime/rhino/link.h"
 #include "runtime/rhino/serial_log.h"
-#include "runtime/rhino/session.h"
+#include "runtime/rhino/controller_session.h"
 #include "runtime/rhino/settings.h"
 #include "vm/image.h"
 #include "vm/machine.h"
@@ -110,7 +110,7 @@ class RhinoMachine final : public vm::Machine {
   RhinoSettings settings_;
   Clock& clock_;
   SerialLog* log_;
-  Session session_;
+  ControllerSession session_;
   std::unique_ptr<Controller> controller_;
   std::vector<std::int32_t> positions_;
   std::vector<std::int32_t> start_;

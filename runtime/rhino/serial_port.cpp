@@ -193,7 +193,7 @@ vm::Status SerialPort::write(std::span<const std::uint8_t> bytes, Micros timeout
   return vm::Status::ok();
 }
 
-// A signal ends the wait early with a timeout: the Session looks at the
+// A signal ends the wait early with a timeout: the ControllerSession looks at the
 // Ctrl-C flag and reads again with the time that is left.
 vm::Status SerialPort::read(std::span<std::uint8_t> buffer, Micros timeout, std::size_t& count) {
   count = 0;

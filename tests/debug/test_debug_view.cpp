@@ -24,7 +24,7 @@ namespace {
 using nlohmann::json;
 
 struct Viewed {
-  rs::debug::Session session{debugtest::specOnCell("gantry_pick.rsp", "gantry-cell")};
+  rs::debug::DebugSession session{debugtest::specOnCell("gantry_pick.rsp", "gantry-cell")};
   std::ostringstream out;
   rs::debug::Console console{session, nullptr, out};
   std::shared_ptr<rs::cli::DebugView> view;
@@ -165,7 +165,7 @@ TEST_CASE("debug --view: set input shows at once, the page refuses commands, the
 }
 
 TEST_CASE("debug --view needs a workcell", "[debug][view]") {
-  rs::debug::Session session(debugtest::specOf("        END\n"));
+  rs::debug::DebugSession session(debugtest::specOf("        END\n"));
   std::string error;
   CHECK_FALSE(rs::cli::DebugView::start(session, "program.rsp", error));
   CHECK(error.find("--cell") != std::string::npos);

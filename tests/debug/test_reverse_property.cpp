@@ -14,11 +14,11 @@
 
 #include "bench/generate.h"
 #include "tests/debug/debug_test_util.h"
-#include "tools/debug/session.h"
+#include "tools/debug/debug_session.h"
 
 namespace {
 
-using rs::debug::Session;
+using rs::debug::DebugSession;
 using rs::runtime::Run;
 
 int programCount() {
@@ -43,7 +43,7 @@ void checkProgram(const rs::runtime::RunSpec& spec, std::mt19937_64& rng) {
   whole.runToEnd();
   const std::uint64_t total = whole.interpreter().steps();
   const rs::vm::Micros end = whole.rig().clock();
-  Session session(spec, {1 + rng() % 200, rs::debug::kDefaultSnapshotBudget});
+  DebugSession session(spec, {1 + rng() % 200, rs::debug::kDefaultSnapshotBudget});
   for (int trial = 0; trial < 8; ++trial) {
     const std::uint64_t at = rng() % (total + 1);
     // Counted as the session shows them: inside a move after goto-time, the
@@ -105,7 +105,7 @@ TEST_CASE("set input is replayed: back before the change and forward again gives
     Run whole(spec);
     whole.runToEnd();
     const std::uint64_t total = whole.interpreter().steps();
-    Session session(spec, {1 + rng() % 50, rs::debug::kDefaultSnapshotBudget});
+    DebugSession session(spec, {1 + rng() % 50, rs::debug::kDefaultSnapshotBudget});
     // Two changes by hand at random moments, the second after going back.
     session.step(rng() % (total / 2 + 1));
     const int input = static_cast<int>(1 + rng() % 8);
@@ -136,7 +136,7 @@ TEST_CASE("snapshots over the memory budget: the interval doubles, memory stays 
       "        SET N 0\nloop:   ADD N 1\n        MOVE 10 0 0 0 0\n        MOVE -10 0 0 0 0\n"
       "        JMPVAR N < 600 loop\n        END\n");
   constexpr std::size_t kBudget = 16 * 1024;
-  Session session(spec, {8, kBudget});
+  DebugSession session(spec, {8, kBudget});
   session.resume();
   REQUIRE(session.lastStop().reason == rs::debug::StopReason::End);
   const std::uint64_t total = session.run().interpreter().steps();

@@ -1,4 +1,4 @@
-// The hooks a front end builds on: Session::onStop hears of every stop,
+// The hooks a front end builds on: DebugSession::onStop hears of every stop,
 // forwards and backwards, with the session standing at the stopped moment
 // (what a live view of the workcell draws); setInterrupt pauses a long run.
 #include <catch2/catch.hpp>
@@ -6,17 +6,17 @@
 #include <vector>
 
 #include "tests/debug/debug_test_util.h"
-#include "tools/debug/session.h"
+#include "tools/debug/debug_session.h"
 
-using rs::debug::Session;
+using rs::debug::DebugSession;
 using rs::debug::Stop;
 using rs::debug::StopReason;
 
 TEST_CASE("onStop hears every stop with the view of the stopped moment", "[debug][session]") {
-  Session session(debugtest::specOnCell("gantry_pick.rsp", "gantry-cell"));
+  DebugSession session(debugtest::specOnCell("gantry_pick.rsp", "gantry-cell"));
   std::vector<std::pair<StopReason, rs::vm::Micros>> heard;
   std::vector<bool> held;
-  session.onStop([&](const Session& s, const Stop& stop) {
+  session.onStop([&](const DebugSession& s, const Stop& stop) {
     const rs::runtime::RunView v = s.view();
     heard.emplace_back(stop.reason, v.clock);
     held.push_back(!v.objects.empty() && (v.objects[1].held || v.objects[2].held));
@@ -39,7 +39,7 @@ TEST_CASE("onStop hears every stop with the view of the stopped moment", "[debug
 }
 
 TEST_CASE("setInterrupt pauses a long run between slices", "[debug][session]") {
-  Session session(debugtest::specOf("loop:   DELAY 0.001\n        GOTO loop\n"));
+  DebugSession session(debugtest::specOf("loop:   DELAY 0.001\n        GOTO loop\n"));
   int asked = 0;
   session.setInterrupt([&] { return ++asked == 3; });
   const Stop stop = session.resume();

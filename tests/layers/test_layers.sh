@@ -27,8 +27,8 @@ expect_failure compiler/program/lexer.cpp '#include "nowhere.h"' \
   'include "nowhere.h" names no file of the tree'
 # An edge the list allows and no include uses: refused, naming the edge.
 copy
-sed -i 's|^tools/teach/tui *: .*|& vm|' "$work/tree/scripts/layers.txt"
-expect_refused "an unused edge tools/teach/tui -> vm in the list" 'layer tools/teach/tui may include vm, but no file of it does'
+sed -i 's|^tools/wire *: .*|& vm|' "$work/tree/scripts/layers.txt"
+expect_refused "an unused edge tools/wire -> vm in the list" 'layer tools/wire may include vm, but no file of it does'
 echo "layers: every planted upward include and the unused edge were caught"
 # No layer outside vm/ matches an opcode by name (docs/architecture.md).
 bash "$(dirname "$0")/test_opcode_names.sh"

@@ -1,5 +1,5 @@
 // How each way the serial line can fail reads, now that a link answers the
-// machine's own vm::Status (Timeout, Closed, Fault) and rhino::Session is
+// machine's own vm::Status (Timeout, Closed, Fault) and rhino::ControllerSession is
 // the one place it becomes the run's Fault: the messages are the ones the
 // backend always gave, word for word. The line is a real one where a real
 // one can be made to fail so: the in-process emulator (silence, hang-up)
@@ -15,7 +15,7 @@
 #include "runtime/rhino/emulator.h"
 #include "runtime/rhino/serial_log.h"
 #include "runtime/rhino/serial_port.h"
-#include "runtime/rhino/session.h"
+#include "runtime/rhino/controller_session.h"
 #include "tests/rhino/serial_support.h"
 
 namespace {
@@ -69,7 +69,7 @@ struct EmulatorSession {
   LoopbackLink link{engine, clock};
   std::ostringstream logText;
   SerialLog log{logText};
-  Session session{link, clock, settings, &log, nullptr};
+  ControllerSession session{link, clock, settings, &log, nullptr};
   explicit EmulatorSession(FaultKind fault)
       : engine([&] {
           EmulatorConfig c = testing::emulatorFor(testSettings(), testing::twoMotors());
@@ -82,7 +82,7 @@ struct EmulatorSession {
 };
 
 // Asks "I" until the line fails (the fault starts after the first command).
-Status firstFailure(Session& session) {
+Status firstFailure(ControllerSession& session) {
   for (int i = 0; i < 5; ++i) {
     std::uint8_t reply = 0;
     if (Status s = session.queryByte("I", reply); !s) return s;
@@ -118,7 +118,7 @@ TEST_CASE("serial failures: a controller that hangs up is gone, and the log says
 TEST_CASE("serial failures: a line nobody reads is blocked (a real pseudo-terminal)", "[rhino][serial]") {
   PtyPort p;
   LoggedLink logged(*p.port, p.log, p.clock);
-  Session session(logged, p.clock, p.settings, &p.log, nullptr);
+  ControllerSession session(logged, p.clock, p.settings, &p.log, nullptr);
   session.setDevice(p.pty.slave);
   // The terminal's buffers take some kilobytes; then a write waits 0.2 s and gives up.
   Status s = Status::ok();
@@ -132,7 +132,7 @@ TEST_CASE("serial failures: a line nobody reads is blocked (a real pseudo-termin
 TEST_CASE("serial failures: a port whose other end closed is gone (a real pseudo-terminal)", "[rhino][serial]") {
   PtyPort p;
   p.pty.close();
-  Session session(*p.port, p.clock, p.settings, &p.log, nullptr);
+  ControllerSession session(*p.port, p.clock, p.settings, &p.log, nullptr);
   session.setDevice(p.pty.slave);
   std::uint8_t reply = 0;
   const Status s = session.queryByte("I", reply);

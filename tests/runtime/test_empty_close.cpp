@@ -15,7 +15,7 @@
 
 #include "tests/cli/cli_support.h"
 #include "tests/debug/debug_test_util.h"
-#include "tools/debug/session.h"
+#include "tools/debug/debug_session.h"
 
 namespace {
 
@@ -181,7 +181,7 @@ TEST_CASE("the debugger's end of the run and the animation's page carry the warn
   const rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
   spec.image = std::make_shared<const rs::vm::Image>(rendertest::compile(program, cell));
   spec.cell = std::make_shared<const rs::workcell::Workcell>(cell);
-  rs::debug::Session session(std::move(spec));
+  rs::debug::DebugSession session(std::move(spec));
   const rs::debug::Stop end = session.resume();
   CHECK(end.reason == rs::debug::StopReason::End);
   CHECK(has(end.message, "the program ended; warning at line 3: the gripper closed 2 times but never took an object"));

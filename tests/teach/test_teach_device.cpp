@@ -16,7 +16,7 @@
 #include "tools/live/live_server.h"
 #include "tools/teach/page.h"
 #include "tools/teach/pendant_source.h"
-#include "tools/teach/session.h"
+#include "tools/teach/open_pendant.h"
 
 // Last: its <resolv.h> defines _res, a name Eigen's headers use.
 #include <httplib.h>

@@ -1,5 +1,5 @@
 // The terminal pendant without a terminal: keys pressed by their shared
-// key map names (tools/teach/keys.h) into a Session over a real Pendant, and the
+// key map names (tools/teach/keys.h) into a TuiSession over a real Pendant, and the
 // screen it lays out read as text. On the library's gantry cell, whose
 // numbers are simple by hand: motors X Z Y (prismatic, 0.1 per count) and
 // the gripper A (0..104); the tool centre point is at (500 + X/10,
@@ -22,7 +22,7 @@
 namespace {
 
 using rs::teach::tui::Screen;
-using rs::teach::tui::Session;
+using rs::teach::tui::TuiSession;
 
 const std::string kProgram =
     "; gantry\n"
@@ -32,8 +32,8 @@ const std::string kProgram =
     "OVER   -2800  2800  1000    0\n";
 
 struct Fixture : rs::testing::GantryPendant {
-  std::unique_ptr<Session> session;
-  Fixture() : GantryPendant("g.rsp", kProgram), session(std::make_unique<Session>(*pendant)) {}
+  std::unique_ptr<TuiSession> session;
+  Fixture() : GantryPendant("g.rsp", kProgram), session(std::make_unique<TuiSession>(*pendant)) {}
   Screen screen() const { return session->screen(80, 24); }
   // Row `r`, trailing blanks dropped.
   std::string row(int r) const {

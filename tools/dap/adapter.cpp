@@ -228,7 +228,7 @@ Adapter::Reply Adapter::launch(const Json& args) {
     const std::string first = diags.empty() ? std::string("the program could not be loaded") : diags.front().message;
     return Error{fmt::format("cannot debug {}: {}", base::safeText(program.file), first)};
   }
-  session_ = std::make_unique<debug::Session>(*spec);
+  session_ = std::make_unique<debug::DebugSession>(*spec);
   session_->setInterrupt([this] { return poll_ && poll_(); });
   if (loaded.source) source_ = loaded.source;
   std::error_code ec;

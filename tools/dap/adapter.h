@@ -1,4 +1,4 @@
-// The debug adapter: the Debug Adapter Protocol on a debug::Session, for
+// The debug adapter: the Debug Adapter Protocol on a debug::DebugSession, for
 // VS Code and any DAP client. One thread ("program"), the GOSUB stack as
 // its stack trace, five scopes (Variables, Motors with the tool centre
 // point, Inputs/Outputs, Objects, Clock), line breakpoints with variable
@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "diag/source_file.h"
-#include "tools/debug/session.h"
+#include "tools/debug/debug_session.h"
 #include "tools/wire/framing.h"
 #include "tools/wire/json.h"
 
@@ -78,13 +78,13 @@ class Adapter {
   State state_ = State::New;
   bool clientGone_ = false;
   bool disconnected_ = false;
-  std::unique_ptr<debug::Session> session_;
+  std::unique_ptr<debug::DebugSession> session_;
   std::optional<diag::SourceFile> source_;
   std::string sourcePath_;
   std::vector<int> lineBreakpoints_;  // session ids from setBreakpoints
   bool stopOnEntry_ = false;
   bool stopOnDeadlock_ = true, stopOnRuntimeError_ = true, stopOnLimit_ = true;
-  // Session ids of the breakpoints the "collision" and "warning" exception
+  // DebugSession ids of the breakpoints the "collision" and "warning" exception
   // filters made (a stop by one of them is reported as an exception).
   std::vector<int> exceptionBreakpoints_;
   std::function<bool()> poll_;

@@ -9,6 +9,7 @@
 #include "base/text.h"
 #include "tools/dap/adapter.h"
 #include "vm/disasm.h"
+#include "vm/io_lines.h"
 
 namespace rs::dap {
 
@@ -87,8 +88,9 @@ Adapter::Reply Adapter::variables(const Json& args) {
       if (v.tcp) out.push_back(variable("TCP", point(*v.tcp)));
       break;
     case kIo:
-      for (int i = 1; i <= 8; ++i) out.push_back(variable(fmt::format("in {}", i), (v.inputs >> (i - 1)) & 1 ? "on" : "off"));
-      for (int i = 1; i <= 8; ++i) out.push_back(variable(fmt::format("out {}", i), (v.outputs >> (i - 1)) & 1 ? "on" : "off"));
+      for (int i = 1; i <= vm::kIoCount; ++i) out.push_back(variable(fmt::format("in {}", i), vm::lineIsOn(v.inputs, i) ? "on" : "off"));
+      for (int i = 1; i <= vm::kIoCount; ++i)
+        out.push_back(variable(fmt::format("out {}", i), vm::lineIsOn(v.outputs, i) ? "on" : "off"));
       break;
     case kObjects:
       for (std::size_t n = 0; n < v.objects.size(); ++n) {

@@ -11,6 +11,7 @@
 #include "base/text.h"
 #include "compiler/stimuli/stimuli_text.h"
 #include "vm/disasm.h"
+#include "vm/io_lines.h"
 
 namespace rs::debug {
 
@@ -67,7 +68,7 @@ const std::vector<std::string>& Console::commandNames() {
   return names;
 }
 
-Console::Console(Session& session, const diag::SourceFile* source, std::ostream& out)
+Console::Console(DebugSession& session, const diag::SourceFile* source, std::ostream& out)
     : session_(session), source_(source), out_(out) {}
 
 namespace {
@@ -325,12 +326,12 @@ void Console::printCommand(std::string_view args) {
     if (!v.tcp) out_ << "no tool centre point: the program runs without a workcell (--cell)\n";
     else out_ << fmt::format("tcp = ({:.3f}, {:.3f}, {:.3f})\n", (*v.tcp)[0], (*v.tcp)[1], (*v.tcp)[2]);
   } else if (args == "io") {
-    const auto bits = [](std::uint8_t mask) {
+    const auto bits = [](vm::IoMask mask) {
       std::string s;
-      for (int i = 0; i < 8; ++i) s += fmt::format(" {}", (mask >> i) & 1);
+      for (int i = 1; i <= vm::kIoCount; ++i) s += vm::lineIsOn(mask, i) ? " 1" : " 0";
       return s;
     };
-    out_ << fmt::format("inputs  1-8:{}\noutputs 1-8:{}\n", bits(v.inputs), bits(v.outputs));
+    out_ << fmt::format("inputs  1-{0}:{1}\noutputs 1-{0}:{2}\n", vm::kIoCount, bits(v.inputs), bits(v.outputs));
   } else if (args == "objects") {
     if (v.objects.empty()) out_ << "no objects: the program runs without a workcell (--cell), or it has none\n";
     std::size_t number = 1;  // as the cell numbers them (and robotsim test's `object N`)
@@ -363,7 +364,8 @@ void Console::setCommand(std::string_view args) {
     return error("usage: set input N on|off");
   const auto n = count(w[1]);
   const bool on = base::sameName(w[2], "on");
-  if (!n || *n > 8) return error(fmt::format("'{}': inputs are 1..8", shown(w[1])));
+  if (!n || *n > static_cast<std::uint64_t>(vm::kIoCount))
+    return error(fmt::format("'{}': inputs are 1..{}", shown(w[1]), vm::kIoCount));
   if (auto problem = session_.setInput(static_cast<int>(*n), on)) return error(*problem);
   const runtime::RunView v = session_.view();
   out_ << fmt::format("input {} is {} from step {} (clock {} s) on\n", *n, on ? "on" : "off", v.steps,

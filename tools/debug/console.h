@@ -1,6 +1,6 @@
 // The terminal debugger's commands, text in and text out: one line of a
 // gdb-style command (`break 12 if N = 3`, `reverse-step`, `print motors`)
-// is carried out on a Session and answered on a stream. The prompt, line
+// is carried out on a DebugSession and answered on a stream. The prompt, line
 // editing and history are the front end's (tools/cli/); a test or a handout
 // drives this directly with the same lines. A bad command gets one clear
 // message and changes nothing: the session goes on.
@@ -11,7 +11,7 @@
 #include <string_view>
 
 #include "diag/source_file.h"
-#include "tools/debug/session.h"
+#include "tools/debug/debug_session.h"
 
 namespace rs::debug {
 
@@ -19,7 +19,7 @@ class Console {
  public:
   /// `source` is the program's text for `list` and the line shown at each
   /// stop (may be null: an image without its source).
-  Console(Session& session, const diag::SourceFile* source, std::ostream& out);
+  Console(DebugSession& session, const diag::SourceFile* source, std::ostream& out);
 
   /// Carries out one command line; false after `quit`.
   bool execute(std::string_view line);
@@ -46,7 +46,7 @@ class Console {
   std::string sourceLine(std::uint32_t line) const;
   std::string frameText(std::uint32_t line, std::uint32_t instruction) const;
 
-  Session& session_;
+  DebugSession& session_;
   const diag::SourceFile* source_;
   std::ostream& out_;
 };

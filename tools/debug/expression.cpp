@@ -9,6 +9,7 @@
 #include "base/text.h"
 #include "runtime/sim/input_schedule.h"
 #include "compiler/stimuli/stimuli_text.h"
+#include "vm/io_lines.h"
 
 namespace rs::debug {
 
@@ -64,8 +65,8 @@ diag::Result<Expression> parseExpression(const vm::Image& image, std::string_vie
     const std::string_view rest = trimmed(text.substr(word.size()));
     if (rest.size() == text.size() - word.size() && !rest.empty() && rest.front() != ' ') continue;  // "input"
     const auto n = integer(rest);
-    if (!n || *n < 1 || *n > 8)
-      return diag::refusal(fmt::format("'{}': {} takes a line number 1..8", shown(text), word));
+    if (!n || *n < 1 || *n > vm::kIoCount)
+      return diag::refusal(fmt::format("'{}': {} takes a line number 1..{}", shown(text), word, vm::kIoCount));
     return Expression{kind, static_cast<std::uint32_t>(*n), fmt::format("{} {}", word, *n)};
   }
   return diag::refusal(

@@ -18,7 +18,7 @@ namespace rs::debug {
 struct Expression {
   enum class Kind : std::uint8_t { Variable, Motor, Input, Output, Clock };
   Kind kind = Kind::Variable;
-  std::uint32_t index = 0;  ///< variable slot, motor index, or line 1..8
+  std::uint32_t index = 0;  ///< variable slot, motor index, or line 1..vm::kIoCount
   std::string name;         ///< as the program spells it ("N", "A", "in 3", "clock")
 };
 
@@ -30,7 +30,7 @@ diag::Result<Expression> parseExpression(const vm::Image& image, std::string_vie
 /// The value at the run's moment (inputs and outputs 0 or 1).
 std::int64_t valueOf(const runtime::Run& run, const Expression& e);
 /// The same in a view of the run (the session's moment: inside a move
-/// after goto-time, Session::view()).
+/// after goto-time, DebugSession::view()).
 std::int64_t valueIn(const runtime::RunView& view, const Expression& e);
 
 /// EXPRESSION OP NUMBER, with OP one of = == <> != < <= > >=; `on` and `off`

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "vm/io_lines.h"
+
 namespace rs::debug {
 
 namespace {
@@ -175,7 +177,7 @@ std::optional<std::uint64_t> Timeline::lastMatch(const std::function<void(const 
 }
 
 bool Timeline::setInput(int input, bool on) {
-  if (run_.finished() || input < 1 || input > 8) return false;
+  if (run_.finished() || !vm::isIoLine(input)) return false;
   const std::uint64_t steps = run_.interpreter().steps();
   applyDueEdits();
   // That future is gone: later edits and snapshots with it.

@@ -38,7 +38,8 @@ std::shared_ptr<const CellContext> CellCache::get(const std::string& name) {
     if (std::optional<workcell::Workcell> cell = library.workcell(name); cell && !cell->robots.empty()) {
       context->cell = std::make_shared<const workcell::Workcell>(std::move(*cell));
       context->target = launch::cellTarget(*context->cell);
-      if (context->cell->robots.front().robot.chain) context->robot = context->cell->robots.front();
+      const workcell::PlacedRobot& driven = *context->cell->drivenRobot();  // the cell has a robot
+      if (driven.robot.chain) context->robot = driven;
     } else {
       context->problem = library.diagnostics().empty() ? std::string("the workcell has no robot")
                                                        : library.diagnostics().front().message;

@@ -41,8 +41,8 @@ Json capabilities(Encoding enc) {
 
 }  // namespace
 
-Server::Server(Send send, std::ostream& log)
-    : send_(std::move(send)), log_(log), runs_([this](const RunJob& job, const CheckedRun& run) { runMade(job, run); }) {
+Server::Server(Send send, std::ostream& log, std::string version)
+    : send_(std::move(send)), log_(log), version_(std::move(version)), runs_([this](const RunJob& job, const CheckedRun& run) { runMade(job, run); }) {
   registerHandlers();
 }
 
@@ -175,7 +175,9 @@ Reply Server::initialize(const Field& params) {
   workspace_.setRoot(root);
   workspace_.setSettings(std::move(settings));
   state_ = State::Running;
-  return Json{{"capabilities", capabilities(encoding_)}, {"serverInfo", {{"name", "robotsim"}, {"version", "0.1.0"}}}};
+  Json serverInfo{{"name", "robotsim"}};
+  if (!version_.empty()) serverInfo["version"] = version_;
+  return Json{{"capabilities", capabilities(encoding_)}, {"serverInfo", std::move(serverInfo)}};
 }
 
 void Server::didOpen(const Field& params, bool invalidUtf8) {
@@ -389,13 +391,13 @@ void Server::registerHandlers() {
   d.onRequest("workspace/symbol", [this](const Field& params) { return workspaceSymbols(params); });
 }
 
-int serve(Input& in, Output& out, std::ostream& log) {
+int serve(Input& in, Output& out, std::ostream& log, std::string version) {
   Server server(
       [&out](const Json& message) {
         const std::string body = dumpJson(message);  // header and body apart: a large answer is not copied again
         return out.write(frameHeader(body.size())) && out.write(body);
       },
-      log);
+      log, std::move(version));
   FrameParser parser;
   std::vector<char> buffer(std::size_t{1} << 16);
   bool eof = false;

@@ -40,7 +40,9 @@ class Server {
   /// is called from the server's thread and the run worker's, never from
   /// both at once.
   using Send = std::function<bool(const Json&)>;
-  Server(Send send, std::ostream& log);
+  /// `version` is what initialize reports as serverInfo.version (the
+  /// build's, as `robotsim --version` prints it); empty leaves it out.
+  Server(Send send, std::ostream& log, std::string version = {});
 
   /// Handles a batch of frames: cancellations first, then each message in order.
   void receive(const std::vector<Frame>& frames);
@@ -87,6 +89,7 @@ class Server {
   bool snippets_ = false;
   bool refreshInlayHints_ = false;  // the client takes workspace/inlayHint/refresh
   std::uint64_t refreshes_ = 0;     // ids of those requests
+  std::string version_;             // serverInfo.version; empty: not reported
   std::set<std::string> pending_;   // URIs whose diagnostics are due
   bool currentInvalidUtf8_ = false;
   std::mutex sendMutex_;  // one message at a time, and a run's check-then-publish
@@ -95,6 +98,6 @@ class Server {
 
 /// Runs a server on a byte stream until `exit` or the end of input; the
 /// process's exit code.
-int serve(Input& in, Output& out, std::ostream& log);
+int serve(Input& in, Output& out, std::ostream& log, std::string version = {});
 
 }  // namespace rs::lsp

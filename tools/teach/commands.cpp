@@ -1,4 +1,5 @@
 #include "tools/teach/commands.h"
+#include "vm/io_lines.h"
 
 #include <fmt/format.h>
 
@@ -102,13 +103,13 @@ Outcome applyCommand(Pendant& p, const Json& r) {
   }
   if (*op == "input") {
     const auto line = intArg(r, "line");
-    if (!line) return bad("input needs \"line\", 1..8");
+    if (!line) return bad(fmt::format("input needs \"line\", 1..{}", vm::kIoCount));
     return p.toggleInput(*line);
   }
   if (*op == "output") {
     const auto line = intArg(r, "line");
     const auto on = boolArg(r, "on");
-    if (!line || !on) return bad("output needs \"line\", 1..8, and \"on\", true or false");
+    if (!line || !on) return bad(fmt::format("output needs \"line\", 1..{}, and \"on\", true or false", vm::kIoCount));
     return p.setOutput(*line, *on);
   }
   if (*op == "reset") return p.resetCell();

@@ -88,7 +88,7 @@ const std::string_view kScript = R"JS('use strict';
       motorRows.push({ tr, value: tr.children[1], slider });
     });
     for (const side of ['inputs', 'outputs']) {
-      for (let i = 1; i <= 8; i++) {
+      for (let i = 1; i <= st[side].length; i++) {  // the state lists every line
         const d = document.createElement('div');
         d.className = 'lamp'; d.textContent = String(i); d.title = side.slice(0, -1) + ' ' + i;
         d.dataset.line = String(i);

@@ -7,7 +7,6 @@
 
 #include "base/number_text.h"
 #include "base/seconds.h"
-#include "runtime/rhino/rhino_machine.h"
 #include "vm/motor_range.h"
 
 namespace rs::teach {
@@ -26,16 +25,16 @@ Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm:
     : cell_(std::move(cell)), motors_(std::move(motors)), file_(std::move(file)) {
   rig_ = std::make_unique<runtime::Rig>(cell_, motors_, stimuli::Stimuli{}, runtime::CollisionMode::Error);
   start_ = rig_->snapshot();
-  if (cell_->robots.front().robot.chain) cartesian_.emplace(cell_->robots.front());
+  if (cell_->drivenRobot()->robot.chain) cartesian_.emplace(*cell_->drivenRobot());
   message_ = fmt::format("teaching {} on {}", file_.path(), cell_->name);
 }
 
 Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, ProgramFile file,
-                 std::unique_ptr<vm::Machine> device, std::string deviceName)
+                 std::unique_ptr<rhino::RhinoMachine> device, std::string deviceName)
     : cell_(std::move(cell)), motors_(std::move(motors)), file_(std::move(file)), device_(std::move(deviceName)) {
-  rhino_ = dynamic_cast<rhino::RhinoMachine*>(device.get());
+  rhino_ = device.get();
   rig_ = std::make_unique<runtime::Rig>(cell_, std::move(device));
-  if (cell_->robots.front().robot.chain) cartesian_.emplace(cell_->robots.front());
+  if (cell_->drivenRobot()->robot.chain) cartesian_.emplace(*cell_->drivenRobot());
   message_ = fmt::format("teaching {} on {} with the robot on {}", file_.path(), cell_->name, device_);
 }
 
@@ -132,7 +131,7 @@ workcell::JogPose Pendant::jogStart() const {
 
 Outcome Pendant::jogCartesian(workcell::JogFrame frame, std::string_view axis, double amount) {
   if (!cartesian_)
-    return refuse(fmt::format("robot {} has no kinematic chain: only joint jogs", cell_->robots.front().robot.name));
+    return refuse(fmt::format("robot {} has no kinematic chain: only joint jogs", cell_->drivenRobot()->robot.name));
   if (!std::isfinite(amount)) return refuse("a jog's amount is a finite number", true);
   const workcell::JogPose from = jogStart();
   const workcell::JogResult r = cartesian_->jog(from, frame, axis, amount);
@@ -175,7 +174,7 @@ std::optional<std::size_t> Pendant::gripperMotor() const {
 
 Outcome Pendant::gripper(bool close) {
   const std::optional<std::size_t> g = gripperMotor();
-  if (!g) return refuse(fmt::format("robot {} has no gripper", cell_->robots.front().robot.name));
+  if (!g) return refuse(fmt::format("robot {} has no gripper", cell_->drivenRobot()->robot.name));
   Outcome o = setMotor(*g, close ? motors_[*g].max : motors_[*g].min);
   if (o.ok) {
     const std::optional<std::size_t> held = rig_->world() ? rig_->world()->held() : std::nullopt;

@@ -21,6 +21,7 @@
 
 #include "model/workcell/cartesian_jog.h"
 #include "model/workcell/model.h"
+#include "runtime/rhino/rhino_machine.h"
 #include "runtime/run/rig.h"
 #include "tools/teach/pendant_state.h"
 #include "tools/teach/program_file.h"
@@ -45,7 +46,7 @@ class Pendant {
   Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, ProgramFile file);
   /// On a device (launch::openRhino): it moves with every jog.
   Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, ProgramFile file,
-          std::unique_ptr<vm::Machine> device, std::string deviceName);
+          std::unique_ptr<rhino::RhinoMachine> device, std::string deviceName);
   ~Pendant();
   Pendant(const Pendant&) = delete;
   Pendant& operator=(const Pendant&) = delete;

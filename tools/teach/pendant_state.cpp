@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "runtime/render/animation.h"
+#include "vm/io_lines.h"
 
 namespace rs::teach {
 
@@ -12,9 +13,9 @@ using Json = nlohmann::ordered_json;
 
 using render::frameJson;
 
-Json lines(std::uint8_t mask) {
+Json lines(vm::IoMask mask) {
   Json a = Json::array();
-  for (int i = 0; i < 8; ++i) a.push_back(((mask >> i) & 1) != 0);
+  for (int line = 1; line <= vm::kIoCount; ++line) a.push_back(vm::lineIsOn(mask, line));
   return a;
 }
 

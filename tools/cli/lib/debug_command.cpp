@@ -13,7 +13,7 @@
 #include "tools/cli/lib/open_browser.h"
 #include "tools/cli/lib/options.h"
 #include "tools/debug/console.h"
-#include "tools/debug/session.h"
+#include "tools/debug/debug_session.h"
 
 namespace rs::cli {
 
@@ -89,7 +89,7 @@ int debugCommand(const DebugOptions& o, std::istream& in, std::ostream& out, std
   }
 
   DebugTerminal terminal;  // Ctrl-C pauses a run from here on, also in batch mode
-  debug::Session session(*spec);
+  debug::DebugSession session(*spec);
   session.setInterrupt([&terminal] { return terminal.takeInterrupt(); });
   debug::Console console(session, program.source ? &*program.source : nullptr, out);
   out << fmt::format("robotsim debug: {} ({} instructions); help lists the commands\n",

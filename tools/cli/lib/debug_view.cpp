@@ -13,7 +13,7 @@ DebugView::DebugView(const workcell::Workcell& cell, const std::string& program)
 
 DebugView::~DebugView() { server_.stop(); }
 
-std::shared_ptr<DebugView> DebugView::start(debug::Session& session, const std::string& program, std::string& error) {
+std::shared_ptr<DebugView> DebugView::start(debug::DebugSession& session, const std::string& program, std::string& error) {
   const workcell::Workcell* cell = session.run().rig().cell();
   if (!cell) {
     error = "--view draws the workcell: give one with --cell CELL (or a '; cell:' line in the program)";
@@ -30,13 +30,13 @@ std::shared_ptr<DebugView> DebugView::start(debug::Session& session, const std::
   const bool listening = view->server_.start("127.0.0.1", 0, error);
   pthread_sigmask(SIG_SETMASK, &previous, nullptr);
   if (!listening) return nullptr;
-  session.onStop([weak = std::weak_ptr<DebugView>(view)](const debug::Session& s, const debug::Stop& stop) {
+  session.onStop([weak = std::weak_ptr<DebugView>(view)](const debug::DebugSession& s, const debug::Stop& stop) {
     if (const std::shared_ptr<DebugView> v = weak.lock()) v->publish(s, stop);
   });
   return view;
 }
 
-void DebugView::publish(const debug::Session& session, const debug::Stop& stop) {
+void DebugView::publish(const debug::DebugSession& session, const debug::Stop& stop) {
   source_.publish(session.run(), stop.message.empty() ? std::string(vm::debuggerName(stop.reason)) : stop.message);
 }
 

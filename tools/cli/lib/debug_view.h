@@ -1,6 +1,6 @@
 // robotsim debug --view: the live workcell page follows the debugger. The
 // live-view server (tools/live/live_server.h) serves a
-// read-only source (tools/teach/run_source.h) that one Session observer feeds at
+// read-only source (tools/teach/run_source.h) that one DebugSession observer feeds at
 // every stop, forwards or backwards (reverse steps, goto-time), and after
 // `set input`: the page draws the robot, the objects, the inputs and
 // outputs and the clock of the stopped moment, and refuses every command
@@ -11,7 +11,7 @@
 #include <memory>
 #include <string>
 
-#include "tools/debug/session.h"
+#include "tools/debug/debug_session.h"
 #include "tools/live/live_server.h"
 #include "tools/teach/run_source.h"
 
@@ -23,7 +23,7 @@ class DebugView {
   /// (the session goes on on this thread only; a stop after the view is
   /// gone is not published). Null, with `error` set, when the run has no
   /// workcell or no port is free.
-  static std::shared_ptr<DebugView> start(debug::Session& session, const std::string& program, std::string& error);
+  static std::shared_ptr<DebugView> start(debug::DebugSession& session, const std::string& program, std::string& error);
   ~DebugView();
   DebugView(const DebugView&) = delete;
   DebugView& operator=(const DebugView&) = delete;
@@ -33,7 +33,7 @@ class DebugView {
 
  private:
   DebugView(const workcell::Workcell& cell, const std::string& program);
-  void publish(const debug::Session& session, const debug::Stop& stop);
+  void publish(const debug::DebugSession& session, const debug::Stop& stop);
 
   teach::RunSource source_;
   live::LiveServer server_;

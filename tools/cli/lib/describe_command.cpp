@@ -13,7 +13,8 @@
 #include "model/kinematics/forward_kinematics.h"
 #include "model/workcell/reach.h"
 #include "model/workcell/support.h"
-#include "tools/cli/lib/app.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "vm/io_lines.h"
 
 namespace rs::cli {
 
@@ -23,9 +24,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// The controller's input and output lines (the paper's eight of each);
-// descriptions do not name them.
-constexpr int kInputs = 8, kOutputs = 8;
+// The controller's input and output lines (vm/io_lines.h: the paper's
+// eight of each); descriptions do not name them.
+constexpr int kInputs = vm::kIoCount, kOutputs = vm::kIoCount;
 
 struct MotorRow {
   char letter;
@@ -203,7 +204,7 @@ int describeCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     out << fmt::format("workcell {}: world coordinates, y up, lengths in the cell's unit\n", base::safeText(cell->name));
   else
     out << fmt::format("robot {} alone: its design coordinates (those its description is drawn in), y up\n",
-                       base::safeText(cell->robots.front().robot.name));
+                       base::safeText(cell->drivenRobot()->robot.name));
   for (std::size_t i = 0; i < robots.size(); ++i) {
     out << '\n';
     robotText(robots[i], i == 0, *cell, out);

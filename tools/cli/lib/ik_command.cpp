@@ -89,11 +89,11 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
   const std::optional<workcell::Workcell> cell = library.workcell(o.target);
   for (const diag::Diagnostic& d : library.diagnostics()) err << diag::render(d, library.source(d.file));
   if (!cell || library.hasErrors()) return kExitBadInput;
-  if (cell->robots.empty() || !cell->robots.front().robot.chain) {
+  if (!cell->drivenRobot() || !cell->drivenRobot()->robot.chain) {
     err << fmt::format("robotsim: error: {} has no robot with a kinematic chain\n", base::safeText(o.target));
     return kExitBadInput;
   }
-  const workcell::PlacedRobot& placed = cell->robots.front();
+  const workcell::PlacedRobot& placed = *cell->drivenRobot();
   const workcell::PoseSolver solver(placed);
   workcell::PoseRequest request;
   request.robotFrame = o.frame == "robot";

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include "tools/cli/lib/build_info.h"
 #include "tools/lsp/server.h"
 #include "tools/lsp/transport.h"
 
@@ -22,7 +23,7 @@ void addLspOptions(CLI::App* cmd, LspOptions& o) {
 int lspCommand(const LspOptions&, std::ostream& err) {
   lsp::FdInput in(STDIN_FILENO);
   lsp::FdOutput out(STDOUT_FILENO);
-  return lsp::serve(in, out, err);
+  return lsp::serve(in, out, err, std::string(buildInfo().version));
 }
 
 }  // namespace rs::cli

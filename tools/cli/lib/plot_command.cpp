@@ -17,6 +17,7 @@
 #include "tools/cli/lib/options.h"
 #include "tools/cli/lib/render_commands.h"
 #include "tools/cli/lib/run_warnings.h"
+#include "vm/io_lines.h"
 
 namespace rs::cli {
 
@@ -181,13 +182,14 @@ void addPlotOptions(CLI::App* cmd, PlotOptions& o) {
   cmd->add_option("--width", o.width, "Chart width in pixels (default 1200; the height follows from the lanes)")
       ->transform(numberArg(kChartWidthRule));
   addRunOptions(cmd, o.run, std::to_string(kAnimateMaxSteps));
-  cmd->footer(
+  cmd->footer(fmt::format(
       "Lanes, top to bottom: each motor of the arm, the tool centre point's x, y and z, the gripper (shaded while "
-      "it holds an object), inputs 1-8, outputs 1-8, and the source lines that ran (a tick where each starts). "
+      "it holds an object), inputs 1-{0}, outputs 1-{0}, and the source lines that ran (a tick where each starts). "
       "Collisions (red), warnings (yellow) and a failed stop (magenta) are marked across the lanes and listed "
       "under the time axis. The CSV has one row a sample: time_s, each motor by its letter (encoder counts), "
-      "tcp_x, tcp_y, tcp_z, held (the object the gripper holds, 0 none), in1..in8, out1..out8 (1 on), line. "
-      "Exit 0 when the run ended well, 1 when it failed (the chart is written either way), 2 on bad input.");
+      "tcp_x, tcp_y, tcp_z, held (the object the gripper holds, 0 none), in1..in{0}, out1..out{0} (1 on), line. "
+      "Exit 0 when the run ended well, 1 when it failed (the chart is written either way), 2 on bad input.",
+      vm::kIoCount));
 }
 
 }  // namespace rs::cli

@@ -161,8 +161,8 @@ bool endsWithHtml(std::string_view path) {
 }  // namespace
 
 std::optional<Eigen::Vector3d> zoomPivot(const workcell::Workcell& cell) {
-  if (cell.robots.empty()) return std::nullopt;
-  const workcell::PlacedRobot& r = cell.robots[0];
+  if (!cell.drivenRobot()) return std::nullopt;
+  const workcell::PlacedRobot& r = *cell.drivenRobot();
   Eigen::AlignedBox3d box;
   const auto add = [&](const workcell::Shape& shape) {
     for (const workcell::Segment& s : shape.segments) box.extend(r.F_world_design * s.a), box.extend(r.F_world_design * s.b);

@@ -10,6 +10,7 @@
 #include "base/text.h"
 #include "tools/cli/lib/profile_report.h"
 #include "runtime/run/trace.h"
+#include "vm/io_lines.h"
 #include "vm/stop_reason.h"
 #include "runtime/run/empty_close.h"
 
@@ -19,10 +20,10 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::string lampList(std::uint8_t bits) {
+std::string lampList(vm::IoMask bits) {
   std::string s;
-  for (int i = 0; i < 8; ++i)
-    if (bits & (1u << i)) s += fmt::format("{}{}", s.empty() ? "" : ", ", i + 1);
+  for (int line = 1; line <= vm::kIoCount; ++line)
+    if (vm::lineIsOn(bits, line)) s += fmt::format("{}{}", s.empty() ? "" : ", ", line);
   return s.empty() ? "none" : s;
 }
 
@@ -131,8 +132,8 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
       for (const rhino::FaultState::Motor& mo : r.fault->motors)
         if (mo.uncertain())
           uncertain.push_back({{"motor", std::string(1, mo.letter)}, {"confirmed", mo.confirmed}, {"commanded", mo.commanded}});
-      for (int i = 0; i < 8; ++i)
-        if ((r.fault->outputsOn >> i) & 1) on.push_back(i + 1);
+      for (int line = 1; line <= vm::kIoCount; ++line)
+        if (vm::lineIsOn(r.fault->outputsOn, line)) on.push_back(line);
       j["fault"] = {{"message", r.fault->failure}, {"uncertain_motors", uncertain}, {"outputs_left_on", on}};
     }
     if (const auto tcp = r.run->rig().tcp()) j["tcp"] = runtime::roundedPoint(*tcp);
@@ -154,9 +155,9 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
       j["collisions"] = collisions;
     }
     Json outputs = Json::array(), inputs = Json::array();
-    for (int i = 0; i < 8; ++i) {
-      outputs.push_back(((m.outputs() >> i) & 1) != 0);
-      inputs.push_back(((m.inputs() >> i) & 1) != 0);
+    for (int line = 1; line <= vm::kIoCount; ++line) {
+      outputs.push_back(vm::lineIsOn(m.outputs(), line));
+      inputs.push_back(vm::lineIsOn(m.inputs(), line));
     }
     j["outputs"] = outputs;
     j["inputs"] = inputs;

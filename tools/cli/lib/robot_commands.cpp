@@ -12,7 +12,7 @@
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/forward_kinematics.h"
 #include "model/kinematics/joint_values.h"
-#include "tools/cli/lib/app.h"
+#include "tools/cli/lib/exit_codes.h"
 #include "tools/cli/lib/number_args.h"
 
 namespace rs::cli {
@@ -204,7 +204,7 @@ int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     err << fmt::format("robotsim: error: workcell {} places no robot\n", base::safeText(cell->name));
     return kExitBadInput;
   }
-  const workcell::PlacedRobot& placed = cell->robots.front();
+  const workcell::PlacedRobot& placed = *cell->drivenRobot();
   const workcell::Robot& robot = placed.robot;
   const kinematics::ChainModel chain = robot.chain->placedAt(placed.F_world_design * robot.frames.front());
   std::vector<double> values;

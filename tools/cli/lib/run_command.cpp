@@ -64,11 +64,11 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
   const rhino::RhinoMachine* controller = nullptr;  // owned by the run
   if (o.serial.active()) {
     std::vector<diag::Diagnostic> problems;
-    std::unique_ptr<vm::Machine> rhino =
+    std::unique_ptr<rhino::RhinoMachine> rhino =
         launch::openRhino(o.serial, spec->image->motors, spec->limits.maxTime, problems);
     launch::printDiagnostics(err, problems, program);
     if (!rhino) return kExitRunFailed;
-    controller = dynamic_cast<const rhino::RhinoMachine*>(rhino.get());
+    controller = rhino.get();
     run = std::make_unique<runtime::Run>(*spec, std::move(rhino));
   } else {
     runtime::RunSpec simulated = *spec;

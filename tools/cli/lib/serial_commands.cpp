@@ -16,7 +16,7 @@
 #include "base/file_io.h"
 #include "diag/read_input.h"
 #include "base/text.h"
-#include "tools/cli/lib/app.h"
+#include "tools/cli/lib/exit_codes.h"
 #include "tools/cli/lib/number_args.h"
 #include "compiler/description/library.h"
 #include "launch/program.h"

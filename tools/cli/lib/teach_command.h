@@ -5,7 +5,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "tools/teach/session.h"
+#include "tools/teach/open_pendant.h"
 
 namespace CLI {
 class App;

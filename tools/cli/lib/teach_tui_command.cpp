@@ -1,7 +1,7 @@
 #include "tools/cli/lib/teach_tui_command.h"
 
 #include "tools/cli/lib/exit_codes.h"
-#include "tools/teach/session.h"
+#include "tools/teach/open_pendant.h"
 #include "tools/teach/tui/tui_curses.h"
 
 namespace rs::cli {

@@ -8,6 +8,7 @@
 
 #include "base/ascii.h"
 #include "tools/lsp/features/features.h"
+#include "vm/io_lines.h"
 
 namespace rs::lsp {
 
@@ -56,7 +57,9 @@ std::vector<std::string> variableNames(const ProgramIndex& index) {
 // "MOVE ${1:0} ${2:0} ...": the instruction with a placeholder per operand.
 std::string snippet(const ProgramContext& p, const vm::OpInfo& op) {
   const ProgramIndex& index = p.analysis.index();
-  const std::string io = "|1,2,3,4,5,6,7,8|";
+  std::string io = "|1";  // a snippet's choice of every line number
+  for (int line = 2; line <= vm::kIoCount; ++line) io += fmt::format(",{}", line);
+  io += "|";
   const std::string labels = choices(labelNames(index), ":label");
   std::string s(op.name);
   switch (op.format) {

@@ -183,7 +183,7 @@ attr_t attributeOf(Paint paint) {
   return A_NORMAL;
 }
 
-void draw(const Session& session) {
+void draw(const TuiSession& session) {
   int rows = 0, cols = 0;
   getmaxyx(stdscr, rows, cols);
   const Screen screen = session.screen(cols, rows);
@@ -214,7 +214,7 @@ TuiEnd runTerminalPendant(Pendant& pendant) {
   Handlers handlers;
   Curses curses(end.error);
   if (!curses.ok()) return end;
-  Session session(pendant);
+  TuiSession session(pendant);
   draw(session);
   std::uint64_t drawn = pendant.revision();
   for (;;) {

@@ -1,5 +1,5 @@
 // `robotsim teach PROG --cell CELL --tui`: the terminal pendant on the
-// controlling terminal, with ncurses. It draws the Session's screen and
+// controlling terminal, with ncurses. It draws the TuiSession's screen and
 // turns ncurses key codes into the shared key map's names.
 //
 // The terminal is put back as it was on every way out: `q`; SIGINT

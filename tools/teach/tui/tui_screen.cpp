@@ -7,6 +7,7 @@
 
 #include "base/number_text.h"
 #include "tools/teach/keys.h"
+#include "vm/io_lines.h"
 
 namespace rs::teach::tui {
 
@@ -125,13 +126,13 @@ int worldPanel(Canvas& c, const PendantState& s, int row, int bottom) {
     row += s.approach ? 4 : 3;
   }
   if (row + 3 <= bottom) {
-    c.put(row, 10, "1 2 3 4 5 6 7 8");
-    const std::pair<const char*, std::uint8_t> lines[] = {{"INPUTS", s.inputs}, {"OUTPUTS", s.outputs}};
+    for (int line = 1; line <= vm::kIoCount; ++line) c.put(row, 10 + 2 * (line - 1), std::to_string(line % 10));
+    const std::pair<const char*, vm::IoMask> lines[] = {{"INPUTS", s.inputs}, {"OUTPUTS", s.outputs}};
     for (int k = 0; k < 2; ++k) {
       c.put(row + 1 + k, 1, lines[k].first);
       c.mark(row + 1 + k, 1, static_cast<int>(std::string_view(lines[k].first).size()), Paint::Title);
-      for (int i = 0; i < 8; ++i) {
-        const bool on = ((lines[k].second >> i) & 1) != 0;
+      for (int i = 0; i < vm::kIoCount; ++i) {
+        const bool on = vm::lineIsOn(lines[k].second, i + 1);
         c.put(row + 1 + k, 10 + 2 * i, on ? "#" : ".");
         if (on) c.mark(row + 1 + k, 10 + 2 * i, 1, Paint::Lamp);
       }
@@ -217,8 +218,8 @@ void helpPanel(Canvas& c, int top, int bottom, int cols) {
       helps.push_back(help);
     }
   }
-  entries.emplace_back("i 1..8", "toggle an input (simulation)");
-  entries.emplace_back("u 1..8", "switch an output");
+  entries.emplace_back(fmt::format("i 1..{}", vm::kIoCount), "toggle an input (simulation)");
+  entries.emplace_back(fmt::format("u 1..{}", vm::kIoCount), "switch an output");
   entries.emplace_back("l", "read the program file again (after an edit elsewhere)");
   // One column when it fits (21 rows at 24 rows: the help takes the rule
   // and message rows too), else two.

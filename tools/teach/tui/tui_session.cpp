@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
+#include <string_view>
 
 #include "tools/teach/keys.h"
+#include "vm/io_lines.h"
 
 namespace rs::teach::tui {
 
@@ -16,9 +19,23 @@ constexpr std::size_t kMaxName = 40;
 
 bool isYes(std::string_view key) { return key == "y" || key == "Y"; }
 
+// Lines 1..9 answer with their one key; more lines would be typed, then Enter.
+constexpr bool kLineIsOneKey = vm::kIoCount < 10;
+
+// An input or output line typed as its number, 1..vm::kIoCount.
+std::optional<int> ioLine(std::string_view text) {
+  int line = 0;
+  if (text.empty() || text.size() > 2) return std::nullopt;
+  for (const char c : text) {
+    if (c < '0' || c > '9') return std::nullopt;
+    line = line * 10 + (c - '0');
+  }
+  return vm::isIoLine(line) ? std::optional<int>(line) : std::nullopt;
+}
+
 }  // namespace
 
-void Session::clampSelection() {
+void TuiSession::clampSelection() {
   const PendantState s = pendant_.state();
   if (!s.motors.empty()) selection_.motor = std::min(selection_.motor, s.motors.size() - 1);
   const std::vector<PendantJogAxis>& axes = selection_.mode == JogMode::Tool ? s.toolAxes : s.worldAxes;
@@ -27,30 +44,30 @@ void Session::clampSelection() {
   else selection_.point = 0;
 }
 
-std::optional<std::string> Session::selectedPoint() {
+std::optional<std::string> TuiSession::selectedPoint() {
   const PendantState s = pendant_.state();
   if (selection_.point < s.points.size()) return s.points[selection_.point].name;
   note_ = "there are no points yet: t teaches one";
   return std::nullopt;
 }
 
-void Session::ask(Asking what, std::string question) {
+void TuiSession::ask(Asking what, std::string question) {
   asking_ = what;
   prompt_ = {true, std::move(question), ""};
 }
 
-bool Session::press(std::string_view key) {
+bool TuiSession::press(std::string_view key) {
   if (key == "Resize") return true;  // the terminal changed size: only a redraw, whatever is asked
   if (asking_ != Asking::Nothing) return answer(key);
   note_.clear();
   // The key list covers the panels: any other key hides it, then acts.
   if (selection_.help && key != "?") selection_.help = false;
   if (key == "i") {
-    ask(Asking::InputLine, "toggle input (1..8): ");
+    ask(Asking::InputLine, fmt::format("toggle input (1..{}): ", vm::kIoCount));
     return true;
   }
   if (key == "u") {
-    ask(Asking::OutputLine, "switch output (1..8): ");
+    ask(Asking::OutputLine, fmt::format("switch output (1..{}): ", vm::kIoCount));
     return true;
   }
   if (key == "l") {  // the page's "reload file" button
@@ -131,7 +148,7 @@ bool Session::press(std::string_view key) {
   return true;
 }
 
-bool Session::answer(std::string_view key) {
+bool TuiSession::answer(std::string_view key) {
   const Asking what = asking_;
   const bool confirm = what == Asking::ConfirmReteach || what == Asking::ConfirmDelete || what == Asking::ConfirmReset;
   if (key == "Escape" || key == "\x03" || key == "\x07" || (confirm && !isYes(key))) {
@@ -140,7 +157,7 @@ bool Session::answer(std::string_view key) {
     note_ = "cancelled";
     return true;
   }
-  if (confirm || ((what == Asking::InputLine || what == Asking::OutputLine) && key.size() == 1)) {
+  if (confirm || (kLineIsOneKey && (what == Asking::InputLine || what == Asking::OutputLine) && key.size() == 1)) {
     asking_ = Asking::Nothing;
     prompt_ = {};
     finish(what, std::string(key));
@@ -159,7 +176,7 @@ bool Session::answer(std::string_view key) {
   return true;
 }
 
-void Session::finish(Asking what, const std::string& text) {
+void TuiSession::finish(Asking what, const std::string& text) {
   note_.clear();
   switch (what) {
     case Asking::TeachName:
@@ -181,15 +198,14 @@ void Session::finish(Asking what, const std::string& text) {
       break;
     case Asking::ConfirmReset: pendant_.resetCell(); break;
     case Asking::InputLine:
-      if (text.size() == 1 && text[0] >= '1' && text[0] <= '8') pendant_.toggleInput(text[0] - '0');
-      else note_ = fmt::format("inputs are 1..8, not {}", text);
+      if (const std::optional<int> line = ioLine(text)) pendant_.toggleInput(*line);
+      else note_ = fmt::format("inputs are 1..{}, not {}", vm::kIoCount, text);
       break;
     case Asking::OutputLine:
-      if (text.size() == 1 && text[0] >= '1' && text[0] <= '8') {
-        const int line = text[0] - '0';
-        pendant_.setOutput(line, ((pendant_.state().outputs >> (line - 1)) & 1) == 0);
+      if (const std::optional<int> line = ioLine(text)) {
+        pendant_.setOutput(*line, !vm::lineIsOn(pendant_.state().outputs, *line));
       } else {
-        note_ = fmt::format("outputs are 1..8, not {}", text);
+        note_ = fmt::format("outputs are 1..{}, not {}", vm::kIoCount, text);
       }
       break;
     case Asking::Nothing: break;
@@ -197,7 +213,7 @@ void Session::finish(Asking what, const std::string& text) {
   clampSelection();
 }
 
-Screen Session::screen(int cols, int rows) const {
+Screen TuiSession::screen(int cols, int rows) const {
   return layoutScreen(pendant_.state(), selection_, prompt_, note_, cols, rows);
 }
 

@@ -6,8 +6,8 @@
 // into names and draws layoutScreen(session); a test can press keys by
 // name and read the screen.
 //
-// Besides the shared map, the terminal has `i` then 1..8 to toggle an
-// input and `u` then 1..8 to switch an output (the page does both by a
+// Besides the shared map, the terminal has `i` then a line number (1..vm::kIoCount) to toggle an
+// input and `u` then one to switch an output (the page does both by a
 // click), `l` to read the program file
 // again (the page's "reload file" button), and in a question Enter answers,
 // Escape (or Ctrl-C's ETX, or Ctrl-G) cancels, Backspace deletes.
@@ -22,10 +22,10 @@
 
 namespace rs::teach::tui {
 
-class Session {
+class TuiSession {
  public:
   /// `pendant` must outlive the session.
-  explicit Session(Pendant& pendant) : pendant_(pendant) {}
+  explicit TuiSession(Pendant& pendant) : pendant_(pendant) {}
 
   /// One key, by its shared-map name; a printable character is its own
   /// name, and "Enter", "Escape", "Backspace" serve the questions;

@@ -21,10 +21,10 @@
 
 namespace rs::rhino {
 
-class Session {
+class ControllerSession {
  public:
   /// `log` and `interrupt` may be null. All must outlive the session.
-  Session(Link& link, Clock& clock, const RhinoSettings& settings, SerialLog* log, const std::atomic<bool>* interrupt)
+  ControllerSession(Link& link, Clock& clock, const RhinoSettings& settings, SerialLog* log, const std::atomic<bool>* interrupt)
       : link_(link), clock_(clock), settings_(settings), log_(log), interrupt_(interrupt) {}
 
   /// Sends `command` and the line end; refuses once Ctrl-C was pressed.
@@ -96,8 +96,8 @@ class Controller {
   virtual std::string refuse(std::span<const std::int32_t> targets) const = 0;
 };
 
-std::unique_ptr<Controller> makeMark3(Session& session, const std::vector<vm::MotorSpec>& motors);
-std::unique_ptr<Controller> makeMark4(Session& session, const std::vector<vm::MotorSpec>& motors);
+std::unique_ptr<Controller> makeMark3(ControllerSession& session, const std::vector<vm::MotorSpec>& motors);
+std::unique_ptr<Controller> makeMark4(ControllerSession& session, const std::vector<vm::MotorSpec>& motors);
 
 /// The commands that stop every motor, one per line: Mark III "<m>X" for
 /// each motor, Mark IV "MA". The one list for stopAll() and for the bytes a
@@ -105,7 +105,7 @@ std::unique_ptr<Controller> makeMark4(Session& session, const std::vector<vm::Mo
 std::vector<std::string> stopCommands(Dialect d, const std::vector<vm::MotorSpec>& motors);
 /// Sends every stop command, even after Ctrl-C and after a failed one;
 /// returns what was done, for the error message (Controller::stopAll).
-std::string sendStop(Session& session, const std::vector<std::string>& commands);
+std::string sendStop(ControllerSession& session, const std::vector<std::string>& commands);
 /// "" when every motor is one a Rhino controller has (A..H), else which one
 /// is not ("motor Z: a Mark III controller has motors A..H only").
 std::string unsupportedMotor(Dialect d, const std::vector<vm::MotorSpec>& motors);

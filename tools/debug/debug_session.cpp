@@ -1,4 +1,4 @@
-#include "tools/debug/session.h"
+#include "tools/debug/debug_session.h"
 
 #include <fmt/format.h>
 
@@ -8,11 +8,12 @@
 #include "base/seconds.h"
 #include "base/text.h"
 #include "runtime/run/empty_close.h"
+#include "vm/io_lines.h"
 
 namespace rs::debug {
 
 // Where a forward run is going, besides the breakpoints.
-struct Session::Target {
+struct DebugSession::Target {
   std::uint64_t steps = UINT64_MAX;
   vm::Micros time = INT64_MAX;
   std::function<bool(const runtime::Run&)> done;  // the command's own end (next, finish)
@@ -23,9 +24,9 @@ struct Session::Target {
 // changes: the clock (time breakpoints), the collisions found and the
 // closes on nothing so far, each `when` breakpoint's truth, each watched
 // value.
-class Session::Probe {
+class DebugSession::Probe {
  public:
-  explicit Probe(const Session& s) : s_(s) {}
+  explicit Probe(const DebugSession& s) : s_(s) {}
   void capture(const runtime::Run& r) {
     clock = r.rig().clock();
     collisions = r.rig().collisions().size();
@@ -43,21 +44,21 @@ class Session::Probe {
   std::vector<std::int64_t> values;
 
  private:
-  const Session& s_;
+  const DebugSession& s_;
 };
 
-Session::Session(runtime::RunSpec spec, SessionOptions options) {
+DebugSession::DebugSession(runtime::RunSpec spec, SessionOptions options) {
   spec.log = false;
   run_ = std::make_unique<runtime::Run>(std::move(spec));
   timeline_ = std::make_unique<Timeline>(*run_, options.snapshotInterval, options.snapshotBudget);
   stop_ = {StopReason::Entry, "at the start of the run", {}};
 }
 
-Session::~Session() = default;
+DebugSession::~DebugSession() = default;
 
 // --- breakpoints -------------------------------------------------------------
 
-std::uint32_t Session::lineWithCode(std::uint32_t line) const {
+std::uint32_t DebugSession::lineWithCode(std::uint32_t line) const {
   std::uint32_t best = 0;
   for (std::uint32_t l : run_->spec().image->lines)
     if (l >= line && (best == 0 || l < best)) best = l;
@@ -76,7 +77,7 @@ std::vector<std::uint32_t> lineStarts(const vm::Image& image, std::uint32_t line
 
 }  // namespace
 
-diag::Result<int> Session::breakAtLine(std::uint32_t line) {
+diag::Result<int> DebugSession::breakAtLine(std::uint32_t line) {
   const std::uint32_t at = lineWithCode(line);
   if (at == 0) return diag::refusal(fmt::format("no instruction on line {} or after it", line));
   Breakpoint b;
@@ -88,7 +89,7 @@ diag::Result<int> Session::breakAtLine(std::uint32_t line) {
   return breakpoints_.back().id;
 }
 
-diag::Result<int> Session::breakAtLabel(std::string_view label) {
+diag::Result<int> DebugSession::breakAtLabel(std::string_view label) {
   const std::optional<std::uint32_t> at = runtime::labelInstruction(*run_->spec().image, label);
   if (!at) return diag::refusal(fmt::format("the program has no label '{}'", base::safeText(label.substr(0, 60))));
   Breakpoint b;
@@ -103,7 +104,7 @@ diag::Result<int> Session::breakAtLabel(std::string_view label) {
   return breakpoints_.back().id;
 }
 
-diag::Result<int> Session::breakAtInstruction(std::uint32_t index) {
+diag::Result<int> DebugSession::breakAtInstruction(std::uint32_t index) {
   const std::size_t size = run_->spec().image->code.size();
   if (index >= size)
     return diag::refusal(fmt::format("no instruction @{}: the program has @1 to @{}", index + 1, size));
@@ -117,7 +118,7 @@ diag::Result<int> Session::breakAtInstruction(std::uint32_t index) {
   return breakpoints_.back().id;
 }
 
-diag::Result<int> Session::breakAtTime(vm::Micros t) {
+diag::Result<int> DebugSession::breakAtTime(vm::Micros t) {
   if (t < 0) return diag::refusal("a time is not negative");
   Breakpoint b;
   b.id = nextId();
@@ -127,7 +128,7 @@ diag::Result<int> Session::breakAtTime(vm::Micros t) {
   return breakpoints_.back().id;
 }
 
-int Session::breakOnCollision() {
+int DebugSession::breakOnCollision() {
   Breakpoint b;
   b.id = nextId();
   b.kind = Breakpoint::Kind::Collision;
@@ -135,7 +136,7 @@ int Session::breakOnCollision() {
   return breakpoints_.back().id;
 }
 
-int Session::breakOnWarning() {
+int DebugSession::breakOnWarning() {
   Breakpoint b;
   b.id = nextId();
   b.kind = Breakpoint::Kind::Warning;
@@ -143,7 +144,7 @@ int Session::breakOnWarning() {
   return breakpoints_.back().id;
 }
 
-int Session::breakWhen(Condition condition) {
+int DebugSession::breakWhen(Condition condition) {
   Breakpoint b;
   b.id = nextId();
   b.kind = Breakpoint::Kind::When;
@@ -152,13 +153,13 @@ int Session::breakWhen(Condition condition) {
   return breakpoints_.back().id;
 }
 
-Breakpoint* Session::find(int id) {
+Breakpoint* DebugSession::find(int id) {
   for (Breakpoint& b : breakpoints_)
     if (b.id == id) return &b;
   return nullptr;
 }
 
-bool Session::qualify(int id, std::optional<Condition> condition, std::optional<HitCondition> hits) {
+bool DebugSession::qualify(int id, std::optional<Condition> condition, std::optional<HitCondition> hits) {
   Breakpoint* b = find(id);
   if (!b) return false;
   b->condition = std::move(condition);
@@ -166,12 +167,12 @@ bool Session::qualify(int id, std::optional<Condition> condition, std::optional<
   return true;
 }
 
-int Session::watch(Expression what) {
+int DebugSession::watch(Expression what) {
   watches_.push_back({nextId(), std::move(what)});
   return watches_.back().id;
 }
 
-bool Session::remove(int id) {
+bool DebugSession::remove(int id) {
   const auto bp = std::find_if(breakpoints_.begin(), breakpoints_.end(), [id](const Breakpoint& b) { return b.id == id; });
   if (bp != breakpoints_.end()) {
     breakpoints_.erase(bp);
@@ -183,7 +184,7 @@ bool Session::remove(int id) {
   return true;
 }
 
-void Session::removeAll() {
+void DebugSession::removeAll() {
   breakpoints_.clear();
   watches_.clear();
 }
@@ -193,7 +194,7 @@ void Session::removeAll() {
 // Does a breakpoint or watch stop the run at this moment (`before` holds
 // the moment before)? `counting`: going forwards, so hits count and hit
 // conditions apply. The ids that stop it, and for watches what changed.
-bool Session::stopsHere(const runtime::Run& r, const Probe& before, bool counting, std::vector<int>& ids,
+bool DebugSession::stopsHere(const runtime::Run& r, const Probe& before, bool counting, std::vector<int>& ids,
                         std::vector<std::string>& notes) {
   const std::uint32_t pc = r.interpreter().pc();
   for (std::size_t i = 0; i < breakpoints_.size(); ++i) {
@@ -232,7 +233,7 @@ bool Session::stopsHere(const runtime::Run& r, const Probe& before, bool countin
   return !ids.empty();
 }
 
-runtime::RunView Session::view() const {
+runtime::RunView DebugSession::view() const {
   runtime::RunView v = run_->view();
   if (!moment_ || v.finished) return v;
   const runtime::Rig& rig = run_->rig();
@@ -246,12 +247,12 @@ runtime::RunView Session::view() const {
   return v;
 }
 
-std::uint64_t Session::emptyCloses() const {
+std::uint64_t DebugSession::emptyCloses() const {
   const runtime::World* world = run_->rig().world();
   return world ? world->emptyCloseCount() : 0;
 }
 
-std::string Session::emptyCloseNote(std::uint64_t emptyClosesBefore) const {
+std::string DebugSession::emptyCloseNote(std::uint64_t emptyClosesBefore) const {
   const std::uint64_t now = emptyCloses();
   if (now <= emptyClosesBefore || !run_->rig().cell()) return {};
   const std::string nearest = runtime::emptyCloseText(run_->rig().world()->lastEmptyClose(), *run_->rig().cell());
@@ -259,7 +260,7 @@ std::string Session::emptyCloseNote(std::uint64_t emptyClosesBefore) const {
   return fmt::format("the gripper closed on nothing{}{}", times, nearest.empty() ? "" : ": " + nearest);
 }
 
-bool Session::standAtCollision(const std::vector<int>& ids) {
+bool DebugSession::standAtCollision(const std::vector<int>& ids) {
   const bool collisionStop = std::any_of(ids.begin(), ids.end(), [this](int id) {
     const Breakpoint* b = find(id);
     return b && b->kind == Breakpoint::Kind::Collision;
@@ -271,7 +272,7 @@ bool Session::standAtCollision(const std::vector<int>& ids) {
   return true;
 }
 
-void Session::standWithin(vm::Micros t) {
+void DebugSession::standWithin(vm::Micros t) {
   const std::uint64_t steps = run_->interpreter().steps();
   if (steps == 0 || run_->finished() || run_->rig().clock() <= t) return;
   timeline_->goToStep(steps - 1);
@@ -281,7 +282,7 @@ void Session::standWithin(vm::Micros t) {
   moment_ = Moment{t, underWay};
 }
 
-std::string Session::collisionText() const {
+std::string DebugSession::collisionText() const {
   const auto events = run_->rig().collisions();
   const runtime::CollisionWatch* watch = run_->rig().collisionWatch();
   if (events.empty() || !watch) return {};
@@ -289,7 +290,7 @@ std::string Session::collisionText() const {
   return fmt::format("{} at {} s", watch->describe(e.contact), base::formatSeconds(e.at));
 }
 
-Stop Session::finishedStop(bool already) const {
+Stop DebugSession::finishedStop(bool already) const {
   const vm::RunOutcome outcome = *run_->outcome();
   Stop s;
   s.reason = outcome.reason;
@@ -302,13 +303,13 @@ Stop Session::finishedStop(bool already) const {
   return s;
 }
 
-Stop Session::stopped(Stop stop) {
+Stop DebugSession::stopped(Stop stop) {
   stop_ = stop;
   for (const StopObserver& o : observers_) o(*this, stop_);
   return stop_;
 }
 
-Stop Session::forward(const Target& target) {
+Stop DebugSession::forward(const Target& target) {
   const bool within = moment_.has_value();
   moment_.reset();
   if (run_->finished()) return stopped(finishedStop(true));
@@ -371,7 +372,7 @@ Stop Session::forward(const Target& target) {
   return stopped(std::move(s));
 }
 
-Stop Session::step(std::uint64_t n) {
+Stop DebugSession::step(std::uint64_t n) {
   Target t;
   // Inside an instruction under way, it is not done yet: it is the first.
   const std::uint64_t now = run_->interpreter().steps() - (moment_ ? 1 : 0);
@@ -379,14 +380,14 @@ Stop Session::step(std::uint64_t n) {
   return forward(t);
 }
 
-Stop Session::next() {
+Stop DebugSession::next() {
   Target t;
   const std::size_t depth = run_->interpreter().callDepth();
   t.done = [depth](const runtime::Run& r) { return r.interpreter().callDepth() <= depth; };
   return forward(t);
 }
 
-diag::Result<Stop> Session::finish() {
+diag::Result<Stop> DebugSession::finish() {
   const std::size_t depth = run_->interpreter().callDepth();
   if (depth == 0 || run_->finished()) return diag::refusal("not in a subroutine: the call stack is empty");
   Target t;
@@ -394,9 +395,9 @@ diag::Result<Stop> Session::finish() {
   return forward(t);
 }
 
-Stop Session::resume() { return forward({}); }
+Stop DebugSession::resume() { return forward({}); }
 
-Stop Session::until(vm::Micros time) {
+Stop DebugSession::until(vm::Micros time) {
   // Inside an instruction under way that ends after `time`: that moment.
   if (moment_ && time >= moment_->time && time < run_->rig().clock()) return gotoTime(time);
   Target t;
@@ -408,7 +409,7 @@ Stop Session::until(vm::Micros time) {
 
 // --- backwards ------------------------------------------------------------------
 
-Stop Session::reverseStep(std::uint64_t n) {
+Stop DebugSession::reverseStep(std::uint64_t n) {
   moment_.reset();
   const std::uint64_t now = run_->interpreter().steps();
   if (now == 0) return stopped({StopReason::Start, "already at the start of the run", {}});
@@ -417,7 +418,7 @@ Stop Session::reverseStep(std::uint64_t n) {
   return stopped({StopReason::Step, "step back done", {}});
 }
 
-Stop Session::reverseNext() {
+Stop DebugSession::reverseNext() {
   moment_.reset();
   if (run_->interpreter().steps() == 0) return stopped({StopReason::Start, "already at the start of the run", {}});
   const std::size_t depth = run_->interpreter().callDepth();
@@ -430,7 +431,7 @@ Stop Session::reverseNext() {
   return stopped({StopReason::Step, "step back done", {}});
 }
 
-Stop Session::reverseContinue() {
+Stop DebugSession::reverseContinue() {
   moment_.reset();
   if (run_->interpreter().steps() == 0) return stopped({StopReason::Start, "already at the start of the run", {}});
   Probe probe(*this);
@@ -462,7 +463,7 @@ Stop Session::reverseContinue() {
   return stopped(std::move(s));
 }
 
-Stop Session::gotoTime(vm::Micros t) {
+Stop DebugSession::gotoTime(vm::Micros t) {
   moment_.reset();
   timeline_->goToTime(t);
   if (run_->finished() && run_->rig().clock() <= t) {
@@ -480,9 +481,9 @@ Stop Session::gotoTime(vm::Micros t) {
                   {}});
 }
 
-std::optional<std::string> Session::setInput(int input, bool on) {
+std::optional<std::string> DebugSession::setInput(int input, bool on) {
   if (run_->finished()) return std::string("the run is over: go back first (reverse-step, goto-time)");
-  if (input < 1 || input > 8) return fmt::format("there is no input {}: inputs are 1..8", input);
+  if (!vm::isIoLine(input)) return fmt::format("there is no input {}: inputs are 1..{}", input, vm::kIoCount);
   if (!timeline_->setInput(input, on)) return std::string("too many input changes are waiting");
   // A change applies between instructions: inside one under way, from its end.
   moment_.reset();

@@ -1,4 +1,4 @@
-#include "runtime/rhino/session.h"
+#include "runtime/rhino/controller_session.h"
 
 #include <fmt/format.h>
 
@@ -17,18 +17,18 @@ std::span<const std::uint8_t> bytesOf(std::string_view s) {
 
 }  // namespace
 
-vm::Status Session::checkInterrupt() const {
+vm::Status ControllerSession::checkInterrupt() const {
   if (interrupt_ && interrupt_->load()) return vm::Status::fault("interrupted (Ctrl-C)");
   return vm::Status::ok();
 }
 
-void Session::note(std::string_view text) {
+void ControllerSession::note(std::string_view text) {
   if (log_) log_->event(clock_.now(), text);
 }
 
 // A read that timed out because Ctrl-C cut the wait short is an
 // interruption, not a silent controller.
-vm::Status Session::ioFailure(const vm::Status& r, std::string_view command, bool writing) {
+vm::Status ControllerSession::ioFailure(const vm::Status& r, std::string_view command, bool writing) {
   std::string message;
   silent_ = false;
   switch (r.code) {
@@ -57,7 +57,7 @@ vm::Status Session::ioFailure(const vm::Status& r, std::string_view command, boo
   return vm::Status::fault(std::move(message));
 }
 
-vm::Status Session::garbage(std::string_view command, std::span<const std::uint8_t> reply, std::string_view expected) {
+vm::Status ControllerSession::garbage(std::string_view command, std::span<const std::uint8_t> reply, std::string_view expected) {
   std::string message = reply.empty()
                             ? fmt::format("garbage from the controller: \"{}\" was answered out of range (expected {})",
                                           escapeBytes(bytesOf(command)), expected)
@@ -67,7 +67,7 @@ vm::Status Session::garbage(std::string_view command, std::span<const std::uint8
   return vm::Status::fault(std::move(message));
 }
 
-vm::Status Session::send(std::string_view command) {
+vm::Status ControllerSession::send(std::string_view command) {
   if (auto s = checkInterrupt(); !s) return s;
   const vm::Status st = sendUnchecked(command);
   if (!st)
@@ -77,14 +77,14 @@ vm::Status Session::send(std::string_view command) {
 
 // A link read ends early with nothing when a signal cuts its wait short
 // (SerialPort): read again with the time left, unless it was Ctrl-C.
-vm::Status Session::readBy(std::span<std::uint8_t> buffer, Micros deadline, std::size_t& count) {
+vm::Status ControllerSession::readBy(std::span<std::uint8_t> buffer, Micros deadline, std::size_t& count) {
   for (;;) {
     vm::Status r = link_.read(buffer, std::max<Micros>(deadline - clock_.now(), 0), count);
     if (r.code != vm::Status::Code::Timeout || clock_.now() >= deadline || !checkInterrupt()) return r;
   }
 }
 
-vm::Status Session::sendUnchecked(std::string_view command) {
+vm::Status ControllerSession::sendUnchecked(std::string_view command) {
   std::string line(command);
   line += lineEndBytes(settings_.lineEnd);
   const vm::Status r = link_.write(bytesOf(line), settings_.timeout);
@@ -93,7 +93,7 @@ vm::Status Session::sendUnchecked(std::string_view command) {
 
 // Anything waiting before a question is an answer to nothing: the line is
 // out of step with the controller. Mark IV may trail a LF after its CR.
-vm::Status Session::expectQuiet(std::string_view command) {
+vm::Status ControllerSession::expectQuiet(std::string_view command) {
   std::vector<std::uint8_t> got = std::exchange(unread_, {});
   std::array<std::uint8_t, 64> buf{};
   std::size_t count = 0;
@@ -109,7 +109,7 @@ vm::Status Session::expectQuiet(std::string_view command) {
   return vm::Status::fault(std::move(message));
 }
 
-vm::Status Session::queryByte(std::string_view command, std::uint8_t& reply) {
+vm::Status ControllerSession::queryByte(std::string_view command, std::uint8_t& reply) {
   if (auto s = expectQuiet(command); !s) return s;
   if (auto s = send(command); !s) return s;
   std::array<std::uint8_t, 1> buf{};
@@ -120,7 +120,7 @@ vm::Status Session::queryByte(std::string_view command, std::uint8_t& reply) {
   return vm::Status::ok();
 }
 
-vm::Status Session::queryNumber(std::string_view command, long& value) {
+vm::Status ControllerSession::queryNumber(std::string_view command, long& value) {
   if (auto s = expectQuiet(command); !s) return s;
   if (auto s = send(command); !s) return s;
   const Micros deadline = clock_.now() + settings_.timeout;
@@ -158,7 +158,7 @@ vm::Status Session::queryNumber(std::string_view command, long& value) {
   return vm::Status::ok();
 }
 
-vm::Status Session::pause(Micros duration) {
+vm::Status ControllerSession::pause(Micros duration) {
   const Micros end = clock_.now() + std::max<Micros>(duration, 0);
   for (;;) {
     if (auto s = checkInterrupt(); !s) return s;
@@ -175,7 +175,7 @@ std::vector<std::string> stopCommands(Dialect d, const std::vector<vm::MotorSpec
   return commands;
 }
 
-std::string sendStop(Session& session, const std::vector<std::string>& commands) {
+std::string sendStop(ControllerSession& session, const std::vector<std::string>& commands) {
   std::string list;
   std::string failure;
   for (const std::string& c : commands) {

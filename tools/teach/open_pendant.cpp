@@ -1,4 +1,4 @@
-#include "tools/teach/session.h"
+#include "tools/teach/open_pendant.h"
 
 #include "base/file_io.h"
 #include "launch/cell_directive.h"
@@ -46,7 +46,7 @@ OpenedPendant openPendant(const TeachRequest& request) {
   }
   std::vector<vm::MotorSpec> motors = launch::cellTarget(*cell).motors;
   if (request.serial.active()) {
-    std::unique_ptr<vm::Machine> device =
+    std::unique_ptr<rhino::RhinoMachine> device =
         launch::openRhino(request.serial, motors, vm::Micros{3600} * 1'000'000, out.diagnostics);
     if (!device) return out;
     out.pendant = std::make_unique<Pendant>(cell, std::move(motors), std::move(*file), std::move(device),

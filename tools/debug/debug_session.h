@@ -6,7 +6,7 @@
 // Every stop leaves the session inspectable, also a deadlock, a runtime
 // error or a limit: the run can still be looked at and stepped back.
 //
-//   Session s(spec);
+//   DebugSession s(spec);
 //   s.addBreakpoint(lineBreakpoint);
 //   Stop stop = s.resume();
 //   runtime::RunView v = s.view();
@@ -50,12 +50,12 @@ struct SessionOptions {
   std::size_t snapshotBudget = kDefaultSnapshotBudget;
 };
 
-class Session {
+class DebugSession {
  public:
   /// The run of `spec` on the simulated machine, standing before its first
   /// instruction.
-  explicit Session(runtime::RunSpec spec, SessionOptions options = {});
-  ~Session();
+  explicit DebugSession(runtime::RunSpec spec, SessionOptions options = {});
+  ~DebugSession();
 
   const runtime::Run& run() const { return *run_; }
   /// The run at the session's moment. After goto-time into the middle of
@@ -122,13 +122,13 @@ class Session {
   /// Input `input` turns `on` from now on (inside an instruction under way,
   /// from its end, where the session then stands); reverse execution
   /// replays it.
-  /// An error message when the run is over or the input is not 1..8.
+  /// An error message when the run is over or the input is not 1..vm::kIoCount.
   std::optional<std::string> setInput(int input, bool on);
 
   /// Called after every command that moves the run, with the stop, and
   /// after setInput, with the last stop again (a live view of the
   /// workcell follows the debugger through this).
-  using StopObserver = std::function<void(const Session&, const Stop&)>;
+  using StopObserver = std::function<void(const DebugSession&, const Stop&)>;
   void onStop(StopObserver observer) { observers_.push_back(std::move(observer)); }
   /// Asked between slices of a long forward run; yes pauses it (Pause).
   void setInterrupt(std::function<bool()> interrupted) { interrupted_ = std::move(interrupted); }
