@@ -42,13 +42,16 @@ packages=(
 # --only startup); tmux gives the terminal pendant's test a real terminal (a pseudo-terminal
 # with a terminal emulator behind it) whose screen it reads. Orocos KDL is
 # the inverse-kinematics benchmark's peer and independent check
-# (bench/ik_bench.cpp; the benchmark builds without it). zsh and fish test
+# (bench/ik_bench.cpp; the benchmark builds without it); with its URDF
+# parser (libkdl-parser-dev, urdfdom's liburdfdom-dev) it reads robotsim's
+# URDF exports in the urdf_kdl test, and urdfdom's check_urdf
+# (liburdfdom-tools) checks them in urdf_check. zsh and fish test
 # the shell completions with their own completion machinery; parallel and
 # openssh-server (an sshd the test starts on loopback, no service) and rsync
 # (parallel copies files with it) run the
 # grading recipe of docs/testing.md over ssh.
 [ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 luajit libfcl-dev neovim clang libclang-rt-14-dev llvm unzip tmux
-  liborocos-kdl-dev zsh fish parallel openssh-server rsync time)
+  liborocos-kdl-dev libkdl-parser-dev liburdfdom-dev liburdfdom-tools zsh fish parallel openssh-server rsync time)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -36,6 +36,7 @@ struct ShapeDef {  // LINK or OBJECT
   diag::Pos pos;
   std::vector<workcell::Segment> segments;
   std::vector<workcell::ConvexPiece> boxes;   // one per BOX (its corners)
+  std::vector<workcell::DrawnBox> drawn;      // one per BOX (its frame and size)
   std::vector<Eigen::Vector3d> linePoints;    // the LINEs' endpoints
   std::vector<workcell::ConvexPiece> given;   // COLLIDE BOX statements
   bool collideGiven = false;                  // any COLLIDE statement

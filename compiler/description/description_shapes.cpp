@@ -37,6 +37,16 @@ void forEachPoint(ShapeDef& shape, F&& f) {
   for (Eigen::Vector3d& p : shape.linePoints) f(p);
 }
 
+// A BOX's frame and size as drawn (centre, axes along its edges).
+workcell::DrawnBox drawnBox(const double (&e)[6], Color color, std::size_t firstSegment) {
+  workcell::DrawnBox box;
+  box.F_design_box.translation() = Eigen::Vector3d{e[0] + e[1], e[2] + e[3], e[4] + e[5]} / 2;
+  box.size = {std::abs(e[1] - e[0]), std::abs(e[2] - e[3]), std::abs(e[4] - e[5])};
+  box.color = color;
+  box.firstSegment = firstSegment;
+  return box;
+}
+
 }  // namespace
 
 Eigen::Matrix3d axisRotation(int axis, double degrees) {
@@ -62,6 +72,7 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
     if (c.keyword("COLOR") && !c.color(color)) return false;
     // x from left to right, y from bottom to top, z from back to front.
     const double xs[2] = {e[0], e[1]}, ys[2] = {e[3], e[2]}, zs[2] = {e[5], e[4]};
+    shape.drawn.push_back(drawnBox(e, color, shape.segments.size()));
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j) {
         shape.segments.push_back({{xs[0], ys[i], zs[j]}, {xs[1], ys[i], zs[j]}, color});
@@ -88,6 +99,7 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
     const Eigen::Matrix3d r = axisRotation(axis, degrees);
     for (workcell::Segment& s : shape.segments) s.a = r * s.a, s.b = r * s.b;
     forEachPoint(shape, [&](Eigen::Vector3d& p) { p = r * p; });
+    for (workcell::DrawnBox& box : shape.drawn) box.F_design_box.prerotate(r);
     return true;
   }
   if (c.keyword("MOVE")) {
@@ -95,6 +107,7 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
     if (!c.point(d, "a displacement")) return false;
     for (workcell::Segment& s : shape.segments) s.a += d.v, s.b += d.v;
     forEachPoint(shape, [&](Eigen::Vector3d& p) { p += d.v; });
+    for (workcell::DrawnBox& box : shape.drawn) box.F_design_box.pretranslate(d.v);
     return true;
   }
   if (c.keyword("COLOR")) return c.color(color_);

@@ -176,7 +176,7 @@ std::optional<workcell::Shape> Library::shape(Kind kind, const NameRef& ref, con
                                      kindName(static_cast<int>(kind)), ref.name, ref.name));
     return std::nullopt;
   }
-  return workcell::Shape{def->name, def->segments, def->collision()};
+  return workcell::Shape{def->name, def->segments, def->collision(), def->drawn};
 }
 
 std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const DescriptionFile& from) {

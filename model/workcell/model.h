@@ -37,6 +37,17 @@ struct ConvexPiece {
   bool box = false;
 };
 
+/// A BOX statement as drawn, kept beside its 12 lines for what speaks in
+/// solids rather than lines (the URDF export).
+struct DrawnBox {
+  /// Its centre and edge directions (x from left to right, y from bottom
+  /// to top, z from back to front) after the shape's ROTATE and MOVE.
+  Eigen::Isometry3d F_design_box = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();  ///< edge lengths along those directions
+  Color color = Color::White;
+  std::size_t firstSegment = 0;  ///< its 12 lines are segments[firstSegment, firstSegment + 12)
+};
+
 /// A link or an object: a named collection of lines, and the convex pieces
 /// that stand for its solid in collision checks (docs/models.md,
 /// "Collisions": each BOX a piece, the LINEs together one hull, unless
@@ -45,6 +56,9 @@ struct Shape {
   std::string name;
   std::vector<Segment> segments;
   std::vector<ConvexPiece> collision;
+  /// Its BOX statements, from the description reader (a shape read from an
+  /// image's cell section has its lines only, and none here).
+  std::vector<DrawnBox> boxes;
 };
 
 /// A gripper: a base and two fingers that turn about r2 and r3 as it

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tools/cli/lib/debug_command.h"
+#include "tools/cli/lib/export_command.h"
 #include "tools/cli/lib/ik_command.h"
 #include "tools/cli/lib/list_command.h"
 #include "tools/cli/lib/lsp_command.h"
@@ -38,6 +39,7 @@ struct CommandValues {
   ProgramCommandOptions program;
   RobotQuery robot;
   IkOptions ik;
+  ExportOptions exporting;
   ListOptions list;
   PortsOptions ports;
   EmulateOptions emulate;
