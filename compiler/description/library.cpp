@@ -1,5 +1,7 @@
 #include "compiler/description/library.h"
 
+#include <sys/stat.h>
+
 #include "base/ascii.h"
 #include "compiler/description/library_dir.h"
 #include "compiler/program/kinematics_diagnostic.h"
@@ -19,8 +21,6 @@ namespace rs::compiler {
 namespace fs = std::filesystem;
 
 namespace {
-
-constexpr std::size_t kMaxDescriptionBytes = std::size_t{64} << 20;
 
 std::string_view kindName(int kind) {
   static constexpr std::string_view names[] = {"link", "object", "gripper", "robot", "workcell"};
@@ -435,6 +435,14 @@ const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kin
     if (kind == Kind::Workcell) candidates.push_back(dir / kindFolder(static_cast<int>(Kind::Robot)) / (fileOrName + ".rsd"));
     for (const fs::path& candidate : candidates)
       if (fs::is_regular_file(candidate, ec)) return load(candidate);
+  }
+  // Something at that path that is no file to read (a FIFO, a device, a
+  // folder): said as what it is, as every reader says it (base/file_io.h).
+  struct stat st {};
+  if (!libraryNamesOnly_ && ::stat(fileOrName.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    diagnostics_.push_back(
+        diag::unreadable(fileOrName, "cannot read description file", base::notRegularFileReason(st.st_mode)));
+    return nullptr;
   }
   // (A workcell may also be a lone robot: the message says both.)
   diagnostics_.push_back({fileOrName, {}, diag::Severity::Error,

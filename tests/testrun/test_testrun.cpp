@@ -215,7 +215,7 @@ TEST_CASE("robotsim test: each kind of expectation fails with what happened, whe
   for (const std::string& want :
        {f + "1:3: error: expected output 1 ON during 0.250..0.750 s; it was OFF at 0.250 s (from the start)\n",
         f + "2:3: error: expected output 1 ON at 1.000 s; it was OFF then (set by line 10)\n",
-        f + "3:3: error: expected motor E at 210 within 5 at the end; it is at 200 at line 13, 1.600 s\n",
+        f + "3:18: error: expected motor E at 210 within 5 at the end; it is at 200 at line 13, 1.600 s\n",
         f + "4:3: error: expected variable N = 2 at the end; it is 1 at line 13, 1.600 s\n",
         f + "5:3: error: expected the run's simulated time >= 2.000 s; it ended at line 13, 1.600 s\n",
         f + "6:3: error: the run has no workcell: name one with '; test: cell NAME'\n"}) {
@@ -295,7 +295,7 @@ TEST_CASE("robotsim test: a motor that must never pass a value", "[testrun][cli]
   CHECK(r.out.find(":2:3:") == std::string::npos);
   CHECK(r.out.find(program + ":3:3: error: expected motor C never below -50; it moved to -60 at line 6 (1.000..1.200 "
                              "s)\n") != std::string::npos);
-  CHECK(r.out.find(program + ":4:3: error: the robot has no motor Q\n") != std::string::npos);
+  CHECK(r.out.find(program + ":4:17: error: the robot has no motor Q\n") != std::string::npos);  // at the letter
 }
 
 TEST_CASE("robotsim test: objects and the tool centre point on a workcell", "[testrun][cli]") {
@@ -468,7 +468,7 @@ TEST_CASE("robotsim test --spec grades every submission, whatever each one does"
         "file,passed,scenarios,simulated_seconds,first_problem\n"
         "\"" + s + "alice.rsp\",2,2,4.000,\"\"\n"
         "\"" + s + "bob.rsp\",1,2,3.000,\"[a part arrives at 2 s] " + a +
-            ":11:1: expected motor E at 0 at the end; it is at 400 at line 5, 3.000 s\"\n"
+            ":11:16: expected motor E at 0 at the end; it is at 400 at line 5, 3.000 s\"\n"
         "\"" + s + "carol.rsp\",0,2,0.000,\"[a part arrives at 2 s] " + s +
             "carol.rsp:3:18: expected ON or OFF, found 'ONN'\"\n"
         "\"" + s + "dave.rsp\",0,2,0.000,\"[a part arrives at 2 s] " + a +

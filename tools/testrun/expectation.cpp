@@ -147,6 +147,7 @@ bool expectation(LineReader& r, Expectation& e) {
       if (eq != 1 || parsed.ec != std::errc() || parsed.ptr != end)
         return r.fail(fmt::format("expected a motor and its encoder value, e.g. E=100, got '{}'", w->text));
       e.motors.emplace_back(base::asciiUpper(w->text[0]), v);
+      e.motorCols.push_back(w->col);
       r.take("");
     }
     if (e.motors.empty()) return r.fail("expected at least one motor and its value, e.g. E=100");
@@ -181,6 +182,7 @@ bool expectation(LineReader& r, Expectation& e) {
     std::int64_t bound = 0;
     if (!r.integer("an encoder value", bound, INT32_MIN, INT32_MAX)) return false;
     e.motors.emplace_back(base::asciiUpper(letter->text[0]), static_cast<std::int32_t>(bound));
+    e.motorCols.push_back(letter->col);
     return r.end();
   }
   if (r.accept("output") || r.accept("input")) {

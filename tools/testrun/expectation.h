@@ -67,6 +67,9 @@ struct Expectation {
   std::optional<std::pair<vm::Micros, vm::Micros>> during;
   // Motors
   std::vector<std::pair<char, std::int32_t>> motors;
+  /// The column of each of `motors`' terms as written (E=100), for a
+  /// message about one of them; empty for an expectation not read from text.
+  std::vector<std::uint32_t> motorCols;
   std::int32_t within = 0;
   // MotorBound: `motors[0]` is the motor and its bound; `on`: never above (else never below)
   // Output, Input, Pulses

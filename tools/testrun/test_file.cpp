@@ -46,7 +46,9 @@ std::string besideProgram(const std::string& program, const std::string& name, b
   if (name.empty()) return name;
   const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : fs::path(program).parent_path() / name;
   std::error_code ec;
-  if (mayBeLibraryName && !fs::is_regular_file(path, ec)) return name;
+  // A library name unless something but a folder is there (a FIFO there is
+  // refused by its reader as what it is).
+  if (mayBeLibraryName && (!fs::exists(path, ec) || fs::is_directory(path, ec))) return name;
   return path.lexically_normal().string();
 }
 
