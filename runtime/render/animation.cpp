@@ -7,6 +7,7 @@
 #include "runtime/render/page.h"
 #include "runtime/render/palette.h"
 #include "runtime/render/scene.h"
+#include "runtime/render/tool_path.h"
 #include "vm/io_lines.h"
 
 namespace rs::render {
@@ -172,7 +173,25 @@ Json styleModel() {
           {"axisLength", kAxisLength},
           {"toolRadius", kToolRadius},
           {"toolLineWidth", kToolLineWidth},
-          {"toolColor", static_cast<int>(kToolColor)}};
+          {"toolColor", static_cast<int>(kToolColor)},
+          {"pathColor", static_cast<int>(kPathColor)},
+          {"pathLineWidth", kPathLineWidth}};
+}
+
+// The tool centre point's path over the whole run (tool_path.h), thinned
+// to a thousandth of the fit's radius: "at" (µs), "pts" (x, y, z each),
+// "jump" (the points that start a new stretch).
+Json pathModel(const runtime::RunLog& log, const workcell::Workcell& cell, double radius) {
+  Json at = Json::array(), pts = Json::array(), jump = Json::array();
+  if (const workcell::PlacedRobot* robot = cell.drivenRobot()) {
+    const std::vector<PathPoint> path = toolPathOf(log, *robot, radius * kPathTolerance);
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      at.push_back(path[i].at);
+      for (const double v : {path[i].p.x(), path[i].p.y(), path[i].p.z()}) pts.push_back(v);
+      if (path[i].jump) jump.push_back(i);
+    }
+  }
+  return {{"at", at}, {"pts", pts}, {"jump", jump}};
 }
 
 }  // namespace
@@ -214,6 +233,7 @@ Json animationModel(const AnimationInput& input, const Frames& frames) {
   model["run"] = withCollisions(runModel(frames.log, cell, input.outcome), input.collisions);
   if (frames.decimated()) model["run"]["frames"] = {{"steps", frames.runSteps}, {"slot", frames.slot}};
   if (!input.warning.empty()) model["run"]["warning"] = input.warning;  // only when there is one
+  model["path"] = pathModel(*input.run, cell, model["fit"]["radius"].get<double>());
   if (input.chart) {
     const ChartLayout layout = chartLayout(*input.chart);
     const diag::Result<std::vector<std::uint8_t>> svg = encodeChart(*input.chart, layout, ImageFormat::Svg);

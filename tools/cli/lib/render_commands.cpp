@@ -112,6 +112,7 @@ render::Listing listing(const launch::LoadedProgram& program) {
 std::string_view withoutProgram(const RenderOptions& o) {
   if (!o.program.file.empty()) return "";
   if (!o.at.empty()) return "--at";
+  if (o.path) return "--path";
   return o.run.firstGiven();
 }
 
@@ -212,7 +213,8 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   // With --at the run needs to go on only until then.
   Prepared prepared;
   if (!o.program.file.empty()) {
-    prepared = prepare(loaded, o, vm::RunLimits{}.maxSteps, o.at.empty() ? std::nullopt : std::optional(at), err);
+    prepared = prepare(loaded, o, vm::RunLimits{}.maxSteps, o.at.empty() ? std::nullopt : std::optional(at), err,
+                       /*log=*/o.path);
     if (!prepared.run) return kExitBadInput;
   }
   const std::unique_ptr<runtime::Run>& run = prepared.run;
@@ -267,6 +269,13 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     caption.seconds = static_cast<double>(*moment) / 1e6;
   }
   render::Picture picture = render::makePicture(poser, camera, fit, caption);
+  // The tool's path up to the moment drawn, thinned to a fraction of a
+  // pixel at any zoom.
+  if (o.path && run && run->log() && cell.drivenRobot()) {
+    const std::vector<render::PathPoint> path =
+        render::toolPathOf(*run->log(), *cell.drivenRobot(), fit.radius * render::kPathTolerance / camera.zoom);
+    render::addPath(picture, render::pathUntil(path, *moment, poser.tool(cell.drivenRobotIndex())));
+  }
   if (!cell.robots.empty()) {
     if (o.collisionShapes) render::addLines(picture, render::collisionShapeLines(cell, encoders, objectPoses));
     render::markColliding(picture, render::contactsAt(cell, encoders, objectPoses, held));
@@ -388,6 +397,9 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
   cmd->add_flag("--collision-shapes", o.collisionShapes,
                 "Also draw the collision geometry (each BOX, the hull of the LINEs, COLLIDE boxes) in light "
                 "magenta; parts that overlap are drawn red either way");
+  cmd->add_flag("--path", o.path,
+                "Also draw the path of the tool centre point up to the moment drawn (in cyan): a straight line for "
+                "MOVES, APPRO and DEPART, a curve for MOVEP (needs --program)");
   cmd->add_option("-o,--output", o.output, "Picture to write: FILE.png or FILE.svg");
   cmd->add_option("--size", o.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
   cmd->add_option("--center", o.center,
