@@ -196,4 +196,12 @@ void Run::restore(const RunSnapshot& s) {
   cause_ = vm::StopReason::Paused;
 }
 
+bool Run::setVariable(std::uint32_t slot, std::int32_t value) {
+  if (finished() || slot >= interpreter_->variables().size()) return false;
+  vm::InterpreterState state = interpreter_->state();  // the interpreter's one way in: its state
+  state.variables[slot] = value;
+  interpreter_->restore(state);
+  return true;
+}
+
 }  // namespace rs::runtime

@@ -150,6 +150,9 @@ class Run {
   RunSnapshot snapshot() const;
   /// Back to a snapshot of this run; it then goes on exactly as it did.
   void restore(const RunSnapshot& snapshot);
+  /// A debugger's change between instructions: variable `slot` holds
+  /// `value` from now on. False on a finished run or a slot the image lacks.
+  bool setVariable(std::uint32_t slot, std::int32_t value);
 
  private:
   class Observers;

@@ -491,4 +491,19 @@ std::optional<std::string> DebugSession::setInput(int input, bool on) {
   return std::nullopt;
 }
 
+std::optional<std::string> DebugSession::setVariable(std::string_view name, std::int64_t value) {
+  if (run_->finished()) return std::string("the run is over: go back first (reverse-step, goto-time)");
+  const std::vector<std::string>& names = run_->spec().image->variables;
+  const auto slot = std::find_if(names.begin(), names.end(), [&](const std::string& n) { return base::sameName(n, name); });
+  if (slot == names.end())
+    return fmt::format("'{}' is not a variable of the program", base::safeText(name.substr(0, 60)));
+  if (value < INT32_MIN || value > INT32_MAX)
+    return fmt::format("{} does not fit a variable: values are {}..{}", value, INT32_MIN, INT32_MAX);
+  if (!timeline_->setVariable(static_cast<std::uint32_t>(slot - names.begin()), static_cast<std::int32_t>(value)))
+    return std::string("the variable could not be set");
+  moment_.reset();  // as setInput: a change applies between instructions
+  for (const StopObserver& o : observers_) o(*this, stop_);
+  return std::nullopt;
+}
+
 }  // namespace rs::debug

@@ -2,7 +2,8 @@
 // terminal's `robotsim debug`, the debug adapter's `robotsim dap`): the
 // breakpoints and watches, the ways to go forwards (step, next, finish,
 // continue, until a time) and backwards (reverse step, reverse next,
-// reverse continue, go to a time), `set input`, and why the run stopped.
+// reverse continue, go to a time), `set input` and `set VAR`, and why the
+// run stopped.
 // Every stop leaves the session inspectable, also a deadlock, a runtime
 // error or a limit: the run can still be looked at and stepped back.
 //
@@ -124,6 +125,11 @@ class DebugSession {
   /// replays it.
   /// An error message when the run is over or the input is not 1..vm::kIoCount.
   std::optional<std::string> setInput(int input, bool on);
+  /// Variable `name` (any case) holds `value` from now on, as setInput
+  /// (reverse execution replays it). An error message when the run is
+  /// over, the program has no such variable, or the value does not fit
+  /// one (32 bits, as SET's).
+  std::optional<std::string> setVariable(std::string_view name, std::int64_t value);
 
   /// Called after every command that moves the run, with the stop, and
   /// after setInput, with the last stop again (a live view of the

@@ -71,8 +71,9 @@ std::uint64_t Timeline::nextBoundary() const {
 void Timeline::applyDueEdits() {
   const std::uint64_t steps = run_.interpreter().steps();
   while (editsApplied_ < edits_.size() && edits_[editsApplied_].steps <= steps && !run_.finished()) {
-    const InputEdit& e = edits_[editsApplied_++];
-    run_.rig().setInput(e.input, e.on);
+    const Edit& e = edits_[editsApplied_++];
+    if (e.kind == Edit::Kind::Input) run_.rig().setInput(e.input, e.on);
+    else run_.setVariable(e.slot, e.value);
   }
 }
 
@@ -177,7 +178,25 @@ std::optional<std::uint64_t> Timeline::lastMatch(const std::function<void(const 
 }
 
 bool Timeline::setInput(int input, bool on) {
-  if (run_.finished() || !vm::isIoLine(input)) return false;
+  if (!vm::isIoLine(input)) return false;
+  Edit e;
+  e.kind = Edit::Kind::Input;
+  e.input = input;
+  e.on = on;
+  return record(e);
+}
+
+bool Timeline::setVariable(std::uint32_t slot, std::int32_t value) {
+  if (slot >= run_.spec().image->variables.size()) return false;
+  Edit e;
+  e.kind = Edit::Kind::Variable;
+  e.slot = slot;
+  e.value = value;
+  return record(e);
+}
+
+bool Timeline::record(const Edit& edit) {
+  if (run_.finished()) return false;
   const std::uint64_t steps = run_.interpreter().steps();
   applyDueEdits();
   // That future is gone: later edits and snapshots with it.
@@ -186,8 +205,11 @@ bool Timeline::setInput(int input, bool on) {
     bytes_ -= it->second.bytes;
     it = snapshots_.erase(it);
   }
-  if (!run_.rig().setInput(input, on)) return false;
-  edits_.push_back({steps, input, on});
+  const bool made = edit.kind == Edit::Kind::Input ? run_.rig().setInput(edit.input, edit.on)
+                                                   : run_.setVariable(edit.slot, edit.value);
+  if (!made) return false;
+  edits_.push_back(edit);
+  edits_.back().steps = steps;
   editsApplied_ = edits_.size();
   return true;
 }

@@ -5,7 +5,7 @@
 // step costs one restore and at most K instructions.
 //
 // The world can be changed from the present on (`setInput`, a debugger's
-// `set input`): the change is kept with the instruction count it was made
+// `set input`; `setVariable`): the change is kept with the instruction count it was made
 // at and applied again whenever execution reaches that count (a moment
 // the timeline stops at always has its changes made), so that going back
 // and forth replays the changed stimuli. A change forgets the changes
@@ -31,11 +31,17 @@ inline constexpr std::uint64_t kDefaultSnapshotInterval = 4096;
 /// The memory snapshots may take before the interval doubles.
 inline constexpr std::size_t kDefaultSnapshotBudget = std::size_t{64} << 20;
 
-/// An input turned on or off by hand, after `steps` instructions.
-struct InputEdit {
+/// A change made by hand after `steps` instructions: an input turned on
+/// or off (`set input`), or a variable given a value (`set VAR = VALUE`,
+/// the debug adapter's setVariable).
+struct Edit {
+  enum class Kind : std::uint8_t { Input, Variable };
   std::uint64_t steps = 0;
-  int input = 1;
+  Kind kind = Kind::Input;
+  int input = 1;  ///< Input: the line, turned `on` or off
   bool on = true;
+  std::uint32_t slot = 0;  ///< Variable: its slot, given `value`
+  std::int32_t value = 0;
 };
 
 /// The bytes a snapshot holds (its vectors and sets included), roughly.
@@ -73,7 +79,10 @@ class Timeline {
   /// Input `input` turns `on` from now on; false on a finished run or a
   /// bad input.
   bool setInput(int input, bool on);
-  const std::vector<InputEdit>& edits() const { return edits_; }
+  /// Variable `slot` holds `value` from now on; false on a finished run or
+  /// a slot the program lacks.
+  bool setVariable(std::uint32_t slot, std::int32_t value);
+  const std::vector<Edit>& edits() const { return edits_; }
 
   std::uint64_t interval() const { return interval_; }
   std::size_t snapshotCount() const { return snapshots_.size(); }
@@ -90,6 +99,8 @@ class Timeline {
   void thin();
   void restoreAtOrBefore(std::uint64_t steps);
   void applyDueEdits();
+  /// Makes `edit` now, forgetting the future after it; false if it cannot be made.
+  bool record(const Edit& edit);
   // The next step count where forward() must stop by itself: a snapshot
   // or an edit.
   std::uint64_t nextBoundary() const;
@@ -99,7 +110,7 @@ class Timeline {
   std::size_t budget_;
   std::map<std::uint64_t, Stored> snapshots_;
   std::size_t bytes_ = 0;
-  std::vector<InputEdit> edits_;
+  std::vector<Edit> edits_;
   std::size_t editsApplied_ = 0;  // edits_ before this index are in the run's state
   bool interrupted_ = false;
 };
