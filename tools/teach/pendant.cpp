@@ -62,11 +62,14 @@ Outcome Pendant::refuseAt(workcell::JogLimit limit, std::string message) {
 
 // The one path that moves the robot: the fault check, the soft limits
 // (each motor's encoder range) before anything moves or is sent, then the
-// rig's machine, so the world reacts as in a run. On the simulated machine
+// rig's machine (a joint move, or with `straight` the tool along its
+// straight line, as MOVES runs it), so the world reacts as in a run. On the simulated machine
 // the rig checks the move for collisions (docs/models.md); a move that
 // collides is refused and undone (the rig restored to before it), so the
 // robot never stands in a collision (docs/teach.md).
-Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
+Outcome Pendant::moveTo(std::span<const std::int32_t> targets) { return move(targets, false); }
+
+Outcome Pendant::move(std::span<const std::int32_t> targets, bool straight) {
   if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
   if (targets.size() != motors_.size())
     return refuse(fmt::format("{} values for {} motors", targets.size(), motors_.size()), true);
@@ -78,7 +81,7 @@ Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
   std::optional<runtime::RigSnapshot> before;
   if (watch) before = rig_->snapshot();
   const std::size_t seen = watch ? watch->events().size() : 0;
-  const vm::Status status = rig_->machine().moveTo(targets);
+  const vm::Status status = straight ? rig_->machine().moveLine(targets) : rig_->machine().moveTo(targets);
   if (watch && watch->events().size() > seen) {
     const runtime::CollisionEvent hit = watch->events()[seen];
     rig_->restore(*before);
@@ -142,7 +145,10 @@ Outcome Pendant::jogCartesian(workcell::JogFrame frame, std::string_view axis, d
     return refuseAt(*r.limit, fmt::format("{} refused ({}): {}; nothing moved", what, workcell::jogLimitName(*r.limit),
                                           r.message));
   }
-  Outcome o = moveTo(r.pose.encoders);
+  // Along the line the jog planned, as MOVES runs it: a block lifted off
+  // the pallet it stands on goes straight up, where a joint move swings it
+  // through the pallet.
+  Outcome o = move(r.pose.encoders, true);
   if (!o.ok) {
     if (!limit_.empty()) {
       // "world jog X +10 length units refused (collision): the move to ...", not "...: refused: the move to ...".

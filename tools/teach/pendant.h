@@ -56,8 +56,10 @@ class Pendant {
   /// The tool by `amount` (length units, or degrees for a turn) along or
   /// about `axis` of the cell's frame (World) or the tool's own (Tool):
   /// through the inverse kinematics, on the configuration the arm stands
-  /// in; refused, with nothing moved, at the limit it meets (the state's
-  /// `limit`: range, reach, singularity, collision). Repeated jogs start
+  /// in, the tool moving along its straight line as MOVES moves it, with
+  /// the same path check; refused, with nothing moved, at the limit it
+  /// meets (the state's `limit`: range, reach, singularity, step,
+  /// collision). Repeated jogs start
   /// from the exact pose the last one reached, so they do not drift by the
   /// rounding to encoder counts.
   Outcome jogCartesian(workcell::JogFrame frame, std::string_view axis, double amount);
@@ -94,6 +96,8 @@ class Pendant {
   static constexpr vm::Micros kFrameStep = 40'000;
 
  private:
+  /// moveTo's checks and move; with `straight`, along the tool's straight line (vm::Machine::moveLine).
+  Outcome move(std::span<const std::int32_t> targets, bool straight);
   Outcome done(Outcome o);
   Outcome refuse(std::string message, bool bad = false);
   Outcome refuseAt(workcell::JogLimit limit, std::string message);

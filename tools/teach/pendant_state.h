@@ -70,7 +70,7 @@ struct PendantState {
   std::vector<MotionFrame> motion;  ///< the last move, time-stepped (empty after a non-move)
   std::string message;  ///< what the last operation did, or why it did not
   bool failed = false;  ///< the last operation was refused or failed
-  /// The limit a refused move met: "range", "reach", "singularity",
+  /// The limit a refused move met: "range", "reach", "singularity", "step",
   /// "collision" (workcell::jogLimitName), "" otherwise.
   std::string limit;
   std::string fault;    ///< the device failed: every motor stopped, nothing more is sent
