@@ -25,13 +25,26 @@ std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) 
   }
 }
 
+// A stop's stable code (Diagnostic::code, static text): its name as the
+// run reports it, in the spelling of the compiler's codes.
+std::string_view codeFor(vm::StopReason reason) {
+  switch (reason) {
+    case vm::StopReason::RuntimeError: return "runtime-error";
+    case vm::StopReason::Deadlock: return "deadlock";
+    case vm::StopReason::StepLimit: return "step-limit";
+    case vm::StopReason::TimeLimit: return "time-limit";
+    case vm::StopReason::InstantLimit: return "clock-standing-still";
+    default: return {};  // it ended, or it paused: no diagnostic of its own
+  }
+}
+
 }  // namespace
 
 diag::Diagnostic stopDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {
   const diag::Pos pos{image.lines[outcome.index], image.columns[outcome.index]};
   return {file, pos, diag::Severity::Error,
           fmt::format("{}: {} (instruction {})", vm::stopReasonName(outcome.reason), outcome.message, outcome.index + 1),
-          {}, std::string(hintFor(image, outcome))};
+          codeFor(outcome.reason), std::string(hintFor(image, outcome))};
 }
 
 std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::CollisionMode mode,

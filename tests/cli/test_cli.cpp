@@ -284,6 +284,7 @@ TEST_CASE("cli: --format=json summary", "[cli]") {
                {"line", 3},
                {"column", 3},
                {"severity", "error"},
+               {"code", "runtime-error"},
                {"message", "runtime error: MOVE takes motor E to 1200, outside its range -1000..1000 (instruction 3)"}});
     CHECK(r.err == f + ":3:3: error: runtime error: MOVE takes motor E to 1200, outside its range -1000..1000 "
                        "(instruction 3)\n"

@@ -23,20 +23,38 @@ std::chrono::nanoseconds threadTime() {
   return std::chrono::seconds(t.tv_sec) + std::chrono::nanoseconds(t.tv_nsec);
 }
 
-// Notes when each instruction first starts and ends, and how often it runs;
-// pauses the run when it is abandoned or out of time (the thread's clock
-// read every kClockEvery steps: a step costs nanoseconds, a read hundreds).
+// Notes when each instruction first starts and ends, how often it runs and
+// for how long, and how long each call of a subroutine takes (a stack of
+// the calls under way, as the interpreter's); pauses the run when it is
+// abandoned or out of time (the thread's clock read every kClockEvery
+// steps: a step costs nanoseconds, a read hundreds).
 class Timer final : public vm::StepObserver {
  public:
   static constexpr std::uint64_t kClockEvery = 1024;
 
-  Timer(std::vector<InstructionTimes>& times, const RunControl& control, std::chrono::nanoseconds deadline)
-      : times_(times), control_(control), deadline_(deadline) {}
+  Timer(std::vector<InstructionTimes>& times, std::vector<CallTimes>& calls, const RunControl& control,
+        std::chrono::nanoseconds deadline)
+      : times_(times), calls_(calls), control_(control), deadline_(deadline) {}
   bool afterStep(const vm::Interpreter& vm, std::uint32_t index) override {
     const vm::Micros now = vm.machine().now();
     if (index < times_.size()) {
       InstructionTimes& t = times_[index];
       if (t.runs++ == 0) t.start = before_, t.end = now;
+      t.total += now - before_;
+      const vm::Op op = vm.image().code[index].op;
+      if (vm::has(op, vm::kCalls) && vm.callDepth() > underWay_.size()) underWay_.push_back({vm.pc(), before_});
+      if (vm::has(op, vm::kReturns) && !underWay_.empty() && vm.callDepth() < underWay_.size()) {
+        const Call c = underWay_.back();
+        underWay_.pop_back();
+        if (c.entry < calls_.size()) {
+          CallTimes& ct = calls_[c.entry];
+          const vm::Micros took = now - c.start;
+          ct.shortest = ct.calls == 0 ? took : std::min(ct.shortest, took);
+          ct.longest = std::max(ct.longest, took);
+          ++ct.calls;
+          ct.total += took;
+        }
+      }
     }
     before_ = now;
     if (control_.abandoned()) return true;
@@ -46,7 +64,13 @@ class Timer final : public vm::StepObserver {
   bool outOfTime() const { return outOfTime_; }
 
  private:
+  struct Call {
+    std::uint32_t entry = 0;  // the subroutine's first instruction
+    vm::Micros start = 0;
+  };
   std::vector<InstructionTimes>& times_;
+  std::vector<CallTimes>& calls_;
+  std::vector<Call> underWay_;
   const RunControl& control_;
   std::chrono::nanoseconds deadline_;
   vm::Micros before_ = 0;
@@ -142,7 +166,8 @@ CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, 
     spec->stimuli = std::move(parsed).value();
   }
   out.times.resize(spec->image->code.size());
-  Timer timer(out.times, control, deadline);
+  out.calls.resize(spec->image->code.size());
+  Timer timer(out.times, out.calls, control, deadline);
   runtime::Run run(*spec);
   run.observe(timer);
   control.attach(&run);
