@@ -382,7 +382,9 @@ void Adapter::reportStop(const debug::Stop& stop) {
   const bool exception = std::any_of(stop.breakpoints.begin(), stop.breakpoints.end(), [this](int id) {
     return std::find(exceptionBreakpoints_.begin(), exceptionBreakpoints_.end(), id) != exceptionBreakpoints_.end();
   });
-  if (exception && !stop.finished()) {
+  // A collision or warning filter's stop, also where the run ends (a
+  // collision under --collisions=error, the default, ends it at the contact).
+  if (exception) {
     Json body = {{"reason", "exception"}, {"threadId", kThread}, {"allThreadsStopped", true},
                  {"description", stop.message}, {"text", stop.message}, {"hitBreakpointIds", stop.breakpoints}};
     event("stopped", std::move(body));

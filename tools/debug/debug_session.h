@@ -63,7 +63,9 @@ class DebugSession {
   /// a move (or a DELAY), and at a collision, that moment lies inside the
   /// instruction under way: the clock, the motors, the tool centre point
   /// and the objects are theirs at that time, the instruction and line the
-  /// one under way, and the steps those done before it.
+  /// one under way, and the steps those done before it. A run that a
+  /// collision ended (--collisions=error, the default) stands at its first
+  /// contact, not at the end of the move the arm never reached.
   runtime::RunView view() const;
   const Stop& lastStop() const { return stop_; }
   const Timeline& timeline() const { return *timeline_; }
@@ -78,8 +80,9 @@ class DebugSession {
   /// When `condition` becomes true (`when out 2 = 1`, `when N = 3`).
   int breakWhen(Condition condition);
   /// At every collision the run's check finds (a run with --collisions=warn
-  /// goes on after it; with error it ends there anyway): the session
-  /// stands at the moment of the first contact.
+  /// goes on after it; with error, the default, it ends there, and the stop
+  /// is both this breakpoint's and the run's end): the session stands at
+  /// the moment of the first contact.
   int breakOnCollision();
   /// At every closing move that takes nothing (what the trace notes and
   /// the run's warning is about).
@@ -150,6 +153,14 @@ class DebugSession {
   /// When a collision breakpoint is among `ids`: the session stands at the
   /// moment of the last collision's first contact (true).
   bool standAtCollision(const std::vector<int>& ids);
+  /// The collision that ended the run, if one did (CollisionMode::Error
+  /// stops a run at its first collision, the machine having made the whole
+  /// move): the session shows its contact, never the pose after it.
+  const runtime::CollisionEvent* endingCollision() const;
+  /// A run that a collision ended: the stop at its contact, with the
+  /// collision breakpoints (unconditional, or whose condition holds) that
+  /// stop there.
+  Stop collisionEnd(Stop stop);
   /// Runs back one instruction to see which one is under way at `t`.
   void standWithin(vm::Micros t);
   /// A close on nothing among the instructions since `emptyClosesBefore`.

@@ -309,10 +309,8 @@ bool ParsedExpectations::statesStatus() const {
   return false;
 }
 
-// One `test:`, `expect:` or `expect-error:` directive whose head starts at
-// byte `i` of the line; false when the line holds none.
-bool directive(std::string_view line, std::uint32_t n, std::size_t i, const std::string& file,
-               ParsedExpectations& out) {
+bool readDirective(std::string_view line, std::uint32_t n, std::size_t i, const std::string& file,
+                   ParsedExpectations& out) {
   const std::size_t colon = line.find(':', i);
   if (colon == std::string_view::npos) return false;
   const std::string_view head = line.substr(i, colon - i);
@@ -365,64 +363,8 @@ ParsedExpectations parseExpectations(const diag::SourceFile& source) {
     if (semicolon == std::string_view::npos) continue;
     std::size_t i = semicolon + 1;
     while (i < line.size() && blank(line[i])) ++i;
-    directive(line, n, i, source.name(), out);  // or an ordinary comment
+    readDirective(line, n, i, source.name(), out);  // or an ordinary comment
   }
-  return out;
-}
-
-ScenarioFile parseScenarioFile(const diag::SourceFile& source) {
-  ScenarioFile out;
-  ParsedExpectations preamble;  // directives before the first scenario are errors
-  for (std::uint32_t n = 1; n <= source.lineCount(); ++n) {
-    const std::string_view line = source.line(n);
-    std::size_t i = 0;
-    while (i < line.size() && blank(line[i])) ++i;
-    if (i == line.size() || line[i] == ';') continue;
-    const std::vector<Word> words = wordsOf(line.substr(0, line.find(';')), i);
-    const diag::Pos pos{n, columnOf(line, i)};
-    if (is(words[0], "scenario")) {
-      if (words.size() < 2) {
-        out.errors.push_back({source.name(), {n, columnOf(line, line.size())}, diag::Severity::Error,
-                              "expected the scenario's name after 'scenario'"});
-        continue;
-      }
-      Scenario& s = out.scenarios.emplace_back();
-      s.pos = pos;
-      const std::size_t from = static_cast<std::size_t>(words[1].text.data() - line.data());
-      const std::size_t to = static_cast<std::size_t>(words.back().text.data() + words.back().text.size() - line.data());
-      s.name = line.substr(from, to - from);
-      continue;
-    }
-    if (is(words[0], "program")) {
-      if (words.size() != 2 || !out.program.empty()) {
-        out.errors.push_back({source.name(), pos, diag::Severity::Error,
-                              out.program.empty() ? "expected 'program FILE' (one file name)"
-                                                  : "the program is named twice"});
-        continue;
-      }
-      out.program = words[1].text;
-      out.programPos = pos;
-      continue;
-    }
-    ParsedExpectations& into = out.scenarios.empty() ? preamble : out.scenarios.back().parsed;
-    if (!directive(line, n, i, source.name(), into)) {
-      out.errors.push_back({source.name(), pos, diag::Severity::Error,
-                            fmt::format("expected 'program FILE', 'scenario NAME', 'test: ...' or 'expect: ...', got "
-                                        "'{}'",
-                                        words[0].text)});
-      continue;
-    }
-    if (out.scenarios.empty())
-      out.errors.push_back(
-          {source.name(), pos, diag::Severity::Error, "expected 'scenario NAME' before the first test: or expect:"});
-  }
-  for (const diag::Diagnostic& d : preamble.errors) out.errors.push_back(d);
-  for (Scenario& s : out.scenarios) {
-    for (diag::Diagnostic& d : s.parsed.errors) out.errors.push_back(std::move(d));
-    s.parsed.errors.clear();
-  }
-  if (out.scenarios.empty() && out.errors.empty())
-    out.errors.push_back({source.name(), {}, diag::Severity::Error, "the file has no 'scenario NAME'"});
   return out;
 }
 

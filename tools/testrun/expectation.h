@@ -86,6 +86,9 @@ struct Expectation {
   LineEvent first, second;
   // CompileError: the error's message must contain this
   std::string message;
+  /// In a scenario file, `expect: ... points N`: what it earns when it
+  /// holds (a teacher's partial credit), in hundredths of a point.
+  std::optional<std::int64_t> points;
 };
 
 /// How to run the program (`; test:` lines); paths as written, relative to
@@ -113,23 +116,11 @@ struct ParsedExpectations {
 /// Reads every expectation and setting of a program's comments.
 ParsedExpectations parseExpectations(const diag::SourceFile& source);
 
-/// One world a program is checked in: its settings and expectations.
-struct Scenario {
-  std::string name;
-  diag::Pos pos;
-  ParsedExpectations parsed;
-};
-
-/// A scenario file (`.rstest`): `program FILE` (relative to the scenario
-/// file; optional with --spec), then `scenario NAME` lines, each followed by
-/// its `test:` and `expect:` lines; `;` starts a comment.
-struct ScenarioFile {
-  std::string program;
-  diag::Pos programPos;
-  std::vector<Scenario> scenarios;
-  std::vector<diag::Diagnostic> errors;  ///< every bad line
-};
-
-ScenarioFile parseScenarioFile(const diag::SourceFile& source);
+/// One `test:`, `expect:` or `expect-error:` directive of line `n`, its head
+/// starting at byte `i`, into `out` (a bad one as an error there); false
+/// when the line holds none. The scenario files' reader (scenario_file.h)
+/// shares it.
+bool readDirective(std::string_view line, std::uint32_t n, std::size_t i, const std::string& file,
+                   ParsedExpectations& out);
 
 }  // namespace rs::testrun

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <ostream>
 #include <streambuf>
@@ -17,6 +18,7 @@
 #include "tools/testrun/expectation.h"
 #include "tools/testrun/golden_trace.h"
 #include "tools/testrun/run_watch.h"
+#include "tools/testrun/scenario_file.h"
 #include "vm/image_file.h"
 
 namespace rs::testrun {
@@ -309,6 +311,7 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
     running.observe(*t.writer);
   }
   const vm::RunOutcome outcome = running.runToEnd();
+  r.ran = true;
   if (watch) watch->finish(outcome);
   if (counter) r.coverage = counter->coverage();
   r.simulated = running.rig().clock();
@@ -334,6 +337,26 @@ std::shared_ptr<const diag::SourceFile> readSource(const std::string& path, Test
 }
 
 bool isScenarioFile(const std::string& path) { return fs::path(path).extension() == ".rstest"; }
+
+// What scenario `s` earned in `r`: all its points when it passed; with
+// partial credit, those of each expectation that holds (no problem at its
+// line in the scenario file) in a run that was made; else none.
+void grade(const Scenario& s, const std::string& specPath, TestResult& r) {
+  r.maxPoints = maxPointsOf(s);
+  if (r.status == TestStatus::Passed) {
+    r.points = r.maxPoints;
+    return;
+  }
+  r.points = 0;
+  if (r.status == TestStatus::Error || !r.ran || !partialCredit(s)) return;
+  for (const Expectation& e : s.parsed.expectations) {
+    if (!e.points) continue;
+    const bool failed = std::any_of(r.problems.begin(), r.problems.end(), [&](const diag::Diagnostic& d) {
+      return d.file == specPath && d.pos.line == e.pos.line && d.pos.col == e.pos.col;
+    });
+    if (!failed) r.points += *e.points;
+  }
+}
 
 }  // namespace
 
@@ -364,7 +387,10 @@ std::vector<TestResult> runScenarios(const std::string& specPath, const std::str
   for (const Scenario& s : parsed.scenarios) {
     TestResult r = base;
     r.name = s.name;
-    check(program, s.parsed, specPath, options, !programOverride.empty(), r);
+    ParsedExpectations scenario = s.parsed;
+    scenario.settings = settingsOf(parsed, s);  // with the settings every scenario shares
+    check(program, scenario, specPath, options, !programOverride.empty(), r);
+    grade(s, specPath, r);
     results.push_back(std::move(r));
   }
   return results;

@@ -45,6 +45,14 @@ struct TestResult {
   std::optional<Coverage> coverage;
   /// Golden traces written by --update.
   std::vector<std::string> updated;
+  /// A scenario's grade, in hundredths of a point (scenario_file.h): what
+  /// it earned and the most it could (0 and 0 for a program's own
+  /// expectations). Passed earns the most; failed earns, where the
+  /// scenario gives partial credit, the points of the expectations that
+  /// held in a run that was made; an error earns nothing.
+  std::int64_t points = 0, maxPoints = 0;
+  /// The program compiled and ran (its expectations were checked).
+  bool ran = false;
 };
 
 struct RunnerOptions {
