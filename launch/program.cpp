@@ -122,7 +122,10 @@ compiler::Target cellTarget(const workcell::Workcell& cell) {
   const workcell::PlacedRobot& driven = *cell.drivenRobot();
   const workcell::Robot& robot = driven.robot;
   compiler::Target target{robot.name, compiler::motorTable(robot), vm::kDefaultCallDepth, nullptr};
-  if (robot.chain) target.robot = std::make_shared<const workcell::PlacedRobot>(driven);
+  if (robot.chain) {
+    target.robot = std::make_shared<const workcell::PlacedRobot>(driven);
+    target.linePlans = std::make_shared<workcell::LinePlanCache>();
+  }
   return target;
 }
 

@@ -14,6 +14,7 @@ std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) 
   switch (outcome.reason) {
     case vm::StopReason::StepLimit: return "allow more with --max-steps N";
     case vm::StopReason::TimeLimit: return "allow more with --max-time SECONDS";
+    case vm::StopReason::KnotLimit: return "allow more with --max-knots N";
     case vm::StopReason::Deadlock: return "inputs change only by --input N=ON@SECONDS or a --stimuli file";
     case vm::StopReason::InstantLimit: return "give the loop a DELAY, a move or a WAITFOR, or a way out";
     case vm::StopReason::RuntimeError:

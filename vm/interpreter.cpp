@@ -202,11 +202,15 @@ Interpreter::AfterCall Interpreter::machineStep(const Instr& in, std::uint32_t a
   if (now > limits.maxTime)
     return stop(StopReason::TimeLimit, fmt::format("simulated time limit of {} s passed (clock at {} s)",
                                                    base::formatSeconds(limits.maxTime), base::formatSeconds(now)));
+  const std::uint64_t knots = machine_.knots();
+  if (knots > limits.maxKnots)
+    return stop(StopReason::KnotLimit,
+                fmt::format("knot limit of {} straight-line moves passed ({} made)", limits.maxKnots, knots));
   if (now != st.clockSeen) {
     st.clockSeen = now, st.stillSince = steps;
     check = nextCheck(limits, pause, st.stillSince);
   }
-  return now > pause.afterTime ? AfterCall::Pause : AfterCall::Next;
+  return now > pause.afterTime || knots >= pause.atKnots ? AfterCall::Pause : AfterCall::Next;
 }
 
 // The dispatch loop: one switch over the opcode, each case a few lines.

@@ -135,6 +135,8 @@ struct Translator::State {
   std::vector<diag::Pos> firstRead;  // per slot: first JMPVAR, for the warning
   diag::Pos pointsHeader;
   std::shared_ptr<const workcell::PlacedRobot> robot = nullptr;  // for points written as poses
+  std::shared_ptr<workcell::LinePlanCache> linePlans = nullptr;  // Target::linePlans
+  bool checkLines = true;                                          // Target::checkLines
   std::unique_ptr<workcell::PoseSolver> poser = nullptr;  // made at the first such point
   std::vector<double> lastPoseQ = {};                      // exact joint values of the last pose point
   std::size_t lastPoseIndex = 0;                           // 1 + its index in image.points (0: none)
@@ -172,6 +174,8 @@ Translator::Translator(const Target& target, const diag::SourceFile& source, dia
     : s_(std::make_unique<State>(State{source, diagnostics, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}})) {
   vm::Image& im = s_->image;
   s_->robot = target.robot;
+  s_->linePlans = target.linePlans;
+  s_->checkLines = target.checkLines;
   im.sourceName = source.name();
   im.robotName = target.robotName;
   im.callDepthLimit = target.callDepthLimit;
@@ -338,7 +342,8 @@ std::optional<vm::Image> Translator::finish() {
   s.resolve();
   s.warnUnassignedVariables();
   s.analyseFlow();
-  if (!s.diag.hasErrors() && s.robot && s.robot->robot.chain) checkLinePaths(s.image, *s.robot, s.diag);
+  if (!s.diag.hasErrors() && s.checkLines && s.robot && s.robot->robot.chain)
+    checkLinePaths(s.image, *s.robot, s.diag, s.linePlans.get());
   if (s.diag.hasErrors()) return std::nullopt;
   return std::move(s.image);
 }

@@ -39,7 +39,8 @@ bool CellMachine::planner() {
   if (planner_) return true;
   const workcell::PlacedRobot* driven = world_.cell().drivenRobot();
   if (!driven || !driven->robot.chain) return false;
-  planner_ = std::make_unique<workcell::LinePlanner>(*driven);
+  plans_ = std::make_unique<workcell::LinePlanCache>();
+  planner_ = std::make_unique<workcell::LinePlanner>(*driven, plans_.get());
   path_ = std::make_unique<workcell::LinePath>(*planner_);
   return true;
 }

@@ -97,6 +97,14 @@ double CollisionWatch::used(const SimMachine& machine, vm::Micros t) {
   return bounds_.used(probe_);
 }
 
+// The motors `k`/`steps` of the way from `from` to `to`, each rounded
+// toward `from` (so each moves one way, and the last of the steps is `to`).
+void CollisionWatch::partWay(std::span<const std::int32_t> from, std::span<const std::int32_t> to, std::int64_t k,
+                             std::int64_t steps) {
+  for (std::size_t m = 0; m < probe_.size(); ++m)
+    probe_[m] = static_cast<std::int32_t>(from[m] + (static_cast<std::int64_t>(to[m]) - from[m]) * k / steps);
+}
+
 SweepVerdict CollisionWatch::advance(const SimMachine& machine, const workcell::CollisionQuery& query,
                                      std::span<const std::int32_t> before, std::span<const std::int32_t> after,
                                      vm::Micros start, vm::Micros end) {
@@ -110,27 +118,68 @@ SweepVerdict CollisionWatch::advance(const SimMachine& machine, const workcell::
   bounds_.startMove(carried);
   at_.assign(before.begin(), before.end());
   probe_.assign(before.begin(), before.end());
+  next_.assign(before.begin(), before.end());
   vm::Micros t = start;
+  // The checks follow the motors, not the clock: where a motor covers more
+  // than a count in one microsecond (a speed over 1,000,000 counts a
+  // second) and that microsecond goes farther than the limits allow, the
+  // checks step through it by counts, from the motors at t towards their
+  // positions at t + 1 (`between`: the last check lies on that way).
+  bool between = false;
   while (true) {
     ++checks_;
     bounds_.setCheck(at_, after);
     if (const std::optional<workcell::Contact> c = data_.findContactOrClearance(at_, query, bounds_, clearance_))
-      return {true, t - start, *c, at_};
-    if (t >= end || !bounds_.limit(clearance_)) return {};
-    // The latest time within every limit (to 1/512 of the rest of the
-    // move); when one count already goes farther, the first time it moves.
-    vm::Micros next = end;
-    if (used(machine, end) > 1) {
-      vm::Micros lo = t, hi = end;  // used(lo) <= 1 < used(hi)
-      const vm::Micros fine = (end - t) / 512;
-      while (hi - lo > 1 && (hi - lo > fine || lo == t)) {
-        const vm::Micros mid = lo + (hi - lo) / 2;
-        (used(machine, mid) <= 1 ? lo : hi) = mid;
+      return {true, (between ? t + 1 : t) - start, *c, at_};
+    if ((t >= end && !between) || !bounds_.limit(clearance_)) return {};
+    if (!between) {
+      // The latest time within every limit (to 1/512 of the rest of the
+      // move); when one microsecond already goes farther, through it by counts.
+      vm::Micros next = end;
+      if (used(machine, end) > 1) {
+        vm::Micros lo = t, hi = end;  // used(lo) <= 1 < used(hi)
+        const vm::Micros fine = (end - t) / 512;
+        while (hi - lo > 1 && (hi - lo > fine || lo == t)) {
+          const vm::Micros mid = lo + (hi - lo) / 2;
+          (used(machine, mid) <= 1 ? lo : hi) = mid;
+        }
+        next = lo > t ? lo : hi;
       }
-      next = lo > t ? lo : hi;
+      if (next > t + 1 || used(machine, next) <= 1) {
+        t = next;
+        for (std::size_t m = 0; m < at_.size(); ++m) at_[m] = machine.positionAt(m, t);
+        continue;
+      }
+      for (std::size_t m = 0; m < next_.size(); ++m) next_[m] = machine.positionAt(m, t + 1);
     }
-    t = next;
-    for (std::size_t m = 0; m < at_.size(); ++m) at_[m] = machine.positionAt(m, t);
+    // Towards the motors at t + 1: as many counts as stay within every
+    // limit, at least one (of the motor that has the most to go).
+    std::int64_t steps = 0;
+    for (std::size_t m = 0; m < at_.size(); ++m)
+      steps = std::max<std::int64_t>(steps, std::abs(static_cast<std::int64_t>(next_[m]) - at_[m]));
+    std::int64_t k = steps;
+    if (steps > 1) {
+      std::int64_t lo = 1, hi = steps + 1;  // within the limits at lo (or lo is the least step), not at hi
+      partWay(at_, next_, steps, steps);
+      if (bounds_.used(probe_) > 1) {
+        hi = steps;
+        while (hi - lo > 1) {
+          const std::int64_t mid = lo + (hi - lo) / 2;
+          partWay(at_, next_, mid, steps);
+          (bounds_.used(probe_) <= 1 ? lo : hi) = mid;
+        }
+        k = lo;
+      }
+    }
+    if (k >= steps) {
+      t += 1;
+      between = false;
+      at_.assign(next_.begin(), next_.end());
+    } else {
+      partWay(at_, next_, k, steps);
+      at_.assign(probe_.begin(), probe_.end());
+      between = true;
+    }
   }
 }
 

@@ -11,7 +11,10 @@
 // (CollisionModel::bodyWeights); each motor moves one way during a move,
 // so the counts covered between two checks bound every moment in between.
 // The machine says where each motor is at time t (SimMachine::positionAt,
-// whatever profile it follows). Deterministic: the same move is checked at
+// whatever profile it follows); a microsecond in which a motor covers more
+// than a count (faster than 1,000,000 counts a second) is stepped through
+// by counts when it goes farther than the limits, so the bound holds at
+// every speed an image allows. Deterministic: the same move is checked at
 // the same times. A move made before in the same world is answered from
 // memory (runtime/sim/sweep_memo.h), with the same verdict.
 #pragma once
@@ -95,6 +98,8 @@ class CollisionWatch {
   void keyOf(const World& world, std::span<const std::int32_t> before, std::span<const std::int32_t> after,
              std::span<const std::int32_t> lineFrom, std::span<const std::int32_t> lineTo);
   double used(const SimMachine& machine, vm::Micros t);
+  void partWay(std::span<const std::int32_t> from, std::span<const std::int32_t> to, std::int64_t k,
+               std::int64_t steps);
 
   workcell::CollisionModel model_;
   workcell::CollisionData data_;
@@ -108,6 +113,7 @@ class CollisionWatch {
   std::vector<std::uint64_t> key_;         // scratch: this move's key
   std::vector<Eigen::Isometry3d> poses_;   // scratch: every object's resting pose
   std::vector<std::int32_t> at_, probe_;   // scratch: motors at the last check, at a time tried
+  std::vector<std::int32_t> next_;         // scratch: motors at the microsecond after the last check's
   std::uint64_t checks_ = 0, moves_ = 0, remembered_ = 0;
 };
 

@@ -154,7 +154,7 @@ TEST_CASE("expectations: every way a run ends is read by its words in vm/stop_re
     CHECK(p.expectations[1].line == 3);
     CHECK(doc.find("expect: " + words) != std::string::npos);
   }
-  CHECK(ends == 6);
+  CHECK(ends == 7);
   // The list of subjects a bad line is told, as it read before the words
   // came from the table (written here by hand).
   const auto bad = parse("; expect: teleport\n");

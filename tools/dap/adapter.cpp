@@ -225,6 +225,12 @@ Adapter::Reply Adapter::launch(const Json& args) {
       return Error{"maxSteps is a whole number of instructions from 1 (as --max-steps)"};
     run.maxSteps = n.get<std::uint64_t>();
   }
+  if (args.contains("maxKnots")) {
+    const Json& n = args["maxKnots"];
+    if (!n.is_number_unsigned() || n.get<std::uint64_t>() == 0 || n.get<std::uint64_t>() > (std::uint64_t{1} << 62))
+      return Error{"maxKnots is a whole number of straight-line knots from 1 (as --max-knots)"};
+    run.maxKnots = n.get<std::uint64_t>();
+  }
   // Seconds as --max-time reads them: a string as written, a whole number
   // as its digits, any other number with the six decimals it may have.
   if (const Json& t = args.value("maxTime", Json()); t.is_string()) run.maxTime = t.get<std::string>();

@@ -50,7 +50,8 @@ class DebugSession::Probe {
 DebugSession::DebugSession(runtime::RunSpec spec, SessionOptions options) {
   spec.log = false;
   run_ = std::make_unique<runtime::Run>(std::move(spec));
-  timeline_ = std::make_unique<Timeline>(*run_, options.snapshotInterval, options.snapshotBudget);
+  timeline_ = std::make_unique<Timeline>(*run_, options.snapshotInterval, options.snapshotBudget,
+                                         options.snapshotKnots);
   stop_ = {StopReason::Entry, "at the start of the run", {}};
 }
 

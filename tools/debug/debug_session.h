@@ -49,6 +49,7 @@ struct Stop {
 struct SessionOptions {
   std::uint64_t snapshotInterval = kDefaultSnapshotInterval;
   std::size_t snapshotBudget = kDefaultSnapshotBudget;
+  std::uint64_t snapshotKnots = kDefaultSnapshotKnots;
 };
 
 class DebugSession {

@@ -28,9 +28,10 @@ using words::wordsOf;
 // The stops an expectation names, in the order its error lists them: every
 // reason that ends a run (a new one fails to compile until it is here),
 // each said with the run's words of vm/stop_reason.h's table.
-constexpr std::array kStatusReasons{vm::StopReason::End,       vm::StopReason::Deadlock,
-                                    vm::StopReason::StepLimit, vm::StopReason::TimeLimit,
-                                    vm::StopReason::InstantLimit, vm::StopReason::RuntimeError};
+constexpr std::array kStatusReasons{vm::StopReason::End,          vm::StopReason::Deadlock,
+                                    vm::StopReason::StepLimit,    vm::StopReason::TimeLimit,
+                                    vm::StopReason::InstantLimit, vm::StopReason::KnotLimit,
+                                    vm::StopReason::RuntimeError};
 constexpr bool namesEveryEnd() {
   for (int r = 0; vm::isOver(static_cast<vm::StopReason>(r)); ++r)
     if (std::find(kStatusReasons.begin(), kStatusReasons.end(), static_cast<vm::StopReason>(r)) == kStatusReasons.end())
@@ -258,7 +259,7 @@ bool expectation(LineReader& r, Expectation& e) {
 
 bool setting(LineReader& r, TestSettings& s) {
   const Word* first = r.peek();
-  if (!first) return r.fail("expected a setting: cell, stimuli, input, max-time or max-steps");
+  if (!first) return r.fail("expected a setting: cell, stimuli, input, max-time, max-steps or max-knots");
   const auto value = [&](std::string_view what, std::string& into) {
     const std::optional<Word> w = r.take(what);
     if (!w) return false;
@@ -280,7 +281,14 @@ bool setting(LineReader& r, TestSettings& s) {
     s.maxSteps = static_cast<std::uint64_t>(n);
     return r.end();
   }
-  return r.fail(fmt::format("unknown setting '{}': cell, stimuli, input, max-time or max-steps", first->text));
+  if (r.accept("max-knots")) {
+    std::int64_t n = 0;
+    if (!r.integer("a number of straight-line knots", n, 1, std::int64_t{1} << 62)) return false;
+    s.maxKnots = static_cast<std::uint64_t>(n);
+    return r.end();
+  }
+  return r.fail(
+      fmt::format("unknown setting '{}': cell, stimuli, input, max-time, max-steps or max-knots", first->text));
 }
 
 }  // namespace

@@ -99,6 +99,7 @@ struct TestSettings {
   std::vector<std::string> inputs;  ///< N=ON@T
   std::string maxTime;              ///< seconds, as written
   std::optional<std::uint64_t> maxSteps;
+  std::optional<std::uint64_t> maxKnots;
 };
 
 struct ParsedExpectations {

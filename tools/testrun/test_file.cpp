@@ -238,6 +238,12 @@ void hintLimit(const vm::RunOutcome& outcome, const TestSettings& settings, bool
     hint = fmt::format("grading stops a run at {} simulated seconds; a scenario that needs longer says 'test: "
                        "max-time SECONDS'",
                        kGradingMaxSeconds);
+  else if (grading && outcome.reason == vm::StopReason::KnotLimit && !settings.maxKnots)
+    hint = fmt::format("grading stops a run after {} knots of straight lines (MOVES, APPRO, DEPART); a scenario that "
+                       "needs more says 'test: max-knots N'",
+                       kGradingMaxKnots);
+  else if (outcome.reason == vm::StopReason::KnotLimit)
+    hint = "allow more with 'test: max-knots N'";
   if (hint.empty()) return;
   for (diag::Diagnostic& d : r.problems)
     if (d.hint.empty() && d.message.find(vm::stopReasonName(outcome.reason)) != std::string::npos) d.hint = hint;
@@ -283,7 +289,9 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   run.inputs = parsed.settings.inputs;
   run.maxSteps = parsed.settings.maxSteps;
   run.maxTime = parsed.settings.maxTime;
+  run.maxKnots = parsed.settings.maxKnots;
   if (grading && !run.maxSteps) run.maxSteps = kGradingMaxSteps;
+  if (grading && !run.maxKnots) run.maxKnots = kGradingMaxKnots;
   if (grading && run.maxTime.empty()) run.maxTime = std::to_string(kGradingMaxSeconds);
   run.collisions = options.collisions;
   // A test that expects a collision lets the run go on past it.
