@@ -19,7 +19,7 @@
 #include "model/workcell/line_path.h"
 #include "tests/cli/cli_support.h"
 #include "tools/dap/serve.h"
-#include "tools/debug/session.h"
+#include "tools/debug/debug_session.h"
 #include "tools/wire/framing.h"
 #include "tools/wire/json.h"
 
@@ -59,17 +59,17 @@ std::string dapWorkRequest(int seq, const std::string& command, Json arguments) 
       Json{{"seq", seq}, {"type", "request"}, {"command", command}, {"arguments", std::move(arguments)}}.dump());
 }
 
-struct Served {
+struct WorkServed {
   std::vector<Json> messages;
   int code = -1;
 };
 
-Served dapWorkServe(const std::string& bytes) {
+WorkServed dapWorkServe(const std::string& bytes) {
   std::istringstream in(bytes);
   std::ostringstream out, log;
   rs::wire::StreamInput input(in);
   rs::wire::StreamOutput output(out);
-  Served s;
+  WorkServed s;
   s.code = rs::dap::serve(input, output, log);
   for (const rs::wire::Frame& f : rs::wire::parseFrames(out.str())) s.messages.push_back(Json::parse(f.body));
   return s;
@@ -119,7 +119,7 @@ END
 TEST_CASE("a reverse step on a loop of MOVES re-runs at most W knots and one line", "[debug][straight]") {
   Loop loop = xr4Loop();
   loop.spec.limits.maxTime = rs::vm::Micros{1'000'000} * 1'000'000;
-  rs::debug::Session session(loop.spec);
+  rs::debug::DebugSession session(loop.spec);
   const rs::runtime::CollisionWatch* watch = session.run().rig().collisionWatch();
   REQUIRE(watch);
   session.step(3000);  // about 2,000 lines
@@ -145,7 +145,7 @@ TEST_CASE("dap: pause on a loop of MOVES is answered after a slice of W knots, n
   const rs::testing::TempDir dir;
   const std::string program = dir.write("loop.rsp", "; cell: xr4-cell\n" + kLoop);
   const Loop loop = xr4Loop();
-  const Served s = dapWorkServe(
+  const WorkServed s = dapWorkServe(
       dapWorkRequest(1, "initialize", {{"adapterID", "robotsim"}}) +
       dapWorkRequest(2, "launch", {{"program", program}, {"maxTime", 1000000}}) +
       dapWorkRequest(3, "configurationDone", Json::object()) + dapWorkRequest(4, "pause", {{"threadId", 1}}) +
@@ -181,7 +181,7 @@ TEST_CASE("dap: pause and disconnect are answered after the 65,536-knot line und
   const std::string start = dapWorkRequest(1, "initialize", {{"adapterID", "robotsim"}}) +
                             dapWorkRequest(2, "launch", {{"program", program}, {"maxTime", 1000000}}) +
                             dapWorkRequest(3, "configurationDone", Json::object());
-  const Served paused = dapWorkServe(start + dapWorkRequest(4, "pause", {{"threadId", 1}}) +
+  const WorkServed paused = dapWorkServe(start + dapWorkRequest(4, "pause", {{"threadId", 1}}) +
                                      dapWorkRequest(5, "variables", {{"variablesReference", 5}}) +
                                      dapWorkRequest(6, "disconnect", Json::object()));
   CHECK(paused.code == 0);
@@ -189,7 +189,7 @@ TEST_CASE("dap: pause and disconnect are answered after the 65,536-knot line und
   const std::uint64_t steps = stepsShown(paused.messages, 5);
   CHECK(steps >= 2);
   CHECK(steps <= 3);
-  const Served gone = dapWorkServe(start + dapWorkRequest(4, "disconnect", Json::object()));
+  const WorkServed gone = dapWorkServe(start + dapWorkRequest(4, "disconnect", Json::object()));
   CHECK(gone.code == 0);
   CHECK(dapWorkResponse(gone.messages, 4));
 }
