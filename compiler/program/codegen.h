@@ -23,6 +23,10 @@ struct Target {
   /// The robot as placed in the cell, when it has a kinematic model: points
   /// written as tool poses are resolved with it (none: they are refused).
   std::shared_ptr<const workcell::PlacedRobot> robot = nullptr;
+  /// A library workcell whose robot has exactly these motors and a
+  /// kinematic model, named by the hints of what needs one ("": none known,
+  /// and the hints name none).
+  std::string cellHint = {};
 };
 
 /// The record of `in`; its motor vector or triple is appended to `constants`.

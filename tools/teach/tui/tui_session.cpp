@@ -104,8 +104,13 @@ bool Session::press(std::string_view key) {
       if (const auto name = selectedPoint()) pendant_.goTo(*name);
       break;
     case KeyAction::Reteach:
-      if (const auto name = selectedPoint())
-        ask(Asking::ConfirmReteach, fmt::format("re-teach {} with the current pose? (y/n) ", *name));
+      if (const auto name = selectedPoint()) {
+        if (now.points[selection_.point].pose)
+          ask(Asking::ReteachAs,
+              fmt::format("re-teach {}: p as a pose (AT ...), c as counts, any other key cancels ", *name));
+        else
+          ask(Asking::ConfirmReteach, fmt::format("re-teach {} with the current pose? (y/n) ", *name));
+      }
       break;
     case KeyAction::Delete:
       if (const auto name = selectedPoint()) ask(Asking::ConfirmDelete, fmt::format("delete {}? (y/n) ", *name));
@@ -134,13 +139,15 @@ bool Session::press(std::string_view key) {
 bool Session::answer(std::string_view key) {
   const Asking what = asking_;
   const bool confirm = what == Asking::ConfirmReteach || what == Asking::ConfirmDelete || what == Asking::ConfirmReset;
-  if (key == "Escape" || key == "\x03" || key == "\x07" || (confirm && !isYes(key))) {
+  const bool poseOrCounts = what == Asking::ReteachAs && (key == "p" || key == "c");
+  if (key == "Escape" || key == "\x03" || key == "\x07" || (confirm && !isYes(key)) ||
+      (what == Asking::ReteachAs && !poseOrCounts)) {
     asking_ = Asking::Nothing;
     prompt_ = {};
     note_ = "cancelled";
     return true;
   }
-  if (confirm || ((what == Asking::InputLine || what == Asking::OutputLine) && key.size() == 1)) {
+  if (confirm || poseOrCounts || ((what == Asking::InputLine || what == Asking::OutputLine) && key.size() == 1)) {
     asking_ = Asking::Nothing;
     prompt_ = {};
     finish(what, std::string(key));
@@ -175,6 +182,10 @@ void Session::finish(Asking what, const std::string& text) {
       break;
     case Asking::ConfirmReteach:
       if (const auto name = selectedPoint()) pendant_.reteach(*name);
+      break;
+    case Asking::ReteachAs:
+      if (const auto name = selectedPoint())
+        pendant_.reteach(*name, text == "p" ? Pendant::Reteach::Pose : Pendant::Reteach::Counts);
       break;
     case Asking::ConfirmDelete:
       if (const auto name = selectedPoint()) pendant_.remove(*name);
