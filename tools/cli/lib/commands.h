@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tools/cli/lib/convert_command.h"
 #include "tools/cli/lib/debug_command.h"
 #include "tools/cli/lib/ik_command.h"
 #include "tools/cli/lib/list_command.h"
@@ -38,6 +39,7 @@ struct CommandValues {
   ProgramCommandOptions program;
   RobotQuery robot;
   IkOptions ik;
+  ConvertOptions convert;
   ListOptions list;
   PortsOptions ports;
   EmulateOptions emulate;

@@ -1,8 +1,8 @@
-#include "runtime/render/palette.h"
+#include "model/workcell/ega_palette.h"
 
-namespace rs::render {
+namespace rs::workcell {
 
-std::string_view colorName(workcell::Color c) {
+std::string_view colorName(Color c) {
   static constexpr std::array<std::string_view, 16> kNames = {
       "BLACK",    "BLUE",      "GREEN",      "CYAN",      "RED",      "MAGENTA",      "BROWN",  "LIGHTGRAY",
       "DARKGRAY", "LIGHTBLUE", "LIGHTGREEN", "LIGHTCYAN", "LIGHTRED", "LIGHTMAGENTA", "YELLOW", "WHITE",
@@ -10,4 +10,4 @@ std::string_view colorName(workcell::Color c) {
   return kNames[static_cast<std::size_t>(c) & 15];
 }
 
-}  // namespace rs::render
+}  // namespace rs::workcell
