@@ -104,14 +104,17 @@ std::optional<workcell::Robot> Library::urdfRobot(const fs::path& path) {
   std::error_code ec;
   const std::string key = fs::weakly_canonical(path, ec).string();
   if (auto it = urdfRobots_.find(key); it != urdfRobots_.end()) return it->second;
-  urdf::UrdfRead read = urdf::readUrdfInHelper(path, urdfOptions_);
+  const auto open = overlay_.find(key);  // an editor's unsaved text
+  urdf::UrdfRead read = urdf::readUrdfInHelper(path, urdfOptions_, open == overlay_.end() ? nullptr : &open->second);
   bool positioned = false;
   for (diag::Diagnostic& d : read.diagnostics) {
     positioned = positioned || d.pos.line > 0;
     diagnostics_.push_back(std::move(d));
   }
   if (positioned) {
-    diag::Result<std::string> text = diag::readInput(path.string(), urdf::kMaxUrdfBytes, "cannot read URDF file");
+    diag::Result<std::string> text = open != overlay_.end()
+                                         ? diag::Result<std::string>(open->second)
+                                         : diag::readInput(path.string(), urdf::kMaxUrdfBytes, "cannot read URDF file");
     if (text) urdfSources_.push_back(std::make_unique<diag::SourceFile>(path.string(), std::move(*text)));
   }
   return urdfRobots_[key] = std::move(read.robot);

@@ -46,7 +46,7 @@ std::vector<fs::path> urdfHelperCandidates() {
           (dir / "../libexec/robotsim" / file).lexically_normal()};
 }
 
-UrdfRead readUrdfInHelper(const fs::path& path, const UrdfOptions& options) {
+UrdfRead readUrdfInHelper(const fs::path& path, const UrdfOptions& options, const std::string* text) {
   fs::path helper;
   for (const fs::path& candidate : urdfHelperCandidates()) {
     std::error_code ec;
@@ -60,19 +60,34 @@ UrdfRead readUrdfInHelper(const fs::path& path, const UrdfOptions& options) {
                   "reinstall robotsim; in a build tree, `cmake --build BUILD --target robotsim` builds it");
   std::vector<std::string> args{helper.string(), "read", path.string(), "--precision", fmt::format("{}", options.precision)};
   if (!options.tip.empty()) args.insert(args.end(), {"--tip", options.tip});
+  if (text) args.push_back("--stdin");
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
-  int fds[2];
-  if (::pipe2(fds, O_CLOEXEC) != 0) return failed(path, fmt::format("cannot run robotsim-urdf: {}", std::strerror(errno)), "");
+  int fds[2], in[2] = {-1, -1};
+  if (::pipe2(fds, O_CLOEXEC) != 0 || (text && ::pipe2(in, O_CLOEXEC) != 0))
+    return failed(path, fmt::format("cannot run robotsim-urdf: {}", std::strerror(errno)), "");
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  if (text) posix_spawn_file_actions_adddup2(&actions, in[0], STDIN_FILENO);
+  else posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   pid_t pid = 0;
   const int spawned = ::posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   ::close(fds[1]);
+  if (text) {
+    // The helper reads all of its input before it writes: write it all, then read.
+    ::close(in[0]);
+    if (spawned == 0)
+      for (std::size_t done = 0; done < text->size();) {
+        const ssize_t put = ::write(in[1], text->data() + done, text->size() - done);
+        if (put < 0 && errno == EINTR) continue;
+        if (put <= 0) break;
+        done += static_cast<std::size_t>(put);
+      }
+    ::close(in[1]);
+  }
   if (spawned != 0) {
     ::close(fds[0]);
     return failed(path, fmt::format("cannot run {}: {}", helper.string(), std::strerror(spawned)), "reinstall robotsim");

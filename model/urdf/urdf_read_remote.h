@@ -19,7 +19,9 @@ namespace rs::urdf {
 /// (BUILD/libexec/robotsim, also from BUILD/tests and BUILD/bench).
 std::vector<std::filesystem::path> urdfHelperCandidates();
 
-/// readUrdfFile, done by robotsim-urdf.
-UrdfRead readUrdfInHelper(const std::filesystem::path& path, const UrdfOptions& options);
+/// readUrdfFile, done by robotsim-urdf; with `text`, that text is read as
+/// the file's (an editor's unsaved buffer), `path` naming it.
+UrdfRead readUrdfInHelper(const std::filesystem::path& path, const UrdfOptions& options,
+                          const std::string* text = nullptr);
 
 }  // namespace rs::urdf

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
 #include "model/kinematics/chain_model.h"
 
 namespace rs::urdf {

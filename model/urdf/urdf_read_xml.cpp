@@ -2,6 +2,7 @@
 
 #include <tinyxml2.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <fmt/format.h>

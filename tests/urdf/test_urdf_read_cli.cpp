@@ -107,3 +107,34 @@ TEST_CASE("urdf cli: a bad URDF file is a positioned error, exit 2", "[urdf]") {
   CHECK(r.code == 2);
   CHECK(r.err.find(data("unknown_type.urdf") + ":4:3: error: joint 'hinge' has unknown type 'screw'") != std::string::npos);
 }
+
+TEST_CASE("urdf cli: run a program on a URDF cell; render it; list shows URDF files on the library path", "[urdf]") {
+  rs::testing::TempDir dir;
+  const std::string program = dir.write("p.rsp", "        MOVETO 1000 2000 0 0\n        END\n");
+  const auto run = runCli({"run", program, "--cell", data("scara.urdf")});
+  INFO(run.err);
+  CHECK(run.code == 0);
+  // Four motors: the SCARA's (A B C D), as the URDF's four moving joints.
+  CHECK(run.out.find("A=1000") != std::string::npos);
+  const auto wrong = runCli({"run", dir.write("q.rsp", "        MOVETO 1 2 3\n        END\n"), "--cell", data("scara.urdf")});
+  CHECK(wrong.code == 2);
+  std::filesystem::create_directories(dir.path() / "lib" / "robots");
+  std::filesystem::copy_file(data("mixed_arm.urdf"), dir.path() / "lib" / "robots" / "mixed_arm.urdf");
+  const auto list = runCli({"list", "--lib", (dir.path() / "lib").string()});
+  INFO(list.err);
+  REQUIRE(list.code == 0);
+  CHECK(list.out.find("mixed_arm.urdf") != std::string::npos);
+  CHECK(list.out.find("a URDF file, robot mixed_arm.") != std::string::npos);
+  // The name list gives finds the file.
+  CHECK(runCli({"table", "mixed_arm.urdf", "--lib", (dir.path() / "lib").string()}).code == 0);
+}
+
+TEST_CASE("urdf cli: ik uses a closed form where the URDF arm is one of the families, else says none applies", "[urdf]") {
+  const auto scara = runCli({"ik", data("scara.urdf"), "--frame", "robot", "--", "526.8", "300", "-176.8"});
+  INFO(scara.err);
+  CHECK(scara.code == 0);
+  CHECK(scara.out.find("POINTS") != std::string::npos);
+  const auto ur5 = runCli({"ik", data("ur5_dh.urdf"), "--frame", "robot", "--", "-600", "100", "200"});
+  CHECK(ur5.code == 2);
+  CHECK(ur5.err.find("no closed-form inverse kinematics applies") != std::string::npos);
+}

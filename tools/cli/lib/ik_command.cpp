@@ -104,10 +104,8 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
   // "Reading URDF").
   if (placed.robot.urdf && solver.ik().family() == kinematics::IkFamily::Numeric) {
     err << fmt::format("robotsim: error: no closed-form inverse kinematics applies to {}: its D-H table is none of "
-                       "the families cartesian, scara, articulated-5, articulated-6, spherical-6
-"
-                       "  hint: robotsim table {} shows the table; docs/models.md, "Inverse kinematics", the families
-",
+                       "the families cartesian, scara, articulated-5, articulated-6, spherical-6\n"
+                       "  hint: robotsim table {} shows the table; docs/models.md, \"Inverse kinematics\", the families\n",
                        base::safeText(placed.robot.name), base::safeText(o.target));
     return kExitBadInput;
   }

@@ -115,19 +115,15 @@ std::string_view rowCase(const kinematics::DhRow& r) {
 // from, and the base and tool transforms the rows do not hold.
 void urdfTableText(const workcell::Robot& robot, std::ostream& out) {
   const workcell::UrdfSource& u = *robot.urdf;
-  out << fmt::format("from URDF file {}, chain from link {} to link {} (design coordinates: mm, y up)
-",
+  out << fmt::format("from URDF file {}, chain from link {} to link {} (design coordinates: mm, y up)\n",
                      base::safeText(u.file), base::safeText(u.rootLink), base::safeText(u.tipLink));
-  out << "BASE: frame 0 in the root link's frame (turned to y up):
-" << matrixText(robot.frames.front());
-  out << fmt::format("TOOL: the tip link's frame in frame {}{}:
-", robot.chain->size(),
+  out << "BASE: frame 0 in the root link's frame (turned to y up):\n" << matrixText(robot.frames.front());
+  out << fmt::format("TOOL: the tip link's frame in frame {}{}:\n", robot.chain->size(),
                      robot.chain->hasTool() ? "" : " (the tip is frame n itself)");
   out << matrixText(robot.chain->F_n_tool());
   out << "D-H choices: frame 0 on joint 1's axis at the foot of the root's origin; parallel axes take the common "
          "normal through the frame before (d = 0); intersecting axes x = z(i-1) x z(i); skew and parallel axes "
-         "a > 0; collinear axes keep x (docs/models.md, "Reading URDF")
-";
+         "a > 0; collinear axes keep x (docs/models.md, \"Reading URDF\")\n";
 }
 
 }  // namespace
@@ -173,7 +169,7 @@ int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     j["rows"] = list;
     if (robot->urdf) {
       j["urdf"] = {{"file", robot->urdf->file}, {"root", robot->urdf->rootLink}, {"tip", robot->urdf->tipLink}};
-      for (std::size_t i = 0; i < rows.size(); ++i) j["rows"][i]["case"] = rowCase(rows[i]);
+      for (std::size_t i = 0; i < rows.size(); ++i) j["rows"][i]["case"] = std::string(rowCase(rows[i]));
     }
     if (robot->urdf || robot->chain->hasTool()) {
       j["base"] = matrixJson(robot->frames.front());
