@@ -138,3 +138,22 @@ TEST_CASE("urdf cli: ik uses a closed form where the URDF arm is one of the fami
   CHECK(ur5.code == 2);
   CHECK(ur5.err.find("no closed-form inverse kinematics applies") != std::string::npos);
 }
+
+TEST_CASE("urdf cli: an image compiled for a URDF cell carries its tool frame", "[urdf]") {
+  rs::testing::TempDir dir;
+  const std::string program = dir.write("p.rsp", "        MOVETO 100 200 300\n        END\n");
+  const std::string image = (dir.path() / "p.rsb").string();
+  const auto compiled = runCli({"compile", program, "--cell", data("mixed_arm.urdf"), "-o", image});
+  INFO(compiled.err);
+  REQUIRE(compiled.code == 0);
+  // The same tool centre point from the image (its cell section, version 2)
+  // as from the URDF file.
+  const auto fromImage = runCli({"run", image, "--format=json"});
+  const auto fromUrdf = runCli({"run", program, "--cell", data("mixed_arm.urdf"), "--format=json"});
+  INFO(fromImage.err);
+  REQUIRE(fromImage.code == 0);
+  REQUIRE(fromUrdf.code == 0);
+  const Json a = Json::parse(fromImage.out), b = Json::parse(fromUrdf.out);
+  REQUIRE(a.contains("tcp"));
+  CHECK(a["tcp"] == b["tcp"]);
+}
