@@ -4,6 +4,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include <cmath>
+#include <system_error>
 #include <fmt/format.h>
 
 #include "diag/read_input.h"
@@ -208,6 +209,15 @@ UrdfRead readUrdfText(std::string_view text, const std::string& file, const Urdf
 }
 
 UrdfRead readUrdfFile(const fs::path& path, const UrdfOptions& options) {
+  // A FIFO or a device is refused before it is opened: opening one waits.
+  std::error_code ec;
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
+    UrdfRead out;
+    out.diagnostics.push_back({path.string(), {}, diag::Severity::Error,
+                               "cannot read URDF file: not a regular file (a folder, FIFO or device)", "urdf-not-urdf",
+                               "name a .urdf file"});
+    return out;
+  }
   diag::Result<std::string> text = diag::readInput(path.string(), kMaxUrdfBytes, "cannot read URDF file");
   if (!text) return UrdfRead{std::nullopt, text.failures()};
   return readUrdfText(*text, path.string(), options);
