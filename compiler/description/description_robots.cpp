@@ -129,7 +129,7 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
     const diag::Pos at = c.pos();
     if (!c.keyword(kw)) continue;
     if (r.links.empty() && robotItem_ != Item::Tool) {
-      diag_.error(at, fmt::format("{} before any LINK: a frame belongs to the LINK (or TOOL) before it", kw));
+      diag_.error(at, fmt::format("{} before any LINK: a frame belongs to the LINK before it", kw));
       return false;
     }
     RobotLinkDef& owner = robotItem_ == Item::Tool ? *r.tool : r.links.back();

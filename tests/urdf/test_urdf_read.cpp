@@ -113,7 +113,7 @@ TEST_CASE("urdf read: the derived rows reproduce the URDF's forward kinematics a
   checkFk("ur5_dh.urdf");
 }
 
-TEST_CASE("urdf read: continuous, skew, fixed-between and prismatic joints; a tip that is a tool frame", "[urdf]") {
+TEST_CASE("urdf read: continuous, skew, fixed-between and prismatic joints - a tip that is a tool frame", "[urdf]") {
   const rs::urdf::UrdfRead read = readData("mixed_arm.urdf");
   REQUIRE(read.robot);
   const auto& joints = read.robot->joints;
@@ -183,7 +183,7 @@ TEST_CASE("urdf read: a branching tree needs --tip, which names the chain's end"
   CHECK(read.diagnostics[0].message.find("'to_left'") != std::string::npos);
 }
 
-TEST_CASE("urdf read: meshes by their feature edges; a missing mesh draws the link's frame, with a warning", "[urdf]") {
+TEST_CASE("urdf read: meshes by their feature edges - a missing mesh draws the link's frame, with a warning", "[urdf]") {
   const rs::urdf::UrdfRead read = readData("meshes.urdf");
   REQUIRE(read.robot);
   // The cube: 12 triangles, but only its 12 edges fold by more than 30 degrees.

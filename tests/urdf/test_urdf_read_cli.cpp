@@ -108,7 +108,7 @@ TEST_CASE("urdf cli: a bad URDF file is a positioned error, exit 2", "[urdf]") {
   CHECK(r.err.find(data("unknown_type.urdf") + ":4:3: error: joint 'hinge' has unknown type 'screw'") != std::string::npos);
 }
 
-TEST_CASE("urdf cli: run a program on a URDF cell; render it; list shows URDF files on the library path", "[urdf]") {
+TEST_CASE("urdf cli: run a program on a URDF cell - render it - list shows URDF files on the library path", "[urdf]") {
   rs::testing::TempDir dir;
   const std::string program = dir.write("p.rsp", "        MOVETO 1000 2000 0 0\n        END\n");
   const auto run = runCli({"run", program, "--cell", data("scara.urdf")});
@@ -118,6 +118,12 @@ TEST_CASE("urdf cli: run a program on a URDF cell; render it; list shows URDF fi
   CHECK(run.out.find("A=1000") != std::string::npos);
   const auto wrong = runCli({"run", dir.write("q.rsp", "        MOVETO 1 2 3\n        END\n"), "--cell", data("scara.urdf")});
   CHECK(wrong.code == 2);
+  // A picture of it: its links' lines (a box, a cylinder, a sphere) drawn.
+  const std::string svg = (dir.path() / "arm.svg").string();
+  const auto render = runCli({"render", data("mixed_arm.urdf"), "-o", svg});
+  INFO(render.err);
+  CHECK(render.code == 0);
+  CHECK(rs::testing::readBytes(svg).find("<path") != std::string::npos);
   std::filesystem::create_directories(dir.path() / "lib" / "robots");
   std::filesystem::copy_file(data("mixed_arm.urdf"), dir.path() / "lib" / "robots" / "mixed_arm.urdf");
   const auto list = runCli({"list", "--lib", (dir.path() / "lib").string()});

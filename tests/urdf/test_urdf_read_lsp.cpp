@@ -34,7 +34,7 @@ TEST_CASE("urdf lsp: an open URDF file's diagnostics come from the URDF reader a
   CHECK(s.diagnostics(uri) == Json::array());
 }
 
-TEST_CASE("urdf lsp: a program's cell may be a URDF file; hover on its name shows the D-H table", "[urdf][lsp]") {
+TEST_CASE("urdf lsp: a program's cell may be a URDF file - hover on its name shows the D-H table", "[urdf][lsp]") {
   rs::testing::TempDir dir;
   std::filesystem::copy_file(urdftest::dataRead("ur5_dh.urdf"), dir.path() / "ur5_dh.urdf");
   const std::string program = "; cell: ur5_dh.urdf\n        MOVETO 0 0 0 0 0 0\n        END\n";

@@ -73,7 +73,7 @@ TEST_CASE("urdf tool: a description's TOOL is the tool centre point, in forward 
   CHECK((rs::kinematics::toolPose(chain, data).translation() - tool.translation()).norm() < 1e-6);
 }
 
-TEST_CASE("urdf tool: TOOL and GRIPPER exclude each other; TOOL needs its three points", "[urdf]") {
+TEST_CASE("urdf tool: TOOL and GRIPPER exclude each other - TOOL needs its three points", "[urdf]") {
   rs::testing::TempDir dir;
   std::string text = kToolRobot;
   text.replace(text.find("  TOOL ORIGIN 550 30 0  XAXIS 550 30 -100  ZAXIS 650 30 0"),
