@@ -127,7 +127,7 @@ UrdfChain extractChain(const ::urdf::ModelInterface& model, const std::string& t
   movingAbove[root->name] = 0;
   bool numbersOk = true;
   for (std::size_t k = 0; k < order.size(); ++k) {
-    const LinkConstSharedPtr& link = order[k];
+    const LinkConstSharedPtr link = order[k];  // a copy: order grows below
     for (const auto& j : link->child_joints) {
       if (!j) continue;
       if (!checkJoint(*j, chain.problems)) {

@@ -127,7 +127,51 @@ XmlIndex::XmlIndex(std::string_view text, const std::string& file, std::vector<d
       links_.emplace(n, pos);
     }
   }
+  // Links that are two joints' child, and loops, are found here: urdfdom
+  // would report them without a line (and, for a loop, keep the links it
+  // read alive in a cycle of shared pointers: a leak).
+  if (ok) ok = treeChecks(root, file, out);
   ok_ = ok;
+}
+
+bool XmlIndex::treeChecks(const tinyxml2::XMLElement* root, const std::string& file, std::vector<diag::Diagnostic>& out) {
+  struct Edge {
+    std::string joint, parent;
+    diag::Pos pos;
+  };
+  std::map<std::string, Edge> parentOf;  // by child link
+  for (const XMLElement* e = root->FirstChildElement("joint"); e; e = e->NextSiblingElement("joint")) {
+    const XMLElement* parent = e->FirstChildElement("parent");
+    const XMLElement* child = e->FirstChildElement("child");
+    const char* name = e->Attribute("name");
+    const char* p = parent ? parent->Attribute("link") : nullptr;
+    const char* c = child ? child->Attribute("link") : nullptr;
+    if (!name || !p || !c) continue;  // urdfdom says what is missing
+    const diag::Pos pos = at(e->GetLineNum(), "joint");
+    if (const auto seen = parentOf.find(c); seen != parentOf.end()) {
+      out.push_back({file, pos, diag::Severity::Error,
+                     fmt::format("link '{}' is the child of joints '{}' and '{}'", c, seen->second.joint, name),
+                     "urdf-invalid", "a URDF is a tree: a link is the child of one joint only"});
+      return false;
+    }
+    parentOf.emplace(c, Edge{name, p, pos});
+  }
+  // Up from every link: a walk longer than the number of joints is a loop.
+  for (const auto& [start, edge] : parentOf) {
+    std::string link = start;
+    for (std::size_t steps = 0; steps <= parentOf.size(); ++steps) {
+      const auto up = parentOf.find(link);
+      if (up == parentOf.end()) break;
+      link = up->second.parent;
+      if (link == start) {
+        out.push_back({file, edge.pos, diag::Severity::Error,
+                       fmt::format("the joints make a loop: joint '{}' leads back to link '{}'", edge.joint, start),
+                       "urdf-invalid", "a URDF is a tree: one root link, no joint leading back to a link above it"});
+        return false;
+      }
+    }
+  }
+  return true;
 }
 
 diag::Pos XmlIndex::joint(const std::string& name) const {

@@ -13,6 +13,10 @@
 
 #include "diag/diagnostic.h"
 
+namespace tinyxml2 {
+class XMLElement;
+}
+
 namespace rs::urdf {
 
 class XmlIndex {
@@ -33,6 +37,7 @@ class XmlIndex {
 
  private:
   diag::Pos at(int line, std::string_view element) const;
+  bool treeChecks(const tinyxml2::XMLElement* root, const std::string& file, std::vector<diag::Diagnostic>& out);
   std::string_view text_;
   std::map<std::string, diag::Pos> joints_, links_;
   diag::Pos robot_{1, 1};

@@ -25,7 +25,7 @@ TEST_CASE("urdf read bad: a positioned error with a hint for each kind of bad fi
       {"bad_xml.urdf", 2, 1, "not well-formed XML"},
       {"xacro.urdf", 2, 1, "run xacro first"},
       {"unknown_type.urdf", 4, 3, "unknown type 'screw'"},
-      {"loop.urdf", 1, 1, "No root link"},
+      {"loop.urdf", 5, 3, "the joints make a loop: joint 'ba' leads back to link 'a'"},
       {"two_roots.urdf", 2, 3, "Two root links"},
       {"missing_parent.urdf", 5, 3, "parent link [nowhere]"},
       {"zero_axis.urdf", 4, 3, "axis of zero length"},
