@@ -73,3 +73,17 @@ TEST_CASE("urdf read bad: a FIFO is refused, not waited on", "[urdf]") {
   CHECK_FALSE(read.robot);
   CHECK(read.diagnostics.size() == 1);
 }
+
+TEST_CASE("urdf read bad: a link that is two joints' child is an error at the second joint", "[urdf]") {
+  const std::string text = R"(<robot name="r">
+  <link name="a"/><link name="b"/>
+  <joint name="one" type="fixed"><parent link="a"/><child link="b"/></joint>
+  <joint name="two" type="fixed"><parent link="a"/><child link="b"/></joint>
+</robot>
+)";
+  const rs::urdf::UrdfRead read = rs::urdf::readUrdfText(text, "two_parents.urdf", {});
+  CHECK_FALSE(read.robot);
+  REQUIRE(read.diagnostics.size() == 1);
+  CHECK(read.diagnostics[0].pos == rs::diag::Pos{4, 3});
+  CHECK(read.diagnostics[0].message == "link 'b' is the child of joints 'one' and 'two'");
+}
