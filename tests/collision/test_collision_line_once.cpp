@@ -3,12 +3,12 @@
 // APPRO was reported once per knot (18 warnings for one instruction).
 //
 // xr4-cell's front block stands at x 220..260, y 780..820, z -60..-20. With
-// the gripper closed (GRIP 115) the fingers reach 20 below the tool centre
-// point and meet in the middle, so APPRO 40 from 870, pointing down over
-// the block's middle, drives them into its top three quarters of the way
-// (tool centre point 840) and keeps them in it for every knot after, to
-// 830: above the block, so the gripper is not let overlap it as it is
-// where the line ends in the block it will grip. DEPART 40 starts in it.
+// the gripper closed (GRIP 115) the fingers meet under the tool centre
+// point, so APPRO 45 from 870, pointing down over the block's middle,
+// drives them into its top near the end of the line and keeps them in it
+// for every knot after, down to 825: above the block, so the gripper is not
+// let overlap it as it is where a line ends in the block it will grip.
+// Before, that was 16 warnings for the one APPRO. DEPART 45 starts in it.
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
@@ -19,8 +19,8 @@ namespace {
 
 constexpr const char* kClosedApproach =
     "        MOVEP ABOVE             ; closed, 60 above the grasp\n"
-    "        APPRO 40                ; down into the block's top\n"
-    "        DEPART 40\n"
+    "        APPRO 45                ; down into the block's top\n"
+    "        DEPART 45\n"
     "        END\n"
     "POINTS\n"
     "ABOVE   AT 240 870 -40 APPROACH 0 -1 0 GRIP 115\n";
@@ -33,7 +33,7 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 
 }  // namespace
 
-TEST_CASE("--collisions=warn: a straight line that collides over many knots is one warning, with its first contact",
+TEST_CASE("with --collisions=warn a straight line that collides over many knots is one warning, with its first contact",
           "[collision][cli][straight]") {
   const rs::testing::TempDir dir;
   const std::string program = dir.write("closed.rsp", kClosedApproach);

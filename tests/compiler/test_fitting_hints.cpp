@@ -52,7 +52,7 @@ TEST_CASE("the hint of a straight line or a pose on motors alone names a cell on
   }
 }
 
-TEST_CASE("APPRO and DEPART that meet a limit are not told to go through a via point; MOVES still is",
+TEST_CASE("APPRO and DEPART that meet a limit are not told to go through a via point, MOVES still is",
           "[compiler][hints][straight]") {
   // xr4-cell: the tool pointing straight out along the world's x from (250, 1100, 0): APPRO 400 stretches the
   // elbow straight about 92% of the way (joints 2 and 3 reach at most 457.2), a singular pose on the one segment

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <span>
@@ -152,7 +154,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
                               {"time", static_cast<double>(e.at) / 1e6},
                               {"part", watch->model().describe(e.contact.a)},
                               {"hits", watch->model().describe(e.contact.b)},
-                              {"depth", e.depth}});
+                              {"depth", std::round(e.depth * 1e4) / 1e4}});  // to 1e-4, as the trace
       j["collisions"] = collisions;
     }
     Json outputs = Json::array(), inputs = Json::array();
