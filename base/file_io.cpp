@@ -6,9 +6,18 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
+#include <thread>
 
 namespace rs::base {
+
+namespace {
+
+// Longer than the kernel's default lease-break-time, after which the open succeeds.
+constexpr int kLeaseWaitMs = 50'000;
+
+}  // namespace
 
 std::string sizeText(std::uint64_t bytes) {
   if (bytes >= (std::uint64_t{1} << 20) && bytes % (std::uint64_t{1} << 20) == 0)
@@ -38,7 +47,17 @@ int openRegularFile(const std::string& path, std::string& error, std::uint64_t* 
     error = notRegularFileReason(st.st_mode);
     return -1;
   }
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+  // A write lease another program holds (teach, while it settles a write:
+  // file_swap.h) fails a non-blocking open with EWOULDBLOCK, having asked
+  // the holder to give it up; a blocking open would wait for that, so this
+  // one waits too, by trying again (the kernel breaks a lease that is not
+  // given up within its lease-break-time, 45 s by default).
+  int fd = -1;
+  for (int waited = 0;; waited += 5) {
+    fd = ::open(path.c_str(), O_RDONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+    if (fd >= 0 || errno != EWOULDBLOCK || waited >= kLeaseWaitMs) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
   if (fd < 0) {
     error = std::strerror(errno);
     return -1;
