@@ -162,7 +162,7 @@ TEST_CASE("render --path --at: the path up to the moment drawn, ending at the to
   CHECK(refused.err.find("--path needs --program") != std::string::npos);
 }
 
-TEST_CASE("toolPathOf: within its tolerance of the exact path everywhere; a RESET breaks it", "[render][path]") {
+TEST_CASE("toolPathOf: within its tolerance where every move starts and ends, and broken at a RESET", "[render][path]") {
   SECTION("where every move starts and ends, the tool is within the tolerance of the path") {
     // Between those moments the motors step count by count, each at its own
     // time, so the tool's own path zig-zags by up to a count's worth about

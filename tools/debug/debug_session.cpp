@@ -503,19 +503,23 @@ Stop DebugSession::reverseContinue() {
 Stop DebugSession::gotoTime(vm::Micros t) {
   moment_.reset();
   timeline_->goToTime(t);
-  const runtime::CollisionEvent* hit = endingCollision();
-  // A collision ended the run at its contact: later moments of its move never came.
-  if (run_->finished() && (run_->rig().clock() <= t || (hit && hit->at <= t))) {
+  // A collision ended the run at its contact: later moments of its move
+  // never came. (Its moment copied: standWithin restores snapshots, which
+  // replace the run's list of collisions.)
+  std::optional<Moment> contact;
+  if (const runtime::CollisionEvent* hit = endingCollision()) contact = Moment{hit->at, hit->instruction};
+  if (run_->finished() && (run_->rig().clock() <= t || (contact && contact->time <= t))) {
     Stop s = finishedStop(false);
     s.message += fmt::format(" before {} s", base::formatSeconds(t));
-    if (hit) moment_ = Moment{hit->at, hit->instruction};
+    moment_ = contact;
     return stopped(std::move(s));
   }
   standWithin(t);
   if (!moment_) return stopped({StopReason::Time, fmt::format("at {} s", base::formatSeconds(t)), {}});
   const std::string_view what = vm::has(run_->spec().image->code[moment_->instruction].op, vm::kMovesMotors)
                                     ? "the move" : "the instruction";
-  const std::string end = hit ? fmt::format("a collision ends the run in it at {} s", base::formatSeconds(hit->at))
+  const std::string end = contact
+                              ? fmt::format("a collision ends the run in it at {} s", base::formatSeconds(contact->time))
                               : fmt::format("it ends at {} s", base::formatSeconds(run_->rig().clock()));
   return stopped({StopReason::Time,
                   fmt::format("at {} s, in the middle of {} of line {} ({})", base::formatSeconds(t), what,
