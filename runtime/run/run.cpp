@@ -69,7 +69,7 @@ Run::~Run() = default;
 // added (a trace) see both.
 void Run::build(std::unique_ptr<Rig> rig) {
   rig_ = std::move(rig);
-  if (spec_.log && rig_->sim()) logger_.emplace(*rig_->sim(), rig_->world());
+  if (spec_.log && rig_->sim()) logger_.emplace(*rig_->sim(), rig_->world(), spec_.lines);
   interpreter_ = std::make_unique<vm::Interpreter>(*spec_.image, rig_->machine());
   observers_ = std::make_unique<Observers>(*this, *rig_, logger_ ? &*logger_ : nullptr);
   breakpoints_.assign(spec_.image->code.size(), 0);

@@ -37,6 +37,9 @@ struct RunSpec {
   stimuli::Stimuli stimuli;
   vm::RunLimits limits;
   bool log = false;  ///< keep a RunLog (simulated machine only)
+  /// How the log keeps straight lines' knots (run_log.h): every one by
+  /// default; thinned for a page or a chart of a run of any length.
+  LineThinning lines;
   /// On a workcell, on the simulated machine: what a collision during a
   /// move does (runtime/sim/collision_watch.h); a run with Off checks nothing.
   CollisionMode collisions = CollisionMode::Error;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <time.h>
 
+#include "compiler/program/line_check.h"
 #include "launch/program.h"
 #include "launch/run_diagnostics.h"
 #include "launch/run_request.h"
@@ -27,10 +28,13 @@ std::chrono::nanoseconds threadTime() {
 // for how long, and how long each call of a subroutine takes (a stack of
 // the calls under way, as the interpreter's); pauses the run when it is
 // abandoned or out of time (the thread's clock read every kClockEvery
-// steps: a step costs nanoseconds, a read hundreds).
+// steps: a step costs nanoseconds, a read hundreds; and every
+// kClockEveryKnots knots, since one straight line is a step of thousands
+// of moves).
 class Timer final : public vm::StepObserver {
  public:
   static constexpr std::uint64_t kClockEvery = 1024;
+  static constexpr std::uint64_t kClockEveryKnots = 4096;
 
   Timer(std::vector<InstructionTimes>& times, std::vector<CallTimes>& calls, const RunControl& control,
         std::chrono::nanoseconds deadline)
@@ -58,7 +62,11 @@ class Timer final : public vm::StepObserver {
     }
     before_ = now;
     if (control_.abandoned()) return true;
-    if (++steps_ % kClockEvery == 0 && threadTime() >= deadline_) outOfTime_ = true;
+    const std::uint64_t knots = vm.machine().knots();
+    if (++steps_ % kClockEvery == 0 || knots >= knotsRead_ + kClockEveryKnots) {
+      knotsRead_ = knots;
+      if (threadTime() >= deadline_) outOfTime_ = true;
+    }
     return outOfTime_;
   }
   bool outOfTime() const { return outOfTime_; }
@@ -75,6 +83,7 @@ class Timer final : public vm::StepObserver {
   std::chrono::nanoseconds deadline_;
   vm::Micros before_ = 0;
   std::uint64_t steps_ = 0;
+  std::uint64_t knotsRead_ = 0;
   bool outOfTime_ = false;
 };
 
@@ -89,6 +98,7 @@ std::string summaryOf(const runtime::Run& run, const vm::RunOutcome& outcome) {
     case vm::StopReason::StepLimit:
     case vm::StopReason::TimeLimit:
     case vm::StopReason::InstantLimit:
+    case vm::StopReason::KnotLimit:
       return fmt::format("stopped by the {} at {} (line {})", vm::stopReasonName(outcome.reason), at, line);
     default: break;  // paused
   }
@@ -135,6 +145,17 @@ CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, 
   if (!analysis.image() || control.abandoned()) {
     out.end = CheckedRun::End::Abandoned;
     return out;
+  }
+  const compiler::Target& target = analysis.cell().target;
+  if (!target.checkLines && target.robot && target.robot->robot.chain) {
+    diag::Diagnostics lines(analysis.source().name(), kMaxDiagnostics);
+    compiler::checkLinePaths(*analysis.image(), *target.robot, lines, target.linePlans.get());
+    if (lines.hasErrors()) {
+      out.end = CheckedRun::End::NotRun;
+      out.diagnostics = lines.sorted();
+      out.summary = "not made (a straight line cannot be followed)";
+      return out;
+    }
   }
   // The spec as `check` makes it, from the same function.
   launch::LoadedProgram program;

@@ -6,7 +6,12 @@
 // off the request thread (run_worker.h). What it reports are check's own
 // diagnostics (launch/run_diagnostics.h); when each instruction ran feeds
 // hovers and inlay hints, and how long each subroutine's calls took the
-// code lenses.
+// code lenses. Before it, the compile-time check of the
+// straight lines (compiler/program/line_check.h), which the editor's
+// compile leaves out (CellContext's target): a plan of each MOVES, APPRO
+// and DEPART, from the cell's cache of plans, so that an edit re-plans
+// only the lines it changed; a line the arm cannot follow is the compile
+// error `check` gives, and the program is then not run.
 //
 // The editor bounds it further: at most kRunBudget of the worker thread's
 // CPU time (a run that needs more ends with a note saying so, never with a
@@ -67,7 +72,9 @@ struct RunOptions {
 };
 
 struct CheckedRun {
-  /// NotRun: the stimuli file beside the program has errors (a note says so).
+  /// NotRun: a straight line cannot be followed (its compile error is among
+  /// the diagnostics), or the stimuli file beside the program has errors (a
+  /// note says so).
   enum class End : std::uint8_t { Finished, OutOfBudget, Abandoned, NotRun };
   End end = End::Finished;
   std::vector<InstructionTimes> times;  ///< per instruction (0-based)

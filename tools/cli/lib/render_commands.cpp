@@ -78,11 +78,15 @@ bool cameraFrom(const RenderOptions& o, render::Camera& camera, std::ostream& er
 
 // ---- inputs -----------------------------------------------------------------
 
-bool write(const std::string& path, std::vector<std::uint8_t> bytes, std::ostream& err) {
+bool write(const std::string& path, std::string_view bytes, std::ostream& err) {
   std::string error;
   if (base::writeFileAtomically(path, bytes, error)) return true;
   err << fmt::format("{}: error: cannot write: {}\n", base::safeText(path), error);
   return false;
+}
+
+bool write(const std::string& path, const std::vector<std::uint8_t>& bytes, std::ostream& err) {
+  return write(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), err);
 }
 
 std::string baseName(const std::string& path) {
@@ -132,6 +136,7 @@ Prepared prepare(const launch::LoadedProgram& program, const RenderOptions& o, s
   if (!spec || !program.ok()) return {};
   if (maxTime) spec->limits.maxTime = *maxTime;
   spec->log = log;
+  spec->lines.on = log;  // a page shows lines at most slot by slot: their knots are thinned as they are logged
   const runtime::CollisionMode mode = spec->collisions;
   return {std::make_unique<runtime::Run>(std::move(*spec)), mode};
 }
@@ -291,7 +296,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
       return kExitBadInput;
     }
     const std::size_t bytes = encoded->size();
-    if (!write(o.output, std::move(encoded).value(), err)) return kExitBadInput;
+    if (!write(o.output, *encoded, err)) return kExitBadInput;
     // What was written, as animate says it; on stderr when stdout carries
     // the --dump-lines listing.
     const std::string what = run ? fmt::format("{} on {}", base::safeText(o.program.file), base::safeText(cell.name))
@@ -362,7 +367,7 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   input.chart = &chart;
   const render::Frames frames = render::framesOf(recording, input.eventSteps, input.frameRule);
   const std::string html = render::animationHtml(input, frames);
-  if (!write(o.output, std::vector<std::uint8_t>(html.begin(), html.end()), err)) return kExitBadInput;
+  if (!write(o.output, std::string_view(html), err)) return kExitBadInput;
   out << fmt::format("{} -> {} ({} instructions executed, {} s simulated{})\n", base::safeText(o.program.file),
                      base::safeText(o.output), recording.steps.size(), base::formatSeconds(recording.end),
                      frames.decimated() ? fmt::format("; the page shows {} frames: every event, and the first "
