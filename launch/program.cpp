@@ -115,7 +115,8 @@ bool sameMotors(const vm::Image& image, const workcell::Workcell& cell) {
 }  // namespace
 
 compiler::Target defaultTarget() {
-  return {std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth, nullptr};
+  return {std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth, nullptr,
+          std::string(stdlib::rhinoScaraCellName())};
 }
 
 compiler::Target cellTarget(const workcell::Workcell& cell) {

@@ -59,11 +59,11 @@ std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::Coll
       out.push_back({file, known ? diag::Pos{image.lines[e.instruction], image.columns[e.instruction]} : diag::Pos{},
                      diag::Severity::Warning,
                      fmt::format("collision at {} s: {} (--collisions=warn: the run went on)", seconds,
-                                 watch->describe(e.contact)),
+                                 watch->describe(e)),
                      "collision",
-                     fmt::format("'robotsim render CELL --program PROG --at {} --collision-shapes' draws it; "
+                     fmt::format("{}'robotsim render CELL --program PROG --at {} --collision-shapes' draws it; "
                                  "--collisions=error stops the run there",
-                                 seconds)});
+                                 watch->hint(e).empty() ? std::string() : watch->hint(e) + "; ", seconds)});
     }
   if (std::optional<diag::Diagnostic> w = runtime::gripperWarning(run, file)) out.push_back(std::move(*w));
   return out;
@@ -72,8 +72,16 @@ std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::Coll
 std::vector<diag::Diagnostic> runDiagnostics(const runtime::Run& run, runtime::CollisionMode mode,
                                              const std::string& file) {
   std::vector<diag::Diagnostic> out;
-  if (const std::optional<vm::RunOutcome> outcome = run.outcome(); outcome && !outcome->ok())
-    out.push_back(stopDiagnostic(*run.spec().image, *outcome, file));
+  if (const std::optional<vm::RunOutcome> outcome = run.outcome(); outcome && !outcome->ok()) {
+    diag::Diagnostic stop = stopDiagnostic(*run.spec().image, *outcome, file);
+    // A collision stopped it: where its move ends in what it hit by a little, the distance to go.
+    const runtime::CollisionWatch* watch = run.rig().collisionWatch();
+    const auto events = run.rig().collisions();
+    if (watch && mode == runtime::CollisionMode::Error && !events.empty() &&
+        events.back().instruction == outcome->index && stop.hint.empty())
+      stop.hint = watch->hint(events.back());
+    out.push_back(std::move(stop));
+  }
   for (diag::Diagnostic& w : runWarnings(run, mode, file)) out.push_back(std::move(w));
   return out;
 }

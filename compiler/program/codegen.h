@@ -32,6 +32,10 @@ struct Target {
   /// (line_check.h) to its caller, which makes it later (a language
   /// server, off its request thread); the image is then made before it.
   bool checkLines = true;
+  /// A library workcell whose robot has exactly these motors and a
+  /// kinematic model, named by the hints of what needs one ("": none known,
+  /// and the hints name none).
+  std::string cellHint = {};
 };
 
 /// The record of `in`; its motor vector or triple is appended to `constants`.

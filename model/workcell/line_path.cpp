@@ -248,9 +248,14 @@ std::optional<LineProblem> LinePlanner::plan(const Line& line, std::span<const s
     p.code = code;
     return p;
   };
+  // A MOVES can go round through a via point; APPRO and DEPART are one
+  // segment along the tool's approach axis, which no via point moves.
   const std::string viaHint =
-      "go through a via point the arm reaches on the way (a MOVES to it first), or make this move a joint move "
-      "(MOVEP)";
+      line.toPoint ? std::string("go through a via point the arm reaches on the way (a MOVES to it first), or make "
+                                 "this move a joint move (MOVEP)")
+                   : fmt::format("{} is one straight segment along the tool's approach axis, which no via point "
+                                 "changes: start it from another pose, or make this move a joint move (MOVEP)",
+                                 what);
   const auto ikProblem = [&](double s, const kinematics::IkError& e) {
     const bool singular = e.kind == IkErrorKind::Singular;
     const char* what2 = singular ? "passes near a singular pose"

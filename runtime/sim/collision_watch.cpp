@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "base/number_text.h"
 #include "runtime/sim/world.h"
 
 namespace rs::runtime {
@@ -30,6 +31,23 @@ CollisionWatch::CollisionWatch(const workcell::Workcell& cell)
 
 std::string CollisionWatch::describe(const workcell::Contact& contact) const {
   return fmt::format("{} hits {}", model_.describe(contact.a), model_.describe(contact.b));
+}
+
+std::string CollisionWatch::describe(const CollisionEvent& event) const {
+  return fmt::format("{}, {} deep", describe(event.contact), base::formatNumber(event.depth, 2));
+}
+
+std::string CollisionWatch::hint(const CollisionEvent& event) const {
+  if (!event.endsIn) return {};
+  const workcell::Overlap& o = *event.endsIn;
+  const std::string d = base::formatNumber(o.depth, 2);
+  // y is up in every cell: a part that leaves the other upwards ends too low.
+  constexpr double kNearlyVertical = 0.866;  // within 30 degrees
+  const std::string way = o.away.y() > kNearlyVertical    ? fmt::format("end it {} higher", d)
+                          : o.away.y() < -kNearlyVertical ? fmt::format("end it {} lower", d)
+                                                          : fmt::format("end it {} short of there", d);
+  return fmt::format("the move ends with {} {} into {}: {}", model_.describe(event.contact.a), d,
+                     model_.describe(event.contact.b), way);
 }
 
 namespace {
@@ -73,21 +91,30 @@ const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const Wor
                                             vm::Micros start, vm::Micros end, std::span<const std::int32_t> lineFrom,
                                             std::span<const std::int32_t> lineTo) {
   if (!model_.movable()) return nullptr;
-  ++moves_;
   const bool knot = !lineFrom.empty() && !lineTo.empty();
+  // The line this knot belongs to has collided already: one move, one report.
+  if (knot && events_.size() > lineFirstEvent_ && events_.back().instruction == instruction_) return nullptr;
+  ++moves_;
   keyOf(world, before, after, lineFrom, lineTo);
   const SweepVerdict* verdict = memo_.find(key_);
   SweepVerdict fresh;
   if (verdict) {
     ++remembered_;
   } else {
-    fresh = advance(machine, world.collisionQuery(knot ? lineFrom : before, knot ? lineTo : after, poses_), before,
-                    after, start, end);
+    const workcell::CollisionQuery query = world.collisionQuery(knot ? lineFrom : before, knot ? lineTo : after, poses_);
+    fresh = advance(machine, query, before, after, start, end);
+    if (fresh.collides) {
+      fresh.depth = data_.overlap(fresh.contact, query).depth;
+      // Where the move ends: the same two parts, still in each other by a little?
+      const std::optional<workcell::Overlap> o = data_.overlapAt(knot ? lineTo : after, query, fresh.contact);
+      if (o && o->depth <= kEndsInBy) fresh.endsIn = o;
+    }
     memo_.remember(key_, fresh);
     verdict = &fresh;
   }
   if (!verdict->collides) return nullptr;
-  events_.push_back({start + verdict->after, verdict->contact, verdict->encoders, instruction_});
+  events_.push_back(
+      {start + verdict->after, verdict->contact, verdict->encoders, instruction_, verdict->depth, verdict->endsIn});
   return &events_.back();
 }
 

@@ -50,6 +50,10 @@ struct CollisionEvent {
   workcell::Contact contact;
   std::vector<std::int32_t> encoders;  ///< every motor at `at`
   std::uint32_t instruction = 0;       ///< the move's instruction (0-based)
+  double depth = 0;                    ///< how deep the parts are in each other at `at` (length units, as drawn)
+  /// The move ends with the same two parts in each other by a little (at
+  /// most CollisionWatch::kEndsInBy): a block set down a fraction too low.
+  std::optional<workcell::Overlap> endsIn = {};
   bool operator==(const CollisionEvent&) const = default;
 };
 
@@ -73,6 +77,11 @@ class CollisionWatch {
   /// The moves checked from now on are instruction `instruction`'s (the
   /// run says so before each step): the collisions they find carry it.
   void atInstruction(std::uint32_t instruction) { instruction_ = instruction; }
+  /// The knots of one straight line follow (CellMachine::moveLine): they
+  /// are one move, reported once, with its first contact. A knot swept
+  /// after the line's first collision is not checked again (docs/cli.md,
+  /// --collisions=warn: each colliding move once).
+  void beginLine() { lineFirstEvent_ = events_.size(); }
 
   const workcell::CollisionModel& model() const { return model_; }
   std::span<const CollisionEvent> events() const { return events_; }
@@ -90,6 +99,16 @@ class CollisionWatch {
   }
   /// "link 2 (upper_arm) hits object 3 (block)".
   std::string describe(const workcell::Contact& contact) const;
+  /// The same with how deep they are in each other: "object 2 (block) hits
+  /// object 1 (pallet), 0.12 deep".
+  std::string describe(const CollisionEvent& event) const;
+  /// How to get past it, where the move ends in the part it hits by a
+  /// little: "the move ends with object 2 (block) 0.2 into object 1
+  /// (pallet): end it 0.2 higher"; else "".
+  std::string hint(const CollisionEvent& event) const;
+  /// "By a little": a move that ends with the parts it collided this far in
+  /// each other or less gets hint() (length units; the sweep's own step).
+  static constexpr double kEndsInBy = workcell::kSweepStep;
 
  private:
   SweepVerdict advance(const SimMachine& machine, const workcell::CollisionQuery& query,
@@ -107,6 +126,7 @@ class CollisionWatch {
   std::vector<workcell::PartClearance> clearance_;  // per part: this check's gaps
   std::vector<CollisionEvent> events_;
   std::uint32_t instruction_ = 0;  // the instruction whose moves are checked
+  std::size_t lineFirstEvent_ = 0;  // events_.size() when the line being run began
   SweepMemo memo_;
   std::optional<std::uint64_t> worldRevision_;  // the world's revision placesId_ was taken at
   std::uint64_t placesId_ = 0;

@@ -70,12 +70,22 @@ class Pendant {
   Outcome gripper(bool close);
   /// The current encoder values become point `name` (a new one).
   Outcome teach(std::string_view name);
-  /// Point `name` gets the current encoder values.
-  Outcome reteach(std::string_view name);
+  /// How re-teach writes a point that is written as a tool pose.
+  enum class Reteach : std::uint8_t {
+    Counts,  ///< the current encoder counts (a row of counts; the only way for a row of counts)
+    Pose,    ///< a tool pose again: `AT` the tool centre point, the tool's orientation, GRIP if the row wrote one
+  };
+  /// Point `name` gets the current pose. A point written as a tool pose
+  /// must say which way (`as`; a row of counts may be re-taught as a pose
+  /// too); the pose is written only where the compiler resolves it to the
+  /// current counts (else refused).
+  Outcome reteach(std::string_view name, std::optional<Reteach> as = std::nullopt);
   Outcome remove(std::string_view name);
   Outcome rename(std::string_view from, std::string_view to);
   /// Every motor to point `name`, at motor speed (the state's motion has
-  /// the move, time-stepped).
+  /// the move, time-stepped). A point written as a tool pose goes where
+  /// the program's MOVEP takes the arm (point_target.h): resolved with the
+  /// rows above it, the gripper left as it is when it writes no GRIP.
   Outcome goTo(std::string_view name);
   /// Input `line` (1..8) flips (simulation: a switch on the pendant).
   Outcome toggleInput(int line);
@@ -104,6 +114,7 @@ class Pendant {
   /// Where a Cartesian jog starts: the last jog's exact pose while the arm's motors are still where it put
   /// them, else the pose at the motors' counts.
   workcell::JogPose jogStart() const;
+  Outcome reteachPose(std::size_t index);
   Outcome edit(const std::function<std::string(PointsText&)>& change, std::string message);
   std::optional<std::size_t> gripperMotor() const;
   std::vector<MotionFrame> frames() const;
