@@ -348,7 +348,7 @@ bool isScenarioFile(const std::string& path) { return fs::path(path).extension()
 
 // What scenario `s` earned in `r`: all its points when it passed; with
 // partial credit, those of each expectation that holds (no problem at its
-// line in the scenario file) in a run that was made; else none.
+// line and column in the scenario file, or at one of its motor terms) in a run that was made; else none.
 void grade(const Scenario& s, const std::string& specPath, TestResult& r) {
   r.maxPoints = maxPointsOf(s);
   if (r.status == TestStatus::Passed) {
@@ -360,7 +360,9 @@ void grade(const Scenario& s, const std::string& specPath, TestResult& r) {
   for (const Expectation& e : s.parsed.expectations) {
     if (!e.points) continue;
     const bool failed = std::any_of(r.problems.begin(), r.problems.end(), [&](const diag::Diagnostic& d) {
-      return d.file == specPath && d.pos.line == e.pos.line && d.pos.col == e.pos.col;
+      // At the expectation, or at one of its motor terms (evaluate.cpp's failAtMotor).
+      const bool atTerm = std::find(e.motorCols.begin(), e.motorCols.end(), d.pos.col) != e.motorCols.end();
+      return d.file == specPath && d.pos.line == e.pos.line && (d.pos.col == e.pos.col || atTerm);
     });
     if (!failed) r.points += *e.points;
   }
