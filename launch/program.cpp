@@ -115,8 +115,9 @@ bool sameMotors(const vm::Image& image, const workcell::Workcell& cell) {
 }  // namespace
 
 compiler::Target defaultTarget() {
-  return {std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth, nullptr,
-          std::string(stdlib::rhinoScaraCellName())};
+  compiler::Target target{std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth};
+  target.cellHint = std::string(stdlib::rhinoScaraCellName());
+  return target;
 }
 
 compiler::Target cellTarget(const workcell::Workcell& cell) {
