@@ -38,7 +38,7 @@ std::vector<Json> linePublications(const LspSession& s, const std::string& uri) 
 
 }  // namespace
 
-TEST_CASE("lsp: the analysis requests answer from plans no line; the run worker checks them", "[lsp][straight]") {
+TEST_CASE("lsp: the analysis requests answer without planning a line, the run worker checks them", "[lsp][straight]") {
   rs::lsp::CellCache cells;
   const std::shared_ptr<const rs::lsp::CellContext> cell = cells.get("xr4-cell");
   REQUIRE(cell->cell);

@@ -161,7 +161,7 @@ TEST_CASE("expectations: every way a run ends is read by its words in vm/stop_re
   REQUIRE(bad.errors.size() == 1);
   CHECK(bad.errors[0].message ==
         "unknown expectation 'teleport': expect one of finished, deadlock, step limit, time limit, clock standing "
-        "still, runtime error, time, motors, motor, output, input, variable, tcp, object, trace, no collision, "
+        "still, knot limit, runtime error, time, motors, motor, output, input, variable, tcp, object, trace, no collision, "
         "collides with");
   // A stop's first word alone still names it, and says which word is missing.
   const auto step = parse("; expect: step limits\n; expect: time\n");
