@@ -1,5 +1,7 @@
 #include "base/file_swap.h"
 
+#include "base/removed_on_signal.h"
+
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <signal.h>
@@ -203,6 +205,9 @@ SwapResult replaceFileIfUnchanged(const std::string& path, std::string_view expe
   std::string tmp;
   const Descriptor ours(createTemporaryBeside(target, 0600, tmp, error));
   if (ours.get() < 0) return failed(error);
+  // Until the exchange (after it the name `tmp` may hold the file someone
+  // else saved, which a signal must not remove).
+  RemovedOnSignal cleanup(tmp);
   error = takeOwnerAndMode(ours.get(), checked);
   for (std::size_t done = 0; error.empty() && done < bytes.size();) {
     const ssize_t n = ::write(ours.get(), bytes.data() + done, bytes.size() - done);
@@ -243,6 +248,7 @@ SwapResult replaceFileIfUnchanged(const std::string& path, std::string_view expe
       return {same ? SwapOutcome::kBusy : SwapOutcome::kChanged, {}};
     }
   }
+  cleanup.release();
   if (!exchange(tmp, target)) {
     if (errno != EINVAL && errno != ENOSYS && errno != EOPNOTSUPP) {
       const int saved = errno;

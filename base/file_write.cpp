@@ -1,5 +1,7 @@
 #include "base/file_write.h"
 
+#include "base/removed_on_signal.h"
+
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <sys/random.h>
@@ -172,6 +174,7 @@ bool writeFileAtomically(const std::string& path, const std::function<bool(std::
   std::string tmp;
   const int fd = createTemporaryBeside(target, exists || options.mode ? 0600 : 0666, tmp, error);
   if (fd < 0) return false;
+  RemovedOnSignal cleanup(tmp);  // a Ctrl-C or a kill mid-write leaves no temporary
   if (!exists) st.st_uid = ::geteuid(), st.st_gid = ::getegid();  // a new file: ours
   if (exists || options.mode) error = takeOwnerAndMode(fd, st, options.mode);
   bool ok = error.empty();

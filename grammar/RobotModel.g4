@@ -8,7 +8,10 @@
 // arguments are is checked when the parse tree becomes the model
 // (compiler/description/description.cpp), where a message can say exactly what was
 // expected. Unlike programs, descriptions are lexed by the lexer ANTLR
-// generates from this file: they are small, and speed does not matter.
+// generates from this file, a line at a time (the `description` and `line`
+// rules say what is read; the reader takes a line's words straight from
+// the lexer, as they take any words, so that memory stays a small multiple
+// of the file: description.cpp).
 grammar RobotModel;
 
 description : line (NEWLINE line)* EOF ;

@@ -62,7 +62,10 @@ std::optional<CellDirective> findCellDirective(std::string_view text) {
 std::string resolveCellName(const std::string& programFile, const std::string& name) {
   std::error_code ec;
   const std::filesystem::path beside = std::filesystem::path(programFile).parent_path() / name;
-  if (!std::filesystem::path(name).is_absolute() && std::filesystem::is_regular_file(beside, ec))
+  // Anything there but a folder: a FIFO or a device beside the program is
+  // then refused by its reader as what it is, not looked up as a name.
+  if (!std::filesystem::path(name).is_absolute() && std::filesystem::exists(beside, ec) &&
+      !std::filesystem::is_directory(beside, ec))
     return beside.string();
   return name;
 }

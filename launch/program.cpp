@@ -115,14 +115,19 @@ bool sameMotors(const vm::Image& image, const workcell::Workcell& cell) {
 }  // namespace
 
 compiler::Target defaultTarget() {
-  return {std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth, nullptr};
+  compiler::Target target{std::string(stdlib::rhinoScaraName()), stdlib::rhinoScaraMotors(), vm::kDefaultCallDepth};
+  target.cellHint = std::string(stdlib::rhinoScaraCellName());
+  return target;
 }
 
 compiler::Target cellTarget(const workcell::Workcell& cell) {
   const workcell::PlacedRobot& driven = *cell.drivenRobot();
   const workcell::Robot& robot = driven.robot;
   compiler::Target target{robot.name, compiler::motorTable(robot), vm::kDefaultCallDepth, nullptr};
-  if (robot.chain) target.robot = std::make_shared<const workcell::PlacedRobot>(driven);
+  if (robot.chain) {
+    target.robot = std::make_shared<const workcell::PlacedRobot>(driven);
+    target.linePlans = std::make_shared<workcell::LinePlanCache>();
+  }
   return target;
 }
 

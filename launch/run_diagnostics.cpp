@@ -14,6 +14,7 @@ std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) 
   switch (outcome.reason) {
     case vm::StopReason::StepLimit: return "allow more with --max-steps N";
     case vm::StopReason::TimeLimit: return "allow more with --max-time SECONDS";
+    case vm::StopReason::KnotLimit: return "allow more with --max-knots N";
     case vm::StopReason::Deadlock: return "inputs change only by --input N=ON@SECONDS or a --stimuli file";
     case vm::StopReason::InstantLimit: return "give the loop a DELAY, a move or a WAITFOR, or a way out";
     case vm::StopReason::RuntimeError:
@@ -25,13 +26,26 @@ std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) 
   }
 }
 
+// A stop's stable code (Diagnostic::code, static text): its name as the
+// run reports it, in the spelling of the compiler's codes.
+std::string_view codeFor(vm::StopReason reason) {
+  switch (reason) {
+    case vm::StopReason::RuntimeError: return "runtime-error";
+    case vm::StopReason::Deadlock: return "deadlock";
+    case vm::StopReason::StepLimit: return "step-limit";
+    case vm::StopReason::TimeLimit: return "time-limit";
+    case vm::StopReason::InstantLimit: return "clock-standing-still";
+    default: return {};  // it ended, or it paused: no diagnostic of its own
+  }
+}
+
 }  // namespace
 
 diag::Diagnostic stopDiagnostic(const vm::Image& image, const vm::RunOutcome& outcome, const std::string& file) {
   const diag::Pos pos{image.lines[outcome.index], image.columns[outcome.index]};
   return {file, pos, diag::Severity::Error,
           fmt::format("{}: {} (instruction {})", vm::stopReasonName(outcome.reason), outcome.message, outcome.index + 1),
-          {}, std::string(hintFor(image, outcome))};
+          codeFor(outcome.reason), std::string(hintFor(image, outcome))};
 }
 
 std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::CollisionMode mode,
@@ -45,11 +59,11 @@ std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::Coll
       out.push_back({file, known ? diag::Pos{image.lines[e.instruction], image.columns[e.instruction]} : diag::Pos{},
                      diag::Severity::Warning,
                      fmt::format("collision at {} s: {} (--collisions=warn: the run went on)", seconds,
-                                 watch->describe(e.contact)),
+                                 watch->describe(e)),
                      "collision",
-                     fmt::format("'robotsim render CELL --program PROG --at {} --collision-shapes' draws it; "
+                     fmt::format("{}'robotsim render CELL --program PROG --at {} --collision-shapes' draws it; "
                                  "--collisions=error stops the run there",
-                                 seconds)});
+                                 watch->hint(e).empty() ? std::string() : watch->hint(e) + "; ", seconds)});
     }
   if (std::optional<diag::Diagnostic> w = runtime::gripperWarning(run, file)) out.push_back(std::move(*w));
   return out;
@@ -58,8 +72,16 @@ std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::Coll
 std::vector<diag::Diagnostic> runDiagnostics(const runtime::Run& run, runtime::CollisionMode mode,
                                              const std::string& file) {
   std::vector<diag::Diagnostic> out;
-  if (const std::optional<vm::RunOutcome> outcome = run.outcome(); outcome && !outcome->ok())
-    out.push_back(stopDiagnostic(*run.spec().image, *outcome, file));
+  if (const std::optional<vm::RunOutcome> outcome = run.outcome(); outcome && !outcome->ok()) {
+    diag::Diagnostic stop = stopDiagnostic(*run.spec().image, *outcome, file);
+    // A collision stopped it: where its move ends in what it hit by a little, the distance to go.
+    const runtime::CollisionWatch* watch = run.rig().collisionWatch();
+    const auto events = run.rig().collisions();
+    if (watch && mode == runtime::CollisionMode::Error && !events.empty() &&
+        events.back().instruction == outcome->index && stop.hint.empty())
+      stop.hint = watch->hint(events.back());
+    out.push_back(std::move(stop));
+  }
   for (diag::Diagnostic& w : runWarnings(run, mode, file)) out.push_back(std::move(w));
   return out;
 }

@@ -12,6 +12,7 @@ std::string_view RunRequest::firstGiven() const {
   if (!inputs.empty()) return "--input";
   if (!stimuliFile.empty()) return "--stimuli";
   if (maxSteps) return "--max-steps";
+  if (maxKnots) return "--max-knots";
   if (!maxTime.empty()) return "--max-time";
   if (!collisions.empty()) return "--collisions";
   return "";
@@ -65,6 +66,7 @@ std::optional<runtime::RunSpec> prepareRun(const LoadedProgram& program, const R
   if (!maxTime || !stimuliOk || !collisions || !program.image) return std::nullopt;
   spec.collisions = *collisions;
   spec.limits.maxSteps = request.maxSteps.value_or(defaultMaxSteps);
+  spec.limits.maxKnots = request.maxKnots.value_or(vm::RunLimits{}.maxKnots);
   spec.limits.maxTime = *maxTime;
   return spec;
 }

@@ -1,6 +1,6 @@
 // The options of a run that are not the program: its input stimuli
 // (`--stimuli FILE`, `--input N=ON@T`), its limits (`--max-steps`,
-// `--max-time`), whether it keeps a log. `prepareRun` turns them and a
+// `--max-time`, `--max-knots`), whether it keeps a log. `prepareRun` turns them and a
 // loaded program into a runtime::RunSpec, every problem a diagnostic.
 #pragma once
 
@@ -20,6 +20,7 @@ struct RunRequest {
   std::string stimuliFile;             ///< --stimuli
   std::vector<std::string> inputs;     ///< --input N=ON@T, in order
   std::optional<std::uint64_t> maxSteps;  ///< --max-steps; unset: the command's default
+  std::optional<std::uint64_t> maxKnots;  ///< --max-knots; unset: vm::RunLimits's
   std::string maxTime;                 ///< --max-time in seconds; empty: not given (3600)
   std::string collisions;              ///< --collisions error|warn|off; empty: not given (error)
   /// The option names, in the order given, that belong to a run (for

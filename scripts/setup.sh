@@ -78,10 +78,12 @@ if [ "$mode" = test ] && [ ! -d tests/browser/node_modules/playwright-core ]; th
   npm ci --prefix tests/browser --no-audit --no-fund >/dev/null
 fi
 # The VS Code extension's packages (its client library, vsce, the grammar
-# test tool), pinned in editors/vscode/package-lock.json; without install
-# scripts: nothing used here needs one (vsce's optional keytar would try to
-# build a native module).
-if [ "$mode" = test ] && [ ! -d editors/vscode/node_modules/@vscode/vsce ]; then
+# test tool, the DAP test client), pinned in editors/vscode/package-lock.json;
+# without install scripts: nothing used here needs one (vsce's optional
+# keytar would try to build a native module). A tree installed before the
+# last package was added is installed again.
+if [ "$mode" = test ] && { [ ! -d editors/vscode/node_modules/@vscode/vsce ] ||
+                           [ ! -d editors/vscode/node_modules/@vscode/debugadapter-testsupport ]; }; then
   echo "setup: npm ci in editors/vscode" >&2
   npm ci --prefix editors/vscode --ignore-scripts --no-audit --no-fund >/dev/null
 fi

@@ -33,4 +33,6 @@ std::vector<MotorSpec> rhinoScaraMotors() {
 
 std::string_view rhinoScaraName() { return "rhino-scara"; }
 
+std::string_view rhinoScaraCellName() { return "scara-pick"; }
+
 }  // namespace rs::stdlib

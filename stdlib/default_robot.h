@@ -16,4 +16,8 @@ std::vector<rs::vm::MotorSpec> rhinoScaraMotors();
 /// The library name of that robot: "rhino-scara".
 std::string_view rhinoScaraName();
 
+/// The library workcell that robot stands in, with its kinematic model:
+/// "scara-pick" (what a hint offers a program compiled for these motors).
+std::string_view rhinoScaraCellName();
+
 }  // namespace rs::stdlib

@@ -70,7 +70,14 @@ std::string instructionComment(const Image& image, std::uint32_t index) {
   }
   if (in.op == Op::MoveP) {
     const Point& p = image.points[in.b];
-    return fmt::format("{} = {}{}", safeText(p.name), values(p.values.data(), p.values.size()),
+    // A motor the move leaves as it is (the gripper, for a pose without GRIP) is written "=".
+    std::string targets;
+    for (std::size_t m = 0; m < p.values.size(); ++m)
+      targets += fmt::format("{}{}", m ? " " : "",
+                             (in.a & kPointKeepsGripper) && image.motors[m].kind == JointKind::Gripper
+                                 ? std::string("=")
+                                 : std::to_string(p.values[m]));
+    return fmt::format("{} = {}{}", safeText(p.name), targets,
                        p.origin.empty() ? "" : fmt::format(" (from {})", safeText(p.origin)));
   }
   return {};

@@ -148,7 +148,15 @@ Status Interpreter::move(const Instr& in) {
   }
   switch (in.op) {
     case Op::MoveTo: return moveTo({image_.constants.data() + in.c, target_.size()});
-    case Op::MoveP: return moveTo(image_.points[in.b].values);
+    case Op::MoveP: {
+      const std::vector<std::int32_t>& values = image_.points[in.b].values;
+      if (!(in.a & kPointKeepsGripper)) return moveTo(values);
+      // The gripper stays as it is when the move starts; the arm goes to the point.
+      const std::span<const std::int32_t> now = machine_.positions();
+      for (std::size_t i = 0; i < target_.size(); ++i)
+        target_[i] = image_.motors[i].kind == JointKind::Gripper ? now[i] : values[i];
+      return moveTo(target_);
+    }
     case Op::HrdHome: return machine_.hardHome();
     case Op::GoSoft: return moveTo(state_.softHome);
     case Op::Reset: return machine_.reset();
@@ -202,11 +210,15 @@ Interpreter::AfterCall Interpreter::machineStep(const Instr& in, std::uint32_t a
   if (now > limits.maxTime)
     return stop(StopReason::TimeLimit, fmt::format("simulated time limit of {} s passed (clock at {} s)",
                                                    base::formatSeconds(limits.maxTime), base::formatSeconds(now)));
+  const std::uint64_t knots = machine_.knots();
+  if (knots > limits.maxKnots)
+    return stop(StopReason::KnotLimit,
+                fmt::format("knot limit of {} straight-line moves passed ({} made)", limits.maxKnots, knots));
   if (now != st.clockSeen) {
     st.clockSeen = now, st.stillSince = steps;
     check = nextCheck(limits, pause, st.stillSince);
   }
-  return now > pause.afterTime ? AfterCall::Pause : AfterCall::Next;
+  return now > pause.afterTime || knots >= pause.atKnots ? AfterCall::Pause : AfterCall::Next;
 }
 
 // The dispatch loop: one switch over the opcode, each case a few lines.

@@ -26,6 +26,10 @@ struct RunLimits {
   /// Instructions in a row while the clock stands still (a loop that never
   /// moves, waits or delays); 0 = no limit.
   std::uint64_t maxStepsPerInstant = 10'000'000;
+  /// The small moves of straight lines (Machine::knots) a run may make:
+  /// a line costs its knots, not one instruction (a 300-unit MOVES on an
+  /// IRB 120 is 672 of them). The line that passes it is the last.
+  std::uint64_t maxKnots = 100'000'000;
 };
 
 struct RunOutcome {
@@ -46,6 +50,10 @@ struct PausePoints {
   /// Pause right after the instruction that takes the clock past this
   /// time; instructions that run at exactly this time still run.
   Micros afterTime = INT64_MAX;
+  /// Pause right after the instruction that takes the machine's knots
+  /// (Machine::knots) to this many or more: a slice of work, not of
+  /// instructions, for a program of straight lines.
+  std::uint64_t atKnots = UINT64_MAX;
   /// One byte per instruction, non-zero: pause before running it (but not
   /// before the first instruction of a call, so a run can leave a
   /// breakpoint it stands on). Empty: none.

@@ -89,6 +89,10 @@ class Machine {
   virtual void view(std::int32_t x, std::int32_t y, std::int32_t z) = 0;
 
   virtual Micros now() const = 0;
+  /// The lock-step moves (knots) of straight lines made so far: the work a
+  /// line costs, which a run's knot limit bounds (vm::RunLimits::maxKnots)
+  /// and a debugger's slices count. 0 on a machine that does not count them.
+  virtual std::uint64_t knots() const { return 0; }
   /// Outputs and inputs as bit masks, bit 0 = line 1.
   virtual IoMask outputs() const = 0;
   virtual IoMask inputs() const = 0;

@@ -62,7 +62,7 @@ inline constexpr std::size_t kOpCount = static_cast<std::size_t>(Op::Depart) + 1
 enum class Format : std::uint8_t {
   None,          // no operands
   MotorVector,   // b = motor count, c = first constant
-  Point,         // b = point index
+  Point,         // b = point index, a = 0 or kPointKeepsGripper
   Target,        // d = instruction index
   InputJump,     // a = input 1..kIoCount, b = 0 OFF / 1 ON, d = instruction index
   Output,        // a = output 1..kIoCount, b = 0 OFF / 1 ON
@@ -73,6 +73,11 @@ enum class Format : std::uint8_t {
   Millis,        // c = milliseconds, 0 .. kMaxDelayMillis
   Distance,      // c = length units, 1 .. kMaxToolDistance
 };
+
+/// Format::Point's `a`: the point leaves the gripper motor(s) as they are
+/// when the move starts (a point written as a tool pose without GRIP,
+/// docs/language.md), instead of moving them to its value.
+inline constexpr std::uint8_t kPointKeepsGripper = 1;
 
 /// What a format looks like in source: how many operands it takes and the
 /// usage text of `robotsim help` and the compiler's arity messages.

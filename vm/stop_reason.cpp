@@ -22,6 +22,7 @@ constexpr std::array kStopWords{
     StopWords{StopReason::StepLimit, "step limit", "limit", "exception"},
     StopWords{StopReason::TimeLimit, "time limit", "limit", "exception"},
     StopWords{StopReason::InstantLimit, "clock standing still", "limit", "exception"},
+    StopWords{StopReason::KnotLimit, "knot limit", "limit", "exception"},
     StopWords{StopReason::Paused, "paused", "pause", ""},
     StopWords{StopReason::Step, "step", "", ""},
     StopWords{StopReason::Time, "time", "", "goto"},

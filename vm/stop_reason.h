@@ -16,6 +16,7 @@ enum class StopReason : std::uint8_t {
   StepLimit,
   TimeLimit,
   InstantLimit,  ///< maxStepsPerInstant instructions without the clock moving
+  KnotLimit,     ///< more than maxKnots small moves of straight lines
   // The run paused and can go on. The interpreter says only Paused; the run
   // says why (runtime::Run::pauseCause), the debugger's stops say more.
   Paused,        ///< a pause point was reached
@@ -32,7 +33,8 @@ enum class StopReason : std::uint8_t {
 /// The run is over: it ended, failed, deadlocked or hit a limit.
 constexpr bool isOver(StopReason r) { return r < StopReason::Paused; }
 constexpr bool isLimit(StopReason r) {
-  return r == StopReason::StepLimit || r == StopReason::TimeLimit || r == StopReason::InstantLimit;
+  return r == StopReason::StepLimit || r == StopReason::TimeLimit || r == StopReason::InstantLimit ||
+         r == StopReason::KnotLimit;
 }
 
 /// How a run's stop is reported by `run`, `check`, `test` and the editor:

@@ -63,7 +63,8 @@ std::string checkOperands(const Image& image, const Instr& in) {
                                image.constants[in.c + i]);
       return {};
     case Format::Point:
-      if (in.a || in.c || in.d) return "unused operand fields are not zero";
+      if (in.c || in.d) return "unused operand fields are not zero";
+      if (in.a > kPointKeepsGripper) return fmt::format("point flags {} unknown", in.a);
       if (in.b >= image.points.size()) return fmt::format("point index {} out of bounds", in.b);
       return {};
     case Format::Target:

@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include "RobotModelLexer.h"
-#include "RobotModelParser.h"
 #include "base/ascii.h"
 #include "compiler/program/compiler.h"
 #include "compiler/description/description_parser.h"
@@ -15,7 +14,7 @@ namespace description_detail {
 
 namespace {
 
-using MP = rs_grammar::RobotModelParser;
+using MP = rs_grammar::RobotModelLexer;  // its token types
 
 std::string_view blockName(Block b) {
   switch (b) {
@@ -125,7 +124,7 @@ using description_detail::Color;
 using description_detail::kColorNames;
 using description_detail::Parser;
 using description_detail::Word;
-using MP = rs_grammar::RobotModelParser;
+using MP = rs_grammar::RobotModelLexer;  // its token types
 
 std::optional<workcell::Color> colorByName(std::string_view word) {
   for (std::size_t i = 0; i < kColorNames.size(); ++i)
@@ -163,24 +162,36 @@ DescriptionFile parseDescription(std::unique_ptr<diag::SourceFile> source, diag:
     diagnostics.add(bad->pos, bad->severity, bad->message);
     return file;
   }
-  antlr4::ANTLRInputStream input(file.source->text());
+  // A line at a time through ANTLR's lexer, as the grammar's `line` rule
+  // reads it: the rule takes any words, so the generated parser's tree (a
+  // rule context, a token and a node per line and per word, all held to
+  // the end) changed nothing but the memory, which was 25 bytes a byte of
+  // input for lines of comments and 180 for empty ones (issue 32). Now only
+  // the current line's words are held. A line of blanks or a comment alone
+  // holds no word and is not lexed.
+  const std::string_view text = file.source->text();
+  antlr4::ANTLRInputStream input;
   rs_grammar::RobotModelLexer lexer(&input);
   lexer.removeErrorListeners();  // OTHER matches any character: no lexer errors
-  antlr4::CommonTokenStream tokens(&lexer);
-  MP parser(&tokens);
-  parser.removeErrorListeners();  // the grammar accepts any words on a line
-  MP::DescriptionContext* root = parser.description();
   Parser p(file, diagnostics);
-  for (MP::LineContext* l : root->line()) {
-    std::vector<Word> words;
-    for (antlr4::tree::ParseTree* child : l->children) {
-      const antlr4::Token* t = static_cast<antlr4::tree::TerminalNode*>(child)->getSymbol();
+  std::vector<Word> words;
+  std::uint32_t lineNumber = 0;
+  for (std::size_t at = 0; at <= text.size(); ++lineNumber) {
+    std::size_t end = text.find('\n', at);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = text.substr(at, end - at);
+    at = end + 1;
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos || line[first] == ';') continue;
+    input.load(std::string(line));
+    lexer.setInputStream(&input);
+    words.clear();
+    for (std::unique_ptr<antlr4::Token> t = lexer.nextToken(); t->getType() != antlr4::Token::EOF; t = lexer.nextToken())
       words.push_back({t->getType(), t->getText(),
-                       {static_cast<std::uint32_t>(t->getLine()), static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)}});
-    }
-    const diag::Pos end = words.empty() ? diag::Pos{} : diag::Pos{words.back().pos.line,
-                                              words.back().pos.col + static_cast<std::uint32_t>(words.back().text.size())};
-    p.line(words, end);
+                       {lineNumber + 1, static_cast<std::uint32_t>(t->getCharPositionInLine() + 1)}});
+    const diag::Pos lineEnd = words.empty() ? diag::Pos{} : diag::Pos{words.back().pos.line,
+                                                  words.back().pos.col + static_cast<std::uint32_t>(words.back().text.size())};
+    p.line(words, lineEnd);
   }
   p.finish();
   return file;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "RobotModelParser.h"
+#include "RobotModelLexer.h"
 #include "base/ascii.h"
 #include "base/near_names.h"
 
@@ -14,7 +14,7 @@ namespace rs::compiler::description_detail {
 
 namespace {
 
-using MP = rs_grammar::RobotModelParser;
+using MP = rs_grammar::RobotModelLexer;  // its token types
 using workcell::Color;
 
 constexpr double kMaxCoordinate = 1e9;

@@ -1,5 +1,7 @@
 #include "compiler/description/library.h"
 
+#include <sys/stat.h>
+
 #include "base/ascii.h"
 #include "compiler/description/library_dir.h"
 #include "compiler/program/kinematics_diagnostic.h"
@@ -19,8 +21,6 @@ namespace rs::compiler {
 namespace fs = std::filesystem;
 
 namespace {
-
-constexpr std::size_t kMaxDescriptionBytes = std::size_t{64} << 20;
 
 std::string_view kindName(int kind) {
   static constexpr std::string_view names[] = {"link", "object", "gripper", "robot", "workcell"};
@@ -134,8 +134,10 @@ const DescriptionFile* Library::load(const fs::path& path) {
 }
 
 // A definition by name: in `first` (the referring file), then in every file
-// loaded so far, then as NAME.rsd on the search path (directly or in the
-// kind's folder: links/, grippers/, robots/, objects/, workcells/).
+// loaded so far, then as NAME.rsd in the referring file's own folder and
+// then on the search path (each directly or in the kind's folder: links/,
+// grippers/, robots/, objects/, workcells/): a cell written beside its
+// robot's file finds it with no --lib.
 template <typename Def>
 const Def* Library::find(Kind kind, const std::string& name, const DescriptionFile* first) {
   const bool object = kind == Kind::Object;
@@ -147,7 +149,13 @@ const Def* Library::find(Kind kind, const std::string& name, const DescriptionFi
     if (const Def* d = lookIn(*first)) return d;
   for (const auto& f : files_)
     if (const Def* d = lookIn(*f)) return d;
-  for (const fs::path& dir : searchPath_) {
+  std::vector<fs::path> folders;
+  if (first && first->source) {
+    const fs::path own = fs::path(first->source->name()).parent_path();
+    folders.push_back(own.empty() ? fs::path(".") : own);
+  }
+  folders.insert(folders.end(), searchPath_.begin(), searchPath_.end());
+  for (const fs::path& dir : folders) {
     for (const fs::path& candidate : {dir / (name + ".rsd"), dir / kindFolder(static_cast<int>(kind)) / (name + ".rsd")}) {
       std::error_code ec;
       if (!fs::is_regular_file(candidate, ec)) continue;
@@ -172,7 +180,8 @@ const DescriptionFile& Library::definingFile(const std::vector<Def>& (*defs)(con
 std::optional<workcell::Shape> Library::shape(Kind kind, const NameRef& ref, const DescriptionFile& from) {
   const ShapeDef* def = find<ShapeDef>(kind, ref.name, &from);
   if (!def) {
-    error(from, ref.pos, fmt::format("unknown {} '{}': not defined in this file, and no {}.rsd on the library path",
+    error(from, ref.pos, fmt::format("unknown {} '{}': not defined in this file, and no {}.rsd beside it or on the "
+                                     "library path",
                                      kindName(static_cast<int>(kind)), ref.name, ref.name));
     return std::nullopt;
   }
@@ -182,7 +191,8 @@ std::optional<workcell::Shape> Library::shape(Kind kind, const NameRef& ref, con
 std::optional<workcell::Gripper> Library::gripper(const NameRef& ref, const DescriptionFile& from) {
   const GripperDef* def = find<GripperDef>(Kind::Gripper, ref.name, &from);
   if (!def) {
-    error(from, ref.pos, fmt::format("unknown gripper '{}': not defined in this file, and no {}.rsd on the library path",
+    error(from, ref.pos, fmt::format("unknown gripper '{}': not defined in this file, and no {}.rsd beside it or on "
+                                     "the library path",
                                      ref.name, ref.name));
     return std::nullopt;
   }
@@ -352,8 +362,8 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
     if (p.isRobot) {
       const RobotDef* r = find<RobotDef>(Kind::Robot, p.what.name, &from);
       if (!r) {
-        error(from, p.what.pos, fmt::format("unknown robot '{}': not defined in this file, and no {}.rsd on the "
-                                            "library path", p.what.name, p.what.name));
+        error(from, p.what.pos, fmt::format("unknown robot '{}': not defined in this file, and no {}.rsd beside it "
+                                            "or on the library path", p.what.name, p.what.name));
         ok = false;
         continue;
       }
@@ -435,6 +445,14 @@ const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kin
     if (kind == Kind::Workcell) candidates.push_back(dir / kindFolder(static_cast<int>(Kind::Robot)) / (fileOrName + ".rsd"));
     for (const fs::path& candidate : candidates)
       if (fs::is_regular_file(candidate, ec)) return load(candidate);
+  }
+  // Something at that path that is no file to read (a FIFO, a device, a
+  // folder): said as what it is, as every reader says it (base/file_io.h).
+  struct stat st {};
+  if (!libraryNamesOnly_ && ::stat(fileOrName.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    diagnostics_.push_back(
+        diag::unreadable(fileOrName, "cannot read description file", base::notRegularFileReason(st.st_mode)));
+    return nullptr;
   }
   // (A workcell may also be a lone robot: the message says both.)
   diagnostics_.push_back({fileOrName, {}, diag::Severity::Error,

@@ -4,6 +4,7 @@
 // is collected, with the file it belongs to.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -17,6 +18,10 @@
 #include "vm/image.h"
 
 namespace rs::compiler {
+
+/// The largest description file read (docs/reliability.md): every reader
+/// of descriptions, `robotsim list` too, refuses a larger one.
+constexpr std::size_t kMaxDescriptionBytes = std::size_t{64} << 20;
 
 /// Where names are looked up after the file itself: the project's stdlib/,
 /// then --lib directories, then the ROBOTSIM_PATH entries (colon-separated).

@@ -8,6 +8,7 @@
 
 #include "base/file_io.h"
 #include "compiler/description/description.h"
+#include "compiler/description/library.h"
 #include "diag/diagnostic.h"
 
 namespace rs::compiler {
@@ -15,9 +16,6 @@ namespace rs::compiler {
 namespace fs = std::filesystem;
 
 namespace {
-
-// A library file is small; this only keeps a stray huge file from being read.
-constexpr std::size_t kListedFileBytes = std::size_t{4} << 20;
 
 // The kinds in the order the listing shows them, with their folders.
 struct ListedKind {
@@ -92,15 +90,20 @@ std::string headerSummary(const std::string& text, const std::string& name) {
 }
 
 LibraryListing listLibrary(const std::vector<fs::path>& searchPath) {
-  LibraryListing listing{searchPath, {}};
+  LibraryListing listing{searchPath, {}, {}};
   std::set<std::string> found;  // kind and name of each entry found, for hiding
   for (const fs::path& dir : searchPath) {
     std::vector<fs::path> files = rsdFiles(dir);
     for (const ListedKind& k : kListedKinds)
       for (fs::path& f : rsdFiles(dir / k.folder)) files.push_back(std::move(f));
     for (const fs::path& file : files) {
-      base::FileRead read = base::readFile(file.string(), kListedFileBytes);
-      if (!read.bytes) continue;
+      // The readers' own limit: a file listed is one a command can use, and
+      // one that cannot be read is named, not left out in silence.
+      base::FileRead read = base::readFile(file.string(), kMaxDescriptionBytes);
+      if (!read.bytes) {
+        listing.skipped.push_back({file, std::move(read.error)});
+        continue;
+      }
       const std::string name = file.stem().string();
       std::string summary = headerSummary(*read.bytes, name);
       diag::Diagnostics ignored(file.string());

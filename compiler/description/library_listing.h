@@ -19,15 +19,24 @@ struct LibraryEntry {
   bool hidden = false;
 };
 
+/// A .rsd file of the path that could not be read ("file is 70 MiB; the
+/// limit is 64 MiB"), so what it defines is not listed.
+struct SkippedFile {
+  std::filesystem::path file;
+  std::string reason;
+};
+
 struct LibraryListing {
   std::vector<std::filesystem::path> searchPath;  ///< as searched, first to last
   /// Grouped by kind (robots, grippers, objects, workcells), by name within a
   /// kind, a hidden entry after the one that hides it.
   std::vector<LibraryEntry> entries;
+  std::vector<SkippedFile> skipped;  ///< in the order searched
 };
 
 /// Reads every .rsd file of `searchPath`'s directories and kind folders
-/// (a directory that does not exist is skipped). Files that do not define
+/// (a directory that does not exist is skipped; a file that cannot be read,
+/// as the readers refuse it, is named in `skipped`). Files that do not define
 /// their own name are not listed, as no name lookup finds them.
 LibraryListing listLibrary(const std::vector<std::filesystem::path>& searchPath);
 

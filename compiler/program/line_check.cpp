@@ -7,7 +7,8 @@
 
 namespace rs::compiler {
 
-void checkLinePaths(const vm::Image& image, const workcell::PlacedRobot& robot, diag::Diagnostics& diagnostics) {
+void checkLinePaths(const vm::Image& image, const workcell::PlacedRobot& robot, diag::Diagnostics& diagnostics,
+                    workcell::LinePlanCache* cache) {
   const std::size_t size = image.code.size();
   bool any = false;
   for (const vm::Instr& in : image.code) any = any || vm::has(in.op, vm::kStraight);
@@ -20,7 +21,9 @@ void checkLinePaths(const vm::Image& image, const workcell::PlacedRobot& robot, 
     if (vm::has(in.op, vm::kJumps)) joined[static_cast<std::size_t>(in.d)] = true;
     if (vm::has(in.op, vm::kCalls) || !vm::has(in.op, vm::kFallsThrough)) joined[i + 1] = true;
   }
-  const workcell::LinePlanner planner(robot);
+  std::optional<workcell::LinePlanCache> own;
+  if (!cache) cache = &own.emplace();
+  const workcell::LinePlanner planner(robot, cache);
   workcell::LinePath path(planner);
   const std::size_t motors = image.motors.size();
   // Every motor starts at encoder 0.

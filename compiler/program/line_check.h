@@ -7,12 +7,16 @@
 #pragma once
 
 #include "diag/diagnostic.h"
+#include "model/workcell/line_plan_cache.h"
 #include "model/workcell/model.h"
 #include "vm/image.h"
 
 namespace rs::compiler {
 
 /// `robot` must have a chain; `image` is a complete, error-free image.
-void checkLinePaths(const vm::Image& image, const workcell::PlacedRobot& robot, diag::Diagnostics& diagnostics);
+/// Lines planned before are taken from `cache` (may be null: a cache for
+/// this check alone, so that each line is planned once).
+void checkLinePaths(const vm::Image& image, const workcell::PlacedRobot& robot, diag::Diagnostics& diagnostics,
+                    workcell::LinePlanCache* cache = nullptr);
 
 }  // namespace rs::compiler

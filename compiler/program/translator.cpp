@@ -134,10 +134,16 @@ struct Translator::State {
   std::vector<bool> assigned;        // per slot: some SET or ADD writes it
   std::vector<diag::Pos> firstRead;  // per slot: first JMPVAR, for the warning
   diag::Pos pointsHeader;
+  std::string cellName = {};  // Target::cellHint
   std::shared_ptr<const workcell::PlacedRobot> robot = nullptr;  // for points written as poses
+  std::shared_ptr<workcell::LinePlanCache> linePlans = nullptr;  // Target::linePlans
+  bool checkLines = true;                                          // Target::checkLines
   std::unique_ptr<workcell::PoseSolver> poser = nullptr;  // made at the first such point
   std::vector<double> lastPoseQ = {};                      // exact joint values of the last pose point
   std::size_t lastPoseIndex = 0;                           // 1 + its index in image.points (0: none)
+  // Per point: a tool pose without GRIP, which leaves the gripper as it is
+  // when the move starts (the instructions that use it say so).
+  std::vector<bool> keepsGripper = {};
   // Names compared for "did you mean" hints, over the whole compile: a
   // file of a million undefined labels and a million labels must not cost
   // a million million comparisons.
@@ -153,6 +159,14 @@ struct Translator::State {
   }
 
   std::span<const vm::MotorSpec> motors() const { return image.motors; }
+  /// "`what`: --cell NAME ...": a library cell only where its robot has these motors (Target::cellHint).
+  std::string cellHint(std::string_view what) const {
+    if (!cellName.empty())
+      return fmt::format("{}: --cell {} (its robot has these {} motors), or '; cell: NAME' in the program", what,
+                         cellName, motors().size());
+    return fmt::format("{}: --cell NAME, a cell whose robot has these {} motors, or '; cell: NAME' in the program",
+                       what, motors().size());
+  }
   diag::Pos posOf(std::size_t i) const { return {image.lines[i], image.columns[i]}; }
 
   std::uint32_t jump(const Instruction& in, std::uint32_t index);
@@ -172,6 +186,9 @@ Translator::Translator(const Target& target, const diag::SourceFile& source, dia
     : s_(std::make_unique<State>(State{source, diagnostics, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}})) {
   vm::Image& im = s_->image;
   s_->robot = target.robot;
+  s_->linePlans = target.linePlans;
+  s_->checkLines = target.checkLines;
+  s_->cellName = target.cellHint;
   im.sourceName = source.name();
   im.robotName = target.robotName;
   im.callDepthLimit = target.callDepthLimit;
@@ -243,7 +260,7 @@ void Translator::instruction(const Instruction& in) {
                  fmt::format("{} moves the tool along a straight line, which needs the robot's kinematics: this "
                              "program is compiled for motors alone",
                              vm::info(in.op).name),
-                 diag::Hint{"compile and run it on a workcell or a robot: --cell xr4-cell, or '; cell: NAME' in the program"},
+                 diag::Hint{s.cellHint("compile and run it on a workcell or a robot")},
                  "needs-kinematics");
   if (keep) s.image.code.push_back(encode(in, slot, target, s.image.constants));
 }
@@ -266,10 +283,14 @@ void Translator::point(const PointDef& p) {
     // A pose point before it: its exact joint values, so what is kept does not drift.
     const bool exact = from > 0 && from == s.lastPoseIndex;
     vm::Point& point = s.image.points.emplace_back(vm::Point{std::string(p.name), {}, {}});
+    s.keepsGripper.push_back(!p.pose.gripGiven && std::any_of(s.motors().begin(), s.motors().end(), [](const vm::MotorSpec& m) {
+      return m.kind == vm::JointKind::Gripper;
+    }));
     s.resolvePose(p, reference, exact ? std::span<const double>(s.lastPoseQ) : std::span<const double>(), point);
     return;
   }
   vm::Point& point = s.image.points.emplace_back(vm::Point{std::string(p.name), {}, {}});
+  s.keepsGripper.push_back(false);
   for (const Value& v : p.values) point.values.push_back(static_cast<std::int32_t>(v.number));
   if (p.values.size() != s.motors().size()) return;  // arity already reported
   for (std::size_t m = 0; m < s.motors().size(); ++m) {
@@ -295,8 +316,7 @@ void Translator::State::resolvePose(const PointDef& p, std::span<const std::int3
                fmt::format("point {} is written as a tool pose, but robot {} has no kinematic model here to resolve "
                            "it",
                            p.name, image.robotName),
-               diag::Hint{"compile for a workcell or a robot description: --cell NAME (e.g. --cell scara-pick), or a "
-                          "'; cell: NAME' line at the top"},
+               diag::Hint{cellHint("compile for a workcell or a robot description")},
                "pose-no-model");
     return;
   }
@@ -338,7 +358,8 @@ std::optional<vm::Image> Translator::finish() {
   s.resolve();
   s.warnUnassignedVariables();
   s.analyseFlow();
-  if (!s.diag.hasErrors() && s.robot && s.robot->robot.chain) checkLinePaths(s.image, *s.robot, s.diag);
+  if (!s.diag.hasErrors() && s.checkLines && s.robot && s.robot->robot.chain)
+    checkLinePaths(s.image, *s.robot, s.diag, s.linePlans.get());
   if (s.diag.hasErrors()) return std::nullopt;
   return std::move(s.image);
 }
@@ -455,7 +476,9 @@ void Translator::State::resolve() {
                  "undefined-point");
       continue;
     }
-    if (r.index < image.code.size()) image.code[r.index].b = static_cast<std::uint16_t>(it->second.index);
+    if (r.index >= image.code.size()) continue;
+    image.code[r.index].b = static_cast<std::uint16_t>(it->second.index);
+    if (keepsGripper[it->second.index]) image.code[r.index].a = vm::kPointKeepsGripper;
   }
   if (points.size() > kMaxSlots) diag.error(pointsHeader, "more than 65535 points", "too-many-names");
   std::vector<Reference>().swap(jumps);

@@ -25,3 +25,7 @@ done
 # The chart of a run (docs/render.md, "Charts of a run").
 "$robotsim" plot "$here/../../examples/gantry_pick.rsp" --cell gantry-cell -o "$here/plot-gantry-pick.png"
 echo "docs/images/plot-gantry-pick.png"
+# The tool's path (docs/render.md, "The tool's path"): a MOVES line beside a MOVEP curve.
+"$robotsim" render xr4-cell --program "$here/path-moves-movep.rsp" --path --zoom 2.5 --center 100,900,100 \
+  --view 60,-20,0 --size 800x600 -o "$here/path-moves-movep.png"
+echo "docs/images/path-moves-movep.png"

@@ -46,7 +46,7 @@ void outOfReach(const FamilyShape& f, double miss, IkSolutions& out) {
   fail(out, IkErrorKind::Unreachable, miss,
        fmt::format("the point is {:.4g} out of the arm's reach (joints {} and {} reach {:.4g} to {:.4g} from joint {})",
                    miss, f.run.revolute[0], f.run.revolute[1],
-                   std::abs(f.run.link[0].norm() - f.run.link[1].norm()), f.run.link[0].norm() + f.run.link[1].norm(),
+                   innerReach(f.run.link[0].norm(), f.run.link[1].norm()), f.run.link[0].norm() + f.run.link[1].norm(),
                    f.run.revolute[0]),
        "move the point nearer the shoulder");
 }

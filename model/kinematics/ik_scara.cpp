@@ -38,7 +38,7 @@ void solveScara(const ChainModel& m, const FamilyShape& f, const ToolTarget& t, 
     return fail(out, IkErrorKind::Unreachable, miss,
                 fmt::format("the point is {:.4g} out of the arm's reach (its links reach {:.4g} to {:.4g} from joint "
                             "{}'s axis)",
-                            miss, std::abs(run.link[0].norm() - run.link[1].norm()),
+                            miss, innerReach(run.link[0].norm(), run.link[1].norm()),
                             run.link[0].norm() + run.link[1].norm(), run.revolute[0]),
                 "move the point within the ring the arm sweeps");
   if (sinElbow < std::sin(kSingularDegrees * kDegToRad))

@@ -58,6 +58,14 @@ inline double wrapDegrees(double d) {
   return r + 0.0;
 }
 
+/// The nearest two links reach, |l1 - l2|, for a message: 0 when it is
+/// within 1e-9 of their sum (equal links, whose difference is rounding
+/// noise: "reach 0 to 457.2", not "reach 2.842e-14 to 457.2").
+inline double innerReach(double l1, double l2) {
+  const double inner = std::abs(l1 - l2);
+  return inner <= 1e-9 * (l1 + l2) ? 0.0 : inner;
+}
+
 void fail(IkSolutions& out, IkErrorKind kind, double distance, std::string message, std::string hint);
 
 }  // namespace rs::kinematics::ik

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/number_text.h"
 #include "model/kinematics/angles.h"
 #include "model/kinematics/dh.h"
 #include "model/kinematics/joint_values.h"
@@ -40,6 +41,14 @@ int alongFrameAxis(const Eigen::Matrix3d& frame, const Eigen::Vector3d& u) {
   return -1;
 }
 
+// The limit a line's problem (LineProblem::code) is, in a jog's words.
+JogLimit lineLimit(std::string_view code) {
+  if (code == "line-unreachable") return JogLimit::Reach;
+  if (code == "line-out-of-range") return JogLimit::Range;
+  if (code == "line-too-long") return JogLimit::Step;
+  return JogLimit::Singularity;  // line-singular, and line-configuration: a flip, which passes a singular pose
+}
+
 }  // namespace
 
 std::string_view jogFrameName(JogFrame frame) { return frame == JogFrame::World ? "world" : "tool"; }
@@ -51,12 +60,16 @@ std::string_view jogLimitName(JogLimit limit) {
     case JogLimit::Singularity: return "singularity";
     case JogLimit::Collision: return "collision";
     case JogLimit::Axis: return "axis";
+    case JogLimit::Step: return "step";
   }
   return "range";
 }
 
 CartesianJog::CartesianJog(const PlacedRobot& robot)
-    : robot_(robot), ik_(*robot.robot.chain), F_world_0_(robot.F_world_design * robot.robot.frames.front()) {}
+    : robot_(robot),
+      ik_(*robot.robot.chain),
+      F_world_0_(robot.F_world_design * robot.robot.frames.front()),
+      line_(robot) {}
 
 JogPose CartesianJog::poseAt(std::span<const std::int32_t> encoders) const {
   const kinematics::ChainModel& chain = ik_.model();
@@ -140,6 +153,10 @@ JogResult CartesianJog::jog(const JogPose& pose, JogFrame frame, std::string_vie
                                               jogFrameName(frame), axisName, names));
   }
   r.rotation = axis->rotation;
+  if (axis->rotation && !(std::abs(amount) < kMaxTurn))
+    return refuse(JogLimit::Step, fmt::format("a jog turns the tool less than {} degrees at a time (this one asks for "
+                                              "{}): turn it in smaller steps",
+                                              kMaxTurn, base::formatNumber(amount)));
   Eigen::Isometry3d wanted = pose.tool;
   if (axis->rotation)
     wanted.linear() =
@@ -179,33 +196,36 @@ JogResult CartesianJog::jog(const JogPose& pose, JogFrame frame, std::string_vie
     if (gap < nearest) nearest = gap, best = &s;
   }
   std::vector<double> q(best->q.begin(), best->q.begin() + static_cast<long>(n));
-  const double maxTurn = kMaxJointTurn + (axis->rotation ? 2.0 * std::abs(amount) : 0.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (chain.joints()[i].type() != JointType::Revolute) continue;
-    q[i] = pose.q[i] + kinematics::normalizeDegrees(q[i] - pose.q[i]);
-    if (std::abs(q[i] - pose.q[i]) > maxTurn)
-      return refuse(
-          JogLimit::Singularity,
-          fmt::format("near-singular pose: joint {} would turn {:.3g} degrees for this step (more than {:.3g})", i + 1,
-                      std::abs(q[i] - pose.q[i]), maxTurn));
-  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (chain.joints()[i].type() == JointType::Revolute) q[i] = pose.q[i] + kinematics::normalizeDegrees(q[i] - pose.q[i]);
   // Encoder counts (a coupled joint's motor also carries the joint before it), each within its motor's range.
   r.pose.encoders = pose.encoders;
   r.pose.encoders.resize(std::max<std::size_t>(r.pose.encoders.size(), static_cast<std::size_t>(chain.encoderCount())),
                          0);
+  std::string outside;  // the first motor the end puts outside its range
   for (std::size_t i = 0; i < n; ++i) {
     const kinematics::Joint& j = chain.joints()[i];
     double raw = q[i];
     if (i > 0 && chain.joints()[i - 1].coupling) raw += q[i - 1] - chain.joints()[i - 1].home;
-    const std::int64_t count = std::llround((raw - j.home) / j.precision);
+    const std::int64_t count =
+        std::clamp<std::int64_t>(std::llround((raw - j.home) / j.precision), INT32_MIN, INT32_MAX);
     const JointSpec& spec = robot.joints[static_cast<std::size_t>(j.encoder)];
-    if (count < spec.min || count > spec.max)
-      return refuse(
-          JogLimit::Range,
-          fmt::format("motor {} would go to {} (joint {} at {:.4g} {}), outside its range {}..{}", spec.letter, count,
-                      i + 1, q[i], j.type() == JointType::Revolute ? "degrees" : "length units", spec.min, spec.max));
+    if ((count < spec.min || count > spec.max) && outside.empty())
+      outside = fmt::format("motor {} would go to {} (joint {} at {:.4g} {}), outside its range {}..{}", spec.letter,
+                            count, i + 1, q[i], j.type() == JointType::Revolute ? "degrees" : "length units", spec.min,
+                            spec.max);
     r.pose.encoders[static_cast<std::size_t>(j.encoder)] = static_cast<std::int32_t>(count);
   }
+  // The way there: the straight line MOVES would run, checked as it checks
+  // it (a singular pose, the reach, a motor's range or a flip on the way).
+  // Near a singular pose the end's counts can be far off and out of range:
+  // the line names the singular pose first; an end out of range is named
+  // by the motor it leaves.
+  LinePath path(line_);
+  const std::optional<LineProblem> problem = line_.planTo(pose.encoders, r.pose.encoders, path, "the jog");
+  if (problem && problem->code != "line-out-of-range") return refuse(lineLimit(problem->code), problem->message);
+  if (!outside.empty()) return refuse(JogLimit::Range, std::move(outside));
+  if (problem) return refuse(JogLimit::Range, problem->message);
   r.pose.q = q;
   r.pose.config = best->config;
   r.pose.configKnown = true;

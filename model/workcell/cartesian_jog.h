@@ -2,10 +2,12 @@
 // world and tool modes do: a step along or about one axis of the cell's
 // frame (world) or of the tool's own frame (tool), turned into encoder
 // counts by the inverse kinematics (kinematics/ik.h) on the configuration
-// the arm stands in (no elbow or wrist flip), or refused with the limit it
-// met (range, reach, singularity) and nothing changed. Collisions are the
-// caller's: the pendant moves the rig, whose sweep checks the move
-// (tools/teach/pendant.h). docs/teach.md, "Jog modes".
+// the arm stands in (no elbow or wrist flip), and checked the whole way as
+// the straight line MOVES runs (line_path.h): the caller moves the tool
+// along that line (vm::Machine::moveLine), or the step is refused with the
+// limit it met (range, reach, singularity, step) and nothing changed.
+// Collisions are the caller's: the pendant moves the rig, whose sweep
+// checks the move (tools/teach/pendant.h). docs/teach.md, "Jog modes".
 //
 // Which rotations there are is the arm's (docs/models.md, "Inverse
 // kinematics"): a six-axis wrist turns about any axis; a five-axis arm
@@ -23,6 +25,7 @@
 #include <vector>
 
 #include "model/kinematics/ik.h"
+#include "model/workcell/line_path.h"
 #include "model/workcell/model.h"
 
 namespace rs::workcell {
@@ -40,10 +43,12 @@ struct JogAxis {
   std::string help;                                      ///< "along the world's X", "about the tool's z (the approach)"
 };
 
-/// Why a jog was refused: the limit it met.
-enum class JogLimit : std::uint8_t { Range, Reach, Singularity, Collision, Axis };
+/// Why a jog was refused: the limit it met. Step: the step itself is too
+/// large to be one jog (a turn of half a turn or more, a line of more
+/// knots than a line may have).
+enum class JogLimit : std::uint8_t { Range, Reach, Singularity, Collision, Axis, Step };
 
-/// "range", "reach", "singularity", "collision", "axis".
+/// "range", "reach", "singularity", "collision", "axis", "step".
 std::string_view jogLimitName(JogLimit limit);
 
 /// The pose a jog starts from and ends at: the exact joint values and the
@@ -80,19 +85,21 @@ class CartesianJog {
 
   /// `pose` moved by `amount` (length units, or degrees for a rotation)
   /// along or about `axis` (a name of axes(pose, frame)), on the
-  /// configuration `pose` is in; or refused with its limit. `pose.encoders`
-  /// gives what the gripper motor keeps.
+  /// configuration `pose` is in, with the straight line from `pose.encoders`
+  /// to the result planned as MOVES plans it; or refused with its limit.
+  /// `pose.encoders` gives what the gripper motor keeps.
   JogResult jog(const JogPose& pose, JogFrame frame, std::string_view axis, double amount) const;
 
-  /// Most a revolute joint may turn (degrees) in one step of a Cartesian
-  /// jog: more means the arm is near a singular pose, where a small move
-  /// of the tool swings a joint round (refused as "singularity").
-  static constexpr double kMaxJointTurn = 30.0;
+  /// A turn of one jog is less than this (degrees): the line turns the tool
+  /// the short way round, so half a turn or more is not one step (refused
+  /// as "step"; the keys turn 1, 5 or 15 degrees).
+  static constexpr double kMaxTurn = 180.0;
 
  private:
   const PlacedRobot& robot_;
   kinematics::InverseKinematics ik_;
   Eigen::Isometry3d F_world_0_;
+  LinePlanner line_;
 };
 
 }  // namespace rs::workcell

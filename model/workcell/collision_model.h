@@ -35,6 +35,7 @@
 #include "model/kinematics/chain_data.h"
 #include "model/kinematics/chain_model.h"
 #include "model/workcell/model.h"
+#include "model/workcell/penetration.h"
 
 namespace rs::workcell {
 
@@ -259,12 +260,26 @@ class CollisionData {
   /// the objects too.
   std::vector<Contact> allContacts(std::span<const std::int32_t> encoders, const CollisionQuery& query,
                                    bool withStatic = false);
+  /// How deep the two parts of `contact` are in each other at the last
+  /// pose checked (the contact findContact or findContactOrClearance found
+  /// there), as drawn: their deepest pair of overlapping pieces
+  /// (penetration.h), the check's inset (kContactTolerance) added back.
+  /// For messages (contact_depth.cpp).
+  Overlap overlap(const Contact& contact, const CollisionQuery& query) const;
+  /// The same pair at motor positions `encoders` (which becomes the last
+  /// pose checked): their overlap there, or nothing when they do not overlap.
+  std::optional<Overlap> overlapAt(std::span<const std::int32_t> encoders, const CollisionQuery& query,
+                                   const Contact& contact);
   /// The end-effector frame of the last pose checked.
   const Eigen::Isometry3d& toolFrame() const { return F_world_i_.back(); }
   /// Pose of a robot part at the last pose checked (F_world of its points).
   const Eigen::Isometry3d& robotPose(std::size_t body) const { return robotPoses_[body]; }
 
  private:
+  /// The body `ref` names and where it is at the last pose checked (the floor: none).
+  std::pair<const CollisionBody*, Eigen::Isometry3d> placed(const BodyRef& ref, const CollisionQuery& query) const;
+  /// Whether any pair of their pieces overlaps, and the deepest pair's overlap.
+  std::optional<Overlap> pairOverlap(const Contact& contact, const CollisionQuery& query) const;
   template <typename OnContact>
   void scan(std::span<const std::int32_t> encoders, const CollisionQuery& query, OnContact&& on);
   void pose(std::span<const std::int32_t> encoders);

@@ -1,8 +1,12 @@
 #include "model/workcell/line_path.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <fmt/format.h>
+
+#include "model/workcell/line_plan_cache.h"
 
 #include "model/kinematics/forward_kinematics.h"
 #include "model/kinematics/joint_values.h"
@@ -55,13 +59,81 @@ LinePath::LinePath(const LinePlanner& planner)
   counts_.assign(std::max<std::size_t>(motors_, static_cast<std::size_t>(planner.chain().encoderCount())), 0.0);
 }
 
-LinePlanner::LinePlanner(const PlacedRobot& robot)
+LinePlanner::LinePlanner(const PlacedRobot& robot, LinePlanCache* cache)
     : robot_(robot),
       ik_(*robot.robot.chain),
       F_world_0_(robot.F_world_design * robot.robot.frames.front()),
       motors_(robot.robot.joints.size() + (robot.robot.hasGripper ? 1 : 0)),
       fullOrientation_(ik_.family() == kinematics::IkFamily::Articulated6 ||
-                       ik_.family() == kinematics::IkFamily::Spherical6) {}
+                       ik_.family() == kinematics::IkFamily::Spherical6),
+      cache_(cache) {
+  if (cache_) armId_ = cache_->armId(armDescription());
+}
+
+namespace {
+
+std::uint64_t word(double v) { return std::bit_cast<std::uint64_t>(v); }
+
+void appendFrame(std::vector<std::uint64_t>& out, const Eigen::Isometry3d& F) {
+  const Eigen::Matrix<double, 3, 4> m = F.affine();
+  for (int i = 0; i < 12; ++i) out.push_back(word(m.data()[i]));
+}
+
+}  // namespace
+
+// What plan() reads of the arm: the chain (its D-H rows and drives, the
+// base), each joint's range and letter (the out-of-range check and its
+// words), the base in the world (a problem's position) and the motors.
+std::vector<std::uint64_t> LinePlanner::armDescription() const {
+  std::vector<std::uint64_t> out{motors_, fullOrientation_ ? 1u : 0u};
+  appendFrame(out, chain().F_world_0());
+  appendFrame(out, F_world_0_);
+  for (const kinematics::Joint& j : chain().joints()) {
+    out.push_back(static_cast<std::uint64_t>(j.type()));
+    for (const double v : {j.dh.theta, j.dh.alpha, j.dh.a, j.dh.d, j.precision}) out.push_back(word(v));
+    out.push_back(static_cast<std::uint64_t>(j.encoder) << 1 | (j.coupling ? 1u : 0u));
+  }
+  for (const JointSpec& spec : robot_.robot.joints) {
+    out.push_back(static_cast<std::uint64_t>(spec.type) << 8 | static_cast<unsigned char>(spec.letter));
+    out.push_back(word(spec.precision));
+    out.push_back(static_cast<std::uint64_t>(static_cast<std::uint32_t>(spec.min)) << 32 |
+                  static_cast<std::uint32_t>(spec.max));
+    out.push_back(spec.coupling ? 1u : 0u);
+  }
+  return out;
+}
+
+// A line's plan from the cache, or planned by `plan` and remembered. The
+// key: the arm, the kind of line, the instruction's name, every motor at
+// the start, and the end (every motor's target, or the distance).
+template <typename Plan>
+std::optional<LineProblem> LinePlanner::cached(std::uint64_t kind, std::span<const std::int32_t> start,
+                                               std::span<const std::int32_t> end, double distance,
+                                               std::string_view what, LinePath& path, Plan&& plan) const {
+  if (!cache_) return plan();
+  std::vector<std::uint64_t>& key = path.key_;
+  key.clear();
+  key.push_back(armId_);
+  key.push_back(kind << 32 | what.size());
+  for (std::size_t i = 0; i < what.size(); i += 8) {
+    std::uint64_t w = 0;
+    std::memcpy(&w, what.data() + i, std::min<std::size_t>(8, what.size() - i));
+    key.push_back(w);
+  }
+  key.push_back(start.size() << 32 | end.size());
+  for (const std::int32_t v : start) key.push_back(static_cast<std::uint32_t>(v));
+  for (const std::int32_t v : end) key.push_back(static_cast<std::uint32_t>(v));
+  key.push_back(word(distance));
+  LinePlanCache::Plan found;
+  if (cache_->find(key, found)) {
+    path.knots_ = std::move(found.knots);
+    path.leads_ = std::move(found.leads);
+    return found.problem;
+  }
+  std::optional<LineProblem> problem = plan();
+  cache_->remember(key, {path.knots_, path.leads_, problem});
+  return problem;
+}
 
 Eigen::Vector3d LinePlanner::tcpOf(std::span<const double> q, LinePath& path) const {
   kinematics::forwardKinematics(chain(), path.data_, q);
@@ -132,30 +204,34 @@ bool LinePlanner::solveAt(const Line& line, double s, std::uint8_t config, LineP
 
 std::optional<LineProblem> LinePlanner::planTo(std::span<const std::int32_t> start, std::span<const std::int32_t> end,
                                                LinePath& path, std::string_view what) const {
-  kinematics::jointValuesFromEncoders(chain(), start, path.q0_);
-  kinematics::jointValuesFromEncoders(chain(), end, path.q1_);
-  Line line;
-  line.toPoint = true;
-  kinematics::forwardKinematics(chain(), path.data_, path.q0_);
-  line.p0 = path.data_.F_0_i.back().translation();
-  line.r0 = Eigen::Quaterniond(path.data_.F_0_i.back().linear());
-  kinematics::forwardKinematics(chain(), path.data_, path.q1_);
-  line.p1 = path.data_.F_0_i.back().translation();
-  line.r1 = Eigen::Quaterniond(path.data_.F_0_i.back().linear());
-  return plan(line, start, path, end, what);
+  return cached(0, start, end, 0.0, what, path, [&] {
+    kinematics::jointValuesFromEncoders(chain(), start, path.q0_);
+    kinematics::jointValuesFromEncoders(chain(), end, path.q1_);
+    Line line;
+    line.toPoint = true;
+    kinematics::forwardKinematics(chain(), path.data_, path.q0_);
+    line.p0 = path.data_.F_0_i.back().translation();
+    line.r0 = Eigen::Quaterniond(path.data_.F_0_i.back().linear());
+    kinematics::forwardKinematics(chain(), path.data_, path.q1_);
+    line.p1 = path.data_.F_0_i.back().translation();
+    line.r1 = Eigen::Quaterniond(path.data_.F_0_i.back().linear());
+    return plan(line, start, path, end, what);
+  });
 }
 
 std::optional<LineProblem> LinePlanner::planAlongTool(std::span<const std::int32_t> start, double distance,
                                                       LinePath& path, std::string_view what) const {
-  kinematics::jointValuesFromEncoders(chain(), start, path.q0_);
-  path.q1_ = path.q0_;
-  Line line;
-  kinematics::forwardKinematics(chain(), path.data_, path.q0_);
-  const Eigen::Isometry3d F = path.data_.F_0_i.back();
-  line.p0 = F.translation();
-  line.p1 = line.p0 + distance * F.linear().col(2);
-  line.r0 = line.r1 = Eigen::Quaterniond(F.linear());
-  return plan(line, start, path, {}, what);
+  return cached(1, start, {}, distance, what, path, [&] {
+    kinematics::jointValuesFromEncoders(chain(), start, path.q0_);
+    path.q1_ = path.q0_;
+    Line line;
+    kinematics::forwardKinematics(chain(), path.data_, path.q0_);
+    const Eigen::Isometry3d F = path.data_.F_0_i.back();
+    line.p0 = F.translation();
+    line.p1 = line.p0 + distance * F.linear().col(2);
+    line.r0 = line.r1 = Eigen::Quaterniond(F.linear());
+    return plan(line, start, path, {}, what);
+  });
 }
 
 std::optional<LineProblem> LinePlanner::plan(const Line& line, std::span<const std::int32_t> start, LinePath& path,
@@ -172,9 +248,14 @@ std::optional<LineProblem> LinePlanner::plan(const Line& line, std::span<const s
     p.code = code;
     return p;
   };
+  // A MOVES can go round through a via point; APPRO and DEPART are one
+  // segment along the tool's approach axis, which no via point moves.
   const std::string viaHint =
-      "go through a via point the arm reaches on the way (a MOVES to it first), or make this move a joint move "
-      "(MOVEP)";
+      line.toPoint ? std::string("go through a via point the arm reaches on the way (a MOVES to it first), or make "
+                                 "this move a joint move (MOVEP)")
+                   : fmt::format("{} is one straight segment along the tool's approach axis, which no via point "
+                                 "changes: start it from another pose, or make this move a joint move (MOVEP)",
+                                 what);
   const auto ikProblem = [&](double s, const kinematics::IkError& e) {
     const bool singular = e.kind == IkErrorKind::Singular;
     const char* what2 = singular ? "passes near a singular pose"
@@ -283,7 +364,9 @@ std::optional<LineProblem> LinePlanner::plan(const Line& line, std::span<const s
     for (const double f : kChordSamples) {
       for (std::size_t i = 0; i < n; ++i) path.mid_[i] = path.prev_[i] + f * (path.next_[i] - path.prev_[i]);
       if (distanceToSegment(tcpOf(path.mid_, path), a, b) > kChordShare * kLineTolerance) close = false;
+      if (!close && canHalve) break;  // the step is halved whatever the rest say
     }
+    if (!close && canHalve) { ds /= 2; continue; }
     // Each motor's share of the knot, as far as it moves the tool on its
     // own: the most a motor running ahead of the others (a controller that
     // moves each motor at its own speed) takes the tool off the lock-step path.

@@ -7,7 +7,9 @@
 //
 // Model and data, as for the chain: the planner is built once per robot
 // and is read-only; a LinePath holds every buffer a plan writes, reused
-// from plan to plan (no allocation per knot once it has grown).
+// from plan to plan (no allocation per knot once it has grown). A planner
+// given a LinePlanCache (line_plan_cache.h) answers a line it (or another
+// planner of the same arm) planned before from there, with the same plan.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -44,6 +46,7 @@ struct LineProblem {
 };
 
 class LinePlanner;
+class LinePlanCache;
 
 /// The knots of one plan, and the planner's scratch buffers.
 class LinePath {
@@ -60,6 +63,7 @@ class LinePath {
  private:
   friend class LinePlanner;
   std::size_t motors_ = 0;
+  std::vector<std::uint64_t> key_;  // scratch: the cache's key of the line being planned
   std::vector<std::int32_t> knots_;
   std::vector<std::uint32_t> leads_;
   kinematics::ChainData data_;
@@ -68,8 +72,9 @@ class LinePath {
 
 class LinePlanner {
  public:
-  /// `robot` must have a chain and outlive the planner.
-  explicit LinePlanner(const PlacedRobot& robot);
+  /// `robot` must have a chain and outlive the planner; so must `cache`
+  /// (may be null: every line is planned).
+  explicit LinePlanner(const PlacedRobot& robot, LinePlanCache* cache = nullptr);
 
   /// MOVES: from encoder counts `start` to `end` (one per motor each).
   std::optional<LineProblem> planTo(std::span<const std::int32_t> start, std::span<const std::int32_t> end,
@@ -82,9 +87,15 @@ class LinePlanner {
   const kinematics::ChainModel& chain() const { return ik_.model(); }
   /// Frame 0 (the base) in the world.
   const Eigen::Isometry3d& F_world_0() const { return F_world_0_; }
+  /// Everything of the arm a plan depends on, as words (the cache's arm).
+  std::vector<std::uint64_t> armDescription() const;
 
  private:
   struct Line;
+  template <typename Plan>
+  std::optional<LineProblem> cached(std::uint64_t kind, std::span<const std::int32_t> start,
+                                    std::span<const std::int32_t> end, double distance, std::string_view what,
+                                    LinePath& path, Plan&& plan) const;
   std::optional<LineProblem> plan(const Line& line, std::span<const std::int32_t> start, LinePath& path,
                                   std::span<const std::int32_t> end, std::string_view what) const;
   bool solveAt(const Line& line, double s, std::uint8_t config, LinePath& path, kinematics::IkError& error) const;
@@ -98,6 +109,8 @@ class LinePlanner {
   Eigen::Isometry3d F_world_0_;
   std::size_t motors_ = 0;
   bool fullOrientation_ = false;
+  LinePlanCache* cache_ = nullptr;
+  std::uint32_t armId_ = 0;  // the arm's number in cache_
 };
 
 }  // namespace rs::workcell

@@ -7,6 +7,7 @@
 #include "runtime/render/page.h"
 #include "runtime/render/palette.h"
 #include "runtime/render/scene.h"
+#include "runtime/render/tool_path.h"
 #include "vm/io_lines.h"
 
 namespace rs::render {
@@ -121,8 +122,11 @@ Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const 
       step.push_back(m.step), from.push_back(m.from), to.push_back(m.to), t0.push_back(m.start), t1.push_back(m.end);
       lock.push_back(m.lockStep ? (m.lead ? 2 : 1) : 0), anyLock |= m.lockStep;
     }
-    Json entry = {{"step", step}, {"from", from}, {"to", to}, {"start", t0}, {"end", t1}};
-    if (anyLock) entry["lock"] = lock;  // 1 lock-step, 2 leading: only with straight lines, so other pages keep their bytes
+    // Moved in, not copied (a braced list copies): a page of many frames is mostly these.
+    Json entry = Json::object();
+    entry["step"] = std::move(step), entry["from"] = std::move(from), entry["to"] = std::move(to);
+    entry["start"] = std::move(t0), entry["end"] = std::move(t1);
+    if (anyLock) entry["lock"] = std::move(lock);  // 1 lock-step, 2 leading: only with straight lines, so other pages keep their bytes
     moves.push_back(std::move(entry));
   }
   Json outStep = Json::array(), outMask = Json::array();
@@ -135,19 +139,19 @@ Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const 
   }
   Json inAt = Json::array(), inMask = Json::array();
   for (const runtime::InputLevel& l : rec.inputs) inAt.push_back(l.at), inMask.push_back(l.inputs);
-  return {{"end", rec.end},
-          {"outcome", outcome},
-          {"motors", motors},
-          {"index", index},
-          {"start", start},
-          {"stop", stop},
-          {"moves", moves},
-          {"driven", cell.drivenRobotIndex()},  // the robot a collision's robotParts are parts of
-          {"lines", vm::kIoCount},  // inputs and outputs each: the lamps the page draws
-          {"outputs", {{"step", outStep}, {"mask", outMask}}},
-          {"cameras", {{"step", camStep}, {"view", camView}, {"window", camWindow}}},
-          {"inputs", {{"at", inAt}, {"mask", inMask}}},
-          {"grasps", graspModel(rec, cell)}};
+  Json run = Json::object();
+  run["end"] = rec.end;
+  run["outcome"] = outcome;
+  run["motors"] = std::move(motors);
+  run["index"] = std::move(index), run["start"] = std::move(start), run["stop"] = std::move(stop);
+  run["moves"] = std::move(moves);
+  run["driven"] = cell.drivenRobotIndex();  // the robot a collision's robotParts are parts of
+  run["lines"] = vm::kIoCount;  // inputs and outputs each: the lamps the page draws
+  run["outputs"] = {{"step", outStep}, {"mask", outMask}};
+  run["cameras"] = {{"step", camStep}, {"view", camView}, {"window", camWindow}};
+  run["inputs"] = {{"at", inAt}, {"mask", inMask}};
+  run["grasps"] = graspModel(rec, cell);
+  return run;
 }
 
 Json withCollisions(Json run, const std::vector<CollisionMark>& marks) {
@@ -172,7 +176,25 @@ Json styleModel() {
           {"axisLength", kAxisLength},
           {"toolRadius", kToolRadius},
           {"toolLineWidth", kToolLineWidth},
-          {"toolColor", static_cast<int>(kToolColor)}};
+          {"toolColor", static_cast<int>(kToolColor)},
+          {"pathColor", static_cast<int>(kPathColor)},
+          {"pathLineWidth", kPathLineWidth}};
+}
+
+// The tool centre point's path over the whole run (tool_path.h), thinned
+// to a thousandth of the fit's radius: "at" (µs), "pts" (x, y, z each),
+// "jump" (the points that start a new stretch).
+Json pathModel(const runtime::RunLog& log, const workcell::Workcell& cell, double radius) {
+  Json at = Json::array(), pts = Json::array(), jump = Json::array();
+  if (const workcell::PlacedRobot* robot = cell.drivenRobot()) {
+    const std::vector<PathPoint> path = toolPathOf(log, *robot, radius * kPathTolerance);
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      at.push_back(path[i].at);
+      for (const double v : {path[i].p.x(), path[i].p.y(), path[i].p.z()}) pts.push_back(v);
+      if (path[i].jump) jump.push_back(i);
+    }
+  }
+  return {{"at", at}, {"pts", pts}, {"jump", jump}};
 }
 
 }  // namespace
@@ -214,6 +236,7 @@ Json animationModel(const AnimationInput& input, const Frames& frames) {
   model["run"] = withCollisions(runModel(frames.log, cell, input.outcome), input.collisions);
   if (frames.decimated()) model["run"]["frames"] = {{"steps", frames.runSteps}, {"slot", frames.slot}};
   if (!input.warning.empty()) model["run"]["warning"] = input.warning;  // only when there is one
+  model["path"] = pathModel(*input.run, cell, model["fit"]["radius"].get<double>());
   if (input.chart) {
     const ChartLayout layout = chartLayout(*input.chart);
     const diag::Result<std::vector<std::uint8_t>> svg = encodeChart(*input.chart, layout, ImageFormat::Svg);
@@ -230,6 +253,7 @@ Json animationModel(const AnimationInput& input, const Frames& frames) {
 
 std::string scriptSafeJson(const Json& model) {
   std::string json = model.dump(-1, ' ', false, Json::error_handler_t::replace);
+  if (json.find('<') == std::string::npos) return json;  // the usual case: no second copy of a large model
   std::string safe;
   safe.reserve(json.size());
   for (char c : json) {
@@ -246,8 +270,14 @@ std::string animationHtml(const AnimationInput& input) {
 }
 
 std::string animationHtml(const AnimationInput& input, const Frames& frames) {
-  const Json model = animationModel(input, frames);
-  const std::string safe = scriptSafeJson(model);
+  // The model as text, and the model gone before the page is put
+  // together: a page of many frames is mostly its model, held once at a time.
+  std::string title, safe;
+  {
+    const Json model = animationModel(input, frames);
+    title = model["title"].get<std::string>();
+    safe = scriptSafeJson(model);
+  }
   std::string html;
   html.reserve(safe.size() + pageScript().size() + pageStyle().size() + 4096);
   html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -255,7 +285,7 @@ std::string animationHtml(const AnimationInput& input, const Frames& frames) {
       "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; "
       "style-src 'unsafe-inline'; script-src 'unsafe-inline'; img-src data:\">\n";
   html += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
-  html += "<title>robotsim: " + escapeHtml(model["title"].get<std::string>()) + "</title>\n";
+  html += "<title>robotsim: " + escapeHtml(title) + "</title>\n";
   html += "<style>\n";
   html += pageStyle();
   html += "</style>\n</head>\n<body>\n";

@@ -136,7 +136,9 @@ Chart chartOf(const ChartInput& input) {
   for (std::size_t m = 0; m < motors; ++m)
     if (!gripper || m != *gripper)
       chart.lanes.push_back({LaneKind::Motor, fmt::format("{} {}", log.motors[m].letter, jointKindWord(log.motors[m].kind)), {m}});
-  if (robot) chart.lanes.push_back({LaneKind::Tcp, "TCP x y z", {tcp, tcp + 1, tcp + 2}});
+  if (robot)
+    for (int a = 0; a < 3; ++a)
+      chart.lanes.push_back({LaneKind::Tcp, fmt::format("TCP {}", "xyz"[a]), {tcp + static_cast<std::size_t>(a)}, a});
   if (gripper) chart.lanes.push_back({LaneKind::Gripper, fmt::format("{} gripper", log.motors[*gripper].letter), {*gripper}});
   ChartLane in{LaneKind::Inputs, fmt::format("inputs 1-{}", vm::kIoCount), {}},
       out{LaneKind::Outputs, fmt::format("outputs 1-{}", vm::kIoCount), {}};

@@ -21,8 +21,10 @@
 
 namespace rs::render {
 
-/// What a lane shows: one motor, the tool centre point (x, y, z on one
-/// scale), the gripper's motor, eight inputs or outputs (on/off traces).
+/// What a lane shows: one motor, one coordinate of the tool centre point
+/// (x, y and z each a lane of its own, on its own scale: a lift of 60 shows
+/// beside a reach of 1000), the gripper's motor, eight inputs or outputs
+/// (on/off traces).
 enum class LaneKind : std::uint8_t { Motor, Tcp, Gripper, Inputs, Outputs };
 
 struct ChartSeries {
@@ -32,8 +34,9 @@ struct ChartSeries {
 
 struct ChartLane {
   LaneKind kind = LaneKind::Motor;
-  std::string label;           ///< "A revolute", "TCP x y z", "gripper E", "inputs", "outputs"
+  std::string label;           ///< "A revolute", "TCP x", "gripper E", "inputs", "outputs"
   std::vector<std::size_t> series;  ///< indices into Chart::series
+  int axis = 0;                ///< Tcp: the coordinate shown, 0 x, 1 y, 2 z
 };
 
 enum class MarkKind : std::uint8_t { Collision, Warning, Stop };

@@ -17,7 +17,7 @@ namespace {
 // Pixels.
 constexpr double kChartLeft = 150, kChartRightMargin = 20, kChartTitle = 34;
 constexpr double kLaneGap = 6, kLanePad = 4;
-constexpr double kMotorLane = 56, kTcpLane = 84, kGripperLane = 48, kDigitalRow = 8;
+constexpr double kMotorLane = 56, kTcpLane = 56, kGripperLane = 48, kDigitalRow = 8;
 constexpr double kLinesLane = 22, kAxis = 28, kNoteLine = 16, kChartBottom = 10;
 constexpr std::size_t kNotesShown = 6;  // marks listed under the axis; the rest counted
 constexpr double kSmallText = 11, kTitleText = 13;
@@ -103,21 +103,37 @@ void analogPath(cairo_t* cr, const Chart& chart, const ChartLayout& layout, cons
   }
 }
 
-// An on/off series as steps in row `row` of a digital lane: the level a
-// sample found holds until the next sample.
+// An on/off series in row `row` of a digital lane, the level a sample
+// found holding until the next sample: each stretch ON as a pulse in the
+// lane's bright colour (up at its start, high, down at its end), each
+// stretch OFF as a dim line low down. A line that never turns on is one dim
+// line: nothing bright that could be read as ON.
 void digitalPath(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const std::vector<double>& v,
-                 const ChartBox& box, std::size_t row) {
+                 const ChartBox& box, std::size_t row, Rgb on) {
   const double top = box.y0 + static_cast<double>(row) * kDigitalRow;
-  const auto y = [&](double value) { return value > 0.5 ? top + 1.5 : top + kDigitalRow - 1.5; };
-  if (v.empty()) return;
-  cairo_move_to(cr, layout.xOf(chart.times[0]), y(v[0]));
-  for (std::size_t i = 1; i < v.size(); ++i) {
-    if (v[i] == v[i - 1]) continue;
-    const double x = layout.xOf(chart.times[i]);
-    cairo_line_to(cr, x, y(v[i - 1]));
-    cairo_line_to(cr, x, y(v[i]));
+  const double high = top + 1.5, low = top + kDigitalRow - 1.5;
+  const std::size_t n = v.size();
+  for (const bool level : {false, true}) {
+    bool any = false;
+    for (std::size_t i = 0; i < n;) {
+      const bool isOn = v[i] > 0.5;
+      std::size_t j = i + 1;
+      while (j < n && (v[j] > 0.5) == isOn) ++j;
+      if (isOn == level) {  // samples i..j-1; the stretch lasts until sample j (or the end)
+        const double x0 = layout.xOf(chart.times[i]), x1 = layout.xOf(chart.times[std::min(j, n - 1)]);
+        const double y = level ? high : low;
+        cairo_move_to(cr, x0, level && i > 0 ? low : y);
+        if (level && i > 0) cairo_line_to(cr, x0, high);
+        cairo_line_to(cr, x1, y);
+        if (level && j < n) cairo_line_to(cr, x1, low);
+        any = true;
+      }
+      i = j;
+    }
+    if (!any) continue;
+    chartColor(cr, level ? on : rgb(chart_colors::kOff));
+    cairo_stroke(cr);
   }
-  cairo_line_to(cr, layout.xOf(chart.times.back()), y(v.back()));
 }
 
 // Bands where the gripper holds an object (the "held" series > 0).
@@ -153,9 +169,7 @@ void drawLane(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const 
     for (std::size_t r = 0; r < lane.series.size(); ++r) {
       chartText(cr, box.x0 - 6, box.y0 + static_cast<double>(r + 1) * kDigitalRow - 0.5, std::to_string(r + 1), 8,
            rgb(workcell::Color::DarkGray), true);
-      digitalPath(cr, chart, layout, chart.series[lane.series[r]].values, box, r);
-      chartColor(cr, rgb(color));
-      cairo_stroke(cr);
+      digitalPath(cr, chart, layout, chart.series[lane.series[r]].values, box, r, rgb(color));
     }
     return;
   }
@@ -167,16 +181,12 @@ void drawLane(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const 
   chartText(cr, box.x0 - 6, box.y1 - kLanePad, scaleText(lo, length), kSmallText, dim, true);
   for (std::size_t k = 0; k < lane.series.size(); ++k) {
     analogPath(cr, chart, layout, chart.series[lane.series[k]].values, box, lo, hi);
-    const workcell::Color color = lane.kind == LaneKind::Tcp       ? chart_colors::kTcp[k % 3]
+    const workcell::Color color = lane.kind == LaneKind::Tcp       ? chart_colors::kTcp[lane.axis % 3]
                                   : lane.kind == LaneKind::Gripper ? chart_colors::kGripper
                                                                    : chart_colors::kMotor;
     chartColor(cr, rgb(color));
     cairo_stroke(cr);
   }
-  if (length)  // which colour is which axis
-    for (std::size_t k = 0; k < 3; ++k)
-      chartText(cr, 8 + 14 * static_cast<double>(k), box.y0 + 26, std::string(1, "xyz"[k]), kSmallText,
-           rgb(chart_colors::kTcp[k]));
 }
 
 // The time axis: a tick and its seconds every 1, 2 or 5 times a power of

@@ -52,8 +52,10 @@ inline constexpr workcell::Color kTcp[3] = {workcell::Color::LightRed, workcell:
                                             workcell::Color::LightBlue};
 inline constexpr workcell::Color kGripper = workcell::Color::White;
 inline constexpr workcell::Color kHeld = workcell::Color::Brown;  ///< a band while the gripper holds an object
-inline constexpr workcell::Color kInput = workcell::Color::LightGreen;
-inline constexpr workcell::Color kOutput = workcell::Color::LightRed;
+inline constexpr workcell::Color kInput = workcell::Color::LightGreen;   ///< an input while ON
+inline constexpr workcell::Color kOutput = workcell::Color::LightRed;   ///< an output while ON
+/// An input or output while OFF: dim, so that only what is ON stands out.
+inline constexpr workcell::Color kOff = workcell::Color::DarkGray;
 inline constexpr workcell::Color kLine = workcell::Color::LightGray;  ///< a tick where a source line starts
 inline constexpr workcell::Color kCollision = workcell::Color::Red;
 inline constexpr workcell::Color kWarning = workcell::Color::Yellow;

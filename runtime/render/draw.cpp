@@ -86,6 +86,21 @@ void drawTools(cairo_t* cr, const Picture& picture) {
   cairo_stroke(cr);
 }
 
+// The tool's path: one polyline per stretch, under the tool marks.
+void drawPath(cairo_t* cr, const Picture& picture) {
+  if (picture.path.empty()) return;
+  cairo_set_line_width(cr, kPathLineWidth);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for (const std::vector<Eigen::Vector2d>& stretch : picture.path) {
+    if (stretch.empty()) continue;
+    cairo_move_to(cr, stretch[0].x(), stretch[0].y());
+    for (std::size_t i = 1; i < stretch.size(); ++i) cairo_line_to(cr, stretch[i].x(), stretch[i].y());
+  }
+  setColor(cr, rgb(kPathColor));
+  cairo_stroke(cr);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+}
+
 void drawLegend(cairo_t* cr, const Picture& picture) {
   if (picture.legend.empty()) return;
   cairo_select_font_face(cr, "monospace", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
@@ -117,6 +132,7 @@ void draw(cairo_t* cr, const Picture& picture, bool vector) {
   cairo_paint(cr);
   drawLines(cr, picture, vector, false);
   drawLines(cr, picture, vector, true);
+  drawPath(cr, picture);
   drawTools(cr, picture);
   drawLegend(cr, picture);
 }

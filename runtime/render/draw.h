@@ -29,6 +29,9 @@ inline constexpr workcell::Color kToolColor = workcell::Color::White;
 inline constexpr double kLineWidth = 1.25;
 inline constexpr double kCollidingLineWidth = 2.5;
 
+/// The tool's path (`render --path`) is stroked this wide, in kPathColor.
+inline constexpr double kPathLineWidth = 1.5;
+
 enum class ImageFormat : std::uint8_t { Png, Svg };
 
 /// From the file name: ".png" or ".svg" (any case); nothing otherwise.

@@ -84,21 +84,29 @@ std::vector<runtime::MotorMove> framedMoves(const std::vector<runtime::MotorMove
 Frames framesOf(const runtime::RunLog& log, std::span<const std::uint32_t> eventSteps, const FrameRule& rule) {
   Frames frames;
   frames.runSteps = log.steps.size();
+  const auto slots = static_cast<vm::Micros>(std::max<std::size_t>(rule.slots, 1));
+  const vm::Micros slot = std::max(rule.minSlot, (log.end + slots - 1) / slots);
+  // A straight line's knots, at most about one a slot and motor: no screen
+  // shows more of a line, and a loop of lines would otherwise put every
+  // knot in the page.
+  frames.lineSlot = slot;
   if (log.steps.size() <= rule.keepAll) {
     frames.log = log;
     frames.stepOf.resize(log.steps.size());
     for (std::uint32_t s = 0; s < frames.stepOf.size(); ++s) frames.stepOf[s] = s;
+    for (std::vector<runtime::MotorMove>& moves : frames.log.moves) runtime::thinLineMoves(moves, slot);
     return frames;
   }
-  const auto slots = static_cast<vm::Micros>(std::max<std::size_t>(rule.slots, 1));
-  frames.slot = std::max(rule.minSlot, (log.end + slots - 1) / slots);
+  frames.slot = slot;
   const std::vector<std::uint32_t> kept = keptSteps(log, eventsOf(log, eventSteps), frames.slot);
   runtime::RunLog& out = frames.log;
   out.motors = log.motors;
   out.steps.reserve(kept.size());
   for (const std::uint32_t s : kept) out.steps.push_back(log.steps[s]);
-  for (const std::vector<runtime::MotorMove>& moves : log.moves)
+  for (const std::vector<runtime::MotorMove>& moves : log.moves) {
     out.moves.push_back(framedMoves(moves, kept, log.steps));
+    runtime::thinLineMoves(out.moves.back(), slot);
+  }
   out.outputs = renumbered(log.outputs, kept);
   out.cameras = renumbered(log.cameras, kept);
   out.grasps = renumbered(log.grasps, kept);

@@ -12,7 +12,9 @@
 // any instant of it), and the first step to start in each slot. The
 // motors' moves of the steps left out become one jump each to where they
 // got, at the next frame, so that the page shows every motor where it was
-// at the start and the end of every frame.
+// at the start and the end of every frame. A straight line's knots, which
+// may be thousands in one step, are merged within slots too, in every
+// page: a motor has at most about three moves a slot in a line.
 #pragma once
 
 #include <cstdint>
@@ -39,6 +41,9 @@ struct Frames {
   std::vector<std::uint32_t> stepOf;  ///< the run's step of each frame
   std::size_t runSteps = 0;           ///< the steps of the run
   vm::Micros slot = 0;                ///< the slot's length; 0 when every step is kept
+  /// The slot straight lines' knots are merged within (runtime::thinLineMoves),
+  /// whether or not every step is kept: the slot the steps would be cut to.
+  vm::Micros lineSlot = 0;
   bool decimated() const { return slot != 0; }
 };
 

@@ -250,9 +250,11 @@ const std::string_view kDrawScript = R"JS(function robotsimDrawing(model, canvas
     }
   }
   // One frame: camera state st ({view, window}), motor counts enc, objects
-  // through objectPose, the axes when asked, a label at the top left.
+  // through objectPose, the axes when asked, a label at the top left;
+  // overlay(V, ctx), when given, draws over the parts and under the tool
+  // marks (the animation's tool path).
   const V = affine();
-  function draw(st, enc, objectPose, axes, label) {
+  function draw(st, enc, objectPose, axes, label, overlay) {
     const cam = cameraFor(st, view.user);
     viewMatrix(cam.view, cam.window, cam.zoom, view.W, view.H, V);
     projectAll(V, enc, objectPose);
@@ -263,6 +265,7 @@ const std::string_view kDrawScript = R"JS(function robotsimDrawing(model, canvas
     ctx.lineWidth = view.hairline;
     ctx.lineCap = 'butt';
     strokeParts();
+    if (overlay) overlay(V, ctx);
     strokeAxesAndTools(V, axes);
     ctx.fillStyle = EGA[7];
     ctx.font = '13px ui-monospace, "DejaVu Sans Mono", monospace';

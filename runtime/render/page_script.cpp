@@ -116,7 +116,7 @@ const std::string_view kScript = R"JS('use strict';
   }
 
   // ---- Page state.
-  const S = { t: 0, k: stepAt(0), playing: false, speed: 1, axes: !!model.camera.axes, flush: false };
+  const S = { t: 0, k: stepAt(0), playing: false, speed: 1, axes: !!model.camera.axes, path: true, flush: false };
   // The parts of a collision are red (EGA 4) from its moment to the end
   // of its move (run.collisions, docs/render.md); the shared drawing code
   // draws a part marked hot in red.
@@ -132,11 +132,45 @@ const std::string_view kScript = R"JS('use strict';
       for (const k of c.objects[i]) if (model.objects[k]) model.objects[k].hot = true;
     }
   }
+  // The tool centre point's path (model.path, tool_path.h): its points up
+  // to the time shown, then where the tool is now; a new stretch at each
+  // jump (RESET). Drawn under the tool mark while the "path" box is ticked.
+  const path = model.path || null;
+  if (path) {
+    path.xyz = Float64Array.from(path.pts);
+    path.starts = new Uint8Array(path.at.length);
+    for (const i of path.jump) path.starts[i] = 1;
+  }
+  // The path up to time t through V, the robots posed for t: moveTo(u, v)
+  // starts a stretch, lineTo(u, v) goes on (render's pathUntil, projected).
+  function tracePath(V, t, moveTo, lineTo) {
+    const n = lastUpTo(path.at, t) + 1, xyz = path.xyz;
+    for (let i = 0; i < n; i++) {
+      const p = D.apply(V, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+      if (i === 0 || path.starts[i]) moveTo(p[0], p[1]); else lineTo(p[0], p[1]);
+    }
+    const F = carrier.F[carrier.n];
+    const last = 3 * (n - 1), dx = F[9] - xyz[last], dy = F[10] - xyz[last + 1], dz = F[11] - xyz[last + 2];
+    const now = D.apply(V, F[9], F[10], F[11]);
+    if (n === 0) moveTo(now[0], now[1]);
+    else if (dx * dx + dy * dy + dz * dz > 1e-18) lineTo(now[0], now[1]);
+  }
+  function strokePath(V, ctx) {
+    if (!S.path || !path || !carrier || !path.at.length) return;
+    ctx.beginPath();
+    tracePath(V, S.t, (u, v) => ctx.moveTo(u, v), (u, v) => ctx.lineTo(u, v));
+    ctx.lineWidth = model.style.pathLineWidth;
+    ctx.lineJoin = 'round';
+    ctx.strokeStyle = model.style.palette[model.style.pathColor];
+    ctx.stroke();
+    ctx.lineJoin = 'miter';
+    ctx.lineWidth = D.view.hairline;
+  }
   function render() {
     stateAt(S.k, S.t, current);
     markCollisions(S.t);
     D.draw(current, current.enc, (o) => objectPose(o, S.k, S.t), S.axes,
-           model.cell + '   t = ' + (S.t / 1e6).toFixed(3) + ' s');
+           model.cell + '   t = ' + (S.t / 1e6).toFixed(3) + ' s', strokePath);
   }
 
   // ---- Side panel and controls.
@@ -297,6 +331,9 @@ const std::string_view kScript = R"JS('use strict';
   const axesBox = el('axes');
   axesBox.checked = S.axes;
   axesBox.addEventListener('change', () => { S.axes = axesBox.checked; request(); });
+  const pathBox = el('path');
+  pathBox.checked = S.path;
+  pathBox.addEventListener('change', () => { S.path = pathBox.checked; request(); });
   el('resetView').addEventListener('click', () => { D.resetView(); request(); });
   let scrubbing = false;
   timeline.addEventListener('input', () => { scrubbing = true; setTime(Number(timeline.value)); });
@@ -322,7 +359,7 @@ const std::string_view kScript = R"JS('use strict';
       const st = stateAt(S.k, S.t, { enc: new Int32Array(motorCount), view: [0, 0, 0], window: [0, 0, 0] });
       return { t: S.t, step: S.k, index: S.k >= 0 ? run.index[S.k] : -1, line: currentLine(), playing: S.playing,
                encoders: Array.from(st.enc), outputs: st.outputs, inputs: st.inputs, view: st.view,
-               window: st.window, user: { ...D.view.user }, speed: S.speed };
+               window: st.window, user: { ...D.view.user }, speed: S.speed, path: S.path };
     },
     play, pause, setTime, stepBy,
     setSpeed(v) { S.speed = v; },
@@ -334,6 +371,19 @@ const std::string_view kScript = R"JS('use strict';
       const still = D.projectStill(st, st.enc, (o) => objectPose(o, k, t), width, height);
       request();
       return { encoders: Array.from(st.enc), lines: still.lines, tools: still.tools };
+    },
+    // The tool's path at time t (µs) as `robotsim render --at --path
+    // --dump-lines=json` gives it: a list of [u, v] vertices per stretch.
+    projectPath(t, width, height) {
+      if (!path || !carrier || !path.at.length) return [];
+      const k = stepAt(t), st = stateAt(k, t, { enc: new Int32Array(motorCount), view: [0, 0, 0], window: [0, 0, 0] });
+      const cam = D.cameraFor(st, { rx: 0, ry: 0, zoom: 1 });
+      const M = D.viewMatrix(cam.view, cam.window, cam.zoom, width, height, affine());
+      D.projectAll(M, st.enc, (o) => objectPose(o, k, t));
+      const out = [];
+      tracePath(M, t, (u, v) => out.push([[u, v]]), (u, v) => out[out.length - 1].push([u, v]));
+      request();
+      return out;
     },
     stats() { return { interval: summary(stats.interval), draw: summary(stats.draw) }; },
     // With flush on, each frame reads a pixel back, so that the draw time

@@ -85,6 +85,7 @@ const std::string_view kBody = R"HTML(<div id="app" class="with-chart">
 <option value="2">2&times;</option><option value="4">4&times;</option><option value="10">10&times;</option>
 </select></label>
 <label><input type="checkbox" id="axes"> axes</label>
+<label title="the path of the tool centre point up to the time shown"><input type="checkbox" id="path" checked> path</label>
 <button id="resetView" title="back to the starting view">reset view</button>
 </div>
 <div id="chartPane"><div id="chartWrap"><img id="chart" alt="the run over time: motors, tool centre point, gripper, inputs, outputs, source lines">

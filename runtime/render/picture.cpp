@@ -73,6 +73,14 @@ Picture makePicture(const CellPoser& poser, const Camera& camera, const Fit& fit
   return picture;
 }
 
+void addPath(Picture& picture, const std::vector<PathPoint>& path) {
+  const Projection project(picture.camera, picture.fit);
+  for (const PathPoint& p : path) {
+    if (picture.path.empty() || p.jump) picture.path.emplace_back();
+    picture.path.back().push_back(project(p.p));
+  }
+}
+
 void dumpText(std::ostream& out, const Picture& picture, const workcell::Workcell& cell) {
   const Camera& c = picture.camera;
   out << fmt::format("# robotsim lines: cell {} lines {} size {}x{}\n", base::safeText(cell.name), picture.lines.size(),
@@ -88,6 +96,8 @@ void dumpText(std::ostream& out, const Picture& picture, const workcell::Workcel
     out << fmt::format("tool {} {} {} {}\n", t.robot,
                        base::safeText(cell.robots[static_cast<std::size_t>(t.robot)].robot.name), number(t.at.x()),
                        number(t.at.y()));
+  for (std::size_t k = 0; k < picture.path.size(); ++k)
+    for (const Eigen::Vector2d& v : picture.path[k]) out << fmt::format("path {} {} {}\n", k, number(v.x()), number(v.y()));
 }
 
 void dumpJson(std::ostream& out, const Picture& picture, const workcell::Workcell& cell) {
@@ -105,7 +115,7 @@ void dumpJson(std::ostream& out, const Picture& picture, const workcell::Workcel
                      {"name", cell.robots[static_cast<std::size_t>(t.robot)].robot.name},
                      {"at", {t.at.x(), t.at.y()}}});
   const Camera& c = picture.camera;
-  const Json doc = {{"cell", cell.name},
+  Json doc = {{"cell", cell.name},
                     {"width", picture.width},
                     {"height", picture.height},
                     {"camera",
@@ -119,6 +129,15 @@ void dumpJson(std::ostream& out, const Picture& picture, const workcell::Workcel
                     {"lines", lines},
                     {"tools", tools},
                     {"legend", picture.legend}};
+  if (!picture.path.empty()) {
+    Json path = Json::array();
+    for (const std::vector<Eigen::Vector2d>& stretch : picture.path) {
+      Json vertices = Json::array();
+      for (const Eigen::Vector2d& v : stretch) vertices.push_back({v.x(), v.y()});
+      path.push_back(std::move(vertices));
+    }
+    doc["path"] = std::move(path);
+  }
   out << doc.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
 }
 

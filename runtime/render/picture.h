@@ -11,6 +11,7 @@
 
 #include "runtime/render/camera.h"
 #include "runtime/render/scene.h"
+#include "runtime/render/tool_path.h"
 
 namespace rs::render {
 
@@ -35,6 +36,10 @@ struct Picture {
   std::vector<Line2> lines;
   std::vector<ToolMark> tools;
   std::vector<std::string> legend;  ///< text lines, top left
+  /// The tool centre point's path (`render --path`, tool_path.h): one
+  /// polyline in pixels per stretch the tool travelled; drawn in
+  /// kPathColor under the tool marks.
+  std::vector<std::vector<Eigen::Vector2d>> path;
 };
 
 /// What the legend says besides the robots: the workcell and, for a moment
@@ -48,6 +53,10 @@ struct Caption {
 /// set, with axes 8% of the fit's radius long.
 Picture makePicture(const CellPoser& poser, const Camera& camera, const Fit& fit, const Caption& caption);
 
+/// Projects `path` (world points, tool_path.h) into the picture's `path`,
+/// with the camera and fit it was made with.
+void addPath(Picture& picture, const std::vector<PathPoint>& path);
+
 /// The legend line of one robot: "scorobot  F=0 E=-120 ... A=20".
 std::string robotLegend(const workcell::Robot& robot, std::span<const std::int32_t> encoders);
 
@@ -58,10 +67,13 @@ std::string partName(const Part& part);
 /// camera and the fit), then one row per line
 ///   robot 0 scorobot link1 LIGHTBLUE u1 v1 u2 v2
 ///   object 2 block object YELLOW u1 v1 u2 v2
-/// then one row per tool centre point: `tool 0 scorobot u v`. Nine decimals.
+/// then one row per tool centre point: `tool 0 scorobot u v`; with a path,
+/// one row per vertex: `path N u v`, N counting its stretches from 0. Nine
+/// decimals.
 void dumpText(std::ostream& out, const Picture& picture, const workcell::Workcell& cell);
 /// The same as one JSON object: {"width", "height", "lines": [{"owner",
-/// "index", "name", "part", "color", "a": [u, v], "b": [u, v]}], "tools": [...]}.
+/// "index", "name", "part", "color", "a": [u, v], "b": [u, v]}], "tools": [...]},
+/// with a path also "path": [[[u, v], ...], ...] (a list of vertices per stretch).
 void dumpJson(std::ostream& out, const Picture& picture, const workcell::Workcell& cell);
 
 }  // namespace rs::render

@@ -8,9 +8,12 @@ namespace rs::runtime {
 
 namespace {
 
-// A long call runs in slices of this many instructions, so that a pause
-// asked for from another thread is seen within a millisecond or so.
+// A long call runs in slices of this many instructions, or of this many
+// knots of straight lines (a line is one instruction and may be thousands
+// of them), so that a pause asked for from another thread is seen within a
+// few milliseconds.
 constexpr std::uint64_t kSlice = std::uint64_t{1} << 20;
+constexpr std::uint64_t kSliceKnots = std::uint64_t{1} << 14;
 
 }  // namespace
 
@@ -66,7 +69,7 @@ Run::~Run() = default;
 // added (a trace) see both.
 void Run::build(std::unique_ptr<Rig> rig) {
   rig_ = std::move(rig);
-  if (spec_.log && rig_->sim()) logger_.emplace(*rig_->sim(), rig_->world());
+  if (spec_.log && rig_->sim()) logger_.emplace(*rig_->sim(), rig_->world(), spec_.lines);
   interpreter_ = std::make_unique<vm::Interpreter>(*spec_.image, rig_->machine());
   observers_ = std::make_unique<Observers>(*this, *rig_, logger_ ? &*logger_ : nullptr);
   breakpoints_.assign(spec_.image->code.size(), 0);
@@ -99,16 +102,19 @@ std::optional<std::uint32_t> labelInstruction(const vm::Image& image, std::strin
   return std::nullopt;
 }
 
+std::uint64_t Run::knots() const { return rig_->machine().knots(); }
+
 // Why the interpreter paused; nullopt at the end of a slice (go on).
 std::optional<vm::StopReason> Run::causeOf(const vm::RunOutcome& outcome, const RunUntil& until,
-                                           std::uint64_t stepEnd, std::uint64_t sliceEnd) const {
+                                           std::uint64_t stepEnd, std::uint64_t sliceEnd,
+                                           std::uint64_t sliceKnots) const {
   using vm::StopReason;
   if (!outcome.paused()) return outcome.reason;
   if (observers_->conditionMet) return StopReason::Condition;
-  if (interpreter_->steps() >= stepEnd) return StopReason::Step;
+  if (interpreter_->steps() >= stepEnd || knots() >= until.knots) return StopReason::Step;
   if (rig_->clock() > until.time) return StopReason::Time;
   if (outcome.index < breakpoints_.size() && breakpoints_[outcome.index]) return StopReason::Breakpoint;
-  if (interpreter_->steps() >= sliceEnd) return std::nullopt;
+  if (interpreter_->steps() >= sliceEnd || knots() >= sliceKnots) return std::nullopt;
   return StopReason::Pause;
 }
 
@@ -138,12 +144,14 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
   vm::RunOutcome outcome;
   while (true) {
     const std::uint64_t sliceEnd = interpreter_->steps() + kSlice;
+    const std::uint64_t sliceKnots = knots() + kSliceKnots;
     vm::PausePoints pause;
     pause.atSteps = std::min(stepEnd, sliceEnd);
     pause.afterTime = until.time;
+    pause.atKnots = std::min(until.knots, sliceKnots);
     if (anyBreak) pause.before = breakpoints_;
     outcome = interpreter_->run(spec_.limits, observer, pause);
-    const std::optional<vm::StopReason> cause = causeOf(outcome, until, stepEnd, sliceEnd);
+    const std::optional<vm::StopReason> cause = causeOf(outcome, until, stepEnd, sliceEnd, sliceKnots);
     if (cause) {
       cause_ = *cause;
       break;
@@ -194,6 +202,14 @@ void Run::restore(const RunSnapshot& s) {
   rig_->restore(s.rig);
   if (logger_ && s.log && rig_->sim()) logger_->restore(*s.log, *rig_->sim());
   cause_ = vm::StopReason::Paused;
+}
+
+bool Run::setVariable(std::uint32_t slot, std::int32_t value) {
+  if (finished() || slot >= interpreter_->variables().size()) return false;
+  vm::InterpreterState state = interpreter_->state();  // the interpreter's one way in: its state
+  state.variables[slot] = value;
+  interpreter_->restore(state);
+  return true;
 }
 
 }  // namespace rs::runtime

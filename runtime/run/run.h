@@ -37,6 +37,9 @@ struct RunSpec {
   stimuli::Stimuli stimuli;
   vm::RunLimits limits;
   bool log = false;  ///< keep a RunLog (simulated machine only)
+  /// How the log keeps straight lines' knots (run_log.h): every one by
+  /// default; thinned for a page or a chart of a run of any length.
+  LineThinning lines;
   /// On a workcell, on the simulated machine: what a collision during a
   /// move does (runtime/sim/collision_watch.h); a run with Off checks nothing.
   CollisionMode collisions = CollisionMode::Error;
@@ -47,6 +50,7 @@ struct RunUntil {
   std::uint64_t steps = UINT64_MAX;        ///< total instructions executed reaches this
   std::uint64_t moreSteps = UINT64_MAX;    ///< this many instructions run in this call (a step: 1)
   vm::Micros time = INT64_MAX;             ///< the clock passes this (vm::PausePoints::afterTime)
+  std::uint64_t knots = UINT64_MAX;        ///< the knots made in all reach this (vm::PausePoints::atKnots)
   // Every member has its initializer, so that `runUntil({.time = t})` names
   // only what it sets (GCC warns of a member left without one).
   std::vector<std::uint32_t> instructions{};  ///< before one of these runs (0-based), not the first
@@ -124,13 +128,16 @@ class Run {
   /// label's place `runUntil({.instructions = {*labelInstruction(...)}})`.
   vm::RunOutcome runUntil(const RunUntil& until);
   vm::RunOutcome runToEnd() { return runUntil({}); }
-  /// Why the last call paused (vm/stop_reason.h): Step (RunUntil::steps),
-  /// Time, Breakpoint (an instruction or line), Condition or Pause (asked
-  /// for); when it did not pause, its outcome's reason; Paused before any
-  /// call and after a restore.
+  /// Why the last call paused (vm/stop_reason.h): Step (RunUntil::steps
+  /// or RunUntil::knots), Time, Breakpoint (an instruction or line),
+  /// Condition or Pause (asked for); when it did not pause, its outcome's
+  /// reason; Paused before any call and after a restore.
   vm::StopReason pauseCause() const { return cause_; }
-  /// Makes a running call pause soon (from any thread).
+  /// Makes a running call pause soon (from any thread): after at most a
+  /// slice of 2^20 instructions or 2^14 knots, or the instruction under way.
   void requestPause() { pauseRequested_.store(true, std::memory_order_relaxed); }
+  /// The knots of straight lines made so far (vm::Machine::knots).
+  std::uint64_t knots() const;
   /// How the run finished (empty while it can go on).
   std::optional<vm::RunOutcome> outcome() const;
   bool finished() const { return interpreter_->finished(); }
@@ -150,12 +157,16 @@ class Run {
   RunSnapshot snapshot() const;
   /// Back to a snapshot of this run; it then goes on exactly as it did.
   void restore(const RunSnapshot& snapshot);
+  /// A debugger's change between instructions: variable `slot` holds
+  /// `value` from now on. False on a finished run or a slot the image lacks.
+  bool setVariable(std::uint32_t slot, std::int32_t value);
 
  private:
   class Observers;
   void build(std::unique_ptr<Rig> rig);
   std::optional<vm::StopReason> causeOf(const vm::RunOutcome& outcome, const RunUntil& until,
-                                        std::uint64_t stepEnd, std::uint64_t sliceEnd) const;
+                                        std::uint64_t stepEnd, std::uint64_t sliceEnd,
+                                        std::uint64_t sliceKnots) const;
 
   RunSpec spec_;
   std::unique_ptr<Rig> rig_;

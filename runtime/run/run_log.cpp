@@ -29,7 +29,58 @@ void RunLog::cutTo(const Mark& m) {
   end = m.end;
 }
 
-RunLogger::RunLogger(SimMachine& machine, const World* world) : machine_(machine), world_(world) {
+vm::Micros LineThinning::slotAt(vm::Micros end, vm::Micros current) const {
+  if (slot > 0 && end / slot <= kMaxFixedSlots) return std::max(current, slot);
+  vm::Micros power = 1;
+  while (power <= end / kSlotsPerRun / 10) power *= 10;
+  return std::max(current, power);
+}
+
+namespace {
+
+// Can `next` (a lock-step move of the same motor) join `last`: the same
+// step, the motor where the last left it (it may have stood still for
+// knots in between), and together within one slot?
+bool joins(const MotorMove& last, const MotorMove& next, vm::Micros slot) {
+  return slot > 1 && last.lockStep && next.lockStep && last.step == next.step && last.end <= next.start &&
+         last.to == next.from && last.start / slot == (next.end - 1) / slot;
+}
+
+void join(MotorMove& last, const MotorMove& next) {
+  last.to = next.to;
+  last.end = next.end;
+  last.lead = false;  // merged: a constant rate from start to end, rounded toward the start
+}
+
+}  // namespace
+
+void thinLineMoves(std::vector<MotorMove>& moves, vm::Micros slot) {
+  if (moves.empty() || slot <= 1) return;
+  std::size_t kept = 0;
+  for (std::size_t i = 1; i < moves.size(); ++i) {
+    if (joins(moves[kept], moves[i], slot)) join(moves[kept], moves[i]);
+    else moves[++kept] = moves[i];
+  }
+  moves.resize(kept + 1);
+}
+
+void RunLogger::addLineMove(std::size_t m, const MotorMove& move) {
+  std::vector<MotorMove>& list = log_.moves[m];
+  if (lines_.on) {
+    if (const vm::Micros slot = lines_.slotAt(move.end, log_.lineSlot); slot != log_.lineSlot) {
+      log_.lineSlot = slot;
+      for (std::vector<MotorMove>& l : log_.moves) thinLineMoves(l, slot);
+    }
+    if (!list.empty() && joins(list.back(), move, log_.lineSlot)) {
+      join(list.back(), move);
+      return;
+    }
+  }
+  list.push_back(move);
+}
+
+RunLogger::RunLogger(SimMachine& machine, const World* world, LineThinning lines)
+    : machine_(machine), world_(world), lines_(lines) {
   log_.motors = machine.motors();
   log_.moves.resize(log_.motors.size());
   log_.inputs.push_back({machine.now(), machine.inputs()});
@@ -78,8 +129,11 @@ void RunLogger::recordMoves(std::uint32_t step) {
     const MotorSegment& s = machine_.segment(m);
     if (s == lastSegment_[m]) continue;
     lastSegment_[m] = s;
-    if (s.from != s.to || s.to != lastPosition_[m])
-      log_.moves[m].push_back({step, s.from, s.to, s.start, s.end, s.lockStep, s.lead});
+    if (s.from != s.to || s.to != lastPosition_[m]) {
+      const MotorMove move{step, s.from, s.to, s.start, s.end, s.lockStep, s.lead};
+      if (move.lockStep) addLineMove(m, move);
+      else log_.moves[m].push_back(move);
+    }
     lastPosition_[m] = s.to;
   }
 }

@@ -75,6 +75,9 @@ struct RunLog {
   std::vector<GraspRecord> grasps;  ///< in step order; empty without a gripper
   std::vector<VariableWrite> variables;  ///< in step order
   vm::Micros end = 0;               ///< the clock when the run stopped (or paused)
+  /// The slot its straight lines' knots are merged within (LineThinning;
+  /// 1: every knot is kept).
+  vm::Micros lineSlot = 1;
 
   /// How long each list was at some moment, to cut the log back to it.
   struct Mark {
@@ -87,12 +90,43 @@ struct RunLog {
   void cutTo(const Mark& mark);
 };
 
+/// How a log keeps the knots of straight lines (RunSpec::lines). Every
+/// knot by default: a 300-unit MOVES of an IRB 120 is 672 of them, seven
+/// motor moves each, so a loop of lines logged whole grows with its knots
+/// (1.65 GB for 2,000 instructions). Thinned, the knots a motor makes in
+/// one step (and the knots it stands still in between) are merged while
+/// together they stay within one slot of `slot` microseconds: the log is
+/// then exact (stateAt answers what the machine would) at every multiple
+/// of the slot, at each line's start and end, and all through a knot
+/// longer than a slot; in between, a merged move runs at a constant rate.
+/// Its line moves are at most about three a slot and motor, plus two a
+/// line.
+struct LineThinning {
+  bool on = false;
+  /// The slot, while the run's time is at most kMaxFixedSlots of them
+  /// (0: none). Beyond that, and without one, the slot is the largest
+  /// power of ten microseconds at most 1/kSlotsPerRun of the run's time so
+  /// far: it grows as the run goes, tenfold at a time, and the log is
+  /// thinned again each time (a power of ten divides every interval of 1,
+  /// 2 or 5 times a larger power of ten, such as a chart's samples).
+  vm::Micros slot = 0;
+  static constexpr vm::Micros kSlotsPerRun = 5000;
+  static constexpr vm::Micros kMaxFixedSlots = 1'000'000;
+  /// The slot for a run whose time so far is `end`, given the slot used so far.
+  vm::Micros slotAt(vm::Micros end, vm::Micros current) const;
+};
+
+/// Merges the lock-step moves of `moves` (one motor's, in step order) as
+/// LineThinning says for slots of `slot` microseconds.
+void thinLineMoves(std::vector<MotorMove>& moves, vm::Micros slot);
+
 /// Keeps a RunLog of a run on `machine` (and `world`, may be null), both of
 /// which must outlive it: the run calls afterStep after every step and
-/// finish when it stops.
+/// finish when it stops. A thinned log (`lines`) cannot be cut back to a
+/// mark (restore): its merged moves are not those it had then.
 class RunLogger {
  public:
-  RunLogger(SimMachine& machine, const World* world);
+  RunLogger(SimMachine& machine, const World* world, LineThinning lines = {});
   void afterStep(const vm::Interpreter& vm, std::uint32_t index);
   /// The instruction that stopped a run early (a runtime error, a
   /// deadlock, the time limit) counts as a step.
@@ -109,6 +143,8 @@ class RunLogger {
   void record(std::uint32_t index);
   void recordMoves(std::uint32_t step);
   void takeStateOf(const SimMachine& machine);
+  /// A lock-step move of motor m: merged into the last one when it may be.
+  void addLineMove(std::size_t m, const MotorMove& move);
 
   const SimMachine& machine_;
   const World* world_;
@@ -119,6 +155,7 @@ class RunLogger {
   CameraTriple lastView_, lastWindow_;
   vm::Micros lastNow_ = 0;
   std::uint64_t graspsSeen_ = 0;
+  LineThinning lines_;
 };
 
 /// Everything at one moment of a logged run.

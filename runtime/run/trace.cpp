@@ -1,6 +1,8 @@
 #include "runtime/run/trace.h"
 
 #include <fmt/format.h>
+
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "base/seconds.h"
@@ -78,7 +80,7 @@ void TraceWriter::collisionEvents() {
     const std::uint32_t line = e.instruction < lines.size() ? lines[e.instruction] : 0;
     if (format_ == TraceFormat::Text) {
       out_ << fmt::format("{:>10}  collision at line {}: {}\n", base::formatSeconds(e.at), line,
-                          base::safeText(watch->describe(e.contact)));
+                          base::safeText(watch->describe(e)));
     } else {
       const workcell::CollisionModel& m = watch->model();
       nlohmann::ordered_json j;
@@ -88,6 +90,7 @@ void TraceWriter::collisionEvents() {
       j["instr"] = e.instruction + 1;
       j["part"] = m.describe(e.contact.a);
       j["hits"] = m.describe(e.contact.b);
+      j["depth"] = std::round(e.depth * 1e4) / 1e4;  // to 1e-4: what a message says, not the last bits
       out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     }
   }

@@ -21,7 +21,7 @@ vm::Status CellMachine::moveAndReact(Move&& move) {
                 : watch_->sweep(*timeline_, world_, before_, motion_.positions(), start, motion_.now());
     if (hit && mode_ == CollisionMode::Error)
       return vm::Status::fault(
-          fmt::format("collision at {} s: {}", base::formatSeconds(hit->at), watch_->describe(hit->contact)));
+          fmt::format("collision at {} s: {}", base::formatSeconds(hit->at), watch_->describe(*hit)));
   }
   world_.moved(before_, motion_.positions(), start, motion_.now());
   return status;
@@ -39,7 +39,8 @@ bool CellMachine::planner() {
   if (planner_) return true;
   const workcell::PlacedRobot* driven = world_.cell().drivenRobot();
   if (!driven || !driven->robot.chain) return false;
-  planner_ = std::make_unique<workcell::LinePlanner>(*driven);
+  plans_ = std::make_unique<workcell::LinePlanCache>();
+  planner_ = std::make_unique<workcell::LinePlanner>(*driven, plans_.get());
   path_ = std::make_unique<workcell::LinePath>(*planner_);
   return true;
 }
@@ -54,6 +55,7 @@ vm::Status CellMachine::runPath(const std::optional<workcell::LineProblem>& prob
   lineFrom_.assign(from.begin(), from.end());
   lineTo_.assign(to.begin(), to.end());
   inLine_ = true;
+  if (watch_) watch_->beginLine();
   motion_.beginPath();
   vm::Status status = vm::Status::ok();
   for (std::size_t k = 0; k < path_->size() && status; ++k) status = moveLockStep(path_->knot(k), path_->lead(k));

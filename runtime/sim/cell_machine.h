@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/workcell/line_path.h"
+#include "model/workcell/line_plan_cache.h"
 
 #include "runtime/sim/collision_watch.h"
 #include "runtime/sim/sim_machine.h"
@@ -48,13 +49,17 @@ class CellMachine final : public vm::Machine {
   void window(std::int32_t x, std::int32_t y, std::int32_t z) override { motion_.window(x, y, z); }
   void view(std::int32_t x, std::int32_t y, std::int32_t z) override { motion_.view(x, y, z); }
   vm::Micros now() const override { return motion_.now(); }
+  std::uint64_t knots() const override { return motion_.knots(); }
   vm::IoMask outputs() const override { return motion_.outputs(); }
   vm::IoMask inputs() const override { return motion_.inputs(); }
 
  private:
   template <typename Move>
   vm::Status moveAndReact(Move&& move);
-  /// The planner and its path, made at the first straight line; null when the robot has no chain.
+  /// The planner, its cache and its path, made at the first straight
+  /// line; false when the robot has no chain. The cache lives as long as
+  /// the machine: a loop plans each of its lines once, and a debugger's
+  /// replay after a restore plans none.
   bool planner();
   vm::Status runPath(const std::optional<workcell::LineProblem>& problem);
 
@@ -64,6 +69,7 @@ class CellMachine final : public vm::Machine {
   CollisionWatch* watch_ = nullptr;
   CollisionMode mode_ = CollisionMode::Off;
   std::vector<std::int32_t> before_;  // scratch, sized once
+  std::unique_ptr<workcell::LinePlanCache> plans_;
   std::unique_ptr<workcell::LinePlanner> planner_;
   std::unique_ptr<workcell::LinePath> path_;
   // The line being run, while its knots are: their sweeps take the

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "base/number_text.h"
 #include "runtime/sim/world.h"
 
 namespace rs::runtime {
@@ -30,6 +31,23 @@ CollisionWatch::CollisionWatch(const workcell::Workcell& cell)
 
 std::string CollisionWatch::describe(const workcell::Contact& contact) const {
   return fmt::format("{} hits {}", model_.describe(contact.a), model_.describe(contact.b));
+}
+
+std::string CollisionWatch::describe(const CollisionEvent& event) const {
+  return fmt::format("{}, {} deep", describe(event.contact), base::formatNumber(event.depth, 2));
+}
+
+std::string CollisionWatch::hint(const CollisionEvent& event) const {
+  if (!event.endsIn) return {};
+  const workcell::Overlap& o = *event.endsIn;
+  const std::string d = base::formatNumber(o.depth, 2);
+  // y is up in every cell: a part that leaves the other upwards ends too low.
+  constexpr double kNearlyVertical = 0.866;  // within 30 degrees
+  const std::string way = o.away.y() > kNearlyVertical    ? fmt::format("end it {} higher", d)
+                          : o.away.y() < -kNearlyVertical ? fmt::format("end it {} lower", d)
+                                                          : fmt::format("end it {} short of there", d);
+  return fmt::format("the move ends with {} {} into {}: {}", model_.describe(event.contact.a), d,
+                     model_.describe(event.contact.b), way);
 }
 
 namespace {
@@ -73,21 +91,30 @@ const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const Wor
                                             vm::Micros start, vm::Micros end, std::span<const std::int32_t> lineFrom,
                                             std::span<const std::int32_t> lineTo) {
   if (!model_.movable()) return nullptr;
-  ++moves_;
   const bool knot = !lineFrom.empty() && !lineTo.empty();
+  // The line this knot belongs to has collided already: one move, one report.
+  if (knot && events_.size() > lineFirstEvent_ && events_.back().instruction == instruction_) return nullptr;
+  ++moves_;
   keyOf(world, before, after, lineFrom, lineTo);
   const SweepVerdict* verdict = memo_.find(key_);
   SweepVerdict fresh;
   if (verdict) {
     ++remembered_;
   } else {
-    fresh = advance(machine, world.collisionQuery(knot ? lineFrom : before, knot ? lineTo : after, poses_), before,
-                    after, start, end);
+    const workcell::CollisionQuery query = world.collisionQuery(knot ? lineFrom : before, knot ? lineTo : after, poses_);
+    fresh = advance(machine, query, before, after, start, end);
+    if (fresh.collides) {
+      fresh.depth = data_.overlap(fresh.contact, query).depth;
+      // Where the move ends: the same two parts, still in each other by a little?
+      const std::optional<workcell::Overlap> o = data_.overlapAt(knot ? lineTo : after, query, fresh.contact);
+      if (o && o->depth <= kEndsInBy) fresh.endsIn = o;
+    }
     memo_.remember(key_, fresh);
     verdict = &fresh;
   }
   if (!verdict->collides) return nullptr;
-  events_.push_back({start + verdict->after, verdict->contact, verdict->encoders, instruction_});
+  events_.push_back(
+      {start + verdict->after, verdict->contact, verdict->encoders, instruction_, verdict->depth, verdict->endsIn});
   return &events_.back();
 }
 
@@ -95,6 +122,14 @@ const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const Wor
 double CollisionWatch::used(const SimMachine& machine, vm::Micros t) {
   for (std::size_t m = 0; m < probe_.size(); ++m) probe_[m] = machine.positionAt(m, t);
   return bounds_.used(probe_);
+}
+
+// The motors `k`/`steps` of the way from `from` to `to`, each rounded
+// toward `from` (so each moves one way, and the last of the steps is `to`).
+void CollisionWatch::partWay(std::span<const std::int32_t> from, std::span<const std::int32_t> to, std::int64_t k,
+                             std::int64_t steps) {
+  for (std::size_t m = 0; m < probe_.size(); ++m)
+    probe_[m] = static_cast<std::int32_t>(from[m] + (static_cast<std::int64_t>(to[m]) - from[m]) * k / steps);
 }
 
 SweepVerdict CollisionWatch::advance(const SimMachine& machine, const workcell::CollisionQuery& query,
@@ -110,27 +145,68 @@ SweepVerdict CollisionWatch::advance(const SimMachine& machine, const workcell::
   bounds_.startMove(carried);
   at_.assign(before.begin(), before.end());
   probe_.assign(before.begin(), before.end());
+  next_.assign(before.begin(), before.end());
   vm::Micros t = start;
+  // The checks follow the motors, not the clock: where a motor covers more
+  // than a count in one microsecond (a speed over 1,000,000 counts a
+  // second) and that microsecond goes farther than the limits allow, the
+  // checks step through it by counts, from the motors at t towards their
+  // positions at t + 1 (`between`: the last check lies on that way).
+  bool between = false;
   while (true) {
     ++checks_;
     bounds_.setCheck(at_, after);
     if (const std::optional<workcell::Contact> c = data_.findContactOrClearance(at_, query, bounds_, clearance_))
-      return {true, t - start, *c, at_};
-    if (t >= end || !bounds_.limit(clearance_)) return {};
-    // The latest time within every limit (to 1/512 of the rest of the
-    // move); when one count already goes farther, the first time it moves.
-    vm::Micros next = end;
-    if (used(machine, end) > 1) {
-      vm::Micros lo = t, hi = end;  // used(lo) <= 1 < used(hi)
-      const vm::Micros fine = (end - t) / 512;
-      while (hi - lo > 1 && (hi - lo > fine || lo == t)) {
-        const vm::Micros mid = lo + (hi - lo) / 2;
-        (used(machine, mid) <= 1 ? lo : hi) = mid;
+      return {true, (between ? t + 1 : t) - start, *c, at_};
+    if ((t >= end && !between) || !bounds_.limit(clearance_)) return {};
+    if (!between) {
+      // The latest time within every limit (to 1/512 of the rest of the
+      // move); when one microsecond already goes farther, through it by counts.
+      vm::Micros next = end;
+      if (used(machine, end) > 1) {
+        vm::Micros lo = t, hi = end;  // used(lo) <= 1 < used(hi)
+        const vm::Micros fine = (end - t) / 512;
+        while (hi - lo > 1 && (hi - lo > fine || lo == t)) {
+          const vm::Micros mid = lo + (hi - lo) / 2;
+          (used(machine, mid) <= 1 ? lo : hi) = mid;
+        }
+        next = lo > t ? lo : hi;
       }
-      next = lo > t ? lo : hi;
+      if (next > t + 1 || used(machine, next) <= 1) {
+        t = next;
+        for (std::size_t m = 0; m < at_.size(); ++m) at_[m] = machine.positionAt(m, t);
+        continue;
+      }
+      for (std::size_t m = 0; m < next_.size(); ++m) next_[m] = machine.positionAt(m, t + 1);
     }
-    t = next;
-    for (std::size_t m = 0; m < at_.size(); ++m) at_[m] = machine.positionAt(m, t);
+    // Towards the motors at t + 1: as many counts as stay within every
+    // limit, at least one (of the motor that has the most to go).
+    std::int64_t steps = 0;
+    for (std::size_t m = 0; m < at_.size(); ++m)
+      steps = std::max<std::int64_t>(steps, std::abs(static_cast<std::int64_t>(next_[m]) - at_[m]));
+    std::int64_t k = steps;
+    if (steps > 1) {
+      std::int64_t lo = 1, hi = steps + 1;  // within the limits at lo (or lo is the least step), not at hi
+      partWay(at_, next_, steps, steps);
+      if (bounds_.used(probe_) > 1) {
+        hi = steps;
+        while (hi - lo > 1) {
+          const std::int64_t mid = lo + (hi - lo) / 2;
+          partWay(at_, next_, mid, steps);
+          (bounds_.used(probe_) <= 1 ? lo : hi) = mid;
+        }
+        k = lo;
+      }
+    }
+    if (k >= steps) {
+      t += 1;
+      between = false;
+      at_.assign(next_.begin(), next_.end());
+    } else {
+      partWay(at_, next_, k, steps);
+      at_.assign(probe_.begin(), probe_.end());
+      between = true;
+    }
   }
 }
 

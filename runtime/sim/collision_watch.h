@@ -11,7 +11,10 @@
 // (CollisionModel::bodyWeights); each motor moves one way during a move,
 // so the counts covered between two checks bound every moment in between.
 // The machine says where each motor is at time t (SimMachine::positionAt,
-// whatever profile it follows). Deterministic: the same move is checked at
+// whatever profile it follows); a microsecond in which a motor covers more
+// than a count (faster than 1,000,000 counts a second) is stepped through
+// by counts when it goes farther than the limits, so the bound holds at
+// every speed an image allows. Deterministic: the same move is checked at
 // the same times. A move made before in the same world is answered from
 // memory (runtime/sim/sweep_memo.h), with the same verdict.
 #pragma once
@@ -47,6 +50,10 @@ struct CollisionEvent {
   workcell::Contact contact;
   std::vector<std::int32_t> encoders;  ///< every motor at `at`
   std::uint32_t instruction = 0;       ///< the move's instruction (0-based)
+  double depth = 0;                    ///< how deep the parts are in each other at `at` (length units, as drawn)
+  /// The move ends with the same two parts in each other by a little (at
+  /// most CollisionWatch::kEndsInBy): a block set down a fraction too low.
+  std::optional<workcell::Overlap> endsIn = {};
   bool operator==(const CollisionEvent&) const = default;
 };
 
@@ -70,6 +77,11 @@ class CollisionWatch {
   /// The moves checked from now on are instruction `instruction`'s (the
   /// run says so before each step): the collisions they find carry it.
   void atInstruction(std::uint32_t instruction) { instruction_ = instruction; }
+  /// The knots of one straight line follow (CellMachine::moveLine): they
+  /// are one move, reported once, with its first contact. A knot swept
+  /// after the line's first collision is not checked again (docs/cli.md,
+  /// --collisions=warn: each colliding move once).
+  void beginLine() { lineFirstEvent_ = events_.size(); }
 
   const workcell::CollisionModel& model() const { return model_; }
   std::span<const CollisionEvent> events() const { return events_; }
@@ -87,6 +99,16 @@ class CollisionWatch {
   }
   /// "link 2 (upper_arm) hits object 3 (block)".
   std::string describe(const workcell::Contact& contact) const;
+  /// The same with how deep they are in each other: "object 2 (block) hits
+  /// object 1 (pallet), 0.12 deep".
+  std::string describe(const CollisionEvent& event) const;
+  /// How to get past it, where the move ends in the part it hits by a
+  /// little: "the move ends with object 2 (block) 0.2 into object 1
+  /// (pallet): end it 0.2 higher"; else "".
+  std::string hint(const CollisionEvent& event) const;
+  /// "By a little": a move that ends with the parts it collided this far in
+  /// each other or less gets hint() (length units; the sweep's own step).
+  static constexpr double kEndsInBy = workcell::kSweepStep;
 
  private:
   SweepVerdict advance(const SimMachine& machine, const workcell::CollisionQuery& query,
@@ -95,6 +117,8 @@ class CollisionWatch {
   void keyOf(const World& world, std::span<const std::int32_t> before, std::span<const std::int32_t> after,
              std::span<const std::int32_t> lineFrom, std::span<const std::int32_t> lineTo);
   double used(const SimMachine& machine, vm::Micros t);
+  void partWay(std::span<const std::int32_t> from, std::span<const std::int32_t> to, std::int64_t k,
+               std::int64_t steps);
 
   workcell::CollisionModel model_;
   workcell::CollisionData data_;
@@ -102,12 +126,14 @@ class CollisionWatch {
   std::vector<workcell::PartClearance> clearance_;  // per part: this check's gaps
   std::vector<CollisionEvent> events_;
   std::uint32_t instruction_ = 0;  // the instruction whose moves are checked
+  std::size_t lineFirstEvent_ = 0;  // events_.size() when the line being run began
   SweepMemo memo_;
   std::optional<std::uint64_t> worldRevision_;  // the world's revision placesId_ was taken at
   std::uint64_t placesId_ = 0;
   std::vector<std::uint64_t> key_;         // scratch: this move's key
   std::vector<Eigen::Isometry3d> poses_;   // scratch: every object's resting pose
   std::vector<std::int32_t> at_, probe_;   // scratch: motors at the last check, at a time tried
+  std::vector<std::int32_t> next_;         // scratch: motors at the microsecond after the last check's
   std::uint64_t checks_ = 0, moves_ = 0, remembered_ = 0;
 };
 

@@ -63,11 +63,11 @@ bool SimMachine::setInputNow(int input, bool on) {
 }
 
 SimMachine::State SimMachine::state() const {
-  return {positions_, segments_, path_, now_, outputs_, inputs_, windowShift_, viewRotation_, schedule_.state()};
+  return {positions_, segments_, path_, now_, knots_, outputs_, inputs_, windowShift_, viewRotation_, schedule_.state()};
 }
 
 void SimMachine::restore(const State& s) {
-  positions_ = s.positions, segments_ = s.segments, path_ = s.path, now_ = s.now;
+  positions_ = s.positions, segments_ = s.segments, path_ = s.path, now_ = s.now, knots_ = s.knots;
   outputs_ = s.outputs, inputs_ = s.inputs;
   windowShift_ = s.windowShift, viewRotation_ = s.viewRotation;
   schedule_.restore(s.schedule);
@@ -121,6 +121,7 @@ Status SimMachine::moveLockStep(std::span<const std::int32_t> targets, std::uint
     positions_[i] = targets[i];
   }
   path_.insert(path_.end(), segments_.begin(), segments_.end());
+  ++knots_;
   advanceBy(longest);
   if (moveListener_) moveListener_();
   return Status::ok();

@@ -73,6 +73,8 @@ class SimMachine final : public vm::Machine {
   bool setInputNow(int input, bool on);
 
   vm::Micros now() const override { return now_; }
+  /// Every moveLockStep made so far.
+  std::uint64_t knots() const override { return knots_; }
   vm::IoMask outputs() const override { return outputs_; }
   vm::IoMask inputs() const override { return inputs_; }
 
@@ -102,6 +104,7 @@ class SimMachine final : public vm::Machine {
     std::vector<MotorSegment> segments;
     std::vector<MotorSegment> path;  ///< the line's lock-step moves, knot by knot (motors() each)
     vm::Micros now = 0;
+    std::uint64_t knots = 0;
     vm::IoMask outputs = 0, inputs = 0;
     CameraTriple windowShift, viewRotation;
     InputSchedule::State schedule;
@@ -127,6 +130,7 @@ class SimMachine final : public vm::Machine {
   // cleared, its capacity kept, by the next line or any other move.
   std::vector<MotorSegment> path_;
   vm::Micros now_ = 0;
+  std::uint64_t knots_ = 0;
   vm::IoMask outputs_ = 0;
   vm::IoMask inputs_ = 0;
   CameraTriple windowShift_;

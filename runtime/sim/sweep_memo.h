@@ -17,6 +17,7 @@
 #include <span>
 #include <string>
 #include <unordered_map>
+#include <optional>
 #include <vector>
 
 #include "model/workcell/collision_model.h"
@@ -30,6 +31,8 @@ struct SweepVerdict {
   vm::Micros after = 0;  ///< from the start to the first check that saw the overlap
   workcell::Contact contact;
   std::vector<std::int32_t> encoders;  ///< every motor at that check
+  double depth = 0;                    ///< how deep the two parts are in each other there
+  std::optional<workcell::Overlap> endsIn = {};  ///< CollisionEvent::endsIn
 };
 
 class SweepMemo {

@@ -6,7 +6,8 @@
 //        [--chromium /usr/bin/chromium] [--timeout 120]
 //
 // Checks: the page loads without fetching anything, its canvas is drawn,
-// its projection equals `robotsim render --dump-lines` to 1e-6 px, dragging
+// its projection equals `robotsim render --dump-lines` to 1e-6 px (and its
+// tool path `render --path`'s, to the thinning's tolerance), dragging
 // turns the picture, the wheel zooms, Play advances the time and the
 // highlighted line, the lamps follow the outputs, a block the gripper
 // carries moves with it and the others stay, a collision's parts are drawn
@@ -43,6 +44,8 @@ const stills = (program, cell, times, extra = []) => times.map((t) => ({
 const pickStills = stills('pick_and_place.rsp', 'scara-pick', [AT, 4.2, 6.2, 20],
                           ['--stimuli', path.join(examples, 'pick_and_place.stim')]);
 const still = pickStills[0].still;
+const pathStills = stills('pick_and_place.rsp', 'scara-pick', [AT, 20],
+                          ['--stimuli', path.join(examples, 'pick_and_place.stim'), '--path']);
 const viewHtml = path.join(out, 'view.html');
 robotsim(['animate', path.join(examples, 'workcell_view.rsp'), '--cell', 'scara-pick', '-o', viewHtml]);
 const viewStills = stills('workcell_view.rsp', 'scara-pick', [1, 3, 3.6, 5]);
@@ -127,6 +130,35 @@ function difference(mine, reference) {
   });
   return worst;
 }
+// How far apart two tool paths are (lists of [u, v] stretches, as
+// render --path --dump-lines=json gives them): the farthest vertex of either
+// from the other's polyline; Infinity when their stretches differ in number
+// or in their ends (which both give exactly: home, and the tool at t).
+function pathDifference(mine, reference) {
+  if (mine.length !== reference.length) return Infinity;
+  const toPolyline = (p, line) => {
+    let best = Infinity;
+    for (let i = 0; i + 1 < line.length || i === 0; i++) {
+      const a = line[i], b = line[Math.min(i + 1, line.length - 1)];
+      const dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
+      const s = len2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2)) : 0;
+      best = Math.min(best, Math.hypot(p[0] - a[0] - s * dx, p[1] - a[1] - s * dy));
+      if (line.length < 2) break;
+    }
+    return best;
+  };
+  let worst = 0;
+  for (let k = 0; k < mine.length; k++) {
+    const a = mine[k], b = reference[k];
+    for (const end of [0, -1]) {
+      const p = a.at(end), q = b.at(end);
+      if (Math.abs(p[0] - q[0]) > 1e-6 || Math.abs(p[1] - q[1]) > 1e-6) return Infinity;
+    }
+    for (const p of a) worst = Math.max(worst, toPolyline(p, b));
+    for (const p of b) worst = Math.max(worst, toPolyline(p, a));
+  }
+  return worst;
+}
 const encodersOf = (reference) => reference.legend[1].split(/\s+/).slice(1).map((w) => Number(w.split('=')[1]));
 
 try {
@@ -171,6 +203,17 @@ try {
     }
   };
   await compare(pickStills);
+  // ---- the tool's path: the page's, up to the time shown, is render --path's.
+  // render --at runs only until then, so where the two thin a stretch may
+  // differ by the thinning's tolerance (a third of a pixel) each way.
+  for (const { t, still: reference } of pathStills) {
+    const mine = await page.evaluate((us) => window.robotsim.projectPath(us, 1024, 768), t * 1e6);
+    const worst = pathDifference(mine, reference.path || []);
+    check(worst <= 0.75, `the page's tool path is render --path's at ${t}`,
+          `${mine.length} stretch(es), ${mine.reduce((n, s) => n + s.length, 0)} vertices, largest difference ` +
+          `${worst.toExponential(2)} px`);
+  }
+  check((await page.evaluate(() => window.robotsim.state.path)) === true, 'the path box starts ticked');
   const legend = encodersOf(still);
 
   // ---- dragging turns the picture; the wheel zooms

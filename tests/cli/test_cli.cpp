@@ -45,7 +45,7 @@ void checkSummaryShape(const json& j) {
   CHECK(keys == std::vector<std::string>{"diagnostics", "inputs", "motors", "outputs", "status", "steps", "time",
                                          "variables"});
   CHECK(j["status"].is_string());
-  CHECK((j["status"] == "ok" || j["status"] == "error"));
+  CHECK((j["status"] == "finished" || j["status"] == "error"));
   CHECK(j["time"].is_number());
   CHECK(j["steps"].is_number_unsigned());
   CHECK(j["motors"].is_object());
@@ -242,7 +242,7 @@ TEST_CASE("cli: --format=json summary", "[cli]") {
     for (auto it = ordered.begin(); it != ordered.end(); ++it) order.push_back(it.key());
     CHECK(order == std::vector<std::string>{"status", "time", "steps", "motors", "outputs", "inputs", "variables",
                                             "diagnostics"});
-    CHECK(j["status"] == "ok");
+    CHECK(j["status"] == "finished");
     CHECK(j["time"].get<double>() == Approx(0.75));
     CHECK(j["steps"] == 12);
     CHECK(j["motors"] == json::parse(R"({"E":300,"D":0,"C":0,"B":0,"A":0})"));
@@ -258,7 +258,7 @@ TEST_CASE("cli: --format=json summary", "[cli]") {
     CHECK(r.code == 0);
     const json j = parseJson(r.out);
     checkSummaryShape(j);
-    CHECK(j["status"] == "ok");
+    CHECK(j["status"] == "finished");
     CHECK(j["time"].get<double>() == Approx(1.5));
     CHECK(j["inputs"][2] == true);
     REQUIRE(j["diagnostics"].size() == 1);
@@ -284,6 +284,7 @@ TEST_CASE("cli: --format=json summary", "[cli]") {
                {"line", 3},
                {"column", 3},
                {"severity", "error"},
+               {"code", "runtime-error"},
                {"message", "runtime error: MOVE takes motor E to 1200, outside its range -1000..1000 (instruction 3)"}});
     CHECK(r.err == f + ":3:3: error: runtime error: MOVE takes motor E to 1200, outside its range -1000..1000 "
                        "(instruction 3)\n"

@@ -289,7 +289,7 @@ TEST_CASE("the bash completion, sourced in bash, completes commands and each com
     const std::vector<std::string> run = optionNames(commandLine.subcommand(0));
     CHECK(complete(dir, "robotsim run prog.rsp --max-") == startingWith(run, "--max-"));
     CHECK(complete(dir, "robotsim run prog.rsp --max-") ==
-          std::set<std::string>{"--max-errors", "--max-steps", "--max-time"});
+          std::set<std::string>{"--max-errors", "--max-knots", "--max-steps", "--max-time"});
     CHECK(complete(dir, "robotsim compile --o") == std::set<std::string>{"--output"});
   }
   SECTION("anything else is left to bash's file names") {

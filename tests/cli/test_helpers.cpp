@@ -6,15 +6,18 @@
 // missing helper is a clear error, and an installed layout finds its helper.
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include "tests/cli/cli_support.h"
 #include "tools/cli/lib/commands.h"
+#include "tools/cli/lib/helper_handshake.h"
 #include "tools/cli/lib/helpers.h"
 
 namespace {
@@ -32,7 +35,8 @@ CliResult runProcess(const TempDir& dir, const std::string& program, const std::
   std::string command = helperQuoted(program);
   for (const std::string& a : args) command += " " + helperQuoted(a);
   const std::string out = dir.file("process.out"), err = dir.file("process.err");
-  command += " </dev/null >" + helperQuoted(out) + " 2>" + helperQuoted(err);
+  // Bounded: before, a helper linked back to robotsim exec'd itself for ever.
+  command = "timeout 60 " + command + " </dev/null >" + helperQuoted(out) + " 2>" + helperQuoted(err);
   const int status = std::system(command.c_str());
   CliResult r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -161,4 +165,115 @@ TEST_CASE("only the main binary's table leaves rows to helpers", "[cli][helpers]
   bool anyInHelper = false;
   for (const rs::cli::Command& row : rs::cli::commandTable()) anyInHelper = anyInHelper || row.inHelper;
   CHECK(anyInHelper);
+}
+
+namespace {
+
+// A copy of the main binary at `exe`, alone (a static-pie: no library needed).
+void copyMainBinary(const fs::path& exe) {
+  fs::create_directories(exe.parent_path());
+  fs::copy_file(kHelpersMainBinary, exe);
+}
+
+// A shell script at `path` that leaves `marker` behind when it runs, and
+// says `says` (a planted helper).
+void plantScript(const fs::path& path, const fs::path& marker, const std::string& says = "") {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path) << "#!/bin/sh\necho ran >> '" << marker.string() << "'\n" << (says.empty() ? "" : "echo '" + says + "'\n");
+  fs::permissions(path, fs::perms::owner_all);
+}
+
+}  // namespace
+
+TEST_CASE("a lone robotsim in D/x/ never runs D/libexec/robotsim's programs", "[cli][helpers]") {
+  // Before: `D/x/robotsim render` ran D/x/../libexec/robotsim/robotsim-render,
+  // a folder that is no part of a lone copy (as root: "PLANTED HELPER RAN").
+  TempDir dir;
+  const fs::path lone = dir.path() / "x" / "robotsim";
+  copyMainBinary(lone);
+  const fs::path marker = dir.path() / "planted-ran";
+  plantScript(dir.path() / "libexec" / "robotsim" / "robotsim-render", marker);
+  const CliResult r = runProcess(dir, lone.string(), {"render", "scara-pick", "-o", dir.file("p.png")});
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(!fs::exists(marker));
+  CHECK(r.err.rfind("robotsim: error: 'render' runs in a helper program that is missing: looked for\n  " +
+                        (dir.path() / "x" / "libexec" / "robotsim" / "robotsim-render").string() + "\n  hint:",
+                    0) == 0);
+  CHECK(rs::cli::helperCandidates(lone, "render") ==
+        std::vector<fs::path>{dir.path() / "x" / "libexec" / "robotsim" / "robotsim-render"});
+}
+
+TEST_CASE("a program at a helper's name that is not robotsim's own helper is refused, the command not run",
+          "[cli][helpers]") {
+  // Before: /bin/true there gave exit 0 and no output, as if the picture
+  // had been drawn.
+  TempDir dir;
+  const fs::path exe = dir.path() / "bin" / "robotsim";
+  copyMainBinary(exe);
+  const fs::path helper = rs::cli::helperCandidates(exe, "render").front();
+  fs::create_directories(helper.parent_path());
+  const auto refusal = [&] {
+    const CliResult r = runProcess(dir, exe.string(), {"render", "scara-pick", "-o", dir.file("p.png")});
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK(!fs::exists(dir.file("p.png")));
+    CHECK(r.err.find("hint: reinstall robotsim") != std::string::npos);
+    return r.err;
+  };
+  fs::create_symlink("/bin/true", helper);
+  CHECK(refusal() == "robotsim: error: 'render' runs in a helper program, and " + helper.string() +
+                         " did not answer robotsim's handshake (it printed nothing and exited with status 0)\n"
+                         "  hint: reinstall robotsim (its helpers are part of it); in a build tree, `cmake --build "
+                         "BUILD --target robotsim` builds them; a copied robotsim needs the libexec/robotsim folder at "
+                         "one of those places\n");
+  // One that answers like a helper of another build, or prints something else.
+  fs::remove(helper);
+  const fs::path marker = dir.path() / "ran";
+  plantScript(helper, marker, "robotsim-helper 0.0.1 0123456789ab Debug");
+  CHECK_THAT(refusal(), Catch::Contains("is the helper of another build of robotsim (it says 'robotsim-helper 0.0.1 "
+                                        "0123456789ab Debug'; this robotsim is 'robotsim-helper "));
+  CHECK(rs::testing::readBytes(marker.string()) == "ran\n");  // asked once, never run with the command's arguments
+  fs::remove(helper);
+  plantScript(helper, marker, "\x1b[2J hello");
+  const std::string garbage = refusal();
+  CHECK_THAT(garbage, Catch::Contains("did not answer robotsim's handshake (it printed "));
+  CHECK(garbage.find('\x1b') == std::string::npos);
+  // Not a file at all: a FIFO there is refused without waiting on it.
+  fs::remove(helper);
+  REQUIRE(::mkfifo(helper.c_str(), 0700) == 0);
+  CHECK_THAT(refusal(), Catch::Contains(helper.string() + " is a FIFO (a named pipe), not a regular file"));
+}
+
+TEST_CASE("a helper linked back to robotsim is refused, not exec'd for ever", "[cli][helpers]") {
+  // Before: 1,398 execve in 3 s, and no end.
+  TempDir dir;
+  const fs::path exe = dir.path() / "bin" / "robotsim";
+  copyMainBinary(exe);
+  const fs::path helper = rs::cli::helperCandidates(exe, "teach").front();
+  fs::create_directories(helper.parent_path());
+  fs::create_symlink(exe, helper);
+  const std::string expected = "robotsim: error: 'teach' runs in a helper program, and " + helper.string() +
+                               " is robotsim itself (a link back to it?), not its helper\n";
+  CliResult r = runProcess(dir, exe.string(), {"teach", "--help"});
+  CHECK(r.code == 2);
+  CHECK(r.err.rfind(expected, 0) == 0);
+  // A hard link is the same file by another name.
+  fs::remove(helper);
+  fs::create_hard_link(exe, helper);
+  r = runProcess(dir, exe.string(), {"teach", "--help"});
+  CHECK(r.code == 2);
+  CHECK(r.err.rfind(expected, 0) == 0);
+}
+
+TEST_CASE("the helper handshake: the helper answers with this build's line, the main binary never does",
+          "[cli][helpers]") {
+  TempDir dir;
+  const CliResult helper = runProcess(dir, kHelpersRender.string(), {std::string(rs::cli::kHelperHandshakeWord)});
+  CHECK(helper.code == 0);
+  CHECK(helper.out == rs::cli::helperHandshakeLine());
+  CHECK(helper.out.rfind("robotsim-helper ", 0) == 0);
+  const CliResult main = runProcess(dir, kHelpersMainBinary.string(), {std::string(rs::cli::kHelperHandshakeWord)});
+  CHECK(main.code == 2);
+  CHECK(main.out.empty());
 }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler/description/library.h"
 #include "compiler/description/library_listing.h"
 #include "tests/cli/cli_support.h"
 
@@ -152,4 +153,30 @@ TEST_CASE("list: a header's first sentence, its lines joined, without NAME: befo
   CHECK(headerSummary("; v1.5 of it. Then\n", "y") == "v1.5 of it.");
   CHECK(headerSummary("; arm: of the paper's Figs. 4-7 (its Fig. 2 kind). Lengths\n", "arm") ==
         "of the paper's Figs. 4-7 (its Fig. 2 kind).");
+}
+
+TEST_CASE("robotsim list: a file over 4 MiB is listed as the readers read it, one over their limit is named",
+          "[cli][list]") {
+  // Before, list read at most 4 MiB of a file and left a larger one out
+  // without a word, while every command reads up to 64 MiB: an entry the
+  // commands used was missing, and a name the path hid showed as active.
+  ::unsetenv("ROBOTSIM_PATH");
+  const rs::testing::TempDir dir;
+  fs::create_directories(dir.path() / "objects");
+  const std::string padding(std::size_t{5} << 20, ' ');  // 5 MiB of blanks after the block
+  dir.write("objects/slab.rsd", "; slab: a big one.\nOBJECT slab\n  BOX 0 10 0 10 10 0\nEND\n" + padding + "\n");
+  // Over the readers' limit: its size alone refuses it (a sparse file).
+  const std::string huge = dir.write("objects/huge.rsd", "; huge: too big.\nOBJECT huge\n  BOX 0 1 0 1 1 0\nEND\n");
+  fs::resize_file(huge, rs::compiler::kMaxDescriptionBytes + (std::size_t{1} << 20));
+  const CliResult r = runCli({"list", "--lib", dir.path().string()});
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  const std::vector<ListedRow> rows = listedRows(r.out);
+  CHECK(std::find(rows.begin(), rows.end(), ListedRow{"object", "slab", "a big one."}) != rows.end());
+  CHECK(std::none_of(rows.begin(), rows.end(), [](const ListedRow& row) { return row.name == "huge"; }));
+  CHECK(r.err == huge + ": warning: not listed: file is 65 MiB; the limit is 64 MiB\n");
+  // The same file is what `render` refuses, with the same reason.
+  const CliResult render = runCli({"render", huge, "--dump-lines"});
+  CHECK(render.code == 2);
+  CHECK(render.err.find("file is 65 MiB; the limit is 64 MiB") != std::string::npos);
 }

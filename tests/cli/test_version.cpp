@@ -121,3 +121,45 @@ TEST_CASE("the VS Code extension's version is the project's", "[cli][version]") 
   CHECK(lock.at("version") == versionOfProject());
   CHECK(lock.at("packages").at("").at("version") == versionOfProject());
 }
+
+TEST_CASE("robotsim --version prints the library's path and the places looked in with control bytes escaped",
+          "[cli][version]") {
+  // A folder whose name holds ESC [ 2 J (clear the screen) and a BEL: before,
+  // both lines printed them raw to the terminal.
+  const rs::testing::TempDir dir;
+  const fs::path prefix = dir.path() / "x\x1b[2Jy\x07z";
+  fs::create_directories(prefix / "bin");
+  fs::create_directories(prefix / "share" / "robotsim" / "stdlib");  // an empty library is still one
+  const fs::path found = prefix / "bin" / "robotsim";
+  fs::copy_file(ROBOTSIM_BINARY, found);
+  // The same escape in a folder with no library near it: "not found (looked in ...)".
+  fs::create_directories(prefix / "alone" / "x");
+  const fs::path alone = prefix / "alone" / "x" / "robotsim";
+  fs::copy_file(ROBOTSIM_BINARY, alone);
+  const std::string shown = (dir.path() / "x\\x1b[2Jy\\x07z").string();
+  for (const fs::path& exe : {found, alone}) {
+    for (const char* format : {"text", "json"}) {
+      CAPTURE(exe.string(), format);
+      const std::string out = dir.file("version.out");
+      const std::string command = "'" + exe.string() + "' --version --format " + format + " >'" + out + "' 2>&1";
+      REQUIRE(std::system(command.c_str()) == 0);
+      const std::string printed = rs::testing::readBytes(out);
+      INFO(printed);
+      CHECK(printed.find('\x1b') == std::string::npos);
+      CHECK(printed.find('\x07') == std::string::npos);
+      if (std::string_view(format) == "text") {
+        CHECK(printed.find(exe == found ? "library: " + shown : "library: not found (looked in " + shown) !=
+              std::string::npos);
+      } else {
+        const nlohmann::json j = nlohmann::json::parse(printed);
+        if (exe == found) {
+          REQUIRE(j.at("library").is_string());
+          CHECK(j.at("library").get<std::string>().rfind(shown, 0) == 0);
+        } else {
+          REQUIRE(j.at("libraryLookedIn").is_array());
+          CHECK(j.at("libraryLookedIn").at(0).get<std::string>().rfind(shown, 0) == 0);
+        }
+      }
+    }
+  }
+}

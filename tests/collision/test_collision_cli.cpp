@@ -52,7 +52,13 @@ TEST_CASE_METHOD(PostCell, "a move through a post stops the run with the line, t
   const double seconds = std::stod(r.err.substr(at + program.size() + 40));
   CHECK(seconds > 0.5);
   CHECK(seconds < 0.9);
-  CHECK(r.err.find("link 2 (rhino_scara_link2) hits object 2 (post) (instruction 1)") != std::string::npos);
+  // How deep at the first check that saw it: the sweep checks at least every length unit a point moves.
+  const auto deep = r.err.find("link 2 (rhino_scara_link2) hits object 2 (post), ");
+  REQUIRE(deep != std::string::npos);
+  const double depth = std::stod(r.err.substr(deep + std::string("link 2 (rhino_scara_link2) hits object 2 (post), ").size()));
+  CHECK(depth > 0);
+  CHECK(depth <= 1.02);
+  CHECK(r.err.find(" deep (instruction 1)") != std::string::npos);
   CHECK(r.out.find("collision at line 1: link 2 (rhino_scara_link2) hits object 2 (post)") != std::string::npos);
   CHECK(r.out.find("runtime error at line 1") != std::string::npos);
   CHECK(r.out.find("  collisions      line 1, ") != std::string::npos);

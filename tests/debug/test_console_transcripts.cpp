@@ -75,6 +75,10 @@ TEST_CASE("debug transcript: a runtime error", "[debug][transcript]") {
   checkTranscript("overflow", {kDir + "programs/overflow.rsp"});
 }
 
+TEST_CASE("debug transcript: set VAR = VALUE, replayed going back and forth", "[debug][transcript]") {
+  checkTranscript("set_variable", {debugtest::kExamples + "nested_subroutines.rsp"});
+}
+
 TEST_CASE("debug transcript: bad commands get a message and the session goes on", "[debug][transcript]") {
   checkTranscript("bad", {debugtest::kExamples + "nested_subroutines.rsp"});
 }

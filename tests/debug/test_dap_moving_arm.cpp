@@ -122,6 +122,58 @@ TEST_CASE("dap: the collision filter stops at the first contact, the scopes show
   CHECK(bogus->at("message").get<std::string>().find("no exception filter 'bogus'") != std::string::npos);
 }
 
+TEST_CASE("dap: in the default collision mode the collision filter and the runtimeError stop stand at the contact",
+          "[debug][dap][moving-arm]") {
+  // No "collisions" in the launch: error, the run ends at the collision,
+  // the machine having made the whole move (Y 1700 at 4.925 s); the arm
+  // never got past the contact (Y about 1500 at 2.8 + 1500/800 = 4.675 s,
+  // tests/debug/test_moving_arm.cpp).
+  const rs::testing::TempDir dir;
+  const std::string program = dir.write("low.rsp", dapArmProgram(1700));
+  const auto session = [&](const Json& filters) {
+    return dapArmServe(dapArmRequest(1, "initialize", {{"adapterID", "robotsim"}}) +
+                       dapArmRequest(2, "launch", {{"program", program}, {"cell", "gantry-cell"}}) +
+                       dapArmRequest(3, "setExceptionBreakpoints", {{"filters", filters}}) +
+                       dapArmRequest(4, "configurationDone", Json::object()) +
+                       dapArmRequest(5, "evaluate", {{"expression", "Y"}}) +
+                       dapArmRequest(6, "evaluate", {{"expression", "clock"}}) +
+                       dapArmRequest(7, "continue", {{"threadId", 1}}) +
+                       dapArmRequest(8, "disconnect", Json::object()));
+  };
+  const auto atContact = [](const std::vector<Json>& messages) {
+    const Json* y = dapArmResponseTo(messages, 5);
+    const Json* clock = dapArmResponseTo(messages, 6);
+    REQUIRE(y);
+    REQUIRE(clock);
+    INFO(y->dump() << clock->dump());
+    const int counts = std::stoi(y->at("body").at("result").get<std::string>());
+    CHECK(counts >= 1490);
+    CHECK(counts <= 1510);  // not 1700, the end of the move
+    const double seconds = std::stod(clock->at("body").at("result").get<std::string>());
+    CHECK(seconds == Approx(2.8 + counts / 800.0).margin(0.0015));
+  };
+  SECTION("the collision filter alone: it stops, then the run terminates") {
+    const std::vector<Json> messages = session({"collision"});
+    const std::vector<Json> stops = dapArmEvents(messages, "stopped");
+    REQUIRE(stops.size() == 1);
+    CHECK(stops[0]["body"]["reason"] == "exception");
+    const std::string text = stops[0]["body"]["text"].get<std::string>();
+    INFO(text);
+    CHECK(text.find("(collision): ") != std::string::npos);
+    CHECK(text.find("hits object 1 (pallet)") != std::string::npos);
+    atContact(messages);
+    CHECK(dapArmEvents(messages, "terminated").size() == 1);
+  }
+  SECTION("the runtimeError filter: the run's end, at the contact") {
+    const std::vector<Json> messages = session({"runtimeError"});
+    const std::vector<Json> stops = dapArmEvents(messages, "stopped");
+    REQUIRE(stops.size() >= 1);
+    CHECK(stops[0]["body"]["reason"] == "exception");
+    CHECK(stops[0]["body"]["text"].get<std::string>().find("runtime error: collision at 4.6") != std::string::npos);
+    atContact(messages);
+  }
+}
+
 TEST_CASE("dap: a close on nothing stops under the warning filter and is said at the step", "[debug][dap][moving-arm]") {
   const rs::testing::TempDir dir;
   const std::string program = dir.write("high.rsp", dapArmProgram(1100));

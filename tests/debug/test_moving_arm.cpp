@@ -122,6 +122,81 @@ TEST_CASE("debug: break collision stops at the moment of the first contact", "[d
   CHECK(r.out.find("2 block at (200.000, 30.000, 700.000), centre (220.000, 50.000, 680.000)\n") != std::string::npos);
 }
 
+TEST_CASE("debug: in the default collision mode the run ends at the contact, and the session stands there",
+          "[debug][moving-arm]") {
+  const TempDir dir;
+  // The lowering of the test above, with --collisions=error (the default):
+  // the run ends at the collision, which the machine found after making the
+  // whole move (to Y 1700, the tool centre point at y 30, at 4.925 s). The
+  // arm never got past the contact (Y about 1500, y 50, 4.675 s or a little
+  // after): that is the pose shown, at every stop after it, forwards or at
+  // a time later in the move. Before the contact, a moment of the move is
+  // itself: at 4.0 s, 1.2 s into line 2, Y 960, y 200 - 96 = 104.
+  const CliResult r = debugSession(dir, gantryLowering(1700),
+                                   "break collision\ncontinue\nprint tcp\nprint motors\ncontinue\nprint tcp\n"
+                                   "goto-time 4.8\nprint tcp\ngoto-time 4.0\nprint tcp\ncontinue\nprint tcp\nreverse-step\n"
+                                   "print clock\n");
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  const std::size_t stop = r.out.find("breakpoint 1 (collision): runtime error: collision at 4.6");
+  REQUIRE(stop != std::string::npos);
+  // The contact, with how deep the finger is in the pallet (the collision words of issue 34).
+  CHECK(r.out.find("hits object 1 (pallet), ", stop) != std::string::npos);
+  CHECK(r.out.find(" deep\n", stop) != std::string::npos);
+  double clock = 0;
+  const std::size_t place = r.out.find("line 2 @2, step 1, clock ", stop);
+  REQUIRE(place != std::string::npos);
+  REQUIRE(std::sscanf(r.out.c_str() + place, "line 2 @2, step 1, clock %lf", &clock) == 1);
+  CHECK(clock >= 4.675);
+  CHECK(clock <= 4.690);
+  CHECK(r.out.compare(r.out.find(" s", place + 25), 23, " s (the run is over)\n  ") == 0);
+  const auto contact = tcpAfter(r.out, "breakpoint 1 (collision)");
+  CHECK(contact[1] == Approx(200 - (clock - 2.8) * 800 / 10).margin(0.1));
+  CHECK(contact[1] > 45);  // not the end of the move (y 30)
+  std::int32_t y = 0;
+  const std::size_t motors = r.out.find("\nY = ", stop);
+  REQUIRE(motors != std::string::npos);
+  REQUIRE(std::sscanf(r.out.c_str() + motors, "\nY = %d", &y) == 1);
+  CHECK(y >= 1490);
+  CHECK(y <= 1510);
+  // On: the run is over, the session stays at the contact.
+  const std::size_t over = r.out.find("the run is over (runtime error: collision at 4.6", stop);
+  REQUIRE(over != std::string::npos);
+  CHECK(tcpAfter(r.out.substr(over), "the run is over")[1] == Approx(contact[1]).margin(1e-9));
+  // 4.8 s came after the contact: the run had ended.
+  const std::size_t later = r.out.find("before 4.800 s\n");
+  REQUIRE(later != std::string::npos);
+  CHECK(tcpAfter(r.out.substr(later), "before 4.800 s")[1] == Approx(contact[1]).margin(1e-9));
+  // 4.0 s, inside the move before the contact.
+  const std::size_t before = r.out.find("at 4.000 s, in the middle of the move of line 2 (a collision ends the run in it at 4.6");
+  REQUIRE(before != std::string::npos);
+  CHECK(tcpAfter(r.out.substr(before), "at 4.000 s")[1] == Approx(104).margin(1e-6));
+  CHECK(r.out.find("line 2 @2, step 1, clock 4.000 s\n", before) != std::string::npos);  // not over yet
+  // On from there: to the contact.
+  const std::size_t onwards = r.out.find("breakpoint 1 (collision): runtime error", before);
+  REQUIRE(onwards != std::string::npos);
+  CHECK(tcpAfter(r.out.substr(onwards), "breakpoint 1")[1] == Approx(contact[1]).margin(1e-9));
+  // And back from the contact: before line 2.
+  CHECK(r.out.find("clock = 2.800 s (step 1)\n") != std::string::npos);
+}
+
+TEST_CASE("debug: without a breakpoint, the runtime error of a collision stops at the contact", "[debug][moving-arm]") {
+  const TempDir dir;
+  const CliResult r = debugSession(dir, gantryLowering(1700), "continue\nprint tcp\nprint clock\n");
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  const std::size_t stop = r.out.find("runtime error: collision at 4.6");
+  REQUIRE(stop != std::string::npos);
+  CHECK(r.out.find("breakpoint", stop) == std::string::npos);
+  double clock = 0;
+  const std::size_t at = r.out.find("clock = ", stop);
+  REQUIRE(at != std::string::npos);
+  REQUIRE(std::sscanf(r.out.c_str() + at, "clock = %lf", &clock) == 1);
+  CHECK(clock >= 4.675);
+  CHECK(clock <= 4.690);
+  CHECK(tcpAfter(r.out, "runtime error: collision")[1] == Approx(200 - (clock - 2.8) * 800 / 10).margin(0.1));
+}
+
 TEST_CASE("debug: a step over a close that takes nothing says so, and break warning stops there", "[debug][moving-arm]") {
   const TempDir dir;
   // Down 1100 counts: the tool centre point at y 90, 40 above the block's

@@ -75,7 +75,7 @@ Json runExample(const std::string& name, const std::string& stimuli = {}) {
 
 void checkSummary(const Json& j, const Expected& e) {
   CAPTURE(j.dump());
-  CHECK(j.at("status") == "ok");
+  CHECK(j.at("status") == "finished");
   CHECK(j.at("diagnostics").empty());
   // The summary prints seconds as a double; the clock counts microseconds.
   CHECK(std::llround(j.at("time").get<double>() * 1e6) == e.micros);
@@ -297,7 +297,7 @@ TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pal
   REQUIRE(r.code == rs::cli::kExitOk);
   REQUIRE(r.err.empty());
   const Json j = Json::parse(r.out);
-  CHECK(j.at("status") == "ok");
+  CHECK(j.at("status") == "finished");
   CHECK(std::llround(j.at("time").get<double>() * 1e6) == 37'400'000);
   CHECK(j.at("steps") == 26);
   CHECK(j.at("motors") == Json::parse(R"({"X": 0, "Z": 0, "Y": 0, "A": 0})"));
@@ -340,7 +340,7 @@ TEST_CASE("example stack_blocks: points written as tool poses stack one block on
   INFO("stderr: " << r.err);
   REQUIRE(r.code == rs::cli::kExitOk);
   const Json j = Json::parse(r.out);
-  CHECK(j.at("status") == "ok");
+  CHECK(j.at("status") == "finished");
   CHECK(j.at("steps") == 10);
   CHECK(j.at("motors") == Json::parse(R"({"E": 0, "D": 0, "C": 0, "B": 0, "A": 0})"));
   const Json& moved = j.at("objects")[4];
@@ -365,7 +365,7 @@ TEST_CASE("example straight_lift: a block lifted straight off its pallet and put
   INFO("stderr: " << r.err);
   REQUIRE(r.code == rs::cli::kExitOk);
   const Json j = Json::parse(r.out);
-  CHECK(j.at("status") == "ok");
+  CHECK(j.at("status") == "finished");
   CHECK(j.at("steps") == 8);
   CHECK(j.at("collisions") == Json::array());
   const Json& block = j.at("objects")[2];

@@ -6,6 +6,7 @@
 
 #include "diag/source_file.h"
 #include "tools/testrun/expectation.h"
+#include "tools/testrun/scenario_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

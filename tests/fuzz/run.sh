@@ -26,6 +26,7 @@ name=$(basename "$fuzzer")
 reader=${name#fuzz_}
 reader=${reader%_fixed}
 reader=${reader%_reader}
+reader=${reader%_arms}
 out="$work/$name"
 rm -rf "$out" && mkdir -p "$out"
 

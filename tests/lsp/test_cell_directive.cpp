@@ -87,6 +87,8 @@ TEST_CASE("lsp: go to definition of a directive's file gives a normal URI", "[ls
   REQUIRE(d.is_object());
   CHECK(d["uri"] == "file://" + (dir.path() / "cell.rsd").lexically_normal().string());
   CHECK(d["uri"].get<std::string>().find("/..") == std::string::npos);
+  // On the workcell's name, the one the file defines (line 1: "WORKCELL mine"), not the file's top.
+  CHECK(d["range"] == rs::testing::LspSession::range(0, 9, 0, 13));
   // Made absolute and normal whatever the path: one file, one URI.
   CHECK(rs::lsp::uriOfPath("/a/b/../c/./d.rsd") == "file:///a/c/d.rsd");
   CHECK(rs::lsp::uriOfPath("/a b/%.rsd") == "file:///a%20b/%25.rsd");

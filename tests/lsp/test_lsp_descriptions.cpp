@@ -47,8 +47,12 @@ TEST_CASE("rsd: a workcell's robot goes to its file on the library path", "[lsp]
   OpenFile f(kStdlibRoot + "/workcells/scara-pick.rsd", "robotsim-description");
   CHECK(f.s.diagnostics(f.uri) == Json::array());
   const unsigned line = lineOf(f.text, "  ROBOT rhino-scara");
+  // On the robot's definition in that file, "ROBOT rhino-scara": the name's range, not the file's top.
+  const std::string robotFile = kStdlibRoot + "/robots/rhino-scara.rsd";
+  const unsigned robotLine = lineOf(rs::testing::readBytes(robotFile), "ROBOT rhino-scara");
+  CHECK(robotLine > 100);
   CHECK(f.s.result("textDocument/definition", LspSession::at(f.uri, line, 10)) ==
-        Json({{"uri", rs::lsp::uriOfPath(kStdlibRoot + "/robots/rhino-scara.rsd")}, {"range", LspSession::range(0, 0, 0, 0)}}));
+        Json({{"uri", rs::lsp::uriOfPath(robotFile)}, {"range", LspSession::range(robotLine, 6, robotLine, 17)}}));
   const Json symbols = f.s.result("textDocument/documentSymbol", {{"textDocument", {{"uri", f.uri}}}});
   REQUIRE(symbols.size() == 1);
   CHECK(symbols[0]["name"] == "scara-pick");

@@ -146,7 +146,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       // Then what only the library can tell, in the same run: the robot's
       // link 'l' is defined nowhere. (Nothing else about robot r: its lines
       // with errors make its joint count and numbering meaningless.)
-      "p.rsd:36:8: unknown link 'l': not defined in this file, and no l.rsd on the library path",
+      "p.rsd:36:8: unknown link 'l': not defined in this file, and no l.rsd beside it or on the library path",
   };
   CHECK(robotErrors(dir, "p.rsd") == expected);
 }
@@ -235,12 +235,12 @@ TEST_CASE("description: unknown names", "[models]") {
                                     "END",
                                 }));
     CHECK(robotErrors(dir, "r.rsd") ==
-          Strings{"r.rsd:6:8: unknown link 'nowhere': not defined in this file, and no nowhere.rsd on the library path"});
+          Strings{"r.rsd:6:8: unknown link 'nowhere': not defined in this file, and no nowhere.rsd beside it or on the library path"});
     SECTION("a file of that name that defines something else does not count") {
       dir.write("nowhere.rsd", lines({"OBJECT nowhere", "  LINE 0 0 0 1 1 1", "END"}));
       CHECK(robotErrors(dir, "r.rsd") ==
-            Strings{"r.rsd:6:8: unknown link 'nowhere': not defined in this file, and no nowhere.rsd on the library "
-                    "path"});
+            Strings{"r.rsd:6:8: unknown link 'nowhere': not defined in this file, and no nowhere.rsd beside it or on "
+                    "the library path"});
     }
   }
   SECTION("a gripper") {
@@ -252,14 +252,16 @@ TEST_CASE("description: unknown names", "[models]") {
                                     "END",
                                 }));
     CHECK(robotErrors(dir, "r.rsd") ==
-          Strings{"r.rsd:7:11: unknown gripper 'hand': not defined in this file, and no hand.rsd on the library path"});
+          Strings{"r.rsd:7:11: unknown gripper 'hand': not defined in this file, and no hand.rsd beside it or on the "
+                  "library path"});
   }
   SECTION("a robot and an object in a WORKCELL, both reported") {
     dir.write("w.rsd", lines({"WORKCELL w", "  ROBOT ghost AT 0 0 0", "  OBJECT phantom AT 1 2 3", "END"}));
     CHECK(workcellErrors(dir, "w.rsd") ==
-          Strings{"w.rsd:2:9: unknown robot 'ghost': not defined in this file, and no ghost.rsd on the library path",
-                  "w.rsd:3:10: unknown object 'phantom': not defined in this file, and no phantom.rsd on the library "
-                  "path"});
+          Strings{"w.rsd:2:9: unknown robot 'ghost': not defined in this file, and no ghost.rsd beside it or on the "
+                  "library path",
+                  "w.rsd:3:10: unknown object 'phantom': not defined in this file, and no phantom.rsd beside it or on "
+                  "the library path"});
   }
   SECTION("a file or library name that does not exist") {
     Library lib({dir.path()});
@@ -409,9 +411,9 @@ TEST_CASE("description: five independent mistakes in one file are all reported i
   const Strings expected{
       "five.rsd:2:22: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'COLOUR'",
       "five.rsd:9:8: link 'arm' has no FRAME (ORIGIN, XAXIS and ZAXIS points)",
-      "five.rsd:10:8: unknown link 'forearm': not defined in this file, and no forearm.rsd on the library path",
+      "five.rsd:10:8: unknown link 'forearm': not defined in this file, and no forearm.rsd beside it or on the library path",
       "five.rsd:12:9: joints are numbered in order: expected JOINT 2, found JOINT 3",
-      "five.rsd:16:10: unknown object 'crate': not defined in this file, and no crate.rsd on the library path",
+      "five.rsd:16:10: unknown object 'crate': not defined in this file, and no crate.rsd beside it or on the library path",
   };
   CHECK(workcellErrors(dir, "five.rsd") == expected);
   // Through the command line: one run, five errors, exit code 2.
@@ -441,7 +443,7 @@ TEST_CASE("description: a robot nothing uses is checked too, once", "[models]") 
   // robot() builds the first robot; the second, also placed by the
   // workcell, is reported once.
   CHECK(robotErrors(dir, "two.rsd") ==
-        Strings{"two.rsd:9:8: unknown link 'ghost': not defined in this file, and no ghost.rsd on the library path",
+        Strings{"two.rsd:9:8: unknown link 'ghost': not defined in this file, and no ghost.rsd beside it or on the library path",
                 "two.rsd:10:9: JOINT 1 has no RANGE"});
 }
 

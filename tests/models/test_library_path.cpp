@@ -175,7 +175,7 @@ TEST_CASE("library path: kind folders", "[models]") {
   Library lib3({a.path()});
   CHECK_FALSE(lib3.robot(file));
   CHECK(diagnosticList(lib3.diagnostics(), r.path().string()) ==
-        Strings{"r.rsd:3:8: unknown link 'stray': not defined in this file, and no stray.rsd on the library path"});
+        Strings{"r.rsd:3:8: unknown link 'stray': not defined in this file, and no stray.rsd beside it or on the library path"});
 }
 
 TEST_CASE("library path: names are case-sensitive, keywords are not", "[models]") {
@@ -186,14 +186,14 @@ TEST_CASE("library path: names are case-sensitive, keywords are not", "[models]"
     Library lib({a.path()});
     CHECK_FALSE(lib.robot(file));
     CHECK(diagnosticList(lib.diagnostics(), root.path().string()) ==
-          Strings{"r.rsd:5:8: unknown link 'base': not defined in this file, and no base.rsd on the library path"});
+          Strings{"r.rsd:5:8: unknown link 'base': not defined in this file, and no base.rsd beside it or on the library path"});
   }
   SECTION("a file on the path with other case is not a match") {
     const std::string file = root.write("r.rsd", link("base", 1) + robot("r", {"base", "upper"}));
     Library lib({a.path()});
     CHECK_FALSE(lib.robot(file));
     CHECK(diagnosticList(lib.diagnostics(), root.path().string()) ==
-          Strings{"r.rsd:6:8: unknown link 'upper': not defined in this file, and no upper.rsd on the library path"});
+          Strings{"r.rsd:6:8: unknown link 'upper': not defined in this file, and no upper.rsd beside it or on the library path"});
   }
   SECTION("exact case is found") {
     const std::string file = root.write("r.rsd", link("base", 1) + robot("r", {"base", "Upper"}));
@@ -260,4 +260,44 @@ TEST_CASE("library path: the CLI takes --lib and ROBOTSIM_PATH", "[models]") {
   r = runCli({"table", "twin"});
   CHECK(r.code == 2);
   CHECK(r.err == "twin: error: no such file, and no robot of that name on the library path\n");
+}
+
+TEST_CASE("library path: a cell finds the robot file beside it first, with no --lib", "[models]") {
+  // my-cell.rsd places ROBOT my-scara, written in my-scara.rsd in the same folder: no --lib needed. A link
+  // named in the robot's file is looked up beside the robot's file, in links/ there too.
+  TempDir here, lib;
+  put(here, "my-scara.rsd", robot("my-scara", {"base", "arm"}));
+  put(here, "links/base.rsd", link("base", 1));
+  put(here, "arm.rsd", link("arm", 2));
+  const std::string cell = here.write("my-cell.rsd", lines({"WORKCELL my-cell", "  ROBOT my-scara AT 0 0 0", "END"}));
+  SECTION("found beside the cell") {
+    Library l({lib.path()});
+    const auto c = l.workcell(cell);
+    INFO(rs::testing::joined(diagnosticList(l.diagnostics(), here.path().string())));
+    REQUIRE(c);
+    REQUIRE(c->robots.size() == 1);
+    CHECK(c->robots[0].robot.name == "my-scara");
+    CHECK(markers(c->robots[0].robot) == std::vector<double>{1, 2});
+  }
+  SECTION("the folder comes before the search path") {
+    put(lib, "arm.rsd", link("arm", 9));
+    Library l({lib.path()});
+    const auto c = l.workcell(cell);
+    REQUIRE(c);
+    CHECK(markers(c->robots[0].robot) == std::vector<double>{1, 2});
+  }
+  SECTION("the command line, from another folder, with no --lib") {
+    const auto r = runCli({"describe", cell});
+    INFO(r.err);
+    CHECK(r.code == 0);
+    CHECK(r.out.find("robot my-scara") != std::string::npos);
+  }
+  SECTION("not there, nor on the path: the message says where it looked") {
+    fs::remove(here.path() / "my-scara.rsd");
+    Library l({lib.path()});
+    CHECK_FALSE(l.workcell(cell));
+    CHECK(diagnosticList(l.diagnostics(), here.path().string()) ==
+          Strings{"my-cell.rsd:2:9: unknown robot 'my-scara': not defined in this file, and no my-scara.rsd beside it "
+                  "or on the library path"});
+  }
 }

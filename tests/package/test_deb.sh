@@ -47,6 +47,7 @@ case "$depends" in
   *libcairo2*libc6* | *libc6*libcairo2*) ;;
   *) fail "dpkg-shlibdeps did not compute the dependencies: Depends: $depends" ;;
 esac
+[ "$(dpkg-deb -f "$deb" Recommends)" = bash-completion ] || fail "Recommends: $(dpkg-deb -f "$deb" Recommends)"
 
 step "copy the cached root"
 cp -a "$cached" "$root"
@@ -83,6 +84,8 @@ grep -E "^(Need to get|After this operation)" "$work/install.log" || true
 [ -f "$root/usr/share/robotsim/stdlib/workcells/gantry-cell.rsd" ] || fail "no library under /usr/share/robotsim"
 [ -f "$root/usr/share/man/man1/robotsim.1" ] || fail "no man page"
 [ -f "$root/usr/share/bash-completion/completions/robotsim" ] || fail "no bash completion"
+# apt-get installs what a package recommends: the completion's loader too.
+[ -f "$root/usr/share/bash-completion/bash_completion" ] || fail "bash-completion (recommended) not installed"
 [ ! -e "$root$source" ] || fail "the source tree is visible in the root"
 
 step "as a user: a program on a library cell, robotsim test, --version"

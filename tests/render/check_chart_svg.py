@@ -9,8 +9,11 @@ lane shows which columns (the arm's motors, the TCP, the gripper when there
 is a `held` column, inputs, outputs, then the source lines), and checks:
 every vertex of each series is at a sample, and every sample lies on the
 line where its value puts it on the lane's own scale (the column's lowest
-to highest value, 4 px inside the lane); each
-input and output row steps exactly at the samples where the CSV changes; a
+to highest value, 4 px inside the lane; the tool centre point's x, y and z
+each in a lane of its own, on its own scale); each input and output row is
+bright (its lane's colour) exactly where the CSV says ON, high in the row,
+and dim (dark gray) exactly where it says OFF, low in the row, so that a
+line that never turns on has nothing bright; a
 red mark stands at the collision's moment (given to the millisecond); the
 source-line ticks stand at the given moments. Prints "ok: ..." and exits 0,
 or prints what differs and exits 1. Used by tests/render/test_chart.cpp.
@@ -26,6 +29,7 @@ LANE = (0x18, 0x1B, 0x27)
 MOTOR, GRIPPER = (0x55, 0xFF, 0xFF), (0xFF, 0xFF, 0xFF)
 TCP = [(0xFF, 0x55, 0x55), (0x55, 0xFF, 0x55), (0x55, 0x55, 0xFF)]
 INPUT, OUTPUT = (0x55, 0xFF, 0x55), (0xFF, 0x55, 0x55)
+OFF = (0x55, 0x55, 0x55)
 LINE_TICK, COLLISION = (0xAA, 0xAA, 0xAA), (0xAA, 0x00, 0x00)
 PAD, ROW = 4.0, 8.0
 # cairo writes coordinates in 1/256 px: what two positions may differ by.
@@ -112,7 +116,7 @@ def main():
                 xs, ys = [p[0] for p in pts], [p[1] for p in pts]
                 boxes.append((min(xs), min(ys), max(xs), max(ys)))
     boxes.sort(key=lambda b: b[1])
-    expected_lanes = len(arm) + 1 + (1 if has_gripper else 0) + 2 + 1
+    expected_lanes = len(arm) + 3 + (1 if has_gripper else 0) + 2 + 1
     if len(boxes) != expected_lanes:
         print(f'found {len(boxes)} lanes, expected {expected_lanes} for columns {header}')
         return 1
@@ -169,31 +173,57 @@ def main():
                 if abs(drawn - want) > 2 * EPS:
                     fail(f'lane {lane}: column {c} at {t} s: the line passes y {drawn:.3f}, its value {v} is at {want:.3f}')
 
+    def stretches(column, on):
+        """The x ranges where the CSV has the column ON (or OFF): each from
+        the sample where it starts to the sample where it ends (or the end)."""
+        v = values[column]
+        out, i = [], 0
+        while i < len(v):
+            j = i + 1
+            while j < len(v) and (v[j] > 0.5) == (v[i] > 0.5):
+                j += 1
+            if (v[i] > 0.5) == on:
+                out.append((x_of(times[i]), x_of(times[min(j, len(v) - 1)])))
+            i = j
+        return out
+
     def check_digital(prefix, colour_, box, lane):
-        found = strokes(colour_, box)
-        if len(found) != 8:
-            fail(f'lane {lane}: {len(found)} {prefix} rows, expected 8')
-            return
-        found.sort(key=lambda pts: min(y for _, y in pts))
-        for r, pts in enumerate(found):
+        for r in range(8):
             c = f'{prefix}{r + 1}'
             top = box[1] + r * ROW
-            level = lambda y: 1.0 if abs(y - (top + 1.5)) < EPS else 0.0 if abs(y - (top + ROW - 1.5)) < EPS else None
-            if level(pts[0][1]) != values[c][0]:
-                fail(f'{c}: starts at {pts[0][1]}, its first sample is {values[c][0]}')
-            edges = sorted(a[0] for a, b in zip(pts, pts[1:]) if abs(a[0] - b[0]) < 1e-6 and a[1] != b[1])
-            want = sorted(x_of(times[i]) for i in range(1, len(times)) if values[c][i] != values[c][i - 1])
-            if not same_positions(edges, want):
-                fail(f'{c}: steps at x {edges}, the CSV changes at x {want}')
-            if any(level(y) is None for _, y in pts):
-                fail(f'{c}: a vertex at neither level')
+            row_box = (box[0], top, box[2], top + ROW)
+            high, low = top + 1.5, top + ROW - 1.5
+            for on, want_colour, level in ((True, colour_, high), (False, OFF, low)):
+                found = strokes(want_colour, row_box)
+                # Horizontal runs at the level, merged where cairo split them.
+                runs = sorted((min(a[0], b[0]), max(a[0], b[0])) for pts in found for a, b in zip(pts, pts[1:])
+                              if abs(a[1] - level) < EPS and abs(b[1] - level) < EPS)
+                merged = []
+                for x0, x1 in runs:
+                    if merged and x0 <= merged[-1][1] + EPS:
+                        merged[-1] = (merged[-1][0], max(merged[-1][1], x1))
+                    else:
+                        merged.append((x0, x1))
+                want = [w for w in stretches(c, on) if w[1] - w[0] > EPS]
+                if len(merged) != len(want) or any(abs(a[0] - b[0]) > EPS or abs(a[1] - b[1]) > EPS
+                                                   for a, b in zip(merged, want)):
+                    fail(f'{c}: {"ON" if on else "OFF"} drawn at x {merged}, the CSV has it {"ON" if on else "OFF"} '
+                         f'at x {want}')
+                # Nothing of the colour anywhere else in the row: bright only while ON.
+                for pts in found:
+                    for x, y in pts:
+                        if abs(y - level) > EPS and not (on and abs(y - low) < EPS):
+                            fail(f'{c}: a {"bright" if on else "dim"} vertex at y {y}, neither its level nor an edge')
+            if not any(values[c]) and strokes(colour_, row_box):
+                fail(f'{c}: never ON, yet drawn in its bright colour')
 
     lane = 0
     for m in arm:
         check_analog([m], [MOTOR], boxes[lane], f'{lane} ({m})')
         lane += 1
-    check_analog(['tcp_x', 'tcp_y', 'tcp_z'], TCP, boxes[lane], f'{lane} (TCP)')
-    lane += 1
+    for axis, column in enumerate(['tcp_x', 'tcp_y', 'tcp_z']):
+        check_analog([column], [TCP[axis]], boxes[lane], f'{lane} ({column})')
+        lane += 1
     if has_gripper:
         check_analog([motors[-1]], [GRIPPER], boxes[lane], f'{lane} (gripper)')
         lane += 1

@@ -258,10 +258,11 @@ TEST_CASE("plot writes the same bytes for the same run, and the PNG decodes", "[
   REQUIRE(decoded);
   const rs::render::Decoded& d = *decoded;
   CHECK(d.width == 1200);
-  // The height the layout gives: 4 lanes of 56, 84 and 48 px... worked out
-  // from the lanes rather than trusted: X, Z, Y (3 motors), TCP, gripper,
-  // inputs, outputs, the line lane, the axis and one mark's note.
-  CHECK(d.height == static_cast<int>(34 + 3 * (56 + 6) + (84 + 6) + (48 + 6) + 2 * (64 + 6) + 22 + 28 + 16 + 10));
+  // The height the layout gives, worked out from the lanes rather than
+  // trusted: X, Z, Y (3 motors of 56 px), the TCP's x, y and z (a lane of
+  // 56 px each), the gripper (48), inputs and outputs (8 rows of 8 px), the
+  // line lane, the axis and one mark's note, 6 px between lanes.
+  CHECK(d.height == static_cast<int>(34 + 3 * (56 + 6) + 3 * (56 + 6) + (48 + 6) + 2 * (64 + 6) + 22 + 28 + 16 + 10));
   // Drawn: the collision mark's red (EGA 4) runs down a column, and the
   // three TCP colours appear.
   const auto count = [&](rs::render::Rgb c) {
@@ -303,6 +304,36 @@ TEST_CASE("the chart's SVG, read by python3's XML parser, has every series and m
                                                     dir.file("c.svg"), dir.file("c.csv")));
   INFO(wrong);
   CHECK(wrong.find("(exit status 0)") == std::string::npos);
+}
+
+TEST_CASE("plot: the TCP's x, y and z each on its own scale, inputs and outputs bright only while ON",
+          "[render][chart][cli]") {
+  // The gantry program: x 500 -> 220 and z 400 -> 680 over 2.8 s, then a
+  // lowering of only 100 in y (200 -> 100), which one scale for the three
+  // (100..680) would squeeze into a sixth of the lane; output 3 ON 2.8 ..
+  // 4.75 s, input 2 ON from 3.5 s, the other fourteen lines never.
+  const TempDir dir;
+  const std::string prog = dir.write("gantry.rsp", kChartGantryProgram);
+  for (const char* ext : {"svg", "csv"}) {
+    const auto r = runCli({"plot", prog, "--cell", "gantry-cell", "--input", "2=ON@3.5", "-o",
+                           dir.file(std::string("io.") + ext)});
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+  }
+  const std::string out = chartPython(fmt::format("{} {} --lines 0,2.8,3.5,4.75,5.25", dir.file("io.svg"), dir.file("io.csv")));
+  INFO(out);
+  CHECK(out.find("ok:") != std::string::npos);
+  CHECK(out.find("(exit status 0)") != std::string::npos);
+  // The chart itself: a lane per coordinate, each with its one series.
+  const ChartRun c(kChartGantryProgram, rs::runtime::CollisionMode::Off);
+  std::vector<std::string> tcpLanes;
+  for (const rs::render::ChartLane& lane : c.chart.lanes)
+    if (lane.kind == rs::render::LaneKind::Tcp) {
+      tcpLanes.push_back(lane.label);
+      REQUIRE(lane.series.size() == 1);
+      CHECK(c.chart.series[lane.series[0]].column == std::string("tcp_") + "xyz"[lane.axis]);
+    }
+  CHECK(tcpLanes == std::vector<std::string>{"TCP x", "TCP y", "TCP z"});
 }
 
 TEST_CASE("plot refuses bad input with a clear error and writes nothing", "[render][chart][cli]") {

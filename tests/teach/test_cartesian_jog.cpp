@@ -265,3 +265,102 @@ TEST_CASE("jogCartesian as a JSON command, and its malformed requests", "[teach]
   }
   CHECK(p.state().encoders == JogValues{0, 100, 0, 0});
 }
+
+TEST_CASE("world and tool jogs lift a gripped block off its pallet along the tool's straight line",
+          "[teach][jog][straight]") {
+  // xr4-cell's front block stands on the pallet (x 220..260, y 780..820, z -60..-20): the tool pointing down,
+  // its centre 1 above the block's middle (y 801), the gripper closes on it. A joint move of a jog swung the
+  // block through the pallet ("object 3 (block) hits object 2 (pallet)" 0.003 s into a 1-unit lift); the line
+  // a jog now runs, as DEPART does in a program, lifts it straight up.
+  JogFixture f("xr4-cell");
+  Pendant& p = *f.pendant;
+  const JogValues above = ikEncoders({"xr4-cell", "--approach", "0,-1,0", "--", "240", "861", "-40"});
+  const JogValues grasp = ikEncoders({"xr4-cell", "--approach", "0,-1,0", "--", "240", "801", "-40"});
+  REQUIRE(p.moveTo(above).ok);
+  REQUIRE(p.moveTo(grasp).ok);
+  const rs::teach::Outcome closed = p.gripper(true);
+  INFO(closed.message);
+  REQUIRE(closed.message == "gripper closed: holds block");
+  const std::size_t block = 2;  // object 3
+  REQUIRE(p.state().objects[block].held);
+  const Eigen::Vector3d rest = p.state().objects[block].pose.translation();
+  const WherePose grasped = whereAt("xr4-cell", p.state().encoders);
+
+  // Up 1 along the world's Y, as the HTTP API asks it.
+  const rs::teach::Outcome up = rs::teach::applyCommand(
+      p, nlohmann::json{{"op", "jogCartesian"}, {"frame", "world"}, {"axis", "Y"}, {"amount", 1}});
+  INFO(up.message);
+  REQUIRE(up.ok);
+  CHECK(p.state().limit.empty());
+  const Eigen::Vector3d lifted = p.state().objects[block].pose.translation() - rest;
+  CHECK(lifted.y() == Approx(1).margin(0.3));  // the counts' rounding at this reach: a few tenths
+  CHECK(std::hypot(lifted.x(), lifted.z()) < 0.3);
+
+  // Up 60 more along the tool's z (the approach points down), by the keys' operation.
+  const rs::teach::Outcome tool = p.jogCartesian(JogFrame::Tool, "Z", -60);
+  INFO(tool.message);
+  REQUIRE(tool.ok);
+  CHECK(tool.message.rfind("tool jog Z -60 length units: tool centre point at ", 0) == 0);
+  const rs::teach::PendantState s = p.state();
+  CHECK(s.objects[block].held);
+  CHECK(s.objects[block].pose.translation().y() - rest.y() == Approx(61).margin(0.5));
+  // The move is the line: every frame of it, by forward kinematics of its counts (robotsim where), stays
+  // on the vertical through where it started, within the line's tolerance and the counts' rounding (about
+  // a unit at this reach: 0.1 degree a count), and never goes back down.
+  REQUIRE(s.motion.size() > 5);
+  const Eigen::Vector3d from = whereAt("xr4-cell", s.motion.front().encoders).position;
+  double last = -INFINITY, across = 0;
+  for (const rs::teach::MotionFrame& frame : s.motion) {
+    const Eigen::Vector3d at = whereAt("xr4-cell", frame.encoders).position;
+    across = std::max(across, std::hypot(at.x() - from.x(), at.z() - from.z()));
+    CHECK(at.y() >= last - 0.05);
+    last = at.y();
+  }
+  CHECK(across < 1.0);
+  CHECK(from.y() - grasped.position.y() > 0.5);  // it started 1 up, and went no lower
+  CHECK(last - grasped.position.y() == Approx(61).margin(0.5));
+}
+
+TEST_CASE("a cartesian jog's step: a turn of half a turn or more is refused as a step, a long line that is clear moves",
+          "[teach][jog][straight]") {
+  JogFixture f("puma-cell");
+  Pendant& p = *f.pendant;
+  const JogValues start = pumaReachingBack();
+  REQUIRE(p.moveTo(start).ok);
+  const std::int64_t clock = p.state().clock;
+  SECTION("turns: +720 moved nothing and said ok; +1000000 turned 280 degrees past the singularity guard") {
+    for (const double turn : {720.0, 1e6, 180.0, -180.0, 359.0}) {
+      const rs::teach::Outcome o = p.jogCartesian(JogFrame::Tool, "RZ", turn);
+      checkRefused(p, o, start, clock, "step");
+      CHECK(o.message.find("less than 180 degrees at a time") != std::string::npos);
+    }
+    // A turn of less than half a turn goes the way it is asked: +90 about the approach, the point kept (the
+    // other way the palm meets the forearm).
+    const WherePose before = whereAt("puma-cell", start);
+    const rs::teach::Outcome o = p.jogCartesian(JogFrame::Tool, "RZ", 90);
+    INFO(o.message);
+    REQUIRE(o.ok);
+    const WherePose after = whereAt("puma-cell", p.state().encoders);
+    CHECK((after.position - before.position).norm() < 1.0);
+    CHECK((after.rotation.col(2) - before.rotation.col(2)).norm() < 0.01);
+    const Eigen::Matrix3d wanted =
+        before.rotation * Eigen::AngleAxisd(90.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    CHECK((after.rotation - wanted).cwiseAbs().maxCoeff() < 0.01);
+  }
+  SECTION("a 300-unit step along X, clear of every singular pose, was refused as near-singular: it moves") {
+    const WherePose before = whereAt("puma-cell", start);
+    const rs::teach::Outcome o = p.jogCartesian(JogFrame::World, "X", 300);
+    INFO(o.message);
+    REQUIRE(o.ok);
+    const WherePose after = whereAt("puma-cell", p.state().encoders);
+    CHECK(after.position.x() - before.position.x() == Approx(300).margin(1.0));
+    CHECK(after.position.y() == Approx(before.position.y()).margin(1.0));
+    CHECK(after.position.z() == Approx(before.position.z()).margin(1.0));
+    // Along the line all the way (joint 1 turns 35 degrees on the way, which the old guard took for a
+    // singular pose): each frame's tool centre point within a unit of the line.
+    for (const rs::teach::MotionFrame& frame : p.state().motion) {
+      const Eigen::Vector3d at = whereAt("puma-cell", frame.encoders).position;
+      CHECK(std::hypot(at.y() - before.position.y(), at.z() - before.position.z()) < 1.0);
+    }
+  }
+}

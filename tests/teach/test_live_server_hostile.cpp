@@ -264,6 +264,31 @@ TEST_CASE("only this server's own Host and Origin: DNS rebinding and cross-origi
   CHECK(rs::testing::readBytes(s.path) == kHostileProgram);
 }
 
+TEST_CASE("two Host or two Origin headers, an empty Origin, a space before a colon: 400, nothing done",
+          "[teach][live][hostile]") {
+  // Before, the routes checked the first Host and the first Origin of two
+  // (a second one, another site's, passed), an empty Origin counted as
+  // none, and `Transfer-Encoding : chunked` was no Transfer-Encoding.
+  HostileServed s;
+  const std::string jog = R"({"op":"jog","motor":0,"delta":5})";
+  const int before = s.state()["encoders"][0];
+  const std::string self = fmt::format("Origin: http://{}\r\n", s.host());
+  for (const std::string& headers :
+       {fmt::format("Host: {}\r\nHost: evil.example:{}\r\n", s.host(), s.port()),
+        self + "Origin: http://evil.example\r\n", std::string("Origin:\r\n"),
+        std::string("Transfer-Encoding : chunked\r\n"), fmt::format("Host : {}\r\n", s.host())}) {
+    CAPTURE(headers);
+    Socket c(s.port());
+    c.send(s.request("POST", "/api/command", headers, jog));
+    const std::string answer = c.receiveAll(10);
+    CHECK(rawhttp::statusOf(answer) == 400);
+    CHECK(c.closedByServer());
+  }
+  CHECK(s.state()["encoders"][0] == before);
+  CHECK(rawhttp::statusOf(s.exchange(s.request("POST", "/api/command", self, jog))) == 200);
+  CHECK(s.state()["encoders"][0] == before + 5);
+}
+
 TEST_CASE("a request whose head cannot be read gets 400 and the connection ends", "[teach][live][hostile]") {
   // Found by fuzz_live_http: cpp-httplib answered a request line it could
   // not read itself, with a body even to HEAD, and kept the connection, so

@@ -136,7 +136,13 @@ TEST_CASE("pendant: a move that would collide is refused, naming the parts, and 
   CHECK_FALSE(close.ok);
   CHECK_FALSE(close.badRequest);
   CHECK(close.message.find("refused: the move to -2800 2800 1500 104 collides ") == 0);
-  CHECK(close.message.find(" hits object 1 (pallet); nothing moved") != std::string::npos);
+  // How deep, at the first check that saw it: past the 0.02 the pieces are made smaller by, at most the 0.09.
+  const std::size_t deep = close.message.find(" hits object 1 (pallet), ");
+  REQUIRE(deep != std::string::npos);
+  const double depth = std::stod(close.message.substr(deep + std::string(" hits object 1 (pallet), ").size()));
+  CHECK(depth >= 0.02);
+  CHECK(depth <= 0.09);
+  CHECK(close.message.find(" deep; nothing moved") != std::string::npos);
   CHECK(close.message.find("finger") != std::string::npos);
   const rs::teach::PendantState after = p.state();
   CHECK(after.failed);

@@ -154,14 +154,14 @@ TEST_CASE("expectations: every way a run ends is read by its words in vm/stop_re
     CHECK(p.expectations[1].line == 3);
     CHECK(doc.find("expect: " + words) != std::string::npos);
   }
-  CHECK(ends == 6);
+  CHECK(ends == 7);
   // The list of subjects a bad line is told, as it read before the words
   // came from the table (written here by hand).
   const auto bad = parse("; expect: teleport\n");
   REQUIRE(bad.errors.size() == 1);
   CHECK(bad.errors[0].message ==
         "unknown expectation 'teleport': expect one of finished, deadlock, step limit, time limit, clock standing "
-        "still, runtime error, time, motors, motor, output, input, variable, tcp, object, trace, no collision, "
+        "still, knot limit, runtime error, time, motors, motor, output, input, variable, tcp, object, trace, no collision, "
         "collides with");
   // A stop's first word alone still names it, and says which word is missing.
   const auto step = parse("; expect: step limits\n; expect: time\n");
@@ -215,7 +215,7 @@ TEST_CASE("robotsim test: each kind of expectation fails with what happened, whe
   for (const std::string& want :
        {f + "1:3: error: expected output 1 ON during 0.250..0.750 s; it was OFF at 0.250 s (from the start)\n",
         f + "2:3: error: expected output 1 ON at 1.000 s; it was OFF then (set by line 10)\n",
-        f + "3:3: error: expected motor E at 210 within 5 at the end; it is at 200 at line 13, 1.600 s\n",
+        f + "3:18: error: expected motor E at 210 within 5 at the end; it is at 200 at line 13, 1.600 s\n",
         f + "4:3: error: expected variable N = 2 at the end; it is 1 at line 13, 1.600 s\n",
         f + "5:3: error: expected the run's simulated time >= 2.000 s; it ended at line 13, 1.600 s\n",
         f + "6:3: error: the run has no workcell: name one with '; test: cell NAME'\n"}) {
@@ -295,7 +295,7 @@ TEST_CASE("robotsim test: a motor that must never pass a value", "[testrun][cli]
   CHECK(r.out.find(":2:3:") == std::string::npos);
   CHECK(r.out.find(program + ":3:3: error: expected motor C never below -50; it moved to -60 at line 6 (1.000..1.200 "
                              "s)\n") != std::string::npos);
-  CHECK(r.out.find(program + ":4:3: error: the robot has no motor Q\n") != std::string::npos);
+  CHECK(r.out.find(program + ":4:17: error: the robot has no motor Q\n") != std::string::npos);  // at the letter
 }
 
 TEST_CASE("robotsim test: objects and the tool centre point on a workcell", "[testrun][cli]") {
@@ -441,10 +441,12 @@ TEST_CASE("robotsim test: a scenario file checks one program in several worlds",
   const CliResult b = runCli({"test", bad});
   CHECK(b.code == 2);
   for (const std::string& want :
-       {bad + ":2:1: error: expected 'scenario NAME' before the first test: or expect:\n",
+       {bad + ":2:1: error: expected 'scenario NAME' before the first expect: ('test:' lines before it are shared by "
+              "every scenario; expectations are each scenario's own)\n",
         bad + ":3:9: error: expected the scenario's name after 'scenario'\n",
         bad + ":5:16: error: expected an output number (1..8), got '0'\n",
-        bad + ":6:1: error: expected 'program FILE', 'scenario NAME', 'test: ...' or 'expect: ...', got 'frobnicate'\n",
+        bad + ":6:1: error: expected 'program FILE', 'scenario NAME', 'points N', 'test: ...' or 'expect: ...', got "
+              "'frobnicate'\n",
         bad + ":7:1: error: the program is named twice\n"}) {
     INFO(want);
     CHECK(b.out.find(want) != std::string::npos);
@@ -452,12 +454,17 @@ TEST_CASE("robotsim test: a scenario file checks one program in several worlds",
 }
 
 TEST_CASE("robotsim test --spec grades every submission, whatever each one does", "[testrun][cli]") {
-  // examples/tests/grading: alice does the task (3 s with a part: E out
-  // 1 s, the part at 2 s, E back 1 s; 1 s then a wait without one); bob
-  // leaves E at 400 (3 s, then waits at 0 s); carol does not compile (the
-  // compiler's own words, as `robotsim check` says them); dave polls
-  // without letting the clock move and is stopped after grading's 100,000
-  // instructions at one instant.
+  // examples/tests/grading, on rhino-scara (the shared `test: cell`): alice
+  // does the task (3 s with a part: E out 1 s at 400 counts/s, the part at
+  // 2 s, E back 1 s; 1 s then a wait without one); bob leaves E at 400 (the
+  // part at 2 s, E out by 3 s; waits at 0 s without one); carol does not
+  // compile (the compiler's own words, as `robotsim check` says them); dave
+  // polls without letting the clock move and is stopped after grading's
+  // 100,000 instructions at one instant. Points: the part's scenario gives
+  // 1 (finished) + 3 (output 1 on) + 2 (motors E=0) = 6, expectation by
+  // expectation; no part 4, all or nothing. So alice 6 + 4; bob 1 + 3 of the
+  // first (E is at 400) + 4; carol nothing (nothing ran); dave 2 (his E
+  // never moved: it is at 0 when the run is stopped) + 0.
   const std::string folder = kSource + "/examples/tests/grading";
   const CliResult r =
       runCli({"test", "--spec", folder + "/assignment.rstest", folder + "/submissions", "--format", "csv"});
@@ -465,27 +472,124 @@ TEST_CASE("robotsim test --spec grades every submission, whatever each one does"
   const std::string s = folder + "/submissions/";
   const std::string a = folder + "/assignment.rstest";
   CHECK(r.out ==
-        "file,passed,scenarios,simulated_seconds,first_problem\n"
-        "\"" + s + "alice.rsp\",2,2,4.000,\"\"\n"
-        "\"" + s + "bob.rsp\",1,2,3.000,\"[a part arrives at 2 s] " + a +
-            ":11:1: expected motor E at 0 at the end; it is at 400 at line 5, 3.000 s\"\n"
-        "\"" + s + "carol.rsp\",0,2,0.000,\"[a part arrives at 2 s] " + s +
+        "file,points,max_points,passed,scenarios,\"points [a part arrives at 2 s]\",\"simulated_seconds [a part "
+        "arrives at 2 s]\",\"points [no part]\",\"simulated_seconds [no part]\",first_problem\n"
+        "\"" + s + "alice.rsp\",10,10,2,2,6,3.000,4,1.000,\"\"\n"
+        "\"" + s + "bob.rsp\",8,10,1,2,4,3.000,4,0.000,\"[a part arrives at 2 s] " + a +
+            ":16:16: expected motor E at 0 at the end; it is at 400 at line 5, 3.000 s\"\n"
+        "\"" + s + "carol.rsp\",0,10,0,2,0,,0,,\"[a part arrives at 2 s] " + s +
             "carol.rsp:3:18: expected ON or OFF, found 'ONN'\"\n"
-        "\"" + s + "dave.rsp\",0,2,0.000,\"[a part arrives at 2 s] " + a +
-            ":9:1: expected the run to end: finished; it ended: clock standing still at line 3, 0.000 s: 100000 "
+        "\"" + s + "dave.rsp\",2,10,0,2,2,0.000,0,0.000,\"[a part arrives at 2 s] " + a +
+            ":14:1: expected the run to end: finished; it ended: clock standing still at line 3, 0.000 s: 100000 "
             "instructions ran at 0.000 s without the simulated clock moving\"\n");
   const CliResult text = runCli({"test", "--spec", folder + "/assignment.rstest", folder + "/submissions"});
   CHECK(text.out.find("3 passed, 5 failed, 0 errors in ") != std::string::npos);
-  CHECK(text.out.find(s + "alice.rsp     2/2      4.000 s\n") != std::string::npos);
+  CHECK(text.out.find("scenarios: [1] a part arrives at 2 s (6 points), [2] no part (4 points)\n") != std::string::npos);
+  CHECK(text.out.find(s + "alice.rsp   10/10     2/2  6 3.000 s  4 1.000 s\n") != std::string::npos);
+  CHECK(text.out.find(s + "carol.rsp    0/10     0/2        0 -        0 -  [a part") != std::string::npos);
   const CliResult json =
       runCli({"test", "--spec", folder + "/assignment.rstest", folder + "/submissions", "--format=json"});
   const nlohmann::json j = nlohmann::json::parse(json.out);
   REQUIRE(j["programs"].size() == 4);
-  CHECK(j["programs"][1]["file"] == s + "bob.rsp");
-  CHECK(j["programs"][1]["passed"] == 1);
-  CHECK(j["programs"][1]["scenarios"] == 2);
-  CHECK(j["programs"][1]["time"] == 3.0);
+  const nlohmann::json& bob = j["programs"][1];
+  CHECK(bob["file"] == s + "bob.rsp");
+  CHECK(bob["passed"] == 1);
+  CHECK(bob["scenarios"] == 2);
+  CHECK(bob["points"] == 8.0);
+  CHECK(bob["max_points"] == 10.0);
+  CHECK(bob["time"] == 3.0);
+  REQUIRE(bob["by_scenario"].size() == 2);
+  CHECK(bob["by_scenario"][0]["scenario"] == "a part arrives at 2 s");
+  CHECK(bob["by_scenario"][0]["points"] == 4.0);
+  CHECK(bob["by_scenario"][0]["max_points"] == 6.0);
+  CHECK(bob["by_scenario"][0]["time"] == 3.0);
+  CHECK(bob["by_scenario"][1]["status"] == "PASSED");
+  CHECK(j["programs"][2]["by_scenario"][0]["time"].is_null());  // carol's never ran
   CHECK(j["tests"][2]["scenario"] == "a part arrives at 2 s");
+  CHECK(j["tests"][2]["points"] == 4.0);
+  CHECK(j["tests"][2]["max_points"] == 6.0);
+}
+
+TEST_CASE("robotsim test --spec: a spec without points, settings written once, points as a teacher writes them",
+          "[testrun][cli]") {
+  const TempDir dir;
+  std::filesystem::create_directory(dir.file("sub"));
+  // gantry-cell's motors X Z Y A: X at 1000 counts/s (docs/models.md).
+  const std::string program = dir.write("sub/p.rsp", "        MOVE 1000 0 0 0\n        WAITFOR 1 ON\n        END\n");
+  SECTION("an existing spec, no points: a point a scenario, passed or not") {
+    const std::string spec = dir.write("old.rstest",
+                                       "scenario on time\ntest: cell gantry-cell\ntest: input 1=ON@2\nexpect: finished\n"
+                                       "scenario too slow\ntest: cell gantry-cell\ntest: input 1=ON@2\nexpect: time <= 1\n");
+    const CliResult r = runCli({"test", "--spec", spec, dir.file("sub"), "--format=csv"});
+    CHECK(r.code == 1);
+    CHECK(r.out.find("\"" + program + "\",1,2,1,2,1,2.000,0,2.000,\"[too slow] ") != std::string::npos);
+  }
+  SECTION("test: lines before the first scenario are every scenario's; a scenario's own replace or add to them") {
+    // Shared: the cell and input 1 ON at 2 s. "late" adds nothing: the
+    // WAITFOR ends at 2 s. "both" adds input 2 ON at 0.5 s to the shared
+    // input 1 (still 2 s). "elsewhere" replaces the cell with rhino-scara,
+    // whose five motors the program's four-value MOVE does not fit.
+    const std::string spec = dir.write("shared.rstest",
+                                       "test: cell gantry-cell\ntest: input 1=ON@2\n"
+                                       "scenario late\nexpect: time = 2\n"
+                                       "scenario both\ntest: input 2=ON@0.5\nexpect: time = 2\nexpect: input 2 on\n"
+                                       "scenario elsewhere\ntest: cell rhino-scara\nexpect: finished\n");
+    const CliResult r = runCli({"test", "--spec", spec, dir.file("sub"), "--format=json"});
+    INFO(r.out);
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    REQUIRE(j["tests"].size() == 3);
+    CHECK(j["tests"][0]["status"] == "PASSED");
+    CHECK(j["tests"][0]["time"] == 2.0);
+    CHECK(j["tests"][1]["status"] == "PASSED");
+    CHECK(j["tests"][2]["status"] == "FAILED");
+    REQUIRE(!j["tests"][2]["problems"].empty());
+    CHECK(j["tests"][2]["problems"][0]["file"] == program);  // the program does not compile there
+  }
+  SECTION("whole and partial points, with decimals; a run that fails keeps what held") {
+    const std::string spec = dir.write("points.rstest",
+                                       "test: cell gantry-cell\n"
+                                       "scenario whole\npoints 2.5\ntest: input 1=ON@2\nexpect: time = 2\n"
+                                       "scenario partial\ntest: input 1=ON@2\n"
+                                       "expect: time = 2      points 0.25\n"
+                                       "expect: motors X=999  points 1.5   ; wrong: X is at 1000\n"
+                                       "expect: finished\n");
+    const CliResult r = runCli({"test", "--spec", spec, dir.file("sub"), "--format=csv"});
+    INFO(r.out);
+    // 2.5 + 0.25 of 2.5 + 1.75.
+    CHECK(r.out.find("\"" + program + "\",2.75,4.25,1,2,2.5,2.000,0.25,2.000,") != std::string::npos);
+  }
+}
+
+TEST_CASE("robotsim test: a scenario file's points lines are read and every bad one said", "[testrun][cli]") {
+  const TempDir dir;
+  const std::string bad = dir.write("bad.rstest",
+                                    "points 3\n"                                   // 1: before any scenario
+                                    "scenario one\n"
+                                    "points x\n"                                   // 3: not a number
+                                    "points 1.234\n"                               // 4: three decimals
+                                    "scenario two\n"
+                                    "points 2\n"                                   // 6
+                                    "points 3\n"                                   // 7: twice
+                                    "scenario three\n"
+                                    "points 1\n"                                   // 9: and per expectation
+                                    "expect: finished points 2\n"
+                                    "scenario four\n"
+                                    "expect: finished points -1\n"                 // 12: col 25
+                                    "points 1 2\n");                               // 13: col 10
+  const CliResult b = runCli({"test", bad});
+  CHECK(b.code == 2);
+  const std::string number = "expected points: a number of at most 1000000 with at most two decimals (4, 0.5, 2.25), got ";
+  for (const std::string& want :
+       {bad + ":1:1: error: 'points N' gives a scenario its points: put it after its 'scenario NAME'\n",
+        bad + ":3:8: error: " + number + "'x'\n", bad + ":4:8: error: " + number + "'1.234'\n",
+        bad + ":7:1: error: the scenario's points are given twice\n",
+        bad + ":9:1: error: scenario 'three' gives its points whole ('points N') and per expectation ('expect: ... "
+              "points N') too: keep one\n",
+        bad + ":12:25: error: " + number + "'-1'\n", bad + ":13:10: error: expected 'points N' (one number)\n"}) {
+    INFO(want);
+    CHECK(b.out.find(want) != std::string::npos);
+  }
+  INFO(b.out);
 }
 
 TEST_CASE("robotsim test: a golden trace, written by --update, refused to be written when CI is set", "[testrun][cli]") {

@@ -86,9 +86,10 @@ TEST_CASE(
   CHECK(named.out.find("root:") == std::string::npos);
   CHECK(named.out.find("1 passed, 0 failed, 1 error in ") != std::string::npos);
 
-  // CSV and JSON carry the refusal as the row's problem.
+  // CSV and JSON carry the refusal as the row's problem: no points of the
+  // spec's one, its scenario's cells empty.
   const CliResult csv = runCli({"test", "--spec", spec, s.string(), "--format", "csv"});
-  CHECK(csv.out.find("\"" + s.string() + "/passwd.rsp\",0,1,0.000,\"" + s.string() +
+  CHECK(csv.out.find("\"" + s.string() + "/passwd.rsp\",0,1,0,1,,,\"" + s.string() +
                      "/passwd.rsp: a symbolic link to /etc/passwd, outside the folder graded") != std::string::npos);
   CHECK_FALSE(hasEscape(csv.out));
 }
@@ -407,6 +408,49 @@ TEST_CASE("robotsim test: a million motor terms, all of them checked", "[testrun
   CHECK(seconds < 10);
   const CliResult f = runCli({"test", fail});
   CHECK(f.code == 1);
-  CHECK(f.out.find(fail + ":1:3: error: expected motor D at 1 at the end; it is at 0 at line 3, 0.250 s\n") !=
+  // At the failing term's own column, counted from the text (all ASCII): the blank, then D.
+  CHECK(f.out.find(fail + ":1:" + std::to_string(line.size() + 2) +
+                   ": error: expected motor D at 1 at the end; it is at 0 at line 3, 0.250 s\n") != std::string::npos);
+}
+
+TEST_CASE("robotsim test: times written with more than three decimals are printed as written", "[testrun][cli]") {
+  // Before: `during 0..0.0005` was printed `0.000..0.001 s`, a window the
+  // test never wrote, and a moment inside it `0.000 s`.
+  const TempDir dir;
+  const std::string program = dir.write("t.rsp",
+                                        "; test: input 1=ON@0.0003\n"                      // 1
+                                        "; expect: input 1 off during 0.0001..0.0005\n"    // 2: ON at 0.0003
+                                        "; expect: input 1 on at 0.0002\n"                 // 3: still OFF
+                                        "; expect: time <= 0.0005\n"                       // 4: ends at 1 s
+                                        "        DELAY 1\n"                                // 5
+                                        "        END\n");                                  // 6
+  const CliResult r = runCli({"test", program});
+  INFO(r.out << r.err);
+  CHECK(r.code == 1);
+  for (const std::string& want :
+       {program + ":2:3: error: expected input 1 OFF during 0.0001..0.0005 s; it was ON at 0.0003 s (line 5 running)\n",
+        program + ":3:3: error: expected input 1 ON at 0.0002 s; it was OFF then (line 5 running)\n",
+        program + ":4:3: error: expected the run's simulated time <= 0.0005 s; it ended at line 6, 1.000 s\n"}) {
+    CAPTURE(want);
+    CHECK(r.out.find(want) != std::string::npos);
+  }
+}
+
+TEST_CASE("robotsim test: a motor of a long `expect: motors` line is reported at its own column", "[testrun][cli]") {
+  // Before: at column 3 (the `expect`), whichever of a thousand terms it was.
+  const TempDir dir;
+  std::string line = "; expect: motors";
+  for (int i = 0; i < 1000; ++i) line += i % 2 ? " D=0" : " E=100";
+  line += " Q=5 D=7";
+  // Columns counted here from the text (1-based; all ASCII).
+  const std::size_t unknownCol = line.find("Q=5") + 1, wrongCol = line.rfind("D=7") + 1;
+  const std::string program = dir.write("m.rsp", line + "\n        MOVE 100 0 0 0 0\n        END\n");
+  const CliResult r = runCli({"test", program});
+  INFO(r.out << r.err);
+  CHECK(r.code == 1);
+  CHECK(r.out.find(program + ":1:" + std::to_string(unknownCol) + ": error: the robot has no motor Q (its motors: ") !=
         std::string::npos);
+  CHECK(r.out.find(program + ":1:" + std::to_string(wrongCol) + ": error: expected motor D at 7 at the end; it is at 0") !=
+        std::string::npos);
+  CHECK(r.out.find(program + ":1:3:") == std::string::npos);
 }

@@ -5,69 +5,13 @@
 // 3.55 GB when every step was logged). Release only: scripts/test.sh skips
 // it under the sanitizers, whose shadow memory and slower run say nothing
 // of robotsim's own use.
-#include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <catch2/catch.hpp>
-#include <chrono>
-#include <fstream>
 #include <string>
-#include <thread>
-#include <vector>
 
 #include "tests/cli/cli_support.h"
-
-extern char** environ;
-
-namespace {
-
-// The high-water mark of a process's resident memory (VmHWM, KiB), or -1
-// once it is gone. Its own, unlike wait4's ru_maxrss, which on Linux also
-// counts the memory of the process that spawned it.
-long highWaterKiB(pid_t pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
-  return -1;
-}
-
-struct Measured {
-  int status = -1;
-  long peakKiB = 0;
-};
-
-// Runs ROBOTSIM_BINARY with `args` (output to `out`) and follows its peak
-// memory until it ends: the last reading is its peak but for what it took
-// in its last few milliseconds.
-Measured runMeasured(std::vector<std::string> args, const std::string& out) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  args.insert(args.begin(), ROBOTSIM_BINARY);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = -1;
-  REQUIRE(posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0);
-  posix_spawn_file_actions_destroy(&actions);
-  Measured m;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
-  while (std::chrono::steady_clock::now() < deadline) {
-    m.peakKiB = std::max(m.peakKiB, highWaterKiB(pid));
-    if (waitpid(pid, &m.status, WNOHANG) == pid) return m;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  kill(pid, SIGKILL);
-  waitpid(pid, &m.status, 0);
-  FAIL("robotsim test did not end within 5 minutes");
-  return m;
-}
-
-}  // namespace
+#include "tests/support/measured_process.h"
 
 TEST_CASE("robotsim test: a 100,000,000-instruction program stays under 100 MB", "[testrun][memory]") {
   const rs::testing::TempDir dir;
@@ -95,7 +39,7 @@ TEST_CASE("robotsim test: a 100,000,000-instruction program stays under 100 MB",
                                         "        DELAY 0.001\n"
                                         "        GOTO LOOP\n");
   const std::string out = dir.file("out.txt");
-  const Measured m = runMeasured({"test", program}, out);
+  const rstest::Measured m = rstest::runMeasured({"test", program}, out);
   const std::string text = rs::testing::readBytes(out);
   INFO(text);
   REQUIRE(WIFEXITED(m.status));

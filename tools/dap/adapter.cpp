@@ -126,7 +126,9 @@ Adapter::Reply Adapter::dispatch(const std::string& command, const Json& args) {
   if (!session_) return Error{fmt::format("{} before launch: launch a program first", command)};
   if (command == "setBreakpoints") return setBreakpoints(args);
   if (command == "setExceptionBreakpoints") return setExceptionBreakpoints(args);
-  if (command == "setFunctionBreakpoints") return Json{{"breakpoints", Json::array()}};
+  if (command == "setFunctionBreakpoints") return setFunctionBreakpoints(args);
+  if (command == "dataBreakpointInfo") return dataBreakpointInfo(args);
+  if (command == "setDataBreakpoints") return setDataBreakpoints(args);
   if (command == "configurationDone") {
     if (state_ != State::Launched) return Error{"configurationDone was already sent"};
     state_ = State::Running;
@@ -140,6 +142,7 @@ Adapter::Reply Adapter::dispatch(const std::string& command, const Json& args) {
   if (command == "scopes") return scopes(args);
   if (command == "variables") return variables(args);
   if (command == "evaluate") return evaluate(args);
+  if (command == "setVariable") return setVariable(args);
   if (command == "terminate") {
     if (state_ != State::Terminated) pending_ = [this] { event("terminated"); };
     state_ = State::Terminated;
@@ -147,10 +150,11 @@ Adapter::Reply Adapter::dispatch(const std::string& command, const Json& args) {
   }
   if (command == "pause") return Json(nullptr);  // a run in progress was paused by the poll; a stopped one stays
   const bool moves = command == "continue" || command == "next" || command == "stepIn" || command == "stepOut" ||
-                     command == "stepBack" || command == "reverseContinue";
+                     command == "stepBack" || command == "reverseContinue" || command == "gotoTime";
   if (!moves) return Error{fmt::format("unknown request '{}'", base::safeText(command.substr(0, 60)))};
   if (state_ == State::Launched) return Error{fmt::format("{} before configurationDone", command)};
   if (state_ == State::Terminated) return Error{fmt::format("{}: the debug session has been terminated", command)};
+  if (command == "gotoTime") return gotoTime(args);
   if (command == "stepOut") {
     auto r = session_->finish();
     if (!r) return Error{r.failure().message};
@@ -169,14 +173,24 @@ Adapter::Reply Adapter::dispatch(const std::string& command, const Json& args) {
   return Json(nullptr);
 }
 
-Adapter::Reply Adapter::initialize(const Json&) {
+Adapter::Reply Adapter::initialize(const Json& args) {
   if (state_ != State::New) return Error{"initialize was already sent"};
+  const auto flag = [&](const char* name) {
+    if (!args.contains(name) || args[name].is_null()) return true;  // the protocol's default
+    if (!args[name].is_boolean()) throw BadArgument(fmt::format("{} is true or false, not {}", name, args[name].type_name()));
+    return args[name].get<bool>();
+  };
+  lineBase_ = flag("linesStartAt1") ? 1 : 0;
+  columnBase_ = flag("columnsStartAt1") ? 1 : 0;
   state_ = State::Initialized;
   return Json{
       {"supportsConfigurationDoneRequest", true},
+      {"supportsFunctionBreakpoints", true},
       {"supportsConditionalBreakpoints", true},
       {"supportsHitConditionalBreakpoints", true},
+      {"supportsDataBreakpoints", true},
       {"supportsEvaluateForHovers", true},
+      {"supportsSetVariable", true},
       {"supportsStepBack", true},
       {"supportsTerminateRequest", true},
       {"exceptionBreakpointFilters",
@@ -211,6 +225,12 @@ Adapter::Reply Adapter::launch(const Json& args) {
       return Error{"maxSteps is a whole number of instructions from 1 (as --max-steps)"};
     run.maxSteps = n.get<std::uint64_t>();
   }
+  if (args.contains("maxKnots")) {
+    const Json& n = args["maxKnots"];
+    if (!n.is_number_unsigned() || n.get<std::uint64_t>() == 0 || n.get<std::uint64_t>() > (std::uint64_t{1} << 62))
+      return Error{"maxKnots is a whole number of straight-line knots from 1 (as --max-knots)"};
+    run.maxKnots = n.get<std::uint64_t>();
+  }
   // Seconds as --max-time reads them: a string as written, a whole number
   // as its digits, any other number with the six decimals it may have.
   if (const Json& t = args.value("maxTime", Json()); t.is_string()) run.maxTime = t.get<std::string>();
@@ -225,7 +245,13 @@ Adapter::Reply Adapter::launch(const Json& args) {
   launch::printDiagnostics(text, diags, loaded);
   if (!text.str().empty()) output("stderr", text.str());
   if (!spec || !loaded.ok()) {
-    const std::string first = diags.empty() ? std::string("the program could not be loaded") : diags.front().message;
+    std::string first = diags.empty() ? std::string("the program could not be loaded") : diags.front().message;
+    // A cell that cannot be loaded is said by its name (the diagnostic's
+    // file), as the command line says it; a bad option names itself.
+    if (!loaded.ok() && !diags.empty() && !diags.front().file.empty() && diags.front().file != program.file)
+      first = diags.front().pos.line == 0
+                  ? fmt::format("cell '{}': {}", base::safeText(diags.front().file), first)
+                  : fmt::format("{}:{}: {}", base::safeText(diags.front().file), diags.front().pos.line, first);
     return Error{fmt::format("cannot debug {}: {}", base::safeText(program.file), first)};
   }
   session_ = std::make_unique<debug::DebugSession>(*spec);
@@ -249,15 +275,15 @@ Adapter::Reply Adapter::setBreakpoints(const Json& args) {
     for (const Json& b : args.value("breakpoints", Json::array()))
       out.push_back({{"verified", false},
                      {"line", b.at("line").get<std::int64_t>()},
-                     {"message", "not the program being debugged"}});
+                     {"message", "not the program being debugged"}});  // as the client counts it
     return Json{{"breakpoints", out}};
   }
   for (int id : lineBreakpoints_) session_->remove(id);
   lineBreakpoints_.clear();
-  const vm::Image& image = *session_->run().spec().image;
   for (const Json& b : args.value("breakpoints", Json::array())) {
-    const std::int64_t line = b.at("line").get<std::int64_t>();
-    Json result = {{"verified", false}, {"line", line}};
+    const std::int64_t asked = b.at("line").get<std::int64_t>();
+    const std::int64_t line = ownLine(asked);
+    Json result = {{"verified", false}, {"line", asked}};
     auto made = line >= 1 && line <= UINT32_MAX ? session_->breakAtLine(static_cast<std::uint32_t>(line))
                                                 : diag::Result<int>(diag::refusal("no such line"));
     if (!made) {
@@ -266,31 +292,59 @@ Adapter::Reply Adapter::setBreakpoints(const Json& args) {
       continue;
     }
     const int id = *made;
-    std::optional<debug::Condition> condition;
-    std::optional<debug::HitCondition> hits;
-    std::string problem;
-    if (const std::string c = stringArg(b, "condition"); !c.empty()) {
-      auto parsed = debug::parseCondition(image, debug::ioWords(c));
-      if (!parsed) problem = parsed.failure().message;
-      else condition = *parsed;
-    }
-    if (const std::string h = stringArg(b, "hitCondition"); !h.empty() && problem.empty()) {
-      auto parsed = debug::parseHitCondition(h);
-      if (!parsed) problem = parsed.failure().message;
-      else hits = *parsed;
-    }
-    if (!problem.empty()) {
+    if (const std::string problem = qualify(id, b); !problem.empty()) {
       session_->remove(id);
       result["message"] = problem;
       out.push_back(result);
       continue;
     }
-    session_->qualify(id, condition, hits);
     lineBreakpoints_.push_back(id);
-    result = {{"id", id}, {"verified", true}, {"line", session_->lineWithCode(static_cast<std::uint32_t>(line))}};
+    result = {{"id", id},
+              {"verified", true},
+              {"line", clientLine(session_->lineWithCode(static_cast<std::uint32_t>(line)))}};
     out.push_back(result);
   }
   return Json{{"breakpoints", out}};
+}
+
+std::string Adapter::qualify(int id, const Json& b) {
+  const vm::Image& image = *session_->run().spec().image;
+  std::optional<debug::Condition> condition;
+  std::optional<debug::HitCondition> hits;
+  if (const std::string c = stringArg(b, "condition"); !c.empty()) {
+    auto parsed = debug::parseCondition(image, debug::ioWords(c));
+    if (!parsed) return parsed.failure().message;
+    condition = *parsed;
+  }
+  if (const std::string h = stringArg(b, "hitCondition"); !h.empty()) {
+    auto parsed = debug::parseHitCondition(h);
+    if (!parsed) return parsed.failure().message;
+    hits = *parsed;
+  }
+  session_->qualify(id, condition, hits);
+  return {};
+}
+
+// The custom request of goto-time: {"time": SECONDS} (a number, or a
+// string as the terminal's goto-time takes it); answered, then stopped
+// with reason goto at that moment, forwards or backwards.
+Adapter::Reply Adapter::gotoTime(const Json& args) {
+  const Json& t = args.contains("time") ? args["time"] : Json();
+  std::string text;
+  if (t.is_string()) text = t.get<std::string>();
+  else if (t.is_number_integer()) text = t.dump();
+  else if (t.is_number_float()) text = fmt::format("{:.6f}", t.get<double>());
+  else return Error{"gotoTime needs a time: {\"time\": SECONDS}"};
+  const auto at = debug::parseSeconds(text);
+  if (!at) return Error{at.failure().message};
+  pending_ = [this, micros = *at] {
+    const debug::Stop stop = session_->gotoTime(micros);
+    // Past the end: the session stands at the end and can still go back, as the terminal's does.
+    if (stop.reason == debug::StopReason::End)
+      event("stopped", {{"reason", "goto"}, {"threadId", kThread}, {"allThreadsStopped", true}, {"description", stop.message}});
+    else reportStop(stop);
+  };
+  return Json(nullptr);
 }
 
 Adapter::Reply Adapter::setExceptionBreakpoints(const Json& args) {
@@ -334,17 +388,27 @@ void Adapter::reportStop(const debug::Stop& stop) {
   const bool exception = std::any_of(stop.breakpoints.begin(), stop.breakpoints.end(), [this](int id) {
     return std::find(exceptionBreakpoints_.begin(), exceptionBreakpoints_.end(), id) != exceptionBreakpoints_.end();
   });
-  if (exception && !stop.finished()) {
+  // A collision or warning filter's stop, also where the run ends (a
+  // collision under --collisions=error, the default, ends it at the contact).
+  if (exception) {
     Json body = {{"reason", "exception"}, {"threadId", kThread}, {"allThreadsStopped", true},
                  {"description", stop.message}, {"text", stop.message}, {"hitBreakpointIds", stop.breakpoints}};
     event("stopped", std::move(body));
     return;
   }
+  const auto among = [&stop](const std::vector<int>& ids) {
+    return std::any_of(stop.breakpoints.begin(), stop.breakpoints.end(),
+                       [&ids](int id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); });
+  };
+  // A label's breakpoint is the client's function breakpoint; a watch its data breakpoint.
+  if (!stop.finished() && among(functionBreakpoints_) && !among(lineBreakpoints_))
+    return stopped("function breakpoint", stop.message);
   if (!stop.finished()) return stopped(vm::adapterReason(stop.reason), stop.message);
   if (stop.reason == StopReason::End) {
     output("console", stop.message + "\n");  // "the program ended", with the gripper warning if any
-    event("terminated");
+    // The debuggee exits, then the session ends: the protocol's order.
     event("exited", {{"exitCode", 0}});
+    event("terminated");
     state_ = State::Terminated;
     return;
   }
@@ -353,8 +417,8 @@ void Adapter::reportStop(const debug::Stop& stop) {
                                                                : stopOnLimit_;
   if (stops) return stopped(vm::adapterReason(stop.reason), stop.message);  // "exception"
   output("stderr", stop.message + "\n");
-  event("terminated");
   event("exited", {{"exitCode", 1}});
+  event("terminated");
   state_ = State::Terminated;
 }
 

@@ -1,10 +1,14 @@
 // The debug adapter: the Debug Adapter Protocol on a debug::DebugSession, for
 // VS Code and any DAP client. One thread ("program"), the GOSUB stack as
 // its stack trace, five scopes (Variables, Motors with the tool centre
-// point, Inputs/Outputs, Objects, Clock), line breakpoints with variable
-// conditions and hit counts, exception breakpoints for deadlock, runtime
-// error and limit, stepping in, over and out, and backwards (stepBack,
-// reverseContinue: the capability supportsStepBack).
+// point, Inputs/Outputs, Objects, Clock; paged by start and count), line
+// breakpoints and label breakpoints (function breakpoints) with variable
+// conditions and hit counts, watches (data breakpoints), exception
+// breakpoints for deadlock, runtime error, limit, collision and warning,
+// stepping in, over and out, and backwards (stepBack, reverseContinue:
+// the capability supportsStepBack), setVariable for variables and
+// inputs, and the custom request gotoTime. Lines and columns count from 1
+// or 0, as the client's initialize says.
 //
 // Every request gets a response: a malformed message, a request before
 // `initialize` or before `launch`, or one with bad arguments is answered
@@ -68,6 +72,18 @@ class Adapter {
   Reply scopes(const Json& args);
   Reply variables(const Json& args);
   Reply evaluate(const Json& args);
+  Reply setVariable(const Json& args);
+  Reply setFunctionBreakpoints(const Json& args);
+  Reply dataBreakpointInfo(const Json& args);
+  Reply setDataBreakpoints(const Json& args);
+  Reply gotoTime(const Json& args);
+  /// A breakpoint's condition and hitCondition (DAP's fields) on session
+  /// breakpoint `id`: the problem with them, or "" when they are set.
+  std::string qualify(int id, const Json& breakpoint);
+  /// Lines and columns as the client counts them (from 1 or from 0), and back.
+  std::int64_t clientLine(std::uint32_t line) const { return std::int64_t{line} - 1 + lineBase_; }
+  std::int64_t clientColumn(std::uint32_t column) const { return std::int64_t{column} - 1 + columnBase_; }
+  std::int64_t ownLine(std::int64_t line) const { return line + 1 - lineBase_; }
   std::string frameName(std::uint32_t line, std::uint32_t instruction) const;
   /// After the response to a request that moved the run: the events.
   void reportStop(const debug::Stop& stop);
@@ -81,7 +97,10 @@ class Adapter {
   std::unique_ptr<debug::DebugSession> session_;
   std::optional<diag::SourceFile> source_;
   std::string sourcePath_;
+  int lineBase_ = 1, columnBase_ = 1;  // initialize's linesStartAt1, columnsStartAt1
   std::vector<int> lineBreakpoints_;  // session ids from setBreakpoints
+  std::vector<int> functionBreakpoints_;  // from setFunctionBreakpoints: labels
+  std::vector<int> dataBreakpoints_;  // from setDataBreakpoints: watches
   bool stopOnEntry_ = false;
   bool stopOnDeadlock_ = true, stopOnRuntimeError_ = true, stopOnLimit_ = true;
   // DebugSession ids of the breakpoints the "collision" and "warning" exception

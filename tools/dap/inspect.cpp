@@ -1,23 +1,23 @@
 // The requests that look at a stopped run: stackTrace (the GOSUB stack),
 // scopes and variables (Variables, Motors, Inputs/Outputs, Objects,
-// Clock), evaluate.
+// Clock), evaluate (what the terminal's print takes), and setVariable
+// (a variable, or an input as the terminal's `set input`).
 #include <fmt/format.h>
 
+#include <charconv>
 #include <filesystem>
 
+#include "base/ascii.h"
 #include "base/seconds.h"
 #include "base/text.h"
 #include "tools/dap/adapter.h"
+#include "tools/dap/scopes.h"
 #include "vm/disasm.h"
 #include "vm/io_lines.h"
 
 namespace rs::dap {
 
 namespace {
-
-// The scopes' variablesReference numbers: fixed, the run has one frame of
-// globals whatever the call depth.
-enum Scope : int { kVariables = 1, kMotors, kIo, kObjects, kClock };
 
 Json variable(std::string name, std::string value) {
   return {{"name", std::move(name)}, {"value", std::move(value)}, {"variablesReference", 0}};
@@ -43,18 +43,21 @@ Adapter::Reply Adapter::stackTrace(const Json& args) {
   const vm::Image& image = *session_->run().spec().image;
   Json source = {{"name", std::filesystem::path(sourcePath_).filename().string()}, {"path", sourcePath_}};
   Json frames = Json::array();
+  const auto column = [&](std::uint32_t instruction) {
+    return clientColumn(image.columns.empty() ? 1 : image.columns[instruction]);
+  };
   frames.push_back({{"id", 0},
                     {"name", frameName(v.line, v.instruction)},
                     {"source", source},
-                    {"line", v.line},
-                    {"column", image.columns.empty() ? 1 : image.columns[v.instruction]}});
+                    {"line", clientLine(v.line)},
+                    {"column", column(v.instruction)}});
   int id = 1;
   for (auto f = v.callStack.rbegin(); f != v.callStack.rend(); ++f, ++id)
     frames.push_back({{"id", id},
                       {"name", frameName(f->line, f->gosub)},
                       {"source", source},
-                      {"line", f->line},
-                      {"column", image.columns.empty() ? 1 : image.columns[f->gosub]}});
+                      {"line", clientLine(f->line)},
+                      {"column", column(f->gosub)}});
   const std::size_t total = frames.size();
   const std::size_t start = std::min<std::size_t>(args.value("startFrame", std::size_t{0}), total);
   const std::size_t levels = args.value("levels", std::size_t{0});
@@ -65,12 +68,15 @@ Adapter::Reply Adapter::stackTrace(const Json& args) {
 
 Adapter::Reply Adapter::scopes(const Json& args) {
   args.at("frameId").get<std::int64_t>();  // required by the protocol; every frame sees the same globals
-  const auto scope = [](std::string_view name, int ref, bool expensive) {
-    return Json{{"name", name}, {"variablesReference", ref}, {"expensive", expensive}};
+  const runtime::RunView v = session_->view();
+  // How many each holds, for a client that pages them (variables' start and count).
+  const auto scope = [](std::string_view name, int ref, std::size_t count) {
+    return Json{{"name", name}, {"variablesReference", ref}, {"namedVariables", count}, {"expensive", false}};
   };
-  return Json{{"scopes", Json::array({scope("Variables", kVariables, false), scope("Motors", kMotors, false),
-                                      scope("Inputs/Outputs", kIo, false), scope("Objects", kObjects, false),
-                                      scope("Clock", kClock, false)})}};
+  return Json{{"scopes", Json::array({scope("Variables", kVariables, v.variables.size()),
+                                      scope("Motors", kMotors, v.motors.size() + (v.tcp ? 1 : 0)),
+                                      scope("Inputs/Outputs", kIo, 2 * vm::kIoCount),
+                                      scope("Objects", kObjects, v.objects.size()), scope("Clock", kClock, 2)})}};
 }
 
 Adapter::Reply Adapter::variables(const Json& args) {
@@ -107,19 +113,110 @@ Adapter::Reply Adapter::variables(const Json& args) {
     default:
       return Error{fmt::format("no variables with reference {}", ref)};
   }
-  return Json{{"variables", out}};
+  // Every variable here is a named one: a client asking for indexed ones gets none.
+  if (args.value("filter", std::string()) == "indexed") out = Json::array();
+  const std::size_t start = std::min<std::size_t>(args.value("start", std::size_t{0}), out.size());
+  const std::size_t count = args.value("count", std::size_t{0});  // 0: all
+  Json page = Json::array();
+  for (std::size_t i = start; i < out.size() && (count == 0 || i < start + count); ++i) page.push_back(out[i]);
+  return Json{{"variables", page}};
 }
 
+// What the terminal's print takes: variables (all of them), motors, tcp,
+// io, objects, clock, or one value (a variable, a motor letter, in N, out
+// N, input N, output N). A whole scope answers with its reference, for the
+// client to open.
 Adapter::Reply Adapter::evaluate(const Json& args) {
-  const std::string text = args.at("expression").get<std::string>();
-  auto e = debug::parseExpression(*session_->run().spec().image, debug::ioWords(text));
+  const std::string asked = args.at("expression").get<std::string>();
+  const std::string_view text = debug::trimmed(asked);
+  const runtime::RunView v = session_->view();
+  const vm::Image& image = *session_->run().spec().image;
+  const auto listed = [](const std::vector<std::pair<std::string, std::string>>& items, int ref) {
+    std::string shown;
+    for (const auto& [name, value] : items) shown += fmt::format("{}{} = {}", shown.empty() ? "" : ", ", name, value);
+    return Json{{"result", shown}, {"variablesReference", ref}};
+  };
+  if (text.empty() || text == "variables") {
+    if (v.variables.empty()) return Error{"the program has no variables"};
+    std::vector<std::pair<std::string, std::string>> items;
+    for (const auto& [name, value] : v.variables) items.emplace_back(base::safeText(name), std::to_string(value));
+    return listed(items, kVariables);
+  }
+  if (text == "motors") {
+    std::vector<std::pair<std::string, std::string>> items;
+    for (std::size_t m = 0; m < v.motors.size(); ++m)
+      items.emplace_back(std::string(1, image.motors[m].letter), std::to_string(v.motors[m]));
+    return listed(items, kMotors);
+  }
+  if (text == "tcp") {
+    if (!v.tcp) return Error{"no tool centre point: the program runs without a workcell (cell)"};
+    return Json{{"result", point(*v.tcp)}, {"variablesReference", 0}};
+  }
+  if (text == "io") {
+    const auto bits = [](vm::IoMask mask) {
+      std::string s;
+      for (int i = 1; i <= vm::kIoCount; ++i) s += vm::lineIsOn(mask, i) ? " 1" : " 0";
+      return s;
+    };
+    return Json{{"result", fmt::format("inputs 1-{0}:{1}, outputs 1-{0}:{2}", vm::kIoCount, bits(v.inputs), bits(v.outputs))},
+                {"variablesReference", kIo}};
+  }
+  if (text == "objects") {
+    if (v.objects.empty()) return Error{"no objects: the program runs without a workcell (cell), or it has none"};
+    std::string names;
+    for (std::size_t n = 0; n < v.objects.size(); ++n)
+      names += fmt::format("{}{} {}{}", n ? ", " : "", n + 1, base::safeText(v.objects[n].name), v.objects[n].held ? " (held)" : "");
+    return Json{{"result", names}, {"variablesReference", kObjects}};
+  }
+  auto e = debug::parseExpression(image, debug::ioWords(text));
   if (!e) return Error{e.failure().message};
   const debug::Expression& x = *e;
-  const std::int64_t value = debug::valueIn(session_->view(), x);  // at the session's moment
+  const std::int64_t value = debug::valueIn(v, x);  // at the session's moment
   std::string shown = std::to_string(value);
   if (x.kind == debug::Expression::Kind::Input || x.kind == debug::Expression::Kind::Output) shown = value ? "on" : "off";
   if (x.kind == debug::Expression::Kind::Clock) shown = fmt::format("{} s", base::formatSeconds(value));
   return Json{{"result", shown}, {"variablesReference", 0}};
+}
+
+namespace {
+
+std::optional<bool> onOrOff(std::string_view text) {
+  for (std::string_view on : {"on", "1", "true"})
+    if (base::sameName(text, on)) return true;
+  for (std::string_view off : {"off", "0", "false"})
+    if (base::sameName(text, off)) return false;
+  return std::nullopt;
+}
+
+}  // namespace
+
+// A variable of the program, or an input (as the terminal's `set input N
+// on|off`): from this moment on, replayed going back and forth.
+Adapter::Reply Adapter::setVariable(const Json& args) {
+  const std::int64_t ref = args.at("variablesReference").get<std::int64_t>();
+  const std::string name = args.at("name").get<std::string>();
+  const std::string value = args.at("value").get<std::string>();
+  const std::string_view typed = debug::trimmed(value);
+  if (ref == kVariables) {
+    std::int64_t n = 0;
+    const auto [end, ec] = std::from_chars(typed.data(), typed.data() + typed.size(), n);
+    if (typed.empty() || ec != std::errc() || end != typed.data() + typed.size())
+      return Error{fmt::format("'{}' is not a whole number", base::safeText(typed.substr(0, 60)))};
+    if (auto problem = session_->setVariable(name, n)) return Error{*problem};
+    return Json{{"value", std::to_string(n)}, {"variablesReference", 0}};
+  }
+  if (ref == kIo) {
+    auto e = debug::parseExpression(*session_->run().spec().image, name);
+    if (!e || e->kind != debug::Expression::Kind::Input)
+      return Error{fmt::format("only inputs can be set ('in 1'..'in {}'): outputs are the program's", vm::kIoCount)};
+    const std::optional<bool> on = onOrOff(typed);
+    if (!on) return Error{fmt::format("'{}': an input is on or off", base::safeText(typed.substr(0, 60)))};
+    if (auto problem = session_->setInput(static_cast<int>(e->index), *on)) return Error{*problem};
+    return Json{{"value", *on ? "on" : "off"}, {"variablesReference", 0}};
+  }
+  if (ref >= kMotors && ref <= kClock)
+    return Error{"only variables and inputs can be set: the motors, objects and clock are the run's"};
+  return Error{fmt::format("no variables with reference {}", ref)};
 }
 
 }  // namespace rs::dap

@@ -51,7 +51,8 @@ const std::vector<Console::Command>& Console::commands() {
       {"backtrace", "bt", "backtrace", "the GOSUB stack, innermost first, with lines"},
       {"list", "l", "list [LINE]", "the source around the current line (or LINE)"},
       {"disasm", "da", "disasm [@N]", "the instructions around the current one, as robotsim disasm lists them"},
-      {"set", "", "set input N on|off", "turn an input on or off from now on (going back replays the change)"},
+      {"set", "", "set input N on|off | set VAR = VALUE",
+       "turn an input on or off, or give a variable a value, from now on (going back and forth replays the change)"},
       {"watch", "w", "watch VAR|output N|input N|LETTER", "stop when a value changes"},
       {"help", "h", "help [COMMAND]", "list the commands, or explain one"},
       {"quit", "q", "quit", "leave the debugger"},
@@ -360,8 +361,9 @@ void Console::watchCommand(std::string_view args) {
 
 void Console::setCommand(std::string_view args) {
   const auto w = words(args);
+  if (w.size() == 3 && w[1] == "=" && !base::sameName(w[0], "input")) return setVariable(w[0], w[2]);
   if (w.size() != 3 || !base::sameName(w[0], "input") || !(base::sameName(w[2], "on") || base::sameName(w[2], "off")))
-    return error("usage: set input N on|off");
+    return error("usage: set input N on|off, or set VAR = VALUE");
   const auto n = count(w[1]);
   const bool on = base::sameName(w[2], "on");
   if (!n || *n > static_cast<std::uint64_t>(vm::kIoCount))
@@ -370,6 +372,17 @@ void Console::setCommand(std::string_view args) {
   const runtime::RunView v = session_.view();
   out_ << fmt::format("input {} is {} from step {} (clock {} s) on\n", *n, on ? "on" : "off", v.steps,
                       base::formatSeconds(v.clock));
+}
+
+void Console::setVariable(std::string_view name, std::string_view value) {
+  std::int64_t v = 0;
+  const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+  if (ec != std::errc() || ptr != value.data() + value.size())
+    return error(fmt::format("'{}' is not a whole number: set VAR = VALUE", shown(value)));
+  if (auto problem = session_.setVariable(name, v)) return error(*problem);
+  const runtime::RunView view = session_.view();
+  out_ << fmt::format("{} = {} from step {} (clock {} s) on\n", shown(name), v, view.steps,
+                      base::formatSeconds(view.clock));
 }
 
 void Console::listCommand(std::string_view args) {

@@ -38,6 +38,7 @@ class Console {
   void printCommand(std::string_view args);
   void watchCommand(std::string_view args);
   void setCommand(std::string_view args);
+  void setVariable(std::string_view name, std::string_view value);
   void listCommand(std::string_view args);
   void disasmCommand(std::string_view args);
   void backtrace();

@@ -50,7 +50,8 @@ class DebugSession::Probe {
 DebugSession::DebugSession(runtime::RunSpec spec, SessionOptions options) {
   spec.log = false;
   run_ = std::make_unique<runtime::Run>(std::move(spec));
-  timeline_ = std::make_unique<Timeline>(*run_, options.snapshotInterval, options.snapshotBudget);
+  timeline_ = std::make_unique<Timeline>(*run_, options.snapshotInterval, options.snapshotBudget,
+                                         options.snapshotKnots);
   stop_ = {StopReason::Entry, "at the start of the run", {}};
 }
 
@@ -235,7 +236,7 @@ bool DebugSession::stopsHere(const runtime::Run& r, const Probe& before, bool co
 
 runtime::RunView DebugSession::view() const {
   runtime::RunView v = run_->view();
-  if (!moment_ || v.finished) return v;
+  if (!moment_) return v;  // set in a finished run only at the collision that ended it
   const runtime::Rig& rig = run_->rig();
   v.clock = moment_->time;
   v.motors = rig.motorsAt(moment_->time);
@@ -244,6 +245,11 @@ runtime::RunView DebugSession::view() const {
   v.instruction = moment_->instruction;
   v.line = run_->spec().image->lines[moment_->instruction];
   v.steps = v.steps > 0 ? v.steps - 1 : 0;  // the instruction under way is not done
+  // Inside the move a collision ends, before its contact: not over yet.
+  if (const runtime::CollisionEvent* hit = endingCollision(); hit && moment_->time < hit->at) {
+    v.finished = false;
+    v.outcome.reset();
+  }
   return v;
 }
 
@@ -274,12 +280,36 @@ bool DebugSession::standAtCollision(const std::vector<int>& ids) {
 
 void DebugSession::standWithin(vm::Micros t) {
   const std::uint64_t steps = run_->interpreter().steps();
-  if (steps == 0 || run_->finished() || run_->rig().clock() <= t) return;
+  // A run a collision ended (before t: gotoTime) stood in its last move at t.
+  if (steps == 0 || (run_->finished() && !endingCollision()) || run_->rig().clock() <= t) return;
   timeline_->goToStep(steps - 1);
   if (run_->rig().clock() == t) return;  // t falls between two instructions: stand there
   const std::uint32_t underWay = run_->interpreter().pc();
   timeline_->goToStep(steps);
   moment_ = Moment{t, underWay};
+}
+
+const runtime::CollisionEvent* DebugSession::endingCollision() const {
+  if (!run_->finished() || run_->spec().collisions != runtime::CollisionMode::Error) return nullptr;
+  const vm::RunOutcome outcome = *run_->outcome();
+  const auto events = run_->rig().collisions();
+  if (outcome.reason != StopReason::RuntimeError || events.empty()) return nullptr;
+  const runtime::CollisionEvent& e = events.back();
+  return e.instruction == outcome.index ? &e : nullptr;
+}
+
+Stop DebugSession::collisionEnd(Stop stop) {
+  const runtime::CollisionEvent* e = endingCollision();
+  if (!e) return stop;
+  if (e->instruction < run_->spec().image->code.size()) moment_ = Moment{e->at, e->instruction};
+  std::string breakpoints;
+  for (Breakpoint& b : breakpoints_) {
+    if (b.kind != Breakpoint::Kind::Collision || (b.condition && !b.condition->holds(*run_))) continue;
+    stop.breakpoints.push_back(b.id);
+    breakpoints += fmt::format("breakpoint {} ({}): ", b.id, b.describe());
+  }
+  stop.message = breakpoints + stop.message;
+  return stop;
 }
 
 std::string DebugSession::collisionText() const {
@@ -310,9 +340,16 @@ Stop DebugSession::stopped(Stop stop) {
 }
 
 Stop DebugSession::forward(const Target& target) {
+  // At the end there is no forwards: the session stays where it stands (a
+  // collision's contact), or from a moment of the move before the contact
+  // goes on to it.
+  if (run_->finished()) {
+    const runtime::CollisionEvent* hit = endingCollision();
+    if (hit && moment_ && moment_->time < hit->at) return stopped(collisionEnd(finishedStop(false)));
+    return stopped(finishedStop(true));
+  }
   const bool within = moment_.has_value();
   moment_.reset();
-  if (run_->finished()) return stopped(finishedStop(true));
   const std::uint64_t closesBefore = emptyCloses();
   Probe probe(*this);
   probe.capture(*run_);
@@ -343,7 +380,7 @@ Stop DebugSession::forward(const Target& target) {
   if (!watched && !target.done) until.when = nullptr;
   if (!already) timeline_->forward(until, interrupted_);
   if (run_->finished()) {
-    Stop s = finishedStop(false);
+    Stop s = collisionEnd(finishedStop(false));
     s.note = emptyCloseNote(closesBefore);
     return stopped(std::move(s));
   }
@@ -466,18 +503,27 @@ Stop DebugSession::reverseContinue() {
 Stop DebugSession::gotoTime(vm::Micros t) {
   moment_.reset();
   timeline_->goToTime(t);
-  if (run_->finished() && run_->rig().clock() <= t) {
+  // A collision ended the run at its contact: later moments of its move
+  // never came. (Its moment copied: standWithin restores snapshots, which
+  // replace the run's list of collisions.)
+  std::optional<Moment> contact;
+  if (const runtime::CollisionEvent* hit = endingCollision()) contact = Moment{hit->at, hit->instruction};
+  if (run_->finished() && (run_->rig().clock() <= t || (contact && contact->time <= t))) {
     Stop s = finishedStop(false);
     s.message += fmt::format(" before {} s", base::formatSeconds(t));
+    moment_ = contact;
     return stopped(std::move(s));
   }
   standWithin(t);
   if (!moment_) return stopped({StopReason::Time, fmt::format("at {} s", base::formatSeconds(t)), {}});
   const std::string_view what = vm::has(run_->spec().image->code[moment_->instruction].op, vm::kMovesMotors)
                                     ? "the move" : "the instruction";
+  const std::string end = contact
+                              ? fmt::format("a collision ends the run in it at {} s", base::formatSeconds(contact->time))
+                              : fmt::format("it ends at {} s", base::formatSeconds(run_->rig().clock()));
   return stopped({StopReason::Time,
-                  fmt::format("at {} s, in the middle of {} of line {} (it ends at {} s)", base::formatSeconds(t), what,
-                              run_->spec().image->lines[moment_->instruction], base::formatSeconds(run_->rig().clock())),
+                  fmt::format("at {} s, in the middle of {} of line {} ({})", base::formatSeconds(t), what,
+                              run_->spec().image->lines[moment_->instruction], end),
                   {}});
 }
 
@@ -488,6 +534,21 @@ std::optional<std::string> DebugSession::setInput(int input, bool on) {
   // A change applies between instructions: inside one under way, from its end.
   moment_.reset();
   for (const StopObserver& o : observers_) o(*this, stop_);  // the same moment, another input
+  return std::nullopt;
+}
+
+std::optional<std::string> DebugSession::setVariable(std::string_view name, std::int64_t value) {
+  if (run_->finished()) return std::string("the run is over: go back first (reverse-step, goto-time)");
+  const std::vector<std::string>& names = run_->spec().image->variables;
+  const auto slot = std::find_if(names.begin(), names.end(), [&](const std::string& n) { return base::sameName(n, name); });
+  if (slot == names.end())
+    return fmt::format("'{}' is not a variable of the program", base::safeText(name.substr(0, 60)));
+  if (value < INT32_MIN || value > INT32_MAX)
+    return fmt::format("{} does not fit a variable: values are {}..{}", value, INT32_MIN, INT32_MAX);
+  if (!timeline_->setVariable(static_cast<std::uint32_t>(slot - names.begin()), static_cast<std::int32_t>(value)))
+    return std::string("the variable could not be set");
+  moment_.reset();  // as setInput: a change applies between instructions
+  for (const StopObserver& o : observers_) o(*this, stop_);
   return std::nullopt;
 }
 

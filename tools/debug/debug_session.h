@@ -2,7 +2,8 @@
 // terminal's `robotsim debug`, the debug adapter's `robotsim dap`): the
 // breakpoints and watches, the ways to go forwards (step, next, finish,
 // continue, until a time) and backwards (reverse step, reverse next,
-// reverse continue, go to a time), `set input`, and why the run stopped.
+// reverse continue, go to a time), `set input` and `set VAR`, and why the
+// run stopped.
 // Every stop leaves the session inspectable, also a deadlock, a runtime
 // error or a limit: the run can still be looked at and stepped back.
 //
@@ -48,6 +49,7 @@ struct Stop {
 struct SessionOptions {
   std::uint64_t snapshotInterval = kDefaultSnapshotInterval;
   std::size_t snapshotBudget = kDefaultSnapshotBudget;
+  std::uint64_t snapshotKnots = kDefaultSnapshotKnots;
 };
 
 class DebugSession {
@@ -62,7 +64,9 @@ class DebugSession {
   /// a move (or a DELAY), and at a collision, that moment lies inside the
   /// instruction under way: the clock, the motors, the tool centre point
   /// and the objects are theirs at that time, the instruction and line the
-  /// one under way, and the steps those done before it.
+  /// one under way, and the steps those done before it. A run that a
+  /// collision ended (--collisions=error, the default) stands at its first
+  /// contact, not at the end of the move the arm never reached.
   runtime::RunView view() const;
   const Stop& lastStop() const { return stop_; }
   const Timeline& timeline() const { return *timeline_; }
@@ -77,8 +81,9 @@ class DebugSession {
   /// When `condition` becomes true (`when out 2 = 1`, `when N = 3`).
   int breakWhen(Condition condition);
   /// At every collision the run's check finds (a run with --collisions=warn
-  /// goes on after it; with error it ends there anyway): the session
-  /// stands at the moment of the first contact.
+  /// goes on after it; with error, the default, it ends there, and the stop
+  /// is both this breakpoint's and the run's end): the session stands at
+  /// the moment of the first contact.
   int breakOnCollision();
   /// At every closing move that takes nothing (what the trace notes and
   /// the run's warning is about).
@@ -124,6 +129,11 @@ class DebugSession {
   /// replays it.
   /// An error message when the run is over or the input is not 1..vm::kIoCount.
   std::optional<std::string> setInput(int input, bool on);
+  /// Variable `name` (any case) holds `value` from now on, as setInput
+  /// (reverse execution replays it). An error message when the run is
+  /// over, the program has no such variable, or the value does not fit
+  /// one (32 bits, as SET's).
+  std::optional<std::string> setVariable(std::string_view name, std::int64_t value);
 
   /// Called after every command that moves the run, with the stop, and
   /// after setInput, with the last stop again (a live view of the
@@ -144,6 +154,14 @@ class DebugSession {
   /// When a collision breakpoint is among `ids`: the session stands at the
   /// moment of the last collision's first contact (true).
   bool standAtCollision(const std::vector<int>& ids);
+  /// The collision that ended the run, if one did (CollisionMode::Error
+  /// stops a run at its first collision, the machine having made the whole
+  /// move): the session shows its contact, never the pose after it.
+  const runtime::CollisionEvent* endingCollision() const;
+  /// A run that a collision ended: the stop at its contact, with the
+  /// collision breakpoints (unconditional, or whose condition holds) that
+  /// stop there.
+  Stop collisionEnd(Stop stop);
   /// Runs back one instruction to see which one is under way at `t`.
   void standWithin(vm::Micros t);
   /// A close on nothing among the instructions since `emptyClosesBefore`.

@@ -36,6 +36,8 @@ std::string ioWords(std::string_view text) {
   return std::string(text);
 }
 
+diag::Result<vm::Micros> parseSeconds(std::string_view text) { return stimuli::text::parseSeconds(trimmed(text)); }
+
 namespace {
 
 std::optional<std::int64_t> integer(std::string_view text) {

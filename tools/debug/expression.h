@@ -64,6 +64,10 @@ diag::Result<HitCondition> parseHitCondition(std::string_view text);
 /// "out 3 = 0"; anything else as written.
 std::string ioWords(std::string_view text);
 
+/// A time as the debugger's commands take it ("2.5", seconds with at most
+/// six decimals): microseconds, or what is wrong with it.
+diag::Result<vm::Micros> parseSeconds(std::string_view text);
+
 /// Whitespace trimmed.
 std::string_view trimmed(std::string_view s);
 

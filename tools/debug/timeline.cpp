@@ -21,7 +21,7 @@ std::size_t heapBytes(const std::vector<T>& v) {
 std::size_t snapshotBytes(const runtime::RunSnapshot& s) {
   std::size_t b = sizeof s;
   b += heapBytes(s.vm.variables) + heapBytes(s.vm.callStack) + heapBytes(s.vm.softHome) + s.vm.outcome.message.capacity();
-  b += heapBytes(s.rig.machine.positions) + heapBytes(s.rig.machine.segments);
+  b += heapBytes(s.rig.machine.positions) + heapBytes(s.rig.machine.segments) + heapBytes(s.rig.machine.path);
   b += s.rig.machine.schedule.reactive.size() * (sizeof(runtime::InputSchedule::State::Pending) + kSetNodeOverhead);
   if (s.rig.world) b += heapBytes(s.rig.world->grasp.resting) + heapBytes(s.rig.world->grasp.letGo);
   if (s.log) b += heapBytes(s.log->moves);
@@ -30,28 +30,32 @@ std::size_t snapshotBytes(const runtime::RunSnapshot& s) {
   return b;
 }
 
-Timeline::Timeline(runtime::Run& run, std::uint64_t interval, std::size_t budget)
-    : run_(run), interval_(std::max<std::uint64_t>(interval, 1)), budget_(budget) {
+Timeline::Timeline(runtime::Run& run, std::uint64_t interval, std::size_t budget, std::uint64_t knotInterval)
+    : run_(run), interval_(std::max<std::uint64_t>(interval, 1)), budget_(budget),
+      knotInterval_(std::max<std::uint64_t>(knotInterval, 1)) {
   keep();
 }
 
 void Timeline::keep() {
   const std::uint64_t steps = run_.interpreter().steps();
   if (snapshots_.count(steps)) return;
-  Stored s{run_.snapshot(), editsApplied_, run_.rig().clock(), 0};
+  Stored s{run_.snapshot(), editsApplied_, run_.rig().clock(), run_.knots(), 0};
   s.bytes = snapshotBytes(s.snapshot);
   bytes_ += s.bytes;
   snapshots_.emplace(steps, std::move(s));
   thin();
 }
 
-// Over budget: twice the interval, and only the snapshots on its multiples
-// (the start always stays).
+// Over budget: twice the intervals, and every other snapshot dropped (the
+// start always stays): the stretches between those left are at most twice
+// as long, in instructions and in knots.
 void Timeline::thin() {
   while (bytes_ > budget_ && snapshots_.size() > 2) {
     interval_ *= 2;
-    for (auto it = std::next(snapshots_.begin()); it != snapshots_.end();) {
-      if (it->first % interval_ == 0) {
+    knotInterval_ *= 2;
+    bool drop = true;
+    for (auto it = std::next(snapshots_.begin()); it != snapshots_.end(); drop = !drop) {
+      if (!drop) {
         ++it;
         continue;
       }
@@ -61,18 +65,26 @@ void Timeline::thin() {
   }
 }
 
-std::uint64_t Timeline::nextBoundary() const {
+// From the latest snapshot at or before the present: K instructions or W
+// knots on, or the next snapshot kept already (a replay passes by it), or
+// the next edit, whichever comes first.
+Timeline::Boundary Timeline::nextBoundary() const {
   const std::uint64_t steps = run_.interpreter().steps();
-  std::uint64_t next = (steps / interval_ + 1) * interval_;
-  if (editsApplied_ < edits_.size()) next = std::min(next, edits_[editsApplied_].steps);
-  return next;
+  auto after = snapshots_.upper_bound(steps);
+  const Stored& last = std::prev(after)->second;  // the start is always kept
+  const std::uint64_t lastSteps = std::prev(after)->first;
+  Boundary b{lastSteps + interval_, lastSteps + interval_, last.knots + knotInterval_};
+  if (after != snapshots_.end()) b.steps = std::min(b.steps, after->first);
+  if (editsApplied_ < edits_.size()) b.steps = std::min(b.steps, edits_[editsApplied_].steps);
+  return b;
 }
 
 void Timeline::applyDueEdits() {
   const std::uint64_t steps = run_.interpreter().steps();
   while (editsApplied_ < edits_.size() && edits_[editsApplied_].steps <= steps && !run_.finished()) {
-    const InputEdit& e = edits_[editsApplied_++];
-    run_.rig().setInput(e.input, e.on);
+    const Edit& e = edits_[editsApplied_++];
+    if (e.kind == Edit::Kind::Input) run_.rig().setInput(e.input, e.on);
+    else run_.setVariable(e.slot, e.value);
   }
 }
 
@@ -87,12 +99,15 @@ vm::RunOutcome Timeline::forward(const runtime::RunUntil& until, const std::func
   const std::uint64_t stepEnd = until.stepEnd(run_.interpreter().steps());
   for (;;) {
     applyDueEdits();
-    const std::uint64_t cap = std::min(stepEnd, nextBoundary());
+    const Boundary boundary = nextBoundary();
+    const std::uint64_t cap = std::min(stepEnd, boundary.steps);
     slice.steps = cap;
+    slice.knots = std::max(boundary.knots, run_.knots() + 1);
     const vm::RunOutcome outcome = run_.runUntil(slice);
     if (!outcome.paused()) return outcome;
     const std::uint64_t steps = run_.interpreter().steps();
-    if (steps % interval_ == 0) keep();
+    const bool knotBoundary = run_.knots() >= slice.knots;
+    if (steps >= boundary.snapshot || knotBoundary) keep();
     // The moment after `steps` instructions is the one with its edits made:
     // wherever the run stops, they are in (the snapshot just kept is the
     // moment before them, and says so).
@@ -101,7 +116,8 @@ vm::RunOutcome Timeline::forward(const runtime::RunUntil& until, const std::func
     // (or the caller's) stop here. At the boundary the run names the step
     // count first, so the caller's time, instructions and lines are
     // looked at again.
-    const bool ownBoundary = run_.pauseCause() == vm::StopReason::Step && steps == cap && cap < stepEnd;
+    const bool ownBoundary =
+        run_.pauseCause() == vm::StopReason::Step && ((steps == cap && cap < stepEnd) || (knotBoundary && steps < stepEnd));
     if (!ownBoundary) return outcome;
     const std::uint32_t pc = run_.interpreter().pc();
     if (run_.rig().clock() > until.time) return outcome;
@@ -177,7 +193,25 @@ std::optional<std::uint64_t> Timeline::lastMatch(const std::function<void(const 
 }
 
 bool Timeline::setInput(int input, bool on) {
-  if (run_.finished() || !vm::isIoLine(input)) return false;
+  if (!vm::isIoLine(input)) return false;
+  Edit e;
+  e.kind = Edit::Kind::Input;
+  e.input = input;
+  e.on = on;
+  return record(e);
+}
+
+bool Timeline::setVariable(std::uint32_t slot, std::int32_t value) {
+  if (slot >= run_.spec().image->variables.size()) return false;
+  Edit e;
+  e.kind = Edit::Kind::Variable;
+  e.slot = slot;
+  e.value = value;
+  return record(e);
+}
+
+bool Timeline::record(const Edit& edit) {
+  if (run_.finished()) return false;
   const std::uint64_t steps = run_.interpreter().steps();
   applyDueEdits();
   // That future is gone: later edits and snapshots with it.
@@ -186,8 +220,11 @@ bool Timeline::setInput(int input, bool on) {
     bytes_ -= it->second.bytes;
     it = snapshots_.erase(it);
   }
-  if (!run_.rig().setInput(input, on)) return false;
-  edits_.push_back({steps, input, on});
+  const bool made = edit.kind == Edit::Kind::Input ? run_.rig().setInput(edit.input, edit.on)
+                                                   : run_.setVariable(edit.slot, edit.value);
+  if (!made) return false;
+  edits_.push_back(edit);
+  edits_.back().steps = steps;
   editsApplied_ = edits_.size();
   return true;
 }

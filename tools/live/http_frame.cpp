@@ -4,6 +4,7 @@
 
 #include "base/ascii.h"
 #include "base/file_io.h"
+#include "base/text.h"
 
 namespace rs::live {
 
@@ -27,6 +28,47 @@ void eachHeader(std::string_view head, Visit&& visit) {
     }
     pos = end;
   }
+}
+
+// RFC 9110's tchar: what a field name is made of (no space, no controls).
+bool isTokenChar(char c) {
+  if ((c >= '0' && c <= '9') || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z')) return true;
+  return std::string_view("!#$%&'*+-.^_`|~").find(c) != std::string_view::npos;
+}
+
+// What RFC 9112 says a server must refuse with 400, and what would let the
+// server and cpp-httplib read different headers: a field line that is no
+// `name: value` (a name with a space or a control in it, a space before the
+// colon, a folded line, no colon at all: section 5.1), two Host headers
+// (section 3.2), two Origin headers or an empty one (RFC 6454, 7.3: one
+// origin, never none). "" when the head may be read.
+std::string whyHeadersRefused(std::string_view head) {
+  int hosts = 0, origins = 0;
+  std::size_t pos = head.find("\r\n");  // past the request line
+  while (pos != std::string_view::npos && pos + 2 < head.size()) {
+    pos += 2;
+    const std::size_t end = head.find("\r\n", pos);
+    const std::string_view line = head.substr(pos, end == std::string_view::npos ? head.size() - pos : end - pos);
+    pos = end;
+    const std::size_t colon = line.find(':');
+    if (colon == std::string_view::npos)
+      return fmt::format("a header line is no 'Name: value' (it has no colon): '{}'", base::safeText(line.substr(0, 40)));
+    const std::string_view name = line.substr(0, colon);
+    bool token = !name.empty();
+    for (char c : name) token = token && isTokenChar(c);
+    if (!token)
+      return fmt::format("a header's name may not hold a space or a control character, nor be empty (RFC 9112, "
+                         "section 5.1: no space before the colon): '{}'",
+                         base::safeText(name.substr(0, 40)));
+    std::string_view value = line.substr(colon + 1);
+    while (!value.empty() && (value.front() == ' ' || value.front() == '\t')) value.remove_prefix(1);
+    if (base::sameName(name, "Host") && ++hosts > 1) return "a request has one Host header, not two";
+    if (base::sameName(name, "Origin")) {
+      if (++origins > 1) return "a request has one Origin header, not two";
+      if (value.find_first_not_of(" \t") == std::string_view::npos) return "an Origin header may not be empty";
+    }
+  }
+  return {};
 }
 
 RequestFrame refused(int status, std::string message) {
@@ -57,6 +99,7 @@ RequestFrame frameRequest(std::string_view bytes, std::size_t maxHead, std::size
   RequestFrame f;
   f.headLength = end + kHeadEnd.size();
   const std::string_view lines = bytes.substr(0, end + 2);  // the last header line keeps its CR LF
+  if (std::string why = whyHeadersRefused(lines); !why.empty()) return refused(400, std::move(why));
   std::size_t lengths = 0;
   std::size_t body = 0;
   bool lengthOk = true, chunked = false;

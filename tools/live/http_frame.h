@@ -5,9 +5,11 @@
 // (none without it). What cannot be framed is refused with the status to
 // answer: a head over its limit (431), a body over its limit (413, from
 // Content-Length, before it is read), a chunked body (411: the page and
-// curl send Content-Length), a Content-Length that is not one number, or a
+// curl send Content-Length), a Content-Length that is not one number, a
 // head line that ends in a bare LF (400: cpp-httplib would read other
-// headers than these frames do).
+// headers than these frames do), a header line that is no `Name: value`
+// (a space before the colon, a folded line), two Host or two Origin
+// headers, or an empty Origin (400, as RFC 9112 and RFC 6454 say).
 #pragma once
 
 #include <cstddef>

@@ -51,6 +51,10 @@ std::shared_ptr<const CellContext> CellCache::get(const std::string& name) {
         robot && robot->chain)
       context->robot = workcell::PlacedRobot{std::move(*robot), Eigen::Isometry3d::Identity()};
   }
+  // The straight lines' path check costs a plan of each line: it is made
+  // with the run, on the run worker's thread (checked_run.h), not in the
+  // compile every request waits for.
+  context->target.checkLines = false;
   cache_[name] = context;
   return context;
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <time.h>
 
+#include "compiler/program/line_check.h"
 #include "launch/program.h"
 #include "launch/run_diagnostics.h"
 #include "launch/run_request.h"
@@ -23,34 +24,66 @@ std::chrono::nanoseconds threadTime() {
   return std::chrono::seconds(t.tv_sec) + std::chrono::nanoseconds(t.tv_nsec);
 }
 
-// Notes when each instruction first starts and ends, and how often it runs;
-// pauses the run when it is abandoned or out of time (the thread's clock
-// read every kClockEvery steps: a step costs nanoseconds, a read hundreds).
+// Notes when each instruction first starts and ends, how often it runs and
+// for how long, and how long each call of a subroutine takes (a stack of
+// the calls under way, as the interpreter's); pauses the run when it is
+// abandoned or out of time (the thread's clock read every kClockEvery
+// steps: a step costs nanoseconds, a read hundreds; and every
+// kClockEveryKnots knots, since one straight line is a step of thousands
+// of moves).
 class Timer final : public vm::StepObserver {
  public:
   static constexpr std::uint64_t kClockEvery = 1024;
+  static constexpr std::uint64_t kClockEveryKnots = 4096;
 
-  Timer(std::vector<InstructionTimes>& times, const RunControl& control, std::chrono::nanoseconds deadline)
-      : times_(times), control_(control), deadline_(deadline) {}
+  Timer(std::vector<InstructionTimes>& times, std::vector<CallTimes>& calls, const RunControl& control,
+        std::chrono::nanoseconds deadline)
+      : times_(times), calls_(calls), control_(control), deadline_(deadline) {}
   bool afterStep(const vm::Interpreter& vm, std::uint32_t index) override {
     const vm::Micros now = vm.machine().now();
     if (index < times_.size()) {
       InstructionTimes& t = times_[index];
       if (t.runs++ == 0) t.start = before_, t.end = now;
+      t.total += now - before_;
+      const vm::Op op = vm.image().code[index].op;
+      if (vm::has(op, vm::kCalls) && vm.callDepth() > underWay_.size()) underWay_.push_back({vm.pc(), before_});
+      if (vm::has(op, vm::kReturns) && !underWay_.empty() && vm.callDepth() < underWay_.size()) {
+        const Call c = underWay_.back();
+        underWay_.pop_back();
+        if (c.entry < calls_.size()) {
+          CallTimes& ct = calls_[c.entry];
+          const vm::Micros took = now - c.start;
+          ct.shortest = ct.calls == 0 ? took : std::min(ct.shortest, took);
+          ct.longest = std::max(ct.longest, took);
+          ++ct.calls;
+          ct.total += took;
+        }
+      }
     }
     before_ = now;
     if (control_.abandoned()) return true;
-    if (++steps_ % kClockEvery == 0 && threadTime() >= deadline_) outOfTime_ = true;
+    const std::uint64_t knots = vm.machine().knots();
+    if (++steps_ % kClockEvery == 0 || knots >= knotsRead_ + kClockEveryKnots) {
+      knotsRead_ = knots;
+      if (threadTime() >= deadline_) outOfTime_ = true;
+    }
     return outOfTime_;
   }
   bool outOfTime() const { return outOfTime_; }
 
  private:
+  struct Call {
+    std::uint32_t entry = 0;  // the subroutine's first instruction
+    vm::Micros start = 0;
+  };
   std::vector<InstructionTimes>& times_;
+  std::vector<CallTimes>& calls_;
+  std::vector<Call> underWay_;
   const RunControl& control_;
   std::chrono::nanoseconds deadline_;
   vm::Micros before_ = 0;
   std::uint64_t steps_ = 0;
+  std::uint64_t knotsRead_ = 0;
   bool outOfTime_ = false;
 };
 
@@ -65,6 +98,7 @@ std::string summaryOf(const runtime::Run& run, const vm::RunOutcome& outcome) {
     case vm::StopReason::StepLimit:
     case vm::StopReason::TimeLimit:
     case vm::StopReason::InstantLimit:
+    case vm::StopReason::KnotLimit:
       return fmt::format("stopped by the {} at {} (line {})", vm::stopReasonName(outcome.reason), at, line);
     default: break;  // paused
   }
@@ -112,6 +146,17 @@ CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, 
     out.end = CheckedRun::End::Abandoned;
     return out;
   }
+  const compiler::Target& target = analysis.cell().target;
+  if (!target.checkLines && target.robot && target.robot->robot.chain) {
+    diag::Diagnostics lines(analysis.source().name(), kMaxDiagnostics);
+    compiler::checkLinePaths(*analysis.image(), *target.robot, lines, target.linePlans.get());
+    if (lines.hasErrors()) {
+      out.end = CheckedRun::End::NotRun;
+      out.diagnostics = lines.sorted();
+      out.summary = "not made (a straight line cannot be followed)";
+      return out;
+    }
+  }
   // The spec as `check` makes it, from the same function.
   launch::LoadedProgram program;
   program.image = analysis.image();
@@ -142,7 +187,8 @@ CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, 
     spec->stimuli = std::move(parsed).value();
   }
   out.times.resize(spec->image->code.size());
-  Timer timer(out.times, control, deadline);
+  out.calls.resize(spec->image->code.size());
+  Timer timer(out.times, out.calls, control, deadline);
   runtime::Run run(*spec);
   run.observe(timer);
   control.attach(&run);

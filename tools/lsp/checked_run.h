@@ -5,7 +5,13 @@
 // for NAME.rsp, as the editors' Check command passes it with --stimuli),
 // off the request thread (run_worker.h). What it reports are check's own
 // diagnostics (launch/run_diagnostics.h); when each instruction ran feeds
-// hovers and inlay hints.
+// hovers and inlay hints, and how long each subroutine's calls took the
+// code lenses. Before it, the compile-time check of the
+// straight lines (compiler/program/line_check.h), which the editor's
+// compile leaves out (CellContext's target): a plan of each MOVES, APPRO
+// and DEPART, from the cell's cache of plans, so that an edit re-plans
+// only the lines it changed; a line the arm cannot follow is the compile
+// error `check` gives, and the program is then not run.
 //
 // The editor bounds it further: at most kRunBudget of the worker thread's
 // CPU time (a run that needs more ends with a note saying so, never with a
@@ -42,6 +48,16 @@ struct InstructionTimes {
   vm::Micros start = 0;  ///< of its first execution
   vm::Micros end = 0;
   std::uint64_t runs = 0;  ///< 0: never ran (to its end)
+  vm::Micros total = 0;    ///< every execution's time, added up
+};
+
+/// The calls of a subroutine that returned, from the GOSUB to its RETURN
+/// (the calls it makes included).
+struct CallTimes {
+  std::uint64_t calls = 0;
+  vm::Micros total = 0;
+  vm::Micros shortest = 0;
+  vm::Micros longest = 0;
 };
 
 /// What the run is given besides the program: check's options as the
@@ -56,10 +72,13 @@ struct RunOptions {
 };
 
 struct CheckedRun {
-  /// NotRun: the stimuli file beside the program has errors (a note says so).
+  /// NotRun: a straight line cannot be followed (its compile error is among
+  /// the diagnostics), or the stimuli file beside the program has errors (a
+  /// note says so).
   enum class End : std::uint8_t { Finished, OutOfBudget, Abandoned, NotRun };
   End end = End::Finished;
   std::vector<InstructionTimes> times;  ///< per instruction (0-based)
+  std::vector<CallTimes> calls;         ///< per instruction: the calls of the subroutine it is the entry of
   std::optional<vm::RunOutcome> outcome;  ///< when finished
   vm::Micros clock = 0;                   ///< where the run stopped
   std::uint64_t steps = 0;

@@ -24,6 +24,7 @@ std::string documentUri(const Field& params);
 
 /// LSP's SymbolKind, CompletionItemKind, DiagnosticSeverity values used here.
 namespace symbol_kind {
+inline constexpr int kModule = 2;
 inline constexpr int kNamespace = 3;
 inline constexpr int kClass = 5;
 inline constexpr int kField = 8;

@@ -35,6 +35,8 @@ Json capabilities(Encoding enc) {
       {"renameProvider", {{"prepareProvider", true}}},
       {"foldingRangeProvider", true},
       {"inlayHintProvider", true},
+      {"codeLensProvider", {{"resolveProvider", false}}},
+      {"callHierarchyProvider", true},
       {"semanticTokensProvider", {{"legend", semanticTokensLegend()}, {"full", true}}},
   };
 }
@@ -159,6 +161,7 @@ Reply Server::initialize(const Field& params) {
     if (encodings.element(i).string() == "utf-8") encoding = Encoding::Utf8;
   const bool snippets = caps["textDocument"]["completion"]["completionItem"]["snippetSupport"].boolean(false);
   const bool refresh = caps["workspace"]["inlayHint"]["refreshSupport"].boolean(false);
+  const bool refreshLenses = caps["workspace"]["codeLens"]["refreshSupport"].boolean(false);
   const std::string rootUri = params["rootUri"].string("");
   std::string root;
   const Field folders = params["workspaceFolders"];
@@ -172,6 +175,7 @@ Reply Server::initialize(const Field& params) {
   encoding_ = encoding;
   snippets_ = snippets;
   refreshInlayHints_ = refresh;
+  refreshCodeLenses_ = refreshLenses;
   workspace_.setRoot(root);
   workspace_.setSettings(std::move(settings));
   state_ = State::Running;
@@ -273,6 +277,10 @@ void Server::runMade(const RunJob& job, const CheckedRun& run) {
     sendLocked({{"jsonrpc", "2.0"},
                 {"id", fmt::format("robotsim-inlay-refresh-{}", ++refreshes_)},
                 {"method", "workspace/inlayHint/refresh"}});
+  if (refreshCodeLenses_ && job.analysis->answeredWithoutRun())
+    sendLocked({{"jsonrpc", "2.0"},
+                {"id", fmt::format("robotsim-lens-refresh-{}", ++refreshes_)},
+                {"method", "workspace/codeLens/refresh"}});
 }
 
 Reply Server::workspaceSymbols(const Field& params) {
@@ -386,6 +394,21 @@ void Server::registerHandlers() {
   });
   on("textDocument/inlayHint",
      [](const ProgramContext& p, const Field& q) -> Reply { return inlayHints(p, rangeFrom(q["range"])); });
+  on("textDocument/codeLens", [](const ProgramContext& p, const Field&) -> Reply { return codeLenses(p); });
+  on("textDocument/prepareCallHierarchy",
+     [position](const ProgramContext& p, const Field& q) -> Reply { return prepareCallHierarchy(p, position(q)); });
+  // An item names its document itself (item.uri) and its routine in data.
+  for (const bool incoming : {true, false})
+    d.onRequest(incoming ? "callHierarchy/incomingCalls" : "callHierarchy/outgoingCalls",
+                [this, incoming](const Field& params) -> Reply {
+                  const Field item = params["item"];
+                  Document* doc = workspace_.document(item["uri"].string());
+                  if (!doc || doc->language() != Language::Program) return Json::array();
+                  const std::string label = item["data"]["label"].string("");
+                  const auto analysis = workspace_.program(*doc);
+                  const ProgramContext p{*doc, *analysis, encoding_};
+                  return incoming ? incomingCalls(p, label) : outgoingCalls(p, label);
+                });
   on("textDocument/semanticTokens/full",
      [](const ProgramContext& p, const Field&) -> Reply { return semanticTokens(p); });
   d.onRequest("workspace/symbol", [this](const Field& params) { return workspaceSymbols(params); });

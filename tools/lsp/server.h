@@ -88,6 +88,7 @@ class Server {
   Encoding encoding_ = Encoding::Utf16;
   bool snippets_ = false;
   bool refreshInlayHints_ = false;  // the client takes workspace/inlayHint/refresh
+  bool refreshCodeLenses_ = false;  // ... and workspace/codeLens/refresh
   std::uint64_t refreshes_ = 0;     // ids of those requests
   std::string version_;             // serverInfo.version; empty: not reported
   std::set<std::string> pending_;   // URIs whose diagnostics are due

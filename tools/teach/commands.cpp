@@ -92,7 +92,13 @@ Outcome applyCommand(Pendant& p, const Json& r) {
   if (*op == "teach" || *op == "reteach" || *op == "delete" || *op == "goTo") {
     if (!name) return bad(fmt::format("{} needs \"name\", a string", *op));
     if (*op == "teach") return p.teach(*name);
-    if (*op == "reteach") return p.reteach(*name);
+    if (*op == "reteach") {
+      // "as": how a point written as a tool pose is re-taught ("pose" or "counts").
+      if (r.find("as") == r.end()) return p.reteach(*name);
+      const auto as = stringArg(r, "as");
+      if (!as || (*as != "pose" && *as != "counts")) return bad("reteach's \"as\" is \"pose\" or \"counts\"");
+      return p.reteach(*name, *as == "pose" ? Pendant::Reteach::Pose : Pendant::Reteach::Counts);
+    }
     if (*op == "delete") return p.remove(*name);
     return p.goTo(*name);
   }

@@ -80,7 +80,7 @@ step <select id="step" aria-label="jog step">
 <div class="row"><button id="goto">go to</button><button id="reteach">re-teach</button>
 <button id="delete">delete</button><input id="newName" type="text" placeholder="new name" aria-label="new name">
 <button id="rename">rename</button></div>
-<div id="confirm"><span id="question"></span> <button id="yes">yes</button> <button id="no">no</button></div>
+<div id="confirm"><span id="question"></span> <button id="yes">yes</button> <button id="asPose">as a pose</button> <button id="asCounts">as counts</button> <button id="no">no</button></div>
 <h2>Cell</h2>
 <div class="row"><button id="reset">reset cell</button><button id="read">read position</button>
 <button id="reload">reload file</button></div>

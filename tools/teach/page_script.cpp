@@ -23,7 +23,7 @@ const std::string_view kScript = R"JS('use strict';
   const still = { view: [0, 0, 0], window: [0, 0, 0] };
   const S = { state: null, selectedMotor: 0, selectedPoint: null, step: 10, axes: !!model.camera.axes,
               mode: 'joint', selectedAxis: 0, axisNames: '',
-              anim: null, shown: null, pending: 0, confirm: null };
+              anim: null, shown: null, pending: 0, confirm: null, choices: null };
   el('title').textContent = model.title;
   // Read-only (the debugger's view of a stopped run): the pendant's
   // controls are hidden; a key that would move the robot is still sent
@@ -181,7 +181,7 @@ const std::string_view kScript = R"JS('use strict';
       const li = document.createElement('li'), v = document.createElement('span');
       li.dataset.name = p.name;
       v.className = 'v';
-      v.textContent = '  ' + (p.readable ? p.values.join(' ') : '(not whole numbers)') + '   line ' + p.line;
+      v.textContent = '  ' + (p.pose ? '(a tool pose: AT ...)' : p.readable ? p.values.join(' ') : '(not whole numbers)') + '   line ' + p.line;
       li.append(document.createTextNode(p.name), v);
       li.addEventListener('click', () => selectPoint(p.name));
       list.append(li);
@@ -235,19 +235,32 @@ const std::string_view kScript = R"JS('use strict';
   };
 
   // ---- Points: teach, go to, re-teach and delete (after a yes), rename.
-  function ask(question, command) {
+  // A question: yes or no; or, with `choices` (answers by button id), one of them or no.
+  function ask(question, command, choices) {
     S.confirm = command;
+    S.choices = choices || null;
     el('question').textContent = question;
+    el('yes').style.display = choices ? 'none' : '';
+    for (const id of ['asPose', 'asCounts']) el(id).style.display = choices && choices[id] ? '' : 'none';
     el('confirm').classList.add('on');
   }
-  function answer(yes) {
-    const c = S.confirm;
+  function answer(yes, choice) {
+    const c = choice && S.choices ? S.choices[choice] : S.confirm;
     S.confirm = null;
+    S.choices = null;
     el('confirm').classList.remove('on');
     if (yes && c) send(c);
   }
   el('yes').addEventListener('click', () => answer(true));
   el('no').addEventListener('click', () => answer(false));
+  el('asPose').addEventListener('click', () => answer(true, 'asPose'));
+  el('asCounts').addEventListener('click', () => answer(true, 'asCounts'));
+  function reteach(name) {
+    const p = (S.state ? S.state.points : []).find((q) => q.name === name);
+    if (!p || !p.pose) { ask('Re-teach ' + name + ' with the current pose?', { op: 'reteach', name }); return; }
+    ask('Re-teach ' + name + ', written as a tool pose: keep it a pose (AT ...), or write the counts?', null,
+        { asPose: { op: 'reteach', name, as: 'pose' }, asCounts: { op: 'reteach', name, as: 'counts' } });
+  }
   function teach() {
     const name = el('teachName').value.trim();
     if (!name) { el('teachName').focus(); return; }
@@ -268,7 +281,7 @@ const std::string_view kScript = R"JS('use strict';
     closeGripper: () => send({ op: 'gripper', close: true }),
     teach: () => (el('teachName').value.trim() ? teach() : el('teachName').focus()),
     goTo: selected((name) => send({ op: 'goTo', name })),
-    reteach: selected((name) => ask('Re-teach ' + name + ' with the current pose?', { op: 'reteach', name })),
+    reteach: selected(reteach),
     delete: selected((name) => ask('Delete point ' + name + '?', { op: 'delete', name })),
     rename: selected((name) => {
       const to = el('newName').value.trim();

@@ -5,13 +5,29 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/ascii.h"
 #include "base/number_text.h"
 #include "base/seconds.h"
+#include "tools/teach/point_target.h"
 #include "vm/motor_range.h"
 
 namespace rs::teach {
 
 namespace {
+
+// Whether `text` (a row, its comment aside) has the word `word`, any case.
+bool hasWord(std::string_view text, std::string_view word) {
+  text = text.substr(0, text.find(';'));
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    std::size_t end = i;
+    while (end < text.size() && text[end] != ' ' && text[end] != '\t') ++end;
+    if (end > i && base::sameName(text.substr(i, end - i), word)) return true;
+    i = end;
+  }
+  return false;
+}
 
 std::string valuesText(std::span<const std::int32_t> v) {
   std::string s;
@@ -62,11 +78,14 @@ Outcome Pendant::refuseAt(workcell::JogLimit limit, std::string message) {
 
 // The one path that moves the robot: the fault check, the soft limits
 // (each motor's encoder range) before anything moves or is sent, then the
-// rig's machine, so the world reacts as in a run. On the simulated machine
+// rig's machine (a joint move, or with `straight` the tool along its
+// straight line, as MOVES runs it), so the world reacts as in a run. On the simulated machine
 // the rig checks the move for collisions (docs/models.md); a move that
 // collides is refused and undone (the rig restored to before it), so the
 // robot never stands in a collision (docs/teach.md).
-Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
+Outcome Pendant::moveTo(std::span<const std::int32_t> targets) { return move(targets, false); }
+
+Outcome Pendant::move(std::span<const std::int32_t> targets, bool straight) {
   if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
   if (targets.size() != motors_.size())
     return refuse(fmt::format("{} values for {} motors", targets.size(), motors_.size()), true);
@@ -78,13 +97,14 @@ Outcome Pendant::moveTo(std::span<const std::int32_t> targets) {
   std::optional<runtime::RigSnapshot> before;
   if (watch) before = rig_->snapshot();
   const std::size_t seen = watch ? watch->events().size() : 0;
-  const vm::Status status = rig_->machine().moveTo(targets);
+  const vm::Status status = straight ? rig_->machine().moveLine(targets) : rig_->machine().moveTo(targets);
   if (watch && watch->events().size() > seen) {
     const runtime::CollisionEvent hit = watch->events()[seen];
     rig_->restore(*before);
     return refuseAt(workcell::JogLimit::Collision,
-                    fmt::format("refused: the move to {} collides {} s into it: {}; nothing moved", valuesText(targets),
-                                base::formatSeconds(hit.at - start), watch->describe(hit.contact)));
+                    fmt::format("refused: the move to {} collides {} s into it: {}; nothing moved{}", valuesText(targets),
+                                base::formatSeconds(hit.at - start), watch->describe(hit),
+                                watch->hint(hit).empty() ? std::string() : " (" + watch->hint(hit) + ")"));
   }
   if (!status) {
     moved_ = false;
@@ -142,7 +162,10 @@ Outcome Pendant::jogCartesian(workcell::JogFrame frame, std::string_view axis, d
     return refuseAt(*r.limit, fmt::format("{} refused ({}): {}; nothing moved", what, workcell::jogLimitName(*r.limit),
                                           r.message));
   }
-  Outcome o = moveTo(r.pose.encoders);
+  // Along the line the jog planned, as MOVES runs it: a block lifted off
+  // the pallet it stands on goes straight up, where a joint move swings it
+  // through the pallet.
+  Outcome o = move(r.pose.encoders, true);
   if (!o.ok) {
     if (!limit_.empty()) {
       // "world jog X +10 length units refused (collision): the move to ...", not "...: refused: the move to ...".
@@ -197,10 +220,58 @@ Outcome Pendant::teach(std::string_view name) {
               fmt::format("taught {} = {} (written to {})", name, valuesText(now), file_.path()));
 }
 
-Outcome Pendant::reteach(std::string_view name) {
+Outcome Pendant::reteach(std::string_view name, std::optional<Reteach> as) {
   const std::vector<std::int32_t> now(rig_->motors().begin(), rig_->motors().end());
-  return edit([&](PointsText& p) { return p.replace(name, now); },
+  const std::optional<std::size_t> p = file_.points().find(name);
+  if (p && file_.points().points()[*p].pose && !as)
+    return refuse(fmt::format("point {} is written as a tool pose: re-teach it as a pose or as counts", name), true);
+  if (p && as == Reteach::Pose) return reteachPose(*p);
+  return edit([&](PointsText& pts) { return pts.replace(name, now); },
               fmt::format("re-taught {} = {} (written to {})", name, valuesText(now), file_.path()));
+}
+
+// The tool's pose now, as a point's words: where the tool centre point is
+// (world coordinates), which way the tool points and its fingers close
+// (what the arm can turn: nothing for a cartesian one), the gripper's
+// count where the row wrote one (a row of counts, which sets the gripper,
+// always gets it). Written only if the compiler resolves it,
+// with the rows above it, to the counts the arm stands at (±1 for the
+// rounding of the words): else it would not be the pose taught.
+Outcome Pendant::reteachPose(std::size_t index) {
+  const PointRow& row = file_.points().points()[index];
+  const std::string name = row.name;
+  if (!cartesian_)
+    return refuse(fmt::format("robot {} has no kinematic chain: {} can be re-taught as counts only",
+                              cell_->robots.front().robot.name, name));
+  const std::vector<std::int32_t> now(rig_->motors().begin(), rig_->motors().end());
+  const workcell::JogPose pose = jogStart();  // the exact pose after a jog
+  const auto words = [](const Eigen::Vector3d& v, int digits) {
+    return fmt::format("{} {} {}", base::formatNumber(v.x(), digits), base::formatNumber(v.y(), digits),
+                       base::formatNumber(v.z(), digits));
+  };
+  std::string text = "AT " + words(pose.tool.translation(), 4);
+  if (!cartesian_->axes(pose, workcell::JogFrame::World).back().rotation) {
+    // A cartesian arm's tool never turns: its orientation is not written.
+  } else {
+    text += " APPROACH " + words(pose.tool.linear().col(2), 6) + " NORMAL " + words(pose.tool.linear().col(0), 6);
+  }
+  const std::string_view rowText = file_.points().rowText(index);
+  if (const std::optional<std::size_t> g = gripperMotor(); g && (!row.pose || hasWord(rowText, "GRIP")))
+    text += fmt::format(" GRIP {}", now[*g]);
+  // What the compiler makes of it, before it is written.
+  PointsText trial = file_.points();
+  trial.replacePose(name, text);
+  const PointTarget t = pointTarget(trial, index, *cell_);
+  if (!t.ok()) return refuse(fmt::format("{} as a pose does not resolve: {}; re-teach it as counts", name, t.error));
+  for (std::size_t m = 0; m < now.size(); ++m) {
+    if (t.keepsGripper && motors_[m].kind == vm::JointKind::Gripper) continue;
+    if (std::abs(std::int64_t{t.values[m]} - now[m]) > 1)
+      return refuse(fmt::format("{} as a pose ({}) resolves to {}, not to the counts the arm stands at, {} (another "
+                                "of the arm's solutions): re-teach it as counts",
+                                name, text, valuesText(t.values), valuesText(now)));
+  }
+  return edit([&](PointsText& pts) { return pts.replacePose(name, text); },
+              fmt::format("re-taught {} {} (written to {})", name, text, file_.path()));
 }
 
 Outcome Pendant::remove(std::string_view name) {
@@ -218,10 +289,16 @@ Outcome Pendant::goTo(std::string_view name) {
   const std::optional<std::size_t> p = pts.find(name);
   if (!p) return refuse(fmt::format("there is no point {}", name));
   const PointRow& row = pts.points()[*p];
-  if (!row.readable || row.values.size() != motors_.size())
+  if (!row.pose && (!row.readable || row.values.size() != motors_.size()))
     return refuse(fmt::format("point {} (line {}) does not have {} whole numbers: fix it in an editor", row.name,
                               row.line + 1, motors_.size()));
-  Outcome o = moveTo(row.values);
+  // A pose: where MOVEP goes, the gripper as it is when the pose writes no GRIP.
+  const PointTarget target = pointTarget(pts, *p, *cell_);
+  if (!target.ok()) return refuse(fmt::format("cannot go to {}: {}; nothing moved", row.name, target.error));
+  std::vector<std::int32_t> values = target.values;
+  if (target.keepsGripper)
+    if (const std::optional<std::size_t> g = gripperMotor()) values[*g] = rig_->motors()[*g];
+  Outcome o = moveTo(values);
   if (o.ok) message_ = o.message = fmt::format("went to {} ({:.3f} s)", row.name, (moveEnd_ - moveStart_) / 1e6);
   return o;
 }
@@ -337,7 +414,7 @@ PendantState Pendant::state() const {
   s.outputs = rig_->machine().outputs();
   for (const runtime::ObjectView& o : rig_->objects())
     s.objects.push_back({std::string(o.name), o.pose, o.held, o.moved});
-  for (const PointRow& p : file_.points().points()) s.points.push_back({p.name, p.values, p.line + 1, p.readable});
+  for (const PointRow& p : file_.points().points()) s.points.push_back({p.name, p.values, p.line + 1, p.readable, p.pose});
   s.clock = rig_->clock();
   s.motion = frames();
   s.message = message_;

@@ -56,8 +56,10 @@ class Pendant {
   /// The tool by `amount` (length units, or degrees for a turn) along or
   /// about `axis` of the cell's frame (World) or the tool's own (Tool):
   /// through the inverse kinematics, on the configuration the arm stands
-  /// in; refused, with nothing moved, at the limit it meets (the state's
-  /// `limit`: range, reach, singularity, collision). Repeated jogs start
+  /// in, the tool moving along its straight line as MOVES moves it, with
+  /// the same path check; refused, with nothing moved, at the limit it
+  /// meets (the state's `limit`: range, reach, singularity, step,
+  /// collision). Repeated jogs start
   /// from the exact pose the last one reached, so they do not drift by the
   /// rounding to encoder counts.
   Outcome jogCartesian(workcell::JogFrame frame, std::string_view axis, double amount);
@@ -68,12 +70,22 @@ class Pendant {
   Outcome gripper(bool close);
   /// The current encoder values become point `name` (a new one).
   Outcome teach(std::string_view name);
-  /// Point `name` gets the current encoder values.
-  Outcome reteach(std::string_view name);
+  /// How re-teach writes a point that is written as a tool pose.
+  enum class Reteach : std::uint8_t {
+    Counts,  ///< the current encoder counts (a row of counts; the only way for a row of counts)
+    Pose,    ///< a tool pose again: `AT` the tool centre point, the tool's orientation, GRIP if the row wrote one
+  };
+  /// Point `name` gets the current pose. A point written as a tool pose
+  /// must say which way (`as`; a row of counts may be re-taught as a pose
+  /// too); the pose is written only where the compiler resolves it to the
+  /// current counts (else refused).
+  Outcome reteach(std::string_view name, std::optional<Reteach> as = std::nullopt);
   Outcome remove(std::string_view name);
   Outcome rename(std::string_view from, std::string_view to);
   /// Every motor to point `name`, at motor speed (the state's motion has
-  /// the move, time-stepped).
+  /// the move, time-stepped). A point written as a tool pose goes where
+  /// the program's MOVEP takes the arm (point_target.h): resolved with the
+  /// rows above it, the gripper left as it is when it writes no GRIP.
   Outcome goTo(std::string_view name);
   /// Input `line` (1..8) flips (simulation: a switch on the pendant).
   Outcome toggleInput(int line);
@@ -94,12 +106,15 @@ class Pendant {
   static constexpr vm::Micros kFrameStep = 40'000;
 
  private:
+  /// moveTo's checks and move; with `straight`, along the tool's straight line (vm::Machine::moveLine).
+  Outcome move(std::span<const std::int32_t> targets, bool straight);
   Outcome done(Outcome o);
   Outcome refuse(std::string message, bool bad = false);
   Outcome refuseAt(workcell::JogLimit limit, std::string message);
   /// Where a Cartesian jog starts: the last jog's exact pose while the arm's motors are still where it put
   /// them, else the pose at the motors' counts.
   workcell::JogPose jogStart() const;
+  Outcome reteachPose(std::size_t index);
   Outcome edit(const std::function<std::string(PointsText&)>& change, std::string message);
   std::optional<std::size_t> gripperMotor() const;
   std::vector<MotionFrame> frames() const;

@@ -75,7 +75,7 @@ Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& pl
   }
   Json points = Json::array();
   for (const PendantPoint& p : s.points)
-    points.push_back({{"name", p.name}, {"values", p.values}, {"line", p.line}, {"readable", p.readable}});
+    points.push_back({{"name", p.name}, {"values", p.values}, {"line", p.line}, {"readable", p.readable}, {"pose", p.pose}});
   Json motion = Json::array();
   for (const MotionFrame& f : s.motion)
     motion.push_back({{"at", f.at}, {"encoders", f.encoders}, {"objects", objectPoses(f.objects, placed)}});

@@ -33,6 +33,7 @@ struct PendantPoint {
   std::vector<std::int32_t> values;
   std::size_t line = 0;  ///< 1-based line in the program file
   bool readable = true;
+  bool pose = false;  ///< written as a tool pose (`AT ...`): go to resolves it, re-teach asks pose or counts
 };
 
 /// One moment of the last move, for UIs that animate it.
@@ -70,7 +71,7 @@ struct PendantState {
   std::vector<MotionFrame> motion;  ///< the last move, time-stepped (empty after a non-move)
   std::string message;  ///< what the last operation did, or why it did not
   bool failed = false;  ///< the last operation was refused or failed
-  /// The limit a refused move met: "range", "reach", "singularity",
+  /// The limit a refused move met: "range", "reach", "singularity", "step",
   /// "collision" (workcell::jogLimitName), "" otherwise.
   std::string limit;
   std::string fault;    ///< the device failed: every motor stopped, nothing more is sent
@@ -89,7 +90,7 @@ GripperState gripperState(const std::vector<vm::MotorSpec>& motors, const std::v
 /// "objects": [{"name", "pose" (12 numbers, column-major 3x4: F_world ·
 /// F_placed⁻¹, what takes the object's drawing from where the cell placed
 /// it to where it is), "held", "moved"}], "points": [{"name", "values",
-/// "line", "readable"}], "clock", "motion": [{"at", "encoders",
+/// "line", "readable", "pose"}], "clock", "motion": [{"at", "encoders",
 /// "objects"}], "message", "failed", "limit", "fault", "fileHash" (16 hex digits)}.
 /// `placed` holds each object's F_world_design where the cell placed it.
 nlohmann::ordered_json pendantJson(const PendantState& state, const std::vector<Eigen::Isometry3d>& placed);

@@ -109,6 +109,7 @@ void PointsText::reparse() {
     PointRow row;
     row.name = std::string(wordText(body, s.words[0]));
     row.line = l;
+    row.pose = s.words.size() > 1 && base::sameName(wordText(body, s.words[1]), "AT");
     for (std::size_t w = 1; w < s.words.size(); ++w) {
       const std::optional<std::int32_t> v = wholeNumber(wordText(body, s.words[w]));
       if (v)
@@ -199,16 +200,28 @@ std::string PointsText::layoutRow(std::string_view name, std::span<const std::in
   return row;
 }
 
-std::string PointsText::add(std::string_view name, std::span<const std::int32_t> values) {
-  if (std::string why = checkPointName(name); !why.empty()) return why;
-  if (std::optional<std::size_t> p = find(name))
-    return fmt::format("there is a point {} already (line {})", points_[*p].name, points_[*p].line + 1);
-  // The template: the last readable row without tabs, else the last row.
+std::optional<std::size_t> PointsText::countsTemplate() const {
   std::optional<std::size_t> templ;
   for (const PointRow& p : points_)
     if (p.readable && !scan(lines_[p.line].body).tabs) templ = p.line;
   if (!templ && !points_.empty()) templ = points_.back().line;
-  const std::string row = layoutRow(name, values, templ, false);
+  return templ;
+}
+
+std::string PointsText::withComment(std::string row, std::size_t line) const {
+  const std::string_view body = lines_[line].body;
+  const Scan s = scan(body);
+  if (!s.comment) return row;
+  row.append(*s.comment > row.size() ? *s.comment - row.size() : 1, ' ');
+  row += body.substr(*s.comment);
+  return row;
+}
+
+std::string PointsText::add(std::string_view name, std::span<const std::int32_t> values) {
+  if (std::string why = checkPointName(name); !why.empty()) return why;
+  if (std::optional<std::size_t> p = find(name))
+    return fmt::format("there is a point {} already (line {})", points_[*p].name, points_[*p].line + 1);
+  const std::string row = layoutRow(name, values, countsTemplate(), false);
   const std::string eol = lineEnd();
   if (!pointsLine_) {
     const bool terminated = lines_.empty() || !lines_.back().end.empty();
@@ -228,8 +241,32 @@ std::string PointsText::add(std::string_view name, std::span<const std::int32_t>
 std::string PointsText::replace(std::string_view name, std::span<const std::int32_t> values) {
   const std::optional<std::size_t> p = find(name);
   if (!p) return fmt::format("there is no point {}", name);
-  Line& line = lines_[points_[*p].line];
-  line.body = layoutRow(points_[*p].name, values, points_[*p].line, true);
+  const PointRow& row = points_[*p];
+  Line& line = lines_[row.line];
+  if (row.pose) {
+    // Its words are a pose, not a row of counts to line up with: laid out like the rows of counts.
+    std::optional<std::size_t> templ = countsTemplate();
+    if (templ == row.line) templ.reset();
+    line.body = withComment(layoutRow(row.name, values, templ, false), row.line);
+  } else {
+    line.body = layoutRow(row.name, values, row.line, true);
+  }
+  reparse();
+  return {};
+}
+
+std::string PointsText::replacePose(std::string_view name, std::string_view pose) {
+  const std::optional<std::size_t> p = find(name);
+  if (!p) return fmt::format("there is no point {}", name);
+  const std::size_t l = points_[*p].line;
+  const std::string_view body = lines_[l].body;
+  const Scan s = scan(body, l == 0 && body.starts_with(kBom) ? kBom.size() : 0);
+  // The name as it stands, then the gap it had before its first value (at least one space).
+  const std::size_t nameEnd = s.words[0].end;
+  std::string row(body.substr(0, nameEnd));
+  row += s.words.size() > 1 ? std::string(body.substr(nameEnd, s.words[1].begin - nameEnd)) : std::string(" ");
+  row += pose;
+  lines_[l].body = withComment(std::move(row), l);
   reparse();
   return {};
 }
@@ -252,6 +289,13 @@ std::string PointsText::rename(std::string_view from, std::string_view to) {
   if (std::optional<std::size_t> q = find(to); q && *q != *p)
     return fmt::format("there is a point {} already (line {})", points_[*q].name, points_[*q].line + 1);
   const PointRow& row = points_[*p];
+  if (row.pose) {  // only the name changes: the pose's words stay as written
+    Line& line = lines_[row.line];
+    const Scan s = scan(line.body, row.line == 0 && line.body.starts_with(kBom) ? kBom.size() : 0);
+    line.body.replace(s.words[0].begin, s.words[0].end - s.words[0].begin, to);
+    reparse();
+    return {};
+  }
   if (!row.readable) return fmt::format("point {} has a value that is not a whole number: fix it in an editor", row.name);
   const std::vector<std::int32_t> values = row.values;
   lines_[row.line].body = layoutRow(to, values, row.line, true);

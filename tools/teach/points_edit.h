@@ -29,6 +29,7 @@ struct PointRow {
   std::vector<std::int32_t> values;
   std::size_t line = 0;   ///< 0-based line of the file
   bool readable = true;   ///< false: a value is not a whole number (the compiler reports it)
+  bool pose = false;      ///< written as a tool pose: `NAME AT x y z ...` (then not readable as counts)
 };
 
 class PointsText {
@@ -40,14 +41,20 @@ class PointsText {
   const std::vector<PointRow>& points() const { return points_; }
   /// The row named `name` (any case), as an index into points().
   std::optional<std::size_t> find(std::string_view name) const;
+  /// Row `i` of points() as the file spells it, without its line end.
+  std::string_view rowText(std::size_t i) const { return lines_[points_[i].line].body; }
   /// 0-based line of the POINTS line, if there is one.
   std::optional<std::size_t> pointsLine() const { return pointsLine_; }
 
   // Edits. Each returns "" when done, or why not (the text is then unchanged).
   /// A new row after the last point (a POINTS line first, if missing).
   std::string add(std::string_view name, std::span<const std::int32_t> values);
-  /// New values for an existing point.
+  /// New values for an existing point (a point written as a pose becomes
+  /// a row of counts, laid out like the rows of counts).
   std::string replace(std::string_view name, std::span<const std::int32_t> values);
+  /// An existing point written as the tool pose `pose` ("AT 240 900 -40
+  /// APPROACH 0 -1 0"): its name and comment stay where they are.
+  std::string replacePose(std::string_view name, std::string_view pose);
   std::string remove(std::string_view name);
   std::string rename(std::string_view from, std::string_view to);
 
@@ -60,6 +67,10 @@ class PointsText {
   std::string lineEnd() const;
   std::string layoutRow(std::string_view name, std::span<const std::int32_t> values,
                         std::optional<std::size_t> templateLine, bool keepComment) const;
+  /// The line a new row of counts is laid out after: the last readable row without tabs, else the last row.
+  std::optional<std::size_t> countsTemplate() const;
+  /// `row` followed by the comment of line `line`, at its column where it fits.
+  std::string withComment(std::string row, std::size_t line) const;
 
   std::vector<Line> lines_;
   std::vector<PointRow> points_;

@@ -13,6 +13,10 @@ namespace rs::testrun {
 namespace {
 
 std::string seconds(vm::Micros t) { return base::formatSeconds(t) + " s"; }
+// A time a test wrote (`at T`, `during A..B`, `time <= T`), and the moments
+// found against it: every digit written is shown ("0..0.0005 s", not
+// "0.000..0.001 s").
+std::string exactly(vm::Micros t) { return base::formatSecondsExactly(t) + " s"; }
 std::string onOff(bool on) { return on ? "ON" : "OFF"; }
 
 class Checker {
@@ -29,6 +33,12 @@ class Checker {
 
   void fail(const Expectation& e, std::string message) {
     failures.push_back({file_, e.pos, diag::Severity::Error, std::move(message)});
+  }
+  // At the column of the expectation's motor term `i` (E=100), where it was read from text.
+  void failAtMotor(const Expectation& e, std::size_t i, std::string message) {
+    diag::Pos pos = e.pos;
+    if (i < e.motorCols.size()) pos.col = e.motorCols[i];
+    failures.push_back({file_, pos, diag::Severity::Error, std::move(message)});
   }
 
   void status(const Expectation& e) {
@@ -50,22 +60,24 @@ class Checker {
                                                     : t == e.micros;
     if (ok) return;
     const std::string_view op = e.compare == Compare::AtMost ? "<=" : e.compare == Compare::AtLeast ? ">=" : "=";
-    fail(e, fmt::format("expected the run's simulated time {} {}; it ended {}", op, seconds(e.micros), ending()));
+    fail(e, fmt::format("expected the run's simulated time {} {}; it ended at line {}, {}", op, exactly(e.micros),
+                        image_.lines[outcome_.index], exactly(t)));
   }
 
   void motors(const Expectation& e) {
     const auto now = run_.rig().motors();
-    for (const auto& [letter, value] : e.motors) {
+    for (std::size_t i = 0; i < e.motors.size(); ++i) {
+      const auto [letter, value] = e.motors[i];
       std::size_t m = 0;
       while (m < image_.motors.size() && image_.motors[m].letter != letter) ++m;
       if (m == image_.motors.size()) {
         std::string letters;
         for (const vm::MotorSpec& s : image_.motors) letters += fmt::format("{}{}", letters.empty() ? "" : " ", s.letter);
-        fail(e, fmt::format("the robot has no motor {} (its motors: {})", letter, letters));
+        failAtMotor(e, i, fmt::format("the robot has no motor {} (its motors: {})", letter, letters));
         continue;
       }
       if (std::abs(std::int64_t{now[m]} - value) <= e.within) continue;
-      fail(e, fmt::format("expected motor {} at {}{} at the end; it is at {} {}", letter, value,
+      failAtMotor(e, i, fmt::format("expected motor {} at {}{} at the end; it is at {} {}", letter, value,
                           e.within ? fmt::format(" within {}", e.within) : "", now[m], ending()));
     }
   }
@@ -84,7 +96,7 @@ class Checker {
     if (e.at) {
       const WatchedMoment& m = *a.moment;
       if ((m.value != 0) != e.on)
-        fail(e, fmt::format("expected {} {} at {}; it was {} then ({})", what, onOff(e.on), seconds(*e.at),
+        fail(e, fmt::format("expected {} {} at {}; it was {} then ({})", what, onOff(e.on), exactly(*e.at),
                             onOff(m.value != 0), cause(e.kind, m)));
       return;
     }
@@ -92,7 +104,8 @@ class Checker {
       const auto [from, to] = *e.during;
       if (const std::optional<WatchedMoment>& m = a.moment)
         fail(e, fmt::format("expected {} {} during {}..{}; it was {} at {} ({})", what, onOff(e.on),
-                            base::formatSeconds(from), seconds(to), onOff(!e.on), seconds(m->at), cause(e.kind, *m)));
+                            base::formatSecondsExactly(from), exactly(to), onOff(!e.on), exactly(m->at),
+                            cause(e.kind, *m)));
       return;
     }
     const std::uint8_t bits = output ? run_.rig().machine().outputs() : run_.rig().machine().inputs();
@@ -120,7 +133,7 @@ class Checker {
     const auto [letter, bound] = e.motors.front();
     std::size_t m = 0;
     while (m < image_.motors.size() && image_.motors[m].letter != letter) ++m;
-    if (m == image_.motors.size()) return fail(e, fmt::format("the robot has no motor {}", letter));
+    if (m == image_.motors.size()) return failAtMotor(e, 0, fmt::format("the robot has no motor {}", letter));
     if (!w.beyond) return;
     const WatchedMove& move = *w.beyond;
     fail(e, fmt::format("expected motor {} never {} {}; it moved to {} at line {} ({}..{})", letter,
@@ -142,14 +155,14 @@ class Checker {
         const WatchedMoment& m = *w.moment;
         if (m.value != e.value)
           fail(e, fmt::format("expected variable {} = {} at {}; it was {} then ({})", image_.variables[s], e.value,
-                              seconds(*e.at), m.value, cause(e.kind, m)));
+                              exactly(*e.at), m.value, cause(e.kind, m)));
         return;
       }
       if (e.during) {
         const auto [from, to] = *e.during;
         if (const std::optional<WatchedMoment>& m = w.moment)
           fail(e, fmt::format("expected variable {} = {} during {}..{}; it was {} at {} ({})", image_.variables[s],
-                              e.value, base::formatSeconds(from), seconds(to), m->value, seconds(m->at),
+                              e.value, base::formatSecondsExactly(from), exactly(to), m->value, exactly(m->at),
                               cause(e.kind, *m)));
         return;
       }

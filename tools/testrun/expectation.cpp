@@ -28,9 +28,10 @@ using words::wordsOf;
 // The stops an expectation names, in the order its error lists them: every
 // reason that ends a run (a new one fails to compile until it is here),
 // each said with the run's words of vm/stop_reason.h's table.
-constexpr std::array kStatusReasons{vm::StopReason::End,       vm::StopReason::Deadlock,
-                                    vm::StopReason::StepLimit, vm::StopReason::TimeLimit,
-                                    vm::StopReason::InstantLimit, vm::StopReason::RuntimeError};
+constexpr std::array kStatusReasons{vm::StopReason::End,          vm::StopReason::Deadlock,
+                                    vm::StopReason::StepLimit,    vm::StopReason::TimeLimit,
+                                    vm::StopReason::InstantLimit, vm::StopReason::KnotLimit,
+                                    vm::StopReason::RuntimeError};
 constexpr bool namesEveryEnd() {
   for (int r = 0; vm::isOver(static_cast<vm::StopReason>(r)); ++r)
     if (std::find(kStatusReasons.begin(), kStatusReasons.end(), static_cast<vm::StopReason>(r)) == kStatusReasons.end())
@@ -147,6 +148,7 @@ bool expectation(LineReader& r, Expectation& e) {
       if (eq != 1 || parsed.ec != std::errc() || parsed.ptr != end)
         return r.fail(fmt::format("expected a motor and its encoder value, e.g. E=100, got '{}'", w->text));
       e.motors.emplace_back(base::asciiUpper(w->text[0]), v);
+      e.motorCols.push_back(w->col);
       r.take("");
     }
     if (e.motors.empty()) return r.fail("expected at least one motor and its value, e.g. E=100");
@@ -181,6 +183,7 @@ bool expectation(LineReader& r, Expectation& e) {
     std::int64_t bound = 0;
     if (!r.integer("an encoder value", bound, INT32_MIN, INT32_MAX)) return false;
     e.motors.emplace_back(base::asciiUpper(letter->text[0]), static_cast<std::int32_t>(bound));
+    e.motorCols.push_back(letter->col);
     return r.end();
   }
   if (r.accept("output") || r.accept("input")) {
@@ -256,7 +259,7 @@ bool expectation(LineReader& r, Expectation& e) {
 
 bool setting(LineReader& r, TestSettings& s) {
   const Word* first = r.peek();
-  if (!first) return r.fail("expected a setting: cell, stimuli, input, max-time or max-steps");
+  if (!first) return r.fail("expected a setting: cell, stimuli, input, max-time, max-steps or max-knots");
   const auto value = [&](std::string_view what, std::string& into) {
     const std::optional<Word> w = r.take(what);
     if (!w) return false;
@@ -278,7 +281,14 @@ bool setting(LineReader& r, TestSettings& s) {
     s.maxSteps = static_cast<std::uint64_t>(n);
     return r.end();
   }
-  return r.fail(fmt::format("unknown setting '{}': cell, stimuli, input, max-time or max-steps", first->text));
+  if (r.accept("max-knots")) {
+    std::int64_t n = 0;
+    if (!r.integer("a number of straight-line knots", n, 1, std::int64_t{1} << 62)) return false;
+    s.maxKnots = static_cast<std::uint64_t>(n);
+    return r.end();
+  }
+  return r.fail(
+      fmt::format("unknown setting '{}': cell, stimuli, input, max-time, max-steps or max-knots", first->text));
 }
 
 }  // namespace
@@ -307,10 +317,8 @@ bool ParsedExpectations::statesStatus() const {
   return false;
 }
 
-// One `test:`, `expect:` or `expect-error:` directive whose head starts at
-// byte `i` of the line; false when the line holds none.
-bool directive(std::string_view line, std::uint32_t n, std::size_t i, const std::string& file,
-               ParsedExpectations& out) {
+bool readDirective(std::string_view line, std::uint32_t n, std::size_t i, const std::string& file,
+                   ParsedExpectations& out) {
   const std::size_t colon = line.find(':', i);
   if (colon == std::string_view::npos) return false;
   const std::string_view head = line.substr(i, colon - i);
@@ -363,64 +371,8 @@ ParsedExpectations parseExpectations(const diag::SourceFile& source) {
     if (semicolon == std::string_view::npos) continue;
     std::size_t i = semicolon + 1;
     while (i < line.size() && blank(line[i])) ++i;
-    directive(line, n, i, source.name(), out);  // or an ordinary comment
+    readDirective(line, n, i, source.name(), out);  // or an ordinary comment
   }
-  return out;
-}
-
-ScenarioFile parseScenarioFile(const diag::SourceFile& source) {
-  ScenarioFile out;
-  ParsedExpectations preamble;  // directives before the first scenario are errors
-  for (std::uint32_t n = 1; n <= source.lineCount(); ++n) {
-    const std::string_view line = source.line(n);
-    std::size_t i = 0;
-    while (i < line.size() && blank(line[i])) ++i;
-    if (i == line.size() || line[i] == ';') continue;
-    const std::vector<Word> words = wordsOf(line.substr(0, line.find(';')), i);
-    const diag::Pos pos{n, columnOf(line, i)};
-    if (is(words[0], "scenario")) {
-      if (words.size() < 2) {
-        out.errors.push_back({source.name(), {n, columnOf(line, line.size())}, diag::Severity::Error,
-                              "expected the scenario's name after 'scenario'"});
-        continue;
-      }
-      Scenario& s = out.scenarios.emplace_back();
-      s.pos = pos;
-      const std::size_t from = static_cast<std::size_t>(words[1].text.data() - line.data());
-      const std::size_t to = static_cast<std::size_t>(words.back().text.data() + words.back().text.size() - line.data());
-      s.name = line.substr(from, to - from);
-      continue;
-    }
-    if (is(words[0], "program")) {
-      if (words.size() != 2 || !out.program.empty()) {
-        out.errors.push_back({source.name(), pos, diag::Severity::Error,
-                              out.program.empty() ? "expected 'program FILE' (one file name)"
-                                                  : "the program is named twice"});
-        continue;
-      }
-      out.program = words[1].text;
-      out.programPos = pos;
-      continue;
-    }
-    ParsedExpectations& into = out.scenarios.empty() ? preamble : out.scenarios.back().parsed;
-    if (!directive(line, n, i, source.name(), into)) {
-      out.errors.push_back({source.name(), pos, diag::Severity::Error,
-                            fmt::format("expected 'program FILE', 'scenario NAME', 'test: ...' or 'expect: ...', got "
-                                        "'{}'",
-                                        words[0].text)});
-      continue;
-    }
-    if (out.scenarios.empty())
-      out.errors.push_back(
-          {source.name(), pos, diag::Severity::Error, "expected 'scenario NAME' before the first test: or expect:"});
-  }
-  for (const diag::Diagnostic& d : preamble.errors) out.errors.push_back(d);
-  for (Scenario& s : out.scenarios) {
-    for (diag::Diagnostic& d : s.parsed.errors) out.errors.push_back(std::move(d));
-    s.parsed.errors.clear();
-  }
-  if (out.scenarios.empty() && out.errors.empty())
-    out.errors.push_back({source.name(), {}, diag::Severity::Error, "the file has no 'scenario NAME'"});
   return out;
 }
 

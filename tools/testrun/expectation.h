@@ -67,6 +67,9 @@ struct Expectation {
   std::optional<std::pair<vm::Micros, vm::Micros>> during;
   // Motors
   std::vector<std::pair<char, std::int32_t>> motors;
+  /// The column of each of `motors`' terms as written (E=100), for a
+  /// message about one of them; empty for an expectation not read from text.
+  std::vector<std::uint32_t> motorCols;
   std::int32_t within = 0;
   // MotorBound: `motors[0]` is the motor and its bound; `on`: never above (else never below)
   // Output, Input, Pulses
@@ -83,6 +86,9 @@ struct Expectation {
   LineEvent first, second;
   // CompileError: the error's message must contain this
   std::string message;
+  /// In a scenario file, `expect: ... points N`: what it earns when it
+  /// holds (a teacher's partial credit), in hundredths of a point.
+  std::optional<std::int64_t> points;
 };
 
 /// How to run the program (`; test:` lines); paths as written, relative to
@@ -93,6 +99,7 @@ struct TestSettings {
   std::vector<std::string> inputs;  ///< N=ON@T
   std::string maxTime;              ///< seconds, as written
   std::optional<std::uint64_t> maxSteps;
+  std::optional<std::uint64_t> maxKnots;
 };
 
 struct ParsedExpectations {
@@ -110,23 +117,11 @@ struct ParsedExpectations {
 /// Reads every expectation and setting of a program's comments.
 ParsedExpectations parseExpectations(const diag::SourceFile& source);
 
-/// One world a program is checked in: its settings and expectations.
-struct Scenario {
-  std::string name;
-  diag::Pos pos;
-  ParsedExpectations parsed;
-};
-
-/// A scenario file (`.rstest`): `program FILE` (relative to the scenario
-/// file; optional with --spec), then `scenario NAME` lines, each followed by
-/// its `test:` and `expect:` lines; `;` starts a comment.
-struct ScenarioFile {
-  std::string program;
-  diag::Pos programPos;
-  std::vector<Scenario> scenarios;
-  std::vector<diag::Diagnostic> errors;  ///< every bad line
-};
-
-ScenarioFile parseScenarioFile(const diag::SourceFile& source);
+/// One `test:`, `expect:` or `expect-error:` directive of line `n`, its head
+/// starting at byte `i`, into `out` (a bad one as an error there); false
+/// when the line holds none. The scenario files' reader (scenario_file.h)
+/// shares it.
+bool readDirective(std::string_view line, std::uint32_t n, std::size_t i, const std::string& file,
+                   ParsedExpectations& out);
 
 }  // namespace rs::testrun

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <ostream>
 #include <streambuf>
@@ -17,6 +18,7 @@
 #include "tools/testrun/expectation.h"
 #include "tools/testrun/golden_trace.h"
 #include "tools/testrun/run_watch.h"
+#include "tools/testrun/scenario_file.h"
 #include "vm/image_file.h"
 
 namespace rs::testrun {
@@ -46,7 +48,9 @@ std::string besideProgram(const std::string& program, const std::string& name, b
   if (name.empty()) return name;
   const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : fs::path(program).parent_path() / name;
   std::error_code ec;
-  if (mayBeLibraryName && !fs::is_regular_file(path, ec)) return name;
+  // A library name unless something but a folder is there (a FIFO there is
+  // refused by its reader as what it is).
+  if (mayBeLibraryName && (!fs::exists(path, ec) || fs::is_directory(path, ec))) return name;
   return path.lexically_normal().string();
 }
 
@@ -234,6 +238,12 @@ void hintLimit(const vm::RunOutcome& outcome, const TestSettings& settings, bool
     hint = fmt::format("grading stops a run at {} simulated seconds; a scenario that needs longer says 'test: "
                        "max-time SECONDS'",
                        kGradingMaxSeconds);
+  else if (grading && outcome.reason == vm::StopReason::KnotLimit && !settings.maxKnots)
+    hint = fmt::format("grading stops a run after {} knots of straight lines (MOVES, APPRO, DEPART); a scenario that "
+                       "needs more says 'test: max-knots N'",
+                       kGradingMaxKnots);
+  else if (outcome.reason == vm::StopReason::KnotLimit)
+    hint = "allow more with 'test: max-knots N'";
   if (hint.empty()) return;
   for (diag::Diagnostic& d : r.problems)
     if (d.hint.empty() && d.message.find(vm::stopReasonName(outcome.reason)) != std::string::npos) d.hint = hint;
@@ -279,7 +289,9 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   run.inputs = parsed.settings.inputs;
   run.maxSteps = parsed.settings.maxSteps;
   run.maxTime = parsed.settings.maxTime;
+  run.maxKnots = parsed.settings.maxKnots;
   if (grading && !run.maxSteps) run.maxSteps = kGradingMaxSteps;
+  if (grading && !run.maxKnots) run.maxKnots = kGradingMaxKnots;
   if (grading && run.maxTime.empty()) run.maxTime = std::to_string(kGradingMaxSeconds);
   run.collisions = options.collisions;
   // A test that expects a collision lets the run go on past it.
@@ -307,6 +319,7 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
     running.observe(*t.writer);
   }
   const vm::RunOutcome outcome = running.runToEnd();
+  r.ran = true;
   if (watch) watch->finish(outcome);
   if (counter) r.coverage = counter->coverage();
   r.simulated = running.rig().clock();
@@ -332,6 +345,28 @@ std::shared_ptr<const diag::SourceFile> readSource(const std::string& path, Test
 }
 
 bool isScenarioFile(const std::string& path) { return fs::path(path).extension() == ".rstest"; }
+
+// What scenario `s` earned in `r`: all its points when it passed; with
+// partial credit, those of each expectation that holds (no problem at its
+// line and column in the scenario file, or at one of its motor terms) in a run that was made; else none.
+void grade(const Scenario& s, const std::string& specPath, TestResult& r) {
+  r.maxPoints = maxPointsOf(s);
+  if (r.status == TestStatus::Passed) {
+    r.points = r.maxPoints;
+    return;
+  }
+  r.points = 0;
+  if (r.status == TestStatus::Error || !r.ran || !partialCredit(s)) return;
+  for (const Expectation& e : s.parsed.expectations) {
+    if (!e.points) continue;
+    const bool failed = std::any_of(r.problems.begin(), r.problems.end(), [&](const diag::Diagnostic& d) {
+      // At the expectation, or at one of its motor terms (evaluate.cpp's failAtMotor).
+      const bool atTerm = std::find(e.motorCols.begin(), e.motorCols.end(), d.pos.col) != e.motorCols.end();
+      return d.file == specPath && d.pos.line == e.pos.line && (d.pos.col == e.pos.col || atTerm);
+    });
+    if (!failed) r.points += *e.points;
+  }
+}
 
 }  // namespace
 
@@ -362,7 +397,10 @@ std::vector<TestResult> runScenarios(const std::string& specPath, const std::str
   for (const Scenario& s : parsed.scenarios) {
     TestResult r = base;
     r.name = s.name;
-    check(program, s.parsed, specPath, options, !programOverride.empty(), r);
+    ParsedExpectations scenario = s.parsed;
+    scenario.settings = settingsOf(parsed, s);  // with the settings every scenario shares
+    check(program, scenario, specPath, options, !programOverride.empty(), r);
+    grade(s, specPath, r);
     results.push_back(std::move(r));
   }
   return results;

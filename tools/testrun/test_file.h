@@ -45,6 +45,14 @@ struct TestResult {
   std::optional<Coverage> coverage;
   /// Golden traces written by --update.
   std::vector<std::string> updated;
+  /// A scenario's grade, in hundredths of a point (scenario_file.h): what
+  /// it earned and the most it could (0 and 0 for a program's own
+  /// expectations). Passed earns the most; failed earns, where the
+  /// scenario gives partial credit, the points of the expectations that
+  /// held in a run that was made; an error earns nothing.
+  std::int64_t points = 0, maxPoints = 0;
+  /// The program compiled and ran (its expectations were checked).
+  bool ran = false;
 };
 
 struct RunnerOptions {
@@ -60,6 +68,11 @@ struct RunnerOptions {
 /// (docs/testing.md, "Grading").
 inline constexpr std::uint64_t kGradingMaxSteps = 1'000'000;
 inline constexpr std::uint32_t kGradingMaxSeconds = 120;
+/// ... and knots of straight lines (vm::RunLimits::maxKnots): a line costs
+/// its knots, and a MOVES loop on a cell of the student's choosing (motors
+/// that make a line take no time) would otherwise run a million lines.
+/// About 0.2 s of a grader's CPU at most (docs/performance.md).
+inline constexpr std::uint64_t kGradingMaxKnots = 200'000;
 /// ... and instructions in a row while the clock stands still: a loop
 /// that polls without a DELAY is named for what it is, long before the
 /// step limit.

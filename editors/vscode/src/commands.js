@@ -71,8 +71,9 @@ function commandArgs(command, file, settings, { out, exists, text } = {}) {
 /**
  * The launch configuration "Debug robot program" starts for `file` (whose
  * text is `text`): `robotsim dap` launches it on the cell setting unless
- * the file names its own cell, with the stimuli file beside it, stopping
- * before the first instruction.
+ * the file names its own cell, with the stimuli file beside it and the
+ * collisions setting (as Run and Check pass --collisions), stopping before
+ * the first instruction.
  */
 function debugConfiguration(file, settings, { exists, text } = {}) {
   const has = exists || (() => false);
@@ -82,7 +83,20 @@ function debugConfiguration(file, settings, { exists, text } = {}) {
   if ((settings.lib || []).length) config.lib = settings.lib;
   const stim = stimuliBeside(file, has);
   if (stim.length) config.stimuli = stim[1];
+  if (settings.collisions && settings.collisions !== 'error') config.collisions = settings.collisions;
   return config;
+}
+
+/**
+ * What the Go to Time command sends for what was typed: the custom request
+ * `gotoTime`'s arguments (seconds as the terminal's goto-time takes them),
+ * or, for text that is no time, `problem` (the input box shows it).
+ */
+function gotoTimeRequest(typed) {
+  const time = String(typed || '').trim();
+  if (!/^[0-9]+(\.[0-9]{1,6})?$/.test(time))
+    return { problem: 'a time in seconds of simulated time, such as 2.5 (at most six decimals)' };
+  return { command: 'gotoTime', arguments: { time } };
 }
 
 /** Diagnostics in robotsim's output, as the problem matcher reads them. */
@@ -100,4 +114,6 @@ function animationTitle(file) {
   return `Animate ${path.basename(file)}`;
 }
 
-module.exports = { diagnosticPattern, commandArgs, debugConfiguration, parseDiagnostics, animationTitle, directiveCell };
+module.exports = {
+  diagnosticPattern, commandArgs, debugConfiguration, gotoTimeRequest, parseDiagnostics, animationTitle, directiveCell,
+};

@@ -4,7 +4,9 @@
 // matcher; Animate shows robotsim's HTML replay in a webview beside the
 // editor), and the debugger: the debug type "robotsim" runs `robotsim dap`
 // (the Debug Adapter Protocol, stepping backwards too) and the "Debug
-// robot program" command debugs the file in the editor. What each command
+// robot program" command debugs the file in the editor; "Go to Time" takes
+// a stopped debug session to a moment of simulated time (the adapter's
+// custom request gotoTime, forwards or backwards). What each command
 // runs is in commands.js; which robotsim runs it, in locate.js (PATH, then
 // the usual install places, else a message naming the setting to change).
 'use strict';
@@ -15,7 +17,7 @@ const path = require('path');
 const { execFile } = require('child_process');
 const vscode = require('vscode');
 const { LanguageClient, TransportKind } = require('vscode-languageclient/node');
-const { commandArgs, debugConfiguration, animationTitle } = require('./commands');
+const { commandArgs, debugConfiguration, gotoTimeRequest, animationTitle } = require('./commands');
 const { locateRobotsim } = require('./locate');
 
 let client;
@@ -100,6 +102,27 @@ async function debugProgram() {
   await vscode.debug.startDebugging(vscode.workspace.getWorkspaceFolder(document.uri), config);
 }
 
+// Go to Time: the moment typed, in the robotsim session being debugged.
+async function gotoTime() {
+  const session = vscode.debug.activeDebugSession;
+  if (!session || session.type !== 'robotsim') {
+    vscode.window.showErrorMessage('ROBOTSIM: Go to Time needs a robot program being debugged.');
+    return;
+  }
+  const typed = await vscode.window.showInputBox({
+    prompt: 'Go to this moment of the run (seconds of simulated time), forwards or backwards',
+    placeHolder: '2.5',
+    validateInput: (text) => gotoTimeRequest(text).problem,
+  });
+  if (typed === undefined) return;
+  const request = gotoTimeRequest(typed);
+  try {
+    await session.customRequest(request.command, request.arguments);
+  } catch (error) {
+    vscode.window.showErrorMessage(`ROBOTSIM: ${error.message}`);
+  }
+}
+
 function registerDebugger(context) {
   context.subscriptions.push(vscode.debug.registerDebugAdapterDescriptorFactory('robotsim', {
     createDebugAdapterDescriptor: () => {
@@ -121,6 +144,7 @@ function registerDebugger(context) {
     },
   }));
   context.subscriptions.push(vscode.commands.registerCommand('robotsim.debug', () => debugProgram()));
+  context.subscriptions.push(vscode.commands.registerCommand('robotsim.gotoTime', () => gotoTime()));
 }
 
 function activate(context) {

@@ -254,21 +254,32 @@ test('the problem matcher reads robotsim errors at their file, line and column',
   assert.equal(manifest.contributes.problemMatchers[0].pattern.regexp, diagnosticPattern.source);
 });
 
-test('the snippets expand to programs robotsim accepts', () => {
+// Every program snippet, expanded with its defaults, in one program that
+// robotsim check compiles and robotsim test runs against the expectation
+// the Expectation snippet writes (its first choice); the other choices too.
+test('the snippets expand to programs robotsim check and robotsim test accept', () => {
   const snippets = JSON.parse(fs.readFileSync(path.join(here, 'snippets', 'robotsim-program.json'), 'utf8'));
-  const program = expand(snippets['New program'].body);
-  const loop = expand(snippets['Counted loop'].body);
-  const wait = expand(snippets['Wait for a part'].body);
-  const sub = expand(snippets.Subroutine.body);
-  const whole = program.replace(/^\s*END$/m, `${loop}\n        GOSUB name\n        END\n${sub}`);
+  const used = ['New program', 'Counted loop', 'Wait for a part', 'Subroutine', 'Expectation'];
+  assert.deepEqual(Object.keys(snippets).sort(), [...used].sort(), 'a new snippet needs its place below');
+  const [program, loop, wait, sub, expectation] = used.map((name) => expand(snippets[name].body));
+  // The Wait snippet waits for input 1: the run gets it at 1 s.
+  const whole = program.replace(/^\s*END$/m, `${loop}\n${wait}\n        GOSUB name\n        END\n${sub}`) +
+    `\n; test: input 1=ON@1\n${expectation}\n`;
+  assert.match(expectation, /^; expect: finished$/);
   const file = path.join(tmp, 'snippets.rsp');
-  fs.writeFileSync(file, whole + '\n');
-  const r = run(['check', file]);
-  assert.equal(r.code, 0, whole + '\n' + r.err);
-  const waitFile = path.join(tmp, 'wait.rsp');
-  fs.writeFileSync(waitFile, `${wait}\n        END\n`);
-  const w = run(['check', waitFile, '--input', '1=ON@1']);
-  assert.equal(w.code, 0, w.err);
+  fs.writeFileSync(file, whole);
+  const c = run(['check', file, '--input', '1=ON@1']);
+  assert.equal(c.code, 0, whole + '\n' + c.err);
+  const t = run(['test', file]);
+  assert.equal(t.code, 0, whole + '\n' + t.out + t.err);
+  assert.match(t.out, /1 passed/);
+  // Each choice of the Expectation snippet is an expectation robotsim test reads (and this program meets).
+  const choices = /\$\{1\|([^|]*)\|\}/.exec(snippets.Expectation.body.join('\n'))[1].split(',');
+  for (const choice of choices) {
+    fs.writeFileSync(file, whole.replace(expectation, `; expect: ${choice}`));
+    const r = run(['test', file]);
+    assert.equal(r.code, 0, `expect: ${choice}\n${r.out}${r.err}`);
+  }
   const desc = JSON.parse(fs.readFileSync(path.join(here, 'snippets', 'robotsim-description.json'), 'utf8'));
   const rsd = path.join(tmp, 'snippets.rsd');
   fs.writeFileSync(rsd, expand(desc.Link.body) + '\n' + expand(desc.Workcell.body) + '\n');

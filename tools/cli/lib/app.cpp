@@ -12,6 +12,7 @@
 #include "tools/cli/lib/commands.h"
 #include "tools/cli/lib/completion_query.h"
 #include "tools/cli/lib/completion_spec.h"
+#include "tools/cli/lib/helper_handshake.h"
 #include "tools/cli/lib/helpers.h"
 
 namespace rs::cli {
@@ -47,6 +48,12 @@ int runCommand(int argc, const char* const* argv, std::ostream& out, std::ostrea
     versionArgs.assign(argv, argv + argc);
     versionArgs[1] = "version";
     argv = versionArgs.data();
+  }
+  // A helper asked by robotsim whether it is its own (helper_handshake.h):
+  // before anything else, and never by the main binary.
+  if (argc == 2 && argv[1] == kHelperHandshakeWord && !leavesRowsToHelpers(commandTable())) {
+    out << helperHandshakeLine() << std::flush;
+    return kExitOk;
   }
   // The shell completions' hidden query (completion_query.h), before the table's commands.
   if (argc >= 2 && argv[1] == kCompleteQueryWord) return completionQuery(argc - 2, argv + 2, out, err);

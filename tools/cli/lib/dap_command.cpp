@@ -11,7 +11,7 @@ namespace rs::cli {
 void addDapOptions(CLI::App* cmd) {
   cmd->footer(
       "Speaks the Debug Adapter Protocol over stdin and stdout (Content-Length framing, as robotsim lsp).\n"
-      "launch takes program, and optionally cell, stimuli, inputs (N=ON@T strings), maxSteps, maxTime,\n"
+      "launch takes program, and optionally cell, stimuli, inputs (N=ON@T strings), maxSteps, maxTime, maxKnots,\n"
       "lib and stopOnEntry. Line breakpoints with conditions (N = 3, out 2 = 1) and hit counts (N, >= N,\n"
       "== N, % N); exception breakpoints deadlock, runtimeError, limit; stepping in, over, out and back\n"
       "(stepBack, reverseContinue); scopes Variables, Motors (with TCP), Inputs/Outputs, Objects, Clock;\n"

@@ -4,8 +4,10 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <fstream>
+#include <optional>
+#include <sstream>
 
+#include "base/file_io.h"
 #include "base/text.h"
 #include "tools/cli/lib/debug_terminal.h"
 #include "tools/cli/lib/debug_view.h"
@@ -79,13 +81,15 @@ int debugCommand(const DebugOptions& o, std::istream& in, std::ostream& out, std
     return kExitBadInput;
   }
   launch::printDiagnostics(err, program.diagnostics, program);  // warnings
-  std::ifstream commands;
+  // Read whole, as every input file is: a FIFO or a device is refused, not waited on.
+  std::optional<std::istringstream> commands;
   if (!o.commands.empty()) {
-    commands.open(o.commands);
-    if (!commands) {
-      err << fmt::format("{}: error: cannot read the command file\n", base::safeText(o.commands));
+    base::FileRead read = base::readFile(o.commands, launch::kMaxInputBytes);
+    if (!read.bytes) {
+      err << fmt::format("{}: error: cannot read the command file: {}\n", base::safeText(o.commands), read.error);
       return kExitBadInput;
     }
+    commands.emplace(std::move(*read.bytes));
   }
 
   DebugTerminal terminal;  // Ctrl-C pauses a run from here on, also in batch mode
@@ -110,7 +114,7 @@ int debugCommand(const DebugOptions& o, std::istream& in, std::ostream& out, std
   console.showStop(session.lastStop());
 
   bool goOn = true;
-  if (commands.is_open()) goOn = batch(commands, console, out);
+  if (commands) goOn = batch(*commands, console, out);
   // The terminal prompt only for the process's own stdin on a terminal.
   if (goOn) {
     if (&in == &std::cin && ::isatty(STDIN_FILENO)) interactive(terminal, console, out);

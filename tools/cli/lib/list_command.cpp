@@ -21,7 +21,7 @@ void addListOptions(CLI::App* cmd, ListOptions& o) {
       "workcells/); the first on the path wins, and a later one with the same name is listed as hidden.");
 }
 
-int listCommand(const ListOptions& o, std::ostream& out, std::ostream&) {
+int listCommand(const ListOptions& o, std::ostream& out, std::ostream& err) {
   const compiler::LibraryListing listing = compiler::listLibrary(compiler::librarySearchPath(o.libDirs));
   out << "library path (searched in this order):\n";
   for (const auto& dir : listing.searchPath) out << "  " << base::safeText(dir.string()) << '\n';
@@ -32,6 +32,9 @@ int listCommand(const ListOptions& o, std::ostream& out, std::ostream&) {
     if (e.hidden) what += fmt::format(" (hidden by the {} above; from {})", e.name, e.file.string());
     out << fmt::format("{:<9} {:<{}}  {}\n", e.kind, base::safeText(e.name), nameWidth, base::safeText(what));
   }
+  // What no command can use either: said, so the listing hides nothing.
+  for (const compiler::SkippedFile& s : listing.skipped)
+    err << fmt::format("{}: warning: not listed: {}\n", base::safeText(s.file.string()), s.reason);
   return kExitOk;
 }
 

@@ -35,6 +35,12 @@ void addRunOptions(CLI::App* cmd, launch::RunRequest& request, const std::string
          "Stop after this many instructions (default " + maxStepsDefault + ")")
       ->transform(numberArg(rules::kStepCount));
   cmd->add_option("--max-time", request.maxTime, "Stop at this simulated time in seconds (default 3600)");
+  cmd->add_option_function<std::uint64_t>(
+         "--max-knots", [&request](const std::uint64_t& n) { request.maxKnots = n; },
+         "Stop after the straight line (MOVES, APPRO, DEPART) that takes the small moves it is made of past this "
+         "many in all (default " +
+             std::to_string(vm::RunLimits{}.maxKnots) + ")")
+      ->transform(numberArg(rules::kStepCount));
   addCollisionsOption(cmd, request.collisions);
 }
 

@@ -105,6 +105,10 @@ int plotCommand(const PlotOptions& o, std::ostream& out, std::ostream& err) {
   launch::printDiagnostics(err, diags, loaded);
   if (!spec || !loaded.ok()) return kExitBadInput;
   spec->log = true;
+  // The straight lines' knots thinned as they are logged, the log exact at
+  // every sample (the slot divides the interval: run_log.h).
+  spec->lines.on = true;
+  spec->lines.slot = every;
   const runtime::CollisionMode collisions = spec->collisions;
   runtime::Run run(std::move(*spec));
   const vm::RunOutcome outcome = run.runUntil({});

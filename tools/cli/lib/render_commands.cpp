@@ -78,11 +78,15 @@ bool cameraFrom(const RenderOptions& o, render::Camera& camera, std::ostream& er
 
 // ---- inputs -----------------------------------------------------------------
 
-bool write(const std::string& path, std::vector<std::uint8_t> bytes, std::ostream& err) {
+bool write(const std::string& path, std::string_view bytes, std::ostream& err) {
   std::string error;
   if (base::writeFileAtomically(path, bytes, error)) return true;
   err << fmt::format("{}: error: cannot write: {}\n", base::safeText(path), error);
   return false;
+}
+
+bool write(const std::string& path, const std::vector<std::uint8_t>& bytes, std::ostream& err) {
+  return write(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), err);
 }
 
 std::string baseName(const std::string& path) {
@@ -112,6 +116,7 @@ render::Listing listing(const launch::LoadedProgram& program) {
 std::string_view withoutProgram(const RenderOptions& o) {
   if (!o.program.file.empty()) return "";
   if (!o.at.empty()) return "--at";
+  if (o.path) return "--path";
   return o.run.firstGiven();
 }
 
@@ -131,6 +136,7 @@ Prepared prepare(const launch::LoadedProgram& program, const RenderOptions& o, s
   if (!spec || !program.ok()) return {};
   if (maxTime) spec->limits.maxTime = *maxTime;
   spec->log = log;
+  spec->lines.on = log;  // a page shows lines at most slot by slot: their knots are thinned as they are logged
   const runtime::CollisionMode mode = spec->collisions;
   return {std::make_unique<runtime::Run>(std::move(*spec)), mode};
 }
@@ -212,7 +218,8 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   // With --at the run needs to go on only until then.
   Prepared prepared;
   if (!o.program.file.empty()) {
-    prepared = prepare(loaded, o, vm::RunLimits{}.maxSteps, o.at.empty() ? std::nullopt : std::optional(at), err);
+    prepared = prepare(loaded, o, vm::RunLimits{}.maxSteps, o.at.empty() ? std::nullopt : std::optional(at), err,
+                       /*log=*/o.path);
     if (!prepared.run) return kExitBadInput;
   }
   const std::unique_ptr<runtime::Run>& run = prepared.run;
@@ -267,6 +274,13 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     caption.seconds = static_cast<double>(*moment) / 1e6;
   }
   render::Picture picture = render::makePicture(poser, camera, fit, caption);
+  // The tool's path up to the moment drawn, thinned to a fraction of a
+  // pixel at any zoom.
+  if (o.path && run && run->log() && cell.drivenRobot()) {
+    const std::vector<render::PathPoint> path =
+        render::toolPathOf(*run->log(), *cell.drivenRobot(), fit.radius * render::kPathTolerance / camera.zoom);
+    render::addPath(picture, render::pathUntil(path, *moment, poser.tool(cell.drivenRobotIndex())));
+  }
   if (!cell.robots.empty()) {
     if (o.collisionShapes) render::addLines(picture, render::collisionShapeLines(cell, encoders, objectPoses));
     render::markColliding(picture, render::contactsAt(cell, encoders, objectPoses, held));
@@ -282,7 +296,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
       return kExitBadInput;
     }
     const std::size_t bytes = encoded->size();
-    if (!write(o.output, std::move(encoded).value(), err)) return kExitBadInput;
+    if (!write(o.output, *encoded, err)) return kExitBadInput;
     // What was written, as animate says it; on stderr when stdout carries
     // the --dump-lines listing.
     const std::string what = run ? fmt::format("{} on {}", base::safeText(o.program.file), base::safeText(cell.name))
@@ -353,7 +367,7 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   input.chart = &chart;
   const render::Frames frames = render::framesOf(recording, input.eventSteps, input.frameRule);
   const std::string html = render::animationHtml(input, frames);
-  if (!write(o.output, std::vector<std::uint8_t>(html.begin(), html.end()), err)) return kExitBadInput;
+  if (!write(o.output, std::string_view(html), err)) return kExitBadInput;
   out << fmt::format("{} -> {} ({} instructions executed, {} s simulated{})\n", base::safeText(o.program.file),
                      base::safeText(o.output), recording.steps.size(), base::formatSeconds(recording.end),
                      frames.decimated() ? fmt::format("; the page shows {} frames: every event, and the first "
@@ -388,6 +402,9 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
   cmd->add_flag("--collision-shapes", o.collisionShapes,
                 "Also draw the collision geometry (each BOX, the hull of the LINEs, COLLIDE boxes) in light "
                 "magenta; parts that overlap are drawn red either way");
+  cmd->add_flag("--path", o.path,
+                "Also draw the path of the tool centre point up to the moment drawn (in cyan): a straight line for "
+                "MOVES, APPRO and DEPART, a curve for MOVEP (needs --program)");
   cmd->add_option("-o,--output", o.output, "Picture to write: FILE.png or FILE.svg");
   cmd->add_option("--size", o.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
   cmd->add_option("--center", o.center,

@@ -36,6 +36,7 @@ struct RenderOptions {
   std::string center;              // render --center X,Y,Z: what --zoom zooms about
   bool axes = false;
   bool collisionShapes = false;    // render --collision-shapes
+  bool path = false;               // render --path: the tool centre point's path up to the moment drawn
   std::string dump;  // --dump-lines: "", "text" or "json"
 };
 

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <span>
@@ -70,7 +72,7 @@ void printCollisions(std::ostream& out, const runtime::Run& run) {
   if (events.empty()) out << "  collisions      none\n";
   for (std::size_t i = 0; i < events.size() && i < kShownCollisions; ++i)
     out << fmt::format("  {:<15} line {}, {} s: {}\n", i == 0 ? "collisions" : "", lineOf(run, events[i]),
-                       base::formatSeconds(events[i].at), base::safeText(watch->describe(events[i].contact)));
+                       base::formatSeconds(events[i].at), base::safeText(watch->describe(events[i])));
   if (events.size() > kShownCollisions)
     out << fmt::format("  {:<15} and {} more\n", "", events.size() - kShownCollisions);
 }
@@ -117,7 +119,8 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
 
 void printJsonSummary(std::ostream& out, const RunReport& r) {
   Json j;
-  j["status"] = r.ok() ? "ok" : "error";
+  // The text summary's word for a run that ran to its end (vm::stopReasonName), in both.
+  j["status"] = r.ok() ? vm::stopReasonName(vm::StopReason::End) : "error";
   if (r.run && r.run->outcome()) {
     const vm::Image& im = *r.run->spec().image;
     const vm::Machine& m = r.run->rig().machine();
@@ -151,7 +154,8 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
         collisions.push_back({{"line", lineOf(*r.run, e)},
                               {"time", static_cast<double>(e.at) / 1e6},
                               {"part", watch->model().describe(e.contact.a)},
-                              {"hits", watch->model().describe(e.contact.b)}});
+                              {"hits", watch->model().describe(e.contact.b)},
+                              {"depth", std::round(e.depth * 1e4) / 1e4}});  // to 1e-4, as the trace
       j["collisions"] = collisions;
     }
     Json outputs = Json::array(), inputs = Json::array();

@@ -13,6 +13,7 @@
 #include "base/seconds.h"
 #include "base/text.h"
 #include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/grade_table.h"
 #include "tools/cli/lib/number_args.h"
 #include "tools/cli/lib/options.h"
 #include "runtime/run/trace.h"
@@ -55,65 +56,6 @@ void printTestCommandError(std::ostream& err, const std::string& where, const st
   err << diag::render({where, {}, diag::Severity::Error, message, {}, hint}, nullptr);
 }
 
-// One row per program: its scenarios passed, their simulated time, and its
-// first problem.
-struct GradeRow {
-  std::string file;
-  std::size_t passed = 0, total = 0;
-  vm::Micros time = 0;
-  std::string firstProblem = {};
-};
-
-std::vector<GradeRow> gradeRows(const std::vector<testrun::TestResult>& results) {
-  using Row = GradeRow;
-  std::vector<Row> rows;
-  for (const testrun::TestResult& r : results) {
-    if (rows.empty() || rows.back().file != r.file) rows.push_back({r.file});  // as read; printers escape it
-    Row& row = rows.back();
-    ++row.total;
-    row.passed += r.status == testrun::TestStatus::Passed;
-    row.time += r.simulated;
-    if (row.firstProblem.empty() && !r.problems.empty()) {
-      const diag::Diagnostic& d = r.problems.front();
-      row.firstProblem = (r.name.empty() ? "" : "[" + r.name + "] ") +
-                         (d.pos.line ? fmt::format("{}:{}:{}: {}", d.file, d.pos.line, d.pos.col, d.message)
-                                     : fmt::format("{}: {}", d.file, d.message));
-    }
-  }
-  return rows;
-}
-
-// The rows as aligned text or as CSV (RFC 4180 quoting). Names come from
-// files (a file name may hold an ESC): both print them through safeText.
-std::string gradeTable(const std::vector<testrun::TestResult>& results, bool csv) {
-  std::vector<GradeRow> rows = gradeRows(results);
-  for (GradeRow& r : rows) r.file = base::safeText(r.file), r.firstProblem = base::safeText(r.firstProblem);
-  using Row = GradeRow;
-  const auto quote = [](const std::string& s) {
-    std::string q = "\"";
-    for (const char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return q + "\"";
-  };
-  std::string out;
-  if (csv) {
-    out = "file,passed,scenarios,simulated_seconds,first_problem\n";
-    for (const Row& r : rows)
-      out += fmt::format("{},{},{},{},{}\n", quote(r.file), r.passed, r.total, base::formatSeconds(r.time),
-                         quote(r.firstProblem));
-    return out;
-  }
-  std::size_t width = 7;
-  for (const Row& r : rows) width = std::max(width, r.file.size());
-  out = fmt::format("{:<{}}  passed  simulated   first problem\n", "program", width);
-  for (const Row& r : rows) {
-    std::string line = fmt::format("{:<{}}  {:>6}  {:>9} s  {}", r.file, width, fmt::format("{}/{}", r.passed, r.total),
-                                   base::formatSeconds(r.time), r.firstProblem);
-    while (line.back() == ' ') line.pop_back();
-    out += line + '\n';
-  }
-  return out;
-}
-
 }  // namespace
 
 void addTestOptions(CLI::App* cmd, TestOptions& o) {
@@ -131,8 +73,9 @@ void addTestOptions(CLI::App* cmd, TestOptions& o) {
   cmd->add_option("--lcov", o.lcov, "Write the coverage as an LCOV tracefile (genhtml makes pages of it)");
   cmd->add_option("--spec", o.spec,
                   fmt::format("Grade: run this scenario file (.rstest) against every program under PATH, each "
-                              "confined to its folder; a run stops at {} instructions or {} simulated seconds unless "
-                              "the scenario says otherwise",
+                              "confined to its folder, and end with each program's points out of the most (its "
+                              "'points' lines; 1 a scenario by default) and each scenario's points and time; a run "
+                              "stops at {} instructions or {} simulated seconds unless the scenario says otherwise",
                               testrun::kGradingMaxSteps, testrun::kGradingMaxSeconds));
   cmd->add_flag("--update", o.update, "Write the golden traces of 'expect: trace FILE' from the runs (not when CI is set)");
   addCollisionsOption(cmd, o.collisions);
@@ -196,33 +139,29 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
       for (const diag::Diagnostic& d : r.problems) problems.push_back(diagnosticJson(d));
       nlohmann::json warnings = nlohmann::json::array();
       for (const diag::Diagnostic& d : r.warnings) warnings.push_back(diagnosticJson(d));
-      tests.push_back({{"file", r.file},
-                       {"scenario", r.name},
-                       {"status", testrun::statusName(r.status)},
-                       {"expectations", r.expectations},
-                       {"time", static_cast<double>(r.simulated) / 1e6},
-                       {"steps", r.steps},
-                       {"problems", problems},
-                       {"warnings", warnings}});
+      nlohmann::json test = {{"file", r.file},
+                             {"scenario", r.name},
+                             {"status", testrun::statusName(r.status)},
+                             {"expectations", r.expectations},
+                             {"time", static_cast<double>(r.simulated) / 1e6},
+                             {"steps", r.steps},
+                             {"problems", problems},
+                             {"warnings", warnings}};
+      if (!o.spec.empty() && !r.name.empty()) {  // grading: the scenario's points
+        test["points"] = static_cast<double>(r.points) / 100;
+        test["max_points"] = static_cast<double>(r.maxPoints) / 100;
+      }
+      tests.push_back(std::move(test));
     }
     nlohmann::json summary = {{"passed", passed}, {"failed", failed}, {"errors", errors}, {"tests", tests}};
-    if (!o.spec.empty()) {  // grading: the table too
-      nlohmann::json programs = nlohmann::json::array();
-      for (const GradeRow& row : gradeRows(results))
-        programs.push_back({{"file", row.file},
-                            {"passed", row.passed},
-                            {"scenarios", row.total},
-                            {"time", static_cast<double>(row.time) / 1e6},
-                            {"first_problem", row.firstProblem}});
-      summary["programs"] = programs;
-    }
+    if (!o.spec.empty()) summary["programs"] = gradeJson(results);  // grading: the table too
     out << summary.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
   } else if (csv) {
-    out << gradeTable(results, true);
+    out << gradeCsv(results);
   } else {
     out << fmt::format("{} passed, {} failed, {} error{} in {:.2f} s\n", passed, failed, errors, errors == 1 ? "" : "s",
                        seconds);
-    if (!o.spec.empty()) out << '\n' << gradeTable(results, false);
+    if (!o.spec.empty()) out << '\n' << gradeText(results);
   }
   if (o.coverage && text)
     for (const testrun::TestResult& r : results)

@@ -6,6 +6,7 @@
 
 #include <ostream>
 
+#include "base/text.h"
 #include "compiler/description/library_dir.h"
 #include "tools/cli/lib/build_info.h"
 #include "tools/cli/lib/exit_codes.h"
@@ -28,10 +29,10 @@ int versionCommand(const std::string& format, std::ostream& out) {
     j["version"] = info.version;
     j["commit"] = info.commit;
     j["buildType"] = info.buildType;
-    j["library"] = library ? nlohmann::ordered_json(library->string()) : nlohmann::ordered_json(nullptr);
+    j["library"] = library ? nlohmann::ordered_json(base::safeText(library->string())) : nlohmann::ordered_json(nullptr);
     if (!library) {
       nlohmann::ordered_json looked = nlohmann::ordered_json::array();
-      for (const auto& dir : compiler::libraryDirCandidates()) looked.push_back(dir.string());
+      for (const auto& dir : compiler::libraryDirCandidates()) looked.push_back(base::safeText(dir.string()));
       j["libraryLookedIn"] = looked;
     }
     out << j.dump() << '\n';
@@ -39,10 +40,10 @@ int versionCommand(const std::string& format, std::ostream& out) {
   }
   out << fmt::format("robotsim {}\ncommit: {}\nbuild type: {}\n", info.version, info.commit, info.buildType);
   if (library) {
-    out << fmt::format("library: {}\n", library->string());
+    out << fmt::format("library: {}\n", base::safeText(library->string()));
   } else {
     std::vector<std::string> looked;
-    for (const auto& dir : compiler::libraryDirCandidates()) looked.push_back(dir.string());
+    for (const auto& dir : compiler::libraryDirCandidates()) looked.push_back(base::safeText(dir.string()));
     out << fmt::format("library: not found (looked in {}); only --lib and ROBOTSIM_PATH are searched\n",
                        looked.empty() ? std::string("nowhere: the executable's path is unknown")
                                       : fmt::format("{}", fmt::join(looked, ", ")));

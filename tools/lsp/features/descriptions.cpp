@@ -188,6 +188,30 @@ Json descriptionHover(const Document& doc, Encoding enc, Position at, const std:
   return nullptr;
 }
 
+Json definitionInFile(const std::string& file, const std::string& name, Encoding enc) {
+  // A description file is small; one over the bound is still the place, at its top.
+  constexpr std::size_t kMaxDescriptionBytes = std::size_t{4} << 20;
+  base::FileRead read = base::readFile(file, kMaxDescriptionBytes);
+  if (!read.bytes) return location(uriOfPath(file), Range{});
+  const Document doc(uriOfPath(file), Language::Description, 0, std::move(*read.bytes));
+  const Parsed p = parse(doc);
+  const auto in = [&](const auto& defs) -> std::optional<Range> {
+    for (const auto& d : defs)
+      if (base::sameName(d.name, name)) return definitionName(doc, enc, d.pos, d.name);
+    return std::nullopt;
+  };
+  // What a name stands for first: a workcell or a robot (what --cell takes), then the parts.
+  for (const std::optional<Range>& r :
+       {in(p.file.workcells), in(p.file.robots), in(p.file.grippers), in(p.file.objects), in(p.file.links)})
+    if (r) return location(doc.uri(), *r);
+  // A file named by its path (`; cell: ../cell.rsd`): what --cell loads from it, its first workcell, else robot.
+  if (!p.file.workcells.empty())
+    return location(doc.uri(), definitionName(doc, enc, p.file.workcells[0].pos, p.file.workcells[0].name));
+  if (!p.file.robots.empty())
+    return location(doc.uri(), definitionName(doc, enc, p.file.robots[0].pos, p.file.robots[0].name));
+  return location(doc.uri(), Range{});
+}
+
 Json descriptionDefinition(const Document& doc, Encoding enc, Position at, const std::vector<fs::path>& searchPath) {
   const Parsed p = parse(doc);
   const compiler::NameRef* ref = referenceAt(p.file, doc.toPos(at, enc));
@@ -203,7 +227,7 @@ Json descriptionDefinition(const Document& doc, Encoding enc, Position at, const
     if (r) return location(doc.uri(), *r);
   const std::string file = findDescriptionFile(ref->name, searchPath);
   if (file.empty()) return nullptr;
-  return location(uriOfPath(file), Range{});
+  return definitionInFile(file, ref->name, enc);
 }
 
 Json stimuliDiagnostics(const Document& doc, Encoding enc) {

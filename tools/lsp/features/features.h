@@ -107,6 +107,15 @@ Json codeActions(const ProgramContext& p, const Range& range, const Field& diagn
 // inlay_hints.cpp
 Json inlayHints(const ProgramContext& p, const Range& range);
 
+// code_lens.cpp: over each label, its calls and jumps and the run's time.
+Json codeLenses(const ProgramContext& p);
+
+// call_hierarchy.cpp: the GOSUBs between the main program and the
+// subroutines; an item's routine is named by its label ("" for the main program).
+Json prepareCallHierarchy(const ProgramContext& p, Position at);
+Json incomingCalls(const ProgramContext& p, std::string_view label);
+Json outgoingCalls(const ProgramContext& p, std::string_view label);
+
 // semantic_tokens.cpp
 Json semanticTokensLegend();
 Json semanticTokens(const ProgramContext& p);
@@ -117,6 +126,10 @@ Json descriptionSymbols(const Document& doc, Encoding enc);
 Json descriptionHover(const Document& doc, Encoding enc, Position at, const std::vector<std::filesystem::path>& searchPath);
 Json descriptionDefinition(const Document& doc, Encoding enc, Position at,
                            const std::vector<std::filesystem::path>& searchPath);
+/// Where `name` is defined in the description file `file` (the line of its
+/// WORKCELL, ROBOT, GRIPPER, OBJECT or LINK, the name's range); for a name
+/// that is the file's path, its first workcell or robot; else its top.
+Json definitionInFile(const std::string& file, const std::string& name, Encoding enc);
 Json stimuliDiagnostics(const Document& doc, Encoding enc);
 Json stimuliSymbols(const Document& doc, Encoding enc);
 Json stimuliHover(const Document& doc, Encoding enc, Position at);

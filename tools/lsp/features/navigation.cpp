@@ -47,7 +47,7 @@ Json definition(const ProgramContext& p, Position at, const std::vector<std::fil
     const std::string& name = p.analysis.cell().name;
     const std::string file = findDescriptionFile(name, searchPath);
     if (file.empty()) return nullptr;
-    return location(uriOfPath(file), Range{});
+    return definitionInFile(file, name, p.enc);
   }
   const Occurrence* o = occurrenceAt(p, at);
   if (!o) return nullptr;

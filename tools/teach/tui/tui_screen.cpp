@@ -177,7 +177,8 @@ void pointsPanel(Canvas& c, const PendantState& s, const Selection& sel, int top
     const PendantPoint& p = s.points[i];
     const int row = top + 1 + static_cast<int>(i - first);
     std::string line = fmt::format("{:<{}}", p.name, nameWidth);
-    if (!p.readable) line += " (not whole numbers)";
+    if (p.pose) line += " (a tool pose: AT ...)";
+    else if (!p.readable) line += " (not whole numbers)";
     else
       for (std::size_t v = 0; v < p.values.size(); ++v) line += fmt::format(" {:>{}}", p.values[v], widths[v]);
     if (i == sel.point) c.put(row, left, ">");

@@ -121,8 +121,13 @@ bool TuiSession::press(std::string_view key) {
       if (const auto name = selectedPoint()) pendant_.goTo(*name);
       break;
     case KeyAction::Reteach:
-      if (const auto name = selectedPoint())
-        ask(Asking::ConfirmReteach, fmt::format("re-teach {} with the current pose? (y/n) ", *name));
+      if (const auto name = selectedPoint()) {
+        if (now.points[selection_.point].pose)
+          ask(Asking::ReteachAs,
+              fmt::format("re-teach {}: p as a pose (AT ...), c as counts, any other key cancels ", *name));
+        else
+          ask(Asking::ConfirmReteach, fmt::format("re-teach {} with the current pose? (y/n) ", *name));
+      }
       break;
     case KeyAction::Delete:
       if (const auto name = selectedPoint()) ask(Asking::ConfirmDelete, fmt::format("delete {}? (y/n) ", *name));
@@ -151,13 +156,15 @@ bool TuiSession::press(std::string_view key) {
 bool TuiSession::answer(std::string_view key) {
   const Asking what = asking_;
   const bool confirm = what == Asking::ConfirmReteach || what == Asking::ConfirmDelete || what == Asking::ConfirmReset;
-  if (key == "Escape" || key == "\x03" || key == "\x07" || (confirm && !isYes(key))) {
+  const bool poseOrCounts = what == Asking::ReteachAs && (key == "p" || key == "c");
+  if (key == "Escape" || key == "\x03" || key == "\x07" || (confirm && !isYes(key)) ||
+      (what == Asking::ReteachAs && !poseOrCounts)) {
     asking_ = Asking::Nothing;
     prompt_ = {};
     note_ = "cancelled";
     return true;
   }
-  if (confirm || (kLineIsOneKey && (what == Asking::InputLine || what == Asking::OutputLine) && key.size() == 1)) {
+  if (confirm || poseOrCounts || (kLineIsOneKey && (what == Asking::InputLine || what == Asking::OutputLine) && key.size() == 1)) {
     asking_ = Asking::Nothing;
     prompt_ = {};
     finish(what, std::string(key));
@@ -192,6 +199,10 @@ void TuiSession::finish(Asking what, const std::string& text) {
       break;
     case Asking::ConfirmReteach:
       if (const auto name = selectedPoint()) pendant_.reteach(*name);
+      break;
+    case Asking::ReteachAs:
+      if (const auto name = selectedPoint())
+        pendant_.reteach(*name, text == "p" ? Pendant::Reteach::Pose : Pendant::Reteach::Counts);
       break;
     case Asking::ConfirmDelete:
       if (const auto name = selectedPoint()) pendant_.remove(*name);

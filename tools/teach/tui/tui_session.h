@@ -2,7 +2,8 @@
 // shared key map names it (tools/teach/keys.h: "ArrowLeft", "t", "PageDown"),
 // becomes one Pendant operation, or a question on the last row whose
 // answer does (a point's name; yes or no before re-teach, delete and
-// reset cell). No terminal here: tui_curses.cpp turns ncurses key codes
+// reset cell; over a point written as a tool pose, re-teach asks p for a
+// pose or c for counts). No terminal here: tui_curses.cpp turns ncurses key codes
 // into names and draws layoutScreen(session); a test can press keys by
 // name and read the screen.
 //
@@ -37,7 +38,9 @@ class TuiSession {
   const Selection& selection() const { return selection_; }
 
  private:
-  enum class Asking { Nothing, TeachName, NewName, ConfirmReteach, ConfirmDelete, ConfirmReset, InputLine, OutputLine };
+  enum class Asking {
+    Nothing, TeachName, NewName, ConfirmReteach, ReteachAs, ConfirmDelete, ConfirmReset, InputLine, OutputLine,
+  };
   bool answer(std::string_view key);
   void ask(Asking what, std::string question);
   void finish(Asking what, const std::string& text);
