@@ -420,7 +420,7 @@ json grading(const Options& options) {
 }  // namespace
 
 json benchMoves(const Options& options) {
-  fmt::print("\n[13] Straight lines: compile, the language server, the debugger and grading on MOVES\n");
+  fmt::print("\n[12] Straight lines: compile, the language server, the debugger and grading on MOVES\n");
   const workcell::Workcell irb = libraryCell("irb120-cell");
   std::filesystem::create_directories(std::filesystem::path(options.workDir) / "moves");
   json out;
