@@ -29,6 +29,7 @@
 
 #include "bench/bench_support.h"
 #include "bench/benchmarks.h"
+#include "bench/big_gantry.h"
 #include "bench/timing.h"
 #include "compiler/description/library.h"
 #include "launch/program.h"
@@ -75,25 +76,6 @@ std::string distinctProgram(int lines) {
 
 const std::string kLoop = "; cell: irb120-cell\n        MOVEP   A\nLOOP:   MOVES   B\n        MOVES   A\n"
                           "        GOTO    LOOP\n" + std::string(kPoints);
-
-// tests/debug/test_debug_work.cpp's gantry: a MOVES of 140,000 along X is
-// 65,536 knots.
-const std::string kBigGantry = R"(LINK big_base
-  BOX -10 10 0 -10 10 -10
-END
-LINK big_carriage
-  BOX -20 20 40 0 20 -20
-END
-ROBOT big-gantry
-  LINK big_base      FRAME ORIGIN 0 0 0  XAXIS 0 100 0  ZAXIS 100 0 0
-  LINK big_carriage  FRAME ORIGIN 0 0 0  XAXIS 0 100 0  ZAXIS 100 0 0
-  JOINT 1 PRISMATIC  LETTER X  PRECISION 0.01  RANGE -10000000 10000000  SPEED 1000000000
-END
-WORKCELL big-cell
-  FLOOR NONE
-  ROBOT big-gantry AT 0 100 0
-END
-)";
 
 workcell::Workcell libraryCell(const std::string& name) {
   compiler::Library library(compiler::librarySearchPath({}));
@@ -430,7 +412,7 @@ json benchMoves(const Options& options) {
   progress("the debugger: reverse steps in process; pause and disconnect sent to robotsim dap while it runs");
   out["reverse"] = reverseSteps(options, irb);
   const std::string loop = writeInput(options, "moves/loop.rsp", kLoop);
-  writeInput(options, "moves/big.rsd", kBigGantry);
+  writeInput(options, "moves/big.rsd", std::string(kBigGantry));
   const std::string big = writeInput(
       options, "moves/big.rsp", "; cell: big.rsd\nloop:   MOVETO -7000000\n        MOVES FAR\n        GOTO loop\nPOINTS\nFAR 7000000\n");
   out["dap_loop"] = pauseAndDisconnect(options, "a MOVES loop on the IRB 120", loop);
