@@ -104,4 +104,13 @@ nlohmann::json benchLspFormat(const Options& options);
 /// memory, one reverse step (median, worst). Targets: 10 ms, 64 MiB.
 nlohmann::json benchDebug(const Options& options);
 
+/// Straight lines (issue 32): `robotsim compile` on 1,000 and 4,000 MOVES
+/// lines of the IRB 120 (target: 0.5 s of CPU at 1,000) and on 1,000 lines
+/// all different; the language server's hover right after an edit on 4,000
+/// of them (30 ms); a reverse step on a MOVES loop; `pause` and
+/// `disconnect` answered by `robotsim dap` on a MOVES loop and on a gantry
+/// of 65,536-knot lines; grading a MOVES submission that never ends on the
+/// IRB 120's cell and on a cell of the student's (1 s).
+nlohmann::json benchMoves(const Options& options);
+
 }  // namespace rs::bench

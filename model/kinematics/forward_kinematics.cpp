@@ -55,6 +55,16 @@ bool forwardKinematics(const ChainModel& model, ChainData& data, std::span<const
   return true;
 }
 
+Eigen::Vector3d positionWithJoint(const ChainModel& model, const ChainData& data, std::size_t i, double value) {
+  const auto n = static_cast<std::size_t>(model.size());
+  Eigen::Isometry3d A, F[2];
+  fillA(model.joints()[i], value, A);
+  chain(data.F_0_i[i], A, F[0]);
+  std::size_t at = 0;
+  for (std::size_t k = i + 2; k <= n; ++k, at ^= 1) chain(F[at], data.A[k], F[at ^ 1]);
+  return F[at].translation();
+}
+
 std::optional<Eigen::Isometry3d> transform(const ChainModel& model, const ChainData& data, int i, int j) {
   const int n = model.size();
   if (i < 0 || j < 0 || i > n || j > n || data.A.size() != static_cast<std::size_t>(n) + 1) return std::nullopt;

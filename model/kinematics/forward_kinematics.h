@@ -18,6 +18,13 @@ namespace rs::kinematics {
 /// q.size() != n or `data` was not made for a model of this size.
 bool forwardKinematics(const ChainModel& model, ChainData& data, std::span<const double> q);
 
+/// The tool centre point's position in frame 0 (F_0_n's origin) were joint
+/// `i` (0-based) at `value` and every other joint as in the last
+/// forwardKinematics on `data`: the products forwardKinematics would make,
+/// so the same bits, without redoing the joints before i (the straight-line
+/// planner asks this of each joint at every knot). `data` is left as it is.
+Eigen::Vector3d positionWithJoint(const ChainModel& model, const ChainData& data, std::size_t i, double value);
+
 /// T_j^i: the matrix taking coordinates in frame j to frame i (F_i_j), from
 /// the last forwardKinematics: A_{i+1}···A_j for i < j, the identity for
 /// i = j, the inverse of T_i^j for i > j. Empty when i or j is not in 0..n.

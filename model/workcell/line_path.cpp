@@ -53,7 +53,7 @@ struct LinePlanner::Line {
 };
 
 LinePath::LinePath(const LinePlanner& planner)
-    : motors_(planner.motorCount()), data_(planner.chain()) {
+    : motors_(planner.motorCount()), data_(planner.chain()), prevData_(planner.chain()) {
   const auto n = static_cast<std::size_t>(planner.chain().size());
   for (std::vector<double>* v : {&q0_, &q1_, &prev_, &next_, &ref_, &mid_}) v->assign(n, 0.0);
   counts_.assign(std::max<std::size_t>(motors_, static_cast<std::size_t>(planner.chain().encoderCount())), 0.0);
@@ -322,6 +322,7 @@ std::optional<LineProblem> LinePlanner::plan(const Line& line, std::span<const s
   }
 
   path.prev_ = path.q0_;
+  bool prevFramed = false;  // path.prevData_ holds prev_'s frames
   const Eigen::Vector3d& a = line.p0;
   const Eigen::Vector3d& b = line.p1;
   const Eigen::Vector3d forward = (b - a).norm() > 0 ? Eigen::Vector3d((b - a).normalized()) : Eigen::Vector3d::Zero();
@@ -360,13 +361,6 @@ std::optional<LineProblem> LinePlanner::plan(const Line& line, std::span<const s
                                  spec.max, percentAlong(s1), at.x(), at.y(), at.z()),
                      viaHint, "line-out-of-range");
     }
-    bool close = true;
-    for (const double f : kChordSamples) {
-      for (std::size_t i = 0; i < n; ++i) path.mid_[i] = path.prev_[i] + f * (path.next_[i] - path.prev_[i]);
-      if (distanceToSegment(tcpOf(path.mid_, path), a, b) > kChordShare * kLineTolerance) close = false;
-      if (!close && canHalve) break;  // the step is halved whatever the rest say
-    }
-    if (!close && canHalve) { ds /= 2; continue; }
     // Each motor's share of the knot, as far as it moves the tool on its
     // own: the most a motor running ahead of the others (a controller that
     // moves each motor at its own speed) takes the tool off the lock-step path.
@@ -375,21 +369,33 @@ std::optional<LineProblem> LinePlanner::plan(const Line& line, std::span<const s
     // block lifted off a pallet does not dip into it), in the second half
     // those that carry it back (it never runs past where it ends: a block
     // set down does not sink into what it lands on).
+    // The checks below either pass or halve the step (unless it is the
+    // shortest, which is taken whatever they say), so their order changes
+    // no knot: the shares first, as they fail most, each from the frames of
+    // the knot before (the same bits as a whole forward pass), and the sum
+    // of the shares abandoned once it is past the bound.
     const bool firstHalf = s + s1 < 1.0;
-    const Eigen::Vector3d here = tcpOf(path.prev_, path);
+    if (!prevFramed) kinematics::forwardKinematics(chain(), path.prevData_, path.prev_), prevFramed = true;
+    const Eigen::Vector3d here = path.prevData_.F_0_i.back().translation();
     double travel = 0;
     std::uint32_t lead = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      path.mid_ = path.prev_;
-      path.mid_[i] = path.next_[i];
-      const Eigen::Vector3d share = tcpOf(path.mid_, path) - here;
+      const Eigen::Vector3d share = kinematics::positionWithJoint(chain(), path.prevData_, i, path.next_[i]) - here;
       travel += share.norm();
+      if (travel > kKnotTravel && canHalve) break;
       const auto motor = static_cast<unsigned>(joints[i].encoder);
       const double along = share.dot(forward);
       if ((firstHalf ? along > 0 : along < 0) && motor < 32) lead |= 1u << motor;
     }
-    if (travel > kKnotTravel) close = false;
-    if (!close && canHalve) { ds /= 2; continue; }
+    if (travel > kKnotTravel && canHalve) { ds /= 2; continue; }
+    bool close = true;
+    for (const double f : kChordSamples) {
+      if (!canHalve) break;  // the shortest step is taken whatever the chord
+      for (std::size_t i = 0; i < n; ++i) path.mid_[i] = path.prev_[i] + f * (path.next_[i] - path.prev_[i]);
+      if (distanceToSegment(tcpOf(path.mid_, path), a, b) > kChordShare * kLineTolerance) close = false;
+      if (!close) break;  // the step is halved whatever the rest say
+    }
+    if (!close) { ds /= 2; continue; }
     // The knot: the end exactly, else the joints rounded to counts (the
     // gripper keeps its opening).
     if (path.size() >= kMaxLineKnots)
@@ -416,6 +422,7 @@ std::optional<LineProblem> LinePlanner::plan(const Line& line, std::span<const s
     }
     if (path.leads_.size() < path.size()) path.leads_.push_back(lead);
     path.prev_ = path.next_;
+    prevFramed = false;
     s = s1;
     ds = std::min(kMaxStep, ds * 2);
   }

@@ -67,6 +67,7 @@ class LinePath {
   std::vector<std::int32_t> knots_;
   std::vector<std::uint32_t> leads_;
   kinematics::ChainData data_;
+  kinematics::ChainData prevData_;  // the frames of prev_, the knot before (plan())
   std::vector<double> q0_, q1_, prev_, next_, ref_, mid_, counts_;
 };
 

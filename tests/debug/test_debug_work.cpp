@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "../render/render_test_util.h"
+#include "bench/big_gantry.h"
 #include "model/workcell/line_path.h"
 #include "tests/cli/cli_support.h"
 #include "tools/dap/serve.h"
@@ -91,29 +92,6 @@ std::uint64_t stepsShown(const std::vector<Json>& messages, int seq) {
   return 0;
 }
 
-// A gantry whose motors count 0.01 of a length unit over ±100,000: a MOVES
-// of 140,000 along X is cut to the planner's shortest step, 1/65,536 of
-// the line, each knot 2.1 long and 214 counts: 65,536 knots a line.
-std::string bigGantry() {
-  return R"(
-LINK big_base
-  BOX -10 10 0 -10 10 -10
-END
-LINK big_carriage
-  BOX -20 20 40 0 20 -20
-END
-ROBOT big-gantry
-  LINK big_base      FRAME ORIGIN 0 0 0  XAXIS 0 100 0  ZAXIS 100 0 0
-  LINK big_carriage  FRAME ORIGIN 0 0 0  XAXIS 0 100 0  ZAXIS 100 0 0
-  JOINT 1 PRISMATIC  LETTER X  PRECISION 0.01  RANGE -10000000 10000000  SPEED 1000000000
-END
-WORKCELL big-cell
-  FLOOR NONE
-  ROBOT big-gantry AT 0 100 0
-END
-)";
-}
-
 }  // namespace
 
 TEST_CASE("a reverse step on a loop of MOVES re-runs at most W knots and one line", "[debug][straight]") {
@@ -165,7 +143,7 @@ TEST_CASE("dap: pause on a loop of MOVES is answered after a slice of W knots, n
 
 TEST_CASE("dap: pause and disconnect are answered after the 65,536-knot line under way", "[debug][dap][straight]") {
   const rs::testing::TempDir dir;
-  dir.write("big.rsd", bigGantry());
+  dir.write("big.rsd", std::string(rs::bench::kBigGantry));
   const std::string program = dir.write(
       "big.rsp", "; cell: big.rsd\nloop:   MOVETO -7000000\n        MOVES FAR\n        GOTO loop\nPOINTS\nFAR 7000000\n");
   {

@@ -2,12 +2,16 @@
 // a cylindrical arm with two prismatic joints, encoders, coupling, and the
 // MATRIX transforms.
 #include <array>
+#include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
+#include <random>
 #include <vector>
 
+#include "compiler/description/library.h"
 #include "model/kinematics/forward_kinematics.h"
 #include "model/kinematics/joint_values.h"
 #include "tests/kinematics/kinematics_test_util.h"
@@ -168,4 +172,42 @@ TEST_CASE("a placed chain moves its tool with the base", "[kinematics]") {
   const ChainModel arm = planarArm().placedAt(place);
   const ChainData data(arm);  // at home: the tool at (500, 0, 0) in the base
   CHECK((rs::kinematics::toolPose(arm, data).translation() - Vector3d(1000, 500, 50)).norm() < 1e-9);
+}
+
+TEST_CASE("positionWithJoint is forward kinematics of the changed joint, to the bit, on every library arm",
+          "[kinematics][straight]") {
+  // The straight-line planner asks it of each joint at every knot instead
+  // of a whole forward pass (model/workcell/line_path.cpp): its knots stay
+  // the same only if the answer is the very same double.
+  const auto files = kintest::libraryRobots();
+  REQUIRE(files.size() >= 6);
+  std::mt19937_64 rng(20261202);
+  std::uniform_real_distribution<double> angle(-180.0, 180.0), length(-500.0, 500.0);
+  std::size_t compared = 0;
+  for (const auto& file : files) {
+    rs::compiler::Library library(rs::compiler::librarySearchPath({}));
+    const std::optional<rs::workcell::Robot> robot = library.robot(file.string());
+    REQUIRE(robot);
+    REQUIRE(robot->chain);
+    const ChainModel& chain = *robot->chain;
+    INFO(robot->name);
+    const auto n = static_cast<std::size_t>(chain.size());
+    ChainData before(chain), whole(chain);
+    for (int trial = 0; trial < 50; ++trial) {
+      std::vector<double> q(n);
+      for (std::size_t i = 0; i < n; ++i)
+        q[i] = chain.joints()[i].type() == JointType::Revolute ? angle(rng) : length(rng);
+      REQUIRE(forwardKinematics(chain, before, q));
+      for (std::size_t i = 0; i < n; ++i) {
+        std::vector<double> changed = q;
+        changed[i] = chain.joints()[i].type() == JointType::Revolute ? angle(rng) : length(rng);
+        REQUIRE(forwardKinematics(chain, whole, changed));
+        const Vector3d expected = whole.F_0_i.back().translation();
+        const Vector3d got = rs::kinematics::positionWithJoint(chain, before, i, changed[i]);
+        for (int k = 0; k < 3; ++k) REQUIRE(std::bit_cast<std::uint64_t>(got[k]) == std::bit_cast<std::uint64_t>(expected[k]));
+        ++compared;
+      }
+    }
+  }
+  CHECK(compared >= 6 * 50 * 4);
 }
