@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "runtime/sim/sim_machine.h"
-#include "runtime/sim/world.h"
+#include "runtime/cell/world.h"
 #include "vm/interpreter.h"
 
 namespace rs::runtime {
@@ -59,7 +59,7 @@ struct VariableWrite {
   bool operator==(const VariableWrite&) const = default;
 };
 
-/// A take or a let-go (runtime/sim/world.h) during step `step`.
+/// A take or a let-go (runtime/cell/world.h) during step `step`.
 struct GraspRecord {
   std::uint32_t step = 0;
   GraspEvent event;
