@@ -28,6 +28,13 @@ Rig::~Rig() = default;
 // hold has changed. Only the simulated machine's moves can be swept.
 void Rig::build(vm::Machine& motion, CollisionMode collisions) {
   front_ = &motion;
+  // Kept until the step's end (afterStep). A run that nobody observes never
+  // ends a step for the rig, so the list is bounded: a step keeps its first
+  // kMaxInputsPerStep changes.
+  if (sim_)
+    sim_->onInputCause([this](vm::Micros at, const InputCause& c) {
+      if (pendingInputs_.size() < kMaxInputsPerStep) pendingInputs_.push_back({at, c});
+    });
   if (!cell_) return;
   world_ = running_->world();
   cellMachine_.emplace(motion, *world_);
@@ -39,6 +46,8 @@ void Rig::build(vm::Machine& motion, CollisionMode collisions) {
 }
 
 void Rig::afterStep(std::uint32_t instruction) {
+  lastStepInputs_.swap(pendingInputs_);
+  pendingInputs_.clear();
   if (!world_) return;
   const World::StepEffects step = world_->takeStepEffects();
   lastStepGrasped_ = step.grasped;
@@ -95,6 +104,7 @@ void Rig::restore(const RigSnapshot& s) {
   if (sim_) sim_->restore(s.machine);
   lastStepGrasped_ = false;
   lastStepClosedEmpty_ = false;
+  pendingInputs_.clear(), lastStepInputs_.clear();
   if (!world_ || world_->emptyCloseCount() == 0) firstEmptyClose_.reset();
   if (watch_) watch_->restoreEvents(s.collisions);
 }

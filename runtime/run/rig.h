@@ -21,6 +21,7 @@
 #include "compiler/stimuli/stimuli.h"
 #include "model/workcell/model.h"
 #include "runtime/cell/cell.h"
+#include "runtime/cell/input_cause.h"
 #include "runtime/sim/cell_machine.h"
 #include "runtime/sim/collision_watch.h"
 #include "runtime/sim/sim_machine.h"
@@ -110,6 +111,15 @@ class Rig {
   const GraspEvent* graspOfLastStep() const { return lastStepGrasped_ ? &world_->lastEvent() : nullptr; }
   /// A closing move of the step just run that took nothing, or null.
   const EmptyClose* emptyCloseOfLastStep() const { return lastStepClosedEmpty_ ? &world_->lastEmptyClose() : nullptr; }
+  /// The inputs that changed since the step before the one just run, each
+  /// with its time and cause, in the order they changed (right after a
+  /// restore, none).
+  struct InputChangeRecord {
+    vm::Micros at = 0;
+    InputCause cause;
+  };
+  std::span<const InputChangeRecord> inputsOfLastStep() const { return lastStepInputs_; }
+  static constexpr std::size_t kMaxInputsPerStep = 4096;
   /// The instruction of the first closing move that took nothing, and
   /// where it left the tool centre point.
   std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose() const { return firstEmptyClose_; }
@@ -131,6 +141,7 @@ class Rig {
   std::optional<CellMachine> cellMachine_;
   std::optional<CollisionWatch> watch_;
   vm::Machine* front_ = nullptr;  // what is driven
+  std::vector<InputChangeRecord> pendingInputs_, lastStepInputs_;
   bool lastStepGrasped_ = false;
   bool lastStepClosedEmpty_ = false;
   std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose_;

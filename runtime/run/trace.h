@@ -29,6 +29,7 @@ class TraceWriter final : public vm::StepObserver {
   TraceFormat format_;
   const runtime::Run& run_;
   void collisionEvents();
+  void inputEvents();
   bool headerDone_ = false;
   std::size_t motorsWidth_ = 0;
   std::size_t collisionsShown_ = 0;

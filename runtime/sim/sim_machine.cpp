@@ -58,8 +58,11 @@ SimMachine::SimMachine(std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimu
 
 // Applies the stimuli due by now, telling the listener of each change.
 void SimMachine::applyInputs() {
-  if (inputListener_)
-    schedule_.applyUntil(now(), inputs_, inputListener_);
+  if (inputListener_ || causeListener_)
+    schedule_.applyUntil(now(), inputs_, [this](Micros at, vm::IoMask mask, const InputCause& cause) {
+      if (inputListener_) inputListener_(at, mask);
+      if (causeListener_) causeListener_(at, cause);
+    });
   else
     schedule_.applyUntil(now(), inputs_);
 }
@@ -67,7 +70,7 @@ void SimMachine::applyInputs() {
 bool SimMachine::setInputNow(int input, bool on) {
   if (!vm::isIoLine(input)) return false;
   applyInputs();
-  if (!schedule_.schedule({now(), input, on})) return false;
+  if (!schedule_.schedule({now(), input, on}, InputCause::Kind::Set)) return false;
   applyInputs();
   return true;
 }
@@ -174,7 +177,7 @@ Status SimMachine::setOutput(int output, bool on) {
 Status SimMachine::fireRules(int output, bool on) {
   for (const auto& rule : rules_) {
     if (rule.output != output || rule.outputOn != on) continue;
-    if (!schedule_.schedule({saturatingAdd(now(), std::max<Micros>(rule.delay, 0)), rule.input, rule.inputOn}))
+    if (!schedule_.schedule({saturatingAdd(now(), std::max<Micros>(rule.delay, 0)), rule.input, rule.inputOn, rule.line}))
       return Status::fault(fmt::format(
           "the stimuli rule {}'when output {} {} then input {} {} after {}' has {} input changes waiting to happen: "
           "output {} switches faster than the rule's delay",

@@ -111,6 +111,9 @@ class SimMachine final : public vm::Machine {
   /// Called with (time, inputs after) whenever the input mask changes, at
   /// the time of the stimulus (which may fall inside a move or a DELAY).
   void onInputChange(std::function<void(vm::Micros, vm::IoMask)> listener) { inputListener_ = std::move(listener); }
+  /// Called with (time, what changed which input and why) for the same
+  /// changes, after onInputChange's listener.
+  void onInputCause(std::function<void(vm::Micros, const InputCause&)> listener) { causeListener_ = std::move(listener); }
   /// Called after every move (and RESET) the machine makes, with its
   /// segments set: a straight line makes many within one instruction.
   void onMove(std::function<void()> listener) { moveListener_ = std::move(listener); }
@@ -167,6 +170,7 @@ class SimMachine final : public vm::Machine {
   CameraTriple windowShift_;
   CameraTriple viewRotation_;
   std::function<void(vm::Micros, vm::IoMask)> inputListener_;
+  std::function<void(vm::Micros, const InputCause&)> causeListener_;
   std::function<void()> moveListener_;
 };
 
