@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "base/seconds.h"
 #include "vm/motor_range.h"
@@ -196,8 +197,14 @@ RunOutcome Interpreter::finish(StopReason reason, std::string message, std::uint
 Interpreter::AfterCall Interpreter::machineStep(const Instr& in, std::uint32_t at, std::uint32_t next,
                                                 std::uint64_t steps, const RunLimits& limits,
                                                 const PausePoints& pause, std::uint64_t& check) {
-  Status status = machineCall(in);
   InterpreterState& st = state_;
+  Status status = st.waiting ? (st.waiting = false, machine_.resume()) : machineCall(in);
+  if (status.notYet()) {
+    // Not counted yet: the step is done when the wait is (the next run resumes it).
+    st.pc = at, st.steps = steps - 1, st.waiting = true;
+    st.outcome = RunOutcome{StopReason::Paused, {}, at, steps - 1, true, status.until};
+    return AfterCall::Waiting;
+  }
   const auto stop = [&](StopReason reason, std::string message) {
     st.pc = next, st.steps = steps;
     finish(reason, std::move(message), at);
@@ -313,6 +320,7 @@ RunOutcome Interpreter::loop(const RunLimits& limits, StepObserver* observer, co
         switch (machineStep(in, at, pc, steps, limits, pause, check)) {
           case AfterCall::Next: break;
           case AfterCall::Stopped: return st.outcome;
+          case AfterCall::Waiting: return std::exchange(st.outcome, {});
           case AfterCall::Pause:
             if constexpr (!kWatched) return pauseAt(pc, steps);
             pauseNow = true;

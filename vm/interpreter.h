@@ -37,6 +37,12 @@ struct RunOutcome {
   std::string message;     // empty for End and Paused
   std::uint32_t index = 0; // 0-based instruction that stopped the run (Paused: the next one to run)
   std::uint64_t steps = 0; // instructions executed
+  /// Paused because a machine call said NotYet (Status::NotYet): the
+  /// instruction at `index` has begun and ends when the clock reaches
+  /// `wakeAt` (Status::kNever: when an input changes); the next `run`
+  /// resumes it (Machine::resume) before anything else.
+  bool waiting = false;
+  Micros wakeAt = 0;
   bool ok() const { return reason == StopReason::End; }
   bool paused() const { return reason == StopReason::Paused; }
   bool operator==(const RunOutcome&) const = default;
@@ -70,6 +76,7 @@ struct InterpreterState {
   std::vector<std::uint32_t> callStack;  ///< return addresses, innermost last
   std::vector<std::int32_t> softHome;
   bool finished = false;
+  bool waiting = false;        ///< the instruction at pc has begun and waits (RunOutcome::waiting)
   RunOutcome outcome;          ///< how it finished (when `finished`)
   bool operator==(const InterpreterState&) const = default;
 };
@@ -117,8 +124,9 @@ class Interpreter {
   Status moveTo(std::span<const std::int32_t> targets);
   RunOutcome finish(StopReason reason, std::string message, std::uint32_t index);
   /// What the loop does after an instruction that acts on the machine.
-  enum class AfterCall : std::uint8_t { Next, Pause, Stopped };
-  /// Runs instruction `at` (which acts on the machine) and checks what the
+  enum class AfterCall : std::uint8_t { Next, Pause, Stopped, Waiting };
+  /// Runs instruction `at` (which acts on the machine), or resumes it when
+  /// it waits, and checks what the
   /// call did: a failure or the time limit finishes the run (Stopped,
   /// with `next` and `steps` saved), a moved clock renews `check`, a
   /// clock past the pause time asks for a pause. Out of the loop's way:

@@ -18,24 +18,32 @@ using Micros = std::int64_t;
 /// What a machine call did, and what one read or write of the serial line
 /// to a controller did (runtime/rhino's Link): one status for both, since
 /// the line's failures become the machine's. A machine call answers Ok,
-/// Deadlock or Fault; Timeout and Closed are the line's own, which
+/// Deadlock or Fault, and a machine on a cell's scheduler NotYet; Timeout
+/// and Closed are the line's own, which
 /// rhino::ControllerSession turns into a Fault that says what the line was doing.
 struct Status {
   enum class Code : std::uint8_t {
     Ok,
     Deadlock,  // a wait that nothing will ever satisfy
+    NotYet,    // a wait has begun and ends later: the scheduler, not the machine, decides what runs meanwhile
     Fault,     // the machine failed (limit, controller error, a system error on the line, ...)
     Timeout,   // the line: nothing arrived (or could be written) in time
     Closed,    // the line: the other end went away (hang-up, device unplugged)
   };
   Code code = Code::Ok;
   std::string message;
+  /// NotYet: the time the wait ends at the earliest (kNever: when an input
+  /// changes, which the machine cannot foresee).
+  std::int64_t until = 0;
+  static constexpr std::int64_t kNever = INT64_MAX;
 
   static Status ok() { return {}; }
   static Status deadlock(std::string m) { return {Code::Deadlock, std::move(m)}; }
   static Status fault(std::string m) { return {Code::Fault, std::move(m)}; }
   static Status timeout() { return {Code::Timeout, {}}; }
   static Status closed(std::string m) { return {Code::Closed, std::move(m)}; }
+  static Status notYet(std::int64_t until) { return {Code::NotYet, {}, until}; }
+  bool notYet() const { return code == Code::NotYet; }
   explicit operator bool() const { return code == Code::Ok; }
 };
 
@@ -87,6 +95,14 @@ class Machine {
 
   virtual void window(std::int32_t x, std::int32_t y, std::int32_t z) = 0;
   virtual void view(std::int32_t x, std::int32_t y, std::int32_t z) = 0;
+
+  /// A call that waits (a move, a delay, a WAITFOR) may answer NotYet on a
+  /// machine that runs on a cell's scheduler (SimMachine::waitOnScheduler):
+  /// the wait has begun, the clock is the scheduler's to move, and the
+  /// interpreter calls `resume` to finish the call once it has (NotYet
+  /// again while it still waits). A machine that never says NotYet never
+  /// hears `resume`.
+  virtual Status resume() { return Status::ok(); }
 
   virtual Micros now() const = 0;
   /// The lock-step moves (knots) of straight lines made so far: the work a

@@ -194,11 +194,12 @@ diag::Result<Stimuli> parseStimuli(std::string_view text, std::string_view fileN
     ++lineNo;
     const auto newline = text.find('\n');
     const auto line = text.substr(0, newline);
-    const std::size_t rulesBefore = stimuli.rules.size();
+    const std::size_t rulesBefore = stimuli.rules.size(), changesBefore = stimuli.changes.size();
     if (auto failure = parseLine(line, stimuli))
       errors.push_back({std::string(fileName), {clampToU32(lineNo), clampToU32(failure->offset + 1)},
                         diag::Severity::Error, std::move(failure->message)});
     if (stimuli.rules.size() > rulesBefore) stimuli.rules.back().line = clampToU32(lineNo);
+    for (std::size_t c = changesBefore; c < stimuli.changes.size(); ++c) stimuli.changes[c].line = clampToU32(lineNo);
     if (newline == std::string_view::npos) break;
     text.remove_prefix(newline + 1);
   }

@@ -23,6 +23,7 @@ struct InputChange {
   vm::Micros at = 0;
   int input = 1;
   bool on = true;
+  std::uint32_t line = 0;  ///< where the stimuli file wrote it (0: not from a file)
   bool operator==(const InputChange&) const = default;
 };
 

@@ -24,7 +24,7 @@ struct Moment {
   /// or END is success.
   bool reached = false;
   /// With a workcell: each object's placement (F_world_design) at `at`,
-  /// carried by the gripper or resting (runtime/sim/world.h).
+  /// carried by the gripper or resting (runtime/cell/world.h).
   std::vector<Eigen::Isometry3d> objects;
   /// The object the gripper carries at `at`, if any (its pose is in
   /// `objects`): a still checks it for collisions as the run did, with the

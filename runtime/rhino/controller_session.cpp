@@ -49,7 +49,8 @@ vm::Status ControllerSession::ioFailure(const vm::Status& r, std::string_view co
       note(r.message);
       break;
     case vm::Status::Code::Fault:
-    case vm::Status::Code::Deadlock:  // no link answers it
+    case vm::Status::Code::Deadlock:  // no link answers these
+    case vm::Status::Code::NotYet:
       message = fmt::format("serial I/O error at \"{}\": {}", escapeBytes(bytesOf(command)), r.message);
       break;
   }

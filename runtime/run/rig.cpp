@@ -4,19 +4,20 @@ namespace rs::runtime {
 
 Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli,
          CollisionMode collisions)
-    : cell_(std::move(cell)) {
-  auto sim = std::make_unique<SimMachine>(std::move(motors), std::move(stimuli));
+    : cell_(std::move(cell)), running_(std::make_unique<Cell>(cell_.get())) {
+  auto sim = std::make_unique<SimMachine>(std::move(motors), std::move(stimuli), running_->clock());
   sim_ = sim.get();
   motion_ = std::move(sim);
   build(*motion_, collisions);
 }
 
 Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::unique_ptr<vm::Machine> machine)
-    : cell_(std::move(cell)), motion_(std::move(machine)) {
+    : cell_(std::move(cell)), running_(std::make_unique<Cell>(cell_.get())), motion_(std::move(machine)) {
   build(*motion_, CollisionMode::Off);
 }
 
-Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, vm::Machine& machine) : cell_(std::move(cell)) {
+Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, vm::Machine& machine)
+    : cell_(std::move(cell)), running_(std::make_unique<Cell>(cell_.get())) {
   build(machine, CollisionMode::Off);
 }
 
@@ -27,8 +28,15 @@ Rig::~Rig() = default;
 // hold has changed. Only the simulated machine's moves can be swept.
 void Rig::build(vm::Machine& motion, CollisionMode collisions) {
   front_ = &motion;
+  // Kept until the step's end (afterStep). A run that nobody observes never
+  // ends a step for the rig, so the list is bounded: a step keeps its first
+  // kMaxInputsPerStep changes.
+  if (sim_)
+    sim_->onInputCause([this](vm::Micros at, const InputCause& c) {
+      if (pendingInputs_.size() < kMaxInputsPerStep) pendingInputs_.push_back({at, c});
+    });
   if (!cell_) return;
-  world_.emplace(*cell_);
+  world_ = running_->world();
   cellMachine_.emplace(motion, *world_);
   front_ = &*cellMachine_;
   if (sim_ && collisions != CollisionMode::Off) {
@@ -38,6 +46,8 @@ void Rig::build(vm::Machine& motion, CollisionMode collisions) {
 }
 
 void Rig::afterStep(std::uint32_t instruction) {
+  lastStepInputs_.swap(pendingInputs_);
+  pendingInputs_.clear();
   if (!world_) return;
   const World::StepEffects step = world_->takeStepEffects();
   lastStepGrasped_ = step.grasped;
@@ -84,16 +94,17 @@ std::vector<ObjectView> Rig::objects(vm::Micros at) const {
 RigSnapshot Rig::snapshot() const {
   RigSnapshot s;
   if (sim_) s.machine = sim_->state();
-  if (world_) s.world = world_->state();
+  s.cell = running_->state();
   if (watch_) s.collisions.assign(watch_->events().begin(), watch_->events().end());
   return s;
 }
 
 void Rig::restore(const RigSnapshot& s) {
+  running_->restore(s.cell);
   if (sim_) sim_->restore(s.machine);
-  if (world_ && s.world) world_->restore(*s.world);
   lastStepGrasped_ = false;
   lastStepClosedEmpty_ = false;
+  pendingInputs_.clear(), lastStepInputs_.clear();
   if (!world_ || world_->emptyCloseCount() == 0) firstEmptyClose_.reset();
   if (watch_) watch_->restoreEvents(s.collisions);
 }

@@ -20,10 +20,11 @@
 
 #include "compiler/stimuli/stimuli.h"
 #include "model/workcell/model.h"
+#include "runtime/cell/cell.h"
+#include "runtime/cell/input_cause.h"
 #include "runtime/sim/cell_machine.h"
 #include "runtime/sim/collision_watch.h"
 #include "runtime/sim/sim_machine.h"
-#include "runtime/sim/world.h"
 #include "vm/machine.h"
 
 namespace rs::runtime {
@@ -41,7 +42,8 @@ struct ObjectView {
 /// Everything that changes in a rig on the simulated machine.
 struct RigSnapshot {
   SimMachine::State machine;
-  std::optional<World::State> world;
+  /// The cell's clock and queue, and its world (on a workcell).
+  Cell::State cell;
   /// Every collision found so far (in error mode one at most): restoring
   /// puts them back, whether the rig is behind or ahead of the snapshot.
   /// What else the swept check keeps is a cache (runtime/sim/sweep_memo.h).
@@ -72,7 +74,11 @@ class Rig {
   const SimMachine* sim() const { return sim_; }
   SimMachine* sim() { return sim_; }
   /// The world, or null without a workcell.
-  const World* world() const { return world_ ? &*world_ : nullptr; }
+  const World* world() const { return world_; }
+  /// The running cell: its one clock (the simulated machine runs on it)
+  /// and its world.
+  const Cell& running() const { return *running_; }
+  Cell& running() { return *running_; }
 
   vm::Micros clock() const { return machine().now(); }
   std::span<const std::int32_t> motors() const { return machine().positions(); }
@@ -105,6 +111,15 @@ class Rig {
   const GraspEvent* graspOfLastStep() const { return lastStepGrasped_ ? &world_->lastEvent() : nullptr; }
   /// A closing move of the step just run that took nothing, or null.
   const EmptyClose* emptyCloseOfLastStep() const { return lastStepClosedEmpty_ ? &world_->lastEmptyClose() : nullptr; }
+  /// The inputs that changed since the step before the one just run, each
+  /// with its time and cause, in the order they changed (right after a
+  /// restore, none).
+  struct InputChangeRecord {
+    vm::Micros at = 0;
+    InputCause cause;
+  };
+  std::span<const InputChangeRecord> inputsOfLastStep() const { return lastStepInputs_; }
+  static constexpr std::size_t kMaxInputsPerStep = 4096;
   /// The instruction of the first closing move that took nothing, and
   /// where it left the tool centre point.
   std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose() const { return firstEmptyClose_; }
@@ -119,12 +134,14 @@ class Rig {
   void build(vm::Machine& motion, CollisionMode collisions);
 
   std::shared_ptr<const workcell::Workcell> cell_;
+  std::unique_ptr<Cell> running_;        // before the machine, which runs on its clock
+  World* world_ = nullptr;               // running_'s, on a workcell
   std::unique_ptr<vm::Machine> motion_;  // moves the motors, when the rig owns them
   SimMachine* sim_ = nullptr;            // motion_, when simulated
-  std::optional<World> world_;
   std::optional<CellMachine> cellMachine_;
   std::optional<CollisionWatch> watch_;
   vm::Machine* front_ = nullptr;  // what is driven
+  std::vector<InputChangeRecord> pendingInputs_, lastStepInputs_;
   bool lastStepGrasped_ = false;
   bool lastStepClosedEmpty_ = false;
   std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose_;

@@ -27,7 +27,12 @@ class Run::Observers final : public vm::StepObserver {
   Observers(const Run& run, Rig& rig, RunLogger* logger) : run_(run), rig_(rig), logger_(logger) {}
   bool afterStep(const vm::Interpreter& vm, std::uint32_t index) override {
     rig_.afterStep(index);
-    if (logger_) logger_->afterStep(vm, index);
+    if (logger_) {
+      // The step's record is the next one the log keeps.
+      const auto step = static_cast<std::uint32_t>(logger_->log().steps.size());
+      for (const Rig::InputChangeRecord& c : rig_.inputsOfLastStep()) logger_->inputCause(step, c.at, c.cause);
+      logger_->afterStep(vm, index);
+    }
     bool pause = false;
     for (vm::StepObserver* o : added) pause |= o->afterStep(vm, index);
     if (when && (*when)(run_)) conditionMet = true, pause = true;

@@ -17,7 +17,9 @@ const T* lastUpTo(const std::vector<T>& items, std::size_t step) {
 }  // namespace
 
 RunLog::Mark RunLog::mark() const {
-  Mark m{steps.size(), outputs.size(), cameras.size(), inputs.size(), grasps.size(), variables.size(), {}, end};
+  Mark m;
+  m.steps = steps.size(), m.outputs = outputs.size(), m.cameras = cameras.size(), m.inputs = inputs.size();
+  m.grasps = grasps.size(), m.variables = variables.size(), m.inputChanges = inputChanges.size(), m.end = end;
   for (const auto& list : moves) m.moves.push_back(list.size());
   return m;
 }
@@ -25,6 +27,7 @@ RunLog::Mark RunLog::mark() const {
 void RunLog::cutTo(const Mark& m) {
   steps.resize(m.steps), outputs.resize(m.outputs), cameras.resize(m.cameras);
   inputs.resize(m.inputs), grasps.resize(m.grasps), variables.resize(m.variables);
+  inputChanges.resize(m.inputChanges);
   for (std::size_t i = 0; i < moves.size() && i < m.moves.size(); ++i) moves[i].resize(m.moves[i]);
   end = m.end;
 }

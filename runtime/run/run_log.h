@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "runtime/sim/sim_machine.h"
-#include "runtime/sim/world.h"
+#include "runtime/cell/world.h"
 #include "vm/interpreter.h"
 
 namespace rs::runtime {
@@ -51,6 +51,14 @@ struct InputLevel {
   vm::IoMask inputs = 0;
 };
 
+/// Input `cause.input` changed at `at`, for `cause` (a stimulus, a rule, a
+/// wire, the debugger), during step `step` (or before it, between steps).
+struct InputRecord {
+  std::uint32_t step = 0;
+  vm::Micros at = 0;
+  InputCause cause;
+};
+
 /// Step `step` wrote `value` into variable slot `slot` (SET, ADD).
 struct VariableWrite {
   std::uint32_t step = 0;
@@ -59,7 +67,7 @@ struct VariableWrite {
   bool operator==(const VariableWrite&) const = default;
 };
 
-/// A take or a let-go (runtime/sim/world.h) during step `step`.
+/// A take or a let-go (runtime/cell/world.h) during step `step`.
 struct GraspRecord {
   std::uint32_t step = 0;
   GraspEvent event;
@@ -72,6 +80,7 @@ struct RunLog {
   std::vector<OutputChange> outputs;
   std::vector<CameraChange> cameras;
   std::vector<InputLevel> inputs;   ///< starts at time 0
+  std::vector<InputRecord> inputChanges;  ///< every change of an input, with its cause
   std::vector<GraspRecord> grasps;  ///< in step order; empty without a gripper
   std::vector<VariableWrite> variables;  ///< in step order
   vm::Micros end = 0;               ///< the clock when the run stopped (or paused)
@@ -81,7 +90,7 @@ struct RunLog {
 
   /// How long each list was at some moment, to cut the log back to it.
   struct Mark {
-    std::size_t steps = 0, outputs = 0, cameras = 0, inputs = 0, grasps = 0, variables = 0;
+    std::size_t steps = 0, outputs = 0, cameras = 0, inputs = 0, grasps = 0, variables = 0, inputChanges = 0;
     std::vector<std::size_t> moves;
     vm::Micros end = 0;
     bool operator==(const Mark&) const = default;
@@ -138,6 +147,10 @@ class RunLogger {
   /// The machine's inputs became `mask` at `at` (the logger listens to the
   /// machine itself; a Run that also hands changes on calls this).
   void inputChanged(vm::Micros at, vm::IoMask mask);
+  /// Input `cause.input` changed at `at` for `cause`, in step `step`.
+  void inputCause(std::uint32_t step, vm::Micros at, const InputCause& cause) {
+    log_.inputChanges.push_back({step, at, cause});
+  }
 
  private:
   void record(std::uint32_t index);

@@ -61,6 +61,7 @@ TraceWriter::TraceWriter(std::ostream& out, TraceFormat format, const runtime::R
     : out_(out), format_(format), run_(run) {}
 
 bool TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
+  inputEvents();
   if (format_ == TraceFormat::Text) text(vm, index);
   else json(vm, index);
   collisionEvents();
@@ -68,6 +69,27 @@ bool TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
 }
 
 void TraceWriter::finish() { collisionEvents(); }
+
+// One line per input change during the step (or since the last step), at
+// its time and with its cause, before the step's own line.
+void TraceWriter::inputEvents() {
+  for (const Rig::InputChangeRecord& c : run_.rig().inputsOfLastStep()) {
+    if (format_ == TraceFormat::Text) {
+      out_ << fmt::format("{:>10}  {}\n", base::formatSeconds(c.at), base::safeText(inputChangeText(c.cause)));
+    } else {
+      nlohmann::ordered_json j;
+      j["event"] = "input";
+      j["time"] = seconds(c.at);
+      j["input"] = c.cause.input;
+      j["on"] = c.cause.on;
+      j["cause"] = inputCauseWord(c.cause.kind);
+      if (c.cause.line) j["cause_line"] = c.cause.line;
+      if (!c.cause.source.empty()) j["source"] = c.cause.source;
+      j["text"] = inputChangeText(c.cause);
+      out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+    }
+  }
+}
 
 // One line per collision found since the last step traced: its time, the
 // move's line, the parts.

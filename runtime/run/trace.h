@@ -1,5 +1,7 @@
 // Execution traces: one line per executed instruction, as text or as JSON
-// Lines. Both print the instruction with the disassembler's own functions.
+// Lines, and an event line for each input change (before its step's line,
+// with its cause) and each collision (after it). Both print the
+// instruction with the disassembler's own functions.
 #pragma once
 
 #include <ostream>
@@ -29,6 +31,7 @@ class TraceWriter final : public vm::StepObserver {
   TraceFormat format_;
   const runtime::Run& run_;
   void collisionEvents();
+  void inputEvents();
   bool headerDone_ = false;
   std::size_t motorsWidth_ = 0;
   std::size_t collisionsShown_ = 0;

@@ -12,19 +12,34 @@ template <typename Move>
 vm::Status CellMachine::moveAndReact(Move&& move) {
   const auto positions = motion_.positions();
   std::copy(positions.begin(), positions.end(), before_.begin());
-  const vm::Micros start = motion_.now();
+  start_ = motion_.now();
   vm::Status status = move();
+  if (status.notYet()) pendingMove_ = true;
   if (!status) return status;
+  return react();
+}
+
+vm::Status CellMachine::react() {
   if (watch_ && mode_ != CollisionMode::Off) {
     const CollisionEvent* hit =
-        inLine_ ? watch_->sweep(*timeline_, world_, before_, motion_.positions(), start, motion_.now(), lineFrom_, lineTo_)
-                : watch_->sweep(*timeline_, world_, before_, motion_.positions(), start, motion_.now());
+        inLine_ ? watch_->sweep(*timeline_, world_, before_, motion_.positions(), start_, motion_.now(), lineFrom_, lineTo_)
+                : watch_->sweep(*timeline_, world_, before_, motion_.positions(), start_, motion_.now());
     if (hit && mode_ == CollisionMode::Error)
       return vm::Status::fault(
           fmt::format("collision at {} s: {}", base::formatSeconds(hit->at), watch_->describe(*hit)));
   }
-  world_.moved(before_, motion_.positions(), start, motion_.now());
-  return status;
+  world_.moved(before_, motion_.positions(), start_, motion_.now());
+  return vm::Status::ok();
+}
+
+vm::Status CellMachine::resume() {
+  vm::Status status = motion_.resume();
+  if (!status || !pendingMove_) return status;
+  pendingMove_ = false;
+  status = react();
+  if (!status) inLine_ = false;
+  if (!status || !inLine_) return status;
+  return runKnots(lineKnot_ + 1);
 }
 
 vm::Status CellMachine::moveTo(std::span<const std::int32_t> targets) {
@@ -57,8 +72,18 @@ vm::Status CellMachine::runPath(const std::optional<workcell::LineProblem>& prob
   inLine_ = true;
   if (watch_) watch_->beginLine();
   motion_.beginPath();
+  return runKnots(0);
+}
+
+vm::Status CellMachine::runKnots(std::size_t from) {
   vm::Status status = vm::Status::ok();
-  for (std::size_t k = 0; k < path_->size() && status; ++k) status = moveLockStep(path_->knot(k), path_->lead(k));
+  for (std::size_t k = from; k < path_->size() && status; ++k) {
+    status = moveLockStep(path_->knot(k), path_->lead(k));
+    if (status.notYet()) {
+      lineKnot_ = k;
+      return status;  // still in the line: resume goes on from the next knot
+    }
+  }
   inLine_ = false;
   return status;
 }

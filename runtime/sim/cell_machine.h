@@ -13,7 +13,7 @@
 
 #include "runtime/sim/collision_watch.h"
 #include "runtime/sim/sim_machine.h"
-#include "runtime/sim/world.h"
+#include "runtime/cell/world.h"
 #include "vm/machine.h"
 
 namespace rs::runtime {
@@ -46,6 +46,9 @@ class CellMachine final : public vm::Machine {
   vm::Status delay(vm::Micros duration) override { return motion_.delay(duration); }
   vm::Status hardHome() override;
   vm::Status reset() override;
+  /// On a machine waiting on the scheduler: the move's end reached, the
+  /// world reacts (and a straight line goes on with its next knot).
+  vm::Status resume() override;
   void window(std::int32_t x, std::int32_t y, std::int32_t z) override { motion_.window(x, y, z); }
   void view(std::int32_t x, std::int32_t y, std::int32_t z) override { motion_.view(x, y, z); }
   vm::Micros now() const override { return motion_.now(); }
@@ -56,6 +59,10 @@ class CellMachine final : public vm::Machine {
  private:
   template <typename Move>
   vm::Status moveAndReact(Move&& move);
+  /// The move from before_ at start_ to now is done: the sweep, the world.
+  vm::Status react();
+  /// The line's knots from `from` on (NotYet at one that waits).
+  vm::Status runKnots(std::size_t from);
   /// The planner, its cache and its path, made at the first straight
   /// line; false when the robot has no chain. The cache lives as long as
   /// the machine: a loop plans each of its lines once, and a debugger's
@@ -68,7 +75,10 @@ class CellMachine final : public vm::Machine {
   const SimMachine* timeline_ = nullptr;
   CollisionWatch* watch_ = nullptr;
   CollisionMode mode_ = CollisionMode::Off;
-  std::vector<std::int32_t> before_;  // scratch, sized once
+  std::vector<std::int32_t> before_;  // where the move under way began, sized once
+  vm::Micros start_ = 0;              // when it began
+  bool pendingMove_ = false;          // it answered NotYet: the world reacts on resume
+  std::size_t lineKnot_ = 0;          // the knot of the line under way
   std::unique_ptr<workcell::LinePlanCache> plans_;
   std::unique_ptr<workcell::LinePlanner> planner_;
   std::unique_ptr<workcell::LinePath> path_;

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "base/number_text.h"
-#include "runtime/sim/world.h"
+#include "runtime/cell/world.h"
 
 namespace rs::runtime {
 

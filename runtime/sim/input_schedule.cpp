@@ -15,10 +15,11 @@ InputSchedule::InputSchedule(std::span<const stimuli::InputChange> timed) {
   timed_ = std::move(sorted);
 }
 
-bool InputSchedule::schedule(const stimuli::InputChange& change) {
+bool InputSchedule::schedule(const stimuli::InputChange& change, InputCause::Kind cause) {
   if (lineBit(change.input) == 0) return true;
   if (reactive_.size() >= kMaxPendingReactive) return false;
-  reactive_.insert(reactive_.end(), Pending{change.at, nextSeq_++, change.input, change.on});
+  reactive_.insert(reactive_.end(),
+                   Pending{change.at, nextSeq_++, change.input, change.on, change.line, cause == InputCause::Kind::Set});
   return true;
 }
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "compiler/stimuli/stimuli.h"
+#include "runtime/cell/input_cause.h"
 #include "vm/io_lines.h"
 
 namespace rs::runtime {
@@ -32,18 +33,20 @@ class InputSchedule {
   /// 1..vm::kIoCount are dropped).
   explicit InputSchedule(std::span<const stimuli::InputChange> timed);
 
-  /// Adds a change after every pending one due at the same time. Callers
+  /// Adds a change after every pending one due at the same time, made by
+  /// `cause` (a rule of `change.line`, or the debugger's set). Callers
   /// never schedule before the time they last applied. False (and nothing
   /// added) when kMaxPendingReactive changes already wait.
-  bool schedule(const stimuli::InputChange& change);
+  bool schedule(const stimuli::InputChange& change, InputCause::Kind cause = InputCause::Kind::Rule);
 
   /// Applies, in order, every pending change due at or before `t` to the
   /// input mask `inputs` (bit 0 = input 1) and forgets it. `onChange`, when
-  /// given, hears each change that altered the mask: (time, mask after).
+  /// given, hears each change that altered the mask: (time, mask after,
+  /// the change's cause).
   template <typename OnChange>
   void applyUntil(vm::Micros t, vm::IoMask& inputs, OnChange&& onChange);
   void applyUntil(vm::Micros t, vm::IoMask& inputs) {
-    applyUntil(t, inputs, [](vm::Micros, vm::IoMask) {});
+    applyUntil(t, inputs, [](vm::Micros, vm::IoMask, const InputCause&) {});
   }
 
   /// The earliest pending time after whose changes `input` reads `on`,
@@ -65,6 +68,8 @@ class InputSchedule {
       std::uint64_t seq;  // scheduling order, for ties
       int input;
       bool on;
+      std::uint32_t line = 0;  // the rule's line in the stimuli file
+      bool set = false;        // the debugger's set, not a rule
       bool operator<(const Pending& o) const { return at != o.at ? at < o.at : seq < o.seq; }
       bool operator==(const Pending&) const = default;
     };
@@ -101,17 +106,21 @@ void InputSchedule::applyUntil(vm::Micros t, vm::IoMask& inputs, OnChange&& onCh
     if (!timedDue && !reactiveDue) return;
     vm::Micros at;
     vm::IoMask after;
+    InputCause cause;
     if (timedDue && (!reactiveDue || timed->at <= reactive_.begin()->at)) {
       at = timed->at, after = withLine(inputs, timed->input, timed->on);
+      cause.input = timed->input, cause.on = timed->on, cause.line = timed->line;
       ++nextTimed_;
     } else {
       const Pending& p = *reactive_.begin();
       at = p.at, after = withLine(inputs, p.input, p.on);
+      cause.kind = p.set ? InputCause::Kind::Set : InputCause::Kind::Rule;
+      cause.input = p.input, cause.on = p.on, cause.line = p.line;
       reactive_.erase(reactive_.begin());
     }
     if (after != inputs) {
       inputs = after;
-      onChange(at, inputs);
+      onChange(at, inputs, cause);
     }
   }
 }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 
 namespace rs::runtime {
 namespace {
@@ -37,37 +38,52 @@ std::int64_t addDegrees(std::int64_t angle, std::int32_t by) {
 }  // namespace
 
 SimMachine::SimMachine(std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli)
+    : SimMachine(std::move(motors), std::move(stimuli), std::make_unique<Scheduler>(), nullptr) {}
+
+SimMachine::SimMachine(std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli, Scheduler& clock)
+    : SimMachine(std::move(motors), std::move(stimuli), nullptr, &clock) {}
+
+SimMachine::SimMachine(std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli, std::unique_ptr<Scheduler> own,
+                       Scheduler* clock)
     : motors_(std::move(motors)),
       rules_(std::move(stimuli.rules)),
       schedule_(stimuli.changes),
       positions_(motors_.size(), 0),
       home_(motors_.size(), 0),
-      segments_(motors_.size()) {
-  schedule_.applyUntil(now_, inputs_);
+      segments_(motors_.size()),
+      ownClock_(std::move(own)),
+      clock_(clock ? clock : ownClock_.get()) {
+  schedule_.applyUntil(now(), inputs_);
 }
 
 // Applies the stimuli due by now, telling the listener of each change.
 void SimMachine::applyInputs() {
-  if (inputListener_)
-    schedule_.applyUntil(now_, inputs_, inputListener_);
+  if (inputListener_ || causeListener_)
+    schedule_.applyUntil(now(), inputs_, [this](Micros at, vm::IoMask mask, const InputCause& cause) {
+      if (inputListener_) inputListener_(at, mask);
+      if (causeListener_) causeListener_(at, cause);
+    });
   else
-    schedule_.applyUntil(now_, inputs_);
+    schedule_.applyUntil(now(), inputs_);
 }
 
 bool SimMachine::setInputNow(int input, bool on) {
   if (!vm::isIoLine(input)) return false;
   applyInputs();
-  if (!schedule_.schedule({now_, input, on})) return false;
+  if (!schedule_.schedule({now(), input, on}, InputCause::Kind::Set)) return false;
   applyInputs();
   return true;
 }
 
 SimMachine::State SimMachine::state() const {
-  return {positions_, segments_, path_, now_, knots_, outputs_, inputs_, windowShift_, viewRotation_, schedule_.state()};
+  return {positions_, segments_, path_,       now(),   knots_,  outputs_, inputs_, windowShift_,
+          viewRotation_, schedule_.state(), waitUntil_, waitInput_, waitOn_, waitMove_};
 }
 
 void SimMachine::restore(const State& s) {
-  positions_ = s.positions, segments_ = s.segments, path_ = s.path, now_ = s.now, knots_ = s.knots;
+  positions_ = s.positions, segments_ = s.segments, path_ = s.path, knots_ = s.knots;
+  clock_->restoreNow(s.now);  // on a cell, the cell's snapshot puts back the rest of its clock
+  waitUntil_ = s.waitUntil, waitInput_ = s.waitInput, waitOn_ = s.waitOn, waitMove_ = s.waitMove;
   outputs_ = s.outputs, inputs_ = s.inputs;
   windowShift_ = s.windowShift, viewRotation_ = s.viewRotation;
   schedule_.restore(s.schedule);
@@ -89,7 +105,7 @@ Status SimMachine::checkTargets(std::span<const std::int32_t> targets) const {
       return Status::fault(fmt::format("motor {} cannot move: its speed is {}", m.letter, m.speed));
     longest = std::max(longest, travelTime(i, targets[i]));
   }
-  if (now_ > kClockLimit - longest) return Status::fault("the virtual clock overflowed");
+  if (now() > kClockLimit - longest) return Status::fault("the virtual clock overflowed");
   return Status::ok();
 }
 
@@ -98,14 +114,12 @@ Status SimMachine::moveTo(std::span<const std::int32_t> targets) {
   Micros longest = 0;
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const Micros duration = travelTime(i, targets[i]);
-    segments_[i] = {positions_[i], targets[i], now_, now_ + duration};
+    segments_[i] = {positions_[i], targets[i], now(), now() + duration};
     positions_[i] = targets[i];
     longest = std::max(longest, duration);
   }
   path_.clear();
-  advanceBy(longest);
-  if (moveListener_) moveListener_();
-  return Status::ok();
+  return advanceBy(longest, true);
 }
 
 Status SimMachine::moveLockStep(std::span<const std::int32_t> targets, std::uint32_t lead) {
@@ -113,18 +127,17 @@ Status SimMachine::moveLockStep(std::span<const std::int32_t> targets, std::uint
   Micros longest = 0;
   for (std::size_t i = 0; i < targets.size(); ++i)
     longest = std::max(longest, lockStepTime(motors_[i], std::abs(std::int64_t{targets[i]} - positions_[i])));
-  if (now_ > kClockLimit - longest) return Status::fault("the virtual clock overflowed");
+  const Micros now = this->now();
+  if (now > kClockLimit - longest) return Status::fault("the virtual clock overflowed");
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const bool moves = targets[i] != positions_[i];
     const bool ahead = i < 32 && ((lead >> i) & 1u) != 0;
-    segments_[i] = {positions_[i], targets[i], now_, moves ? now_ + longest : now_, moves, moves && ahead};
+    segments_[i] = {positions_[i], targets[i], now, moves ? now + longest : now, moves, moves && ahead};
     positions_[i] = targets[i];
   }
   path_.insert(path_.end(), segments_.begin(), segments_.end());
   ++knots_;
-  advanceBy(longest);
-  if (moveListener_) moveListener_();
-  return Status::ok();
+  return advanceBy(longest, true);
 }
 
 void SimMachine::beginPath() { path_.clear(); }
@@ -145,7 +158,7 @@ Status SimMachine::hardHome() { return moveTo(home_); }
 Status SimMachine::reset() {
   for (std::size_t i = 0; i < positions_.size(); ++i) {
     positions_[i] = home_[i];
-    segments_[i] = {home_[i], home_[i], now_, now_};
+    segments_[i] = {home_[i], home_[i], now(), now()};
   }
   path_.clear();
   return Status::ok();
@@ -164,7 +177,7 @@ Status SimMachine::setOutput(int output, bool on) {
 Status SimMachine::fireRules(int output, bool on) {
   for (const auto& rule : rules_) {
     if (rule.output != output || rule.outputOn != on) continue;
-    if (!schedule_.schedule({saturatingAdd(now_, std::max<Micros>(rule.delay, 0)), rule.input, rule.inputOn}))
+    if (!schedule_.schedule({saturatingAdd(now(), std::max<Micros>(rule.delay, 0)), rule.input, rule.inputOn, rule.line}))
       return Status::fault(fmt::format(
           "the stimuli rule {}'when output {} {} then input {} {} after {}' has {} input changes waiting to happen: "
           "output {} switches faster than the rule's delay",
@@ -183,6 +196,10 @@ Status SimMachine::waitFor(int input, bool on) {
   if (!vm::isIoLine(input))
     return Status::fault(fmt::format("input {} does not exist (inputs are 1..{})", input, vm::kIoCount));
   if (this->input(input) == on) return Status::ok();
+  if (cooperative_) {
+    waitInput_ = input, waitOn_ = on;
+    return waitForInput(input, on);
+  }
   const auto when = schedule_.whenReads(input, on, inputs_);
   if (!when)
     return Status::deadlock(
@@ -190,21 +207,48 @@ Status SimMachine::waitFor(int input, bool on) {
                     schedule_.hasPendingFor(input)
                         ? fmt::format("no scheduled stimulus leaves it {}", onOff(on))
                         : std::string("no stimulus is scheduled")));
-  advanceBy(*when - now_);
+  return advanceBy(*when - now());
+}
+
+// Waiting on the scheduler: the input already reads `on`, or NotYet until
+// the next stimulus that makes it so (when no stimulus will, until
+// whatever else in the cell changes it: the scheduler knows).
+Status SimMachine::waitForInput(int input, bool on) {
+  applyInputs();
+  if (vm::lineIsOn(inputs_, input) == on) {
+    waitInput_ = 0;
+    return Status::ok();
+  }
+  const auto when = schedule_.whenReads(input, on, inputs_);
+  return Status::notYet(when ? *when : Status::kNever);
+}
+
+Status SimMachine::resume() {
+  if (waitInput_) return waitForInput(waitInput_, waitOn_);
+  if (now() < waitUntil_) return Status::notYet(waitUntil_);
+  applyInputs();
+  if (std::exchange(waitMove_, false) && moveListener_) moveListener_();
   return Status::ok();
 }
 
 Status SimMachine::delay(Micros duration) {
   if (duration < 0) return Status::fault(fmt::format("delay of {} us is negative", duration));
-  if (now_ > kClockLimit - duration) return Status::fault("the virtual clock overflowed");
-  advanceBy(duration);
-  return Status::ok();
+  if (now() > kClockLimit - duration) return Status::fault("the virtual clock overflowed");
+  return advanceBy(duration);
 }
 
-// The one place the clock moves: inputs always match now().
-void SimMachine::advanceBy(Micros duration) {
-  now_ += duration;
+// The one place the machine moves the cell's clock: inputs always match
+// now(). Waiting on the scheduler, the wait begins and the clock is left to it.
+Status SimMachine::advanceBy(Micros duration, bool move) {
+  const Micros until = now() + duration;
+  if (cooperative_ && duration > 0) {
+    waitUntil_ = until, waitInput_ = 0, waitMove_ = move;
+    return Status::notYet(until);
+  }
+  Status status = clock_->advanceTo(until);
   applyInputs();
+  if (move && moveListener_) moveListener_();
+  return status;
 }
 
 void SimMachine::window(std::int32_t x, std::int32_t y, std::int32_t z) {

@@ -1,5 +1,6 @@
 // The simulated machine: motors that move at their configured speeds (and
-// accelerations: runtime/sim/motion.h) on a virtual clock, eight outputs, and eight inputs driven by the stimuli.
+// accelerations: runtime/sim/motion.h) on the cell's virtual clock
+// (runtime/cell/scheduler.h), eight outputs, and eight inputs driven by the stimuli.
 // Deterministic: the same calls with the same stimuli give the same results
 // on every run. Time is integer microseconds and only moves forward.
 #pragma once
@@ -7,9 +8,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
+#include "runtime/cell/scheduler.h"
 #include "runtime/sim/input_schedule.h"
 #include "runtime/sim/motion.h"
 #include "compiler/stimuli/stimuli.h"
@@ -31,6 +34,18 @@ class SimMachine final : public vm::Machine {
   /// Motors start at encoder 0, outputs and inputs OFF, the clock at 0
   /// (stimuli due at time 0 have already applied).
   SimMachine(std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli);
+  /// The same on a cell's clock (which must outlive the machine): its
+  /// moves and delays advance it, and whatever else the cell scheduled
+  /// happens during them. Without one the machine is a cell of one robot
+  /// and makes that cell's clock itself.
+  SimMachine(std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli, Scheduler& clock);
+
+  /// From here on a move, a DELAY or a WAITFOR that must wait answers
+  /// NotYet (vm::Status::notYet) instead of moving the clock: the
+  /// scheduler moves it, and `resume` finishes the call once the clock has
+  /// reached its end (for a WAITFOR, once the input reads as asked).
+  void waitOnScheduler(bool on) { cooperative_ = on; }
+  vm::Status resume() override;
 
   /// Every motor moves at once, each with its own profile (motion.h);
   /// returns when the slowest arrives. Fault (no motion) on a wrong target count, a target
@@ -72,7 +87,9 @@ class SimMachine final : public vm::Machine {
   /// False when the input is out of range or the schedule is full.
   bool setInputNow(int input, bool on);
 
-  vm::Micros now() const override { return now_; }
+  vm::Micros now() const override { return clock_->now(); }
+  /// The clock the machine runs on.
+  const Scheduler& clock() const { return *clock_; }
   /// Every moveLockStep made so far.
   std::uint64_t knots() const override { return knots_; }
   vm::IoMask outputs() const override { return outputs_; }
@@ -94,6 +111,9 @@ class SimMachine final : public vm::Machine {
   /// Called with (time, inputs after) whenever the input mask changes, at
   /// the time of the stimulus (which may fall inside a move or a DELAY).
   void onInputChange(std::function<void(vm::Micros, vm::IoMask)> listener) { inputListener_ = std::move(listener); }
+  /// Called with (time, what changed which input and why) for the same
+  /// changes, after onInputChange's listener.
+  void onInputCause(std::function<void(vm::Micros, const InputCause&)> listener) { causeListener_ = std::move(listener); }
   /// Called after every move (and RESET) the machine makes, with its
   /// segments set: a straight line makes many within one instruction.
   void onMove(std::function<void()> listener) { moveListener_ = std::move(listener); }
@@ -108,15 +128,24 @@ class SimMachine final : public vm::Machine {
     vm::IoMask outputs = 0, inputs = 0;
     CameraTriple windowShift, viewRotation;
     InputSchedule::State schedule;
+    /// A call begun that waits (waitOnScheduler): until when, or for which input.
+    vm::Micros waitUntil = 0;
+    int waitInput = 0;
+    bool waitOn = false, waitMove = false;
     bool operator==(const State&) const = default;
   };
   State state() const;
   void restore(const State& state);
 
  private:
+  SimMachine(std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli, std::unique_ptr<Scheduler> own,
+             Scheduler* clock);
   vm::Status checkTargets(std::span<const std::int32_t> targets) const;
   vm::Micros travelTime(std::size_t motor, std::int32_t target) const;
-  void advanceBy(vm::Micros duration);
+  /// The clock moves by `duration`, or, waiting on the scheduler, the
+  /// call answers NotYet until then (`move`: a move's listener is told at its end).
+  vm::Status advanceBy(vm::Micros duration, bool move = false);
+  vm::Status waitForInput(int input, bool on);
   vm::Status fireRules(int output, bool on);
   void applyInputs();
 
@@ -129,13 +158,19 @@ class SimMachine final : public vm::Machine {
   // The current straight line's lock-step moves, knot-major (beginPath);
   // cleared, its capacity kept, by the next line or any other move.
   std::vector<MotorSegment> path_;
-  vm::Micros now_ = 0;
+  std::unique_ptr<Scheduler> ownClock_;  // a robot alone: its cell of one's clock
+  Scheduler* clock_ = nullptr;
+  bool cooperative_ = false;
+  vm::Micros waitUntil_ = 0;  // the wait begun (State::waitUntil, ...)
+  int waitInput_ = 0;
+  bool waitOn_ = false, waitMove_ = false;
   std::uint64_t knots_ = 0;
   vm::IoMask outputs_ = 0;
   vm::IoMask inputs_ = 0;
   CameraTriple windowShift_;
   CameraTriple viewRotation_;
   std::function<void(vm::Micros, vm::IoMask)> inputListener_;
+  std::function<void(vm::Micros, const InputCause&)> causeListener_;
   std::function<void()> moveListener_;
 };
 

@@ -14,7 +14,7 @@
 
 #include "model/workcell/collision_model.h"
 #include "runtime/sim/sim_machine.h"
-#include "runtime/sim/world.h"
+#include "runtime/cell/world.h"
 
 namespace collisiontest {
 

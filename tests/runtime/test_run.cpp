@@ -120,10 +120,17 @@ TEST_CASE("snapshots every 10 steps, restored out of order, replay the same step
   Traced whole(c);
   REQUIRE(whole.run->runToEnd().ok());
   const std::string all = whole.take();
+  // One entry a step: its line, after the input changes it saw (their own lines).
   std::vector<std::string> lines;
-  for (std::istringstream in(all); std::getline(in, lines.emplace_back());) {
-  }
-  lines.pop_back();
+  std::string events;
+  std::istringstream in(all);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(R"({"event":"input")", 0) == 0) {
+      events += line + '\n';
+    } else {
+      lines.push_back(events + line);
+      events.clear();
+    }
 
   Traced t(c);
   std::vector<rs::runtime::RunSnapshot> snaps;

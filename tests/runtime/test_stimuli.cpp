@@ -57,7 +57,7 @@ TEST_CASE("a good stimuli file becomes the model", "[stimuli]") {
       "cell.stim");
   REQUIRE(result.ok());
   CHECK(result->changes ==
-        std::vector<InputChange>{{1'500'000, 3, true}, {2'000'000, 3, false}, {0, 1, true}});
+        std::vector<InputChange>{{1'500'000, 3, true, 3}, {2'000'000, 3, false, 4}, {0, 1, true, 7}});  // their lines
   CHECK(result->rules ==
         std::vector<ReactiveRule>{{1, true, 2, true, 500'000, 5}, {4, false, 8, false, 0, 6}});  // lines 5 and 6
 }
@@ -138,7 +138,7 @@ TEST_CASE("every bad line is reported with its line, column and what was expecte
   const auto good = parseStimuli(
       "at 1.5 input 3 on\nwhen output 1 on then input 2 on after 0.5 ; ok\nat 3 input 1 on ; ok\n", "cell.stim");
   REQUIRE(good.ok());
-  CHECK(good->changes == std::vector<InputChange>{{1'500'000, 3, true}, {3'000'000, 1, true}});
+  CHECK(good->changes == std::vector<InputChange>{{1'500'000, 3, true, 1}, {3'000'000, 1, true, 3}});
   CHECK(good->rules == std::vector<ReactiveRule>{{1, true, 2, true, 500'000, 2}});  // line 2
 }
 

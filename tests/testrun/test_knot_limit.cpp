@@ -7,6 +7,7 @@
 // cell whose motors make a line take no time is stopped after 200,000
 // knots, not a million lines.
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <fstream>
 #include <regex>

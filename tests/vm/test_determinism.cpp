@@ -2,6 +2,7 @@
 // output, run after run; compiling twice gives the same bytes; running the
 // compiled image gives the same trace as running the source.
 #include <catch2/catch.hpp>
+#include <regex>
 
 #include <sstream>
 #include <string>
@@ -90,6 +91,18 @@ TEST_CASE("the same run twice gives byte-identical traces", "[vm][determinism]")
   REQUIRE(records.size() >= 2);
   const nlohmann::json summary = records.back();
   records.pop_back();
+  // The input changes are event lines of their own, each with its cause.
+  std::size_t inputEvents = 0;
+  std::erase_if(records, [&](const nlohmann::json& r) {
+    if (!r.contains("event")) return false;
+    CHECK(r["event"] == "input");
+    // Input 2 follows output 1 by the rules of lines 1 and 2; input 4 is line 3's.
+    CHECK(r["cause"] == (r["input"] == 4 ? "stimulus" : "rule"));
+    CHECK(r["cause_line"] == (r["input"] == 4 ? 3 : r["on"] == true ? 1 : 2));
+    ++inputEvents;
+    return true;
+  });
+  CHECK(inputEvents > 0);
   CHECK(summary["status"] == "finished");
   CHECK(records.size() == summary["steps"].get<std::size_t>());
   CHECK(summary["variables"]["COUNT"].get<int>() < 5);
@@ -117,8 +130,11 @@ TEST_CASE("the text trace has one line per executed instruction", "[vm][determin
   CHECK(header.find("time") != std::string::npos);
   CHECK(header.find("instr") != std::string::npos);
   std::size_t rows = 0;
-  for (std::string line; std::getline(in, line) && line.rfind("run of ", 0) != 0;) ++rows;
+  std::size_t inputEvents = 0;  // an input's change is an event line of its own
+  for (std::string line; std::getline(in, line) && line.rfind("run of ", 0) != 0;)
+    ++(std::regex_search(line, std::regex(R"(^ +[0-9.]+  input [0-9] (ON|OFF): )")) ? inputEvents : rows);
   CHECK(rows == steps);
+  CHECK(inputEvents > 0);
   CHECK(countLines(r.out, 'r') == 1);  // "run of ..." once
 }
 

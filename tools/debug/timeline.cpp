@@ -23,7 +23,8 @@ std::size_t snapshotBytes(const runtime::RunSnapshot& s) {
   b += heapBytes(s.vm.variables) + heapBytes(s.vm.callStack) + heapBytes(s.vm.softHome) + s.vm.outcome.message.capacity();
   b += heapBytes(s.rig.machine.positions) + heapBytes(s.rig.machine.segments) + heapBytes(s.rig.machine.path);
   b += s.rig.machine.schedule.reactive.size() * (sizeof(runtime::InputSchedule::State::Pending) + kSetNodeOverhead);
-  if (s.rig.world) b += heapBytes(s.rig.world->grasp.resting) + heapBytes(s.rig.world->grasp.letGo);
+  if (s.rig.cell.world) b += heapBytes(s.rig.cell.world->grasp.resting) + heapBytes(s.rig.cell.world->grasp.letGo);
+  b += s.rig.cell.clock.queue.size() * (sizeof(runtime::CellEvent) + kSetNodeOverhead);
   if (s.log) b += heapBytes(s.log->moves);
   b += heapBytes(s.rig.collisions);
   for (const runtime::CollisionEvent& e : s.rig.collisions) b += heapBytes(e.encoders);

@@ -1,4 +1,4 @@
-#include "runtime/sim/world.h"
+#include "runtime/cell/world.h"
 
 namespace rs::runtime {
 
