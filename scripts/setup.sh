@@ -21,11 +21,15 @@ packages=(
   libeigen3-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
   libcairo2-dev libedit-dev
   libcpp-httplib-dev libncurses-dev
+  liburdfdom-dev libtinyxml2-dev libconsole-bridge-dev libassimp-dev
 )
 # ninja-build: scripts/build.sh builds with Ninja, which keeps both cores
 # busy where make's per-library order leaves one idle (docs/performance.md).
 # libcpp-httplib-dev: the HTTP server of `robotsim teach`'s live page.
 # libncurses-dev: the terminal pendant (robotsim teach --tui) draws with ncurses.
+# liburdfdom-dev (with tinyxml2, whose line numbers position its errors,
+# and console_bridge, through which it reports) and libassimp-dev (mesh
+# files): the URDF reader, linked by the helper robotsim-urdf.
 # Catch2 and the unit tests build with the tree; the browser test drives a
 # real Chromium with playwright-core (pinned in tests/browser/package-lock.json);
 # lcov's genhtml reads robotsim test's coverage files; lua5.4, luajit and
