@@ -106,7 +106,7 @@ TEST_CASE("kdl: URDF arms read by robotsim and by kdl_parser give the same tool 
       {readData / "mimic_arm.urdf", ""},
   };
   std::uint64_t seed = 37;
-  for (const KdlReadFile& f : files) compareWithKdl(f, seed++, 200);
+  for (const KdlReadFile& f : files) compareWithKdl(f, seed++, 1000);
 }
 
 TEST_CASE("kdl: a mimic that COUPLING cannot say is an error naming the joint, not another robot", "[urdf][kdl]") {

@@ -199,6 +199,22 @@ TEST_CASE("urdf read: meshes by their feature edges - a missing mesh draws the l
   CHECK(read.diagnostics[0].message.find("gone.dae") != std::string::npos);
 }
 
+TEST_CASE("urdf read: an OBJ mesh too - its quadrilateral faces' 12 feature edges, its hull", "[urdf]") {
+  const rs::urdf::UrdfRead read = readData("mesh_obj.urdf");
+  for (const auto& d : read.diagnostics) INFO(d.message);
+  REQUIRE(read.robot);
+  CHECK(read.diagnostics.empty());
+  // A cube's 12 edges (a face's diagonal, if Assimp splits it, folds by 0).
+  CHECK(read.robot->links[0].segments.size() == 12);
+  REQUIRE(read.robot->links[0].collision.size() == 1);
+  // 1 m scaled by 0.2 is 200 mm on each side, whatever the turn to y up.
+  Eigen::AlignedBox3d box;
+  for (const auto& p : read.robot->links[0].collision[0].points) box.extend(p);
+  CHECK(box.sizes().x() == Approx(200));
+  CHECK(box.sizes().y() == Approx(200));
+  CHECK(box.sizes().z() == Approx(200));
+}
+
 TEST_CASE("urdf read: material colours become the nearest EGA colour", "[urdf]") {
   CHECK(rs::urdf::nearestEga(0.1, 0.1, 0.8) == rs::workcell::Color::Blue);
   CHECK(rs::urdf::nearestEga(1, 1, 1) == rs::workcell::Color::White);

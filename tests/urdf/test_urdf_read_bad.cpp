@@ -31,6 +31,7 @@ TEST_CASE("urdf read bad: a positioned error with a hint for each kind of bad fi
       {"zero_axis.urdf", 4, 3, "axis of zero length"},
       {"not_finite.urdf", 6, 5, "'nan' is not a finite number"},
       {"floating.urdf", 3, 3, "joint 'free' is floating"},
+      {"planar.urdf", 3, 3, "joint 'slide' is planar"},
       {"mimic_bad.urdf", 4, 3, "joint 'j2' mimics 'j1' with multiplier 2"},
       {"not_a_mesh.urdf", 2, 3, "not a mesh robotsim can read"},
   };
