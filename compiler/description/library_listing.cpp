@@ -10,6 +10,7 @@
 #include "compiler/description/description.h"
 #include "compiler/description/library.h"
 #include "diag/diagnostic.h"
+#include "model/urdf/urdf_read.h"
 
 namespace rs::compiler {
 
@@ -59,20 +60,16 @@ std::vector<fs::path> filesOf(const fs::path& dir, std::string_view extension) {
 std::vector<fs::path> rsdFiles(const fs::path& dir) { return filesOf(dir, ".rsd"); }
 
 // A URDF file's summary: the name its <robot> element gives, found in its
-// first bytes without parsing the XML (the listing reads no file whole).
-std::string urdfSummary(const fs::path& file) {
-  base::FileRead read = base::readFile(file.string(), kListedFileBytes);
+// text without parsing the XML (the listing runs no URDF reader).
+std::string urdfSummary(std::string_view text) {
   std::string name;
-  if (read.bytes) {
-    const std::string_view text(*read.bytes);
-    const std::size_t robot = text.find("<robot");
-    const std::size_t attr = robot == std::string_view::npos ? robot : text.find("name=", robot);
-    if (attr != std::string_view::npos && attr + 6 < text.size()) {
-      const char quote = text[attr + 5];
-      const std::size_t end = text.find(quote, attr + 6);
-      if ((quote == '"' || quote == '\'') && end != std::string_view::npos && end - attr < 80)
-        name = std::string(text.substr(attr + 6, end - attr - 6));
-    }
+  const std::size_t robot = text.find("<robot");
+  const std::size_t attr = robot == std::string_view::npos ? robot : text.find("name=", robot);
+  if (attr != std::string_view::npos && attr + 6 < text.size()) {
+    const char quote = text[attr + 5];
+    const std::size_t end = text.find(quote, attr + 6);
+    if ((quote == '"' || quote == '\'') && end != std::string_view::npos && end - attr < 80)
+      name = std::string(text.substr(attr + 6, end - attr - 6));
   }
   return name.empty() ? std::string("a URDF file.") : "a URDF file, robot " + name + ".";
 }
@@ -138,9 +135,15 @@ LibraryListing listLibrary(const std::vector<fs::path>& searchPath) {
     // URDF files, named by their file name (docs/models.md, "Reading URDF").
     for (const fs::path& dirOrRobots : {dir, dir / "robots"})
       for (const fs::path& file : filesOf(dirOrRobots, ".urdf")) {
+        // The URDF reader's own limit, as for descriptions above.
+        base::FileRead read = base::readFile(file.string(), urdf::kMaxUrdfBytes);
+        if (!read.bytes) {
+          listing.skipped.push_back({file, std::move(read.error)});
+          continue;
+        }
         const std::string name = file.filename().string();
         const bool hidden = !found.insert("robot " + name).second;
-        listing.entries.push_back({"robot", name, file, urdfSummary(file), hidden});
+        listing.entries.push_back({"robot", name, file, urdfSummary(*read.bytes), hidden});
       }
   }
   // stable: a hidden entry stays after the one found first on the path.

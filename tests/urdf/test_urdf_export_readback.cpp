@@ -83,8 +83,12 @@ TEST_CASE("urdf read-back: every library robot's export gives the same table and
         const double home = robot->chain->joint(static_cast<int>(j + 1)).home;
         const double q = home + spec.precision * std::uniform_int_distribution<int>(spec.min, spec.max)(rng);
         const bool length = spec.type == rs::kinematics::JointType::Prismatic;
+        // The same motion from home: home is the D-H row's own value at
+        // encoder 0, which the export's zero pose is (each table says it).
+        const double homeBack = back["rows"][j]["home"].get<double>();
+        const double moved = q - home;
         theta += fmt::format("{}{}", j ? "," : "", q);
-        thetaBack += fmt::format("{}{}", j ? "," : "", length ? q * r.mm : q);
+        thetaBack += fmt::format("{}{}", j ? "," : "", homeBack + (length ? moved * r.mm : moved));
       }
       const json a = jsonOf({"where", r.name, "--theta", theta, "--json"});
       const json b = jsonOf({"where", file, "--tip", "tool0", "--theta", thetaBack, "--json"});
