@@ -21,11 +21,17 @@ packages=(
   libeigen3-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
   libcairo2-dev libedit-dev
   libcpp-httplib-dev libncurses-dev
+  liburdfdom-dev libtinyxml2-dev libconsole-bridge-dev libassimp-dev
 )
 # ninja-build: scripts/build.sh builds with Ninja, which keeps both cores
 # busy where make's per-library order leaves one idle (docs/performance.md).
 # libcpp-httplib-dev: the HTTP server of `robotsim teach`'s live page.
 # libncurses-dev: the terminal pendant (robotsim teach --tui) draws with ncurses.
+# liburdfdom-dev (with tinyxml2, whose line numbers position its errors,
+# and console_bridge, through which it reports) and libassimp-dev (mesh
+# files): the URDF reader, linked by the helper robotsim-urdf, which every
+# build makes (so in both modes; the .deb's Depends names their runtime
+# libraries, computed by dpkg-shlibdeps from the helper).
 # Catch2 and the unit tests build with the tree; the browser test drives a
 # real Chromium with playwright-core (pinned in tests/browser/package-lock.json);
 # lcov's genhtml reads robotsim test's coverage files; lua5.4, luajit and
@@ -43,7 +49,7 @@ packages=(
 # with a terminal emulator behind it) whose screen it reads. Orocos KDL is
 # the inverse-kinematics benchmark's peer and independent check
 # (bench/ik_bench.cpp; the benchmark builds without it); with its URDF
-# parser (libkdl-parser-dev, urdfdom's liburdfdom-dev) it reads robotsim's
+# parser (libkdl-parser-dev, with urdfdom, already in the build list) it reads robotsim's
 # URDF exports in the urdf_kdl test, and urdfdom's check_urdf
 # (liburdfdom-tools) checks them in urdf_check. zsh and fish test
 # the shell completions with their own completion machinery; parallel and
@@ -51,7 +57,7 @@ packages=(
 # (parallel copies files with it) run the
 # grading recipe of docs/testing.md over ssh.
 [ "$mode" = test ] && packages+=(chromium fonts-liberation lcov lua5.4 luajit libfcl-dev neovim clang libclang-rt-14-dev llvm unzip tmux
-  liborocos-kdl-dev libkdl-parser-dev liburdfdom-dev liburdfdom-tools zsh fish parallel openssh-server rsync time)
+  liborocos-kdl-dev libkdl-parser-dev liburdfdom-tools zsh fish parallel openssh-server rsync time)
 
 missing=()
 for p in "${packages[@]}"; do

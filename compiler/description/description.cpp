@@ -50,6 +50,7 @@ void Parser::markDamaged(Block b) {
       f_.robots.back().damaged = true;
       if (robotItem_ == Item::Joint) f_.robots.back().joints.back().damaged = true;
       if (robotItem_ == Item::Link) f_.robots.back().links.back().damaged = true;
+      if (robotItem_ == Item::Tool) f_.robots.back().tool->damaged = true;
       break;
     case Block::None: break;
   }

@@ -88,6 +88,9 @@ struct RobotDef {
   std::vector<RobotLinkDef> links;
   std::vector<JointDef> joints;
   NameRef gripper;  // empty name: none
+  /// TOOL ORIGIN .. XAXIS .. ZAXIS ..: the tool centre point's frame at
+  /// home, where it is not the last link's frame (`link` holds TOOL's place).
+  std::optional<RobotLinkDef> tool;
   bool damaged = false;
 };
 

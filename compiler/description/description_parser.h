@@ -46,8 +46,8 @@ class Parser {
   Block block_ = Block::None;
   diag::Pos blockPos_;
   Color color_ = Color::White;
-  enum class Item { None, Link, Joint };
-  Item robotItem_ = Item::None;  // in a ROBOT: what the last LINK or JOINT line added
+  enum class Item { None, Link, Joint, Tool };
+  Item robotItem_ = Item::None;  // in a ROBOT: what the last LINK, JOINT or TOOL line added
 };
 
 }  // namespace rs::compiler::description_detail

@@ -100,23 +100,41 @@ bool Parser::gripperClause(Cursor& c, GripperDef& g) {
 }
 
 bool Parser::robotClause(Cursor& c, RobotDef& r) {
-  if (c.keyword("LINK")) {
+  if (const diag::Pos at = c.pos(); c.keyword("LINK")) {
+    if (r.tool) {
+      diag_.error(at, "LINK after TOOL: the tool comes after the last link");
+      return false;
+    }
     robotItem_ = Item::Link;
     r.links.push_back({});
     return c.name(r.links.back().link, "a link name");
   }
   if (c.keyword("FRAME")) return true;  // introduces ORIGIN, XAXIS, ZAXIS
+  {
+    const diag::Pos at = c.pos();
+    if (c.keyword("TOOL")) {
+      if (r.tool) {
+        diag_.error(at, "a second TOOL: a robot has one tool centre point");
+        return false;
+      }
+      r.tool.emplace();
+      r.tool->link = {"TOOL", at};
+      robotItem_ = Item::Tool;
+      return true;
+    }
+  }
   for (auto [kw, member, has] : {std::tuple{"ORIGIN", &RobotLinkDef::origin, &RobotLinkDef::hasOrigin},
                                  std::tuple{"XAXIS", &RobotLinkDef::xPoint, &RobotLinkDef::hasX},
                                  std::tuple{"ZAXIS", &RobotLinkDef::zPoint, &RobotLinkDef::hasZ}}) {
     const diag::Pos at = c.pos();
     if (!c.keyword(kw)) continue;
-    if (r.links.empty()) {
+    if (r.links.empty() && robotItem_ != Item::Tool) {
       diag_.error(at, fmt::format("{} before any LINK: a frame belongs to the LINK before it", kw));
       return false;
     }
-    r.links.back().*has = true;
-    return c.point(r.links.back().*member, fmt::format("the frame's {} point", kw));
+    RobotLinkDef& owner = robotItem_ == Item::Tool ? *r.tool : r.links.back();
+    owner.*has = true;
+    return c.point(owner.*member, fmt::format("the frame's {} point", kw));
   }
   if (c.keyword("JOINT")) {
     robotItem_ = Item::None;  // until the joint is added
@@ -153,7 +171,8 @@ bool Parser::robotClause(Cursor& c, RobotDef& r) {
     if (diag_.errorCount() > before) return false;
   }
   return c.failOneOf(
-      "LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, ACCELERATION, GRIPPER or END");
+      "LINK, FRAME, ORIGIN, XAXIS, ZAXIS, TOOL, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, ACCELERATION, GRIPPER "
+      "or END");
 }
 
 }  // namespace rs::compiler::description_detail

@@ -14,6 +14,7 @@
 
 #include "model/kinematics/chain_model.h"
 #include "model/kinematics/frame.h"
+#include "model/urdf/urdf_read_remote.h"
 #include "model/workcell/collision_model.h"
 
 namespace rs::compiler {
@@ -84,7 +85,39 @@ bool Library::hasErrors() const { return diag::hasErrors(diagnostics_); }
 const diag::SourceFile* Library::source(const std::string& file) const {
   for (const auto& f : files_)
     if (f->source && f->source->name() == file) return f->source.get();
+  for (const auto& s : urdfSources_)
+    if (s->name() == file) return s.get();
   return nullptr;
+}
+
+fs::path Library::findUrdf(const std::string& fileOrName, const fs::path& besides) const {
+  std::error_code ec;
+  const fs::path here = besides.empty() ? fs::path(fileOrName) : besides / fileOrName;
+  if (!libraryNamesOnly_ && fs::exists(here, ec)) return here;
+  for (const fs::path& dir : searchPath_)
+    for (const fs::path& candidate : {dir / fileOrName, dir / "robots" / fileOrName})
+      if (fs::is_regular_file(candidate, ec)) return candidate;
+  return {};
+}
+
+std::optional<workcell::Robot> Library::urdfRobot(const fs::path& path) {
+  std::error_code ec;
+  const std::string key = fs::weakly_canonical(path, ec).string();
+  if (auto it = urdfRobots_.find(key); it != urdfRobots_.end()) return it->second;
+  const auto open = overlay_.find(key);  // an editor's unsaved text
+  urdf::UrdfRead read = urdf::readUrdfInHelper(path, urdfOptions_, open == overlay_.end() ? nullptr : &open->second);
+  bool positioned = false;
+  for (diag::Diagnostic& d : read.diagnostics) {
+    positioned = positioned || d.pos.line > 0;
+    diagnostics_.push_back(std::move(d));
+  }
+  if (positioned) {
+    diag::Result<std::string> text = open != overlay_.end()
+                                         ? diag::Result<std::string>(open->second)
+                                         : diag::readInput(path.string(), urdf::kMaxUrdfBytes, "cannot read URDF file");
+    if (text) urdfSources_.push_back(std::make_unique<diag::SourceFile>(path.string(), std::move(*text)));
+  }
+  return urdfRobots_[key] = std::move(read.robot);
 }
 
 void Library::error(const DescriptionFile& file, diag::Pos pos, std::string message) {
@@ -289,6 +322,24 @@ std::optional<workcell::Robot> Library::checkRobot(const RobotDef& def, const De
     if (frame.ok()) robot.frames.push_back(*frame.value);
     else ok = false;
   }
+  if (def.tool && !def.tool->damaged) {
+    const RobotLinkDef& t = *def.tool;
+    if (!def.gripper.name.empty()) {
+      error(from, t.link.pos, "a robot with a GRIPPER has its tool centre point there: TOOL and GRIPPER exclude each other");
+      ok = false;
+    } else if (!t.hasOrigin || !t.hasX || !t.hasZ) {
+      error(from, t.link.pos, "TOOL needs ORIGIN, XAXIS and ZAXIS points");
+      ok = false;
+    } else {
+      auto frame = kinematics::frameFromPoints(t.origin.v, t.xPoint.v, t.zPoint.v, {}, -1);
+      const compiler::KinematicsPlaces places{from.source->name(), "the TOOL", t.origin.pos};
+      for (const auto& e : frame.errors) diagnostics_.push_back(compiler::kinematicsDiagnostic(e, places));
+      if (frame.ok()) robot.tool = *frame.value;
+      else ok = false;
+    }
+  } else if (def.tool) {
+    ok = false;
+  }
   if (!def.gripper.name.empty()) {
     auto g = gripper(def.gripper, from);
     if (!g) ok = false;
@@ -345,6 +396,7 @@ std::optional<workcell::Robot> Library::checkRobot(const RobotDef& def, const De
     diagnostics_.push_back(compiler::kinematicsDiagnostic(e, places));
   if (!chain.ok()) return std::nullopt;
   robot.chain = std::move(chain.value);
+  if (robot.tool) robot.chain = robot.chain->withTool(robot.frames.back().inverse(Eigen::Isometry) * *robot.tool);
   return robot;
 }
 
@@ -359,7 +411,25 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
       ok = false;
       continue;
     }
-    if (p.isRobot) {
+    if (p.isRobot && urdf::isUrdfName(p.what.name)) {
+      // A URDF file, named relative to the cell's file: its root link's
+      // origin goes to AT (docs/models.md, "Reading URDF").
+      const fs::path file = findUrdf(p.what.name, fs::path(from.source->name()).parent_path());
+      if (file.empty()) {
+        error(from, p.what.pos, fmt::format("no URDF file '{}' beside this file or on the library path", p.what.name));
+        ok = false;
+        continue;
+      }
+      auto robot = urdfRobot(file);
+      if (!robot) {
+        ok = false;
+        continue;
+      }
+      Eigen::Isometry3d place = Eigen::Isometry3d::Identity();
+      place.linear() = p.rotation;
+      place.translation() = p.at;
+      cell.robots.push_back({std::move(*robot), place});
+    } else if (p.isRobot) {
       const RobotDef* r = find<RobotDef>(Kind::Robot, p.what.name, &from);
       if (!r) {
         error(from, p.what.pos, fmt::format("unknown robot '{}': not defined in this file, and no {}.rsd beside it "
@@ -462,6 +532,14 @@ const DescriptionFile* Library::loadRoot(const std::string& fileOrName, Kind kin
 }
 
 std::optional<workcell::Robot> Library::robot(const std::string& fileOrName) {
+  if (urdf::isUrdfName(fileOrName)) {
+    const fs::path file = findUrdf(fileOrName, {});
+    if (file.empty()) {
+      diagnostics_.push_back({fileOrName, {}, diag::Severity::Error, "no such URDF file, here or on the library path"});
+      return std::nullopt;
+    }
+    return urdfRobot(file);
+  }
   // Build even when the root file has errors, so the files it uses are
   // read and their errors reported too; only an error-free build returns.
   const DescriptionFile* f = loadRoot(fileOrName, Kind::Robot);
@@ -478,6 +556,16 @@ std::optional<workcell::Robot> Library::robot(const std::string& fileOrName) {
 }
 
 std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrName) {
+  if (urdf::isUrdfName(fileOrName)) {
+    // A URDF robot alone: where it was drawn, in no room.
+    std::optional<workcell::Robot> r = robot(fileOrName);
+    if (!r) return std::nullopt;
+    workcell::Workcell cell;
+    cell.name = r->name;
+    cell.floor.reset();
+    cell.robots.push_back({std::move(*r), Eigen::Isometry3d::Identity()});
+    return cell;
+  }
   const DescriptionFile* f = loadRoot(fileOrName, Kind::Workcell);
   if (!f) return std::nullopt;
   std::optional<workcell::Workcell> cell;
@@ -501,6 +589,7 @@ std::optional<workcell::Workcell> Library::workcell(const std::string& fileOrNam
 }
 
 bool Library::holdsWorkcell(const std::string& fileOrName) {
+  if (urdf::isUrdfName(fileOrName)) return false;
   const DescriptionFile* f = loadRoot(fileOrName, Kind::Workcell);  // read once: load() keeps it
   return f && !f->workcells.empty();
 }

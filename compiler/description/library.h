@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "compiler/description/description.h"
+#include "model/urdf/urdf_read.h"
 #include "model/workcell/model.h"
 #include "vm/image.h"
 
@@ -31,8 +32,11 @@ class Library {
  public:
   explicit Library(std::vector<std::filesystem::path> searchPath);
 
-  /// A robot from a description file (its first ROBOT) or a library name.
+  /// A robot from a description file (its first ROBOT), a URDF file
+  /// (`.urdf`: docs/models.md, "Reading URDF") or a library name.
   std::optional<workcell::Robot> robot(const std::string& fileOrName);
+  /// How URDF files are read (--tip, --precision): before the first lookup.
+  void setUrdfOptions(urdf::UrdfOptions options) { urdfOptions_ = std::move(options); }
   /// A workcell from a file (its first WORKCELL, or else its first ROBOT
   /// placed alone at the origin) or a library name.
   std::optional<workcell::Workcell> workcell(const std::string& fileOrName);
@@ -79,6 +83,12 @@ class Library {
   /// vm::kMaxSecondsToSpeed or more to reach its speed.
   bool reachesSpeed(const DescriptionFile& file, diag::Pos at, std::int32_t speed, std::int32_t acceleration);
   void reportHomeCollisions(const workcell::Workcell& cell, const WorkcellDef& def, const DescriptionFile& from);
+  /// A URDF file's robot, read once (in the helper robotsim-urdf); its
+  /// diagnostics join this library's.
+  std::optional<workcell::Robot> urdfRobot(const std::filesystem::path& path);
+  /// The URDF file a name stands for: the file itself, else NAME on the
+  /// library path (directly or in robots/); empty when there is none.
+  std::filesystem::path findUrdf(const std::string& fileOrName, const std::filesystem::path& besides) const;
 
   std::vector<std::filesystem::path> searchPath_;
   std::vector<std::unique_ptr<DescriptionFile>> files_;  // in load order
@@ -91,6 +101,9 @@ class Library {
   std::map<const RobotDef*, std::optional<workcell::Robot>> robots_;
   std::map<const GripperDef*, std::optional<workcell::Gripper>> grippers_;
   std::set<const WorkcellDef*> cellsBuilt_;
+  urdf::UrdfOptions urdfOptions_;
+  std::map<std::string, std::optional<workcell::Robot>> urdfRobots_;  // by canonical path
+  std::vector<std::unique_ptr<diag::SourceFile>> urdfSources_;        // for carets under their lines
 };
 
 /// The motor table a program sees on a robot: arm joints in order, then

@@ -10,6 +10,7 @@
 #include "compiler/description/description.h"
 #include "compiler/description/library.h"
 #include "diag/diagnostic.h"
+#include "model/urdf/urdf_read.h"
 
 namespace rs::compiler {
 
@@ -46,14 +47,31 @@ std::string kindDefined(const DescriptionFile& f, const std::string& name) {
 
 // The .rsd files of one directory, sorted, so that the listing is the same
 // on every file system.
-std::vector<fs::path> rsdFiles(const fs::path& dir) {
+std::vector<fs::path> filesOf(const fs::path& dir, std::string_view extension) {
   std::vector<fs::path> files;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return files;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    if (it->path().extension() == ".rsd" && it->is_regular_file(ec)) files.push_back(it->path());
+    if (it->path().extension() == extension && it->is_regular_file(ec)) files.push_back(it->path());
   std::sort(files.begin(), files.end());
   return files;
+}
+
+std::vector<fs::path> rsdFiles(const fs::path& dir) { return filesOf(dir, ".rsd"); }
+
+// A URDF file's summary: the name its <robot> element gives, found in its
+// text without parsing the XML (the listing runs no URDF reader).
+std::string urdfSummary(std::string_view text) {
+  std::string name;
+  const std::size_t robot = text.find("<robot");
+  const std::size_t attr = robot == std::string_view::npos ? robot : text.find("name=", robot);
+  if (attr != std::string_view::npos && attr + 6 < text.size()) {
+    const char quote = text[attr + 5];
+    const std::size_t end = text.find(quote, attr + 6);
+    if ((quote == '"' || quote == '\'') && end != std::string_view::npos && end - attr < 80)
+      name = std::string(text.substr(attr + 6, end - attr - 6));
+  }
+  return name.empty() ? std::string("a URDF file.") : "a URDF file, robot " + name + ".";
 }
 
 }  // namespace
@@ -114,6 +132,19 @@ LibraryListing listLibrary(const std::vector<fs::path>& searchPath) {
       const bool hidden = !found.insert(kind + ' ' + name).second;
       listing.entries.push_back({kind, name, file, std::move(summary), hidden});
     }
+    // URDF files, named by their file name (docs/models.md, "Reading URDF").
+    for (const fs::path& dirOrRobots : {dir, dir / "robots"})
+      for (const fs::path& file : filesOf(dirOrRobots, ".urdf")) {
+        // The URDF reader's own limit, as for descriptions above.
+        base::FileRead read = base::readFile(file.string(), urdf::kMaxUrdfBytes);
+        if (!read.bytes) {
+          listing.skipped.push_back({file, std::move(read.error)});
+          continue;
+        }
+        const std::string name = file.filename().string();
+        const bool hidden = !found.insert("robot " + name).second;
+        listing.entries.push_back({"robot", name, file, urdfSummary(*read.bytes), hidden});
+      }
   }
   // stable: a hidden entry stays after the one found first on the path.
   std::stable_sort(listing.entries.begin(), listing.entries.end(), [](const LibraryEntry& a, const LibraryEntry& b) {

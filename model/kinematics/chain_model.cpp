@@ -109,6 +109,13 @@ ChainModel ChainModel::placedAt(const Eigen::Isometry3d& F_world_0) const {
   return placed;
 }
 
+ChainModel ChainModel::withTool(const Eigen::Isometry3d& F_n_tool) const {
+  ChainModel tooled = *this;
+  tooled.F_n_tool_ = F_n_tool;
+  tooled.hasTool_ = !F_n_tool.matrix().isIdentity(0.0);
+  return tooled;
+}
+
 std::vector<DhRow> ChainModel::table() const {
   std::vector<DhRow> rows;
   rows.reserve(joints_.size());

@@ -55,6 +55,10 @@ class ChainModel {
 
   /// The same chain with its base placed at `F_world_0` (a workcell's AT/ROTATE).
   ChainModel placedAt(const Eigen::Isometry3d& F_world_0) const;
+  /// The same chain with a tool frame: the tool centre point's frame in
+  /// frame n, for a tool that no D-H frame can be (a URDF arm's tip link,
+  /// a description's TOOL). Identity by default: the tool is frame n.
+  ChainModel withTool(const Eigen::Isometry3d& F_n_tool) const;
 
   /// Number of joints n (frames are 0..n).
   int size() const { return static_cast<int>(joints_.size()); }
@@ -63,6 +67,9 @@ class ChainModel {
   std::span<const Joint> joints() const { return joints_; }
   /// The base frame (frame 0) in the world.
   const Eigen::Isometry3d& F_world_0() const { return F_world_0_; }
+  /// The tool frame in frame n (withTool); identity unless one was given.
+  const Eigen::Isometry3d& F_n_tool() const { return F_n_tool_; }
+  bool hasTool() const { return hasTool_; }
   /// Smallest encoder vector the model can read: 1 + the largest index.
   int encoderCount() const { return encoderCount_; }
   /// The D-H table (the paper's TABLE).
@@ -72,6 +79,8 @@ class ChainModel {
   ChainModel() = default;
   std::vector<Joint> joints_;
   Eigen::Isometry3d F_world_0_ = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d F_n_tool_ = Eigen::Isometry3d::Identity();
+  bool hasTool_ = false;
   int encoderCount_ = 0;
 };
 

@@ -75,7 +75,8 @@ std::optional<Eigen::Isometry3d> transform(const ChainModel& model, const ChainD
 }
 
 Eigen::Isometry3d toolPose(const ChainModel& model, const ChainData& data) {
-  return model.F_world_0() * data.F_0_i.back();
+  if (!model.hasTool()) return model.F_world_0() * data.F_0_i.back();
+  return model.F_world_0() * data.F_0_i.back() * model.F_n_tool();
 }
 
 }  // namespace rs::kinematics

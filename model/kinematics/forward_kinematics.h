@@ -30,8 +30,9 @@ Eigen::Vector3d positionWithJoint(const ChainModel& model, const ChainData& data
 /// i = j, the inverse of T_i^j for i > j. Empty when i or j is not in 0..n.
 std::optional<Eigen::Isometry3d> transform(const ChainModel& model, const ChainData& data, int i, int j);
 
-/// F_world_n: the end-effector frame (tool centre point, x = n, z = a) in
-/// the world, from the last forwardKinematics.
+/// F_world_tool: the end-effector frame (tool centre point, x = n, z = a)
+/// in the world, from the last forwardKinematics: frame n, or the chain's
+/// tool frame in it (ChainModel::withTool).
 Eigen::Isometry3d toolPose(const ChainModel& model, const ChainData& data);
 
 }  // namespace rs::kinematics

@@ -99,6 +99,20 @@ std::string nearestOrientation(const ChainModel& m, const IkSolution& s, const T
   return what;
 }
 
+// The target of frame n for a chain with a tool frame: F_0_n = F_0_tool ·
+// F_n_tool⁻¹. A tool frame that only moves along the approach keeps what
+// the user wrote; any other needs the target's whole rotation (the caller
+// filled in the rest from the previous point), so then both axes count.
+ToolTarget frameNTarget(const ChainModel& m, const ToolTarget& t) {
+  const Eigen::Isometry3d& tool = m.F_n_tool();
+  ToolTarget out = t;
+  out.rotation = t.rotation * tool.linear().transpose();
+  out.position = t.position - out.rotation * tool.translation();
+  const bool alongApproach = tool.linear().isIdentity(0.0) && tool.translation().head<2>().isZero(0.0);
+  if (!alongApproach) out.approachGiven = out.normalGiven = true;
+  return out;
+}
+
 }  // namespace
 
 InverseKinematics::InverseKinematics(const ChainModel& model) : model_(model), family_(detectFamily(model)) {}
@@ -145,8 +159,9 @@ IkSolutions InverseKinematics::solveConfig(const ToolTarget& target, std::span<c
   return solveBranches(target, reference, ik::Branches{false, config});
 }
 
-IkSolutions InverseKinematics::solveBranches(const ToolTarget& target, std::span<const double> reference,
+IkSolutions InverseKinematics::solveBranches(const ToolTarget& toolTarget, std::span<const double> reference,
                                              const ik::Branches& want) const {
+  const ToolTarget target = model_.hasTool() ? frameNTarget(model_, toolTarget) : toolTarget;
   IkSolutions out;
   const int n = model_.size();
   if (n == 0 || n > kMaxIkJoints || reference.size() != static_cast<std::size_t>(n)) {

@@ -11,7 +11,10 @@ namespace rs::workcell {
 namespace {
 
 constexpr std::uint32_t kCellMagic = 0x4C435352;  // "RSCL"
+// Version 2 adds a robot's tool frame (Robot::tool); a cell without one is
+// written as version 1, byte for byte as before.
 constexpr std::uint16_t kCellVersion = 1;
+constexpr std::uint16_t kCellVersionTool = 2;
 // The image's byte writer and reader, with the cell's compound fields.
 class Out : public base::ByteWriter {
  public:
@@ -77,12 +80,16 @@ class In : public base::ByteReader {
   bool atEnd() const { return remaining() == 0; }
 };
 
-void writeRobot(Out& o, const Robot& r) {
+void writeRobot(Out& o, const Robot& r, std::uint16_t version) {
   o.str(r.name);
   o.u32(static_cast<std::uint32_t>(r.links.size()));
   for (const Shape& s : r.links) o.shape(s);
   o.u32(static_cast<std::uint32_t>(r.frames.size()));
   for (const Eigen::Isometry3d& f : r.frames) o.pose(f);
+  if (version >= kCellVersionTool) {
+    o.u8(r.tool.has_value());
+    if (r.tool) o.pose(*r.tool);
+  }
   o.u32(static_cast<std::uint32_t>(r.joints.size()));
   for (const JointSpec& j : r.joints) {
     o.u8(static_cast<std::uint8_t>(j.type)), o.u8(static_cast<std::uint8_t>(j.letter)), o.u8(j.coupling);
@@ -98,13 +105,14 @@ void writeRobot(Out& o, const Robot& r) {
   o.pose(g.model.F_G_E);
 }
 
-std::optional<Robot> readRobot(In& in) {
+std::optional<Robot> readRobot(In& in, std::uint16_t version) {
   Robot r;
   r.name = in.name();
   const std::size_t nl = in.count(6, "link");
   for (std::size_t i = 0; i < nl && !in.failed; ++i) r.links.push_back(in.shape());
   const std::size_t nf = in.count(96, "frame");
   for (std::size_t i = 0; i < nf && !in.failed; ++i) r.frames.push_back(in.pose());
+  if (version >= kCellVersionTool && in.u8() != 0 && !in.failed) r.tool = in.pose();
   const std::size_t nj = in.count(23, "joint");
   for (std::size_t i = 0; i < nj && !in.failed; ++i) {
     JointSpec j;
@@ -142,6 +150,7 @@ std::optional<Robot> readRobot(In& in) {
     return std::nullopt;
   }
   r.chain = std::move(chain.value);
+  if (r.tool) r.chain = r.chain->withTool(r.frames.back().inverse(Eigen::Isometry) * *r.tool);
   return r;
 }
 
@@ -149,11 +158,14 @@ std::optional<Robot> readRobot(In& in) {
 
 std::vector<std::uint8_t> encodeCell(const Workcell& cell) {
   Out o;
+  std::uint16_t version = kCellVersion;
+  for (const PlacedRobot& r : cell.robots)
+    if (r.robot.tool) version = kCellVersionTool;
   o.u32(kCellMagic);
-  o.u16(kCellVersion);
+  o.u16(version);
   o.str(cell.name);
   o.u32(static_cast<std::uint32_t>(cell.robots.size()));
-  for (const PlacedRobot& r : cell.robots) writeRobot(o, r.robot), o.pose(r.F_world_design);
+  for (const PlacedRobot& r : cell.robots) writeRobot(o, r.robot, version), o.pose(r.F_world_design);
   o.u32(static_cast<std::uint32_t>(cell.objects.size()));
   for (const PlacedObject& ob : cell.objects) o.shape(ob.shape), o.pose(ob.F_world_design);
   return o.out;
@@ -162,13 +174,14 @@ std::vector<std::uint8_t> encodeCell(const Workcell& cell) {
 diag::Result<Workcell> decodeCell(std::span<const std::uint8_t> bytes) {
   In in(bytes);
   if (in.u32() != kCellMagic) return diag::refusal("cell section: bad magic number");
-  if (const std::uint16_t v = in.u16(); v != kCellVersion)
-    return diag::refusal(fmt::format("cell section: version {} is not supported", v));
+  const std::uint16_t version = in.u16();
+  if (version != kCellVersion && version != kCellVersionTool)
+    return diag::refusal(fmt::format("cell section: version {} is not supported", version));
   Workcell cell;
   cell.name = in.name();
   const std::size_t nr = in.count(16, "robot");
   for (std::size_t i = 0; i < nr && !in.failed; ++i) {
-    std::optional<Robot> r = readRobot(in);
+    std::optional<Robot> r = readRobot(in, version);
     const Eigen::Isometry3d place = in.pose();
     if (r) cell.robots.push_back({std::move(*r), place});
   }

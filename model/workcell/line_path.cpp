@@ -42,6 +42,12 @@ double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, con
   return (p - (a + t * ab)).norm();
 }
 
+// The tool frame in frame 0 from the last forward kinematics (frame n, or
+// the chain's tool frame in it).
+Eigen::Isometry3d toolIn0(const kinematics::ChainModel& chain, const kinematics::ChainData& data) {
+  return chain.hasTool() ? data.F_0_i.back() * chain.F_n_tool() : data.F_0_i.back();
+}
+
 std::string percentAlong(double s) { return fmt::format("{:.1f}%", 100.0 * s); }
 
 }  // namespace
@@ -137,7 +143,7 @@ std::optional<LineProblem> LinePlanner::cached(std::uint64_t kind, std::span<con
 
 Eigen::Vector3d LinePlanner::tcpOf(std::span<const double> q, LinePath& path) const {
   kinematics::forwardKinematics(chain(), path.data_, q);
-  return path.data_.F_0_i.back().translation();
+  return toolIn0(chain(), path.data_).translation();
 }
 
 int LinePlanner::countsOf(std::span<const double> q, LinePath& path) const {
@@ -186,7 +192,7 @@ bool LinePlanner::solveAt(const Line& line, double s, std::uint8_t config, LineP
     // What the arm keeps of its orientation (a SCARA's heading, a five-axis
     // arm's pitch and roll) turns with the joints that set it, evenly.
     kinematics::forwardKinematics(chain(), path.data_, path.ref_);
-    target.rotation = path.data_.F_0_i.back().linear();
+    target.rotation = toolIn0(chain(), path.data_).linear();
   }
   const kinematics::IkSolutions solved = ik_.solveConfig(target, path.ref_, config);
   if (!solved.ok()) {
@@ -210,11 +216,11 @@ std::optional<LineProblem> LinePlanner::planTo(std::span<const std::int32_t> sta
     Line line;
     line.toPoint = true;
     kinematics::forwardKinematics(chain(), path.data_, path.q0_);
-    line.p0 = path.data_.F_0_i.back().translation();
-    line.r0 = Eigen::Quaterniond(path.data_.F_0_i.back().linear());
+    line.p0 = toolIn0(chain(), path.data_).translation();
+    line.r0 = Eigen::Quaterniond(toolIn0(chain(), path.data_).linear());
     kinematics::forwardKinematics(chain(), path.data_, path.q1_);
-    line.p1 = path.data_.F_0_i.back().translation();
-    line.r1 = Eigen::Quaterniond(path.data_.F_0_i.back().linear());
+    line.p1 = toolIn0(chain(), path.data_).translation();
+    line.r1 = Eigen::Quaterniond(toolIn0(chain(), path.data_).linear());
     return plan(line, start, path, end, what);
   });
 }
@@ -226,7 +232,7 @@ std::optional<LineProblem> LinePlanner::planAlongTool(std::span<const std::int32
     path.q1_ = path.q0_;
     Line line;
     kinematics::forwardKinematics(chain(), path.data_, path.q0_);
-    const Eigen::Isometry3d F = path.data_.F_0_i.back();
+    const Eigen::Isometry3d F = toolIn0(chain(), path.data_);
     line.p0 = F.translation();
     line.p1 = line.p0 + distance * F.linear().col(2);
     line.r0 = line.r1 = Eigen::Quaterniond(F.linear());

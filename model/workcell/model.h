@@ -86,6 +86,13 @@ struct JointSpec {
   std::int32_t acceleration = 0;  // encoder units per second², 0 = constant speed (runtime/sim/motion.h)
 };
 
+/// Where a robot read from a URDF file came from (`describe` says it): the
+/// file and the links its chain runs between. Not carried by images.
+struct UrdfSource {
+  std::string file;
+  std::string rootLink, tipLink;
+};
+
 /// A robot: links 0..n in order (0 = base) with their home frames F_design_i,
 /// joints 1..n, and optionally a gripper whose n/a vectors give the last
 /// frame. The chain is derived (D-H) from the frames when the robot is built.
@@ -93,10 +100,15 @@ struct Robot {
   std::string name;
   std::vector<Shape> links;
   std::vector<Eigen::Isometry3d> frames;  // F_design_i of each link, then the gripper's
+  /// F_design_tool at home, when the tool centre point's frame is not the
+  /// last frame (a description's TOOL, a URDF arm's tip link): the chain
+  /// then carries it as its tool frame (ChainModel::withTool).
+  std::optional<Eigen::Isometry3d> tool;
   std::vector<JointSpec> joints;
   bool hasGripper = false;
   Gripper gripper;
   std::optional<kinematics::ChainModel> chain;  // derived; frames in design coordinates
+  std::optional<UrdfSource> urdf;               // read from a URDF file
 };
 
 struct PlacedRobot {

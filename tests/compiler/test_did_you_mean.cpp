@@ -120,10 +120,10 @@ TEST_CASE("did you mean: misspelled description keywords", "[compiler][hints][mo
             "5:9: expected a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15, found "
             "'LIGHTGREY' | did you mean 'LIGHTGRAY'?",
             "6:3: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'SPIN' | ",
-            "9:16: expected LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, "
-            "ACCELERATION, GRIPPER or END, found 'ORIGN' | did you mean 'ORIGIN'?",
+            "9:16: expected LINK, FRAME, ORIGIN, XAXIS, ZAXIS, TOOL, JOINT, LETTER, PRECISION, RANGE, COUPLING, "
+            "SPEED, ACCELERATION, GRIPPER or END, found 'ORIGN' | did you mean 'ORIGIN'?",
             "10:11: expected REVOLUTE or PRISMATIC, found 'REVOLUT' | did you mean 'REVOLUTE'?",
-            "11:21: expected LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, "
-            "ACCELERATION, GRIPPER or END, found 'LETTR' | did you mean 'LETTER'?",
+            "11:21: expected LINK, FRAME, ORIGIN, XAXIS, ZAXIS, TOOL, JOINT, LETTER, PRECISION, RANGE, COUPLING, "
+            "SPEED, ACCELERATION, GRIPPER or END, found 'LETTR' | did you mean 'LETTER'?",
             "14:3: expected ROBOT, OBJECT, FLOOR or END, found 'ROBOTT' | did you mean 'ROBOT'?"});
 }

@@ -36,6 +36,8 @@ case "$reader" in
   program | stimuli | test_file | points)
     seeds+=("$root/examples" "$root/examples/tests/passing" "$root/examples/tests/failing"
             "$root/examples/tests/grading" "$root/tests/golden") ;;
+  urdf)
+    seeds+=("$root/tests/urdf/data_read") ;;
   description)
     seeds+=("$root/stdlib/robots" "$root/stdlib/workcells" "$root/stdlib/grippers" "$root/stdlib/objects") ;;
   image)

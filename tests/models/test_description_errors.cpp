@@ -92,7 +92,8 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
                      }));
   const std::string colour = "a colour: one of the 16 EGA colour names (BLACK .. WHITE) or a number 0..15";
   const std::string robotStatements =
-      "LINK, FRAME, ORIGIN, XAXIS, ZAXIS, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, ACCELERATION, GRIPPER or END";
+      "LINK, FRAME, ORIGIN, XAXIS, ZAXIS, TOOL, JOINT, LETTER, PRECISION, RANGE, COUPLING, SPEED, ACCELERATION, "
+      "GRIPPER or END";
   const Strings expected{
       "p.rsd:1:1: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found 'stray'",
       "p.rsd:2:8: unexpected 'extra' after the LINK name (statements go on the next lines)",

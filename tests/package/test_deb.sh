@@ -47,6 +47,15 @@ case "$depends" in
   *libcairo2*libc6* | *libc6*libcairo2*) ;;
   *) fail "dpkg-shlibdeps did not compute the dependencies: Depends: $depends" ;;
 esac
+# robotsim-urdf's libraries (issue 37: the URDF reader runs in that helper).
+case "$depends" in
+  *liburdfdom-model*) ;;
+  *) fail "Depends does not name urdfdom (robotsim-urdf links it): Depends: $depends" ;;
+esac
+case "$depends" in
+  *libassimp*) ;;
+  *) fail "Depends does not name Assimp (robotsim-urdf links it): Depends: $depends" ;;
+esac
 [ "$(dpkg-deb -f "$deb" Recommends)" = bash-completion ] || fail "Recommends: $(dpkg-deb -f "$deb" Recommends)"
 
 step "copy the cached root"
@@ -87,6 +96,7 @@ grep -E "^(Need to get|After this operation)" "$work/install.log" || true
 # apt-get installs what a package recommends: the completion's loader too.
 [ -f "$root/usr/share/bash-completion/bash_completion" ] || fail "bash-completion (recommended) not installed"
 [ ! -e "$root$source" ] || fail "the source tree is visible in the root"
+[ -x "$root/usr/libexec/robotsim/robotsim-urdf" ] || fail "no /usr/libexec/robotsim/robotsim-urdf (the URDF reader)"
 
 step "as a user: a program on a library cell, robotsim test, --version"
 cp "$root/usr/share/doc/robotsim/examples/gantry_pick.rsp" "$root/home/student/work/"
@@ -102,6 +112,11 @@ fi
 as_user robotsim test examples/tests/passing >"$work/test.out" 2>&1 ||
   fail "robotsim test examples/tests/passing failed: $(tail -3 "$work/test.out")"
 grep -Eq "^[1-9][0-9]* passed, 0 failed, 0 errors" "$work/test.out" || fail "robotsim test's summary: $(tail -1 "$work/test.out")"
+# A URDF file written and read back by the installed robotsim: the helper
+# robotsim-urdf found from /usr/bin and its libraries installed by apt.
+as_user robotsim export abb-irb120 --urdf -o irb120.urdf >"$work/urdf.out" 2>&1 &&
+  as_user robotsim table irb120.urdf --tip tool0 >>"$work/urdf.out" 2>&1 ||
+  fail "a URDF export read back in the root: $(tail -3 "$work/urdf.out")"
 version_json=$(as_user robotsim --version --format=json)
 case "$version_json" in
   *'"library":"/usr/share/robotsim/stdlib"'*) ;;

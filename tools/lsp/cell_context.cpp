@@ -1,5 +1,7 @@
 #include "tools/lsp/cell_context.h"
 
+#include <fmt/format.h>
+
 #include <system_error>
 
 #include "compiler/description/library.h"
@@ -12,7 +14,8 @@ namespace fs = std::filesystem;
 
 std::string findDescriptionFile(const std::string& name, const std::vector<fs::path>& searchPath) {
   std::error_code ec;
-  if (name.ends_with(".rsd") && fs::is_regular_file(name, ec)) return fs::absolute(name, ec).string();
+  if ((name.ends_with(".rsd") || name.ends_with(".urdf")) && fs::is_regular_file(name, ec))
+    return fs::absolute(name, ec).string();
   for (const fs::path& dir : searchPath)
     for (const char* folder : {"", "workcells", "robots", "grippers", "objects", "links"}) {
       const fs::path candidate = dir / folder / (name + ".rsd");
@@ -43,6 +46,13 @@ std::shared_ptr<const CellContext> CellCache::get(const std::string& name) {
     } else {
       context->problem = library.diagnostics().empty() ? std::string("the workcell has no robot")
                                                        : library.diagnostics().front().message;
+      // A problem inside a URDF cell's XML says where.
+      for (const diag::Diagnostic& d : library.diagnostics())
+        if (d.severity == diag::Severity::Error && urdf::isUrdfName(d.file)) {
+          context->problem = d.pos.line > 0 ? fmt::format("{} (at {}:{}:{})", d.message, d.file, d.pos.line, d.pos.col)
+                                            : d.message;
+          break;
+        }
     }
   }
   if (!context->cell) {

@@ -29,6 +29,7 @@ Language languageOf(std::string_view languageId, std::string_view uri) {
   if (endsWith(uri, ".rsp")) return Language::Program;
   if (endsWith(uri, ".rsd")) return Language::Description;
   if (endsWith(uri, ".stim")) return Language::Stimuli;
+  if (languageId == "urdf" || endsWith(uri, ".urdf")) return Language::Urdf;
   return Language::Other;
 }
 

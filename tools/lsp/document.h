@@ -33,7 +33,7 @@ struct Range {
 };
 
 /// What a file is, from its language id or its name.
-enum class Language { Program, Description, Stimuli, Other };
+enum class Language { Program, Description, Stimuli, Urdf, Other };
 Language languageOf(std::string_view languageId, std::string_view uri);
 
 class Document {

@@ -191,7 +191,8 @@ void Server::didOpen(const Field& params, bool invalidUtf8) {
   const std::int64_t version = td["version"].optionalInteger().value_or(0);
   Document& doc = workspace_.open(uri, languageOf(languageId, uri), version, td["text"].string());
   doc.setHadInvalidUtf8(invalidUtf8);
-  if (doc.language() == Language::Description) workspace_.descriptionsChanged(), allProgramsChanged();
+  if (doc.language() == Language::Description || doc.language() == Language::Urdf)
+    workspace_.descriptionsChanged(), allProgramsChanged();
   if (doc.language() == Language::Stimuli) workspace_.stimuliChanged(), allProgramsChanged();
   pending_.insert(uri);
 }
@@ -236,6 +237,7 @@ Json Server::diagnosticsOf(const Document& doc) {
     }
     case Language::Description: return descriptionDiagnostics(doc, encoding_);
     case Language::Stimuli: return stimuliDiagnostics(doc, encoding_);
+    case Language::Urdf: return urdfDiagnostics(doc, encoding_, workspace_.cells().searchPath());
     case Language::Other: return Json::array();
   }
   return Json::array();
@@ -324,7 +326,8 @@ void Server::registerHandlers() {
   });
   d.onNotification("textDocument/didSave", [this](const Field& p) {
     const Language language = languageOf("", documentUri(p));
-    if (language == Language::Description) workspace_.descriptionsChanged(), allProgramsChanged();
+    if (language == Language::Description || language == Language::Urdf)
+      workspace_.descriptionsChanged(), allProgramsChanged();
     if (language == Language::Stimuli) workspace_.stimuliChanged(), allProgramsChanged();
   });
   d.onNotification("workspace/didChangeConfiguration", [this](const Field& p) {

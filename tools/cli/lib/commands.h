@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tools/cli/lib/convert_command.h"
 #include "tools/cli/lib/debug_command.h"
 #include "tools/cli/lib/export_command.h"
 #include "tools/cli/lib/ik_command.h"
@@ -40,6 +41,7 @@ struct CommandValues {
   RobotQuery robot;
   IkOptions ik;
   ExportOptions exporting;
+  ConvertOptions convert;
   ListOptions list;
   PortsOptions ports;
   EmulateOptions emulate;

@@ -112,6 +112,9 @@ RobotFacts factsOf(const workcell::PlacedRobot& placed, std::span<const workcell
 void robotText(const RobotFacts& f, bool first, const workcell::Workcell& cell, std::ostream& out) {
   const workcell::Robot& robot = f.placed->robot;
   out << fmt::format("robot {}{}\n", base::safeText(robot.name), first ? " (runs the program)" : "");
+  if (robot.urdf)
+    out << fmt::format("  from URDF file {}: the chain from root link {} to tip link {}\n", base::safeText(robot.urdf->file),
+                       base::safeText(robot.urdf->rootLink), base::safeText(robot.urdf->tipLink));
   const Eigen::Matrix3d r = f.F_world_0.linear();
   out << fmt::format("  frame 0  origin {}, x0 {}, z0 {} (z0 is joint 1's axis)\n", point(f.F_world_0.translation()),
                      point(r.col(0)), point(r.col(2)));
@@ -148,6 +151,8 @@ Json robotJson(const RobotFacts& f, const workcell::Workcell& cell) {
   const Eigen::Matrix3d r = f.F_world_0.linear();
   Json j;
   j["name"] = robot.name;
+  if (robot.urdf)
+    j["source"] = {{"urdf", robot.urdf->file}, {"root", robot.urdf->rootLink}, {"tip", robot.urdf->tipLink}};
   j["frame0"] = {{"origin", vec(f.F_world_0.translation())}, {"x", vec(r.col(0))}, {"z", vec(r.col(2))}};
   j["motors"] = motors;
   j["home_tcp"] = vec(f.homeTcp);
@@ -162,7 +167,7 @@ Json robotJson(const RobotFacts& f, const workcell::Workcell& cell) {
 }  // namespace
 
 int describeCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
-  compiler::Library library(compiler::librarySearchPath(q.libDirs));
+  compiler::Library library = queryLibrary(q);
   const std::optional<workcell::Workcell> cell = library.workcell(q.robot);
   const bool world = cell && library.holdsWorkcell(q.robot);
   for (const diag::Diagnostic& d : library.diagnostics()) err << diag::render(d, library.source(d.file));
@@ -227,7 +232,8 @@ int describeCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
 }
 
 void addDescribeOptions(CLI::App* cmd, RobotQuery& q) {
-  addRobotArguments(cmd, q, "Workcell or robot: description file (.rsd) or library name, e.g. scara-pick");
+  addRobotArguments(cmd, q,
+                    "Workcell or robot: description file (.rsd), URDF file (.urdf) or library name, e.g. scara-pick");
 }
 
 }  // namespace rs::cli

@@ -70,6 +70,9 @@ void addIkOptions(CLI::App* cmd, IkOptions& o) {
       ->transform(numberListArg(rules::kEncoderCount));
   cmd->add_option("--name", o.name, "The point's name in the POINTS line (default P1)");
   cmd->add_option("--lib", o.libDirs, "Also look up names in this directory (repeatable)")->allow_extra_args(false);
+  cmd->add_option("--tip", o.tip, "A URDF robot's chain ends at this link (where its tree has several leaves)");
+  cmd->add_option("--precision", o.precision, "A URDF robot's motors: degrees (or mm) per encoder count (default 0.01)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--solution", o.solution,
                   "Only configuration N of the family (1-based; scara: elbow +, -; articulated-5: shoulder front "
                   "elbow +, -, back +, -; six-axis: each of those with the wrist not flipped, then flipped), solved "
@@ -86,6 +89,7 @@ void addIkOptions(CLI::App* cmd, IkOptions& o) {
 
 int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
   compiler::Library library(compiler::librarySearchPath(o.libDirs));
+  library.setUrdfOptions({o.tip, o.precision});
   const std::optional<workcell::Workcell> cell = library.workcell(o.target);
   for (const diag::Diagnostic& d : library.diagnostics()) err << diag::render(d, library.source(d.file));
   if (!cell || library.hasErrors()) return kExitBadInput;
@@ -95,6 +99,16 @@ int ikCommand(const IkOptions& o, std::ostream& out, std::ostream& err) {
   }
   const workcell::PlacedRobot& placed = *cell->drivenRobot();
   const workcell::PoseSolver solver(placed);
+  // A URDF arm gets a closed form where its geometry is one of the families;
+  // the numeric method is for robotsim's own descriptions (docs/models.md,
+  // "Reading URDF").
+  if (placed.robot.urdf && solver.ik().family() == kinematics::IkFamily::Numeric) {
+    err << fmt::format("robotsim: error: no closed-form inverse kinematics applies to {}: its D-H table is none of "
+                       "the families cartesian, scara, articulated-5, articulated-6, spherical-6\n"
+                       "  hint: robotsim table {} shows the table; docs/models.md, \"Inverse kinematics\", the families\n",
+                       base::safeText(placed.robot.name), base::safeText(o.target));
+    return kExitBadInput;
+  }
   workcell::PoseRequest request;
   request.robotFrame = o.frame == "robot";
   request.position = Eigen::Vector3d(o.position[0], o.position[1], o.position[2]);

@@ -26,6 +26,8 @@ struct IkOptions {
   bool gripGiven = false;
   unsigned solution = 0;             // --solution N (1-based in the family's configurations), 0: choose
   bool json = false;
+  std::string tip;                   // --tip, --precision: a URDF robot's
+  double precision = 0.01;
 };
 
 void addIkOptions(CLI::App* cmd, IkOptions& o);

@@ -24,7 +24,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 std::optional<workcell::Robot> loadRobot(const RobotQuery& q, std::ostream& err) {
-  compiler::Library library(compiler::librarySearchPath(q.libDirs));
+  compiler::Library library = queryLibrary(q);
   std::optional<workcell::Robot> robot = library.robot(q.robot);
   for (const diag::Diagnostic& d : library.diagnostics()) err << diag::render(d, library.source(d.file));
   return robot;
@@ -103,7 +103,36 @@ std::string matrixText(const Eigen::Isometry3d& m) {
   return out;
 }
 
+// Which D-H case a row is (model/urdf/urdf_dh.h), from its values.
+std::string_view rowCase(const kinematics::DhRow& r) {
+  const double alpha = std::abs(normalizeDegrees(r.alpha));
+  const bool parallel = alpha < 1e-9 || std::abs(alpha - 180.0) < 1e-9;
+  if (parallel) return std::abs(r.a) < 1e-9 ? "collinear" : "parallel";
+  return std::abs(r.a) < 1e-9 ? "intersecting" : "skew";
+}
+
+// What a URDF robot's table says besides its rows: where the robot came
+// from, and the base and tool transforms the rows do not hold.
+void urdfTableText(const workcell::Robot& robot, std::ostream& out) {
+  const workcell::UrdfSource& u = *robot.urdf;
+  out << fmt::format("from URDF file {}, chain from link {} to link {} (design coordinates: mm, y up)\n",
+                     base::safeText(u.file), base::safeText(u.rootLink), base::safeText(u.tipLink));
+  out << "BASE: frame 0 in the root link's frame (turned to y up):\n" << matrixText(robot.frames.front());
+  out << fmt::format("TOOL: the tip link's frame in frame {}{}:\n", robot.chain->size(),
+                     robot.chain->hasTool() ? "" : " (the tip is frame n itself)");
+  out << matrixText(robot.chain->F_n_tool());
+  out << "D-H choices: frame 0 on joint 1's axis at the foot of the root's origin; parallel axes take the common "
+         "normal through the frame before (d = 0); intersecting axes x = z(i-1) x z(i); skew and parallel axes "
+         "a > 0; collinear axes keep x (docs/models.md, \"Reading URDF\")\n";
+}
+
 }  // namespace
+
+compiler::Library queryLibrary(const RobotQuery& q) {
+  compiler::Library library(compiler::librarySearchPath(q.libDirs));
+  library.setUrdfOptions({q.tip, q.precision});
+  return library;
+}
 
 double normalizeDegrees(double degrees) {
   double d = std::remainder(degrees, 360.0);  // exact, in [-180, 180]
@@ -138,6 +167,14 @@ int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
                       {"home", revolute ? normalizeDegrees(r.home()) : r.home() + 0.0}});
     }
     j["rows"] = list;
+    if (robot->urdf) {
+      j["urdf"] = {{"file", robot->urdf->file}, {"root", robot->urdf->rootLink}, {"tip", robot->urdf->tipLink}};
+      for (std::size_t i = 0; i < rows.size(); ++i) j["rows"][i]["case"] = std::string(rowCase(rows[i]));
+    }
+    if (robot->urdf || robot->chain->hasTool()) {
+      j["base"] = matrixJson(robot->frames.front());
+      j["tool"] = matrixJson(robot->chain->F_n_tool());
+    }
     out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     return kExitOk;
   }
@@ -152,6 +189,8 @@ int tableCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
                        formatNumber(r.a), revolute ? formatNumber(r.d) : fmt::format("d{}", i + 1),
                        revolute ? formatAngle(r.home()) : formatNumber(r.home()));
   }
+  if (robot->urdf) urdfTableText(*robot, out);
+  else if (robot->chain->hasTool()) out << "TOOL: the tool frame in frame n:\n" << matrixText(robot->chain->F_n_tool());
   out << "(values rounded to 4 decimals, angles in (-180, 180]; --json gives full precision)\n";
   return kExitOk;
 }
@@ -195,7 +234,7 @@ int matrixCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
 // the workcell's world: the same chain, placed where the cell puts the
 // robot's link 0 (a lone robot stands where it was drawn, so both agree).
 int whereCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
-  compiler::Library library(compiler::librarySearchPath(q.libDirs));
+  compiler::Library library = queryLibrary(q);
   std::optional<workcell::Workcell> cell = library.workcell(q.robot);
   const bool world = cell && library.holdsWorkcell(q.robot);
   for (const diag::Diagnostic& d : library.diagnostics()) err << diag::render(d, library.source(d.file));
@@ -264,6 +303,14 @@ void addRobotArguments(CLI::App* cmd, RobotQuery& q, const char* what) {
   cmd->add_option("robot", q.robot, what)->required();
   cmd->add_option("--lib", q.libDirs, "Also look up names in this directory (repeatable)")->allow_extra_args(false);
   cmd->add_flag("--json", q.json, "Print one JSON object");
+  addUrdfOptions(cmd, q);
+}
+
+void addUrdfOptions(CLI::App* cmd, RobotQuery& q) {
+  cmd->add_option("--tip", q.tip, "A URDF robot's chain ends at this link (where its tree has several leaves)");
+  cmd->add_option("--precision", q.precision,
+                  "A URDF robot's motors: degrees (or mm) per encoder count (default 0.01)")
+      ->check(CLI::PositiveNumber);
 }
 
 namespace {

@@ -134,6 +134,12 @@ Json stimuliDiagnostics(const Document& doc, Encoding enc);
 Json stimuliSymbols(const Document& doc, Encoding enc);
 Json stimuliHover(const Document& doc, Encoding enc, Position at);
 
+// urdf.cpp: .urdf files and the URDF cells programs name.
+/// The URDF reader's diagnostics of the document's text, at its XML lines.
+Json urdfDiagnostics(const Document& doc, Encoding enc, const std::vector<std::filesystem::path>& searchPath);
+/// The D-H table of the robot a `; cell:` directive names (markdown), or "".
+std::string cellTableHover(const ProgramContext& p);
+
 // Shared helpers (features.cpp).
 /// The occurrence under a position, if any.
 const Occurrence* occurrenceAt(const ProgramContext& p, Position at);

@@ -125,6 +125,11 @@ std::string variableHover(const ProgramContext& p, const Occurrence& o) {
 
 Json hover(const ProgramContext& p, Position at) {
   const diag::Pos pos = p.doc.toPos(at, p.enc);
+  if (const auto& d = p.analysis.directive()) {
+    const Range r = p.doc.rangeOf(d->pos, d->name.size(), p.enc);
+    if (at.line == r.start.line && at.character >= r.start.character && at.character <= r.end.character)
+      if (std::string table = cellTableHover(p); !table.empty()) return markdown(std::move(table), r);
+  }
   if (const Occurrence* o = p.analysis.index().occurrenceAt(pos)) {
     const Range range = rangeOf(p, *o);
     switch (o->kind) {
