@@ -387,7 +387,13 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
       Eigen::Isometry3d place = Eigen::Isometry3d::Identity();
       place.linear() = p.rotation;
       place.translation() = p.at - p.rotation * workcell::atCorner(*s);
-      cell.objects.push_back({std::move(*s), place});
+      const ShapeDef* sd = find<ShapeDef>(Kind::Object, p.what.name, &from);
+      workcell::PlacedObject placed{std::move(*s), place};
+      placed.kind = p.kind.value_or(sd->kind);
+      placed.name = p.as.name.empty() ? p.what.name : p.as.name;
+      placed.belt = sd->belt;
+      placed.pos = p.what.pos;
+      cell.objects.push_back(std::move(placed));
     }
   }
   if (def.damaged) ok = false;

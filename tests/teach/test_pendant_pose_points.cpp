@@ -182,7 +182,7 @@ TEST_CASE("re-teach over a pose point asks pose or counts, and writes what it is
     CHECK(p.state().points[1].values == here);
   }
   SECTION("the terminal pendant asks p or c") {
-    rs::teach::tui::Session tui(p);
+    rs::teach::tui::TuiSession tui(p);
     REQUIRE(tui.press("PageDown"));  // UP, the second point
     REQUIRE(tui.press("r"));
     bool asked = false;
