@@ -87,8 +87,8 @@ const diag::SourceFile* Library::source(const std::string& file) const {
   return nullptr;
 }
 
-void Library::error(const DescriptionFile& file, diag::Pos pos, std::string message) {
-  diagnostics_.push_back({file.source->name(), pos, diag::Severity::Error, std::move(message)});
+void Library::error(const DescriptionFile& file, diag::Pos pos, std::string message, std::string hint) {
+  diagnostics_.push_back({file.source->name(), pos, diag::Severity::Error, std::move(message), {}, std::move(hint)});
 }
 
 bool Library::reachesSpeed(const DescriptionFile& file, diag::Pos at, std::int32_t speed, std::int32_t acceleration) {
@@ -397,6 +397,7 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
     }
   }
   if (def.damaged) ok = false;
+  if (ok && !buildDevices(def, from, cell)) ok = false;
   if (ok && cell.robots.empty() && cell.objects.empty())
     error(from, def.pos, fmt::format("workcell '{}' places no robot and no object", def.name)), ok = false;
   if (!ok) return std::nullopt;
