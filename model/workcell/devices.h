@@ -4,7 +4,8 @@
 // name resolved, every zone with volume); the cell's runtime (runtime/cell)
 // makes them act on one clock. Syntax and meaning: docs/models.md,
 // "Devices". Every item keeps the place it was written, for errors and the
-// language server.
+// language server: a named device's `pos` is where its name is written, a
+// wire's its WIRE keyword, a signal's its first word.
 #pragma once
 
 #include <Eigen/Geometry>
