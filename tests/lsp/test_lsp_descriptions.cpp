@@ -146,7 +146,7 @@ TEST_CASE("rsd: hover on a device, and a wire's sensor goes to its SENSOR line",
   CHECK(f.hover(wire, 12) == beam);
   CHECK(f.hover(sensor, 12) == beam);
   CHECK(f.hover(lineOf(f.text, "  CONVEYOR outfeed"), 12) ==
-        "conveyor `outfeed`: runs its belt at 100 length units per second while always on is on");
+        "conveyor `outfeed`: runs its belt at 100 length units per second always");
   // The CONVEYOR's object: its AS name on the OBJECT line.
   const unsigned object = lineOf(f.text, "  OBJECT conveyor   AT -750 0 -450");
   const std::size_t as = f.text.find("outfeed", f.text.find("AT -750 0 -450")) - f.text.find("  OBJECT conveyor   AT -750 0 -450");

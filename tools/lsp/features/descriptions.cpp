@@ -180,8 +180,10 @@ std::string deviceHover(const workcell::Devices& d, diag::Pos pos) {
       if (const workcell::Sensor* sensor = sensorNamed(d, s->name)) return sensorText(*sensor);
   for (const workcell::Conveyor& v : d.conveyors)
     if (covers(v.pos, v.name.size(), pos))
-      return fmt::format("conveyor `{}`: runs its belt at {} length units per second while {} is on", v.name,
-                         formatNumber(v.speed), signalText(v.run));
+      return fmt::format("conveyor `{}`: runs its belt at {} length units per second {}", v.name, formatNumber(v.speed),
+                         v.run.kind == workcell::Signal::Kind::On    ? std::string("always")
+                         : v.run.kind == workcell::Signal::Kind::Off ? std::string("never")
+                                                                     : fmt::format("while {} is on", signalText(v.run)));
   for (const workcell::Feeder& f : d.feeders)
     if (covers(f.pos, f.name.size(), pos))
       return fmt::format("feeder `{}`: puts a `{}` at {} {}{}", f.name, f.objectName, point(f.at),
