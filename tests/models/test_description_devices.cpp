@@ -195,3 +195,26 @@ TEST_CASE("description devices: the library's conveyor cells read with their dev
       CHECK((o.kind == rs::workcell::ObjectKind::Part) == (o.shape.name == "block"));
   }
 }
+
+TEST_CASE("description devices: 100,000 device lines, each mistake reported once", "[models][devices]") {
+  // Linear by construction (every name a hash-map look-up); what this checks
+  // is that each of 50,000 wires past the first eight is reported, at its
+  // own line, and nothing else: a look-up that scanned the lines before
+  // would show as a run of minutes here, and bench/ times the reader.
+  constexpr int kEach = 50'000;
+  std::string body = "WORKCELL c\n  OBJECT blk AT 0 0 10\n";
+  for (int i = 0; i < kEach; ++i) body += fmt::format("  SENSOR s{} ZONE 0 10 10 0 10 0\n", i);
+  for (int i = 0; i < kEach; ++i) body += fmt::format("  WIRE s{} TO IN {}\n", kEach - 1 - i, i % 8 + 1);
+  body += "END\n";
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", devices_test::kObjects + body);
+  rs::compiler::Library lib({dir.path()});
+  CHECK_FALSE(lib.workcell(dir.file("c.rsd")));
+  const auto& d = lib.diagnostics();
+  REQUIRE(d.size() == static_cast<std::size_t>(kEach - 8));
+  const std::uint32_t firstWire = 9 + 2 + kEach + 1;  // kObjects, WORKCELL and OBJECT, the sensors
+  CHECK(d.front().pos.line == firstWire + 8);
+  CHECK(d.back().pos.line == firstWire + kEach - 1);
+  CHECK(d.back().message == fmt::format("input {} has a second source: the WIRE at line {} drives it already",
+                                        (kEach - 1) % 8 + 1, firstWire + (kEach - 1) % 8));
+}
