@@ -40,6 +40,9 @@ struct ShapeDef {  // LINK or OBJECT
   std::vector<Eigen::Vector3d> linePoints;    // the LINEs' endpoints
   std::vector<workcell::ConvexPiece> given;   // COLLIDE BOX statements
   bool collideGiven = false;                  // any COLLIDE statement
+  workcell::ObjectKind kind = workcell::ObjectKind::Fixture;  // OBJECT: PART or FIXTURE
+  diag::Pos kindPos;                          // where PART or FIXTURE was written (none: the default)
+  std::optional<workcell::Belt> belt;         // OBJECT: BELT
   bool damaged = false;
   /// The collision pieces (docs/models.md, "Collisions"): the COLLIDE
   /// statements' when there is one, else each BOX and the hull of the LINEs.
@@ -97,14 +100,20 @@ struct RobotDef {
 struct PlacementDef {
   bool isRobot = true;
   NameRef what;
+  std::optional<workcell::ObjectKind> kind;  // OBJECT ... PART | FIXTURE: overrides the description's
+  NameRef as;                                // OBJECT ... AS NAME (empty: the description's name)
   Eigen::Vector3d at = Eigen::Vector3d::Zero();
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // ROTATE clauses, in order
 };
 
+/// A device line of a WORKCELL as read (model/workcell/devices.h): names
+/// not yet resolved (Signal::sensor, Conveyor::object, Feeder::part are
+/// filled when the workcell is built).
 struct WorkcellDef {
   std::string name;
   diag::Pos pos;
   std::vector<PlacementDef> placements;
+  workcell::Devices devices{};
   std::optional<double> floor = 0.0;  // FLOOR y, FLOOR NONE
   bool damaged = false;
 };

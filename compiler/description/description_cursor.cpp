@@ -39,6 +39,17 @@ bool Cursor::keyword(std::string_view kw) {
   return true;
 }
 
+bool Cursor::isKeyword(std::string_view kw) const {
+  return !atEnd() && peek().type == MP::NAME && base::sameName(peek().text, kw);
+}
+
+bool Cursor::isName() const { return !atEnd() && peek().type == MP::NAME; }
+
+bool Cursor::failAt(diag::Pos at, std::string message, std::string hint) {
+  diag_.error(at, std::move(message), diag::Hint{std::move(hint)});
+  return false;
+}
+
 bool Cursor::fail(std::string_view what, std::string hint) {
   diag_.error(pos(),
               atEnd() ? fmt::format("expected {} before the end of the line", what)

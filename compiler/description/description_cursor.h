@@ -43,6 +43,12 @@ class Cursor {
   diag::Pos pos() const { return atEnd() ? end_ : w_[i_].pos; }
 
   bool keyword(std::string_view kw);
+  /// Whether the next word is the keyword, without taking it.
+  bool isKeyword(std::string_view kw) const;
+  /// Whether the next word is a name (or a keyword: they are names too).
+  bool isName() const;
+  /// An error at `at` (a word already read) with a hint; false.
+  bool failAt(diag::Pos at, std::string message, std::string hint);
   bool fail(std::string_view what, std::string hint = {});
   /// "expected LINE, BOX, ... or END, found 'LIEN'" with the hint "did you
   /// mean 'LINE'?" when the word found is a near miss of one in the list.

@@ -3,7 +3,8 @@
 // description.cpp opens and closes blocks; each kind of block reads its
 // statements in its own file: description_shapes.cpp (LINK, OBJECT),
 // description_robots.cpp (GRIPPER, ROBOT, their motors),
-// description_workcell.cpp (WORKCELL). Private to those files.
+// description_workcell.cpp (WORKCELL), description_devices.cpp
+// (its devices, an OBJECT's BELT). Private to those files.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -37,6 +38,10 @@ class Parser {
   bool gripperClause(Cursor& c, GripperDef& g);
   bool robotClause(Cursor& c, RobotDef& r);
   bool workcellClause(Cursor& c, WorkcellDef& w);
+  // description_devices.cpp: `handled` false when the word opens no device line.
+  bool deviceClause(Cursor& c, WorkcellDef& w, bool& handled);
+  bool belt(Cursor& c, ShapeDef& shape, diag::Pos at);
+  static bool noVolume(Cursor& c, const Eigen::AlignedBox3d& box, diag::Pos at);
   bool motorClause(Cursor& c, char& letter, diag::Pos& letterPos, double& precision, std::int32_t& min, std::int32_t& max,
                    diag::Pos& rangePos, std::int32_t& speed, std::int32_t& acceleration, diag::Pos& accelerationPos,
                    bool* hasLetter, bool* hasPrecision, bool* hasRange);

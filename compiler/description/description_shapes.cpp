@@ -100,6 +100,12 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
     for (workcell::Segment& s : shape.segments) s.a = r * s.a, s.b = r * s.b;
     forEachPoint(shape, [&](Eigen::Vector3d& p) { p = r * p; });
     for (workcell::DrawnBox& box : shape.drawn) box.F_design_box.prerotate(r);
+    if (shape.belt) {  // its box stays axis-aligned: the box of its turned corners
+      Eigen::AlignedBox3d turned;
+      for (int k = 0; k < 8; ++k) turned.extend(r * shape.belt->surface.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k)));
+      shape.belt->surface = turned;
+      shape.belt->direction = r * shape.belt->direction;
+    }
     return true;
   }
   if (c.keyword("MOVE")) {
@@ -108,9 +114,19 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
     for (workcell::Segment& s : shape.segments) s.a += d.v, s.b += d.v;
     forEachPoint(shape, [&](Eigen::Vector3d& p) { p += d.v; });
     for (workcell::DrawnBox& box : shape.drawn) box.F_design_box.pretranslate(d.v);
+    if (shape.belt) shape.belt->surface.translate(d.v);
     return true;
   }
   if (c.keyword("COLOR")) return c.color(color_);
+  if (block_ == Block::Object) {
+    const diag::Pos at = c.pos();
+    if (c.keyword("PART")) return shape.kind = workcell::ObjectKind::Part, shape.kindPos = at, true;
+    if (c.keyword("FIXTURE")) return shape.kind = workcell::ObjectKind::Fixture, shape.kindPos = at, true;
+    if (c.keyword("BELT")) return belt(c, shape, at);
+    return c.failOneOf("LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE, PART, FIXTURE, BELT or END");
+  }
+  if (c.isKeyword("BELT") || c.isKeyword("PART") || c.isKeyword("FIXTURE"))
+    return c.fail("a LINK statement", "BELT, PART and FIXTURE belong in an OBJECT, not a LINK");
   return c.failOneOf("LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END");
 }
 

@@ -1,4 +1,5 @@
-// WORKCELL: the robots and objects placed in it (AT, ROTATE) and its floor.
+// WORKCELL: the robots and objects placed in it (AT, ROTATE, PART, FIXTURE,
+// AS) and its floor; its devices are read in description_devices.cpp.
 #include "compiler/description/description_parser.h"
 
 namespace rs::compiler::description_detail {
@@ -11,6 +12,9 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
     w.floor = y;
     return true;
   }
+  bool handled = false;
+  const bool read = deviceClause(c, w, handled);
+  if (handled) return read;
   const bool robot = c.keyword("ROBOT");
   if (robot || c.keyword("OBJECT")) {
     PlacementDef p;
@@ -19,8 +23,15 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
     w.placements.push_back(p);
     return true;
   }
-  if (w.placements.empty()) return c.failOneOf("ROBOT, OBJECT, FLOOR or END");
+  constexpr std::string_view kLines = "ROBOT, OBJECT, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END";
+  if (w.placements.empty()) return c.failOneOf(kLines);
   PlacementDef& p = w.placements.back();
+  if (!p.isRobot && c.keyword("PART")) return p.kind = workcell::ObjectKind::Part, true;
+  if (!p.isRobot && c.keyword("FIXTURE")) return p.kind = workcell::ObjectKind::Fixture, true;
+  if (c.keyword("AS")) {
+    if (p.isRobot) return c.fail("AS after an OBJECT, not a ROBOT", "AS names one object of the cell");
+    return c.name(p.as, "a name for this object in the cell");
+  }
   if (c.keyword("AT")) {
     Point3 at;
     if (!c.point(at, "a position")) return false;
@@ -34,7 +45,8 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
     p.rotation = axisRotation(axis, degrees) * p.rotation;
     return true;
   }
-  return c.failOneOf("ROBOT, OBJECT, AT, ROTATE, FLOOR or END");
+  return c.failOneOf(p.isRobot ? "ROBOT, OBJECT, AT, ROTATE, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END"
+                                : "ROBOT, OBJECT, AT, ROTATE, PART, FIXTURE, AS, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END");
 }
 
 }  // namespace rs::compiler::description_detail

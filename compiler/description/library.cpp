@@ -120,8 +120,8 @@ std::optional<workcell::Robot> Library::urdfRobot(const fs::path& path) {
   return urdfRobots_[key] = std::move(read.robot);
 }
 
-void Library::error(const DescriptionFile& file, diag::Pos pos, std::string message) {
-  diagnostics_.push_back({file.source->name(), pos, diag::Severity::Error, std::move(message)});
+void Library::error(const DescriptionFile& file, diag::Pos pos, std::string message, std::string hint) {
+  diagnostics_.push_back({file.source->name(), pos, diag::Severity::Error, std::move(message), {}, std::move(hint)});
 }
 
 bool Library::reachesSpeed(const DescriptionFile& file, diag::Pos at, std::int32_t speed, std::int32_t acceleration) {
@@ -457,10 +457,17 @@ std::optional<workcell::Workcell> Library::buildWorkcell(const WorkcellDef& def,
       Eigen::Isometry3d place = Eigen::Isometry3d::Identity();
       place.linear() = p.rotation;
       place.translation() = p.at - p.rotation * workcell::atCorner(*s);
-      cell.objects.push_back({std::move(*s), place});
+      const ShapeDef* sd = find<ShapeDef>(Kind::Object, p.what.name, &from);
+      workcell::PlacedObject placed{std::move(*s), place};
+      placed.kind = p.kind.value_or(sd->kind);
+      placed.name = p.as.name.empty() ? p.what.name : p.as.name;
+      placed.belt = sd->belt;
+      placed.pos = p.what.pos;
+      cell.objects.push_back(std::move(placed));
     }
   }
   if (def.damaged) ok = false;
+  if (ok && !buildDevices(def, from, cell)) ok = false;
   if (ok && cell.robots.empty() && cell.objects.empty())
     error(from, def.pos, fmt::format("workcell '{}' places no robot and no object", def.name)), ok = false;
   if (!ok) return std::nullopt;

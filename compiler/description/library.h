@@ -78,7 +78,10 @@ class Library {
   std::optional<workcell::Robot> buildRobot(const RobotDef& def, const DescriptionFile& from);
   std::optional<workcell::Robot> checkRobot(const RobotDef& def, const DescriptionFile& from);
   std::optional<workcell::Workcell> buildWorkcell(const WorkcellDef& def, const DescriptionFile& from);
-  void error(const DescriptionFile& file, diag::Pos pos, std::string message);
+  void error(const DescriptionFile& file, diag::Pos pos, std::string message, std::string hint = {});
+  /// library_devices.cpp: resolves the workcell's devices into `cell`
+  /// (its objects placed); false after reporting an error.
+  bool buildDevices(const WorkcellDef& def, const DescriptionFile& from, workcell::Workcell& cell);
   /// False (with an error at the ACCELERATION) when the motor would take
   /// vm::kMaxSecondsToSpeed or more to reach its speed.
   bool reachesSpeed(const DescriptionFile& file, diag::Pos at, std::int32_t speed, std::int32_t acceleration);

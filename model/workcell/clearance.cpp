@@ -42,7 +42,7 @@ double boxGap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, Eigen:
 
 // Where a pair's gaps go: the moving part's list, relative to the frame
 // the other side moves with; a gap the part cannot close is left out.
-struct Sink {
+struct GapSink {
   SweepMotion& motion;
   PartClearance& gaps;
   std::size_t part, from;
@@ -58,7 +58,7 @@ struct Sink {
 // false when the bodies overlap (some pair of pieces whose boxes meet and
 // whose hulls overlap: bodiesOverlap's decision); otherwise the gaps the
 // mover `a` could close go to `sink`.
-bool pairGaps(const Side& a, const Side& b, const Sink& sink) {
+bool pairGaps(const Side& a, const Side& b, const GapSink& sink) {
   Eigen::Vector3d along = Eigen::Vector3d::UnitY();
   if (const double far = boxGap(*a.all, *b.all, along); far > 0 && !sink.closable(along, far))
     return true;  // no two boxes meet: no overlap, and nothing to close
@@ -152,13 +152,13 @@ std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std
     double anyWay;
   };
   const auto against = [&](const Mover& m, const Side& other, std::size_t from) {
-    return !pairGaps(m.side, other, Sink{motion, clearance[m.part], m.part, from, m.anyWay});
+    return !pairGaps(m.side, other, GapSink{motion, clearance[m.part], m.part, from, m.anyWay});
   };
   const auto underFloor = [&](const Mover& m, const Eigen::AlignedBox3d* boxes) {
     if (!floor) return false;
     const double d = aboveFloor(*m.side.body, boxes, *floor);
     if (d < 0) return true;
-    Sink{motion, clearance[m.part], m.part, 0, m.anyWay}.add(Eigen::Vector3d::UnitY(), d);
+    GapSink{motion, clearance[m.part], m.part, 0, m.anyWay}.add(Eigen::Vector3d::UnitY(), d);
     return false;
   };
   for (std::size_t b = 0; b < robot.size(); ++b) {

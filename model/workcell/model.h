@@ -8,11 +8,13 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/kinematics/chain_model.h"
 #include "model/kinematics/frame.h"
 #include "model/kinematics/gripper.h"
+#include "model/workcell/devices.h"
 
 namespace rs::workcell {
 
@@ -132,9 +134,18 @@ inline Eigen::Vector3d atCorner(const Shape& shape) {
   return {b.min().x(), b.min().y(), b.max().z()};
 }
 
+/// An object in a cell. `kind` and `belt` come from its description
+/// (devices.h); `name` is its cell name (`AS NAME`, else the description's
+/// name), which a CONVEYOR line names.
 struct PlacedObject {
+  PlacedObject() = default;
+  PlacedObject(Shape s, const Eigen::Isometry3d& place) : shape(std::move(s)), F_world_design(place) {}
   Shape shape;
   Eigen::Isometry3d F_world_design = Eigen::Isometry3d::Identity();
+  ObjectKind kind = ObjectKind::Fixture;
+  std::string name;
+  std::optional<Belt> belt;  ///< in the shape's design coordinates
+  diag::Pos pos;             ///< its WORKCELL OBJECT line (none for a fed part)
 };
 
 struct Workcell {
@@ -144,6 +155,12 @@ struct Workcell {
   std::optional<double> floor;
   std::vector<PlacedRobot> robots;
   std::vector<PlacedObject> objects;
+  /// The cell's devices (devices.h) and the parts its feeders copy: one per
+  /// distinct OBJECT name fed, at the design origin (F_world_design is the
+  /// identity; the runtime places a copy so its AT corner, atCorner(shape),
+  /// is at Feeder::at), kind Part.
+  Devices devices;
+  std::vector<PlacedObject> fedParts;
 
   /// The robot a run drives, a program is compiled for and a pendant jogs:
   /// for now the first placed. The one place that says which: a cell of

@@ -125,5 +125,6 @@ TEST_CASE("did you mean: misspelled description keywords", "[compiler][hints][mo
             "10:11: expected REVOLUTE or PRISMATIC, found 'REVOLUT' | did you mean 'REVOLUTE'?",
             "11:21: expected LINK, FRAME, ORIGIN, XAXIS, ZAXIS, TOOL, JOINT, LETTER, PRECISION, RANGE, COUPLING, "
             "SPEED, ACCELERATION, GRIPPER or END, found 'LETTR' | did you mean 'LETTER'?",
-            "14:3: expected ROBOT, OBJECT, FLOOR or END, found 'ROBOTT' | did you mean 'ROBOT'?"});
+            "14:3: expected ROBOT, OBJECT, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END, found 'ROBOTT' | did you "
+            "mean 'ROBOT'?"});
 }

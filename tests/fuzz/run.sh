@@ -49,6 +49,9 @@ case "$reader" in
     seeds+=("$work/seeds-image") ;;
 esac
 
+# A reader's keywords, when it has a dictionary (description.dict).
+[ -f "$here/$reader.dict" ] && extra+=("-dict=$here/$reader.dict")
+
 # The debug adapter's seeds launch examples/ programs by relative paths:
 # it runs from the top of the tree (its own paths made absolute first).
 if [ "$reader" = dap ]; then

@@ -133,3 +133,41 @@ TEST_CASE("rsd: an unsaved description is checked and hovered as the editor hold
         "link `rhino_scara_link2`: link 2 of rhino-scara\n\n"
         "D-H row 2 (revolute): theta = theta2, alpha = 180, a = 120, d = 0 (home 0)");
 }
+
+TEST_CASE("rsd: hover on a device, and a wire's sensor goes to its SENSOR line", "[lsp][rsd][devices]") {
+  OpenFile f(kStdlibRoot + "/workcells/adept-cell.rsd", "robotsim-description");
+  CHECK(f.s.diagnostics(f.uri) == Json::array());
+  const unsigned wire = lineOf(f.text, "  WIRE     eye");
+  const unsigned sensor = lineOf(f.text, "  SENSOR   eye");
+  // "  WIRE     eye": the name at characters 11..14, on both lines.
+  CHECK(f.s.result("textDocument/definition", LspSession::at(f.uri, wire, 12)) ==
+        Json({{"uri", f.uri}, {"range", LspSession::range(sensor, 11, sensor, 14)}}));
+  const std::string beam = "sensor `eye`: a beam from (300, 520, 440) to (300, 520, 760); on while it sees parts across it";
+  CHECK(f.hover(wire, 12) == beam);
+  CHECK(f.hover(sensor, 12) == beam);
+  CHECK(f.hover(lineOf(f.text, "  CONVEYOR outfeed"), 12) ==
+        "conveyor `outfeed`: runs its belt at 100 length units per second always");
+  // The CONVEYOR's object: its AS name on the OBJECT line.
+  const unsigned object = lineOf(f.text, "  OBJECT conveyor   AT -750 0 -450");
+  const std::size_t as = f.text.find("outfeed", f.text.find("AT -750 0 -450")) - f.text.find("  OBJECT conveyor   AT -750 0 -450");
+  CHECK(f.s.result("textDocument/definition", LspSession::at(f.uri, lineOf(f.text, "  CONVEYOR outfeed"), 12)) ==
+        Json({{"uri", f.uri}, {"range", LspSession::range(object, static_cast<unsigned>(as), object, static_cast<unsigned>(as + 7))}}));
+}
+
+TEST_CASE("rsd: a device line's mistakes are diagnostics", "[lsp][rsd][devices]") {
+  rs::testing::TempDir dir;
+  const std::string path = dir.write("c.rsd", "OBJECT o\n  BOX 0 10 10 0 10 0\nEND\nWORKCELL c\n  OBJECT o AT 0 0 0\n"
+                                               "  WIRE nosuch TO IN 1\n  SINK s ZONE 0 0 1 0 1 0\nEND\n");
+  OpenFile f(path, "robotsim-description");
+  const Json d = f.s.diagnostics(f.uri);
+  REQUIRE(d.size() == 1);  // the SINK's shape error; names are resolved once the file reads
+  CHECK(d[0]["message"].get<std::string>().rfind("the ZONE has no volume", 0) == 0);
+  CHECK(d[0]["range"]["start"]["line"] == 6);
+  const std::string path2 = dir.write("d.rsd", "OBJECT o\n  BOX 0 10 10 0 10 0\nEND\nWORKCELL c\n  OBJECT o AT 0 0 0\n"
+                                                "  WIRE nosuch TO IN 1\nEND\n");
+  OpenFile g(path2, "robotsim-description");
+  const Json e = g.s.diagnostics(g.uri);
+  REQUIRE(e.size() == 1);
+  CHECK(e[0]["message"] == "unknown sensor 'nosuch'\nhint: a signal is a SENSOR's name (declared in this WORKCELL), OUT n, ON or OFF");
+  CHECK(e[0]["range"] == LspSession::range(5, 7, 5, 13));
+}

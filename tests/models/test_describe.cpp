@@ -193,3 +193,17 @@ TEST_CASE("describe: a gantry whose feet stand beside a pallet's runners is on t
   CHECK(j["objects"][0]["on"] == json({{"kind", "floor"}}));
   CHECK(j["objects"][1]["on"] == json({{"kind", "object"}, {"object", 1}, {"name", "pallet"}}));
 }
+
+TEST_CASE("describe: how far a gripper's fingers reach and how wide they open", "[models][describe][devices]") {
+  // abb-irb120.rsd by hand: the tool centre point at x = 454, a = +x; the
+  // fingers' boxes run x 394..474 (20 past it) with inner faces at z = 12
+  // and z = -12 (24 apart).
+  const auto r = runCli({"describe", "irb120-cell"});
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("  fingers  reach 20 below the tool centre point (along a), open 24 wide (as drawn)\n"));
+  const auto j = runCli({"describe", "irb120-cell", "--json"});
+  REQUIRE(j.code == 0);
+  const auto doc = nlohmann::json::parse(j.out);
+  CHECK(doc["robots"][0]["fingers"]["reach"].get<double>() == Approx(20));
+  CHECK(doc["robots"][0]["fingers"]["opening"].get<double>() == Approx(24));
+}

@@ -109,7 +109,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       "p.rsd:12:25: expected " + colour + " before the end of the line",
       "p.rsd:13:18: expected the LINE's second endpoint (z coordinate) (at most 1e+09 in size), found '2000000000'",
       "p.rsd:14:5: END takes nothing after it, found 'foo'",
-      "p.rsd:16:3: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE or END, found 'LINK'",
+      "p.rsd:16:3: expected LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE, PART, FIXTURE, BELT or END, found 'LINK'",
       "p.rsd:17:12: expected the BOX's bottom edge before the end of the line",
       "p.rsd:20:3: expected BASE, FINGERS, LETTER, PRECISION, RANGE, SPEED, ACCELERATION, ACTUATION, AXIS2, AXIS3, NORMAL, APPROACH or END, "
       "found 'GRASP'",
@@ -133,9 +133,10 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       "p.rsd:41:3: expected " + robotStatements + ", found 'WOBBLE'",
       "p.rsd:42:7: expected a link name before the end of the line",
       "p.rsd:43:11: expected a gripper name, found '9'",
-      "p.rsd:46:3: expected ROBOT, OBJECT, FLOOR or END, found 'AT'",
+      "p.rsd:46:3: expected ROBOT, OBJECT, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END, found 'AT'",
       "p.rsd:47:17: expected a position (z coordinate) before the end of the line",
-      "p.rsd:48:11: expected ROBOT, OBJECT, AT, ROTATE, FLOOR or END, found 'SPIN'",
+      "p.rsd:48:11: expected ROBOT, OBJECT, AT, ROTATE, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END, "
+      "found 'SPIN'",
       "p.rsd:49:10: expected an object name, found '7'",
       "p.rsd:50:18: expected an axis X, Y or Z, found 'Q'",
       "p.rsd:52:1: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found 'END'",

@@ -1,5 +1,6 @@
 #include "tools/cli/lib/describe_command.h"
 
+#include <optional>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -89,7 +90,38 @@ struct RobotFacts {
   workcell::Reach reach;
   Eigen::AlignedBox3d base;
   workcell::Support on;
+  // The gripper's fingers as drawn (open), from the tool centre point at
+  // home: how far their lines reach ahead of it along the approach vector
+  // a (below it, for a gripper pointing down), and the gap between them
+  // across it (along n or o, whichever the fingers lie apart on).
+  std::optional<double> fingerReach, fingerOpening;
 };
+
+void fingerFacts(const workcell::PlacedRobot& placed, const Eigen::Isometry3d& tool, RobotFacts& f) {
+  const workcell::Robot& robot = placed.robot;
+  if (!robot.hasGripper || robot.gripper.finger2.segments.empty() || robot.gripper.finger3.segments.empty()) return;
+  const Eigen::Vector3d tcp = tool.translation(), a = tool.linear().col(2);
+  double reach = -1e300;
+  const auto points = [&](const workcell::Shape& s, const Eigen::Vector3d& axis, double& lo, double& hi) {
+    lo = 1e300, hi = -1e300;
+    for (const workcell::Segment& seg : s.segments)
+      for (const Eigen::Vector3d& d : {seg.a, seg.b}) {
+        const Eigen::Vector3d w = placed.F_world_design * d;
+        reach = std::max(reach, (w - tcp).dot(a));
+        lo = std::min(lo, (w - tcp).dot(axis)), hi = std::max(hi, (w - tcp).dot(axis));
+      }
+  };
+  double gap = -1e300;
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Vector3d axis = tool.linear().col(k);
+    double lo2, hi2, lo3, hi3;
+    points(robot.gripper.finger2, axis, lo2, hi2);
+    points(robot.gripper.finger3, axis, lo3, hi3);
+    gap = std::max({gap, lo3 - hi2, lo2 - hi3});
+  }
+  f.fingerReach = reach;
+  f.fingerOpening = gap;
+}
 
 RobotFacts factsOf(const workcell::PlacedRobot& placed, std::span<const workcell::PlacedObject> objects) {
   RobotFacts f;
@@ -102,6 +134,7 @@ RobotFacts factsOf(const workcell::PlacedRobot& placed, std::span<const workcell
   for (const kinematics::Joint& j : chain.joints()) home.push_back(j.home);
   kinematics::forwardKinematics(chain, data, home);
   f.homeTcp = kinematics::toolPose(chain, data).translation();
+  fingerFacts(placed, kinematics::toolPose(chain, data), f);
   f.reach = workcell::reachOf(placed);
   f.base = placed.robot.links.empty() ? Eigen::AlignedBox3d()
                                       : workcell::worldBoxOf(placed.robot.links.front(), placed.F_world_design);
@@ -128,6 +161,9 @@ void robotText(const RobotFacts& f, bool first, const workcell::Workcell& cell, 
                                            : (m.coupling ? "on" : "off"));
   }
   out << fmt::format("  tool centre point at home (every motor at 0): {}\n", point(f.homeTcp));
+  if (f.fingerReach)
+    out << fmt::format("  fingers  reach {} below the tool centre point (along a), open {} wide (as drawn)\n",
+                       formatNumber(*f.fingerReach), formatNumber(*f.fingerOpening));
   if (f.reach.radius)
     out << fmt::format("  reach    {} from joint {}'s axis (tool centre point)\n", formatNumber(*f.reach.radius),
                        robot.joints.front().letter);
@@ -156,6 +192,7 @@ Json robotJson(const RobotFacts& f, const workcell::Workcell& cell) {
   j["frame0"] = {{"origin", vec(f.F_world_0.translation())}, {"x", vec(r.col(0))}, {"z", vec(r.col(2))}};
   j["motors"] = motors;
   j["home_tcp"] = vec(f.homeTcp);
+  if (f.fingerReach) j["fingers"] = {{"reach", *f.fingerReach}, {"opening", *f.fingerOpening}};
   j["reach"] = {{"radius", f.reach.radius ? Json(*f.reach.radius) : Json(nullptr)},
                 {"min", vec(f.reach.min)},
                 {"max", vec(f.reach.max)}};

@@ -1,7 +1,7 @@
 // Robot and workcell descriptions (.rsd) and stimuli files (.stim):
 // diagnostics from their readers, symbols, hover (a robot link's D-H row,
-// a colour's name and number, a stimulus line in words), and go to
-// definition across files (a name another file defines: its file on the
+// a colour's name and number, a device, a stimulus line in words), and go
+// to definition (a sensor a wire names, the object a conveyor runs) and across files (a name another file defines: its file on the
 // library path).
 #include <fmt/format.h>
 
@@ -127,6 +127,81 @@ void symbolsOf(const Document& doc, Encoding enc, const std::vector<Def>& defs, 
   }
 }
 
+bool covers(diag::Pos name, std::size_t length, diag::Pos pos) {
+  return name.line == pos.line && pos.col >= name.col && pos.col <= name.col + length;
+}
+
+std::string point(const Eigen::Vector3d& p) {
+  return fmt::format("({}, {}, {})", formatNumber(p.x()), formatNumber(p.y()), formatNumber(p.z()));
+}
+
+std::string signalText(const workcell::Signal& s) {
+  using K = workcell::Signal::Kind;
+  switch (s.kind) {
+    case K::On: return "always on";
+    case K::Off: return "always off";
+    case K::Output: return fmt::format("output {}", s.number);
+    case K::Input: return fmt::format("input {}", s.number);
+    case K::Sensor: return fmt::format("sensor `{}`", s.name);
+  }
+  return {};
+}
+
+// Every signal a workcell's devices read, for go to definition.
+std::vector<const workcell::Signal*> signalsIn(const workcell::Devices& d) {
+  std::vector<const workcell::Signal*> out;
+  for (const workcell::Conveyor& v : d.conveyors) out.push_back(&v.run);
+  for (const workcell::Feeder& f : d.feeders)
+    if (f.when) out.push_back(&*f.when);
+  for (const workcell::Wire& w : d.wires) out.push_back(&w.source);
+  return out;
+}
+
+const workcell::Sensor* sensorNamed(const workcell::Devices& d, const std::string& name) {
+  for (const workcell::Sensor& s : d.sensors)
+    if (base::sameName(s.name, name)) return &s;
+  return nullptr;
+}
+
+std::string sensorText(const workcell::Sensor& s) {
+  const char* sees = s.sees == workcell::Sensor::Sees::Parts ? "parts" : s.sees == workcell::Sensor::Sees::Robots ? "robots" : "parts and robots";
+  if (s.shape == workcell::Sensor::Shape::Beam)
+    return fmt::format("sensor `{}`: a beam from {} to {}; on while it sees {} across it", s.name, point(s.a), point(s.b), sees);
+  return fmt::format("sensor `{}`: a zone from {} to {}; on while it sees {} in it", s.name, point(s.zone.min()),
+                     point(s.zone.max()), sees);
+}
+
+// Hover on a device's name, where it is declared or where a signal names it.
+std::string deviceHover(const workcell::Devices& d, diag::Pos pos) {
+  for (const workcell::Sensor& s : d.sensors)
+    if (covers(s.pos, s.name.size(), pos)) return sensorText(s);
+  for (const workcell::Signal* s : signalsIn(d))
+    if (s->kind == workcell::Signal::Kind::Sensor && covers(s->pos, s->name.size(), pos))
+      if (const workcell::Sensor* sensor = sensorNamed(d, s->name)) return sensorText(*sensor);
+  for (const workcell::Conveyor& v : d.conveyors)
+    if (covers(v.pos, v.name.size(), pos))
+      return fmt::format("conveyor `{}`: runs its belt at {} length units per second {}", v.name, formatNumber(v.speed),
+                         v.run.kind == workcell::Signal::Kind::On    ? std::string("always")
+                         : v.run.kind == workcell::Signal::Kind::Off ? std::string("never")
+                                                                     : fmt::format("while {} is on", signalText(v.run)));
+  for (const workcell::Feeder& f : d.feeders)
+    if (covers(f.pos, f.name.size(), pos))
+      return fmt::format("feeder `{}`: puts a `{}` at {} {}{}", f.name, f.objectName, point(f.at),
+                         f.everyUs ? fmt::format("at the start and then every {} s", formatNumber(*f.everyUs / 1e6))
+                                   : fmt::format("on each rising edge of {}", signalText(*f.when)),
+                         f.count ? fmt::format(", at most {}", *f.count) : std::string());
+  for (const workcell::Sink& k : d.sinks)
+    if (covers(k.pos, k.name.size(), pos))
+      return fmt::format("sink `{}`: a part whose centre enters the zone from {} to {} leaves the cell, counted", k.name,
+                         point(k.zone.min()), point(k.zone.max()));
+  for (const workcell::Wire& w : d.wires)
+    if (w.pos.line == pos.line)
+      return fmt::format("wire: input {} follows {}{}{}", w.input, signalText(w.source),
+                         w.afterUs ? fmt::format(", {} s later", formatNumber(w.afterUs / 1e6)) : std::string(),
+                         w.inverted ? ", inverted" : "");
+  return {};
+}
+
 }  // namespace
 
 Json descriptionDiagnostics(const Document& doc, Encoding enc) {
@@ -167,6 +242,8 @@ Json descriptionHover(const Document& doc, Encoding enc, Position at, const std:
       return reply(fmt::format("colour **{}** (EGA colour {})", compiler::colorName(*c), static_cast<int>(*c)));
   const Parsed p = parse(doc);
   const diag::Pos pos = doc.toPos(at, enc);
+  for (const compiler::WorkcellDef& w : p.file.workcells)
+    if (std::string text = deviceHover(w.devices, pos); !text.empty()) return reply(std::move(text));
   for (const compiler::RobotDef& r : p.file.robots)
     for (std::size_t i = 0; i < r.links.size(); ++i) {
       const compiler::NameRef& l = r.links[i].link;
@@ -214,7 +291,22 @@ Json definitionInFile(const std::string& file, const std::string& name, Encoding
 
 Json descriptionDefinition(const Document& doc, Encoding enc, Position at, const std::vector<fs::path>& searchPath) {
   const Parsed p = parse(doc);
-  const compiler::NameRef* ref = referenceAt(p.file, doc.toPos(at, enc));
+  const diag::Pos pos = doc.toPos(at, enc);
+  // A sensor a signal names (`WIRE eye TO IN 1`): its SENSOR line; an
+  // object a CONVEYOR names: its OBJECT line.
+  for (const compiler::WorkcellDef& w : p.file.workcells) {
+    for (const workcell::Signal* s : signalsIn(w.devices))
+      if (s->kind == workcell::Signal::Kind::Sensor && covers(s->pos, s->name.size(), pos))
+        if (const workcell::Sensor* sensor = sensorNamed(w.devices, s->name))
+          return location(doc.uri(), definitionName(doc, enc, sensor->pos, sensor->name));
+    for (const workcell::Conveyor& v : w.devices.conveyors)
+      if (covers(v.pos, v.name.size(), pos))
+        for (const compiler::PlacementDef& pl : w.placements)
+          if (!pl.isRobot && base::sameName(pl.as.name.empty() ? pl.what.name : pl.as.name, v.name))
+            return location(doc.uri(), definitionName(doc, enc, pl.as.name.empty() ? pl.what.pos : pl.as.pos,
+                                                      pl.as.name.empty() ? pl.what.name : pl.as.name));
+  }
+  const compiler::NameRef* ref = referenceAt(p.file, pos);
   if (!ref) return nullptr;
   // Defined in this file?
   const auto here = [&](const auto& defs) -> std::optional<Range> {
