@@ -23,6 +23,7 @@
 #include <thread>
 
 #include "render_test_util.h"
+#include "tests/support/measured_process.h"
 #include "runtime/run/run.h"
 #include "runtime/run/run_log.h"
 
@@ -70,49 +71,14 @@ void requireExactWhereItSays(const rs::runtime::RunLog& whole, const rs::runtime
   }
 }
 
-// The high-water mark of a process's resident memory (KiB), -1 once it is gone.
-long highWaterKiB(pid_t pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
-  return -1;
-}
-
-struct Child {
-  int status = -1;
-  long ownPeakKiB = 0;  // its VmHWM, read while it runs
-  long rusageKiB = 0;   // wait4's ru_maxrss: the larger of its peak and this process's at the spawn
+struct Child : rstest::Measured {
   std::string out;
 };
 
-// ROBOTSIM_BINARY with `args`, its standard output kept.
+// ROBOTSIM_BINARY with `args`, its standard output kept (tests/support/measured_process.h).
 Child spawnMeasured(std::vector<std::string> args, const rs::testing::TempDir& dir) {
   const std::string out = (dir.path() / "stdout.txt").string();
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  args.insert(args.begin(), ROBOTSIM_BINARY);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = -1;
-  REQUIRE(posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0);
-  posix_spawn_file_actions_destroy(&actions);
-  Child c;
-  rusage usage{};
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
-  for (;;) {
-    c.ownPeakKiB = std::max(c.ownPeakKiB, highWaterKiB(pid));
-    if (wait4(pid, &c.status, WNOHANG, &usage) == pid) break;
-    if (std::chrono::steady_clock::now() > deadline) {
-      kill(pid, SIGKILL);
-      wait4(pid, &c.status, 0, &usage);
-      FAIL("robotsim did not end within 3 minutes");
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  c.rusageKiB = usage.ru_maxrss;
+  Child c{rstest::runMeasured(std::move(args), out, 3), {}};
   c.out = rs::testing::readBytes(out);
   return c;
 }
@@ -229,9 +195,9 @@ TEST_CASE("animate of a MOVES loop at the default limits: the page and the memor
   CHECK(html.size() < 32u << 20);
 
   const long memory = kProcessKiB + recordingKiB(steps, motors) + static_cast<long>(12 * html.size() / 1024);
-  INFO("peak " << c.ownPeakKiB << " KiB (wait4: " << c.rusageKiB << "), bound " << memory << " KiB");
-  CHECK(c.ownPeakKiB > 0);
-  CHECK(c.ownPeakKiB <= memory);
+  INFO("peak " << c.peakKiB << " KiB (wait4: " << c.rusageKiB << "), bound " << memory << " KiB");
+  CHECK(c.peakKiB > 0);
+  CHECK(c.peakKiB <= memory);
   CHECK(c.rusageKiB <= std::max(memory, before));
 }
 
@@ -255,9 +221,9 @@ TEST_CASE("plot of a MOVES loop at the default limits: memory within docs/render
   // The log's steps (the time limit ends the run at about 25,000), its
   // thinned lines, and the samples (7 motors, the TCP, 16 lines, 8 bytes each).
   const long memory = kProcessKiB + recordingKiB(30'000, 7) + static_cast<long>(samples * 30 * 8 / 1024);
-  INFO("peak " << c.ownPeakKiB << " KiB (wait4: " << c.rusageKiB << "), bound " << memory << " KiB");
-  CHECK(c.ownPeakKiB > 0);
-  CHECK(c.ownPeakKiB <= memory);
+  INFO("peak " << c.peakKiB << " KiB (wait4: " << c.rusageKiB << "), bound " << memory << " KiB");
+  CHECK(c.peakKiB > 0);
+  CHECK(c.peakKiB <= memory);
   CHECK(c.rusageKiB <= std::max(memory, before));
 
   // The CSV of a shorter run of the same loop, against the whole log's

@@ -7,6 +7,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -33,7 +34,8 @@ inline long highWaterKiB(pid_t pid) {
 
 struct Measured {
   int status = -1;
-  long peakKiB = 0;
+  long peakKiB = 0;    // its VmHWM, read while it runs
+  long rusageKiB = 0;  // wait4's ru_maxrss: the larger of its peak and the spawner's at the spawn
 };
 
 /// Runs ROBOTSIM_BINARY with `args` (standard output to `out`, standard
@@ -54,13 +56,17 @@ inline Measured runMeasured(std::vector<std::string> args, const std::string& ou
   posix_spawn_file_actions_destroy(&actions);
   Measured m;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(minutes);
+  rusage usage{};
   while (std::chrono::steady_clock::now() < deadline) {
     m.peakKiB = std::max(m.peakKiB, highWaterKiB(pid));
-    if (waitpid(pid, &m.status, WNOHANG) == pid) return m;
+    if (wait4(pid, &m.status, WNOHANG, &usage) == pid) {
+      m.rusageKiB = usage.ru_maxrss;
+      return m;
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   kill(pid, SIGKILL);
-  waitpid(pid, &m.status, 0);
+  wait4(pid, &m.status, 0, &usage);
   FAIL("robotsim did not end within " << minutes << " minutes");
   return m;
 }
