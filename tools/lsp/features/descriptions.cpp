@@ -22,17 +22,8 @@ namespace rs::lsp {
 
 using base::formatNumber;
 
-namespace {
-
-namespace fs = std::filesystem;
-
-std::string nameOf(const Document& doc) {
-  const std::string path = pathOfUri(doc.uri());
-  return path.empty() ? doc.uri() : path;
-}
-
-Json diagnosticsJson(const Document& doc, Encoding enc, const std::vector<diag::Diagnostic>& list,
-                     const std::string& file) {
+Json fileDiagnosticsJson(const Document& doc, Encoding enc, const std::vector<diag::Diagnostic>& list,
+                         const std::string& file) {
   Json out = Json::array();
   for (const diag::Diagnostic& d : list) {
     if (d.file != file) continue;
@@ -45,6 +36,16 @@ Json diagnosticsJson(const Document& doc, Encoding enc, const std::vector<diag::
   }
   return out;
 }
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string nameOf(const Document& doc) {
+  const std::string path = pathOfUri(doc.uri());
+  return path.empty() ? doc.uri() : path;
+}
+
 
 struct Parsed {
   compiler::DescriptionFile file;
@@ -213,7 +214,7 @@ Json descriptionDiagnostics(const Document& doc, Encoding enc) {
     library.workcell(nameOf(doc));
     all.insert(all.end(), library.diagnostics().begin(), library.diagnostics().end());
   }
-  return diagnosticsJson(doc, enc, all, nameOf(doc));
+  return fileDiagnosticsJson(doc, enc, all, nameOf(doc));
 }
 
 Json descriptionSymbols(const Document& doc, Encoding enc) {

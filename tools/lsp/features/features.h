@@ -122,6 +122,10 @@ Json semanticTokens(const ProgramContext& p);
 
 // descriptions.cpp: .rsd and .stim files.
 Json descriptionDiagnostics(const Document& doc, Encoding enc);
+/// The diagnostics of `list` that are in `file`, as LSP Diagnostic objects at
+/// the words of `doc` (a description's or a URDF file's).
+Json fileDiagnosticsJson(const Document& doc, Encoding enc, const std::vector<diag::Diagnostic>& list,
+                         const std::string& file);
 Json descriptionSymbols(const Document& doc, Encoding enc);
 Json descriptionHover(const Document& doc, Encoding enc, Position at, const std::vector<std::filesystem::path>& searchPath);
 Json descriptionDefinition(const Document& doc, Encoding enc, Position at,

@@ -15,22 +15,12 @@ namespace rs::lsp {
 using base::formatNumber;
 
 Json urdfDiagnostics(const Document& doc, Encoding enc, const std::vector<std::filesystem::path>& searchPath) {
-  Json out = Json::array();
   const std::string path = pathOfUri(doc.uri());
-  if (path.empty()) return out;
+  if (path.empty()) return Json::array();
   compiler::Library library(searchPath);
   library.overlay(path, doc.text());
   (void)library.robot(path);
-  for (const diag::Diagnostic& d : library.diagnostics()) {
-    if (d.file != path) continue;
-    Json j = {{"range", toJson(doc.wordAt(d.pos, enc))},
-              {"severity", d.severity == diag::Severity::Error ? 1 : d.severity == diag::Severity::Warning ? 2 : 3},
-              {"source", "robotsim"},
-              {"message", d.hint.empty() ? d.message : d.message + "\nhint: " + d.hint}};
-    if (!d.code.empty()) j["code"] = d.code;
-    out.push_back(std::move(j));
-  }
-  return out;
+  return fileDiagnosticsJson(doc, enc, library.diagnostics(), path);
 }
 
 std::string cellTableHover(const ProgramContext& p) {
