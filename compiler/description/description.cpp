@@ -59,11 +59,11 @@ void Parser::markDamaged(Block b) {
 void Parser::readLine(const std::vector<Word>& words, diag::Pos lineEnd) {
   if (words.empty()) return;
   for (const Word& w : words)
-    if (w.type == MP::OTHER) return diag_.error(w.pos, fmt::format("unexpected character '{}'", w.text));
+    if (w.type == MP::OTHER) return diag_.error(w.pos, fmt::format("unexpected character '{}'", diag::excerpt(w.text)));
   Cursor c(words, lineEnd, diag_);
   if (block_ == Block::None) return open(c, words[0]);
   if (c.keyword("END")) {
-    if (!c.atEnd()) diag_.error(c.pos(), fmt::format("END takes nothing after it, found '{}'", c.peek().text));
+    if (!c.atEnd()) diag_.error(c.pos(), fmt::format("END takes nothing after it, found '{}'", diag::excerpt(c.peek().text)));
     block_ = Block::None;
     return;
   }
@@ -88,7 +88,7 @@ void Parser::open(Cursor& c, const Word& head) {
     if (c.keyword(blockName(k))) kind = k;
   if (kind == Block::None) {
     constexpr std::string_view kBlockKinds = "LINK, OBJECT, GRIPPER, ROBOT or WORKCELL";
-    diag_.error(head.pos, fmt::format("expected {}, found '{}'", kBlockKinds, head.text),
+    diag_.error(head.pos, fmt::format("expected {}, found '{}'", kBlockKinds, diag::excerpt(head.text)),
                 diag::Hint{head.type == MP::NAME ? didYouMean(head.text, kBlockKinds) : std::string()});
     return;
   }
@@ -98,7 +98,7 @@ void Parser::open(Cursor& c, const Word& head) {
   if (!c.name(name, fmt::format("a name for the {}", blockName(kind)))) {
   } else if (!c.atEnd()) {
     diag_.error(c.pos(), fmt::format("unexpected '{}' after the {} name (statements go on the next lines)",
-                                     c.peek().text, blockName(kind)));
+                                     diag::excerpt(c.peek().text), blockName(kind)));
   }
   block_ = kind;
   blockPos_ = head.pos;

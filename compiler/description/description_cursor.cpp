@@ -53,7 +53,7 @@ bool Cursor::failAt(diag::Pos at, std::string message, std::string hint) {
 bool Cursor::fail(std::string_view what, std::string hint) {
   diag_.error(pos(),
               atEnd() ? fmt::format("expected {} before the end of the line", what)
-                      : fmt::format("expected {}, found '{}'", what, peek().text),
+                      : fmt::format("expected {}, found '{}'", what, diag::excerpt(peek().text)),
               diag::Hint{std::move(hint)});
   return false;
 }
@@ -65,7 +65,7 @@ bool Cursor::failOneOf(std::string_view keywords) {
 bool Cursor::number(double& out, std::string_view what) {
   if (atEnd() || peek().type != MP::NUMBER) return fail(what);
   if (std::string written, plain; exponent(written, plain)) {
-    diag_.error(pos(), fmt::format("'{}': exponents are not supported in descriptions", written),
+    diag_.error(pos(), fmt::format("'{}': exponents are not supported in descriptions", diag::excerpt(written)),
                 diag::Hint{plain.empty() ? std::string("write the number in full, with its decimals")
                                          : fmt::format("write {}", plain)});
     return false;
@@ -131,7 +131,7 @@ bool Cursor::integer(std::int32_t& out, std::string_view what) {
   const diag::Pos at = pos();
   if (!number(v, what)) return false;
   if (v != std::floor(v) || v < -2147483648.0 || v > 2147483647.0) {
-    diag_.error(at, fmt::format("expected {} (a whole number), found '{}'", what, w_[i_ - 1].text));
+    diag_.error(at, fmt::format("expected {} (a whole number), found '{}'", what, diag::excerpt(w_[i_ - 1].text)));
     return false;
   }
   out = static_cast<std::int32_t>(v);

@@ -105,6 +105,9 @@ TEST_CASE(
   dir.write("submissions/other/secret.rsd", "SECRET-OTHER one two\nSECRET-OTHER three\n");
   dir.write("submissions/eve/notes.txt", "SECRET-NOTES: not a description\n");
   dir.write("submissions/eve/mine.rsd", "WORKCELL mine\n  ROBOT rhino-scara AT 0 0 0\nEND\n");
+  // A file of the submission's own folder named .rsd but holding other text:
+  // at most its offending token is quoted, cut, never a line of it.
+  dir.write("submissions/eve/diary.rsd", "diary private words\n" + std::string(1000, 'W') + " more private\n");
   const fs::path eve = dir.path() / "submissions" / "eve";
   fs::create_symlink("/etc/passwd", eve / "pw.rsd");
   const auto submit = [&](const std::string& name, const std::string& cell) {
@@ -118,10 +121,12 @@ TEST_CASE(
   const std::string escaped = submit("escaped", "\x1b]0;pwned\x07");
   const std::string library = submit("library", "scara-pick");
   const std::string own = submit("own", "mine.rsd");
+  submit("diary", "diary.rsd");
 
   const CliResult r = runCli({"test", "--spec", spec, eve.string()});
   INFO(r.out << r.err);
-  for (const std::string leak : {"root:", "PATH=", "HOME=", "SECRET", "\x1b"}) {
+  for (const std::string& leak : {std::string("root:"), std::string("PATH="), std::string("HOME="), std::string("SECRET"),
+                                 std::string("\x1b"), std::string("private"), std::string(65, 'W')}) {
     INFO(leak);
     CHECK(r.out.find(leak) == std::string::npos);
     CHECK(r.err.find(leak) == std::string::npos);
@@ -135,7 +140,10 @@ TEST_CASE(
         (eve / "notes.txt").string() + ": error: not a robot or workcell description",
         std::string("  hint: a submission's '; cell:' names a library robot or cell (robotsim list) or a .rsd file in "
                     "its own folder\n"),
-        library + " [it ends] PASSED", own + " [it ends] PASSED"}) {
+        library + " [it ends] PASSED", own + " [it ends] PASSED",
+        (eve / "diary.rsd").string() + ":1:1: error: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found 'diary'\n",
+        (eve / "diary.rsd").string() + ":2:1: error: expected LINK, OBJECT, GRIPPER, ROBOT or WORKCELL, found '" +
+            std::string(64, 'W') + "\u2026'\n"}) {
     INFO(want);
     CHECK(r.out.find(want) != std::string::npos);
   }

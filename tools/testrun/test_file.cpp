@@ -260,7 +260,10 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   const launch::LoadedProgram loaded = launch::loadProgram(request);
   if (loaded.source && !r.sourceOf(loaded.source->name()))
     r.sources.push_back(std::make_shared<const diag::SourceFile>(*loaded.source));
-  if (loaded.descriptions)
+  // Grading quotes no line of a file the submission names (its cell): a
+  // diagnostic there shows its place and the offending token only, so a
+  // `.rsd` holding anything else echoes no more than one word of it.
+  if (loaded.descriptions && !grading)
     for (const diag::Diagnostic& d : loaded.diagnostics)
       if (const diag::SourceFile* s = loaded.descriptions->source(d.file))
         r.sources.push_back(std::make_shared<const diag::SourceFile>(*s));
