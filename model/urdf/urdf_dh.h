@@ -5,6 +5,14 @@
 // the common normal of z_{i-1} and z_i. Where D-H leaves a choice, this
 // file makes it, the same way every time:
 //
+//  - frames 1..n-1, first: where the link joint i moves has a home frame
+//    that is already a D-H frame of joint i (its z along the joint's axis,
+//    its origin on it: the joint turns the link about the link's own z; its
+//    x perpendicular to z_i and meeting it), x_i is that frame's x and o_i
+//    where its x meets z_i. robotsim's export writes every link so, so an
+//    exported robot reads back to its own table; a URDF whose link frames
+//    are not D-H frames (the joint about the link's y, or x missing z_i)
+//    gets the choices below;
 //  - frame 0: on joint 1's axis at the foot of the root link's origin;
 //    x_0 the root's x made perpendicular to z_0 (the root's y if x is
 //    along the axis);
@@ -42,6 +50,10 @@ std::string_view relationName(AxisRelation r);
 struct DhAxis {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< unit
+  /// The home frame of the link this joint moves (its URDF child), where
+  /// the file gives one: frame i is taken from it when it already is a D-H
+  /// frame of the joint (see the file's comment).
+  std::optional<Eigen::Isometry3d> link;
 };
 
 struct DhFrames {
