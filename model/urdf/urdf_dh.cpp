@@ -76,9 +76,15 @@ DhFrames dhFramesFromAxes(std::span<const DhAxis> axes, const Eigen::Isometry3d&
   const std::size_t n = axes.size();
   // Frame 0.
   const Eigen::Vector3d z0 = axes[0].direction;
-  Eigen::Vector3d x0 = perpendicular(F_root.linear().col(0), z0);
-  if (x0.isZero()) x0 = perpendicular(F_root.linear().col(1), z0);
-  out.frames.push_back(frameOf(footOn(axes[0], F_root.translation()), x0, z0));
+  const std::optional<Eigen::Isometry3d>& P = axes[0].parent;
+  if (P && P->linear().col(2).cross(z0).norm() <= kParallel &&
+      (footOn(axes[0], P->translation()) - P->translation()).norm() <= kMeet) {
+    out.frames.push_back(frameOf(footOn(axes[0], P->translation()), P->linear().col(0), z0));
+  } else {
+    Eigen::Vector3d x0 = perpendicular(F_root.linear().col(0), z0);
+    if (x0.isZero()) x0 = perpendicular(F_root.linear().col(1), z0);
+    out.frames.push_back(frameOf(footOn(axes[0], F_root.translation()), x0, z0));
+  }
   // Frames 1..n-1: z_i is joint i+1's axis.
   for (std::size_t i = 1; i < n; ++i) {
     const Eigen::Isometry3d& prev = out.frames.back();
@@ -112,11 +118,11 @@ DhFrames dhFramesFromAxes(std::span<const DhAxis> axes, const Eigen::Isometry3d&
       }
     }
     const std::optional<Eigen::Isometry3d> written =
-        axes[i - 1].link ? fromLinkFrame(*axes[i - 1].link, DhAxis{o, u}, next) : std::nullopt;
+        axes[i - 1].link ? fromLinkFrame(*axes[i - 1].link, DhAxis{o, u, std::nullopt, std::nullopt}, next) : std::nullopt;
     out.frames.push_back(written ? *written : frame);
   }
   // Frame n: the tip where it can be.
-  const DhAxis last{out.frames.back().translation(), out.frames.back().linear().col(2)};
+  const DhAxis last{out.frames.back().translation(), out.frames.back().linear().col(2), std::nullopt, std::nullopt};
   if (obeysDh(F_tip, last)) {
     out.frames.push_back(F_tip);
   } else {

@@ -13,9 +13,11 @@
 //    exported robot reads back to its own table; a URDF whose link frames
 //    are not D-H frames (the joint about the link's y, or x missing z_i)
 //    gets the choices below;
-//  - frame 0: on joint 1's axis at the foot of the root link's origin;
-//    x_0 the root's x made perpendicular to z_0 (the root's y if x is
-//    along the axis);
+//  - frame 0: the frame of the link joint 1 hangs from, where its z is
+//    along joint 1's axis (either sense) and its origin on it (with z_0
+//    the axis; the export's base_link or link_0); otherwise on joint 1's
+//    axis at the foot of the root link's origin, x_0 the root's x made
+//    perpendicular to z_0 (the root's y if x is along the axis);
 //  - skew axes: o_i at the foot of the common normal on z_i, x_i from z_{i-1}
 //    towards z_i (so a_i > 0);
 //  - intersecting axes: o_i at the crossing, x_i = z_{i-1} × z_i (so a_i = 0,
@@ -54,6 +56,9 @@ struct DhAxis {
   /// the file gives one: frame i is taken from it when it already is a D-H
   /// frame of the joint (see the file's comment).
   std::optional<Eigen::Isometry3d> link;
+  /// The home frame of the link it hangs from (its URDF parent): frame 0 is
+  /// taken from joint 1's where that already is a D-H frame 0.
+  std::optional<Eigen::Isometry3d> parent;
 };
 
 struct DhFrames {

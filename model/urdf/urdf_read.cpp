@@ -120,7 +120,7 @@ struct Reader {
     robot.name = model.getName().empty() ? fs::path(file).stem().string() : model.getName();
     robot.urdf = workcell::UrdfSource{file, chain.root, chain.tip};
     std::vector<DhAxis> axes;
-    for (const ChainJoint& j : chain.joints) axes.push_back({j.point, j.direction, j.F_design_child});
+    for (const ChainJoint& j : chain.joints) axes.push_back({j.point, j.direction, j.F_design_child, j.F_design_parent});
     const DhFrames dh = dhFramesFromAxes(axes, chain.F_design_root, chain.F_design_tip);
     robot.frames = dh.frames;
     robot.tool = dh.tool;
