@@ -202,6 +202,8 @@ UrdfChain extractChain(const ::urdf::ModelInterface& model, const std::string& t
       const Eigen::Isometry3d F_joint = F_root[l->getParent()->name] * transformOf(j->parent_to_joint_origin_transform);
       cj.point = designPoint(F_joint.translation());
       cj.direction = designDirection(F_joint.linear() * vec(j->axis).normalized()).normalized();
+      cj.F_design_child = designFrame(F_root[l->name]);
+      cj.F_design_parent = designFrame(F_root[l->getParent()->name]);
       if (j->limits) {
         cj.hasLimits = true;
         cj.lower = j->limits->lower, cj.upper = j->limits->upper, cj.velocity = j->limits->velocity;

@@ -33,6 +33,10 @@ struct ChainJoint {
   bool continuous = false;
   Eigen::Vector3d point = Eigen::Vector3d::Zero();      ///< a point of its axis at home (design)
   Eigen::Vector3d direction = Eigen::Vector3d::UnitY();  ///< the axis, unit (design)
+  /// The home frames of the link it moves (its URDF child) and of the link
+  /// it hangs from (its URDF parent); design.
+  Eigen::Isometry3d F_design_child = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d F_design_parent = Eigen::Isometry3d::Identity();
   bool hasLimits = false;
   double lower = 0, upper = 0, velocity = 0;  ///< URDF units: radians or metres (per second)
   /// Set on a joint whose successor mimics it as COUPLING expresses.

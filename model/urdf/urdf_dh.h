@@ -5,9 +5,19 @@
 // the common normal of z_{i-1} and z_i. Where D-H leaves a choice, this
 // file makes it, the same way every time:
 //
-//  - frame 0: on joint 1's axis at the foot of the root link's origin;
-//    x_0 the root's x made perpendicular to z_0 (the root's y if x is
-//    along the axis);
+//  - frames 1..n-1, first: where the link joint i moves has a home frame
+//    that is already a D-H frame of joint i (its z along the joint's axis,
+//    its origin on it: the joint turns the link about the link's own z; its
+//    x perpendicular to z_i and meeting it), x_i is that frame's x and o_i
+//    where its x meets z_i. robotsim's export writes every link so, so an
+//    exported robot reads back to its own table; a URDF whose link frames
+//    are not D-H frames (the joint about the link's y, or x missing z_i)
+//    gets the choices below;
+//  - frame 0: the frame of the link joint 1 hangs from, where its z is
+//    along joint 1's axis (either sense) and its origin on it (with z_0
+//    the axis; the export's base_link or link_0); otherwise on joint 1's
+//    axis at the foot of the root link's origin, x_0 the root's x made
+//    perpendicular to z_0 (the root's y if x is along the axis);
 //  - skew axes: o_i at the foot of the common normal on z_i, x_i from z_{i-1}
 //    towards z_i (so a_i > 0);
 //  - intersecting axes: o_i at the crossing, x_i = z_{i-1} × z_i (so a_i = 0,
@@ -42,6 +52,13 @@ std::string_view relationName(AxisRelation r);
 struct DhAxis {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< unit
+  /// The home frame of the link this joint moves (its URDF child), where
+  /// the file gives one: frame i is taken from it when it already is a D-H
+  /// frame of the joint (see the file's comment).
+  std::optional<Eigen::Isometry3d> link;
+  /// The home frame of the link it hangs from (its URDF parent): frame 0 is
+  /// taken from joint 1's where that already is a D-H frame 0.
+  std::optional<Eigen::Isometry3d> parent;
 };
 
 struct DhFrames {

@@ -39,6 +39,12 @@ class Exporter {
       : robot_(robot), chain_(*robot.chain), n_(chain_.size()), design_(options.millimetresPerUnit, options.up),
         options_(options) {
     homeFrames();
+    // D-H frame 0 gets a link of its own where it is not base_link's frame:
+    // a reader finds it there (model/urdf/urdf_dh.h), as it could not from
+    // joint 1's axis alone (where on the axis, which way x_0 points).
+    const Eigen::Isometry3d& F0 = F_[0];
+    frame0Link_ = n_ > 0 && (!(upTurn(options.up) * F0.linear() - Eigen::Matrix3d::Identity()).isZero(1e-12) ||
+                             !F0.translation().isZero(1e-12));
   }
 
   std::string write() {
@@ -47,6 +53,7 @@ class Exporter {
     header();
     materials();
     link(std::string(kBaseLink), robot_.links.empty() ? nullptr : &robot_.links[0], {});
+    if (frame0Link_) frame0();
     for (int i = 1; i <= n_; ++i) armJoint(i);
     if (robot_.hasGripper) gripper();
     tool();
@@ -70,8 +77,22 @@ class Exporter {
   }
 
   LinkFrame armLink(int i) const {
-    if (i == 0) return {};
+    if (i == 0) return frame0Link_ ? LinkFrame{F_[0]} : LinkFrame{};
     return {J_[static_cast<std::size_t>(i)]};
+  }
+
+  // The link joint 1 hangs from.
+  std::string armParent(int i) const {
+    if (i > 0) return linkName(i);
+    return frame0Link_ ? linkName(0) : std::string(kBaseLink);
+  }
+
+  // link_0, D-H frame 0, fixed to base_link (where it is not base_link's frame).
+  void frame0() {
+    xml_.blank();
+    xml_.comment("D-H frame 0, where joint 1's axis is its z: the frame the D-H table starts from");
+    joint({jointName(0), "fixed", std::string(kBaseLink), linkName(0), place({}, F_[0]), {}, {}, {}, 1});
+    xml_.element("link", {{"name", linkName(0)}});
   }
 
   // Frame X, given in design coordinates, in link `in`.
@@ -210,7 +231,7 @@ class Exporter {
     // then the joint itself. Turns (or slides) about one axis add up, so
     // the sum is exact in any order.
     const std::vector<double> c = couplingRow(i);
-    std::string parent = i == 1 ? std::string(kBaseLink) : linkName(i - 1);
+    std::string parent = armParent(i - 1);
     Origin at = place(armLink(i - 1), J_[static_cast<std::size_t>(i)]);
     for (int k = 1; k < i; ++k) {
       const double share = c[static_cast<std::size_t>(k)];
@@ -283,6 +304,7 @@ class Exporter {
   DesignToUrdf design_;
   ExportOptions options_;
   std::vector<Eigen::Isometry3d> J_, F_;
+  bool frame0Link_ = false;  // link_0 is written
   XmlWriter xml_;
 };
 

@@ -1,6 +1,7 @@
 #include "model/urdf/urdf_mesh.h"
 
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -162,6 +163,10 @@ void drawMeshFile(const ::urdf::Mesh& mesh, const Eigen::Isometry3d& F_design_li
     return;
   }
   Assimp::Importer importer;
+  // A COLLADA file's <up_axis> is not applied (Assimp would turn a Z_UP
+  // mesh to y up): a mesh's coordinates are its visual's frame, as RViz and
+  // MoveIt read them. Its <unit meter> is applied.
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   const aiScene* scene = importer.ReadFile(
       found.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
   if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || scene->mNumMeshes == 0) {

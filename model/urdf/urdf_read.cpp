@@ -120,7 +120,7 @@ struct Reader {
     robot.name = model.getName().empty() ? fs::path(file).stem().string() : model.getName();
     robot.urdf = workcell::UrdfSource{file, chain.root, chain.tip};
     std::vector<DhAxis> axes;
-    for (const ChainJoint& j : chain.joints) axes.push_back({j.point, j.direction});
+    for (const ChainJoint& j : chain.joints) axes.push_back({j.point, j.direction, j.F_design_child, j.F_design_parent});
     const DhFrames dh = dhFramesFromAxes(axes, chain.F_design_root, chain.F_design_tip);
     robot.frames = dh.frames;
     robot.tool = dh.tool;
@@ -175,10 +175,7 @@ struct Reader {
 UrdfRead readUrdfText(std::string_view text, const std::string& file, const UrdfOptions& options) {
   UrdfRead out;
   if (text.size() > kMaxUrdfBytes) {
-    out.diagnostics.push_back({file, {}, diag::Severity::Error,
-                               fmt::format("the file is {} bytes, more than the {} MiB a URDF file may be", text.size(),
-                                           kMaxUrdfBytes >> 20),
-                               "urdf-size", "split the robot, or leave its meshes in their own files"});
+    out.diagnostics.push_back(urdfTooLarge(file, text.size()));
     return out;
   }
   if (!(options.precision > 0) || !std::isfinite(options.precision)) {
@@ -218,6 +215,10 @@ UrdfRead readUrdfFile(const fs::path& path, const UrdfOptions& options) {
                                "name a .urdf file"});
     return out;
   }
+  // Judged by its size before a byte is read (readInput would refuse it
+  // too, with base/'s words and no hint).
+  if (const std::uintmax_t size = fs::file_size(path, ec); !ec && size > kMaxUrdfBytes)
+    return UrdfRead{std::nullopt, {urdfTooLarge(path.string(), size)}};
   diag::Result<std::string> text = diag::readInput(path.string(), kMaxUrdfBytes, "cannot read URDF file");
   if (!text) return UrdfRead{std::nullopt, text.failures()};
   return readUrdfText(*text, path.string(), options);

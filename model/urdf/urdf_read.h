@@ -10,20 +10,38 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "base/file_io.h"
 #include "diag/diagnostic.h"
 #include "model/workcell/model.h"
 
 namespace rs::urdf {
 
-/// The largest URDF file read, as for descriptions: a larger one is
-/// refused before it is parsed.
+/// The largest URDF file read, as for descriptions: a larger one (the
+/// issue's "100 MB URDF") is refused by its size, before a byte of it is
+/// read or parsed, so that it costs no time and no memory.
 inline constexpr std::size_t kMaxUrdfBytes = std::size_t{64} << 20;
+
+/// The one error for a URDF file (or an editor's text) of `bytes` bytes,
+/// more than kMaxUrdfBytes: about the whole file (line 0), with a hint.
+/// Inline: the helper's caller (urdf_read_remote.h) refuses an editor's
+/// text so too, without linking the reader.
+inline diag::Diagnostic urdfTooLarge(const std::string& file, std::uint64_t bytes) {
+  return {file, {}, diag::Severity::Error,
+          fmt::format("the URDF file is {} ({} bytes), more than the {} a URDF file may be: it is not read",
+                      base::sizeText(bytes), bytes, base::sizeText(kMaxUrdfBytes)),
+          "urdf-size",
+          "a robot's URDF is text of kilobytes (its meshes are files of their own, named by <mesh filename>): "
+          "check that this is the robot's URDF file, or run xacro on its source again"};
+}
 /// Degrees (revolute) or millimetres (prismatic) per encoder count, unless
 /// --precision says otherwise.
 inline constexpr double kDefaultPrecision = 0.01;

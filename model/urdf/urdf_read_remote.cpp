@@ -54,6 +54,9 @@ std::vector<fs::path> urdfHelperCandidates() {
 }
 
 UrdfRead readUrdfInHelper(const fs::path& path, const UrdfOptions& options, const std::string* text) {
+  // An editor's text over the limit is refused here: the helper would stop
+  // reading it at the limit, and the rest would be written to no one.
+  if (text && text->size() > kMaxUrdfBytes) return UrdfRead{std::nullopt, {urdfTooLarge(path.string(), text->size())}};
   fs::path helper;
   for (const fs::path& candidate : urdfHelperCandidates()) {
     std::error_code ec;

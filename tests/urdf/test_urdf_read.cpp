@@ -215,6 +215,34 @@ TEST_CASE("urdf read: an OBJ mesh too - its quadrilateral faces' 12 feature edge
   CHECK(box.sizes().z() == Approx(200));
 }
 
+// A COLLADA mesh, read by Debian's Assimp: box.dae, written by hand, is a
+// box from (10, 20, 30) to (110, 220, 330) in its own millimetres
+// (<unit meter="0.001">), saying Z_UP. Worked out by hand: in the URDF's
+// metres the box is 0.01..0.11 by 0.02..0.22 by 0.03..0.33 (the unit
+// applied, the up axis not, as RViz does); turned to y up (x stays, URDF z
+// is y, URDF y is -z) and in millimetres, x 10..110, y 30..330, z
+// -220..-20. Had Z_UP been applied, y would be -220..-20. To 1e-4 mm:
+// Assimp keeps single-precision floats (7 digits of 330 is 3e-5).
+TEST_CASE("urdf read: a COLLADA mesh - its unit applied, its up axis not, the box's 12 edges and its bounds", "[urdf]") {
+  const rs::urdf::UrdfRead read = readData("mesh_dae.urdf");
+  for (const auto& d : read.diagnostics) INFO(d.message);
+  REQUIRE(read.robot);
+  CHECK(read.diagnostics.empty());
+  CHECK(read.robot->links[0].segments.size() == 12);
+  REQUIRE(read.robot->links[0].collision.size() == 1);
+  Eigen::AlignedBox3d hull, lines;
+  for (const auto& p : read.robot->links[0].collision[0].points) hull.extend(p);
+  for (const auto& s : read.robot->links[0].segments) lines.extend(s.a), lines.extend(s.b);
+  for (const Eigen::AlignedBox3d* box : {&hull, &lines}) {
+    CHECK(box->min().x() == Approx(10).margin(1e-4));
+    CHECK(box->max().x() == Approx(110).margin(1e-4));
+    CHECK(box->min().y() == Approx(30).margin(1e-4));
+    CHECK(box->max().y() == Approx(330).margin(1e-4));
+    CHECK(box->min().z() == Approx(-220).margin(1e-4));
+    CHECK(box->max().z() == Approx(-20).margin(1e-4));
+  }
+}
+
 TEST_CASE("urdf read: material colours become the nearest EGA colour", "[urdf]") {
   CHECK(rs::urdf::nearestEga(0.1, 0.1, 0.8) == rs::workcell::Color::Blue);
   CHECK(rs::urdf::nearestEga(1, 1, 1) == rs::workcell::Color::White);

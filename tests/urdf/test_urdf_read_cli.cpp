@@ -108,6 +108,34 @@ TEST_CASE("urdf cli: a bad URDF file is a positioned error, exit 2", "[urdf]") {
   CHECK(r.err.find(data("unknown_type.urdf") + ":4:3: error: joint 'hinge' has unknown type 'screw'") != std::string::npos);
 }
 
+// The "a 100 MB URDF" through the command, as a user meets it: a
+// sparse file of 100,000,000 bytes. `table` says why and what to do, exit
+// 2; `convert` writes nothing: an earlier description at -o is left as it
+// was, and none is made where there was none.
+TEST_CASE("urdf cli: a 100 MB URDF file is an error with a hint, exit 2, and convert writes nothing", "[urdf]") {
+  rs::testing::TempDir dir;
+  const std::string big = dir.write("big.urdf", "<robot name=\"big\">\n");
+  std::filesystem::resize_file(big, 100'000'000);
+  const auto table = runCli({"table", big});
+  CHECK(table.code == 2);
+  CHECK(table.out.empty());
+  CHECK(table.err.find(big + ": error: the URDF file is 95.4 MiB (100000000 bytes), more than the 64 MiB") !=
+        std::string::npos);
+  CHECK(table.err.find("  hint: ") != std::string::npos);
+  const std::string kept = dir.write("kept.rsd", "; an earlier description\n");
+  const auto over = runCli({"convert", big, "-o", kept});
+  CHECK(over.code == 2);
+  CHECK(over.err.find("95.4 MiB") != std::string::npos);
+  CHECK(rs::testing::readBytes(kept) == "; an earlier description\n");
+  const std::string fresh = dir.file("fresh.rsd");
+  CHECK(runCli({"convert", big, "-o", fresh}).code == 2);
+  CHECK_FALSE(std::filesystem::exists(fresh));
+  // Nothing else was left in the folder (no temporary file of a write).
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++entries;
+  CHECK(entries == 2);  // big.urdf, kept.rsd
+}
+
 TEST_CASE("urdf cli: run a program on a URDF cell - render it - list shows URDF files on the library path", "[urdf]") {
   rs::testing::TempDir dir;
   const std::string program = dir.write("p.rsp", "        MOVETO 1000 2000 0 0\n        END\n");
