@@ -82,7 +82,7 @@ std::string deviceEventText(const DeviceEvent& e, const workcell::Workcell& cell
     case DeviceEvent::Kind::SensorOff: return fmt::format("sensor {} OFF", base::safeText(d.sensors[e.device].name));
     case DeviceEvent::Kind::Fed:
       return fmt::format("feeder {}: {} at {}", base::safeText(d.feeders[e.device].name), object(),
-                         pointText({e.place.x(), e.place.y(), e.place.z()}));
+                         pointText(std::array<double, 3>{e.place.x(), e.place.y(), e.place.z()}));
     case DeviceEvent::Kind::Waits:
       return fmt::format("feeder {}: waits, its place is taken by {}", base::safeText(d.feeders[e.device].name),
                          object());
@@ -110,7 +110,7 @@ void TraceWriter::deviceEvent(const DeviceEvent& e) {
     j["object"] = e.number;
     j["part"] = cell.objects[e.object].shape.name;
   }
-  if (e.kind == DeviceEvent::Kind::Fed) j["at"] = roundedPoint({e.place.x(), e.place.y(), e.place.z()});
+  if (e.kind == DeviceEvent::Kind::Fed) j["at"] = roundedPoint(std::array<double, 3>{e.place.x(), e.place.y(), e.place.z()});
   if (e.kind == DeviceEvent::Kind::Waits) j["waits"] = true;
   j["text"] = deviceEventText(e, cell);
   out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
