@@ -12,6 +12,7 @@
 
 #include "../render/render_test_util.h"
 #include "compiler/description/library.h"
+#include "launch/run_request.h"
 #include "runtime/run/run.h"
 #include "runtime/run/trace.h"
 
@@ -154,4 +155,22 @@ TEST_CASE("two devices at one instant give the same inputs whichever is listed f
   // Both beams broke at the instant the WAITFOR ended, in both orders.
   CHECK(a.run->rig().machine().inputs() == 0b11);
   CHECK(b.run->rig().machine().inputs() == 0b11);
+}
+
+
+TEST_CASE("a stimulus for an input the cell wires is an error at the stimulus's line", "[cell][devices]") {
+  const auto cell = cellOf("  SENSOR eye BEAM 500 15 0  500 15 60\n  WIRE eye TO IN 1\n");
+  rs::testing::TempDir dir;
+  rs::launch::RunRequest request;
+  request.stimuliFile = dir.write("s.stim", "at 1 input 2 on\nat 2 input 1 on\n");
+  rs::launch::LoadedProgram program;
+  program.image = std::make_shared<const rs::vm::Image>(rendertest::compileText("        END\n", cell));
+  program.cell = std::make_shared<const rs::workcell::Workcell>(cell);
+  std::vector<rs::diag::Diagnostic> diags;
+  CHECK_FALSE(rs::launch::prepareRun(program, request, diags, 1000));
+  REQUIRE(diags.size() == 1);
+  CHECK(diags[0].pos.line == 2);  // input 2 is not wired: line 1 is fine
+  CHECK(diags[0].pos.col == 1);
+  CHECK(diags[0].message == "input 1 has a second source: this stimulus, and the WIRE at line 14 of workcell c");
+  CHECK_FALSE(diags[0].hint.empty());  // the WIRE is line 14: 8 lines of objects, WORKCELL, ROBOT, two OBJECTs, SENSOR
 }
