@@ -55,6 +55,33 @@ std::optional<runtime::CollisionMode> collisionsOf(const RunRequest& request, st
   return std::nullopt;
 }
 
+// One input has one source: a stimulus (a timed change or a rule's) for an
+// input the cell wires is an error at the stimulus's line, the second source.
+bool checkWiredInputs(const RunRequest& request, const workcell::Workcell* cell, const stimuli::Stimuli& stimuli,
+                      std::vector<diag::Diagnostic>& diags) {
+  if (!cell) return true;
+  bool ok = true;
+  std::vector<bool> reported(vm::kIoCount + 1, false);
+  const auto check = [&](int input, std::uint32_t line, const char* what) {
+    if (input < 1 || input > vm::kIoCount || reported[static_cast<std::size_t>(input)]) return;
+    for (const workcell::Wire& w : cell->devices.wires) {
+      if (w.input != input || !w.robot.empty()) continue;
+      reported[static_cast<std::size_t>(input)] = true, ok = false;
+      const std::string file = line ? request.stimuliFile : std::string("--input");
+      diags.push_back({file, line ? diag::Pos{line, 1} : diag::Pos{}, diag::Severity::Error,
+                       fmt::format("input {} has a second source: this {}, and the WIRE at line {} of workcell {}",
+                                   input, what, w.pos.line, base::safeText(cell->name)),
+                       {},
+                       fmt::format("one input has one source: drop this {} or wire another input than {}", what,
+                                   input)});
+      return;
+    }
+  };
+  for (const stimuli::InputChange& c : stimuli.changes) check(c.input, c.line, "stimulus");
+  for (const stimuli::ReactiveRule& r : stimuli.rules) check(r.input, r.line, "rule");
+  return ok;
+}
+
 std::optional<runtime::RunSpec> prepareRun(const LoadedProgram& program, const RunRequest& request,
                                            std::vector<diag::Diagnostic>& diags, std::uint64_t defaultMaxSteps) {
   runtime::RunSpec spec;
@@ -63,7 +90,8 @@ std::optional<runtime::RunSpec> prepareRun(const LoadedProgram& program, const R
   const std::optional<vm::Micros> maxTime = maxTimeOf(request, diags);
   const bool stimuliOk = loadStimuli(request, spec.stimuli, diags);
   const std::optional<runtime::CollisionMode> collisions = collisionsOf(request, diags);
-  if (!maxTime || !stimuliOk || !collisions || !program.image) return std::nullopt;
+  const bool wiresOk = stimuliOk && checkWiredInputs(request, program.cell.get(), spec.stimuli, diags);
+  if (!maxTime || !stimuliOk || !wiresOk || !collisions || !program.image) return std::nullopt;
   spec.collisions = *collisions;
   spec.limits.maxSteps = request.maxSteps.value_or(defaultMaxSteps);
   spec.limits.maxKnots = request.maxKnots.value_or(vm::RunLimits{}.maxKnots);

@@ -61,6 +61,12 @@ class Grasping {
   Eigen::Isometry3d objectPose(std::size_t o, std::span<const std::int32_t> encoders);
   /// The same for an object that is not held (where it rests now).
   const Eigen::Isometry3d& restingPose(std::size_t o) const { return resting_[o]; }
+  /// Object `o` (not held) rests at `pose` from now on: a belt moved it, a
+  /// feeder put it, a sink took it (runtime/cell/devices.h).
+  void setResting(std::size_t o, const Eigen::Isometry3d& pose) {
+    resting_[o] = pose;
+    letGo_[o].reset();
+  }
   /// The end-effector frame in the world for the robot's motors (identity
   /// for a robot without a gripper).
   Eigen::Isometry3d toolFrame(std::span<const std::int32_t> encoders);

@@ -58,6 +58,13 @@ class World {
   /// RESET at time `at`: nothing held, every object where the cell placed it.
   void reset(vm::Micros at);
 
+  /// Object `o` (not held) rests at `pose` from now on: the cell's devices
+  /// move, put and take parts (runtime/cell/devices.h).
+  void place(std::size_t o, const Eigen::Isometry3d& pose) {
+    grasping_.setResting(o, pose);
+    ++revision_;
+  }
+
   /// Counts every take and let-go so far.
   std::uint64_t eventCount() const { return state_.events; }
   /// The latest take or let-go (meaningful once eventCount() > 0).

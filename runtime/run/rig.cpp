@@ -4,11 +4,27 @@ namespace rs::runtime {
 
 Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli,
          CollisionMode collisions)
-    : cell_(std::move(cell)), running_(std::make_unique<Cell>(cell_.get())) {
+    : cell_(withFeederSlots(std::move(cell))), running_(std::make_unique<Cell>(cell_.get())) {
   auto sim = std::make_unique<SimMachine>(std::move(motors), std::move(stimuli), running_->clock());
   sim_ = sim.get();
   motion_ = std::move(sim);
   build(*motion_, collisions);
+  if (world_ && !cell_->devices.empty()) {
+    io_.sim = sim_;
+    devices_ = std::make_unique<CellDevices>(*cell_, *world_, io_, running_->clock());
+    robot_.devices = devices_.get();
+    sim_->onOutputChange([this](int output, bool) { devices_->outputChanged(output); });
+    // The cell's first instant: the first parts fed, the sensors as the cell begins.
+    (void)advanceCell(running_->clock().now());
+  }
+}
+
+vm::Status Rig::advanceCell(vm::Micros t) {
+  if (devices_) devices_->sync();
+  if (vm::Status s = running_->clock().advanceTo(t); !s) return s;
+  if (devices_)
+    if (std::optional<std::string> fault = devices_->takeFault()) return vm::Status::fault(*fault);
+  return vm::Status::ok();
 }
 
 Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::unique_ptr<vm::Machine> machine)
@@ -28,6 +44,7 @@ Rig::~Rig() = default;
 // hold has changed. Only the simulated machine's moves can be swept.
 void Rig::build(vm::Machine& motion, CollisionMode collisions) {
   front_ = &motion;
+  robotId_ = running_->clock().add(robot_);
   // Kept until the step's end (afterStep). A run that nobody observes never
   // ends a step for the rig, so the list is bounded: a step keeps its first
   // kMaxInputsPerStep changes.
@@ -45,9 +62,19 @@ void Rig::build(vm::Machine& motion, CollisionMode collisions) {
   }
 }
 
+void Rig::wakeRobotAt(vm::Micros at) {
+  // An event for `at` still waits when one was scheduled there: a wait
+  // always ends after now, so a second one would only repeat it.
+  const auto& queue = running_->clock().state().queue;
+  for (auto it = queue.lower_bound({at, 0, 0, 0}); it != queue.end() && it->at == at; ++it)
+    if (it->process == robotId_) return;
+  running_->clock().schedule(at, robotId_);
+}
+
 void Rig::afterStep(std::uint32_t instruction) {
   lastStepInputs_.swap(pendingInputs_);
   pendingInputs_.clear();
+  if (devices_) lastStepDevices_ = devices_->takeEvents();
   if (!world_) return;
   const World::StepEffects step = world_->takeStepEffects();
   lastStepGrasped_ = step.grasped;
@@ -86,6 +113,8 @@ std::vector<ObjectView> Rig::objects(vm::Micros at) const {
     v.centre = bounds.isEmpty() ? v.at : Eigen::Vector3d(v.pose * bounds.center());
     v.held = world_->held() == o && at >= world_->heldSince();
     v.moved = (v.pose.matrix() - placed.F_world_design.matrix()).cwiseAbs().maxCoeff() > 1e-9;
+    v.number = objectNumber(o);
+    v.present = v.number != 0;
     out.push_back(v);
   }
   return out;
@@ -96,12 +125,15 @@ RigSnapshot Rig::snapshot() const {
   if (sim_) s.machine = sim_->state();
   s.cell = running_->state();
   if (watch_) s.collisions.assign(watch_->events().begin(), watch_->events().end());
+  if (devices_) s.devices = devices_->state();
   return s;
 }
 
 void Rig::restore(const RigSnapshot& s) {
   running_->restore(s.cell);
   if (sim_) sim_->restore(s.machine);
+  if (devices_ && s.devices) devices_->restore(*s.devices);
+  lastStepDevices_.clear();
   lastStepGrasped_ = false;
   lastStepClosedEmpty_ = false;
   pendingInputs_.clear(), lastStepInputs_.clear();

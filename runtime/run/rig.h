@@ -21,6 +21,7 @@
 #include "compiler/stimuli/stimuli.h"
 #include "model/workcell/model.h"
 #include "runtime/cell/cell.h"
+#include "runtime/cell/devices.h"
 #include "runtime/cell/input_cause.h"
 #include "runtime/sim/cell_machine.h"
 #include "runtime/sim/collision_watch.h"
@@ -37,6 +38,8 @@ struct ObjectView {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();        ///< the centre of its box (its lines' bounds) in the world
   bool held = false;                                       ///< by the gripper of the robot that runs the program
   bool moved = false;                                      ///< away from where the cell placed it
+  bool present = true;      ///< in the cell (a feeder's empty slot, a part a sink took: not)
+  std::uint32_t number = 0;  ///< "object 5": never given to another
 };
 
 /// Everything that changes in a rig on the simulated machine.
@@ -48,6 +51,8 @@ struct RigSnapshot {
   /// puts them back, whether the rig is behind or ahead of the snapshot.
   /// What else the swept check keeps is a cache (runtime/sim/sweep_memo.h).
   std::vector<CollisionEvent> collisions;
+  /// The devices' state (a cell with devices).
+  std::optional<CellDevices::State> devices;
   bool operator==(const RigSnapshot&) const = default;
 };
 
@@ -98,6 +103,18 @@ class Rig {
   /// workcell, not simulated, or CollisionMode::Off).
   const CollisionWatch* collisionWatch() const { return watch_ ? &*watch_ : nullptr; }
 
+  /// The cell's devices, or null (no workcell, no devices, or not simulated).
+  const CellDevices* devices() const { return devices_.get(); }
+  /// Object `o`'s number ("object 5"): o + 1 for the objects the cell
+  /// places; a fed part's is given when it is fed.
+  std::uint32_t objectNumber(std::size_t o) const { return devices_ ? devices_->number(o) : static_cast<std::uint32_t>(o + 1); }
+  /// The cell's clock runs to `t`, the devices acting on the way (after
+  /// they have looked at what the robot changed). Fault: a loop of
+  /// zero-delay changes, a device's mistake (a feeder out of slots).
+  vm::Status advanceCell(vm::Micros t);
+  /// What the devices did during the step just run (and before it).
+  std::span<const DeviceEvent> devicesOfLastStep() const { return lastStepDevices_; }
+
   /// A program's next step runs instruction `instruction`: the collisions
   /// its moves find are that instruction's.
   void beforeStep(std::uint32_t instruction) {
@@ -124,6 +141,12 @@ class Rig {
   /// where it left the tool centre point.
   std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose() const { return firstEmptyClose_; }
 
+  /// The robot that runs the program, as a process of the cell's clock:
+  /// its machine's wait under way ends at `at` (a move's or a DELAY's end,
+  /// a stimulus a WAITFOR waits for), so the clock stops there. Scheduled
+  /// once per time.
+  void wakeRobotAt(vm::Micros at);
+
   bool canSnapshot() const { return sim_ != nullptr; }
   /// The whole state (the simulated machine only: check canSnapshot()).
   RigSnapshot snapshot() const;
@@ -132,6 +155,28 @@ class Rig {
 
  private:
   void build(vm::Machine& motion, CollisionMode collisions);
+
+  // The robot on the cell's clock: woken, it does nothing itself (the run
+  // resumes its machine after every instant); its events stop the clock
+  // where its wait ends.
+  struct RobotProcess final : CellProcess {
+    CellDevices* devices = nullptr;
+    // Before the robot looks at the world, the belts' parts are where they are now.
+    void wake(const CellEvent&, Scheduler&) override {
+      if (devices) devices->commit();
+    }
+    std::string name() const override { return "the robot"; }
+  };
+  struct SimIo final : RobotIo {
+    SimMachine* sim = nullptr;
+    bool output(int output) const override { return vm::lineIsOn(sim->outputs(), output); }
+    void setInput(int input, bool on, const InputCause& cause) override { sim->setInputBy(input, on, cause); }
+  };
+  SimIo io_;
+  std::unique_ptr<CellDevices> devices_;
+  std::vector<DeviceEvent> lastStepDevices_;
+  RobotProcess robot_;
+  std::uint32_t robotId_ = 0;
 
   std::shared_ptr<const workcell::Workcell> cell_;
   std::unique_ptr<Cell> running_;        // before the machine, which runs on its clock

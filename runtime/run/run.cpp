@@ -31,6 +31,7 @@ class Run::Observers final : public vm::StepObserver {
       // The step's record is the next one the log keeps.
       const auto step = static_cast<std::uint32_t>(logger_->log().steps.size());
       for (const Rig::InputChangeRecord& c : rig_.inputsOfLastStep()) logger_->inputCause(step, c.at, c.cause);
+      for (const DeviceEvent& e : rig_.devicesOfLastStep()) logger_->deviceEvent(step, e);
       logger_->afterStep(vm, index);
     }
     bool pause = false;
@@ -74,6 +75,9 @@ Run::~Run() = default;
 // added (a trace) see both.
 void Run::build(std::unique_ptr<Rig> rig) {
   rig_ = std::move(rig);
+  // The simulated robot runs as a process of the cell: its waits say "not
+  // yet" and the run moves the cell's clock (waitOnCell).
+  if (rig_->sim()) rig_->sim()->waitOnScheduler(true);
   if (spec_.log && rig_->sim()) logger_.emplace(*rig_->sim(), rig_->world(), spec_.lines);
   interpreter_ = std::make_unique<vm::Interpreter>(*spec_.image, rig_->machine());
   observers_ = std::make_unique<Observers>(*this, *rig_, logger_ ? &*logger_ : nullptr);
@@ -156,6 +160,14 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
     pause.atKnots = std::min(until.knots, sliceKnots);
     if (anyBreak) pause.before = breakpoints_;
     outcome = interpreter_->run(spec_.limits, observer, pause);
+    while (outcome.waiting && !pauseRequested_.load(std::memory_order_relaxed)) {
+      waitOnCell(outcome);
+      outcome = interpreter_->run(spec_.limits, observer, pause);
+    }
+    if (outcome.waiting) {
+      cause_ = vm::StopReason::Pause;
+      break;
+    }
     const std::optional<vm::StopReason> cause = causeOf(outcome, until, stepEnd, sliceEnd, sliceKnots);
     if (cause) {
       cause_ = *cause;
@@ -169,6 +181,26 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
   observers_->when = nullptr;
   if (logger_) logger_->finish(outcome);
   return outcome;
+}
+
+void Run::waitOnCell(const vm::RunOutcome& waiting) {
+  SimMachine& sim = *rig_->sim();
+  Scheduler& clock = rig_->running().clock();
+  // What the robot changed since (an output, a take) acts first, at now.
+  if (vm::Status s = rig_->advanceCell(clock.now()); !s) return sim.endWait(s);
+  if (waiting.wakeAt != vm::Status::kNever) rig_->wakeRobotAt(waiting.wakeAt);
+  const std::optional<vm::Micros> next = clock.nextTime();
+  if (!next) {
+    sim.endWait(sim.waitDeadlock());  // only a WAITFOR waits for nothing scheduled
+    return;
+  }
+  // A WAITFOR that only the devices may end, in a cell that goes on
+  // forever: past the time limit the wait ends, and the run with it.
+  if (*next > spec_.limits.maxTime && waiting.wakeAt == vm::Status::kNever) {
+    if (vm::Status s = rig_->advanceCell(*next); !s) return sim.endWait(s);
+    return sim.endWait(vm::Status::ok());
+  }
+  if (vm::Status s = rig_->advanceCell(*next); !s) sim.endWait(s);
 }
 
 RunView Run::view() const {

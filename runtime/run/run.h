@@ -164,6 +164,9 @@ class Run {
  private:
   class Observers;
   void build(std::unique_ptr<Rig> rig);
+  /// The robot waits (`waiting` said so): the cell's clock runs to its
+  /// next instant, or the wait is ruled on (nothing left to happen).
+  void waitOnCell(const vm::RunOutcome& waiting);
   std::optional<vm::StopReason> causeOf(const vm::RunOutcome& outcome, const RunUntil& until,
                                         std::uint64_t stepEnd, std::uint64_t sliceEnd,
                                         std::uint64_t sliceKnots) const;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "runtime/sim/sim_machine.h"
+#include "runtime/cell/devices.h"
 #include "runtime/cell/world.h"
 #include "vm/interpreter.h"
 
@@ -73,6 +74,12 @@ struct GraspRecord {
   GraspEvent event;
 };
 
+/// What a device did (runtime/cell/devices.h) during step `step` (or before it).
+struct DeviceRecord {
+  std::uint32_t step = 0;
+  DeviceEvent event;
+};
+
 struct RunLog {
   std::vector<vm::MotorSpec> motors;
   std::vector<StepRecord> steps;
@@ -83,6 +90,7 @@ struct RunLog {
   std::vector<InputRecord> inputChanges;  ///< every change of an input, with its cause
   std::vector<GraspRecord> grasps;  ///< in step order; empty without a gripper
   std::vector<VariableWrite> variables;  ///< in step order
+  std::vector<DeviceRecord> devices;     ///< a sensor's edge, a part fed (or waiting), a part a sink took
   vm::Micros end = 0;               ///< the clock when the run stopped (or paused)
   /// The slot its straight lines' knots are merged within (LineThinning;
   /// 1: every knot is kept).
@@ -90,7 +98,8 @@ struct RunLog {
 
   /// How long each list was at some moment, to cut the log back to it.
   struct Mark {
-    std::size_t steps = 0, outputs = 0, cameras = 0, inputs = 0, grasps = 0, variables = 0, inputChanges = 0;
+    std::size_t steps = 0, outputs = 0, cameras = 0, inputs = 0, grasps = 0, variables = 0, inputChanges = 0,
+                devices = 0;
     std::vector<std::size_t> moves;
     vm::Micros end = 0;
     bool operator==(const Mark&) const = default;
@@ -151,6 +160,7 @@ class RunLogger {
   void inputCause(std::uint32_t step, vm::Micros at, const InputCause& cause) {
     log_.inputChanges.push_back({step, at, cause});
   }
+  void deviceEvent(std::uint32_t step, const DeviceEvent& event) { log_.devices.push_back({step, event}); }
 
  private:
   void record(std::uint32_t index);

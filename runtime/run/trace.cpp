@@ -46,10 +46,10 @@ std::string lampText(vm::IoMask bits) {
   return s;
 }
 
-std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell& cell) {
+std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell& cell, std::uint32_t number) {
   return fmt::format("{} {} (object {})", event.held ? "takes" : "lets go of",
                      base::safeText(cell.objects[event.object].shape.name),
-                     event.object + 1);
+                     number ? number : event.object + 1);
 }
 
 std::string closesOnNothingText(const runtime::EmptyClose& e, const workcell::Workcell& cell) {
@@ -72,8 +72,57 @@ void TraceWriter::finish() { collisionEvents(); }
 
 // One line per input change during the step (or since the last step), at
 // its time and with its cause, before the step's own line.
+std::string deviceEventText(const DeviceEvent& e, const workcell::Workcell& cell) {
+  const workcell::Devices& d = cell.devices;
+  const auto object = [&] {
+    return fmt::format("{} (object {})", base::safeText(cell.objects[e.object].shape.name), e.number);
+  };
+  switch (e.kind) {
+    case DeviceEvent::Kind::SensorOn: return fmt::format("sensor {} ON", base::safeText(d.sensors[e.device].name));
+    case DeviceEvent::Kind::SensorOff: return fmt::format("sensor {} OFF", base::safeText(d.sensors[e.device].name));
+    case DeviceEvent::Kind::Fed:
+      return fmt::format("feeder {}: {} at {}", base::safeText(d.feeders[e.device].name), object(),
+                         pointText(std::array<double, 3>{e.place.x(), e.place.y(), e.place.z()}));
+    case DeviceEvent::Kind::Waits:
+      return fmt::format("feeder {}: waits, its place is taken by {}", base::safeText(d.feeders[e.device].name),
+                         object());
+    case DeviceEvent::Kind::Taken: return fmt::format("sink {}: takes {}", base::safeText(d.sinks[e.device].name), object());
+  }
+  return "";
+}
+
+void TraceWriter::deviceEvent(const DeviceEvent& e) {
+  const workcell::Workcell& cell = *run_.rig().cell();
+  if (format_ == TraceFormat::Text) {
+    out_ << fmt::format("{:>10}  {}\n", base::formatSeconds(e.at), deviceEventText(e, cell));
+    return;
+  }
+  nlohmann::ordered_json j;
+  const workcell::Devices& d = cell.devices;
+  const bool sensor = e.kind == DeviceEvent::Kind::SensorOn || e.kind == DeviceEvent::Kind::SensorOff;
+  j["event"] = sensor ? "sensor" : e.kind == DeviceEvent::Kind::Taken ? "sink" : "feeder";
+  j["time"] = seconds(e.at);
+  j["name"] = sensor ? d.sensors[e.device].name
+              : e.kind == DeviceEvent::Kind::Taken ? d.sinks[e.device].name
+                                                   : d.feeders[e.device].name;
+  if (sensor) j["on"] = e.kind == DeviceEvent::Kind::SensorOn;
+  if (!sensor) {
+    j["object"] = e.number;
+    j["part"] = cell.objects[e.object].shape.name;
+  }
+  if (e.kind == DeviceEvent::Kind::Fed) j["at"] = roundedPoint(std::array<double, 3>{e.place.x(), e.place.y(), e.place.z()});
+  if (e.kind == DeviceEvent::Kind::Waits) j["waits"] = true;
+  j["text"] = deviceEventText(e, cell);
+  out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+}
+
 void TraceWriter::inputEvents() {
+  // The devices' events and the inputs' changes in time order; at one
+  // instant a device's first (a sensor's edge before the input its wire drives).
+  const auto devices = run_.rig().devicesOfLastStep();
+  std::size_t next = 0;
   for (const Rig::InputChangeRecord& c : run_.rig().inputsOfLastStep()) {
+    for (; next < devices.size() && devices[next].at <= c.at; ++next) deviceEvent(devices[next]);
     if (format_ == TraceFormat::Text) {
       out_ << fmt::format("{:>10}  {}\n", base::formatSeconds(c.at), base::safeText(inputChangeText(c.cause)));
     } else {
@@ -89,6 +138,7 @@ void TraceWriter::inputEvents() {
       out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
     }
   }
+  for (; next < devices.size(); ++next) deviceEvent(devices[next]);
 }
 
 // One line per collision found since the last step traced: its time, the
@@ -137,7 +187,7 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
                             ? fmt::format("{}={}", base::safeText(im.variables[in.b]), vm.variables()[in.b])
                             : std::string();
   if (const runtime::GraspEvent* g = run_.rig().graspOfLastStep())
-    changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.rig().world()->cell());
+    changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.rig().world()->cell(), run_.rig().objectNumber(g->object));
   if (vm::info(in.op).format == vm::Format::Point && !im.points[in.b].origin.empty())
     changed += (changed.empty() ? "" : "  ") + fmt::format("{} from {}", base::safeText(im.points[in.b].name),
                                                            base::safeText(im.points[in.b].origin));
@@ -176,7 +226,7 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   if (vm::info(in.op).format == vm::Format::Point && !im.points[in.b].origin.empty())
     j["point_from"] = im.points[in.b].origin;
   if (const runtime::GraspEvent* g = run_.rig().graspOfLastStep())
-    j["grasp"] = {{"object", g->object + 1}, {"name", run_.rig().world()->cell().objects[g->object].shape.name},
+    j["grasp"] = {{"object", run_.rig().objectNumber(g->object)}, {"name", run_.rig().world()->cell().objects[g->object].shape.name},
                   {"held", g->held}};
   if (const runtime::EmptyClose* e = run_.rig().emptyCloseOfLastStep()) {
     nlohmann::ordered_json empty;

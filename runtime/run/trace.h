@@ -32,6 +32,7 @@ class TraceWriter final : public vm::StepObserver {
   const runtime::Run& run_;
   void collisionEvents();
   void inputEvents();
+  void deviceEvent(const DeviceEvent& e);
   bool headerDone_ = false;
   std::size_t motorsWidth_ = 0;
   std::size_t collisionsShown_ = 0;
@@ -43,7 +44,12 @@ class TraceWriter final : public vm::StepObserver {
 std::string closesOnNothingText(const runtime::EmptyClose& e, const workcell::Workcell& cell);
 
 /// "takes block (object 2)", "lets go of block (object 2)".
-std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell& cell);
+/// `number`: the object's number when the cell numbers its objects (0: its index + 1).
+std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell& cell, std::uint32_t number = 0);
+
+/// "sensor eye ON", "feeder parts: block (object 5) at (-740, 500, 580)",
+/// "sink done: takes block (object 5)": the trace's words for a device's event.
+std::string deviceEventText(const DeviceEvent& e, const workcell::Workcell& cell);
 
 /// "1.3....." : the digit of each line that is ON, '.' for OFF.
 std::string lampText(std::uint8_t bits);

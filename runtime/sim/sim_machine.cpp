@@ -171,6 +171,7 @@ Status SimMachine::setOutput(int output, bool on) {
   outputs_ = vm::withLine(outputs_, output, on);
   Status fired = fireRules(output, on);
   applyInputs();  // rules with no delay act at once
+  if (outputListener_) outputListener_(output, on);
   return fired;
 }
 
@@ -223,7 +224,35 @@ Status SimMachine::waitForInput(int input, bool on) {
   return Status::notYet(when ? *when : Status::kNever);
 }
 
+void SimMachine::endWait(Status status) { endWait_ = std::move(status); }
+
+Status SimMachine::waitDeadlock() const {
+  const int input = waitInput_;
+  const bool on = waitOn_;
+  return Status::deadlock(fmt::format("input {} never turns {}: {}", input, onOff(on),
+                                      schedule_.hasPendingFor(input)
+                                          ? fmt::format("no scheduled stimulus leaves it {}", onOff(on))
+                                          : std::string("no stimulus is scheduled")));
+}
+
+bool SimMachine::setInputBy(int input, bool on, const InputCause& cause) {
+  if (!vm::isIoLine(input)) return false;
+  applyInputs();
+  const vm::IoMask after = vm::withLine(inputs_, input, on);
+  if (after == inputs_) return true;
+  inputs_ = after;
+  if (inputListener_) inputListener_(now(), inputs_);
+  if (causeListener_) causeListener_(now(), cause);
+  return true;
+}
+
 Status SimMachine::resume() {
+  if (endWait_) {
+    Status s = std::move(*endWait_);
+    endWait_.reset();
+    waitInput_ = 0, waitMove_ = false, waitUntil_ = now();
+    return s;
+  }
   if (waitInput_) return waitForInput(waitInput_, waitOn_);
   if (now() < waitUntil_) return Status::notYet(waitUntil_);
   applyInputs();

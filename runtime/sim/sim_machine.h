@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -45,7 +46,20 @@ class SimMachine final : public vm::Machine {
   /// scheduler moves it, and `resume` finishes the call once the clock has
   /// reached its end (for a WAITFOR, once the input reads as asked).
   void waitOnScheduler(bool on) { cooperative_ = on; }
+  bool waitsOnScheduler() const { return cooperative_; }
   vm::Status resume() override;
+  /// The scheduler rules on the wait under way: the next `resume` answers
+  /// `status` (a WAITFOR nothing can satisfy: waitDeadlock(); a fault of
+  /// the cell's clock) and the wait is over.
+  void endWait(vm::Status status);
+  /// A WAITFOR under way that nothing scheduled will satisfy: the Deadlock
+  /// a machine running alone answers (the same words).
+  vm::Status waitDeadlock() const;
+  /// Called with (output, on) after an output changes (the devices read outputs).
+  void onOutputChange(std::function<void(int, bool)> listener) { outputListener_ = std::move(listener); }
+  /// Input `input` turns `on` now because of `cause` (a wire): the stimuli
+  /// due by now apply first, the listeners hear it. False out of range.
+  bool setInputBy(int input, bool on, const InputCause& cause);
 
   /// Every motor moves at once, each with its own profile (motion.h);
   /// returns when the slowest arrives. Fault (no motion) on a wrong target count, a target
@@ -172,6 +186,8 @@ class SimMachine final : public vm::Machine {
   std::function<void(vm::Micros, vm::IoMask)> inputListener_;
   std::function<void(vm::Micros, const InputCause&)> causeListener_;
   std::function<void()> moveListener_;
+  std::function<void(int, bool)> outputListener_;
+  std::optional<vm::Status> endWait_;  // not state: set and used between two calls
 };
 
 }  // namespace rs::runtime

@@ -375,11 +375,50 @@ TEST_CASE("example straight_lift: a block lifted straight off its pallet and put
   for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(block.at("at")[k].get<double>() - want[k]) < 1e-6);
 }
 
+TEST_CASE("example adept_production: ten blocks from the infeed's beam to the outfeed's sink", "[examples]") {
+  // Each block breaks the beam once (the belt stops, the robot takes it
+  // away): 10 ON edges. Each put on the outfeed rides it (10 carried) and
+  // reaches the sink 3.6 s later (its centre from x 280 to 640 at 100/s);
+  // cycles are 6 s apart (the feeder's period), and the last HRDHOME takes
+  // well under 3.6 s: 9 taken when the run ends. The tenth block is the
+  // eighth fed: at least 8 fed.
+  const Result r = robotsim({"run", (kExamples / "adept_production.rsp").string(), "--cell", "adept-cell",
+                             "--format=json"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.code == rs::cli::kExitOk);
+  const Json j = Json::parse(r.out);
+  CHECK(j.at("variables").at("PARTS") == 10);
+  const Json& d = j.at("devices");
+  CHECK(d.at("sensors")[0].at("name") == "eye");
+  CHECK(d.at("sensors")[0].at("turned_on") == 10);
+  CHECK(d.at("conveyors")[1].at("carried") == 10);
+  CHECK(d.at("feeders")[0].at("fed").get<int>() >= 8);
+  CHECK(d.at("sinks")[0].at("taken") == 9);
+  CHECK(j.at("collisions") == Json::array());
+}
+
+TEST_CASE("example scorobot_production: five blocks from the belt into the pallet's sink corner", "[examples]") {
+  // Each block breaks the beam once and is let go with its centre in the
+  // sink's zone, which takes it at once: 5 edges, 5 taken; the fifth is the
+  // fourth fed.
+  const Result r = robotsim({"run", (kExamples / "scorobot_production.rsp").string(), "--cell", "scorobot-cell",
+                             "--format=json"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.code == rs::cli::kExitOk);
+  const Json j = Json::parse(r.out);
+  CHECK(j.at("variables").at("PARTS") == 5);
+  const Json& d = j.at("devices");
+  CHECK(d.at("sensors")[0].at("turned_on") == 5);
+  CHECK(d.at("sinks")[0].at("taken") == 5);
+  CHECK(d.at("feeders")[0].at("fed").get<int>() >= 4);
+  CHECK(j.at("collisions") == Json::array());
+}
+
 TEST_CASE("every example has a summary test above", "[examples]") {
   const std::set<std::string> tested{"first_moves.rsp",   "counted_loop.rsp",       "nested_subroutines.rsp",
                                      "soft_home.rsp",     "workcell_view.rsp",      "sensor_branching.rsp",
                                      "pick_and_place.rsp", "gantry_pick.rsp",       "stack_blocks.rsp",
-                                     "straight_lift.rsp"};
+                                     "straight_lift.rsp", "adept_production.rsp", "scorobot_production.rsp"};
   std::set<std::string> found;
   for (const fs::path& p : exampleSources()) found.insert(p.filename().string());
   CHECK(found == tested);
@@ -397,6 +436,8 @@ TEST_CASE("the examples together use all 23 instructions", "[examples]") {
     const std::string cellName = path.filename() == "gantry_pick.rsp"     ? "gantry-cell"
                                  : path.filename() == "stack_blocks.rsp"  ? "scara-pick"
                                  : path.filename() == "straight_lift.rsp" ? "xr4-cell"
+                                 : path.filename() == "adept_production.rsp" ? "adept-cell"
+                                 : path.filename() == "scorobot_production.rsp" ? "scorobot-cell"
                                                                           : "";
     rs::compiler::Library library(rs::compiler::librarySearchPath({}));
     const std::optional<rs::workcell::Workcell> cell =

@@ -77,6 +77,52 @@ void printCollisions(std::ostream& out, const runtime::Run& run) {
     out << fmt::format("  {:<15} and {} more\n", "", events.size() - kShownCollisions);
 }
 
+// Parts the sinks took per hour of simulated time.
+double throughput(const runtime::Run& run) {
+  const runtime::CellDevices& d = *run.rig().devices();
+  std::uint64_t taken = 0;
+  for (std::size_t s = 0; s < run.rig().cell()->devices.sinks.size(); ++s) taken += d.taken(s);
+  const double hours = static_cast<double>(run.rig().clock()) / 3.6e9;
+  return hours > 0 ? static_cast<double>(taken) / hours : 0.0;
+}
+
+void printDevices(std::ostream& out, const runtime::Run& run) {
+  const runtime::CellDevices* d = run.rig().devices();
+  if (!d) return;
+  const workcell::Devices& cell = run.rig().cell()->devices;
+  const auto times = [](std::uint64_t n, const char* what) {
+    return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
+  };
+  for (std::size_t s = 0; s < cell.sensors.size(); ++s)
+    out << fmt::format("  {:<15} {}, turned ON {}\n", "sensor " + base::safeText(cell.sensors[s].name),
+                       d->sensorOn(s) ? "ON" : "OFF", times(d->sensorCount(s), "time"));
+  for (std::size_t c = 0; c < cell.conveyors.size(); ++c)
+    out << fmt::format("  {:<15} {}, carried {}\n", "conveyor " + base::safeText(cell.conveyors[c].name),
+                       d->running(c) ? "running" : "stopped", times(d->carried(c), "part"));
+  for (std::size_t f = 0; f < cell.feeders.size(); ++f)
+    out << fmt::format("  {:<15} fed {}\n", "feeder " + base::safeText(cell.feeders[f].name), times(d->fed(f), "part"));
+  for (std::size_t s = 0; s < cell.sinks.size(); ++s)
+    out << fmt::format("  {:<15} took {}\n", "sink " + base::safeText(cell.sinks[s].name), times(d->taken(s), "part"));
+  if (!cell.sinks.empty()) out << fmt::format("  {:<15} {:.1f} parts per hour\n", "throughput", throughput(run));
+}
+
+Json devicesJson(const runtime::Run& run) {
+  const runtime::CellDevices& d = *run.rig().devices();
+  const workcell::Devices& cell = run.rig().cell()->devices;
+  Json sensors = Json::array(), conveyors = Json::array(), feeders = Json::array(), sinks = Json::array();
+  for (std::size_t s = 0; s < cell.sensors.size(); ++s)
+    sensors.push_back({{"name", cell.sensors[s].name}, {"on", d.sensorOn(s)}, {"turned_on", d.sensorCount(s)}});
+  for (std::size_t c = 0; c < cell.conveyors.size(); ++c)
+    conveyors.push_back({{"name", cell.conveyors[c].name}, {"running", d.running(c)}, {"carried", d.carried(c)}});
+  for (std::size_t f = 0; f < cell.feeders.size(); ++f) feeders.push_back({{"name", cell.feeders[f].name}, {"fed", d.fed(f)}});
+  for (std::size_t s = 0; s < cell.sinks.size(); ++s) sinks.push_back({{"name", cell.sinks[s].name}, {"taken", d.taken(s)}});
+  return {{"sensors", sensors},
+          {"conveyors", conveyors},
+          {"feeders", feeders},
+          {"sinks", sinks},
+          {"parts_per_hour", std::round(throughput(run) * 1e4) / 1e4}};
+}
+
 }  // namespace
 
 void printTextSummary(std::ostream& out, const RunReport& r) {
@@ -98,7 +144,8 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   const std::vector<runtime::ObjectView> objects = r.run->rig().objects();
   for (std::size_t o = 0; o < objects.size(); ++o) {
     const runtime::ObjectView& e = objects[o];
-    out << fmt::format("  {:<15} {} at {}, centre {}{}\n", fmt::format("object {}", o + 1), base::safeText(e.name),
+    if (!e.present) continue;
+    out << fmt::format("  {:<15} {} at {}, centre {}{}\n", fmt::format("object {}", e.number), base::safeText(e.name),
                        runtime::pointText({e.at.x(), e.at.y(), e.at.z()}),
                        runtime::pointText({e.centre.x(), e.centre.y(), e.centre.z()}),
                        e.held ? ", held" : e.moved ? ", moved" : "");
@@ -108,6 +155,7 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
                        r.run->rig().world()->closeCount() == 1 ? std::string("once")
                                                          : fmt::format("{} times", r.run->rig().world()->closeCount()),
                        w->pos.line);
+  printDevices(out, *r.run);
   printCollisions(out, *r.run);
   out << fmt::format("  outputs         {}  (ON: {})\n", runtime::lampText(m.outputs()), lampList(m.outputs()));
   out << fmt::format("  inputs          {}  (ON: {})\n", runtime::lampText(m.inputs()), lampList(m.inputs()));
@@ -142,11 +190,17 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     if (const auto tcp = r.run->rig().tcp()) j["tcp"] = runtime::roundedPoint(*tcp);
     if (r.run->rig().cell()) {
       Json objects = Json::array();
-      for (const runtime::ObjectView& e : r.run->rig().objects())
-        objects.push_back({{"name", e.name}, {"at", runtime::roundedPoint({e.at.x(), e.at.y(), e.at.z()})},
-                           {"centre", runtime::roundedPoint({e.centre.x(), e.centre.y(), e.centre.z()})}, {"held", e.held},
-                           {"moved", e.moved}});
+      const bool numbered = r.run->rig().devices() != nullptr;
+      for (const runtime::ObjectView& e : r.run->rig().objects()) {
+        if (!e.present) continue;
+        Json one = {{"name", e.name}, {"at", runtime::roundedPoint({e.at.x(), e.at.y(), e.at.z()})},
+                    {"centre", runtime::roundedPoint({e.centre.x(), e.centre.y(), e.centre.z()})}, {"held", e.held},
+                    {"moved", e.moved}};
+        if (numbered) one["number"] = e.number;  // fed parts make the list's order no number
+        objects.push_back(std::move(one));
+      }
       j["objects"] = objects;
+      if (numbered) j["devices"] = devicesJson(*r.run);
     }
     if (const runtime::CollisionWatch* watch = r.run->rig().collisionWatch()) {
       Json collisions = Json::array();

@@ -1,0 +1,548 @@
+#include "runtime/cell/devices.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rs::runtime {
+
+namespace {
+
+using workcell::Signal;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A part rests on a belt when its bottom is this near the belt's top (a
+// part let go 1 above the belt, as a gripper holding it 1 above its middle
+// does, rides it).
+constexpr double kRestTolerance = 1.0 + 1e-6;
+// Touching counts as crossing: boxes and beams are closed sets, given this slack.
+constexpr double kTouch = 1e-7;
+// Motion that never ends is solved for within this many seconds.
+constexpr double kHorizon = 1e9;
+
+Eigen::AlignedBox3d transformed(const Eigen::AlignedBox3d& b, const Eigen::Isometry3d& pose) {
+  Eigen::AlignedBox3d out;
+  if (b.isEmpty()) return out;
+  for (int c = 0; c < 8; ++c) out.extend(pose * b.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
+  return out;
+}
+
+bool boxesTouch(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
+  for (int k = 0; k < 3; ++k)
+    if (a.min()[k] > b.max()[k] + kTouch || b.min()[k] > a.max()[k] + kTouch) return false;
+  return true;
+}
+
+bool boxesOverlap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
+  for (int k = 0; k < 3; ++k)
+    if (a.min()[k] >= b.max()[k] - 1e-6 || b.min()[k] >= a.max()[k] - 1e-6) return false;
+  return true;
+}
+
+// The segment a..b meets the box (slabs, with the touch slack).
+bool beamTouches(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::AlignedBox3d& box) {
+  double lo = 0, hi = 1;
+  const Eigen::Vector3d e = b - a;
+  for (int k = 0; k < 3; ++k) {
+    const double mn = box.min()[k] - kTouch, mx = box.max()[k] + kTouch;
+    if (std::abs(e[k]) < 1e-15) {
+      if (a[k] < mn || a[k] > mx) return false;
+      continue;
+    }
+    double t0 = (mn - a[k]) / e[k], t1 = (mx - a[k]) / e[k];
+    if (t0 > t1) std::swap(t0, t1);
+    lo = std::max(lo, t0), hi = std::min(hi, t1);
+    if (lo > hi) return false;
+  }
+  return true;
+}
+
+struct Interval {
+  double from = kInf, to = -kInf;
+  bool empty() const { return from > to; }
+};
+
+// When, within [0, T], the box moving at w (from `box` at 0) meets the box `zone`.
+Interval zoneInterval(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& w, double T,
+                      const Eigen::AlignedBox3d& zone) {
+  Interval in{0, T};
+  for (int k = 0; k < 3; ++k) {
+    const double lo = zone.min()[k] - box.max()[k], hi = zone.max()[k] - box.min()[k];  // w_k τ in [lo, hi]
+    if (std::abs(w[k]) < 1e-15) {
+      if (lo > kTouch || hi < -kTouch) return {};
+      continue;
+    }
+    double t0 = lo / w[k], t1 = hi / w[k];
+    if (t0 > t1) std::swap(t0, t1);
+    in.from = std::max(in.from, t0), in.to = std::min(in.to, t1);
+  }
+  return in;
+}
+
+// When, within [0, T], the moving box meets the segment a..b: the τ range
+// of the polygon of (s, τ) with a + s(b - a) - wτ in the box, 0 <= s <= 1
+// (its extremes are at vertices of the constraints' lines).
+Interval beamInterval(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& w, double T, const Eigen::Vector3d& a,
+                      const Eigen::Vector3d& b) {
+  struct Half {
+    double s, t, c;  // s·S + t·τ <= c
+  };
+  std::vector<Half> h;
+  const Eigen::Vector3d e = b - a;
+  for (int k = 0; k < 3; ++k) {
+    h.push_back({e[k], -w[k], box.max()[k] - a[k]});
+    h.push_back({-e[k], w[k], a[k] - box.min()[k]});
+  }
+  h.push_back({1, 0, 1}), h.push_back({-1, 0, 0}), h.push_back({0, 1, T}), h.push_back({0, -1, 0});
+  Interval in;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    for (std::size_t j = i + 1; j < h.size(); ++j) {
+      const double det = h[i].s * h[j].t - h[i].t * h[j].s;
+      if (std::abs(det) < 1e-15) continue;
+      const double S = (h[i].c * h[j].t - h[i].t * h[j].c) / det;
+      const double tau = (h[i].s * h[j].c - h[i].c * h[j].s) / det;
+      bool ok = true;
+      for (const Half& q : h)
+        if (q.s * S + q.t * tau > q.c + 1e-9 * (1 + std::abs(q.c))) ok = false;
+      if (ok) in.from = std::min(in.from, tau), in.to = std::max(in.to, tau);
+    }
+  return in;
+}
+
+// The first microsecond at which something that begins at `now + tau` s is so.
+vm::Micros startMicro(vm::Micros now, double tau) {
+  return std::max(now + 1, static_cast<vm::Micros>(std::ceil(static_cast<double>(now) + tau * 1e6 - 1e-6)));
+}
+// The first microsecond after one that ends at `now + tau` s.
+vm::Micros afterMicro(vm::Micros now, double tau) {
+  return std::max(now + 1, static_cast<vm::Micros>(std::floor(static_cast<double>(now) + tau * 1e6 + 1e-6)) + 1);
+}
+
+std::string signalText(const Signal& s) {
+  switch (s.kind) {
+    case Signal::Kind::On: return "ON";
+    case Signal::Kind::Off: return "OFF";
+    case Signal::Kind::Output: return fmt::format("OUT {}", s.number);
+    case Signal::Kind::Input: return fmt::format("IN {}", s.number);
+    case Signal::Kind::Sensor: return "sensor " + s.name;
+  }
+  return "";
+}
+
+}  // namespace
+
+Eigen::Isometry3d parkedPose() {
+  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
+  p.translation() = Eigen::Vector3d(0, -1e7, 0);
+  return p;
+}
+
+std::shared_ptr<const workcell::Workcell> withFeederSlots(std::shared_ptr<const workcell::Workcell> cell) {
+  if (!cell || cell->devices.feeders.empty()) return cell;
+  auto out = std::make_shared<workcell::Workcell>(*cell);
+  for (const workcell::Feeder& f : cell->devices.feeders) {
+    const std::size_t n = f.count ? std::min<std::size_t>(kFeederSlots, static_cast<std::size_t>(*f.count)) : kFeederSlots;
+    workcell::PlacedObject slot = cell->fedParts[f.part];
+    slot.F_world_design = parkedPose();
+    slot.kind = workcell::ObjectKind::Part;
+    for (std::size_t i = 0; i < n; ++i) out->objects.push_back(slot);
+  }
+  return out;
+}
+
+// A wire: on a change of its source, schedules its input's new value
+// AFTER later (the tag is the source's value then); takes it in evaluate,
+// writes the input in update.
+class CellDevices::Wire final : public CellProcess {
+ public:
+  Wire(const workcell::Wire& wire, RobotIo& io) : wire_(wire), io_(io) {}
+  void wake(const CellEvent& event, Scheduler&) override { next_ = (event.tag != 0) != wire_.inverted, has_ = true; }
+  bool update(Scheduler&) override {
+    if (!std::exchange(has_, false)) return false;
+    InputCause cause;
+    cause.kind = InputCause::Kind::Wire;
+    cause.input = wire_.input, cause.on = next_, cause.line = wire_.pos.line;
+    cause.source = signalText(wire_.source);
+    io_.setInput(wire_.input, next_, cause);
+    return true;
+  }
+  std::string name() const override {
+    return fmt::format("wire {} TO IN {} (line {})", signalText(wire_.source), wire_.input, wire_.pos.line);
+  }
+  const workcell::Wire& wire() const { return wire_; }
+  std::uint32_t id = 0;
+
+ private:
+  const workcell::Wire& wire_;
+  RobotIo& io_;
+  bool next_ = false, has_ = false;
+};
+
+CellDevices::CellDevices(const workcell::Workcell& cell, World& world, RobotIo& io, Scheduler& clock)
+    : cell_(cell), world_(world), io_(io), clock_(clock) {
+  const workcell::Devices& d = cell.devices;
+  std::size_t slots = 0;
+  for (const workcell::Feeder& f : d.feeders)
+    slots += f.count ? std::min<std::size_t>(kFeederSlots, static_cast<std::size_t>(*f.count)) : kFeederSlots;
+  firstSlot_ = cell.objects.size() - slots;
+  for (std::size_t f = 0, at = firstSlot_; f < d.feeders.size(); ++f) {
+    const std::size_t n = d.feeders[f].count
+                              ? std::min<std::size_t>(kFeederSlots, static_cast<std::size_t>(*d.feeders[f].count))
+                              : kFeederSlots;
+    slotStart_.push_back(at), slotCount_.push_back(n);
+    at += n;
+  }
+  for (const workcell::PlacedObject& o : cell.objects) designBoxes_.push_back(workcell::boundsOf(o.shape));
+  const std::size_t n = cell.objects.size();
+  state_.number.assign(n, 0);
+  for (std::size_t o = 0; o < firstSlot_; ++o) state_.number[o] = static_cast<std::uint32_t>(o + 1);
+  state_.nextNumber = static_cast<std::uint32_t>(firstSlot_ + 1);
+  state_.sensorOn.assign(d.sensors.size(), false);
+  nextSensor_ = state_.sensorOn;
+  state_.sensorCount.assign(d.sensors.size(), 0);
+  state_.carried.assign(d.conveyors.size(), 0);
+  state_.fed.assign(d.feeders.size(), 0);
+  state_.taken.assign(d.sinks.size(), 0);
+  state_.ridden.assign(n, 0);
+  state_.nextDue.assign(d.feeders.size(), 0);
+  state_.waiting.assign(d.feeders.size(), false);
+  state_.whenLevel.assign(d.feeders.size(), false);
+  state_.velocity.assign(n, Eigen::Vector3d::Zero());
+  state_.travel.assign(n, 0);
+  for (std::size_t f = 0; f < d.feeders.size(); ++f)
+    if (!d.feeders[f].everyUs) state_.nextDue[f] = INT64_MAX;
+  id_ = clock.add(*this);
+  for (const workcell::Wire& w : d.wires) {
+    wires_.push_back(std::make_unique<Wire>(w, io));
+    wires_.back()->id = clock.add(*wires_.back());
+  }
+  clock.schedule(clock.now(), id_);
+  for (const auto& w : wires_)
+    if (signal(w->wire().source) != w->wire().inverted)
+      clock.schedule(clock.now() + w->wire().afterUs, w->id, signal(w->wire().source) ? 1 : 0);
+  state_.revision = world.revision();
+}
+
+CellDevices::~CellDevices() = default;
+
+bool CellDevices::signal(const Signal& s) const {
+  switch (s.kind) {
+    case Signal::Kind::On: return true;
+    case Signal::Kind::Off: return false;
+    case Signal::Kind::Output: return io_.output(s.number);
+    case Signal::Kind::Input: return false;  // another robot's input: issue 36
+    case Signal::Kind::Sensor: return s.sensor < state_.sensorOn.size() && state_.sensorOn[s.sensor];
+  }
+  return false;
+}
+
+bool CellDevices::running(std::size_t c) const { return signal(cell_.devices.conveyors[c].run); }
+
+Eigen::AlignedBox3d CellDevices::box(std::size_t o) const {
+  return transformed(designBoxes_[o], world_.restingPose(o));
+}
+
+void CellDevices::place(std::size_t o, const Eigen::Vector3d& shift) {
+  Eigen::Isometry3d p = world_.restingPose(o);
+  p.translation() += shift;
+  world_.place(o, p);
+}
+
+void CellDevices::restore(const State& s) {
+  state_ = s;
+  nextSensor_ = s.sensorOn;
+  events_.clear();
+  fault_.reset();
+}
+
+void CellDevices::moveTo(vm::Micros now) {
+  const double dt = static_cast<double>(now - state_.planAt) / 1e6;
+  state_.planAt = now;
+  if (dt <= 0) return;
+  for (std::size_t o = 0; o < state_.velocity.size(); ++o) {
+    const Eigen::Vector3d& w = state_.velocity[o];
+    if (w.isZero() || state_.travel[o] <= 0) continue;
+    if (world_.held() == o) {
+      state_.velocity[o].setZero();
+      continue;
+    }
+    const double speed = w.norm();
+    const double dist = std::min(speed * dt, state_.travel[o]);
+    place(o, w / speed * dist);
+    state_.travel[o] -= dist;
+  }
+}
+
+void CellDevices::commit() {
+  moveTo(clock_.now());
+  state_.revision = world_.revision();
+}
+
+void CellDevices::sync() {
+  if (world_.revision() != state_.revision) clock_.schedule(clock_.now(), id_);
+}
+
+void CellDevices::outputChanged(int output) {
+  const workcell::Devices& d = cell_.devices;
+  bool reads = false;
+  for (const workcell::Conveyor& c : d.conveyors) reads |= c.run.kind == Signal::Kind::Output && c.run.number == output;
+  for (const workcell::Feeder& f : d.feeders)
+    reads |= f.when && f.when->kind == Signal::Kind::Output && f.when->number == output;
+  if (reads) clock_.schedule(clock_.now(), id_);
+  for (const auto& w : wires_)
+    if (w->wire().source.kind == Signal::Kind::Output && w->wire().source.number == output)
+      clock_.schedule(clock_.now() + w->wire().afterUs, w->id, io_.output(output) ? 1 : 0);
+}
+
+// A part rides conveyor c's belt: present, not held, its bottom on the
+// belt's top and its centre over the belt.
+struct CellDevices::Geometry {
+  Eigen::AlignedBox3d belt;
+  Eigen::Vector3d dir, lateral;
+  double end = 0;  // the belt's far end along dir
+};
+
+void CellDevices::feed(std::size_t f, vm::Micros now) {
+  const workcell::Feeder& feeder = cell_.devices.feeders[f];
+  const workcell::PlacedObject& part = cell_.fedParts[feeder.part];
+  const Eigen::Vector3d shift = feeder.at - workcell::atCorner(part.shape);
+  const Eigen::AlignedBox3d spot = workcell::boundsOf(part.shape).translated(shift);
+  for (std::size_t o = 0; o < state_.number.size(); ++o) {
+    if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.held() == o) continue;
+    if (boxesOverlap(box(o), spot)) {
+      if (!state_.waiting[f]) events_.push_back({DeviceEvent::Kind::Waits, now, f, o, state_.number[o], feeder.at});
+      state_.waiting[f] = true;
+      return;
+    }
+  }
+  std::size_t slot = slotStart_[f] + slotCount_[f];
+  for (std::size_t s = slotStart_[f]; s < slotStart_[f] + slotCount_[f]; ++s)
+    if (!present(s)) {
+      slot = s;
+      break;
+    }
+  if (slot == slotStart_[f] + slotCount_[f]) {
+    if (!fault_)
+      fault_ = fmt::format("feeder {} has {} parts in the cell at once, the most a feeder may have: take them away "
+                           "(a SINK) or feed fewer (EVERY, COUNT)",
+                           feeder.name, slotCount_[f]);
+    state_.waiting[f] = false;
+    return;
+  }
+  state_.waiting[f] = false;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = shift;
+  world_.place(slot, pose);
+  state_.number[slot] = state_.nextNumber++;
+  state_.ridden[slot] = 0;
+  state_.velocity[slot].setZero(), state_.travel[slot] = 0;
+  ++state_.fed[f];
+  events_.push_back({DeviceEvent::Kind::Fed, now, f, slot, state_.number[slot], feeder.at});
+}
+
+void CellDevices::wake(const CellEvent&, Scheduler& clock) {
+  const vm::Micros now = clock.now();
+  const workcell::Devices& d = cell_.devices;
+  moveTo(now);
+  // Parts past an open end fall onto what is below them.
+  for (std::size_t o = 0; o < state_.number.size(); ++o) {
+    if (!present(o) || state_.ridden[o] == 0 || world_.held() == o) continue;
+    const workcell::Conveyor& c = d.conveyors[state_.ridden[o] - 1];
+    const workcell::PlacedObject& obj = cell_.objects[c.object];
+    if (!obj.belt || !obj.belt->endOpen) continue;
+    const Eigen::AlignedBox3d belt = transformed(obj.belt->surface, obj.F_world_design);
+    const Eigen::Vector3d dir = (obj.F_world_design.linear() * obj.belt->direction).normalized();
+    const Eigen::AlignedBox3d b = box(o);
+    const double end = dir.dot(belt.center()) + dir.cwiseAbs().dot(belt.sizes() / 2);
+    if (dir.dot(b.center()) < end - 1e-9) continue;
+    double below = cell_.floor ? *cell_.floor : b.min().y();
+    for (std::size_t k = 0; k < state_.number.size(); ++k) {
+      if (k == o || !present(k)) continue;
+      const Eigen::AlignedBox3d other = box(k);
+      if (other.isEmpty() || other.max().y() > b.min().y() + 1e-6) continue;
+      if (b.center().x() < other.min().x() || b.center().x() > other.max().x() || b.center().z() < other.min().z() ||
+          b.center().z() > other.max().z())
+        continue;
+      below = std::max(below, other.max().y());
+    }
+    place(o, Eigen::Vector3d(0, below - b.min().y(), 0));
+    state_.ridden[o] = 0, state_.velocity[o].setZero(), state_.travel[o] = 0;
+  }
+  // Sinks take the parts whose centre is in their zone.
+  for (std::size_t o = 0; o < state_.number.size(); ++o) {
+    if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.held() == o) continue;
+    const Eigen::Vector3d centre = box(o).center();
+    for (std::size_t s = 0; s < d.sinks.size(); ++s) {
+      if (!boxesTouch(Eigen::AlignedBox3d(centre, centre), d.sinks[s].zone)) continue;
+      events_.push_back({DeviceEvent::Kind::Taken, now, s, o, state_.number[o], centre});
+      ++state_.taken[s];
+      state_.number[o] = 0;
+      world_.place(o, parkedPose());
+      state_.velocity[o].setZero(), state_.travel[o] = 0, state_.ridden[o] = 0;
+      break;
+    }
+  }
+  // Feeders: a part due, or waiting for its place.
+  for (std::size_t f = 0; f < d.feeders.size(); ++f) {
+    const workcell::Feeder& feeder = d.feeders[f];
+    const bool full = feeder.count && state_.fed[f] >= static_cast<std::uint64_t>(*feeder.count);
+    if (feeder.everyUs) {
+      if (state_.nextDue[f] <= now) {
+        bool due = false;
+        while (state_.nextDue[f] <= now) state_.nextDue[f] += *feeder.everyUs, due = true;
+        if (due && !full && !state_.waiting[f]) feed(f, now);
+      } else if (state_.waiting[f] && !full) {
+        feed(f, now);
+      }
+      if (full) state_.nextDue[f] = INT64_MAX, state_.waiting[f] = false;
+    } else if (feeder.when) {
+      const bool level = signal(*feeder.when);
+      const bool rising = level && !state_.whenLevel[f];
+      state_.whenLevel[f] = level;
+      if (!full && (rising || state_.waiting[f])) feed(f, now);
+    }
+  }
+  // The sensors as they are now: committed in update.
+  for (std::size_t s = 0; s < d.sensors.size(); ++s) {
+    const workcell::Sensor& sensor = d.sensors[s];
+    bool sees = false;
+    if (sensor.sees != workcell::Sensor::Sees::Robots)
+      for (std::size_t o = 0; o < state_.number.size() && !sees; ++o) {
+        if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.held() == o) continue;
+        const Eigen::AlignedBox3d b = box(o);
+        sees = sensor.shape == workcell::Sensor::Shape::Beam ? beamTouches(sensor.a, sensor.b, b)
+                                                             : boxesTouch(b, sensor.zone);
+      }
+    nextSensor_[s] = sees;
+  }
+  plan(now);
+  state_.revision = world_.revision();
+}
+
+bool CellDevices::update(Scheduler& clock) {
+  const workcell::Devices& d = cell_.devices;
+  bool changed = false;
+  for (std::size_t s = 0; s < d.sensors.size(); ++s) {
+    if (nextSensor_[s] == state_.sensorOn[s]) continue;
+    changed = true;
+    state_.sensorOn[s] = nextSensor_[s];
+    if (nextSensor_[s]) ++state_.sensorCount[s];
+    events_.push_back({nextSensor_[s] ? DeviceEvent::Kind::SensorOn : DeviceEvent::Kind::SensorOff, clock.now(), s});
+    for (const auto& w : wires_)
+      if (w->wire().source.kind == Signal::Kind::Sensor && w->wire().source.sensor == s)
+        clock.schedule(clock.now() + w->wire().afterUs, w->id, nextSensor_[s] ? 1 : 0);
+  }
+  if (changed) {
+    bool reads = false;
+    for (const workcell::Conveyor& c : d.conveyors) reads |= c.run.kind == Signal::Kind::Sensor;
+    for (const workcell::Feeder& f : d.feeders) reads |= f.when && f.when->kind == Signal::Kind::Sensor;
+    if (reads) clock.schedule(clock.now(), id_);
+  }
+  return changed;
+}
+
+// Who rides which running belt from now, how far each goes (an
+// accumulating belt: a part stops at the part ahead's final place, the
+// first at the stop plate), and the next time anything happens.
+void CellDevices::plan(vm::Micros now) {
+  const workcell::Devices& d = cell_.devices;
+  const std::size_t n = state_.number.size();
+  for (std::size_t o = 0; o < n; ++o) state_.velocity[o].setZero(), state_.travel[o] = 0;
+  std::vector<bool> taken(n, false);
+  for (std::size_t c = 0; c < d.conveyors.size(); ++c) {
+    const workcell::Conveyor& conveyor = d.conveyors[c];
+    if (!running(c)) continue;
+    const workcell::PlacedObject& obj = cell_.objects[conveyor.object];
+    if (!obj.belt) continue;
+    Geometry g;
+    g.belt = transformed(obj.belt->surface, obj.F_world_design);
+    g.dir = (obj.F_world_design.linear() * obj.belt->direction).normalized();
+    g.lateral = Eigen::Vector3d::UnitY().cross(g.dir);
+    if (g.lateral.norm() < 1e-9) g.lateral = Eigen::Vector3d::UnitX();
+    g.lateral.normalize();
+    g.end = g.dir.dot(g.belt.center()) + g.dir.cwiseAbs().dot(g.belt.sizes() / 2);
+    struct Rider {
+      std::size_t o;
+      double lead, length, lo, hi, final = 0;
+    };
+    std::vector<Rider> riders;
+    for (std::size_t o = 0; o < n; ++o) {
+      if (taken[o] || !present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.held() == o) continue;
+      const Eigen::AlignedBox3d b = box(o);
+      const Eigen::Vector3d centre = b.center();
+      if (std::abs(b.min().y() - g.belt.max().y()) > kRestTolerance) continue;
+      if (centre.x() < g.belt.min().x() || centre.x() > g.belt.max().x() || centre.z() < g.belt.min().z() ||
+          centre.z() > g.belt.max().z())
+        continue;
+      const Eigen::Vector3d half = b.sizes() / 2;
+      const double along = g.dir.cwiseAbs().dot(half), across = g.lateral.cwiseAbs().dot(half);
+      riders.push_back({o, g.dir.dot(centre) + along, 2 * along, g.lateral.dot(centre) - across,
+                        g.lateral.dot(centre) + across});
+      taken[o] = true;
+    }
+    std::sort(riders.begin(), riders.end(), [](const Rider& a, const Rider& b) {
+      return a.lead != b.lead ? a.lead > b.lead : a.o < b.o;
+    });
+    for (std::size_t i = 0; i < riders.size(); ++i) {
+      Rider& r = riders[i];
+      double limit = obj.belt->endOpen ? kInf : g.end;
+      for (std::size_t k = 0; k < i; ++k)
+        if (riders[k].lo < r.hi - 1e-9 && r.lo < riders[k].hi - 1e-9)
+          limit = std::min(limit, riders[k].final - riders[k].length);
+      const double travel = std::max(0.0, limit - r.lead);
+      r.final = r.lead + travel;
+      if (travel <= 1e-9) continue;
+      state_.velocity[r.o] = g.dir * conveyor.speed;
+      state_.travel[r.o] = travel;
+      if (state_.ridden[r.o] != c + 1) ++state_.carried[c];
+      state_.ridden[r.o] = c + 1;
+    }
+  }
+  // The next time something may change.
+  vm::Micros next = INT64_MAX;
+  for (std::size_t f = 0; f < d.feeders.size(); ++f) next = std::min(next, state_.nextDue[f]);
+  for (std::size_t o = 0; o < n; ++o) {
+    const Eigen::Vector3d& w = state_.velocity[o];
+    if (w.isZero()) continue;
+    const double speed = w.norm();
+    const double T = std::isinf(state_.travel[o]) ? kHorizon : state_.travel[o] / speed;
+    const Eigen::AlignedBox3d b = box(o);
+    const bool isPart = cell_.objects[o].kind == workcell::ObjectKind::Part;
+    for (const workcell::Sensor& s : d.sensors) {
+      if (s.sees == workcell::Sensor::Sees::Robots || !isPart) continue;
+      const Interval in = s.shape == workcell::Sensor::Shape::Beam ? beamInterval(b, w, T, s.a, s.b)
+                                                                  : zoneInterval(b, w, T, s.zone);
+      if (in.empty()) continue;
+      if (in.from > 1e-9) next = std::min(next, startMicro(now, in.from));
+      if (in.to < T - 1e-9) next = std::min(next, afterMicro(now, in.to));
+    }
+    const Eigen::AlignedBox3d centre(b.center(), b.center());
+    for (const workcell::Sink& s : d.sinks) {
+      const Interval in = zoneInterval(centre, w, T, s.zone);
+      if (!in.empty()) next = std::min(next, startMicro(now, std::max(in.from, 0.0)));
+    }
+    if (std::isinf(state_.travel[o])) {
+      // The centre passes the open end.
+      const workcell::Conveyor& c = d.conveyors[state_.ridden[o] - 1];
+      const workcell::PlacedObject& obj = cell_.objects[c.object];
+      const Eigen::AlignedBox3d belt = transformed(obj.belt->surface, obj.F_world_design);
+      const Eigen::Vector3d dir = w / speed;
+      const double end = dir.dot(belt.center()) + dir.cwiseAbs().dot(belt.sizes() / 2);
+      next = std::min(next, startMicro(now, std::max(0.0, (end - dir.dot(b.center())) / speed)));
+    }
+    for (std::size_t f = 0; f < d.feeders.size(); ++f) {
+      if (!state_.waiting[f]) continue;
+      const workcell::Feeder& feeder = d.feeders[f];
+      const workcell::PlacedObject& part = cell_.fedParts[feeder.part];
+      const Eigen::AlignedBox3d spot =
+          workcell::boundsOf(part.shape).translated(feeder.at - workcell::atCorner(part.shape));
+      const Interval in = zoneInterval(b, w, T, spot);
+      if (!in.empty() && in.to < T - 1e-9) next = std::min(next, afterMicro(now, in.to));
+    }
+  }
+  if (next != INT64_MAX) clock_.schedule(next, id_);
+}
+
+}  // namespace rs::runtime

@@ -1,0 +1,150 @@
+// The cell's devices acting on its clock (issue 35; docs/models.md,
+// "Devices"): belts carry the parts resting on them, sensors see parts
+// cross a beam or a zone, feeders put new parts, sinks take them, wires
+// carry sensors and outputs to the robot's inputs. No per-tick stepping:
+// between two events every part on a running belt moves on a straight line
+// at the belt's speed until its stop, and the next event (a sensor's edge,
+// a part reaching a sink or running off an open end, a feeder's place
+// freed) is solved for on those lines, to the microsecond.
+//
+// Fed parts live in slots appended to the cell's objects (withFeederSlots):
+// kFeederSlots per feeder (fewer with COUNT), parked far below the floor
+// while empty. A part's number (the trace's "object 5") is given when it
+// appears and never given again.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/workcell/model.h"
+#include "runtime/cell/input_cause.h"
+#include "runtime/cell/scheduler.h"
+#include "runtime/cell/world.h"
+#include "vm/machine.h"
+
+namespace rs::runtime {
+
+/// Parts of one feeder that may be in the cell at once; one more stops the
+/// run with an error (a feeder that floods the cell).
+inline constexpr std::size_t kFeederSlots = 64;
+
+/// A copy of `cell` with its feeders' slots appended to its objects (the
+/// same cell when it has no feeders).
+std::shared_ptr<const workcell::Workcell> withFeederSlots(std::shared_ptr<const workcell::Workcell> cell);
+
+/// What the devices read and write of the robot that runs the program.
+class RobotIo {
+ public:
+  virtual ~RobotIo() = default;
+  virtual bool output(int output) const = 0;
+  /// Input `input` turns `on` now, because of `cause` (a wire).
+  virtual void setInput(int input, bool on, const InputCause& cause) = 0;
+};
+
+/// One thing a device did, for the trace and the run log.
+struct DeviceEvent {
+  enum class Kind : std::uint8_t { SensorOn, SensorOff, Fed, Waits, Taken };
+  Kind kind = Kind::SensorOn;
+  vm::Micros at = 0;
+  std::size_t device = 0;         ///< in its kind's list of Workcell::devices
+  std::size_t object = 0;         ///< Fed, Taken, Waits (what takes the place): index in the objects
+  std::uint32_t number = 0;       ///< that object's number
+  Eigen::Vector3d place = Eigen::Vector3d::Zero();  ///< Fed: its AT corner
+  bool operator==(const DeviceEvent& o) const {
+    return kind == o.kind && at == o.at && device == o.device && object == o.object && number == o.number &&
+           place == o.place;
+  }
+};
+
+class CellDevices final : public CellProcess {
+ public:
+  /// `cell` is withFeederSlots' copy (the world's cell); everything must
+  /// outlive this. Adds itself and a process per wire to `clock`, and
+  /// schedules the start of the run (the first parts fed, every sensor and
+  /// wire as the cell begins).
+  CellDevices(const workcell::Workcell& cell, World& world, RobotIo& io, Scheduler& clock);
+  ~CellDevices() override;
+
+  void wake(const CellEvent& event, Scheduler& clock) override;
+  bool update(Scheduler& clock) override;
+  std::string name() const override { return "the cell's devices"; }
+
+  /// The robot's output changed now: the devices that read it act.
+  void outputChanged(int output);
+  /// The world may have changed outside the devices (a take, a let-go):
+  /// they look again now.
+  void sync();
+  /// Every part on a running belt moved to where it is now (before the
+  /// robot looks at the world).
+  void commit();
+  /// A device's mistake that stops the run (a feeder out of slots), once.
+  std::optional<std::string> takeFault() { return std::exchange(fault_, std::nullopt); }
+
+  /// Object `o`'s number, 0 while it is not in the cell.
+  std::uint32_t number(std::size_t o) const { return state_.number[o]; }
+  bool present(std::size_t o) const { return state_.number[o] != 0; }
+  bool sensorOn(std::size_t s) const { return state_.sensorOn[s]; }
+  std::uint64_t sensorCount(std::size_t s) const { return state_.sensorCount[s]; }
+  std::uint64_t carried(std::size_t c) const { return state_.carried[c]; }
+  std::uint64_t fed(std::size_t f) const { return state_.fed[f]; }
+  std::uint64_t taken(std::size_t s) const { return state_.taken[s]; }
+  bool running(std::size_t c) const;
+
+  /// What the devices did since the last call, in order.
+  std::vector<DeviceEvent> takeEvents() { return std::exchange(events_, {}); }
+
+  struct State {
+    std::vector<std::uint32_t> number;  // per object; 0: not in the cell
+    std::uint32_t nextNumber = 1;
+    std::vector<bool> sensorOn;
+    std::vector<std::uint64_t> sensorCount, carried, fed, taken;
+    std::vector<std::size_t> ridden;         // per object: the conveyor it last rode + 1, 0: none
+    std::vector<vm::Micros> nextDue;         // per EVERY feeder: when its next part is due
+    std::vector<bool> waiting;               // per feeder: a part waits for its place
+    std::vector<bool> whenLevel;             // per WHEN feeder: its signal as last seen
+    vm::Micros planAt = 0;                   // the motion below starts here
+    std::vector<Eigen::Vector3d> velocity;   // per object, while it rides
+    std::vector<double> travel;              // per object: how far it rides (may be infinite)
+    std::uint64_t revision = 0;              // the world's, as the devices last left it
+    std::uint64_t wakeTag = 0;               // the plan's wake (older ones are stale)
+    bool operator==(const State&) const = default;
+  };
+  const State& state() const { return state_; }
+  void restore(const State& state);
+
+ private:
+  class Wire;
+  struct Geometry;
+  void plan(vm::Micros now);
+  void moveTo(vm::Micros now);
+  void feed(std::size_t f, vm::Micros now);
+  bool signal(const workcell::Signal& s) const;
+  Eigen::AlignedBox3d box(std::size_t o) const;
+  bool rides(std::size_t o) const;
+  void place(std::size_t o, const Eigen::Vector3d& shift);
+  void sourceChanged(const workcell::Signal& source);
+
+  const workcell::Workcell& cell_;
+  World& world_;
+  RobotIo& io_;
+  Scheduler& clock_;
+  std::uint32_t id_ = 0;
+  std::size_t firstSlot_ = 0;
+  std::vector<std::size_t> slotStart_;           // per feeder: its first slot
+  std::vector<std::size_t> slotCount_;
+  std::vector<Eigen::AlignedBox3d> designBoxes_;  // per object, its lines' bounds
+  std::vector<std::unique_ptr<Wire>> wires_;
+  State state_;
+  std::vector<bool> nextSensor_;  // evaluate's sensor values, committed in update
+  std::vector<DeviceEvent> events_;
+  std::optional<std::string> fault_;
+};
+
+/// Where an empty slot waits: far below any floor.
+Eigen::Isometry3d parkedPose();
+
+}  // namespace rs::runtime

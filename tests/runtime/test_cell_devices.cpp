@@ -1,0 +1,176 @@
+// The cell's devices acting on its clock (issue 35, docs/models.md
+// "Devices"): a belt carries a part through a beam at the microsecond
+// computed here by hand, the sensor's wire ends the robot's WAITFOR, a
+// sink takes the part, a feeder waits for its place, a feeder that floods
+// the cell stops the run, and two devices listed in either order give the
+// same instant.
+#include <catch2/catch.hpp>
+
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "../render/render_test_util.h"
+#include "compiler/description/library.h"
+#include "launch/run_request.h"
+#include "runtime/run/run.h"
+#include "runtime/run/trace.h"
+
+namespace celldevicestest {
+
+// A belt 1000 long (x 0..1000, top y 10, z 5..45) and a 10-unit part.
+const std::string kObjects =
+    "OBJECT belt\n"
+    "  BOX 0 1000 10 0 50 0\n"
+    "  BELT 0 1000 10 0 45 5 DIRECTION 1 0 0\n"
+    "END\n"
+    "OBJECT blk\n"
+    "  PART\n"
+    "  BOX 0 10 10 0 10 0\n"
+    "END\n";
+
+rs::workcell::Workcell cellOf(const std::string& devices) {
+  rs::testing::TempDir dir;
+  // The belt's AT corner (least x, least y, greatest z) at (0, 0, 50)
+  // leaves it where it is drawn; the part's, (0, 0, 10), at (17, 10, 30)
+  // puts its box at x 17..27, y 10..20 (on the belt), z 20..30.
+  dir.write("c.rsd", kObjects +
+                         "WORKCELL c\n"
+                         "  ROBOT adept-one AT 0 0 -900\n"
+                         "  OBJECT belt AT 0 0 50 AS line\n"
+                         "  OBJECT blk AT 17 10 30\n" +
+                         devices + "END\n");
+  rs::compiler::Library lib(rs::compiler::librarySearchPath({dir.path().string()}));
+  const auto c = lib.workcell(dir.file("c.rsd"));
+  for (const auto& d : lib.diagnostics()) INFO(d.message);
+  REQUIRE(c);
+  return *c;
+}
+
+struct Ran {
+  std::unique_ptr<rs::runtime::Run> run;
+  std::string trace;
+};
+
+Ran runOn(const rs::workcell::Workcell& cell, const std::string& program) {
+  const rs::vm::Image image = rendertest::compileText(program, cell);
+  Ran r;
+  r.run = rendertest::runOf(image, &cell, {}, true, rs::runtime::CollisionMode::Off);
+  std::ostringstream out;
+  rs::runtime::TraceWriter trace(out, rs::runtime::TraceFormat::Text, *r.run);
+  r.run->observe(trace);
+  r.run->runToEnd();
+  r.trace = out.str();
+  return r;
+}
+
+}  // namespace celldevicestest
+
+using celldevicestest::cellOf;
+using celldevicestest::runOn;
+
+TEST_CASE("a part carried by a belt breaks a beam at the microsecond computed by hand", "[cell][devices]") {
+  const auto cell = cellOf(
+      "  CONVEYOR line SPEED 37 RUN OUT 2\n"
+      "  SENSOR eye BEAM 500 15 0  500 15 60\n"
+      "  WIRE eye TO IN 1\n");
+  const auto r = runOn(cell, "        OUTSIG 2 ON\n        WAITFOR 1 ON\n        END\n");
+  REQUIRE(r.run->outcome()->ok());
+  // The part's leading face, x = 27, meets the beam at x = 500 after
+  // 473 / 37 = 12.78378378... s: the first whole microsecond it touches
+  // is 12,783,784.
+  CHECK(r.run->rig().clock() == 12'783'784);
+  const rs::runtime::RunLog& log = *r.run->log();
+  REQUIRE(log.devices.size() == 1);
+  CHECK(log.devices[0].event.kind == rs::runtime::DeviceEvent::Kind::SensorOn);
+  CHECK(log.devices[0].event.at == 12'783'784);
+  REQUIRE(log.inputChanges.size() == 1);
+  CHECK(log.inputChanges[0].at == 12'783'784);
+  CHECK(log.inputChanges[0].cause.kind == rs::runtime::InputCause::Kind::Wire);
+  CHECK(r.trace.find("    12.784  sensor eye ON\n    12.784  input 1 ON: wire from sensor eye\n") !=
+        std::string::npos);
+  CHECK(r.run->rig().devices()->sensorCount(0) == 1);
+  CHECK(r.run->rig().devices()->carried(0) == 1);
+}
+
+TEST_CASE("a belt stops its parts at its end, one behind another, and a sink takes what enters it",
+          "[cell][devices]") {
+  // Speed 100: the part's front (27) reaches the stop plate (1000) at 9.73 s.
+  const auto stopped = cellOf("  CONVEYOR line SPEED 100 RUN ON\n");
+  const auto a = runOn(stopped, "        DELAY 20\n        END\n");
+  const auto objects = a.run->rig().objects();
+  CHECK(objects[1].at.x() == Approx(990));
+  // A sink over x 600..700: the part's centre (22) enters at x 600 after 5.78 s.
+  const auto sunk = cellOf(
+      "  CONVEYOR line SPEED 100 RUN ON\n"
+      "  SINK done ZONE 600 700 30 0 50 0\n");
+  const auto b = runOn(sunk, "        DELAY 20\n        END\n");
+  CHECK(b.run->rig().devices()->taken(0) == 1);
+  CHECK_FALSE(b.run->rig().devices()->present(1));
+  CHECK(b.trace.find("     5.780  sink done: takes blk (object 2)\n") != std::string::npos);
+}
+
+TEST_CASE("a feeder puts parts that get new numbers and waits while its place is taken", "[cell][devices]") {
+  // A part every 2 s at x 100..110 on a belt that does not run: the first
+  // at 0 is object 3, the next waits.
+  const auto cell = cellOf("  FEEDER f blk AT 100 10 30 EVERY 2\n");
+  const auto r = runOn(cell, "        DELAY 5\n        END\n");
+  CHECK(r.run->rig().devices()->fed(0) == 1);
+  CHECK(r.trace.find("     0.000  feeder f: blk (object 3) at (100, 10, 30)\n") != std::string::npos);
+  CHECK(r.trace.find("     2.000  feeder f: waits, its place is taken by blk (object 3)\n") != std::string::npos);
+  // Running at 100, the part leaves its place (x 100..110) after 0.1 s: a
+  // part every 2 s, numbered 3, 4, 5 (object 2 is the placed one).
+  const auto running = cellOf(
+      "  CONVEYOR line SPEED 100 RUN ON\n"
+      "  FEEDER f blk AT 100 10 30 EVERY 2\n");
+  const auto s = runOn(running, "        DELAY 5\n        END\n");
+  CHECK(s.run->rig().devices()->fed(0) == 3);
+  CHECK(s.trace.find("     4.000  feeder f: blk (object 5) at (100, 10, 30)\n") != std::string::npos);
+}
+
+TEST_CASE("a feeder that floods the cell stops the run at its limit of parts", "[cell][devices]") {
+  // 1000 a second carry each part 20 away before the next: 64 parts fill
+  // the feeder's slots by 1.26 s, the 65th stops the run.
+  const auto cell = cellOf(
+      "  CONVEYOR line SPEED 1000 RUN ON\n"
+      "  FEEDER f blk AT 30 10 30 EVERY 0.02\n");
+  const auto r = runOn(cell, "        DELAY 5\n        END\n");
+  REQUIRE(r.run->outcome());
+  CHECK_FALSE(r.run->outcome()->ok());
+  CHECK(r.run->outcome()->message.find("feeder f has 64 parts in the cell at once") != std::string::npos);
+  CHECK(r.run->rig().clock() == 1'280'000);
+}
+
+TEST_CASE("two devices at one instant give the same inputs whichever is listed first", "[cell][devices]") {
+  const std::string eye1 = "  SENSOR eye1 BEAM 500 15 0  500 15 60\n  WIRE eye1 TO IN 1\n";
+  const std::string eye2 = "  SENSOR eye2 BEAM 500 12 0  500 12 60\n  WIRE eye2 TO IN 2\n";
+  const std::string belt = "  CONVEYOR line SPEED 37 RUN OUT 2\n";
+  const std::string program = "        OUTSIG 2 ON\n        WAITFOR 1 ON\n        END\n";
+  const auto a = runOn(cellOf(belt + eye1 + eye2), program);
+  const auto b = runOn(cellOf(belt + eye2 + eye1), program);
+  REQUIRE(a.run->outcome()->ok());
+  REQUIRE(b.run->outcome()->ok());
+  CHECK(a.run->rig().clock() == 12'783'784);
+  CHECK(b.run->rig().clock() == a.run->rig().clock());
+  // Both beams broke at the instant the WAITFOR ended, in both orders.
+  CHECK(a.run->rig().machine().inputs() == 0b11);
+  CHECK(b.run->rig().machine().inputs() == 0b11);
+}
+
+
+TEST_CASE("a stimulus for an input the cell wires is an error at the stimulus's line", "[cell][devices]") {
+  const auto cell = cellOf("  SENSOR eye BEAM 500 15 0  500 15 60\n  WIRE eye TO IN 1\n");
+  rs::testing::TempDir dir;
+  rs::launch::RunRequest request;
+  request.stimuliFile = dir.write("s.stim", "at 1 input 2 on\nat 2 input 1 on\n");
+  rs::launch::LoadedProgram program;
+  program.image = std::make_shared<const rs::vm::Image>(rendertest::compileText("        END\n", cell));
+  program.cell = std::make_shared<const rs::workcell::Workcell>(cell);
+  std::vector<rs::diag::Diagnostic> diags;
+  CHECK_FALSE(rs::launch::prepareRun(program, request, diags, 1000));
+  REQUIRE(diags.size() == 1);
+  CHECK(diags[0].pos.line == 2);  // input 2 is not wired: line 1 is fine
+  CHECK(diags[0].pos.col == 1);
+  CHECK(diags[0].message == "input 1 has a second source: this stimulus, and the WIRE at line 14 of workcell c");
+  CHECK_FALSE(diags[0].hint.empty());  // the WIRE is line 14: 8 lines of objects, WORKCELL, ROBOT, two OBJECTs, SENSOR
+}
