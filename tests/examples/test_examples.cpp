@@ -330,12 +330,11 @@ TEST_CASE("example gantry_pick: the trace says when the gripper takes and lets g
 
 TEST_CASE("example stack_blocks: points written as tool poses stack one block on another", "[examples]") {
   // scara-pick (stdlib/workcells/scara-pick.rsd): the front block, AT -150 780 20, a 40 cube
-  // (x -150..-110, y 780..820, z -20..20), centred at x -130, z 0. The program takes it by its
-  // middle (y 800) and lets go with the tool centre point at (-180, 840.12, -45): the block moves
-  // with the tool, by (-50, 40.12, -45), so its AT corner goes to about (-200, 820.1, -25), on top
-  // of the block AT -200 780 -25 (top y 820), not into it (the run checks collisions: the example's
-  // comment works out the 0.08 gap). Whole encoder counts put the tool within about 0.5 of each
-  // point (docs/language.md), hence the tolerance. Ten instructions; HRDHOME ends at home.
+  // (x -150..-110, y 780..820, z -20..20), centred at x -130, z 0. The program takes it 1 below
+  // its top (y 819) and lets go with the tool centre point at (-180, 859, -45), which whole counts
+  // put at y 858.96 (the example's comment): the block's bottom 0.04 into the block AT -200 780 -25
+  // (top y 820), within the rest tolerance, so it settles onto it: its AT corner at (-200, 820,
+  // -25) to within the counts' rounding in x and z, and exactly 820 in y. Ten instructions.
   const Result r = robotsim({"run", (kExamples / "stack_blocks.rsp").string(), "--format=json"});
   INFO("stderr: " << r.err);
   REQUIRE(r.code == rs::cli::kExitOk);
@@ -348,7 +347,9 @@ TEST_CASE("example stack_blocks: points written as tool poses stack one block on
   CHECK(moved.at("held") == false);
   const std::array<double, 3> want{-200, 820, -25};
   for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(moved.at("at")[k].get<double>() - want[k]) < 0.6);
-  CHECK(moved.at("at")[1].get<double>() >= 820);  // set down on the lower block, not into it
+  CHECK(moved.at("at")[1].get<double>() == Approx(820).margin(1e-4));  // settled on the lower block
+  CHECK(moved.at("settled").at("on") == "block (object 3)");
+  CHECK(moved.at("settled").at("drop").get<double>() == Approx(-0.04).margin(0.005));
   CHECK(j.at("collisions") == Json::array());
   for (std::size_t o = 0; o < 4; ++o) CHECK(j.at("objects")[o].at("moved") == false);
 }
