@@ -303,9 +303,12 @@ TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pal
   CHECK(j.at("motors") == Json::parse(R"({"X": 0, "Z": 0, "Y": 0, "A": 0})"));
   const Json want = Json::parse(R"([
     {"name": "pallet", "at": [150.0, 0.0, 760.0], "centre": [270.0, 15.0, 680.0], "held": false, "moved": false},
-    {"name": "block",  "at": [650.0, 30.0, 200.0], "centre": [670.0, 50.0, 180.0], "held": false, "moved": true},
-    {"name": "block",  "at": [750.0, 30.0, 200.0], "centre": [770.0, 50.0, 180.0], "held": false, "moved": true},
+    {"name": "block",  "at": [650.0, 30.0, 200.0], "centre": [670.0, 50.0, 180.0], "held": false, "moved": true,
+     "settled": {"on": "pallet (object 4)", "drop": 0.0}},
+    {"name": "block",  "at": [750.0, 30.0, 200.0], "centre": [770.0, 50.0, 180.0], "held": false, "moved": true,
+     "settled": {"on": "pallet (object 4)", "drop": 0.0}},
     {"name": "pallet", "at": [610.0, 0.0, 260.0], "centre": [730.0, 15.0, 180.0], "held": false, "moved": false}])");
+  // Each block let go with its bottom on the second pallet's deck (y 30, its top): settled there, no drop.
   CHECK(j.at("objects") == want);
 }
 
