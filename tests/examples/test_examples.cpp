@@ -301,13 +301,13 @@ TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pal
   CHECK(std::llround(j.at("time").get<double>() * 1e6) == 37'400'000);
   CHECK(j.at("steps") == 26);
   CHECK(j.at("motors") == Json::parse(R"({"X": 0, "Z": 0, "Y": 0, "A": 0})"));
-  const Json want = Json::parse(R"([
+  const Json want = Json::parse(R"json([
     {"name": "pallet", "at": [150.0, 0.0, 760.0], "centre": [270.0, 15.0, 680.0], "held": false, "moved": false},
     {"name": "block",  "at": [650.0, 30.0, 200.0], "centre": [670.0, 50.0, 180.0], "held": false, "moved": true,
      "settled": {"on": "pallet (object 4)", "drop": 0.0}},
     {"name": "block",  "at": [750.0, 30.0, 200.0], "centre": [770.0, 50.0, 180.0], "held": false, "moved": true,
      "settled": {"on": "pallet (object 4)", "drop": 0.0}},
-    {"name": "pallet", "at": [610.0, 0.0, 260.0], "centre": [730.0, 15.0, 180.0], "held": false, "moved": false}])");
+    {"name": "pallet", "at": [610.0, 0.0, 260.0], "centre": [730.0, 15.0, 180.0], "held": false, "moved": false}])json");
   // Each block let go with its bottom on the second pallet's deck (y 30, its top): settled there, no drop.
   CHECK(j.at("objects") == want);
 }
@@ -326,8 +326,11 @@ TEST_CASE("example gantry_pick: the trace says when the gripper takes and lets g
   // pick 1: down ends 4.6625, close ends 5.1625; place 1: 12.025 + 1.8625 = 13.8875, open ends 14.3875;
   // pick 2: 21.25 + 1.8625 = 23.1125, close ends 23.6125; place 2: 30.475 + 1.8625 = 32.3375, open ends
   // 32.8375 (the trace rounds half a millisecond up).
-  const std::vector<std::string> want = {"     5.163 takes block (object 2)", "    14.388 lets go of block (object 2)",
-                                         "    23.613 takes block (object 3)", "    32.838 lets go of block (object 3)"};
+  // Each let go with its bottom on the second pallet's deck (its top, y 30): it settles there, no drop.
+  const std::vector<std::string> want = {"     5.163 takes block (object 2)",
+                                         "    14.388 lets go of block (object 2): it settles on pallet (object 4)",
+                                         "    23.613 takes block (object 3)",
+                                         "    32.838 lets go of block (object 3): it settles on pallet (object 4)"};
   CHECK(events == want);
 }
 
