@@ -51,18 +51,18 @@ std::vector<CollisionProgram> collisionPrograms() {
 P2 AT -180 860 20 GRIP 0
 )", 333'335});
   out.push_back({"scara-pick", "pick and place", fmt::format(kPickAndPlace, "", "        MOVEP LIFT0\n", "{}") + R"(ABOVE   AT -130 870 0          GRIP 0
-PICK    AT -130 800 0          GRIP 0
-TAKE    AT -130 800 0          GRIP 120
-LIFT0   AT -130 805 0          GRIP 120
+PICK    AT -130 819 0          GRIP 0
+TAKE    AT -130 819 0          GRIP 120
+LIFT0   AT -130 824 0          GRIP 120
 LIFT    AT -130 870 0          GRIP 120
 OVER    AT -180 875 -45        GRIP 120
-PLACE   AT -180 840.12 -45     GRIP 120
-DROP    AT -180 840.12 -45     GRIP 0
-RETAKE  AT -180 840.12 -45     GRIP 120
+PLACE   AT -180 859 -45        GRIP 120
+DROP    AT -180 859 -45        GRIP 0
+RETAKE  AT -180 859 -45        GRIP 120
 OVERC   AT -180 875 -45        GRIP 120
 LIFTC   AT -130 870 0          GRIP 120
-PICKC   AT -130 800 0          GRIP 120
-RELEASE AT -130 800 0          GRIP 0
+PICKC   AT -130 819 0          GRIP 120
+RELEASE AT -130 819 0          GRIP 0
 )", 20'000});
   // puma-cell: away from the table first (its forearm would sweep through
   // it), then the first block on the table 150 to the side and back; the

@@ -4,6 +4,7 @@
 
 #include "base/seconds.h"
 #include "runtime/run/empty_close.h"
+#include "runtime/run/placing.h"
 
 namespace rs::launch {
 
@@ -65,6 +66,7 @@ std::vector<diag::Diagnostic> runWarnings(const runtime::Run& run, runtime::Coll
                                  "--collisions=error stops the run there",
                                  watch->hint(e).empty() ? std::string() : watch->hint(e) + "; ", seconds)});
     }
+  for (diag::Diagnostic& w : runtime::placingWarnings(run, file)) out.push_back(std::move(w));
   if (std::optional<diag::Diagnostic> w = runtime::gripperWarning(run, file)) out.push_back(std::move(*w));
   return out;
 }

@@ -190,6 +190,9 @@ diag::Result<Workcell> decodeCell(std::span<const std::uint8_t> bytes) {
     Shape s = in.shape();
     const Eigen::Isometry3d place = in.pose();
     cell.objects.push_back({std::move(s), place});
+    // The section does not carry an object's kind (yet): every object read
+    // from it can be taken, as every object could before kinds existed.
+    cell.objects.back().kind = ObjectKind::Part;
   }
   if (!in.failed && !in.atEnd()) in.fail("unexpected bytes after the last object");
   if (in.failed) return diag::refusal("cell section: " + in.error);

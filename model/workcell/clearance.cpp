@@ -129,11 +129,14 @@ std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std
     for (const Eigen::AlignedBox3d& box : robotBoxes_[b]) robotHull_[b].extend(box);
   }
   const bool holds = query.held && *query.held < objects.size();
-  const Eigen::Isometry3d heldPose = F_world_i_.back() * query.heldOffset;
+  const Eigen::Isometry3d heldPose = F_world_i_.back() * query.heldOffset, heldRaised = raisedForRest(heldPose);
   heldHull_.setEmpty();
+  heldRaisedHull_.setEmpty();
   if (holds) {
     pieceBoxes(objects[*query.held], heldPose, heldBoxes_.data());
-    for (std::size_t i = 0; i < objects[*query.held].pieces.size(); ++i) heldHull_.extend(heldBoxes_[i]);
+    pieceBoxes(objects[*query.held], heldRaised, heldRaisedBoxes_.data());
+    for (std::size_t i = 0; i < objects[*query.held].pieces.size(); ++i)
+      heldHull_.extend(heldBoxes_[i]), heldRaisedHull_.extend(heldRaisedBoxes_[i]);
   }
   motion.posed(*this);
 
@@ -168,7 +171,7 @@ std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std
     if (body.frame != 0) {
       if (underFloor(self, robotBoxes_[b].data())) return Contact{body.ref, {BodyKind::Floor, 0}};
       for (std::size_t o = 0; o < objects.size(); ++o) {
-        if (query.held == o || (isGripperPart(body) && (query.exempt == o || query.exemptToo == o))) continue;
+        if (query.held == o || (isFinger(body) && query.exempt == o)) continue;
         if (against(self, objectSide(o), 0)) return Contact{body.ref, objects[o].ref};
       }
     }
@@ -179,11 +182,14 @@ std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std
   }
   if (!holds) return std::nullopt;
   const CollisionBody& held = objects[*query.held];
+  // Against the floor and the objects as raised for rest (a part put down
+  // a little into its support rests on it), against the robot as it is.
   const Mover self{heldIndex, Side{&held, &heldPose, heldBoxes_.data(), &heldHull_}, motion.anyWay(heldIndex)};
-  if (underFloor(self, heldBoxes_.data())) return Contact{held.ref, {BodyKind::Floor, 0}};
+  const Mover raised{heldIndex, Side{&held, &heldRaised, heldRaisedBoxes_.data(), &heldRaisedHull_}, self.anyWay};
+  if (underFloor(raised, heldRaisedBoxes_.data())) return Contact{held.ref, {BodyKind::Floor, 0}};
   for (std::size_t o = 0; o < objects.size(); ++o) {
     if (o == *query.held) continue;
-    if (against(self, objectSide(o), 0)) return Contact{held.ref, objects[o].ref};
+    if (against(raised, objectSide(o), 0)) return Contact{held.ref, objects[o].ref};
   }
   for (std::size_t c = 0; c < robot.size(); ++c) {
     if (robot[c].frame > last - 2 || robot[c].pieces.empty()) continue;

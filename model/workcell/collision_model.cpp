@@ -259,6 +259,7 @@ CollisionData::CollisionData(const CollisionModel& model) : model_(model) {
   objectBoxPose_.assign(model.objectBodies_.size(), Eigen::Isometry3d::Identity());
   objectBoxOk_.assign(model.objectBodies_.size(), 0);
   heldBoxes_.assign(most, Eigen::AlignedBox3d());
+  heldRaisedBoxes_.assign(most, Eigen::AlignedBox3d());
   robotHull_.assign(model.robotBodies_.size(), Eigen::AlignedBox3d());
   objectHull_.assign(model.objectBodies_.size(), Eigen::AlignedBox3d());
   if (model.robot_ < model.cell_->robots.size() && !model.chain_) {  // a bare base: where it was placed
@@ -295,6 +296,8 @@ void pieceBoxes(const CollisionBody& body, const Eigen::Isometry3d& T, Eigen::Al
     out[i] = box;
   }
 }
+
+bool isFinger(const CollisionBody& b) { return b.ref.kind == BodyKind::Finger2 || b.ref.kind == BodyKind::Finger3; }
 
 bool isGripperPart(const CollisionBody& b) {
   return b.ref.kind == BodyKind::GripperBase || b.ref.kind == BodyKind::Finger2 || b.ref.kind == BodyKind::Finger3;
@@ -356,7 +359,7 @@ void CollisionData::scan(std::span<const std::int32_t> encoders, const Collision
       if (floor && belowFloor(body, robotBoxes_[b].data(), *floor))
         if (on({body.ref, {BodyKind::Floor, 0}})) return;
       for (std::size_t o = 0; o < objects.size(); ++o) {
-        if (query.held == o || (isGripperPart(body) && (query.exempt == o || query.exemptToo == o))) continue;
+        if (query.held == o || (isFinger(body) && query.exempt == o)) continue;
         if (bodiesOverlap(body, robotPoses_[b], robotBoxes_[b].data(), objects[o], objectPose(o), objectBoxes(o)))
           if (on({body.ref, objects[o].ref})) return;
       }
@@ -370,13 +373,14 @@ void CollisionData::scan(std::span<const std::int32_t> encoders, const Collision
   }
   if (!query.held || *query.held >= objects.size()) return;
   const CollisionBody& held = objects[*query.held];
-  const Eigen::Isometry3d T = F_world_i_.back() * query.heldOffset;
+  const Eigen::Isometry3d T = F_world_i_.back() * query.heldOffset, raised = raisedForRest(T);
   pieceBoxes(held, T, heldBoxes_.data());
-  if (floor && belowFloor(held, heldBoxes_.data(), *floor))
+  pieceBoxes(held, raised, heldRaisedBoxes_.data());
+  if (floor && belowFloor(held, heldRaisedBoxes_.data(), *floor))
     if (on({held.ref, {BodyKind::Floor, 0}})) return;
   for (std::size_t o = 0; o < objects.size(); ++o) {
     if (o == *query.held) continue;
-    if (bodiesOverlap(held, T, heldBoxes_.data(), objects[o], objectPose(o), objectBoxes(o)))
+    if (bodiesOverlap(held, raised, heldRaisedBoxes_.data(), objects[o], objectPose(o), objectBoxes(o)))
       if (on({held.ref, objects[o].ref})) return;
   }
   for (std::size_t c = 0; c < robot.size(); ++c) {

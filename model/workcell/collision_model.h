@@ -15,9 +15,11 @@
 //    robot part whose frame is at least two joints away (adjacent links
 //    touch at their joint by design); the carried object belongs to the
 //    gripper's frame and is checked the same way, against the floor, the
-//    other objects and the links at least two joints away. Not checked:
-//    the gripper's parts against the object they carry or are about to take
-//    (`exempt`: fingers go round what they grip), the gripper's parts
+//    other objects and the links at least two joints away, raised by
+//    kSettleTolerance against the floor and the objects (a part put down a
+//    little into its support rests on it). Not checked: the gripper's parts
+//    against the object they carry, the fingers against the part they close
+//    round or open round (`exempt`), the gripper's parts
 //    against each other, resting objects against each other, link 0
 //    (which never moves) against the objects and the floor — all of which
 //    only checkAtHome looks at.
@@ -36,6 +38,7 @@
 #include "model/kinematics/chain_model.h"
 #include "model/workcell/model.h"
 #include "model/workcell/penetration.h"
+#include "model/workcell/settle.h"
 
 namespace rs::workcell {
 
@@ -163,15 +166,23 @@ class CollisionModel {
 void pieceBoxes(const CollisionBody& body, const Eigen::Isometry3d& T, Eigen::AlignedBox3d* out);
 /// The gripper's base or a finger.
 bool isGripperPart(const CollisionBody& body);
+/// A finger of the gripper.
+bool isFinger(const CollisionBody& body);
+/// The carried object's pose for its checks against the floor and the
+/// objects: `T` raised by kSettleTolerance (world y is up).
+inline Eigen::Isometry3d raisedForRest(const Eigen::Isometry3d& T) {
+  return Eigen::Translation3d(0, kSettleTolerance, 0) * T;
+}
 
 /// What else the check needs to know besides the robot's motors.
 struct CollisionQuery {
   std::span<const Eigen::Isometry3d> objectPoses;  ///< F_world_design of each object at rest
   std::optional<std::size_t> held;                 ///< carried with the gripper's frame
   Eigen::Isometry3d heldOffset = Eigen::Isometry3d::Identity();  ///< F_E_object of the carried one
-  /// The objects the gripper's parts may overlap: those the tool centre
-  /// point is in at the start and at the end of the move.
-  std::optional<std::size_t> exempt, exemptToo;
+  /// The part the fingers (not the gripper's base) may overlap: the one
+  /// they close round during a closing move, or open round during an
+  /// opening one (runtime/cell/world.h decides).
+  std::optional<std::size_t> exempt;
 };
 
 /// A gap between a moving part and what it is checked against, which
@@ -297,10 +308,10 @@ class CollisionData {
   std::vector<std::vector<Eigen::AlignedBox3d>> robotBoxes_, objectBoxes_;
   std::vector<Eigen::Isometry3d> objectBoxPose_;
   std::vector<char> objectBoxOk_;
-  std::vector<Eigen::AlignedBox3d> heldBoxes_;
+  std::vector<Eigen::AlignedBox3d> heldBoxes_, heldRaisedBoxes_;  // the carried object's, true and raisedForRest
   // The union of each body's piece boxes (the broad phase of the clearance).
   std::vector<Eigen::AlignedBox3d> robotHull_, objectHull_;
-  Eigen::AlignedBox3d heldHull_;
+  Eigen::AlignedBox3d heldHull_, heldRaisedHull_;
 };
 
 /// Every overlap of the robot the cell drives (Workcell::drivenRobot) at its home pose, objects where

@@ -23,11 +23,11 @@ Grasping::Grasping(const Workcell& cell, std::size_t robot) : cell_(&cell) {
   gripperMotor_ = static_cast<std::size_t>(placed.robot.chain->size());
 }
 
-std::optional<std::size_t> Grasping::objectAt(const Eigen::Vector3d& point) const {
+std::optional<std::size_t> Grasping::smallestAt(const Eigen::Vector3d& point, bool partsOnly) const {
   std::optional<std::size_t> best;
   double bestVolume = 0;
   for (std::size_t o = 0; o < boxes_.size(); ++o) {
-    if (boxes_[o].isEmpty()) continue;
+    if (boxes_[o].isEmpty() || (partsOnly && cell_->objects[o].kind != ObjectKind::Part)) continue;
     const Eigen::Vector3d local = resting_[o].inverse(Eigen::Isometry) * point;
     const Eigen::AlignedBox3d slack(boxes_[o].min().array() - kInsideSlack, boxes_[o].max().array() + kInsideSlack);
     if (!slack.contains(local)) continue;
@@ -56,23 +56,29 @@ std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, 
   const bool closing = to > from;  // RANGE max is closed (min <= max always)
   if (!closing) {
     if (!held_) return std::nullopt;
-    // Let go where the object is as the opening begins.
+    // Let go as the opening begins, and settle from where it is then.
     const std::size_t o = *held_;
     const Eigen::Isometry3d F_world_E = tool_->frame(before);
-    resting_[o] = F_world_E * offset_;
-    letGo_[o] = LetGo{F_world_E, offset_};
+    const Settled settled = settle(*cell_, resting_, o, F_world_E * offset_);
+    resting_[o] = settled.pose;
+    letGo_[o] = LetGo{F_world_E, settled.drop == 0 ? offset_ : F_world_E.inverse(Eigen::Isometry) * settled.pose};
     held_.reset();
-    return GraspChange{o, false};
+    return GraspChange{o, false, settled};
   }
   if (held_ || !mayTake) return std::nullopt;  // closing further on what it holds
   const Eigen::Isometry3d F_world_E = tool_->frame(after);
-  const std::optional<std::size_t> o = objectAt(F_world_E.translation());
+  const std::optional<std::size_t> o = partAt(F_world_E.translation());
   if (!o) return std::nullopt;
   held_ = o;
   const std::optional<LetGo>& letGo = letGo_[*o];
   offset_ = letGo && letGo->frame.matrix() == F_world_E.matrix() ? letGo->offset
                                                                   : F_world_E.inverse(Eigen::Isometry) * resting_[*o];
-  return GraspChange{*o, true};
+  return GraspChange{*o, true, {}};
+}
+
+Settled Grasping::settleHeld(std::span<const std::int32_t> encoders) {
+  if (!held_ || !tool_) return {};
+  return settle(*cell_, resting_, *held_, tool_->frame(encoders) * offset_);
 }
 
 void Grasping::reset() {

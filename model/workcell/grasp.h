@@ -6,11 +6,12 @@
 // When is a gripper closed? Its motor's RANGE runs from open (min) to
 // closed (max). A move that turns the gripper motor towards max closes the
 // gripper; one that turns it towards min opens it. So:
-//  - at the end of a closing move, the gripper takes the object whose box
-//    (the bounds of its lines) holds the tool centre point, the smallest
-//    such box when boxes nest (a block on a table, not the table);
-//  - at the start of an opening move, it lets go: the object stays where it
-//    is at that moment (there is no gravity in the workcell);
+//  - at the end of a closing move, the gripper takes the part (ObjectKind
+//    Part) whose box (the bounds of its lines) holds the tool centre point,
+//    the smallest such box when boxes nest (a block on a table, not the
+//    table); a fixture is never taken;
+//  - at the start of an opening move, it lets go: the part settles
+//    straight down onto what is under it (model/workcell/settle.h);
 //  - in between, the object keeps its pose relative to the end-effector
 //    frame: F_world_object = F_world_E(q) · F_E_object.
 // A closing move with nothing at the tool centre point holds nothing, and a
@@ -25,6 +26,7 @@
 #include <vector>
 
 #include "model/workcell/model.h"
+#include "model/workcell/settle.h"
 #include "model/workcell/tool_tracker.h"
 
 namespace rs::workcell {
@@ -33,6 +35,7 @@ namespace rs::workcell {
 struct GraspChange {
   std::size_t object = 0;  ///< index in Workcell::objects
   bool held = false;       ///< true: taken; false: let go
+  Settled settled;         ///< a let-go: where it came to rest, on what, how far it dropped
 };
 
 class Grasping {
@@ -70,9 +73,15 @@ class Grasping {
   /// The end-effector frame in the world for the robot's motors (identity
   /// for a robot without a gripper).
   Eigen::Isometry3d toolFrame(std::span<const std::int32_t> encoders);
-  /// The object a closing gripper would take with its tool centre point at
-  /// `point`: the smallest box that holds it (objects where they rest).
-  std::optional<std::size_t> objectAt(const Eigen::Vector3d& point) const;
+  /// The object whose box holds `point`: the smallest such box (objects
+  /// where they rest), of any kind.
+  std::optional<std::size_t> objectAt(const Eigen::Vector3d& point) const { return smallestAt(point, false); }
+  /// The part a closing gripper would take with its tool centre point at
+  /// `point`: the smallest part's box that holds it. Fixtures are never taken.
+  std::optional<std::size_t> partAt(const Eigen::Vector3d& point) const { return smallestAt(point, true); }
+  /// Where the held part would settle if it were let go with the robot's
+  /// motors at `encoders` (meaningful while one is held).
+  Settled settleHeld(std::span<const std::int32_t> encoders);
   /// Whether a move from `before` to `after` turns the gripper towards open.
   bool opens(std::span<const std::int32_t> before, std::span<const std::int32_t> after) const {
     return tool_ && gripperMotor_ < before.size() && gripperMotor_ < after.size() &&
@@ -123,6 +132,8 @@ class Grasping {
   void restore(const State& s) { held_ = s.held, offset_ = s.offset, resting_ = s.resting, letGo_ = s.letGo; }
 
  private:
+  std::optional<std::size_t> smallestAt(const Eigen::Vector3d& point, bool partsOnly) const;
+
   const Workcell* cell_;
   std::optional<ToolTracker> tool_;  // empty: the robot has no gripper
   std::size_t gripperMotor_ = 0;

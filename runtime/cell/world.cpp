@@ -3,6 +3,7 @@
 namespace rs::runtime {
 
 World::World(const workcell::Workcell& cell) : cell_(cell), grasping_(cell) {
+  state_.rests.assign(cell.objects.size(), std::nullopt);
   if (const workcell::PlacedRobot* driven = cell.drivenRobot(); driven && driven->robot.chain) tool_.emplace(*driven);
 }
 
@@ -16,6 +17,8 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
     EmptyClose& e = state_.lastEmptyClose;
     e.at = end;
     e.tcp = grasping_.toolFrame(after).translation();
+    e.fixture = grasping_.objectAt(e.tcp);  // no part holds it: a fixture, if anything
+    if (e.fixture) ++state_.fixtureCloses;
     const auto nearest = grasping_.nearestObject(e.tcp);
     e.nearest = nearest ? std::optional<std::size_t>(nearest->first) : std::nullopt;
     e.distance = nearest ? nearest->second : 0.0;
@@ -27,9 +30,12 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
   ++revision_;
   if (change->held) ++state_.takes;
   const std::size_t o = change->object;
+  const workcell::Settled& s = change->settled;
   state_.last = change->held ? GraspEvent{end, o, true, grasping_.heldOffset()}
-                             : GraspEvent{start, o, false, grasping_.restingPose(o)};
+                             : GraspEvent{start, o, false, grasping_.restingPose(o), s.on, s.support, s.drop};
   if (change->held) state_.heldSince = end;
+  state_.rests[o] = change->held ? std::nullopt : std::optional<GraspEvent>(state_.last);
+  if (!change->held && s.drop > kLongDrop) ++state_.longDrops;
   ++state_.events;
   step_.grasped = true;
 }
@@ -38,6 +44,7 @@ void World::reset(vm::Micros at) {
   const std::optional<std::size_t> held = grasping_.held();
   grasping_.reset();
   ++revision_;
+  state_.rests.assign(cell_.objects.size(), std::nullopt);
   if (!held) return;
   state_.last = {at, *held, false, grasping_.restingPose(*held)};
   ++state_.events;
@@ -63,14 +70,14 @@ workcell::CollisionQuery World::collisionQuery(std::span<const std::int32_t> bef
   q.objectPoses = poses;
   if (!grasping_.hasGripper()) return q;
   if (q.held && grasping_.opens(before, after)) {
-    // Let go as the move starts, where it is: the fingers open round it.
-    poses[*q.held] = grasping_.toolFrame(before) * q.heldOffset;
+    // Let go as the move starts and settled at once: the fingers open round it.
+    poses[*q.held] = grasping_.settleHeld(before).pose;
     q.exempt = q.held;
     q.held.reset();
-  } else {
-    q.exempt = grasping_.objectAt(grasping_.toolFrame(before).translation());
+  } else if (!q.held && grasping_.closes(before, after)) {
+    // The fingers close round the part they take at the end.
+    q.exempt = grasping_.partAt(grasping_.toolFrame(after).translation());
   }
-  q.exemptToo = grasping_.objectAt(grasping_.toolFrame(after).translation());
   return q;
 }
 

@@ -25,21 +25,40 @@ namespace rs::runtime {
 /// Workcell::objects). A take happens at the end of the closing move
 /// (`at`), and `pose` is F_E_object, which the object keeps until let go;
 /// a let-go happens as the opening move (or RESET) begins, and `pose` is
-/// F_world_object, where the object rests from then on.
+/// F_world_object, where the object rests from then on: an opening move's
+/// let-go settles it straight down (model/workcell/settle.h) onto `on`
+/// (`support`), `drop` below where it was let go; RESET puts it back
+/// where the cell placed it (`on` Nothing, no drop).
 struct GraspEvent {
   vm::Micros at = 0;
   std::size_t object = 0;
   bool held = false;
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  workcell::Settled::On on = workcell::Settled::On::Nothing;
+  std::size_t support = 0;
+  double drop = 0;
+  /// A let-go that settled: it went down (or up, out of its support) to rest on something.
+  bool settled() const { return !held && on != workcell::Settled::On::Nothing; }
+  bool operator==(const GraspEvent& o) const {
+    return at == o.at && object == o.object && held == o.held && pose.matrix() == o.pose.matrix() && on == o.on &&
+           support == o.support && drop == o.drop;
+  }
 };
+
+/// A drop longer than this (length units) is sloppy placing: the part was
+/// let go above its support, and the run warns (runtime/run/placing.h).
+inline constexpr double kLongDrop = 1.0;
 
 /// A closing move that took nothing, on a workcell with objects: where the
 /// tool centre point was at its end, the object whose box is nearest it,
 /// how far outside that box it was, and the box's centre (all in the
-/// world), so that a message can say which way to move.
+/// world), so that a message can say which way to move. `fixture`: the
+/// tool centre point was in a fixture's box (and no part's), which the
+/// gripper closed round and did not take.
 struct EmptyClose {
   vm::Micros at = 0;
   Eigen::Vector3d tcp = Eigen::Vector3d::Zero();
+  std::optional<std::size_t> fixture;
   std::optional<std::size_t> nearest;
   double distance = 0;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< the nearest box's centre (meaningful with nearest)
@@ -99,6 +118,13 @@ class World {
   /// Closing moves in all, and takes in all.
   std::uint64_t closeCount() const { return state_.closes; }
   std::uint64_t takeCount() const { return state_.takes; }
+  /// Closes round a fixture (among the empty closes), and let-gos that
+  /// dropped a part more than kLongDrop: what the run warns of.
+  std::uint64_t fixtureCloseCount() const { return state_.fixtureCloses; }
+  std::uint64_t longDropCount() const { return state_.longDrops; }
+  /// How object `o` came to rest where it is: the let-go that settled it
+  /// last (none while it is held, or where the cell placed it).
+  const std::optional<GraspEvent>& restOf(std::size_t o) const { return state_.rests[o]; }
 
   /// What the moves since the last call did, recorded as it happened: a
   /// take or a let-go (then lastEvent() is it), a close on nothing (then
@@ -112,8 +138,11 @@ class World {
   /// The world as a move from `before` to `after` sees it, for the
   /// collision check: every object's resting pose (written into `poses`,
   /// sized for the objects), what is carried — nothing during an opening
-  /// move: it is let go as the move starts — and the objects the tool
-  /// centre point is in at either end, which the gripper may overlap.
+  /// move: it is let go as the move starts and settles at once — and the
+  /// part the fingers may overlap: during a closing move the part they
+  /// close round (the one it takes at its end), during an opening move the
+  /// one they let go. Any other move exempts nothing: fingers that come
+  /// down onto a part collide with it.
   workcell::CollisionQuery collisionQuery(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
                                           std::vector<Eigen::Isometry3d>& poses) const;
 
@@ -122,14 +151,10 @@ class World {
     vm::Micros heldSince = 0;
     std::uint64_t events = 0;
     GraspEvent last;
-    std::uint64_t closes = 0, takes = 0, emptyCloses = 0;
+    std::uint64_t closes = 0, takes = 0, emptyCloses = 0, fixtureCloses = 0, longDrops = 0;
     EmptyClose lastEmptyClose;
-    bool operator==(const State& o) const {
-      return grasp == o.grasp && heldSince == o.heldSince && events == o.events && last.at == o.last.at &&
-             last.object == o.last.object && last.held == o.last.held && last.pose.matrix() == o.last.pose.matrix() &&
-             closes == o.closes && takes == o.takes && emptyCloses == o.emptyCloses &&
-             lastEmptyClose == o.lastEmptyClose;
-    }
+    std::vector<std::optional<GraspEvent>> rests;  // per object: restOf
+    bool operator==(const State& o) const = default;
   };
   State state() const;
   void restore(const State& state);

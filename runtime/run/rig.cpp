@@ -1,5 +1,7 @@
 #include "runtime/run/rig.h"
 
+#include <algorithm>
+
 namespace rs::runtime {
 
 Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli,
@@ -80,6 +82,11 @@ void Rig::afterStep(std::uint32_t instruction) {
   lastStepGrasped_ = step.grasped;
   lastStepClosedEmpty_ = step.closedEmpty;
   if (step.closedEmpty && !firstEmptyClose_) firstEmptyClose_.emplace(instruction, world_->lastEmptyClose());
+  if (step.closedEmpty && world_->lastEmptyClose().fixture && fixtureCloses_.size() < kKeptPlacingNotes)
+    fixtureCloses_.emplace_back(instruction, world_->lastEmptyClose());
+  if (step.grasped && world_->lastEvent().settled() && world_->lastEvent().drop > kLongDrop &&
+      longDrops_.size() < kKeptPlacingNotes)
+    longDrops_.emplace_back(instruction, world_->lastEvent());
 }
 
 std::span<const CollisionEvent> Rig::collisions() const {
@@ -138,6 +145,9 @@ void Rig::restore(const RigSnapshot& s) {
   lastStepClosedEmpty_ = false;
   pendingInputs_.clear(), lastStepInputs_.clear();
   if (!world_ || world_->emptyCloseCount() == 0) firstEmptyClose_.reset();
+  // Back to as many as the world had counted by then (kept in run order).
+  fixtureCloses_.resize(std::min<std::size_t>(fixtureCloses_.size(), world_ ? world_->fixtureCloseCount() : 0));
+  longDrops_.resize(std::min<std::size_t>(longDrops_.size(), world_ ? world_->longDropCount() : 0));
   if (watch_) watch_->restoreEvents(s.collisions);
 }
 

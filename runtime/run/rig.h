@@ -140,6 +140,12 @@ class Rig {
   /// The instruction of the first closing move that took nothing, and
   /// where it left the tool centre point.
   std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose() const { return firstEmptyClose_; }
+  /// The first kKeptPlacingNotes closes round a fixture and let-gos that
+  /// dropped a part more than kLongDrop, each with its instruction (what
+  /// runtime/run/placing.h warns of; the world counts them all).
+  static constexpr std::size_t kKeptPlacingNotes = 20;
+  std::span<const std::pair<std::uint32_t, EmptyClose>> fixtureCloses() const { return fixtureCloses_; }
+  std::span<const std::pair<std::uint32_t, GraspEvent>> longDrops() const { return longDrops_; }
 
   /// The robot that runs the program, as a process of the cell's clock:
   /// its machine's wait under way ends at `at` (a move's or a DELAY's end,
@@ -190,6 +196,8 @@ class Rig {
   bool lastStepGrasped_ = false;
   bool lastStepClosedEmpty_ = false;
   std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose_;
+  std::vector<std::pair<std::uint32_t, EmptyClose>> fixtureCloses_;
+  std::vector<std::pair<std::uint32_t, GraspEvent>> longDrops_;
 };
 
 }  // namespace rs::runtime

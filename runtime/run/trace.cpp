@@ -8,6 +8,7 @@
 #include "base/seconds.h"
 #include "base/text.h"
 #include "runtime/run/empty_close.h"
+#include "runtime/run/placing.h"
 #include "vm/disasm.h"
 
 namespace rs::runtime {
@@ -47,12 +48,16 @@ std::string lampText(vm::IoMask bits) {
 }
 
 std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell& cell, std::uint32_t number) {
-  return fmt::format("{} {} (object {})", event.held ? "takes" : "lets go of",
-                     base::safeText(cell.objects[event.object].shape.name),
-                     number ? number : event.object + 1);
+  const std::string what = fmt::format("{} {} (object {})", event.held ? "takes" : "lets go of",
+                                       base::safeText(cell.objects[event.object].shape.name),
+                                       number ? number : event.object + 1);
+  // A let-go by an opening move settles (RESET puts it back: no settling).
+  if (event.held || !event.settled()) return what;
+  return what + ": it " + runtime::settleText(event, cell);
 }
 
 std::string closesOnNothingText(const runtime::EmptyClose& e, const workcell::Workcell& cell) {
+  if (e.fixture) return runtime::fixtureCloseText(e, cell);
   const std::string nearest = runtime::emptyCloseText(e, cell);
   return nearest.empty() ? std::string("closes on nothing") : "closes on nothing (" + nearest + ")";
 }
@@ -225,12 +230,23 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   j["changed"] = changed;
   if (vm::info(in.op).format == vm::Format::Point && !im.points[in.b].origin.empty())
     j["point_from"] = im.points[in.b].origin;
-  if (const runtime::GraspEvent* g = run_.rig().graspOfLastStep())
-    j["grasp"] = {{"object", run_.rig().objectNumber(g->object)}, {"name", run_.rig().world()->cell().objects[g->object].shape.name},
+  if (const runtime::GraspEvent* g = run_.rig().graspOfLastStep()) {
+    const workcell::Workcell& cell = run_.rig().world()->cell();
+    j["grasp"] = {{"object", run_.rig().objectNumber(g->object)}, {"name", cell.objects[g->object].shape.name},
                   {"held", g->held}};
+    if (g->settled()) {
+      nlohmann::ordered_json settled;
+      settled["on"] = runtime::supportText(*g, cell);
+      if (g->on != workcell::Settled::On::Floor) settled["object"] = run_.rig().objectNumber(g->support);
+      settled["belt"] = g->on == workcell::Settled::On::Belt;
+      settled["drop"] = std::round(g->drop * 1e4) / 1e4 + 0.0;
+      j["grasp"]["settled"] = settled;
+    }
+  }
   if (const runtime::EmptyClose* e = run_.rig().emptyCloseOfLastStep()) {
     nlohmann::ordered_json empty;
     empty["tcp"] = roundedPoint({e->tcp.x(), e->tcp.y(), e->tcp.z()});
+    if (e->fixture) empty["fixture"] = *e->fixture + 1;
     if (e->nearest) {
       empty["nearest"] = *e->nearest + 1;
       empty["name"] = run_.rig().world()->cell().objects[*e->nearest].shape.name;

@@ -67,9 +67,8 @@ class CollisionWatch {
   /// `start`) to its positions at `end`, with the world as it was during
   /// the move. Returns the first collision, also kept in events(). For a
   /// knot of a straight line, `lineFrom` and `lineTo` are the line's ends:
-  /// the gripper may overlap the objects its tool centre point is in at
-  /// those, as in one move from lineFrom to lineTo (a MOVES down round a
-  /// block is judged as a MOVEP to it is).
+  /// what the fingers may overlap (World::collisionQuery: the part they
+  /// close or open round) is judged as in one move from lineFrom to lineTo.
   const CollisionEvent* sweep(const SimMachine& machine, const World& world, std::span<const std::int32_t> before,
                               std::span<const std::int32_t> after, vm::Micros start, vm::Micros end,
                               std::span<const std::int32_t> lineFrom = {}, std::span<const std::int32_t> lineTo = {});

@@ -57,11 +57,11 @@ TEST_CASE("disasm and the trace show where a pose point came from", "[cli][ik][p
   const auto listing = runCli({"disasm", program});
   REQUIRE(listing.code == 0);
   CHECK(listing.out.find("; PICK = ") != std::string::npos);
-  CHECK(listing.out.find(" (from AT -130 800 0)") != std::string::npos);
-  CHECK(listing.out.find("; from AT -180 840.12 -45 GRIP 0\n") != std::string::npos);
+  CHECK(listing.out.find(" (from AT -130 819 0)") != std::string::npos);
+  CHECK(listing.out.find("; from AT -180 859 -45 GRIP 0\n") != std::string::npos);
   const auto text = runCli({"run", program, "--trace"});
   REQUIRE(text.code == 0);
-  CHECK(text.out.find("PICK from AT -130 800 0") != std::string::npos);
+  CHECK(text.out.find("PICK from AT -130 819 0") != std::string::npos);
   const auto json = runCli({"run", program, "--trace=json"});
   REQUIRE(json.code == 0);
   std::istringstream lines(json.out);

@@ -5,8 +5,10 @@
 // centre point is at (500 + X/10, 200 - Y/10, 400 + Z/10); block 1 (object 2)
 // is the 40 mm cube x 200..240, y 30..70, z 660..700 on the pallet (object 1,
 // its top at y 30). Taken with the tool centre point 1 above the cube's
-// middle (Y 1490: y 51), the block rides 21 below it; set down again at Y 1492
-// (y 50.8) its bottom would be at 29.8: 0.2 into the pallet, all along y.
+// middle (Y 1490: y 51), the block rides 21 below it; set down again at Y 1497
+// (y 50.3) its bottom would be at 29.3: 0.7 into the pallet, all along y,
+// more than the rest tolerance (0.5, docs/models.md) a part may be put into
+// its support.
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
@@ -22,7 +24,7 @@ constexpr const char* kLowDown =
     "        MOVE 0 0 490 0              ; down round it: the centre 1 above the block's middle\n"
     "        MOVE 0 0 0 100              ; close: it takes the block\n"
     "        MOVE 0 0 -490 0             ; up with it\n"
-    "        MOVE 0 0 492 0              ; down again, 0.2 lower than it was taken\n"
+    "        MOVE 0 0 497 0              ; down again, 0.7 lower than it was taken\n"
     "        END\n";
 
 // The number after `before` in `text` (or NaN).
@@ -34,7 +36,7 @@ double numberAfter(const std::string& text, const std::string& before) {
 
 }  // namespace
 
-TEST_CASE("a block set down 0.2 too low: the collision says how deep, the hint how much higher to end",
+TEST_CASE("a block set down 0.7 too low: the collision says how deep, the hint how much higher to end",
           "[collision][depth]") {
   const rs::testing::TempDir dir;
   const std::string program = dir.write("low.rsp", kLowDown);
@@ -43,12 +45,12 @@ TEST_CASE("a block set down 0.2 too low: the collision says how deep, the hint h
   CHECK(r.code == 1);
   CHECK(r.err.find(program + ":5:9: error: runtime error: collision at ") != std::string::npos);
   CHECK(r.err.find(": object 2 (block) hits object 1 (pallet), ") != std::string::npos);
-  // Found at the first check that saw the overlap: some way into the last 0.2 of the move.
+  // Found at the first check that saw it more than the rest tolerance in: some way into the last 0.2 of the move.
   const double depth = numberAfter(r.err, "hits object 1 (pallet), ");
-  CHECK(depth > 0);
-  CHECK(depth <= 0.2 + 1e-9);
+  CHECK(depth > 0.5);
+  CHECK(depth <= 0.7 + 1e-9);
   CHECK(r.err.find(" deep (instruction 5)") != std::string::npos);
-  CHECK(r.err.find("hint: the move ends with object 2 (block) 0.2 into object 1 (pallet): end it 0.2 higher") !=
+  CHECK(r.err.find("hint: the move ends with object 2 (block) 0.7 into object 1 (pallet): end it 0.7 higher") !=
         std::string::npos);
   // The JSON summary has the depth as a number.
   const auto j = rs::testing::runCli({"run", program, "--cell", "gantry-cell", "--format=json"});
@@ -87,13 +89,16 @@ TEST_CASE("the pendant's refusal of a block set down too low says how much highe
   REQUIRE(p.moveTo(std::vector<std::int32_t>{-2800, 2800, 1490, 0}).ok);
   REQUIRE(p.gripper(true).message == "gripper closed: holds block");
   REQUIRE(p.moveTo(std::vector<std::int32_t>{-2800, 2800, 1000, 104}).ok);
-  const rs::teach::Outcome o = p.moveTo(std::vector<std::int32_t>{-2800, 2800, 1492, 104});
+  // 0.2 too low is within the rest tolerance (0.5): it stands on the pallet; 0.7 too low is refused.
+  REQUIRE(p.moveTo(std::vector<std::int32_t>{-2800, 2800, 1492, 104}).ok);
+  REQUIRE(p.moveTo(std::vector<std::int32_t>{-2800, 2800, 1000, 104}).ok);
+  const rs::teach::Outcome o = p.moveTo(std::vector<std::int32_t>{-2800, 2800, 1497, 104});
   INFO(o.message);
   CHECK_FALSE(o.ok);
   CHECK(p.state().limit == "collision");
   CHECK(o.message.find("object 2 (block) hits object 1 (pallet), ") != std::string::npos);
-  CHECK(o.message.find(" deep; nothing moved (the move ends with object 2 (block) 0.2 into object 1 (pallet): end it "
-                       "0.2 higher)") != std::string::npos);
-  // 0.2 higher, it stands on the pallet.
+  CHECK(o.message.find(" deep; nothing moved (the move ends with object 2 (block) 0.7 into object 1 (pallet): end it "
+                       "0.7 higher)") != std::string::npos);
+  // 0.7 higher, it stands on the pallet.
   CHECK(p.moveTo(std::vector<std::int32_t>{-2800, 2800, 1490, 104}).ok);
 }

@@ -35,18 +35,18 @@ loop:   MOVEP ABOVE
         END
 POINTS
 ABOVE   AT -130 870 0          GRIP 0
-PICK    AT -130 800 0          GRIP 0
-TAKE    AT -130 800 0          GRIP 120
-LIFT0   AT -130 805 0          GRIP 120
+PICK    AT -130 819 0          GRIP 0
+TAKE    AT -130 819 0          GRIP 120
+LIFT0   AT -130 824 0          GRIP 120
 LIFT    AT -130 870 0          GRIP 120
 OVER    AT -180 875 -45        GRIP 120
-PLACE   AT -180 840.12 -45     GRIP 120
-DROP    AT -180 840.12 -45     GRIP 0
-RETAKE  AT -180 840.12 -45     GRIP 120
+PLACE   AT -180 859 -45        GRIP 120
+DROP    AT -180 859 -45        GRIP 0
+RETAKE  AT -180 859 -45        GRIP 120
 OVERC   AT -180 875 -45        GRIP 120
 LIFTC   AT -130 870 0          GRIP 120
-PICKC   AT -130 800 0          GRIP 120
-RELEASE AT -130 800 0          GRIP 0
+PICKC   AT -130 819 0          GRIP 120
+RELEASE AT -130 819 0          GRIP 0
 )",
                      loops);
 }

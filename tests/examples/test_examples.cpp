@@ -301,11 +301,14 @@ TEST_CASE("example gantry_pick: the gripper carries both blocks to the other pal
   CHECK(std::llround(j.at("time").get<double>() * 1e6) == 37'400'000);
   CHECK(j.at("steps") == 26);
   CHECK(j.at("motors") == Json::parse(R"({"X": 0, "Z": 0, "Y": 0, "A": 0})"));
-  const Json want = Json::parse(R"([
+  const Json want = Json::parse(R"json([
     {"name": "pallet", "at": [150.0, 0.0, 760.0], "centre": [270.0, 15.0, 680.0], "held": false, "moved": false},
-    {"name": "block",  "at": [650.0, 30.0, 200.0], "centre": [670.0, 50.0, 180.0], "held": false, "moved": true},
-    {"name": "block",  "at": [750.0, 30.0, 200.0], "centre": [770.0, 50.0, 180.0], "held": false, "moved": true},
-    {"name": "pallet", "at": [610.0, 0.0, 260.0], "centre": [730.0, 15.0, 180.0], "held": false, "moved": false}])");
+    {"name": "block",  "at": [650.0, 30.0, 200.0], "centre": [670.0, 50.0, 180.0], "held": false, "moved": true,
+     "settled": {"on": "pallet (object 4)", "drop": 0.0}},
+    {"name": "block",  "at": [750.0, 30.0, 200.0], "centre": [770.0, 50.0, 180.0], "held": false, "moved": true,
+     "settled": {"on": "pallet (object 4)", "drop": 0.0}},
+    {"name": "pallet", "at": [610.0, 0.0, 260.0], "centre": [730.0, 15.0, 180.0], "held": false, "moved": false}])json");
+  // Each block let go with its bottom on the second pallet's deck (y 30, its top): settled there, no drop.
   CHECK(j.at("objects") == want);
 }
 
@@ -323,19 +326,21 @@ TEST_CASE("example gantry_pick: the trace says when the gripper takes and lets g
   // pick 1: down ends 4.6625, close ends 5.1625; place 1: 12.025 + 1.8625 = 13.8875, open ends 14.3875;
   // pick 2: 21.25 + 1.8625 = 23.1125, close ends 23.6125; place 2: 30.475 + 1.8625 = 32.3375, open ends
   // 32.8375 (the trace rounds half a millisecond up).
-  const std::vector<std::string> want = {"     5.163 takes block (object 2)", "    14.388 lets go of block (object 2)",
-                                         "    23.613 takes block (object 3)", "    32.838 lets go of block (object 3)"};
+  // Each let go with its bottom on the second pallet's deck (its top, y 30): it settles there, no drop.
+  const std::vector<std::string> want = {"     5.163 takes block (object 2)",
+                                         "    14.388 lets go of block (object 2): it settles on pallet (object 4)",
+                                         "    23.613 takes block (object 3)",
+                                         "    32.838 lets go of block (object 3): it settles on pallet (object 4)"};
   CHECK(events == want);
 }
 
 TEST_CASE("example stack_blocks: points written as tool poses stack one block on another", "[examples]") {
   // scara-pick (stdlib/workcells/scara-pick.rsd): the front block, AT -150 780 20, a 40 cube
-  // (x -150..-110, y 780..820, z -20..20), centred at x -130, z 0. The program takes it by its
-  // middle (y 800) and lets go with the tool centre point at (-180, 840.12, -45): the block moves
-  // with the tool, by (-50, 40.12, -45), so its AT corner goes to about (-200, 820.1, -25), on top
-  // of the block AT -200 780 -25 (top y 820), not into it (the run checks collisions: the example's
-  // comment works out the 0.08 gap). Whole encoder counts put the tool within about 0.5 of each
-  // point (docs/language.md), hence the tolerance. Ten instructions; HRDHOME ends at home.
+  // (x -150..-110, y 780..820, z -20..20), centred at x -130, z 0. The program takes it 1 below
+  // its top (y 819) and lets go with the tool centre point at (-180, 859, -45), which whole counts
+  // put at y 858.96 (the example's comment): the block's bottom 0.04 into the block AT -200 780 -25
+  // (top y 820), within the rest tolerance, so it settles onto it: its AT corner at (-200, 820,
+  // -25) to within the counts' rounding in x and z, and exactly 820 in y. Ten instructions.
   const Result r = robotsim({"run", (kExamples / "stack_blocks.rsp").string(), "--format=json"});
   INFO("stderr: " << r.err);
   REQUIRE(r.code == rs::cli::kExitOk);
@@ -348,7 +353,9 @@ TEST_CASE("example stack_blocks: points written as tool poses stack one block on
   CHECK(moved.at("held") == false);
   const std::array<double, 3> want{-200, 820, -25};
   for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(moved.at("at")[k].get<double>() - want[k]) < 0.6);
-  CHECK(moved.at("at")[1].get<double>() >= 820);  // set down on the lower block, not into it
+  CHECK(moved.at("at")[1].get<double>() == Approx(820).margin(1e-4));  // settled on the lower block
+  CHECK(moved.at("settled").at("on") == "block (object 3)");
+  CHECK(moved.at("settled").at("drop").get<double>() == Approx(-0.04).margin(0.005));
   CHECK(j.at("collisions") == Json::array());
   for (std::size_t o = 0; o < 4; ++o) CHECK(j.at("objects")[o].at("moved") == false);
 }

@@ -196,14 +196,37 @@ TEST_CASE("describe: a gantry whose feet stand beside a pallet's runners is on t
 
 TEST_CASE("describe: how far a gripper's fingers reach and how wide they open", "[models][describe][devices]") {
   // abb-irb120.rsd by hand: the tool centre point at x = 454, a = +x; the
-  // fingers' boxes run x 394..474 (20 past it) with inner faces at z = 12
-  // and z = -12 (24 apart).
+  // fingers' boxes run x 394..474 (20 past it) with inner faces at z = 24
+  // and z = -24 (48 apart).
   const auto r = runCli({"describe", "irb120-cell"});
   REQUIRE(r.code == 0);
-  CHECK_THAT(r.out, Catch::Contains("  fingers  reach 20 below the tool centre point (along a), open 24 wide (as drawn)\n"));
+  CHECK_THAT(r.out, Catch::Contains("  fingers  reach 20 below the tool centre point (along a), open 48 wide (as drawn)\n"));
   const auto j = runCli({"describe", "irb120-cell", "--json"});
   REQUIRE(j.code == 0);
   const auto doc = nlohmann::json::parse(j.out);
   CHECK(doc["robots"][0]["fingers"]["reach"].get<double>() == Approx(20));
-  CHECK(doc["robots"][0]["fingers"]["opening"].get<double>() == Approx(24));
+  CHECK(doc["robots"][0]["fingers"]["opening"].get<double>() == Approx(48));
+}
+
+TEST_CASE("describe: every library cell's gripper opens wider than the library's block", "[models][describe][devices]") {
+  // block.rsd: a 40 cube. The five grippers widened for honest grasping
+  // have their inner faces 24 either side of the tool axis by their files
+  // (48 apart; the Adept One's 30, 60 apart, for a block turned any way);
+  // the gantry's and SCOROBOT's were wider already.
+  const std::pair<const char*, double> widened[] = {
+      {"xr4-cell", 48}, {"irb120-cell", 48}, {"adept-cell", 60}, {"puma-cell", 48}, {"rv-m1-cell", 48}};
+  for (const auto& [cell, opening] : widened) {
+    INFO(cell);
+    const auto j = runCli({"describe", cell, "--json"});
+    REQUIRE(j.code == 0);
+    CHECK(nlohmann::json::parse(j.out)["robots"][0]["fingers"]["opening"].get<double>() == Approx(opening));
+  }
+  for (const char* cell : {"gantry-cell", "scorobot-cell"}) {  // scara-pick: the paper's gripper, 17 wide (not widened)
+    INFO(cell);
+    const auto j = runCli({"describe", cell, "--json"});
+    REQUIRE(j.code == 0);
+    const auto doc = nlohmann::json::parse(j.out);
+    REQUIRE(doc["robots"][0].contains("fingers"));
+    CHECK(doc["robots"][0]["fingers"]["opening"].get<double>() > 40);
+  }
 }

@@ -150,6 +150,7 @@ TEST_CASE("opening while moving lets go where the move starts, nested boxes give
   rs::workcell::PlacedObject crate;
   crate.shape.name = "crate";
   crate.shape.segments.push_back({{150, 0, 620}, {290, 120, 740}, rs::workcell::Color::White});
+  crate.kind = rs::workcell::ObjectKind::Part;  // to be taken (an object is a fixture unless it says PART)
   cell.objects.push_back(crate);
   const std::vector<StepView> s = run(cell,
                                       "MOVETO -2800 2800 1500 0\n"

@@ -15,6 +15,7 @@
 #include "vm/io_lines.h"
 #include "vm/stop_reason.h"
 #include "runtime/run/empty_close.h"
+#include "runtime/run/placing.h"
 
 namespace rs::cli {
 
@@ -142,13 +143,32 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   if (r.fault) printFault(out, *r.fault);
   if (const auto tcp = r.run->rig().tcp()) out << fmt::format("  tool centre     {}\n", runtime::pointText(*tcp));
   const std::vector<runtime::ObjectView> objects = r.run->rig().objects();
+  const runtime::World* world = r.run->rig().world();
   for (std::size_t o = 0; o < objects.size(); ++o) {
     const runtime::ObjectView& e = objects[o];
     if (!e.present) continue;
-    out << fmt::format("  {:<15} {} at {}, centre {}{}\n", fmt::format("object {}", e.number), base::safeText(e.name),
+    std::string rest;  // where its last let-go settled it
+    if (const auto& settled = world->restOf(o); settled && settled->settled())
+      rest = "; " + runtime::settleText(*settled, world->cell()).substr(std::string_view("settles ").size());
+    out << fmt::format("  {:<15} {} at {}, centre {}{}{}\n", fmt::format("object {}", e.number), base::safeText(e.name),
                        runtime::pointText({e.at.x(), e.at.y(), e.at.z()}),
                        runtime::pointText({e.centre.x(), e.centre.y(), e.centre.z()}),
-                       e.held ? ", held" : e.moved ? ", moved" : "");
+                       e.held ? ", held" : e.moved ? ", moved" : "", rest);
+  }
+  if (world && world->fixtureCloseCount() > 0 && !r.run->rig().fixtureCloses().empty()) {
+    const std::uint64_t n = world->fixtureCloseCount();
+    const auto& first = r.run->rig().fixtureCloses().front();
+    out << fmt::format("  {:<15} closed round a fixture {}, took nothing there (the warning at line {}: {})\n",
+                       "gripper", n == 1 ? std::string("once") : fmt::format("{} times", n),
+                       first.first < im.lines.size() ? im.lines[first.first] : 0,
+                       runtime::fixtureCloseText(first.second, world->cell()));
+  }
+  if (world && world->longDropCount() > 0 && !r.run->rig().longDrops().empty()) {
+    const std::uint64_t n = world->longDropCount();
+    const auto& first = r.run->rig().longDrops().front();
+    out << fmt::format("  {:<15} {} at line {}{}\n", "placing", runtime::longDropText(first.second, world->cell()),
+                       first.first < im.lines.size() ? im.lines[first.first] : 0,
+                       n == 1 ? std::string() : fmt::format(" ({} drops over {} in all)", n, runtime::kLongDrop));
   }
   if (const auto w = runtime::gripperWarning(*r.run, im.sourceName))  // the warning printed before
     out << fmt::format("  gripper         closed {}, took nothing (the warning at line {})\n",
@@ -191,12 +211,19 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
     if (r.run->rig().cell()) {
       Json objects = Json::array();
       const bool numbered = r.run->rig().devices() != nullptr;
-      for (const runtime::ObjectView& e : r.run->rig().objects()) {
+      const runtime::World* world = r.run->rig().world();
+      const std::vector<runtime::ObjectView> views = r.run->rig().objects();
+      for (std::size_t o = 0; o < views.size(); ++o) {
+        const runtime::ObjectView& e = views[o];
         if (!e.present) continue;
         Json one = {{"name", e.name}, {"at", runtime::roundedPoint({e.at.x(), e.at.y(), e.at.z()})},
                     {"centre", runtime::roundedPoint({e.centre.x(), e.centre.y(), e.centre.z()})}, {"held", e.held},
                     {"moved", e.moved}};
         if (numbered) one["number"] = e.number;  // fed parts make the list's order no number
+        // Where its last let-go settled it, and how far it dropped (to 1e-4).
+        if (world && world->restOf(o) && world->restOf(o)->settled())
+          one["settled"] = {{"on", runtime::supportText(*world->restOf(o), world->cell())},
+                            {"drop", std::round(world->restOf(o)->drop * 1e4) / 1e4 + 0.0}};
         objects.push_back(std::move(one));
       }
       j["objects"] = objects;

@@ -1,0 +1,71 @@
+#include "model/workcell/settle.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rs::workcell {
+
+namespace {
+
+// A drop smaller than this is none: the part stays bit for bit where it
+// was let go (a loop that puts a part down exactly on its support and
+// takes it again leaves the world unchanged).
+constexpr double kNoDrop = 1e-9;
+
+Eigen::AlignedBox3d boxOf(const ConvexPiece& piece, const Eigen::Isometry3d& T) {
+  Eigen::AlignedBox3d b;
+  for (const Eigen::Vector3d& p : piece.points) b.extend(T * p);
+  return b;
+}
+
+// Footprints in x and z overlap by more than a sliver (edges that only
+// touch hold nothing up).
+bool footprintsMeet(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
+  constexpr double kSliver = 1e-6;
+  return std::min(a.max().x(), b.max().x()) - std::max(a.min().x(), b.min().x()) > kSliver &&
+         std::min(a.max().z(), b.max().z()) - std::max(a.min().z(), b.min().z()) > kSliver;
+}
+
+}  // namespace
+
+Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, std::size_t part,
+               const Eigen::Isometry3d& pose, std::optional<std::size_t> skip) {
+  Settled s;
+  s.pose = pose;
+  Eigen::AlignedBox3d self;
+  for (const ConvexPiece& piece : cell.objects[part].shape.collision) self.extend(boxOf(piece, pose));
+  if (self.isEmpty()) self = boundsOf(cell.objects[part].shape).transformed(pose);
+  if (self.isEmpty()) return s;
+  const double bottom = self.min().y(), highest = bottom + kSettleTolerance;
+  std::optional<double> top;
+  const auto consider = [&](double t, Settled::On on, std::size_t o) {
+    if (t > highest || (top && t <= *top)) return;  // strictly higher wins: the first of equals
+    top = t, s.on = on, s.support = o;
+  };
+  for (std::size_t o = 0; o < cell.objects.size() && o < poses.size(); ++o) {
+    if (o == part || skip == o) continue;
+    const PlacedObject& other = cell.objects[o];
+    for (const ConvexPiece& piece : other.shape.collision) {
+      const Eigen::AlignedBox3d b = boxOf(piece, poses[o]);
+      if (!b.isEmpty() && footprintsMeet(self, b)) consider(b.max().y(), Settled::On::Object, o);
+    }
+    if (other.belt) {
+      const Eigen::AlignedBox3d b = other.belt->surface.transformed(poses[o]);
+      // The belt's surface is where its part rides: on a tie with the
+      // object's own top, the belt.
+      if (footprintsMeet(self, b) && b.max().y() <= highest && (!top || b.max().y() >= *top))
+        top = b.max().y(), s.on = Settled::On::Belt, s.support = o;
+    }
+  }
+  if (cell.floor) consider(*cell.floor, Settled::On::Floor, 0);
+  if (!top) return s;
+  s.drop = bottom - *top;
+  if (std::abs(s.drop) <= kNoDrop) {
+    s.drop = 0;
+    return s;
+  }
+  s.pose = Eigen::Translation3d(0, -s.drop, 0) * pose;
+  return s;
+}
+
+}  // namespace rs::workcell

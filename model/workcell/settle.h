@@ -1,0 +1,48 @@
+// Where a released part comes to rest (docs/models.md, "Objects in the
+// gripper"): straight down, the world's -y, onto the first thing under
+// it — the top of a solid piece of another object (a fixture's, another
+// part's), a belt's surface, or the floor. What is "under" it is judged by
+// world boxes: a piece's box (its collision piece, turned and placed, as
+// an axis-aligned box) whose footprint in x and z overlaps the part's and
+// whose top is at most kSettleTolerance above the part's bottom. A part
+// let go up to that much inside its support is lifted onto its top; one
+// with nothing under it (a cell with FLOOR NONE) stays where it was let go.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstddef>
+#include <optional>
+#include <span>
+
+#include "model/workcell/model.h"
+
+namespace rs::workcell {
+
+/// How far a part may be put into its support and still count as resting
+/// on it, in length units: a carried part checked against the objects and
+/// the floor collides only when it is more than this into them (the
+/// collision model raises it by this much for those checks), and a part
+/// let go that far inside its support settles onto its top.
+inline constexpr double kSettleTolerance = 0.5;
+
+/// The result of settling one part.
+struct Settled {
+  enum class On : std::uint8_t { Object, Belt, Floor, Nothing };
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< F_world_design where it rests
+  On on = On::Nothing;
+  std::size_t support = 0;  ///< the object (Object, Belt), an index in Workcell::objects
+  /// How far it went down (negative: lifted out of its support, at most
+  /// kSettleTolerance); 0 for Nothing.
+  double drop = 0;
+  bool operator==(const Settled& o) const {
+    return pose.matrix() == o.pose.matrix() && on == o.on && support == o.support && drop == o.drop;
+  }
+};
+
+/// Part `part` of `cell`, let go at `pose`, with every other object at
+/// `poses` (indexed as Workcell::objects; `poses[part]` is ignored, and so
+/// is object `skip`, when given: one the gripper still carries).
+Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, std::size_t part,
+               const Eigen::Isometry3d& pose, std::optional<std::size_t> skip = std::nullopt);
+
+}  // namespace rs::workcell
