@@ -1,5 +1,7 @@
 #include "model/workcell/grasp.h"
 
+#include <cmath>
+
 namespace rs::workcell {
 
 namespace {
@@ -61,7 +63,13 @@ std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, 
     const Eigen::Isometry3d F_world_E = tool_->frame(before);
     const Settled settled = settle(*cell_, resting_, o, F_world_E * offset_);
     resting_[o] = settled.pose;
-    letGo_[o] = LetGo{F_world_E, settled.drop == 0 ? offset_ : F_world_E.inverse(Eigen::Isometry) * settled.pose};
+    // Settled by no more than the rest tolerance, a take at this very frame
+    // holds it by the offset it had (it goes back up or down by that
+    // little): a loop that puts a part down a hair off its support and
+    // takes it again leaves the world bit for bit as it was.
+    letGo_[o] = LetGo{F_world_E, std::abs(settled.drop) <= kSettleTolerance
+                                     ? offset_
+                                     : F_world_E.inverse(Eigen::Isometry) * settled.pose};
     held_.reset();
     return GraspChange{o, false, settled};
   }

@@ -36,7 +36,10 @@ Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, s
   for (const ConvexPiece& piece : cell.objects[part].shape.collision) self.extend(boxOf(piece, pose));
   if (self.isEmpty()) self = boundsOf(cell.objects[part].shape).transformed(pose);
   if (self.isEmpty()) return s;
-  const double bottom = self.min().y(), highest = bottom + kSettleTolerance;
+  // A support's top is at most the tolerance above the part's bottom, or
+  // below its middle: a part let go deeper in its support is lifted out
+  // onto it rather than dropped through it.
+  const double bottom = self.min().y(), highest = std::max(bottom + kSettleTolerance, self.center().y());
   std::optional<double> top;
   const auto consider = [&](double t, Settled::On on, std::size_t o) {
     if (t > highest || (top && t <= *top)) return;  // strictly higher wins: the first of equals

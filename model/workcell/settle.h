@@ -4,8 +4,9 @@
 // part's), a belt's surface, or the floor. What is "under" it is judged by
 // world boxes: a piece's box (its collision piece, turned and placed, as
 // an axis-aligned box) whose footprint in x and z overlaps the part's and
-// whose top is at most kSettleTolerance above the part's bottom. A part
-// let go up to that much inside its support is lifted onto its top; one
+// whose top is at most kSettleTolerance above the part's bottom, or below
+// the part's middle. A part let go inside its support is lifted onto its
+// top; one
 // with nothing under it (a cell with FLOOR NONE) stays where it was let go.
 #pragma once
 

@@ -37,8 +37,8 @@ const char* const kJiggle =
     "        MOVE -1 0 0 0\n"
     "        ADD N 1\n"
     "        JMPVAR N < 1200 two\n"
-    "        MOVE 0 0 1500 0\n"  // down 150 mm: the block 1 mm into the pallet's deck, beyond the rest
-                                 // tolerance (0.5; its fingers, 1 mm shorter, touch the deck's top)
+    "        MOVE 0 0 1498 0\n"  // down 149.8 mm: the block 0.8 mm into the pallet's deck, beyond the rest
+                                 // tolerance (0.5; its fingers, 1 mm shorter, stay above it)
     "        MOVE 0 0 0 -100\n"  // open: lets go
     "        END\n";
 
