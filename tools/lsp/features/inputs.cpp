@@ -55,8 +55,7 @@ std::string lines(const std::vector<std::uint32_t>& list) {
 }  // namespace
 
 bool wiresDrivenRobot(const workcell::Workcell& cell, const std::string& robot) {
-  (void)cell;
-  return robot.empty();
+  return robot.empty() || cell.robotLabeled(robot) == cell.drivenRobotIndex();
 }
 
 std::vector<std::string> inputDrivers(const ProgramAnalysis& a, std::int64_t input) {
