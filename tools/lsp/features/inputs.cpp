@@ -119,7 +119,7 @@ std::string inputHover(const ProgramAnalysis& a, std::int64_t input) {
 std::vector<diag::Diagnostic> unendingWaits(const ProgramAnalysis& a) {
   std::vector<diag::Diagnostic> out;
   for (const IndexedInstruction& in : a.index().instructions()) {
-    if (!in.known || in.op != vm::Op::WaitFor || !in.inputOn || in.inputPos.line == 0) continue;
+    if (!in.known || !vm::has(in.op, vm::kWaits) || vm::info(in.op).format != vm::Format::Input || !in.inputOn || in.inputPos.line == 0) continue;
     if (inputCanTurnOn(a, in.input)) continue;
     const std::string stim = a.stimuli().file.empty() ? std::string("no stimuli file beside the program")
                                                       : fmt::format("{} never turns it on", a.stimuli().file);
