@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "compiler/description/library.h"
+#include "tests/cli/cli_support.h"
 #include "tests/models/description_errors_support.h"
 
 namespace robot_labels_test {
@@ -160,4 +161,13 @@ TEST_CASE("robot labels: two robots overlapping at home are a warning naming bot
   const Built apart = build(dir, {"  ROBOT rhino-xr4 AT 0 750 0 AS left", "  ROBOT rhino-xr4 AT 5000 750 0 AS right"});
   REQUIRE(apart.cell);
   for (const rs::diag::Diagnostic& d : apart.diagnostics) CHECK_THAT(d.message, !Catch::Contains("overlap at their home"));
+}
+
+TEST_CASE("robot labels: check --strict fails a cell whose robots overlap at home, naming both", "[models][labels][cli]") {
+  TempDir dir;
+  dir.write("two.rsd", lines({"WORKCELL two", "  ROBOT rhino-xr4 AT 0 750 0 AS left", "  ROBOT rhino-xr4 AT 0 750 0 AS right", "END"}));
+  const std::string program = dir.write("p.rsp", "        END\n");
+  const rs::testing::CliResult strict = rs::testing::runCli({"check", program, "--cell", dir.file("two.rsd"), "--strict"});
+  CHECK(strict.code != 0);
+  CHECK_THAT(strict.err, Catch::Contains("two.rsd:3:9: error: robots 'left' and 'right' overlap at their home poses"));
 }
