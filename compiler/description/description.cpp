@@ -58,8 +58,22 @@ void Parser::markDamaged(Block b) {
 
 void Parser::readLine(const std::vector<Word>& words, diag::Pos lineEnd) {
   if (words.empty()) return;
-  for (const Word& w : words)
+  // Any character but in a ROBOT line's PROGRAM file name (its words after
+  // PROGRAM, written together: Cursor::path).
+  bool inPath = false;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const Word& w = words[i];
+    if (inPath && i > 0 && w.pos.line == words[i - 1].pos.line &&
+        w.pos.col == words[i - 1].pos.col + words[i - 1].text.size())
+      continue;
+    inPath = block_ == Block::Workcell && w.type == MP::NAME && base::sameName(w.text, "PROGRAM");
+    if (inPath) {
+      // The first word of the path may itself be a character ('.', '/').
+      if (i + 1 < words.size()) ++i;
+      continue;
+    }
     if (w.type == MP::OTHER) return diag_.error(w.pos, fmt::format("unexpected character '{}'", diag::excerpt(w.text)));
+  }
   Cursor c(words, lineEnd, diag_);
   if (block_ == Block::None) return open(c, words[0]);
   if (c.keyword("END")) {

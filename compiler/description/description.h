@@ -101,7 +101,8 @@ struct PlacementDef {
   bool isRobot = true;
   NameRef what;
   std::optional<workcell::ObjectKind> kind;  // OBJECT ... PART | FIXTURE: overrides the description's
-  NameRef as;                                // OBJECT ... AS NAME (empty: the description's name)
+  NameRef as;                                // AS NAME (empty: the description's name)
+  NameRef program;                           // ROBOT ... PROGRAM FILE, as written (empty: none)
   Eigen::Vector3d at = Eigen::Vector3d::Zero();
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // ROTATE clauses, in order
 };

@@ -152,6 +152,20 @@ bool Cursor::name(NameRef& out, std::string_view what) {
   return true;
 }
 
+bool Cursor::path(NameRef& out, std::string_view what) {
+  if (atEnd()) return fail(what);
+  out = {peek().text, peek().pos};
+  diag::Pos next = peek().pos;
+  next.col += static_cast<std::uint32_t>(peek().text.size());
+  ++i_;
+  while (!atEnd() && peek().pos.line == next.line && peek().pos.col == next.col) {
+    out.name += peek().text;
+    next.col += static_cast<std::uint32_t>(peek().text.size());
+    ++i_;
+  }
+  return true;
+}
+
 bool Cursor::letter(char& out, diag::Pos& at) {
   at = pos();
   if (atEnd() || peek().type != MP::NAME || peek().text.size() != 1 || !std::isalpha(static_cast<unsigned char>(peek().text[0])))

@@ -57,6 +57,9 @@ class Cursor {
   bool integer(std::int32_t& out, std::string_view what);
   bool point(Point3& out, std::string_view what);
   bool name(NameRef& out, std::string_view what);
+  /// A file name: the words written together, with nothing between them
+  /// ("../programs/left.rsp" is several words of the lexer).
+  bool path(NameRef& out, std::string_view what);
   bool letter(char& out, diag::Pos& at);
   bool onOff(bool& out);
   bool color(workcell::Color& out);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "base/ascii.h"
 #include "compiler/description/description_parser.h"
 #include "vm/io_lines.h"
 
@@ -55,16 +56,33 @@ bool lineNumber(Cursor& c, int& n, std::string_view what) {
   return true;
 }
 
-// ON, OFF, OUT n or a sensor's name.
+// A word `LABEL.OUT` or `LABEL.IN` (issue 36: a robot's line by its label):
+// the label, when the word is one with that keyword after its last dot.
+std::optional<std::string> labelled(Cursor& c, std::string_view keyword) {
+  if (c.atEnd() || !c.isName()) return std::nullopt;
+  const std::string& text = c.peek().text;
+  const std::size_t dot = text.rfind('.');
+  if (dot == std::string::npos || dot == 0 || !base::sameName(std::string_view(text).substr(dot + 1), keyword))
+    return std::nullopt;
+  return text.substr(0, dot);
+}
+
+// ON, OFF, OUT n, LABEL.OUT n or a sensor's name.
 bool signal(Cursor& c, workcell::Signal& s) {
   using K = workcell::Signal::Kind;
   s.pos = c.pos();
   if (c.keyword("ON")) return s.kind = K::On, true;
   if (c.keyword("OFF")) return s.kind = K::Off, true;
   if (c.keyword("OUT")) return s.kind = K::Output, lineNumber(c, s.number, "output");
+  if (std::optional<std::string> label = labelled(c, "OUT")) {
+    NameRef word;
+    c.name(word, "a robot's output");
+    s.robot = std::move(*label);
+    return s.kind = K::Output, lineNumber(c, s.number, "output");
+  }
   if (c.atEnd() || !c.isName() || c.isKeyword("TO") || c.isKeyword("IN") ||
-      c.isKeyword("COUNT") || c.isKeyword("AFTER") || c.isKeyword("INVERTED"))
-    return c.fail("a signal: a sensor's name, OUT n, ON or OFF",
+      c.isKeyword("COUNT") || c.isKeyword("AFTER") || c.isKeyword("INVERTED") || labelled(c, "IN"))
+    return c.fail("a signal: a sensor's name, OUT n, LABEL.OUT n, ON or OFF",
                   "a wire's source, a conveyor's RUN and a feeder's WHEN take the same signals");
   NameRef n;
   c.name(n, "a sensor name");
@@ -211,7 +229,14 @@ bool Parser::deviceClause(Cursor& c, WorkcellDef& w, bool& handled) {
     wire.pos = at;
     if (!signal(c, wire.source)) return false;
     if (!c.keyword("TO")) return c.failOneOf("TO");
-    if (!c.keyword("IN")) return c.failOneOf("IN");
+    wire.inputPos = c.pos();
+    if (std::optional<std::string> label = labelled(c, "IN")) {
+      NameRef word;
+      c.name(word, "a robot's input");
+      wire.robot = std::move(*label);
+    } else if (!c.keyword("IN")) {
+      return c.failOneOf("IN or LABEL.IN");
+    }
     if (!lineNumber(c, wire.input, "input")) return false;
     if (c.keyword("AFTER") && !seconds(c, wire.afterUs, true, "AFTER")) return false;
     if (c.keyword("INVERTED")) wire.inverted = true;

@@ -1,5 +1,5 @@
 // WORKCELL: the robots and objects placed in it (AT, ROTATE, PART, FIXTURE,
-// AS) and its floor; its devices are read in description_devices.cpp.
+// AS, a robot's PROGRAM) and its floor; its devices are read in description_devices.cpp.
 #include "compiler/description/description_parser.h"
 
 namespace rs::compiler::description_detail {
@@ -29,8 +29,12 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
   if (!p.isRobot && c.keyword("PART")) return p.kind = workcell::ObjectKind::Part, true;
   if (!p.isRobot && c.keyword("FIXTURE")) return p.kind = workcell::ObjectKind::Fixture, true;
   if (c.keyword("AS")) {
-    if (p.isRobot) return c.fail("AS after an OBJECT, not a ROBOT", "AS names one object of the cell");
-    return c.name(p.as, "a name for this object in the cell");
+    if (!p.as.name.empty()) return c.fail("a name once: this line has an AS already", "one AS names one robot or object");
+    return c.name(p.as, p.isRobot ? "a label for this robot in the cell" : "a name for this object in the cell");
+  }
+  if (p.isRobot && c.keyword("PROGRAM")) {
+    if (!p.program.name.empty()) return c.fail("one PROGRAM: this line has one already", "a robot runs one program");
+    return c.path(p.program, "the file of the program this robot runs (relative to this file)");
   }
   if (c.keyword("AT")) {
     Point3 at;
@@ -45,7 +49,7 @@ bool Parser::workcellClause(Cursor& c, WorkcellDef& w) {
     p.rotation = axisRotation(axis, degrees) * p.rotation;
     return true;
   }
-  return c.failOneOf(p.isRobot ? "ROBOT, OBJECT, AT, ROTATE, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END"
+  return c.failOneOf(p.isRobot ? "ROBOT, OBJECT, AT, ROTATE, AS, PROGRAM, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END"
                                 : "ROBOT, OBJECT, AT, ROTATE, PART, FIXTURE, AS, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END");
 }
 

@@ -82,6 +82,8 @@ class Library {
   /// library_devices.cpp: resolves the workcell's devices into `cell`
   /// (its objects placed); false after reporting an error.
   bool buildDevices(const WorkcellDef& def, const DescriptionFile& from, workcell::Workcell& cell);
+  bool placeRobot(const PlacementDef& p, const DescriptionFile& from, workcell::Workcell& cell);
+  void reportRobotOverlaps(const workcell::Workcell& cell, const DescriptionFile& from);
   /// False (with an error at the ACCELERATION) when the motor would take
   /// vm::kMaxSecondsToSpeed or more to reach its speed.
   bool reachesSpeed(const DescriptionFile& file, diag::Pos at, std::int32_t speed, std::int32_t acceleration);

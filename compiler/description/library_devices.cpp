@@ -82,12 +82,34 @@ bool Library::buildDevices(const WorkcellDef& def, const DescriptionFile& from, 
   for (const workcell::Feeder& f : d.feeders) named(f.name, f.pos, "feeder");
   for (const workcell::Sink& s : d.sinks) named(s.name, s.pos, "sink");
 
+  // Robot labels (issue 36): `LABEL.OUT n` and `LABEL.IN n` name a robot of
+  // the cell; in a cell of several, a line without a label is ambiguous.
+  std::string labels;
+  for (const workcell::PlacedRobot& r : cell.robots) labels += (labels.empty() ? "" : ", ") + r.labelOf();
+  const auto robotOf = [&](std::string& label, diag::Pos at, std::string_view what, int number) {
+    if (label.empty()) {
+      if (cell.robots.size() > 1)
+        fail(at, fmt::format("{} {} names no robot, and this workcell has {}", what, number, cell.robots.size()),
+             fmt::format("say whose, such as {}.{} {}: the robots are {}", cell.robots.front().labelOf(), what, number,
+                         labels));
+      return;
+    }
+    const std::size_t i = cell.robotLabeled(label);
+    if (i == workcell::kNoIndex)
+      return fail(at, fmt::format("no robot labelled '{}' in this workcell", label),
+                  cell.robots.empty() ? std::string("the workcell places no robot")
+                                      : fmt::format("the robots are {} (a ROBOT line's AS label, else its name)", labels));
+    label = cell.robots[i].labelOf();  // as the ROBOT line spells it
+  };
+
   const auto resolve = [&](Signal& s) {
+    if (s.kind == Signal::Kind::Output || s.kind == Signal::Kind::Input)
+      robotOf(s.robot, s.pos, s.kind == Signal::Kind::Output ? "OUT" : "IN", s.number);
     if (s.kind != Signal::Kind::Sensor) return;
     const auto it = sensors.find(upper(s.name));
     if (it == sensors.end())
       return fail(s.pos, fmt::format("unknown sensor '{}'", s.name),
-                  "a signal is a SENSOR's name (declared in this WORKCELL), OUT n, ON or OFF");
+                  "a signal is a SENSOR's name (declared in this WORKCELL), OUT n, LABEL.OUT n, ON or OFF");
     s.sensor = it->second;
   };
 
@@ -191,10 +213,11 @@ bool Library::buildDevices(const WorkcellDef& def, const DescriptionFile& from, 
   }
 
   // Wires: one source per input; the second is the error.
-  std::unordered_map<int, diag::Pos> sourced;
+  std::unordered_map<std::string, diag::Pos> sourced;  // robot label and input number
   for (workcell::Wire& w : d.wires) {
     resolve(w.source);
-    if (const auto [first, fresh] = sourced.emplace(w.input, w.pos); !fresh)
+    robotOf(w.robot, w.inputPos, "IN", w.input);
+    if (const auto [first, fresh] = sourced.emplace(fmt::format("{}.{}", upper(w.robot), w.input), w.pos); !fresh)
       fail(w.pos, fmt::format("input {} has a second source: the WIRE at {} drives it already", w.input, lineOf(first->second)),
            "one input takes one source: remove one of the wires, or wire this one to another input");
   }

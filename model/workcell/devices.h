@@ -41,8 +41,9 @@ struct Belt {
 };
 
 /// Where a signal comes from: a conveyor's RUN, a feeder's WHEN and a
-/// wire's source. `robot` is empty for the cell's driven robot; issue 36
-/// (several robots) fills it from `label.OUT n` / `label.IN n`.
+/// wire's source. `robot` is empty for the cell's one robot; `LABEL.OUT n`
+/// fills it (issue 36), spelled as the robot's ROBOT line labels it once
+/// the workcell is built.
 struct Signal {
   enum class Kind : std::uint8_t {
     On,      ///< ON: always on
@@ -112,7 +113,8 @@ struct Sink {
 struct Wire {
   Signal source;
   int input = 0;             ///< 1..vm::kIoCount
-  std::string robot;         ///< whose input; empty: the driven robot (issue 36)
+  std::string robot;         ///< whose input (`LABEL.IN n`, as the ROBOT line spells it); empty: the cell's one robot
+  diag::Pos inputPos;        ///< where `IN` or `LABEL.IN` was written
   std::int64_t afterUs = 0;  ///< AFTER, in microseconds (>= 0)
   bool inverted = false;
   diag::Pos pos;

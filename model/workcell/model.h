@@ -8,9 +8,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
+#include "base/ascii.h"
 #include "model/kinematics/chain_model.h"
 #include "model/kinematics/frame.h"
 #include "model/kinematics/gripper.h"
@@ -113,9 +115,23 @@ struct Robot {
   std::optional<UrdfSource> urdf;               // read from a URDF file
 };
 
+/// A robot in a cell. `label` and `program` come from its WORKCELL ROBOT
+/// line (issue 36): `AS LABEL` names it in the cell (what `label.OUT n`
+/// and `label.IN n` signals and stimuli name), `PROGRAM FILE` the program
+/// it runs. Kept for the cell's runtime: today a run drives one robot.
 struct PlacedRobot {
+  PlacedRobot() = default;
+  PlacedRobot(Robot r, const Eigen::Isometry3d& place) : robot(std::move(r)), F_world_design(place) {}
   Robot robot;
   Eigen::Isometry3d F_world_design = Eigen::Isometry3d::Identity();
+  std::string label;    ///< AS LABEL; empty: the description's name (labelOf())
+  std::string program;  ///< PROGRAM FILE, resolved against the cell file's folder; empty: none
+  diag::Pos pos;        ///< its ROBOT line's robot name (none for a lone robot or an image's)
+  diag::Pos labelPos;   ///< where AS's label was written (none without AS)
+  diag::Pos programPos; ///< where PROGRAM's file was written (none without PROGRAM)
+
+  /// Its name in the cell.
+  const std::string& labelOf() const { return label.empty() ? robot.name : label; }
 };
 
 /// The bounds of a shape's lines (empty for a shape without lines).
@@ -171,6 +187,13 @@ struct Workcell {
     return drivenRobotIndex() < robots.size() ? &robots[drivenRobotIndex()] : nullptr;
   }
   PlacedRobot* drivenRobot() { return drivenRobotIndex() < robots.size() ? &robots[drivenRobotIndex()] : nullptr; }
+  /// The robot a label names (ASCII case ignored, as names everywhere in a
+  /// description), or kNoIndex.
+  std::size_t robotLabeled(std::string_view label) const {
+    for (std::size_t i = 0; i < robots.size(); ++i)
+      if (base::sameName(robots[i].labelOf(), label)) return i;
+    return kNoIndex;
+  }
 };
 
 }  // namespace rs::workcell

@@ -168,6 +168,6 @@ TEST_CASE("rsd: a device line's mistakes are diagnostics", "[lsp][rsd][devices]"
   OpenFile g(path2, "robotsim-description");
   const Json e = g.s.diagnostics(g.uri);
   REQUIRE(e.size() == 1);
-  CHECK(e[0]["message"] == "unknown sensor 'nosuch'\nhint: a signal is a SENSOR's name (declared in this WORKCELL), OUT n, ON or OFF");
+  CHECK(e[0]["message"] == "unknown sensor 'nosuch'\nhint: a signal is a SENSOR's name (declared in this WORKCELL), OUT n, LABEL.OUT n, ON or OFF");
   CHECK(e[0]["range"] == LspSession::range(5, 7, 5, 13));
 }

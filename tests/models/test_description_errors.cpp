@@ -135,7 +135,7 @@ TEST_CASE("description: every statement-level error of a file, in one run", "[mo
       "p.rsd:43:11: expected a gripper name, found '9'",
       "p.rsd:46:3: expected ROBOT, OBJECT, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END, found 'AT'",
       "p.rsd:47:17: expected a position (z coordinate) before the end of the line",
-      "p.rsd:48:11: expected ROBOT, OBJECT, AT, ROTATE, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END, "
+      "p.rsd:48:11: expected ROBOT, OBJECT, AT, ROTATE, AS, PROGRAM, FLOOR, CONVEYOR, FEEDER, SENSOR, SINK, WIRE or END, "
       "found 'SPIN'",
       "p.rsd:49:10: expected an object name, found '7'",
       "p.rsd:50:18: expected an axis X, Y or Z, found 'Q'",

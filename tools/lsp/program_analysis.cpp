@@ -12,10 +12,10 @@ std::string formatSeconds(vm::Micros t) {
 }
 
 ProgramAnalysis::ProgramAnalysis(std::string path, std::string text, std::shared_ptr<const CellContext> cell,
-                                 std::optional<launch::CellDirective> directive)
+                                 std::optional<launch::CellDirective> directive, StimuliBeside stimuli)
     : byteOrderMark_(diag::withoutByteOrderMark(text).size() != text.size()),
       source_(std::move(path), std::move(text)), index_(source_), cell_(std::move(cell)),
-      directive_(std::move(directive)) {
+      directive_(std::move(directive)), stimuli_(std::move(stimuli)) {
   compiled_ = compiler::compile(source_, cell_->target, kMaxDiagnostics, index_);
   index_.finish();
   if (compiled_.image) {

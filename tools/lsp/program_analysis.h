@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "compiler/program/compiler.h"
+#include "compiler/stimuli/stimuli.h"
 #include "launch/cell_directive.h"
 #include "tools/lsp/cell_context.h"
 #include "tools/lsp/checked_run.h"
@@ -25,12 +26,19 @@
 
 namespace rs::lsp {
 
+/// The stimuli file beside a program (NAME.stim for NAME.rsp), as hovers
+/// and the server's checks of inputs read it.
+struct StimuliBeside {
+  std::string file;                        ///< its name, "" when there is none
+  std::optional<stimuli::Stimuli> parsed;  ///< none: no file, or it has errors
+};
+
 class ProgramAnalysis {
  public:
   /// `path` names the file (it may be ""); `directive` is the program's own
   /// cell directive, if any.
   ProgramAnalysis(std::string path, std::string text, std::shared_ptr<const CellContext> cell,
-                  std::optional<launch::CellDirective> directive);
+                  std::optional<launch::CellDirective> directive, StimuliBeside stimuli = {});
   ProgramAnalysis(const ProgramAnalysis&) = delete;
   ProgramAnalysis& operator=(const ProgramAnalysis&) = delete;
 
@@ -43,6 +51,7 @@ class ProgramAnalysis {
   bool ok() const { return image_ != nullptr; }
   const CellContext& cell() const { return *cell_; }
   const std::optional<launch::CellDirective>& directive() const { return directive_; }
+  const StimuliBeside& stimuli() const { return stimuli_; }
   /// The LSP range a diagnostic at `pos` underlines, from this version's
   /// text (the same as the document's at this version; usable from any
   /// thread, unlike the document, which the next edit changes).
@@ -72,6 +81,7 @@ class ProgramAnalysis {
   std::shared_ptr<const vm::Image> image_;
   std::shared_ptr<const CellContext> cell_;
   std::optional<launch::CellDirective> directive_;
+  StimuliBeside stimuli_;
 
   enum class RunState : std::uint8_t { None, Queued, Made };
   mutable std::mutex runMutex_;

@@ -36,6 +36,12 @@ void ProgramIndex::instruction(const compiler::Instruction& in) {
   if (!in.label.empty()) add(NameKind::Label, true, in.labelPos, in.label);
   if (!in.known) return;
   const vm::Format f = vm::info(in.op).format;
+  if ((f == vm::Format::Input || f == vm::Format::InputJump) && in.io.pos.line != 0) {
+    ix.input = in.io.number;
+    ix.inputPos = in.io.pos;
+    ix.inputLength = lengthAt(in.io.pos);
+    ix.inputOn = in.on;
+  }
   const bool named = f == vm::Format::Point || f == vm::Format::VarCompare || f == vm::Format::VarValue;
   if (named && !in.name.empty()) {
     ix.name = in.name;

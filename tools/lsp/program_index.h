@@ -47,6 +47,12 @@ struct IndexedInstruction {
   std::string_view targetLabel;   ///< a jump to a label
   std::uint32_t targetNumber = 0;  ///< a jump by number
   std::string_view name;     ///< its point or variable, if any
+  /// An instruction that takes an input (WAITFOR, JMPIN): its number as
+  /// written, where, and the state it asks for.
+  std::int64_t input = 0;
+  diag::Pos inputPos;
+  std::uint32_t inputLength = 0;
+  bool inputOn = false;
 };
 
 struct IndexedPoint {

@@ -254,7 +254,8 @@ void Server::publishPending() {
     // A run made already (the same version published again) goes with it.
     if (analysis)
       if (const CheckedRun* run = analysis->run(); run && run->end != CheckedRun::End::Abandoned)
-        for (Json& d : runDiagnostics(*analysis, uri, encoding_, *run)) params["diagnostics"].push_back(std::move(d));
+        params["diagnostics"] = withRunDiagnostics(std::move(params["diagnostics"]),
+                                                   runDiagnostics(*analysis, uri, encoding_, *run));
     send(notification("textDocument/publishDiagnostics", params));
     // Then its run, off this thread: what it finds follows for this version.
     if (analysis && analysis->ok() && !shutdown_ && analysis->askForRun())
@@ -270,8 +271,7 @@ void Server::runMade(const RunJob& job, const CheckedRun& run) {
   // has abandoned this version, nothing of it is published.
   if (job.analysis->runControl().abandoned() || run.end == CheckedRun::End::Abandoned) return;
   if (!run.diagnostics.empty()) {
-    Json all = job.compileDiagnostics;
-    for (Json& d : runDiagnostics(*job.analysis, job.uri, job.enc, run)) all.push_back(std::move(d));
+    Json all = withRunDiagnostics(job.compileDiagnostics, runDiagnostics(*job.analysis, job.uri, job.enc, run));
     sendLocked(notification("textDocument/publishDiagnostics",
                             {{"uri", job.uri}, {"version", job.version}, {"diagnostics", std::move(all)}}));
   }

@@ -51,7 +51,19 @@ std::string Workspace::cellFor(const std::string& path, const std::optional<laun
 std::shared_ptr<const ProgramAnalysis> Workspace::programFile(const std::string& path, std::string text) {
   std::optional<launch::CellDirective> directive = launch::findCellDirective(diag::withoutByteOrderMark(text));
   std::shared_ptr<const CellContext> cell = cells_.get(cellFor(path, directive));
-  return std::make_shared<const ProgramAnalysis>(path, std::move(text), std::move(cell), std::move(directive));
+  // The stimuli file beside it, read here (it is small: the parse is
+  // bounded as the CLI's) for the hovers and checks of inputs.
+  StimuliBeside beside;
+  const RunOptions options = runOptions(path);
+  if (options.stimuliText || !options.stimuliPath.empty()) {
+    beside.file = options.stimuliFile;
+    diag::Result<stimuli::Stimuli> parsed = options.stimuliText
+                                                ? stimuli::parseStimuli(*options.stimuliText, options.stimuliFile)
+                                                : stimuli::loadStimuliFile(options.stimuliPath);
+    if (parsed.ok()) beside.parsed = std::move(parsed).value();
+  }
+  return std::make_shared<const ProgramAnalysis>(path, std::move(text), std::move(cell), std::move(directive),
+                                                 std::move(beside));
 }
 
 std::shared_ptr<const ProgramAnalysis> Workspace::program(const Document& doc) {

@@ -51,6 +51,19 @@ Json runDiagnostics(const ProgramAnalysis& a, const std::string& uri, Encoding e
   return out;
 }
 
+Json withRunDiagnostics(Json compile, Json run) {
+  Json out = Json::array();
+  const auto deadlockOn = [&](const Json& line) {
+    for (const Json& r : run)
+      if (r.value("code", "") == "deadlock" && r["range"]["start"]["line"] == line) return true;
+    return false;
+  };
+  for (Json& d : compile)
+    if (d.value("code", "") != "input-never-on" || !deadlockOn(d["range"]["start"]["line"])) out.push_back(std::move(d));
+  for (Json& d : run) out.push_back(std::move(d));
+  return out;
+}
+
 namespace {
 
 Json toLsp(const ProgramContext& p, const diag::Diagnostic& d) { return diagnosticJson(p.analysis, p.doc.uri(), p.enc, d); }
@@ -146,6 +159,7 @@ Json programDiagnostics(const ProgramContext& p) {
     out.push_back(toLsp(p, d));
   }
   if (a.ok()) {
+    for (const diag::Diagnostic& d : unendingWaits(a)) out.push_back(toLsp(p, d));
     for (const IndexedInstruction* in : fallsIntoSubroutine(a.index())) {
       const std::string what = in->label.empty() ? fmt::format("the subroutine at instruction {}", in->number)
                                                  : fmt::format("subroutine '{}'", in->label);

@@ -35,6 +35,10 @@ Json programDiagnostics(const ProgramContext& p);
 /// What the checked run found (checked_run.h), as LSP Diagnostic[]; from
 /// the analysis alone, so that the run worker's thread can make them.
 Json runDiagnostics(const ProgramAnalysis& a, const std::string& uri, Encoding enc, const CheckedRun& run);
+/// The compile's diagnostics with the run's after them: a warning
+/// `input-never-on` gives way to the run's `deadlock` error at its line
+/// (the error says the same, at the instant the run got there).
+Json withRunDiagnostics(Json compile, Json run);
 /// One diagnostic of a program version, placed by that version's text.
 Json diagnosticJson(const ProgramAnalysis& a, const std::string& uri, Encoding enc, const diag::Diagnostic& d);
 /// Jumps by instruction number to an instruction that exists (the
@@ -53,6 +57,21 @@ std::vector<const IndexedInstruction*> fallsIntoSubroutine(const ProgramIndex& i
 
 // hover.cpp
 Json hover(const ProgramContext& p, Position at);
+
+// inputs.cpp: what drives an input (issue 35): the cell's wires to it, the
+// stimuli file beside the program (changes, reactive rules), or nothing.
+/// Each driver of `input`, for people ("sensor eye (BEAM ...) (WIRE, line 9)").
+std::vector<std::string> inputDrivers(const ProgramAnalysis& a, std::int64_t input);
+/// Whether anything can ever turn `input` on.
+bool inputCanTurnOn(const ProgramAnalysis& a, std::int64_t input);
+/// The hover on an input number: "input 1: sensor eye (BEAM ...) ...".
+std::string inputHover(const ProgramAnalysis& a, std::int64_t input);
+/// The server's warning `input-never-on`: each WAITFOR n ON whose input
+/// nothing can turn on (no wire, no stimulus, no reactive rule).
+std::vector<diag::Diagnostic> unendingWaits(const ProgramAnalysis& a);
+/// Whether a wire's robot label (empty: the cell's one robot) is the robot
+/// the program runs on.
+bool wiresDrivenRobot(const workcell::Workcell& cell, const std::string& robot);
 
 // navigation.cpp: go to definition, references, highlights, rename.
 Json definition(const ProgramContext& p, Position at, const std::vector<std::filesystem::path>& searchPath);

@@ -146,6 +146,9 @@ Json hover(const ProgramContext& p, Position at) {
     }
   }
   const IndexedInstruction* in = p.analysis.index().instructionOnLine(pos.line);
+  if (in && in->inputPos.line == pos.line && pos.col >= in->inputPos.col &&
+      pos.col <= in->inputPos.col + in->inputLength)
+    return markdown(inputHover(p.analysis, in->input), p.doc.rangeOf(in->inputPos, in->inputLength, p.enc));
   if (in && pos.col >= in->pos.col && pos.col <= in->pos.col + in->mnemonic.size())
     return markdown(instructionHover(p, *in), p.doc.rangeOf(in->pos, in->mnemonic.size(), p.enc));
   return nullptr;

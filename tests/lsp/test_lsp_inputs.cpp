@@ -1,0 +1,112 @@
+// Issue 35 in the editor: hover on an input number says what drives it (a
+// wire of the program's cell, the stimuli file beside the program, a
+// reactive rule in it, or nothing), and a WAITFOR on an input nothing can
+// ever turn on is the warning `input-never-on`. The expected texts are
+// worked out from stdlib/workcells/adept-cell.rsd (its SENSOR eye and the
+// WIRE from it to input 1) and the stimuli written here.
+#include <catch2/catch.hpp>
+
+#include "tests/cli/cli_support.h"
+#include "tests/lsp/lsp_session.h"
+#include "tools/lsp/uri.h"
+
+using rs::lsp::Json;
+using rs::testing::LspSession;
+
+namespace lsp_inputs_test {
+
+// The 1-based line of `cell` that starts with `start`.
+unsigned lineNumberOf(const std::string& text, const std::string& start) {
+  unsigned line = 1;
+  for (std::size_t at = 0; at < text.size(); ++line) {
+    if (text.compare(at, start.size(), start) == 0) return line;
+    at = text.find('\n', at);
+    if (at == std::string::npos) break;
+    ++at;
+  }
+  FAIL("no line starts with " << start);
+  return 0;
+}
+
+Json hoverText(LspSession& s, const std::string& uri, unsigned line, unsigned character) {
+  const Json h = s.result("textDocument/hover", LspSession::at(uri, line, character));
+  return h.is_null() ? h : h["contents"]["value"];
+}
+
+std::vector<Json> withCode(const Json& diagnostics, const std::string& code) {
+  std::vector<Json> out;
+  for (const Json& d : diagnostics)
+    if (d.value("code", "") == code) out.push_back(d);
+  return out;
+}
+
+const std::string kProgram =
+    "; cell: adept-cell\n"        // 0
+    "        WAITFOR 1 ON\n"      // 1: wired from the sensor eye
+    "        JMPIN 4 ON done\n"   // 2: a timed stimulus
+    "        WAITFOR 5 ON\n"      // 3: a reactive rule
+    "        WAITFOR 3 ON\n"      // 4: nothing
+    "        WAITFOR 6 OFF\n"     // 5: nothing, but inputs start OFF
+    "done:   END\n";              // 6
+
+}  // namespace lsp_inputs_test
+
+using namespace lsp_inputs_test;
+
+TEST_CASE("lsp: hover on an input number says what drives it, a WAITFOR nothing can end warns", "[lsp][inputs]") {
+  rs::testing::TempDir dir;
+  const std::string program = rs::lsp::uriOfPath(dir.write("p.rsp", kProgram));
+  dir.write("p.stim", "at 1.5 input 4 on\nwhen output 1 on then input 5 on after 0.5\n");
+  LspSession s;
+  s.initialize();
+  s.open(program, kProgram);
+  s.idle();
+
+  const std::string cell = rs::testing::readBytes(std::string(ROBOTSIM_SOURCE_DIR) + "/stdlib/workcells/adept-cell.rsd");
+  const unsigned wire = lineNumberOf(cell, "  WIRE     eye TO IN 1");
+  // "        WAITFOR 1 ON": the number at character 16, the hover on it and just after it.
+  const std::string eye = "input 1: sensor eye (BEAM 300 520 440 300 520 760), wired on line " + std::to_string(wire) +
+                          " of adept-cell";
+  CHECK(hoverText(s, program, 1, 16) == eye);
+  CHECK(hoverText(s, program, 1, 17) == eye);
+  const Json h = s.result("textDocument/hover", LspSession::at(program, 1, 16));
+  CHECK(h["range"] == LspSession::range(1, 16, 1, 17));
+  CHECK(hoverText(s, program, 2, 14) == "input 4: the stimuli file p.stim (line 1)");
+  CHECK(hoverText(s, program, 3, 16) ==
+        "input 5: a reactive rule in p.stim (line 2: when output 1 turns ON, it turns ON 0.5 s later)");
+  CHECK(hoverText(s, program, 4, 16) ==
+        "input 3: nothing drives it (no wire in the cell, nothing in p.stim): it stays OFF");
+  // The mnemonic still has the instruction's help.
+  CHECK_THAT(hoverText(s, program, 1, 9).get<std::string>(), Catch::StartsWith("**WAITFOR**"));
+
+  // Only the WAITFOR 3 ON can never end: at its number, with a hint.
+  const std::vector<Json> warned = withCode(s.diagnostics(program), "input-never-on");
+  REQUIRE(warned.size() == 1);
+  CHECK(warned[0]["severity"] == 2);
+  CHECK(warned[0]["range"] == LspSession::range(4, 16, 4, 17));
+  CHECK(warned[0]["message"] ==
+        "WAITFOR 3 ON can never end: nothing turns input 3 on (no wire in the cell, p.stim never turns it on)\n"
+        "hint: wire a source to it in the cell (WIRE eye TO IN 3), or give it a stimulus "
+        "(\"at 1 input 3 on\" in the program's .stim file)");
+}
+
+TEST_CASE("lsp: without a cell or a stimuli file, every WAITFOR n ON warns and gives way to the run's deadlock",
+          "[lsp][inputs]") {
+  LspSession s;
+  s.initialize();
+  const std::string uri = "file:///nowhere/w.rsp";
+  s.open(uri, "        JMPIN 2 ON skip\n        WAITFOR 2 ON\nskip:   WAITFOR 7 ON\n        END\n");
+  s.publishOnly();
+  CHECK(hoverText(s, uri, 0, 14) ==
+        "input 2: nothing drives it (no wire in the cell, no stimuli file beside the program): it stays OFF");
+  s.idle();
+  // The run stops with a deadlock at line 1 (input 2): that warning gives
+  // way to the error; line 2's, which the run never reached, stays.
+  const Json d = s.diagnostics(uri);
+  const std::vector<Json> warned = withCode(d, "input-never-on");
+  REQUIRE(warned.size() == 1);
+  CHECK(warned[0]["range"]["start"]["line"] == 2);
+  const std::vector<Json> deadlocks = withCode(d, "deadlock");
+  REQUIRE(deadlocks.size() == 1);
+  CHECK(deadlocks[0]["range"]["start"]["line"] == 1);
+}
