@@ -114,10 +114,10 @@ TEST_CASE("description devices: each mistake in a device line is positioned", "[
   CHECK(errors({"  CONVEYOR line1 SPEED 0 RUN ON"}) ==
         Strings{"c.rsd:13:24: a conveyor's SPEED must be more than 0 and at most 1000000, found 0"});
   CHECK(errors({"  CONVEYOR line1 SPEED 5 RUN"}) ==
-        Strings{"c.rsd:13:29: expected a signal: a sensor's name, OUT n, ON or OFF before the end of the line"});
+        Strings{"c.rsd:13:29: expected a signal: a sensor's name, OUT n, LABEL.OUT n, ON or OFF before the end of the line"});
   CHECK(errors({"  WIRE OUT 9 TO IN 1"}) == Strings{"c.rsd:13:12: output 9 does not exist: the lines are numbered 1..8"});
   CHECK(errors({"  WIRE ON TO IN 0"}) == Strings{"c.rsd:13:17: input 0 does not exist: the lines are numbered 1..8"});
-  CHECK(errors({"  WIRE ON TO OUT 1"}) == Strings{"c.rsd:13:14: expected IN, found 'OUT'"});
+  CHECK(errors({"  WIRE ON TO OUT 1"}) == Strings{"c.rsd:13:14: expected IN or LABEL.IN, found 'OUT'"});
   CHECK(errors({"  SINK s ZONE 0 0 10 0 10 0"}) ==
         Strings{"c.rsd:13:15: the ZONE has no volume: two of its opposite edges are the same"});
   CHECK(errors({"  SENSOR s BEAM 1 2 3 1 2 3"}) == Strings{"c.rsd:13:17: the beam's two ends are the same point"});
