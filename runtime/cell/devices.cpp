@@ -334,7 +334,7 @@ void CellDevices::feed(std::size_t f, vm::Micros now) {
   state_.waiting[f] = false;
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.translation() = shift;
-  world_.place(slot, pose);
+  world_.replace(slot, pose);
   state_.number[slot] = state_.nextNumber++;
   state_.ridden[slot] = 0;
   state_.velocity[slot].setZero(), state_.travel[slot] = 0;
@@ -379,7 +379,7 @@ void CellDevices::wake(const CellEvent&, Scheduler& clock) {
       events_.push_back({DeviceEvent::Kind::Taken, now, s, o, state_.number[o], centre});
       ++state_.taken[s];
       state_.number[o] = 0;
-      world_.place(o, parkedPose());
+      world_.replace(o, parkedPose());
       state_.velocity[o].setZero(), state_.travel[o] = 0, state_.ridden[o] = 0;
       break;
     }

@@ -83,6 +83,12 @@ class World {
     grasping_.setResting(o, pose);
     ++revision_;
   }
+  /// Object `o`'s slot holds a new part at `pose` (a feeder fed it) or
+  /// none (a sink took it): no let-go put it there, so it has no restOf.
+  void replace(std::size_t o, const Eigen::Isometry3d& pose) {
+    place(o, pose);
+    state_.rests[o].reset();
+  }
 
   /// Counts every take and let-go so far.
   std::uint64_t eventCount() const { return state_.events; }
