@@ -37,6 +37,10 @@ struct GraspEvent {
   workcell::Settled::On on = workcell::Settled::On::Nothing;
   std::size_t support = 0;
   double drop = 0;
+  /// The numbers the run names `object` and `support` by, where fed parts
+  /// make them differ from index + 1 (0: index + 1). The world leaves them
+  /// 0; the run stamps them (Rig::numbered), as the world knows no feeder.
+  std::uint32_t number = 0, supportNumber = 0;
   /// A let-go that settled: it went down (or up, out of its support) to rest on something.
   bool settled() const { return !held && on != workcell::Settled::On::Nothing; }
   bool operator==(const GraspEvent& o) const {

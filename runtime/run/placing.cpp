@@ -19,14 +19,14 @@ diag::Pos placingPos(const vm::Image& image, std::uint32_t index) {
 
 }  // namespace
 
-std::string objectText(const workcell::Workcell& cell, std::size_t o) {
-  return fmt::format("{} (object {})", base::safeText(cell.objects[o].shape.name), o + 1);
+std::string objectText(const workcell::Workcell& cell, std::size_t o, std::uint32_t number) {
+  return fmt::format("{} (object {})", base::safeText(cell.objects[o].shape.name), number ? number : o + 1);
 }
 
 std::string supportText(const GraspEvent& e, const workcell::Workcell& cell) {
   switch (e.on) {
-    case workcell::Settled::On::Object: return objectText(cell, e.support);
-    case workcell::Settled::On::Belt: return "the belt of " + objectText(cell, e.support);
+    case workcell::Settled::On::Object: return objectText(cell, e.support, e.supportNumber);
+    case workcell::Settled::On::Belt: return "the belt of " + objectText(cell, e.support, e.supportNumber);
     case workcell::Settled::On::Floor: return "the floor";
     case workcell::Settled::On::Nothing: break;
   }
@@ -46,7 +46,7 @@ std::string fixtureCloseText(const EmptyClose& e, const workcell::Workcell& cell
 }
 
 std::string longDropText(const GraspEvent& e, const workcell::Workcell& cell) {
-  return fmt::format("{} dropped {} onto {}: it was let go above it", objectText(cell, e.object), placingNumber(e.drop),
+  return fmt::format("{} dropped {} onto {}: it was let go above it", objectText(cell, e.object, e.number), placingNumber(e.drop),
                      supportText(e, cell));
 }
 

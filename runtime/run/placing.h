@@ -14,8 +14,9 @@
 
 namespace rs::runtime {
 
-/// "block (object 3)": an object as the run's messages name it.
-std::string objectText(const workcell::Workcell& cell, std::size_t o);
+/// "block (object 3)": an object as the run's messages name it, by
+/// `number` where given (fed parts: Rig::objectNumber), else index + 1.
+std::string objectText(const workcell::Workcell& cell, std::size_t o, std::uint32_t number = 0);
 
 /// What a let-go settled on: "pallet (object 2)", "the belt of conveyor
 /// (object 1)", "the floor", "nothing" (meaningful for a let-go).

@@ -86,7 +86,7 @@ void Rig::afterStep(std::uint32_t instruction) {
     fixtureCloses_.emplace_back(instruction, world_->lastEmptyClose());
   if (step.grasped && world_->lastEvent().settled() && world_->lastEvent().drop > kLongDrop &&
       longDrops_.size() < kKeptPlacingNotes)
-    longDrops_.emplace_back(instruction, world_->lastEvent());
+    longDrops_.emplace_back(instruction, numbered(world_->lastEvent()));
 }
 
 std::span<const CollisionEvent> Rig::collisions() const {

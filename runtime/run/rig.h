@@ -108,6 +108,11 @@ class Rig {
   /// Object `o`'s number ("object 5"): o + 1 for the objects the cell
   /// places; a fed part's is given when it is fed.
   std::uint32_t objectNumber(std::size_t o) const { return devices_ ? devices_->number(o) : static_cast<std::uint32_t>(o + 1); }
+  /// `e` with the numbers its object and support have now (GraspEvent::number).
+  GraspEvent numbered(GraspEvent e) const {
+    e.number = objectNumber(e.object), e.supportNumber = objectNumber(e.support);
+    return e;
+  }
   /// The cell's clock runs to `t`, the devices acting on the way (after
   /// they have looked at what the robot changed). Fault: a loop of
   /// zero-delay changes, a device's mistake (a feeder out of slots).

@@ -53,7 +53,7 @@ std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell
                                        number ? number : event.object + 1);
   // A let-go by an opening move settles (RESET puts it back: no settling).
   if (event.held || !event.settled()) return what;
-  return what + ": it " + runtime::settleText(event, cell);
+  return what + ": it " + runtime::settleText(event, cell);  // event numbered by the caller
 }
 
 std::string closesOnNothingText(const runtime::EmptyClose& e, const workcell::Workcell& cell) {
@@ -192,7 +192,7 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
                             ? fmt::format("{}={}", base::safeText(im.variables[in.b]), vm.variables()[in.b])
                             : std::string();
   if (const runtime::GraspEvent* g = run_.rig().graspOfLastStep())
-    changed += (changed.empty() ? "" : "  ") + graspText(*g, run_.rig().world()->cell(), run_.rig().objectNumber(g->object));
+    changed += (changed.empty() ? "" : "  ") + graspText(run_.rig().numbered(*g), run_.rig().world()->cell(), run_.rig().objectNumber(g->object));
   if (vm::info(in.op).format == vm::Format::Point && !im.points[in.b].origin.empty())
     changed += (changed.empty() ? "" : "  ") + fmt::format("{} from {}", base::safeText(im.points[in.b].name),
                                                            base::safeText(im.points[in.b].origin));
@@ -236,7 +236,7 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
                   {"held", g->held}};
     if (g->settled()) {
       nlohmann::ordered_json settled;
-      settled["on"] = runtime::supportText(*g, cell);
+      settled["on"] = runtime::supportText(run_.rig().numbered(*g), cell);
       if (g->on != workcell::Settled::On::Floor) settled["object"] = run_.rig().objectNumber(g->support);
       settled["belt"] = g->on == workcell::Settled::On::Belt;
       settled["drop"] = std::round(g->drop * 1e4) / 1e4 + 0.0;

@@ -149,7 +149,7 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
     if (!e.present) continue;
     std::string rest;  // where its last let-go settled it
     if (const auto& settled = world->restOf(o); settled && settled->settled())
-      rest = "; " + runtime::settleText(*settled, world->cell()).substr(std::string_view("settles ").size());
+      rest = "; " + runtime::settleText(r.run->rig().numbered(*settled), world->cell()).substr(std::string_view("settles ").size());
     out << fmt::format("  {:<15} {} at {}, centre {}{}{}\n", fmt::format("object {}", e.number), base::safeText(e.name),
                        runtime::pointText({e.at.x(), e.at.y(), e.at.z()}),
                        runtime::pointText({e.centre.x(), e.centre.y(), e.centre.z()}),
@@ -222,7 +222,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
         if (numbered) one["number"] = e.number;  // fed parts make the list's order no number
         // Where its last let-go settled it, and how far it dropped (to 1e-4).
         if (world && world->restOf(o) && world->restOf(o)->settled())
-          one["settled"] = {{"on", runtime::supportText(*world->restOf(o), world->cell())},
+          one["settled"] = {{"on", runtime::supportText(r.run->rig().numbered(*world->restOf(o)), world->cell())},
                             {"drop", std::round(world->restOf(o)->drop * 1e4) / 1e4 + 0.0}};
         objects.push_back(std::move(one));
       }
