@@ -7,6 +7,7 @@
 
 #include <mutex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -96,6 +97,18 @@ class LspSession {
 
   static Json at(const std::string& uri, unsigned line, unsigned character) {
     return {{"textDocument", {{"uri", uri}}}, {"position", {{"line", line}, {"character", character}}}};
+  }
+  /// The 0-based line of the first line of `text` that starts with `start`
+  /// (an LSP position's line); throws, failing the test, where none does.
+  static unsigned lineOf(const std::string& text, const std::string& start) {
+    unsigned line = 0;
+    for (std::size_t at = 0; at < text.size(); ++line) {
+      if (text.compare(at, start.size(), start) == 0) return line;
+      at = text.find('\n', at);
+      if (at == std::string::npos) break;
+      ++at;
+    }
+    throw std::runtime_error("no line starts with " + start);
   }
   static Json range(unsigned l0, unsigned c0, unsigned l1, unsigned c1) {
     return {{"start", {{"line", l0}, {"character", c0}}}, {"end", {{"line", l1}, {"character", c1}}}};

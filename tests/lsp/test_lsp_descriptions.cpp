@@ -14,18 +14,7 @@ namespace {
 
 const std::string kStdlibRoot = std::string(ROBOTSIM_SOURCE_DIR) + "/stdlib";
 
-// The 0-based line of the first line of `text` that starts with `start`.
-unsigned lineOf(const std::string& text, const std::string& start) {
-  unsigned line = 0;
-  for (std::size_t at = 0; at < text.size(); ++line) {
-    if (text.compare(at, start.size(), start) == 0) return line;
-    at = text.find('\n', at);
-    if (at == std::string::npos) break;
-    ++at;
-  }
-  FAIL("no line starts with " << start);
-  return 0;
-}
+unsigned lineOf(const std::string& text, const std::string& start) { return LspSession::lineOf(text, start); }
 
 struct OpenFile {
   LspSession s;

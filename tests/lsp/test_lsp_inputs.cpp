@@ -15,18 +15,8 @@ using rs::testing::LspSession;
 
 namespace lsp_inputs_test {
 
-// The 1-based line of `cell` that starts with `start`.
-unsigned lineNumberOf(const std::string& text, const std::string& start) {
-  unsigned line = 1;
-  for (std::size_t at = 0; at < text.size(); ++line) {
-    if (text.compare(at, start.size(), start) == 0) return line;
-    at = text.find('\n', at);
-    if (at == std::string::npos) break;
-    ++at;
-  }
-  FAIL("no line starts with " << start);
-  return 0;
-}
+// The 1-based line of `cell` that starts with `start`, as messages number lines.
+unsigned lineNumberOf(const std::string& text, const std::string& start) { return LspSession::lineOf(text, start) + 1; }
 
 Json hoverText(LspSession& s, const std::string& uri, unsigned line, unsigned character) {
   const Json h = s.result("textDocument/hover", LspSession::at(uri, line, character));
