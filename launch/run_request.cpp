@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "base/text.h"
+#include "launch/stimuli_robots.h"
 
 namespace rs::launch {
 
@@ -65,7 +66,8 @@ bool checkWiredInputs(const RunRequest& request, const workcell::Workcell* cell,
   const auto check = [&](int input, std::uint32_t line, const char* what) {
     if (input < 1 || input > vm::kIoCount || reported[static_cast<std::size_t>(input)]) return;
     for (const workcell::Wire& w : cell->devices.wires) {
-      if (w.input != input || !w.robot.empty()) continue;
+      const bool driven = w.robot.empty() || cell->robotLabeled(w.robot) == cell->drivenRobotIndex();
+      if (w.input != input || !driven) continue;
       reported[static_cast<std::size_t>(input)] = true, ok = false;
       const std::string file = line ? request.stimuliFile : std::string("--input");
       diags.push_back({file, line ? diag::Pos{line, 1} : diag::Pos{}, diag::Severity::Error,
@@ -90,7 +92,9 @@ std::optional<runtime::RunSpec> prepareRun(const LoadedProgram& program, const R
   const std::optional<vm::Micros> maxTime = maxTimeOf(request, diags);
   const bool stimuliOk = loadStimuli(request, spec.stimuli, diags);
   const std::optional<runtime::CollisionMode> collisions = collisionsOf(request, diags);
-  const bool wiresOk = stimuliOk && checkWiredInputs(request, program.cell.get(), spec.stimuli, diags);
+  const bool robotsOk =
+      stimuliOk && placeStimuliOnRobots(program.cell.get(), request.stimuliFile, spec.stimuli, diags);
+  const bool wiresOk = robotsOk && checkWiredInputs(request, program.cell.get(), spec.stimuli, diags);
   if (!maxTime || !stimuliOk || !wiresOk || !collisions || !program.image) return std::nullopt;
   spec.collisions = *collisions;
   spec.limits.maxSteps = request.maxSteps.value_or(defaultMaxSteps);

@@ -2,8 +2,9 @@
 // blanks (after cutting a `;` comment), then one of two statements is read:
 //
 //   line   := [ at | when ] [ ';' comment ]
-//   at     := 'at' SECONDS 'input' N STATE
-//   when   := 'when' 'output' N STATE 'then' 'input' N STATE [ 'after' SECONDS ]
+//   at     := 'at' SECONDS 'input' LINE STATE
+//   when   := 'when' 'output' LINE STATE 'then' 'input' LINE STATE [ 'after' SECONDS ]
+//   LINE   := [ LABEL '.' ] N       (a robot's label, in a cell of several robots)
 //   STATE  := 'on' | 'off'          (keywords in any case)
 //
 // A bad line yields one error at the first word that does not fit, and the
@@ -74,12 +75,28 @@ class LineParser {
                                     text::quoted(token->text)));
   }
 
-  // An input or output number 1..vm::kIoCount right after the keyword `what`.
-  bool lineNumber(int& n, std::string_view what) {
+  // An input or output number 1..vm::kIoCount right after the keyword `what`,
+  // with its robot's label before a '.' where one is written (`right.3`).
+  bool lineNumber(int& n, std::string& robot, std::uint32_t& robotColumn, std::string_view what) {
     const auto token = take(fmt::format("expected an {} number 1..{} after '{}'", what, vm::kIoCount, what));
     if (!token) return false;
-    const diag::Result<int> parsed = text::parseLineNumber(token->text, what);
-    if (!parsed) return fail(*token, parsed.failure().message);
+    std::string_view number = token->text;
+    std::size_t numberOffset = token->offset;
+    const auto dot = number.rfind('.');
+    const bool labelled = dot != std::string_view::npos && dot > 0 && !(number[0] >= '0' && number[0] <= '9');
+    if (labelled) {  // a number such as `3.5` stays a bad number, not a label
+      const std::string_view label = number.substr(0, dot);
+      if (!text::isLabel(label))
+        return fail(*token, fmt::format("expected a robot's label before '.' in {} (a name: letters, digits, '_', "
+                                        "'-' and '.', a letter or '_' first), got {}",
+                                        what, text::quoted(label)));
+      robot = std::string(label);
+      robotColumn = clampToU32(token->offset + 1);
+      number.remove_prefix(dot + 1);
+      numberOffset += dot + 1;
+    }
+    const diag::Result<int> parsed = text::parseLineNumber(number, what);
+    if (!parsed) return fail(Token{number, numberOffset}, parsed.failure().message);
     n = *parsed;
     return true;
   }
@@ -138,7 +155,7 @@ class LineParser {
 void parseAt(LineParser& p, Stimuli& out) {
   InputChange change;
   if (p.seconds(change.at, "expected a time in seconds after 'at'") &&
-      p.keyword("input", "after the time") && p.lineNumber(change.input, "input") &&
+      p.keyword("input", "after the time") && p.lineNumber(change.input, change.robot, change.robotColumn, "input") &&
       p.state(change.on, "after the input number") && p.atEnd())
     out.changes.push_back(change);
 }
@@ -157,10 +174,12 @@ bool parseOptionalDelay(LineParser& p, vm::Micros& delay) {
 // when := 'when' 'output' N STATE 'then' 'input' N STATE [ 'after' SECONDS ]
 void parseWhen(LineParser& p, Stimuli& out) {
   ReactiveRule rule;
-  if (p.keyword("output", "after 'when'") && p.lineNumber(rule.output, "output") &&
+  if (p.keyword("output", "after 'when'") &&
+      p.lineNumber(rule.output, rule.outputRobot, rule.outputRobotColumn, "output") &&
       p.state(rule.outputOn, "after the output number") &&
       p.keyword("then", "after the output state") && p.keyword("input", "after 'then'") &&
-      p.lineNumber(rule.input, "input") && p.state(rule.inputOn, "after the input number") &&
+      p.lineNumber(rule.input, rule.inputRobot, rule.inputRobotColumn, "input") &&
+      p.state(rule.inputOn, "after the input number") &&
       parseOptionalDelay(p, rule.delay))
     out.rules.push_back(rule);
 }

@@ -24,6 +24,11 @@ struct InputChange {
   int input = 1;
   bool on = true;
   std::uint32_t line = 0;  ///< where the stimuli file wrote it (0: not from a file)
+  /// The robot whose input it is, as a cell of several robots labels it
+  /// (`input right.3`); empty: the cell's one robot. `robotColumn` is where
+  /// the label stands on its line (1-based; 0: not from a file).
+  std::string robot = {};
+  std::uint32_t robotColumn = 0;
   bool operator==(const InputChange&) const = default;
 };
 
@@ -36,6 +41,10 @@ struct ReactiveRule {
   bool inputOn = true;
   vm::Micros delay = 0;
   std::uint32_t line = 0;  ///< where the stimuli file wrote it (0: not from a file)
+  /// The robots of the output and of the input (`when output left.1 on then
+  /// input right.2 on`), as InputChange::robot; columns as robotColumn.
+  std::string outputRobot = {}, inputRobot = {};
+  std::uint32_t outputRobotColumn = 0, inputRobotColumn = 0;
   bool operator==(const ReactiveRule&) const = default;
 };
 

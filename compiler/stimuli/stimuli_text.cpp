@@ -90,4 +90,12 @@ diag::Result<int> parseLineNumber(std::string_view token, std::string_view what)
   return value;
 }
 
+bool isLabel(std::string_view token) {
+  const auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); };
+  if (token.empty() || token.size() > 64 || !(letter(token[0]) || token[0] == '_')) return false;
+  for (const char c : token)
+    if (!letter(c) && !(c >= '0' && c <= '9') && c != '_' && c != '-' && c != '.') return false;
+  return true;
+}
+
 }  // namespace rs::stimuli::text

@@ -29,4 +29,9 @@ diag::Result<vm::Micros> parseSeconds(std::string_view token);
 /// it in the failure, which has no place either.
 diag::Result<int> parseLineNumber(std::string_view token, std::string_view what);
 
+/// A robot's label as a stimulus names it before the last '.': a name as
+/// descriptions spell one (a letter or '_', then letters, digits, '_', '-'
+/// or '.'; ASCII), at most 64 bytes.
+bool isLabel(std::string_view token);
+
 }  // namespace rs::stimuli::text

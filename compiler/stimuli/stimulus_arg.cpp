@@ -1,6 +1,6 @@
 // The command-line form of one timed input change:
 //
-//   arg := N '=' STATE [ '@' SECONDS ]      e.g. 3=ON@1.5, 2=off
+//   arg := [ LABEL '.' ] N '=' STATE [ '@' SECONDS ]      e.g. 3=ON@1.5, 2=off, right.3=ON@2
 //
 // No blanks inside; STATE in any case; without '@' the change is at time 0.
 #include <fmt/format.h>
@@ -29,8 +29,23 @@ diag::Result<InputChange> parseStimulusArg(std::string_view arg, std::string_vie
     return failAt(origin, arg.size(), fmt::format("expected '=' after the input number {}", kForm));
   if (equals == 0)
     return failAt(origin, 0, fmt::format("expected an input number 1..{} before '=' {}", vm::kIoCount, kForm));
-  const auto number = text::parseLineNumber(arg.substr(0, equals), "input");
-  if (!number) return failAt(origin, 0, number.failure().message);
+  std::string_view line = arg.substr(0, equals);
+  std::string robot;
+  std::size_t numberOffset = 0;
+  if (const auto dot = line.rfind('.'); dot != std::string_view::npos && dot > 0 && !(line[0] >= '0' && line[0] <= '9')) {
+    if (!text::isLabel(line.substr(0, dot)))
+      return failAt(origin, 0, fmt::format("expected a robot's label before '.', got {}", text::quoted(line.substr(0, dot))));
+    robot = std::string(line.substr(0, dot));
+    numberOffset = dot + 1;
+    line.remove_prefix(dot + 1);
+  }
+  const auto number = text::parseLineNumber(line, "input");
+  if (!number) return failAt(origin, numberOffset, number.failure().message);
+  const auto change = [&](vm::Micros at, bool on) {
+    InputChange c{at, *number, on};
+    c.robot = robot;
+    return c;
+  };
 
   const auto at = arg.find('@', equals);
   const auto state = arg.substr(equals + 1, at == std::string_view::npos ? at : at - equals - 1);
@@ -40,13 +55,13 @@ diag::Result<InputChange> parseStimulusArg(std::string_view arg, std::string_vie
                   state.empty()
                       ? fmt::format("expected ON or OFF after '=' {}", kForm)
                       : fmt::format("expected ON or OFF after '=', got {}", text::quoted(state)));
-  if (at == std::string_view::npos) return InputChange{0, *number, on};
+  if (at == std::string_view::npos) return change(0, on);
 
   const auto time = arg.substr(at + 1);
   if (time.empty()) return failAt(origin, at + 1, "expected a time in seconds after '@'");
   const auto seconds = text::parseSeconds(time);
   if (!seconds) return failAt(origin, at + 1, seconds.failure().message);
-  return InputChange{*seconds, *number, on};
+  return change(*seconds, on);
 }
 
 }  // namespace rs::stimuli

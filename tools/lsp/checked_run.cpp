@@ -1,9 +1,12 @@
 #include "tools/lsp/checked_run.h"
 
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <time.h>
 
 #include "compiler/program/line_check.h"
+#include "launch/stimuli_robots.h"
 #include "launch/program.h"
 #include "launch/run_diagnostics.h"
 #include "launch/run_request.h"
@@ -185,6 +188,19 @@ CheckedRun checkRun(const ProgramAnalysis& analysis, const RunOptions& options, 
       return out;
     }
     spec->stimuli = std::move(parsed).value();
+    std::vector<diag::Diagnostic> placing;  // an unknown robot's label is the stimuli file's error
+    if (!launch::placeStimuliOnRobots(spec->cell.get(), options.stimuliFile, spec->stimuli, placing)) {
+      out.end = CheckedRun::End::NotRun;
+      const diag::Diagnostic& first = *std::find_if(placing.begin(), placing.end(), [](const diag::Diagnostic& d) {
+        return d.severity == diag::Severity::Error;
+      });
+      out.diagnostics.push_back({analysis.source().name(), {}, diag::Severity::Note,
+                                 fmt::format("not run in the editor: the stimuli file beside it, {}, at line {}: {}",
+                                             options.stimuliFile, first.pos.line, first.message),
+                                 "run-not-made", first.hint});
+      out.summary = "not made (its stimuli file names an unknown robot)";
+      return out;
+    }
   }
   out.times.resize(spec->image->code.size());
   out.calls.resize(spec->image->code.size());

@@ -58,7 +58,7 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     if (json) printJsonSummary(out, report);
     return kExitBadInput;
   }
-  launch::printDiagnostics(err, program.diagnostics, program);  // warnings
+  launch::printDiagnostics(err, report.diagnostics, program);  // warnings (the program's and the run's)
 
   std::unique_ptr<runtime::Run> run;
   const rhino::RhinoMachine* controller = nullptr;  // owned by the run
