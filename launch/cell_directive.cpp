@@ -26,8 +26,7 @@ std::uint32_t characters(std::string_view text, std::size_t from, std::size_t to
 }
 
 // The directive's name on one line (without its line break), if any.
-std::optional<CellDirective> onLine(std::string_view line) {
-  constexpr std::string_view kKey = "cell:";
+std::optional<CellDirective> onLine(std::string_view line, std::string_view kKey) {
   std::size_t i = 0;
   while (i < line.size() && blank(line[i])) ++i;
   if (i >= line.size() || line[i] != ';') return std::nullopt;
@@ -44,12 +43,12 @@ std::optional<CellDirective> onLine(std::string_view line) {
 
 }  // namespace
 
-std::optional<CellDirective> findCellDirective(std::string_view text) {
+std::optional<CellDirective> findDirective(std::string_view text, std::string_view key) {
   std::uint32_t lineNumber = 1;
   for (std::size_t start = 0; start <= text.size(); ++lineNumber) {
     std::size_t end = text.find('\n', start);
     if (end == std::string_view::npos) end = text.size();
-    if (std::optional<CellDirective> d = onLine(text.substr(start, end - start))) {
+    if (std::optional<CellDirective> d = onLine(text.substr(start, end - start), key)) {
       d->pos.line = lineNumber;
       d->offset += start;
       return d;
@@ -58,6 +57,10 @@ std::optional<CellDirective> findCellDirective(std::string_view text) {
   }
   return std::nullopt;
 }
+
+std::optional<CellDirective> findCellDirective(std::string_view text) { return findDirective(text, "cell:"); }
+
+std::optional<CellDirective> findRobotDirective(std::string_view text) { return findDirective(text, "robot:"); }
 
 std::string resolveCellName(const std::string& programFile, const std::string& name) {
   std::error_code ec;

@@ -26,8 +26,16 @@ struct CellDirective {
   std::size_t offset = 0;  ///< byte offset of the name in the text
 };
 
+/// The first "; KEY NAME" whole-line comment of a program's text (`key`
+/// with its colon, ASCII case ignored).
+std::optional<CellDirective> findDirective(std::string_view text, std::string_view key);
+
 /// The first "; cell: NAME" whole-line comment of a program's text.
 std::optional<CellDirective> findCellDirective(std::string_view text);
+
+/// The first "; robot: LABEL" one: which robot of a cell of several the
+/// program runs on (`--robot LABEL` wins over it; robot_choice.h).
+std::optional<CellDirective> findRobotDirective(std::string_view text);
 
 /// What a directive names, as --cell would take it: a description file
 /// beside the program (`programFile`'s folder) when one exists by that

@@ -9,6 +9,7 @@
 
 #include "diag/read_input.h"
 #include "launch/cell_directive.h"
+#include "launch/robot_choice.h"
 #include "model/workcell/cell_file.h"
 #include "stdlib/default_robot.h"
 #include "vm/image_file.h"
@@ -238,10 +239,22 @@ LoadedProgram loadProgram(const ProgramRequest& given, ProgramUse use) {
   if (!request.cell.empty()) {
     program.cell = loadCell(request, program);
     if (!program.cell) return program;
+    const std::optional<CellDirective> robot =
+        vm::looksLikeImage(*bytes) ? std::nullopt : findRobotDirective(diag::withoutByteOrderMark(*bytes));
+    program.cell = driveProgramsRobot(program.cell, request, robot, program);
+    if (!program.cell) {
+      program.source.emplace(request.file, std::move(*bytes));  // for the caret under the directive
+      return program;
+    }
     if (!program.cell->drivenRobot()) {
       program.diagnostics.push_back(wholeFileError(request.cell, "the workcell has no robot to run the program"));
       return program;
     }
+  }
+  if (request.cell.empty() && !request.robot.empty()) {
+    program.diagnostics.push_back(wholeFileError("--robot", "--robot names a robot of a cell, but the program runs on no cell"));
+    program.diagnostics.back().hint = "name the cell with --cell CELL or a '; cell:' line";
+    return program;
   }
   readProgram(request.file, std::move(*bytes), program.cell ? cellTarget(*program.cell) : defaultTarget(), program);
   switch (use) {

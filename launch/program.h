@@ -40,6 +40,7 @@ struct ProgramRequest {
   /// --max-errors: diagnostics kept and printed at most (0 = all); the rest
   /// are counted, and printDiagnostics says how many.
   std::size_t maxErrors = 0;
+  std::string robot = {};  ///< --robot: the cell's robot the program runs on ("" = robot_choice.h)
 };
 
 struct LoadedProgram {

@@ -6,17 +6,10 @@
 #include <string>
 
 #include "base/text.h"
+#include "launch/robot_choice.h"
 
 namespace rs::launch {
 namespace {
-
-// The cell's robot labels, for a hint: `left`, `right`.
-std::string labelsOf(const workcell::Workcell& cell) {
-  std::string out;
-  for (const workcell::PlacedRobot& r : cell.robots)
-    out += fmt::format("{}`{}`", out.empty() ? "" : ", ", base::safeText(r.labelOf()));
-  return out;
-}
 
 class Placer {
  public:
@@ -40,7 +33,7 @@ class Placer {
             fmt::format("this {} names robot `{}`, but workcell {} has no robot labelled so", what, shown,
                         base::safeText(cell_->name)),
             fmt::format("the cell's robots are {} (a ROBOT line's AS LABEL, or the description's name)",
-                        labelsOf(*cell_)));
+                        robotLabelsOf(*cell_)));
       return std::nullopt;
     }
     if (robot == cell_->drivenRobotIndex()) return true;

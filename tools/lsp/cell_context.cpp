@@ -6,6 +6,7 @@
 
 #include "compiler/description/library.h"
 #include "launch/program.h"
+#include "launch/robot_choice.h"
 #include "stdlib/default_robot.h"
 
 namespace rs::lsp {
@@ -66,6 +67,33 @@ std::shared_ptr<const CellContext> CellCache::get(const std::string& name) {
   // compile every request waits for.
   context->target.checkLines = false;
   cache_[name] = context;
+  return context;
+}
+
+std::shared_ptr<const CellContext> CellCache::forProgram(const std::string& name, const std::string& path,
+                                                         const std::optional<launch::CellDirective>& robot) {
+  std::shared_ptr<const CellContext> base = get(name);
+  if (!base->cell || (base->cell->robots.size() <= 1 && !robot)) return base;
+  const std::string key = name + '\n' + (robot ? robot->name : std::string()) + '\n' + path;
+  if (const auto it = cache_.find(key); it != cache_.end()) return it->second;
+  launch::ProgramRequest request;
+  request.file = path;
+  launch::LoadedProgram scratch;
+  const std::shared_ptr<const workcell::Workcell> cell = launch::driveProgramsRobot(base->cell, request, robot, scratch);
+  auto context = std::make_shared<CellContext>(*base);
+  if (!cell) {
+    const diag::Diagnostic& d = scratch.diagnostics.front();
+    context->robotProblem = d.hint.empty() ? d.message : fmt::format("{} ({})", d.message, d.hint);
+    context->robotProblemPos = d.pos;
+  } else if (cell != base->cell) {
+    context->cell = cell;
+    context->target = launch::cellTarget(*cell);
+    context->target.checkLines = false;  // as get(): with the run
+    const workcell::PlacedRobot& driven = *cell->drivenRobot();
+    context->robot.reset();
+    if (driven.robot.chain) context->robot = driven;
+  }
+  cache_[key] = context;
   return context;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "compiler/program/codegen.h"
+#include "launch/cell_directive.h"
 #include "model/workcell/model.h"
 
 namespace rs::lsp {
@@ -25,6 +26,10 @@ struct CellContext {
   /// placed; or the default robot as drawn.
   std::optional<workcell::PlacedRobot> robot;
   std::string problem;  ///< why the named cell could not be loaded ("" = it was)
+  /// Why the program's `; robot: LABEL` names no robot of the cell ("" = it
+  /// does, or there is none), and where the label stands.
+  std::string robotProblem;
+  diag::Pos robotProblemPos;
 };
 
 /// The description file a library name (or a file name) stands for on the
@@ -37,6 +42,12 @@ class CellCache {
   std::vector<std::filesystem::path> searchPath() const;
   /// The context for a resolved name ("" = the default robot).
   std::shared_ptr<const CellContext> get(const std::string& name);
+  /// The context for the program at `path` on that cell: in a cell of
+  /// several robots, with the robot the program runs on first, as the CLI
+  /// chooses it (launch/robot_choice.h: its `; robot:` line, else the robot
+  /// whose PROGRAM it is, else the first).
+  std::shared_ptr<const CellContext> forProgram(const std::string& name, const std::string& path,
+                                                const std::optional<launch::CellDirective>& robot);
   void clear() { cache_.clear(); }
 
  private:

@@ -50,7 +50,8 @@ std::string Workspace::cellFor(const std::string& path, const std::optional<laun
 
 std::shared_ptr<const ProgramAnalysis> Workspace::programFile(const std::string& path, std::string text) {
   std::optional<launch::CellDirective> directive = launch::findCellDirective(diag::withoutByteOrderMark(text));
-  std::shared_ptr<const CellContext> cell = cells_.get(cellFor(path, directive));
+  std::shared_ptr<const CellContext> cell =
+      cells_.forProgram(cellFor(path, directive), path, launch::findRobotDirective(diag::withoutByteOrderMark(text)));
   // The stimuli file beside it, read here (it is small: the parse is
   // bounded as the CLI's) for the hovers and checks of inputs.
   StimuliBeside beside;

@@ -9,6 +9,9 @@ namespace rs::cli {
 void addCellOptions(CLI::App* cmd, launch::ProgramRequest& request) {
   cmd->add_option("--cell", request.cell,
                   "Workcell (or robot) description file or library name to run on (an image carries its own)");
+  cmd->add_option("--robot", request.robot,
+                  "In a cell of several robots, the one (its label) the program runs on; default: the "
+                  "program's '; robot:' line, else the robot whose PROGRAM it is, else the first");
   addLibOption(cmd, request);
 }
 

@@ -148,6 +148,12 @@ Json programDiagnostics(const ProgramContext& p) {
               {"message", message + "; checked against the default robot"}};
     out.push_back(std::move(j));
   }
+  if (!a.cell().robotProblem.empty())
+    out.push_back({{"range", toJson(p.doc.wordAt(a.cell().robotProblemPos, p.enc))},
+                   {"severity", 1},
+                   {"source", "robotsim"},
+                   {"code", "unknown-robot"},
+                   {"message", a.cell().robotProblem + "; checked against the cell's first robot"}});
   for (const diag::Diagnostic& d : a.compiled().diagnostics) out.push_back(toLsp(p, d));
   for (const Occurrence* o : numericTargets(a.index())) {
     diag::Diagnostic d{a.source().name(), o->pos, diag::Severity::Warning,

@@ -1,0 +1,107 @@
+// Issue 36: in a cell of several robots a program runs on the robot it
+// names (--robot LABEL, else its `; robot: LABEL` line, else the robot
+// whose PROGRAM it is, else the first), compiled for that robot; a label the
+// cell lacks is an error at its place with the cell's labels. The robots
+// stand 3000 apart on x, so the tool centre's x says which one ran (the
+// XR-4 at home has its tool centre at x = 238.1 from its base, as the
+// one-robot runs print).
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "tests/cli/cli_support.h"
+#include "tests/lsp/lsp_session.h"
+#include "tools/lsp/uri.h"
+
+namespace robot_choice_test {
+
+const char* const kCell =
+    "WORKCELL two\n"
+    "  ROBOT rhino-xr4 AT 0 750 0 AS left\n"
+    "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\n"
+    "END\n";
+
+rs::testing::CliResult runIn(const rs::testing::TempDir& dir, const std::string& file, std::vector<std::string> more) {
+  std::vector<std::string> args{"run", dir.file(file), "--cell", dir.file("c.rsd"), "--format=json"};
+  args.insert(args.end(), more.begin(), more.end());
+  return rs::testing::runCli(args);
+}
+
+// The tool centre's x in a JSON summary.
+double tcpX(const std::string& json) {
+  const auto j = rs::lsp::Json::parse(json);
+  return j.at("tcp").at(0).get<double>();
+}
+
+}  // namespace robot_choice_test
+
+using namespace robot_choice_test;
+
+TEST_CASE("robot choice: --robot, the '; robot:' line and the cell's PROGRAM pick the robot", "[labels][robots]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", kCell);
+  dir.write("p.rsp", "        END\n");
+  dir.write("r.rsp", "        END\n");
+  dir.write("d.rsp", "; robot: RIGHT\n        END\n");
+
+  const auto first = runIn(dir, "p.rsp", {});
+  REQUIRE(first.code == 0);
+  const double home = tcpX(first.out);
+  CHECK(home < 1000);  // the first robot, at x 0
+
+  const auto option = runIn(dir, "p.rsp", {"--robot", "right"});
+  REQUIRE(option.code == 0);
+  CHECK(tcpX(option.out) == Approx(home + 3000));
+  const auto directive = runIn(dir, "d.rsp", {});
+  REQUIRE(directive.code == 0);
+  CHECK(tcpX(directive.out) == Approx(home + 3000));
+  const auto program = runIn(dir, "r.rsp", {});  // right's PROGRAM
+  REQUIRE(program.code == 0);
+  CHECK(tcpX(program.out) == Approx(home + 3000));
+  const auto overridden = runIn(dir, "d.rsp", {"--robot", "left"});  // --robot wins over the line
+  REQUIRE(overridden.code == 0);
+  CHECK(tcpX(overridden.out) == Approx(home));
+}
+
+TEST_CASE("robot choice: a label the cell lacks is an error at its place", "[labels][robots]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", kCell);
+  dir.write("r.rsp", "        END\n");
+  dir.write("n.rsp", "; robot: nobody\n        END\n");
+  const auto directive = rs::testing::runCli({"check", dir.file("n.rsp"), "--cell", dir.file("c.rsd")});
+  INFO(directive.err);
+  CHECK(directive.code == 2);
+  CHECK(directive.err.find("n.rsp:1:10: error: this program's '; robot:' line names robot `nobody`, but workcell two "
+                           "has no robot labelled so") != std::string::npos);
+  CHECK(directive.err.find("hint: the cell's robots are `left`, `right`") != std::string::npos);
+  const auto option = rs::testing::runCli({"run", dir.file("n.rsp"), "--robot", "x"});
+  CHECK(option.code == 2);
+  CHECK(option.err.find("--robot: error: --robot names a robot of a cell, but the program runs on no cell") !=
+        std::string::npos);
+}
+
+TEST_CASE("robot choice: the language server checks against the robot '; robot:' names", "[labels][robots][lsp]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", kCell);
+  dir.write("r.rsp", "        END\n");
+  const std::string good = "; cell: c.rsd\n; robot: right\n        END\n";
+  const std::string bad = "; cell: c.rsd\n; robot: lefty\n        END\n";
+  const std::string goodUri = rs::lsp::uriOfPath(dir.write("g.rsp", good));
+  const std::string badUri = rs::lsp::uriOfPath(dir.write("b.rsp", bad));
+  rs::testing::LspSession s;
+  s.initialize();
+  s.open(goodUri, good);
+  s.open(badUri, bad);
+  s.idle();
+  bool unknownInGood = false;
+  for (const auto& d : s.diagnostics(goodUri)) unknownInGood |= d.value("code", "") == "unknown-robot";
+  CHECK_FALSE(unknownInGood);
+  const rs::lsp::Json* found = nullptr;
+  const rs::lsp::Json diags = s.diagnostics(badUri);
+  for (const auto& d : diags)
+    if (d.value("code", "") == "unknown-robot") found = &d;
+  REQUIRE(found);
+  CHECK((*found)["range"]["start"]["line"] == 1);
+  CHECK((*found)["range"]["start"]["character"] == 9);  // after "; robot: "
+  CHECK((*found)["message"].get<std::string>().find("names robot `lefty`") != std::string::npos);
+}
