@@ -83,6 +83,7 @@ class Library {
   /// (its objects placed); false after reporting an error.
   bool buildDevices(const WorkcellDef& def, const DescriptionFile& from, workcell::Workcell& cell);
   bool placeRobot(const PlacementDef& p, const DescriptionFile& from, workcell::Workcell& cell);
+  bool programFitsRobot(const workcell::PlacedRobot& r, const DescriptionFile& from);
   void reportRobotOverlaps(const workcell::Workcell& cell, const DescriptionFile& from);
   /// False (with an error at the ACCELERATION) when the motor would take
   /// vm::kMaxSecondsToSpeed or more to reach its speed.

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include "base/ascii.h"
+#include "diag/read_input.h"
+#include "vm/image_file.h"
 #include "compiler/description/library.h"
 #include "model/workcell/collision_model.h"
 
@@ -50,7 +52,33 @@ bool Library::placeRobot(const PlacementDef& p, const DescriptionFile& from, wor
   if (!fs::is_regular_file(target, ec)) return refuse("is not a regular file");
   r.program = beside.lexically_normal().string();
   r.programPos = p.program.pos;
-  return true;
+  return programFitsRobot(r, from);
+}
+
+// A PROGRAM that is a compiled image must have been compiled for this
+// robot's motors (a source is compiled for it when it runs, its errors in
+// its own file).
+bool Library::programFitsRobot(const workcell::PlacedRobot& r, const DescriptionFile& from) {
+  constexpr std::size_t kMaxImageBytes = 64u << 20;  // as the loader's limit on a program file
+  diag::Result<std::string> bytes = diag::readInput(r.program, kMaxImageBytes, "cannot read the PROGRAM");
+  if (!bytes || !vm::looksLikeImage(*bytes)) return true;  // a source, or unreadable: the run says so
+  const diag::Result<vm::Image> image = vm::loadImage(*bytes, r.program);
+  const std::string written = fs::path(r.program).filename().string();
+  if (!image) {
+    error(from, r.programPos, fmt::format("PROGRAM '{}' is a damaged image: {}", written, image.failure().message),
+          "compile the program again: robotsim compile PROG --cell CELL --robot LABEL");
+    return false;
+  }
+  const std::vector<vm::MotorSpec> motors = motorTable(r.robot);
+  if (image->motors == motors) return true;
+  error(from, r.programPos,
+        image->motors.size() != motors.size()
+            ? fmt::format("PROGRAM '{}' was compiled for robot '{}' with {} motors, but robot '{}' ({}) has {}",
+                          written, image->robotName, image->motors.size(), r.labelOf(), r.robot.name, motors.size())
+            : fmt::format("PROGRAM '{}' was compiled for robot '{}', whose motors differ from those of robot '{}' ({})",
+                          written, image->robotName, r.labelOf(), r.robot.name),
+        fmt::format("compile its source for this robot: robotsim compile PROG --cell CELL --robot {}", r.labelOf()));
+  return false;
 }
 
 // docs/models.md, "Collisions": a robot that overlaps something at its

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/cli/lib/cell_programs.h"
 #include "tools/cli/lib/dap_command.h"
 #include "tools/cli/lib/describe_command.h"
 #include "tools/cli/lib/exit_codes.h"
@@ -51,10 +52,16 @@ constexpr std::array kCommands{
             [](CLI::App* c, Values& v) { addRunCommandOptions(c, v.run); }, runHandler},
     Command{"check", "Compile, verify and simulate; exit 0 only if all is well",
             [](CLI::App* c, Values& v) { addCheckCommandOptions(c, v.run); },
-            [](const Values& v, const Io& io) { return runOrCheck(v.run, true, io.out, io.err); }},
+            [](const Values& v, const Io& io) {
+              return v.run.program.file.empty() ? checkCellPrograms(v.run, io.out, io.err)
+                                                : runOrCheck(v.run, true, io.out, io.err);
+            }},
     Command{"compile", "Compile a program to a bytecode image",
             [](CLI::App* c, Values& v) { addCompileOptions(c, v.program); },
-            [](const Values& v, const Io& io) { return compileCommand(v.program, io.out, io.err); }},
+            [](const Values& v, const Io& io) {
+              return v.program.program.file.empty() ? compileCellPrograms(v.program, io.out, io.err)
+                                                     : compileCommand(v.program, io.out, io.err);
+            }},
     Command{"disasm", "List the bytecode of a program or image",
             [](CLI::App* c, Values& v) { addDisasmOptions(c, v.program); },
             [](const Values& v, const Io& io) { return disasmCommand(v.program, io.out, io.err); }},

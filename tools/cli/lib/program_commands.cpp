@@ -91,9 +91,10 @@ int astCommand(const ProgramCommandOptions& o, std::ostream& out, std::ostream& 
 }
 
 void addCompileOptions(CLI::App* cmd, ProgramCommandOptions& o) {
-  cmd->add_option("file", o.program.file, "Program source")->required();
+  cmd->add_option("file", o.program.file, "Program source (without it: every PROGRAM of --cell, -o a folder)");
   cmd->add_option("-o,--output", o.output,
-                  "Image file to write (.rsb; - for standard output; a device or FIFO is written in place)")
+                  "Image file to write (.rsb; - for standard output; a device or FIFO is written in place; a "
+                  "folder without a program file)")
       ->required();
   addCellOptions(cmd, o.program);
   addMaxErrorsOption(cmd, o.program);

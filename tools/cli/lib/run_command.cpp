@@ -106,8 +106,9 @@ namespace {
 
 // run and check share everything but --trace, --profile and --strict, which
 // come between the program file and the rest.
-void addRunLikeFile(CLI::App* cmd, RunCommandOptions& o) {
-  cmd->add_option("file", o.program.file, "Program source or compiled image")->required();
+void addRunLikeFile(CLI::App* cmd, RunCommandOptions& o, bool required = true) {
+  CLI::Option* file = cmd->add_option("file", o.program.file, "Program source or compiled image");
+  if (required) file->required();
 }
 
 void addRunLikeRest(CLI::App* cmd, RunCommandOptions& o) {
@@ -130,7 +131,7 @@ void addRunCommandOptions(CLI::App* cmd, RunCommandOptions& o) {
 }
 
 void addCheckCommandOptions(CLI::App* cmd, RunCommandOptions& o) {
-  addRunLikeFile(cmd, o);
+  addRunLikeFile(cmd, o, false);  // without it: every PROGRAM of --cell (cell_programs.h)
   cmd->add_flag("--strict", o.strict,
                 "Every warning fails the check: the compile's and the cell's (exit 2, nothing runs), the run's "
                 "(exit 1)");
