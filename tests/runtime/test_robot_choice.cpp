@@ -105,3 +105,31 @@ TEST_CASE("robot choice: the language server checks against the robot '; robot:'
   CHECK((*found)["range"]["start"]["character"] == 9);  // after "; robot: "
   CHECK((*found)["message"].get<std::string>().find("names robot `lefty`") != std::string::npos);
 }
+
+TEST_CASE("robot choice: go to definition from a label to its ROBOT line, from PROGRAM to its file",
+          "[labels][robots][lsp]") {
+  rs::testing::TempDir dir;
+  const std::string cell =
+      "WORKCELL two\n"                                            // 0
+      "  ROBOT rhino-xr4 AT 0 750 0 AS left\n"                    // 1: `left` at 32..36 (0-based, end excluded)
+      "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\n"  // 2: `right` at 35..40, `r.rsp` at 49
+      "  WIRE left.OUT 1 TO right.IN 2\n"                         // 3: `left` at 7, `right` at 22
+      "END\n";
+  const std::string cellUri = rs::lsp::uriOfPath(dir.write("c.rsd", cell));
+  const std::string rUri = rs::lsp::uriOfPath(dir.write("r.rsp", "        END\n"));
+  const std::string program = "; cell: c.rsd\n; robot: left\n        END\n";  // `left` at line 1, 9..13
+  const std::string programUri = rs::lsp::uriOfPath(dir.write("p.rsp", program));
+  rs::testing::LspSession s;
+  s.initialize();
+  s.open(cellUri, cell, "robotsim-description");
+  s.open(programUri, program);
+  s.idle();
+  using rs::testing::LspSession;
+  const auto at = [&](const std::string& uri, unsigned line, unsigned ch) {
+    return s.result("textDocument/definition", LspSession::at(uri, line, ch));
+  };
+  CHECK(at(cellUri, 3, 8) == rs::lsp::Json({{"uri", cellUri}, {"range", LspSession::range(1, 32, 1, 36)}}));
+  CHECK(at(cellUri, 3, 23) == rs::lsp::Json({{"uri", cellUri}, {"range", LspSession::range(2, 35, 2, 40)}}));
+  CHECK(at(cellUri, 2, 51) == rs::lsp::Json({{"uri", rUri}, {"range", LspSession::range(0, 0, 0, 0)}}));
+  CHECK(at(programUri, 1, 10) == rs::lsp::Json({{"uri", cellUri}, {"range", LspSession::range(1, 32, 1, 36)}}));
+}

@@ -290,6 +290,51 @@ Json definitionInFile(const std::string& file, const std::string& name, Encoding
   return location(doc.uri(), Range{});
 }
 
+namespace {
+
+// A ROBOT placement's label (AS, else the description's name) and where it stands.
+const compiler::NameRef& labelRef(const compiler::PlacementDef& pl) { return pl.as.name.empty() ? pl.what : pl.as; }
+
+// The ROBOT line of one of `f`'s workcells labelled `label`, as a location in `doc`.
+Json robotLabelled(const Document& doc, Encoding enc, const compiler::DescriptionFile& f, const std::string& label) {
+  for (const compiler::WorkcellDef& w : f.workcells)
+    for (const compiler::PlacementDef& pl : w.placements)
+      if (pl.isRobot && base::sameName(labelRef(pl).name, label))
+        return location(doc.uri(), definitionName(doc, enc, labelRef(pl).pos, labelRef(pl).name));
+  return nullptr;
+}
+
+// Issue 36: a robot's label in a signal or a wire (`left.OUT 1`, `TO
+// right.IN 2`) goes to its ROBOT line; a ROBOT's PROGRAM to that file.
+Json robotDefinition(const Document& doc, Encoding enc, const compiler::DescriptionFile& f, diag::Pos pos) {
+  for (const compiler::WorkcellDef& w : f.workcells) {
+    for (const workcell::Signal* s : signalsIn(w.devices))
+      if (!s->robot.empty() && covers(s->pos, s->robot.size(), pos)) return robotLabelled(doc, enc, f, s->robot);
+    for (const workcell::Wire& wire : w.devices.wires)
+      if (!wire.robot.empty() && covers(wire.inputPos, wire.robot.size(), pos))
+        return robotLabelled(doc, enc, f, wire.robot);
+    for (const compiler::PlacementDef& pl : w.placements) {
+      if (!pl.isRobot || pl.program.name.empty() || !covers(pl.program.pos, pl.program.name.size(), pos)) continue;
+      const std::string path = pathOfUri(doc.uri());
+      std::error_code ec;
+      const fs::path file = (fs::path(path).parent_path() / pl.program.name).lexically_normal();
+      if (path.empty() || !fs::is_regular_file(file, ec)) return nullptr;
+      return location(uriOfPath(file.string()), Range{});
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+Json robotDefinitionInFile(const std::string& file, const std::string& label, Encoding enc) {
+  constexpr std::size_t kMaxDescriptionBytes = std::size_t{4} << 20;  // as definitionInFile
+  base::FileRead read = base::readFile(file, kMaxDescriptionBytes);
+  if (!read.bytes) return nullptr;
+  const Document doc(uriOfPath(file), Language::Description, 0, std::move(*read.bytes));
+  return robotLabelled(doc, enc, parse(doc).file, label);
+}
+
 Json descriptionDefinition(const Document& doc, Encoding enc, Position at, const std::vector<fs::path>& searchPath) {
   const Parsed p = parse(doc);
   const diag::Pos pos = doc.toPos(at, enc);
@@ -307,6 +352,7 @@ Json descriptionDefinition(const Document& doc, Encoding enc, Position at, const
             return location(doc.uri(), definitionName(doc, enc, pl.as.name.empty() ? pl.what.pos : pl.as.pos,
                                                       pl.as.name.empty() ? pl.what.name : pl.as.name));
   }
+  if (Json robot = robotDefinition(doc, enc, p.file, pos); !robot.is_null()) return robot;
   const compiler::NameRef* ref = referenceAt(p.file, pos);
   if (!ref) return nullptr;
   // Defined in this file?

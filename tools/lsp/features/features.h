@@ -153,6 +153,8 @@ Json descriptionDefinition(const Document& doc, Encoding enc, Position at,
 /// WORKCELL, ROBOT, GRIPPER, OBJECT or LINK, the name's range); for a name
 /// that is the file's path, its first workcell or robot; else its top.
 Json definitionInFile(const std::string& file, const std::string& name, Encoding enc);
+/// The ROBOT line labelled `label` (AS, else the description name) in a workcell of FILE, or null (issue 36).
+Json robotDefinitionInFile(const std::string& file, const std::string& label, Encoding enc);
 Json stimuliDiagnostics(const Document& doc, Encoding enc);
 Json stimuliSymbols(const Document& doc, Encoding enc);
 Json stimuliHover(const Document& doc, Encoding enc, Position at);

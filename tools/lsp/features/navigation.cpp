@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include "base/ascii.h"
+#include "diag/source_file.h"
+#include "launch/cell_directive.h"
 #include "tools/lsp/features/features.h"
 #include "tools/lsp/protocol.h"
 #include "tools/lsp/uri.h"
@@ -48,6 +50,14 @@ Json definition(const ProgramContext& p, Position at, const std::vector<std::fil
     const std::string file = findDescriptionFile(name, searchPath);
     if (file.empty()) return nullptr;
     return definitionInFile(file, name, p.enc);
+  }
+  // `; robot: LABEL` (issue 36): that robot's ROBOT line in the cell's file.
+  if (const auto robot = launch::findRobotDirective(diag::withoutByteOrderMark(p.doc.text()))) {
+    const Range r = p.doc.rangeOf(robot->pos, robot->name.size(), p.enc);
+    if (at.line == r.start.line && at.character >= r.start.character && at.character <= r.end.character) {
+      const std::string file = findDescriptionFile(p.analysis.cell().name, searchPath);
+      return file.empty() ? Json(nullptr) : robotDefinitionInFile(file, robot->name, p.enc);
+    }
   }
   const Occurrence* o = occurrenceAt(p, at);
   if (!o) return nullptr;
