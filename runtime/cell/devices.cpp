@@ -215,6 +215,7 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, RobotIo& 
     if (!d.feeders[f].everyUs) state_.nextDue[f] = INT64_MAX;
   id_ = clock.add(*this);
   for (const workcell::Wire& w : d.wires) {
+    if (!isDriven(w.robot)) continue;  // another robot's input: nothing reads it
     wires_.push_back(std::make_unique<Wire>(w, io));
     wires_.back()->id = clock.add(*wires_.back());
   }
@@ -231,11 +232,15 @@ bool CellDevices::signal(const Signal& s) const {
   switch (s.kind) {
     case Signal::Kind::On: return true;
     case Signal::Kind::Off: return false;
-    case Signal::Kind::Output: return io_.output(s.number);
+    case Signal::Kind::Output: return isDriven(s.robot) && io_.output(s.number);
     case Signal::Kind::Input: return false;  // another robot's input: issue 36
     case Signal::Kind::Sensor: return s.sensor < state_.sensorOn.size() && state_.sensorOn[s.sensor];
   }
   return false;
+}
+
+bool CellDevices::isDriven(const std::string& robot) const {
+  return robot.empty() || cell_.robotLabeled(robot) == cell_.drivenRobotIndex();
 }
 
 bool CellDevices::running(std::size_t c) const { return signal(cell_.devices.conveyors[c].run); }
@@ -287,12 +292,14 @@ void CellDevices::sync() {
 void CellDevices::outputChanged(int output) {
   const workcell::Devices& d = cell_.devices;
   bool reads = false;
-  for (const workcell::Conveyor& c : d.conveyors) reads |= c.run.kind == Signal::Kind::Output && c.run.number == output;
-  for (const workcell::Feeder& f : d.feeders)
-    reads |= f.when && f.when->kind == Signal::Kind::Output && f.when->number == output;
+  const auto isOutput = [&](const Signal& s) {
+    return s.kind == Signal::Kind::Output && s.number == output && isDriven(s.robot);
+  };
+  for (const workcell::Conveyor& c : d.conveyors) reads |= isOutput(c.run);
+  for (const workcell::Feeder& f : d.feeders) reads |= f.when && isOutput(*f.when);
   if (reads) clock_.schedule(clock_.now(), id_);
   for (const auto& w : wires_)
-    if (w->wire().source.kind == Signal::Kind::Output && w->wire().source.number == output)
+    if (isOutput(w->wire().source))
       clock_.schedule(clock_.now() + w->wire().afterUs, w->id, io_.output(output) ? 1 : 0);
 }
 

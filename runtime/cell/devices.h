@@ -123,6 +123,10 @@ class CellDevices final : public CellProcess {
   void moveTo(vm::Micros now);
   void feed(std::size_t f, vm::Micros now);
   bool signal(const workcell::Signal& s) const;
+  /// Whether a signal's or a wire's robot label names the robot this run
+  /// drives (empty: it does). Another robot runs no program: its outputs
+  /// stay OFF and nothing reads its inputs (issue 36 runs them all).
+  bool isDriven(const std::string& robot) const;
   Eigen::AlignedBox3d box(std::size_t o) const;
   bool rides(std::size_t o) const;
   void place(std::size_t o, const Eigen::Vector3d& shift);

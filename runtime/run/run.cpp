@@ -187,10 +187,15 @@ void Run::waitOnCell(const vm::RunOutcome& waiting) {
   SimMachine& sim = *rig_->sim();
   Scheduler& clock = rig_->running().clock();
   // What the robot changed since (an output, a take) acts first, at now.
+  const vm::IoMask inputsBefore = sim.inputs();
   if (vm::Status s = rig_->advanceCell(clock.now()); !s) return sim.endWait(s);
   if (waiting.wakeAt != vm::Status::kNever) rig_->wakeRobotAt(waiting.wakeAt);
   const std::optional<vm::Micros> next = clock.nextTime();
   if (!next) {
+    // A wire without AFTER may have answered the robot at this very
+    // instant (OUTSIG 1 ON, then WAITFOR on the input OUT 1 drives): the
+    // machine looks at its inputs again before anything is called a deadlock.
+    if (sim.inputs() != inputsBefore) return;
     sim.endWait(sim.waitDeadlock());  // only a WAITFOR waits for nothing scheduled
     return;
   }

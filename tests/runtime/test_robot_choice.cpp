@@ -133,3 +133,39 @@ TEST_CASE("robot choice: go to definition from a label to its ROBOT line, from P
   CHECK(at(cellUri, 2, 51) == rs::lsp::Json({{"uri", rUri}, {"range", LspSession::range(0, 0, 0, 0)}}));
   CHECK(at(programUri, 1, 10) == rs::lsp::Json({{"uri", cellUri}, {"range", LspSession::range(1, 32, 1, 36)}}));
 }
+
+TEST_CASE("robot choice: wires and signals act for the robot the run drives only", "[labels][robots][devices]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd",
+            "WORKCELL two\n"
+            "  ROBOT rhino-xr4 AT 0 750 0 AS left\n"
+            "  ROBOT rhino-xr4 AT 3000 750 0 AS right\n"
+            "  WIRE left.OUT 1 TO right.IN 2\n"
+            "  WIRE right.OUT 1 TO right.IN 3\n"
+            "END\n");
+  dir.write("p.rsp", "        OUTSIG 1 ON\n        WAITFOR 3 ON\n        END\n");
+  // On right: its OUT 1 drives its IN 3; left runs nothing, so IN 2 stays OFF.
+  const auto right = runIn(dir, "p.rsp", {"--robot", "right"});
+  INFO(right.err);
+  REQUIRE(right.code == 0);
+  const auto j = rs::lsp::Json::parse(right.out);
+  CHECK(j["inputs"][2] == true);
+  CHECK(j["inputs"][1] == false);
+  // On left: no wire ends at left's IN 3, so its WAITFOR never ends.
+  const auto left = runIn(dir, "p.rsp", {"--robot", "left"});
+  CHECK(left.code == 1);
+  CHECK(rs::lsp::Json::parse(left.out)["diagnostics"][0]["code"] == "deadlock");
+}
+
+TEST_CASE("a wire without AFTER answers a WAITFOR at the same instant, not a deadlock", "[cell][devices]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", "WORKCELL one\n  ROBOT rhino-xr4 AT 0 750 0\n  WIRE OUT 1 TO IN 3\nEND\n");
+  dir.write("p.rsp", "        OUTSIG 1 ON\n        WAITFOR 3 ON\n        END\n");
+  const auto r = runIn(dir, "p.rsp", {});
+  INFO(r.err);
+  CHECK(r.code == 0);
+  const auto j = rs::lsp::Json::parse(r.out);
+  CHECK(j["status"] == "finished");
+  CHECK(j["time"] == 0.0);  // the wire's change is at the OUTSIG's instant
+  CHECK(j["inputs"][2] == true);
+}
