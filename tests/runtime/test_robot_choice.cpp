@@ -37,7 +37,7 @@ double tcpX(const std::string& json) {
 
 using namespace robot_choice_test;
 
-TEST_CASE("robot choice: --robot, the '; robot:' line and the cell's PROGRAM pick the robot", "[labels][robots]") {
+TEST_CASE("robot choice: --robot, the 'robot:' comment line and the cell's PROGRAM pick the robot", "[labels][robots]") {
   rs::testing::TempDir dir;
   dir.write("c.rsd", kCell);
   dir.write("p.rsp", "        END\n");
@@ -80,7 +80,7 @@ TEST_CASE("robot choice: a label the cell lacks is an error at its place", "[lab
         std::string::npos);
 }
 
-TEST_CASE("robot choice: the language server checks against the robot '; robot:' names", "[labels][robots][lsp]") {
+TEST_CASE("robot choice: the language server checks against the robot a 'robot:' comment names", "[labels][robots][lsp]") {
   rs::testing::TempDir dir;
   dir.write("c.rsd", kCell);
   dir.write("r.rsp", "        END\n");

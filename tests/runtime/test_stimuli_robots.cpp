@@ -75,7 +75,7 @@ TEST_CASE("stimuli robots: a bad label or number after the label is an error at 
   CHECK(f[2].message == "expected an input number 1..8, got '3.5'");
 }
 
-TEST_CASE("stimuli robots: the driven robot's labelled stimulus drives it; another's is a warning", "[stimuli][labels]") {
+TEST_CASE("stimuli robots: the driven robot's labelled stimulus drives it, another's is a warning", "[stimuli][labels]") {
   rs::testing::TempDir dir;
   dir.write("c.rsd", kTwoRobots);
   dir.write("s.stim", "at 1.5 input left.3 on\nat 2 input right.3 on\n");
