@@ -17,7 +17,10 @@ std::string_view hintFor(const vm::Image& image, const vm::RunOutcome& outcome) 
     case vm::StopReason::TimeLimit: return "allow more with --max-time SECONDS";
     case vm::StopReason::KnotLimit: return "allow more with --max-knots N";
     case vm::StopReason::Deadlock: return "inputs change only by --input N=ON@SECONDS or a --stimuli file";
-    case vm::StopReason::InstantLimit: return "give the loop a DELAY, a move or a WAITFOR, or a way out";
+    case vm::StopReason::InstantLimit:
+      if (outcome.message.find("; wires changed") != std::string::npos)
+        return "give one of those wires AFTER SECONDS, or the loop a DELAY or a way out";
+      return "give the loop a DELAY, a move or a WAITFOR, or a way out";
     case vm::StopReason::RuntimeError:
       // The main program ran on into a subroutine: its END is missing.
       if (vm::has(image.code[outcome.index].op, vm::kReturns))  // its one failure: an empty call stack

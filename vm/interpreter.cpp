@@ -357,11 +357,12 @@ RunOutcome Interpreter::checkpoint(const RunLimits& limits, std::uint32_t pc, st
     return stopAt(StopReason::StepLimit, fmt::format("step limit of {} instructions reached", limits.maxSteps), pc, pc,
                   steps);
   const std::uint64_t stillLimit = stillLimitOf(limits);
-  if (steps - state_.stillSince >= stillLimit)
-    return stopAt(StopReason::InstantLimit,
-                  fmt::format("{} instructions ran at {} s without the simulated clock moving", stillLimit,
-                              base::formatSeconds(state_.clockSeen)),
-                  pc, pc, steps);
+  if (steps - state_.stillSince >= stillLimit) {
+    std::string message = fmt::format("{} instructions ran at {} s without the simulated clock moving", stillLimit,
+                                      base::formatSeconds(state_.clockSeen));
+    if (std::string why = machine_.stillReason(); !why.empty()) message += "; " + why;
+    return stopAt(StopReason::InstantLimit, std::move(message), pc, pc, steps);
+  }
   return pauseAt(pc, steps);
 }
 

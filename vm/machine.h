@@ -109,6 +109,11 @@ class Machine {
   /// line costs, which a run's knot limit bounds (vm::RunLimits::maxKnots)
   /// and a debugger's slices count. 0 on a machine that does not count them.
   virtual std::uint64_t knots() const { return 0; }
+  /// Why the clock may be standing still now, where the machine knows (on
+  /// a cell: the wires that changed its inputs at this instant, which a
+  /// program answering its own inputs through them keeps doing): added to
+  /// a clock-standing-still stop. Empty when it does not know.
+  virtual std::string stillReason() const { return {}; }
   /// Outputs and inputs as bit masks, bit 0 = line 1.
   virtual IoMask outputs() const = 0;
   virtual IoMask inputs() const = 0;

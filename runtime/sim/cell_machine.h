@@ -53,6 +53,7 @@ class CellMachine final : public vm::Machine {
   void view(std::int32_t x, std::int32_t y, std::int32_t z) override { motion_.view(x, y, z); }
   vm::Micros now() const override { return motion_.now(); }
   std::uint64_t knots() const override { return motion_.knots(); }
+  std::string stillReason() const override { return motion_.stillReason(); }
   vm::IoMask outputs() const override { return motion_.outputs(); }
   vm::IoMask inputs() const override { return motion_.inputs(); }
 

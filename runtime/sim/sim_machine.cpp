@@ -5,6 +5,7 @@
 #include "vm/motor_range.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -77,7 +78,7 @@ bool SimMachine::setInputNow(int input, bool on) {
 
 SimMachine::State SimMachine::state() const {
   return {positions_, segments_, path_,       now(),   knots_,  outputs_, inputs_, windowShift_,
-          viewRotation_, schedule_.state(), waitUntil_, waitInput_, waitOn_, waitMove_};
+          viewRotation_, schedule_.state(), waitUntil_, waitInput_, waitOn_, waitMove_, wiresAt_, instantWires_};
 }
 
 void SimMachine::restore(const State& s) {
@@ -85,6 +86,7 @@ void SimMachine::restore(const State& s) {
   clock_->restoreNow(s.now);  // on a cell, the cell's snapshot puts back the rest of its clock
   waitUntil_ = s.waitUntil, waitInput_ = s.waitInput, waitOn_ = s.waitOn, waitMove_ = s.waitMove;
   outputs_ = s.outputs, inputs_ = s.inputs;
+  wiresAt_ = s.wiresAt, instantWires_ = s.instantWires;
   windowShift_ = s.windowShift, viewRotation_ = s.viewRotation;
   schedule_.restore(s.schedule);
 }
@@ -241,9 +243,26 @@ bool SimMachine::setInputBy(int input, bool on, const InputCause& cause) {
   const vm::IoMask after = vm::withLine(inputs_, input, on);
   if (after == inputs_) return true;
   inputs_ = after;
+  if (cause.kind == InputCause::Kind::Wire) noteWire(cause);
   if (inputListener_) inputListener_(now(), inputs_);
   if (causeListener_) causeListener_(now(), cause);
   return true;
+}
+
+// A program that answers its own inputs through wires without AFTER keeps
+// the clock still: the stop names the wires that did it at this instant.
+void SimMachine::noteWire(const InputCause& cause) {
+  if (wiresAt_ != now()) instantWires_.clear(), wiresAt_ = now();
+  std::string wire = fmt::format("{} TO IN {} (line {})", cause.source, cause.input, cause.line);
+  if (instantWires_.size() < kMaxStillWires &&
+      std::find(instantWires_.begin(), instantWires_.end(), wire) == instantWires_.end())
+    instantWires_.push_back(std::move(wire));
+}
+
+std::string SimMachine::stillReason() const {
+  if (wiresAt_ != now() || instantWires_.empty()) return {};
+  return fmt::format("wires changed its inputs at that instant without end: {}",
+                     fmt::join(instantWires_, ", "));
 }
 
 Status SimMachine::resume() {

@@ -106,6 +106,9 @@ class SimMachine final : public vm::Machine {
   const Scheduler& clock() const { return *clock_; }
   /// Every moveLockStep made so far.
   std::uint64_t knots() const override { return knots_; }
+  /// The wires that changed an input at this instant (kMaxStillWires at most).
+  std::string stillReason() const override;
+  static constexpr std::size_t kMaxStillWires = 8;
   vm::IoMask outputs() const override { return outputs_; }
   vm::IoMask inputs() const override { return inputs_; }
 
@@ -146,6 +149,9 @@ class SimMachine final : public vm::Machine {
     vm::Micros waitUntil = 0;
     int waitInput = 0;
     bool waitOn = false, waitMove = false;
+    /// The wires that changed an input at `wiresAt` (stillReason).
+    vm::Micros wiresAt = -1;
+    std::vector<std::string> instantWires;
     bool operator==(const State&) const = default;
   };
   State state() const;
@@ -162,6 +168,7 @@ class SimMachine final : public vm::Machine {
   vm::Status waitForInput(int input, bool on);
   vm::Status fireRules(int output, bool on);
   void applyInputs();
+  void noteWire(const InputCause& cause);
 
   std::vector<vm::MotorSpec> motors_;
   std::vector<stimuli::ReactiveRule> rules_;
@@ -181,6 +188,8 @@ class SimMachine final : public vm::Machine {
   std::uint64_t knots_ = 0;
   vm::IoMask outputs_ = 0;
   vm::IoMask inputs_ = 0;
+  vm::Micros wiresAt_ = -1;
+  std::vector<std::string> instantWires_;
   CameraTriple windowShift_;
   CameraTriple viewRotation_;
   std::function<void(vm::Micros, vm::IoMask)> inputListener_;

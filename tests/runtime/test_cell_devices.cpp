@@ -174,3 +174,36 @@ TEST_CASE("a stimulus for an input the cell wires is an error at the stimulus's 
   CHECK(diags[0].message == "input 1 has a second source: this stimulus, and the WIRE at line 14 of workcell c");
   CHECK_FALSE(diags[0].hint.empty());  // the WIRE is line 14: 8 lines of objects, WORKCELL, ROBOT, two OBJECTs, SENSOR
 }
+
+TEST_CASE("a program that answers its own inputs through wires at one instant stops with the wires named",
+          "[cell][devices]") {
+  // OUT 1 drives IN 1 inverted, OUT 2 drives IN 2: each WAITFOR is met at
+  // once by the OUTSIG before it, so the loop never lets the clock move.
+  const auto cell = cellOf(
+      "  WIRE OUT 1 TO IN 1 INVERTED\n"
+      "  WIRE OUT 2 TO IN 2\n");
+  const auto r = runOn(cell,
+                       "l:      OUTSIG 1 OFF\n"
+                       "        WAITFOR 1 ON\n"
+                       "        OUTSIG 2 ON\n"
+                       "        WAITFOR 2 ON\n"
+                       "        OUTSIG 1 ON\n"
+                       "        WAITFOR 1 OFF\n"
+                       "        OUTSIG 2 OFF\n"
+                       "        WAITFOR 2 OFF\n"
+                       "        GOTO l\n");
+  REQUIRE(r.run->outcome());
+  CHECK(r.run->outcome()->reason == rs::vm::StopReason::InstantLimit);
+  CHECK(r.run->rig().clock() == 0);
+  // The WORKCELL block's WIRE lines are 13 and 14 (8 lines of objects, WORKCELL, ROBOT, two OBJECTs).
+  const std::string& m = r.run->outcome()->message;
+  INFO(m);
+  CHECK(m.find("; wires changed its inputs at that instant without end: ") != std::string::npos);
+  CHECK(m.find("OUT 1 TO IN 1 (line 13)") != std::string::npos);
+  CHECK(m.find("OUT 2 TO IN 2 (line 14)") != std::string::npos);
+  // Without wires, the same kind of stop names none.
+  const auto plain = runOn(cellOf(""), "l:      OUTSIG 1 ON\n        GOTO l\n");
+  REQUIRE(plain.run->outcome());
+  CHECK(plain.run->outcome()->reason == rs::vm::StopReason::InstantLimit);
+  CHECK(plain.run->outcome()->message.find("wires") == std::string::npos);
+}
