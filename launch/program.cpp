@@ -13,6 +13,7 @@
 #include "model/workcell/cell_file.h"
 #include "stdlib/default_robot.h"
 #include "vm/image_file.h"
+#include "vm/io_lines.h"
 
 namespace rs::launch {
 
@@ -28,6 +29,18 @@ std::string decodeImageCell(const vm::Image& image, std::shared_ptr<const workce
   diag::Result<workcell::Workcell> decoded = workcell::decodeCell(image.cell);
   if (!decoded) return decoded.failure().message;
   if (!decoded->drivenRobot()) return "its cell has no robot";
+  // The cell section bounds a line's number loosely; the machine's are 1..kIoCount.
+  const auto badLine = [](const workcell::Signal& s) {
+    return (s.kind == workcell::Signal::Kind::Output || s.kind == workcell::Signal::Kind::Input) &&
+           !vm::isIoLine(s.number);
+  };
+  const workcell::Devices& devices = decoded->devices;
+  for (const workcell::Wire& w : devices.wires)
+    if (!vm::isIoLine(w.input) || badLine(w.source)) return "cell section: a wire to or from a line the machine lacks";
+  for (const workcell::Conveyor& c : devices.conveyors)
+    if (badLine(c.run)) return "cell section: a conveyor run by a line the machine lacks";
+  for (const workcell::Feeder& f : devices.feeders)
+    if (f.when && badLine(*f.when)) return "cell section: a feeder fed by a line the machine lacks";
   // The cell's bytes hold the geometry; how motors accelerate is in the
   // image's motor table alone (an image's 1.1 motion section), so that a
   // cell of constant-speed motors keeps the bytes it always had. The
