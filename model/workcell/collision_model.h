@@ -257,6 +257,10 @@ class CollisionData {
   /// entries. No allocation.
   std::optional<Contact> findContactOrClearance(std::span<const std::int32_t> encoders, const CollisionQuery& query,
                                                 SweepMotion& motion, std::span<PartClearance> clearance);
+  /// Poses the arm at `encoders` and checks nothing: frame() and
+  /// robotPose() answer for this pose (what a sensor that sees the robot
+  /// asks, runtime/cell/robot_sight.h). No allocation.
+  void poseOnly(std::span<const std::int32_t> encoders) { pose(encoders); }
   /// Frame i (0..n) of the arm in the world at the last pose checked:
   /// joint i + 1 turns about (or slides along) its z axis.
   const Eigen::Isometry3d& frame(std::size_t i) const { return F_world_i_[i]; }

@@ -1,5 +1,7 @@
 #include "runtime/cell/devices.h"
 
+#include "runtime/cell/box_geometry.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -17,45 +19,12 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // part let go 1 above the belt, as a gripper holding it 1 above its middle
 // does, rides it).
 constexpr double kRestTolerance = 1.0 + 1e-6;
-// Touching counts as crossing: boxes and beams are closed sets, given this slack.
-constexpr double kTouch = 1e-7;
 // Motion that never ends is solved for within this many seconds.
 constexpr double kHorizon = 1e9;
-
-Eigen::AlignedBox3d transformed(const Eigen::AlignedBox3d& b, const Eigen::Isometry3d& pose) {
-  Eigen::AlignedBox3d out;
-  if (b.isEmpty()) return out;
-  for (int c = 0; c < 8; ++c) out.extend(pose * b.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
-  return out;
-}
-
-bool boxesTouch(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
-  for (int k = 0; k < 3; ++k)
-    if (a.min()[k] > b.max()[k] + kTouch || b.min()[k] > a.max()[k] + kTouch) return false;
-  return true;
-}
 
 bool boxesOverlap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
   for (int k = 0; k < 3; ++k)
     if (a.min()[k] >= b.max()[k] - 1e-6 || b.min()[k] >= a.max()[k] - 1e-6) return false;
-  return true;
-}
-
-// The segment a..b meets the box (slabs, with the touch slack).
-bool beamTouches(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::AlignedBox3d& box) {
-  double lo = 0, hi = 1;
-  const Eigen::Vector3d e = b - a;
-  for (int k = 0; k < 3; ++k) {
-    const double mn = box.min()[k] - kTouch, mx = box.max()[k] + kTouch;
-    if (std::abs(e[k]) < 1e-15) {
-      if (a[k] < mn || a[k] > mx) return false;
-      continue;
-    }
-    double t0 = (mn - a[k]) / e[k], t1 = (mx - a[k]) / e[k];
-    if (t0 > t1) std::swap(t0, t1);
-    lo = std::max(lo, t0), hi = std::min(hi, t1);
-    if (lo > hi) return false;
-  }
   return true;
 }
 
@@ -224,9 +193,28 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, RobotIo& 
     if (signal(w->wire().source) != w->wire().inverted)
       clock.schedule(clock.now() + w->wire().afterUs, w->id, signal(w->wire().source) ? 1 : 0);
   state_.revision = world.revision();
+  if (!d.sensors.empty()) {
+    sight_ = std::make_unique<RobotSight>(cell, world, io.motorCount());
+    if (!sight_->matters()) sight_.reset();
+  }
 }
 
 CellDevices::~CellDevices() = default;
+
+void CellDevices::robotMoves(vm::Micros until) {
+  if (!sight_ || until == state_.moveUntil) return;
+  state_.moveUntil = until;
+  watchRobot(clock_.now());
+}
+
+void CellDevices::watchRobot(vm::Micros now) {
+  if (!sight_ || state_.moveUntil <= now) return;
+  const std::optional<vm::Micros> next = sight_->firstChange(
+      now, state_.moveUntil, [this](vm::Micros t, std::span<std::int32_t> out) { io_.motorsAt(t, out); });
+  if (!next || *next == state_.sightWakeAt) return;
+  state_.sightWakeAt = *next;
+  clock_.schedule(*next, id_);
+}
 
 bool CellDevices::signal(const Signal& s) const {
   switch (s.kind) {
@@ -246,7 +234,7 @@ bool CellDevices::isDriven(const std::string& robot) const {
 bool CellDevices::running(std::size_t c) const { return signal(cell_.devices.conveyors[c].run); }
 
 Eigen::AlignedBox3d CellDevices::box(std::size_t o) const {
-  return transformed(designBoxes_[o], world_.restingPose(o));
+  return transformedBox(designBoxes_[o], world_.restingPose(o));
 }
 
 void CellDevices::place(std::size_t o, const Eigen::Vector3d& shift) {
@@ -359,7 +347,7 @@ void CellDevices::wake(const CellEvent&, Scheduler& clock) {
     const workcell::Conveyor& c = d.conveyors[state_.ridden[o] - 1];
     const workcell::PlacedObject& obj = cell_.objects[c.object];
     if (!obj.belt || !obj.belt->endOpen) continue;
-    const Eigen::AlignedBox3d belt = transformed(obj.belt->surface, obj.F_world_design);
+    const Eigen::AlignedBox3d belt = transformedBox(obj.belt->surface, obj.F_world_design);
     const Eigen::Vector3d dir = (obj.F_world_design.linear() * obj.belt->direction).normalized();
     const Eigen::AlignedBox3d b = box(o);
     const double end = dir.dot(belt.center()) + dir.cwiseAbs().dot(belt.sizes() / 2);
@@ -424,6 +412,14 @@ void CellDevices::wake(const CellEvent&, Scheduler& clock) {
       }
     nextSensor_[s] = sees;
   }
+  // What the robot and the part it carries show them, where they are now.
+  if (sight_) {
+    motorsNow_.assign(io_.motorCount(), 0);
+    io_.motorsAt(now, motorsNow_);
+    sight_->sees(motorsNow_, robotSees_);
+    for (std::size_t s = 0; s < d.sensors.size(); ++s) nextSensor_[s] = nextSensor_[s] || robotSees_[s];
+    watchRobot(now);
+  }
   plan(now);
   state_.revision = world_.revision();
 }
@@ -464,7 +460,7 @@ void CellDevices::plan(vm::Micros now) {
     const workcell::PlacedObject& obj = cell_.objects[conveyor.object];
     if (!obj.belt) continue;
     Geometry g;
-    g.belt = transformed(obj.belt->surface, obj.F_world_design);
+    g.belt = transformedBox(obj.belt->surface, obj.F_world_design);
     g.dir = (obj.F_world_design.linear() * obj.belt->direction).normalized();
     g.lateral = Eigen::Vector3d::UnitY().cross(g.dir);
     if (g.lateral.norm() < 1e-9) g.lateral = Eigen::Vector3d::UnitX();
@@ -534,7 +530,7 @@ void CellDevices::plan(vm::Micros now) {
       // The centre passes the open end.
       const workcell::Conveyor& c = d.conveyors[state_.ridden[o] - 1];
       const workcell::PlacedObject& obj = cell_.objects[c.object];
-      const Eigen::AlignedBox3d belt = transformed(obj.belt->surface, obj.F_world_design);
+      const Eigen::AlignedBox3d belt = transformedBox(obj.belt->surface, obj.F_world_design);
       const Eigen::Vector3d dir = w / speed;
       const double end = dir.dot(belt.center()) + dir.cwiseAbs().dot(belt.sizes() / 2);
       next = std::min(next, startMicro(now, std::max(0.0, (end - dir.dot(b.center())) / speed)));

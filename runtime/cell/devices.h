@@ -17,11 +17,13 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "model/workcell/model.h"
 #include "runtime/cell/input_cause.h"
+#include "runtime/cell/robot_sight.h"
 #include "runtime/cell/scheduler.h"
 #include "runtime/cell/world.h"
 #include "vm/machine.h"
@@ -43,6 +45,11 @@ class RobotIo {
   virtual bool output(int output) const = 0;
   /// Input `input` turns `on` now, because of `cause` (a wire).
   virtual void setInput(int input, bool on, const InputCause& cause) = 0;
+  /// The robot's motors (arm, then gripper) at time `t` of the move under
+  /// way, or where they stand (what a sensor that sees the robot or its
+  /// carried part looks at).
+  virtual void motorsAt(vm::Micros t, std::span<std::int32_t> out) const = 0;
+  virtual std::size_t motorCount() const = 0;
 };
 
 /// One thing a device did, for the trace and the run log.
@@ -75,6 +82,10 @@ class CellDevices final : public CellProcess {
 
   /// The robot's output changed now: the devices that read it act.
   void outputChanged(int output);
+  /// The robot moves from now until `until`: a sensor that sees the part
+  /// it carries (or the robot) changes at the exact microsecond the move
+  /// brings it there (robot_sight.h).
+  void robotMoves(vm::Micros until);
   /// The world may have changed outside the devices (a take, a let-go):
   /// they look again now.
   void sync();
@@ -111,6 +122,8 @@ class CellDevices final : public CellProcess {
     std::vector<double> travel;              // per object: how far it rides (may be infinite)
     std::uint64_t revision = 0;              // the world's, as the devices last left it
     std::uint64_t wakeTag = 0;               // the plan's wake (older ones are stale)
+    vm::Micros moveUntil = 0;                // the robot's move under way ends here
+    vm::Micros sightWakeAt = -1;             // the wake for what the robot shows the sensors next
     bool operator==(const State&) const = default;
   };
   const State& state() const { return state_; }
@@ -131,6 +144,8 @@ class CellDevices final : public CellProcess {
   bool rides(std::size_t o) const;
   void place(std::size_t o, const Eigen::Vector3d& shift);
   void sourceChanged(const workcell::Signal& source);
+  /// The next time the moving robot changes what a sensor sees, woken then.
+  void watchRobot(vm::Micros now);
 
   const workcell::Workcell& cell_;
   World& world_;
@@ -144,6 +159,9 @@ class CellDevices final : public CellProcess {
   std::vector<std::unique_ptr<Wire>> wires_;
   State state_;
   std::vector<bool> nextSensor_;  // evaluate's sensor values, committed in update
+  std::unique_ptr<RobotSight> sight_;
+  std::vector<bool> robotSees_;   // scratch: what the robot shows each sensor now
+  std::vector<std::int32_t> motorsNow_;
   std::vector<DeviceEvent> events_;
   std::optional<std::string> fault_;
 };

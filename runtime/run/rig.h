@@ -157,6 +157,11 @@ class Rig {
   /// a stimulus a WAITFOR waits for), so the clock stops there. Scheduled
   /// once per time.
   void wakeRobotAt(vm::Micros at);
+  /// The robot's wait under way is a move that ends at `until`: the
+  /// devices watch what it shows the sensors on the way.
+  void robotMovesUntil(vm::Micros until) {
+    if (devices_) devices_->robotMoves(until);
+  }
 
   bool canSnapshot() const { return sim_ != nullptr; }
   /// The whole state (the simulated machine only: check canSnapshot()).
@@ -182,6 +187,10 @@ class Rig {
     SimMachine* sim = nullptr;
     bool output(int output) const override { return vm::lineIsOn(sim->outputs(), output); }
     void setInput(int input, bool on, const InputCause& cause) override { sim->setInputBy(input, on, cause); }
+    void motorsAt(vm::Micros t, std::span<std::int32_t> out) const override {
+      for (std::size_t m = 0; m < out.size(); ++m) out[m] = sim->positionAt(m, t);
+    }
+    std::size_t motorCount() const override { return sim->motors().size(); }
   };
   SimIo io_;
   std::unique_ptr<CellDevices> devices_;

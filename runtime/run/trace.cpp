@@ -66,6 +66,7 @@ TraceWriter::TraceWriter(std::ostream& out, TraceFormat format, const runtime::R
     : out_(out), format_(format), run_(run) {}
 
 bool TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
+  if (format_ == TraceFormat::Text) textHeader(vm);
   inputEvents();
   if (format_ == TraceFormat::Text) text(vm, index);
   else json(vm, index);
@@ -173,17 +174,22 @@ void TraceWriter::collisionEvents() {
   }
 }
 
+// The column heads, once, before anything of the first step (the devices'
+// and inputs' events during it come before its own line).
+void TraceWriter::textHeader(const vm::Interpreter& vm) {
+  if (headerDone_) return;
+  const vm::Image& im = vm.image();
+  // Wide enough for every motor at the longest value its range allows.
+  for (const vm::MotorSpec& m : im.motors)
+    motorsWidth_ += 3 + std::max(fmt::formatted_size("{}", m.min), fmt::formatted_size("{}", m.max));
+  out_ << fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {:<8}  {}{}\n", "time", "instr", "line", "instruction",
+                      "motors", motorsWidth_, "outputs", run_.rig().world() ? fmt::format("{:<28}  ", "tool centre point") : "",
+                      "changed");
+  headerDone_ = true;
+}
+
 void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
   const vm::Image& im = vm.image();
-  if (!headerDone_) {
-    // Wide enough for every motor at the longest value its range allows.
-    for (const vm::MotorSpec& m : im.motors)
-      motorsWidth_ += 3 + std::max(fmt::formatted_size("{}", m.min), fmt::formatted_size("{}", m.max));
-    out_ << fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {:<8}  {}{}\n", "time", "instr", "line", "instruction",
-                        "motors", motorsWidth_, "outputs", run_.rig().world() ? fmt::format("{:<28}  ", "tool centre point") : "",
-                        "changed");
-    headerDone_ = true;
-  }
   std::string motors;
   const auto pos = vm.machine().positions();
   for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? " " : "", im.motors[i].letter, pos[i]);

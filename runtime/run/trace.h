@@ -25,6 +25,7 @@ class TraceWriter final : public vm::StepObserver {
   void finish();
 
  private:
+  void textHeader(const vm::Interpreter& vm);
   void text(const vm::Interpreter& vm, std::uint32_t index);
   void json(const vm::Interpreter& vm, std::uint32_t index);
   std::ostream& out_;

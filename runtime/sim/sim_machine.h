@@ -109,6 +109,8 @@ class SimMachine final : public vm::Machine {
   /// The wires that changed an input at this instant (kMaxStillWires at most).
   std::string stillReason() const override;
   static constexpr std::size_t kMaxStillWires = 8;
+  /// The wait begun (waitOnScheduler) is a move's, not a DELAY's or a WAITFOR's.
+  bool waitingOnMove() const { return waitMove_; }
   vm::IoMask outputs() const override { return outputs_; }
   vm::IoMask inputs() const override { return inputs_; }
 

@@ -1,0 +1,155 @@
+#include "runtime/cell/robot_sight.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "runtime/cell/box_geometry.h"
+
+namespace rs::runtime {
+
+namespace {
+
+Eigen::AlignedBox3d grown(const Eigen::AlignedBox3d& b, double by) {
+  if (b.isEmpty()) return b;
+  const Eigen::Vector3d d = Eigen::Vector3d::Constant(by);
+  return {b.min() - d, b.max() + d};
+}
+
+bool seesParts(const workcell::Sensor& s) { return s.sees != workcell::Sensor::Sees::Robots; }
+bool seesRobot(const workcell::Sensor& s) { return s.sees != workcell::Sensor::Sees::Parts; }
+
+}  // namespace
+
+// One look at the robot: its motors at time t, the box round the carried
+// part (empty: none), the box round each piece of the robot (when a sensor
+// sees robots), and what each sensor sees of them.
+struct RobotSight::Probe {
+  vm::Micros t = 0;
+  std::vector<std::int32_t> encoders;
+  Eigen::AlignedBox3d part;
+  std::vector<Eigen::AlignedBox3d> pieces;
+  std::vector<bool> sees;
+};
+
+RobotSight::RobotSight(const workcell::Workcell& cell, const World& world, std::size_t motors)
+    : cell_(cell), world_(world), motors_(motors) {
+  const workcell::PlacedRobot* robot = cell.drivenRobot();
+  if (!robot || !robot->robot.chain || cell.devices.sensors.empty()) return;
+  for (const workcell::Sensor& s : cell.devices.sensors) seesRobots_ |= seesRobot(s);
+  model_ = std::make_unique<workcell::CollisionModel>(cell);
+  data_ = std::make_unique<workcell::CollisionData>(*model_);
+  carried_.assign(motors_, 0.0);
+  matters_ = model_->movable();
+}
+
+RobotSight::~RobotSight() = default;
+
+void RobotSight::probe(vm::Micros t, const MotorsAt& at, Probe& p) {
+  p.t = t;
+  p.encoders.assign(motors_, 0);
+  at(t, p.encoders);
+  look(p);
+}
+
+void RobotSight::look(Probe& p) {
+  const workcell::Devices& d = cell_.devices;
+  p.part = Eigen::AlignedBox3d();
+  if (const std::optional<std::size_t> held = world_.held())
+    p.part = transformedBox(workcell::boundsOf(cell_.objects[*held].shape), world_.objectPose(*held, p.encoders));
+  p.pieces.clear();
+  if (seesRobots_) {
+    data_->poseOnly(p.encoders);
+    const auto bodies = model_->robotBodies();
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const std::size_t first = p.pieces.size();
+      p.pieces.resize(first + bodies[b].pieces.size());
+      workcell::pieceBoxes(bodies[b], data_->robotPose(b), p.pieces.data() + first);
+    }
+  }
+  p.sees.assign(d.sensors.size(), false);
+  for (std::size_t s = 0; s < d.sensors.size(); ++s) {
+    const workcell::Sensor& sensor = d.sensors[s];
+    bool on = seesParts(sensor) && sensorTouches(sensor, p.part);
+    if (seesRobot(sensor))
+      for (std::size_t i = 0; i < p.pieces.size() && !on; ++i) on = sensorTouches(sensor, p.pieces[i]);
+    p.sees[s] = on;
+  }
+}
+
+void RobotSight::sees(std::span<const std::int32_t> encoders, std::vector<bool>& out) {
+  out.assign(cell_.devices.sensors.size(), false);
+  if (!matters_) return;
+  Probe p;
+  p.encoders.assign(motors_, 0);
+  std::copy_n(encoders.begin(), std::min(encoders.size(), motors_), p.encoders.begin());
+  look(p);
+  out = p.sees;
+}
+
+// Whether nothing any sensor sees of the robot can change between a and b:
+// no point of the carried part moves farther than `part`, none of the
+// robot farther than `robot`, so a box that misses a sensor by more stays
+// off it, and one that touches it even when shrunk by that stays on it.
+bool RobotSight::stays(const Probe& a, const Probe& b) const {
+  double part = 0, robot = 0;
+  const auto weights = model_->motorWeights();
+  for (std::size_t m = 0; m < motors_; ++m) {
+    const double counts = std::abs(static_cast<double>(b.encoders[m]) - a.encoders[m]);
+    part += carried_[m] * counts;
+    if (m < weights.size()) robot += weights[m] * counts;
+  }
+  const workcell::Devices& d = cell_.devices;
+  for (std::size_t s = 0; s < d.sensors.size(); ++s) {
+    const workcell::Sensor& sensor = d.sensors[s];
+    const bool partCounts = seesParts(sensor) && !a.part.isEmpty();
+    const bool robotCounts = seesRobot(sensor);
+    if (!a.sees[s]) {
+      if (partCounts && sensorTouches(sensor, grown(a.part, part))) return false;
+      if (robotCounts)
+        for (const Eigen::AlignedBox3d& box : a.pieces)
+          if (sensorTouches(sensor, grown(box, robot))) return false;
+      continue;
+    }
+    bool held = partCounts && sensorTouches(sensor, grown(a.part, -part));
+    if (robotCounts)
+      for (std::size_t i = 0; i < a.pieces.size() && !held; ++i) held = sensorTouches(sensor, grown(a.pieces[i], -robot));
+    if (!held) return false;
+  }
+  return true;
+}
+
+std::optional<vm::Micros> RobotSight::search(const Probe& a, const Probe& b, const std::vector<bool>& start,
+                                             const MotorsAt& at, int& budget) {
+  if (stays(a, b)) return std::nullopt;
+  if (b.t - a.t <= 1) return b.sees != start ? std::optional<vm::Micros>(b.t) : std::nullopt;
+  const vm::Micros mid = a.t + (b.t - a.t) / 2;
+  if (--budget <= 0) return mid;
+  Probe m;
+  probe(mid, at, m);
+  if (std::optional<vm::Micros> left = search(a, m, start, at, budget)) return left;
+  if (m.sees != start) return mid;  // only where the budget ran out on the left
+  return search(m, b, start, at, budget);
+}
+
+std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at) {
+  if (!matters_ || to <= from) return std::nullopt;
+  if (const std::optional<std::size_t> held = world_.held()) {
+    // How far the carried part's points lie from the tool centre point.
+    const Eigen::AlignedBox3d box = workcell::boundsOf(cell_.objects[*held].shape);
+    double reach = 0;
+    for (int c = 0; c < 8; ++c)
+      reach = std::max(reach, (world_.heldOffset() * box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c))).norm());
+    model_->carriedWeights(reach, carried_);
+  } else if (!seesRobots_) {
+    return std::nullopt;  // nothing carried, and no sensor sees the robot
+  } else {
+    std::fill(carried_.begin(), carried_.end(), 0.0);
+  }
+  Probe a, b;
+  probe(from, at, a);
+  probe(to, at, b);
+  int budget = kMaxProbes;
+  return search(a, b, a.sees, at, budget);
+}
+
+}  // namespace rs::runtime

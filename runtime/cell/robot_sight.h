@@ -1,0 +1,67 @@
+// What the robot shows the cell's sensors (issue 35): the part its
+// gripper carries (every sensor that sees parts) and its own links and
+// gripper (SENSOR ... SEES ROBOTS or SEES ALL: a light curtain), and the
+// exact microsecond that changes while it moves. A move's motors each go
+// one way from start to end, so the collision model's bound on how far a
+// point can move per encoder count (CollisionModel::motorWeights,
+// carriedWeights) bounds how far a box can move over any stretch of the
+// move: a stretch whose boxes, grown (or shrunk) by that bound, cannot
+// change what a sensor sees is passed over whole; the others are halved,
+// down to one microsecond. Nothing is sampled and missed.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "model/workcell/collision_model.h"
+#include "model/workcell/model.h"
+#include "runtime/cell/world.h"
+#include "vm/machine.h"
+
+namespace rs::runtime {
+
+class RobotSight {
+ public:
+  /// Where the motors are at time t (each motor goes one way over a move).
+  using MotorsAt = std::function<void(vm::Micros, std::span<std::int32_t>)>;
+
+  /// The world's robot (its driven one) in `cell`; both must outlive this.
+  RobotSight(const workcell::Workcell& cell, const World& world, std::size_t motors);
+  ~RobotSight();
+
+  /// Whether the robot can ever show a sensor anything (a sensor that sees
+  /// parts, or one that sees robots, and a robot with a chain).
+  bool matters() const { return matters_; }
+  /// Per sensor (Devices::sensors), whether the carried part or the robot
+  /// touches it with the motors at `encoders` (`out` sized for the sensors).
+  void sees(std::span<const std::int32_t> encoders, std::vector<bool>& out);
+  /// The first microsecond in (from, to] at which sees() answers other
+  /// than at `from`, while the motors move as `at` says; none when it
+  /// does not change. At most kMaxProbes poses are looked at: past them,
+  /// the microsecond it stopped at (a look there goes on from it).
+  std::optional<vm::Micros> firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at);
+  static constexpr int kMaxProbes = 20'000;
+
+ private:
+  struct Probe;
+  void probe(vm::Micros t, const MotorsAt& at, Probe& out);
+  void look(Probe& p);
+  bool stays(const Probe& a, const Probe& b) const;
+  std::optional<vm::Micros> search(const Probe& a, const Probe& b, const std::vector<bool>& start, const MotorsAt& at,
+                                   int& budget);
+
+  const workcell::Workcell& cell_;
+  const World& world_;
+  std::size_t motors_;
+  bool matters_ = false;
+  bool seesRobots_ = false;
+  std::unique_ptr<workcell::CollisionModel> model_;
+  std::unique_ptr<workcell::CollisionData> data_;
+  std::vector<double> carried_;  // per motor: how far the carried part moves per count
+};
+
+}  // namespace rs::runtime

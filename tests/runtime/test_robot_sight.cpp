@@ -1,0 +1,106 @@
+// Sensors see what the robot carries and, with SEES ROBOTS, the robot
+// itself, at the exact microsecond a move brings it there (issue 35;
+// runtime/cell/robot_sight.h). The times are worked out by hand on the
+// library's gantry: its motors are Cartesian, 0.1 mm per count, at
+// constant speed (X and Z 1000 counts/s, Y 800, the gripper 200), and
+// the tool centre point is at (500 + X/10, 200 - Y/10, 400 + Z/10), so a
+// count is reached at count/speed seconds into a move.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "tests/cli/cli_support.h"
+
+using rs::testing::CliResult;
+using rs::testing::runCli;
+
+namespace robotsighttest {
+
+bool hasLine(const std::string& trace, const std::string& line) {
+  return trace.find("\n" + line + "\n") != std::string::npos;
+}
+
+}  // namespace robotsighttest
+
+using robotsighttest::hasLine;
+
+TEST_CASE("robot sight: a block the gripper carries breaks a beam at the microsecond worked out by hand",
+          "[cell][devices]") {
+  rs::testing::TempDir dir;
+  dir.write("cell.rsd",
+            "WORKCELL carry\n"
+            "  ROBOT gantry    AT 0 1000 0\n"
+            "  OBJECT pallet   AT 150 0 760\n"
+            "  OBJECT block    AT 200 30 700\n"
+            "  SENSOR eye BEAM 400 200 600  400 200 760\n"
+            "  WIRE eye TO IN 1\n"
+            "END\n");
+  // Over the block (2.8 s), down 1490 (1.8625 s), close (0.5 s), up
+  // (1.8625 s): at 7.025 s the block (x 200..240, y 179..219 once lifted)
+  // starts along +x at 100 mm/s. Its front face reaches the beam at
+  // x = 400 after 1600 counts (7.025 + 1.600 = 8.625 s); its back face is
+  // past it (x > 400) at count 2001 (200 + 200.1): 7.025 + 2.001 = 9.026 s.
+  const std::string prog = dir.write("p.rsp",
+                                     "; cell: cell.rsd\n"
+                                     "        MOVETO -2800 2800 0 0\n"
+                                     "        MOVE 0 0 1490 0\n"
+                                     "        MOVE 0 0 0 100\n"
+                                     "        MOVE 0 0 -1490 0\n"
+                                     "        MOVE 2800 0 0 0\n"
+                                     "        END\n");
+  const CliResult r = runCli({"run", prog, "--trace"});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  CHECK(hasLine(r.out, "     8.625  sensor eye ON"));
+  CHECK(hasLine(r.out, "     8.625  input 1 ON: wire from sensor eye"));
+  CHECK(hasLine(r.out, "     9.026  sensor eye OFF"));
+  CHECK(hasLine(r.out, "     9.026  input 1 OFF: wire from sensor eye"));
+  // The edges come during the move, before the line of the move they happen in.
+  CHECK(r.out.find("8.625  sensor eye ON") < r.out.find("MOVE    2800 0 0 0"));
+  // An empty gripper through the same beam: nothing (the sensor sees parts only).
+  const std::string empty = dir.write("e.rsp",
+                                      "; cell: cell.rsd\n"
+                                      "        MOVETO -2800 2800 1490 0\n"
+                                      "        MOVE 2800 0 0 0\n"
+                                      "        END\n");
+  const CliResult e = runCli({"run", empty, "--trace"});
+  CHECK(e.out.find("sensor eye ON") == std::string::npos);
+}
+
+TEST_CASE("robot sight: a light curtain (SEES ROBOTS) sees the gripper cross it at the hand-computed microsecond",
+          "[cell][devices]") {
+  rs::testing::TempDir dir;
+  // The zone x 350..360, y 100..285, z 600..760 catches the gripper's palm
+  // (x and z within 50 and 30 of the tool centre point, y 270..290 above
+  // it at y = 200), made smaller by 0.01 on every face as every collision
+  // piece is. A beam that sees parts only stands beside it and stays off.
+  dir.write("cell.rsd",
+            "WORKCELL curtain\n"
+            "  ROBOT gantry    AT 0 1000 0\n"
+            "  SENSOR curtain ZONE 350 360 285 100 760 600 SEES ROBOTS\n"
+            "  SENSOR eye BEAM 355 250 600  355 250 760\n"
+            "  WIRE curtain TO IN 2\n"
+            "END\n");
+  const std::string prog = dir.write("p.rsp",
+                                     "; cell: cell.rsd\n"
+                                     "        MOVETO -2800 2800 0 0\n"
+                                     "        MOVE 2800 0 0 0\n"
+                                     "        END\n");
+  const CliResult r = runCli({"run", prog, "--trace"});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  // The first move: x = 500 - 100 t, z = 400 + 100 t. The palm's far z
+  // face (z + 29.99) reaches 600 at count 1701 (1.701 s); its near x face
+  // (x + 49.99) leaves 350 at count 2000 (x = 300: 349.99), 2.000 s.
+  CHECK(hasLine(r.out, "     1.701  sensor curtain ON"));
+  CHECK(hasLine(r.out, "     2.000  sensor curtain OFF"));
+  // The second, along +x from x = 220 at 2.8 s: the front face (x + 49.99)
+  // reaches 350 at count 801 (3.601 s); the back face (x - 49.99) is past
+  // 360 at count 1900 (x = 410: 360.01), 4.700 s.
+  CHECK(hasLine(r.out, "     3.601  sensor curtain ON"));
+  CHECK(hasLine(r.out, "     3.601  input 2 ON: wire from sensor curtain"));
+  CHECK(hasLine(r.out, "     4.700  sensor curtain OFF"));
+  CHECK(r.out.find("sensor eye ON") == std::string::npos);
+  // The same cell and program give the same bytes.
+  CHECK(runCli({"run", prog, "--trace"}).out == r.out);
+}
