@@ -54,8 +54,9 @@ std::string cellProgram(int blocks) {
 
 std::unique_ptr<runtime::Run> cellRun(const std::shared_ptr<const vm::Image>& image,
                                       const std::shared_ptr<const workcell::Workcell>& cell, stimuli::Stimuli stimuli,
-                                      bool log) {
+                                      bool log, runtime::CollisionMode collisions = runtime::CollisionMode::Error) {
   runtime::RunSpec spec;
+  spec.collisions = collisions;
   spec.image = image;
   spec.cell = cell;
   spec.stimuli = std::move(stimuli);
@@ -103,9 +104,9 @@ json benchCell(const Options& options) {
   logged.reset();
 
   const auto timed = [&](const std::shared_ptr<const workcell::Workcell>& cell, const stimuli::Stimuli& played,
-                         const char* what) {
-    return [&, cell, what]() {
-      auto run = cellRun(image, cell, played, false);
+                         const char* what, runtime::CollisionMode collisions) {
+    return [&, cell, what, collisions]() {
+      auto run = cellRun(image, cell, played, false, collisions);
       const Stopwatch clock;
       const vm::RunOutcome outcome = run->runToEnd();
       const Sample sample = clock.stop();
@@ -117,26 +118,40 @@ json benchCell(const Options& options) {
     };
   };
   const stimuli::Stimuli none;
-  progress(fmt::format("interleaved, 1 warm-up + {} rounds: with the devices, with the stimuli ({} input changes)",
+  using runtime::CollisionMode;
+  progress(fmt::format("interleaved, 1 warm-up + {} rounds: with the devices, with the stimuli ({} input changes); "
+                       "collisions on (the default), then off",
                        options.reps, changes));
-  const std::vector<Samples> s =
-      interleave({timed(withDevices, none, "device"), timed(withoutDevices, *parsed, "stimuli")}, options.reps);
+  const std::vector<Samples> s = interleave({timed(withDevices, none, "device", CollisionMode::Error),
+                                             timed(withoutDevices, *parsed, "stimuli", CollisionMode::Error),
+                                             timed(withDevices, none, "device", CollisionMode::Off),
+                                             timed(withoutDevices, *parsed, "stimuli", CollisionMode::Off)},
+                                            options.reps);
   const double seconds = static_cast<double>(simulated) / 1e6;
   row("with the devices", s[0], fmt::format("{} steps, {} s simulated", steps, base::formatSeconds(simulated)));
   row("with a stimuli file", s[1], fmt::format("{} input changes", changes));
+  row("with the devices, collisions off", s[2]);
+  row("with a stimuli file, collisions off", s[3]);
   const double ratio = s[0].cpuBest() / s[1].cpuBest();
+  const double ratioOff = s[2].cpuBest() / s[3].cpuBest();
   const double perCpu = seconds / s[0].cpuBest();
   fmt::print("  ratio devices / stimuli (CPU) {}\n", verdict(ratio, 2));
-  fmt::print("  simulated seconds per CPU second: {:.0f} with the devices, {:.0f} with the stimuli\n", perCpu,
-             seconds / s[1].cpuBest());
+  fmt::print("  collisions off: ratio devices / stimuli (CPU) {}\n", verdict(ratioOff, 2));
+  fmt::print("  simulated seconds per CPU second: {:.0f} with the devices, {:.0f} with the stimuli; collisions off {:.0f} "
+             "and {:.0f}\n",
+             perCpu, seconds / s[1].cpuBest(), seconds / s[2].cpuBest(), seconds / s[3].cpuBest());
   return {{"blocks", blocks},
           {"steps", steps},
           {"simulated_s", seconds},
           {"input_changes", changes},
           {"devices", toJson(s[0])},
           {"stimuli", toJson(s[1])},
+          {"devices_collisions_off", toJson(s[2])},
+          {"stimuli_collisions_off", toJson(s[3])},
           {"cpu_ratio", ratio},
-          {"simulated_s_per_cpu_s", perCpu}};
+          {"cpu_ratio_collisions_off", ratioOff},
+          {"simulated_s_per_cpu_s", perCpu},
+          {"simulated_s_per_cpu_s_collisions_off", seconds / s[2].cpuBest()}};
 }
 
 }  // namespace rs::bench
