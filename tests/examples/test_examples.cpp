@@ -437,12 +437,13 @@ TEST_CASE("example adept_hour: an hour of production on adept-cell, 600 blocks t
   CHECK(j.at("collisions") == Json::array());
 }
 
-TEST_CASE("examples adept_production and scorobot_production pass check --strict: no part let go above its support",
+TEST_CASE("examples adept_production, scorobot_production and adept_hour pass check --strict: no part let go above its support",
           "[examples]") {
   // The let-go of a part more than 1 above what it settles on is a warning
   // (part-dropped), which --strict fails: the examples place their parts.
   for (const auto& [program, cell] : {std::pair<std::string, std::string>{"adept_production.rsp", "adept-cell"},
-                                      std::pair<std::string, std::string>{"scorobot_production.rsp", "scorobot-cell"}}) {
+                                      std::pair<std::string, std::string>{"scorobot_production.rsp", "scorobot-cell"},
+                                      std::pair<std::string, std::string>{"adept_hour.rsp", "adept-cell"}}) {
     const Result r = robotsim({"check", "--strict", (kExamples / program).string(), "--cell", cell});
     INFO(program << ": " << r.out << r.err);
     CHECK(r.code == rs::cli::kExitOk);
