@@ -11,14 +11,15 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "base/seconds.h"
 #include "bench/bench_support.h"
 #include "bench/benchmarks.h"
 #include "bench/timing.h"
 #include "compiler/description/library.h"
-#include "compiler/stimuli/stimuli.h"
 #include "launch/program.h"
+#include "launch/run_request.h"
 #include "runtime/run/run.h"
 
 namespace rs::bench {
@@ -99,8 +100,14 @@ json benchCell(const Options& options) {
   const std::size_t changes = logged->log()->inputChanges.size();
   const std::string stimuliText = stimuliOf(*logged->log());
   const std::string stimuliPath = writeInput(options, "adept_hour.stim", stimuliText);
-  const diag::Result<stimuli::Stimuli> parsed = stimuli::parseStimuli(stimuliText, stimuliPath);
-  if (!parsed) throw std::runtime_error("the generated stimuli do not parse: " + parsed.failure().message);
+  // Read back as `--stimuli FILE` reads it.
+  launch::RunRequest request;
+  request.stimuliFile = stimuliPath;
+  stimuli::Stimuli played;
+  std::vector<diag::Diagnostic> problems;
+  if (!launch::loadStimuli(request, played, problems))
+    throw std::runtime_error("the generated stimuli do not read: " +
+                             (problems.empty() ? std::string("?") : problems.front().message));
   logged.reset();
 
   const auto timed = [&](const std::shared_ptr<const workcell::Workcell>& cell, const stimuli::Stimuli& played,
@@ -123,9 +130,9 @@ json benchCell(const Options& options) {
                        "collisions on (the default), then off",
                        options.reps, changes));
   const std::vector<Samples> s = interleave({timed(withDevices, none, "device", CollisionMode::Error),
-                                             timed(withoutDevices, *parsed, "stimuli", CollisionMode::Error),
+                                             timed(withoutDevices, played, "stimuli", CollisionMode::Error),
                                              timed(withDevices, none, "device", CollisionMode::Off),
-                                             timed(withoutDevices, *parsed, "stimuli", CollisionMode::Off)},
+                                             timed(withoutDevices, played, "stimuli", CollisionMode::Off)},
                                             options.reps);
   const double seconds = static_cast<double>(simulated) / 1e6;
   row("with the devices", s[0], fmt::format("{} steps, {} s simulated", steps, base::formatSeconds(simulated)));
