@@ -174,8 +174,8 @@ TEST_CASE("robotsim test: the examples and the passing tests pass", "[testrun][c
   const CliResult passing = runCli({"test", kSource + "/examples/tests/passing"});
   INFO(passing.out);
   CHECK(passing.code == 0);
-  // 3 programs, 3 scenarios (adept_production.rstest's on a conveyor cell)
-  CHECK(normalised(passing.out).find("6 passed, 0 failed, 0 errors in S s\n") != std::string::npos);
+  // 3 programs, 5 scenarios (adept_production.rstest's and adept_hour.rstest's two on a conveyor cell)
+  CHECK(normalised(passing.out).find("8 passed, 0 failed, 0 errors in S s\n") != std::string::npos);
   std::vector<std::string> args{"test"};
   for (const char* name : {"counted_loop", "first_moves", "gantry_pick", "nested_subroutines", "pick_and_place",
                            "sensor_branching", "soft_home", "workcell_view", "adept_hour"})
