@@ -113,4 +113,11 @@ nlohmann::json benchDebug(const Options& options);
 /// IRB 120's cell and on a cell of the student's (1 s).
 nlohmann::json benchMoves(const Options& options);
 
+/// The cell's devices (issue 35): an hour of simulated production of
+/// adept_hour.rsp on adept-cell, paired with the same program on the cell
+/// without its devices, its input played by a stimuli file of the device
+/// run's input changes (the same moves at the same times). Target: at most
+/// 2 times the stimuli run's CPU time; simulated seconds per CPU second.
+nlohmann::json benchCell(const Options& options);
+
 }  // namespace rs::bench

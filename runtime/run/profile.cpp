@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <map>
+#include <string>
+#include <utility>
+
+#include "vm/io_lines.h"
 
 namespace rs::runtime {
 namespace {
@@ -75,6 +79,37 @@ void keepSlowest(std::vector<SlowMove>& slowest, std::size_t count, const SlowMo
   if (slowest.size() > count) slowest.pop_back();
 }
 
+// What ended WAITFOR step `s` on input `input` (to `on`): the last change
+// of that input to that state the log gives the step. `changes` walks the
+// log's input changes once over the run (they are in step order).
+class WaitDriver {
+ public:
+  explicit WaitDriver(const RunLog& log) : log_(log) {}
+  std::string of(std::uint32_t s, int input, bool on) {
+    const std::vector<InputRecord>& all = log_.inputChanges;
+    while (next_ < all.size() && all[next_].step < s) ++next_;
+    const InputCause* found = nullptr;
+    for (std::size_t i = next_; i < all.size() && all[i].step == s; ++i)
+      if (all[i].cause.input == input && all[i].cause.on == on) found = &all[i].cause;
+    if (found) {
+      InputCause grouped = *found;
+      grouped.line = 0;  // every stimulus (every rule) together, whatever its line
+      return inputCauseText(grouped);
+    }
+    // Nothing changed it: it was so already, or the run stopped in the wait.
+    const vm::Micros start = log_.steps[s].start;
+    const auto level = std::upper_bound(log_.inputs.begin(), log_.inputs.end(), start,
+                                        [](vm::Micros t, const InputLevel& l) { return t < l.at; });
+    const bool was = level != log_.inputs.begin() && vm::lineIsOn((level - 1)->inputs, input);
+    if (was == on) return on ? "already ON" : "already OFF";
+    return "nothing (the run stopped waiting)";
+  }
+
+ private:
+  const RunLog& log_;
+  std::size_t next_ = 0;
+};
+
 }  // namespace
 
 Profile profileOf(const vm::Image& image, const RunLog& log, std::size_t slowestCount) {
@@ -86,6 +121,8 @@ Profile profileOf(const vm::Image& image, const RunLog& log, std::size_t slowest
   std::map<std::uint32_t, std::size_t> routineId;
   CallStack calls;
   MoveCursor cursor(log);
+  WaitDriver driver(log);
+  std::map<std::pair<int, std::string>, InputWait> waits;
   const auto nameAt = [&](std::uint32_t index) {
     const vm::Label* l = labelAt(image, index);
     return l ? std::string(image.labelName(*l)) : "instruction " + std::to_string(index + 1);
@@ -114,6 +151,12 @@ Profile profileOf(const vm::Image& image, const RunLog& log, std::size_t slowest
                                       log.motors[lastMotor].letter, last->from, last->to});
     }
     add(p.total, kind, t);
+    if (vm::has(in.op, vm::kWaits) && vm::info(in.op).format == vm::Format::Input) {  // WAITFOR: a=input, b=state
+      const int input = in.a;
+      const std::string by = driver.of(static_cast<std::uint32_t>(s), input, in.b != 0);
+      InputWait& w = waits[{input, by}];
+      w.input = input, w.driver = by, ++w.waits, w.time += t;
+    }
 
     LineTime& line = lines[image.lines[step.index]];
     line.line = image.lines[step.index], ++line.steps, add(line.time, kind, t);
@@ -148,6 +191,7 @@ Profile profileOf(const vm::Image& image, const RunLog& log, std::size_t slowest
   for (auto& [_, l] : lines) p.lines.push_back(l);
   for (auto& [_, l] : labels) p.labels.push_back(std::move(l));
   for (auto& [_, r] : subroutines) p.subroutines.push_back(std::move(r));
+  for (auto& [_, w] : waits) p.inputWaits.push_back(std::move(w));
   return p;
 }
 

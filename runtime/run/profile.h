@@ -10,7 +10,9 @@
 // label to the next one: each step counts once, under the label above its
 // instruction), by subroutine (time from a GOSUB's target to its RETURN,
 // the subroutines it calls included; a subroutine that calls itself counts
-// each moment once), and the slowest moves.
+// each moment once), and the slowest moves. And the time the robot waited
+// in WAITFOR, by input and by what drives it: the cause of the input change
+// that ended each wait (a wire from a device, a stimulus, a reactive rule).
 #pragma once
 
 #include <cstdint>
@@ -53,6 +55,19 @@ struct SlowMove {
   std::int32_t from = 0, to = 0;   ///< its encoder counts
 };
 
+/// The time WAITFOR steps on one input waited, for the waits one driver ended.
+struct InputWait {
+  int input = 0;
+  /// What changed the input so the wait ended: "wire from sensor eye",
+  /// "stimulus", "rule", "set by the debugger"; "already ON" ("already
+  /// OFF") when the input was so as the WAITFOR began; "nothing (the run
+  /// stopped waiting)" for the wait the run ended in (a deadlock, a limit).
+  std::string driver;
+  std::uint64_t waits = 0;  ///< WAITFOR steps
+  vm::Micros time = 0;      ///< their time on the clock, in all
+  bool operator==(const InputWait&) const = default;
+};
+
 struct Profile {
   TimeSplit total;
   std::uint64_t moves = 0;              ///< steps that moved a motor
@@ -60,6 +75,7 @@ struct Profile {
   std::vector<NamedTime> labels;        ///< in code order, only regions that ran
   std::vector<NamedTime> subroutines;   ///< in code order, only those called
   std::vector<SlowMove> slowest;        ///< longest first (ties: earlier first)
+  std::vector<InputWait> inputWaits;    ///< by input, then driver
 };
 
 /// The profile of a logged run of `image`; at most `slowestCount` moves.

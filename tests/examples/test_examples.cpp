@@ -412,12 +412,38 @@ TEST_CASE("example adept_production: ten blocks from the infeed's beam to the ou
   }
 }
 
-TEST_CASE("examples adept_production and scorobot_production pass check --strict: no part let go above its support",
+TEST_CASE("example adept_hour: an hour of production on adept-cell, 600 blocks taken by the sink", "[examples]") {
+  // The arithmetic is in the program's comments: the feeder puts a block
+  // every 6 s and the robot's cycle (1.179 s) keeps up, so the 600th block
+  // is the one fed at 3582 s; it breaks the beam 10..12.358 s later, and
+  // the last cycle, HRDHOME and DELAY 4 end the run 5.306 s after that,
+  // when the sink (4.661 s after the beam) has taken it: 600 taken, 600
+  // fed (0 .. 3594 s), 600 ON edges, 600 carried on the outfeed.
+  const Result r = robotsim({"run", (kExamples / "adept_hour.rsp").string(), "--cell", "adept-cell",
+                             "--format=json"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.code == rs::cli::kExitOk);
+  const Json j = Json::parse(r.out);
+  CHECK(j.at("status") == "finished");
+  CHECK(j.at("variables").at("PARTS") == 600);
+  const double end = j.at("time").get<double>();
+  CHECK(end >= 3597.3);
+  CHECK(end <= 3599.7);
+  const Json& d = j.at("devices");
+  CHECK(d.at("sensors")[0].at("turned_on") == 600);
+  CHECK(d.at("conveyors")[1].at("carried") == 600);
+  CHECK(d.at("feeders")[0].at("fed") == 600);
+  CHECK(d.at("sinks")[0].at("taken") == 600);
+  CHECK(j.at("collisions") == Json::array());
+}
+
+TEST_CASE("examples adept_production, scorobot_production and adept_hour pass check --strict: no part let go above its support",
           "[examples]") {
   // The let-go of a part more than 1 above what it settles on is a warning
   // (part-dropped), which --strict fails: the examples place their parts.
   for (const auto& [program, cell] : {std::pair<std::string, std::string>{"adept_production.rsp", "adept-cell"},
-                                      std::pair<std::string, std::string>{"scorobot_production.rsp", "scorobot-cell"}}) {
+                                      std::pair<std::string, std::string>{"scorobot_production.rsp", "scorobot-cell"},
+                                      std::pair<std::string, std::string>{"adept_hour.rsp", "adept-cell"}}) {
     const Result r = robotsim({"check", "--strict", (kExamples / program).string(), "--cell", cell});
     INFO(program << ": " << r.out << r.err);
     CHECK(r.code == rs::cli::kExitOk);
@@ -446,7 +472,8 @@ TEST_CASE("every example has a summary test above", "[examples]") {
   const std::set<std::string> tested{"first_moves.rsp",   "counted_loop.rsp",       "nested_subroutines.rsp",
                                      "soft_home.rsp",     "workcell_view.rsp",      "sensor_branching.rsp",
                                      "pick_and_place.rsp", "gantry_pick.rsp",       "stack_blocks.rsp",
-                                     "straight_lift.rsp", "adept_production.rsp", "scorobot_production.rsp"};
+                                     "straight_lift.rsp", "adept_production.rsp", "scorobot_production.rsp",
+                                     "adept_hour.rsp"};
   std::set<std::string> found;
   for (const fs::path& p : exampleSources()) found.insert(p.filename().string());
   CHECK(found == tested);
@@ -465,6 +492,7 @@ TEST_CASE("the examples together use all 23 instructions", "[examples]") {
                                  : path.filename() == "stack_blocks.rsp"  ? "scara-pick"
                                  : path.filename() == "straight_lift.rsp" ? "xr4-cell"
                                  : path.filename() == "adept_production.rsp" ? "adept-cell"
+                                 : path.filename() == "adept_hour.rsp" ? "adept-cell"
                                  : path.filename() == "scorobot_production.rsp" ? "scorobot-cell"
                                                                           : "";
     rs::compiler::Library library(rs::compiler::librarySearchPath({}));

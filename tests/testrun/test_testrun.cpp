@@ -162,7 +162,7 @@ TEST_CASE("expectations: every way a run ends is read by its words in vm/stop_re
   CHECK(bad.errors[0].message ==
         "unknown expectation 'teleport': expect one of finished, deadlock, step limit, time limit, clock standing "
         "still, knot limit, runtime error, time, motors, motor, output, input, variable, tcp, object, trace, no collision, "
-        "collides with");
+        "collides with, sensor, conveyor, feeder, sink");
   // A stop's first word alone still names it, and says which word is missing.
   const auto step = parse("; expect: step limits\n; expect: time\n");
   REQUIRE(step.errors.size() == 2);
@@ -174,15 +174,18 @@ TEST_CASE("robotsim test: the examples and the passing tests pass", "[testrun][c
   const CliResult passing = runCli({"test", kSource + "/examples/tests/passing"});
   INFO(passing.out);
   CHECK(passing.code == 0);
-  CHECK(normalised(passing.out).find("5 passed, 0 failed, 0 errors in S s\n") != std::string::npos);  // 3 programs, 2 scenarios
+  // 3 programs, 5 scenarios (adept_production.rstest's and adept_hour.rstest's two on a conveyor cell)
+  CHECK(normalised(passing.out).find("8 passed, 0 failed, 0 errors in S s\n") != std::string::npos);
   std::vector<std::string> args{"test"};
   for (const char* name : {"counted_loop", "first_moves", "gantry_pick", "nested_subroutines", "pick_and_place",
-                           "sensor_branching", "soft_home", "workcell_view"})
+                           "sensor_branching", "soft_home", "workcell_view", "adept_hour"})
     args.push_back(kSource + "/examples/" + name + ".rsp");
   const CliResult examples = runCli(args);
   INFO(examples.out);
   CHECK(examples.code == 0);
-  CHECK(normalised(examples.out).find("8 passed, 0 failed, 0 errors in S s\n") != std::string::npos);
+  CHECK(normalised(examples.out).find("9 passed, 0 failed, 0 errors in S s\n") != std::string::npos);
+  // adept_hour's own expectations: an hour of production, 600 blocks taken (worked out in the program).
+  CHECK(examples.out.find("adept_hour.rsp PASSED (7 expectations, 3599.") != std::string::npos);
 }
 
 TEST_CASE("robotsim test: the deliberately failing tests report what the hand-written file says", "[testrun][cli]") {

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
+#include <string_view>
 
 #include "base/ascii.h"
 #include "base/seconds.h"
@@ -198,17 +200,25 @@ class Checker {
                           e.tolerance, point(*at), ending()));
   }
 
-  // Objects by name (any of them with that name), or by number (1-based).
-  // The objects an expectation names: by number (as the cell numbers them
-  // from 1) or by name (every object of that name).
+  // The objects an expectation names, among those in the cell at the end:
+  // by number (the run's "object 5": the cell numbers its own from 1, a fed
+  // part gets the next number when it is fed) or by name (every object of
+  // that name). A feeder's empty slot, or a part a sink took, is not there.
   std::vector<std::size_t> objectsNamed(const Expectation& e, const std::vector<runtime::ObjectView>& all) {
     std::vector<std::size_t> found;
-    std::size_t number = 0;
+    std::uint32_t number = 0;
     const bool byNumber = !e.name.empty() && e.name.find_first_not_of("0123456789") == std::string::npos &&
-                          e.name.size() < 6 && (number = std::stoul(e.name)) >= 1 && number <= all.size();
+                          e.name.size() < 10 && (number = static_cast<std::uint32_t>(std::stoul(e.name))) >= 1;
     for (std::size_t i = 0; i < all.size(); ++i)
-      if (byNumber ? i + 1 == number : base::sameName(all[i].name, e.name)) found.push_back(i);
-    if (found.empty()) fail(e, fmt::format("the workcell has no object '{}'", e.name));
+      if (all[i].present && (byNumber ? all[i].number == number : base::sameName(all[i].name, e.name)))
+        found.push_back(i);
+    if (!found.empty()) return found;
+    if (byNumber && run_.rig().devices())
+      fail(e, fmt::format("the workcell has no object {} at the end: a part a sink took, or one never fed, is not in "
+                          "the cell (the run ended {})",
+                          number, ending()));
+    else
+      fail(e, fmt::format("the workcell has no object '{}'", e.name));
     return found;
   }
 
@@ -216,7 +226,7 @@ class Checker {
   // run summary and the debugger show them.
   static std::string objectsLabel(const std::vector<std::size_t>& found, const std::vector<runtime::ObjectView>& all) {
     std::string numbers;
-    for (std::size_t i : found) numbers += fmt::format("{}{}", numbers.empty() ? "" : ", ", i + 1);
+    for (std::size_t i : found) numbers += fmt::format("{}{}", numbers.empty() ? "" : ", ", all[i].number);
     return fmt::format("object{} {} ({})", found.size() == 1 ? "" : "s", numbers, base::safeText(all[found[0]].name));
   }
 
@@ -275,6 +285,55 @@ class Checker {
                                          e.line ? fmt::format(" at line {}", e.line) : "", described(events[0])));
   }
 
+  // "sensor eye count 10": a device's count at the end (a sensor's ON
+  // edges, a conveyor's parts carried, a feeder's parts fed, a sink's parts
+  // taken). A name the cell lacks is an error at the name, with the cell's
+  // devices as its hint.
+  void deviceCount(const Expectation& e) {
+    if (!needsCell(e)) return;
+    static constexpr std::array<std::string_view, 4> kKinds{"sensor", "conveyor", "feeder", "sink"};
+    const std::string_view kind = kKinds[static_cast<std::size_t>(e.device)];
+    const workcell::Devices& cell = run_.rig().cell()->devices;
+    std::vector<std::string_view> names;
+    if (e.device == DeviceKind::Sensor) for (const auto& d : cell.sensors) names.push_back(d.name);
+    if (e.device == DeviceKind::Conveyor) for (const auto& d : cell.conveyors) names.push_back(d.name);
+    if (e.device == DeviceKind::Feeder) for (const auto& d : cell.feeders) names.push_back(d.name);
+    if (e.device == DeviceKind::Sink) for (const auto& d : cell.sinks) names.push_back(d.name);
+    std::size_t d = 0;
+    while (d < names.size() && !base::sameName(names[d], e.name)) ++d;
+    const runtime::CellDevices* devices = run_.rig().devices();
+    if (d == names.size() || !devices) {
+      diag::Diagnostic bad{file_, e.pos, diag::Severity::Error,
+                           fmt::format("the workcell has no {} '{}'", kind, base::safeText(e.name))};
+      if (e.nameCol) bad.pos.col = e.nameCol;
+      std::string list;
+      const auto add = [&](std::string_view k, std::string_view n) {
+        list += fmt::format("{}{} {}", list.empty() ? "" : ", ", k, base::safeText(n));
+      };
+      for (const auto& s : cell.sensors) add("sensor", s.name);
+      for (const auto& c : cell.conveyors) add("conveyor", c.name);
+      for (const auto& f : cell.feeders) add("feeder", f.name);
+      for (const auto& s : cell.sinks) add("sink", s.name);
+      bad.hint = list.empty() ? fmt::format("the workcell {} has no devices", base::safeText(run_.rig().cell()->name))
+                              : "the workcell's devices: " + list;
+      failures.push_back(std::move(bad));
+      return;
+    }
+    static constexpr std::array<std::string_view, 4> kCounts{"ON edges", "parts carried", "parts fed", "parts taken"};
+    const std::uint64_t got = e.device == DeviceKind::Sensor     ? devices->sensorCount(d)
+                              : e.device == DeviceKind::Conveyor ? devices->carried(d)
+                              : e.device == DeviceKind::Feeder   ? devices->fed(d)
+                                                                 : devices->taken(d);
+    const bool ok = e.compare == Compare::AtMost    ? got <= e.count
+                    : e.compare == Compare::AtLeast ? got >= e.count
+                                                    : got == e.count;
+    if (ok) return;
+    const std::string_view op = e.compare == Compare::AtMost ? "<= " : e.compare == Compare::AtLeast ? ">= " : "";
+    fail(e, fmt::format("expected {} {} count {}{} ({}) at the end; it is {} (the run ended {})", kind,
+                        base::safeText(names[d]), op, e.count, kCounts[static_cast<std::size_t>(e.device)], got,
+                        ending()));
+  }
+
  private:
   const runtime::Run& run_;
   const vm::Image& image_;
@@ -314,6 +373,7 @@ std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const std::vecto
       case ExpectKind::ObjectHeld: c.object(e); break;
       case ExpectKind::NoCollision:
       case ExpectKind::CollidesWith: c.collision(e); break;
+      case ExpectKind::DeviceCount: c.deviceCount(e); break;
       case ExpectKind::CompileError:
       case ExpectKind::Trace: break;  // not a property of the run alone (tools/testrun/test_file.cpp)
     }

@@ -42,7 +42,8 @@ static_assert(namesEveryEnd(), "an expectation must be able to name every way a 
 
 // The other subjects, after the stops in the error's list.
 constexpr std::string_view kOtherSubjects =
-    "time, motors, motor, output, input, variable, tcp, object, trace, no collision, collides with";
+    "time, motors, motor, output, input, variable, tcp, object, trace, no collision, collides with, sensor, conveyor, "
+    "feeder, sink";
 
 std::vector<std::string_view> phraseOf(vm::StopReason reason) {
   std::vector<std::string_view> words;
@@ -121,6 +122,27 @@ bool moment(LineReader& r, Expectation& e) {
 }
 
 bool withinNumber(LineReader& r, double& tolerance) { return !r.accept("within") || r.real("a tolerance", tolerance); }
+
+// sensor|conveyor|feeder|sink NAME count [<=|>=|=] N, the device's kind already read.
+bool deviceCount(LineReader& r, Expectation& e, DeviceKind kind) {
+  e.kind = ExpectKind::DeviceCount;
+  e.device = kind;
+  const std::optional<Word> name = r.take("a device name");
+  if (!name) return false;
+  e.name = name->text;
+  e.nameCol = name->col;
+  if (!r.keyword("count")) return false;
+  if (r.accept("<=")) e.compare = Compare::AtMost;
+  else if (r.accept(">=")) e.compare = Compare::AtLeast;
+  else {
+    r.accept("=");  // `count 10` is `count = 10`
+    e.compare = Compare::Equal;
+  }
+  std::int64_t n = 0;
+  if (!r.integer("a count", n, 0, UINT32_MAX)) return false;
+  e.count = static_cast<std::uint32_t>(n);
+  return r.end();
+}
 
 bool expectation(LineReader& r, Expectation& e) {
   const Word* first = r.peek();
@@ -239,6 +261,10 @@ bool expectation(LineReader& r, Expectation& e) {
     e.name = name->text;
     return stopLine(r, e) && r.end();
   }
+  if (r.accept("sensor")) return deviceCount(r, e, DeviceKind::Sensor);
+  if (r.accept("conveyor")) return deviceCount(r, e, DeviceKind::Conveyor);
+  if (r.accept("feeder")) return deviceCount(r, e, DeviceKind::Feeder);
+  if (r.accept("sink")) return deviceCount(r, e, DeviceKind::Sink);
   if (r.accept("object")) {
     const std::optional<Word> name = r.take("an object name");
     if (!name) return false;

@@ -41,6 +41,7 @@ enum class ExpectKind : std::uint8_t {
   Trace,         // trace FILE: the run's text trace is the file's bytes
   NoCollision,   // no collision: the run's collision check found none
   CollidesWith,  // collides with NAME [at line N]: a collision of a part so named (link, object, floor)
+  DeviceCount,   // sensor|conveyor|feeder|sink NAME count [<=|>=|=] N: a device's count at the end
   CompileError,  // expect-error: TEXT (on the line of the error)
 };
 
@@ -52,6 +53,10 @@ struct LineEvent {
 };
 
 enum class Compare : std::uint8_t { AtMost, AtLeast, Equal };
+
+/// The device a DeviceCount names, and what it counts: a sensor's ON
+/// edges, a conveyor's parts carried, a feeder's parts fed, a sink's parts taken.
+enum class DeviceKind : std::uint8_t { Sensor, Conveyor, Feeder, Sink };
 
 struct Expectation {
   ExpectKind kind = ExpectKind::Status;
@@ -79,6 +84,9 @@ struct Expectation {
   // Variable, ObjectAt, ObjectHeld
   std::string name;
   bool centre = false;  ///< ObjectAt: the centre of the object's box, not its AT corner
+  // DeviceCount: which kind of device `name` is (its count is `count`, compared by `compare`)
+  DeviceKind device = DeviceKind::Sensor;
+  std::uint32_t nameCol = 0;  ///< the column of `name` as written (DeviceCount), for a name the cell lacks
   std::int32_t value = 0;
   std::array<double, 3> point{};
   double tolerance = 0.5;

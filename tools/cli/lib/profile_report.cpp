@@ -66,6 +66,12 @@ void printTextProfile(std::ostream& out, const runtime::Profile& p) {
     out << fmt::format("    {:<22} {} {:>7}\n", fmt::format("line {}", l.line), splitColumns(l.time), l.steps);
   printNamed(out, "label", "steps", p.labels);
   printNamed(out, "subroutine (with calls)", "calls", p.subroutines);
+  if (!p.inputWaits.empty()) {
+    out << fmt::format("  {:<48} {:>11} {:>7}\n", "waiting for inputs (by what ended the wait)", "waiting", "waits");
+    for (const runtime::InputWait& w : p.inputWaits)
+      out << fmt::format("    {:<46} {:>11} {:>7}\n", fmt::format("input {}: {}", w.input, base::safeText(w.driver)),
+                         seconds(w.time), w.waits);
+  }
   if (p.slowest.empty()) return;
   out << "  slowest moves\n";
   for (std::size_t i = 0; i < p.slowest.size(); ++i) {
@@ -98,6 +104,10 @@ Json profileJson(const runtime::Profile& p) {
                        {"from", m.from},
                        {"to", m.to}});
   j["slowest_moves"] = std::move(slowest);
+  Json waits = Json::array();
+  for (const runtime::InputWait& w : p.inputWaits)
+    waits.push_back({{"input", w.input}, {"driver", w.driver}, {"waits", w.waits}, {"waiting_us", w.time}});
+  j["input_waits"] = std::move(waits);
   return j;
 }
 
