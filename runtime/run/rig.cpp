@@ -132,14 +132,14 @@ RigSnapshot Rig::snapshot() const {
   if (sim_) s.machine = sim_->state();
   s.cell = running_->state();
   if (watch_) s.collisions.assign(watch_->events().begin(), watch_->events().end());
-  if (devices_) s.devices = devices_->state();
+  if (devices_) s.devices = devices_->state(), s.pendingDevices = devices_->pendingEvents();
   return s;
 }
 
 void Rig::restore(const RigSnapshot& s) {
   running_->restore(s.cell);
   if (sim_) sim_->restore(s.machine);
-  if (devices_ && s.devices) devices_->restore(*s.devices);
+  if (devices_ && s.devices) devices_->restore(*s.devices), devices_->putBack(s.pendingDevices);
   lastStepDevices_.clear();
   lastStepGrasped_ = false;
   lastStepClosedEmpty_ = false;

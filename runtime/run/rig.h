@@ -53,6 +53,9 @@ struct RigSnapshot {
   std::vector<CollisionEvent> collisions;
   /// The devices' state (a cell with devices).
   std::optional<CellDevices::State> devices;
+  /// What they did that no step has reported yet (a snapshot before the
+  /// first step: the cell's first instant, its first parts fed).
+  std::vector<DeviceEvent> pendingDevices;
   bool operator==(const RigSnapshot&) const = default;
 };
 
