@@ -208,6 +208,8 @@ TEST_CASE("dap: device function breakpoints and the Devices scope", "[debug][dap
       {{"command", "configurationDone"}, {"arguments", Json::object()}},
       {{"command", "scopes"}, {"arguments", {{"frameId", 0}}}},
       {{"command", "variables"}, {"arguments", {{"variablesReference", 6}}}},
+      {{"command", "evaluate"}, {"arguments", {{"expression", "devices"}}}},
+      {{"command", "setVariable"}, {"arguments", {{"variablesReference", 6}, {"name", "sink done"}, {"value", "3"}}}},
       {{"command", "disconnect"}, {"arguments", Json::object()}},
   });
   const Json* set = devicesDapResponse(messages, 3);
@@ -242,6 +244,18 @@ TEST_CASE("dap: device function breakpoints and the Devices scope", "[debug][dap
   CHECK(rows[1]["value"] == "stopped, carried 0 parts");
   CHECK(rows[7]["name"] == "block (object 5)");
   CHECK(rows[7]["value"] == "at (-740.000, 500.000, 620.000)");
+  // evaluate devices: the same rows on one line, and the scope to open.
+  const Json* evaluated = devicesDapResponse(messages, 7);
+  REQUIRE(evaluated);
+  CHECK((*evaluated)["body"]["variablesReference"] == 6);
+  const std::string result = (*evaluated)["body"]["result"].get<std::string>();
+  CHECK(result.rfind("sensor eye = OFF, turned ON 0 times, conveyor infeed = stopped, carried 0 parts, ", 0) == 0);
+  CHECK(result.find("block (object 5) = at (-740.000, 500.000, 620.000)") != std::string::npos);
+  // The devices are the run's: they cannot be set.
+  const Json* set2 = devicesDapResponse(messages, 8);
+  REQUIRE(set2);
+  CHECK((*set2)["success"] == false);
+  CHECK((*set2)["message"] == "only variables and inputs can be set: the motors, objects, clock and devices are the run's");
 }
 
 TEST_CASE("dap: a device function breakpoint stops with what happened", "[debug][dap][devices]") {

@@ -134,7 +134,7 @@ Adapter::Reply Adapter::variables(const Json& args) {
 }
 
 // What the terminal's print takes: variables (all of them), motors, tcp,
-// io, objects, clock, or one value (a variable, a motor letter, in N, out
+// io, objects, devices, clock, or one value (a variable, a motor letter, in N, out
 // N, input N, output N). A whole scope answers with its reference, for the
 // client to open.
 Adapter::Reply Adapter::evaluate(const Json& args) {
@@ -179,6 +179,12 @@ Adapter::Reply Adapter::evaluate(const Json& args) {
       if (o.present)
         names += fmt::format("{}{} {}{}", names.empty() ? "" : ", ", o.number, base::safeText(o.name), o.held ? " (held)" : "");
     return Json{{"result", names}, {"variablesReference", kObjects}};
+  }
+  if (text == "devices") {
+    std::vector<std::pair<std::string, std::string>> items;
+    for (debug::DeviceRow& row : debug::deviceRows(session_->run(), v)) items.emplace_back(std::move(row.name), std::move(row.value));
+    if (items.empty()) return Error{"no devices: the cell has no sensors, conveyors, feeders or sinks (or no workcell: cell)"};
+    return listed(items, kDevices);
   }
   auto e = debug::parseExpression(image, debug::ioWords(text));
   if (!e) return Error{e.failure().message};
