@@ -153,6 +153,11 @@ TEST_CASE("debug: going back restores the devices and the parts as they were", "
   CHECK(devicesConsole(s, "print devices\n") == devicesAt[4]);
   CHECK(devicesAt[4].find("conveyor infeed    stopped, carried 3 parts\n") != std::string::npos);
   CHECK(devicesAt[4].find("block (object 3)   at (260.000, 500.000, 620.000)\n") != std::string::npos);
+  // Inside the move to the block (MOVEP PICK, 1.100 to 1.227 s, see
+  // the trace of robotsim run): the devices as that move leaves them, said so.
+  s.gotoTime(1'200'000);
+  const std::string inside = devicesConsole(s, "print devices\n");
+  CHECK(inside == devicesAt[5] + "(the devices and the parts as they are at 1.227 s, when the instruction under way ends)\n");
   // reverse-continue to a device breakpoint: the feed at 0 s, during step 1.
   s.step(40);
   const std::string out = devicesConsole(s, "break feeder parts\nreverse-continue\nprint devices\n");

@@ -361,6 +361,10 @@ void Console::printCommand(std::string_view args) {
     const std::vector<DeviceRow> rows = deviceRows(session_.run(), v);
     if (rows.empty()) out_ << "no devices: the cell has no sensors, conveyors, feeders or sinks (or no workcell: --cell)\n";
     for (const DeviceRow& row : rows) out_ << fmt::format("{:<18} {}\n", row.name, row.value);
+    // Inside an instruction under way (goto-time, a collision): the run stands after it.
+    if (const vm::Micros end = session_.run().rig().clock(); !rows.empty() && v.clock < end)
+      out_ << fmt::format("(the devices and the parts as they are at {} s, when the instruction under way ends)\n",
+                          base::formatSeconds(end));
   } else if (args == "clock") {
     out_ << fmt::format("clock = {} s (step {})\n", base::formatSeconds(v.clock), v.steps);
   } else {
