@@ -107,6 +107,10 @@ class CellDevices final : public CellProcess {
 
   /// What the devices did since the last call, in order.
   std::vector<DeviceEvent> takeEvents() { return std::exchange(events_, {}); }
+  /// The events no one has taken yet (the cell's first instant's, before
+  /// the first step), for a snapshot; putBack restores them after restore().
+  const std::vector<DeviceEvent>& pendingEvents() const { return events_; }
+  void putBack(std::vector<DeviceEvent> events) { events_ = std::move(events); }
 
   struct State {
     std::vector<std::uint32_t> number;  // per object; 0: not in the cell

@@ -132,14 +132,25 @@ RigSnapshot Rig::snapshot() const {
   if (sim_) s.machine = sim_->state();
   s.cell = running_->state();
   if (watch_) s.collisions.assign(watch_->events().begin(), watch_->events().end());
-  if (devices_) s.devices = devices_->state();
+  if (devices_) {
+    s.devices = devices_->state(), s.pendingDevices = devices_->pendingEvents();
+    s.devicesSawWorld = s.devices->revision == world_->revision();
+    s.devices->revision = 0;
+  }
   return s;
 }
 
 void Rig::restore(const RigSnapshot& s) {
   running_->restore(s.cell);
   if (sim_) sim_->restore(s.machine);
-  if (devices_ && s.devices) devices_->restore(*s.devices);
+  if (devices_ && s.devices) {
+    // After the world's restore, which gave it a new revision: the devices
+    // see it as they saw the world then (in step, or with a change to look at).
+    CellDevices::State devices = *s.devices;
+    devices.revision = s.devicesSawWorld ? world_->revision() : world_->revision() - 1;
+    devices_->restore(devices);
+    devices_->putBack(s.pendingDevices);
+  }
   lastStepDevices_.clear();
   lastStepGrasped_ = false;
   lastStepClosedEmpty_ = false;

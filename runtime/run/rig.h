@@ -53,6 +53,13 @@ struct RigSnapshot {
   std::vector<CollisionEvent> collisions;
   /// The devices' state (a cell with devices).
   std::optional<CellDevices::State> devices;
+  /// What they did that no step has reported yet (a snapshot before the
+  /// first step: the cell's first instant, its first parts fed).
+  std::vector<DeviceEvent> pendingDevices;
+  /// Whether the devices had seen the world as it was (its revision, which
+  /// is no state: it grows on every restore). `devices->revision` is kept
+  /// as 0, so that a restored run's snapshot equals a fresh run's.
+  bool devicesSawWorld = false;
   bool operator==(const RigSnapshot&) const = default;
 };
 

@@ -30,7 +30,7 @@ std::vector<Json> withCode(const Json& diagnostics, const std::string& code) {
   return out;
 }
 
-const std::string kProgram =
+const std::string kWiredInputsProgram =
     "; cell: adept-cell\n"        // 0
     "        WAITFOR 1 ON\n"      // 1: wired from the sensor eye
     "        JMPIN 4 ON done\n"   // 2: a timed stimulus
@@ -45,11 +45,11 @@ using namespace lsp_inputs_test;
 
 TEST_CASE("lsp: hover on an input number says what drives it, a WAITFOR nothing can end warns", "[lsp][inputs]") {
   rs::testing::TempDir dir;
-  const std::string program = rs::lsp::uriOfPath(dir.write("p.rsp", kProgram));
+  const std::string program = rs::lsp::uriOfPath(dir.write("p.rsp", kWiredInputsProgram));
   dir.write("p.stim", "at 1.5 input 4 on\nwhen output 1 on then input 5 on after 0.5\n");
   LspSession s;
   s.initialize();
-  s.open(program, kProgram);
+  s.open(program, kWiredInputsProgram);
   s.idle();
 
   const std::string cell = rs::testing::readBytes(std::string(ROBOTSIM_SOURCE_DIR) + "/stdlib/workcells/adept-cell.rsd");

@@ -1,5 +1,7 @@
-// The breakpoints that are not at a line: labels as function breakpoints
-// (setFunctionBreakpoints), and watches as data breakpoints
+// The breakpoints that are not at a line: labels and the cell's devices as
+// function breakpoints (setFunctionBreakpoints: a label's name, or
+// `sensor NAME [on|off]`, `feeder NAME`, `sink NAME` as the terminal's
+// break takes them), and watches as data breakpoints
 // (dataBreakpointInfo, setDataBreakpoints: a value that changes, as the
 // terminal's `watch`). Each set replaces the previous one of its kind, and
 // its answer has one entry per breakpoint asked for, in order.
@@ -19,6 +21,19 @@ namespace {
 
 Json unverified(std::string message) { return {{"verified", false}, {"message", std::move(message)}}; }
 
+// A function breakpoint's words: "sensor eye on" -> sensor, eye, on.
+std::vector<std::string_view> functionBreakpointWords(std::string_view text) {
+  std::vector<std::string_view> w;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    const std::size_t start = i;
+    while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
+    if (i > start) w.push_back(text.substr(start, i - start));
+  }
+  return w;
+}
+
 std::string fieldText(const Json& j, const char* name) {
   if (!j.contains(name) || j[name].is_null()) return {};
   return j.at(name).get<std::string>();  // a wrong type throws: a bad request (Adapter::handle)
@@ -33,7 +48,16 @@ Adapter::Reply Adapter::setFunctionBreakpoints(const Json& args) {
   const Json source = {{"name", std::filesystem::path(sourcePath_).filename().string()}, {"path", sourcePath_}};
   for (const Json& b : args.at("breakpoints")) {
     const std::string name = b.at("name").get<std::string>();
-    auto made = session_->breakAtLabel(debug::trimmed(name));
+    const std::vector<std::string_view> words = functionBreakpointWords(name);
+    const bool device = words.size() > 1 && debug::isDeviceWord(words[0]);
+    diag::Result<int> made = diag::refusal("no breakpoint");  // set below
+    if (device) {
+      auto point = debug::parseDevicePoint(session_->run(), words);
+      if (point) made = session_->breakOnDevice(*point);
+      else made = point.failure();
+    } else {
+      made = session_->breakAtLabel(debug::trimmed(name));
+    }
     if (!made) {
       out.push_back(unverified(made.failure().message));
       continue;
@@ -44,6 +68,11 @@ Adapter::Reply Adapter::setFunctionBreakpoints(const Json& args) {
       continue;
     }
     functionBreakpoints_.push_back(*made);
+    if (device) {  // no place in the source: a moment of the cell
+      out.push_back({{"id", *made}, {"verified", true}, {"message", fmt::format("stops after the instruction during which "
+                                                                               "the {} acts", base::safeText(words[0]))}});
+      continue;
+    }
     const auto& all = session_->breakpoints();
     const auto at = std::find_if(all.begin(), all.end(), [&](const debug::Breakpoint& x) { return x.id == *made; });
     out.push_back({{"id", *made}, {"verified", true}, {"source", source}, {"line", clientLine(at->line)}});

@@ -1,9 +1,10 @@
 // The requests that look at a stopped run: stackTrace (the GOSUB stack),
 // scopes and variables (Variables, Motors, Inputs/Outputs, Objects,
-// Clock), evaluate (what the terminal's print takes), and setVariable
+// Clock, and Devices on a cell that has them), evaluate (what the terminal's print takes), and setVariable
 // (a variable, or an input as the terminal's `set input`).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 
@@ -73,10 +74,16 @@ Adapter::Reply Adapter::scopes(const Json& args) {
   const auto scope = [](std::string_view name, int ref, std::size_t count) {
     return Json{{"name", name}, {"variablesReference", ref}, {"namedVariables", count}, {"expensive", false}};
   };
-  return Json{{"scopes", Json::array({scope("Variables", kVariables, v.variables.size()),
-                                      scope("Motors", kMotors, v.motors.size() + (v.tcp ? 1 : 0)),
-                                      scope("Inputs/Outputs", kIo, 2 * vm::kIoCount),
-                                      scope("Objects", kObjects, v.objects.size()), scope("Clock", kClock, 2)})}};
+  const auto presentObjects = static_cast<std::size_t>(
+      std::count_if(v.objects.begin(), v.objects.end(), [](const runtime::ObjectView& o) { return o.present; }));
+  Json all = Json::array({scope("Variables", kVariables, v.variables.size()),
+                          scope("Motors", kMotors, v.motors.size() + (v.tcp ? 1 : 0)),
+                          scope("Inputs/Outputs", kIo, 2 * vm::kIoCount), scope("Objects", kObjects, presentObjects),
+                          scope("Clock", kClock, 2)});
+  // The cell's devices and its parts (debug/device_points.h), on a cell that has devices.
+  if (const std::size_t rows = debug::deviceRows(session_->run(), v).size(); rows > 0)
+    all.push_back(scope("Devices", kDevices, rows));
+  return Json{{"scopes", all}};
 }
 
 Adapter::Reply Adapter::variables(const Json& args) {
@@ -99,9 +106,9 @@ Adapter::Reply Adapter::variables(const Json& args) {
         out.push_back(variable(fmt::format("out {}", i), vm::lineIsOn(v.outputs, i) ? "on" : "off"));
       break;
     case kObjects:
-      for (std::size_t n = 0; n < v.objects.size(); ++n) {
-        const runtime::ObjectView& o = v.objects[n];
-        out.push_back(variable(fmt::format("{}: {}", n + 1, base::safeText(o.name)), point({o.at.x(), o.at.y(), o.at.z()}) + ", centre " +
+      for (const runtime::ObjectView& o : v.objects) {
+        if (!o.present) continue;  // a feeder's empty slot, a part a sink took
+        out.push_back(variable(fmt::format("{}: {}", o.number, base::safeText(o.name)), point({o.at.x(), o.at.y(), o.at.z()}) + ", centre " +
                                                            point({o.centre.x(), o.centre.y(), o.centre.z()}) + (o.held ? ", held" : "") +
                                                            (o.moved ? ", moved" : "")));
       }
@@ -109,6 +116,10 @@ Adapter::Reply Adapter::variables(const Json& args) {
     case kClock:
       out.push_back(variable("time", fmt::format("{} s", base::formatSeconds(v.clock))));
       out.push_back(variable("steps", std::to_string(v.steps)));
+      break;
+    case kDevices:
+      for (debug::DeviceRow& row : debug::deviceRows(session_->run(), v))
+        out.push_back(variable(std::move(row.name), std::move(row.value)));
       break;
     default:
       return Error{fmt::format("no variables with reference {}", ref)};
@@ -123,7 +134,7 @@ Adapter::Reply Adapter::variables(const Json& args) {
 }
 
 // What the terminal's print takes: variables (all of them), motors, tcp,
-// io, objects, clock, or one value (a variable, a motor letter, in N, out
+// io, objects, devices, clock, or one value (a variable, a motor letter, in N, out
 // N, input N, output N). A whole scope answers with its reference, for the
 // client to open.
 Adapter::Reply Adapter::evaluate(const Json& args) {
@@ -164,9 +175,16 @@ Adapter::Reply Adapter::evaluate(const Json& args) {
   if (text == "objects") {
     if (v.objects.empty()) return Error{"no objects: the program runs without a workcell (cell), or it has none"};
     std::string names;
-    for (std::size_t n = 0; n < v.objects.size(); ++n)
-      names += fmt::format("{}{} {}{}", n ? ", " : "", n + 1, base::safeText(v.objects[n].name), v.objects[n].held ? " (held)" : "");
+    for (const runtime::ObjectView& o : v.objects)
+      if (o.present)
+        names += fmt::format("{}{} {}{}", names.empty() ? "" : ", ", o.number, base::safeText(o.name), o.held ? " (held)" : "");
     return Json{{"result", names}, {"variablesReference", kObjects}};
+  }
+  if (text == "devices") {
+    std::vector<std::pair<std::string, std::string>> items;
+    for (debug::DeviceRow& row : debug::deviceRows(session_->run(), v)) items.emplace_back(std::move(row.name), std::move(row.value));
+    if (items.empty()) return Error{"no devices: the cell has no sensors, conveyors, feeders or sinks (or no workcell: cell)"};
+    return listed(items, kDevices);
   }
   auto e = debug::parseExpression(image, debug::ioWords(text));
   if (!e) return Error{e.failure().message};
@@ -214,8 +232,8 @@ Adapter::Reply Adapter::setVariable(const Json& args) {
     if (auto problem = session_->setInput(static_cast<int>(e->index), *on)) return Error{*problem};
     return Json{{"value", *on ? "on" : "off"}, {"variablesReference", 0}};
   }
-  if (ref >= kMotors && ref <= kClock)
-    return Error{"only variables and inputs can be set: the motors, objects and clock are the run's"};
+  if (ref >= kMotors && ref <= kDevices)
+    return Error{"only variables and inputs can be set: the motors, objects, clock and devices are the run's"};
   return Error{fmt::format("no variables with reference {}", ref)};
 }
 

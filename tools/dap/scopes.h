@@ -5,6 +5,6 @@
 
 namespace rs::dap {
 
-enum Scope : int { kVariables = 1, kMotors, kIo, kObjects, kClock };
+enum Scope : int { kVariables = 1, kMotors, kIo, kObjects, kClock, kDevices };
 
 }  // namespace rs::dap

@@ -16,6 +16,7 @@ std::string Breakpoint::where() const {
     case Kind::When: return fmt::format("when {}", when.text);
     case Kind::Collision: return "collision";
     case Kind::Warning: return "warning: a gripper closing on nothing";
+    case Kind::Device: return device.text();
   }
   return {};
 }

@@ -1,7 +1,8 @@
 // Where and when a debugging session stops: breakpoints (before an
 // instruction, a line or a label; when the clock passes a time; when a
 // condition on an output, an input or a variable becomes true; at a
-// collision; at a warning: a gripper closing on nothing), each with
+// collision; at a warning: a gripper closing on nothing; at a device's
+// event: a sensor's edge, a part fed or taken), each with
 // an optional condition and hit count, and watches (stop when a value
 // changes). Breakpoints and watches share one numbering, as in gdb.
 #pragma once
@@ -11,12 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "tools/debug/device_points.h"
 #include "tools/debug/expression.h"
 
 namespace rs::debug {
 
 struct Breakpoint {
-  enum class Kind : std::uint8_t { Line, Label, Instruction, Time, When, Collision, Warning };
+  enum class Kind : std::uint8_t { Line, Label, Instruction, Time, When, Collision, Warning, Device };
   int id = 0;
   Kind kind = Kind::Line;
   std::uint32_t line = 0;       ///< Line: where it stands (the first line with code at or after the one asked)
@@ -26,13 +28,14 @@ struct Breakpoint {
   std::vector<std::uint32_t> instructions;
   vm::Micros time = 0;  ///< Time: it stops right after the clock passes this
   Condition when;       ///< When: it stops as this becomes true
+  DevicePoint device;   ///< Device: which device, which of its events
   std::optional<Condition> condition;
   std::optional<HitCondition> hits;
   std::uint64_t hitCount = 0;  ///< times reached (with the condition true) running forwards
 
   /// "line 12", "label LOOP, line 3", "@7, line 5" (instructions numbered
   /// from 1, as robotsim disasm lists them), "at 1.500 s", "when out 2 = 1",
-  /// "collision", "warning".
+  /// "collision", "warning", "sensor eye ON", "feeder parts".
   std::string where() const;
   /// where() with " if N = 3" and " hits >= 2" when set.
   std::string describe() const;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <sstream>
 
@@ -24,11 +25,14 @@ struct Console::Command {
 
 const std::vector<Console::Command>& Console::commands() {
   static const std::vector<Command> kCommands = {
-      {"break", "b", "break LINE|LABEL|@N|at TIME|when COND|collision|warning [if COND] [hits N]",
+      {"break", "b",
+       "break LINE|LABEL|@N|at TIME|when COND|collision|warning|sensor NAME [on|off]|feeder NAME|sink NAME "
+       "[if COND] [hits N]",
        "stop at a place or a moment; before a LINE, a LABEL or instruction @N (numbered as disasm lists them), "
        "right after the clock passes TIME, or as COND becomes true (output N on|off, input N on|off, VAR = VALUE), "
-       "at the moment of a collision (the pose at the first contact), or at a warning (a gripper closing on "
-       "nothing); "
+       "at the moment of a collision (the pose at the first contact), at a warning (a gripper closing on "
+       "nothing), or after the instruction during which a sensor of the cell turns on or off (either edge, or the one "
+       "named), a feeder feeds a part or a sink takes one; "
        "if COND: only when COND holds then; hits N: from the Nth time on (== N: only the Nth, % N: every Nth)"},
       {"delete", "d", "delete [ID...]", "delete breakpoints and watches (all of them without an ID)"},
       {"info", "i", "info breakpoints", "list the breakpoints and watches, with their hit counts"},
@@ -45,9 +49,10 @@ const std::vector<Console::Command>& Console::commands() {
       {"goto-time", "gt", "goto-time TIME",
        "go to the moment TIME seconds; exactly, forwards or backwards: inside a move (or a DELAY) the instruction "
        "under way is the current one and motors, tcp and objects show the pose at TIME"},
-      {"print", "p", "print [VAR|motors|tcp|io|objects|clock|in N|out N|LETTER]",
+      {"print", "p", "print [VAR|motors|tcp|io|objects|devices|clock|in N|out N|LETTER]",
        "show a value; a variable (all of them without an argument), the motors, the tool centre point, inputs and "
-       "outputs, the workcell's objects, the clock, one input or output, one motor"},
+       "outputs, the workcell's objects, the cell's devices (each sensor, conveyor, feeder and sink, and every part "
+       "and where it is), the clock, one input or output, one motor"},
       {"backtrace", "bt", "backtrace", "the GOSUB stack, innermost first, with lines"},
       {"list", "l", "list [LINE]", "the source around the current line (or LINE)"},
       {"disasm", "da", "disasm [@N]", "the instructions around the current one, as robotsim disasm lists them"},
@@ -229,7 +234,8 @@ void Console::breakCommand(std::string_view args) {
   const std::size_t placeEnd = std::min(ifAt, hitsAt);
   const std::span<const std::string_view> place(w.data(), placeEnd);
   if (place.empty()) {
-    error("break needs a place: LINE, LABEL, @N, at TIME, when COND, collision or warning (help break)");
+    error("break needs a place: LINE, LABEL, @N, at TIME, when COND, collision, warning, sensor NAME, feeder NAME "
+          "or sink NAME (help break)");
     return;
   }
   const vm::Image& image = *session_.run().spec().image;
@@ -263,8 +269,13 @@ void Console::breakCommand(std::string_view args) {
     made = session_.breakOnCollision();
   } else if (place.size() == 1 && base::sameName(place[0], "warning")) {
     made = session_.breakOnWarning();
+  } else if (isDeviceWord(place[0]) && (place.size() > 1 || !runtime::labelInstruction(image, place[0]))) {
+    auto point = parseDevicePoint(session_.run(), place);
+    if (!point) return error(point.failure().message);
+    made = session_.breakOnDevice(*point);
   } else if (place.size() != 1) {
-    return error(fmt::format("'{}' is not a place: LINE, LABEL, @N, at TIME, when COND, collision or warning",
+    return error(fmt::format("'{}' is not a place: LINE, LABEL, @N, at TIME, when COND, collision, warning, "
+                             "sensor NAME, feeder NAME or sink NAME",
                              shown(joined(place))));
   } else if (place[0].front() == '@') {
     const auto n = count(place[0].substr(1));
@@ -335,11 +346,25 @@ void Console::printCommand(std::string_view args) {
     out_ << fmt::format("inputs  1-{0}:{1}\noutputs 1-{0}:{2}\n", vm::kIoCount, bits(v.inputs), bits(v.outputs));
   } else if (args == "objects") {
     if (v.objects.empty()) out_ << "no objects: the program runs without a workcell (--cell), or it has none\n";
-    std::size_t number = 1;  // as the cell numbers them (and robotsim test's `object N`)
+    // By the run's numbers (robotsim test's `object N`): the cell's own
+    // objects 1, 2, ...; a fed part the number it was given; a feeder's
+    // empty slot and a part a sink took are not in the cell.
+    std::vector<const runtime::ObjectView*> present;
     for (const runtime::ObjectView& o : v.objects)
-      out_ << fmt::format("{} {} at ({:.3f}, {:.3f}, {:.3f}), centre ({:.3f}, {:.3f}, {:.3f}){}{}\n", number++,
-                          base::safeText(o.name), o.at.x(), o.at.y(), o.at.z(), o.centre.x(), o.centre.y(), o.centre.z(),
-                          o.held ? ", held" : "", o.moved ? ", moved" : "");
+      if (o.present) present.push_back(&o);
+    std::stable_sort(present.begin(), present.end(), [](auto* a, auto* b) { return a->number < b->number; });
+    for (const runtime::ObjectView* p : present)
+      out_ << fmt::format("{} {} at ({:.3f}, {:.3f}, {:.3f}), centre ({:.3f}, {:.3f}, {:.3f}){}{}\n", p->number,
+                          base::safeText(p->name), p->at.x(), p->at.y(), p->at.z(), p->centre.x(), p->centre.y(),
+                          p->centre.z(), p->held ? ", held" : "", p->moved ? ", moved" : "");
+  } else if (args == "devices") {
+    const std::vector<DeviceRow> rows = deviceRows(session_.run(), v);
+    if (rows.empty()) out_ << "no devices: the cell has no sensors, conveyors, feeders or sinks (or no workcell: --cell)\n";
+    for (const DeviceRow& row : rows) out_ << fmt::format("{:<18} {}\n", row.name, row.value);
+    // Inside an instruction under way (goto-time, a collision): the run stands after it.
+    if (const vm::Micros end = session_.run().rig().clock(); !rows.empty() && v.clock < end)
+      out_ << fmt::format("(the devices and the parts as they are at {} s, when the instruction under way ends)\n",
+                          base::formatSeconds(end));
   } else if (args == "clock") {
     out_ << fmt::format("clock = {} s (step {})\n", base::formatSeconds(v.clock), v.steps);
   } else {

@@ -145,6 +145,15 @@ int DebugSession::breakOnWarning() {
   return breakpoints_.back().id;
 }
 
+int DebugSession::breakOnDevice(DevicePoint point) {
+  Breakpoint b;
+  b.id = nextId();
+  b.kind = Breakpoint::Kind::Device;
+  b.device = std::move(point);
+  breakpoints_.push_back(std::move(b));
+  return breakpoints_.back().id;
+}
+
 int DebugSession::breakWhen(Condition condition) {
   Breakpoint b;
   b.id = nextId();
@@ -192,11 +201,22 @@ void DebugSession::removeAll() {
 
 // --- where the run stops ------------------------------------------------------
 
+namespace {
+
+// What the devices did that stopped the run, after the breakpoints named.
+std::string happenedText(const std::vector<std::string>& happened) {
+  std::string text;
+  for (const std::string& h : happened) text += (text.empty() ? ": " : ", ") + h;
+  return text;
+}
+
+}  // namespace
+
 // Does a breakpoint or watch stop the run at this moment (`before` holds
 // the moment before)? `counting`: going forwards, so hits count and hit
 // conditions apply. The ids that stop it, and for watches what changed.
 bool DebugSession::stopsHere(const runtime::Run& r, const Probe& before, bool counting, std::vector<int>& ids,
-                        std::vector<std::string>& notes) {
+                             std::vector<std::string>& notes, std::vector<std::string>& happened) {
   const std::uint32_t pc = r.interpreter().pc();
   for (std::size_t i = 0; i < breakpoints_.size(); ++i) {
     Breakpoint& b = breakpoints_[i];
@@ -219,10 +239,18 @@ bool DebugSession::stopsHere(const runtime::Run& r, const Probe& before, bool co
       case Breakpoint::Kind::Warning:
         at = r.rig().world() && r.rig().world()->emptyCloseCount() > before.emptyCloses;
         break;
+      case Breakpoint::Kind::Device: {
+        const auto events = r.rig().devicesOfLastStep();
+        at = std::any_of(events.begin(), events.end(), [&](const runtime::DeviceEvent& e) { return b.device.matches(e); });
+        break;
+      }
     }
     if (!at || (b.condition && !b.condition->holds(r))) continue;
     if (counting && ++b.hitCount && b.hits && !b.hits->stopsAt(b.hitCount)) continue;
     ids.push_back(b.id);
+    if (b.kind == Breakpoint::Kind::Device)
+      for (std::string& h : deviceHits(r, b.device))
+        if (std::find(happened.begin(), happened.end(), h) == happened.end()) happened.push_back(std::move(h));
   }
   for (std::size_t i = 0; i < watches_.size(); ++i) {
     const std::int64_t now = valueOf(r, watches_[i].what);
@@ -354,13 +382,13 @@ Stop DebugSession::forward(const Target& target) {
   Probe probe(*this);
   probe.capture(*run_);
   std::vector<int> ids;
-  std::vector<std::string> notes;
+  std::vector<std::string> notes, happened;
   bool done = false;
   // From inside an instruction under way, the run already stands after it:
   // that moment (the instruction finished) is the first one forwards.
   bool already = false;
   if (within) {
-    if (target.breakpoints) already = stopsHere(*run_, probe, true, ids, notes);
+    if (target.breakpoints) already = stopsHere(*run_, probe, true, ids, notes, happened);
     if (run_->interpreter().steps() >= target.steps || (target.done && target.done(*run_))) done = already = true;
   }
   runtime::RunUntil until;
@@ -369,8 +397,9 @@ Stop DebugSession::forward(const Target& target) {
   until.when = [&](const runtime::Run& r) {
     ids.clear();
     notes.clear();
+    happened.clear();
     bool stop = false;
-    if (target.breakpoints) stop = stopsHere(r, probe, true, ids, notes);
+    if (target.breakpoints) stop = stopsHere(r, probe, true, ids, notes, happened);
     if (target.done && target.done(r)) done = stop = true;
     probe.capture(r);
     return stop;
@@ -397,6 +426,7 @@ Stop DebugSession::forward(const Target& target) {
     for (std::size_t i = 0, w = 0; i < ids.size(); ++i)
       if (!find(ids[i]) && w < notes.size()) parts.push_back(fmt::format("watch {}: {}", ids[i], notes[w++]));
     for (const std::string& p : parts) s.message += (s.message.empty() ? "" : ", ") + p;
+    s.message += happenedText(happened);
     if (standAtCollision(ids)) s.message += ": " + collisionText();
   } else if (done || run_->interpreter().steps() >= target.steps) {
     s = {StopReason::Step, "step done", {}};
@@ -473,12 +503,12 @@ Stop DebugSession::reverseContinue() {
   if (run_->interpreter().steps() == 0) return stopped({StopReason::Start, "already at the start of the run", {}});
   Probe probe(*this);
   std::vector<int> ids, foundIds;
-  std::vector<std::string> notes, foundNotes;
+  std::vector<std::string> notes, foundNotes, happened, foundHappened;
   const auto found = timeline_->lastMatch([&](const runtime::Run& r) { probe.capture(r); },
                                           [&](const runtime::Run& r) {
-                                            ids.clear(), notes.clear();
-                                            const bool match = stopsHere(r, probe, false, ids, notes);
-                                            if (match) foundIds = ids, foundNotes = notes;
+                                            ids.clear(), notes.clear(), happened.clear();
+                                            const bool match = stopsHere(r, probe, false, ids, notes, happened);
+                                            if (match) foundIds = ids, foundNotes = notes, foundHappened = happened;
                                             probe.capture(r);
                                             return match;
                                           });
@@ -496,6 +526,7 @@ Stop DebugSession::reverseContinue() {
     else if (w < foundNotes.size()) part = fmt::format("watch {}: {}", foundIds[i], foundNotes[w++]);
     s.message += (s.message.empty() ? "" : ", ") + part;
   }
+  s.message += happenedText(foundHappened);
   if (standAtCollision(foundIds)) s.message += ": " + collisionText();
   return stopped(std::move(s));
 }

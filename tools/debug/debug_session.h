@@ -88,6 +88,10 @@ class DebugSession {
   /// At every closing move that takes nothing (what the trace notes and
   /// the run's warning is about).
   int breakOnWarning();
+  /// After every instruction during which a device did what `point` says
+  /// (a sensor's edge, a part fed, a part taken; device_points.h): the
+  /// stop's message says what happened and when.
+  int breakOnDevice(DevicePoint point);
   /// Adds a condition and a hit count to breakpoint `id`; false if none.
   bool qualify(int id, std::optional<Condition> condition, std::optional<HitCondition> hits);
   int watch(Expression what);
@@ -147,8 +151,9 @@ class DebugSession {
   struct Target;
   class Probe;
   Stop forward(const Target& target);
+  /// `happened`: what the devices did that device breakpoints stop at.
   bool stopsHere(const runtime::Run& r, const Probe& before, bool counting, std::vector<int>& ids,
-                 std::vector<std::string>& notes);
+                 std::vector<std::string>& notes, std::vector<std::string>& happened);
   Stop finishedStop(bool already) const;
   Stop stopped(Stop stop);
   /// When a collision breakpoint is among `ids`: the session stands at the

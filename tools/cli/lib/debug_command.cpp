@@ -61,10 +61,11 @@ void addDebugOptions(CLI::App* cmd, DebugOptions& o) {
   cmd->add_flag("--open", o.open, "With --view: open the page in a browser (xdg-open)")->needs(view);
   cmd->footer(
       "A gdb-style prompt (line editing and history) on the simulated run, standing before the first\n"
-      "instruction. Commands: break (b) LINE|LABEL|@N|at TIME|when COND [if COND] [hits N], delete (d),\n"
+      "instruction. Commands: break (b) LINE|LABEL|@N|at TIME|when COND [if COND] [hits N],\n"
+      "break sensor NAME [on|off]|feeder NAME|sink NAME (a cell's devices), delete (d),\n"
       "info breakpoints, step (s) [N], next (n), finish (fin), continue (c), until (u) TIME,\n"
       "reverse-step (rs) [N], reverse-next (rn), reverse-continue (rc), goto-time (gt) TIME,\n"
-      "print (p) VAR|motors|tcp|io|objects|clock, backtrace (bt), list (l), disasm (da),\n"
+      "print (p) VAR|motors|tcp|io|objects|devices|clock, backtrace (bt), list (l), disasm (da),\n"
       "set input N on|off, watch (w) VAR|output N, help (h), quit (q).\n"
       "With -x FILE, or when standard input is not a terminal, commands are read and echoed one a line\n"
       "(batch mode). Going backwards re-runs from snapshots: docs/debugging.md.\n"
