@@ -76,7 +76,7 @@ void Rig::wakeRobotAt(vm::Micros at) {
 void Rig::afterStep(std::uint32_t instruction) {
   lastStepInputs_.swap(pendingInputs_);
   pendingInputs_.clear();
-  if (devices_) lastStepDevices_ = devices_->takeEvents();
+  if (devices_) lastStepDevices_ = devices_->takeEvents(), lastStepMotions_ = devices_->takeMotions();
   if (!world_) return;
   const World::StepEffects step = world_->takeStepEffects();
   lastStepGrasped_ = step.grasped;
@@ -141,6 +141,7 @@ void Rig::restore(const RigSnapshot& s) {
   if (sim_) sim_->restore(s.machine);
   if (devices_ && s.devices) devices_->restore(*s.devices);
   lastStepDevices_.clear();
+  lastStepMotions_.clear();
   lastStepGrasped_ = false;
   lastStepClosedEmpty_ = false;
   pendingInputs_.clear(), lastStepInputs_.clear();

@@ -119,6 +119,13 @@ class Rig {
   vm::Status advanceCell(vm::Micros t);
   /// What the devices did during the step just run (and before it).
   std::span<const DeviceEvent> devicesOfLastStep() const { return lastStepDevices_; }
+  /// Record how the parts move (CellDevices::recordMotions): a run that
+  /// keeps a log asks, and motionsOfLastStep() then says what changed
+  /// during the step just run (and before it).
+  void recordMotions() {
+    if (devices_) devices_->recordMotions(true);
+  }
+  std::span<const PartMotion> motionsOfLastStep() const { return lastStepMotions_; }
 
   /// A program's next step runs instruction `instruction`: the collisions
   /// its moves find are that instruction's.
@@ -186,6 +193,7 @@ class Rig {
   SimIo io_;
   std::unique_ptr<CellDevices> devices_;
   std::vector<DeviceEvent> lastStepDevices_;
+  std::vector<PartMotion> lastStepMotions_;
   RobotProcess robot_;
   std::uint32_t robotId_ = 0;
 

@@ -131,7 +131,7 @@ int plotCommand(const PlotOptions& o, std::ostream& out, std::ostream& err) {
   printRunWarnings(err, launch::runWarnings(run, collisions, image.sourceName), loaded);
 
   render::ChartInput input;
-  input.cell = loaded.cell.get();
+  input.cell = run.rig().cell() ? run.rig().cell() : loaded.cell.get();  // with its devices and feeders' slots
   input.run = &log;
   input.marks = chartMarks(run, stop);
   input.every = every;
