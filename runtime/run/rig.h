@@ -126,6 +126,11 @@ class Rig {
     if (devices_) devices_->recordMotions(true);
   }
   std::span<const PartMotion> motionsOfLastStep() const { return lastStepMotions_; }
+  /// What the devices did since the last step ended, as the step's (a run
+  /// that stopped inside a step: afterStep never came).
+  void takeDeviceRecords() {
+    if (devices_) lastStepDevices_ = devices_->takeEvents(), lastStepMotions_ = devices_->takeMotions();
+  }
 
   /// A program's next step runs instruction `instruction`: the collisions
   /// its moves find are that instruction's.

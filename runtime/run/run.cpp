@@ -180,6 +180,14 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
     }
   }
   observers_->when = nullptr;
+  if (logger_ && finished()) {
+    // A step cut short (the time limit in a WAITFOR the devices end, a
+    // fault) is the log's last: what the devices did during it is its.
+    rig_->takeDeviceRecords();
+    const auto step = static_cast<std::uint32_t>(logger_->log().steps.size());
+    for (const DeviceEvent& e : rig_->devicesOfLastStep()) logger_->deviceEvent(step, e);
+    for (const PartMotion& m : rig_->motionsOfLastStep()) logger_->partMotion(step, m);
+  }
   if (logger_) logger_->finish(outcome);
   return outcome;
 }
