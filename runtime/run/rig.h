@@ -126,6 +126,11 @@ class Rig {
     if (devices_) devices_->recordMotions(true);
   }
   std::span<const PartMotion> motionsOfLastStep() const { return lastStepMotions_; }
+  /// Every part on a running belt to where it is now (a pendant showing
+  /// the cell between its instants; a run never needs it).
+  void settleDevices() {
+    if (devices_) devices_->commit();
+  }
   /// What the devices did since the last step ended, as the step's (a run
   /// that stopped inside a step: afterStep never came).
   void takeDeviceRecords() {
