@@ -248,6 +248,7 @@ void CellDevices::restore(const State& s) {
   nextSensor_ = s.sensorOn;
   events_.clear();
   fault_.reset();
+  emitted_.clear(), motions_.clear();
 }
 
 void CellDevices::moveTo(vm::Micros now) {
@@ -428,6 +429,7 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   }
   plan(now);
   state_.revision = world_.revision();
+  if (recordMotions_) recordChangedMotions(now);
 }
 
 bool CellDevices::update(Scheduler& clock) {

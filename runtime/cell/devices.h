@@ -67,6 +67,21 @@ struct DeviceEvent {
   }
 };
 
+/// Where a part is from time `at` on, and how it moves (a belt carries
+/// it): what the pictures replay (runtime/run/run_log.h keeps them). Its
+/// place at t >= at is `pose` moved along `velocity` (units per second) by
+/// min(|velocity| (t - at), travel); a part a sink took, or a feeder's
+/// empty slot, is at parkedPose(). Never recorded while the gripper holds it.
+struct PartMotion {
+  vm::Micros at = 0;
+  std::size_t object = 0;  ///< index in the objects
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< F_world_design at `at`
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  double travel = 0;  ///< may be infinite (an open end)
+  /// Where it is at `t` (>= at).
+  Eigen::Isometry3d poseAt(vm::Micros t) const;
+};
+
 class CellDevices final : public CellProcess {
  public:
   /// `cell` is withFeederSlots' copy (the world's cell); everything must
@@ -111,6 +126,13 @@ class CellDevices final : public CellProcess {
   /// the first step), for a snapshot; putBack restores them after restore().
   const std::vector<DeviceEvent>& pendingEvents() const { return events_; }
   void putBack(std::vector<DeviceEvent> events) { events_ = std::move(events); }
+
+  /// Keep a PartMotion whenever a part's motion changes (off by default:
+  /// only a run that keeps a log asks). After a restore, the next instant
+  /// records every part again.
+  void recordMotions(bool on) { recordMotions_ = on, emitted_.clear(); }
+  /// The motions recorded since the last call, in time order.
+  std::vector<PartMotion> takeMotions() { return std::exchange(motions_, {}); }
 
   struct State {
     std::vector<std::uint32_t> number;  // per object; 0: not in the cell
@@ -168,6 +190,11 @@ class CellDevices final : public CellProcess {
   std::vector<std::int32_t> motorsNow_;
   std::vector<DeviceEvent> events_;
   std::optional<std::string> fault_;
+  void recordChangedMotions(vm::Micros now);
+  bool recordMotions_ = false;
+  bool emittedAny_ = false;  // the first instant records only the parts that left their placement
+  std::vector<std::optional<PartMotion>> emitted_;  // per object: the last recorded, while it holds
+  std::vector<PartMotion> motions_;
 };
 
 /// Where an empty slot waits: far below any floor.

@@ -2,12 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "runtime/render/chart_draw.h"
 #include "runtime/render/draw.h"
 #include "runtime/render/page.h"
 #include "runtime/render/palette.h"
 #include "runtime/render/scene.h"
 #include "runtime/render/tool_path.h"
+#include "runtime/run/device_history.h"
 #include "vm/io_lines.h"
 
 namespace rs::render {
@@ -96,6 +99,39 @@ Json graspModel(const runtime::RunLog& rec, const workcell::Workcell& cell) {
   return {{"step", step}, {"at", at}, {"object", object}, {"held", held}, {"pose", pose}};
 }
 
+// How the cell's belts, feeders and sinks moved the parts (run_log.h's
+// motions) as parallel arrays: "step", "at" (µs), "object", "pose" (12
+// numbers each, as a let-go's: F_world_object · P⁻¹ at "at"), "velocity"
+// (3 each, units per second), "travel" (how far it goes; -1: without end),
+// "present" (0: a part a sink took, a feeder's empty slot). And each
+// sensor's edges: "at", "sensor", "on".
+Json motionModel(const runtime::RunLog& rec, const workcell::Workcell& cell) {
+  Json step = Json::array(), at = Json::array(), object = Json::array(), pose = Json::array(), velocity = Json::array();
+  Json travel = Json::array(), present = Json::array();
+  for (const runtime::MotionRecord& record : rec.motions) {
+    const runtime::PartMotion& m = record.motion;
+    if (m.object >= cell.objects.size()) continue;  // never expected: the log saw this cell
+    step.push_back(record.step), at.push_back(m.at), object.push_back(m.object);
+    const Eigen::Isometry3d P_inv = cell.objects[m.object].F_world_design.inverse(Eigen::Isometry);
+    for (const auto& v : frameJson(m.pose * P_inv)) pose.push_back(v);
+    for (const double v : {m.velocity.x(), m.velocity.y(), m.velocity.z()}) velocity.push_back(v);
+    travel.push_back(std::isfinite(m.travel) ? m.travel : -1.0);
+    present.push_back(runtime::isParked(m.pose) ? 0 : 1);
+  }
+  return {{"step", step}, {"at", at},         {"object", object}, {"pose", pose},
+          {"velocity", velocity}, {"travel", travel}, {"present", present}};
+}
+
+Json sensorEdgeModel(const runtime::RunLog& rec) {
+  Json at = Json::array(), sensor = Json::array(), on = Json::array();
+  for (const runtime::DeviceRecord& r : rec.devices) {
+    const runtime::DeviceEvent& e = r.event;
+    if (e.kind != runtime::DeviceEvent::Kind::SensorOn && e.kind != runtime::DeviceEvent::Kind::SensorOff) continue;
+    at.push_back(e.at), sensor.push_back(e.device), on.push_back(e.kind == runtime::DeviceEvent::Kind::SensorOn);
+  }
+  return {{"at", at}, {"sensor", sensor}, {"on", on}};
+}
+
 Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const std::string& outcome) {
   Json motors = Json::array();
   for (const vm::MotorSpec& m : rec.motors) {
@@ -151,6 +187,10 @@ Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const 
   run["cameras"] = {{"step", camStep}, {"view", camView}, {"window", camWindow}};
   run["inputs"] = {{"at", inAt}, {"mask", inMask}};
   run["grasps"] = graspModel(rec, cell);
+  if (!cell.devices.empty()) {  // only with devices: other pages keep their bytes
+    run["motions"] = motionModel(rec, cell);
+    run["sensors"] = sensorEdgeModel(rec);
+  }
   return run;
 }
 
@@ -197,6 +237,29 @@ Json pathModel(const runtime::RunLog& log, const workcell::Workcell& cell, doubl
   return {{"at", at}, {"pts", pts}, {"jump", jump}};
 }
 
+// Each sensor's lines as a still draws them while it is ON (scene.h), in
+// world coordinates: {"kind": "sensor", "index", "name", "pts", "colors"}.
+Json sensorModel(const workcell::Workcell& cell) {
+  CellPoser poser(cell);
+  for (std::size_t s = 0; s < cell.devices.sensors.size(); ++s) poser.setSensorOn(s, true);
+  std::vector<Line3> lines;
+  poser.lines(lines);
+  Json sensors = Json::array();
+  for (std::size_t s = 0; s < cell.devices.sensors.size(); ++s)
+    sensors.push_back({{"kind", "sensor"},
+                       {"index", s},
+                       {"name", cell.devices.sensors[s].name},
+                       {"pts", Json::array()},
+                       {"colors", Json::array()}});
+  for (const Line3& l : lines) {
+    if (l.part.kind != PartKind::Sensor) continue;
+    Json& sensor = sensors[static_cast<std::size_t>(l.part.owner)];
+    for (const double v : {l.a.x(), l.a.y(), l.a.z(), l.b.x(), l.b.y(), l.b.z()}) sensor["pts"].push_back(v);
+    sensor["colors"].push_back(static_cast<int>(l.color));
+  }
+  return sensors;
+}
+
 }  // namespace
 
 nlohmann::ordered_json frameJson(const Eigen::Isometry3d& F) {
@@ -214,13 +277,18 @@ Json cellDrawing(const workcell::Workcell& cell, const Camera& camera) {
   Json objects = Json::array();
   for (std::size_t o = 0; o < cell.objects.size(); ++o)
     objects.push_back(part("object", static_cast<int>(o), 0, cell.objects[o].shape, cell.objects[o].F_world_design));
-  for (std::size_t o = 0; o < cell.objects.size(); ++o) objects[o]["name"] = cell.objects[o].shape.name;
-  return {{"fit", {{"center", vec(fit.center)}, {"radius", fit.radius}}},
-          {"camera",
-           {{"view", vec(camera.view)}, {"window", vec(camera.window)}, {"zoom", camera.zoom}, {"axes", camera.axes}}},
-          {"style", styleModel()},
-          {"robots", robots},
-          {"objects", objects}};
+  for (std::size_t o = 0; o < cell.objects.size(); ++o) {
+    objects[o]["name"] = cell.objects[o].shape.name;
+    if (cell.objects[o].F_world_design.translation().y() < kNotInCellBelow) objects[o]["parked"] = true;  // a feeder's slot
+  }
+  Json drawing = {{"fit", {{"center", vec(fit.center)}, {"radius", fit.radius}}},
+                  {"camera",
+                   {{"view", vec(camera.view)}, {"window", vec(camera.window)}, {"zoom", camera.zoom}, {"axes", camera.axes}}},
+                  {"style", styleModel()},
+                  {"robots", robots},
+                  {"objects", objects}};
+  if (!cell.devices.sensors.empty()) drawing["sensors"] = sensorModel(cell);
+  return drawing;
 }
 
 Json animationModel(const AnimationInput& input) {

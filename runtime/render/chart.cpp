@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "model/workcell/tool_tracker.h"
+#include "runtime/run/device_history.h"
 
 namespace rs::render {
 
@@ -110,6 +111,16 @@ Chart chartOf(const ChartInput& input) {
   for (int i = 1; i <= vm::kIoCount; ++i) chart.series.push_back({fmt::format("in{}", i), {}});
   const std::size_t outputs = chart.series.size();
   for (int i = 1; i <= vm::kIoCount; ++i) chart.series.push_back({fmt::format("out{}", i), {}});
+  // The cell's devices: a series per sensor and per conveyor.
+  const workcell::Devices* devices = input.cell && !input.cell->devices.empty() ? &input.cell->devices : nullptr;
+  const std::size_t sensors = chart.series.size();
+  if (devices)
+    for (const workcell::Sensor& s : devices->sensors) chart.series.push_back({"sensor_" + s.name, {}});
+  const std::size_t conveyors = chart.series.size();
+  if (devices)
+    for (const workcell::Conveyor& c : devices->conveyors) chart.series.push_back({"belt_" + c.name, {}});
+  std::optional<runtime::DeviceHistory> history;
+  if (devices) history.emplace(log, *input.cell);
   for (ChartSeries& s : chart.series) s.values.reserve(n);
   chart.lines.reserve(n);
 
@@ -128,6 +139,11 @@ Chart chartOf(const ChartInput& input) {
       chart.series[inputs + static_cast<std::size_t>(i)].values.push_back((state.inputs >> i) & 1);
       chart.series[outputs + static_cast<std::size_t>(i)].values.push_back((state.outputs >> i) & 1);
     }
+    if (history) {
+      for (std::size_t s = 0; s < devices->sensors.size(); ++s) chart.series[sensors + s].values.push_back(history->sensorOn(s, t));
+      for (std::size_t c = 0; c < devices->conveyors.size(); ++c)
+        chart.series[conveyors + c].values.push_back(history->conveyorRunning(c, t));
+    }
     const std::uint32_t index = state.step ? log.steps[*state.step].index : UINT32_MAX;
     chart.lines.push_back(index < input.lineOf.size() ? input.lineOf[index] : 0);
   }
@@ -145,6 +161,18 @@ Chart chartOf(const ChartInput& input) {
   for (std::size_t i = 0; i < static_cast<std::size_t>(vm::kIoCount); ++i) in.series.push_back(inputs + i), out.series.push_back(outputs + i);
   chart.lanes.push_back(std::move(in));
   chart.lanes.push_back(std::move(out));
+  if (devices && !devices->sensors.empty()) {
+    ChartLane lane{LaneKind::Sensors, "sensors", {}};
+    for (std::size_t s = 0; s < devices->sensors.size(); ++s)
+      lane.series.push_back(sensors + s), lane.rows.push_back(devices->sensors[s].name);
+    chart.lanes.push_back(std::move(lane));
+  }
+  if (devices && !devices->conveyors.empty()) {
+    ChartLane lane{LaneKind::Conveyors, "conveyors", {}};
+    for (std::size_t c = 0; c < devices->conveyors.size(); ++c)
+      lane.series.push_back(conveyors + c), lane.rows.push_back(devices->conveyors[c].name);
+    chart.lanes.push_back(std::move(lane));
+  }
 
   chart.lineChanges = lineChangesOf(log, input.lineOf);
   chart.marks = input.marks;

@@ -24,8 +24,9 @@ namespace rs::render {
 /// What a lane shows: one motor, one coordinate of the tool centre point
 /// (x, y and z each a lane of its own, on its own scale: a lift of 60 shows
 /// beside a reach of 1000), the gripper's motor, eight inputs or outputs
-/// (on/off traces).
-enum class LaneKind : std::uint8_t { Motor, Tcp, Gripper, Inputs, Outputs };
+/// (on/off traces), and on a cell with devices a row per sensor (ON while
+/// it sees a part) and per conveyor (ON while its belt runs).
+enum class LaneKind : std::uint8_t { Motor, Tcp, Gripper, Inputs, Outputs, Sensors, Conveyors };
 
 struct ChartSeries {
   std::string column;          ///< CSV header: "A", "tcp_x", "gripper", "in1", "out8"
@@ -34,9 +35,10 @@ struct ChartSeries {
 
 struct ChartLane {
   LaneKind kind = LaneKind::Motor;
-  std::string label;           ///< "A revolute", "TCP x", "gripper E", "inputs", "outputs"
+  std::string label;           ///< "A revolute", "TCP x", "gripper E", "inputs", "outputs", "sensors", "conveyors"
   std::vector<std::size_t> series;  ///< indices into Chart::series
   int axis = 0;                ///< Tcp: the coordinate shown, 0 x, 1 y, 2 z
+  std::vector<std::string> rows = {};  ///< Sensors, Conveyors: each row's name (inputs and outputs: numbered)
 };
 
 enum class MarkKind : std::uint8_t { Collision, Warning, Stop };
@@ -87,7 +89,8 @@ Chart chartOf(const ChartInput& input);
 
 /// The samples as CSV: a header row ("time_s", the motors by letter,
 /// "tcp_x", "tcp_y", "tcp_z", "gripper" when there is one, "in1".."in8",
-/// "out1".."out8", "line"), then one row a sample; times in seconds with
+/// "out1".."out8", then "sensor_NAME" per sensor and "belt_NAME" per
+/// conveyor on a cell with devices, "line"), then one row a sample; times in seconds with
 /// six decimals, lengths with three, counts and on/off (1/0) as integers.
 std::string chartCsv(const Chart& chart);
 

@@ -27,18 +27,39 @@ void chartColor(cairo_t* cr, Rgb c, double alpha = 1.0) {
   cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
 }
 
-double laneHeight(LaneKind kind) {
-  switch (kind) {
+// A row of a device's lane is higher than an input's: its name stands beside it.
+constexpr double kDeviceRow = 12;
+
+double laneHeight(const ChartLane& lane) {
+  switch (lane.kind) {
     case LaneKind::Motor: return kMotorLane;
     case LaneKind::Tcp: return kTcpLane;
     case LaneKind::Gripper: return kGripperLane;
+    case LaneKind::Sensors:
+    case LaneKind::Conveyors: return static_cast<double>(lane.series.size()) * kDeviceRow;
     case LaneKind::Inputs:
     case LaneKind::Outputs: break;
   }
   return vm::kIoCount * kDigitalRow;
 }
 
-bool isDigitalLane(LaneKind kind) { return kind == LaneKind::Inputs || kind == LaneKind::Outputs; }
+bool isDigitalLane(LaneKind kind) {
+  return kind == LaneKind::Inputs || kind == LaneKind::Outputs || kind == LaneKind::Sensors ||
+         kind == LaneKind::Conveyors;
+}
+
+workcell::Color digitalColor(LaneKind kind) {
+  switch (kind) {
+    case LaneKind::Inputs: return chart_colors::kInput;
+    case LaneKind::Sensors: return chart_colors::kSensor;
+    case LaneKind::Conveyors: return chart_colors::kConveyor;
+    case LaneKind::Outputs:
+    case LaneKind::Motor:
+    case LaneKind::Tcp:
+    case LaneKind::Gripper: break;
+  }
+  return chart_colors::kOutput;
+}
 
 std::size_t notesOf(const Chart& chart) {
   return std::min(chart.marks.size(), kNotesShown) + (chart.marks.size() > kNotesShown ? 1 : 0);
@@ -109,9 +130,9 @@ void analogPath(cairo_t* cr, const Chart& chart, const ChartLayout& layout, cons
 // stretch OFF as a dim line low down. A line that never turns on is one dim
 // line: nothing bright that could be read as ON.
 void digitalPath(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const std::vector<double>& v,
-                 const ChartBox& box, std::size_t row, Rgb on) {
-  const double top = box.y0 + static_cast<double>(row) * kDigitalRow;
-  const double high = top + 1.5, low = top + kDigitalRow - 1.5;
+                 const ChartBox& box, std::size_t row, Rgb on, double rowHeight) {
+  const double top = box.y0 + static_cast<double>(row) * rowHeight;
+  const double high = top + 1.5, low = top + rowHeight - 1.5;
   const std::size_t n = v.size();
   for (const bool level : {false, true}) {
     bool any = false;
@@ -165,11 +186,13 @@ void drawLane(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const 
   cairo_set_line_width(cr, 1.25);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   if (isDigitalLane(lane.kind)) {
-    const workcell::Color color = lane.kind == LaneKind::Inputs ? chart_colors::kInput : chart_colors::kOutput;
+    const workcell::Color color = digitalColor(lane.kind);
     for (std::size_t r = 0; r < lane.series.size(); ++r) {
-      chartText(cr, box.x0 - 6, box.y0 + static_cast<double>(r + 1) * kDigitalRow - 0.5, std::to_string(r + 1), 8,
-           rgb(workcell::Color::DarkGray), true);
-      digitalPath(cr, chart, layout, chart.series[lane.series[r]].values, box, r, rgb(color));
+      const double row = lane.rows.empty() ? kDigitalRow : kDeviceRow;
+      chartText(cr, box.x0 - 6, box.y0 + static_cast<double>(r + 1) * row - 0.5,
+                r < lane.rows.size() ? lane.rows[r] : std::to_string(r + 1), lane.rows.empty() ? 8 : 9,
+                rgb(workcell::Color::DarkGray), true);
+      digitalPath(cr, chart, layout, chart.series[lane.series[r]].values, box, r, rgb(color), row);
     }
     return;
   }
@@ -331,7 +354,7 @@ ChartLayout chartLayout(const Chart& chart, int width) {
   double y = kChartTitle;
   layout.top = y;
   for (const ChartLane& lane : chart.lanes) {
-    const double h = laneHeight(lane.kind);
+    const double h = laneHeight(lane);
     layout.lanes.push_back({layout.left, y, layout.right, y + h});
     y += h + kLaneGap;
   }

@@ -54,6 +54,8 @@ inline constexpr workcell::Color kGripper = workcell::Color::White;
 inline constexpr workcell::Color kHeld = workcell::Color::Brown;  ///< a band while the gripper holds an object
 inline constexpr workcell::Color kInput = workcell::Color::LightGreen;   ///< an input while ON
 inline constexpr workcell::Color kOutput = workcell::Color::LightRed;   ///< an output while ON
+inline constexpr workcell::Color kSensor = workcell::Color::LightMagenta;  ///< a sensor while ON (as the stills draw it)
+inline constexpr workcell::Color kConveyor = workcell::Color::Yellow;     ///< a conveyor while its belt runs
 /// An input or output while OFF: dim, so that only what is ON stands out.
 inline constexpr workcell::Color kOff = workcell::Color::DarkGray;
 inline constexpr workcell::Color kLine = workcell::Color::LightGray;  ///< a tick where a source line starts

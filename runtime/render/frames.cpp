@@ -17,6 +17,8 @@ std::vector<bool> eventsOf(const runtime::RunLog& log, std::span<const std::uint
   for (const runtime::OutputChange& o : log.outputs) mark(o.step);
   for (const runtime::CameraChange& c : log.cameras) mark(c.step);
   for (const runtime::GraspRecord& g : log.grasps) mark(g.step);
+  for (const runtime::DeviceRecord& d : log.devices) mark(d.step);  // a sensor's edge, a part fed or taken
+  for (const runtime::MotionRecord& m : log.motions) mark(m.step);  // a belt starts or stops a part
   for (std::size_t m = 0; m < log.motors.size() && m < log.moves.size(); ++m)
     if (log.motors[m].kind == vm::JointKind::Gripper)  // a close that takes nothing is an event too
       for (const runtime::MotorMove& move : log.moves[m]) mark(move.step);
@@ -110,6 +112,8 @@ Frames framesOf(const runtime::RunLog& log, std::span<const std::uint32_t> event
   out.outputs = renumbered(log.outputs, kept);
   out.cameras = renumbered(log.cameras, kept);
   out.grasps = renumbered(log.grasps, kept);
+  out.devices = renumbered(log.devices, kept);
+  out.motions = renumbered(log.motions, kept);
   out.inputs = log.inputs;
   out.end = log.end;
   frames.stepOf = kept;

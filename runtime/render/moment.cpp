@@ -1,5 +1,9 @@
 #include "runtime/render/moment.h"
 
+#include <algorithm>
+
+#include "runtime/run/device_history.h"
+
 namespace rs::render {
 
 // The run pauses right after the first instruction that takes the clock
@@ -17,6 +21,21 @@ Moment momentOf(runtime::Run& run, vm::Micros at) {
   for (const runtime::ObjectView& o : run.rig().objects(at)) {
     if (o.held) m.held = m.objects.size();
     m.objects.push_back(o.pose);
+  }
+  // The run went on past `at` to the end of the step in progress: the
+  // devices' parts are where the log says they were at `at`.
+  const workcell::Workcell* cell = run.rig().cell();
+  if (const runtime::CellDevices* devices = run.rig().devices(); devices && cell) {
+    if (const runtime::RunLog* log = run.log()) {
+      const runtime::DeviceHistory history(*log, *cell);
+      const vm::Micros t = std::min(at, m.clock);
+      for (std::size_t o = 0; o < m.objects.size(); ++o)
+        if (m.held != o)
+          if (const std::optional<Eigen::Isometry3d> p = history.restingPose(o, t)) m.objects[o] = *p;
+      for (std::size_t s = 0; s < cell->devices.sensors.size(); ++s) m.sensorsOn.push_back(history.sensorOn(s, t));
+    } else {
+      for (std::size_t s = 0; s < cell->devices.sensors.size(); ++s) m.sensorsOn.push_back(devices->sensorOn(s));
+    }
   }
   if (const runtime::SimMachine* sim = run.rig().sim()) {
     m.view = sim->viewRotation();

@@ -24,8 +24,14 @@ struct Moment {
   /// or END is success.
   bool reached = false;
   /// With a workcell: each object's placement (F_world_design) at `at`,
-  /// carried by the gripper or resting (runtime/cell/world.h).
+  /// carried by the gripper or resting (runtime/cell/world.h), of the run's
+  /// cell (Rig::cell(): a feeder's slots are objects too, parked while
+  /// empty). On a cell with devices, a run that keeps a log gives where a
+  /// belt had carried each part at `at` exactly (runtime/run/device_history.h).
   std::vector<Eigen::Isometry3d> objects;
+  /// Each sensor's state at `at` (the cell's devices.sensors), when the
+  /// run keeps a log; else as the run left it.
+  std::vector<bool> sensorsOn;
   /// The object the gripper carries at `at`, if any (its pose is in
   /// `objects`): a still checks it for collisions as the run did, with the
   /// gripper's frame.

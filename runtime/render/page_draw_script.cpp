@@ -12,6 +12,11 @@
 // cellDrawing: fit, camera, style, robots, objects) once and returns the
 // functions a page draws with; the page says where the motors are and
 // where the objects are (a run's grasp events, a pendant's state).
+//
+// A cell's devices: an object whose pose is GONE (a feeder's empty slot,
+// a part a sink took) is neither drawn nor listed; each sensor of
+// model.sensors (its lines in world coordinates) is drawn only while the
+// page says it is ON (setSensor), in its colour (scene.h kSensorOnColor).
 #include "runtime/render/page.h"
 
 namespace rs::render::page {
@@ -121,7 +126,11 @@ const std::string_view kDrawScript = R"JS(function robotsimDrawing(model, canvas
     r.zero = new Int32Array(r.letters.length);
     for (const p of r.parts) { preparePart(p); allParts.push(p); }
   }
-  for (const o of model.objects) { preparePart(o); allParts.push(o); }
+  for (const o of model.objects) { preparePart(o); allParts.push(o); o.off = !!o.parked; }
+  const sensors = model.sensors || [];
+  for (const s of sensors) { preparePart(s); allParts.push(s); s.off = true; }
+  function setSensor(i, on) { if (sensors[i]) sensors[i].off = !on; }
+  const GONE = 'gone';  // what objectPose answers for an object not in the cell
 
   for (const o of model.objects) {
     o.W = affine();  // its pose in the world, for a caller that composes one
@@ -176,8 +185,11 @@ const std::string_view kDrawScript = R"JS(function robotsimDrawing(model, canvas
     }
     for (const o of model.objects) {
       const P = objectPose(o);
+      o.off = P === GONE || (!P && !!o.parked);
+      if (o.off) continue;
       projectPart(P ? multiply(V, P, o.T) : V, o);
     }
+    for (const s of sensors) if (!s.off) projectPart(V, s);
   }
   function apply(T, x, y, z) {
     return [T[0] * x + T[3] * y + T[6] * z + T[9], T[1] * x + T[4] * y + T[7] * z + T[10]];
@@ -204,6 +216,7 @@ const std::string_view kDrawScript = R"JS(function robotsimDrawing(model, canvas
       let any = false;
       ctx.beginPath();
       for (const p of allParts) {
+        if (p.off) continue;
         if (p.hot) {
           if (c !== 4) continue;
           const s = p.screen;
@@ -283,7 +296,14 @@ const std::string_view kDrawScript = R"JS(function robotsimDrawing(model, canvas
       for (const p of r.parts) for (let j = 0; j < 4 * p.count; j += 4) lines.push(Array.from(p.screen.slice(j, j + 4)));
       if (r.tool) { const F = r.F[r.n]; tools.push(apply(M, F[9], F[10], F[11])); }
     }
-    for (const o of model.objects) for (let j = 0; j < 4 * o.count; j += 4) lines.push(Array.from(o.screen.slice(j, j + 4)));
+    for (const o of model.objects) {
+      if (o.off) continue;
+      for (let j = 0; j < 4 * o.count; j += 4) lines.push(Array.from(o.screen.slice(j, j + 4)));
+    }
+    for (const s of sensors) {
+      if (s.off) continue;
+      for (let j = 0; j < 4 * s.count; j += 4) lines.push(Array.from(s.screen.slice(j, j + 4)));
+    }
     return { lines, tools };
   }
 
@@ -326,7 +346,7 @@ const std::string_view kDrawScript = R"JS(function robotsimDrawing(model, canvas
   }
 
   return { carrier, affine, multiply, viewMatrix, projectAll, apply, cameraFor, draw, projectStill, attachCamera,
-           resetView, view, ctx };
+           resetView, view, ctx, setSensor, GONE };
 }
 )JS";
 

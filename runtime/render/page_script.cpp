@@ -12,7 +12,12 @@
 // its lines go through the program robot's last frame F_world_E(t) times
 // the recorded F_E_object (composed with the placement's inverse); after a
 // let-go, through the recorded resting pose; before its first event it is
-// where the workcell placed it.
+// where the workcell placed it. A cell's devices (run.motions) move parts
+// too: a record puts a part somewhere at its time and says how a belt
+// carries it from there (velocity, travel); the later of an object's grasp
+// and its motion is in force (at one step and time: a let-go, then the
+// motion it starts, then a take). A part a sink took, or a feeder's empty
+// slot, is not drawn; a sensor is drawn while its edges (run.sensors) say ON.
 //
 // The camera formula is runtime/render/camera.h's. window.robotsim exposes
 // the state, the projection and frame-time statistics to tests and benches.
@@ -42,15 +47,53 @@ const std::string_view kScript = R"JS('use strict';
     });
   }
 
+  // Each object's motions on the cell's belts (run.motions), and each
+  // sensor's edges (run.sensors).
+  for (const o of model.objects) o.motions = { step: [], at: [], pose: [], vel: [], travel: [], present: [] };
+  if (run.motions) {
+    const m = run.motions;
+    m.object.forEach((obj, e) => {
+      const list = model.objects[obj].motions;
+      list.step.push(m.step[e]); list.at.push(m.at[e]); list.present.push(m.present[e]);
+      list.pose.push(Float64Array.from(m.pose.slice(12 * e, 12 * e + 12)));
+      list.vel.push(m.velocity.slice(3 * e, 3 * e + 3)); list.travel.push(m.travel[e]);
+    });
+  }
+  const sensorEdges = (model.sensors || []).map(() => ({ at: [], on: [] }));
+  if (run.sensors) run.sensors.sensor.forEach((s, e) => {
+    if (sensorEdges[s]) { sensorEdges[s].at.push(run.sensors.at[e]); sensorEdges[s].on.push(run.sensors.on[e]); }
+  });
+  function showSensors(t) {
+    sensorEdges.forEach((edges, s) => { const e = lastUpTo(edges.at, t); D.setSensor(s, e >= 0 && edges.on[e]); });
+  }
+  // Where motion record f puts object o at time t: its pose moved along
+  // its velocity for as far as it travels.
+  function motionPose(o, f, t) {
+    const m = o.motions;
+    if (!m.present[f]) return D.GONE;
+    const v = m.vel[f], speed = Math.hypot(v[0], v[1], v[2]), P = m.pose[f];
+    if (!(speed > 0) || t <= m.at[f]) return P;
+    const travel = m.travel[f] < 0 ? Infinity : m.travel[f];
+    const d = Math.min(speed * (t - m.at[f]) / 1e6, travel) / speed;
+    const out = o.M || (o.M = affine());
+    out.set(P);
+    out[9] += v[0] * d; out[10] += v[1] * d; out[11] += v[2] * d;
+    return out;
+  }
   // The map from object o's stored pts to the world at step k, time t, or
   // null while it is where the workcell placed it. The event in force is
   // the last one of a step up to k that had happened by t (a take at its
   // step's end, a let-go at its step's start): so stepping to the
   // instruction before an opening move still shows the object held.
   function objectPose(o, k, t) {
-    const g = o.grasps;
+    const g = o.grasps, m = o.motions;
     let e = k < 0 ? -1 : lastUpTo(g.step, k);
     while (e >= 0 && g.at[e] > t) e--;
+    let f = k < 0 ? -1 : lastUpTo(m.step, k);
+    while (f >= 0 && m.at[f] > t) f--;
+    if (f >= 0 && (e < 0 || m.step[f] > g.step[e] ||
+                   (m.step[f] === g.step[e] && (g.held[e] ? m.at[f] > g.at[e] : m.at[f] >= g.at[e]))))
+      return motionPose(o, f, t);
     if (e < 0) return null;
     return g.held[e] ? multiply(carrier.F[carrier.n], g.pose[e], o.W) : g.pose[e];
   }
@@ -169,6 +212,7 @@ const std::string_view kScript = R"JS('use strict';
   function render() {
     stateAt(S.k, S.t, current);
     markCollisions(S.t);
+    showSensors(S.t);
     D.draw(current, current.enc, (o) => objectPose(o, S.k, S.t), S.axes,
            model.cell + '   t = ' + (S.t / 1e6).toFixed(3) + ' s', strokePath);
   }
@@ -368,6 +412,7 @@ const std::string_view kScript = R"JS('use strict';
     // --dump-lines` order, then the tool centre points.
     project(t, width, height) {
       const k = stepAt(t), st = stateAt(k, t, { enc: new Int32Array(motorCount), view: [0, 0, 0], window: [0, 0, 0] });
+      showSensors(t);
       const still = D.projectStill(st, st.enc, (o) => objectPose(o, k, t), width, height);
       request();
       return { encoders: Array.from(st.enc), lines: still.lines, tools: still.tools };

@@ -14,8 +14,13 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 const std::string& ownerName(const Part& part, const workcell::Workcell& cell) {
-  return part.kind == PartKind::Object ? cell.objects[static_cast<std::size_t>(part.owner)].shape.name
-                                       : cell.robots[static_cast<std::size_t>(part.owner)].robot.name;
+  const auto i = static_cast<std::size_t>(part.owner);
+  if (part.kind == PartKind::Sensor) return cell.devices.sensors[i].name;
+  return part.kind == PartKind::Object ? cell.objects[i].shape.name : cell.robots[i].robot.name;
+}
+
+const char* ownerWord(const Part& part) {
+  return part.kind == PartKind::Object ? "object" : part.kind == PartKind::Sensor ? "sensor" : "robot";
 }
 
 // Nine decimals, and never "-0.000000000".
@@ -35,6 +40,7 @@ std::string partName(const Part& part) {
     case PartKind::Finger3: return "finger3";
     case PartKind::Object: return "object";
     case PartKind::Axis: return fmt::format("axis{}-{}", part.index, "xyz"[part.axis & 3]);
+    case PartKind::Sensor: return "sensor";
   }
   return "?";
 }
@@ -89,7 +95,7 @@ void dumpText(std::ostream& out, const Picture& picture, const workcell::Workcel
                      c.view.y(), c.view.z(), c.window.x(), c.window.y(), c.window.z(), c.zoom, c.axes ? "on" : "off",
                      picture.fit.center.x(), picture.fit.center.y(), picture.fit.center.z(), picture.fit.radius);
   for (const Line2& l : picture.lines)
-    out << fmt::format("{} {} {} {} {} {} {} {} {}\n", l.part.kind == PartKind::Object ? "object" : "robot",
+    out << fmt::format("{} {} {} {} {} {} {} {} {}\n", ownerWord(l.part),
                        l.part.owner, base::safeText(ownerName(l.part, cell)), partName(l.part), colorName(l.color),
                        number(l.a.x()), number(l.a.y()), number(l.b.x()), number(l.b.y()));
   for (const ToolMark& t : picture.tools)
@@ -103,7 +109,7 @@ void dumpText(std::ostream& out, const Picture& picture, const workcell::Workcel
 void dumpJson(std::ostream& out, const Picture& picture, const workcell::Workcell& cell) {
   Json lines = Json::array(), tools = Json::array();
   for (const Line2& l : picture.lines)
-    lines.push_back({{"owner", l.part.kind == PartKind::Object ? "object" : "robot"},
+    lines.push_back({{"owner", ownerWord(l.part)},
                      {"index", l.part.owner},
                      {"name", ownerName(l.part, cell)},
                      {"part", partName(l.part)},

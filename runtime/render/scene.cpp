@@ -22,7 +22,8 @@ void addAxes(std::vector<Line3>& out, const Eigen::Isometry3d& F, int robot, int
 
 }  // namespace
 
-CellPoser::CellPoser(const workcell::Workcell& cell) : cell_(&cell), robots_(cell.robots.size()) {
+CellPoser::CellPoser(const workcell::Workcell& cell)
+    : cell_(&cell), robots_(cell.robots.size()), sensorsOn_(cell.devices.sensors.size(), false) {
   for (const workcell::PlacedObject& o : cell.objects) objects_.push_back(o.F_world_design);
   for (std::size_t r = 0; r < robots_.size(); ++r) {
     const workcell::PlacedRobot& placed = cell.robots[r];
@@ -93,7 +94,24 @@ void CellPoser::lines(std::vector<Line3>& out, double axisLength) const {
   }
   for (std::size_t o = 0; o < cell_->objects.size(); ++o) {
     const workcell::PlacedObject& object = cell_->objects[o];
+    if (objects_[o].translation().y() < kNotInCellBelow) continue;
     addShape(out, object.shape, objects_[o], {PartKind::Object, static_cast<int>(o), 0});
+  }
+  for (std::size_t s = 0; s < sensorsOn_.size(); ++s) {
+    if (!sensorsOn_[s]) continue;
+    const workcell::Sensor& sensor = cell_->devices.sensors[s];
+    const Part part{PartKind::Sensor, static_cast<int>(s), 0};
+    if (sensor.shape == workcell::Sensor::Shape::Beam) {
+      out.push_back({sensor.a, sensor.b, kSensorOnColor, part});
+      continue;
+    }
+    // The zone's twelve edges: from each corner, along each axis its bit is 0 in.
+    for (int c = 0; c < 8; ++c)
+      for (int k = 0; k < 3; ++k)
+        if (!(c & (1 << k)))
+          out.push_back({sensor.zone.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)),
+                         sensor.zone.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c | (1 << k))),
+                         kSensorOnColor, part});
   }
 }
 

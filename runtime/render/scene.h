@@ -22,11 +22,11 @@
 namespace rs::render {
 
 /// What a line belongs to: for dumps, tests and the HTML page.
-enum class PartKind : std::uint8_t { Link, GripperBase, Finger2, Finger3, Object, Axis };
+enum class PartKind : std::uint8_t { Link, GripperBase, Finger2, Finger3, Object, Axis, Sensor };
 
 struct Part {
   PartKind kind = PartKind::Link;
-  int owner = 0;  ///< robot index (object index for Object)
+  int owner = 0;  ///< robot index (object index for Object, sensor index for Sensor)
   int index = 0;  ///< link number; frame number for Axis
   int axis = 0;   ///< Axis only: 0 = x, 1 = y, 2 = z
 };
@@ -44,6 +44,14 @@ inline constexpr workcell::Color kAxisColors[3] = {workcell::Color::LightRed, wo
 /// Length of each drawn frame axis, as a fraction of the fitted radius.
 inline constexpr double kAxisLength = 0.08;
 
+/// The colour of a sensor while it is ON (a broken beam, an occupied zone).
+inline constexpr workcell::Color kSensorOnColor = workcell::Color::LightMagenta;
+
+/// An object placed lower than this is not in the cell (a feeder's empty
+/// slot, a part a sink took: runtime/cell/devices.h parks them at y = -1e7):
+/// neither drawn nor fitted.
+inline constexpr double kNotInCellBelow = -1e6;
+
 /// Poses the robots of a workcell and lists its lines. Holds one
 /// kinematics workspace per robot, built once; posing does not allocate.
 class CellPoser {
@@ -59,9 +67,14 @@ class CellPoser {
   /// Where object `o` is drawn (F_world_design of its lines): where the
   /// workcell placed it until set, e.g. to where a gripper carried it.
   void setObjectPose(std::size_t o, const Eigen::Isometry3d& pose) { objects_[o] = pose; }
+  /// Sensor `s` (the cell's devices.sensors) is ON: drawn, in
+  /// kSensorOnColor (a beam as the line between its ends, a zone as its
+  /// box). A sensor that is OFF is not drawn.
+  void setSensorOn(std::size_t s, bool on) { sensorsOn_[s] = on; }
 
   /// Every line: each robot's links, gripper base and fingers, then the
-  /// objects; with `axisLength` > 0 also each robot's frames 0..n.
+  /// objects in the cell, then the sensors that are ON; with `axisLength` >
+  /// 0 also each robot's frames 0..n.
   void lines(std::vector<Line3>& out, double axisLength = 0.0) const;
 
   /// Frame i (0..n) of robot `robot` in the world, at the current pose.
@@ -94,6 +107,7 @@ class CellPoser {
   const workcell::Workcell* cell_;
   std::vector<RobotState> robots_;
   std::vector<Eigen::Isometry3d> objects_;  // F_world_design of each object
+  std::vector<bool> sensorsOn_;
   std::vector<Eigen::Vector3d> homePoints_;
 };
 

@@ -76,7 +76,7 @@ void Rig::wakeRobotAt(vm::Micros at) {
 void Rig::afterStep(std::uint32_t instruction) {
   lastStepInputs_.swap(pendingInputs_);
   pendingInputs_.clear();
-  if (devices_) lastStepDevices_ = devices_->takeEvents();
+  if (devices_) lastStepDevices_ = devices_->takeEvents(), lastStepMotions_ = devices_->takeMotions();
   if (!world_) return;
   const World::StepEffects step = world_->takeStepEffects();
   lastStepGrasped_ = step.grasped;
@@ -152,6 +152,7 @@ void Rig::restore(const RigSnapshot& s) {
     devices_->putBack(s.pendingDevices);
   }
   lastStepDevices_.clear();
+  lastStepMotions_.clear();
   lastStepGrasped_ = false;
   lastStepClosedEmpty_ = false;
   pendingInputs_.clear(), lastStepInputs_.clear();

@@ -126,6 +126,23 @@ class Rig {
   vm::Status advanceCell(vm::Micros t);
   /// What the devices did during the step just run (and before it).
   std::span<const DeviceEvent> devicesOfLastStep() const { return lastStepDevices_; }
+  /// Record how the parts move (CellDevices::recordMotions): a run that
+  /// keeps a log asks, and motionsOfLastStep() then says what changed
+  /// during the step just run (and before it).
+  void recordMotions() {
+    if (devices_) devices_->recordMotions(true);
+  }
+  std::span<const PartMotion> motionsOfLastStep() const { return lastStepMotions_; }
+  /// Every part on a running belt to where it is now (a pendant showing
+  /// the cell between its instants; a run never needs it).
+  void settleDevices() {
+    if (devices_) devices_->commit();
+  }
+  /// What the devices did since the last step ended, as the step's (a run
+  /// that stopped inside a step: afterStep never came).
+  void takeDeviceRecords() {
+    if (devices_) lastStepDevices_ = devices_->takeEvents(), lastStepMotions_ = devices_->takeMotions();
+  }
 
   /// A program's next step runs instruction `instruction`: the collisions
   /// its moves find are that instruction's.
@@ -202,6 +219,7 @@ class Rig {
   SimIo io_;
   std::unique_ptr<CellDevices> devices_;
   std::vector<DeviceEvent> lastStepDevices_;
+  std::vector<PartMotion> lastStepMotions_;
   RobotProcess robot_;
   std::uint32_t robotId_ = 0;
 

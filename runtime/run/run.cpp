@@ -32,6 +32,7 @@ class Run::Observers final : public vm::StepObserver {
       const auto step = static_cast<std::uint32_t>(logger_->log().steps.size());
       for (const Rig::InputChangeRecord& c : rig_.inputsOfLastStep()) logger_->inputCause(step, c.at, c.cause);
       for (const DeviceEvent& e : rig_.devicesOfLastStep()) logger_->deviceEvent(step, e);
+      for (const PartMotion& m : rig_.motionsOfLastStep()) logger_->partMotion(step, m);
       logger_->afterStep(vm, index);
     }
     bool pause = false;
@@ -78,7 +79,7 @@ void Run::build(std::unique_ptr<Rig> rig) {
   // The simulated robot runs as a process of the cell: its waits say "not
   // yet" and the run moves the cell's clock (waitOnCell).
   if (rig_->sim()) rig_->sim()->waitOnScheduler(true);
-  if (spec_.log && rig_->sim()) logger_.emplace(*rig_->sim(), rig_->world(), spec_.lines);
+  if (spec_.log && rig_->sim()) logger_.emplace(*rig_->sim(), rig_->world(), spec_.lines), rig_->recordMotions();
   interpreter_ = std::make_unique<vm::Interpreter>(*spec_.image, rig_->machine());
   observers_ = std::make_unique<Observers>(*this, *rig_, logger_ ? &*logger_ : nullptr);
   breakpoints_.assign(spec_.image->code.size(), 0);
@@ -179,6 +180,14 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
     }
   }
   observers_->when = nullptr;
+  if (logger_ && finished()) {
+    // A step cut short (the time limit in a WAITFOR the devices end, a
+    // fault) is the log's last: what the devices did during it is its.
+    rig_->takeDeviceRecords();
+    const auto step = static_cast<std::uint32_t>(logger_->log().steps.size());
+    for (const DeviceEvent& e : rig_->devicesOfLastStep()) logger_->deviceEvent(step, e);
+    for (const PartMotion& m : rig_->motionsOfLastStep()) logger_->partMotion(step, m);
+  }
   if (logger_) logger_->finish(outcome);
   return outcome;
 }

@@ -20,7 +20,7 @@ RunLog::Mark RunLog::mark() const {
   Mark m;
   m.steps = steps.size(), m.outputs = outputs.size(), m.cameras = cameras.size(), m.inputs = inputs.size();
   m.grasps = grasps.size(), m.variables = variables.size(), m.inputChanges = inputChanges.size(), m.end = end;
-  m.devices = devices.size();
+  m.devices = devices.size(), m.motions = motions.size();
   for (const auto& list : moves) m.moves.push_back(list.size());
   return m;
 }
@@ -29,7 +29,7 @@ void RunLog::cutTo(const Mark& m) {
   steps.resize(m.steps), outputs.resize(m.outputs), cameras.resize(m.cameras);
   inputs.resize(m.inputs), grasps.resize(m.grasps), variables.resize(m.variables);
   inputChanges.resize(m.inputChanges);
-  devices.resize(m.devices);
+  devices.resize(m.devices), motions.resize(m.motions);
   for (std::size_t i = 0; i < moves.size() && i < m.moves.size(); ++i) moves[i].resize(m.moves[i]);
   end = m.end;
 }

@@ -80,6 +80,12 @@ struct DeviceRecord {
   DeviceEvent event;
 };
 
+/// How a part moved from then on (runtime/cell/devices.h) during step `step` (or before it).
+struct MotionRecord {
+  std::uint32_t step = 0;
+  PartMotion motion;
+};
+
 struct RunLog {
   std::vector<vm::MotorSpec> motors;
   std::vector<StepRecord> steps;
@@ -91,6 +97,7 @@ struct RunLog {
   std::vector<GraspRecord> grasps;  ///< in step order; empty without a gripper
   std::vector<VariableWrite> variables;  ///< in step order
   std::vector<DeviceRecord> devices;     ///< a sensor's edge, a part fed (or waiting), a part a sink took
+  std::vector<MotionRecord> motions;     ///< a part's motion changed: a belt started or stopped it, fed, took it
   vm::Micros end = 0;               ///< the clock when the run stopped (or paused)
   /// The slot its straight lines' knots are merged within (LineThinning;
   /// 1: every knot is kept).
@@ -99,7 +106,7 @@ struct RunLog {
   /// How long each list was at some moment, to cut the log back to it.
   struct Mark {
     std::size_t steps = 0, outputs = 0, cameras = 0, inputs = 0, grasps = 0, variables = 0, inputChanges = 0,
-                devices = 0;
+                devices = 0, motions = 0;
     std::vector<std::size_t> moves;
     vm::Micros end = 0;
     bool operator==(const Mark&) const = default;
@@ -161,6 +168,7 @@ class RunLogger {
     log_.inputChanges.push_back({step, at, cause});
   }
   void deviceEvent(std::uint32_t step, const DeviceEvent& event) { log_.devices.push_back({step, event}); }
+  void partMotion(std::uint32_t step, const PartMotion& motion) { log_.motions.push_back({step, motion}); }
 
  private:
   void record(std::uint32_t index);

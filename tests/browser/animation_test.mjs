@@ -63,6 +63,14 @@ fs.writeFileSync(gantryProgram, ['MOVETO -2800 2800 0 0', 'MOVETO -2800 2800 149
 const gantryHtml = path.join(out, 'gantry.html');
 robotsim(['animate', gantryProgram, '--cell', 'gantry-cell', '-o', gantryHtml]);
 const GANTRY_AT = { before: 2, closing: 5, carrying: 8, opening: 14.2, away: 18 };  // seconds
+// A cell with devices (issue 35): adept_production on adept-cell. The belts
+// carry blocks during the robot's waits and moves, the beam at x = 300
+// breaks at 1.1 s, the feeder puts blocks at 0 and 6 s, the sink takes
+// the first carried out at 5.635 s: the page must draw each moment as
+// render --at does (parts, the broken beam, no empty feeder slot).
+const devicesHtml = path.join(out, 'devices.html');
+robotsim(['animate', path.join(examples, 'adept_production.rsp'), '--cell', 'adept-cell', '-o', devicesHtml]);
+const devicesStills = stills('adept_production.rsp', 'adept-cell', [0.5, 1.2, 3, 5.7, 6.1, 30]);
 // A collision, kept going with --collisions=warn: closing at the block's
 // middle (Y 1500, 4.675 .. 5.175 s) the fingers' lower corners swing 0.09
 // below their resting tips, into the pallet (docs/teach.md): the left
@@ -305,6 +313,14 @@ try {
   check(longStatus.includes(`26001 instructions shown as ${longFrames} frames: every event, and the first to start ` +
                             'in each 0.002 s'), '  and its status says so', JSON.stringify(longStatus));
 
+  // ---- a cell's devices: belts carry parts, the broken beam, parts fed and taken
+  await page.goto('file://' + devicesHtml);
+  await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
+  check(devicesStills[1].still.lines.some((l) => l.owner === 'sensor') &&
+        !devicesStills[0].still.lines.some((l) => l.owner === 'sensor'),
+        'render --at draws the beam while it is broken (1.2 s), not before (0.5 s)');
+  await compare(devicesStills);
+
   // ---- the carried block moves with the gripper; the other block does not
   await page.goto('file://' + gantryHtml);
   await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
@@ -410,7 +426,7 @@ try {
 
   const foreign = requests.filter((u) => u !== url && u !== 'file://' + viewHtml && u !== 'file://' + gantryHtml &&
                                          u !== 'file://' + trapezoidHtml && u !== 'file://' + hotHtml && u !== 'file://' + highHtml &&
-                                         u !== 'file://' + longHtml &&
+                                         u !== 'file://' + longHtml && u !== 'file://' + devicesHtml &&
                                          !u.startsWith('data:'));
   check(foreign.length === 0, 'nothing but the page itself was requested', foreign.join(' '));
   check(errors.length === 0, 'no errors on the way', errors.join('; '));

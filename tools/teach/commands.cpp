@@ -118,6 +118,12 @@ Outcome applyCommand(Pendant& p, const Json& r) {
     if (!line || !on) return bad(fmt::format("output needs \"line\", 1..{}, and \"on\", true or false", vm::kIoCount));
     return p.setOutput(*line, *on);
   }
+  if (*op == "runCell") {
+    const auto seconds = r.find("seconds");
+    if (seconds == r.end() || !seconds->is_number())
+      return bad(fmt::format("runCell needs \"seconds\", a number above 0 and at most {}", Pendant::kMaxRunCell));
+    return p.runCell(seconds->get<double>());
+  }
   if (*op == "reset") return p.resetCell();
   if (*op == "readPosition") return p.readPosition();
   if (*op == "reload") return p.reload();

@@ -15,7 +15,7 @@ namespace rs::teach {
 enum class KeyAction : std::uint8_t {
   PrevMotor, NextMotor, JogMinus, JogPlus, Step1, Step10, Step100, JogMode,
   OpenGripper, CloseGripper, Teach, GoTo, Reteach, Delete, Rename,
-  PrevPoint, NextPoint, ReadPosition, ResetCell, Help, Quit,
+  PrevPoint, NextPoint, ReadPosition, ResetCell, RunCell, Help, Quit,
 };
 
 struct KeyBinding {
@@ -25,7 +25,7 @@ struct KeyBinding {
   std::string_view help;    ///< one line for the help panel
 };
 
-inline constexpr std::array<KeyBinding, 23> kKeys{{
+inline constexpr std::array<KeyBinding, 24> kKeys{{
     {"ArrowUp", KeyAction::PrevMotor, "prevMotor", "select the motor (world, tool: the axis) above"},
     {"ArrowDown", KeyAction::NextMotor, "nextMotor", "select the motor (world, tool: the axis) below"},
     {"ArrowLeft", KeyAction::JogMinus, "jogMinus", "jog the selected motor or axis by -step"},
@@ -47,6 +47,7 @@ inline constexpr std::array<KeyBinding, 23> kKeys{{
     {"PageDown", KeyAction::NextPoint, "nextPoint", "select the point below"},
     {"p", KeyAction::ReadPosition, "readPosition", "read position from the controller (--device)"},
     {"R", KeyAction::ResetCell, "resetCell", "reset the cell (asks first)"},
+    {"w", KeyAction::RunCell, "runCell", "let the cell's devices run for 1 s (belts, feeders, sensors)"},
     {"?", KeyAction::Help, "help", "show or hide the keys"},
     {"q", KeyAction::Quit, "quit", "quit (the terminal pendant)"},
 }};

@@ -72,6 +72,7 @@ step <select id="step" aria-label="jog step">
 <div id="inputs" class="lamps"></div>
 <h2>Outputs</h2>
 <div id="outputs" class="lamps"></div>
+<div class="row"><span id="devices"></span><span class="pendant"> <button id="runCell">run the cell 1 s</button></span></div>
 <div class="pendant">
 <h2>Points</h2>
 <ol id="points"></ol>

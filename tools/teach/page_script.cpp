@@ -38,6 +38,7 @@ const std::string_view kScript = R"JS('use strict';
     if (!shown || !shown.objects) return null;
     const m = shown.objects[model.objects.indexOf(o)];
     if (!m) return null;
+    if (m === 'gone') return D.GONE;  // a part a sink took, a feeder's empty slot
     let P = poses.get(o);
     if (!P) { P = new Float64Array(12); poses.set(o, P); }
     for (let i = 0; i < 12; i++) P[i] = m[i];
@@ -61,7 +62,7 @@ const std::string_view kScript = R"JS('use strict';
     D.draw(still, S.shown.encoders, objectPose, S.axes, model.cell + (S.anim ? '   moving' : ''));
   }
   function shownOf(st) {
-    return { encoders: st.encoders, objects: st.objects.map((o) => o.pose) };
+    return { encoders: st.encoders, objects: st.objects.map((o) => (o.present === false ? 'gone' : o.pose)) };
   }
 
   // ---- The panel, built once from the first state.
@@ -173,6 +174,12 @@ const std::string_view kScript = R"JS('use strict';
     buildAxes();
     [...el('inputs').children].forEach((d, i) => d.classList.toggle('on', st.inputs[i]));
     [...el('outputs').children].forEach((d, i) => d.classList.toggle('on', st.outputs[i]));
+    // The cell's devices: a sensor drawn while ON, and listed with its belts.
+    const dev = st.devices || { sensors: [], conveyors: [] };
+    dev.sensors.forEach((x, i) => D.setSensor(i, x.on));
+    el('devices').textContent = dev.sensors.map((x) => 'sensor ' + x.name + (x.on ? ' ON' : ' off') + ' (' + x.count + ')')
+      .concat(dev.conveyors.map((x) => 'belt ' + x.name + (x.running ? ' runs' : ' stopped')))
+      .join('  ·  ');
     const list = el('points');
     list.textContent = '';
     if (S.selectedPoint && !st.points.some((p) => p.name.toUpperCase() === S.selectedPoint.toUpperCase()))
@@ -291,6 +298,7 @@ const std::string_view kScript = R"JS('use strict';
     prevPoint: () => movePointSelection(-1), nextPoint: () => movePointSelection(1),
     readPosition: () => send({ op: 'readPosition' }),
     resetCell: () => ask('Reset the cell (motors home, objects back)?', { op: 'reset' }),
+    runCell: () => send({ op: 'runCell', seconds: 1 }),
     help: () => el('keys').classList.toggle('on'),
     quit: () => {},
   };
@@ -312,6 +320,7 @@ const std::string_view kScript = R"JS('use strict';
   el('delete').addEventListener('click', actions.delete);
   el('rename').addEventListener('click', actions.rename);
   el('reset').addEventListener('click', actions.resetCell);
+  el('runCell').addEventListener('click', actions.runCell);
   el('read').addEventListener('click', actions.readPosition);
   el('reload').addEventListener('click', () => send({ op: 'reload' }));
   const axesBox = el('axes');

@@ -40,6 +40,9 @@ std::string valuesText(std::span<const std::int32_t> v) {
 Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, ProgramFile file)
     : cell_(std::move(cell)), motors_(std::move(motors)), file_(std::move(file)) {
   rig_ = std::make_unique<runtime::Rig>(cell_, motors_, stimuli::Stimuli{}, runtime::CollisionMode::Error);
+  // The rig's cell from now on: with its feeders' slots among the objects
+  // (it lives as long as the rig, and shares the cell's ownership).
+  cell_ = std::shared_ptr<const workcell::Workcell>(cell_, rig_->cell());
   start_ = rig_->snapshot();
   if (cell_->drivenRobot()->robot.chain) cartesian_.emplace(*cell_->drivenRobot());
   message_ = fmt::format("teaching {} on {}", file_.path(), cell_->name);
@@ -57,6 +60,7 @@ Pendant::Pendant(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm:
 Pendant::~Pendant() = default;
 
 Outcome Pendant::done(Outcome o) {
+  cellFrames_.clear();
   if (o.ok) limit_.clear();
   message_ = o.message;
   failed_ = !o.ok;
@@ -323,6 +327,29 @@ Outcome Pendant::setOutput(int line, bool on) {
   return done({true, fmt::format("output {} {}", line, on ? "ON" : "OFF")});
 }
 
+Outcome Pendant::runCell(double seconds) {
+  if (!rig_->sim()) return refuse("with a device there is no simulated cell to run");
+  if (!std::isfinite(seconds) || seconds <= 0 || seconds > kMaxRunCell)
+    return refuse(fmt::format("run the cell for more than 0 and at most {} s, not {}", kMaxRunCell, seconds), true);
+  moved_ = false;
+  const vm::Micros start = rig_->clock(), length = static_cast<vm::Micros>(std::llround(seconds * 1e6));
+  const vm::Micros step = std::max(kFrameStep, (length + 249) / 250);
+  std::vector<MotionFrame> frames;
+  const std::vector<std::int32_t> encoders(rig_->motors().begin(), rig_->motors().end());
+  for (vm::Micros t = 0;; t = std::min(t + step, length)) {
+    if (const vm::Status st = rig_->advanceCell(start + t); !st) return done({false, st.message});
+    rig_->settleDevices();
+    MotionFrame f;
+    f.at = t, f.encoders = encoders;
+    for (const runtime::ObjectView& o : rig_->objects()) f.objects.push_back(o.pose);
+    frames.push_back(std::move(f));
+    if (t == length) break;
+  }
+  const Outcome o = done({true, fmt::format("the cell ran for {} s", base::formatSeconds(length))});
+  cellFrames_ = std::move(frames);
+  return o;
+}
+
 Outcome Pendant::resetCell() {
   if (start_) {
     rig_->restore(*start_);
@@ -376,6 +403,7 @@ std::vector<Eigen::Isometry3d> Pendant::placements() const {
 // rig knows where each motor was at any time of its last move
 // (Rig::motorsAt) and where each object was (Rig::objects).
 std::vector<MotionFrame> Pendant::frames() const {
+  if (!cellFrames_.empty()) return cellFrames_;
   std::vector<MotionFrame> out;
   if (!moved_ || !rig_->sim() || moveEnd_ <= moveStart_) return out;
   const vm::Micros length = moveEnd_ - moveStart_;
@@ -410,10 +438,17 @@ PendantState Pendant::state() const {
         (frame == workcell::JogFrame::World ? s.worldAxes : s.toolAxes).push_back({a.name, a.rotation, a.help});
   }
   s.gripper = gripperState(motors_, s.encoders);
-  s.inputs = device_.empty() ? inputs_ : rig_->machine().inputs();
+  // In simulation, the pendant's switches and what the cell's wires drive.
+  s.inputs = device_.empty() ? static_cast<std::uint8_t>(inputs_ | rig_->machine().inputs()) : rig_->machine().inputs();
   s.outputs = rig_->machine().outputs();
   for (const runtime::ObjectView& o : rig_->objects())
-    s.objects.push_back({std::string(o.name), o.pose, o.held, o.moved});
+    s.objects.push_back({std::string(o.name), o.pose, o.held, o.moved, o.present});
+  if (const runtime::CellDevices* d = rig_->devices()) {
+    for (std::size_t i = 0; i < cell_->devices.sensors.size(); ++i)
+      s.sensors.push_back({cell_->devices.sensors[i].name, d->sensorOn(i), d->sensorCount(i)});
+    for (std::size_t i = 0; i < cell_->devices.conveyors.size(); ++i)
+      s.conveyors.push_back({cell_->devices.conveyors[i].name, d->running(i), d->carried(i)});
+  }
   for (const PointRow& p : file_.points().points()) s.points.push_back({p.name, p.values, p.line + 1, p.readable, p.pose});
   s.clock = rig_->clock();
   s.motion = frames();

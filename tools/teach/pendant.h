@@ -90,6 +90,12 @@ class Pendant {
   /// Input `line` (1..8) flips (simulation: a switch on the pendant).
   Outcome toggleInput(int line);
   Outcome setOutput(int line, bool on);
+  /// The cell's devices act for `seconds` of simulated time with the robot
+  /// standing still (simulation only): a belt an output runs carries its
+  /// parts, feeders feed, sensors and the inputs they drive switch. The
+  /// state's motion has it, time-stepped as a move.
+  Outcome runCell(double seconds);
+  static constexpr double kMaxRunCell = 600;
   /// Motors home, objects back where the cell placed them, lines OFF.
   Outcome resetCell();
   /// The controller's encoder counts become the current pose (device only).
@@ -101,6 +107,7 @@ class Pendant {
   std::uint64_t revision() const { return revision_; }
   /// Where the cell placed each object (F_world_design), for pendantJson.
   std::vector<Eigen::Isometry3d> placements() const;
+  /// The rig's cell: a feeder's slots are among its objects.
   const workcell::Workcell& cell() const { return *cell_; }
   /// The frame step of a move's motion: 40 ms, longer for moves of more than 10 s.
   static constexpr vm::Micros kFrameStep = 40'000;
@@ -134,6 +141,7 @@ class Pendant {
   std::string message_, fault_, limit_;
   bool failed_ = false;
   std::uint64_t revision_ = 1;
+  std::vector<MotionFrame> cellFrames_;  // the last operation ran the cell (runCell)
 };
 
 }  // namespace rs::teach

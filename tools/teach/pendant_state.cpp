@@ -71,8 +71,13 @@ Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& pl
     objects.push_back({{"name", ob.name},
                        {"pose", frameJson(ob.pose * P.inverse(Eigen::Isometry))},
                        {"held", ob.held},
-                       {"moved", ob.moved}});
+                       {"moved", ob.moved},
+                       {"present", ob.present}});
   }
+  Json sensors = Json::array(), conveyors = Json::array();
+  for (const PendantDevice& d : s.sensors) sensors.push_back({{"name", d.name}, {"on", d.on}, {"count", d.count}});
+  for (const PendantDevice& d : s.conveyors)
+    conveyors.push_back({{"name", d.name}, {"running", d.on}, {"carried", d.count}});
   Json points = Json::array();
   for (const PendantPoint& p : s.points)
     points.push_back({{"name", p.name}, {"values", p.values}, {"line", p.line}, {"readable", p.readable}, {"pose", p.pose}});
@@ -103,6 +108,7 @@ Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& pl
           {"inputs", lines(s.inputs)},
           {"outputs", lines(s.outputs)},
           {"objects", objects},
+          {"devices", {{"sensors", sensors}, {"conveyors", conveyors}}},
           {"points", points},
           {"clock", s.clock},
           {"motion", motion},

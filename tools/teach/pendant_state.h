@@ -26,6 +26,16 @@ struct PendantObject {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< F_world_design now
   bool held = false;
   bool moved = false;
+  bool present = true;  ///< in the cell (a feeder's empty slot, a part a sink took: not)
+};
+
+/// A device of the cell (runtime/cell/devices.h) as the pendant shows it:
+/// a sensor ON (`on`) and how many times it turned ON (`count`), or a
+/// conveyor running and how many parts it carried.
+struct PendantDevice {
+  std::string name;
+  bool on = false;
+  std::uint64_t count = 0;
 };
 
 struct PendantPoint {
@@ -66,6 +76,7 @@ struct PendantState {
   GripperState gripper = GripperState::None;
   std::uint8_t inputs = 0, outputs = 0;  ///< bit 0 = line 1
   std::vector<PendantObject> objects;
+  std::vector<PendantDevice> sensors, conveyors;  ///< the cell's devices (none without them)
   std::vector<PendantPoint> points;
   vm::Micros clock = 0;  ///< the machine's clock
   std::vector<MotionFrame> motion;  ///< the last move, time-stepped (empty after a non-move)
@@ -89,7 +100,9 @@ GripperState gripperState(const std::vector<vm::MotorSpec>& motors, const std::v
 /// "rotation", "help"}], "tool": [...]}, "gripper", "inputs", "outputs" (arrays of eight booleans),
 /// "objects": [{"name", "pose" (12 numbers, column-major 3x4: F_world ·
 /// F_placed⁻¹, what takes the object's drawing from where the cell placed
-/// it to where it is), "held", "moved"}], "points": [{"name", "values",
+/// it to where it is), "held", "moved", "present"}], "devices":
+/// {"sensors": [{"name", "on", "count"}], "conveyors": [{"name",
+/// "running", "carried"}]}, "points": [{"name", "values",
 /// "line", "readable", "pose"}], "clock", "motion": [{"at", "encoders",
 /// "objects"}], "message", "failed", "limit", "fault", "fileHash" (16 hex digits)}.
 /// `placed` holds each object's F_world_design where the cell placed it.

@@ -34,7 +34,7 @@ void RunSource::publish(const runtime::Run& run, const std::string& message) {
   s.gripper = gripperState(s.motors, s.encoders);
   s.inputs = v.inputs;
   s.outputs = v.outputs;
-  for (const runtime::ObjectView& o : v.objects) s.objects.push_back({std::string(o.name), o.pose, o.held, o.moved});
+  for (const runtime::ObjectView& o : v.objects) s.objects.push_back({std::string(o.name), o.pose, o.held, o.moved, o.present});
   s.clock = v.clock;
   s.message = message;
   std::vector<Eigen::Isometry3d> placed;

@@ -131,7 +131,7 @@ int plotCommand(const PlotOptions& o, std::ostream& out, std::ostream& err) {
   printRunWarnings(err, launch::runWarnings(run, collisions, image.sourceName), loaded);
 
   render::ChartInput input;
-  input.cell = loaded.cell.get();
+  input.cell = run.rig().cell() ? run.rig().cell() : loaded.cell.get();  // with its devices and feeders' slots
   input.run = &log;
   input.marks = chartMarks(run, stop);
   input.every = every;
@@ -188,10 +188,12 @@ void addPlotOptions(CLI::App* cmd, PlotOptions& o) {
   addRunOptions(cmd, o.run, std::to_string(kAnimateMaxSteps));
   cmd->footer(fmt::format(
       "Lanes, top to bottom: each motor of the arm, the tool centre point's x, y and z, the gripper (shaded while "
-      "it holds an object), inputs 1-{0}, outputs 1-{0}, and the source lines that ran (a tick where each starts). "
+      "it holds an object), inputs 1-{0}, outputs 1-{0}, on a cell with devices a row per sensor (ON while it sees a "
+      "part) and per conveyor (ON while its belt runs), and the source lines that ran (a tick where each starts). "
       "Collisions (red), warnings (yellow) and a failed stop (magenta) are marked across the lanes and listed "
       "under the time axis. The CSV has one row a sample: time_s, each motor by its letter (encoder counts), "
-      "tcp_x, tcp_y, tcp_z, held (the object the gripper holds, 0 none), in1..in{0}, out1..out{0} (1 on), line. "
+      "tcp_x, tcp_y, tcp_z, held (the object the gripper holds, 0 none), in1..in{0}, out1..out{0} (1 on), "
+      "sensor_NAME and belt_NAME on a cell with devices, line. "
       "Exit 0 when the run ended well, 1 when it failed (the chart is written either way), 2 on bad input.",
       vm::kIoCount));
 }

@@ -218,13 +218,15 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
   // With --at the run needs to go on only until then.
   Prepared prepared;
   if (!o.program.file.empty()) {
+    // A cell's devices move parts during a move: the log says where they were at --at.
     prepared = prepare(loaded, o, vm::RunLimits{}.maxSteps, o.at.empty() ? std::nullopt : std::optional(at), err,
-                       /*log=*/o.path);
+                       /*log=*/o.path || (loaded.cell && !loaded.cell->devices.empty()));
     if (!prepared.run) return kExitBadInput;
   }
   const std::unique_ptr<runtime::Run>& run = prepared.run;
 
-  const workcell::Workcell& cell = *loaded.cell;
+  // The run's cell: its feeders' slots are objects too (not drawn while empty).
+  const workcell::Workcell& cell = run && run->rig().cell() ? *run->rig().cell() : *loaded.cell;
   render::CellPoser poser(cell);
   render::Fit fit = render::fitView(poser.homePoints(), camera);  // for the starting view
   // --zoom about --center, or the robot's base; at zoom 1 nothing changes.
@@ -264,6 +266,7 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     }
     poser.setEncoders(0, m.encoders);
     for (std::size_t i = 0; i < m.objects.size(); ++i) poser.setObjectPose(i, m.objects[i]);
+    for (std::size_t s = 0; s < m.sensorsOn.size(); ++s) poser.setSensorOn(s, m.sensorsOn[s]);
     encoders = m.encoders;
     objectPoses = m.objects;
     held = m.held;
@@ -326,7 +329,7 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   const runtime::RunLog& recording = *run->log();
 
   render::AnimationInput input;
-  input.cell = loaded.cell.get();
+  input.cell = run->rig().cell() ? run->rig().cell() : loaded.cell.get();  // with its feeders' slots
   input.run = &recording;
   input.listing = listing(loaded);
   input.camera = camera;
@@ -357,7 +360,7 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
     input.warning = fmt::format("line {}: {}", w->pos.line, w->message);
   // The chart under the scrub bar: from the whole log, whatever the frames keep.
   render::ChartInput chartInput;
-  chartInput.cell = loaded.cell.get();
+  chartInput.cell = input.cell;
   chartInput.run = &recording;
   const std::vector<std::uint32_t> lineOf = run->spec().image->lines.toVector();
   chartInput.lineOf = lineOf;

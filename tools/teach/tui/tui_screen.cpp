@@ -148,6 +148,21 @@ int worldPanel(Canvas& c, const PendantState& s, int row, int bottom) {
     c.put(row, 10, held, kLeftWidth);
     ++row;
   }
+  // The cell's devices: each sensor ON or off (with its count of ON edges),
+  // each belt running or stopped.
+  const auto devices = [&](const char* title, const std::vector<PendantDevice>& list, const char* on,
+                           const char* off) {
+    if (list.empty() || row >= bottom) return;
+    std::string text;
+    for (const PendantDevice& d : list)
+      text += fmt::format("{}{} {}", text.empty() ? "" : ", ", d.name, d.on ? on : off);
+    c.put(row, 1, title);
+    c.mark(row, 1, static_cast<int>(std::string_view(title).size()), Paint::Title);
+    c.put(row, 10, text, kLeftWidth);
+    ++row;
+  };
+  devices("SENSORS", s.sensors, "ON", "off");
+  devices("BELTS", s.conveyors, "runs", "stopped");
   return row;
 }
 

@@ -146,6 +146,7 @@ bool TuiSession::press(std::string_view key) {
     case KeyAction::ResetCell:
       ask(Asking::ConfirmReset, "reset the cell: motors home, objects back, lines off? (y/n) ");
       break;
+    case KeyAction::RunCell: pendant_.runCell(1.0); break;
     case KeyAction::Help: selection_.help = !selection_.help; break;
     case KeyAction::Quit: return false;
   }

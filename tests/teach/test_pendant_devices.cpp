@@ -1,0 +1,100 @@
+// The teach pendant on a cell with devices (issue 35): the state shows
+// each sensor and belt, switching an output runs the belt it drives, and
+// letting the cell run (runCell) moves the parts on it, breaks the beam and
+// turns on the input the beam is wired to. On the library's adept-cell
+// (stdlib/workcells/adept-cell.rsd): the infeed runs at 100 mm/s while
+// output 1 is ON, the outfeed always; the second block (object index 2)
+// spans x 150..190 on the infeed, so running from standstill its front
+// reaches the beam at x = 300 after 110 / 100 = 1.1 s; the beam is wired
+// to input 1.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "../render/render_test_util.h"
+#include "launch/program.h"
+#include "tests/cli/cli_support.h"
+#include "tools/teach/commands.h"
+#include "tools/teach/pendant.h"
+
+namespace {
+
+struct AdeptPendant {
+  AdeptPendant()
+      : path(dir.write("pick.rsp", "        END\n")),
+        cell(std::make_shared<const rs::workcell::Workcell>(rendertest::cell("adept-cell"))) {
+    rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path);
+    REQUIRE(file);
+    pendant = std::make_unique<rs::teach::Pendant>(cell, rs::launch::cellTarget(*cell).motors, std::move(*file));
+  }
+  rs::testing::TempDir dir;
+  std::string path;
+  std::shared_ptr<const rs::workcell::Workcell> cell;
+  std::unique_ptr<rs::teach::Pendant> pendant;
+};
+
+}  // namespace
+
+TEST_CASE("pendant: shows the devices, an output runs its belt, the cell runs on request", "[teach][devices]") {
+  AdeptPendant f;
+  rs::teach::Pendant& p = *f.pendant;
+  const double x0 = f.cell->objects[2].F_world_design.translation().x();
+  rs::teach::PendantState s = p.state();
+  REQUIRE(s.sensors.size() == 1);
+  CHECK(s.sensors[0].name == "eye");
+  CHECK_FALSE(s.sensors[0].on);
+  REQUIRE(s.conveyors.size() == 2);
+  CHECK(s.conveyors[0].name == "infeed");
+  CHECK_FALSE(s.conveyors[0].on);  // output 1 is OFF
+  CHECK(s.conveyors[1].on);        // RUN ON
+  // The feeder's first part is in the cell, its other slots are not.
+  const std::size_t placed = 4;  // infeed, two blocks, outfeed
+  REQUIRE(s.objects.size() > placed + 1);
+  CHECK(s.objects[placed].present);
+  CHECK_FALSE(s.objects[placed + 1].present);
+
+  // Output 1 runs the infeed at once; the parts move only while the cell runs.
+  REQUIRE(p.setOutput(1, true).ok);
+  s = p.state();
+  CHECK(s.conveyors[0].on);
+  CHECK(s.objects[2].pose.translation().x() == Approx(x0));
+  const rs::teach::Outcome ran = p.runCell(1.0);
+  INFO(ran.message);
+  REQUIRE(ran.ok);
+  s = p.state();
+  CHECK(s.clock == 1'000'000);
+  CHECK(s.objects[2].pose.translation().x() == Approx(x0 + 100).margin(1e-6));
+  CHECK_FALSE(s.sensors[0].on);  // its front at x 290: 10 short of the beam
+  CHECK((s.inputs & 1) == 0);
+  // The motion shows the belt's run frame by frame (40 ms), the robot still.
+  REQUIRE(s.motion.size() == 26);
+  CHECK(s.motion.back().at == 1'000'000);
+  CHECK(s.motion[1].objects[2].translation().x() == Approx(x0 + 4).margin(1e-6));
+  CHECK(s.motion[1].encoders == s.encoders);
+  // 0.2 s more: the front passes x = 300 at 1.1 s, the beam breaks, input 1 turns on.
+  REQUIRE(p.runCell(0.2).ok);
+  s = p.state();
+  CHECK(s.sensors[0].on);
+  CHECK(s.sensors[0].count == 1);
+  CHECK((s.inputs & 1) == 1);
+  CHECK(s.objects[2].pose.translation().x() == Approx(x0 + 120).margin(1e-6));
+  // The page's JSON.
+  const nlohmann::ordered_json j = rs::teach::pendantJson(s, p.placements());
+  CHECK(j["devices"]["sensors"][0]["on"] == true);
+  CHECK(j["devices"]["conveyors"][0]["running"] == true);
+  CHECK(j["objects"][placed + 1]["present"] == false);
+  // Any other operation leaves the cell's motion behind.
+  REQUIRE(p.setOutput(1, false).ok);
+  CHECK(p.state().motion.empty());
+  CHECK_FALSE(p.state().conveyors[0].on);
+}
+
+TEST_CASE("pendant: runCell refuses a bad duration", "[teach][devices]") {
+  AdeptPendant f;
+  CHECK(rs::teach::applyCommand(*f.pendant, {{"op", "runCell"}}).badRequest);
+  CHECK(rs::teach::applyCommand(*f.pendant, {{"op", "runCell"}, {"seconds", "1"}}).badRequest);
+  const rs::teach::Outcome zero = rs::teach::applyCommand(*f.pendant, {{"op", "runCell"}, {"seconds", 0}});
+  CHECK_FALSE(zero.ok);
+  CHECK(zero.badRequest);
+  CHECK(rs::teach::applyCommand(*f.pendant, {{"op", "runCell"}, {"seconds", 0.5}}).ok);
+  CHECK(f.pendant->state().clock == 500'000);
+}
