@@ -204,6 +204,7 @@ CellDevices::~CellDevices() = default;
 void CellDevices::robotMoves(vm::Micros until) {
   if (!sight_ || until == state_.moveUntil) return;
   state_.moveUntil = until;
+  sync();  // a take or a let-go just before the move: the sensors look again now
   watchRobot(clock_.now());
 }
 

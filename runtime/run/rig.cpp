@@ -16,6 +16,8 @@ Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSp
     devices_ = std::make_unique<CellDevices>(*cell_, *world_, io_, running_->clock());
     robot_.devices = devices_.get();
     sim_->onOutputChange([this](int output, bool) { devices_->outputChanged(output); });
+    // The devices watch what the robot shows the sensors on the way.
+    sim_->onMoveBegun([this](vm::Micros until) { devices_->robotMoves(until); });
     // The cell's first instant: the first parts fed, the sensors as the cell begins.
     (void)advanceCell(running_->clock().now());
   }

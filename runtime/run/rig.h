@@ -181,11 +181,7 @@ class Rig {
   /// a stimulus a WAITFOR waits for), so the clock stops there. Scheduled
   /// once per time.
   void wakeRobotAt(vm::Micros at);
-  /// The robot's wait under way is a move that ends at `until`: the
-  /// devices watch what it shows the sensors on the way.
-  void robotMovesUntil(vm::Micros until) {
-    if (devices_) devices_->robotMoves(until);
-  }
+
 
   bool canSnapshot() const { return sim_ != nullptr; }
   /// The whole state (the simulated machine only: check canSnapshot()).

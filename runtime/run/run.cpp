@@ -198,10 +198,7 @@ void Run::waitOnCell(const vm::RunOutcome& waiting) {
   // What the robot changed since (an output, a take) acts first, at now.
   const vm::IoMask inputsBefore = sim.inputs();
   if (vm::Status s = rig_->advanceCell(clock.now()); !s) return sim.endWait(s);
-  if (waiting.wakeAt != vm::Status::kNever) {
-    rig_->wakeRobotAt(waiting.wakeAt);
-    if (sim.waitingOnMove()) rig_->robotMovesUntil(waiting.wakeAt);
-  }
+  if (waiting.wakeAt != vm::Status::kNever) rig_->wakeRobotAt(waiting.wakeAt);
   const std::optional<vm::Micros> next = clock.nextTime();
   if (!next) {
     // A wire without AFTER may have answered the robot at this very

@@ -289,6 +289,7 @@ Status SimMachine::delay(Micros duration) {
 // now(). Waiting on the scheduler, the wait begins and the clock is left to it.
 Status SimMachine::advanceBy(Micros duration, bool move) {
   const Micros until = now() + duration;
+  if (move && duration > 0 && moveBegunListener_) moveBegunListener_(until);
   if (cooperative_ && duration > 0) {
     waitUntil_ = until, waitInput_ = 0, waitMove_ = move;
     return Status::notYet(until);

@@ -109,8 +109,6 @@ class SimMachine final : public vm::Machine {
   /// The wires that changed an input at this instant (kMaxStillWires at most).
   std::string stillReason() const override;
   static constexpr std::size_t kMaxStillWires = 8;
-  /// The wait begun (waitOnScheduler) is a move's, not a DELAY's or a WAITFOR's.
-  bool waitingOnMove() const { return waitMove_; }
   vm::IoMask outputs() const override { return outputs_; }
   vm::IoMask inputs() const override { return inputs_; }
 
@@ -136,6 +134,10 @@ class SimMachine final : public vm::Machine {
   /// Called after every move (and RESET) the machine makes, with its
   /// segments set: a straight line makes many within one instruction.
   void onMove(std::function<void()> listener) { moveListener_ = std::move(listener); }
+  /// Called as a move begins, with the time it ends (its motors' segments
+  /// are set, so positionAt answers for any moment of it): what the cell's
+  /// sensors need to see the robot on the way (runtime/cell/robot_sight.h).
+  void onMoveBegun(std::function<void(vm::Micros)> listener) { moveBegunListener_ = std::move(listener); }
 
   /// Everything that changes during a run, for snapshots.
   struct State {
@@ -197,6 +199,7 @@ class SimMachine final : public vm::Machine {
   std::function<void(vm::Micros, vm::IoMask)> inputListener_;
   std::function<void(vm::Micros, const InputCause&)> causeListener_;
   std::function<void()> moveListener_;
+  std::function<void(vm::Micros)> moveBegunListener_;
   std::function<void(int, bool)> outputListener_;
   std::optional<vm::Status> endWait_;  // not state: set and used between two calls
 };

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../render/render_test_util.h"
+#include "compiler/description/library.h"
 #include "launch/program.h"
 #include "tests/cli/cli_support.h"
 #include "tools/teach/commands.h"
@@ -97,4 +98,49 @@ TEST_CASE("pendant: runCell refuses a bad duration", "[teach][devices]") {
   CHECK(zero.badRequest);
   CHECK(rs::teach::applyCommand(*f.pendant, {{"op", "runCell"}, {"seconds", 0.5}}).ok);
   CHECK(f.pendant->state().clock == 500'000);
+}
+
+TEST_CASE("pendant: jogging a held block through a beam turns the input it is wired to on, then off",
+          "[teach][devices]") {
+  // The library's gantry (Cartesian, 0.1 mm per count, the tool centre
+  // point at (500 + X/10, 200 - Y/10, 400 + Z/10)) over a block centred at
+  // (220, 50, 680); a beam across x = 400 at y = 200, wired to input 1.
+  rs::testing::TempDir dir;
+  dir.write("c.rsd",
+            "WORKCELL carry\n"
+            "  ROBOT gantry    AT 0 1000 0\n"
+            "  OBJECT pallet   AT 150 0 760\n"
+            "  OBJECT block    AT 200 30 700\n"
+            "  SENSOR eye BEAM 400 200 600  400 200 760\n"
+            "  WIRE eye TO IN 1\n"
+            "END\n");
+  rs::compiler::Library lib(rs::compiler::librarySearchPath({dir.path().string()}));
+  const auto built = lib.workcell(dir.file("c.rsd"));
+  REQUIRE(built);
+  const auto cell = std::make_shared<const rs::workcell::Workcell>(*built);
+  const std::string path = dir.write("p.rsp", "        END\n");
+  rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path);
+  REQUIRE(file);
+  rs::teach::Pendant p(cell, rs::launch::cellTarget(*cell).motors, std::move(*file));
+  const std::int32_t over[] = {-2800, 2800, 0, 0};
+  const rs::teach::Outcome moved = p.moveTo(over);
+  INFO(moved.message);
+  REQUIRE(moved.ok);
+  REQUIRE(p.jog(2, 1490).ok);  // down round the block
+  REQUIRE(p.gripper(true).ok);
+  REQUIRE(p.jog(2, -1490).ok);  // up: the block y 179..219, x 200..240
+  CHECK_FALSE(p.state().sensors[0].on);
+  // 1500 counts along +x: the front face at 390, 10 short of the beam.
+  REQUIRE(p.jog(0, 1500).ok);
+  CHECK_FALSE(p.state().sensors[0].on);
+  CHECK((p.state().inputs & 1) == 0);
+  // 200 more: the front at 410, the block across the beam.
+  REQUIRE(p.jog(0, 200).ok);
+  CHECK(p.state().sensors[0].on);
+  CHECK(p.state().sensors[0].count == 1);
+  CHECK((p.state().inputs & 1) == 1);
+  // 400 more: the back face at 440, past it.
+  REQUIRE(p.jog(0, 400).ok);
+  CHECK_FALSE(p.state().sensors[0].on);
+  CHECK((p.state().inputs & 1) == 0);
 }
