@@ -1,7 +1,9 @@
 #include "runtime/cell/robot_sight.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 #include "runtime/cell/box_geometry.h"
 
@@ -15,6 +17,8 @@ Eigen::AlignedBox3d grown(const Eigen::AlignedBox3d& b, double by) {
   return {b.min() - d, b.max() + d};
 }
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 bool seesParts(const workcell::Sensor& s) { return s.sees != workcell::Sensor::Sees::Robots; }
 bool seesRobot(const workcell::Sensor& s) { return s.sees != workcell::Sensor::Sees::Parts; }
 
@@ -27,6 +31,7 @@ struct RobotSight::Probe {
   vm::Micros t = 0;
   std::vector<std::int32_t> encoders;
   Eigen::AlignedBox3d part;
+  std::array<Eigen::Vector3d, 8> corners;  // the carried part's design box's corners, placed
   std::vector<Eigen::AlignedBox3d> pieces;
   std::vector<bool> sees;
 };
@@ -54,8 +59,14 @@ void RobotSight::probe(vm::Micros t, const MotorsAt& at, Probe& p) {
 void RobotSight::look(Probe& p) {
   const workcell::Devices& d = cell_.devices;
   p.part = Eigen::AlignedBox3d();
-  if (const std::optional<std::size_t> held = world_.held())
-    p.part = transformedBox(workcell::boundsOf(cell_.objects[*held].shape), world_.objectPose(*held, p.encoders));
+  if (const std::optional<std::size_t> held = world_.held()) {
+    const Eigen::AlignedBox3d design = workcell::boundsOf(cell_.objects[*held].shape);
+    const Eigen::Isometry3d pose = world_.objectPose(*held, p.encoders);
+    for (int c = 0; c < 8 && !design.isEmpty(); ++c) {
+      p.corners[static_cast<std::size_t>(c)] = pose * design.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c));
+      p.part.extend(p.corners[static_cast<std::size_t>(c)]);
+    }
+  }
   p.pieces.clear();
   if (seesRobots_) {
     data_->poseOnly(p.encoders);
@@ -90,6 +101,38 @@ void RobotSight::sees(std::span<const std::int32_t> encoders, std::vector<bool>&
 // no point of the carried part moves farther than `part`, none of the
 // robot farther than `robot`, so a box that misses a sensor by more stays
 // off it, and one that touches it even when shrunk by that stays on it.
+namespace {
+
+// Where the carried part's box can be between two looks, each of its
+// corners having gone at most `reach` along its way from its place at a to
+// its place at b: within the ellipsoid with those two foci whose axes add
+// up to `reach`. `outer` holds every box it can be, `inner` lies in all of
+// them (empty when none is common). A part lifted straight up keeps its
+// x and z exactly, however far it goes: what a beam it stopped against
+// needs to be seen to stay broken.
+void carriedBounds(const std::array<Eigen::Vector3d, 8>& a, const std::array<Eigen::Vector3d, 8>& b, double reach,
+                   Eigen::AlignedBox3d& outer, Eigen::AlignedBox3d& inner) {
+  Eigen::Vector3d outerLo = Eigen::Vector3d::Constant(kInfinity), outerHi = -outerLo;
+  Eigen::Vector3d innerLo = outerLo, innerHi = -outerLo;  // innerLo: least of the highs; innerHi: most of the lows
+  for (std::size_t c = 0; c < 8; ++c) {
+    const Eigen::Vector3d centre = (a[c] + b[c]) / 2, span = b[c] - a[c];
+    const double d = span.norm(), r = std::max(reach, d);
+    const double along = r / 2, across = std::sqrt(std::max(0.0, r * r - d * d)) / 2;
+    const Eigen::Vector3d u = d > 0 ? Eigen::Vector3d(span / d) : Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) {
+      const double cosine = d > 0 ? u[k] : 0.0;
+      const double half = d > 0 ? std::sqrt(along * along * cosine * cosine + across * across * (1 - cosine * cosine))
+                                : r;
+      outerLo[k] = std::min(outerLo[k], centre[k] - half), outerHi[k] = std::max(outerHi[k], centre[k] + half);
+      innerLo[k] = std::min(innerLo[k], centre[k] + half), innerHi[k] = std::max(innerHi[k], centre[k] - half);
+    }
+  }
+  outer = {outerLo, outerHi};
+  inner = (innerLo.array() <= innerHi.array()).all() ? Eigen::AlignedBox3d(innerLo, innerHi) : Eigen::AlignedBox3d();
+}
+
+}  // namespace
+
 bool RobotSight::stays(const Probe& a, const Probe& b) const {
   double part = 0, robot = 0;
   const auto weights = model_->motorWeights();
@@ -98,19 +141,21 @@ bool RobotSight::stays(const Probe& a, const Probe& b) const {
     part += carried_[m] * counts;
     if (m < weights.size()) robot += weights[m] * counts;
   }
+  Eigen::AlignedBox3d outer, inner;
+  if (!a.part.isEmpty()) carriedBounds(a.corners, b.corners, part, outer, inner);
   const workcell::Devices& d = cell_.devices;
   for (std::size_t s = 0; s < d.sensors.size(); ++s) {
     const workcell::Sensor& sensor = d.sensors[s];
     const bool partCounts = seesParts(sensor) && !a.part.isEmpty();
     const bool robotCounts = seesRobot(sensor);
     if (!a.sees[s]) {
-      if (partCounts && sensorTouches(sensor, grown(a.part, part))) return false;
+      if (partCounts && sensorTouches(sensor, outer)) return false;
       if (robotCounts)
         for (const Eigen::AlignedBox3d& box : a.pieces)
           if (sensorTouches(sensor, grown(box, robot))) return false;
       continue;
     }
-    bool held = partCounts && sensorTouches(sensor, grown(a.part, -part));
+    bool held = partCounts && sensorTouches(sensor, inner);
     if (robotCounts)
       for (std::size_t i = 0; i < a.pieces.size() && !held; ++i) held = sensorTouches(sensor, grown(a.pieces[i], -robot));
     if (!held) return false;

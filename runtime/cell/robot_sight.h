@@ -5,7 +5,9 @@
 // one way from start to end, so the collision model's bound on how far a
 // point can move per encoder count (CollisionModel::motorWeights,
 // carriedWeights) bounds how far a box can move over any stretch of the
-// move: a stretch whose boxes, grown (or shrunk) by that bound, cannot
+// move (and, for the carried part, each corner's way lies in an ellipsoid
+// round its two places: a part lifted straight up keeps its x and z):
+// a stretch whose boxes, grown (or shrunk) by that bound, cannot
 // change what a sensor sees is passed over whole; the others are halved,
 // down to one microsecond. Nothing is sampled and missed.
 #pragma once

@@ -1,7 +1,8 @@
 // libFuzzer target: any bytes as a compiled image (.rsb). The loader must
 // refuse what it cannot trust with a message, and what it accepts must
 // disassemble and run (bounded) on the simulated Rhino without a fault of
-// our own: a verified image is safe to run.
+// our own: a verified image is safe to run; its cell section decodes or is
+// refused.
 //
 // Built twice: fuzz_image sees the bytes as they come (most mutations die
 // at the checksum, which is the point of the checksum), fuzz_image_fixed
@@ -13,6 +14,7 @@
 #include <memory>
 #include <string_view>
 
+#include "model/workcell/cell_file.h"
 #include "runtime/run/run.h"
 #include "vm/disasm.h"
 #include "vm/image_file.h"
@@ -49,6 +51,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   rs::diag::Result<rs::vm::Image> loaded = rs::vm::loadImage(view(data, size));
   if (!loaded.ok()) return 0;
   (void)rs::vm::disassemble(loaded.value());
+  // The cell section, as every command that loads an image decodes it.
+  (void)rs::workcell::decodeCell(loaded.value().cell);
   rs::runtime::RunSpec spec;
   spec.image = std::make_shared<const rs::vm::Image>(std::move(loaded).value());
   spec.limits.maxSteps = 20'000;

@@ -46,11 +46,17 @@ case "$reader" in
     for f in "$root"/examples/*.rsp "$root"/tests/golden/*.rsp; do
       "$robotsim" compile "$f" -o "$work/seeds-image/$(basename "$f" .rsp).rsb" >/dev/null 2>&1 || true
     done
+    # Images that carry a cell: geometry, and a cell with devices (section version 3).
+    "$robotsim" compile "$root/examples/gantry_pick.rsp" --cell gantry-cell -o "$work/seeds-image/gantry_cell.rsb" >/dev/null 2>&1 || true
+    "$robotsim" compile "$root/examples/adept_production.rsp" --cell adept-cell -o "$work/seeds-image/adept_cell.rsb" >/dev/null 2>&1 || true
     seeds+=("$work/seeds-image") ;;
 esac
 
 # A reader's keywords, when it has a dictionary (description.dict).
-[ -f "$here/$reader.dict" ] && extra+=("-dict=$here/$reader.dict")
+# The device run's inputs are a WORKCELL's lines: the description's words.
+dict=$reader
+[ "$reader" = device_run ] && dict=description
+[ -f "$here/$dict.dict" ] && extra+=("-dict=$here/$dict.dict")
 
 # The debug adapter's seeds launch examples/ programs by relative paths:
 # it runs from the top of the tree (its own paths made absolute first).
