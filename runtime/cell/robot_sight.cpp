@@ -44,6 +44,7 @@ RobotSight::RobotSight(const workcell::Workcell& cell, const World& world, std::
   model_ = std::make_unique<workcell::CollisionModel>(cell);
   data_ = std::make_unique<workcell::CollisionData>(*model_);
   carried_.assign(motors_, 0.0);
+  pool_.resize(kDepth);
   matters_ = model_->movable();
 }
 
@@ -164,16 +165,16 @@ bool RobotSight::stays(const Probe& a, const Probe& b) const {
 }
 
 std::optional<vm::Micros> RobotSight::search(const Probe& a, const Probe& b, const std::vector<bool>& start,
-                                             const MotorsAt& at, int& budget) {
+                                             const MotorsAt& at, int& budget, std::size_t depth) {
   if (stays(a, b)) return std::nullopt;
   if (b.t - a.t <= 1) return b.sees != start ? std::optional<vm::Micros>(b.t) : std::nullopt;
   const vm::Micros mid = a.t + (b.t - a.t) / 2;
-  if (--budget <= 0) return mid;
-  Probe m;
+  if (--budget <= 0 || depth >= kDepth) return mid;
+  Probe& m = pool_[depth];  // the looks of one halving, kept: no allocation once warm
   probe(mid, at, m);
-  if (std::optional<vm::Micros> left = search(a, m, start, at, budget)) return left;
+  if (std::optional<vm::Micros> left = search(a, m, start, at, budget, depth + 1)) return left;
   if (m.sees != start) return mid;  // only where the budget ran out on the left
-  return search(m, b, start, at, budget);
+  return search(m, b, start, at, budget, depth + 1);
 }
 
 std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at) {
@@ -190,11 +191,13 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
   } else {
     std::fill(carried_.begin(), carried_.end(), 0.0);
   }
-  Probe a, b;
+  Probe& a = pool_[0];
+  Probe& b = pool_[1];
   probe(from, at, a);
   probe(to, at, b);
+  start_ = a.sees;
   int budget = kMaxProbes;
-  return search(a, b, a.sees, at, budget);
+  return search(a, b, start_, at, budget, 2);
 }
 
 }  // namespace rs::runtime

@@ -54,7 +54,9 @@ class RobotSight {
   void look(Probe& p);
   bool stays(const Probe& a, const Probe& b) const;
   std::optional<vm::Micros> search(const Probe& a, const Probe& b, const std::vector<bool>& start, const MotorsAt& at,
-                                   int& budget);
+                                   int& budget, std::size_t depth);
+  // Halvings of a move go at most this deep (2^62 microseconds).
+  static constexpr std::size_t kDepth = 64;
 
   const workcell::Workcell& cell_;
   const World& world_;
@@ -64,6 +66,8 @@ class RobotSight {
   std::unique_ptr<workcell::CollisionModel> model_;
   std::unique_ptr<workcell::CollisionData> data_;
   std::vector<double> carried_;  // per motor: how far the carried part moves per count
+  std::vector<Probe> pool_;      // per depth of the search: its look
+  std::vector<bool> start_;
 };
 
 }  // namespace rs::runtime
