@@ -76,4 +76,16 @@ std::string safeText(std::string_view text) {
   return out;
 }
 
+std::vector<std::string_view> splitWords(std::string_view text) {
+  std::vector<std::string_view> w;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    const std::size_t start = i;
+    while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
+    if (i > start) w.push_back(text.substr(start, i - start));
+  }
+  return w;
+}
+
 }  // namespace rs::base

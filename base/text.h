@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rs::base {
 
@@ -27,5 +28,9 @@ bool hasControlCharacter(std::string_view text);
 /// lowercase hex digits); everything else is kept as it is. The result is
 /// valid UTF-8 without control characters.
 std::string safeText(std::string_view text);
+
+/// The words of `text`, separated by spaces and tabs (a debugger's command
+/// and a DAP function breakpoint are read alike).
+std::vector<std::string_view> splitWords(std::string_view text);
 
 }  // namespace rs::base

@@ -21,18 +21,6 @@ namespace {
 
 Json unverified(std::string message) { return {{"verified", false}, {"message", std::move(message)}}; }
 
-// A function breakpoint's words: "sensor eye on" -> sensor, eye, on.
-std::vector<std::string_view> functionBreakpointWords(std::string_view text) {
-  std::vector<std::string_view> w;
-  std::size_t i = 0;
-  while (i < text.size()) {
-    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
-    const std::size_t start = i;
-    while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
-    if (i > start) w.push_back(text.substr(start, i - start));
-  }
-  return w;
-}
 
 std::string fieldText(const Json& j, const char* name) {
   if (!j.contains(name) || j[name].is_null()) return {};
@@ -48,7 +36,7 @@ Adapter::Reply Adapter::setFunctionBreakpoints(const Json& args) {
   const Json source = {{"name", std::filesystem::path(sourcePath_).filename().string()}, {"path", sourcePath_}};
   for (const Json& b : args.at("breakpoints")) {
     const std::string name = b.at("name").get<std::string>();
-    const std::vector<std::string_view> words = functionBreakpointWords(name);
+    const std::vector<std::string_view> words = base::splitWords(name);
     const bool device = words.size() > 1 && debug::isDeviceWord(words[0]);
     diag::Result<int> made = diag::refusal("no breakpoint");  // set below
     if (device) {

@@ -79,18 +79,6 @@ Console::Console(DebugSession& session, const diag::SourceFile* source, std::ost
 
 namespace {
 
-std::vector<std::string_view> words(std::string_view text) {
-  std::vector<std::string_view> w;
-  std::size_t i = 0;
-  while (i < text.size()) {
-    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
-    const std::size_t start = i;
-    while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
-    if (i > start) w.push_back(text.substr(start, i - start));
-  }
-  return w;
-}
-
 std::string joined(std::span<const std::string_view> w) {
   std::string s;
   for (std::string_view x : w) s += (s.empty() ? "" : " ") + std::string(x);
@@ -225,7 +213,7 @@ void Console::help(std::string_view topic) {
 }
 
 void Console::breakCommand(std::string_view args) {
-  const std::vector<std::string_view> w = words(args);
+  const std::vector<std::string_view> w = base::splitWords(args);
   std::size_t ifAt = w.size(), hitsAt = w.size();
   for (std::size_t i = 0; i < w.size(); ++i) {
     if (base::sameName(w[i], "if") && ifAt == w.size()) ifAt = i;
@@ -302,7 +290,7 @@ void Console::deleteCommand(std::string_view args) {
     out_ << "deleted every breakpoint and watch\n";
     return;
   }
-  for (std::string_view w : words(args)) {
+  for (std::string_view w : base::splitWords(args)) {
     const auto id = count(w);
     if (!id || *id > INT32_MAX) error(fmt::format("'{}' is not a breakpoint number", shown(w)));
     else if (!session_.remove(static_cast<int>(*id))) error(fmt::format("no breakpoint or watch {}", *id));
@@ -385,7 +373,7 @@ void Console::watchCommand(std::string_view args) {
 }
 
 void Console::setCommand(std::string_view args) {
-  const auto w = words(args);
+  const auto w = base::splitWords(args);
   if (w.size() == 3 && w[1] == "=" && !base::sameName(w[0], "input")) return setVariable(w[0], w[2]);
   if (w.size() != 3 || !base::sameName(w[0], "input") || !(base::sameName(w[2], "on") || base::sameName(w[2], "off")))
     return error("usage: set input N on|off, or set VAR = VALUE");
