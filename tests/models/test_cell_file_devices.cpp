@@ -111,7 +111,7 @@ TEST_CASE("cell section 3: a flipped byte of the devices' part is refused or run
                                          "  SINK out ZONE 900 1000 40 10 50 0\n"
                                          "  WIRE eye TO IN 1 AFTER 0.5 INVERTED\n"
                                          "END\n");
-  const std::string program = dir.write("p.rsp", "        OUTSIG 1 ON\n        DELAY 8\n        END\n");
+  const std::string program = dir.write("p.rsp", "        OUTSIG 1 ON\n        DELAY 3\n        END\n");
   const std::string image = dir.file("p.rsb");
   REQUIRE(runCli({"compile", program, "--cell", cellFile, "-o", image}).code == 0);
   const std::string original = rs::testing::readBytes(image);
