@@ -97,7 +97,8 @@ TEST_CASE("a feeder's slot is drawn once fed, and a part a sink took is not", "[
   // At 1.0 s the beam is whole: not drawn.
   const auto whole = runCli({"render", "adept-cell", "--program", kProduction, "--at", "1.0", "--dump-lines=json"});
   REQUIRE(whole.code == 0);
-  for (const auto& line : nlohmann::json::parse(whole.out)["lines"]) CHECK(line["owner"] != "sensor");
+  const nlohmann::json wholeLines = nlohmann::json::parse(whole.out);  // kept: a loop over a temporary's member dangles
+  for (const auto& line : wholeLines["lines"]) CHECK(line["owner"] != "sensor");
 }
 
 TEST_CASE("an occupied zone is drawn as its box", "[render][devices]") {

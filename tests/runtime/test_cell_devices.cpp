@@ -208,7 +208,7 @@ TEST_CASE("a program that answers its own inputs through wires at one instant st
   CHECK(r->outcome()->reason == rs::vm::StopReason::InstantLimit);
   CHECK(r->rig().clock() == 0);
   // The WORKCELL block's WIRE lines are 13 and 14 (8 lines of objects, WORKCELL, ROBOT, two OBJECTs).
-  const std::string& m = r->outcome()->message;
+  const std::string m = r->outcome()->message;  // outcome() is a copy
   INFO(m);
   CHECK(m.find("; wires changed its inputs at that instant without end: ") != std::string::npos);
   CHECK(m.find("OUT 1 TO IN 1 (line 13)") != std::string::npos);
