@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "base/seconds.h"
+#include "bench/adept_hour.h"
 #include "bench/bench_support.h"
 #include "bench/benchmarks.h"
 #include "bench/timing.h"
@@ -26,32 +27,6 @@ namespace rs::bench {
 namespace {
 
 using json = nlohmann::json;
-
-// examples/adept_hour.rsp with its count: 600 blocks is the hour.
-std::string cellProgram(int blocks) {
-  return fmt::format(
-      "        SET PARTS 0\n"
-      "next:   OUTSIG 1 ON\n"
-      "        WAITFOR 1 ON\n"
-      "        OUTSIG 1 OFF\n"
-      "        MOVEP PICK\n"
-      "        MOVE 0 0 5900 0 0\n"
-      "        MOVE 0 0 0 0 80\n"
-      "        MOVE 0 0 -5900 0 0\n"
-      "        MOVEP PLACE\n"
-      "        MOVE 0 0 5900 0 0\n"
-      "        MOVE 0 0 0 0 -80\n"
-      "        MOVE 0 0 -5900 0 0\n"
-      "        ADD PARTS 1\n"
-      "        JMPVAR PARTS < {} next\n"
-      "        HRDHOME\n"
-      "        DELAY 4\n"
-      "        END\n"
-      "POINTS\n"
-      "PICK -3320 -6844 0 -10164 0\n"
-      "PLACE 3320 6844 0 1164 80\n",
-      blocks);
-}
 
 std::unique_ptr<runtime::Run> cellRun(const std::shared_ptr<const vm::Image>& image,
                                       const std::shared_ptr<const workcell::Workcell>& cell, stimuli::Stimuli stimuli,
@@ -88,7 +63,7 @@ json benchCell(const Options& options) {
   bare.devices = {};
   bare.fedParts.clear();
   const auto withoutDevices = std::make_shared<const workcell::Workcell>(std::move(bare));
-  const diag::SourceFile source("adept_hour.rsp", cellProgram(blocks));
+  const diag::SourceFile source("adept_hour.rsp", adeptHourProgram(blocks));
   const auto image = std::make_shared<const vm::Image>(compileOrThrow(source, launch::cellTarget(*withDevices)));
 
   // Once, logged and untimed: the input changes the devices make.
