@@ -82,27 +82,21 @@ diag::Result<int> DebugSession::breakAtLine(std::uint32_t line) {
   const std::uint32_t at = lineWithCode(line);
   if (at == 0) return diag::refusal(fmt::format("no instruction on line {} or after it", line));
   Breakpoint b;
-  b.id = nextId();
-  b.kind = Breakpoint::Kind::Line;
   b.line = at;
   b.instructions = lineStarts(*run_->spec().image, at);
-  breakpoints_.push_back(std::move(b));
-  return breakpoints_.back().id;
+  return add(Breakpoint::Kind::Line, std::move(b));
 }
 
 diag::Result<int> DebugSession::breakAtLabel(std::string_view label) {
   const std::optional<std::uint32_t> at = runtime::labelInstruction(*run_->spec().image, label);
   if (!at) return diag::refusal(fmt::format("the program has no label '{}'", base::safeText(label.substr(0, 60))));
   Breakpoint b;
-  b.id = nextId();
-  b.kind = Breakpoint::Kind::Label;
   for (const vm::Label& l : run_->spec().image->labels)
     if (base::sameName(run_->spec().image->labelName(l), label)) b.label = run_->spec().image->labelName(l);
   b.instruction = *at;
   b.line = run_->spec().image->lines[*at];
   b.instructions = {*at};
-  breakpoints_.push_back(std::move(b));
-  return breakpoints_.back().id;
+  return add(Breakpoint::Kind::Label, std::move(b));
 }
 
 diag::Result<int> DebugSession::breakAtInstruction(std::uint32_t index) {
@@ -110,55 +104,42 @@ diag::Result<int> DebugSession::breakAtInstruction(std::uint32_t index) {
   if (index >= size)
     return diag::refusal(fmt::format("no instruction @{}: the program has @1 to @{}", index + 1, size));
   Breakpoint b;
-  b.id = nextId();
-  b.kind = Breakpoint::Kind::Instruction;
   b.instruction = index;
   b.line = run_->spec().image->lines[index];
   b.instructions = {index};
-  breakpoints_.push_back(std::move(b));
-  return breakpoints_.back().id;
+  return add(Breakpoint::Kind::Instruction, std::move(b));
 }
 
 diag::Result<int> DebugSession::breakAtTime(vm::Micros t) {
   if (t < 0) return diag::refusal("a time is not negative");
   Breakpoint b;
-  b.id = nextId();
-  b.kind = Breakpoint::Kind::Time;
   b.time = t;
-  breakpoints_.push_back(std::move(b));
-  return breakpoints_.back().id;
+  return add(Breakpoint::Kind::Time, std::move(b));
 }
 
 int DebugSession::breakOnCollision() {
-  Breakpoint b;
-  b.id = nextId();
-  b.kind = Breakpoint::Kind::Collision;
-  breakpoints_.push_back(std::move(b));
-  return breakpoints_.back().id;
+  return add(Breakpoint::Kind::Collision, {});
 }
 
 int DebugSession::breakOnWarning() {
-  Breakpoint b;
-  b.id = nextId();
-  b.kind = Breakpoint::Kind::Warning;
-  breakpoints_.push_back(std::move(b));
-  return breakpoints_.back().id;
+  return add(Breakpoint::Kind::Warning, {});
 }
 
 int DebugSession::breakOnDevice(DevicePoint point) {
   Breakpoint b;
-  b.id = nextId();
-  b.kind = Breakpoint::Kind::Device;
   b.device = std::move(point);
-  breakpoints_.push_back(std::move(b));
-  return breakpoints_.back().id;
+  return add(Breakpoint::Kind::Device, std::move(b));
 }
 
 int DebugSession::breakWhen(Condition condition) {
   Breakpoint b;
-  b.id = nextId();
-  b.kind = Breakpoint::Kind::When;
   b.when = std::move(condition);
+  return add(Breakpoint::Kind::When, std::move(b));
+}
+
+int DebugSession::add(Breakpoint::Kind kind, Breakpoint b) {
+  b.id = nextId();
+  b.kind = kind;
   breakpoints_.push_back(std::move(b));
   return breakpoints_.back().id;
 }

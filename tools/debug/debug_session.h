@@ -175,6 +175,8 @@ class DebugSession {
   /// The last collision, said as the run's report says it, with its time.
   std::string collisionText() const;
   int nextId() { return nextId_++; }
+  /// Breakpoint `b` of kind `kind` added with the next id: that id.
+  int add(Breakpoint::Kind kind, Breakpoint b);
   Breakpoint* find(int id);
 
   std::unique_ptr<runtime::Run> run_;
