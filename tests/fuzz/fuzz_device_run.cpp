@@ -23,6 +23,7 @@
 #include "launch/program.h"
 #include "model/workcell/cell_file.h"
 #include "runtime/run/run.h"
+#include "tests/runtime/belt_and_part.h"
 
 namespace {
 
@@ -40,15 +41,7 @@ std::string gantryText() {
 }
 
 const std::string& prelude() {
-  static const std::string text = gantryText() +
-                                  "\nOBJECT belt\n"
-                                  "  BOX 0 1000 10 0 50 0\n"
-                                  "  BELT 0 1000 10 0 45 5 DIRECTION 1 0 0\n"
-                                  "END\n"
-                                  "OBJECT blk\n"
-                                  "  PART\n"
-                                  "  BOX 0 10 10 0 10 0\n"
-                                  "END\n"
+  static const std::string text = gantryText() + "\n" + celltest::kBeltAndPart +
                                   "WORKCELL fz\n"
                                   "  ROBOT gantry AT 0 1000 0\n"
                                   "  OBJECT belt AT 0 0 650 AS line\n"

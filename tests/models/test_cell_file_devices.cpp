@@ -10,6 +10,7 @@
 #include "compiler/description/library.h"
 #include "model/workcell/cell_file.h"
 #include "tests/cli/cli_support.h"
+#include "tests/runtime/belt_and_part.h"
 #include "vm/image_file.h"
 
 namespace cellfiledevicestest {
@@ -92,15 +93,7 @@ TEST_CASE("cell section 3: every fact of a device cell survives encoding", "[mod
 
 TEST_CASE("cell section 3: a flipped byte of the devices' part is refused or runs, never a crash", "[models][devices]") {
   rs::testing::TempDir dir;
-  const std::string cellFile = dir.write("c.rsd",
-                                         "OBJECT belt\n"
-                                         "  BOX 0 1000 10 0 50 0\n"
-                                         "  BELT 0 1000 10 0 45 5 DIRECTION 1 0 0\n"
-                                         "END\n"
-                                         "OBJECT blk\n"
-                                         "  PART\n"
-                                         "  BOX 0 10 10 0 10 0\n"
-                                         "END\n"
+  const std::string cellFile = dir.write("c.rsd", std::string(celltest::kBeltAndPart) +
                                          "WORKCELL c\n"
                                          "  ROBOT adept-one AT 0 0 -900\n"
                                          "  OBJECT belt AT 0 0 50 AS line\n"

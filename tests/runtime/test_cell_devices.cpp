@@ -11,6 +11,7 @@
 #include <string>
 
 #include "../render/render_test_util.h"
+#include "tests/runtime/belt_and_part.h"
 #include "compiler/description/library.h"
 #include "launch/run_request.h"
 #include "runtime/run/run.h"
@@ -18,16 +19,7 @@
 
 namespace celldevicestest {
 
-// A belt 1000 long (x 0..1000, top y 10, z 5..45) and a 10-unit part.
-const std::string kObjects =
-    "OBJECT belt\n"
-    "  BOX 0 1000 10 0 50 0\n"
-    "  BELT 0 1000 10 0 45 5 DIRECTION 1 0 0\n"
-    "END\n"
-    "OBJECT blk\n"
-    "  PART\n"
-    "  BOX 0 10 10 0 10 0\n"
-    "END\n";
+const std::string kObjects = celltest::kBeltAndPart;
 
 rs::workcell::Workcell cellOf(const std::string& devices) {
   rs::testing::TempDir dir;
