@@ -84,22 +84,68 @@ bool checkWiredInputs(const RunRequest& request, const workcell::Workcell* cell,
   return ok;
 }
 
+namespace {
+
+// What every run reads from the request, each problem a diagnostic.
+struct RequestParts {
+  std::optional<vm::Micros> maxTime;
+  bool stimuliOk = false;
+  std::optional<runtime::CollisionMode> collisions;
+  bool ok() const { return maxTime && stimuliOk && collisions; }
+};
+
+RequestParts readRequest(const RunRequest& request, stimuli::Stimuli& stimuli, std::vector<diag::Diagnostic>& diags) {
+  RequestParts parts;
+  parts.maxTime = maxTimeOf(request, diags);
+  parts.stimuliOk = loadStimuli(request, stimuli, diags);
+  parts.collisions = collisionsOf(request, diags);
+  return parts;
+}
+
+vm::RunLimits limitsOf(const RunRequest& request, vm::Micros maxTime, std::uint64_t defaultMaxSteps) {
+  vm::RunLimits limits;
+  limits.maxSteps = request.maxSteps.value_or(defaultMaxSteps);
+  limits.maxKnots = request.maxKnots.value_or(vm::RunLimits{}.maxKnots);
+  limits.maxTime = maxTime;
+  return limits;
+}
+
+}  // namespace
+
 std::optional<runtime::RunSpec> prepareRun(const LoadedProgram& program, const RunRequest& request,
                                            std::vector<diag::Diagnostic>& diags, std::uint64_t defaultMaxSteps) {
   runtime::RunSpec spec;
   spec.image = program.image;
   spec.cell = program.cell;
-  const std::optional<vm::Micros> maxTime = maxTimeOf(request, diags);
-  const bool stimuliOk = loadStimuli(request, spec.stimuli, diags);
-  const std::optional<runtime::CollisionMode> collisions = collisionsOf(request, diags);
+  const RequestParts parts = readRequest(request, spec.stimuli, diags);
   const bool robotsOk =
-      stimuliOk && placeStimuliOnRobots(program.cell.get(), request.stimuliFile, spec.stimuli, diags);
+      parts.stimuliOk && placeStimuliOnRobots(program.cell.get(), request.stimuliFile, spec.stimuli, diags);
   const bool wiresOk = robotsOk && checkWiredInputs(request, program.cell.get(), spec.stimuli, diags);
-  if (!maxTime || !stimuliOk || !wiresOk || !collisions || !program.image) return std::nullopt;
-  spec.collisions = *collisions;
-  spec.limits.maxSteps = request.maxSteps.value_or(defaultMaxSteps);
-  spec.limits.maxKnots = request.maxKnots.value_or(vm::RunLimits{}.maxKnots);
-  spec.limits.maxTime = *maxTime;
+  if (!parts.ok() || !wiresOk || !program.image) return std::nullopt;
+  spec.collisions = *parts.collisions;
+  spec.limits = limitsOf(request, *parts.maxTime, defaultMaxSteps);
+  return spec;
+}
+
+std::optional<runtime::CellRunSpec> prepareCellRun(const CellPrograms& programs, const RunRequest& request,
+                                                   std::vector<diag::Diagnostic>& diags, std::uint64_t defaultMaxSteps) {
+  runtime::CellRunSpec spec;
+  spec.cell = programs.cell;
+  spec.programs = programs.programs;
+  const RequestParts parts = readRequest(request, spec.stimuli, diags);
+  std::vector<bool> running(programs.cell ? programs.cell->robots.size() : 0, false);
+  for (const runtime::CellProgram& p : spec.programs)
+    if (p.robot < running.size()) running[p.robot] = true;
+  const bool robotsOk =
+      parts.stimuliOk && placeStimuliOnRobots(programs.cell.get(), request.stimuliFile, spec.stimuli, diags, &running);
+  if (!parts.ok() || !robotsOk || !programs.ok()) return std::nullopt;
+  if (const std::string problem = runtime::checkCellRunSpec(spec); !problem.empty()) {
+    diags.push_back({request.stimuliFile.empty() ? std::string("--stimuli") : request.stimuliFile, {},
+                     diag::Severity::Error, problem});
+    return std::nullopt;
+  }
+  spec.collisions = *parts.collisions;
+  spec.limits = limitsOf(request, *parts.maxTime, defaultMaxSteps);
   return spec;
 }
 

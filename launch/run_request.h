@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
+#include "launch/cell_programs.h"
 #include "launch/program.h"
 #include "runtime/run/run.h"
 #include "compiler/stimuli/stimuli.h"
@@ -44,5 +45,12 @@ std::optional<vm::Micros> maxTimeOf(const RunRequest& request, std::vector<diag:
 std::optional<runtime::RunSpec> prepareRun(const LoadedProgram& program, const RunRequest& request,
                                            std::vector<diag::Diagnostic>& diags,
                                            std::uint64_t defaultMaxSteps = vm::RunLimits{}.maxSteps);
+
+/// The same for a cell of several robots running together
+/// (cell_programs.h): one set of stimuli (labels name the robots), limits
+/// per robot, the cell's time limit.
+std::optional<runtime::CellRunSpec> prepareCellRun(const CellPrograms& programs, const RunRequest& request,
+                                                   std::vector<diag::Diagnostic>& diags,
+                                                   std::uint64_t defaultMaxSteps = vm::RunLimits{}.maxSteps);
 
 }  // namespace rs::launch

@@ -13,8 +13,9 @@ namespace {
 
 class Placer {
  public:
-  Placer(const workcell::Workcell* cell, std::string_view file, std::vector<diag::Diagnostic>& diags)
-      : cell_(cell), file_(file), diags_(diags) {}
+  Placer(const workcell::Workcell* cell, std::string_view file, std::vector<diag::Diagnostic>& diags,
+         const std::vector<bool>* running)
+      : cell_(cell), file_(file), diags_(diags), running_(running) {}
 
   // The robot a label names: the driven one (true), another (false), or none
   // (nullopt, an error reported at the label's place).
@@ -36,18 +37,24 @@ class Placer {
                         robotLabelsOf(*cell_)));
       return std::nullopt;
     }
-    if (robot == cell_->drivenRobotIndex()) return true;
+    if (running_ ? robot < running_->size() && (*running_)[robot] : robot == cell_->drivenRobotIndex()) return true;
     diags_.push_back({fileOf(line), posOf(line, column), diag::Severity::Warning,
                       fmt::format("this {} is for robot `{}`, which runs no program in this run: nothing reads it",
                                   what, shown),
-                      "stimulus-for-idle-robot",
-                      fmt::format("this run drives `{}`", base::safeText(cell_->drivenRobot()->labelOf()))});
+                      "stimulus-for-idle-robot", fmt::format("this run drives {}", runningLabels())});
     return false;
   }
 
   bool ok() const { return ok_; }
 
  private:
+  std::string runningLabels() const {
+    if (!running_) return fmt::format("`{}`", base::safeText(cell_->drivenRobot()->labelOf()));
+    std::string out;
+    for (std::size_t r = 0; r < running_->size() && r < cell_->robots.size(); ++r)
+      if ((*running_)[r]) out += fmt::format("{}`{}`", out.empty() ? "" : ", ", base::safeText(cell_->robots[r].labelOf()));
+    return out;
+  }
   std::string fileOf(std::uint32_t line) const { return line ? std::string(file_) : std::string("--input"); }
   static diag::Pos posOf(std::uint32_t line, std::uint32_t column) {
     return line ? diag::Pos{line, column ? column : 1} : diag::Pos{};
@@ -61,14 +68,15 @@ class Placer {
   const workcell::Workcell* cell_;
   std::string_view file_;
   std::vector<diag::Diagnostic>& diags_;
+  const std::vector<bool>* running_;
   bool ok_ = true;
 };
 
 }  // namespace
 
 bool placeStimuliOnRobots(const workcell::Workcell* cell, std::string_view stimuliFile, stimuli::Stimuli& stimuli,
-                          std::vector<diag::Diagnostic>& diags) {
-  Placer placer(cell, stimuliFile, diags);
+                          std::vector<diag::Diagnostic>& diags, const std::vector<bool>* running) {
+  Placer placer(cell, stimuliFile, diags, running);
   std::vector<stimuli::InputChange> changes;
   for (stimuli::InputChange& c : stimuli.changes) {
     const std::optional<bool> driven = placer.isDriven(c.robot, c.line, c.robotColumn, "stimulus");

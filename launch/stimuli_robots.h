@@ -18,8 +18,10 @@ namespace rs::launch {
 /// one, reads: a stimulus without a label is its, as is one naming its
 /// label. A stimulus for another robot is dropped with a warning (that robot
 /// runs no program, so nothing reads it). An unknown label is an error at its
-/// place in `stimuliFile` (or `--input`). False on any error.
+/// place in `stimuliFile` (or `--input`). False on any error. A run of
+/// several robots (runtime/run/cell_run.h) keeps, labels and all, what
+/// every robot `running` marks reads.
 bool placeStimuliOnRobots(const workcell::Workcell* cell, std::string_view stimuliFile, stimuli::Stimuli& stimuli,
-                          std::vector<diag::Diagnostic>& diags);
+                          std::vector<diag::Diagnostic>& diags, const std::vector<bool>* running = nullptr);
 
 }  // namespace rs::launch

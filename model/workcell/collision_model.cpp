@@ -240,7 +240,11 @@ std::string CollisionModel::describe(const BodyRef& ref) const {
     case BodyKind::GripperBase: return fmt::format("the gripper's base ({})", name);
     case BodyKind::Finger2: return fmt::format("finger 2 ({})", name);
     case BodyKind::Finger3: return fmt::format("finger 3 ({})", name);
-    case BodyKind::Object: return fmt::format("object {} ({})", ref.index + 1, name);
+    case BodyKind::Object: {
+      const std::size_t o = static_cast<std::size_t>(ref.index);
+      if (o < cell_->objects.size() && !cell_->objects[o].robotPart.empty()) return cell_->objects[o].robotPart;
+      return fmt::format("object {} ({})", ref.index + 1, name);
+    }
     case BodyKind::Floor: return "the floor";
   }
   return "";

@@ -12,24 +12,43 @@ constexpr double kInsideSlack = 1e-6;
 
 }  // namespace
 
-Grasping::Grasping(const Workcell& cell, std::size_t robot) : cell_(&cell) {
+Grasping::Grasping(const Workcell& cell) : cell_(&cell) {
   for (const PlacedObject& o : cell.objects) {
     resting_.push_back(o.F_world_design);
     boxes_.push_back(boundsOf(o.shape));
   }
   letGo_.assign(resting_.size(), std::nullopt);
-  if (robot >= cell.robots.size()) return;
-  const PlacedRobot& placed = cell.robots[robot];
-  if (!placed.robot.hasGripper || !placed.robot.chain) return;
-  tool_.emplace(placed);
-  gripperMotor_ = static_cast<std::size_t>(placed.robot.chain->size());
+  hands_.resize(cell.robots.size());
+  for (std::size_t r = 0; r < cell.robots.size(); ++r) {
+    const PlacedRobot& placed = cell.robots[r];
+    if (!placed.robot.hasGripper || !placed.robot.chain) continue;
+    hands_[r].tool.emplace(placed);
+    hands_[r].gripperMotor = static_cast<std::size_t>(placed.robot.chain->size());
+  }
+}
+
+std::optional<std::size_t> Grasping::holder(std::size_t o) const {
+  for (std::size_t h = 0; h < hands_.size(); ++h)
+    if (hands_[h].hold.held == o) return h;
+  return std::nullopt;
+}
+
+Grasping::State Grasping::state() const {
+  State s{{}, resting_, letGo_};
+  for (const Hand& h : hands_) s.hands.push_back(h.hold);
+  return s;
+}
+
+void Grasping::restore(const State& s) {
+  for (std::size_t h = 0; h < hands_.size() && h < s.hands.size(); ++h) hands_[h].hold = s.hands[h];
+  resting_ = s.resting, letGo_ = s.letGo;
 }
 
 std::optional<std::size_t> Grasping::smallestAt(const Eigen::Vector3d& point, bool partsOnly) const {
   std::optional<std::size_t> best;
   double bestVolume = 0;
   for (std::size_t o = 0; o < boxes_.size(); ++o) {
-    if (boxes_[o].isEmpty() || (partsOnly && cell_->objects[o].kind != ObjectKind::Part)) continue;
+    if (boxes_[o].isEmpty() || (partsOnly && (cell_->objects[o].kind != ObjectKind::Part || holder(o)))) continue;
     const Eigen::Vector3d local = resting_[o].inverse(Eigen::Isometry) * point;
     const Eigen::AlignedBox3d slack(boxes_[o].min().array() - kInsideSlack, boxes_[o].max().array() + kInsideSlack);
     if (!slack.contains(local)) continue;
@@ -51,56 +70,60 @@ std::optional<std::pair<std::size_t, double>> Grasping::nearestObject(const Eige
 }
 
 std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
-                                          bool mayTake) {
-  if (!tool_ || gripperMotor_ >= before.size() || gripperMotor_ >= after.size()) return std::nullopt;
-  const std::int32_t from = before[gripperMotor_], to = after[gripperMotor_];
+                                          bool mayTake, std::size_t hand) {
+  if (!gripping(hand, before, after)) return std::nullopt;
+  Hand& h = hands_[hand];
+  std::optional<std::size_t>& held = h.hold.held;
+  Eigen::Isometry3d& offset = h.hold.offset;
+  const std::int32_t from = before[h.gripperMotor], to = after[h.gripperMotor];
   if (from == to) return std::nullopt;
   const bool closing = to > from;  // RANGE max is closed (min <= max always)
   if (!closing) {
-    if (!held_) return std::nullopt;
+    if (!held) return std::nullopt;
     // Let go as the opening begins, and settle from where it is then.
-    const std::size_t o = *held_;
-    const Eigen::Isometry3d F_world_E = tool_->frame(before);
-    const Settled settled = settle(*cell_, resting_, o, F_world_E * offset_);
+    const std::size_t o = *held;
+    const Eigen::Isometry3d F_world_E = h.tool->frame(before);
+    const Settled settled = settle(*cell_, resting_, o, F_world_E * offset);
     resting_[o] = settled.pose;
     // Settled by no more than the rest tolerance, a take at this very frame
     // holds it by the offset it had (it goes back up or down by that
     // little): a loop that puts a part down a hair off its support and
     // takes it again leaves the world bit for bit as it was.
     letGo_[o] = LetGo{F_world_E, std::abs(settled.drop) <= kSettleTolerance
-                                     ? offset_
+                                     ? offset
                                      : F_world_E.inverse(Eigen::Isometry) * settled.pose};
-    held_.reset();
+    held.reset();
     return GraspChange{o, false, settled};
   }
-  if (held_ || !mayTake) return std::nullopt;  // closing further on what it holds
-  const Eigen::Isometry3d F_world_E = tool_->frame(after);
+  if (held || !mayTake) return std::nullopt;  // closing further on what it holds
+  const Eigen::Isometry3d F_world_E = h.tool->frame(after);
   const std::optional<std::size_t> o = partAt(F_world_E.translation());
   if (!o) return std::nullopt;
-  held_ = o;
+  held = o;
   const std::optional<LetGo>& letGo = letGo_[*o];
-  offset_ = letGo && letGo->frame.matrix() == F_world_E.matrix() ? letGo->offset
+  offset = letGo && letGo->frame.matrix() == F_world_E.matrix() ? letGo->offset
                                                                   : F_world_E.inverse(Eigen::Isometry) * resting_[*o];
   return GraspChange{*o, true, {}};
 }
 
-Settled Grasping::settleHeld(std::span<const std::int32_t> encoders) {
-  if (!held_ || !tool_) return {};
-  return settle(*cell_, resting_, *held_, tool_->frame(encoders) * offset_);
+Settled Grasping::settleHeld(std::span<const std::int32_t> encoders, std::size_t hand) {
+  if (hand >= hands_.size() || !hands_[hand].hold.held || !hands_[hand].tool) return {};
+  Hand& h = hands_[hand];
+  return settle(*cell_, resting_, *h.hold.held, h.tool->frame(encoders) * h.hold.offset);
 }
 
 void Grasping::reset() {
-  held_.reset();
+  for (Hand& h : hands_) h.hold.held.reset();
   for (std::size_t o = 0; o < resting_.size(); ++o) resting_[o] = cell_->objects[o].F_world_design;
   letGo_.assign(resting_.size(), std::nullopt);
 }
 
-Eigen::Isometry3d Grasping::toolFrame(std::span<const std::int32_t> encoders) {
-  return tool_ ? tool_->frame(encoders) : Eigen::Isometry3d::Identity();
+Eigen::Isometry3d Grasping::toolFrame(std::span<const std::int32_t> encoders, std::size_t hand) {
+  return hasGripper(hand) ? hands_[hand].tool->frame(encoders) : Eigen::Isometry3d::Identity();
 }
 
-Eigen::Isometry3d Grasping::objectPose(std::size_t o, std::span<const std::int32_t> encoders) {
-  if (held_ && *held_ == o && tool_) return tool_->frame(encoders) * offset_;
+Eigen::Isometry3d Grasping::objectPose(std::size_t o, std::span<const std::int32_t> encoders, std::size_t hand) {
+  if (hasGripper(hand) && hands_[hand].hold.held == o) return hands_[hand].tool->frame(encoders) * hands_[hand].hold.offset;
   return resting_[o];
 }
 

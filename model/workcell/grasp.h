@@ -17,6 +17,10 @@
 // A closing move with nothing at the tool centre point holds nothing, and a
 // closed gripper moved into an object does not take it (it was not closing
 // there). Decided here; documented in docs/models.md.
+//
+// A cell of several robots has one hand per robot (its index in
+// Workcell::robots); where the parts rest is shared. Every call names the
+// hand (0, the first robot, when it does not: a cell of one robot).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -40,28 +44,31 @@ struct GraspChange {
 
 class Grasping {
  public:
-  /// Tracks robot `robot` of `cell` (both must outlive this). A robot
+  /// One hand per robot of `cell` (which must outlive this). A robot
   /// without a gripper never holds anything.
-  Grasping(const Workcell& cell, std::size_t robot);
-  /// Tracks the robot the cell's run drives (Workcell::drivenRobot).
-  explicit Grasping(const Workcell& cell) : Grasping(cell, cell.drivenRobotIndex()) {}
+  explicit Grasping(const Workcell& cell);
 
   /// One step of the program moved the robot's motors (arm joints, then
   /// the gripper, as a program sees them) from `before` to `after`. With
   /// `mayTake` false a closing move takes nothing: a still of a moment
   /// during a closing move, which has not ended yet.
   std::optional<GraspChange> step(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
-                                  bool mayTake = true);
-  /// RESET: nothing held, every object back at its placement.
+                                  bool mayTake = true, std::size_t hand = 0);
+  /// RESET: nothing held by any hand, every object back at its placement.
   void reset();
 
-  std::optional<std::size_t> held() const { return held_; }
+  std::size_t handCount() const { return hands_.size(); }
+  std::optional<std::size_t> held(std::size_t hand = 0) const {
+    return hand < hands_.size() ? hands_[hand].hold.held : std::nullopt;
+  }
+  /// The hand that holds object `o`, if any.
+  std::optional<std::size_t> holder(std::size_t o) const;
   /// F_E_object of the held object (meaningful while something is held).
-  const Eigen::Isometry3d& heldOffset() const { return offset_; }
-  /// Object `o`'s placement (F_world_design of its drawing) with the
-  /// robot's motors at `encoders`: where it rests, or where the gripper
-  /// carries it.
-  Eigen::Isometry3d objectPose(std::size_t o, std::span<const std::int32_t> encoders);
+  const Eigen::Isometry3d& heldOffset(std::size_t hand = 0) const { return hands_.at(hand).hold.offset; }
+  /// Object `o`'s placement (F_world_design of its drawing) with hand
+  /// `hand`'s robot's motors at `encoders`: where it rests, or where that
+  /// gripper carries it (another hand's part: where it last rested).
+  Eigen::Isometry3d objectPose(std::size_t o, std::span<const std::int32_t> encoders, std::size_t hand = 0);
   /// The same for an object that is not held (where it rests now).
   const Eigen::Isometry3d& restingPose(std::size_t o) const { return resting_[o]; }
   /// Object `o` (not held) rests at `pose` from now on: a belt moved it, a
@@ -72,32 +79,33 @@ class Grasping {
   }
   /// The end-effector frame in the world for the robot's motors (identity
   /// for a robot without a gripper).
-  Eigen::Isometry3d toolFrame(std::span<const std::int32_t> encoders);
+  Eigen::Isometry3d toolFrame(std::span<const std::int32_t> encoders, std::size_t hand = 0);
   /// The object whose box holds `point`: the smallest such box (objects
   /// where they rest), of any kind.
   std::optional<std::size_t> objectAt(const Eigen::Vector3d& point) const { return smallestAt(point, false); }
   /// The part a closing gripper would take with its tool centre point at
-  /// `point`: the smallest part's box that holds it. Fixtures are never taken.
+  /// `point`: the smallest part's box that holds it. Fixtures are never
+  /// taken, nor a part another hand holds.
   std::optional<std::size_t> partAt(const Eigen::Vector3d& point) const { return smallestAt(point, true); }
   /// Where the held part would settle if it were let go with the robot's
   /// motors at `encoders` (meaningful while one is held).
-  Settled settleHeld(std::span<const std::int32_t> encoders);
+  Settled settleHeld(std::span<const std::int32_t> encoders, std::size_t hand = 0);
   /// Whether a move from `before` to `after` turns the gripper towards open.
-  bool opens(std::span<const std::int32_t> before, std::span<const std::int32_t> after) const {
-    return tool_ && gripperMotor_ < before.size() && gripperMotor_ < after.size() &&
-           after[gripperMotor_] < before[gripperMotor_];
+  bool opens(std::span<const std::int32_t> before, std::span<const std::int32_t> after, std::size_t hand = 0) const {
+    const Hand* h = gripping(hand, before, after);
+    return h && after[h->gripperMotor] < before[h->gripperMotor];
   }
   /// Whether it turns the gripper towards closed.
-  bool closes(std::span<const std::int32_t> before, std::span<const std::int32_t> after) const {
-    return tool_ && gripperMotor_ < before.size() && gripperMotor_ < after.size() &&
-           after[gripperMotor_] > before[gripperMotor_];
+  bool closes(std::span<const std::int32_t> before, std::span<const std::int32_t> after, std::size_t hand = 0) const {
+    const Hand* h = gripping(hand, before, after);
+    return h && after[h->gripperMotor] > before[h->gripperMotor];
   }
   /// The nearest object's box to `point` and the distance to it (0 inside),
   /// for messages about a grasp that took nothing.
   std::optional<std::pair<std::size_t, double>> nearestObject(const Eigen::Vector3d& point) const;
   /// The centre of object `o`'s box in the world, where it rests now.
   Eigen::Vector3d boxCentre(std::size_t o) const { return resting_[o] * boxes_[o].center(); }
-  bool hasGripper() const { return tool_.has_value(); }
+  bool hasGripper(std::size_t hand = 0) const { return hand < hands_.size() && hands_[hand].tool.has_value(); }
 
   /// How an object was let go where it rests: the end-effector frame then
   /// and its F_E_object. A take with the end-effector at that very frame
@@ -113,35 +121,47 @@ class Grasping {
       return frame.matrix() == o.frame.matrix() && offset.matrix() == o.offset.matrix();
     }
   };
-  /// What a grasp changes, for snapshots of a run.
-  struct State {
+  /// What one hand holds.
+  struct Hold {
     std::optional<std::size_t> held;
     Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
+    bool operator==(const Hold& o) const { return held == o.held && offset.matrix() == o.offset.matrix(); }
+  };
+  /// What a grasp changes, for snapshots of a run.
+  struct State {
+    std::vector<Hold> hands;  ///< per robot
     std::vector<Eigen::Isometry3d> resting;
     std::vector<std::optional<LetGo>> letGo;  ///< per object: how it was let go where it rests (none: placed there)
     bool operator==(const State& o) const {  // exact: a restored run must be bit for bit the same
-      if (held != o.held || offset.matrix() != o.offset.matrix() || resting.size() != o.resting.size() ||
-          letGo != o.letGo)
-        return false;
+      if (hands != o.hands || resting.size() != o.resting.size() || letGo != o.letGo) return false;
       for (std::size_t i = 0; i < resting.size(); ++i)
         if (resting[i].matrix() != o.resting[i].matrix()) return false;
       return true;
     }
   };
-  State state() const { return {held_, offset_, resting_, letGo_}; }
-  void restore(const State& s) { held_ = s.held, offset_ = s.offset, resting_ = s.resting, letGo_ = s.letGo; }
+  State state() const;
+  void restore(const State& s);
 
  private:
+  struct Hand {
+    std::optional<ToolTracker> tool;  // empty: the robot has no gripper
+    std::size_t gripperMotor = 0;
+    Hold hold;
+  };
   std::optional<std::size_t> smallestAt(const Eigen::Vector3d& point, bool partsOnly) const;
+  /// The hand, when it has a gripper whose motor both positions name.
+  const Hand* gripping(std::size_t hand, std::span<const std::int32_t> before,
+                       std::span<const std::int32_t> after) const {
+    if (hand >= hands_.size()) return nullptr;
+    const Hand& h = hands_[hand];
+    return h.tool && h.gripperMotor < before.size() && h.gripperMotor < after.size() ? &h : nullptr;
+  }
 
   const Workcell* cell_;
-  std::optional<ToolTracker> tool_;  // empty: the robot has no gripper
-  std::size_t gripperMotor_ = 0;
+  std::vector<Hand> hands_;  // per robot
   std::vector<Eigen::Isometry3d> resting_;
   std::vector<std::optional<LetGo>> letGo_;  // per object, as State::letGo
   std::vector<Eigen::AlignedBox3d> boxes_;  // in each object's design coordinates
-  std::optional<std::size_t> held_;
-  Eigen::Isometry3d offset_ = Eigen::Isometry3d::Identity();
 };
 
 }  // namespace rs::workcell

@@ -162,6 +162,10 @@ struct PlacedObject {
   std::string name;
   std::optional<Belt> belt;  ///< in the shape's design coordinates
   diag::Pos pos;             ///< its WORKCELL OBJECT line (none for a fed part)
+  /// A part of another robot standing in for it in one robot's swept check
+  /// (runtime/run/robot_obstacles.h): how messages name it, "link 2
+  /// (upper_arm) of robot 'right'". Empty for the cell's own objects.
+  std::string robotPart = {};
 };
 
 struct Workcell {

@@ -89,18 +89,18 @@ vm::Micros afterMicro(vm::Micros now, double tau) {
   return std::max(now + 1, static_cast<vm::Micros>(std::floor(static_cast<double>(now) + tau * 1e6 + 1e-6)) + 1);
 }
 
+}  // namespace
+
 std::string signalText(const Signal& s) {
   switch (s.kind) {
     case Signal::Kind::On: return "ON";
     case Signal::Kind::Off: return "OFF";
-    case Signal::Kind::Output: return fmt::format("OUT {}", s.number);
-    case Signal::Kind::Input: return fmt::format("IN {}", s.number);
+    case Signal::Kind::Output: return fmt::format("{}{}OUT {}", s.robot, s.robot.empty() ? "" : ".", s.number);
+    case Signal::Kind::Input: return fmt::format("{}{}IN {}", s.robot, s.robot.empty() ? "" : ".", s.number);
     case Signal::Kind::Sensor: return "sensor " + s.name;
   }
   return "";
 }
-
-}  // namespace
 
 Eigen::Isometry3d parkedPose() {
   Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
@@ -138,7 +138,8 @@ class CellDevices::Wire final : public CellProcess {
     return true;
   }
   std::string name() const override {
-    return fmt::format("wire {} TO IN {} (line {})", signalText(wire_.source), wire_.input, wire_.pos.line);
+    return fmt::format("wire {} TO {}{}IN {} (line {})", signalText(wire_.source), wire_.robot,
+                       wire_.robot.empty() ? "" : ".", wire_.input, wire_.pos.line);
   }
   const workcell::Wire& wire() const { return wire_; }
   std::uint32_t id = 0;
@@ -149,8 +150,23 @@ class CellDevices::Wire final : public CellProcess {
   bool next_ = false, has_ = false;
 };
 
+namespace {
+
+std::vector<RobotIo*> firstRobotOnly(const workcell::Workcell& cell, RobotIo& io) {
+  std::vector<RobotIo*> robots(std::max<std::size_t>(cell.robots.size(), 1), nullptr);
+  robots[cell.drivenRobotIndex()] = &io;
+  return robots;
+}
+
+}  // namespace
+
 CellDevices::CellDevices(const workcell::Workcell& cell, World& world, RobotIo& io, Scheduler& clock)
-    : cell_(cell), world_(world), io_(io), clock_(clock) {
+    : CellDevices(cell, world, firstRobotOnly(cell, io), clock) {}
+
+CellDevices::CellDevices(const workcell::Workcell& cell, World& world, std::vector<RobotIo*> robots, Scheduler& clock)
+    : cell_(cell), world_(world), robots_(std::move(robots)), clock_(clock) {
+  robots_.resize(std::max<std::size_t>(cell.robots.size(), 1), nullptr);
+  io_ = robots_[cell.drivenRobotIndex()];
   const workcell::Devices& d = cell.devices;
   std::size_t slots = 0;
   for (const workcell::Feeder& f : d.feeders)
@@ -184,8 +200,9 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, RobotIo& 
     if (!d.feeders[f].everyUs) state_.nextDue[f] = INT64_MAX;
   id_ = clock.add(*this);
   for (const workcell::Wire& w : d.wires) {
-    if (!isDriven(w.robot)) continue;  // another robot's input: nothing reads it
-    wires_.push_back(std::make_unique<Wire>(w, io));
+    RobotIo* to = robotIo(w.robot);
+    if (!to) continue;  // the input of a robot that runs nothing: nothing reads it
+    wires_.push_back(std::make_unique<Wire>(w, *to));
     wires_.back()->id = clock.add(*wires_.back());
   }
   clock.schedule(clock.now(), id_);
@@ -193,8 +210,8 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, RobotIo& 
     if (signal(w->wire().source) != w->wire().inverted)
       clock.schedule(clock.now() + w->wire().afterUs, w->id, signal(w->wire().source) ? 1 : 0);
   state_.revision = world.revision();
-  if (!d.sensors.empty()) {
-    sight_ = std::make_unique<RobotSight>(cell, world, io.motorCount());
+  if (!d.sensors.empty() && io_) {
+    sight_ = std::make_unique<RobotSight>(cell, world, io_->motorCount());
     if (!sight_->matters()) sight_.reset();
   }
 }
@@ -211,7 +228,7 @@ void CellDevices::robotMoves(vm::Micros until) {
 void CellDevices::watchRobot(vm::Micros now) {
   if (!sight_ || state_.moveUntil <= now) return;
   const std::optional<vm::Micros> next = sight_->firstChange(
-      now, state_.moveUntil, [this](vm::Micros t, std::span<std::int32_t> out) { io_.motorsAt(t, out); });
+      now, state_.moveUntil, [this](vm::Micros t, std::span<std::int32_t> out) { io_->motorsAt(t, out); });
   if (!next || *next == state_.sightWakeAt) return;
   state_.sightWakeAt = *next;
   clock_.schedule(*next, id_);
@@ -221,15 +238,23 @@ bool CellDevices::signal(const Signal& s) const {
   switch (s.kind) {
     case Signal::Kind::On: return true;
     case Signal::Kind::Off: return false;
-    case Signal::Kind::Output: return isDriven(s.robot) && io_.output(s.number);
+    case Signal::Kind::Output: {
+      const RobotIo* from = robotIo(s.robot);
+      return from && from->output(s.number);
+    }
     case Signal::Kind::Input: return false;  // another robot's input: issue 36
     case Signal::Kind::Sensor: return s.sensor < state_.sensorOn.size() && state_.sensorOn[s.sensor];
   }
   return false;
 }
 
-bool CellDevices::isDriven(const std::string& robot) const {
-  return robot.empty() || cell_.robotLabeled(robot) == cell_.drivenRobotIndex();
+bool CellDevices::names(const std::string& label, std::size_t robot) const {
+  return label.empty() ? robot == cell_.drivenRobotIndex() : cell_.robotLabeled(label) == robot;
+}
+
+RobotIo* CellDevices::robotIo(const std::string& label) const {
+  const std::size_t r = label.empty() ? cell_.drivenRobotIndex() : cell_.robotLabeled(label);
+  return r < robots_.size() ? robots_[r] : nullptr;
 }
 
 bool CellDevices::running(std::size_t c) const { return signal(cell_.devices.conveyors[c].run); }
@@ -259,7 +284,7 @@ void CellDevices::moveTo(vm::Micros now) {
   for (std::size_t o = 0; o < state_.velocity.size(); ++o) {
     const Eigen::Vector3d& w = state_.velocity[o];
     if (w.isZero() || state_.travel[o] <= 0) continue;
-    if (world_.held() == o) {
+    if (world_.holder(o)) {
       state_.velocity[o].setZero();
       continue;
     }
@@ -279,18 +304,18 @@ void CellDevices::sync() {
   if (world_.revision() != state_.revision) clock_.schedule(clock_.now(), id_);
 }
 
-void CellDevices::outputChanged(int output) {
+void CellDevices::outputChanged(int output, std::size_t robot) {
   const workcell::Devices& d = cell_.devices;
   bool reads = false;
   const auto isOutput = [&](const Signal& s) {
-    return s.kind == Signal::Kind::Output && s.number == output && isDriven(s.robot);
+    return s.kind == Signal::Kind::Output && s.number == output && names(s.robot, robot);
   };
   for (const workcell::Conveyor& c : d.conveyors) reads |= isOutput(c.run);
   for (const workcell::Feeder& f : d.feeders) reads |= f.when && isOutput(*f.when);
   if (reads) clock_.schedule(clock_.now(), id_);
   for (const auto& w : wires_)
     if (isOutput(w->wire().source))
-      clock_.schedule(clock_.now() + w->wire().afterUs, w->id, io_.output(output) ? 1 : 0);
+      clock_.schedule(clock_.now() + w->wire().afterUs, w->id, robots_[robot]->output(output) ? 1 : 0);
 }
 
 // A part rides conveyor c's belt: present, not held, its bottom on the
@@ -307,7 +332,7 @@ void CellDevices::feed(std::size_t f, vm::Micros now) {
   const Eigen::Vector3d shift = feeder.at - workcell::atCorner(part.shape);
   const Eigen::AlignedBox3d spot = workcell::boundsOf(part.shape).translated(shift);
   for (std::size_t o = 0; o < state_.number.size(); ++o) {
-    if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.held() == o) continue;
+    if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.holder(o)) continue;
     if (boxesOverlap(box(o), spot)) {
       if (!state_.waiting[f]) events_.push_back({DeviceEvent::Kind::Waits, now, f, o, state_.number[o], feeder.at});
       state_.waiting[f] = true;
@@ -351,7 +376,7 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   moveTo(now);
   // Parts past an open end fall onto what is below them.
   for (std::size_t o = 0; o < state_.number.size(); ++o) {
-    if (!present(o) || state_.ridden[o] == 0 || world_.held() == o) continue;
+    if (!present(o) || state_.ridden[o] == 0 || world_.holder(o)) continue;
     const workcell::Conveyor& c = d.conveyors[state_.ridden[o] - 1];
     const workcell::PlacedObject& obj = cell_.objects[c.object];
     if (!obj.belt || !obj.belt->endOpen) continue;
@@ -375,7 +400,7 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   }
   // Sinks take the parts whose centre is in their zone.
   for (std::size_t o = 0; o < state_.number.size(); ++o) {
-    if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.held() == o) continue;
+    if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.holder(o)) continue;
     const Eigen::Vector3d centre = box(o).center();
     for (std::size_t s = 0; s < d.sinks.size(); ++s) {
       if (!boxesTouch(Eigen::AlignedBox3d(centre, centre), d.sinks[s].zone)) continue;
@@ -413,7 +438,7 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
     bool sees = false;
     if (sensor.sees != workcell::Sensor::Sees::Robots)
       for (std::size_t o = 0; o < state_.number.size() && !sees; ++o) {
-        if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.held() == o) continue;
+        if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.holder(o)) continue;
         const Eigen::AlignedBox3d b = box(o);
         sees = sensor.shape == workcell::Sensor::Shape::Beam ? beamTouches(sensor.a, sensor.b, b)
                                                              : boxesTouch(b, sensor.zone);
@@ -422,8 +447,8 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   }
   // What the robot and the part it carries show them, where they are now.
   if (sight_) {
-    motorsNow_.assign(io_.motorCount(), 0);
-    io_.motorsAt(now, motorsNow_);
+    motorsNow_.assign(io_->motorCount(), 0);
+    io_->motorsAt(now, motorsNow_);
     sight_->sees(motorsNow_, robotSees_);
     for (std::size_t s = 0; s < d.sensors.size(); ++s) nextSensor_[s] = nextSensor_[s] || robotSees_[s];
     watchRobot(now);
@@ -481,7 +506,7 @@ void CellDevices::plan(vm::Micros now) {
     };
     std::vector<Rider> riders;
     for (std::size_t o = 0; o < n; ++o) {
-      if (taken[o] || !present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.held() == o) continue;
+      if (taken[o] || !present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.holder(o)) continue;
       const Eigen::AlignedBox3d b = box(o);
       const Eigen::Vector3d centre = b.center();
       if (std::abs(b.min().y() - g.belt.max().y()) > kRestTolerance) continue;

@@ -85,9 +85,13 @@ struct PartMotion {
 class CellDevices final : public CellProcess {
  public:
   /// `cell` is withFeederSlots' copy (the world's cell); everything must
-  /// outlive this. Adds itself and a process per wire to `clock`, and
-  /// schedules the start of the run (the first parts fed, every sensor and
-  /// wire as the cell begins).
+  /// outlive this. `robots` has one entry per robot of the cell (its
+  /// index), null for a robot that runs nothing: its outputs stay OFF and
+  /// nothing reads its inputs. Adds itself and a process per wire to
+  /// `clock`, and schedules the start of the run (the first parts fed,
+  /// every sensor and wire as the cell begins).
+  CellDevices(const workcell::Workcell& cell, World& world, std::vector<RobotIo*> robots, Scheduler& clock);
+  /// A cell whose first robot alone runs a program.
   CellDevices(const workcell::Workcell& cell, World& world, RobotIo& io, Scheduler& clock);
   ~CellDevices() override;
 
@@ -95,8 +99,8 @@ class CellDevices final : public CellProcess {
   bool update(Scheduler& clock) override;
   std::string name() const override { return "the cell's devices"; }
 
-  /// The robot's output changed now: the devices that read it act.
-  void outputChanged(int output);
+  /// Robot `robot`'s output changed now: the devices that read it act.
+  void outputChanged(int output, std::size_t robot = 0);
   /// The robot moves from now until `until`: a sensor that sees the part
   /// it carries (or the robot) changes at the exact microsecond the move
   /// brings it there (robot_sight.h).
@@ -162,10 +166,11 @@ class CellDevices final : public CellProcess {
   void moveTo(vm::Micros now);
   void feed(std::size_t f, vm::Micros now);
   bool signal(const workcell::Signal& s) const;
-  /// Whether a signal's or a wire's robot label names the robot this run
-  /// drives (empty: it does). Another robot runs no program: its outputs
-  /// stay OFF and nothing reads its inputs (issue 36 runs them all).
-  bool isDriven(const std::string& robot) const;
+  /// The robot a signal's or a wire's label names (empty: the first), or
+  /// null when it runs nothing.
+  RobotIo* robotIo(const std::string& label) const;
+  /// Whether that label names robot `robot`.
+  bool names(const std::string& label, std::size_t robot) const;
   Eigen::AlignedBox3d box(std::size_t o) const;
   bool rides(std::size_t o) const;
   void place(std::size_t o, const Eigen::Vector3d& shift);
@@ -175,7 +180,8 @@ class CellDevices final : public CellProcess {
 
   const workcell::Workcell& cell_;
   World& world_;
-  RobotIo& io_;
+  std::vector<RobotIo*> robots_;  // per robot of the cell; null: runs nothing
+  RobotIo* io_ = nullptr;         // the first robot's: what the sensors see move (robot_sight.h)
   Scheduler& clock_;
   std::uint32_t id_ = 0;
   std::size_t firstSlot_ = 0;
@@ -196,6 +202,9 @@ class CellDevices final : public CellProcess {
   std::vector<std::optional<PartMotion>> emitted_;  // per object: the last recorded, while it holds
   std::vector<PartMotion> motions_;
 };
+
+/// A signal as the description spells it: "ON", "left.OUT 1", "IN 2", "sensor eye".
+std::string signalText(const workcell::Signal& s);
 
 /// Where an empty slot waits: far below any floor.
 Eigen::Isometry3d parkedPose();

@@ -21,7 +21,7 @@ void CellDevices::recordChangedMotions(vm::Micros now) {
   if (emitted_.size() != n) emitted_.assign(n, std::nullopt);
   for (std::size_t o = 0; o < n; ++o) {
     if (cell_.objects[o].kind != workcell::ObjectKind::Part) continue;
-    if (world_.held() == o) {
+    if (world_.holder(o)) {
       emitted_[o].reset();
       continue;
     }

@@ -4,19 +4,27 @@ namespace rs::runtime {
 
 World::World(const workcell::Workcell& cell) : cell_(cell), grasping_(cell) {
   state_.rests.assign(cell.objects.size(), std::nullopt);
-  if (const workcell::PlacedRobot* driven = cell.drivenRobot(); driven && driven->robot.chain) tool_.emplace(*driven);
+  const std::size_t hands = cell.robots.size();
+  state_.heldSince.assign(hands, 0);
+  step_.assign(hands, {});
+  handMachines_.assign(hands, nullptr);
+  tools_.resize(hands);
+  for (std::size_t r = 0; r < hands; ++r)
+    if (cell.robots[r].robot.chain) tools_[r].emplace(cell.robots[r]);
 }
 
 void World::moved(std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
-                  vm::Micros end) {
-  const bool closing = grasping_.closes(before, after);
-  const bool heldBefore = grasping_.held().has_value();
-  const std::optional<workcell::GraspChange> change = grasping_.step(before, after);
+                  vm::Micros end, std::size_t hand) {
+  if (hand >= step_.size()) return;
+  const bool closing = grasping_.closes(before, after, hand);
+  const bool heldBefore = grasping_.held(hand).has_value();
+  const std::optional<workcell::GraspChange> change = grasping_.step(before, after, true, hand);
   if (closing) ++state_.closes;
   if (closing && !heldBefore && !change && !cell_.objects.empty()) {
     EmptyClose& e = state_.lastEmptyClose;
     e.at = end;
-    e.tcp = grasping_.toolFrame(after).translation();
+    e.hand = hand;
+    e.tcp = grasping_.toolFrame(after, hand).translation();
     e.fixture = grasping_.objectAt(e.tcp);  // no part holds it: a fixture, if anything
     if (e.fixture) ++state_.fixtureCloses;
     const auto nearest = grasping_.nearestObject(e.tcp);
@@ -24,59 +32,76 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
     e.distance = nearest ? nearest->second : 0.0;
     e.centre = nearest ? grasping_.boxCentre(nearest->first) : Eigen::Vector3d::Zero();
     ++state_.emptyCloses;
-    step_.closedEmpty = true;
+    step_[hand].closedEmpty = true;
   }
   if (!change) return;
   ++revision_;
   if (change->held) ++state_.takes;
   const std::size_t o = change->object;
   const workcell::Settled& s = change->settled;
-  state_.last = change->held ? GraspEvent{end, o, true, grasping_.heldOffset()}
+  state_.last = change->held ? GraspEvent{end, o, true, grasping_.heldOffset(hand)}
                              : GraspEvent{start, o, false, grasping_.restingPose(o), s.on, s.support, s.drop};
-  if (change->held) state_.heldSince = end;
+  state_.last.hand = hand;
+  if (change->held) state_.heldSince[hand] = end;
   state_.rests[o] = change->held ? std::nullopt : std::optional<GraspEvent>(state_.last);
   if (!change->held && s.drop > kLongDrop) ++state_.longDrops;
   ++state_.events;
-  step_.grasped = true;
+  step_[hand].grasped = true;
 }
 
-void World::reset(vm::Micros at) {
-  const std::optional<std::size_t> held = grasping_.held();
+void World::reset(vm::Micros at, std::size_t hand) {
+  if (hand >= step_.size()) return;
+  // The let-go reported is the resetting robot's own (or the first other one's).
+  std::optional<std::size_t> held = grasping_.held(hand), from = hand;
+  for (std::size_t h = 0; h < grasping_.handCount() && !held; ++h)
+    if (grasping_.held(h)) held = grasping_.held(h), from = h;
   grasping_.reset();
   ++revision_;
   state_.rests.assign(cell_.objects.size(), std::nullopt);
   if (!held) return;
   state_.last = {at, *held, false, grasping_.restingPose(*held)};
+  state_.last.hand = *from;
   ++state_.events;
-  step_.grasped = true;
+  step_[hand].grasped = true;
 }
 
-Eigen::Isometry3d World::objectPose(std::size_t o, std::span<const std::int32_t> encoders, vm::Micros at) const {
-  if (grasping_.held() == o && at < state_.heldSince) return grasping_.restingPose(o);
-  return grasping_.objectPose(o, encoders);
+Eigen::Isometry3d World::objectPose(std::size_t o, std::span<const std::int32_t> encoders, vm::Micros at,
+                                    std::size_t hand) const {
+  const std::optional<std::size_t> by = grasping_.holder(o);
+  if (!by) return grasping_.restingPose(o);
+  if (at < heldSince(*by)) return grasping_.restingPose(o);
+  if (*by == hand) return grasping_.objectPose(o, encoders, hand);
+  const vm::Machine* other = handMachines_[*by];
+  if (!other) return grasping_.restingPose(o);
+  const auto motors = other->positions();
+  otherMotors_.assign(motors.begin(), motors.end());
+  return grasping_.objectPose(o, otherMotors_, *by);
 }
 
-std::optional<std::array<double, 3>> World::tcp(std::span<const std::int32_t> encoders) const {
-  if (!tool_) return std::nullopt;
-  return tool_->tcp(encoders);
+std::optional<std::array<double, 3>> World::tcp(std::span<const std::int32_t> encoders, std::size_t hand) const {
+  if (hand >= tools_.size() || !tools_[hand]) return std::nullopt;
+  return tools_[hand]->tcp(encoders);
 }
 
 workcell::CollisionQuery World::collisionQuery(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
-                                              std::vector<Eigen::Isometry3d>& poses) const {
+                                              std::span<Eigen::Isometry3d> poses, std::size_t hand) const {
   workcell::CollisionQuery q;
-  for (std::size_t o = 0; o < poses.size(); ++o) poses[o] = grasping_.restingPose(o);
-  q.held = grasping_.held();
-  q.heldOffset = grasping_.heldOffset();
+  for (std::size_t o = 0; o < poses.size(); ++o) {
+    const std::optional<std::size_t> by = grasping_.holder(o);
+    poses[o] = by && *by != hand ? objectPose(o, {}, INT64_MAX, hand) : grasping_.restingPose(o);
+  }
+  q.held = grasping_.held(hand);
+  if (hand < grasping_.handCount()) q.heldOffset = grasping_.heldOffset(hand);
   q.objectPoses = poses;
-  if (!grasping_.hasGripper()) return q;
-  if (q.held && grasping_.opens(before, after)) {
+  if (!grasping_.hasGripper(hand)) return q;
+  if (q.held && grasping_.opens(before, after, hand)) {
     // Let go as the move starts and settled at once: the fingers open round it.
-    poses[*q.held] = grasping_.settleHeld(before).pose;
+    poses[*q.held] = grasping_.settleHeld(before, hand).pose;
     q.exempt = q.held;
     q.held.reset();
-  } else if (!q.held && grasping_.closes(before, after)) {
+  } else if (!q.held && grasping_.closes(before, after, hand)) {
     // The fingers close round the part they take at the end.
-    q.exempt = grasping_.partAt(grasping_.toolFrame(after).translation());
+    q.exempt = grasping_.partAt(grasping_.toolFrame(after, hand).translation());
   }
   return q;
 }
@@ -89,7 +114,7 @@ World::State World::state() const {
 
 void World::restore(const State& s) {
   state_ = s;
-  step_ = {};
+  step_.assign(step_.size(), {});
   grasping_.restore(s.grasp);
   ++revision_;
 }

@@ -4,6 +4,10 @@
 // model/workcell/grasp.h (take at the end of a closing move, let go at the
 // start of an opening one, RESET puts everything back). Traces, the
 // recording and the summary only look at it.
+//
+// In a cell of several robots each robot has a hand (its index in
+// Workcell::robots); the calls that concern one name it, 0 (the first
+// robot) when they do not.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -41,6 +45,7 @@ struct GraspEvent {
   /// make them differ from index + 1 (0: index + 1). The world leaves them
   /// 0; the run stamps them (Rig::numbered), as the world knows no feeder.
   std::uint32_t number = 0, supportNumber = 0;
+  std::size_t hand = 0;  ///< the robot whose gripper took or let go
   /// A let-go that settled: it went down (or up, out of its support) to rest on something.
   bool settled() const { return !held && on != workcell::Settled::On::Nothing; }
   bool operator==(const GraspEvent& o) const {
@@ -64,6 +69,7 @@ struct EmptyClose {
   Eigen::Vector3d tcp = Eigen::Vector3d::Zero();
   std::optional<std::size_t> fixture;
   std::optional<std::size_t> nearest;
+  std::size_t hand = 0;  ///< the robot whose gripper closed
   double distance = 0;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< the nearest box's centre (meaningful with nearest)
   bool operator==(const EmptyClose&) const = default;
@@ -71,15 +77,23 @@ struct EmptyClose {
 
 class World {
  public:
-  /// The robot `cell` drives (Workcell::drivenRobot; the cell must outlive
-  /// the world) runs the program.
+  /// Every robot of `cell` (which must outlive the world) has a hand.
   explicit World(const workcell::Workcell& cell);
 
-  /// The motors moved from `before` to `after`, from `start` to `end`.
+  /// Hand `hand`'s robot's motors moved from `before` to `after`, from
+  /// `start` to `end`.
   void moved(std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
-             vm::Micros end);
-  /// RESET at time `at`: nothing held, every object where the cell placed it.
-  void reset(vm::Micros at);
+             vm::Micros end, std::size_t hand = 0);
+  /// RESET at time `at` by hand `hand`'s robot: nothing held by any hand,
+  /// every object where the cell placed it.
+  void reset(vm::Micros at, std::size_t hand = 0);
+  /// Where hand `hand`'s robot's motors are now, for what another robot
+  /// sees of the part it carries (must outlive the world; none: the part
+  /// shows where it last rested).
+  void handMotors(std::size_t hand, const vm::Machine* machine) {
+    if (hand < handMachines_.size()) handMachines_[hand] = machine;
+  }
+  std::size_t handCount() const { return grasping_.handCount(); }
 
   /// Object `o` (not held) rests at `pose` from now on: the cell's devices
   /// move, put and take parts (runtime/cell/devices.h).
@@ -100,25 +114,31 @@ class World {
   const GraspEvent& lastEvent() const { return state_.last; }
 
   const workcell::Workcell& cell() const { return cell_; }
-  std::optional<std::size_t> held() const { return grasping_.held(); }
-  /// When the object held now was taken (the end of its closing move).
-  vm::Micros heldSince() const { return state_.heldSince; }
-  /// Object `o`'s placement (F_world_design) at time `at` with the robot's
-  /// motors at `encoders`: carried by the gripper, or resting. A take that
-  /// happens after `at` (a closing move still under way) has not happened yet.
+  std::optional<std::size_t> held(std::size_t hand = 0) const { return grasping_.held(hand); }
+  /// The hand that holds object `o`, if any.
+  std::optional<std::size_t> holder(std::size_t o) const { return grasping_.holder(o); }
+  /// When the object hand `hand` holds now was taken (the end of its closing move).
+  vm::Micros heldSince(std::size_t hand = 0) const {
+    return hand < state_.heldSince.size() ? state_.heldSince[hand] : 0;
+  }
+  /// Object `o`'s placement (F_world_design) at time `at` with hand
+  /// `hand`'s robot's motors at `encoders`: carried by that gripper,
+  /// carried by another (where its robot's motors are now: handMotors), or
+  /// resting. A take that happens after `at` (a closing move still under
+  /// way) has not happened yet.
   Eigen::Isometry3d objectPose(std::size_t o, std::span<const std::int32_t> encoders,
-                               vm::Micros at = INT64_MAX) const;
+                               vm::Micros at = INT64_MAX, std::size_t hand = 0) const;
   /// Where object `o` rests now (its last resting place while it is held).
   const Eigen::Isometry3d& restingPose(std::size_t o) const { return grasping_.restingPose(o); }
   /// F_E_object of the held object (meaningful while one is held).
-  const Eigen::Isometry3d& heldOffset() const { return grasping_.heldOffset(); }
+  const Eigen::Isometry3d& heldOffset(std::size_t hand = 0) const { return grasping_.heldOffset(hand); }
   /// Changes whenever what is held or where an object rests may have
   /// changed (a take, a let-go, RESET, restore): a cache of anything that
   /// depends on them is still good while this stays the same. Not part of
   /// the state: it only ever grows.
   std::uint64_t revision() const { return revision_; }
   /// The tool centre point in world coordinates, when the robot has a chain.
-  std::optional<std::array<double, 3>> tcp(std::span<const std::int32_t> encoders) const;
+  std::optional<std::array<double, 3>> tcp(std::span<const std::int32_t> encoders, std::size_t hand = 0) const;
 
   /// Closing moves that took nothing, and the latest of them. Only a
   /// workcell with objects counts them: with nothing to take, closing on
@@ -143,7 +163,9 @@ class World {
     bool grasped = false;
     bool closedEmpty = false;
   };
-  StepEffects takeStepEffects() { return std::exchange(step_, {}); }
+  StepEffects takeStepEffects(std::size_t hand = 0) {
+    return hand < step_.size() ? std::exchange(step_[hand], {}) : StepEffects{};
+  }
 
   /// The world as a move from `before` to `after` sees it, for the
   /// collision check: every object's resting pose (written into `poses`,
@@ -153,12 +175,13 @@ class World {
   /// close round (the one it takes at its end), during an opening move the
   /// one they let go. Any other move exempts nothing: fingers that come
   /// down onto a part collide with it.
+  /// Another robot's carried part is where that robot holds it now.
   workcell::CollisionQuery collisionQuery(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
-                                          std::vector<Eigen::Isometry3d>& poses) const;
+                                          std::span<Eigen::Isometry3d> poses, std::size_t hand = 0) const;
 
   struct State {
     workcell::Grasping::State grasp;
-    vm::Micros heldSince = 0;
+    std::vector<vm::Micros> heldSince;  // per hand
     std::uint64_t events = 0;
     GraspEvent last;
     std::uint64_t closes = 0, takes = 0, emptyCloses = 0, fixtureCloses = 0, longDrops = 0;
@@ -174,9 +197,11 @@ class World {
   // Scratch workspaces of the kinematics: asking where something is does
   // not change the world.
   mutable workcell::Grasping grasping_;
-  mutable std::optional<workcell::ToolTracker> tool_;
+  mutable std::vector<std::optional<workcell::ToolTracker>> tools_;  // per hand
+  std::vector<const vm::Machine*> handMachines_;                   // per hand
+  mutable std::vector<std::int32_t> otherMotors_;                  // scratch
   State state_;  // all but the grasp, which grasping_ keeps
-  StepEffects step_;  // since the last takeStepEffects (a restore forgets them)
+  std::vector<StepEffects> step_;  // per hand, since its last takeStepEffects (a restore forgets them)
   std::uint64_t revision_ = 0;
 };
 

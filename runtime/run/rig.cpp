@@ -6,21 +6,50 @@ namespace rs::runtime {
 
 Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli,
          CollisionMode collisions)
-    : cell_(withFeederSlots(std::move(cell))), running_(std::make_unique<Cell>(cell_.get())) {
+    : cell_(withFeederSlots(std::move(cell))), ownCell_(std::make_unique<Cell>(cell_.get())), running_(ownCell_.get()) {
   auto sim = std::make_unique<SimMachine>(std::move(motors), std::move(stimuli), running_->clock());
   sim_ = sim.get();
   motion_ = std::move(sim);
   build(*motion_, collisions);
+  io_.sim = sim_;
   if (world_ && !cell_->devices.empty()) {
-    io_.sim = sim_;
-    devices_ = std::make_unique<CellDevices>(*cell_, *world_, io_, running_->clock());
-    robot_.devices = devices_.get();
-    sim_->onOutputChange([this](int output, bool) { devices_->outputChanged(output); });
-    // The devices watch what the robot shows the sensors on the way.
-    sim_->onMoveBegun([this](vm::Micros until) { devices_->robotMoves(until); });
+    ownDevices_ = std::make_unique<CellDevices>(*cell_, *world_, io_, running_->clock());
+    attachDevices(*ownDevices_);
     // The cell's first instant: the first parts fed, the sensors as the cell begins.
     (void)advanceCell(running_->clock().now());
   }
+}
+
+Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, Cell& shared, std::size_t robot,
+         std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli, CollisionMode collisions)
+    : robotIndex_(robot), cell_(std::move(cell)), running_(&shared) {
+  auto sim = std::make_unique<SimMachine>(std::move(motors), std::move(stimuli), running_->clock());
+  sim_ = sim.get();
+  motion_ = std::move(sim);
+  build(*motion_, collisions);
+  io_.sim = sim_;
+  if (world_) world_->handMotors(robot, sim_);
+}
+
+void Rig::avoidOtherRobots() {
+  if (!sim_ || !cell_ || !watch_) return;
+  obstacles_ = std::make_unique<RobotObstacles>(*cell_, robotIndex_);
+  if (!obstacles_->any()) return;
+  watch_.emplace(obstacles_->view(), robotIndex_);
+  watch_->alsoAvoid(obstacles_->firstPart(),
+                    [this](vm::Micros t, std::span<Eigen::Isometry3d> poses) { obstacles_->pose(t, poses); },
+                    cell_->robots[robotIndex_].labelOf());
+  cellMachine_->watchCollisions(*sim_, *watch_, collisions_);
+}
+
+void Rig::attachDevices(CellDevices& devices) {
+  if (!sim_) return;
+  devices_ = &devices;
+  robot_.devices = devices_;
+  sim_->onOutputChange([this](int output, bool) { devices_->outputChanged(output, robotIndex_); });
+  // The devices watch what the (first) robot shows the sensors on the way.
+  if (robotIndex_ == cell_->drivenRobotIndex())
+    sim_->onMoveBegun([this](vm::Micros until) { devices_->robotMoves(until); });
 }
 
 vm::Status Rig::advanceCell(vm::Micros t) {
@@ -32,12 +61,13 @@ vm::Status Rig::advanceCell(vm::Micros t) {
 }
 
 Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::unique_ptr<vm::Machine> machine)
-    : cell_(std::move(cell)), running_(std::make_unique<Cell>(cell_.get())), motion_(std::move(machine)) {
+    : cell_(std::move(cell)), ownCell_(std::make_unique<Cell>(cell_.get())), running_(ownCell_.get()),
+      motion_(std::move(machine)) {
   build(*motion_, CollisionMode::Off);
 }
 
 Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, vm::Machine& machine)
-    : cell_(std::move(cell)), running_(std::make_unique<Cell>(cell_.get())) {
+    : cell_(std::move(cell)), ownCell_(std::make_unique<Cell>(cell_.get())), running_(ownCell_.get()) {
   build(machine, CollisionMode::Off);
 }
 
@@ -58,10 +88,11 @@ void Rig::build(vm::Machine& motion, CollisionMode collisions) {
     });
   if (!cell_) return;
   world_ = running_->world();
-  cellMachine_.emplace(motion, *world_);
+  cellMachine_.emplace(motion, *world_, robotIndex_);
   front_ = &*cellMachine_;
+  collisions_ = collisions;
   if (sim_ && collisions != CollisionMode::Off) {
-    watch_.emplace(*cell_);
+    watch_.emplace(*cell_, robotIndex_);
     cellMachine_->watchCollisions(*sim_, *watch_, collisions);
   }
 }
@@ -80,7 +111,7 @@ void Rig::afterStep(std::uint32_t instruction) {
   pendingInputs_.clear();
   if (devices_) lastStepDevices_ = devices_->takeEvents(), lastStepMotions_ = devices_->takeMotions();
   if (!world_) return;
-  const World::StepEffects step = world_->takeStepEffects();
+  const World::StepEffects step = world_->takeStepEffects(robotIndex_);
   lastStepGrasped_ = step.grasped;
   lastStepClosedEmpty_ = step.closedEmpty;
   if (step.closedEmpty && !firstEmptyClose_) firstEmptyClose_.emplace(instruction, world_->lastEmptyClose());
@@ -105,7 +136,7 @@ std::vector<std::int32_t> Rig::motorsAt(vm::Micros t) const {
 
 std::optional<std::array<double, 3>> Rig::tcp() const {
   if (!world_) return std::nullopt;
-  return world_->tcp(motors());
+  return world_->tcp(motors(), robotIndex_);
 }
 
 std::vector<ObjectView> Rig::objects(vm::Micros at) const {
@@ -116,11 +147,11 @@ std::vector<ObjectView> Rig::objects(vm::Micros at) const {
     const workcell::PlacedObject& placed = cell_->objects[o];
     ObjectView v;
     v.name = placed.shape.name;
-    v.pose = world_->objectPose(o, encoders, at);
+    v.pose = world_->objectPose(o, encoders, at, robotIndex_);
     v.at = v.pose * workcell::atCorner(placed.shape);
     const Eigen::AlignedBox3d bounds = workcell::boundsOf(placed.shape);
     v.centre = bounds.isEmpty() ? v.at : Eigen::Vector3d(v.pose * bounds.center());
-    v.held = world_->held() == o && at >= world_->heldSince();
+    v.held = world_->held(robotIndex_) == o && at >= world_->heldSince(robotIndex_);
     v.moved = (v.pose.matrix() - placed.F_world_design.matrix()).cwiseAbs().maxCoeff() > 1e-9;
     v.number = objectNumber(o);
     v.present = v.number != 0;

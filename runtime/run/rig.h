@@ -23,6 +23,7 @@
 #include "runtime/cell/cell.h"
 #include "runtime/cell/devices.h"
 #include "runtime/cell/input_cause.h"
+#include "runtime/run/robot_obstacles.h"
 #include "runtime/sim/cell_machine.h"
 #include "runtime/sim/collision_watch.h"
 #include "runtime/sim/sim_machine.h"
@@ -74,6 +75,13 @@ class Rig {
   Rig(std::shared_ptr<const workcell::Workcell> cell, std::unique_ptr<vm::Machine> machine);
   /// The same on a machine the caller keeps (it must outlive the rig).
   Rig(std::shared_ptr<const workcell::Workcell> cell, vm::Machine& machine);
+  /// Robot `robot` of a cell of several (runtime/run/cell_run.h), on the
+  /// simulated machine: it runs on `shared`'s clock and world (`cell` is
+  /// withFeederSlots' copy, the one `shared` was made of; it must outlive
+  /// the rig), and the cell's devices are attached later (attachDevices).
+  /// No snapshots yet: a cell's snapshot is the cell run's.
+  Rig(std::shared_ptr<const workcell::Workcell> cell, Cell& shared, std::size_t robot,
+      std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli, CollisionMode collisions);
   Rig(const Rig&) = delete;
   Rig& operator=(const Rig&) = delete;
   ~Rig();
@@ -111,7 +119,20 @@ class Rig {
   const CollisionWatch* collisionWatch() const { return watch_ ? &*watch_ : nullptr; }
 
   /// The cell's devices, or null (no workcell, no devices, or not simulated).
-  const CellDevices* devices() const { return devices_.get(); }
+  const CellDevices* devices() const { return devices_; }
+  /// What the cell's devices read and write of this robot (the simulated machine only).
+  RobotIo& io() { return io_; }
+  /// The cell's devices (a cell run's, shared by its robots) hear this
+  /// robot's outputs; the first robot's moves also show the sensors what
+  /// it carries. `devices` must outlive the rig.
+  void attachDevices(CellDevices& devices);
+  /// The cell's other robots become obstacles of this robot's swept check
+  /// (robot_obstacles.h), each where its machine (named later through
+  /// obstacles()) has it. A cell run's robot, on the simulated machine.
+  void avoidOtherRobots();
+  RobotObstacles* obstacles() { return obstacles_.get(); }
+  /// The robot's index in the cell (its hand in the world).
+  std::size_t robotIndex() const { return robotIndex_; }
   /// Object `o`'s number ("object 5"): o + 1 for the objects the cell
   /// places; a fed part's is given when it is fed.
   std::uint32_t objectNumber(std::size_t o) const { return devices_ ? devices_->number(o) : static_cast<std::uint32_t>(o + 1); }
@@ -183,7 +204,7 @@ class Rig {
   void wakeRobotAt(vm::Micros at);
 
 
-  bool canSnapshot() const { return sim_ != nullptr; }
+  bool canSnapshot() const { return sim_ != nullptr && ownCell_ != nullptr; }
   /// The whole state (the simulated machine only: check canSnapshot()).
   RigSnapshot snapshot() const;
   /// Back to a snapshot of this rig.
@@ -213,19 +234,24 @@ class Rig {
     std::size_t motorCount() const override { return sim->motors().size(); }
   };
   SimIo io_;
-  std::unique_ptr<CellDevices> devices_;
+  std::unique_ptr<CellDevices> ownDevices_;  // a cell of one robot: the rig's own
+  CellDevices* devices_ = nullptr;
+  std::size_t robotIndex_ = 0;
   std::vector<DeviceEvent> lastStepDevices_;
   std::vector<PartMotion> lastStepMotions_;
   RobotProcess robot_;
   std::uint32_t robotId_ = 0;
 
   std::shared_ptr<const workcell::Workcell> cell_;
-  std::unique_ptr<Cell> running_;        // before the machine, which runs on its clock
+  std::unique_ptr<Cell> ownCell_;        // before the machine, which runs on its clock
+  Cell* running_ = nullptr;              // ownCell_, or a cell run's
   World* world_ = nullptr;               // running_'s, on a workcell
   std::unique_ptr<vm::Machine> motion_;  // moves the motors, when the rig owns them
   SimMachine* sim_ = nullptr;            // motion_, when simulated
   std::optional<CellMachine> cellMachine_;
   std::optional<CollisionWatch> watch_;
+  CollisionMode collisions_ = CollisionMode::Off;
+  std::unique_ptr<RobotObstacles> obstacles_;  // before watch_ is rebuilt on its view
   vm::Machine* front_ = nullptr;  // what is driven
   std::vector<InputChangeRecord> pendingInputs_, lastStepInputs_;
   bool lastStepGrasped_ = false;

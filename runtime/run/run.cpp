@@ -68,6 +68,11 @@ Run::Run(RunSpec spec, vm::Machine& machine) : spec_(std::move(spec)) {
   build(std::make_unique<Rig>(spec_.cell, machine));
 }
 
+Run::Run(RunSpec spec, Cell& shared, std::size_t robot) : spec_(std::move(spec)), inCellRun_(true) {
+  spec_.log = false;
+  build(std::make_unique<Rig>(spec_.cell, shared, robot, spec_.image->motors, spec_.stimuli, spec_.collisions));
+}
+
 Run::~Run() = default;
 
 // The order matters and is written once, here: the rig's world reacts
@@ -161,6 +166,10 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
     pause.atKnots = std::min(until.knots, sliceKnots);
     if (anyBreak) pause.before = breakpoints_;
     outcome = interpreter_->run(spec_.limits, observer, pause);
+    if (outcome.waiting && inCellRun_) {
+      cause_ = vm::StopReason::Pause;
+      break;
+    }
     while (outcome.waiting && !pauseRequested_.load(std::memory_order_relaxed)) {
       waitOnCell(outcome);
       outcome = interpreter_->run(spec_.limits, observer, pause);

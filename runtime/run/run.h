@@ -108,6 +108,12 @@ class Run {
   Run(RunSpec spec, std::unique_ptr<vm::Machine> machine);
   /// The same on a machine the caller keeps (it must outlive the run).
   Run(RunSpec spec, vm::Machine& machine);
+  /// Robot `robot` of a cell run (runtime/run/cell_run.h): simulated, on
+  /// `shared`'s clock and world (the spec's cell is the one `shared` was
+  /// made of). Its waits return to the caller: runUntil answers an outcome
+  /// with `waiting` set, and the cell run moves the clock. No log, no
+  /// snapshots yet.
+  Run(RunSpec spec, Cell& shared, std::size_t robot);
   Run(const Run&) = delete;
   Run& operator=(const Run&) = delete;
   ~Run();
@@ -179,6 +185,7 @@ class Run {
   std::vector<std::uint8_t> breakpoints_;  // scratch for RunUntil's instructions and lines
   std::vector<std::function<void(vm::Micros, vm::IoMask)>> inputListeners_;
   std::atomic<bool> pauseRequested_ = false;
+  bool inCellRun_ = false;  // a robot of a cell run: a wait returns to it
   vm::StopReason cause_ = vm::StopReason::Paused;
 };
 

@@ -204,7 +204,7 @@ void TraceWriter::text(const vm::Interpreter& vm, std::uint32_t index) {
                                                            base::safeText(im.points[in.b].origin));
   if (const runtime::EmptyClose* e = run_.rig().emptyCloseOfLastStep())
     changed += std::string(changed.empty() ? "" : "  ") + closesOnNothingText(*e, run_.rig().world()->cell());
-  const std::optional<std::array<double, 3>> tool = run_.rig().world() ? run_.rig().world()->tcp(pos) : std::nullopt;
+  const std::optional<std::array<double, 3>> tool = run_.rig().world() ? run_.rig().world()->tcp(pos, run_.rig().robotIndex()) : std::nullopt;
   const std::string tcp = tool ? fmt::format("{:<28}  ", pointText(*tool)) : std::string();
   std::string row = fmt::format("{:>10}  {:>5}  {:>5}  {:<28}  {:<{}}  {}  {}{}", base::formatSeconds(vm.machine().now()),
                                 index + 1, im.lines[index], vm::instructionText(im, index), motors, motorsWidth_,
@@ -230,7 +230,7 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
   for (int line = 1; line <= vm::kIoCount; ++line) outputs.push_back(vm::lineIsOn(vm.machine().outputs(), line));
   j["outputs"] = outputs;
   if (const runtime::World* world = run_.rig().world())
-    if (const auto tool = world->tcp(pos)) j["tcp"] = roundedPoint(*tool);
+    if (const auto tool = world->tcp(pos, run_.rig().robotIndex())) j["tcp"] = roundedPoint(*tool);
   nlohmann::ordered_json changed = nlohmann::ordered_json::object();
   if (writesVariable(in)) changed[im.variables[in.b]] = vm.variables()[in.b];
   j["changed"] = changed;

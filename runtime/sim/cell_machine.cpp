@@ -28,7 +28,7 @@ vm::Status CellMachine::react() {
       return vm::Status::fault(
           fmt::format("collision at {} s: {}", base::formatSeconds(hit->at), watch_->describe(*hit)));
   }
-  world_.moved(before_, motion_.positions(), start_, motion_.now());
+  world_.moved(before_, motion_.positions(), start_, motion_.now(), robot_);
   return vm::Status::ok();
 }
 
@@ -52,7 +52,8 @@ vm::Status CellMachine::moveLockStep(std::span<const std::int32_t> targets, std:
 
 bool CellMachine::planner() {
   if (planner_) return true;
-  const workcell::PlacedRobot* driven = world_.cell().drivenRobot();
+  const auto& robots = world_.cell().robots;
+  const workcell::PlacedRobot* driven = robot_ < robots.size() ? &robots[robot_] : nullptr;
   if (!driven || !driven->robot.chain) return false;
   plans_ = std::make_unique<workcell::LinePlanCache>();
   planner_ = std::make_unique<workcell::LinePlanner>(*driven, plans_.get());
@@ -106,7 +107,7 @@ vm::Status CellMachine::hardHome() {
 
 vm::Status CellMachine::reset() {
   vm::Status status = motion_.reset();
-  if (status) world_.reset(motion_.now());
+  if (status) world_.reset(motion_.now(), robot_);
   return status;
 }
 

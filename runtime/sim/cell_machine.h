@@ -20,9 +20,10 @@ namespace rs::runtime {
 
 class CellMachine final : public vm::Machine {
  public:
-  /// Both must outlive this.
-  CellMachine(vm::Machine& motion, World& world)
-      : motion_(motion), world_(world), before_(motion.positions().size(), 0) {}
+  /// Both must outlive this. `robot` is the robot of the world's cell
+  /// that `motion` moves (its hand in the world).
+  CellMachine(vm::Machine& motion, World& world, std::size_t robot = 0)
+      : motion_(motion), world_(world), robot_(robot), before_(motion.positions().size(), 0) {}
 
   /// Checks every move on the simulated machine `timeline` (the machine
   /// this one stands in front of) for collisions; with CollisionMode::Error
@@ -73,6 +74,7 @@ class CellMachine final : public vm::Machine {
 
   vm::Machine& motion_;
   World& world_;
+  std::size_t robot_ = 0;
   const SimMachine* timeline_ = nullptr;
   CollisionWatch* watch_ = nullptr;
   CollisionMode mode_ = CollisionMode::Off;

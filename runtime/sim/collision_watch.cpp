@@ -25,12 +25,22 @@ std::optional<CollisionMode> collisionModeByName(std::string_view name) {
   return std::nullopt;
 }
 
-CollisionWatch::CollisionWatch(const workcell::Workcell& cell)
-    : model_(cell), data_(model_), bounds_(model_), clearance_(model_.robotBodies().size() + 1),
-      poses_(cell.objects.size()) {}
+CollisionWatch::CollisionWatch(const workcell::Workcell& cell, std::size_t robot)
+    : hand_(robot), model_(cell, robot), data_(model_), bounds_(model_), clearance_(model_.robotBodies().size() + 1),
+      poses_(cell.objects.size()), worldObjects_(cell.objects.size()) {}
+
+void CollisionWatch::alsoAvoid(std::size_t worldObjects, OthersPoses poses, std::string label) {
+  label_ = std::move(label);
+  worldObjects_ = std::min(worldObjects, poses_.size());
+  others_ = std::move(poses);
+  memo_ = SweepMemo();
+}
 
 std::string CollisionWatch::describe(const workcell::Contact& contact) const {
-  return fmt::format("{} hits {}", model_.describe(contact.a), model_.describe(contact.b));
+  const bool ofRobot = contact.a.kind != workcell::BodyKind::Object && contact.a.kind != workcell::BodyKind::Floor;
+  return fmt::format("{}{} hits {}", model_.describe(contact.a),
+                     ofRobot && !label_.empty() ? fmt::format(" of robot '{}'", label_) : std::string(),
+                     model_.describe(contact.b));
 }
 
 std::string CollisionWatch::describe(const CollisionEvent& event) const {
@@ -69,17 +79,24 @@ void appendPairs(std::vector<std::uint64_t>& key, std::span<const std::int32_t> 
 void CollisionWatch::keyOf(const World& world, std::span<const std::int32_t> before,
                            std::span<const std::int32_t> after, std::span<const std::int32_t> lineFrom,
                            std::span<const std::int32_t> lineTo) {
-  if (worldRevision_ != world.revision()) {
+  if (others_) {
+    // The other robots' parts move without the world's revision: the key
+    // holds their poses as they are now posed.
+    for (std::size_t o = 0; o < worldObjects_; ++o) poses_[o] = world.restingPose(o);
+    othersPose();
+    placesId_ = memo_.placesId(poses_);
+    worldRevision_.reset();
+  } else if (worldRevision_ != world.revision()) {
     for (std::size_t o = 0; o < poses_.size(); ++o) poses_[o] = world.restingPose(o);
     placesId_ = memo_.placesId(poses_);
     worldRevision_ = world.revision();
   }
   key_.clear();
   key_.push_back(placesId_);
-  const std::optional<std::size_t> held = world.held();
+  const std::optional<std::size_t> held = world.held(hand_);
   key_.push_back(held ? *held + 1 : 0);
   if (held) {
-    const Eigen::Matrix<double, 3, 4> offset = world.heldOffset().affine();
+    const Eigen::Matrix<double, 3, 4> offset = world.heldOffset(hand_).affine();
     for (int i = 0; i < 12; ++i) key_.push_back(std::bit_cast<std::uint64_t>(offset.data()[i]));
   }
   appendPairs(key_, before, after);
@@ -95,13 +112,44 @@ const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const Wor
   // The line this knot belongs to has collided already: one move, one report.
   if (knot && events_.size() > lineFirstEvent_ && events_.back().instruction == instruction_) return nullptr;
   ++moves_;
+  if (!others_) return sweepPosed(machine, world, before, after, start, end, lineFrom, lineTo);
+  // Other robots stand where they are at the move's start, then where they
+  // are at its end (a second look only when one moved meanwhile).
+  othersAt_ = start;
+  othersPose();
+  const std::vector<Eigen::Isometry3d> atStart(poses_.begin() + static_cast<std::ptrdiff_t>(worldObjects_), poses_.end());
+  if (const CollisionEvent* hit = sweepPosed(machine, world, before, after, start, end, lineFrom, lineTo)) return hit;
+  othersAt_ = end;
+  othersPose();
+  bool moved = false;
+  for (std::size_t i = 0; i < atStart.size() && !moved; ++i)
+    moved = atStart[i].matrix() != poses_[worldObjects_ + i].matrix();
+  return moved ? sweepPosed(machine, world, before, after, start, end, lineFrom, lineTo) : nullptr;
+}
+
+void CollisionWatch::othersPose() {
+  others_(othersAt_, std::span(poses_).subspan(worldObjects_));
+}
+
+const CollisionEvent* CollisionWatch::sweepPosed(const SimMachine& machine, const World& world,
+                                                 std::span<const std::int32_t> before,
+                                                 std::span<const std::int32_t> after, vm::Micros start, vm::Micros end,
+                                                 std::span<const std::int32_t> lineFrom,
+                                                 std::span<const std::int32_t> lineTo) {
+  const bool knot = !lineFrom.empty() && !lineTo.empty();
   keyOf(world, before, after, lineFrom, lineTo);
-  const SweepVerdict* verdict = memo_.find(key_);
+  // A part another robot carries moves without the world's revision: no
+  // memory answers while one does.
+  bool othersCarry = false;
+  for (std::size_t h = 0; h < world.handCount(); ++h) othersCarry |= h != hand_ && world.held(h).has_value();
+  const SweepVerdict* verdict = othersCarry ? nullptr : memo_.find(key_);
   SweepVerdict fresh;
   if (verdict) {
     ++remembered_;
   } else {
-    const workcell::CollisionQuery query = world.collisionQuery(knot ? lineFrom : before, knot ? lineTo : after, poses_);
+    workcell::CollisionQuery query = world.collisionQuery(knot ? lineFrom : before, knot ? lineTo : after,
+                                                          std::span(poses_).first(worldObjects_), hand_);
+    query.objectPoses = poses_;  // the other robots' parts too
     fresh = advance(machine, query, before, after, start, end);
     if (fresh.collides) {
       fresh.depth = data_.overlap(fresh.contact, query).depth;
@@ -109,7 +157,7 @@ const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const Wor
       const std::optional<workcell::Overlap> o = data_.overlapAt(knot ? lineTo : after, query, fresh.contact);
       if (o && o->depth <= kEndsInBy) fresh.endsIn = o;
     }
-    memo_.remember(key_, fresh);
+    if (!othersCarry) memo_.remember(key_, fresh);
     verdict = &fresh;
   }
   if (!verdict->collides) return nullptr;

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -59,9 +60,9 @@ struct CollisionEvent {
 
 class CollisionWatch {
  public:
-  /// The robot `cell` drives (Workcell::drivenRobot; the cell must outlive
-  /// the watch) moves.
-  explicit CollisionWatch(const workcell::Workcell& cell);
+  /// Robot `robot` of `cell` (which must outlive the watch) moves; its
+  /// hand in the world is the same index.
+  explicit CollisionWatch(const workcell::Workcell& cell, std::size_t robot = 0);
 
   /// Checks the move the machine just made from `before` (its positions at
   /// `start`) to its positions at `end`, with the world as it was during
@@ -72,6 +73,16 @@ class CollisionWatch {
   const CollisionEvent* sweep(const SimMachine& machine, const World& world, std::span<const std::int32_t> before,
                               std::span<const std::int32_t> after, vm::Micros start, vm::Micros end,
                               std::span<const std::int32_t> lineFrom = {}, std::span<const std::int32_t> lineTo = {});
+
+  /// Where parts that are not the world's stand at time t: the objects of
+  /// the watch's cell past the world's (a cell run's other robots,
+  /// runtime/run/robot_obstacles.h), written into the span.
+  using OthersPoses = std::function<void(vm::Micros, std::span<Eigen::Isometry3d>)>;
+  /// The watch's cell is the world's with parts appended from
+  /// `worldObjects` on, posed by `poses`: each move is checked with them
+  /// where they stand at its start, then (when one moved) at its end.
+  /// `label` names the moving robot in messages ("link 4 (wrist) of robot 'left'").
+  void alsoAvoid(std::size_t worldObjects, OthersPoses poses, std::string label);
 
   /// The moves checked from now on are instruction `instruction`'s (the
   /// run says so before each step): the collisions they find carry it.
@@ -113,12 +124,17 @@ class CollisionWatch {
   SweepVerdict advance(const SimMachine& machine, const workcell::CollisionQuery& query,
                        std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
                        vm::Micros end);
+  const CollisionEvent* sweepPosed(const SimMachine& machine, const World& world, std::span<const std::int32_t> before,
+                                   std::span<const std::int32_t> after, vm::Micros start, vm::Micros end,
+                                   std::span<const std::int32_t> lineFrom, std::span<const std::int32_t> lineTo);
+  void othersPose();
   void keyOf(const World& world, std::span<const std::int32_t> before, std::span<const std::int32_t> after,
              std::span<const std::int32_t> lineFrom, std::span<const std::int32_t> lineTo);
   double used(const SimMachine& machine, vm::Micros t);
   void partWay(std::span<const std::int32_t> from, std::span<const std::int32_t> to, std::int64_t k,
                std::int64_t steps);
 
+  std::size_t hand_ = 0;  // the robot that moves, its hand in the world
   workcell::CollisionModel model_;
   workcell::CollisionData data_;
   MotionBounds bounds_;
@@ -131,6 +147,10 @@ class CollisionWatch {
   std::uint64_t placesId_ = 0;
   std::vector<std::uint64_t> key_;         // scratch: this move's key
   std::vector<Eigen::Isometry3d> poses_;   // scratch: every object's resting pose
+  std::size_t worldObjects_ = 0;           // poses_ past these are others_'
+  OthersPoses others_;
+  std::string label_;                      // the moving robot's, in a cell of several
+  vm::Micros othersAt_ = 0;                // the time others_ poses them at
   std::vector<std::int32_t> at_, probe_;   // scratch: motors at the last check, at a time tried
   std::vector<std::int32_t> next_;         // scratch: motors at the microsecond after the last check's
   std::uint64_t checks_ = 0, moves_ = 0, remembered_ = 0;

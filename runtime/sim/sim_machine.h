@@ -55,6 +55,9 @@ class SimMachine final : public vm::Machine {
   /// A WAITFOR under way that nothing scheduled will satisfy: the Deadlock
   /// a machine running alone answers (the same words).
   vm::Status waitDeadlock() const;
+  /// The input a WAITFOR under way waits on (0: none), and for which value.
+  int waitingInput() const { return waitInput_; }
+  bool waitingOn() const { return waitOn_; }
   /// Called with (output, on) after an output changes (the devices read outputs).
   void onOutputChange(std::function<void(int, bool)> listener) { outputListener_ = std::move(listener); }
   /// Input `input` turns `on` now because of `cause` (a wire): the stimuli

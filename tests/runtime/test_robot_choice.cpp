@@ -27,10 +27,16 @@ rs::testing::CliResult runIn(const rs::testing::TempDir& dir, const std::string&
   return rs::testing::runCli(args);
 }
 
-// The tool centre's x in a JSON summary.
-double tcpX(const std::string& json) {
+// The tool centre's x in a JSON summary: a run of one robot's, or in a
+// run of several (r.rsp is right's PROGRAM, so it runs too) the robot
+// whose program is `file`.
+double tcpX(const std::string& json, const std::string& file = "") {
   const auto j = rs::lsp::Json::parse(json);
-  return j.at("tcp").at(0).get<double>();
+  if (!j.contains("robots")) return j.at("tcp").at(0).get<double>();
+  for (const auto& r : j.at("robots"))
+    if (r.at("program").get<std::string>().ends_with(file)) return r.at("tcp").at(0).get<double>();
+  FAIL("no robot runs " << file);
+  return 0;
 }
 
 }  // namespace robot_choice_test
@@ -46,21 +52,21 @@ TEST_CASE("robot choice: --robot, the 'robot:' comment line and the cell's PROGR
 
   const auto first = runIn(dir, "p.rsp", {});
   REQUIRE(first.code == 0);
-  const double home = tcpX(first.out);
+  const double home = tcpX(first.out, "p.rsp");
   CHECK(home < 1000);  // the first robot, at x 0
 
   const auto option = runIn(dir, "p.rsp", {"--robot", "right"});
   REQUIRE(option.code == 0);
-  CHECK(tcpX(option.out) == Approx(home + 3000));
+  CHECK(tcpX(option.out, "p.rsp") == Approx(home + 3000));
   const auto directive = runIn(dir, "d.rsp", {});
   REQUIRE(directive.code == 0);
-  CHECK(tcpX(directive.out) == Approx(home + 3000));
+  CHECK(tcpX(directive.out, "d.rsp") == Approx(home + 3000));
   const auto program = runIn(dir, "r.rsp", {});  // right's PROGRAM
   REQUIRE(program.code == 0);
-  CHECK(tcpX(program.out) == Approx(home + 3000));
+  CHECK(tcpX(program.out, "r.rsp") == Approx(home + 3000));
   const auto overridden = runIn(dir, "d.rsp", {"--robot", "left"});  // --robot wins over the line
   REQUIRE(overridden.code == 0);
-  CHECK(tcpX(overridden.out) == Approx(home));
+  CHECK(tcpX(overridden.out, "d.rsp") == Approx(home));
 }
 
 TEST_CASE("robot choice: a label the cell lacks is an error at its place", "[labels][robots]") {

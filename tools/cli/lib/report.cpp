@@ -126,6 +126,44 @@ Json devicesJson(const runtime::Run& run) {
 
 }  // namespace
 
+void printCellLines(std::ostream& out, const runtime::Run& run) {
+  const vm::Image& im = *run.spec().image;
+  const std::vector<runtime::ObjectView> objects = run.rig().objects();
+  const runtime::World* world = run.rig().world();
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    const runtime::ObjectView& e = objects[o];
+    if (!e.present) continue;
+    std::string rest;  // where its last let-go settled it
+    if (const auto& settled = world->restOf(o); settled && settled->settled())
+      rest = "; " + runtime::settleText(run.rig().numbered(*settled), world->cell()).substr(std::string_view("settles ").size());
+    out << fmt::format("  {:<15} {} at {}, centre {}{}{}\n", fmt::format("object {}", e.number), base::safeText(e.name),
+                       runtime::pointText({e.at.x(), e.at.y(), e.at.z()}),
+                       runtime::pointText({e.centre.x(), e.centre.y(), e.centre.z()}),
+                       e.held ? ", held" : e.moved ? ", moved" : "", rest);
+  }
+  if (world && world->fixtureCloseCount() > 0 && !run.rig().fixtureCloses().empty()) {
+    const std::uint64_t n = world->fixtureCloseCount();
+    const auto& first = run.rig().fixtureCloses().front();
+    out << fmt::format("  {:<15} closed round a fixture {}, took nothing there (the warning at line {}: {})\n",
+                       "gripper", n == 1 ? std::string("once") : fmt::format("{} times", n),
+                       first.first < im.lines.size() ? im.lines[first.first] : 0,
+                       runtime::fixtureCloseText(first.second, world->cell()));
+  }
+  if (world && world->longDropCount() > 0 && !run.rig().longDrops().empty()) {
+    const std::uint64_t n = world->longDropCount();
+    const auto& first = run.rig().longDrops().front();
+    out << fmt::format("  {:<15} {} at line {}{}\n", "placing", runtime::longDropText(first.second, world->cell()),
+                       first.first < im.lines.size() ? im.lines[first.first] : 0,
+                       n == 1 ? std::string() : fmt::format(" ({} drops over {} in all)", n, runtime::kLongDrop));
+  }
+  if (const auto w = runtime::gripperWarning(run, im.sourceName))  // the warning printed before
+    out << fmt::format("  gripper         closed {}, took nothing (the warning at line {})\n",
+                       run.rig().world()->closeCount() == 1 ? std::string("once")
+                                                         : fmt::format("{} times", run.rig().world()->closeCount()),
+                       w->pos.line);
+  printDevices(out, run);
+}
+
 void printTextSummary(std::ostream& out, const RunReport& r) {
   if (!r.run || !r.run->outcome()) return;
   const vm::Image& im = *r.run->spec().image;
@@ -142,40 +180,7 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   out << fmt::format("  motors          {}\n", motors);
   if (r.fault) printFault(out, *r.fault);
   if (const auto tcp = r.run->rig().tcp()) out << fmt::format("  tool centre     {}\n", runtime::pointText(*tcp));
-  const std::vector<runtime::ObjectView> objects = r.run->rig().objects();
-  const runtime::World* world = r.run->rig().world();
-  for (std::size_t o = 0; o < objects.size(); ++o) {
-    const runtime::ObjectView& e = objects[o];
-    if (!e.present) continue;
-    std::string rest;  // where its last let-go settled it
-    if (const auto& settled = world->restOf(o); settled && settled->settled())
-      rest = "; " + runtime::settleText(r.run->rig().numbered(*settled), world->cell()).substr(std::string_view("settles ").size());
-    out << fmt::format("  {:<15} {} at {}, centre {}{}{}\n", fmt::format("object {}", e.number), base::safeText(e.name),
-                       runtime::pointText({e.at.x(), e.at.y(), e.at.z()}),
-                       runtime::pointText({e.centre.x(), e.centre.y(), e.centre.z()}),
-                       e.held ? ", held" : e.moved ? ", moved" : "", rest);
-  }
-  if (world && world->fixtureCloseCount() > 0 && !r.run->rig().fixtureCloses().empty()) {
-    const std::uint64_t n = world->fixtureCloseCount();
-    const auto& first = r.run->rig().fixtureCloses().front();
-    out << fmt::format("  {:<15} closed round a fixture {}, took nothing there (the warning at line {}: {})\n",
-                       "gripper", n == 1 ? std::string("once") : fmt::format("{} times", n),
-                       first.first < im.lines.size() ? im.lines[first.first] : 0,
-                       runtime::fixtureCloseText(first.second, world->cell()));
-  }
-  if (world && world->longDropCount() > 0 && !r.run->rig().longDrops().empty()) {
-    const std::uint64_t n = world->longDropCount();
-    const auto& first = r.run->rig().longDrops().front();
-    out << fmt::format("  {:<15} {} at line {}{}\n", "placing", runtime::longDropText(first.second, world->cell()),
-                       first.first < im.lines.size() ? im.lines[first.first] : 0,
-                       n == 1 ? std::string() : fmt::format(" ({} drops over {} in all)", n, runtime::kLongDrop));
-  }
-  if (const auto w = runtime::gripperWarning(*r.run, im.sourceName))  // the warning printed before
-    out << fmt::format("  gripper         closed {}, took nothing (the warning at line {})\n",
-                       r.run->rig().world()->closeCount() == 1 ? std::string("once")
-                                                         : fmt::format("{} times", r.run->rig().world()->closeCount()),
-                       w->pos.line);
-  printDevices(out, *r.run);
+  if (r.cellLines) printCellLines(out, *r.run);
   printCollisions(out, *r.run);
   out << fmt::format("  outputs         {}  (ON: {})\n", runtime::lampText(m.outputs()), lampList(m.outputs()));
   out << fmt::format("  inputs          {}  (ON: {})\n", runtime::lampText(m.inputs()), lampList(m.inputs()));
@@ -185,19 +190,73 @@ void printTextSummary(std::ostream& out, const RunReport& r) {
   out << fmt::format("  variables       {}\n", vars.empty() ? "none" : vars);
 }
 
+nlohmann::ordered_json diagnosticJson(const diag::Diagnostic& d) {
+  Json one = {{"file", d.file},
+              {"line", d.pos.line},
+              {"column", d.pos.col},
+              {"severity", diag::severityName(d.severity)},
+              {"message", d.message}};
+  if (!d.code.empty()) one["code"] = d.code;
+  if (!d.hint.empty()) one["hint"] = d.hint;
+  return one;
+}
+
+nlohmann::ordered_json motorsJson(const runtime::Run& run) {
+  const vm::Image& im = *run.spec().image;
+  Json motors = Json::object();
+  const auto pos = run.rig().machine().positions();
+  for (std::size_t i = 0; i < pos.size(); ++i) motors[std::string(1, im.motors[i].letter)] = pos[i];
+  return motors;
+}
+
+void addLinesAndVariablesJson(nlohmann::ordered_json& j, const runtime::Run& run) {
+  const vm::Machine& m = run.rig().machine();
+  const vm::Image& im = *run.spec().image;
+  Json outputs = Json::array(), inputs = Json::array();
+  for (int line = 1; line <= vm::kIoCount; ++line) {
+    outputs.push_back(vm::lineIsOn(m.outputs(), line));
+    inputs.push_back(vm::lineIsOn(m.inputs(), line));
+  }
+  j["outputs"] = outputs;
+  j["inputs"] = inputs;
+  Json vars = Json::object();
+  for (std::size_t i = 0; i < im.variables.size(); ++i) vars[im.variables[i]] = run.interpreter().variables()[i];
+  j["variables"] = vars;
+}
+
+void addCellJson(nlohmann::ordered_json& j, const runtime::Run& run) {
+  if (run.rig().cell()) {
+    Json objects = Json::array();
+    const bool numbered = run.rig().devices() != nullptr;
+    const runtime::World* world = run.rig().world();
+    const std::vector<runtime::ObjectView> views = run.rig().objects();
+    for (std::size_t o = 0; o < views.size(); ++o) {
+      const runtime::ObjectView& e = views[o];
+      if (!e.present) continue;
+      Json one = {{"name", e.name}, {"at", runtime::roundedPoint({e.at.x(), e.at.y(), e.at.z()})},
+                  {"centre", runtime::roundedPoint({e.centre.x(), e.centre.y(), e.centre.z()})}, {"held", e.held},
+                  {"moved", e.moved}};
+      if (numbered) one["number"] = e.number;  // fed parts make the list's order no number
+      // Where its last let-go settled it, and how far it dropped (to 1e-4).
+      if (world && world->restOf(o) && world->restOf(o)->settled())
+        one["settled"] = {{"on", runtime::supportText(run.rig().numbered(*world->restOf(o)), world->cell())},
+                          {"drop", std::round(world->restOf(o)->drop * 1e4) / 1e4 + 0.0}};
+      objects.push_back(std::move(one));
+    }
+    j["objects"] = objects;
+    if (numbered) j["devices"] = devicesJson(run);
+  }
+}
+
 void printJsonSummary(std::ostream& out, const RunReport& r) {
   Json j;
   // The text summary's word for a run that ran to its end (vm::stopReasonName), in both.
   j["status"] = r.ok() ? vm::stopReasonName(vm::StopReason::End) : "error";
   if (r.run && r.run->outcome()) {
-    const vm::Image& im = *r.run->spec().image;
     const vm::Machine& m = r.run->rig().machine();
     j["time"] = static_cast<double>(m.now()) / 1e6;
     j["steps"] = r.run->outcome()->steps;
-    Json motors = Json::object();
-    const auto pos = m.positions();
-    for (std::size_t i = 0; i < pos.size(); ++i) motors[std::string(1, im.motors[i].letter)] = pos[i];
-    j["motors"] = motors;
+    j["motors"] = motorsJson(*r.run);
     if (r.fault) {
       Json uncertain = Json::array(), on = Json::array();
       for (const rhino::FaultState::Motor& mo : r.fault->motors)
@@ -208,27 +267,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
       j["fault"] = {{"message", r.fault->failure}, {"uncertain_motors", uncertain}, {"outputs_left_on", on}};
     }
     if (const auto tcp = r.run->rig().tcp()) j["tcp"] = runtime::roundedPoint(*tcp);
-    if (r.run->rig().cell()) {
-      Json objects = Json::array();
-      const bool numbered = r.run->rig().devices() != nullptr;
-      const runtime::World* world = r.run->rig().world();
-      const std::vector<runtime::ObjectView> views = r.run->rig().objects();
-      for (std::size_t o = 0; o < views.size(); ++o) {
-        const runtime::ObjectView& e = views[o];
-        if (!e.present) continue;
-        Json one = {{"name", e.name}, {"at", runtime::roundedPoint({e.at.x(), e.at.y(), e.at.z()})},
-                    {"centre", runtime::roundedPoint({e.centre.x(), e.centre.y(), e.centre.z()})}, {"held", e.held},
-                    {"moved", e.moved}};
-        if (numbered) one["number"] = e.number;  // fed parts make the list's order no number
-        // Where its last let-go settled it, and how far it dropped (to 1e-4).
-        if (world && world->restOf(o) && world->restOf(o)->settled())
-          one["settled"] = {{"on", runtime::supportText(r.run->rig().numbered(*world->restOf(o)), world->cell())},
-                            {"drop", std::round(world->restOf(o)->drop * 1e4) / 1e4 + 0.0}};
-        objects.push_back(std::move(one));
-      }
-      j["objects"] = objects;
-      if (numbered) j["devices"] = devicesJson(*r.run);
-    }
+    if (r.cellLines) addCellJson(j, *r.run);
     if (const runtime::CollisionWatch* watch = r.run->rig().collisionWatch()) {
       Json collisions = Json::array();
       for (const runtime::CollisionEvent& e : r.run->rig().collisions())
@@ -239,16 +278,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
                               {"depth", std::round(e.depth * 1e4) / 1e4}});  // to 1e-4, as the trace
       j["collisions"] = collisions;
     }
-    Json outputs = Json::array(), inputs = Json::array();
-    for (int line = 1; line <= vm::kIoCount; ++line) {
-      outputs.push_back(vm::lineIsOn(m.outputs(), line));
-      inputs.push_back(vm::lineIsOn(m.inputs(), line));
-    }
-    j["outputs"] = outputs;
-    j["inputs"] = inputs;
-    Json vars = Json::object();
-    for (std::size_t i = 0; i < im.variables.size(); ++i) vars[im.variables[i]] = r.run->interpreter().variables()[i];
-    j["variables"] = vars;
+    addLinesAndVariablesJson(j, *r.run);
     if (r.profile) j["profile"] = profileJson(*r.profile);
   } else {
     j["time"] = 0;
@@ -263,16 +293,7 @@ void printJsonSummary(std::ostream& out, const RunReport& r) {
       r.maxDiagnostics == 0 ? r.diagnostics.size() : std::min(r.maxDiagnostics, r.diagnostics.size());
   diag::Omitted omitted = r.omitted;
   for (std::size_t i = listed; i < r.diagnostics.size(); ++i) omitted.count(r.diagnostics[i].severity);
-  for (const diag::Diagnostic& d : std::span(r.diagnostics).first(listed)) {
-    Json one = {{"file", d.file},
-                {"line", d.pos.line},
-                {"column", d.pos.col},
-                {"severity", diag::severityName(d.severity)},
-                {"message", d.message}};
-    if (!d.code.empty()) one["code"] = d.code;
-    if (!d.hint.empty()) one["hint"] = d.hint;
-    diags.push_back(std::move(one));
-  }
+  for (const diag::Diagnostic& d : std::span(r.diagnostics).first(listed)) diags.push_back(diagnosticJson(d));
   j["diagnostics"] = diags;
   if (omitted.any()) j["diagnostics_not_listed"] = {{"errors", omitted.errors}, {"warnings", omitted.warnings}};
   out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';

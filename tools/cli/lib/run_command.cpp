@@ -5,6 +5,7 @@
 
 #include "base/seconds.h"
 #include "base/text.h"
+#include "tools/cli/lib/cell_run_command.h"
 #include "tools/cli/lib/exit_codes.h"
 #include "tools/cli/lib/options.h"
 #include "tools/cli/lib/profile_report.h"
@@ -34,6 +35,8 @@ void promoteCompileWarnings(launch::LoadedProgram& program) {
 }  // namespace
 
 int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err) {
+  if (!check)
+    if (const std::optional<int> code = runCellIfSeveral(o, out, err)) return *code;
   const bool json = o.format == "json";
   if (o.profile && o.serial.active()) {
     err << "--profile: error: a profile is computed from the simulated run's log: leave out --device\n";
@@ -122,7 +125,10 @@ void addRunLikeRest(CLI::App* cmd, RunCommandOptions& o) {
 }  // namespace
 
 void addRunCommandOptions(CLI::App* cmd, RunCommandOptions& o) {
-  addRunLikeFile(cmd, o);
+  addRunLikeFile(cmd, o, false);  // without it: every PROGRAM of --cell (cell_run_command.h)
+  cmd->add_option("programs", o.programs,
+                  "With --cell: LABEL=FILE gives or overrides the program of the cell's robot LABEL; every robot "
+                  "with a program runs it on the cell's one clock");
   cmd->add_flag("--trace{text}", o.trace, "Print each executed instruction: --trace (text) or --trace=json");
   cmd->add_flag("--profile", o.profile,
                 "Where the time went: by source line, label and subroutine, moving vs waiting vs gripper, the "

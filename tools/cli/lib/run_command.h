@@ -4,6 +4,7 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "launch/program.h"
 #include "launch/rhino.h"
@@ -26,6 +27,7 @@ struct RunCommandOptions {
   std::string trace;            // "", "text" or "json"
   bool strict = false;          // check: warnings fail too
   bool profile = false;         // run: where the time went (runtime/run/profile.h)
+  std::vector<std::string> programs = {};  // run --cell: LABEL=FILE for the cell's robots (cell_run_command.h)
 };
 
 /// The options of `run` and of `check` (one RunCommandOptions serves both).

@@ -16,6 +16,7 @@
 #include "tools/cli/lib/grade_table.h"
 #include "tools/cli/lib/number_args.h"
 #include "tools/cli/lib/options.h"
+#include "tools/cli/lib/report.h"
 #include "runtime/run/trace.h"
 #include "diag/diagnostic.h"
 #include "tools/testrun/suite.h"
@@ -35,17 +36,6 @@ bool parseShard(const std::string& text, std::uint32_t& k, std::uint32_t& n) {
   };
   return whole(std::string_view(text).substr(0, slash), k) && whole(std::string_view(text).substr(slash + 1), n) &&
          n >= 1 && n <= 100000 && k >= 1 && k <= n;
-}
-
-nlohmann::json diagnosticJson(const diag::Diagnostic& d) {
-  nlohmann::json j = {{"file", d.file},
-                      {"line", d.pos.line},
-                      {"column", d.pos.col},
-                      {"severity", diag::severityName(d.severity)},
-                      {"message", d.message}};
-  if (!d.code.empty()) j["code"] = d.code;
-  if (!d.hint.empty()) j["hint"] = d.hint;
-  return j;
 }
 
 // The command's own errors go through diag::render, as every problem of
@@ -136,9 +126,9 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
     nlohmann::json tests = nlohmann::json::array();
     for (const testrun::TestResult& r : results) {
       nlohmann::json problems = nlohmann::json::array();
-      for (const diag::Diagnostic& d : r.problems) problems.push_back(diagnosticJson(d));
+      for (const diag::Diagnostic& d : r.problems) problems.push_back(nlohmann::json(diagnosticJson(d)));
       nlohmann::json warnings = nlohmann::json::array();
-      for (const diag::Diagnostic& d : r.warnings) warnings.push_back(diagnosticJson(d));
+      for (const diag::Diagnostic& d : r.warnings) warnings.push_back(nlohmann::json(diagnosticJson(d)));
       nlohmann::json test = {{"file", r.file},
                              {"scenario", r.name},
                              {"status", testrun::statusName(r.status)},

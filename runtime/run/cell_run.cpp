@@ -1,0 +1,180 @@
+#include "runtime/run/cell_run.h"
+
+#include <fmt/format.h>
+
+#include "base/seconds.h"
+
+namespace rs::runtime {
+
+namespace {
+
+// Whether `label` (a stimulus's, a wire's: empty for the cell's first robot) names robot `robot`.
+bool labelNames(const workcell::Workcell& cell, const std::string& label, std::size_t robot) {
+  return label.empty() ? robot == cell.drivenRobotIndex() : cell.robotLabeled(label) == robot;
+}
+
+}  // namespace
+
+stimuli::Stimuli stimuliOfRobot(const stimuli::Stimuli& all, const workcell::Workcell& cell, std::size_t robot) {
+  stimuli::Stimuli own;
+  for (stimuli::InputChange c : all.changes)
+    if (labelNames(cell, c.robot, robot)) c.robot.clear(), c.robotColumn = 0, own.changes.push_back(std::move(c));
+  for (stimuli::ReactiveRule r : all.rules)
+    if (labelNames(cell, r.outputRobot, robot) && labelNames(cell, r.inputRobot, robot)) {
+      r.outputRobot.clear(), r.inputRobot.clear(), r.outputRobotColumn = r.inputRobotColumn = 0;
+      own.rules.push_back(std::move(r));
+    }
+  return own;
+}
+
+std::string checkCellRunSpec(const CellRunSpec& spec) {
+  if (!spec.cell) return "a cell run needs a workcell";
+  std::vector<bool> taken(spec.cell->robots.size(), false);
+  for (const CellProgram& p : spec.programs) {
+    if (p.robot >= taken.size()) return fmt::format("the cell has no robot {}", p.robot + 1);
+    if (!p.image) return "a program without an image";
+    if (taken[p.robot]) return fmt::format("two programs for robot {}", spec.cell->robots[p.robot].labelOf());
+    taken[p.robot] = true;
+  }
+  for (const stimuli::ReactiveRule& r : spec.stimuli.rules) {
+    const std::size_t out = r.outputRobot.empty() ? 0 : spec.cell->robotLabeled(r.outputRobot);
+    const std::size_t in = r.inputRobot.empty() ? 0 : spec.cell->robotLabeled(r.inputRobot);
+    if (out != in)
+      return fmt::format("line {}: a rule from one robot's output to another's input is not run yet: write a WIRE "
+                         "{}.OUT {} TO {}.IN {} in the cell instead",
+                         r.line, r.outputRobot.empty() ? spec.cell->robots[0].labelOf() : r.outputRobot, r.output,
+                         r.inputRobot.empty() ? spec.cell->robots[0].labelOf() : r.inputRobot, r.input);
+  }
+  return {};
+}
+
+CellRun::CellRun(CellRunSpec spec)
+    : cell_(withFeederSlots(spec.cell)), shared_(cell_.get()), limits_(spec.limits) {
+  std::vector<RobotIo*> ios(cell_->robots.size(), nullptr);
+  for (const CellProgram& p : spec.programs) {
+    RunSpec one;
+    one.image = p.image;
+    one.cell = cell_;
+    one.stimuli = stimuliOfRobot(spec.stimuli, *cell_, p.robot);
+    one.limits = spec.limits;
+    one.collisions = spec.collisions;
+    runs_.push_back(std::make_unique<Run>(std::move(one), shared_, p.robot));
+    ios[p.robot] = &runs_.back()->rig().io();
+  }
+  // Every robot is an obstacle to every other, where its machine has it.
+  for (auto& r : runs_) {
+    r->rig().avoidOtherRobots();
+    if (RobotObstacles* o = r->rig().obstacles())
+      for (auto& other : runs_) o->machine(other->rig().robotIndex(), other->rig().sim());
+  }
+  ends_.assign(runs_.size(), RobotEnd::Running);
+  endAt_.assign(runs_.size(), 0);
+  wakeAt_.assign(runs_.size(), 0);
+  if (shared_.world() && !cell_->devices.empty()) {
+    devices_ = std::make_unique<CellDevices>(*cell_, *shared_.world(), std::move(ios), shared_.clock());
+    for (auto& r : runs_) r->rig().attachDevices(*devices_);
+  }
+}
+
+CellRun::~CellRun() = default;
+
+const std::string& CellRun::label(std::size_t p) const {
+  return cell_->robots[runs_[p]->rig().robotIndex()].labelOf();
+}
+
+vm::Status CellRun::advanceCell(vm::Micros t) {
+  if (devices_) devices_->sync();
+  if (vm::Status s = shared_.clock().advanceTo(t); !s) return s;
+  if (devices_)
+    if (std::optional<std::string> fault = devices_->takeFault()) return vm::Status::fault(*fault);
+  return vm::Status::ok();
+}
+
+// The robot that failed stops the cell: the others' waits end where they are.
+vm::RunOutcome CellRun::stopAll(std::size_t failed, const vm::RunOutcome& outcome) {
+  failed_ = failed;
+  ends_[failed] = RobotEnd::Finished;
+  endAt_[failed] = clock();
+  cellStops(outcome.reason, {});
+  vm::RunOutcome cell = outcome;
+  cell.message = fmt::format("robot {}: {}", label(failed), outcome.message);
+  return cell;
+}
+
+vm::RunOutcome CellRun::cellStops(vm::StopReason reason, std::string message) {
+  for (std::size_t p = 0; p < runs_.size(); ++p)
+    if (ends_[p] == RobotEnd::Running) ends_[p] = RobotEnd::Stopped, endAt_[p] = clock();
+  vm::RunOutcome o;
+  o.reason = reason;
+  o.message = std::move(message);
+  return o;
+}
+
+std::string CellRun::deadlockMessage() const {
+  std::string out = "deadlock: ";
+  bool first = true;
+  for (std::size_t p = 0; p < runs_.size(); ++p) {
+    if (ends_[p] != RobotEnd::Running) continue;
+    const Run& run = *runs_[p];
+    const SimMachine& sim = *run.rig().sim();
+    const std::size_t robot = run.rig().robotIndex();
+    const int input = sim.waitingInput();
+    std::string source = "nothing drives it";
+    for (const workcell::Wire& w : cell_->devices.wires)
+      if (w.input == input && labelNames(*cell_, w.robot, robot)) source = "wired from " + signalText(w.source);
+    const vm::Image& image = *run.spec().image;
+    out += fmt::format("{}{} waits at {}:{} for input {} ({})", first ? "" : "; ", label(p), image.sourceName,
+                       run.view().line, input, source);
+    first = false;
+  }
+  return out;
+}
+
+vm::RunOutcome CellRun::runToEnd() {
+  vm::RunOutcome last;
+  last.reason = vm::StopReason::End;
+  while (true) {
+    // Evaluate: every robot runs until it waits or ends.
+    bool anyRunning = false;
+    for (std::size_t p = 0; p < runs_.size(); ++p) {
+      if (ends_[p] != RobotEnd::Running) continue;
+      const vm::RunOutcome o = runs_[p]->runUntil({});
+      if (o.waiting) {
+        wakeAt_[p] = o.wakeAt;
+        anyRunning = true;
+        continue;
+      }
+      ends_[p] = RobotEnd::Finished;
+      endAt_[p] = clock();
+      last.steps += o.steps;
+      if (!o.ok()) return stopAll(p, o);
+    }
+    if (!anyRunning) break;
+    // The cell acts on what the robots did at now, then its clock runs on.
+    std::vector<vm::IoMask> inputsBefore;
+    for (const auto& r : runs_) inputsBefore.push_back(r->rig().machine().inputs());
+    if (vm::Status s = advanceCell(clock()); !s) return cellStops(vm::StopReason::RuntimeError, s.message);
+    bool allForever = true;
+    for (std::size_t p = 0; p < runs_.size(); ++p) {
+      if (ends_[p] != RobotEnd::Running) continue;
+      if (wakeAt_[p] != vm::Status::kNever) runs_[p]->rig().wakeRobotAt(wakeAt_[p]), allForever = false;
+    }
+    const std::optional<vm::Micros> next = shared_.clock().nextTime();
+    if (!next) {
+      // A wire without AFTER may have answered a robot at this very instant.
+      bool changed = false;
+      for (std::size_t p = 0; p < runs_.size(); ++p) changed |= runs_[p]->rig().machine().inputs() != inputsBefore[p];
+      if (changed) continue;
+      return cellStops(vm::StopReason::Deadlock, deadlockMessage());
+    }
+    // Only the devices may end these waits, in a cell that goes on forever:
+    // past the time limit the cell stops.
+    if (*next > limits_.maxTime && allForever)
+      return cellStops(vm::StopReason::TimeLimit,
+                       fmt::format("every robot still waits past the time limit of {} s", base::formatSeconds(limits_.maxTime)));
+    if (vm::Status s = advanceCell(*next); !s) return cellStops(vm::StopReason::RuntimeError, s.message);
+  }
+  return last;
+}
+
+}  // namespace rs::runtime

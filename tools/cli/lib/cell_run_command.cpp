@@ -1,0 +1,244 @@
+#include "tools/cli/lib/cell_run_command.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "base/seconds.h"
+#include "base/text.h"
+#include "launch/cell_programs.h"
+#include "launch/run_diagnostics.h"
+#include "launch/run_request.h"
+#include "runtime/run/cell_run.h"
+#include "runtime/run/trace.h"
+#include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/report.h"
+#include "tools/cli/lib/run_warnings.h"
+#include "vm/io_lines.h"
+#include "vm/stop_reason.h"
+
+namespace rs::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// One robot's trace: the run's own trace writer into a buffer, each line
+// then given the robot's label (text: "left: ...", JSON: a "robot" field)
+// on its way out, so that the robots' lines interleave as they happen.
+class LabelledTrace final : public vm::StepObserver {
+ public:
+  LabelledTrace(std::ostream& out, runtime::TraceFormat format, const runtime::Run& run, std::string label)
+      : out_(out), json_(format == runtime::TraceFormat::Json), label_(std::move(label)), writer_(buffer_, format, run) {}
+  bool afterStep(const vm::Interpreter& vm, std::uint32_t index) override {
+    const bool pause = writer_.afterStep(vm, index);
+    flush();
+    return pause;
+  }
+  void finish() {
+    writer_.finish();
+    flush();
+  }
+
+ private:
+  void flush() {
+    std::string line;
+    std::istringstream lines(buffer_.str());
+    while (std::getline(lines, line)) {
+      if (json_ && line.starts_with('{'))
+        out_ << "{\"robot\":" << Json(label_).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)
+             << (line.size() > 2 ? "," : "") << line.substr(1) << '\n';
+      else out_ << base::safeText(label_) << ": " << line << '\n';
+    }
+    buffer_.str({});
+  }
+  std::ostream& out_;
+  bool json_;
+  std::string label_;
+  std::ostringstream buffer_;
+  runtime::TraceWriter writer_;
+};
+
+std::string_view endName(const runtime::CellRun& cell, std::size_t p) {
+  const runtime::Run& run = cell.robot(p);
+  if (cell.end(p) == runtime::RobotEnd::Stopped) return "stopped";
+  if (!run.outcome()) return "running";
+  return vm::stopReasonName(run.outcome()->reason);
+}
+
+void printRobotText(std::ostream& out, const runtime::CellRun& cell, std::size_t p) {
+  const runtime::Run& run = cell.robot(p);
+  const vm::Image& im = *run.spec().image;
+  const vm::Machine& m = run.rig().machine();
+  std::string where;
+  if (run.outcome() && !run.outcome()->ok()) where = fmt::format(" at line {}", im.lines[run.outcome()->index]);
+  else if (cell.end(p) == runtime::RobotEnd::Stopped) where = fmt::format(" at line {}", run.view().line);
+  out << fmt::format("robot {}: {} on {}: {}{}\n", base::safeText(cell.label(p)), base::safeText(im.sourceName),
+                     base::safeText(im.robotName), endName(cell, p), where);
+  out << fmt::format("  simulated time  {} s\n", base::formatSeconds(cell.endTime(p)));
+  out << fmt::format("  instructions    {} executed\n", run.interpreter().steps());
+  std::string motors;
+  const auto pos = m.positions();
+  for (std::size_t i = 0; i < pos.size(); ++i) motors += fmt::format("{}{}={}", i ? "  " : "", im.motors[i].letter, pos[i]);
+  out << fmt::format("  motors          {}\n", motors);
+  if (const auto tcp = run.rig().tcp()) out << fmt::format("  tool centre     {}\n", runtime::pointText(*tcp));
+  out << fmt::format("  outputs         {}\n", runtime::lampText(m.outputs()));
+  out << fmt::format("  inputs          {}\n", runtime::lampText(m.inputs()));
+  std::string vars;
+  for (std::size_t i = 0; i < im.variables.size(); ++i)
+    vars += fmt::format("{}{}={}", i ? "  " : "", base::safeText(im.variables[i]), run.interpreter().variables()[i]);
+  out << fmt::format("  variables       {}\n", vars.empty() ? "none" : vars);
+}
+
+Json robotJson(const runtime::CellRun& cell, std::size_t p, const std::string& file) {
+  const runtime::Run& run = cell.robot(p);
+  Json j = {{"name", cell.label(p)}, {"program", file}, {"status", endName(cell, p)}};
+  j["time"] = static_cast<double>(cell.endTime(p)) / 1e6;
+  j["steps"] = run.interpreter().steps();
+  j["motors"] = motorsJson(run);
+  if (const auto tcp = run.rig().tcp()) j["tcp"] = runtime::roundedPoint(*tcp);
+  addLinesAndVariablesJson(j, run);
+  return j;
+}
+
+Json diagnosticsJson(std::span<const diag::Diagnostic> diags) {
+  Json out = Json::array();
+  for (const diag::Diagnostic& d : diags) out.push_back(diagnosticJson(d));
+  return out;
+}
+
+// What the cell's stop says, as diagnostics: the failing robot's own words
+// at its line (launch/run_diagnostics.h), or the deadlock or limit at each
+// waiting robot's line.
+std::vector<diag::Diagnostic> cellDiagnostics(const runtime::CellRun& cell, const vm::RunOutcome& outcome,
+                                              runtime::CollisionMode collisions) {
+  std::vector<diag::Diagnostic> out;
+  for (std::size_t p = 0; p < cell.size(); ++p) {
+    const runtime::Run& run = cell.robot(p);
+    const std::string& file = run.spec().image->sourceName;
+    std::vector<diag::Diagnostic> said = launch::runDiagnostics(run, collisions, file);
+    for (diag::Diagnostic& d : said)
+      if (d.severity == diag::Severity::Error) d.hint += fmt::format("{}robot {} stopped the cell", d.hint.empty() ? "" : "; ", cell.label(p));
+    out.insert(out.end(), said.begin(), said.end());
+  }
+  if (!outcome.ok() && !cell.failed()) {
+    // The cell stopped them all: one error, at the first waiting robot's line.
+    for (std::size_t p = 0; p < cell.size(); ++p) {
+      if (cell.end(p) != runtime::RobotEnd::Stopped) continue;
+      const runtime::Run& run = cell.robot(p);
+      out.push_back({run.spec().image->sourceName, {run.view().line, 1}, diag::Severity::Error, outcome.message,
+                     outcome.reason == vm::StopReason::Deadlock ? "deadlock" : "",
+                     outcome.reason == vm::StopReason::Deadlock
+                         ? "a robot waits for an input that only another waiting robot's output drives: change the "
+                           "order of an OUTSIG and a WAITFOR in one program"
+                         : ""});
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<int> runCellIfSeveral(const RunCommandOptions& o, std::ostream& out, std::ostream& err) {
+  launch::ProgramRequest request = o.program;
+  std::vector<std::string> assignments = o.programs;
+  std::error_code ec;
+  if (launch::isProgramAssignment(request.file) && !std::filesystem::exists(request.file, ec))
+    assignments.insert(assignments.begin(), request.file), request.file.clear();
+  if (request.cell.empty()) {
+    if (request.file.empty() || !assignments.empty()) {
+      err << "robotsim: error: which program? give a program file, or --cell CELL to run every PROGRAM its ROBOT "
+             "lines name (LABEL=FILE gives or overrides one)\n";
+      return kExitBadInput;
+    }
+    return std::nullopt;
+  }
+  launch::CellPrograms programs;
+  const auto sourceOf = [&programs](const std::string& file) { return programs.sourceOf(file); };
+  if (!launch::assignCellPrograms(request, assignments, programs)) {
+    // A program alone on a cell that does not load: the run of one says why, as always.
+    if (!request.file.empty() && assignments.empty()) return std::nullopt;
+    std::vector<diag::Diagnostic> all = programs.cellLoad.diagnostics;
+    for (const launch::LoadedProgram& l : programs.loaded) all.insert(all.end(), l.diagnostics.begin(), l.diagnostics.end());
+    launch::printDiagnostics(err, all, sourceOf, request.maxErrors, {});
+    if (o.format == "json")
+      out << Json{{"status", "error"}, {"robots", Json::array()}, {"diagnostics", diagnosticsJson(all)}}.dump(
+                 -1, ' ', false, nlohmann::json::error_handler_t::replace)
+          << '\n';
+    return kExitBadInput;
+  }
+  if (programs.programs.empty() && !request.file.empty()) return std::nullopt;
+  if (programs.programs.size() == 1) {
+    // One robot has a program: the run of one, as always.
+    if (!request.file.empty()) return std::nullopt;
+    RunCommandOptions one = o;
+    one.program.file = programs.files[0], one.program.robot = programs.labels[0], one.programs.clear();
+    return runOrCheck(one, false, out, err);
+  }
+  if (o.profile || o.serial.active()) {
+    err << fmt::format("{}: error: a run of several robots does not take {} yet\n  hint: run one robot's program "
+                       "with PROG --cell CELL --robot LABEL for that\n",
+                       o.profile ? "--profile" : "--device", o.profile ? "--profile" : "--device");
+    return kExitBadInput;
+  }
+  launch::compileAssignedPrograms(request, programs);
+  // Each program's load read the cell again: its warnings are said once.
+  std::vector<diag::Diagnostic> diags = programs.cellLoad.diagnostics;
+  for (const launch::LoadedProgram& l : programs.loaded)
+    for (const diag::Diagnostic& d : l.diagnostics)
+      if (std::none_of(diags.begin(), diags.end(), [&](const diag::Diagnostic& e) {
+            return e.file == d.file && e.pos == d.pos && e.message == d.message;
+          }))
+        diags.push_back(d);
+  const std::optional<runtime::CellRunSpec> spec = launch::prepareCellRun(programs, o.run, diags);
+  launch::printDiagnostics(err, diags, sourceOf, request.maxErrors, {});
+  if (!spec) {
+    if (o.format == "json")
+      out << Json{{"status", "error"}, {"robots", Json::array()}, {"diagnostics", diagnosticsJson(diags)}}.dump(
+                 -1, ' ', false, nlohmann::json::error_handler_t::replace)
+          << '\n';
+    return kExitBadInput;
+  }
+
+  runtime::CellRun cell(*spec);
+  std::vector<std::unique_ptr<LabelledTrace>> traces;
+  if (!o.trace.empty())
+    for (std::size_t p = 0; p < cell.size(); ++p) {
+      traces.push_back(std::make_unique<LabelledTrace>(
+          out, o.trace == "json" ? runtime::TraceFormat::Json : runtime::TraceFormat::Text, cell.robot(p), cell.label(p)));
+      cell.observe(p, *traces.back());
+    }
+  const vm::RunOutcome outcome = cell.runToEnd();
+  for (auto& t : traces) t->finish();
+  const std::vector<diag::Diagnostic> said = cellDiagnostics(cell, outcome, spec->collisions);
+  printRunWarnings(err, said, programs.loaded.front());
+  diags.insert(diags.end(), said.begin(), said.end());
+
+  const bool ok = outcome.ok() && !diag::hasErrors(diags);
+  if (o.format == "json") {
+    Json j;
+    j["status"] = ok ? vm::stopReasonName(vm::StopReason::End) : "error";
+    j["time"] = static_cast<double>(cell.clock()) / 1e6;
+    Json robots = Json::array();
+    for (std::size_t p = 0; p < cell.size(); ++p) robots.push_back(robotJson(cell, p, programs.files[p]));
+    j["robots"] = robots;
+    addCellJson(j, cell.robot(0));
+    j["diagnostics"] = diagnosticsJson(diags);
+    out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+  } else {
+    out << fmt::format("run of cell {}: {}\n", base::safeText(cell.cell().name),
+                       outcome.ok() ? vm::stopReasonName(vm::StopReason::End) : vm::stopReasonName(outcome.reason));
+    out << fmt::format("  simulated time  {} s\n", base::formatSeconds(cell.clock()));
+    for (std::size_t p = 0; p < cell.size(); ++p) printRobotText(out, cell, p);
+    std::ostringstream lines;
+    printCellLines(lines, cell.robot(0));
+    if (!lines.str().empty()) out << "cell:\n" << lines.str();
+  }
+  return ok ? kExitOk : kExitRunFailed;
+}
+
+}  // namespace rs::cli

@@ -1,0 +1,21 @@
+// `robotsim run --cell CELL [LABEL=FILE ...]`, and `robotsim run PROG
+// --cell CELL` on a cell where other robots have PROGRAMs too: every robot
+// with a program runs it on the cell's one clock (runtime/run/cell_run.h).
+// The summary has a section per robot and the cell's lines once; the JSON
+// summary a `robots` list; the trace prefixes each line with the robot's
+// label (text) or gives it as a `robot` field (JSON).
+#pragma once
+
+#include <optional>
+#include <ostream>
+
+#include "tools/cli/lib/run_command.h"
+
+namespace rs::cli {
+
+/// The cell run `o` asks for, and its exit code; nullopt when `o` is a run
+/// of one robot (a program file, and no other robot of the cell has a
+/// program), which runOrCheck does as always.
+std::optional<int> runCellIfSeveral(const RunCommandOptions& o, std::ostream& out, std::ostream& err);
+
+}  // namespace rs::cli
