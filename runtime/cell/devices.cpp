@@ -134,6 +134,7 @@ class CellDevices::Wire final : public CellProcess {
     cause.kind = InputCause::Kind::Wire;
     cause.input = wire_.input, cause.on = next_, cause.line = wire_.pos.line;
     cause.source = signalText(wire_.source);
+    cause.robot = wire_.robot;
     io_.setInput(wire_.input, next_, cause);
     return true;
   }

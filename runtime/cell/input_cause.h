@@ -20,6 +20,9 @@ struct InputCause {
   std::uint32_t line = 0;
   /// Wire: what drives it ("sensor eye", "OUT 2").
   std::string source;
+  /// Wire: the label of the robot whose input it drives, as the WIRE line
+  /// wrote it (`right.IN 2`; empty: `IN 2`).
+  std::string robot = {};
   bool operator==(const InputCause&) const = default;
 };
 

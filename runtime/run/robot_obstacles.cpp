@@ -49,7 +49,7 @@ void RobotObstacles::machine(std::size_t r, const SimMachine* machine) {
 }
 
 void RobotObstacles::pose(vm::Micros at, std::span<Eigen::Isometry3d> poses) {
-  std::size_t next = first_;
+  std::size_t next = 0;
   for (auto& o : others_) {
     if (o->machine)
       for (std::size_t m = 0; m < o->motors.size() && m < o->machine->motors().size(); ++m)

@@ -34,7 +34,8 @@ class RobotObstacles {
   /// The machine of robot `r` (null: it stands at home); it must outlive this.
   void machine(std::size_t r, const SimMachine* machine);
   /// Every other robot's parts' poses with its motors at time `at` of its
-  /// move under way (SimMachine::positionAt), into poses[firstPart()...].
+  /// move under way (SimMachine::positionAt), into `poses`: one per part,
+  /// in view()'s order from firstPart() on.
   void pose(vm::Micros at, std::span<Eigen::Isometry3d> poses);
 
  private:

@@ -253,7 +253,8 @@ bool SimMachine::setInputBy(int input, bool on, const InputCause& cause) {
 // the clock still: the stop names the wires that did it at this instant.
 void SimMachine::noteWire(const InputCause& cause) {
   if (wiresAt_ != now()) instantWires_.clear(), wiresAt_ = now();
-  std::string wire = fmt::format("{} TO IN {} (line {})", cause.source, cause.input, cause.line);
+  std::string wire = fmt::format("{} TO {}{}IN {} (line {})", cause.source, cause.robot, cause.robot.empty() ? "" : ".",
+                                 cause.input, cause.line);
   if (instantWires_.size() < kMaxStillWires &&
       std::find(instantWires_.begin(), instantWires_.end(), wire) == instantWires_.end())
     instantWires_.push_back(std::move(wire));

@@ -6,6 +6,8 @@
 // right's output, ends at t1 + t2 + t1.
 #include <catch2/catch.hpp>
 
+#include <map>
+#include <sstream>
 #include <string>
 
 #include "tests/cli/cli_support.h"
@@ -203,4 +205,72 @@ TEST_CASE("cell run: every robot is an obstacle to the other", "[cell-run][robot
   CHECK(other.code == 1);
   CHECK(other.err.find("r.rsp:1:9: error: runtime error: collision at ") != std::string::npos);
   CHECK(other.err.find("of robot 'right' hits ") != std::string::npos);
+}
+
+// examples/two_robots/handover: the packer's DROP point is (-300, 819, 40),
+// 1 below the top of the 40-unit block it carries, so the block comes to
+// rest with its centre at (-300, 800, 40) on the pallet (whose top is at
+// 780); the feeder signals once it is parked; `check --strict` passes with
+// the two running together (the packer alone would wait for ever).
+TEST_CASE("cell run: the hand-over example takes the block to the packer's corner", "[cell-run][robots][examples]") {
+  const std::string cell = std::string(ROBOTSIM_SOURCE_DIR) + "/examples/two_robots/handover.rsd";
+  const nlohmann::json j = runJson({"run", "--cell", cell, "--format=json"});
+  CHECK(j.at("status") == "finished");
+  bool found = false;
+  for (const auto& o : j.at("objects"))
+    if (o.at("name") == "block") {
+      found = true;
+      CHECK(o.at("centre").at(0).get<double>() == Approx(-300).margin(0.1));
+      CHECK(o.at("centre").at(1).get<double>() == Approx(800).margin(0.1));
+      CHECK(o.at("centre").at(2).get<double>() == Approx(40).margin(0.1));
+      CHECK(o.at("held") == false);
+    }
+  CHECK(found);
+  CHECK(timeOf(j, "packer") > timeOf(j, "feeder"));
+  for (const auto& r : j.at("robots"))
+    CHECK(r.at(r.at("name") == "feeder" ? "outputs" : "inputs").at(0) == true);
+  const auto check = rs::testing::runCli({"check", "--cell", cell, "--strict"});
+  INFO(check.err);
+  CHECK(check.code == 0);
+  CHECK(check.out.find("robot packer: ") != std::string::npos);
+  CHECK(check.out.find("packer.rsp: ok (10 instructions executed") != std::string::npos);
+}
+
+// The other robot is posed where its motors are, not at home: left first
+// turns its waist (motor F, 0.1 degree a count) a quarter turn away, then
+// lets right reach into the space its arm had at home.
+TEST_CASE("cell run: a robot that moved out of the way is no obstacle there", "[cell-run][robots][collision]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd",
+            "WORKCELL face\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n  ROBOT rhino-xr4 AT 600 750 0 ROTATE Y "
+            "180 AS right PROGRAM r.rsp\n  WIRE left.OUT 1 TO right.IN 1\nEND\n");
+  dir.write("l.rsp", "        MOVE 900 0 0 0 0 0\n        OUTSIG 1 ON\n        END\n");
+  dir.write("r.rsp", "        WAITFOR 1 ON\n        MOVE 0 600 0 0 0 0\n        END\n");
+  const auto r = rs::testing::runCli({"run", "--cell", dir.file("c.rsd")});
+  INFO(r.err);
+  CHECK(r.code == 0);
+  // Without waiting for it, right reaches in while left is still there.
+  dir.write("r.rsp", "        MOVE 0 600 0 0 0 0\n        END\n");
+  const auto early = rs::testing::runCli({"run", "--cell", dir.file("c.rsd")});
+  CHECK(early.code == 1);
+  CHECK(early.err.find("of robot 'right' hits ") != std::string::npos);
+}
+
+TEST_CASE("cell run: the JSON trace names each line's robot", "[cell-run][robots]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", cellText(false));
+  dir.write("left.rsp", kLeft);
+  dir.write("right.rsp", kRight);
+  const auto r = rs::testing::runCli({"run", "--cell", dir.file("c.rsd"), "--trace=json"});
+  REQUIRE(r.code == 0);
+  std::istringstream lines(r.out);
+  std::string line;
+  std::map<std::string, int> steps;
+  while (std::getline(lines, line)) {
+    if (!line.starts_with("{\"robot\"")) continue;
+    const auto j = nlohmann::json::parse(line);
+    if (j.contains("instr")) ++steps[j.at("robot").get<std::string>()];
+  }
+  CHECK(steps["left"] == 5);   // left.rsp's five instructions
+  CHECK(steps["right"] == 4);  // right.rsp's four
 }

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "base/text.h"
+#include "tools/cli/lib/cell_run_command.h"
 #include "tools/cli/lib/exit_codes.h"
 
 namespace rs::cli {
@@ -48,6 +49,8 @@ std::optional<std::vector<CellProgram>> programsOf(const launch::ProgramRequest&
 }  // namespace
 
 int checkCellPrograms(const RunCommandOptions& o, std::ostream& out, std::ostream& err) {
+  // Every program compiles: they are checked running together, on one clock.
+  if (const std::optional<int> code = runCellIfSeveral(o, true, out, err)) return *code;
   const auto programs = programsOf(o.program, err);
   if (!programs) return kExitBadInput;
   const bool json = o.format == "json";

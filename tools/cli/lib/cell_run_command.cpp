@@ -141,9 +141,47 @@ std::vector<diag::Diagnostic> cellDiagnostics(const runtime::CellRun& cell, cons
   return out;
 }
 
+void printErrorJson(std::ostream& out, std::span<const diag::Diagnostic> diags) {
+  out << Json{{"status", "error"}, {"robots", Json::array()}, {"diagnostics", diagnosticsJson(diags)}}.dump(
+             -1, ' ', false, nlohmann::json::error_handler_t::replace)
+      << '\n';
+}
+
+void printSummary(std::ostream& out, const runtime::CellRun& cell, const vm::RunOutcome& outcome,
+                  const launch::CellPrograms& programs, std::span<const diag::Diagnostic> diags, bool json,
+                  bool checkOk) {
+  const bool ok = outcome.ok() && !diag::hasErrors(diags);
+  if (json) {
+    Json j;
+    j["status"] = ok ? vm::stopReasonName(vm::StopReason::End) : "error";
+    j["time"] = static_cast<double>(cell.clock()) / 1e6;
+    Json robots = Json::array();
+    for (std::size_t p = 0; p < cell.size(); ++p) robots.push_back(robotJson(cell, p, programs.files[p]));
+    j["robots"] = robots;
+    addCellJson(j, cell.robot(0));
+    j["diagnostics"] = diagnosticsJson(diags);
+    out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+    return;
+  }
+  if (checkOk) {  // check: one line per robot, as a check of one program says
+    for (std::size_t p = 0; p < cell.size(); ++p)
+      out << fmt::format("robot {}: {}: ok ({} instructions executed, {} s simulated)\n",
+                         base::safeText(cell.label(p)), base::safeText(cell.robot(p).spec().image->sourceName),
+                         cell.robot(p).interpreter().steps(), base::formatSeconds(cell.endTime(p)));
+    return;
+  }
+  out << fmt::format("run of cell {}: {}\n", base::safeText(cell.cell().name),
+                     outcome.ok() ? vm::stopReasonName(vm::StopReason::End) : vm::stopReasonName(outcome.reason));
+  out << fmt::format("  simulated time  {} s\n", base::formatSeconds(cell.clock()));
+  for (std::size_t p = 0; p < cell.size(); ++p) printRobotText(out, cell, p);
+  std::ostringstream lines;
+  printCellLines(lines, cell.robot(0));
+  if (!lines.str().empty()) out << "cell:\n" << lines.str();
+}
+
 }  // namespace
 
-std::optional<int> runCellIfSeveral(const RunCommandOptions& o, std::ostream& out, std::ostream& err) {
+std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err) {
   launch::ProgramRequest request = o.program;
   std::vector<std::string> assignments = o.programs;
   std::error_code ec;
@@ -165,10 +203,7 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, std::ostream& ou
     std::vector<diag::Diagnostic> all = programs.cellLoad.diagnostics;
     for (const launch::LoadedProgram& l : programs.loaded) all.insert(all.end(), l.diagnostics.begin(), l.diagnostics.end());
     launch::printDiagnostics(err, all, sourceOf, request.maxErrors, {});
-    if (o.format == "json")
-      out << Json{{"status", "error"}, {"robots", Json::array()}, {"diagnostics", diagnosticsJson(all)}}.dump(
-                 -1, ' ', false, nlohmann::json::error_handler_t::replace)
-          << '\n';
+    if (o.format == "json") printErrorJson(out, all);
     return kExitBadInput;
   }
   if (programs.programs.empty() && !request.file.empty()) return std::nullopt;
@@ -177,7 +212,7 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, std::ostream& ou
     if (!request.file.empty()) return std::nullopt;
     RunCommandOptions one = o;
     one.program.file = programs.files[0], one.program.robot = programs.labels[0], one.programs.clear();
-    return runOrCheck(one, false, out, err);
+    return runOrCheck(one, check, out, err);
   }
   if (o.profile || o.serial.active()) {
     err << fmt::format("{}: error: a run of several robots does not take {} yet\n  hint: run one robot's program "
@@ -186,6 +221,8 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, std::ostream& ou
     return kExitBadInput;
   }
   launch::compileAssignedPrograms(request, programs);
+  // check: a program that does not compile is checked alone, each in its file.
+  if (check && !programs.ok()) return std::nullopt;
   // Each program's load read the cell again: its warnings are said once.
   std::vector<diag::Diagnostic> diags = programs.cellLoad.diagnostics;
   for (const launch::LoadedProgram& l : programs.loaded)
@@ -194,13 +231,14 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, std::ostream& ou
             return e.file == d.file && e.pos == d.pos && e.message == d.message;
           }))
         diags.push_back(d);
-  const std::optional<runtime::CellRunSpec> spec = launch::prepareCellRun(programs, o.run, diags);
+  // --strict: a compile warning fails the check before anything runs.
+  const bool strict = check && o.strict;
+  const bool compileFailed = strict && promoteWarnings(diags);
+  const std::optional<runtime::CellRunSpec> spec =
+      compileFailed ? std::nullopt : launch::prepareCellRun(programs, o.run, diags);
   launch::printDiagnostics(err, diags, sourceOf, request.maxErrors, {});
   if (!spec) {
-    if (o.format == "json")
-      out << Json{{"status", "error"}, {"robots", Json::array()}, {"diagnostics", diagnosticsJson(diags)}}.dump(
-                 -1, ' ', false, nlohmann::json::error_handler_t::replace)
-          << '\n';
+    if (o.format == "json") printErrorJson(out, diags);
     return kExitBadInput;
   }
 
@@ -214,31 +252,14 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, std::ostream& ou
     }
   const vm::RunOutcome outcome = cell.runToEnd();
   for (auto& t : traces) t->finish();
-  const std::vector<diag::Diagnostic> said = cellDiagnostics(cell, outcome, spec->collisions);
+  std::vector<diag::Diagnostic> said = cellDiagnostics(cell, outcome, spec->collisions);
+  const bool failedStrict = strict && promoteWarnings(said);
   printRunWarnings(err, said, programs.loaded.front());
   diags.insert(diags.end(), said.begin(), said.end());
 
   const bool ok = outcome.ok() && !diag::hasErrors(diags);
-  if (o.format == "json") {
-    Json j;
-    j["status"] = ok ? vm::stopReasonName(vm::StopReason::End) : "error";
-    j["time"] = static_cast<double>(cell.clock()) / 1e6;
-    Json robots = Json::array();
-    for (std::size_t p = 0; p < cell.size(); ++p) robots.push_back(robotJson(cell, p, programs.files[p]));
-    j["robots"] = robots;
-    addCellJson(j, cell.robot(0));
-    j["diagnostics"] = diagnosticsJson(diags);
-    out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
-  } else {
-    out << fmt::format("run of cell {}: {}\n", base::safeText(cell.cell().name),
-                       outcome.ok() ? vm::stopReasonName(vm::StopReason::End) : vm::stopReasonName(outcome.reason));
-    out << fmt::format("  simulated time  {} s\n", base::formatSeconds(cell.clock()));
-    for (std::size_t p = 0; p < cell.size(); ++p) printRobotText(out, cell, p);
-    std::ostringstream lines;
-    printCellLines(lines, cell.robot(0));
-    if (!lines.str().empty()) out << "cell:\n" << lines.str();
-  }
-  return ok ? kExitOk : kExitRunFailed;
+  printSummary(out, cell, outcome, programs, diags, o.format == "json", check && ok);
+  return ok && !failedStrict ? kExitOk : kExitRunFailed;
 }
 
 }  // namespace rs::cli

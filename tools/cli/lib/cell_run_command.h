@@ -16,6 +16,9 @@ namespace rs::cli {
 /// The cell run `o` asks for, and its exit code; nullopt when `o` is a run
 /// of one robot (a program file, and no other robot of the cell has a
 /// program), which runOrCheck does as always.
-std::optional<int> runCellIfSeveral(const RunCommandOptions& o, std::ostream& out, std::ostream& err);
+/// With `check`, the same as `check` does it: one line per robot when all
+/// is well, --strict's warnings failing it, and nullopt when a program does
+/// not compile (each is then checked alone, in its own file).
+std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err);
 
 }  // namespace rs::cli

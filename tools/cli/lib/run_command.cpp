@@ -35,8 +35,7 @@ void promoteCompileWarnings(launch::LoadedProgram& program) {
 }  // namespace
 
 int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err) {
-  if (!check)
-    if (const std::optional<int> code = runCellIfSeveral(o, out, err)) return *code;
+  if (const std::optional<int> code = runCellIfSeveral(o, check, out, err)) return *code;
   const bool json = o.format == "json";
   if (o.profile && o.serial.active()) {
     err << "--profile: error: a profile is computed from the simulated run's log: leave out --device\n";
