@@ -119,5 +119,7 @@ nlohmann::json benchMoves(const Options& options);
 /// run's input changes (the same moves at the same times). Target: at most
 /// 2 times the stimuli run's CPU time; simulated seconds per CPU second.
 nlohmann::json benchCell(const Options& options);
+/// Two robots on one clock that never interact against each alone (issue 36).
+nlohmann::json benchRobots(const Options& options);
 
 }  // namespace rs::bench
