@@ -10,6 +10,10 @@ namespace {
 // block's top face grips it); the slack absorbs rounding in the kinematics.
 constexpr double kInsideSlack = 1e-6;
 
+// How far a part another hand carries is moved aside while a let-go
+// settles: out of every footprint (settle.h judges footprints in x and z).
+constexpr double kParked = 1e12;
+
 }  // namespace
 
 Grasping::Grasping(const Workcell& cell) : cell_(&cell) {
@@ -18,6 +22,7 @@ Grasping::Grasping(const Workcell& cell) : cell_(&cell) {
     boxes_.push_back(boundsOf(o.shape));
   }
   letGo_.assign(resting_.size(), std::nullopt);
+  carried_ = resting_;
   hands_.resize(cell.robots.size());
   for (std::size_t r = 0; r < cell.robots.size(); ++r) {
     const PlacedRobot& placed = cell.robots[r];
@@ -33,6 +38,18 @@ std::optional<std::size_t> Grasping::holder(std::size_t o) const {
   return std::nullopt;
 }
 
+bool Grasping::shared(std::size_t o) const {
+  int holders = 0;
+  for (const Hand& h : hands_) holders += h.hold.held == o;
+  return holders > 1;
+}
+
+std::optional<std::size_t> Grasping::otherHolder(std::size_t o, std::size_t hand) const {
+  for (std::size_t h = 0; h < hands_.size(); ++h)
+    if (h != hand && hands_[h].hold.held == o) return h;
+  return std::nullopt;
+}
+
 Grasping::State Grasping::state() const {
   State s{{}, resting_, letGo_};
   for (const Hand& h : hands_) s.hands.push_back(h.hold);
@@ -44,12 +61,17 @@ void Grasping::restore(const State& s) {
   resting_ = s.resting, letGo_ = s.letGo;
 }
 
-std::optional<std::size_t> Grasping::smallestAt(const Eigen::Vector3d& point, bool partsOnly) const {
+std::optional<std::size_t> Grasping::smallestAt(const Eigen::Vector3d& point, bool partsOnly,
+                                                std::optional<std::size_t> takingHand) const {
   std::optional<std::size_t> best;
   double bestVolume = 0;
   for (std::size_t o = 0; o < boxes_.size(); ++o) {
-    if (boxes_[o].isEmpty() || (partsOnly && (cell_->objects[o].kind != ObjectKind::Part || holder(o)))) continue;
-    const Eigen::Vector3d local = resting_[o].inverse(Eigen::Isometry) * point;
+    if (boxes_[o].isEmpty() || (partsOnly && cell_->objects[o].kind != ObjectKind::Part)) continue;
+    const std::optional<std::size_t> by = partsOnly ? holder(o) : std::nullopt;
+    // A part another hand carries (and only that one) may be handed over.
+    const bool handOver = by && takingHand && *by != *takingHand && !shared(o);
+    if (by && !handOver) continue;
+    const Eigen::Vector3d local = (handOver ? carried_[o] : resting_[o]).inverse(Eigen::Isometry) * point;
     const Eigen::AlignedBox3d slack(boxes_[o].min().array() - kInsideSlack, boxes_[o].max().array() + kInsideSlack);
     if (!slack.contains(local)) continue;
     const double volume = boxes_[o].volume();
@@ -80,10 +102,15 @@ std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, 
   const bool closing = to > from;  // RANGE max is closed (min <= max always)
   if (!closing) {
     if (!held) return std::nullopt;
-    // Let go as the opening begins, and settle from where it is then.
     const std::size_t o = *held;
+    if (const std::optional<std::size_t> other = otherHolder(o, hand)) {
+      // A hand-over: the other hand has it, where it is (it stayed put).
+      held.reset();
+      return GraspChange{o, false, Settled{resting_[o], Settled::On::Nothing, 0, 0.0}, other};
+    }
+    // Let go as the opening begins, and settle from where it is then.
     const Eigen::Isometry3d F_world_E = h.tool->frame(before);
-    const Settled settled = settle(*cell_, resting_, o, F_world_E * offset);
+    const Settled settled = settleFrom(o, F_world_E * offset);
     resting_[o] = settled.pose;
     // Settled by no more than the rest tolerance, a take at this very frame
     // holds it by the offset it had (it goes back up or down by that
@@ -97,19 +124,39 @@ std::optional<GraspChange> Grasping::step(std::span<const std::int32_t> before, 
   }
   if (held || !mayTake) return std::nullopt;  // closing further on what it holds
   const Eigen::Isometry3d F_world_E = h.tool->frame(after);
-  const std::optional<std::size_t> o = partAt(F_world_E.translation());
+  const std::optional<std::size_t> o = partAt(F_world_E.translation(), hand);
   if (!o) return std::nullopt;
+  const std::optional<std::size_t> giver = otherHolder(*o, hand);
+  if (giver) {
+    // Taken from another hand: it stays where that hand holds it now.
+    resting_[*o] = carried_[*o];
+    letGo_[*o].reset();
+  }
   held = o;
   const std::optional<LetGo>& letGo = letGo_[*o];
   offset = letGo && letGo->frame.matrix() == F_world_E.matrix() ? letGo->offset
                                                                   : F_world_E.inverse(Eigen::Isometry) * resting_[*o];
-  return GraspChange{*o, true, {}};
+  return GraspChange{*o, true, {}, giver};
 }
 
 Settled Grasping::settleHeld(std::span<const std::int32_t> encoders, std::size_t hand) {
   if (hand >= hands_.size() || !hands_[hand].hold.held || !hands_[hand].tool) return {};
   Hand& h = hands_[hand];
-  return settle(*cell_, resting_, *h.hold.held, h.tool->frame(encoders) * h.hold.offset);
+  const std::size_t o = *h.hold.held;
+  if (otherHolder(o, hand)) return Settled{resting_[o], Settled::On::Nothing, 0, 0.0};  // the other keeps it
+  return settleFrom(o, h.tool->frame(encoders) * h.hold.offset);
+}
+
+Settled Grasping::settleFrom(std::size_t o, const Eigen::Isometry3d& pose) const {
+  // Onto anything but a part a hand carries: where that one last rested is
+  // no support, so it is moved out of every footprint for the search.
+  bool carried = false;
+  for (std::size_t p = 0; p < resting_.size() && !carried; ++p) carried = p != o && holder(p);
+  if (!carried) return settle(*cell_, resting_, o, pose);
+  std::vector<Eigen::Isometry3d> poses = resting_;
+  for (std::size_t p = 0; p < poses.size(); ++p)
+    if (p != o && holder(p)) poses[p].pretranslate(Eigen::Vector3d(kParked, 0, 0));
+  return settle(*cell_, poses, o, pose);
 }
 
 void Grasping::reset() {
@@ -123,7 +170,7 @@ Eigen::Isometry3d Grasping::toolFrame(std::span<const std::int32_t> encoders, st
 }
 
 Eigen::Isometry3d Grasping::objectPose(std::size_t o, std::span<const std::int32_t> encoders, std::size_t hand) {
-  if (hasGripper(hand) && hands_[hand].hold.held == o) return hands_[hand].tool->frame(encoders) * hands_[hand].hold.offset;
+  if (hasGripper(hand) && hands_[hand].hold.held == o && !shared(o)) return hands_[hand].tool->frame(encoders) * hands_[hand].hold.offset;
   return resting_[o];
 }
 

@@ -21,6 +21,13 @@
 // A cell of several robots has one hand per robot (its index in
 // Workcell::robots); where the parts rest is shared. Every call names the
 // hand (0, the first robot, when it does not: a cell of one robot).
+//
+// Hand-over: a closing gripper whose tool centre point lies inside a part
+// another hand carries takes it too (where that hand carries it now: the
+// caller says where, carriedAt). While two hands hold it, it does not
+// move; when either opens, the other has it, by the grip it closed with.
+// A let-go never settles a part onto one another hand carries (that one
+// is somewhere else by the time it lands).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -40,6 +47,9 @@ struct GraspChange {
   std::size_t object = 0;  ///< index in Workcell::objects
   bool held = false;       ///< true: taken; false: let go
   Settled settled;         ///< a let-go: where it came to rest, on what, how far it dropped
+  /// A hand-over: the hand it was taken from (a take), or the hand that
+  /// has it now (a let-go; then it did not settle).
+  std::optional<std::size_t> other = std::nullopt;
 };
 
 class Grasping {
@@ -61,8 +71,14 @@ class Grasping {
   std::optional<std::size_t> held(std::size_t hand = 0) const {
     return hand < hands_.size() ? hands_[hand].hold.held : std::nullopt;
   }
-  /// The hand that holds object `o`, if any.
+  /// The hand that holds object `o`, if any (the first, while two do).
   std::optional<std::size_t> holder(std::size_t o) const;
+  /// Whether two hands hold object `o` (a hand-over under way: it stays put).
+  bool shared(std::size_t o) const;
+  /// Object `o`, held by a hand, is at `pose` now (F_world_design): where a
+  /// closing gripper of another hand finds it. The caller knows where each
+  /// robot's motors are; this does not.
+  void carriedAt(std::size_t o, const Eigen::Isometry3d& pose) { carried_[o] = pose; }
   /// F_E_object of the held object (meaningful while something is held).
   const Eigen::Isometry3d& heldOffset(std::size_t hand = 0) const { return hands_.at(hand).hold.offset; }
   /// Object `o`'s placement (F_world_design of its drawing) with hand
@@ -85,8 +101,12 @@ class Grasping {
   std::optional<std::size_t> objectAt(const Eigen::Vector3d& point) const { return smallestAt(point, false); }
   /// The part a closing gripper would take with its tool centre point at
   /// `point`: the smallest part's box that holds it. Fixtures are never
-  /// taken, nor a part another hand holds.
-  std::optional<std::size_t> partAt(const Eigen::Vector3d& point) const { return smallestAt(point, true); }
+  /// taken. With `hand`, a part one other hand carries counts too, where
+  /// carriedAt last put it (a hand-over); without, held parts do not.
+  std::optional<std::size_t> partAt(const Eigen::Vector3d& point,
+                                    std::optional<std::size_t> hand = std::nullopt) const {
+    return smallestAt(point, true, hand);
+  }
   /// Where the held part would settle if it were let go with the robot's
   /// motors at `encoders` (meaningful while one is held).
   Settled settleHeld(std::span<const std::int32_t> encoders, std::size_t hand = 0);
@@ -148,7 +168,12 @@ class Grasping {
     std::size_t gripperMotor = 0;
     Hold hold;
   };
-  std::optional<std::size_t> smallestAt(const Eigen::Vector3d& point, bool partsOnly) const;
+  std::optional<std::size_t> smallestAt(const Eigen::Vector3d& point, bool partsOnly,
+                                        std::optional<std::size_t> takingHand = std::nullopt) const;
+  /// Where part `o`, let go at `pose`, comes to rest.
+  Settled settleFrom(std::size_t o, const Eigen::Isometry3d& pose) const;
+  /// A hand other than `hand` that holds object `o`.
+  std::optional<std::size_t> otherHolder(std::size_t o, std::size_t hand) const;
   /// The hand, when it has a gripper whose motor both positions name.
   const Hand* gripping(std::size_t hand, std::span<const std::int32_t> before,
                        std::span<const std::int32_t> after) const {
@@ -161,6 +186,7 @@ class Grasping {
   std::vector<Hand> hands_;  // per robot
   std::vector<Eigen::Isometry3d> resting_;
   std::vector<std::optional<LetGo>> letGo_;  // per object, as State::letGo
+  std::vector<Eigen::Isometry3d> carried_;   // per object: where a hand carries it (carriedAt); scratch
   std::vector<Eigen::AlignedBox3d> boxes_;  // in each object's design coordinates
 };
 

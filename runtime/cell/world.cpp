@@ -18,6 +18,7 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
   if (hand >= step_.size()) return;
   const bool closing = grasping_.closes(before, after, hand);
   const bool heldBefore = grasping_.held(hand).has_value();
+  if (closing && !heldBefore) noteCarried(hand);
   const std::optional<workcell::GraspChange> change = grasping_.step(before, after, true, hand);
   if (closing) ++state_.closes;
   if (closing && !heldBefore && !change && !cell_.objects.empty()) {
@@ -42,8 +43,10 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
   state_.last = change->held ? GraspEvent{end, o, true, grasping_.heldOffset(hand)}
                              : GraspEvent{start, o, false, grasping_.restingPose(o), s.on, s.support, s.drop};
   state_.last.hand = hand;
+  state_.last.other = change->other;
   if (change->held) state_.heldSince[hand] = end;
-  state_.rests[o] = change->held ? std::nullopt : std::optional<GraspEvent>(state_.last);
+  // A part handed over is still held: it rests nowhere yet.
+  state_.rests[o] = change->held || change->other ? std::nullopt : std::optional<GraspEvent>(state_.last);
   if (!change->held && s.drop > kLongDrop) ++state_.longDrops;
   ++state_.events;
   step_[hand].grasped = true;
@@ -68,7 +71,7 @@ void World::reset(vm::Micros at, std::size_t hand) {
 Eigen::Isometry3d World::objectPose(std::size_t o, std::span<const std::int32_t> encoders, vm::Micros at,
                                     std::size_t hand) const {
   const std::optional<std::size_t> by = grasping_.holder(o);
-  if (!by) return grasping_.restingPose(o);
+  if (!by || grasping_.shared(o)) return grasping_.restingPose(o);
   if (at < heldSince(*by)) return grasping_.restingPose(o);
   if (*by == hand) return grasping_.objectPose(o, encoders, hand);
   const vm::Machine* other = handMachines_[*by];
@@ -94,16 +97,29 @@ workcell::CollisionQuery World::collisionQuery(std::span<const std::int32_t> bef
   if (hand < grasping_.handCount()) q.heldOffset = grasping_.heldOffset(hand);
   q.objectPoses = poses;
   if (!grasping_.hasGripper(hand)) return q;
-  if (q.held && grasping_.opens(before, after, hand)) {
+  if (q.held && grasping_.shared(*q.held)) {
+    // Two hands hold it: it stays put, with these fingers round it.
+    q.exempt = q.held;
+    q.held.reset();
+  } else if (q.held && grasping_.opens(before, after, hand)) {
     // Let go as the move starts and settled at once: the fingers open round it.
     poses[*q.held] = grasping_.settleHeld(before, hand).pose;
     q.exempt = q.held;
     q.held.reset();
   } else if (!q.held && grasping_.closes(before, after, hand)) {
-    // The fingers close round the part they take at the end.
-    q.exempt = grasping_.partAt(grasping_.toolFrame(after, hand).translation());
+    // The fingers close round the part they take at the end (perhaps from
+    // another hand).
+    noteCarried(hand);
+    q.exempt = grasping_.partAt(grasping_.toolFrame(after, hand).translation(), hand);
   }
   return q;
+}
+
+void World::noteCarried(std::size_t hand) const {
+  for (std::size_t h = 0; h < grasping_.handCount(); ++h) {
+    const std::optional<std::size_t> o = grasping_.held(h);
+    if (h != hand && o) grasping_.carriedAt(*o, objectPose(*o, {}, INT64_MAX, hand));
+  }
 }
 
 World::State World::state() const {

@@ -46,11 +46,14 @@ struct GraspEvent {
   /// 0; the run stamps them (Rig::numbered), as the world knows no feeder.
   std::uint32_t number = 0, supportNumber = 0;
   std::size_t hand = 0;  ///< the robot whose gripper took or let go
+  /// A hand-over (model/workcell/grasp.h): the robot it was taken from (a
+  /// take), or the robot that has it now (a let-go, which did not settle).
+  std::optional<std::size_t> other = std::nullopt;
   /// A let-go that settled: it went down (or up, out of its support) to rest on something.
   bool settled() const { return !held && on != workcell::Settled::On::Nothing; }
   bool operator==(const GraspEvent& o) const {
     return at == o.at && object == o.object && held == o.held && pose.matrix() == o.pose.matrix() && on == o.on &&
-           support == o.support && drop == o.drop;
+           support == o.support && drop == o.drop && hand == o.hand && other == o.other;
   }
 };
 
@@ -115,8 +118,10 @@ class World {
 
   const workcell::Workcell& cell() const { return cell_; }
   std::optional<std::size_t> held(std::size_t hand = 0) const { return grasping_.held(hand); }
-  /// The hand that holds object `o`, if any.
+  /// The hand that holds object `o`, if any (the first, while two do).
   std::optional<std::size_t> holder(std::size_t o) const { return grasping_.holder(o); }
+  /// Whether two hands hold object `o`: a hand-over under way, it stays put.
+  bool shared(std::size_t o) const { return grasping_.shared(o); }
   /// When the object hand `hand` holds now was taken (the end of its closing move).
   vm::Micros heldSince(std::size_t hand = 0) const {
     return hand < state_.heldSince.size() ? state_.heldSince[hand] : 0;
@@ -193,6 +198,10 @@ class World {
   void restore(const State& state);
 
  private:
+  /// Tells the grasp where the parts hands other than `hand` carry are
+  /// now, for a closing gripper of `hand` that may take one over.
+  void noteCarried(std::size_t hand) const;
+
   const workcell::Workcell& cell_;
   // Scratch workspaces of the kinematics: asking where something is does
   // not change the world.

@@ -51,7 +51,12 @@ std::string graspText(const runtime::GraspEvent& event, const workcell::Workcell
   const std::string what = fmt::format("{} {} (object {})", event.held ? "takes" : "lets go of",
                                        base::safeText(cell.objects[event.object].shape.name),
                                        number ? number : event.object + 1);
-  // A let-go by an opening move settles (RESET puts it back: no settling).
+  // A hand-over names the other robot; a let-go by an opening move settles
+  // (RESET puts it back: no settling).
+  if (event.other && *event.other < cell.robots.size()) {
+    const std::string other = base::safeText(cell.robots[*event.other].labelOf());
+    return event.held ? fmt::format("{} from robot '{}'", what, other) : fmt::format("{}: robot '{}' has it", what, other);
+  }
   if (event.held || !event.settled()) return what;
   return what + ": it " + runtime::settleText(event, cell);  // event numbered by the caller
 }
@@ -240,6 +245,8 @@ void TraceWriter::json(const vm::Interpreter& vm, std::uint32_t index) {
     const workcell::Workcell& cell = run_.rig().world()->cell();
     j["grasp"] = {{"object", run_.rig().objectNumber(g->object)}, {"name", cell.objects[g->object].shape.name},
                   {"held", g->held}};
+    if (g->other && *g->other < cell.robots.size())  // a hand-over: from whom, or to whom
+      j["grasp"][g->held ? "from" : "to"] = cell.robots[*g->other].labelOf();
     if (g->settled()) {
       nlohmann::ordered_json settled;
       settled["on"] = runtime::supportText(run_.rig().numbered(*g), cell);

@@ -6,9 +6,11 @@
 // right's output, ends at t1 + t2 + t1.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "tests/cli/cli_support.h"
 #include <nlohmann/json.hpp>
@@ -273,4 +275,113 @@ TEST_CASE("cell run: the JSON trace names each line's robot", "[cell-run][robots
   }
   CHECK(steps["left"] == 5);   // left.rsp's five instructions
   CHECK(steps["right"] == 4);  // right.rsp's four
+}
+
+// examples/two_robots/relay: a hand-over from gripper to gripper. The
+// taker closes with its tool centre point at (-310, 840, 0), 100 from the
+// bar's centre in x (the bar runs along x from -330 to -90, centre x -210,
+// z 0); it carries the bar rigidly and sets it down straight, so the
+// bar's centre ends 100 from the taker's tool centre point in x-z, and at
+// y 780 + 15 = 795 (resting on the pallet's top, the bar 30 high).
+TEST_CASE("cell run: a part handed from gripper to gripper goes on with the taker", "[cell-run][robots][examples]") {
+  const std::string cell = std::string(ROBOTSIM_SOURCE_DIR) + "/examples/two_robots/relay.rsd";
+  const auto text = rs::testing::runCli({"run", "--cell", cell, "--trace"});
+  INFO(text.err);
+  REQUIRE(text.code == 0);
+  CHECK(text.out.find("takes bar (object 3) from robot 'giver'") != std::string::npos);
+  CHECK(text.out.find("lets go of bar (object 3): robot 'taker' has it") != std::string::npos);
+  // The JSON trace says the same: from whom, to whom.
+  const auto json = rs::testing::runCli({"run", "--cell", cell, "--trace=json"});
+  REQUIRE(json.code == 0);
+  std::istringstream lines(json.out);
+  std::string line;
+  int from = 0, to = 0;
+  while (std::getline(lines, line)) {
+    if (!line.starts_with("{\"robot\"")) continue;
+    const auto j = nlohmann::json::parse(line);
+    if (!j.contains("grasp")) continue;
+    if (j.at("grasp").contains("from")) from += j.at("robot") == "taker" && j.at("grasp").at("from") == "giver";
+    if (j.at("grasp").contains("to")) to += j.at("robot") == "giver" && j.at("grasp").at("to") == "taker";
+  }
+  CHECK(from == 1);
+  CHECK(to == 1);
+  const nlohmann::json j = runJson({"run", "--cell", cell, "--format=json"});
+  CHECK(j.at("status") == "finished");
+  std::vector<double> tcp;
+  for (const auto& r : j.at("robots"))
+    if (r.at("name") == "taker") tcp = r.at("tcp").get<std::vector<double>>();
+  REQUIRE(tcp.size() == 3);
+  bool found = false;
+  for (const auto& o : j.at("objects"))
+    if (o.at("name") == "bar") {
+      found = true;
+      const auto c = o.at("centre").get<std::vector<double>>();
+      CHECK(std::hypot(c[0] - tcp[0], c[2] - tcp[2]) == Approx(100).margin(0.05));
+      CHECK(c[1] == Approx(795).margin(0.01));
+      CHECK(o.at("held") == false);
+    }
+  CHECK(found);
+  const auto check = rs::testing::runCli({"check", "--cell", cell, "--strict"});
+  INFO(check.err);
+  CHECK(check.code == 0);
+}
+
+// While both grippers hold the bar it stays where the giver held it when
+// the taker closed: the giver took it 0.96 below its top (tool centre
+// point at 809.04, the bar's top at 810) and lifted it to 840, so its
+// centre is at 795 + 30.96 = 825.96; the giver then moves down 10 without
+// opening, and the bar does not follow.
+TEST_CASE("cell run: a part two grippers hold stays put", "[cell-run][robots]") {
+  rs::testing::TempDir dir;
+  const std::string examples = std::string(ROBOTSIM_SOURCE_DIR) + "/examples/two_robots/";
+  const std::string cell = rs::testing::readBytes(examples + "relay.rsd");
+  dir.write("relay.rsd", cell);
+  dir.write("giver.rsp",
+            "        MOVEP ABOVE\n        MOVEP PICK\n        MOVEP TAKE\n        MOVEP LIFT\n        OUTSIG 1 ON\n"
+            "        WAITFOR 1 ON\n        MOVEP LOWER\n        END\nPOINTS\n"
+            "ABOVE AT -110 870 0 APPROACH 0 -1 0 NORMAL 0 0 1 GRIP 0\nPICK AT -110 809 0\n"
+            "TAKE AT -110 809 0 GRIP 120\nLIFT AT -110 840 0\nLOWER AT -110 830 0\n");
+  dir.write("taker.rsp",
+            "        WAITFOR 1 ON\n        MOVEP ABOVE\n        MOVEP PICK\n        MOVEP TAKE\n        OUTSIG 1 ON\n"
+            "        END\nPOINTS\nABOVE AT -310 870 0 APPROACH 0 -1 0 NORMAL 0 0 1 GRIP 0\nPICK AT -310 840 0\n"
+            "TAKE AT -310 840 0 GRIP 120\n");
+  const nlohmann::json j = runJson({"run", "--cell", dir.file("relay.rsd"), "--format=json"});
+  CHECK(j.at("status") == "finished");
+  bool found = false;
+  for (const auto& o : j.at("objects"))
+    if (o.at("name") == "bar") {
+      found = true;
+      CHECK(o.at("centre").at(0).get<double>() == Approx(-210).margin(0.05));
+      CHECK(o.at("centre").at(1).get<double>() == Approx(825.96).margin(0.01));
+      CHECK(o.at("held") == true);
+    }
+  CHECK(found);
+}
+
+// A part let go where another robot's part rested before that robot took
+// it away settles on what is really there: the giver carries the bar
+// (top at 810 where it lay) off to its parking place; the taker lets a
+// block go with its tool centre point at 860.04 (the block's bottom 1 +
+// 40 below it, at 821.04), over the bar's old place, and the block falls
+// onto the pallet (top at 780): 41.04, not 11.04 onto where the bar was.
+TEST_CASE("cell run: a part let go does not settle on a part another robot carried away", "[cell-run][robots]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd",
+            "WORKCELL ghost\n  ROBOT rhino-scara AT 0 750 0 AS giver PROGRAM g.rsp\n"
+            "  ROBOT rhino-scara AT -420 750 0 ROTATE Y 90 AS taker PROGRAM t.rsp\n  OBJECT table AT -900 0 250\n"
+            "  OBJECT pallet AT -330 750 80\n  OBJECT bar AT -330 780 15\n  OBJECT block AT -250 780 80\n"
+            "  WIRE giver.OUT 1 TO taker.IN 1\nEND\nOBJECT bar\n  PART\n  BOX 0 240 30 0 30 0\nEND\n");
+  dir.write("g.rsp",
+            "        MOVEP ABOVE\n        MOVEP PICK\n        MOVEP TAKE\n        MOVEP LIFT\n        MOVEP PARK\n"
+            "        OUTSIG 1 ON\n        END\nPOINTS\nABOVE AT -110 870 0 APPROACH 0 -1 0 NORMAL 0 0 1 GRIP 0\n"
+            "PICK AT -110 809 0\nTAKE AT -110 809 0 GRIP 120\nLIFT AT -110 870 0\nPARK AT -100 870 -150\n");
+  dir.write("t.rsp",
+            "        WAITFOR 1 ON\n        MOVEP ABOVE\n        MOVEP PICK\n        MOVEP TAKE\n        MOVEP LIFT\n"
+            "        MOVEP OVER\n        MOVEP DROP\n        END\nPOINTS\nABOVE AT -230 870 60 GRIP 0\n"
+            "PICK AT -230 819 60\nTAKE AT -230 819 60 GRIP 120\nLIFT AT -230 870 60\nOVER AT -210 860 0\n"
+            "DROP AT -210 860 0 GRIP 0\n");
+  const auto r = rs::testing::runCli({"run", "--cell", dir.file("c.rsd"), "--trace"});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("lets go of block (object 4): it settles on pallet (object 2), dropped 41.04") != std::string::npos);
 }
