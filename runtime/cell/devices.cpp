@@ -167,7 +167,6 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, RobotIo& 
 CellDevices::CellDevices(const workcell::Workcell& cell, World& world, std::vector<RobotIo*> robots, Scheduler& clock)
     : cell_(cell), world_(world), robots_(std::move(robots)), clock_(clock) {
   robots_.resize(std::max<std::size_t>(cell.robots.size(), 1), nullptr);
-  io_ = robots_[cell.drivenRobotIndex()];
   const workcell::Devices& d = cell.devices;
   std::size_t slots = 0;
   for (const workcell::Feeder& f : d.feeders)
@@ -211,27 +210,32 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, std::vect
     if (signal(w->wire().source) != w->wire().inverted)
       clock.schedule(clock.now() + w->wire().afterUs, w->id, signal(w->wire().source) ? 1 : 0);
   state_.revision = world.revision();
-  if (!d.sensors.empty() && io_) {
-    sight_ = std::make_unique<RobotSight>(cell, world, io_->motorCount());
-    if (!sight_->matters()) sight_.reset();
+  sights_.resize(robots_.size());
+  state_.moveUntil.assign(robots_.size(), 0);
+  state_.sightWakeAt.assign(robots_.size(), -1);
+  for (std::size_t r = 0; r < robots_.size() && !d.sensors.empty(); ++r) {
+    if (!robots_[r]) continue;
+    sights_[r] = std::make_unique<RobotSight>(cell, world, robots_[r]->motorCount(), r);
+    if (!sights_[r]->matters()) sights_[r].reset();
   }
 }
 
 CellDevices::~CellDevices() = default;
 
-void CellDevices::robotMoves(vm::Micros until) {
-  if (!sight_ || until == state_.moveUntil) return;
-  state_.moveUntil = until;
+void CellDevices::robotMoves(vm::Micros until, std::size_t robot) {
+  if (robot >= sights_.size() || !sights_[robot] || until == state_.moveUntil[robot]) return;
+  state_.moveUntil[robot] = until;
   sync();  // a take or a let-go just before the move: the sensors look again now
-  watchRobot(clock_.now());
+  watchRobot(clock_.now(), robot);
 }
 
-void CellDevices::watchRobot(vm::Micros now) {
-  if (!sight_ || state_.moveUntil <= now) return;
-  const std::optional<vm::Micros> next = sight_->firstChange(
-      now, state_.moveUntil, [this](vm::Micros t, std::span<std::int32_t> out) { io_->motorsAt(t, out); });
-  if (!next || *next == state_.sightWakeAt) return;
-  state_.sightWakeAt = *next;
+void CellDevices::watchRobot(vm::Micros now, std::size_t robot) {
+  if (!sights_[robot] || state_.moveUntil[robot] <= now) return;
+  RobotIo* io = robots_[robot];
+  const std::optional<vm::Micros> next = sights_[robot]->firstChange(
+      now, state_.moveUntil[robot], [io](vm::Micros t, std::span<std::int32_t> out) { io->motorsAt(t, out); });
+  if (!next || *next == state_.sightWakeAt[robot]) return;
+  state_.sightWakeAt[robot] = *next;
   clock_.schedule(*next, id_);
 }
 
@@ -439,7 +443,10 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
     bool sees = false;
     if (sensor.sees != workcell::Sensor::Sees::Robots)
       for (std::size_t o = 0; o < state_.number.size() && !sees; ++o) {
-        if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.holder(o)) continue;
+        // A carried part shows itself through its robot's sight; one two
+        // hands hold stays put where it rests.
+        if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || (world_.holder(o) && !world_.shared(o)))
+          continue;
         const Eigen::AlignedBox3d b = box(o);
         sees = sensor.shape == workcell::Sensor::Shape::Beam ? beamTouches(sensor.a, sensor.b, b)
                                                              : boxesTouch(b, sensor.zone);
@@ -447,12 +454,13 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
     nextSensor_[s] = sees;
   }
   // What the robot and the part it carries show them, where they are now.
-  if (sight_) {
-    motorsNow_.assign(io_->motorCount(), 0);
-    io_->motorsAt(now, motorsNow_);
-    sight_->sees(motorsNow_, robotSees_);
+  for (std::size_t r = 0; r < sights_.size(); ++r) {
+    if (!sights_[r]) continue;
+    motorsNow_.assign(robots_[r]->motorCount(), 0);
+    robots_[r]->motorsAt(now, motorsNow_);
+    sights_[r]->sees(motorsNow_, robotSees_);
     for (std::size_t s = 0; s < d.sensors.size(); ++s) nextSensor_[s] = nextSensor_[s] || robotSees_[s];
-    watchRobot(now);
+    watchRobot(now, r);
   }
   plan(now);
   state_.revision = world_.revision();

@@ -101,10 +101,10 @@ class CellDevices final : public CellProcess {
 
   /// Robot `robot`'s output changed now: the devices that read it act.
   void outputChanged(int output, std::size_t robot = 0);
-  /// The robot moves from now until `until`: a sensor that sees the part
-  /// it carries (or the robot) changes at the exact microsecond the move
-  /// brings it there (robot_sight.h).
-  void robotMoves(vm::Micros until);
+  /// Robot `robot` moves from now until `until`: a sensor that sees the
+  /// part it carries (or the robot) changes at the exact microsecond the
+  /// move brings it there (robot_sight.h).
+  void robotMoves(vm::Micros until, std::size_t robot = 0);
   /// The world may have changed outside the devices (a take, a let-go):
   /// they look again now.
   void sync();
@@ -152,8 +152,8 @@ class CellDevices final : public CellProcess {
     std::vector<double> travel;              // per object: how far it rides (may be infinite)
     std::uint64_t revision = 0;              // the world's, as the devices last left it
     std::uint64_t wakeTag = 0;               // the plan's wake (older ones are stale)
-    vm::Micros moveUntil = 0;                // the robot's move under way ends here
-    vm::Micros sightWakeAt = -1;             // the wake for what the robot shows the sensors next
+    std::vector<vm::Micros> moveUntil;       // per robot: its move under way ends here
+    std::vector<vm::Micros> sightWakeAt;     // per robot: the wake for what it shows the sensors next (-1: none)
     bool operator==(const State&) const = default;
   };
   const State& state() const { return state_; }
@@ -175,13 +175,12 @@ class CellDevices final : public CellProcess {
   bool rides(std::size_t o) const;
   void place(std::size_t o, const Eigen::Vector3d& shift);
   void sourceChanged(const workcell::Signal& source);
-  /// The next time the moving robot changes what a sensor sees, woken then.
-  void watchRobot(vm::Micros now);
+  /// The next time moving robot `robot` changes what a sensor sees, woken then.
+  void watchRobot(vm::Micros now, std::size_t robot);
 
   const workcell::Workcell& cell_;
   World& world_;
   std::vector<RobotIo*> robots_;  // per robot of the cell; null: runs nothing
-  RobotIo* io_ = nullptr;         // the first robot's: what the sensors see move (robot_sight.h)
   Scheduler& clock_;
   std::uint32_t id_ = 0;
   std::size_t firstSlot_ = 0;
@@ -191,8 +190,8 @@ class CellDevices final : public CellProcess {
   std::vector<std::unique_ptr<Wire>> wires_;
   State state_;
   std::vector<bool> nextSensor_;  // evaluate's sensor values, committed in update
-  std::unique_ptr<RobotSight> sight_;
-  std::vector<bool> robotSees_;   // scratch: what the robot shows each sensor now
+  std::vector<std::unique_ptr<RobotSight>> sights_;  // per robot that runs (and can show a sensor anything)
+  std::vector<bool> robotSees_;   // scratch: what a robot shows each sensor now
   std::vector<std::int32_t> motorsNow_;
   std::vector<DeviceEvent> events_;
   std::optional<std::string> fault_;

@@ -36,12 +36,11 @@ struct RobotSight::Probe {
   std::vector<bool> sees;
 };
 
-RobotSight::RobotSight(const workcell::Workcell& cell, const World& world, std::size_t motors)
-    : cell_(cell), world_(world), motors_(motors) {
-  const workcell::PlacedRobot* robot = cell.drivenRobot();
-  if (!robot || !robot->robot.chain || cell.devices.sensors.empty()) return;
+RobotSight::RobotSight(const workcell::Workcell& cell, const World& world, std::size_t motors, std::size_t robot)
+    : cell_(cell), world_(world), motors_(motors), robot_(robot) {
+  if (robot >= cell.robots.size() || !cell.robots[robot].robot.chain || cell.devices.sensors.empty()) return;
   for (const workcell::Sensor& s : cell.devices.sensors) seesRobots_ |= seesRobot(s);
-  model_ = std::make_unique<workcell::CollisionModel>(cell);
+  model_ = std::make_unique<workcell::CollisionModel>(cell, robot);
   data_ = std::make_unique<workcell::CollisionData>(*model_);
   carried_.assign(motors_, 0.0);
   pool_.resize(kDepth);
@@ -49,6 +48,12 @@ RobotSight::RobotSight(const workcell::Workcell& cell, const World& world, std::
 }
 
 RobotSight::~RobotSight() = default;
+
+std::optional<std::size_t> RobotSight::carriedPart() const {
+  // A part two hands hold stays put: the devices see it where it rests.
+  const std::optional<std::size_t> held = world_.held(robot_);
+  return held && !world_.shared(*held) ? held : std::nullopt;
+}
 
 void RobotSight::probe(vm::Micros t, const MotorsAt& at, Probe& p) {
   p.t = t;
@@ -60,9 +65,9 @@ void RobotSight::probe(vm::Micros t, const MotorsAt& at, Probe& p) {
 void RobotSight::look(Probe& p) {
   const workcell::Devices& d = cell_.devices;
   p.part = Eigen::AlignedBox3d();
-  if (const std::optional<std::size_t> held = world_.held()) {
+  if (const std::optional<std::size_t> held = carriedPart()) {
     const Eigen::AlignedBox3d design = workcell::boundsOf(cell_.objects[*held].shape);
-    const Eigen::Isometry3d pose = world_.objectPose(*held, p.encoders);
+    const Eigen::Isometry3d pose = world_.objectPose(*held, p.encoders, INT64_MAX, robot_);
     for (int c = 0; c < 8 && !design.isEmpty(); ++c) {
       p.corners[static_cast<std::size_t>(c)] = pose * design.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c));
       p.part.extend(p.corners[static_cast<std::size_t>(c)]);
@@ -179,12 +184,12 @@ std::optional<vm::Micros> RobotSight::search(const Probe& a, const Probe& b, con
 
 std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at) {
   if (!matters_ || to <= from) return std::nullopt;
-  if (const std::optional<std::size_t> held = world_.held()) {
+  if (const std::optional<std::size_t> held = carriedPart()) {
     // How far the carried part's points lie from the tool centre point.
     const Eigen::AlignedBox3d box = workcell::boundsOf(cell_.objects[*held].shape);
     double reach = 0;
     for (int c = 0; c < 8; ++c)
-      reach = std::max(reach, (world_.heldOffset() * box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c))).norm());
+      reach = std::max(reach, (world_.heldOffset(robot_) * box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c))).norm());
     model_->carriedWeights(reach, carried_);
   } else if (!seesRobots_) {
     return std::nullopt;  // nothing carried, and no sensor sees the robot

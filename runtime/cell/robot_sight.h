@@ -31,8 +31,9 @@ class RobotSight {
   /// Where the motors are at time t (each motor goes one way over a move).
   using MotorsAt = std::function<void(vm::Micros, std::span<std::int32_t>)>;
 
-  /// The world's robot (its driven one) in `cell`; both must outlive this.
-  RobotSight(const workcell::Workcell& cell, const World& world, std::size_t motors);
+  /// Robot `robot` of `cell` (its index in Workcell::robots, its hand in
+  /// the world), with `motors` motors; cell and world must outlive this.
+  RobotSight(const workcell::Workcell& cell, const World& world, std::size_t motors, std::size_t robot = 0);
   ~RobotSight();
 
   /// Whether the robot can ever show a sensor anything (a sensor that sees
@@ -50,6 +51,8 @@ class RobotSight {
 
  private:
   struct Probe;
+  /// The part this robot carries (moving with it), if any.
+  std::optional<std::size_t> carriedPart() const;
   void probe(vm::Micros t, const MotorsAt& at, Probe& out);
   void look(Probe& p);
   bool stays(const Probe& a, const Probe& b) const;
@@ -61,6 +64,7 @@ class RobotSight {
   const workcell::Workcell& cell_;
   const World& world_;
   std::size_t motors_;
+  std::size_t robot_;
   bool matters_ = false;
   bool seesRobots_ = false;
   std::unique_ptr<workcell::CollisionModel> model_;

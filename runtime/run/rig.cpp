@@ -12,6 +12,8 @@ Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSp
   motion_ = std::move(sim);
   build(*motion_, collisions);
   io_.sim = sim_;
+  // The cell's other robots stand at home, and are obstacles there.
+  if (cell_ && cell_->robots.size() > 1) avoidOtherRobots();
   if (world_ && !cell_->devices.empty()) {
     ownDevices_ = std::make_unique<CellDevices>(*cell_, *world_, io_, running_->clock());
     attachDevices(*ownDevices_);
@@ -47,9 +49,8 @@ void Rig::attachDevices(CellDevices& devices) {
   devices_ = &devices;
   robot_.devices = devices_;
   sim_->onOutputChange([this](int output, bool) { devices_->outputChanged(output, robotIndex_); });
-  // The devices watch what the (first) robot shows the sensors on the way.
-  if (robotIndex_ == cell_->drivenRobotIndex())
-    sim_->onMoveBegun([this](vm::Micros until) { devices_->robotMoves(until); });
+  // The devices watch what every robot shows the sensors on the way.
+  sim_->onMoveBegun([this](vm::Micros until) { devices_->robotMoves(until, robotIndex_); });
 }
 
 vm::Status Rig::advanceCell(vm::Micros t) {

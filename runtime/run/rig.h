@@ -128,7 +128,9 @@ class Rig {
   void attachDevices(CellDevices& devices);
   /// The cell's other robots become obstacles of this robot's swept check
   /// (robot_obstacles.h), each where its machine (named later through
-  /// obstacles()) has it. A cell run's robot, on the simulated machine.
+  /// obstacles()) has it. A cell run's robot, on the simulated machine; a
+  /// simulated robot of a cell of several on its own (a run of one
+  /// program, teach) has it done at construction: the others stand at home.
   void avoidOtherRobots();
   RobotObstacles* obstacles() { return obstacles_.get(); }
   /// The robot's index in the cell (its hand in the world).

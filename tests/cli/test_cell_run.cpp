@@ -385,3 +385,25 @@ TEST_CASE("cell run: a part let go does not settle on a part another robot carri
   REQUIRE(r.code == 0);
   CHECK(r.out.find("lets go of block (object 4): it settles on pallet (object 2), dropped 41.04") != std::string::npos);
 }
+
+// A program run alone on one robot of a cell of several (`run PROG --cell
+// CELL --robot LABEL`, the others without programs) meets the others
+// where they stand, at home: the same two facing XR-4s 600 apart as in
+// "every robot is an obstacle to the other", left reaching forward.
+TEST_CASE("cell run: a robot run alone meets the others standing at home", "[cell-run][robots][collision]") {
+  rs::testing::TempDir dir;
+  const auto cellAt = [&](int x) {
+    dir.write("c.rsd", "WORKCELL face\n  ROBOT rhino-xr4 AT 0 750 0 AS left\n  ROBOT rhino-xr4 AT " + std::to_string(x) +
+                           " 750 0 ROTATE Y 180 AS right\nEND\n");
+  };
+  dir.write("l.rsp", "        MOVE 0 600 0 0 0 0\n        END\n");
+  cellAt(600);
+  const auto near = rs::testing::runCli({"run", dir.file("l.rsp"), "--cell", dir.file("c.rsd"), "--robot", "left"});
+  CHECK(near.code == 1);
+  CHECK(near.err.find("of robot 'left' hits ") != std::string::npos);
+  CHECK(near.err.find("of robot 'right'") != std::string::npos);
+  cellAt(800);
+  const auto far = rs::testing::runCli({"check", dir.file("l.rsp"), "--cell", dir.file("c.rsd"), "--robot", "left"});
+  INFO(far.err);
+  CHECK(far.code == 0);
+}

@@ -104,3 +104,33 @@ TEST_CASE("robot sight: a light curtain (SEES ROBOTS) sees the gripper cross it 
   // The same cell and program give the same bytes.
   CHECK(runCli({"run", prog, "--trace"}).out == r.out);
 }
+
+// Issue 36: a light curtain sees every robot of the cell that runs, not
+// only the first. The same gantry and the same moves as above, now the
+// second robot of a cell, placed 5000 further along x (so its tool centre
+// point is at (5500 + X/10, 200 - Y/10, 400 + Z/10)), with the curtain
+// moved with it; the first robot only waits for the curtain on its input
+// 2, so it ends when the curtain first turns on: at 1.701 s, as above.
+TEST_CASE("robot sight: a light curtain sees the second robot of a cell too", "[cell][devices][robots]") {
+  rs::testing::TempDir dir;
+  dir.write("cell.rsd",
+            "WORKCELL curtain\n"
+            "  ROBOT gantry    AT 0 1000 0    AS a PROGRAM a.rsp\n"
+            "  ROBOT gantry    AT 5000 1000 0 AS b PROGRAM b.rsp\n"
+            "  SENSOR curtain ZONE 5350 5360 285 100 760 600 SEES ROBOTS\n"
+            "  WIRE curtain TO a.IN 2\n"
+            "END\n");
+  dir.write("a.rsp", "        WAITFOR 2 ON\n        END\n");
+  dir.write("b.rsp", "        MOVETO -2800 2800 0 0\n        MOVE 2800 0 0 0\n        END\n");
+  const CliResult r = runCli({"run", "--cell", dir.file("cell.rsd"), "--trace", "--format=json"});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("1.701  sensor curtain ON") != std::string::npos);
+  CHECK(r.out.find("3.601  sensor curtain ON") != std::string::npos);
+  CHECK(r.out.find("4.700  sensor curtain OFF") != std::string::npos);
+  CHECK(r.out.find("\"time\":1.701,\"robots\"") == std::string::npos);  // the summary's shape below
+  const std::string summary = r.out.substr(r.out.rfind("\n{\"status\"") + 1);
+  CHECK(summary.find("{\"name\":\"a\",\"program\"") != std::string::npos);
+  CHECK(summary.find("\"name\":\"a\",\"program\":\"" + dir.file("a.rsp") + "\",\"status\":\"finished\",\"time\":1.701") !=
+        std::string::npos);
+}

@@ -144,3 +144,33 @@ TEST_CASE("pendant: jogging a held block through a beam turns the input it is wi
   CHECK_FALSE(p.state().sensors[0].on);
   CHECK((p.state().inputs & 1) == 0);
 }
+
+// Issue 36: in a cell of several robots the pendant jogs its robot (the
+// cell's first here) and the others stand at home as obstacles: two
+// XR-4s facing each other 600 apart, as tests/cli/test_cell_run.cpp's
+// "every robot is an obstacle to the other", where left's MOVE 0 600 runs
+// its wrist into right's fingers. The same jog 800 apart moves.
+TEST_CASE("pendant: the cell's other robots stand at home and are obstacles", "[teach][robots]") {
+  rs::testing::TempDir dir;
+  const std::string path = dir.write("l.rsp", "        END\n");
+  for (const int x : {600, 800}) {
+    dir.write("face.rsd", "WORKCELL face\n  ROBOT rhino-xr4 AT 0 750 0 AS left\n  ROBOT rhino-xr4 AT " +
+                              std::to_string(x) + " 750 0 ROTATE Y 180 AS right\nEND\n");
+    rs::compiler::Library library(rs::compiler::librarySearchPath({dir.path().string()}));
+    std::optional<rs::workcell::Workcell> loaded = library.workcell("face");
+    REQUIRE(loaded);
+    const auto cell = std::make_shared<const rs::workcell::Workcell>(*loaded);
+    rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path);
+    REQUIRE(file);
+    rs::teach::Pendant p(cell, rs::launch::cellTarget(*cell).motors, std::move(*file));
+    const rs::teach::Outcome o = p.jog(1, 600);  // motor E
+    INFO(o.message);
+    if (x == 600) {
+      CHECK_FALSE(o.ok);
+      CHECK(o.message.find("of robot 'left' hits ") != std::string::npos);
+      CHECK(o.message.find("of robot 'right'") != std::string::npos);
+    } else {
+      CHECK(o.ok);
+    }
+  }
+}
