@@ -2,7 +2,8 @@
 // `--only cell_debug`): tools/debug/cell_session.h re-runs the cell from
 // its start to the moment it goes back to. On examples/two_robots/
 // interlock.rsd, at every moment a `step` stops at (the two robots
-// stepped in turn through the whole run), one reverse step. Targets: a
+// stepped in turn through the whole run, then each robot alone), one
+// reverse step: the last ones re-run the cell nearly to its end. Targets: a
 // reverse step median <= 1 ms, worst <= 10 ms (CPU).
 #include <fmt/format.h>
 #include <time.h>
@@ -40,10 +41,11 @@ nlohmann::json benchCellDebug(const Options& options) {
   if (!spec) throw std::runtime_error("the interlock cell's programs do not compile");
   std::vector<double> cpu, wall;
   std::uint64_t moments = 0;
-  for (int rep = 0; rep < std::max(1, options.reps); ++rep) {
+  // Three ways through the run each repetition: the robots stepped in turn, then each robot alone.
+  for (int rep = 0; rep < 3 * std::max(1, options.reps); ++rep) {
     debug::CellSession session(*spec);
     for (std::size_t turn = 0;; ++turn) {
-      session.select(turn % session.size());
+      session.select(rep % 3 == 0 ? turn % session.size() : static_cast<std::size_t>(rep % 3 - 1));
       const auto stepped = session.step();
       if (!stepped || stepped->finished()) break;
       const Stopwatch clock;

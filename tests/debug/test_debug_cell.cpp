@@ -16,6 +16,8 @@
 // profile is symmetric in time). The run ends at 8.5 s (tests/cli/test_cell_run.cpp).
 #include <catch2/catch.hpp>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "tests/cli/cli_support.h"
@@ -133,4 +135,31 @@ TEST_CASE("debug cell: a program that does not compile is an error at its line, 
   CHECK(r.code == 2);
   CHECK(r.err.find("r.rsp:1:") != std::string::npos);
   CHECK(r.out.empty());
+}
+
+// docs/debugging.md's worked two-robot session: the fenced block that starts
+// with `$ robotsim debug --cell examples/two_robots/interlock.rsd`; its
+// commands are the lines after `(rsdb) `, the rest what robotsim debug
+// prints for them (the source directory written as `...`). Its lines are
+// those worked out at the top of this file.
+TEST_CASE("docs/debugging.md's two-robot session is what robotsim debug prints", "[debug][cell-debug][docs]") {
+  std::ifstream in(rendertest::kSourceDir + "/docs/debugging.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  const std::string start = "```\n$ robotsim debug --cell examples/two_robots/interlock.rsd\n";
+  const std::size_t at = doc.find(start);
+  REQUIRE(at != std::string::npos);
+  const std::size_t body = at + start.size();
+  const std::string block = doc.substr(body, doc.find("```\n", body) - body);
+  std::string commands;
+  std::istringstream lines(block);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("(rsdb) ", 0) == 0) commands += line.substr(7) + "\n";
+  const auto r = debugCell(commands);
+  CHECK(r.code == 0);
+  std::string out = r.out;
+  for (std::size_t p; (p = out.find(rendertest::kSourceDir)) != std::string::npos;)
+    out.replace(p, rendertest::kSourceDir.size(), "...");
+  CHECK(out == block);
 }
