@@ -121,5 +121,7 @@ nlohmann::json benchMoves(const Options& options);
 nlohmann::json benchCell(const Options& options);
 /// Two robots on one clock that never interact against each alone (issue 36).
 nlohmann::json benchRobots(const Options& options);
+/// Reverse step in the two-robot example (tools/debug/cell_session.h): median and worst.
+nlohmann::json benchCellDebug(const Options& options);
 
 }  // namespace rs::bench

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "base/seconds.h"
 
 namespace rs::runtime {
@@ -130,51 +132,82 @@ std::string CellRun::deadlockMessage() const {
   return out;
 }
 
-vm::RunOutcome CellRun::runToEnd() {
-  vm::RunOutcome last;
-  last.reason = vm::StopReason::End;
+std::uint64_t CellRun::steps() const {
+  std::uint64_t n = 0;
+  for (const auto& r : runs_) n += r->interpreter().steps();
+  return n;
+}
+
+vm::RunOutcome CellRun::over(vm::RunOutcome outcome) {
+  outcome_ = outcome;
+  return outcome;
+}
+
+// One loop of instants, which a pause leaves where it is (phase_, turn_):
+// the next call goes on from there as if it had not paused.
+vm::RunOutcome CellRun::runUntil(const CellUntil& until) {
+  if (outcome_) return *outcome_;
+  vm::RunOutcome paused;
+  paused.reason = vm::StopReason::Paused;
   while (true) {
-    // Evaluate: every robot runs until it waits or ends.
-    bool anyRunning = false;
-    for (std::size_t p = 0; p < runs_.size(); ++p) {
-      if (ends_[p] != RobotEnd::Running) continue;
-      const vm::RunOutcome o = runs_[p]->runUntil({});
-      if (o.waiting) {
-        wakeAt_[p] = o.wakeAt;
-        anyRunning = true;
-        continue;
+    if (phase_ == Phase::Evaluate) {
+      // Evaluate: every robot runs until it waits or ends.
+      for (; turn_ < runs_.size(); ++turn_) {
+        const std::size_t p = turn_;
+        if (ends_[p] != RobotEnd::Running) continue;
+        RunUntil one;
+        if (until.steps != UINT64_MAX) {
+          const std::uint64_t done = steps();
+          if (done >= until.steps) return paused;
+          one.moreSteps = until.steps - done;
+        }
+        if (until.afterStep) one.when = [&until, this, p](const Run&) { return until.afterStep(*this, p); };
+        const vm::RunOutcome o = runs_[p]->runUntil(one);
+        if (o.waiting) {
+          wakeAt_[p] = o.wakeAt;
+          continue;
+        }
+        if (o.paused()) return paused;  // its turn goes on at the next call
+        ends_[p] = RobotEnd::Finished;
+        endAt_[p] = clock();
+        endedSteps_ += o.steps;
+        if (!o.ok()) return over(stopAll(p, o));
       }
-      ends_[p] = RobotEnd::Finished;
-      endAt_[p] = clock();
-      last.steps += o.steps;
-      if (!o.ok()) return stopAll(p, o);
+      turn_ = 0;
+      if (std::none_of(ends_.begin(), ends_.end(), [](RobotEnd e) { return e == RobotEnd::Running; })) {
+        vm::RunOutcome last;
+        last.reason = vm::StopReason::End;
+        last.steps = endedSteps_;
+        return over(last);
+      }
+      // The cell acts on what the robots did at now, then its clock runs on.
+      std::vector<vm::IoMask> inputsBefore;
+      for (const auto& r : runs_) inputsBefore.push_back(r->rig().machine().inputs());
+      if (vm::Status s = advanceCell(clock()); !s) return over(cellStops(vm::StopReason::RuntimeError, s.message));
+      allForever_ = true;
+      for (std::size_t p = 0; p < runs_.size(); ++p) {
+        if (ends_[p] != RobotEnd::Running) continue;
+        if (wakeAt_[p] != vm::Status::kNever) runs_[p]->rig().wakeRobotAt(wakeAt_[p]), allForever_ = false;
+      }
+      if (!shared_.clock().nextTime()) {
+        // A wire without AFTER may have answered a robot at this very instant.
+        bool changed = false;
+        for (std::size_t p = 0; p < runs_.size(); ++p) changed |= runs_[p]->rig().machine().inputs() != inputsBefore[p];
+        if (changed) continue;
+        return over(cellStops(vm::StopReason::Deadlock, deadlockMessage()));
+      }
+      phase_ = Phase::Due;
     }
-    if (!anyRunning) break;
-    // The cell acts on what the robots did at now, then its clock runs on.
-    std::vector<vm::IoMask> inputsBefore;
-    for (const auto& r : runs_) inputsBefore.push_back(r->rig().machine().inputs());
-    if (vm::Status s = advanceCell(clock()); !s) return cellStops(vm::StopReason::RuntimeError, s.message);
-    bool allForever = true;
-    for (std::size_t p = 0; p < runs_.size(); ++p) {
-      if (ends_[p] != RobotEnd::Running) continue;
-      if (wakeAt_[p] != vm::Status::kNever) runs_[p]->rig().wakeRobotAt(wakeAt_[p]), allForever = false;
-    }
-    const std::optional<vm::Micros> next = shared_.clock().nextTime();
-    if (!next) {
-      // A wire without AFTER may have answered a robot at this very instant.
-      bool changed = false;
-      for (std::size_t p = 0; p < runs_.size(); ++p) changed |= runs_[p]->rig().machine().inputs() != inputsBefore[p];
-      if (changed) continue;
-      return cellStops(vm::StopReason::Deadlock, deadlockMessage());
-    }
+    const vm::Micros next = *shared_.clock().nextTime();
     // Only the devices may end these waits, in a cell that goes on forever:
     // past the time limit the cell stops.
-    if (*next > limits_.maxTime && allForever)
-      return cellStops(vm::StopReason::TimeLimit,
-                       fmt::format("every robot still waits past the time limit of {} s", base::formatSeconds(limits_.maxTime)));
-    if (vm::Status s = advanceCell(*next); !s) return cellStops(vm::StopReason::RuntimeError, s.message);
+    if (next > limits_.maxTime && allForever_)
+      return over(cellStops(vm::StopReason::TimeLimit, fmt::format("every robot still waits past the time limit of {} s",
+                                                                   base::formatSeconds(limits_.maxTime))));
+    if (next > until.time) return paused;
+    if (vm::Status s = advanceCell(next); !s) return over(cellStops(vm::StopReason::RuntimeError, s.message));
+    phase_ = Phase::Evaluate;
   }
-  return last;
 }
 
 }  // namespace rs::runtime

@@ -16,11 +16,16 @@
 // still running waits on an input nothing can change any more, the run
 // stops with one deadlock error naming each of them.
 //
+// A run can pause (runUntil: after a step a predicate picks, at a count of
+// steps of all robots, before the clock passes a time) and go on exactly
+// as if it had not: what a debugger of the cell needs.
+//
 //   CellRun run(spec);
 //   run.observe(0, trace);
 //   vm::RunOutcome outcome = run.runToEnd();
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -53,6 +58,15 @@ struct CellRunSpec {
   CollisionMode collisions = CollisionMode::Error;
 };
 
+/// Where a cell run pauses; unset members never pause it.
+struct CellUntil {
+  std::uint64_t steps = UINT64_MAX;  ///< the instructions of every robot together reach this
+  /// Before the clock passes this: every instruction at an instant up to it is done.
+  vm::Micros time = INT64_MAX;
+  /// After each step of program p, in the cell's order of steps: yes pauses there.
+  std::function<bool(const class CellRun&, std::size_t p)> afterStep{};
+};
+
 /// How one robot's program finished.
 enum class RobotEnd { Running, Finished, Stopped };
 
@@ -71,7 +85,16 @@ class CellRun {
   /// Runs every program to its end, or until the cell stops. The outcome
   /// is the cell's: ok when every program ended well; else the first
   /// failure (its message names the robot), or the deadlock.
-  vm::RunOutcome runToEnd();
+  vm::RunOutcome runToEnd() { return runUntil({}); }
+  /// Runs until `until` pauses it (the outcome is Paused) or the cell's run
+  /// is over (its outcome, as runToEnd's). Going on after a pause is the
+  /// same run as one that never paused.
+  vm::RunOutcome runUntil(const CellUntil& until);
+  /// The cell's run is over (every program ended, or the cell stopped).
+  bool finished() const { return outcome_.has_value(); }
+  const std::optional<vm::RunOutcome>& outcome() const { return outcome_; }
+  /// The instructions every robot has run, together.
+  std::uint64_t steps() const;
 
   std::size_t size() const { return runs_.size(); }
   const Run& robot(std::size_t p) const { return *runs_[p]; }
@@ -91,7 +114,11 @@ class CellRun {
   vm::Micros clock() const { return shared_.clock().now(); }
 
  private:
+  /// Where runUntil goes on: a robot's turn at the instant (Evaluate), or
+  /// the cell has acted at the instant and its clock runs on next (Due).
+  enum class Phase { Evaluate, Due };
   vm::Status advanceCell(vm::Micros t);
+  vm::RunOutcome over(vm::RunOutcome outcome);
   /// Every robot still running waits on an input nothing will change.
   std::string deadlockMessage() const;
   vm::RunOutcome stopAll(std::size_t failed, const vm::RunOutcome& outcome);
@@ -107,6 +134,11 @@ class CellRun {
   std::vector<vm::Micros> wakeAt_;  // per program: its wait under way ends here (kNever: an input)
   std::optional<std::size_t> failed_;
   vm::RunLimits limits_;
+  Phase phase_ = Phase::Evaluate;
+  std::size_t turn_ = 0;     // Evaluate: the robot whose turn it is at this instant
+  bool allForever_ = false;  // Due: every robot still running waits on an input
+  std::uint64_t endedSteps_ = 0;  // the steps of the programs that ended
+  std::optional<vm::RunOutcome> outcome_;
 };
 
 /// The stimuli of robot `robot` of `cell` (its label's, or unlabelled

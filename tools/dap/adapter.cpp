@@ -122,6 +122,7 @@ Adapter::Reply Adapter::dispatch(const std::string& command, const Json& args) {
   }
   if (command == "launch") return launch(args);
   if (command == "attach") return Error{"attach is not supported: robotsim dap launches the program itself"};
+  if (cell_) return cellDispatch(command, args);
   if (command == "threads") return Json{{"threads", Json::array({{{"id", kThread}, {"name", "program"}}})}};
   if (!session_) return Error{fmt::format("{} before launch: launch a program first", command)};
   if (command == "setBreakpoints") return setBreakpoints(args);
@@ -209,11 +210,12 @@ Adapter::Reply Adapter::initialize(const Json& args) {
 }
 
 Adapter::Reply Adapter::launch(const Json& args) {
-  if (session_) return Error{"a program was already launched"};
+  if (session_ || cell_) return Error{"a program was already launched"};
   launch::ProgramRequest program;
   program.file = stringArg(args, "program");
-  if (program.file.empty()) return Error{"launch needs a program (the path of a .rsp or .rsb file)"};
   program.cell = stringArg(args, "cell");
+  if (program.file.empty() && program.cell.empty())
+    return Error{"launch needs a program (the path of a .rsp or .rsb file), or a cell whose robots have programs"};
   program.libDirs = stringsArg(args, "lib");
   launch::RunRequest run;
   run.stimuliFile = stringArg(args, "stimuli");
@@ -237,6 +239,7 @@ Adapter::Reply Adapter::launch(const Json& args) {
   else if (t.is_number_integer()) run.maxTime = t.dump();
   else if (!t.is_null()) run.maxTime = fmt::format("{:.6f}", t.get<double>());
   stopOnEntry_ = args.value("stopOnEntry", false);
+  if (program.file.empty() || args.contains("programs")) return launchCell(program, run, args);
 
   launch::LoadedProgram loaded = launch::loadProgram(program);
   std::vector<diag::Diagnostic> diags = loaded.diagnostics;

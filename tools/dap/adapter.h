@@ -10,6 +10,11 @@
 // inputs, and the custom request gotoTime. Lines and columns count from 1
 // or 0, as the client's initialize says.
 //
+// A launch with a `cell` and no `program` debugs the cell's robots
+// together (cell_requests.cpp, a debug::CellSession): one thread per robot,
+// a stop stops them all, stepBack and reverseContinue put the whole cell
+// back.
+//
 // Every request gets a response: a malformed message, a request before
 // `initialize` or before `launch`, or one with bad arguments is answered
 // with success false and a message, and the adapter goes on. A run that
@@ -25,6 +30,9 @@
 #include <vector>
 
 #include "diag/source_file.h"
+#include "launch/program.h"
+#include "launch/run_request.h"
+#include "tools/debug/cell_session.h"
 #include "tools/debug/debug_session.h"
 #include "tools/wire/framing.h"
 #include "tools/wire/json.h"
@@ -88,6 +96,18 @@ class Adapter {
   /// After the response to a request that moved the run: the events.
   void reportStop(const debug::Stop& stop);
 
+  // A cell of several robots (cell_requests.cpp).
+  Reply launchCell(const launch::ProgramRequest& program, const launch::RunRequest& run, const Json& args);
+  Reply cellDispatch(const std::string& command, const Json& args);
+  Reply cellSetBreakpoints(const Json& args);
+  Reply cellStackTrace(const Json& args);
+  Reply cellScopes(const Json& args);
+  Reply cellVariables(const Json& args);
+  Reply cellEvaluate(const Json& args);
+  /// The robot a request's threadId names (the current one without it); nullopt: none.
+  std::optional<std::size_t> cellThread(const Json& args) const;
+  void reportCellStop(const debug::CellStop& stop);
+
   Send send_;
   std::ostream& log_;
   std::int64_t seq_ = 1;
@@ -95,6 +115,10 @@ class Adapter {
   bool clientGone_ = false;
   bool disconnected_ = false;
   std::unique_ptr<debug::DebugSession> session_;
+  std::unique_ptr<debug::CellSession> cell_;
+  std::vector<diag::SourceFile> cellSources_;  // per robot (program index)
+  std::vector<std::string> cellPaths_;         // per robot: its program's absolute path
+  std::vector<std::vector<int>> cellBreakpoints_;  // per robot: the ids setBreakpoints made
   std::optional<diag::SourceFile> source_;
   std::string sourcePath_;
   int lineBase_ = 1, columnBase_ = 1;  // initialize's linesStartAt1, columnsStartAt1

@@ -1,0 +1,152 @@
+// Issue 36: the debug adapter on examples/two_robots/interlock.rsd, launched
+// with `cell` and `programs`: one thread per robot, stopped events with
+// allThreadsStopped and the robot that stopped, stack, scopes and
+// variables per thread, stepBack for the whole cell. Served in-process
+// over streams as `robotsim dap` serves stdin and stdout.
+//
+// The times and places are worked out by hand as in test_debug_cell.cpp:
+// right reaches its first MOVE 300 (line 6) when its WAITFOR ends at 2 s
+// (left's OUTSIG 1 ON at 2, no AFTER); that move takes 1 s (motor F at 300
+// counts a second); left meanwhile waits at line 10 for its input 1.
+#include <catch2/catch.hpp>
+
+#include <sstream>
+
+#include "tests/debug/debug_test_util.h"
+#include "tools/dap/serve.h"
+#include "tools/wire/framing.h"
+#include "tools/wire/json.h"
+
+namespace {
+
+using rs::wire::Json;
+
+const std::string kTwo = debugtest::kExamples + "two_robots/";
+
+std::vector<Json> serveRequests(const std::vector<Json>& requests) {
+  std::string bytes;
+  int seq = 1;
+  for (Json r : requests) {
+    r["seq"] = seq++;
+    r["type"] = "request";
+    bytes += rs::wire::frameMessage(r.dump());
+  }
+  std::istringstream in(bytes);
+  std::ostringstream out, log;
+  rs::wire::StreamInput input(in);
+  rs::wire::StreamOutput output(out);
+  rs::dap::serve(input, output, log);
+  std::vector<Json> messages;
+  for (const rs::wire::Frame& f : rs::wire::parseFrames(out.str())) messages.push_back(Json::parse(f.body));
+  return messages;
+}
+
+// The response to request number `seq`, and the events after it up to the next response.
+const Json& responseTo(const std::vector<Json>& m, int seq) {
+  for (const Json& j : m)
+    if (j.value("type", "") == "response" && j.value("request_seq", 0) == seq) return j;
+  FAIL("no response to request " << seq);
+  return m.front();
+}
+
+std::vector<Json> stoppedEvents(const std::vector<Json>& m) {
+  std::vector<Json> out;
+  for (const Json& j : m)
+    if (j.value("type", "") == "event" && j.value("event", "") == "stopped") out.push_back(j.at("body"));
+  return out;
+}
+
+std::string valueOf(const Json& variables, const std::string& name) {
+  for (const Json& v : variables.at("body").at("variables"))
+    if (v.at("name") == name) return v.at("value").get<std::string>();
+  return "(none)";
+}
+
+Json request(const std::string& command, Json args = Json::object()) {
+  return {{"command", command}, {"arguments", std::move(args)}};
+}
+
+}  // namespace
+
+TEST_CASE("dap cell: a thread per robot, stops of the whole cell, variables per thread, step back",
+          "[debug][dap][cell-debug]") {
+  const std::vector<Json> m = serveRequests({
+      request("initialize"),                                                                           // 1
+      request("launch", {{"cell", kTwo + "interlock.rsd"},
+                         {"programs", {{"left", kTwo + "left.rsp"}, {"right", kTwo + "right.rsp"}}}}),  // 2
+      request("setBreakpoints", {{"source", {{"path", kTwo + "right.rsp"}}}, {"breakpoints", {{{"line", 6}}}}}),  // 3
+      request("threads"),                                                                              // 4
+      request("configurationDone"),                                                                    // 5
+      request("stackTrace", {{"threadId", 2}}),                                                        // 6
+      request("stackTrace", {{"threadId", 1}}),                                                        // 7
+      request("scopes", {{"frameId", 2000}}),                                                          // 8
+      request("variables", {{"variablesReference", 2004}}),                                            // 9: right's clock
+      request("stepIn", {{"threadId", 2}}),                                                            // 10
+      request("variables", {{"variablesReference", 2002}}),                                            // 11: right's motors
+      request("variables", {{"variablesReference", 1002}}),                                            // 12: left's motors
+      request("stepBack", {{"threadId", 2}}),                                                          // 13
+      request("variables", {{"variablesReference", 2004}}),                                            // 14
+      request("evaluate", {{"expression", "TURNS"}, {"frameId", 1000}}),                               // 15
+      request("stackTrace", {{"threadId", 9}}),                                                        // 16
+      request("disconnect"),                                                                           // 17
+  });
+  const Json& launched = responseTo(m, 2);
+  INFO(launched.dump());
+  REQUIRE(launched.at("success") == true);
+  const Json& bp = responseTo(m, 3).at("body").at("breakpoints");
+  REQUIRE(bp.size() == 1);
+  CHECK(bp[0].at("verified") == true);
+  CHECK(bp[0].at("line") == 6);
+  const Json& threads = responseTo(m, 4).at("body").at("threads");
+  REQUIRE(threads.size() == 2);
+  CHECK(threads[0] == Json{{"id", 1}, {"name", "left"}});
+  CHECK(threads[1] == Json{{"id", 2}, {"name", "right"}});
+
+  const std::vector<Json> stops = stoppedEvents(m);
+  REQUIRE(stops.size() == 3);
+  // configurationDone runs to right's breakpoint: right stopped it, and with it every robot.
+  CHECK(stops[0].at("reason") == "breakpoint");
+  CHECK(stops[0].at("threadId") == 2);
+  CHECK(stops[0].at("allThreadsStopped") == true);
+  CHECK(stops[0].at("hitBreakpointIds") == Json::array({bp[0].at("id")}));
+  const Json& rightFrames = responseTo(m, 6).at("body").at("stackFrames");
+  REQUIRE(rightFrames.size() == 1);
+  CHECK(rightFrames[0].at("line") == 6);
+  CHECK(rightFrames[0].at("source").at("name") == "right.rsp");
+  const Json& leftFrames = responseTo(m, 7).at("body").at("stackFrames");
+  REQUIRE(leftFrames.size() == 1);
+  CHECK(leftFrames[0].at("line") == 10);  // left waits in its WAITFOR 1 ON
+  CHECK(leftFrames[0].at("source").at("name") == "left.rsp");
+  const Json& scopes = responseTo(m, 8).at("body").at("scopes");
+  REQUIRE(scopes.size() == 4);
+  CHECK(scopes[0].at("name") == "Variables");
+  CHECK(scopes[3].at("variablesReference") == 2004);
+  CHECK(valueOf(responseTo(m, 9), "time") == "2.000 s");
+  // stepIn on right: its 1 s move; left does not move.
+  CHECK(stops[1].at("reason") == "step");
+  CHECK(stops[1].at("threadId") == 2);
+  CHECK(stops[1].at("allThreadsStopped") == true);
+  CHECK(valueOf(responseTo(m, 11), "F") == "300");
+  CHECK(valueOf(responseTo(m, 12), "F") == "0");
+  // stepBack puts the whole cell back at 2 s.
+  CHECK(stops[2].at("threadId") == 2);
+  CHECK(stops[2].at("allThreadsStopped") == true);
+  CHECK(valueOf(responseTo(m, 14), "time") == "2.000 s");
+  CHECK(responseTo(m, 15).at("body").at("result") == "0");  // left's TURNS: its first pass
+  CHECK(responseTo(m, 16).at("success") == false);
+}
+
+TEST_CASE("dap cell: a launch whose programs name no robot of the cell is refused with the labels",
+          "[debug][dap][cell-debug]") {
+  const std::vector<Json> m = serveRequests({
+      request("initialize"),
+      request("launch", {{"cell", kTwo + "interlock.rsd"}, {"programs", {{"middle", kTwo + "left.rsp"}}}}),
+      request("launch", {{"cell", kTwo + "interlock.rsd"}, {"programs", 7}}),
+      request("disconnect"),
+  });
+  const Json& bad = responseTo(m, 2);
+  CHECK(bad.at("success") == false);
+  INFO(bad.dump());
+  CHECK(bad.at("message").get<std::string>().find("cannot debug cell") != std::string::npos);
+  CHECK(responseTo(m, 3).at("message").get<std::string>().find("programs is") != std::string::npos);
+}
