@@ -154,19 +154,18 @@ vm::RunOutcome CellRun::runToEnd() {
     std::vector<vm::IoMask> inputsBefore;
     for (const auto& r : runs_) inputsBefore.push_back(r->rig().machine().inputs());
     if (vm::Status s = advanceCell(clock()); !s) return cellStops(vm::StopReason::RuntimeError, s.message);
+    // A wire without AFTER may have answered a robot at this very instant:
+    // it runs again now, before the clock moves on to anything else due.
+    bool changed = false;
+    for (std::size_t p = 0; p < runs_.size(); ++p) changed |= runs_[p]->rig().machine().inputs() != inputsBefore[p];
+    if (changed) continue;
     bool allForever = true;
     for (std::size_t p = 0; p < runs_.size(); ++p) {
       if (ends_[p] != RobotEnd::Running) continue;
       if (wakeAt_[p] != vm::Status::kNever) runs_[p]->rig().wakeRobotAt(wakeAt_[p]), allForever = false;
     }
     const std::optional<vm::Micros> next = shared_.clock().nextTime();
-    if (!next) {
-      // A wire without AFTER may have answered a robot at this very instant.
-      bool changed = false;
-      for (std::size_t p = 0; p < runs_.size(); ++p) changed |= runs_[p]->rig().machine().inputs() != inputsBefore[p];
-      if (changed) continue;
-      return cellStops(vm::StopReason::Deadlock, deadlockMessage());
-    }
+    if (!next) return cellStops(vm::StopReason::Deadlock, deadlockMessage());
     // Only the devices may end these waits, in a cell that goes on forever:
     // past the time limit the cell stops.
     if (*next > limits_.maxTime && allForever)

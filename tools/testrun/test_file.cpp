@@ -19,6 +19,8 @@
 #include "tools/testrun/golden_trace.h"
 #include "tools/testrun/run_watch.h"
 #include "tools/testrun/scenario_file.h"
+#include "tools/testrun/cell_test.h"
+#include "tools/testrun/test_steps.h"
 #include "vm/image_file.h"
 
 namespace rs::testrun {
@@ -39,8 +41,6 @@ const diag::SourceFile* TestResult::sourceOf(const std::string& name) const {
     if (s->name() == name) return s.get();
   return nullptr;
 }
-
-namespace {
 
 // A file named by a `; test:` line is relative to the program's folder; a
 // cell that is no file there is a library name.
@@ -100,8 +100,6 @@ void matchCompileErrors(const std::vector<Expectation>& expectations, const std:
     r.problems.push_back(std::move(d));
   }
 }
-
-}  // namespace
 
 namespace {
 
@@ -224,6 +222,8 @@ void judgeTrace(const GoldenTrace& t, const runtime::RunSpec* again, const std::
                         {}, "if the new run is right, robotsim test --update rewrites the golden trace"});
 }
 
+}  // namespace
+
 // How to get past a stop by a limit: a loop that never lets the clock move
 // is the program's to fix; the grading limits (not those its scenario
 // set) the scenario file's to raise.
@@ -249,14 +249,47 @@ void hintLimit(const vm::RunOutcome& outcome, const TestSettings& settings, bool
     if (d.hint.empty() && d.message.find(vm::stopReasonName(outcome.reason)) != std::string::npos) d.hint = hint;
 }
 
+launch::RunRequest runRequestOf(const TestSettings& settings, const std::string& settingsFile, bool expectsCollision,
+                                const RunnerOptions& options, bool grading) {
+  launch::RunRequest run;
+  run.stimuliFile = besideProgram(settingsFile, settings.stimuliFile, false);
+  run.inputs = settings.inputs;
+  run.maxSteps = settings.maxSteps;
+  run.maxTime = settings.maxTime;
+  run.maxKnots = settings.maxKnots;
+  if (grading && !run.maxSteps) run.maxSteps = kGradingMaxSteps;
+  if (grading && !run.maxKnots) run.maxKnots = kGradingMaxKnots;
+  if (grading && run.maxTime.empty()) run.maxTime = std::to_string(kGradingMaxSeconds);
+  run.collisions = options.collisions;
+  // A test that expects a collision lets the run go on past it.
+  if (expectsCollision && run.collisions.empty()) run.collisions = "warn";
+  return run;
+}
+
+namespace {
+
 // The program at `program` checked against `parsed`, whose file names are
 // relative to the folder of `settingsFile`. `r` has its file, name and the
 // sources read so far. `grading`: a submission against a scenario file
 // (--spec): the grading limits apply where the scenario sets none.
-void check(const std::string& program, const ParsedExpectations& parsed, const std::string& settingsFile,
+void check(const std::string& programGiven, const ParsedExpectations& parsed, const std::string& settingsFile,
            const RunnerOptions& options, bool grading, TestResult& r) {
-  launch::ProgramRequest request{program, besideProgram(settingsFile, parsed.settings.cell, true), options.libDirs};
+  launch::ProgramRequest request{programGiven, besideProgram(settingsFile, parsed.settings.cell, true), options.libDirs};
   request.submission = grading;
+  request.robot = parsed.settings.robot;
+  // A cell of several robots with programs runs them all (cell_test.h).
+  if (!request.cell.empty()) {
+    const CellCheck cell = checkCell(request, parsed, settingsFile, options, grading, r);
+    if (cell.done) return;
+    if (!cell.program.empty()) request.file = cell.program, request.robot = cell.robot;
+  }
+  const std::string& program = request.file;
+  if (program.empty()) {
+    r.status = TestStatus::Error;
+    r.problems.push_back({settingsFile, {}, diag::Severity::Error,
+                          "the scenario file names no program: add 'program FILE', or give it with --spec"});
+    return;
+  }
   const launch::LoadedProgram loaded = launch::loadProgram(request);
   if (loaded.source && !r.sourceOf(loaded.source->name()))
     r.sources.push_back(std::make_shared<const diag::SourceFile>(*loaded.source));
@@ -287,18 +320,7 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
 
   std::vector<GoldenTrace> traces;
   if (!openGoldenTraces(parsed, settingsFile, traces, r)) return;
-  launch::RunRequest run;
-  run.stimuliFile = besideProgram(settingsFile, parsed.settings.stimuliFile, false);
-  run.inputs = parsed.settings.inputs;
-  run.maxSteps = parsed.settings.maxSteps;
-  run.maxTime = parsed.settings.maxTime;
-  run.maxKnots = parsed.settings.maxKnots;
-  if (grading && !run.maxSteps) run.maxSteps = kGradingMaxSteps;
-  if (grading && !run.maxKnots) run.maxKnots = kGradingMaxKnots;
-  if (grading && run.maxTime.empty()) run.maxTime = std::to_string(kGradingMaxSeconds);
-  run.collisions = options.collisions;
-  // A test that expects a collision lets the run go on past it.
-  if (parsed.expectsCollision() && run.collisions.empty()) run.collisions = "warn";
+  const launch::RunRequest run = runRequestOf(parsed.settings, settingsFile, parsed.expectsCollision(), options, grading);
   std::vector<diag::Diagnostic> runProblems;
   std::optional<runtime::RunSpec> spec = launch::prepareRun(loaded, run, runProblems);
   if (!spec) {
@@ -388,13 +410,17 @@ std::vector<TestResult> runScenarios(const std::string& specPath, const std::str
   }
   std::string program = programOverride;
   if (program.empty()) {
-    if (parsed.program.empty()) {
+    // No program: the cell's PROGRAMs and the `program LABEL FILE` lines are what runs.
+    if (parsed.program.empty() && parsed.shared.cell.empty() && parsed.shared.programs.empty() &&
+        std::all_of(parsed.scenarios.begin(), parsed.scenarios.end(), [](const Scenario& s) {
+          return s.parsed.settings.cell.empty() && s.parsed.settings.programs.empty();
+        })) {
       base.status = TestStatus::Error;
       base.problems.push_back({specPath, {}, diag::Severity::Error,
                                "the scenario file names no program: add 'program FILE', or give it with --spec"});
       return {base};
     }
-    program = besideProgram(specPath, parsed.program, false);
+    if (!parsed.program.empty()) program = besideProgram(specPath, parsed.program, false);
   }
   std::vector<TestResult> results;
   for (const Scenario& s : parsed.scenarios) {
