@@ -78,7 +78,11 @@ void placeAtLines(std::vector<diag::Diagnostic>& diags, const std::vector<RobotP
       if (!refused && d.file != files[k]) continue;
       d.file = settingsFile;
       d.pos = {lines[k].pos.line, refused ? lines[k].labelCol : lines[k].fileCol};
-      if (!refused && d.hint.empty()) d.hint = "a 'program LABEL FILE' line names a file relative to the scenario file";
+      if (!refused) {
+        d.message = fmt::format("robot {}'s program '{}': {}", base::safeText(lines[k].label),
+                                base::safeText(lines[k].file), d.message);
+        if (d.hint.empty()) d.hint = "a 'program LABEL FILE' line names a file relative to the scenario file";
+      }
       break;
     }
   }
