@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "diag/source_file.h"
 #include "tests/cli/cli_support.h"
 #include "tools/testrun/scenario_file.h"
@@ -245,4 +247,25 @@ TEST_CASE("cell scenarios: bad input is an error at its line, with a hint", "[te
                             "which one a submission is\n"));
     CHECK(mentions(r.out, "  hint: add 'test: robot LABEL' before the first scenario\n"));
   }
+}
+
+TEST_CASE("cell scenarios: a program's own expectations on a cell where the other robot has a PROGRAM",
+          "[testrun][cell-run]") {
+  const TempDir dir;
+  interlockIn(dir);
+  // right.rsp's text on the right robot (its `; robot:` line), left.rsp
+  // (the cell's PROGRAM) on the left one: as the interlock example, 8.5 s.
+  const std::string program =
+      dir.write("mine.rsp", "; test: cell interlock.rsd\n; robot: right\n; expect: variable TURNS = 2\n"
+                            "; expect: left.variable TURNS = 2\n; expect: time = 8.5\n" +
+                                rs::testing::readBytes(dir.file("right.rsp")));
+  const CliResult r = runCli({"test", program, "--format=json"});
+  INFO(r.out);
+  CHECK(r.code == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  REQUIRE(j.at("tests").size() == 1);
+  CHECK(j.at("tests")[0].at("status") == "PASSED");
+  CHECK(j.at("tests")[0].at("time") == 8.5);
+  // 16 instructions of left, 18 of right (their traces: two turns each).
+  CHECK(j.at("tests")[0].at("steps") == 34);
 }

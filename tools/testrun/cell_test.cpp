@@ -94,8 +94,6 @@ class CellChecker {
   CellChecker(const runtime::CellRun& cell, const vm::RunOutcome& outcome, const std::vector<Expectation>& all,
               std::optional<std::size_t> under, const std::string& file)
       : cell_(cell), outcome_(outcome), all_(all), under_(under), file_(file), own_(cell.size()) {
-    cellEnd_.outcome = outcome;
-    cellEnd_.at = cell.clock();
     for (std::size_t i = 0; i < all.size(); ++i) route(i);
   }
 
@@ -109,6 +107,7 @@ class CellChecker {
       }
   }
 
+  // After the run: every expectation, in the order written.
   std::vector<diag::Diagnostic> check(bool impliedFinished) {
     cellEnd_.outcome = outcome_;
     cellEnd_.at = cell_.clock();
