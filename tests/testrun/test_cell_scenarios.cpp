@@ -269,3 +269,30 @@ TEST_CASE("cell scenarios: a program's own expectations on a cell where the othe
   // 16 instructions of left, 18 of right (their traces: two turns each).
   CHECK(j.at("tests")[0].at("steps") == 34);
 }
+
+TEST_CASE("cell scenarios: the cell's devices and objects, whoever drives them", "[testrun][cell-run]") {
+  const TempDir dir;
+  interlockIn(dir);
+  // A feeder on the right robot's output 1, which rises at 4 s and 8.25 s
+  // (the interlock's timeline): the first block goes in at 4 s, as object
+  // 1 (the cell has no objects of its own); the second is due at 8.25 s,
+  // its place taken by the first (docs/models.md, "Feeders"), so it waits:
+  // 1 fed at the end, 8.5 s.
+  std::string cell = rs::testing::readBytes(dir.file("interlock.rsd"));
+  cell.insert(cell.rfind("END"), "  FEEDER parts block AT 1500 0 0 WHEN right.OUT 1\n");
+  dir.write("interlock.rsd", cell);
+  const std::string spec = dir.write("t.rstest",
+                                     "test: cell interlock.rsd\n"
+                                     "scenario fed by the right robot\n"
+                                     "expect: finished\n"
+                                     "expect: feeder parts count 1\n"
+                                     "expect: object 1 at 1500 0 0\n"
+                                     "expect: object block not held\n"
+                                     "scenario a sensor it lacks\n"
+                                     "expect: sensor eye count 1\n");
+  const CliResult r = runCli({"test", spec});
+  INFO(r.out);
+  CHECK(mentions(r.out, spec + " [fed by the right robot] PASSED (4 expectations, 8.500 s simulated)\n"));
+  CHECK(mentions(r.out, spec + ":8:16: error: the workcell has no sensor 'eye'\n"));
+  CHECK(mentions(r.out, "  hint: the workcell's devices: feeder parts\n"));
+}
