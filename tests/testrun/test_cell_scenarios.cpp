@@ -296,3 +296,28 @@ TEST_CASE("cell scenarios: the cell's devices and objects, whoever drives them",
   CHECK(mentions(r.out, spec + ":8:16: error: the workcell has no sensor 'eye'\n"));
   CHECK(mentions(r.out, "  hint: the workcell's devices: feeder parts\n"));
 }
+
+TEST_CASE("cell scenarios: in a run of one robot, a label names that robot or is an error at it",
+          "[testrun][cell-run]") {
+  const TempDir dir;
+  // Two robots, no PROGRAMs: the program runs on left alone (its `; robot:` line).
+  dir.write("two.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left\n  ROBOT rhino-xr4 AT 3000 750 0 AS right\nEND\n");
+  const std::string program = dir.write("p.rsp",
+                                        "; test: cell two.rsd\n"
+                                        "; robot: left\n"
+                                        "; expect: left.motors F=0\n"        // holds: it never moves
+                                        "; expect: right.motors F=0\n"       // 4
+                                        "; expect: ghost.output 1 off\n"     // 5
+                                        "        END\n");
+  const CliResult r = runCli({"test", program});
+  INFO(r.out);
+  CHECK(r.code == 1);
+  CHECK(mentions(r.out, program + ":4:11: error: robot right runs no program in this test: it has no run to check\n"));
+  CHECK(mentions(r.out, "  hint: the robot with a program: `left`\n"));
+  CHECK(mentions(r.out, program + ":5:11: error: workcell two has no robot labelled `ghost`\n"));
+  CHECK(!mentions(r.out, program + ":3:"));
+  const std::string alone = dir.write("q.rsp", "; expect: arm.output 1 off\n        END\n");
+  const CliResult q = runCli({"test", alone});
+  CHECK(q.code == 1);
+  CHECK(mentions(q.out, alone + ":1:11: error: the run has no workcell: 'arm.' names a robot of one\n"));
+}

@@ -251,6 +251,36 @@ CellCheck made() {
 
 }  // namespace
 
+ParsedExpectations ownRobotOnly(const ParsedExpectations& parsed, const workcell::Workcell* cell,
+                                const std::string& file, std::vector<diag::Diagnostic>& problems) {
+  ParsedExpectations out = parsed;
+  out.expectations.clear();
+  const workcell::PlacedRobot* driven = cell ? cell->drivenRobot() : nullptr;
+  for (const Expectation& e : parsed.expectations) {
+    if (e.robot.empty() || (driven && base::sameName(driven->labelOf(), e.robot))) {
+      out.expectations.push_back(e);
+      continue;
+    }
+    const diag::Pos at{e.pos.line, e.robotCol};
+    if (!cell)
+      problems.push_back({file, at, diag::Severity::Error,
+                          fmt::format("the run has no workcell: '{}.' names a robot of one", base::safeText(e.robot)),
+                          "unknown-robot", "name the cell with 'test: cell CELL'"});
+    else if (cell->robotLabeled(e.robot) != workcell::kNoIndex)
+      problems.push_back({file, at, diag::Severity::Error,
+                          fmt::format("robot {} runs no program in this test: it has no run to check",
+                                      base::safeText(e.robot)),
+                          "unknown-robot",
+                          fmt::format("the robot with a program: `{}`", base::safeText(driven ? driven->labelOf() : ""))});
+    else
+      problems.push_back({file, at, diag::Severity::Error,
+                          fmt::format("workcell {} has no robot labelled `{}`", base::safeText(cell->name),
+                                      base::safeText(e.robot)),
+                          "unknown-robot", fmt::format("the cell's robots are {}", launch::robotLabelsOf(*cell))});
+  }
+  return out;
+}
+
 CellCheck checkCell(const launch::ProgramRequest& request, const ParsedExpectations& parsed,
                     const std::string& settingsFile, const RunnerOptions& options, bool grading, TestResult& r) {
   const std::vector<RobotProgram>& lines = parsed.settings.programs;

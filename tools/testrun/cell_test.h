@@ -27,4 +27,11 @@ struct CellCheck {
 CellCheck checkCell(const launch::ProgramRequest& request, const ParsedExpectations& parsed,
                     const std::string& settingsFile, const RunnerOptions& options, bool grading, TestResult& r);
 
+/// A run of one robot: `parsed` without the expectations whose `LABEL.`
+/// names another robot than the one `cell` drives (each a problem in
+/// `problems`, at the label: a robot without a program, or none of the
+/// cell's; no cell at all).
+ParsedExpectations ownRobotOnly(const ParsedExpectations& parsed, const workcell::Workcell* cell,
+                                const std::string& file, std::vector<diag::Diagnostic>& problems);
+
 }  // namespace rs::testrun

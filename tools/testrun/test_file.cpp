@@ -318,9 +318,12 @@ void check(const std::string& programGiven, const ParsedExpectations& parsed, co
     return;
   }
 
+  // `LABEL.` before an expectation names the robot this run drives, or none.
+  std::vector<diag::Diagnostic> labelProblems;
+  const ParsedExpectations checked = ownRobotOnly(parsed, loaded.cell.get(), settingsFile, labelProblems);
   std::vector<GoldenTrace> traces;
-  if (!openGoldenTraces(parsed, settingsFile, traces, r)) return;
-  const launch::RunRequest run = runRequestOf(parsed.settings, settingsFile, parsed.expectsCollision(), options, grading);
+  if (!openGoldenTraces(checked, settingsFile, traces, r)) return;
+  const launch::RunRequest run = runRequestOf(checked.settings, settingsFile, checked.expectsCollision(), options, grading);
   std::vector<diag::Diagnostic> runProblems;
   std::optional<runtime::RunSpec> spec = launch::prepareRun(loaded, run, runProblems);
   if (!spec) {
@@ -336,7 +339,7 @@ void check(const std::string& programGiven, const ParsedExpectations& parsed, co
   if (options.coverage) counter.emplace(spec->image);
   runtime::Run running(std::move(*spec));
   std::optional<RunWatch> watch;
-  if (RunWatch::needed(parsed.expectations)) watch.emplace(running, parsed.expectations);
+  if (RunWatch::needed(checked.expectations)) watch.emplace(running, checked.expectations);
   if (watch) running.observe(*watch);
   if (counter) running.observe(*counter);
   for (GoldenTrace& t : traces) {
@@ -349,12 +352,13 @@ void check(const std::string& programGiven, const ParsedExpectations& parsed, co
   if (counter) r.coverage = counter->coverage();
   r.simulated = running.rig().clock();
   r.steps = outcome.steps;
-  r.expectations = parsed.expectations.size() + (parsed.statesStatus() ? 0 : 1);
+  r.expectations = parsed.expectations.size() + (checked.statesStatus() ? 0 : 1);
   // An expectation of a scenario file points into it.
-  r.problems = evaluate(running, parsed.expectations, settingsFile, !parsed.statesStatus(), watch ? &*watch : nullptr);
+  r.problems = evaluate(running, checked.expectations, settingsFile, !checked.statesStatus(), watch ? &*watch : nullptr);
   if (std::optional<diag::Diagnostic> w = runtime::gripperWarning(running, program)) r.warnings.push_back(std::move(*w));
-  if (!parsed.statesStatus() && !r.problems.empty() && !outcome.ok()) r.problems.front().file = program;
-  hintLimit(outcome, parsed.settings, grading, r);
+  if (!checked.statesStatus() && !r.problems.empty() && !outcome.ok()) r.problems.front().file = program;
+  hintLimit(outcome, checked.settings, grading, r);
+  r.problems.insert(r.problems.end(), labelProblems.begin(), labelProblems.end());
   for (const GoldenTrace& t : traces) judgeTrace(t, again ? &*again : nullptr, settingsFile, options, r);
   r.status = r.problems.empty() ? TestStatus::Passed : TestStatus::Failed;
 }
