@@ -68,22 +68,29 @@ TEST_CASE("cell scenarios: program LABEL FILE lines, shared and a scenario's own
   CHECK(b.programs[1].file == "l2.rsp");
   CHECK(f.scenarios[1].parsed.expectations.at(0).robot == "right");
 
+  // An order of two robots' lines: each side's robot.
+  const rs::testrun::ScenarioFile order = rs::testrun::parseScenarioFile(rs::diag::SourceFile(
+      "o.rstest", "scenario a\nexpect: left.output 1 on before right.input 1 on\n"));
+  REQUIRE(order.errors.empty());
+  const rs::testrun::Expectation& o = order.scenarios.at(0).parsed.expectations.at(0);
+  CHECK(o.robot == "left");
+  CHECK(o.secondRobot == "right");
+  CHECK(o.secondRobotCol == 33);  // "right." after 'before'
+  CHECK(!o.second.output);
+
   // Every bad line at once: a robot's program twice, a prefix on the
-  // cell's own things, `stopped` without a robot, an order of two robots.
+  // cell's own things, `stopped` without a robot.
   const rs::testrun::ScenarioFile bad = rs::testrun::parseScenarioFile(rs::diag::SourceFile(
       "b.rstest",
       "program left l.rsp\nprogram Left m.rsp\nscenario a\nexpect: left.object block at 1 2 3\nexpect: stopped\n"
-      "expect: left.output 1 on before right.input 1 on\nexpect: feeder.sensor eye count 2\n"));
-  REQUIRE(bad.errors.size() == 5);
+      "expect: feeder.sensor eye count 2\n"));
+  REQUIRE(bad.errors.size() == 4);
   CHECK(bad.errors[0].pos == rs::diag::Pos{2, 9});
   CHECK(bad.errors[0].message == "robot Left's program is named twice");
   CHECK(bad.errors[1].pos == rs::diag::Pos{4, 9});
   CHECK(bad.errors[1].message == "an object's place is the cell's, not a robot's: write it without 'left.'");
   CHECK(bad.errors[2].pos == rs::diag::Pos{5, 1});
-  CHECK(bad.errors[3].pos == rs::diag::Pos{6, 33});  // "right." after 'before'
-  CHECK(bad.errors[3].message ==
-        "both sides of 'before' are left's lines: an order between two robots' lines is not checked yet");
-  CHECK(bad.errors[4].message == "a device's count is the cell's, not a robot's: write it without 'feeder.'");
+  CHECK(bad.errors[3].message == "a device's count is the cell's, not a robot's: write it without 'feeder.'");
 }
 
 TEST_CASE("cell scenarios: the two-robot examples' scenarios pass, worked out by hand", "[testrun][cell-run][examples]") {
@@ -96,7 +103,7 @@ TEST_CASE("cell scenarios: the two-robot examples' scenarios pass, worked out by
                               dir.file("r.xml")});
   INFO(r.out << r.err);
   CHECK(r.code == 0);
-  CHECK(mentions(r.out, folder + "interlock.rstest [they take turns] PASSED (18 expectations, 8.500 s simulated)\n"));
+  CHECK(mentions(r.out, folder + "interlock.rstest [they take turns] PASSED (19 expectations, 8.500 s simulated)\n"));
   CHECK(mentions(r.out, folder + "interlock.rstest [both wait for the other] PASSED (5 expectations, 0.000 s simulated)\n"));
   CHECK(mentions(r.out, folder + "handover.rstest [the block reaches the packer's corner] PASSED (8 expectations, "));
   // JUnit: one testcase per scenario.
@@ -320,4 +327,33 @@ TEST_CASE("cell scenarios: in a run of one robot, a label names that robot or is
   const CliResult q = runCli({"test", alone});
   CHECK(q.code == 1);
   CHECK(mentions(q.out, alone + ":1:11: error: the run has no workcell: 'arm.' names a robot of one\n"));
+}
+
+TEST_CASE("cell scenarios: one robot's line before another robot's", "[testrun][cell-run]") {
+  const TempDir dir;
+  interlockIn(dir);
+  // The interlock's timeline: left's output 1 ON at 2 s, right's input 1
+  // ON at 2 s too (a wire without AFTER), right's output 1 ON at 4 s and
+  // OFF at 4.25 s, left's input 1 ON at 4.25 s and OFF at 4.5 s.
+  const std::string spec = dir.write("t.rstest",
+                                     "test: cell interlock.rsd\n"
+                                     "scenario a\n"
+                                     "expect: left.output 1 on before right.output 1 on\n"    // 3: holds
+                                     "expect: right.output 1 on before left.output 1 on\n"    // 4
+                                     "expect: left.output 1 on before right.input 1 on\n"     // 5
+                                     "expect: right.output 1 off before left.input 1 off\n"   // 6: holds
+                                     "expect: left.output 2 on before right.output 1 on\n"    // 7
+                                     "expect: left.output 1 on before ghost.output 1 on\n");  // 8
+  const CliResult r = runCli({"test", spec});
+  INFO(r.out);
+  CHECK(r.code == 1);
+  CHECK(mentions(r.out, spec + ":4:1: error: expected right.output 1 ON before left.output 1 ON; left.output 1 ON came "
+                               "first, at 2.000 s (right.output 1 ON at 4.000 s)\n"));
+  CHECK(mentions(r.out, spec + ":5:1: error: expected left.output 1 ON before right.input 1 ON; right.input 1 ON came at "
+                               "the same time, at 2.000 s (left.output 1 ON at 2.000 s)\n"));
+  CHECK(mentions(r.out, spec + ":7:1: error: expected left.output 2 ON before right.output 1 ON; left.output 2 ON never "
+                               "happened (the run ended at 8.500 s)\n"));
+  CHECK(mentions(r.out, spec + ":8:33: error: workcell interlock has no robot labelled `ghost`\n"));
+  CHECK(!mentions(r.out, spec + ":3:"));
+  CHECK(!mentions(r.out, spec + ":6:"));
 }

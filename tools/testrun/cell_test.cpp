@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "base/ascii.h"
+#include "base/seconds.h"
 #include "base/text.h"
 #include "launch/cell_programs.h"
 #include "launch/robot_choice.h"
@@ -88,23 +89,35 @@ void placeAtLines(std::vector<diag::Diagnostic>& diags, const std::vector<RobotP
   }
 }
 
+// An order between two robots' lines: the expectation, each robot and
+// the place of its event in its watch.
+struct CrossOrder {
+  std::size_t expectation, first, firstAt, second, secondAt;
+};
+
 // Checks the expectations against the finished cell run.
 class CellChecker {
  public:
   CellChecker(const runtime::CellRun& cell, const vm::RunOutcome& outcome, const std::vector<Expectation>& all,
               std::optional<std::size_t> under, const std::string& file)
-      : cell_(cell), outcome_(outcome), all_(all), under_(under), file_(file), own_(cell.size()) {
+      : cell_(cell), outcome_(outcome), all_(all), under_(under), file_(file), own_(cell.size()), events_(cell.size()) {
     for (std::size_t i = 0; i < all.size(); ++i) route(i);
   }
 
   // Watches each robot's run for its own expectations (before the run).
   void watch(runtime::CellRun& cell) {
     watches_.resize(cell.size());
-    for (std::size_t p = 0; p < cell.size(); ++p)
+    eventWatches_.resize(cell.size());
+    for (std::size_t p = 0; p < cell.size(); ++p) {
       if (RunWatch::needed(own_[p])) {
         watches_[p] = std::make_unique<RunWatch>(cell.robot(p), own_[p]);
         cell.observe(p, *watches_[p]);
       }
+      if (!events_[p].empty()) {
+        eventWatches_[p] = std::make_unique<RunWatch>(cell.robot(p), events_[p]);
+        cell.observe(p, *eventWatches_[p]);
+      }
+    }
   }
 
   // After the run: every expectation, in the order written.
@@ -115,11 +128,13 @@ class CellChecker {
     for (std::size_t p = 0; p < cell_.size(); ++p) {
       const RunEnd end = robotEnd(cell_, p, outcome_);
       if (watches_.size() > p && watches_[p]) watches_[p]->finish(end.outcome);
+      if (eventWatches_.size() > p && eventWatches_[p]) eventWatches_[p]->finish(end.outcome);
       const std::vector<diag::Diagnostic> said =
           evaluate(cell_.robot(p), end, own_[p], file_, false, watches_.size() > p ? watches_[p].get() : nullptr);
       out.insert(out.end(), said.begin(), said.end());
     }
     for (const Expectation& e : cellOwn_) cellExpectation(e, out);
+    for (const CrossOrder& c : crosses_) crossOrder(c, out);
     std::stable_sort(out.begin(), out.end(),
                      [](const diag::Diagnostic& a, const diag::Diagnostic& b) {
                        return a.pos.line != b.pos.line ? a.pos.line < b.pos.line : a.pos.col < b.pos.col;
@@ -141,9 +156,8 @@ class CellChecker {
     }
     std::optional<std::size_t> robot;
     if (!e.robot.empty()) {
-      for (std::size_t p = 0; p < cell_.size() && !robot; ++p)
-        if (base::sameName(cell_.label(p), e.robot)) robot = p;
-      if (!robot) return unknownRobot(e);
+      robot = robotOf(e, e.robot, e.robotCol);
+      if (!robot) return;
     } else if (robotsOwn(e.kind)) {
       if (!under_) {
         problems_.push_back({file_, e.pos, diag::Severity::Error,
@@ -158,17 +172,40 @@ class CellChecker {
     if (!robot) return cellOwn_.push_back(e);
     Expectation mine = e;
     mine.robot.clear();
+    if (!e.secondRobot.empty()) {
+      const std::optional<std::size_t> second = robotOf(e, e.secondRobot, e.secondRobotCol);
+      if (!second) return;
+      mine.secondRobot.clear();
+      if (*second != *robot) {
+        // Each robot's watch gives when its own event first happened.
+        Expectation first = mine, then = mine;
+        first.second = first.first;
+        then.first = then.second;
+        crosses_.push_back({i, *robot, events_[*robot].size(), *second, events_[*second].size()});
+        events_[*robot].push_back(std::move(first));
+        events_[*second].push_back(std::move(then));
+        return;
+      }
+    }
     own_[*robot].push_back(std::move(mine));
   }
 
-  void unknownRobot(const Expectation& e) {
+  // The program of robot `label`, or a problem at its column.
+  std::optional<std::size_t> robotOf(const Expectation& e, const std::string& label, std::uint32_t col) {
+    for (std::size_t p = 0; p < cell_.size(); ++p)
+      if (base::sameName(cell_.label(p), label)) return p;
+    unknownRobot(e, label, col);
+    return std::nullopt;
+  }
+
+  void unknownRobot(const Expectation& e, const std::string& label, std::uint32_t col) {
     const runtime::CellRun& c = cell_;
-    const bool inCell = c.cell().robotLabeled(e.robot) != workcell::kNoIndex;
-    diag::Diagnostic d{file_, {e.pos.line, e.robotCol}, diag::Severity::Error,
+    const bool inCell = c.cell().robotLabeled(label) != workcell::kNoIndex;
+    diag::Diagnostic d{file_, {e.pos.line, col}, diag::Severity::Error,
                        inCell ? fmt::format("robot {} runs no program in this scenario: it has no run to check",
-                                            base::safeText(e.robot))
+                                            base::safeText(label))
                               : fmt::format("workcell {} has no robot labelled `{}`", base::safeText(c.cell().name),
-                                            base::safeText(e.robot)),
+                                            base::safeText(label)),
                        "unknown-robot",
                        inCell ? fmt::format("the robots with a program: {}", runningLabels(c))
                               : fmt::format("the cell's robots are {}", launch::robotLabelsOf(c.cell()))};
@@ -201,6 +238,27 @@ class CellChecker {
     out.insert(out.end(), first.begin(), first.end());
   }
 
+  // `left.output 1 on before right.input 1 on`: each robot's event when it first happened.
+  void crossOrder(const CrossOrder& c, std::vector<diag::Diagnostic>& out) const {
+    const Expectation& e = all_[c.expectation];
+    const std::optional<vm::Micros> a = eventWatches_[c.first]->answer(c.firstAt).first;
+    const std::optional<vm::Micros> b = eventWatches_[c.second]->answer(c.secondAt).first;
+    const auto text = [&](std::size_t p, const LineEvent& ev) {
+      return fmt::format("{}.{} {} {}", base::safeText(cell_.label(p)), ev.output ? "output" : "input", ev.number,
+                         ev.on ? "ON" : "OFF");
+    };
+    const std::string first = text(c.first, e.first), second = text(c.second, e.second);
+    const std::string want = fmt::format("expected {} before {}", first, second);
+    if (!a)
+      out.push_back({file_, e.pos, diag::Severity::Error,
+                     fmt::format("{}; {} never happened (the run ended at {} s)", want, first,
+                                 base::formatSeconds(cell_.clock()))});
+    else if (b && *b <= *a)
+      out.push_back({file_, e.pos, diag::Severity::Error,
+                     fmt::format("{}; {} came {}, at {} s ({} at {} s)", want, second, *b == *a ? "at the same time" : "first",
+                                 base::formatSeconds(*b), first, base::formatSeconds(*a))});
+  }
+
   // A scenario that states no end must finish: else a failure at the line
   // of the robot that stopped the cell (or of the first still running).
   diag::Diagnostic impliedEnd() const {
@@ -226,6 +284,9 @@ class CellChecker {
   std::vector<Expectation> cellOwn_;
   std::vector<diag::Diagnostic> problems_;  // found before the run: a robot that is not there
   std::vector<std::unique_ptr<RunWatch>> watches_;
+  std::vector<CrossOrder> crosses_;
+  std::vector<std::vector<Expectation>> events_;  // per program: the events of crosses_ it watches
+  std::vector<std::unique_ptr<RunWatch>> eventWatches_;
 };
 
 // Every text a problem may point into: the programs, and (outside
@@ -256,26 +317,31 @@ ParsedExpectations ownRobotOnly(const ParsedExpectations& parsed, const workcell
   ParsedExpectations out = parsed;
   out.expectations.clear();
   const workcell::PlacedRobot* driven = cell ? cell->drivenRobot() : nullptr;
+  const auto ours = [&](const std::string& label) {
+    return label.empty() || (driven && base::sameName(driven->labelOf(), label));
+  };
   for (const Expectation& e : parsed.expectations) {
-    if (e.robot.empty() || (driven && base::sameName(driven->labelOf(), e.robot))) {
+    if (ours(e.robot) && ours(e.secondRobot)) {
       out.expectations.push_back(e);
       continue;
     }
-    const diag::Pos at{e.pos.line, e.robotCol};
+    const bool second = ours(e.robot);
+    const std::string& label = second ? e.secondRobot : e.robot;
+    const diag::Pos at{e.pos.line, second ? e.secondRobotCol : e.robotCol};
     if (!cell)
       problems.push_back({file, at, diag::Severity::Error,
-                          fmt::format("the run has no workcell: '{}.' names a robot of one", base::safeText(e.robot)),
+                          fmt::format("the run has no workcell: '{}.' names a robot of one", base::safeText(label)),
                           "unknown-robot", "name the cell with 'test: cell CELL'"});
-    else if (cell->robotLabeled(e.robot) != workcell::kNoIndex)
+    else if (cell->robotLabeled(label) != workcell::kNoIndex)
       problems.push_back({file, at, diag::Severity::Error,
                           fmt::format("robot {} runs no program in this test: it has no run to check",
-                                      base::safeText(e.robot)),
+                                      base::safeText(label)),
                           "unknown-robot",
                           fmt::format("the robot with a program: `{}`", base::safeText(driven ? driven->labelOf() : ""))});
     else
       problems.push_back({file, at, diag::Severity::Error,
                           fmt::format("workcell {} has no robot labelled `{}`", base::safeText(cell->name),
-                                      base::safeText(e.robot)),
+                                      base::safeText(label)),
                           "unknown-robot", fmt::format("the cell's robots are {}", launch::robotLabelsOf(*cell))});
   }
   return out;

@@ -258,11 +258,11 @@ bool subject(LineReader& r, Expectation& e) {
     if (r.accept("before")) {
       e.kind = ExpectKind::Order;
       e.first = {output, e.number, e.on};
-      // Both events are one robot's (the order of two robots' lines is not watched yet).
-      if (const std::optional<Word> other = r.robotPrefix(); other && !base::sameName(other->text, e.robot))
-        return r.failAt(other->col, fmt::format("both sides of 'before' are {}'s lines: an order between two "
-                                                "robots' lines is not checked yet",
-                                                e.robot.empty() ? std::string("one robot") : e.robot));
+      // `before right.output 1 on`: another robot's line, in a cell of several.
+      if (const std::optional<Word> other = r.robotPrefix()) {
+        e.secondRobot = other->text;
+        e.secondRobotCol = other->col;
+      }
       const bool secondOutput = r.accept("output");
       if (!secondOutput && !r.keyword("input")) return false;
       std::int64_t m = 0;

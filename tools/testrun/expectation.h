@@ -99,6 +99,10 @@ struct Expectation {
   /// of several robots"); empty: the program's robot, or the cell as a whole.
   std::string robot;
   std::uint32_t robotCol = 0;  ///< the column of the label
+  /// Order: `before right.output 1 on`, the robot of the second event
+  /// (empty: the first's).
+  std::string secondRobot;
+  std::uint32_t secondRobotCol = 0;
   /// Status `LABEL.stopped`: the robot was stopped by another robot's
   /// failure (the cell's emergency stop), not by its own end.
   bool stopped = false;
