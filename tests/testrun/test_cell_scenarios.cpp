@@ -357,3 +357,33 @@ TEST_CASE("cell scenarios: one robot's line before another robot's", "[testrun][
   CHECK(!mentions(r.out, spec + ":3:"));
   CHECK(!mentions(r.out, spec + ":6:"));
 }
+
+TEST_CASE("cell scenarios: a cell's golden trace is what run --cell --trace prints, --update writes it",
+          "[testrun][cell-run]") {
+  const TempDir dir;
+  interlockIn(dir);
+  std::filesystem::create_directory(dir.file("golden"));
+  const std::string spec = dir.write("t.rstest", "test: cell interlock.rsd\nscenario a\nexpect: finished\n"
+                                                 "expect: trace golden/interlock.trace\n");
+  const CliResult missing = runCli({"test", spec});
+  CHECK(missing.code == 1);
+  CHECK(mentions(missing.out, "  hint: robotsim test --update writes it from the run\n"));
+  const CliResult update = runCli({"test", spec, "--update"});
+  INFO(update.out);
+  CHECK(update.code == 0);
+  // The golden file: every robot's lines, labelled, as `run --cell --trace`
+  // prints them before its summary ("run of cell ..." and what follows).
+  const CliResult run = runCli({"run", "--cell", dir.file("interlock.rsd"), "--trace"});
+  const std::string golden = rs::testing::readBytes(dir.file("golden/interlock.trace"));
+  REQUIRE(run.out.find("run of cell interlock:") != std::string::npos);
+  CHECK(golden == run.out.substr(0, run.out.find("run of cell interlock:")));
+  CHECK(mentions(golden, "right:      4.250      7     10  OUTSIG  1 OFF"));  // right answers at 4.25 s
+  CHECK(runCli({"test", spec}).code == 0);
+  // A line changed: a failure at the first line that differs.
+  std::string changed = golden;
+  changed.replace(changed.find("right:      4.250"), 17, "right:      4.500");
+  dir.write("golden/interlock.trace", changed);
+  const CliResult differs = runCli({"test", spec});
+  CHECK(differs.code == 1);
+  CHECK(mentions(differs.out, "error: the trace differs from "));
+}

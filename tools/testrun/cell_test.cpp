@@ -14,6 +14,8 @@
 #include "launch/run_request.h"
 #include "runtime/run/cell_run.h"
 #include "runtime/run/empty_close.h"
+#include "runtime/run/labelled_trace.h"
+#include "tools/testrun/golden_check.h"
 #include "tools/testrun/evaluate.h"
 #include "tools/testrun/run_watch.h"
 #include "tools/testrun/test_steps.h"
@@ -147,13 +149,7 @@ class CellChecker {
   // Which robot's run answers expectation i, or the cell.
   void route(std::size_t i) {
     const Expectation& e = all_[i];
-    if (e.kind == ExpectKind::CompileError) return;
-    if (e.kind == ExpectKind::Trace) {
-      problems_.push_back({file_, e.pos, diag::Severity::Error,
-                           "a golden trace of a cell of several robots is not compared yet", {},
-                           "check the robots' lines with 'LABEL.output N on at T' and the like instead"});
-      return;
-    }
+    if (e.kind == ExpectKind::CompileError || e.kind == ExpectKind::Trace) return;  // not the run's alone
     std::optional<std::size_t> robot;
     if (!e.robot.empty()) {
       robot = robotOf(e, e.robot, e.robotCol);
@@ -304,6 +300,18 @@ void keepSources(const launch::CellPrograms& programs, bool grading, TestResult&
     if (const diag::SourceFile* s = programs.sourceOf(d.file)) keep(*s);
 }
 
+// Every robot's trace into `out`, each line begun with its label, as
+// `run --cell --trace` prints them.
+void labelTraces(runtime::CellRun& cell, std::ostream& out, std::vector<std::unique_ptr<vm::StepObserver>>& kept,
+                 std::vector<runtime::LabelledTrace*>& writers) {
+  for (std::size_t p = 0; p < cell.size(); ++p) {
+    auto w = std::make_unique<runtime::LabelledTrace>(out, runtime::TraceFormat::Text, cell.robot(p), cell.label(p));
+    writers.push_back(w.get());
+    cell.observe(p, *w);
+    kept.push_back(std::move(w));
+  }
+}
+
 CellCheck made() {
   CellCheck c;
   c.done = true;
@@ -448,11 +456,19 @@ CellCheck checkCell(const launch::ProgramRequest& request, const ParsedExpectati
     return made();
   }
   if (grading) spec->limits.maxStepsPerInstant = kGradingMaxStepsAtOneInstant;
+  std::vector<GoldenTrace> traces;
+  if (!openGoldenTraces(parsed, settingsFile, traces, r)) return made();
+  // --update may make the run again, for its trace.
+  std::optional<runtime::CellRunSpec> again;
+  if (options.update && !traces.empty()) again = *spec;
   runtime::CellRun cell(std::move(*spec));
   vm::RunOutcome outcome;
   CellChecker checker(cell, outcome, parsed.expectations, under, settingsFile);
   checker.watch(cell);
+  std::vector<runtime::LabelledTrace*> writers;
+  for (GoldenTrace& t : traces) labelTraces(cell, *t.stream, t.writers, writers);
   outcome = cell.runToEnd();
+  for (runtime::LabelledTrace* w : writers) w->finish();
   r.ran = true;
   r.simulated = cell.clock();
   r.steps = 0;
@@ -463,6 +479,16 @@ CellCheck checkCell(const launch::ProgramRequest& request, const ParsedExpectati
     if (std::optional<diag::Diagnostic> w = runtime::gripperWarning(cell.robot(p), programs.files[p]))
       r.warnings.push_back(std::move(*w));
   hintLimit(outcome, parsed.settings, grading, r);
+  const TraceRerun rerun = [&again](std::ostream& out, vm::StepObserver& stop) {
+    runtime::CellRun run(*again);
+    std::vector<std::unique_ptr<vm::StepObserver>> kept;
+    std::vector<runtime::LabelledTrace*> labelled;
+    labelTraces(run, out, kept, labelled);
+    for (std::size_t p = 0; p < run.size(); ++p) run.observe(p, stop);
+    run.runToEnd();
+    for (runtime::LabelledTrace* w : labelled) w->finish();
+  };
+  for (const GoldenTrace& t : traces) judgeTrace(t, again ? &rerun : nullptr, settingsFile, options, r);
   r.status = r.problems.empty() ? TestStatus::Passed : TestStatus::Failed;
   return made();
 }

@@ -16,6 +16,7 @@
 #include "runtime/run/trace.h"
 #include "tools/testrun/evaluate.h"
 #include "tools/testrun/expectation.h"
+#include "tools/testrun/golden_check.h"
 #include "tools/testrun/golden_trace.h"
 #include "tools/testrun/run_watch.h"
 #include "tools/testrun/scenario_file.h"
@@ -100,129 +101,6 @@ void matchCompileErrors(const std::vector<Expectation>& expectations, const std:
     r.problems.push_back(std::move(d));
   }
 }
-
-namespace {
-
-// One `expect: trace FILE` of a test: its golden file, read before the run,
-// and the comparer the run's trace is written into.
-struct GoldenTrace {
-  const Expectation* expectation = nullptr;
-  std::string path;
-  base::FileRead read;
-  std::unique_ptr<TraceComparer> comparer;
-  std::unique_ptr<std::ostream> stream;
-  std::unique_ptr<vm::StepObserver> writer;
-};
-
-// The golden files of a test's trace expectations, each inside the test's
-// folder; false (the test cannot start) when one leads out of it.
-bool openGoldenTraces(const ParsedExpectations& parsed, const std::string& settingsFile,
-                      std::vector<GoldenTrace>& traces, TestResult& r) {
-  for (const Expectation& e : parsed.expectations) {
-    if (e.kind != ExpectKind::Trace) continue;
-    const diag::Result<std::string> golden = goldenFile(settingsFile, e.name);
-    if (!golden) {
-      r.status = TestStatus::Error;
-      r.problems.push_back({settingsFile, e.pos, diag::Severity::Error, golden.failure().message, {},
-                            "golden traces live under the folder of the test that names them"});
-      continue;
-    }
-    GoldenTrace& t = traces.emplace_back();
-    t.expectation = &e;
-    t.path = *golden;
-    t.read = base::readFile(*golden, launch::kMaxInputBytes);
-    t.comparer = std::make_unique<TraceComparer>(t.read.bytes ? std::string_view(*t.read.bytes) : std::string_view());
-    t.stream = std::make_unique<std::ostream>(t.comparer.get());
-  }
-  return r.status != TestStatus::Error;
-}
-
-// A stream buffer that hands at most `limit` bytes on, then swallows the
-// rest and says so: a golden trace is never larger than a test can read.
-class CappedSink final : public std::streambuf {
- public:
-  CappedSink(std::streambuf& to, std::size_t limit) : to_(to), left_(limit) {}
-  bool over() const { return over_; }
-
- protected:
-  std::streamsize xsputn(const char* s, std::streamsize n) override {
-    if (over_ || static_cast<std::size_t>(n) > left_) return over_ = true, n;
-    left_ -= static_cast<std::size_t>(n);
-    return to_.sputn(s, n);
-  }
-  int_type overflow(int_type c) override {
-    if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
-    const char ch = traits_type::to_char_type(c);
-    xsputn(&ch, 1);
-    return c;
-  }
-
- private:
-  std::streambuf& to_;
-  std::size_t left_;
-  bool over_ = false;
-};
-
-// Pauses a run (which then ends early) once its trace is over the cap.
-class StopWhenOver final : public vm::StepObserver {
- public:
-  explicit StopWhenOver(const CappedSink& sink) : sink_(sink) {}
-  bool afterStep(const vm::Interpreter&, std::uint32_t) override { return sink_.over(); }
-
- private:
-  const CappedSink& sink_;
-};
-
-// --update: the run is made again (runs are deterministic, so its trace is
-// the one compared) and its trace streamed into the golden file, which is
-// written whole or not at all.
-void rewriteGoldenTrace(const GoldenTrace& t, const runtime::RunSpec& spec, const std::string& settingsFile,
-                        TestResult& r) {
-  bool tooLarge = false;
-  std::string error;
-  const bool written = base::writeFileAtomically(
-      t.path,
-      [&](std::ostream& file) {
-        CappedSink sink(*file.rdbuf(), launch::kMaxInputBytes);
-        std::ostream out(&sink);
-        runtime::Run again(spec);
-        runtime::TraceWriter writer(out, runtime::TraceFormat::Text, again);
-        StopWhenOver stop(sink);
-        again.observe(writer);
-        again.observe(stop);
-        again.runToEnd();
-        tooLarge = sink.over();
-        return !tooLarge;
-      },
-      error);
-  if (written) return r.updated.push_back(t.path);
-  r.problems.push_back({settingsFile, t.expectation->pos, diag::Severity::Error,
-                        tooLarge ? fmt::format("cannot write {}: the trace is over {}, the most a golden trace may "
-                                               "hold",
-                                               t.path, base::sizeText(launch::kMaxInputBytes))
-                                 : fmt::format("cannot write {}: {}", t.path, error)});
-}
-
-// `expect: trace FILE`: the run's text trace must be the file's bytes;
-// --update writes the file instead when it differs or is missing.
-void judgeTrace(const GoldenTrace& t, const runtime::RunSpec* again, const std::string& settingsFile,
-                const RunnerOptions& options, TestResult& r) {
-  if (t.read.bytes && t.comparer->same()) return;
-  if (options.update && again) return rewriteGoldenTrace(t, *again, settingsFile, r);
-  const Expectation& e = *t.expectation;
-  if (!t.read.bytes) {
-    r.problems.push_back({settingsFile, e.pos, diag::Severity::Error,
-                          fmt::format("cannot read the golden trace {}: {}", t.path, t.read.error), {},
-                          "robotsim test --update writes it from the run"});
-    return;
-  }
-  r.problems.push_back({settingsFile, e.pos, diag::Severity::Error,
-                        fmt::format("the trace differs from {} at its line {}: expected '{}', got '{}'", t.path,
-                                    t.comparer->line(), t.comparer->expected(), t.comparer->got()),
-                        {}, "if the new run is right, robotsim test --update rewrites the golden trace"});
-}
-
-}  // namespace
 
 // How to get past a stop by a limit: a loop that never lets the clock move
 // is the program's to fix; the grading limits (not those its scenario
@@ -343,8 +221,8 @@ void check(const std::string& programGiven, const ParsedExpectations& parsed, co
   if (watch) running.observe(*watch);
   if (counter) running.observe(*counter);
   for (GoldenTrace& t : traces) {
-    t.writer = std::make_unique<runtime::TraceWriter>(*t.stream, runtime::TraceFormat::Text, running);
-    running.observe(*t.writer);
+    t.writers.push_back(std::make_unique<runtime::TraceWriter>(*t.stream, runtime::TraceFormat::Text, running));
+    running.observe(*t.writers.back());
   }
   const vm::RunOutcome outcome = running.runToEnd();
   r.ran = true;
@@ -359,7 +237,15 @@ void check(const std::string& programGiven, const ParsedExpectations& parsed, co
   if (!checked.statesStatus() && !r.problems.empty() && !outcome.ok()) r.problems.front().file = program;
   hintLimit(outcome, checked.settings, grading, r);
   r.problems.insert(r.problems.end(), labelProblems.begin(), labelProblems.end());
-  for (const GoldenTrace& t : traces) judgeTrace(t, again ? &*again : nullptr, settingsFile, options, r);
+  // --update: the same run again, its trace into the golden file.
+  const TraceRerun rerun = [&again](std::ostream& out, vm::StepObserver& stop) {
+    runtime::Run run(*again);
+    runtime::TraceWriter writer(out, runtime::TraceFormat::Text, run);
+    run.observe(writer);
+    run.observe(stop);
+    run.runToEnd();
+  };
+  for (const GoldenTrace& t : traces) judgeTrace(t, again ? &rerun : nullptr, settingsFile, options, r);
   r.status = r.problems.empty() ? TestStatus::Passed : TestStatus::Failed;
 }
 
