@@ -184,18 +184,17 @@ vm::RunOutcome CellRun::runUntil(const CellUntil& until) {
       std::vector<vm::IoMask> inputsBefore;
       for (const auto& r : runs_) inputsBefore.push_back(r->rig().machine().inputs());
       if (vm::Status s = advanceCell(clock()); !s) return over(cellStops(vm::StopReason::RuntimeError, s.message));
+      // A wire without AFTER may have answered a robot at this very instant:
+      // it runs again now, before the clock moves on to anything else due.
+      bool changed = false;
+      for (std::size_t p = 0; p < runs_.size(); ++p) changed |= runs_[p]->rig().machine().inputs() != inputsBefore[p];
+      if (changed) continue;
       allForever_ = true;
       for (std::size_t p = 0; p < runs_.size(); ++p) {
         if (ends_[p] != RobotEnd::Running) continue;
         if (wakeAt_[p] != vm::Status::kNever) runs_[p]->rig().wakeRobotAt(wakeAt_[p]), allForever_ = false;
       }
-      if (!shared_.clock().nextTime()) {
-        // A wire without AFTER may have answered a robot at this very instant.
-        bool changed = false;
-        for (std::size_t p = 0; p < runs_.size(); ++p) changed |= runs_[p]->rig().machine().inputs() != inputsBefore[p];
-        if (changed) continue;
-        return over(cellStops(vm::StopReason::Deadlock, deadlockMessage()));
-      }
+      if (!shared_.clock().nextTime()) return over(cellStops(vm::StopReason::Deadlock, deadlockMessage()));
       phase_ = Phase::Due;
     }
     const vm::Micros next = *shared_.clock().nextTime();

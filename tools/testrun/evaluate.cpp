@@ -23,47 +23,56 @@ std::string onOff(bool on) { return on ? "ON" : "OFF"; }
 
 class Checker {
  public:
-  Checker(const runtime::Run& run, const std::string& file)
-      : run_(run), image_(*run.spec().image), outcome_(*run.outcome()), file_(file) {}
+  Checker(const runtime::Run& run, const RunEnd& end, const std::string& file)
+      : run_(run), image_(*run.spec().image), outcome_(end.outcome), end_(end), file_(file) {}
 
   std::vector<diag::Diagnostic> failures;
 
-  // Where the run ended, for messages: "at line 9 (4.175 s)".
+  // Where the run ended, for messages: "at line 9, 4.175 s" (a cell's: "at 4.175 s").
   std::string ending() const {
-    return fmt::format("at line {}, {}", image_.lines[outcome_.index], seconds(run_.rig().clock()));
+    if (!end_.line) return "at " + seconds(end_.at);
+    return fmt::format("at line {}, {}", *end_.line, seconds(end_.at));
   }
 
+  // A robot's failures say whose they are.
+  std::string said(std::string message) const {
+    return end_.robot.empty() ? message : fmt::format("robot {}: {}", base::safeText(end_.robot), message);
+  }
   void fail(const Expectation& e, std::string message) {
-    failures.push_back({file_, e.pos, diag::Severity::Error, std::move(message)});
+    failures.push_back({file_, e.pos, diag::Severity::Error, said(std::move(message))});
   }
   // At the column of the expectation's motor term `i` (E=100), where it was read from text.
   void failAtMotor(const Expectation& e, std::size_t i, std::string message) {
     diag::Pos pos = e.pos;
     if (i < e.motorCols.size()) pos.col = e.motorCols[i];
-    failures.push_back({file_, pos, diag::Severity::Error, std::move(message)});
+    failures.push_back({file_, pos, diag::Severity::Error, said(std::move(message))});
   }
 
   void status(const Expectation& e) {
-    const bool reasonOk = outcome_.reason == e.reason;
-    const bool lineOk = e.line == 0 || image_.lines[outcome_.index] == e.line;
+    if (e.line && !end_.line)
+      return fail(e, fmt::format("a cell of several robots ends at no one line: say whose, as in "
+                                 "'LABEL.{} at line {}'",
+                                 e.stopped ? "stopped" : vm::stopReasonName(e.reason), e.line));
+    const bool reasonOk = e.stopped ? end_.stopped : !end_.stopped && outcome_.reason == e.reason;
+    const bool lineOk = e.line == 0 || *end_.line == e.line;
     if (reasonOk && lineOk) return;
-    std::string want(vm::stopReasonName(e.reason));
+    std::string want(e.stopped ? "stopped" : vm::stopReasonName(e.reason));
     if (e.line) want += fmt::format(" at line {}", e.line);
-    std::string got(vm::stopReasonName(outcome_.reason));
+    std::string got(end_.stopped ? "stopped" : vm::stopReasonName(outcome_.reason));
     got += " " + ending();
     if (!outcome_.message.empty()) got += ": " + outcome_.message;
     fail(e, fmt::format("expected the run to end: {}; it ended: {}", want, got));
   }
 
   void time(const Expectation& e) {
-    const vm::Micros t = run_.rig().clock();
+    const vm::Micros t = end_.at;
     const bool ok = e.compare == Compare::AtMost    ? t <= e.micros
                     : e.compare == Compare::AtLeast ? t >= e.micros
                                                     : t == e.micros;
     if (ok) return;
     const std::string_view op = e.compare == Compare::AtMost ? "<=" : e.compare == Compare::AtLeast ? ">=" : "=";
-    fail(e, fmt::format("expected the run's simulated time {} {}; it ended at line {}, {}", op, exactly(e.micros),
-                        image_.lines[outcome_.index], exactly(t)));
+    fail(e, fmt::format("expected the run's simulated time {} {}; it ended {}{}", op, exactly(e.micros),
+                        end_.line ? fmt::format("at line {}, ", *end_.line) : "at ", exactly(t)));
   }
 
   void motors(const Expectation& e) {
@@ -314,6 +323,7 @@ class Checker {
       for (const auto& c : cell.conveyors) add("conveyor", c.name);
       for (const auto& f : cell.feeders) add("feeder", f.name);
       for (const auto& s : cell.sinks) add("sink", s.name);
+      bad.message = said(std::move(bad.message));
       bad.hint = list.empty() ? fmt::format("the workcell {} has no devices", base::safeText(run_.rig().cell()->name))
                               : "the workcell's devices: " + list;
       failures.push_back(std::move(bad));
@@ -338,19 +348,34 @@ class Checker {
   const runtime::Run& run_;
   const vm::Image& image_;
   vm::RunOutcome outcome_;
+  const RunEnd& end_;
   const std::string& file_;
 };
 
 }  // namespace
 
+RunEnd endOf(const runtime::Run& run) {
+  RunEnd end;
+  end.outcome = *run.outcome();
+  end.at = run.rig().clock();
+  end.line = run.spec().image->lines[end.outcome.index];
+  return end;
+}
+
 std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const std::vector<Expectation>& expectations,
                                        const std::string& file, bool impliedFinished, const RunWatch* watch) {
-  Checker c(run, file);
-  if (impliedFinished && !run.outcome()->ok()) {
+  return evaluate(run, endOf(run), expectations, file, impliedFinished, watch);
+}
+
+std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const RunEnd& end,
+                                       const std::vector<Expectation>& expectations, const std::string& file,
+                                       bool impliedFinished, const RunWatch* watch) {
+  Checker c(run, end, file);
+  if (impliedFinished && !end.outcome.ok()) {
     Expectation finished;
     finished.kind = ExpectKind::Status;
     finished.reason = vm::StopReason::End;
-    const vm::RunOutcome o = *run.outcome();
+    const vm::RunOutcome& o = end.outcome;
     finished.pos = {run.spec().image->lines[o.index], run.spec().image->columns[o.index]};
     c.status(finished);
   }

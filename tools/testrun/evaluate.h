@@ -5,6 +5,7 @@
 // run's state at its end.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,21 @@
 
 namespace rs::testrun {
 
+/// How the run being checked ended: a run of one, its outcome, its clock
+/// and the source line it stopped at (endOf); a robot of a cell of several
+/// (cell_test.h), the robot's own end, its label named in every message;
+/// the cell as a whole, the cell's outcome and clock, and no line.
+struct RunEnd {
+  vm::RunOutcome outcome;
+  vm::Micros at = 0;
+  std::optional<std::uint32_t> line;
+  std::string robot;     ///< "" or the robot's label: its failures begin "robot LABEL: "
+  bool stopped = false;  ///< another robot's failure stopped it (the cell's emergency stop)
+};
+
+/// The end of a finished run of one.
+RunEnd endOf(const runtime::Run& run);
+
 /// `run` must be finished; `watch` watched it for these expectations (it
 /// may be null when RunWatch::needed says none needs it). Compile-error
 /// expectations are not run expectations and are skipped. With
@@ -22,5 +38,10 @@ namespace rs::testrun {
 /// instruction that stopped it).
 std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const std::vector<Expectation>& expectations,
                                        const std::string& file, bool impliedFinished, const RunWatch* watch);
+/// The same for a run that ended as `end` says (`run` may be a robot of a
+/// cell run, or one standing for the cell's world and devices).
+std::vector<diag::Diagnostic> evaluate(const runtime::Run& run, const RunEnd& end,
+                                       const std::vector<Expectation>& expectations, const std::string& file,
+                                       bool impliedFinished, const RunWatch* watch);
 
 }  // namespace rs::testrun

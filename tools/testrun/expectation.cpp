@@ -144,7 +144,39 @@ bool deviceCount(LineReader& r, Expectation& e, DeviceKind kind) {
   return r.end();
 }
 
+bool subject(LineReader& r, Expectation& e);
+
+// What a robot's prefix may not stand before: the cell's own things.
+std::string_view cellsOwn(ExpectKind kind) {
+  switch (kind) {
+    case ExpectKind::ObjectAt: return "an object's place is the cell's";
+    case ExpectKind::DeviceCount: return "a device's count is the cell's";
+    case ExpectKind::Trace: return "the trace is the whole run's";
+    default: return {};
+  }
+}
+
+// `LABEL.` before the subject names the robot of a cell the expectation is about.
 bool expectation(LineReader& r, Expectation& e) {
+  if (const std::optional<Word> label = r.robotPrefix()) {
+    e.robot = label->text;
+    e.robotCol = label->col;
+  }
+  if (r.accept("stopped")) {
+    e.kind = ExpectKind::Status;
+    e.stopped = true;
+    if (e.robot.empty())
+      return r.failAt(e.pos.col, "'stopped' is a robot's end in a cell of several robots (another robot stopped "
+                                 "the cell): write LABEL.stopped");
+    return stopLine(r, e) && r.end();
+  }
+  if (!subject(r, e)) return false;
+  if (const std::string_view own = cellsOwn(e.kind); !e.robot.empty() && !own.empty())
+    return r.failAt(e.robotCol, fmt::format("{}, not a robot's: write it without '{}.'", own, e.robot));
+  return true;
+}
+
+bool subject(LineReader& r, Expectation& e) {
   const Word* first = r.peek();
   if (!first) return r.fail(fmt::format("expected what to expect: {}", subjects()));
   if (status(r, e)) return r.end();
@@ -226,6 +258,11 @@ bool expectation(LineReader& r, Expectation& e) {
     if (r.accept("before")) {
       e.kind = ExpectKind::Order;
       e.first = {output, e.number, e.on};
+      // `before right.output 1 on`: another robot's line, in a cell of several.
+      if (const std::optional<Word> other = r.robotPrefix()) {
+        e.secondRobot = other->text;
+        e.secondRobotCol = other->col;
+      }
       const bool secondOutput = r.accept("output");
       if (!secondOutput && !r.keyword("input")) return false;
       std::int64_t m = 0;
@@ -285,7 +322,7 @@ bool expectation(LineReader& r, Expectation& e) {
 
 bool setting(LineReader& r, TestSettings& s) {
   const Word* first = r.peek();
-  if (!first) return r.fail("expected a setting: cell, stimuli, input, max-time, max-steps or max-knots");
+  if (!first) return r.fail("expected a setting: cell, robot, stimuli, input, max-time, max-steps or max-knots");
   const auto value = [&](std::string_view what, std::string& into) {
     const std::optional<Word> w = r.take(what);
     if (!w) return false;
@@ -293,6 +330,7 @@ bool setting(LineReader& r, TestSettings& s) {
     return r.end();
   };
   if (r.accept("cell")) return value("a workcell or robot (file or library name)", s.cell);
+  if (r.accept("robot")) return value("the label of a robot of the cell", s.robot);
   if (r.accept("stimuli")) return value("a stimuli file", s.stimuliFile);
   if (r.accept("max-time")) return value("seconds", s.maxTime);
   if (r.accept("input")) {
@@ -314,7 +352,7 @@ bool setting(LineReader& r, TestSettings& s) {
     return r.end();
   }
   return r.fail(
-      fmt::format("unknown setting '{}': cell, stimuli, input, max-time, max-steps or max-knots", first->text));
+      fmt::format("unknown setting '{}': cell, robot, stimuli, input, max-time, max-steps or max-knots", first->text));
 }
 
 }  // namespace

@@ -94,6 +94,18 @@ struct Expectation {
   LineEvent first, second;
   // CompileError: the error's message must contain this
   std::string message;
+  /// `feeder.motors E=0`: in a cell of several robots, the robot the
+  /// expectation is about, by its label as written (docs/testing.md, "A cell
+  /// of several robots"); empty: the program's robot, or the cell as a whole.
+  std::string robot;
+  std::uint32_t robotCol = 0;  ///< the column of the label
+  /// Order: `before right.output 1 on`, the robot of the second event
+  /// (empty: the first's).
+  std::string secondRobot;
+  std::uint32_t secondRobotCol = 0;
+  /// Status `LABEL.stopped`: the robot was stopped by another robot's
+  /// failure (the cell's emergency stop), not by its own end.
+  bool stopped = false;
   /// In a scenario file, `expect: ... points N`: what it earns when it
   /// holds (a teacher's partial credit), in hundredths of a point.
   std::optional<std::int64_t> points;
@@ -101,8 +113,20 @@ struct Expectation {
 
 /// How to run the program (`; test:` lines); paths as written, relative to
 /// the program's folder.
+/// `program LABEL FILE` in a scenario file: robot LABEL of the cell runs FILE.
+struct RobotProgram {
+  std::string label, file;
+  diag::Pos pos;      ///< of the word `program`
+  std::uint32_t labelCol = 0, fileCol = 0;
+};
+
 struct TestSettings {
   std::string cell;
+  /// `test: robot LABEL`: the cell's robot the program under test runs on
+  /// (like --robot; with --spec, the robot each submission is).
+  std::string robot;
+  /// Set by a scenario file only: the other robots' programs.
+  std::vector<RobotProgram> programs;
   std::string stimuliFile;
   std::vector<std::string> inputs;  ///< N=ON@T
   std::string maxTime;              ///< seconds, as written

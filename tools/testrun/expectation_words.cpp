@@ -107,6 +107,17 @@ bool LineReader::onOff(bool& on) {
   return fail(done() ? "expected ON or OFF" : fmt::format("expected ON or OFF, got '{}'", words_[next_].text));
 }
 
+std::optional<Word> LineReader::robotPrefix() {
+  if (done()) return std::nullopt;
+  Word& w = words_[next_];
+  const std::size_t dot = w.text.find('.');
+  if (dot == std::string_view::npos || dot == 0 || dot + 1 == w.text.size()) return std::nullopt;
+  const Word label{w.text.substr(0, dot), w.col};
+  w.col += columnOf(w.text, dot + 1) - 1;
+  w.text.remove_prefix(dot + 1);
+  return label;
+}
+
 bool LineReader::end() {
   if (done()) return true;
   return fail(fmt::format("unexpected '{}' after the end of the expectation", words_[next_].text));

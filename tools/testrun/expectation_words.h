@@ -49,6 +49,10 @@ class LineReader {
   bool real(std::string_view what, double& v);
   bool seconds(std::string_view what, vm::Micros& micros);
   bool onOff(bool& on);
+  /// `left.motors`: takes `left` off the next word (whose rest, `motors`,
+  /// is then the next word) when it has a dot inside it; nullopt (and
+  /// nothing taken) when it has none.
+  std::optional<Word> robotPrefix();
   bool end();
   bool fail(std::string message) { return failAt(done() ? endCol_ : words_[next_].col, std::move(message)); }
   bool failAt(std::uint32_t col, std::string message);

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "base/ascii.h"
 #include "tools/testrun/expectation_words.h"
 
@@ -76,9 +78,23 @@ ScenarioFile parseScenarioFile(const diag::SourceFile& source) {
       s.name = line.substr(from, to - from);
       continue;
     }
+    if (is(words[0], "program") && words.size() == 3) {
+      // `program LABEL FILE`: robot LABEL of the cell runs FILE, in every
+      // scenario (before the first) or in this one.
+      ParsedExpectations& into = out.scenarios.empty() ? preamble : out.scenarios.back().parsed;
+      std::vector<RobotProgram>& programs = into.settings.programs;
+      const auto same = [&](const RobotProgram& p) { return base::sameName(p.label, words[1].text); };
+      if (std::any_of(programs.begin(), programs.end(), same)) {
+        error({n, words[1].col}, fmt::format("robot {}'s program is named twice", words[1].text));
+        continue;
+      }
+      programs.push_back({std::string(words[1].text), std::string(words[2].text), pos, words[1].col, words[2].col});
+      continue;
+    }
     if (is(words[0], "program")) {
       if (words.size() != 2 || !out.program.empty()) {
-        error(pos, out.program.empty() ? "expected 'program FILE' (one file name)" : "the program is named twice");
+        error(pos, out.program.empty() ? "expected 'program FILE', or 'program LABEL FILE' for a robot of the cell"
+                                       : "the program is named twice");
         continue;
       }
       out.program = words[1].text;
@@ -151,6 +167,15 @@ TestSettings settingsOf(const ScenarioFile& file, const Scenario& s) {
   TestSettings settings = s.parsed.settings;
   const TestSettings& shared = file.shared;
   if (settings.cell.empty()) settings.cell = shared.cell;
+  if (settings.robot.empty()) settings.robot = shared.robot;
+  // A robot's program in the scenario replaces the shared one of that robot.
+  std::vector<RobotProgram> programs;
+  for (const RobotProgram& p : shared.programs)
+    if (std::none_of(settings.programs.begin(), settings.programs.end(),
+                     [&](const RobotProgram& own) { return base::sameName(own.label, p.label); }))
+      programs.push_back(p);
+  programs.insert(programs.end(), settings.programs.begin(), settings.programs.end());
+  settings.programs = std::move(programs);
   if (settings.stimuliFile.empty()) settings.stimuliFile = shared.stimuliFile;
   if (settings.maxTime.empty()) settings.maxTime = shared.maxTime;
   if (!settings.maxSteps) settings.maxSteps = shared.maxSteps;

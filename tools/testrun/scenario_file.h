@@ -4,6 +4,11 @@
 //   program lab3.rsp          ; optional with --spec
 //   test: cell gantry-cell    ; before the first scenario: shared by all
 //
+// On a cell of several robots (cell_test.h), `program LABEL FILE` gives a
+// robot its program (before the first scenario, or in one), `test: robot
+// LABEL` the robot the program under test runs on, and `LABEL.` before an
+// expectation the robot it is about (`expect: feeder.output 1 on`).
+//
 //   scenario a part arrives
 //   points 4                  ; all or nothing
 //   test: input 1=ON@2

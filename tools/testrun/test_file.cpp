@@ -16,9 +16,12 @@
 #include "runtime/run/trace.h"
 #include "tools/testrun/evaluate.h"
 #include "tools/testrun/expectation.h"
+#include "tools/testrun/golden_check.h"
 #include "tools/testrun/golden_trace.h"
 #include "tools/testrun/run_watch.h"
 #include "tools/testrun/scenario_file.h"
+#include "tools/testrun/cell_test.h"
+#include "tools/testrun/test_steps.h"
 #include "vm/image_file.h"
 
 namespace rs::testrun {
@@ -39,8 +42,6 @@ const diag::SourceFile* TestResult::sourceOf(const std::string& name) const {
     if (s->name() == name) return s.get();
   return nullptr;
 }
-
-namespace {
 
 // A file named by a `; test:` line is relative to the program's folder; a
 // cell that is no file there is a library name.
@@ -101,129 +102,6 @@ void matchCompileErrors(const std::vector<Expectation>& expectations, const std:
   }
 }
 
-}  // namespace
-
-namespace {
-
-// One `expect: trace FILE` of a test: its golden file, read before the run,
-// and the comparer the run's trace is written into.
-struct GoldenTrace {
-  const Expectation* expectation = nullptr;
-  std::string path;
-  base::FileRead read;
-  std::unique_ptr<TraceComparer> comparer;
-  std::unique_ptr<std::ostream> stream;
-  std::unique_ptr<vm::StepObserver> writer;
-};
-
-// The golden files of a test's trace expectations, each inside the test's
-// folder; false (the test cannot start) when one leads out of it.
-bool openGoldenTraces(const ParsedExpectations& parsed, const std::string& settingsFile,
-                      std::vector<GoldenTrace>& traces, TestResult& r) {
-  for (const Expectation& e : parsed.expectations) {
-    if (e.kind != ExpectKind::Trace) continue;
-    const diag::Result<std::string> golden = goldenFile(settingsFile, e.name);
-    if (!golden) {
-      r.status = TestStatus::Error;
-      r.problems.push_back({settingsFile, e.pos, diag::Severity::Error, golden.failure().message, {},
-                            "golden traces live under the folder of the test that names them"});
-      continue;
-    }
-    GoldenTrace& t = traces.emplace_back();
-    t.expectation = &e;
-    t.path = *golden;
-    t.read = base::readFile(*golden, launch::kMaxInputBytes);
-    t.comparer = std::make_unique<TraceComparer>(t.read.bytes ? std::string_view(*t.read.bytes) : std::string_view());
-    t.stream = std::make_unique<std::ostream>(t.comparer.get());
-  }
-  return r.status != TestStatus::Error;
-}
-
-// A stream buffer that hands at most `limit` bytes on, then swallows the
-// rest and says so: a golden trace is never larger than a test can read.
-class CappedSink final : public std::streambuf {
- public:
-  CappedSink(std::streambuf& to, std::size_t limit) : to_(to), left_(limit) {}
-  bool over() const { return over_; }
-
- protected:
-  std::streamsize xsputn(const char* s, std::streamsize n) override {
-    if (over_ || static_cast<std::size_t>(n) > left_) return over_ = true, n;
-    left_ -= static_cast<std::size_t>(n);
-    return to_.sputn(s, n);
-  }
-  int_type overflow(int_type c) override {
-    if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
-    const char ch = traits_type::to_char_type(c);
-    xsputn(&ch, 1);
-    return c;
-  }
-
- private:
-  std::streambuf& to_;
-  std::size_t left_;
-  bool over_ = false;
-};
-
-// Pauses a run (which then ends early) once its trace is over the cap.
-class StopWhenOver final : public vm::StepObserver {
- public:
-  explicit StopWhenOver(const CappedSink& sink) : sink_(sink) {}
-  bool afterStep(const vm::Interpreter&, std::uint32_t) override { return sink_.over(); }
-
- private:
-  const CappedSink& sink_;
-};
-
-// --update: the run is made again (runs are deterministic, so its trace is
-// the one compared) and its trace streamed into the golden file, which is
-// written whole or not at all.
-void rewriteGoldenTrace(const GoldenTrace& t, const runtime::RunSpec& spec, const std::string& settingsFile,
-                        TestResult& r) {
-  bool tooLarge = false;
-  std::string error;
-  const bool written = base::writeFileAtomically(
-      t.path,
-      [&](std::ostream& file) {
-        CappedSink sink(*file.rdbuf(), launch::kMaxInputBytes);
-        std::ostream out(&sink);
-        runtime::Run again(spec);
-        runtime::TraceWriter writer(out, runtime::TraceFormat::Text, again);
-        StopWhenOver stop(sink);
-        again.observe(writer);
-        again.observe(stop);
-        again.runToEnd();
-        tooLarge = sink.over();
-        return !tooLarge;
-      },
-      error);
-  if (written) return r.updated.push_back(t.path);
-  r.problems.push_back({settingsFile, t.expectation->pos, diag::Severity::Error,
-                        tooLarge ? fmt::format("cannot write {}: the trace is over {}, the most a golden trace may "
-                                               "hold",
-                                               t.path, base::sizeText(launch::kMaxInputBytes))
-                                 : fmt::format("cannot write {}: {}", t.path, error)});
-}
-
-// `expect: trace FILE`: the run's text trace must be the file's bytes;
-// --update writes the file instead when it differs or is missing.
-void judgeTrace(const GoldenTrace& t, const runtime::RunSpec* again, const std::string& settingsFile,
-                const RunnerOptions& options, TestResult& r) {
-  if (t.read.bytes && t.comparer->same()) return;
-  if (options.update && again) return rewriteGoldenTrace(t, *again, settingsFile, r);
-  const Expectation& e = *t.expectation;
-  if (!t.read.bytes) {
-    r.problems.push_back({settingsFile, e.pos, diag::Severity::Error,
-                          fmt::format("cannot read the golden trace {}: {}", t.path, t.read.error), {},
-                          "robotsim test --update writes it from the run"});
-    return;
-  }
-  r.problems.push_back({settingsFile, e.pos, diag::Severity::Error,
-                        fmt::format("the trace differs from {} at its line {}: expected '{}', got '{}'", t.path,
-                                    t.comparer->line(), t.comparer->expected(), t.comparer->got()),
-                        {}, "if the new run is right, robotsim test --update rewrites the golden trace"});
-}
-
 // How to get past a stop by a limit: a loop that never lets the clock move
 // is the program's to fix; the grading limits (not those its scenario
 // set) the scenario file's to raise.
@@ -249,14 +127,47 @@ void hintLimit(const vm::RunOutcome& outcome, const TestSettings& settings, bool
     if (d.hint.empty() && d.message.find(vm::stopReasonName(outcome.reason)) != std::string::npos) d.hint = hint;
 }
 
+launch::RunRequest runRequestOf(const TestSettings& settings, const std::string& settingsFile, bool expectsCollision,
+                                const RunnerOptions& options, bool grading) {
+  launch::RunRequest run;
+  run.stimuliFile = besideProgram(settingsFile, settings.stimuliFile, false);
+  run.inputs = settings.inputs;
+  run.maxSteps = settings.maxSteps;
+  run.maxTime = settings.maxTime;
+  run.maxKnots = settings.maxKnots;
+  if (grading && !run.maxSteps) run.maxSteps = kGradingMaxSteps;
+  if (grading && !run.maxKnots) run.maxKnots = kGradingMaxKnots;
+  if (grading && run.maxTime.empty()) run.maxTime = std::to_string(kGradingMaxSeconds);
+  run.collisions = options.collisions;
+  // A test that expects a collision lets the run go on past it.
+  if (expectsCollision && run.collisions.empty()) run.collisions = "warn";
+  return run;
+}
+
+namespace {
+
 // The program at `program` checked against `parsed`, whose file names are
 // relative to the folder of `settingsFile`. `r` has its file, name and the
 // sources read so far. `grading`: a submission against a scenario file
 // (--spec): the grading limits apply where the scenario sets none.
-void check(const std::string& program, const ParsedExpectations& parsed, const std::string& settingsFile,
+void check(const std::string& programGiven, const ParsedExpectations& parsed, const std::string& settingsFile,
            const RunnerOptions& options, bool grading, TestResult& r) {
-  launch::ProgramRequest request{program, besideProgram(settingsFile, parsed.settings.cell, true), options.libDirs};
+  launch::ProgramRequest request{programGiven, besideProgram(settingsFile, parsed.settings.cell, true), options.libDirs};
   request.submission = grading;
+  request.robot = parsed.settings.robot;
+  // A cell of several robots with programs runs them all (cell_test.h).
+  if (!request.cell.empty()) {
+    const CellCheck cell = checkCell(request, parsed, settingsFile, options, grading, r);
+    if (cell.done) return;
+    if (!cell.program.empty()) request.file = cell.program, request.robot = cell.robot;
+  }
+  const std::string& program = request.file;
+  if (program.empty()) {
+    r.status = TestStatus::Error;
+    r.problems.push_back({settingsFile, {}, diag::Severity::Error,
+                          "the scenario file names no program: add 'program FILE', or give it with --spec"});
+    return;
+  }
   const launch::LoadedProgram loaded = launch::loadProgram(request);
   if (loaded.source && !r.sourceOf(loaded.source->name()))
     r.sources.push_back(std::make_shared<const diag::SourceFile>(*loaded.source));
@@ -285,20 +196,12 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
     return;
   }
 
+  // `LABEL.` before an expectation names the robot this run drives, or none.
+  std::vector<diag::Diagnostic> labelProblems;
+  const ParsedExpectations checked = ownRobotOnly(parsed, loaded.cell.get(), settingsFile, labelProblems);
   std::vector<GoldenTrace> traces;
-  if (!openGoldenTraces(parsed, settingsFile, traces, r)) return;
-  launch::RunRequest run;
-  run.stimuliFile = besideProgram(settingsFile, parsed.settings.stimuliFile, false);
-  run.inputs = parsed.settings.inputs;
-  run.maxSteps = parsed.settings.maxSteps;
-  run.maxTime = parsed.settings.maxTime;
-  run.maxKnots = parsed.settings.maxKnots;
-  if (grading && !run.maxSteps) run.maxSteps = kGradingMaxSteps;
-  if (grading && !run.maxKnots) run.maxKnots = kGradingMaxKnots;
-  if (grading && run.maxTime.empty()) run.maxTime = std::to_string(kGradingMaxSeconds);
-  run.collisions = options.collisions;
-  // A test that expects a collision lets the run go on past it.
-  if (parsed.expectsCollision() && run.collisions.empty()) run.collisions = "warn";
+  if (!openGoldenTraces(checked, settingsFile, traces, r)) return;
+  const launch::RunRequest run = runRequestOf(checked.settings, settingsFile, checked.expectsCollision(), options, grading);
   std::vector<diag::Diagnostic> runProblems;
   std::optional<runtime::RunSpec> spec = launch::prepareRun(loaded, run, runProblems);
   if (!spec) {
@@ -314,12 +217,12 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   if (options.coverage) counter.emplace(spec->image);
   runtime::Run running(std::move(*spec));
   std::optional<RunWatch> watch;
-  if (RunWatch::needed(parsed.expectations)) watch.emplace(running, parsed.expectations);
+  if (RunWatch::needed(checked.expectations)) watch.emplace(running, checked.expectations);
   if (watch) running.observe(*watch);
   if (counter) running.observe(*counter);
   for (GoldenTrace& t : traces) {
-    t.writer = std::make_unique<runtime::TraceWriter>(*t.stream, runtime::TraceFormat::Text, running);
-    running.observe(*t.writer);
+    t.writers.push_back(std::make_unique<runtime::TraceWriter>(*t.stream, runtime::TraceFormat::Text, running));
+    running.observe(*t.writers.back());
   }
   const vm::RunOutcome outcome = running.runToEnd();
   r.ran = true;
@@ -327,13 +230,22 @@ void check(const std::string& program, const ParsedExpectations& parsed, const s
   if (counter) r.coverage = counter->coverage();
   r.simulated = running.rig().clock();
   r.steps = outcome.steps;
-  r.expectations = parsed.expectations.size() + (parsed.statesStatus() ? 0 : 1);
+  r.expectations = parsed.expectations.size() + (checked.statesStatus() ? 0 : 1);
   // An expectation of a scenario file points into it.
-  r.problems = evaluate(running, parsed.expectations, settingsFile, !parsed.statesStatus(), watch ? &*watch : nullptr);
+  r.problems = evaluate(running, checked.expectations, settingsFile, !checked.statesStatus(), watch ? &*watch : nullptr);
   if (std::optional<diag::Diagnostic> w = runtime::gripperWarning(running, program)) r.warnings.push_back(std::move(*w));
-  if (!parsed.statesStatus() && !r.problems.empty() && !outcome.ok()) r.problems.front().file = program;
-  hintLimit(outcome, parsed.settings, grading, r);
-  for (const GoldenTrace& t : traces) judgeTrace(t, again ? &*again : nullptr, settingsFile, options, r);
+  if (!checked.statesStatus() && !r.problems.empty() && !outcome.ok()) r.problems.front().file = program;
+  hintLimit(outcome, checked.settings, grading, r);
+  r.problems.insert(r.problems.end(), labelProblems.begin(), labelProblems.end());
+  // --update: the same run again, its trace into the golden file.
+  const TraceRerun rerun = [&again](std::ostream& out, vm::StepObserver& stop) {
+    runtime::Run run(*again);
+    runtime::TraceWriter writer(out, runtime::TraceFormat::Text, run);
+    run.observe(writer);
+    run.observe(stop);
+    run.runToEnd();
+  };
+  for (const GoldenTrace& t : traces) judgeTrace(t, again ? &rerun : nullptr, settingsFile, options, r);
   r.status = r.problems.empty() ? TestStatus::Passed : TestStatus::Failed;
 }
 
@@ -388,13 +300,17 @@ std::vector<TestResult> runScenarios(const std::string& specPath, const std::str
   }
   std::string program = programOverride;
   if (program.empty()) {
-    if (parsed.program.empty()) {
+    // No program: the cell's PROGRAMs and the `program LABEL FILE` lines are what runs.
+    if (parsed.program.empty() && parsed.shared.cell.empty() && parsed.shared.programs.empty() &&
+        std::all_of(parsed.scenarios.begin(), parsed.scenarios.end(), [](const Scenario& s) {
+          return s.parsed.settings.cell.empty() && s.parsed.settings.programs.empty();
+        })) {
       base.status = TestStatus::Error;
       base.problems.push_back({specPath, {}, diag::Severity::Error,
                                "the scenario file names no program: add 'program FILE', or give it with --spec"});
       return {base};
     }
-    program = besideProgram(specPath, parsed.program, false);
+    if (!parsed.program.empty()) program = besideProgram(specPath, parsed.program, false);
   }
   std::vector<TestResult> results;
   for (const Scenario& s : parsed.scenarios) {

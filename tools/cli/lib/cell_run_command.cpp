@@ -13,6 +13,7 @@
 #include "launch/run_diagnostics.h"
 #include "launch/run_request.h"
 #include "runtime/run/cell_run.h"
+#include "runtime/run/labelled_trace.h"
 #include "runtime/run/trace.h"
 #include "tools/cli/lib/exit_codes.h"
 #include "tools/cli/lib/report.h"
@@ -25,42 +26,6 @@ namespace rs::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-// One robot's trace: the run's own trace writer into a buffer, each line
-// then given the robot's label (text: "left: ...", JSON: a "robot" field)
-// on its way out, so that the robots' lines interleave as they happen.
-class LabelledTrace final : public vm::StepObserver {
- public:
-  LabelledTrace(std::ostream& out, runtime::TraceFormat format, const runtime::Run& run, std::string label)
-      : out_(out), json_(format == runtime::TraceFormat::Json), label_(std::move(label)), writer_(buffer_, format, run) {}
-  bool afterStep(const vm::Interpreter& vm, std::uint32_t index) override {
-    const bool pause = writer_.afterStep(vm, index);
-    flush();
-    return pause;
-  }
-  void finish() {
-    writer_.finish();
-    flush();
-  }
-
- private:
-  void flush() {
-    std::string line;
-    std::istringstream lines(buffer_.str());
-    while (std::getline(lines, line)) {
-      if (json_ && line.starts_with('{'))
-        out_ << "{\"robot\":" << Json(label_).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)
-             << (line.size() > 2 ? "," : "") << line.substr(1) << '\n';
-      else out_ << base::safeText(label_) << ": " << line << '\n';
-    }
-    buffer_.str({});
-  }
-  std::ostream& out_;
-  bool json_;
-  std::string label_;
-  std::ostringstream buffer_;
-  runtime::TraceWriter writer_;
-};
 
 std::string_view endName(const runtime::CellRun& cell, std::size_t p) {
   const runtime::Run& run = cell.robot(p);
@@ -243,10 +208,10 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std:
   }
 
   runtime::CellRun cell(*spec);
-  std::vector<std::unique_ptr<LabelledTrace>> traces;
+  std::vector<std::unique_ptr<runtime::LabelledTrace>> traces;
   if (!o.trace.empty())
     for (std::size_t p = 0; p < cell.size(); ++p) {
-      traces.push_back(std::make_unique<LabelledTrace>(
+      traces.push_back(std::make_unique<runtime::LabelledTrace>(
           out, o.trace == "json" ? runtime::TraceFormat::Json : runtime::TraceFormat::Text, cell.robot(p), cell.label(p)));
       cell.observe(p, *traces.back());
     }
