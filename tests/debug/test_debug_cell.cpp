@@ -163,3 +163,33 @@ TEST_CASE("docs/debugging.md's two-robot session is what robotsim debug prints",
     out.replace(p, rendertest::kSourceDir.size(), "...");
   CHECK(out == block);
 }
+
+TEST_CASE("debug cell: LABEL=FILE naming no robot of the cell is an error with the labels", "[debug][cell-debug]") {
+  const auto r = rs::testing::runCli({"debug", "--cell", kInterlock, "middle=" + debugtest::kExamples + "two_robots/left.rsp"});
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(r.err.find("middle") != std::string::npos);
+  CHECK(r.err.find("left") != std::string::npos);
+  CHECK(r.err.find("right") != std::string::npos);
+  CHECK(r.out.empty());
+}
+
+// next steps over a GOSUB of the current robot: left's subroutine is two
+// 1 s moves of motor F (300 counts at 300 a second), so `next` at line 1
+// stands at line 2 at 2 s, both moves done; right's DELAY 5 goes on meanwhile.
+TEST_CASE("debug cell: next steps the current robot over a GOSUB while the other goes on", "[debug][cell-debug]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n"
+                     "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\nEND\n");
+  dir.write("l.rsp", "        GOSUB sub\n        END\nsub:    MOVE 300 0 0 0 0 0\n        MOVE -300 0 0 0 0 0\n"
+                     "        RETURN\n");
+  dir.write("r.rsp", "        DELAY 5\n        END\n");
+  const auto r = rs::testing::runCli(
+      {"debug", "--cell", dir.file("c.rsd"), "-x", dir.write("s.cmds", "next\ninfo threads\n")});
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  // GOSUB, MOVE, MOVE, RETURN: 4 steps of left.
+  CHECK(after(r.out, "next") == "left: line 2 @2, step 4, clock 2.000 s\n    2 |         END\n");
+  CHECK(after(r.out, "info threads").find("  2   right            r.rsp                line 1 @1, step 0, in the "
+                                          "instruction under way\n") != std::string::npos);
+}

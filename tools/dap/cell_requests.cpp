@@ -171,7 +171,7 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
   }
   if (command == "next" || command == "stepIn") {
     cell_->select(*thread);
-    auto r = cell_->step();
+    auto r = command == "next" ? cell_->next() : cell_->step();
     if (!r) return Error{r.failure().message};
     pending_ = [this, stop = *r] { reportCellStop(stop); };  // the step has run: its response still goes first
     return Json(nullptr);

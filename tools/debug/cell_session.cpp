@@ -162,6 +162,15 @@ diag::Result<CellStop> CellSession::step(std::uint64_t n) {
   return forward({}, [this, c, target](std::size_t p) { return p == c && run_->robot(c).interpreter().steps() >= target; });
 }
 
+diag::Result<CellStop> CellSession::next() {
+  const std::size_t c = current_;
+  if (!run_->finished() && run_->end(c) != runtime::RobotEnd::Running)
+    return diag::refusal(fmt::format("robot {} has ended: choose another with thread LABEL, or continue",
+                                     base::safeText(label(c))));
+  const std::size_t depth = run_->robot(c).interpreter().callDepth();
+  return forward({}, [this, c, depth](std::size_t p) { return p == c && run_->robot(c).interpreter().callDepth() <= depth; });
+}
+
 CellStop CellSession::resume() { return forward({}, nullptr); }
 
 CellStop CellSession::until(vm::Micros t) {

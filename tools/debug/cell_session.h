@@ -89,6 +89,8 @@ class CellSession {
   /// it (fewer at a breakpoint of any robot, or the cell's end). An error
   /// when the current robot's program is over.
   diag::Result<CellStop> step(std::uint64_t n = 1);
+  /// The current robot's next instruction, over a GOSUB (until it returns); an error as step's.
+  diag::Result<CellStop> next();
   /// Until a breakpoint or the end.
   CellStop resume();
   /// Until the clock passes `t` (or a breakpoint, or the end): the cell stands at `t`.
