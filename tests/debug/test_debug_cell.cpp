@@ -193,3 +193,28 @@ TEST_CASE("debug cell: next steps the current robot over a GOSUB while the other
   CHECK(after(r.out, "info threads").find("  2   right            r.rsp                line 1 @1, step 0, in the "
                                           "instruction under way\n") != std::string::npos);
 }
+
+// Each robot waits for the other's output 1: right's DELAY 1 ends at 1 s
+// and then both wait for ever: the cell's deadlock at 1 s, which leaves the
+// session inspectable, and goes back as any stop.
+TEST_CASE("debug cell: a deadlock across robots stops the cell and can be gone back from", "[debug][cell-debug]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n"
+                     "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\n"
+                     "  WIRE left.OUT 1 TO right.IN 1\n  WIRE right.OUT 1 TO left.IN 1\nEND\n");
+  dir.write("l.rsp", "        WAITFOR 1 ON\n        END\n");
+  dir.write("r.rsp", "        DELAY 1\n        WAITFOR 1 ON\n        END\n");
+  const auto r = rs::testing::runCli({"debug", "--cell", dir.file("c.rsd"), "-x",
+                                      dir.write("s.cmds", "continue\ninfo threads\nthread right\nreverse-step\nstep\n")});
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  const std::string stop = after(r.out, "continue");
+  CHECK(stop.starts_with("deadlock: left waits at "));
+  CHECK(stop.find("l.rsp:1 for input 1 (wired from right.OUT 1); right waits at ") != std::string::npos);
+  CHECK(stop.find("left: line 1 @1, step 0, clock 1.000 s (the run is over)\n") != std::string::npos);
+  CHECK(after(r.out, "info threads").find("  2   right            r.rsp                line 2 @2, step 1, stopped with "
+                                          "the cell\n") != std::string::npos);
+  // right's one step done was its DELAY (0-1 s): back before it, the start.
+  CHECK(after(r.out, "reverse-step").starts_with("at the start of the run\nright: line 1 @1, step 0, clock 0.000 s\n"));
+  CHECK(after(r.out, "step") == "right: line 2 @2, step 1, clock 1.000 s\n    2 |         WAITFOR 1 ON\n");
+}
