@@ -20,8 +20,11 @@
 #include <sstream>
 #include <string>
 
+#include "launch/cell_programs.h"
+#include "launch/run_request.h"
 #include "tests/cli/cli_support.h"
 #include "tests/debug/debug_test_util.h"
+#include "tools/debug/cell_session.h"
 
 namespace {
 
@@ -217,4 +220,30 @@ TEST_CASE("debug cell: a deadlock across robots stops the cell and can be gone b
   // right's one step done was its DELAY (0-1 s): back before it, the start.
   CHECK(after(r.out, "reverse-step").starts_with("at the start of the run\nright: line 1 @1, step 0, clock 0.000 s\n"));
   CHECK(after(r.out, "step") == "right: line 2 @2, step 1, clock 1.000 s\n    2 |         WAITFOR 1 ON\n");
+}
+
+// A long run asks the interrupt (Ctrl-C at the terminal, the client's
+// pause in the adapter) every 4096 steps: yes pauses the whole cell there.
+TEST_CASE("debug cell: an interrupt pauses a long run of the cell", "[debug][cell-debug]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n"
+                     "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\nEND\n");
+  dir.write("l.rsp", "again:  ADD N 1\n        DELAY 0.001\n        JMPVAR N < 1000000 again\n        END\n");
+  dir.write("r.rsp", "        DELAY 1\n        END\n");
+  rs::launch::ProgramRequest request;
+  request.cell = dir.file("c.rsd");
+  rs::launch::CellPrograms programs;
+  REQUIRE(rs::launch::assignCellPrograms(request, {}, programs));
+  rs::launch::compileAssignedPrograms(request, programs);
+  std::vector<rs::diag::Diagnostic> diags;
+  const auto spec = rs::launch::prepareCellRun(programs, {}, diags);
+  REQUIRE(spec);
+  rs::debug::CellSession session(*spec);
+  int asked = 0;
+  session.setInterrupt([&asked] { return ++asked == 3; });
+  const rs::debug::CellStop stop = session.resume();
+  CHECK(stop.reason == rs::debug::StopReason::Pause);
+  CHECK(stop.message == "interrupted");
+  CHECK(session.cell().steps() == 3 * 4096);  // the third time asked
+  CHECK_FALSE(session.cell().finished());
 }

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -96,6 +97,9 @@ class CellSession {
   /// Until the clock passes `t` (or a breakpoint, or the end): the cell stands at `t`.
   CellStop until(vm::Micros t);
 
+  /// Asked every few thousand steps of a forward run; yes pauses it (Pause).
+  void setInterrupt(std::function<bool()> interrupted) { interrupted_ = std::move(interrupted); }
+
   // --- backwards ------------------------------------------------------------
   /// The whole cell back to where the current robot had run `n` fewer
   /// instructions (from inside one under way: that one is the first).
@@ -122,6 +126,7 @@ class CellSession {
   std::size_t current_ = 0;
   CellStop stop_;
   std::optional<vm::Micros> at_;  // between two instants (goto-time, until): the moment shown
+  std::function<bool()> interrupted_;
 };
 
 }  // namespace rs::debug
