@@ -150,3 +150,40 @@ TEST_CASE("dap cell: a launch whose programs name no robot of the cell is refuse
   CHECK(bad.at("message").get<std::string>().find("cannot debug cell") != std::string::npos);
   CHECK(responseTo(m, 3).at("message").get<std::string>().find("programs is") != std::string::npos);
 }
+
+// gotoTime 2.5: right half way through its 2-3 s move (F at 150); a
+// breakpoint at left.rsp line 11 (left's WAITFOR ends at 4.25: right's
+// OUT 1 at 4 plus the wire's AFTER 0.25), then reverseContinue back to
+// right's line 6 at 2 s. The cell's PROGRAMs run without `programs`.
+TEST_CASE("dap cell: gotoTime and reverseContinue put the whole cell back", "[debug][dap][cell-debug]") {
+  const std::vector<Json> m = serveRequests({
+      request("initialize"),                                                                         // 1
+      request("launch", {{"cell", kTwo + "interlock.rsd"}, {"stopOnEntry", true}}),                  // 2
+      request("setBreakpoints", {{"source", {{"path", kTwo + "right.rsp"}}}, {"breakpoints", {{{"line", 6}}}}}),  // 3
+      request("setBreakpoints", {{"source", {{"path", kTwo + "left.rsp"}}}, {"breakpoints", {{{"line", 11}}}}}),  // 4
+      request("configurationDone"),                                                                  // 5
+      request("gotoTime", {{"time", 2.5}}),                                                          // 6
+      request("variables", {{"variablesReference", 2002}}),                                          // 7
+      request("continue", {{"threadId", 1}}),                                                        // 8
+      request("continue", {{"threadId", 1}}),                                                        // 9
+      request("reverseContinue", {{"threadId", 1}}),                                                 // 10
+      request("variables", {{"variablesReference", 2004}}),                                          // 11
+      request("disconnect"),                                                                         // 12
+  });
+  REQUIRE(responseTo(m, 2).at("success") == true);
+  const std::vector<Json> stops = stoppedEvents(m);
+  REQUIRE(stops.size() == 5);
+  CHECK(stops[0].at("reason") == "entry");
+  CHECK(stops[1].at("reason") == "goto");
+  CHECK(valueOf(responseTo(m, 7), "F") == "150");
+  // From 2.5 s on: left's breakpoint at 4.25 s comes first (right's at 2 s is behind).
+  CHECK(stops[2].at("threadId") == 1);
+  CHECK(stops[2].at("reason") == "breakpoint");
+  // Then right's second pass reaches line 6 at 6.25 s.
+  CHECK(stops[3].at("threadId") == 2);
+  // Back: the last breakpoint before 6.25 s is left's at 4.25 s.
+  CHECK(stops[4].at("threadId") == 1);
+  CHECK(stops[4].at("reason") == "breakpoint");
+  CHECK(stops[4].at("allThreadsStopped") == true);
+  CHECK(valueOf(responseTo(m, 11), "time") == "4.250 s");  // right's clock: the cell's one
+}

@@ -20,8 +20,11 @@
 #include <sstream>
 #include <string>
 
+#include "launch/cell_programs.h"
+#include "launch/run_request.h"
 #include "tests/cli/cli_support.h"
 #include "tests/debug/debug_test_util.h"
+#include "tools/debug/cell_session.h"
 
 namespace {
 
@@ -162,4 +165,85 @@ TEST_CASE("docs/debugging.md's two-robot session is what robotsim debug prints",
   for (std::size_t p; (p = out.find(rendertest::kSourceDir)) != std::string::npos;)
     out.replace(p, rendertest::kSourceDir.size(), "...");
   CHECK(out == block);
+}
+
+TEST_CASE("debug cell: LABEL=FILE naming no robot of the cell is an error with the labels", "[debug][cell-debug]") {
+  const auto r = rs::testing::runCli({"debug", "--cell", kInterlock, "middle=" + debugtest::kExamples + "two_robots/left.rsp"});
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(r.err.find("middle") != std::string::npos);
+  CHECK(r.err.find("left") != std::string::npos);
+  CHECK(r.err.find("right") != std::string::npos);
+  CHECK(r.out.empty());
+}
+
+// next steps over a GOSUB of the current robot: left's subroutine is two
+// 1 s moves of motor F (300 counts at 300 a second), so `next` at line 1
+// stands at line 2 at 2 s, both moves done; right's DELAY 5 goes on meanwhile.
+TEST_CASE("debug cell: next steps the current robot over a GOSUB while the other goes on", "[debug][cell-debug]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n"
+                     "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\nEND\n");
+  dir.write("l.rsp", "        GOSUB sub\n        END\nsub:    MOVE 300 0 0 0 0 0\n        MOVE -300 0 0 0 0 0\n"
+                     "        RETURN\n");
+  dir.write("r.rsp", "        DELAY 5\n        END\n");
+  const auto r = rs::testing::runCli(
+      {"debug", "--cell", dir.file("c.rsd"), "-x", dir.write("s.cmds", "next\ninfo threads\n")});
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  // GOSUB, MOVE, MOVE, RETURN: 4 steps of left.
+  CHECK(after(r.out, "next") == "left: line 2 @2, step 4, clock 2.000 s\n    2 |         END\n");
+  CHECK(after(r.out, "info threads").find("  2   right            r.rsp                line 1 @1, step 0, in the "
+                                          "instruction under way\n") != std::string::npos);
+}
+
+// Each robot waits for the other's output 1: right's DELAY 1 ends at 1 s
+// and then both wait for ever: the cell's deadlock at 1 s, which leaves the
+// session inspectable, and goes back as any stop.
+TEST_CASE("debug cell: a deadlock across robots stops the cell and can be gone back from", "[debug][cell-debug]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n"
+                     "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\n"
+                     "  WIRE left.OUT 1 TO right.IN 1\n  WIRE right.OUT 1 TO left.IN 1\nEND\n");
+  dir.write("l.rsp", "        WAITFOR 1 ON\n        END\n");
+  dir.write("r.rsp", "        DELAY 1\n        WAITFOR 1 ON\n        END\n");
+  const auto r = rs::testing::runCli({"debug", "--cell", dir.file("c.rsd"), "-x",
+                                      dir.write("s.cmds", "continue\ninfo threads\nthread right\nreverse-step\nstep\n")});
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  const std::string stop = after(r.out, "continue");
+  CHECK(stop.starts_with("deadlock: left waits at "));
+  CHECK(stop.find("l.rsp:1 for input 1 (wired from right.OUT 1); right waits at ") != std::string::npos);
+  CHECK(stop.find("left: line 1 @1, step 0, clock 1.000 s (the run is over)\n") != std::string::npos);
+  CHECK(after(r.out, "info threads").find("  2   right            r.rsp                line 2 @2, step 1, stopped with "
+                                          "the cell\n") != std::string::npos);
+  // right's one step done was its DELAY (0-1 s): back before it, the start.
+  CHECK(after(r.out, "reverse-step").starts_with("at the start of the run\nright: line 1 @1, step 0, clock 0.000 s\n"));
+  CHECK(after(r.out, "step") == "right: line 2 @2, step 1, clock 1.000 s\n    2 |         WAITFOR 1 ON\n");
+}
+
+// A long run asks the interrupt (Ctrl-C at the terminal, the client's
+// pause in the adapter) every 4096 steps: yes pauses the whole cell there.
+TEST_CASE("debug cell: an interrupt pauses a long run of the cell", "[debug][cell-debug]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n"
+                     "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\nEND\n");
+  dir.write("l.rsp", "again:  ADD N 1\n        DELAY 0.001\n        JMPVAR N < 1000000 again\n        END\n");
+  dir.write("r.rsp", "        DELAY 1\n        END\n");
+  rs::launch::ProgramRequest request;
+  request.cell = dir.file("c.rsd");
+  rs::launch::CellPrograms programs;
+  REQUIRE(rs::launch::assignCellPrograms(request, {}, programs));
+  rs::launch::compileAssignedPrograms(request, programs);
+  std::vector<rs::diag::Diagnostic> diags;
+  const auto spec = rs::launch::prepareCellRun(programs, {}, diags);
+  REQUIRE(spec);
+  rs::debug::CellSession session(*spec);
+  int asked = 0;
+  session.setInterrupt([&asked] { return ++asked == 3; });
+  const rs::debug::CellStop stop = session.resume();
+  CHECK(stop.reason == rs::debug::StopReason::Pause);
+  CHECK(stop.message == "interrupted");
+  CHECK(session.cell().steps() == 3 * 4096);  // the third time asked
+  CHECK_FALSE(session.cell().finished());
 }

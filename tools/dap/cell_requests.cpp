@@ -82,6 +82,7 @@ Adapter::Reply Adapter::launchCell(const launch::ProgramRequest& program, const 
     return Error{fmt::format("cannot debug cell {}: no robot has a program (give programs: {{\"LABEL\": \"FILE\"}})",
                              base::safeText(program.cell))};
   cell_ = std::make_unique<debug::CellSession>(*spec);
+  cell_->setInterrupt([this] { return poll_ && poll_(); });
   for (std::size_t p = 0; p < programs.loaded.size(); ++p) {
     const launch::LoadedProgram& l = programs.loaded[p];
     cellSources_.push_back(l.source ? *l.source : diag::SourceFile(programs.files[p], ""));
@@ -171,7 +172,7 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
   }
   if (command == "next" || command == "stepIn") {
     cell_->select(*thread);
-    auto r = cell_->step();
+    auto r = command == "next" ? cell_->next() : cell_->step();
     if (!r) return Error{r.failure().message};
     pending_ = [this, stop = *r] { reportCellStop(stop); };  // the step has run: its response still goes first
     return Json(nullptr);

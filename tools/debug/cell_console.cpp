@@ -30,6 +30,7 @@ const std::vector<CellConsole::Command>& CellConsole::commands() {
       {"info", "i", "info threads|breakpoints", "list the robots (threads: * marks the current one) or the breakpoints"},
       {"thread", "t", "thread LABEL|N", "make a robot the current one (the one step, print, backtrace and list are about)"},
       {"step", "s", "step [N]", "run the current robot's next instruction (or N), the other robots going on in time with it"},
+      {"next", "n", "next", "run the current robot's next instruction, over a GOSUB (until it returns)"},
       {"continue", "c", "continue", "run the cell until a breakpoint or the end"},
       {"until", "u", "until TIME", "run the cell until its clock reaches TIME seconds (breakpoints still stop it)"},
       {"reverse-step", "rs", "reverse-step [N]",
@@ -150,6 +151,13 @@ bool CellConsole::execute(std::string_view line) {
   else if (name == "step") {
     if (const auto n = countArg()) {
       auto r = session_.step(*n);
+      if (!r) error(r.failure().message);
+      else showStop(*r);
+    }
+  }
+  else if (name == "next") {
+    if (noArgs()) {
+      auto r = session_.next();
       if (!r) error(r.failure().message);
       else showStop(*r);
     }

@@ -126,9 +126,15 @@ CellStop CellSession::forward(const runtime::CellUntil& limits, std::function<bo
   at_.reset();
   std::vector<int> ids;
   std::size_t who = current_;
-  bool reached = false;
+  bool reached = false, interrupted = false;
+  std::uint64_t sinceAsked = 0;
   runtime::CellUntil until = limits;
   until.afterStep = [&](const runtime::CellRun&, std::size_t p) {
+    // Ctrl-C, or the client's pause: asked every 4096 steps, which cost microseconds.
+    if (interrupted_ && ++sinceAsked % 4096 == 0 && interrupted_()) {
+      interrupted = true, who = p;
+      return true;
+    }
     ids = hits(p);
     for (CellBreakpoint& b : breakpoints_)
       if (std::find(ids.begin(), ids.end(), b.id) != ids.end()) ++b.hitCount;
@@ -147,6 +153,7 @@ CellStop CellSession::forward(const runtime::CellUntil& limits, std::function<bo
         if (b.id == id) s.message += fmt::format("{}breakpoint {} ({})", s.message.empty() ? "" : ", ", id, describe(b));
     return stopped(std::move(s));
   }
+  if (interrupted) return stopped({StopReason::Pause, "interrupted", who, {}});
   if (reached) return stopped({StopReason::Step, "step done", who, {}});
   at_ = limits.time;
   return stopped({StopReason::Time, fmt::format("at {} s", base::formatSeconds(limits.time)), current_, {}});
@@ -160,6 +167,15 @@ diag::Result<CellStop> CellSession::step(std::uint64_t n) {
   const std::uint64_t now = run_->robot(c).interpreter().steps();
   const std::uint64_t target = now + std::min(n, UINT64_MAX - now);
   return forward({}, [this, c, target](std::size_t p) { return p == c && run_->robot(c).interpreter().steps() >= target; });
+}
+
+diag::Result<CellStop> CellSession::next() {
+  const std::size_t c = current_;
+  if (!run_->finished() && run_->end(c) != runtime::RobotEnd::Running)
+    return diag::refusal(fmt::format("robot {} has ended: choose another with thread LABEL, or continue",
+                                     base::safeText(label(c))));
+  const std::size_t depth = run_->robot(c).interpreter().callDepth();
+  return forward({}, [this, c, depth](std::size_t p) { return p == c && run_->robot(c).interpreter().callDepth() <= depth; });
 }
 
 CellStop CellSession::resume() { return forward({}, nullptr); }

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -89,10 +90,15 @@ class CellSession {
   /// it (fewer at a breakpoint of any robot, or the cell's end). An error
   /// when the current robot's program is over.
   diag::Result<CellStop> step(std::uint64_t n = 1);
+  /// The current robot's next instruction, over a GOSUB (until it returns); an error as step's.
+  diag::Result<CellStop> next();
   /// Until a breakpoint or the end.
   CellStop resume();
   /// Until the clock passes `t` (or a breakpoint, or the end): the cell stands at `t`.
   CellStop until(vm::Micros t);
+
+  /// Asked every few thousand steps of a forward run; yes pauses it (Pause).
+  void setInterrupt(std::function<bool()> interrupted) { interrupted_ = std::move(interrupted); }
 
   // --- backwards ------------------------------------------------------------
   /// The whole cell back to where the current robot had run `n` fewer
@@ -120,6 +126,7 @@ class CellSession {
   std::size_t current_ = 0;
   CellStop stop_;
   std::optional<vm::Micros> at_;  // between two instants (goto-time, until): the moment shown
+  std::function<bool()> interrupted_;
 };
 
 }  // namespace rs::debug

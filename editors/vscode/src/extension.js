@@ -133,7 +133,8 @@ function registerDebugger(context) {
   // F5 without a launch.json: debug the program in the editor.
   context.subscriptions.push(vscode.debug.registerDebugConfigurationProvider('robotsim', {
     resolveDebugConfiguration(_folder, config) {
-      if (config.type && config.program) return config;
+      // A program, or a cell of several robots (cell and programs: one thread per robot).
+      if (config.type && (config.program || config.cell)) return config;
       const editor = vscode.window.activeTextEditor;
       if (!editor || editor.document.languageId !== 'robotsim-program' || editor.document.isUntitled) {
         vscode.window.showErrorMessage('ROBOTSIM: open a saved robot program (.rsp) to debug it.');

@@ -310,8 +310,10 @@ test('the debugger is contributed: type robotsim, breakpoints in programs, snipp
   assert.equal(d.type, 'robotsim');
   assert.deepEqual(d.languages, ['robotsim-program']);
   assert.deepEqual(manifest.contributes.breakpoints, [{ language: 'robotsim-program' }]);
-  assert.deepEqual(d.configurationAttributes.launch.required, ['program']);
+  // No attribute is required: a program, or a cell whose robots have programs (`programs`: one thread each).
+  assert.equal(d.configurationAttributes.launch.required, undefined);
   const known = Object.keys(d.configurationAttributes.launch.properties);
+  assert.ok(known.includes('program') && known.includes('cell') && known.includes('programs'));
   for (const s of d.configurationSnippets) {
     assert.equal(s.body.type, 'robotsim');
     assert.equal(s.body.request, 'launch');

@@ -72,6 +72,7 @@ std::optional<int> debugCellIfSeveral(const DebugOptions& o, std::istream& in, s
 
   DebugTerminal terminal;
   debug::CellSession session(*spec);
+  session.setInterrupt([&terminal] { return terminal.takeInterrupt(); });  // Ctrl-C pauses a long run
   std::vector<const diag::SourceFile*> sources;
   for (const launch::LoadedProgram& l : programs.loaded) sources.push_back(l.source ? &*l.source : nullptr);
   debug::CellConsole console(session, sources, out);

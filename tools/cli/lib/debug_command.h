@@ -25,7 +25,7 @@ namespace rs::cli {
 struct DebugOptions {
   launch::ProgramRequest program;
   launch::RunRequest run;
-  std::vector<std::string> programs;  // --cell: LABEL=FILE for the cell's robots (debug_cell_command.h)
+  std::vector<std::string> programs;  // --cell: LABEL=FILE for the cell's robots (debug_cell_command.cpp)
   std::string commands;  // -x FILE
   bool view = false;     // --view: the live workcell page follows the session
   bool open = false;     // --open: and a browser opens it
