@@ -32,6 +32,8 @@ rm -rf "$out" && mkdir -p "$out"
 
 seeds=()
 [ -d "$here/corpus/$reader" ] && seeds+=("$here/corpus/$reader")
+# Scenario files of cells of several robots: program LABEL FILE, test: robot, LABEL. expectations.
+[ "$reader" = test_file ] && seeds+=("$root/examples/two_robots" "$root/examples/tests/grading_cell")
 case "$reader" in
   program | stimuli | test_file | points)
     seeds+=("$root/examples" "$root/examples/tests/passing" "$root/examples/tests/failing"
