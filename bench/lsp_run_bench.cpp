@@ -133,9 +133,11 @@ nlohmann::json benchCellRun(const Options& options) {
   const std::string leftUri = "file://" + folder + "left.rsp", rightUri = "file://" + folder + "right.rsp";
   std::ostringstream log;
   std::atomic<int> published = 0;
+  Json hoverReply;
   lsp::Server server(
       [&](const Json& m) {
         if (m.value("method", "") == "textDocument/publishDiagnostics") ++published;
+        if (m.contains("id") && m["id"] == 2) hoverReply = m;
         return true;
       },
       log);
@@ -169,6 +171,12 @@ nlohmann::json benchCellRun(const Options& options) {
     ran.seconds.push_back(sample.wall), ran.cpuSeconds.push_back(sample.cpu);
   }
   if (published == 0) throw std::runtime_error("the two-robot example: nothing was published");
+  // The last run was the cell's: left's first move ran twice (alone, left
+  // would wait for ever after one turn; tests/lsp/test_lsp_cell_runs.cpp).
+  hoverReply = nullptr;
+  send(message("textDocument/hover", {{"textDocument", {{"uri", leftUri}}}, {"position", {{"line", line}, {"character", 9}}}}, 2));
+  if (lsp::dumpJson(hoverReply).find("the first of 2 times") == std::string::npos)
+    throw std::runtime_error("the two-robot example was not run as a cell: " + lsp::dumpJson(hoverReply));
   row("two robots (interlock): edit to the cell run published", ran,
       fmt::format("target 50 ms (median): {}", ran.median() * 1e3 <= 50 ? "met" : "MISSED"));
   return {{"published", toJson(ran)}, {"target_ms", 50}};
