@@ -156,6 +156,23 @@ TEST_CASE("lsp cell run: an edit of one program publishes the other program's di
   CHECK(errors(s.diagnostics(c.rightUri)).empty());
 }
 
+TEST_CASE("lsp cell run: the example's program named by its cell's PROGRAM, with robotsim.cell", "[lsp][runs][cell-run]") {
+  // No directive: the setting names the cell, and right.rsp is the PROGRAM
+  // of robot right; left.rsp is read from its file. The times as in the
+  // test above: right's move back runs from 3 s to 4 s, twice.
+  LspSession s;
+  s.initialize(Json::object(), {{"robotsim", {{"cell", kTwoRobots + "interlock.rsd"}}}});
+  const std::string right = rs::testing::readBytes(kTwoRobots + "right.rsp");
+  const std::string uri = rs::lsp::uriOfPath(kTwoRobots + "right.rsp");
+  s.open(uri, right);
+  s.idle();
+  CHECK(errors(s.diagnostics(uri)).empty());
+  const Json hover = s.result("textDocument/hover", LspSession::at(uri, LspSession::lineOf(right, "        MOVE -300"), 9));
+  CAPTURE(hover.dump());
+  CHECK(hover.dump().find("In the checked run: from 3 s to 4 s (takes 1 s), the first of 2 times.") !=
+        std::string::npos);
+}
+
 TEST_CASE("lsp cell run: the other robot's program is read from its file when it is not open", "[lsp][runs][cell-run]") {
   Interlock c;
   LspSession s;
