@@ -257,3 +257,25 @@ TEST_CASE("lsp cell run: a collision between the robots shows in the moving robo
     CHECK(l[0]["relatedInformation"][0]["location"]["uri"] == c.rightUri);
   }
 }
+
+TEST_CASE("lsp cell run: a program put in another's place does not speak for the other's document",
+          "[lsp][runs][cell-run]") {
+  // scratch.rsp runs on left (its "; robot: left" line) in place of left.rsp,
+  // and deadlocks with right as left.rsp edited does above; right.rsp's own
+  // check runs the cell's PROGRAMs (left.rsp as written: no deadlock), so
+  // right.rsp's document keeps what its own run found.
+  Interlock c;
+  const std::string scratch = Interlock::waitingFirst(c.left);
+  const std::string scratchUri = rs::lsp::uriOfPath(c.dir.write("scratch.rsp", scratch));
+  LspSession s;
+  s.initialize();
+  s.open(c.rightUri, c.right);
+  s.idle();
+  s.open(scratchUri, scratch);
+  s.idle();
+  CHECK(errors(s.diagnostics(c.rightUri)).empty());
+  const std::vector<Json> d = withCode(s.diagnostics(scratchUri), "deadlock");
+  REQUIRE(d.size() == 1);
+  CHECK(d[0]["message"].get<std::string>().starts_with("deadlock: left waits at " + c.dir.file("scratch.rsp") + ":11 "));
+  CHECK(errors(s.diagnostics(scratchUri)).size() == 1);
+}

@@ -64,7 +64,7 @@ std::vector<std::string> Workspace::takeDependents() {
   return out;
 }
 
-void Workspace::partnerOf(CellPartner& p, const std::string& cellName, std::string& problem) {
+void Workspace::partnerOf(CellPartner& p, const std::string& cellName, bool mayShow, std::string& problem) {
   const std::string file = normalPath(p.file);
   const std::string shown = fs::path(p.file).filename().string();
   std::optional<std::string> text;
@@ -74,7 +74,7 @@ void Workspace::partnerOf(CellPartner& p, const std::string& cellName, std::stri
   });
   if (open != docs_.end()) {
     std::shared_ptr<const ProgramAnalysis> own = program(open->second);
-    if (checkedAs(*own, cellName, p.label)) p.analysis = std::move(own), p.uri = open->first;
+    if (mayShow && checkedAs(*own, cellName, p.label)) p.analysis = std::move(own), p.uri = open->first;
     else text = open->second.text();
   } else {
     base::FileRead read = base::readFile(p.file, launch::kMaxInputBytes);
@@ -112,13 +112,18 @@ CellRunPlan Workspace::cellRunPlan(const std::string& uri, const ProgramAnalysis
   plan.robot = plan.cell->robotLabeled(context.cell->drivenRobot()->labelOf());
   if (plan.robot == workcell::kNoIndex) return {};
   std::vector<std::string> files{normalPath(analysis.source().name())};
+  // Another document shows this run's findings in it only when this
+  // program is its robot's PROGRAM: that document's own check runs the
+  // cell's PROGRAMs, not a program put in one's place.
+  const std::string& written = plan.cell->robots[plan.robot].program;
+  const bool mayShow = !written.empty() && normalPath(written) == files.front();
   for (std::size_t r = 0; r < plan.cell->robots.size(); ++r) {
     const workcell::PlacedRobot& robot = plan.cell->robots[r];
     if (r == plan.robot || robot.program.empty()) continue;
     CellPartner& p = plan.partners.emplace_back();
     p.robot = r, p.label = robot.labelOf(), p.file = robot.program;
     files.push_back(normalPath(robot.program));
-    partnerOf(p, context.name, plan.problem);
+    partnerOf(p, context.name, mayShow, plan.problem);
   }
   // A change to any of these files runs each of these open programs again.
   if (const auto it = programs_.find(uri); it != programs_.end()) it->second.cellFiles = files;

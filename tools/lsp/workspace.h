@@ -80,9 +80,10 @@ class Workspace {
     std::shared_ptr<const ProgramAnalysis> analysis;
     std::vector<std::string> cellFiles;  ///< the programs its cell run reads (normal absolute paths)
   };
-  /// A partner of a cell run: its open document checked as that robot, or
-  /// its text compiled for that robot; `problem` when it cannot be.
-  void partnerOf(CellPartner& p, const std::string& cellName, std::string& problem);
+  /// A partner of a cell run: its open document checked as that robot
+  /// (when `mayShow`: it then shows what the run finds in it), or its text
+  /// compiled for that robot; `problem` when it cannot be.
+  void partnerOf(CellPartner& p, const std::string& cellName, bool mayShow, std::string& problem);
   std::map<std::string, Document> docs_;
   std::map<std::string, Cached> programs_;
   /// Other robots' programs compiled for a cell run, by cell, robot and
