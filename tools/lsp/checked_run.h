@@ -99,13 +99,14 @@ class RunControl {
   /// is not published.
   void abandon();
   bool abandoned() const { return abandoned_.load(std::memory_order_relaxed); }
-  /// The run being made (the worker's), so that abandon() can pause it.
-  void attach(runtime::Run* run);
+  /// The runs being made (the worker's: one, or every robot's of a cell
+  /// run), so that abandon() can pause them.
+  void attach(std::vector<runtime::Run*> runs);
 
  private:
   std::atomic<bool> abandoned_ = false;
   std::mutex mutex_;
-  runtime::Run* run_ = nullptr;
+  std::vector<runtime::Run*> runs_;
 };
 
 /// The run of `analysis` (which compiled) as check makes it with these

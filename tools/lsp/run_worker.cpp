@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "tools/lsp/cell_checked_run.h"
+
 namespace rs::lsp {
 
 RunWorker::RunWorker(Done done) : done_(std::move(done)), thread_([this] { loop(); }) {}
@@ -47,7 +49,15 @@ void RunWorker::loop() {
     running_ = job.analysis;
     const std::chrono::milliseconds budget = budget_;
     lock.unlock();
-    job.analysis->runMade(checkRun(*job.analysis, job.options, job.analysis->runControl(), budget));
+    if (job.plan.active()) {
+      std::vector<CheckedRun> made =
+          checkCellRun(*job.analysis, job.plan, job.options, job.analysis->runControl(), budget);
+      for (std::size_t p = 0; p < job.plan.partners.size(); ++p)
+        if (job.plan.partners[p].claimed) job.plan.partners[p].analysis->runMade(std::move(made[p + 1]));
+      job.analysis->runMade(std::move(made[0]));
+    } else {
+      job.analysis->runMade(checkRun(*job.analysis, job.options, job.analysis->runControl(), budget));
+    }
     done_(job, *job.analysis->run());
     lock.lock();
     running_.reset();

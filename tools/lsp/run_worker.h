@@ -15,6 +15,7 @@
 #include <string>
 #include <thread>
 
+#include "tools/lsp/cell_run_plan.h"
 #include "tools/lsp/json.h"
 #include "tools/lsp/program_analysis.h"
 
@@ -27,6 +28,9 @@ struct RunJob {
   Json compileDiagnostics;  ///< as published for this version, to publish again with the run's
   Encoding enc = Encoding::Utf16;
   RunOptions options;
+  /// The other robots' programs it runs with (active: a run of the whole
+  /// cell, whose partners' runs are stored in the analyses it claimed).
+  CellRunPlan plan;
 };
 
 class RunWorker {

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <map>
+
 #include "base/file_io.h"
 #include "base/text.h"
 #include "tools/lsp/params.h"
@@ -243,7 +245,24 @@ Json Server::diagnosticsOf(const Document& doc) {
   return Json::array();
 }
 
+namespace {
+
+bool hasStimuli(const RunOptions& o) { return o.stimuliText || !o.stimuliPath.empty(); }
+
+}  // namespace
+
 void Server::publishPending() {
+  // Programs whose cell runs read a program that changed are checked again.
+  for (std::string& uri : workspace_.takeDependents()) pending_.insert(std::move(uri));
+  // Every publication first, then the runs: a run that claims another
+  // document (a cell run) can then never be followed by an older
+  // publication of that document.
+  struct Due {
+    std::string uri;
+    std::shared_ptr<const ProgramAnalysis> analysis;
+  };
+  std::vector<Due> due;
+  std::map<std::string, Json> published;
   for (const std::string& uri : pending_) {
     if (finished()) break;
     const Document* doc = workspace_.document(uri);
@@ -251,18 +270,40 @@ void Server::publishPending() {
     if (doc) params["version"] = doc->version();
     std::shared_ptr<const ProgramAnalysis> analysis;
     if (doc && doc->language() == Language::Program) analysis = workspace_.program(*doc);
+    if (analysis && analysis->ok()) published[uri] = params["diagnostics"];
     // A run made already (the same version published again) goes with it.
     if (analysis)
       if (const CheckedRun* run = analysis->run(); run && run->end != CheckedRun::End::Abandoned)
         params["diagnostics"] = withRunDiagnostics(std::move(params["diagnostics"]),
                                                    runDiagnostics(*analysis, uri, encoding_, *run));
     send(notification("textDocument/publishDiagnostics", params));
-    // Then its run, off this thread: what it finds follows for this version.
-    if (analysis && analysis->ok() && !shutdown_ && analysis->askForRun())
-      runs_.submit({uri, doc->version(), analysis, std::move(params["diagnostics"]), encoding_,
-                    workspace_.runOptions(analysis->source().name())});
+    if (analysis && analysis->ok()) due.push_back({uri, std::move(analysis)});
   }
   pending_.clear();
+  // Then its run, off this thread: what it finds follows for this version.
+  for (Due& d : due) {
+    if (shutdown_ || finished() || !d.analysis->askForRun()) continue;
+    const Document* doc = workspace_.document(d.uri);
+    if (!doc) continue;
+    RunOptions options = workspace_.runOptions(d.analysis->source().name());
+    CellRunPlan plan = workspace_.cellRunPlan(d.uri, *d.analysis);
+    // Another open program of the cell, checked as its robot, takes this
+    // run as its own (one run of the cell for both) unless a stimuli file
+    // beside either makes their runs differ.
+    for (CellPartner& p : plan.partners) {
+      const Document* other = p.uri.empty() ? nullptr : workspace_.document(p.uri);
+      if (!other || hasStimuli(options) || hasStimuli(workspace_.runOptions(p.analysis->source().name())) ||
+          !p.analysis->askForRun())
+        continue;
+      p.claimed = true;
+      p.version = other->version();
+      const auto it = published.find(p.uri);
+      p.compileDiagnostics = it != published.end() ? it->second : diagnosticsOf(*other);
+    }
+    Json diagnostics = published[d.uri];
+    runs_.submit({d.uri, doc->version(), d.analysis, std::move(diagnostics), encoding_, std::move(options),
+                  std::move(plan)});
+  }
 }
 
 void Server::runMade(const RunJob& job, const CheckedRun& run) {
@@ -275,11 +316,23 @@ void Server::runMade(const RunJob& job, const CheckedRun& run) {
     sendLocked(notification("textDocument/publishDiagnostics",
                             {{"uri", job.uri}, {"version", job.version}, {"diagnostics", std::move(all)}}));
   }
-  if (refreshInlayHints_ && job.analysis->answeredWithoutRun())
+  bool refresh = job.analysis->answeredWithoutRun();
+  // The other programs of a cell run that took it as theirs: each in its document.
+  for (const CellPartner& p : job.plan.partners) {
+    if (!p.claimed || p.analysis->runControl().abandoned()) continue;
+    const CheckedRun* theirs = p.analysis->run();
+    if (!theirs || theirs->end == CheckedRun::End::Abandoned) continue;
+    refresh = refresh || p.analysis->answeredWithoutRun();
+    if (theirs->diagnostics.empty()) continue;
+    Json all = withRunDiagnostics(p.compileDiagnostics, runDiagnostics(*p.analysis, p.uri, job.enc, *theirs));
+    sendLocked(notification("textDocument/publishDiagnostics",
+                            {{"uri", p.uri}, {"version", p.version}, {"diagnostics", std::move(all)}}));
+  }
+  if (refreshInlayHints_ && refresh)
     sendLocked({{"jsonrpc", "2.0"},
                 {"id", fmt::format("robotsim-inlay-refresh-{}", ++refreshes_)},
                 {"method", "workspace/inlayHint/refresh"}});
-  if (refreshCodeLenses_ && job.analysis->answeredWithoutRun())
+  if (refreshCodeLenses_ && refresh)
     sendLocked({{"jsonrpc", "2.0"},
                 {"id", fmt::format("robotsim-lens-refresh-{}", ++refreshes_)},
                 {"method", "workspace/codeLens/refresh"}});

@@ -11,6 +11,7 @@
 
 #include "runtime/sim/collision_watch.h"
 #include "tools/lsp/cell_context.h"
+#include "tools/lsp/cell_run_plan.h"
 #include "tools/lsp/document.h"
 #include "tools/lsp/program_analysis.h"
 
@@ -31,13 +32,24 @@ class Workspace {
   Document* document(const std::string& uri);
   const std::map<std::string, Document>& documents() const { return docs_; }
   /// The document is about to change: the run of its last analysis is
-  /// abandoned (a newer version is coming).
+  /// abandoned (a newer version is coming), and so are the analyses of the
+  /// open programs whose cell runs read it (takeDependents()).
   void changing(const std::string& uri);
+  /// The open programs whose analyses were dropped since the last call
+  /// because another program their cell runs read changed: they are to be
+  /// checked again.
+  std::vector<std::string> takeDependents();
   /// Every run being made or waiting is abandoned (shutdown).
   void abandonRuns();
 
   /// The up-to-date analysis of an open program.
   std::shared_ptr<const ProgramAnalysis> program(const Document& doc);
+  /// What the checked run of the open program `uri` runs with
+  /// (cell_run_plan.h): in a cell where other robots have programs, each of
+  /// them compiled for its robot, from its open document or else its file;
+  /// inactive when the program runs alone. Remembers the files the run
+  /// reads, for changing().
+  CellRunPlan cellRunPlan(const std::string& uri, const ProgramAnalysis& analysis);
   /// The analysis of a program file that is not open (workspace symbols).
   std::shared_ptr<const ProgramAnalysis> programFile(const std::string& path, std::string text);
 
@@ -66,9 +78,18 @@ class Workspace {
   struct Cached {
     std::uint64_t revision = 0;
     std::shared_ptr<const ProgramAnalysis> analysis;
+    std::vector<std::string> cellFiles;  ///< the programs its cell run reads (normal absolute paths)
   };
+  /// A partner of a cell run: its open document checked as that robot
+  /// (when `mayShow`: it then shows what the run finds in it), or its text
+  /// compiled for that robot; `problem` when it cannot be.
+  void partnerOf(CellPartner& p, const std::string& cellName, bool mayShow, std::string& problem);
   std::map<std::string, Document> docs_;
   std::map<std::string, Cached> programs_;
+  /// Other robots' programs compiled for a cell run, by cell, robot and
+  /// file: compiled again only when their text changes.
+  std::map<std::string, std::shared_ptr<const ProgramAnalysis>> partnerFiles_;
+  std::vector<std::string> dependents_;
   Settings settings_;
   std::string root_;
   CellCache cells_;
