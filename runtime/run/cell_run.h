@@ -51,6 +51,10 @@ struct CellRunSpec {
   stimuli::Stimuli stimuli;
   vm::RunLimits limits;  ///< per robot; maxTime is the cell's
   CollisionMode collisions = CollisionMode::Error;
+  /// Every robot keeps its own RunLog (RunSpec::log, lines): what a still,
+  /// a page or a chart of the cell draws each robot from.
+  bool log = false;
+  LineThinning lines;
 };
 
 /// How one robot's program finished.

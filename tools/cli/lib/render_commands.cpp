@@ -11,6 +11,7 @@
 #include "base/file_io.h"
 #include "base/seconds.h"
 #include "base/text.h"
+#include "tools/cli/lib/cell_draw_commands.h"
 #include "tools/cli/lib/exit_codes.h"
 #include "tools/cli/lib/number_args.h"
 #include "tools/cli/lib/options.h"
@@ -197,15 +198,19 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     err << fmt::format("robotsim: error: --dump-lines takes text or json, not '{}'\n", o.dump);
     return kExitBadInput;
   }
-  if (const std::string_view runOption = withoutProgram(o); !runOption.empty()) {
-    err << fmt::format("robotsim: error: {} needs --program\n", runOption);
-    return kExitBadInput;
-  }
   vm::Micros at = 0;
   if (!o.at.empty() && !parseSecondsArg(o.at, "--at", at, err)) return kExitBadInput;
   std::optional<Eigen::Vector3d> center;
   if (!o.center.empty() && !parseTriple(o.center, "--center", rules::kCoordinate, center.emplace(), err))
     return kExitBadInput;
+  // A cell whose robots run programs together: each drawn where its motors are.
+  const bool runs = !o.program.file.empty() || !o.programs.empty() || !withoutProgram(o).empty();
+  if (runs)
+    if (const std::optional<int> code = renderCellIfSeveral(o, camera, format, center, out, err)) return *code;
+  if (const std::string_view runOption = withoutProgram(o); !runOption.empty()) {
+    err << fmt::format("robotsim: error: {} needs --program\n", runOption);
+    return kExitBadInput;
+  }
   launch::LoadedProgram loaded;
   if (o.program.file.empty()) {
     loaded.cell = launch::loadCell(o.program, loaded);
@@ -288,6 +293,15 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     if (o.collisionShapes) render::addLines(picture, render::collisionShapeLines(cell, encoders, objectPoses));
     render::markColliding(picture, render::contactsAt(cell, encoders, objectPoses, held));
   }
+  const std::string what = run ? fmt::format("{} on {}", base::safeText(o.program.file), base::safeText(cell.name))
+                               : base::safeText(cell.name);
+  if (!writeStill(o, picture, cell, format, camera, what, moment, out, err)) return kExitBadInput;
+  return stoppedByCollision ? kExitRunFailed : kExitOk;
+}
+
+bool writeStill(const RenderOptions& o, const render::Picture& picture, const workcell::Workcell& cell,
+                std::optional<render::ImageFormat> format, const render::Camera& camera, const std::string& what,
+                std::optional<vm::Micros> moment, std::ostream& out, std::ostream& err) {
   if (o.dump == "json")
     render::dumpJson(out, picture, cell);
   else if (!o.dump.empty())
@@ -296,20 +310,18 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     diag::Result<std::vector<std::uint8_t>> encoded = render::encodePicture(picture, *format);
     if (!encoded) {
       err << fmt::format("{}: error: {}\n", base::safeText(o.output), encoded.failure().message);
-      return kExitBadInput;
+      return false;
     }
     const std::size_t bytes = encoded->size();
-    if (!write(o.output, *encoded, err)) return kExitBadInput;
+    if (!write(o.output, *encoded, err)) return false;
     // What was written, as animate says it; on stderr when stdout carries
     // the --dump-lines listing.
-    const std::string what = run ? fmt::format("{} on {}", base::safeText(o.program.file), base::safeText(cell.name))
-                                 : base::safeText(cell.name);
     (o.dump.empty() ? out : err) << fmt::format(
         "{} -> {} ({}x{} pixels, {}, {} bytes{})\n", what, base::safeText(o.output), camera.width, camera.height,
         *format == render::ImageFormat::Png ? "PNG" : "SVG", bytes,
         moment ? fmt::format(", at {} s", base::formatSeconds(*moment)) : "");
   }
-  return stoppedByCollision ? kExitRunFailed : kExitOk;
+  return true;
 }
 
 // ---- animate ------------------------------------------------------------------
@@ -321,6 +333,12 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   }
   render::Camera camera;
   if (!cameraFrom(o, camera, err)) return kExitBadInput;
+  if (const std::optional<int> code = animateCellIfSeveral(o, camera, out, err)) return *code;
+  if (o.program.file.empty()) {
+    err << "robotsim: error: which program? give a program file, or --cell CELL to animate every PROGRAM its "
+           "ROBOT lines name (LABEL=FILE gives or overrides one)\n";
+    return kExitBadInput;
+  }
   const launch::LoadedProgram loaded = launch::loadProgramToDraw(o.program);
   const Prepared prepared = prepare(loaded, o, kAnimateMaxSteps, std::nullopt, err, /*log=*/true);
   const std::unique_ptr<runtime::Run>& run = prepared.run;
@@ -397,7 +415,10 @@ void addCommon(CLI::App* cmd, RenderOptions& o, const std::string& maxStepsDefau
 }  // namespace
 
 void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
-  cmd->add_option("cell", o.program.cell, "Workcell (or robot) description file or library name")->required();
+  cmd->add_option("cell,--cell", o.program.cell, "Workcell (or robot) description file or library name")->required();
+  cmd->add_option("programs", o.programs,
+                  "LABEL=FILE gives or overrides the program of the cell's robot LABEL; with --at (or any of "
+                  "these) every robot with a program runs it on the cell's one clock");
   cmd->add_option("--program", o.program.file, "Run this program on the workcell's first robot");
   cmd->add_option("--at", o.at,
                   "The moment of the run to draw, in seconds (default: its end, or the collision that stopped it)")
@@ -420,7 +441,11 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
 }
 
 void addAnimateOptions(CLI::App* cmd, RenderOptions& o) {
-  cmd->add_option("program", o.program.file, "Program source (.rsp) or compiled image (.rsb)")->required();
+  cmd->add_option("program", o.program.file,
+                  "Program source (.rsp) or compiled image (.rsb); without it, every PROGRAM of --cell");
+  cmd->add_option("programs", o.programs,
+                  "With --cell: LABEL=FILE gives or overrides the program of the cell's robot LABEL; every robot "
+                  "with a program runs it on the cell's one clock");
   addCellOptions(cmd, o.program);
   addMaxErrorsOption(cmd, o.program);
   cmd->add_option("-o,--output", o.output, "HTML file to write")->required();
