@@ -22,12 +22,12 @@ using rs::testing::readBytes;
 using rs::testing::runCli;
 using rs::testing::TempDir;
 
-namespace {
+namespace cell_pictures_test {
 
-const std::string kInterlock = rendertest::kSourceDir + "/examples/two_robots/interlock.rsd";
-const std::string kExamples = rendertest::kSourceDir + "/examples/two_robots/";
+const std::string kCellInterlock = rendertest::kSourceDir + "/examples/two_robots/interlock.rsd";
+const std::string kTwoRobots = rendertest::kSourceDir + "/examples/two_robots/";
 
-nlohmann::json dumped(const std::vector<std::string>& args) {
+nlohmann::json cellDump(const std::vector<std::string>& args) {
   const auto r = runCli(args);
   INFO(r.err);
   REQUIRE(r.code == 0);
@@ -35,14 +35,14 @@ nlohmann::json dumped(const std::vector<std::string>& args) {
 }
 
 // The lines of robot `robot` in a --dump-lines=json document.
-std::vector<nlohmann::json> robotLines(const nlohmann::json& doc, int robot) {
+std::vector<nlohmann::json> cellRobotLines(const nlohmann::json& doc, int robot) {
   std::vector<nlohmann::json> out;
   for (const auto& l : doc.at("lines"))
     if (l.at("owner") == "robot" && l.at("index") == robot) out.push_back(l);
   return out;
 }
 
-bool sameLines(const std::vector<nlohmann::json>& a, const std::vector<nlohmann::json>& b) {
+bool sameRobotLines(const std::vector<nlohmann::json>& a, const std::vector<nlohmann::json>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i)
     for (const char* end : {"a", "b"})
@@ -52,7 +52,7 @@ bool sameLines(const std::vector<nlohmann::json>& a, const std::vector<nlohmann:
 }
 
 // The page's model, parsed back.
-nlohmann::json pageModel(const std::string& html) {
+nlohmann::json cellPageModel(const std::string& html) {
   const std::string open = "<script type=\"application/json\" id=\"robotsim-model\">";
   const std::size_t a = html.find(open);
   REQUIRE(a != std::string::npos);
@@ -61,12 +61,14 @@ nlohmann::json pageModel(const std::string& html) {
   return nlohmann::json::parse(html.substr(a + open.size(), b - a - open.size()));
 }
 
-}  // namespace
+}  // namespace cell_pictures_test
+
+using namespace cell_pictures_test;
 
 TEST_CASE("render --at of a cell draws every robot where its own motors are", "[render][cell-run][robots]") {
-  const nlohmann::json home = dumped({"render", kInterlock, "--dump-lines=json"});
-  const nlohmann::json early = dumped({"render", kInterlock, "--at", "0.5", "--dump-lines=json"});
-  const nlohmann::json late = dumped({"render", "--cell", kInterlock, "--at", "2.5", "--dump-lines=json"});
+  const nlohmann::json home = cellDump({"render", kCellInterlock, "--dump-lines=json"});
+  const nlohmann::json early = cellDump({"render", kCellInterlock, "--at", "0.5", "--dump-lines=json"});
+  const nlohmann::json late = cellDump({"render", "--cell", kCellInterlock, "--at", "2.5", "--dump-lines=json"});
   // The legend: the moment, then each robot's motors in the cell's order.
   CHECK(early.at("legend")[0] == "left.rsp, right.rsp on interlock   t = 0.500 s");
   CHECK(early.at("legend")[1] == "rhino-xr4  F=150 E=0 D=0 C=0 B=0 A=0");
@@ -74,22 +76,22 @@ TEST_CASE("render --at of a cell draws every robot where its own motors are", "[
   CHECK(late.at("legend")[1] == "rhino-xr4  F=0 E=0 D=0 C=0 B=0 A=0");
   CHECK(late.at("legend")[2] == "rhino-xr4  F=150 E=0 D=0 C=0 B=0 A=0");
   // The lines: at 0.5 s only the left robot has left home, at 2.5 s only the right one.
-  CHECK_FALSE(sameLines(robotLines(early, 0), robotLines(home, 0)));
-  CHECK(sameLines(robotLines(early, 1), robotLines(home, 1)));
-  CHECK(sameLines(robotLines(late, 0), robotLines(home, 0)));
-  CHECK_FALSE(sameLines(robotLines(late, 1), robotLines(home, 1)));
+  CHECK_FALSE(sameRobotLines(cellRobotLines(early, 0), cellRobotLines(home, 0)));
+  CHECK(sameRobotLines(cellRobotLines(early, 1), cellRobotLines(home, 1)));
+  CHECK(sameRobotLines(cellRobotLines(late, 0), cellRobotLines(home, 0)));
+  CHECK_FALSE(sameRobotLines(cellRobotLines(late, 1), cellRobotLines(home, 1)));
   // The right robot's lines at 2.5 s are the left robot's at 0.5 s, moved
   // by the 3000 between their bases: the same motors, the same drawing.
-  const nlohmann::json moved = dumped({"render", kInterlock, "--at", "0.5", "--dump-lines=json", "right=" + kExamples + "left.rsp",
-                                       "left=" + kExamples + "right.rsp"});
+  const nlohmann::json moved = cellDump({"render", kCellInterlock, "--at", "0.5", "--dump-lines=json", "right=" + kTwoRobots + "left.rsp",
+                                       "left=" + kTwoRobots + "right.rsp"});
   CHECK(moved.at("legend")[1] == "rhino-xr4  F=0 E=0 D=0 C=0 B=0 A=0");
   CHECK(moved.at("legend")[2] == "rhino-xr4  F=150 E=0 D=0 C=0 B=0 A=0");
 }
 
 TEST_CASE("render of a cell gives the same bytes every time, and says what it drew", "[render][cell-run][robots]") {
   const TempDir dir;
-  const auto a = runCli({"render", kInterlock, "--at", "2.5", "-o", dir.file("a.svg")});
-  const auto b = runCli({"render", kInterlock, "--at", "2.5", "-o", dir.file("b.svg")});
+  const auto a = runCli({"render", kCellInterlock, "--at", "2.5", "-o", dir.file("a.svg")});
+  const auto b = runCli({"render", kCellInterlock, "--at", "2.5", "-o", dir.file("b.svg")});
   INFO(a.err);
   REQUIRE(a.code == 0);
   REQUIRE(b.code == 0);
@@ -97,20 +99,20 @@ TEST_CASE("render of a cell gives the same bytes every time, and says what it dr
   CHECK(a.out.find("left.rsp, right.rsp on interlock -> ") == 0);
   CHECK(a.out.find(", at 2.5 s)") != std::string::npos);
   // Without --at a cell is drawn at home, as always.
-  const auto still = runCli({"render", kInterlock, "--dump-lines"});
+  const auto still = runCli({"render", kCellInterlock, "--dump-lines"});
   REQUIRE(still.code == 0);
   CHECK(still.out.find("F=0 E=0") != std::string::npos);
 }
 
 TEST_CASE("render of a cell: a LABEL=FILE naming no robot is refused with the labels", "[render][cell-run][robots]") {
-  const auto r = runCli({"render", kInterlock, "--at", "1", "--dump-lines", "middle=" + kExamples + "left.rsp"});
+  const auto r = runCli({"render", kCellInterlock, "--at", "1", "--dump-lines", "middle=" + kTwoRobots + "left.rsp"});
   CHECK(r.code == 2);
   CHECK(r.err.find("workcell interlock has no robot labelled `middle`") != std::string::npos);
   CHECK(r.err.find("hint: the cell's robots are") != std::string::npos);
 }
 
 TEST_CASE("plot of a cell: a lane group per robot, its columns named by its label", "[render][cell-run][robots]") {
-  const auto csv = runCli({"plot", "--cell", kInterlock, "--format=csv", "--every", "0.5"});
+  const auto csv = runCli({"plot", "--cell", kCellInterlock, "--format=csv", "--every", "0.5"});
   INFO(csv.err);
   REQUIRE(csv.code == 0);
   std::istringstream rows(csv.out);
@@ -148,8 +150,8 @@ TEST_CASE("plot of a cell: a lane group per robot, its columns named by its labe
 
   // The picture: written, the same bytes every time.
   const TempDir dir;
-  const auto a = runCli({"plot", "--cell", kInterlock, "-o", dir.file("a.svg")});
-  const auto b = runCli({"plot", "--cell", kInterlock, "-o", dir.file("b.svg")});
+  const auto a = runCli({"plot", "--cell", kCellInterlock, "-o", dir.file("a.svg")});
+  const auto b = runCli({"plot", "--cell", kCellInterlock, "-o", dir.file("b.svg")});
   REQUIRE(a.code == 0);
   REQUIRE(b.code == 0);
   CHECK(readBytes(dir.file("a.svg")) == readBytes(dir.file("b.svg")));
@@ -158,11 +160,11 @@ TEST_CASE("plot of a cell: a lane group per robot, its columns named by its labe
 
 TEST_CASE("animate of a cell replays every robot, the others by time", "[render][cell-run][robots]") {
   const TempDir dir;
-  const auto r = runCli({"animate", "--cell", kInterlock, "-o", dir.file("cell.html")});
+  const auto r = runCli({"animate", "--cell", kCellInterlock, "-o", dir.file("cell.html")});
   INFO(r.err);
   REQUIRE(r.code == 0);
   CHECK(r.out.find("left.rsp, right.rsp on interlock -> ") == 0);
-  const nlohmann::json model = pageModel(readBytes(dir.file("cell.html")));
+  const nlohmann::json model = cellPageModel(readBytes(dir.file("cell.html")));
   CHECK(model.at("robots")[0].at("program") == true);
   CHECK(model.at("robots")[1].at("program") == false);
   const auto& others = model.at("run").at("others");
@@ -180,8 +182,8 @@ TEST_CASE("animate of a cell replays every robot, the others by time", "[render]
   // The page's time runs to the cell's end, not only the first robot's.
   CHECK(model.at("run").at("end").get<std::int64_t>() >= others[0].at("end").get<std::int64_t>());
   // A page of one robot has no "others": its bytes are what they were.
-  const auto one = runCli({"animate", kExamples + "left.rsp", "--cell", "xr4-cell", "-o", dir.file("one.html")});
+  const auto one = runCli({"animate", kTwoRobots + "left.rsp", "--cell", "xr4-cell", "-o", dir.file("one.html")});
   INFO(one.err);
   REQUIRE(one.code != 2);
-  CHECK_FALSE(pageModel(readBytes(dir.file("one.html"))).at("run").contains("others"));
+  CHECK_FALSE(cellPageModel(readBytes(dir.file("one.html"))).at("run").contains("others"));
 }

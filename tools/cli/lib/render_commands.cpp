@@ -417,8 +417,9 @@ void addCommon(CLI::App* cmd, RenderOptions& o, const std::string& maxStepsDefau
 void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
   cmd->add_option("cell,--cell", o.program.cell, "Workcell (or robot) description file or library name")->required();
   cmd->add_option("programs", o.programs,
-                  "LABEL=FILE gives or overrides the program of the cell's robot LABEL; with --at (or any of "
-                  "these) every robot with a program runs it on the cell's one clock");
+                  "LABEL=FILE gives or overrides the program of the cell's robot LABEL; with it (or --at, "
+                  "--path) every robot with a program runs it on the cell's one clock, each drawn where its motors "
+                  "are");
   cmd->add_option("--program", o.program.file, "Run this program on the workcell's first robot");
   cmd->add_option("--at", o.at,
                   "The moment of the run to draw, in seconds (default: its end, or the collision that stopped it)")
@@ -428,7 +429,7 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
                 "magenta; parts that overlap are drawn red either way");
   cmd->add_flag("--path", o.path,
                 "Also draw the path of the tool centre point up to the moment drawn (in cyan): a straight line for "
-                "MOVES, APPRO and DEPART, a curve for MOVEP (needs --program)");
+                "MOVES, APPRO and DEPART, a curve for MOVEP (needs --program, or a cell whose robots have PROGRAMs)");
   cmd->add_option("-o,--output", o.output, "Picture to write: FILE.png or FILE.svg");
   cmd->add_option("--size", o.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
   cmd->add_option("--center", o.center,
