@@ -39,17 +39,24 @@ std::optional<CellDrawChoice> chooseCellDraw(const launch::ProgramRequest& given
     err << "robotsim: error: LABEL=FILE gives a program to a robot of a cell\n  hint: name the cell with --cell CELL\n";
     return failed();
   }
+  if (request.file.empty() && assignments.empty()) {
+    // A cell that loads but has no PROGRAMs, and nothing given: the command
+    // says what it needs, as always.
+    launch::LoadedProgram probe;
+    launch::ProgramRequest cellOnly = request;
+    cellOnly.robot.clear();
+    const std::shared_ptr<const workcell::Workcell> cell = launch::loadCell(cellOnly, probe);
+    if (cell && !diag::hasErrors(probe.diagnostics) &&
+        std::none_of(cell->robots.begin(), cell->robots.end(),
+                     [](const workcell::PlacedRobot& r) { return !r.program.empty(); }))
+      return std::nullopt;
+  }
   auto draw = std::make_unique<CellDraw>();
   launch::CellPrograms& programs = draw->programs;
   const auto sourceOf = [&programs](const std::string& file) { return programs.sourceOf(file); };
   if (!launch::assignCellPrograms(request, assignments, programs)) {
     // A program alone on a cell that does not load: the run of one says why, as always.
     if (!request.file.empty() && assignments.empty()) return std::nullopt;
-    // A cell without PROGRAMs, and nothing given: the command says what it needs, as always.
-    const bool noPrograms = programs.cell && !diag::hasErrors(programs.cellLoad.diagnostics) &&
-                            std::none_of(programs.cell->robots.begin(), programs.cell->robots.end(),
-                                         [](const workcell::PlacedRobot& r) { return !r.program.empty(); });
-    if (request.file.empty() && assignments.empty() && noPrograms) return std::nullopt;
     std::vector<diag::Diagnostic> all = programs.cellLoad.diagnostics;
     for (const launch::LoadedProgram& l : programs.loaded) all.insert(all.end(), l.diagnostics.begin(), l.diagnostics.end());
     launch::printDiagnostics(err, all, sourceOf, request.maxErrors, {});
