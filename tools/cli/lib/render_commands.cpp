@@ -18,6 +18,7 @@
 #include "tools/cli/lib/plot_command.h"
 #include "tools/cli/lib/report.h"
 #include "tools/cli/lib/run_warnings.h"
+#include "launch/cell_programs.h"
 #include "launch/run_diagnostics.h"
 #include "runtime/render/animation.h"
 #include "runtime/render/collision_marks.h"
@@ -182,7 +183,25 @@ std::optional<Eigen::Vector3d> zoomPivot(const workcell::Workcell& cell) {
 
 // ---- render -------------------------------------------------------------------
 
-int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) {
+int renderCommand(const RenderOptions& given, std::ostream& out, std::ostream& err) {
+  RenderOptions o = given;
+  if (!o.cellArgument.empty()) {
+    if (o.program.cell.empty()) {
+      o.program.cell = o.cellArgument;
+    } else if (launch::isProgramAssignment(o.cellArgument)) {
+      o.programs.insert(o.programs.begin(), o.cellArgument);
+    } else {
+      err << fmt::format("robotsim: error: two cells: {} and --cell {}\n  hint: name the cell once: as the first "
+                         "argument, or with --cell\n",
+                         base::safeText(o.cellArgument), base::safeText(o.program.cell));
+      return kExitBadInput;
+    }
+    o.cellArgument.clear();
+  }
+  if (o.program.cell.empty()) {
+    err << "robotsim: error: which workcell? give CELL (a description file or a library name), or --cell CELL\n";
+    return kExitBadInput;
+  }
   render::Camera camera;
   if (!cameraFrom(o, camera, err)) return kExitBadInput;
   std::optional<render::ImageFormat> format;
@@ -415,7 +434,8 @@ void addCommon(CLI::App* cmd, RenderOptions& o, const std::string& maxStepsDefau
 }  // namespace
 
 void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
-  cmd->add_option("cell,--cell", o.program.cell, "Workcell (or robot) description file or library name")->required();
+  cmd->add_option("cell", o.cellArgument, "Workcell (or robot) description file or library name (or give --cell)");
+  cmd->add_option("--cell", o.program.cell, "The workcell, as the first argument names it");
   cmd->add_option("programs", o.programs,
                   "LABEL=FILE gives or overrides the program of the cell's robot LABEL; with it (or --at, "
                   "--path) every robot with a program runs it on the cell's one clock, each drawn where its motors "

@@ -28,8 +28,8 @@ namespace rs::cli {
 inline constexpr std::uint64_t kAnimateMaxSteps = 1'000'000;
 
 struct RenderOptions {
-  /// file: render --program, animate's positional; cell: render's
-  /// positional, animate --cell; --lib.
+  /// file: render --program, animate's positional; cell: --cell (render's
+  /// positional too: cellArgument); --lib.
   launch::ProgramRequest program;
   launch::RunRequest run;          // --input, --stimuli, --max-steps, --max-time
   std::string at;                  // render --at SECONDS
@@ -42,6 +42,9 @@ struct RenderOptions {
   bool path = false;               // render --path: the tool centre point's path up to the moment drawn
   std::string dump;  // --dump-lines: "", "text" or "json"
   std::vector<std::string> programs = {};  // with a cell: LABEL=FILE for its robots (cell_draw.h)
+  /// render's positional CELL (program.cell is its --cell): either names
+  /// the cell; beside --cell, a LABEL=FILE.
+  std::string cellArgument = {};
 };
 
 int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err);
