@@ -14,6 +14,19 @@ struct CellGrasp {
   const runtime::GraspEvent* event = nullptr;
 };
 
+// Every motor of `log` at time t, by time: the last move that started by
+// then.
+std::vector<std::int32_t> motorsAt(const runtime::RunLog& log, vm::Micros t) {
+  std::vector<std::int32_t> out(log.motors.size(), 0);
+  for (std::size_t m = 0; m < log.motors.size(); ++m) {
+    const std::vector<runtime::MotorMove>& moves = log.moves[m];
+    const auto after = std::upper_bound(moves.begin(), moves.end(), t,
+                                        [](vm::Micros v, const runtime::MotorMove& x) { return v < x.start; });
+    if (after != moves.begin()) out[m] = runtime::positionAt(*(after - 1), log.motors[m], t);
+  }
+  return out;
+}
+
 }  // namespace
 
 CellMoment cellMomentOf(const runtime::CellRun& run, vm::Micros at) {
@@ -26,12 +39,16 @@ CellMoment cellMomentOf(const runtime::CellRun& run, vm::Micros at) {
   for (std::size_t p = 0; p < run.size(); ++p) {
     const runtime::Run& robot = run.robot(p);
     const std::size_t r = robot.rig().robotIndex();
-    if (const runtime::RunLog* log = robot.log()) {
-      m.encoders[r] = runtime::stateAt(*log, at).encoders;
-      for (const runtime::GraspRecord& g : log->grasps) grasps.push_back({r, &g.event});
+    const runtime::RunLog* log = robot.log();
+    // After its last logged step the robot's machine knows best: a robot
+    // the cell stopped in the middle of a move never logged that step.
+    if (log && !log->steps.empty() && at < log->steps.back().end) {
+      m.encoders[r] = motorsAt(*log, at);
     } else {
       m.encoders[r] = robot.rig().motorsAt(at);
     }
+    if (log)
+      for (const runtime::GraspRecord& g : log->grasps) grasps.push_back({r, &g.event});
   }
   // In the order they happened; at one microsecond, in the cell's robot order.
   std::stable_sort(grasps.begin(), grasps.end(), [](const CellGrasp& a, const CellGrasp& b) {

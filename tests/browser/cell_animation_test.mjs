@@ -31,6 +31,10 @@ const cells = [
   // The giver takes the bar at 3.736 s, the taker takes it over at 7.394 s,
   // the giver opens 7.394 .. 7.994 s, the taker carries it on.
   { cell: 'relay.rsd', times: [3, 5, 7.5, 7.9, 10, 14] },
+  // Both robots running left.rsp move at once: render stops the cell at
+  // --at in the middle of the other robot's move.
+  { cell: 'interlock.rsd', times: [0.5, 1.5], programs: ['right=' + path.join(source, 'examples', 'two_robots', 'left.rsp')],
+    page: 'both_left' },
 ];
 
 // Largest difference between the page's lines and tools and render's.
@@ -53,15 +57,15 @@ try {
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
   page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  for (const { cell, times } of cells) {
+  for (const { cell, times, programs = [], page: name } of cells) {
     const file = path.join(source, 'examples', 'two_robots', cell);
-    const html = path.join(out, cell.replace('.rsd', '.html'));
-    robotsim(['animate', '--cell', file, '-o', html]);
+    const html = path.join(out, (name ?? cell.replace('.rsd', '')) + '.html');
+    robotsim(['animate', '--cell', file, ...programs, '-o', html]);
     await page.goto('file://' + html);
     await page.waitForFunction(() => window.robotsim !== undefined, null, { timeout: 10000 });
     check(errors.length === 0, `${cell}: the page runs without errors`, errors.join('; '));
     for (const t of times) {
-      const reference = JSON.parse(robotsim(['render', file, '--at', String(t), '--dump-lines=json']));
+      const reference = JSON.parse(robotsim(['render', file, ...programs, '--at', String(t), '--dump-lines=json']));
       const mine = await page.evaluate((us) => window.robotsim.project(us, 1024, 768), t * 1e6);
       const worst = difference(mine, reference);
       check(worst <= 1e-6, `${cell}: the page projects like render --at ${t}`,

@@ -86,6 +86,17 @@ TEST_CASE("render --at of a cell draws every robot where its own motors are", "[
                                        "left=" + kTwoRobots + "right.rsp"});
   CHECK(moved.at("legend")[1] == "rhino-xr4  F=0 E=0 D=0 C=0 B=0 A=0");
   CHECK(moved.at("legend")[2] == "rhino-xr4  F=150 E=0 D=0 C=0 B=0 A=0");
+  // Both robots running left.rsp move together: F out 0 .. 1 s, back 1 ..
+  // 2 s, so 150 at 0.5 s and again (300 - 150) at 1.5 s. The cell stops at
+  // --at when the first robot's move passes it: the other robot, stopped in
+  // the middle of its move, is still drawn where that move has it.
+  for (const char* t : {"0.5", "1.5"}) {
+    INFO("at " << t);
+    const nlohmann::json both = cellDump({"render", "--cell", kCellInterlock, "right=" + kTwoRobots + "left.rsp",
+                                          "--at", t, "--dump-lines=json"});
+    CHECK(both.at("legend")[1] == "rhino-xr4  F=150 E=0 D=0 C=0 B=0 A=0");
+    CHECK(both.at("legend")[2] == "rhino-xr4  F=150 E=0 D=0 C=0 B=0 A=0");
+  }
 }
 
 TEST_CASE("render of a cell gives the same bytes every time, and says what it drew", "[render][cell-run][robots]") {
