@@ -136,6 +136,7 @@ std::optional<int> animateCellIfSeveral(const RenderOptions& o, const render::Ca
   input.listing = listingOf(draw.programs.loaded.front());
   input.camera = camera;
   input.outcome = stopText(cell, outcome);
+  addCollisionMarks(first, input);  // the first robot's, whose parts the page marks
   for (std::size_t p = 1; p < cell.size(); ++p)
     input.others.push_back({cell.robot(p).rig().robotIndex(), cell.robot(p).log()});
   const render::Chart chart = cellChart(draw, outcome, 0);

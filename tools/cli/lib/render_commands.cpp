@@ -345,6 +345,26 @@ bool writeStill(const RenderOptions& o, const render::Picture& picture, const wo
 
 // ---- animate ------------------------------------------------------------------
 
+void addCollisionMarks(const runtime::Run& run, render::AnimationInput& input) {
+  const runtime::CollisionWatch* watch = run.rig().collisionWatch();
+  if (!watch || !run.log()) return;
+  const runtime::RunLog& recording = *run.log();
+  const auto robotBodies = watch->model().robotBodies();
+  for (const runtime::CollisionEvent& e : run.rig().collisions()) {
+    render::CollisionMark mark{e.at, e.at, {}, {}};
+    if (const std::optional<std::uint32_t> step = stepOfCollision(recording, e)) {  // its move: an event
+      mark.end = recording.steps[*step].end;
+      input.eventSteps.push_back(*step);
+    }
+    for (const workcell::BodyRef& b : {e.contact.a, e.contact.b}) {
+      if (b.kind == workcell::BodyKind::Object) mark.objects.push_back(b.index);
+      for (std::size_t k = 0; k < robotBodies.size(); ++k)
+        if (robotBodies[k].ref == b) mark.robotParts.push_back(static_cast<int>(k));
+    }
+    input.collisions.push_back(std::move(mark));
+  }
+}
+
 int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   if (!endsWithHtml(o.output)) {
     err << fmt::format("robotsim: error: -o {}: the page's file name must end in .html\n", base::safeText(o.output));
@@ -370,22 +390,7 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   input.run = &recording;
   input.listing = listing(loaded);
   input.camera = camera;
-  if (const runtime::CollisionWatch* watch = run->rig().collisionWatch()) {
-    const auto robotBodies = watch->model().robotBodies();
-    for (const runtime::CollisionEvent& e : run->rig().collisions()) {
-      render::CollisionMark mark{e.at, e.at, {}, {}};
-      if (const std::optional<std::uint32_t> step = stepOfCollision(recording, e)) {  // its move: an event
-        mark.end = recording.steps[*step].end;
-        input.eventSteps.push_back(*step);
-      }
-      for (const workcell::BodyRef& b : {e.contact.a, e.contact.b}) {
-        if (b.kind == workcell::BodyKind::Object) mark.objects.push_back(b.index);
-        for (std::size_t k = 0; k < robotBodies.size(); ++k)
-          if (robotBodies[k].ref == b) mark.robotParts.push_back(static_cast<int>(k));
-      }
-      input.collisions.push_back(std::move(mark));
-    }
-  }
+  addCollisionMarks(*run, input);
   if (!outcome.ok()) {
     const vm::Image& image = *run->spec().image;
     const diag::Diagnostic d = launch::stopDiagnostic(image, outcome, image.sourceName);

@@ -12,9 +12,11 @@
 #include <Eigen/Geometry>
 
 #include "launch/program.h"
+#include "runtime/render/animation.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/draw.h"
 #include "runtime/render/picture.h"
+#include "runtime/run/run.h"
 #include "model/workcell/model.h"
 #include "launch/run_request.h"
 
@@ -55,6 +57,10 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err);
 /// rest); without a robot, nullopt (the middle of the picture).
 std::optional<Eigen::Vector3d> zoomPivot(const workcell::Workcell& cell);
 int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err);
+
+/// The page's collision marks (and their moves as events) of `run`, which
+/// kept a log: each collision's parts red from its moment to its move's end.
+void addCollisionMarks(const runtime::Run& run, render::AnimationInput& input);
 
 /// A still's output, as render writes it: the --dump-lines listing (to
 /// `out`), the picture in `format` (when set) to -o, and the line that
