@@ -92,6 +92,7 @@ Json graspModel(const runtime::RunLog& rec, const workcell::Workcell& cell) {
   for (const runtime::GraspRecord& record : rec.grasps) {
     const runtime::GraspEvent& g = record.event;
     if (g.object >= cell.objects.size()) continue;  // never expected: the log saw this cell
+    if (!g.held && g.other) continue;  // a hand-over: the robot that took it over carries it
     step.push_back(record.step), at.push_back(g.at), object.push_back(g.object), held.push_back(g.held);
     const Eigen::Isometry3d P_inv = cell.objects[g.object].F_world_design.inverse(Eigen::Isometry);
     for (const auto& v : frameJson(g.pose * P_inv)) pose.push_back(v);
@@ -132,7 +133,7 @@ Json sensorEdgeModel(const runtime::RunLog& rec) {
   return {{"at", at}, {"sensor", sensor}, {"on", on}};
 }
 
-Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const std::string& outcome) {
+Json motorsModel(const runtime::RunLog& rec) {
   Json motors = Json::array();
   for (const vm::MotorSpec& m : rec.motors) {
     Json motor = {{"letter", std::string(1, m.letter)},
@@ -147,24 +148,49 @@ Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const 
     if (m.actuation != 0) motor["actuation"] = m.actuation;
     motors.push_back(std::move(motor));
   }
-  Json index = Json::array(), start = Json::array(), stop = Json::array();
-  for (const runtime::StepRecord& s : rec.steps) index.push_back(s.index), start.push_back(s.start), stop.push_back(s.end);
+  return motors;
+}
+
+// Each motor's moves as parallel arrays; `steps`: with each one's step.
+Json movesModel(const runtime::RunLog& rec, bool steps) {
   Json moves = Json::array();
   for (const std::vector<runtime::MotorMove>& list : rec.moves) {
     Json step = Json::array(), from = Json::array(), to = Json::array(), t0 = Json::array(), t1 = Json::array();
     Json lock = Json::array();
     bool anyLock = false;
     for (const runtime::MotorMove& m : list) {
-      step.push_back(m.step), from.push_back(m.from), to.push_back(m.to), t0.push_back(m.start), t1.push_back(m.end);
+      if (steps) step.push_back(m.step);
+      from.push_back(m.from), to.push_back(m.to), t0.push_back(m.start), t1.push_back(m.end);
       lock.push_back(m.lockStep ? (m.lead ? 2 : 1) : 0), anyLock |= m.lockStep;
     }
     // Moved in, not copied (a braced list copies): a page of many frames is mostly these.
     Json entry = Json::object();
-    entry["step"] = std::move(step), entry["from"] = std::move(from), entry["to"] = std::move(to);
+    if (steps) entry["step"] = std::move(step);
+    entry["from"] = std::move(from), entry["to"] = std::move(to);
     entry["start"] = std::move(t0), entry["end"] = std::move(t1);
     if (anyLock) entry["lock"] = std::move(lock);  // 1 lock-step, 2 leading: only with straight lines, so other pages keep their bytes
     moves.push_back(std::move(entry));
   }
+  return moves;
+}
+
+// Another robot of the cell, moved by time ("run"."others").
+Json otherModel(const OtherRobotRun& other, const workcell::Workcell& cell) {
+  Json grasps = graspModel(*other.run, cell);
+  grasps.erase("step");
+  return {{"robot", other.robot},
+          {"end", other.run->end},
+          {"motors", motorsModel(*other.run)},
+          {"moves", movesModel(*other.run, false)},
+          {"grasps", std::move(grasps)}};
+}
+
+Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const std::string& outcome,
+              std::size_t driven) {
+  Json motors = motorsModel(rec);
+  Json index = Json::array(), start = Json::array(), stop = Json::array();
+  for (const runtime::StepRecord& s : rec.steps) index.push_back(s.index), start.push_back(s.start), stop.push_back(s.end);
+  Json moves = movesModel(rec, true);
   Json outStep = Json::array(), outMask = Json::array();
   for (const runtime::OutputChange& o : rec.outputs) outStep.push_back(o.step), outMask.push_back(o.outputs);
   Json camStep = Json::array(), camView = Json::array(), camWindow = Json::array();
@@ -181,7 +207,7 @@ Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const 
   run["motors"] = std::move(motors);
   run["index"] = std::move(index), run["start"] = std::move(start), run["stop"] = std::move(stop);
   run["moves"] = std::move(moves);
-  run["driven"] = cell.drivenRobotIndex();  // the robot a collision's robotParts are parts of
+  run["driven"] = driven;  // the robot a collision's robotParts are parts of
   run["lines"] = vm::kIoCount;  // inputs and outputs each: the lamps the page draws
   run["outputs"] = {{"step", outStep}, {"mask", outMask}};
   run["cameras"] = {{"step", camStep}, {"view", camView}, {"window", camWindow}};
@@ -224,9 +250,9 @@ Json styleModel() {
 // The tool centre point's path over the whole run (tool_path.h), thinned
 // to a thousandth of the fit's radius: "at" (µs), "pts" (x, y, z each),
 // "jump" (the points that start a new stretch).
-Json pathModel(const runtime::RunLog& log, const workcell::Workcell& cell, double radius) {
+Json pathModel(const runtime::RunLog& log, const workcell::Workcell& cell, std::size_t driven, double radius) {
   Json at = Json::array(), pts = Json::array(), jump = Json::array();
-  if (const workcell::PlacedRobot* robot = cell.drivenRobot()) {
+  if (const workcell::PlacedRobot* robot = driven < cell.robots.size() ? &cell.robots[driven] : nullptr) {
     const std::vector<PathPoint> path = toolPathOf(log, *robot, radius * kPathTolerance);
     for (std::size_t i = 0; i < path.size(); ++i) {
       at.push_back(path[i].at);
@@ -270,10 +296,14 @@ nlohmann::ordered_json frameJson(const Eigen::Isometry3d& F) {
 }
 
 Json cellDrawing(const workcell::Workcell& cell, const Camera& camera) {
+  return cellDrawing(cell, camera, cell.drivenRobotIndex());
+}
+
+Json cellDrawing(const workcell::Workcell& cell, const Camera& camera, std::size_t robot) {
   const CellPoser poser(cell);
   const Fit fit = fitView(poser.homePoints(), camera);
   Json robots = Json::array();
-  for (std::size_t r = 0; r < cell.robots.size(); ++r) robots.push_back(robotModel(poser, r, r == cell.drivenRobotIndex()));
+  for (std::size_t r = 0; r < cell.robots.size(); ++r) robots.push_back(robotModel(poser, r, r == robot));
   Json objects = Json::array();
   for (std::size_t o = 0; o < cell.objects.size(); ++o)
     objects.push_back(part("object", static_cast<int>(o), 0, cell.objects[o].shape, cell.objects[o].F_world_design));
@@ -298,13 +328,20 @@ Json animationModel(const AnimationInput& input) {
 Json animationModel(const AnimationInput& input, const Frames& frames) {
   const workcell::Workcell& cell = *input.cell;
   Json model = {{"title", fmt::format("{} on {}", input.listing.name, cell.name)}, {"cell", cell.name}};
-  const Json drawing = cellDrawing(cell, input.camera);
+  const Json drawing = cellDrawing(cell, input.camera, input.robot);
   for (const auto& [key, value] : drawing.items()) model[key] = value;
   model["program"] = {{"name", input.listing.name}, {"lines", input.listing.lines}, {"lineOf", input.listing.lineOf}};
-  model["run"] = withCollisions(runModel(frames.log, cell, input.outcome), input.collisions);
+  model["run"] = withCollisions(runModel(frames.log, cell, input.outcome, input.robot), input.collisions);
+  if (!input.others.empty()) {  // only in a cell of several: other pages keep their bytes
+    Json others = Json::array();
+    vm::Micros end = frames.log.end;
+    for (const OtherRobotRun& other : input.others) others.push_back(otherModel(other, cell)), end = std::max(end, other.run->end);
+    model["run"]["others"] = std::move(others);
+    model["run"]["end"] = end;
+  }
   if (frames.decimated()) model["run"]["frames"] = {{"steps", frames.runSteps}, {"slot", frames.slot}};
   if (!input.warning.empty()) model["run"]["warning"] = input.warning;  // only when there is one
-  model["path"] = pathModel(*input.run, cell, model["fit"]["radius"].get<double>());
+  model["path"] = pathModel(*input.run, cell, input.robot, model["fit"]["radius"].get<double>());
   if (input.chart) {
     const ChartLayout layout = chartLayout(*input.chart);
     const diag::Result<std::vector<std::uint8_t>> svg = encodeChart(*input.chart, layout, ImageFormat::Svg);

@@ -41,9 +41,20 @@ struct CollisionMark {
   std::vector<int> robotParts, objects;
 };
 
-struct AnimationInput {
-  const workcell::Workcell* cell = nullptr;  ///< its driven robot (Workcell::drivenRobot) ran the program
+/// Another robot of a cell of several (runtime/run/cell_run.h) and its log:
+/// the page moves it by time, as its log says, beside the program's robot.
+struct OtherRobotRun {
+  std::size_t robot = 0;  ///< its index in Workcell::robots
   const runtime::RunLog* run = nullptr;
+};
+
+struct AnimationInput {
+  const workcell::Workcell* cell = nullptr;  ///< its robot `robot` ran the program
+  const runtime::RunLog* run = nullptr;
+  /// The robot whose run `run` is (Workcell::drivenRobotIndex for a run of
+  /// one), and in a cell of several the others that ran programs too.
+  std::size_t robot = 0;
+  std::vector<OtherRobotRun> others = {};
   Listing listing;
   /// The starting camera. Its width x height (animate: the default
   /// 1024x768) choose the fit, as for a still of that size; the page keeps
@@ -83,6 +94,12 @@ struct AnimationInput {
 /// "run"."frames" says so: {"steps": the run's steps, "slot": µs}.
 /// With a chart, "chart": {"svg" (the picture, kChartWidth wide), "width",
 /// "height" (pixels), "left", "right" (the x of time 0 and of "end", µs)}.
+/// A cell of several robots adds "run"."others": per other robot {"robot"
+/// (its index in "robots"), "end", "motors", "moves" (as "run"'s, by time:
+/// no step numbers), "grasps" ({"at", "object", "held", "pose"}, a take's
+/// pose to be followed by that robot's last frame)}; "run"."end" is then
+/// the cell's end. A hand-over's let-go is left out of every "grasps": the
+/// robot that took the part over carries it from its take on.
 nlohmann::ordered_json animationModel(const AnimationInput& input);
 /// The same from frames already made of input.run.
 nlohmann::ordered_json animationModel(const AnimationInput& input, const Frames& frames);
@@ -95,6 +112,8 @@ std::string animationHtml(const AnimationInput& input, const Frames& frames);
 /// "robots", "objects"} (the driven robot runs the program), as in
 /// animationModel. The shared drawing script (drawScript) reads it.
 nlohmann::ordered_json cellDrawing(const workcell::Workcell& cell, const Camera& camera);
+/// The same with robot `robot` as the one that runs the page's program.
+nlohmann::ordered_json cellDrawing(const workcell::Workcell& cell, const Camera& camera, std::size_t robot);
 
 /// A frame as the pages read it: column-major 3x4, the x, y, z axes, then
 /// the origin. The teach pendant's state sends its frames the same way.

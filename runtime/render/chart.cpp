@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <string_view>
 
 #include "model/workcell/tool_tracker.h"
 #include "runtime/run/device_history.h"
@@ -89,15 +90,16 @@ Chart chartOf(const ChartInput& input) {
   const runtime::RunLog& log = *input.run;
   Chart chart;
   chart.title = input.title;
-  chart.end = log.end;
-  const vm::Micros every = input.every > 0 ? input.every : chartInterval(log.end);
-  chart.times = sampleTimes(log.end, every);
+  chart.end = std::max(log.end, input.end);
+  const vm::Micros every = input.every > 0 ? input.every : chartInterval(chart.end);
+  chart.times = sampleTimes(chart.end, every);
   const std::size_t n = chart.times.size();
 
   // Columns: each motor, the TCP, what the gripper holds, inputs, outputs.
   const std::size_t motors = log.motors.size();
   for (const vm::MotorSpec& m : log.motors) chart.series.push_back({std::string(1, m.letter), {}});
-  const workcell::PlacedRobot* driven = input.cell ? input.cell->drivenRobot() : nullptr;
+  const workcell::PlacedRobot* driven =
+      input.cell && input.robot < input.cell->robots.size() ? &input.cell->robots[input.robot] : nullptr;
   const workcell::PlacedRobot* robot = driven && driven->robot.chain ? driven : nullptr;
   const std::size_t tcp = chart.series.size();
   if (robot)
@@ -188,7 +190,8 @@ std::string chartCsv(const Chart& chart) {
   for (std::size_t i = 0; i < chart.times.size(); ++i) {
     out += csvSeconds(chart.times[i]);
     for (const ChartSeries& s : chart.series) {
-      const bool length = s.column.rfind("tcp_", 0) == 0;
+      // "tcp_x", or in a cell's chart "left.tcp_x" (cell_chart.h).
+      const bool length = std::string_view(s.column).substr(s.column.find('.') + 1).starts_with("tcp_");
       out += ',' + csvNumber(s.values[i], length ? 3 : 0);
     }
     out += fmt::format(",{}\n", chart.lines[i]);

@@ -39,6 +39,10 @@ struct ChartLane {
   std::vector<std::size_t> series;  ///< indices into Chart::series
   int axis = 0;                ///< Tcp: the coordinate shown, 0 x, 1 y, 2 z
   std::vector<std::string> rows = {};  ///< Sensors, Conveyors: each row's name (inputs and outputs: numbered)
+  /// The lane group it belongs to, titled above its first lane: in a chart
+  /// of a cell of several robots, the robot's label ("cell" for the
+  /// devices' lanes); "" in a chart of one robot.
+  std::string group = {};
 };
 
 enum class MarkKind : std::uint8_t { Collision, Warning, Stop };
@@ -57,12 +61,17 @@ struct LineChange {
 };
 
 struct ChartInput {
-  const workcell::Workcell* cell = nullptr;  ///< its driven robot (Workcell::drivenRobot) ran the program; null: no TCP
+  const workcell::Workcell* cell = nullptr;  ///< robot `robot` of it ran the program; null: no TCP
   const runtime::RunLog* run = nullptr;
   std::span<const std::uint32_t> lineOf;     ///< the source line of each instruction (vm::Image::lines)
   std::vector<ChartMark> marks;
   vm::Micros every = 0;  ///< the sample interval; 0: chartInterval's
   std::string title;
+  /// The robot of `cell` whose log `run` is (Workcell::drivenRobotIndex
+  /// for a run of one), and the end of the time axis when it is a cell's,
+  /// later than this robot's end (0: the log's end).
+  std::size_t robot = 0;
+  vm::Micros end = 0;
 };
 
 struct Chart {

@@ -19,6 +19,7 @@ constexpr double kChartLeft = 150, kChartRightMargin = 20, kChartTitle = 34;
 constexpr double kLaneGap = 6, kLanePad = 4;
 constexpr double kMotorLane = 56, kTcpLane = 56, kGripperLane = 48, kDigitalRow = 8;
 constexpr double kLinesLane = 22, kAxis = 28, kNoteLine = 16, kChartBottom = 10;
+constexpr double kGroupTitle = 20;  // above the first lane of a robot's group (a cell's chart)
 constexpr std::size_t kNotesShown = 6;  // marks listed under the axis; the rest counted
 constexpr double kSmallText = 11, kTitleText = 13;
 constexpr Rgb kGrid = {0x2A, 0x2F, 0x40};
@@ -157,10 +158,13 @@ void digitalPath(cairo_t* cr, const Chart& chart, const ChartLayout& layout, con
   }
 }
 
-// Bands where the gripper holds an object (the "held" series > 0).
-void heldBands(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const ChartBox& box) {
+// Bands where the gripper holds an object (the "held" series > 0, or
+// the lane's robot's "LABEL.held").
+void heldBands(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const ChartLane& lane, const ChartBox& box) {
+  // A cell's chart names each robot's series by its label (cell_chart.h).
+  const std::string column = lane.group.empty() ? "held" : lane.group + ".held";
   const auto held = std::find_if(chart.series.begin(), chart.series.end(),
-                                 [](const ChartSeries& s) { return s.column == "held"; });
+                                 [&](const ChartSeries& s) { return s.column == column; });
   if (held == chart.series.end()) return;
   const std::vector<double>& v = held->values;
   for (std::size_t i = 0; i < v.size();) {
@@ -196,7 +200,7 @@ void drawLane(cairo_t* cr, const Chart& chart, const ChartLayout& layout, const 
     }
     return;
   }
-  if (lane.kind == LaneKind::Gripper) heldBands(cr, chart, layout, box);
+  if (lane.kind == LaneKind::Gripper) heldBands(cr, chart, layout, lane, box);
   const auto [lo, hi] = rangeOf(chart, lane);
   const bool length = lane.kind == LaneKind::Tcp;
   const Rgb dim = rgb(workcell::Color::DarkGray);
@@ -307,6 +311,11 @@ void drawMarks(cairo_t* cr, const Chart& chart, const ChartLayout& layout) {
          rgb(workcell::Color::LightGray));
 }
 
+// Lane `l` is the first of its group (a chart of one robot has none).
+bool startsGroup(const Chart& chart, std::size_t l) {
+  return !chart.lanes[l].group.empty() && (l == 0 || chart.lanes[l - 1].group != chart.lanes[l].group);
+}
+
 void drawChart(cairo_t* cr, const Chart& chart, const ChartLayout& layout) {
   chartColor(cr, kBackground);
   cairo_paint(cr);
@@ -316,7 +325,12 @@ void drawChart(cairo_t* cr, const Chart& chart, const ChartLayout& layout) {
   if (chart.times.size() > 1)
     title += fmt::format(", a sample every {} s", base::formatSeconds(chart.times[1] - chart.times[0]));
   chartText(cr, 8, 18, title, kTitleText, rgb(workcell::Color::White));
-  for (std::size_t l = 0; l < chart.lanes.size(); ++l) drawLane(cr, chart, layout, chart.lanes[l], layout.lanes[l]);
+  for (std::size_t l = 0; l < chart.lanes.size(); ++l) {
+    if (startsGroup(chart, l))
+      chartText(cr, 8, layout.lanes[l].y0 - 6, chart.lanes[l].group == "cell" ? "cell" : "robot " + chart.lanes[l].group,
+                kTitleText, rgb(workcell::Color::Yellow));
+    drawLane(cr, chart, layout, chart.lanes[l], layout.lanes[l]);
+  }
   drawSourceLines(cr, chart, layout);
   drawTimeAxis(cr, chart, layout);
   drawMarks(cr, chart, layout);
@@ -353,7 +367,9 @@ ChartLayout chartLayout(const Chart& chart, int width) {
   layout.end = chart.end;
   double y = kChartTitle;
   layout.top = y;
-  for (const ChartLane& lane : chart.lanes) {
+  for (std::size_t l = 0; l < chart.lanes.size(); ++l) {
+    const ChartLane& lane = chart.lanes[l];
+    if (startsGroup(chart, l)) y += kGroupTitle;
     const double h = laneHeight(lane);
     layout.lanes.push_back({layout.left, y, layout.right, y + h});
     y += h + kLaneGap;

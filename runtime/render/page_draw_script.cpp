@@ -163,14 +163,14 @@ const std::string_view kDrawScript = R"JS(function robotsimDrawing(model, canvas
     }
   }
   // Poses every robot for the motor counts `enc` (the robot that runs the
-  // program; the others stay at home) and fills every part's screen
+  // program; the others stay at home, or where their r.enc says) and fills every part's screen
   // coordinates for the view matrix V. objectPose(o) is the map from object
   // o's stored pts to the world now, or null while it is where the
   // workcell placed it.
   const tmp = affine();
   function projectAll(V, enc, objectPose) {
     for (const r of model.robots) {
-      const e = r.program ? enc : r.zero;
+      const e = r.program ? enc : r.enc || r.zero;  // r.enc: another robot of a cell run, posed by the page
       poseRobot(r, e);
       for (const p of r.parts) {
         multiply(V, r.F[p.frame], r.T);

@@ -18,6 +18,9 @@
 // and its motion is in force (at one step and time: a let-go, then the
 // motion it starts, then a take). A part a sink took, or a feeder's empty
 // slot, is not drawn; a sensor is drawn while its edges (run.sensors) say ON.
+// In a cell of several robots (run.others) every other robot moves by time
+// as its own log says, and its takes and let-gos move objects too: the
+// latest grasp of any robot by then is in force.
 //
 // The camera formula is runtime/render/camera.h's. window.robotsim exposes
 // the state, the projection and frame-time statistics to tests and benches.
@@ -45,6 +48,28 @@ const std::string_view kScript = R"JS('use strict';
       list.step.push(g.step[e]); list.at.push(g.at[e]); list.held.push(g.held[e]);
       list.pose.push(Float64Array.from(g.pose.slice(12 * e, 12 * e + 12)));
     });
+  }
+
+  // The cell's other robots (run.others): their motors by time, and each
+  // object's takes and let-gos by them, in time order.
+  const others = (run.others || []).map((x) => ({ x, robot: model.robots[x.robot], enc: new Int32Array(x.motors.length) }));
+  for (const o of model.objects) o.others = { at: [], held: [], pose: [], by: [] };
+  const byTime = [];
+  others.forEach((r) => r.x.grasps.object.forEach((obj, e) => byTime.push([r.x.grasps.at[e], byTime.length, r, obj, e])));
+  byTime.sort((a, b) => a[0] - b[0] || a[1] - b[1]);
+  for (const [at, , r, obj, e] of byTime) {
+    const list = model.objects[obj].others, g = r.x.grasps;
+    list.at.push(at); list.held.push(g.held[e]); list.by.push(r.robot);
+    list.pose.push(Float64Array.from(g.pose.slice(12 * e, 12 * e + 12)));
+  }
+  function poseOthers(t) {
+    for (const r of others) {
+      for (let m = 0; m < r.enc.length; m++) {
+        const mv = r.x.moves[m], i = lastUpTo(mv.start, t);
+        r.enc[m] = i < 0 ? 0 : positionAt(mv, i, r.x.motors[m], t);
+      }
+      r.robot.enc = r.enc;
+    }
   }
 
   // Each object's motions on the cell's belts (run.motions), and each
@@ -91,9 +116,14 @@ const std::string_view kScript = R"JS('use strict';
     while (e >= 0 && g.at[e] > t) e--;
     let f = k < 0 ? -1 : lastUpTo(m.step, k);
     while (f >= 0 && m.at[f] > t) f--;
-    if (f >= 0 && (e < 0 || m.step[f] > g.step[e] ||
-                   (m.step[f] === g.step[e] && (g.held[e] ? m.at[f] > g.at[e] : m.at[f] >= g.at[e]))))
-      return motionPose(o, f, t);
+    const moving = f >= 0 && (e < 0 || m.step[f] > g.step[e] ||
+                   (m.step[f] === g.step[e] && (g.held[e] ? m.at[f] > g.at[e] : m.at[f] >= g.at[e])));
+    const x = o.others, h = lastUpTo(x.at, t);  // another robot's grasp, later than this run's
+    if (h >= 0 && x.at[h] > (moving ? m.at[f] : e >= 0 ? g.at[e] : -1)) {
+      const by = x.by[h];
+      return x.held[h] ? multiply(by.F[by.n], x.pose[h], o.W) : x.pose[h];
+    }
+    if (moving) return motionPose(o, f, t);
     if (e < 0) return null;
     return g.held[e] ? multiply(carrier.F[carrier.n], g.pose[e], o.W) : g.pose[e];
   }
@@ -211,6 +241,7 @@ const std::string_view kScript = R"JS('use strict';
   }
   function render() {
     stateAt(S.k, S.t, current);
+    poseOthers(S.t);
     markCollisions(S.t);
     showSensors(S.t);
     D.draw(current, current.enc, (o) => objectPose(o, S.k, S.t), S.axes,
@@ -413,6 +444,7 @@ const std::string_view kScript = R"JS('use strict';
     project(t, width, height) {
       const k = stepAt(t), st = stateAt(k, t, { enc: new Int32Array(motorCount), view: [0, 0, 0], window: [0, 0, 0] });
       showSensors(t);
+      poseOthers(t);
       const still = D.projectStill(st, st.enc, (o) => objectPose(o, k, t), width, height);
       request();
       return { encoders: Array.from(st.enc), lines: still.lines, tools: still.tools };

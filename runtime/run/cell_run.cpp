@@ -60,6 +60,8 @@ CellRun::CellRun(CellRunSpec spec)
     one.stimuli = stimuliOfRobot(spec.stimuli, *cell_, p.robot);
     one.limits = spec.limits;
     one.collisions = spec.collisions;
+    one.log = spec.log;
+    one.lines = spec.lines;
     runs_.push_back(std::make_unique<Run>(std::move(one), shared_, p.robot));
     ios[p.robot] = &runs_.back()->rig().io();
   }
@@ -74,7 +76,10 @@ CellRun::CellRun(CellRunSpec spec)
   wakeAt_.assign(runs_.size(), 0);
   if (shared_.world() && !cell_->devices.empty()) {
     devices_ = std::make_unique<CellDevices>(*cell_, *shared_.world(), std::move(ios), shared_.clock());
-    for (auto& r : runs_) r->rig().attachDevices(*devices_);
+    for (auto& r : runs_) {
+      r->rig().attachDevices(*devices_);
+      if (spec.log) r->rig().recordMotions();  // attached after the run was built: its log asks now
+    }
   }
 }
 

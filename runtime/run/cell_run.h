@@ -56,6 +56,10 @@ struct CellRunSpec {
   stimuli::Stimuli stimuli;
   vm::RunLimits limits;  ///< per robot; maxTime is the cell's
   CollisionMode collisions = CollisionMode::Error;
+  /// Every robot keeps its own RunLog (RunSpec::log, lines): what a still,
+  /// a page or a chart of the cell draws each robot from.
+  bool log = false;
+  LineThinning lines;
 };
 
 /// Where a cell run pauses; unset members never pause it.

@@ -69,7 +69,6 @@ Run::Run(RunSpec spec, vm::Machine& machine) : spec_(std::move(spec)) {
 }
 
 Run::Run(RunSpec spec, Cell& shared, std::size_t robot) : spec_(std::move(spec)), inCellRun_(true) {
-  spec_.log = false;
   build(std::make_unique<Rig>(spec_.cell, shared, robot, spec_.image->motors, spec_.stimuli, spec_.collisions));
 }
 
@@ -84,7 +83,7 @@ void Run::build(std::unique_ptr<Rig> rig) {
   // The simulated robot runs as a process of the cell: its waits say "not
   // yet" and the run moves the cell's clock (waitOnCell).
   if (rig_->sim()) rig_->sim()->waitOnScheduler(true);
-  if (spec_.log && rig_->sim()) logger_.emplace(*rig_->sim(), rig_->world(), spec_.lines), rig_->recordMotions();
+  if (spec_.log && rig_->sim()) logger_.emplace(*rig_->sim(), rig_->world(), spec_.lines, rig_->robotIndex()), rig_->recordMotions();
   interpreter_ = std::make_unique<vm::Interpreter>(*spec_.image, rig_->machine());
   observers_ = std::make_unique<Observers>(*this, *rig_, logger_ ? &*logger_ : nullptr);
   breakpoints_.assign(spec_.image->code.size(), 0);

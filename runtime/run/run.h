@@ -111,7 +111,8 @@ class Run {
   /// Robot `robot` of a cell run (runtime/run/cell_run.h): simulated, on
   /// `shared`'s clock and world (the spec's cell is the one `shared` was
   /// made of). Its waits return to the caller: runUntil answers an outcome
-  /// with `waiting` set, and the cell run moves the clock. No log, no
+  /// with `waiting` set, and the cell run moves the clock. Its log (when
+  /// the spec asks) keeps this robot's steps, moves and grasps. No
   /// snapshots yet.
   Run(RunSpec spec, Cell& shared, std::size_t robot);
   Run(const Run&) = delete;

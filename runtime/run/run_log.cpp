@@ -84,8 +84,8 @@ void RunLogger::addLineMove(std::size_t m, const MotorMove& move) {
   list.push_back(move);
 }
 
-RunLogger::RunLogger(SimMachine& machine, const World* world, LineThinning lines)
-    : machine_(machine), world_(world), lines_(lines) {
+RunLogger::RunLogger(SimMachine& machine, const World* world, LineThinning lines, std::size_t hand)
+    : machine_(machine), world_(world), lines_(lines), hand_(hand) {
   log_.motors = machine.motors();
   log_.moves.resize(log_.motors.size());
   log_.inputs.push_back({machine.now(), machine.inputs()});
@@ -159,7 +159,8 @@ void RunLogger::record(std::uint32_t index) {
   }
   if (world_ && world_->eventCount() != graspsSeen_) {
     graspsSeen_ = world_->eventCount();
-    log_.grasps.push_back({step, world_->lastEvent()});
+    // Another robot's take or let-go (a cell's shared world) is its log's.
+    if (world_->lastEvent().hand == hand_) log_.grasps.push_back({step, world_->lastEvent()});
   }
   lastNow_ = now;
   log_.end = now;

@@ -148,10 +148,13 @@ void thinLineMoves(std::vector<MotorMove>& moves, vm::Micros slot);
 /// Keeps a RunLog of a run on `machine` (and `world`, may be null), both of
 /// which must outlive it: the run calls afterStep after every step and
 /// finish when it stops. A thinned log (`lines`) cannot be cut back to a
-/// mark (restore): its merged moves are not those it had then.
+/// mark (restore): its merged moves are not those it had then. `hand` is
+/// the robot whose takes and let-gos the log keeps (GraspEvent::hand): in
+/// a cell of several robots the world is shared, and each robot's log
+/// keeps only its own gripper's.
 class RunLogger {
  public:
-  RunLogger(SimMachine& machine, const World* world, LineThinning lines = {});
+  RunLogger(SimMachine& machine, const World* world, LineThinning lines = {}, std::size_t hand = 0);
   void afterStep(const vm::Interpreter& vm, std::uint32_t index);
   /// The instruction that stopped a run early (a runtime error, a
   /// deadlock, the time limit) counts as a step.
@@ -187,6 +190,7 @@ class RunLogger {
   vm::Micros lastNow_ = 0;
   std::uint64_t graspsSeen_ = 0;
   LineThinning lines_;
+  std::size_t hand_ = 0;
 };
 
 /// Everything at one moment of a logged run.

@@ -50,7 +50,7 @@ struct Interlock {
   }
 };
 
-std::vector<Json> withCode(const Json& diagnostics, const std::string& code) {
+std::vector<Json> diagnosticsWithCode(const Json& diagnostics, const std::string& code) {
   std::vector<Json> out;
   for (const Json& d : diagnostics)
     if (d.value("code", "") == code) out.push_back(d);
@@ -95,8 +95,8 @@ TEST_CASE("lsp cell run: a deadlock across the interlock example shows in each p
   s.open(c.leftUri, left);
   s.open(c.rightUri, c.right);
   s.idle();
-  const std::vector<Json> l = withCode(s.diagnostics(c.leftUri), "deadlock");
-  const std::vector<Json> r = withCode(s.diagnostics(c.rightUri), "deadlock");
+  const std::vector<Json> l = diagnosticsWithCode(s.diagnostics(c.leftUri), "deadlock");
+  const std::vector<Json> r = diagnosticsWithCode(s.diagnostics(c.rightUri), "deadlock");
   CAPTURE(s.diagnostics(c.leftUri).dump(), s.diagnostics(c.rightUri).dump());
   REQUIRE(l.size() == 1);
   REQUIRE(r.size() == 1);
@@ -140,7 +140,7 @@ TEST_CASE("lsp cell run: an edit of one program publishes the other program's di
   changeAll(s, c.leftUri, 2, Interlock::waitingFirst(c.left));
   s.idle();
   // Right's text did not change: its diagnostics come for its version 1.
-  const std::vector<Json> r = withCode(s.diagnostics(c.rightUri), "deadlock");
+  const std::vector<Json> r = diagnosticsWithCode(s.diagnostics(c.rightUri), "deadlock");
   REQUIRE(r.size() == 1);
   CHECK(r[0]["range"]["start"]["line"] == 5);
   bool forVersion1 = false;
@@ -148,7 +148,7 @@ TEST_CASE("lsp cell run: an edit of one program publishes the other program's di
     if (m.value("method", "") == "textDocument/publishDiagnostics" && m["params"]["uri"] == c.rightUri)
       forVersion1 = m["params"]["version"] == 1;
   CHECK(forVersion1);
-  CHECK(withCode(s.diagnostics(c.leftUri), "deadlock").size() == 1);
+  CHECK(diagnosticsWithCode(s.diagnostics(c.leftUri), "deadlock").size() == 1);
   // Undone: the deadlock goes from both.
   changeAll(s, c.leftUri, 3, c.left);
   s.idle();
@@ -181,7 +181,7 @@ TEST_CASE("lsp cell run: the other robot's program is read from its file when it
   s.open(c.leftUri, left);
   s.idle();
   // right.rsp from disk: the same deadlock, once, in left (its message names right's line).
-  const std::vector<Json> l = withCode(s.diagnostics(c.leftUri), "deadlock");
+  const std::vector<Json> l = diagnosticsWithCode(s.diagnostics(c.leftUri), "deadlock");
   REQUIRE(l.size() == 1);
   CHECK(l[0]["message"].get<std::string>().starts_with(deadlockMessage(c)));
   CHECK(s.diagnostics(c.rightUri).is_null());  // nothing is published for a document that is not open
@@ -190,12 +190,12 @@ TEST_CASE("lsp cell run: the other robot's program is read from its file when it
   c.dir.write("right.rsp", replaced(c.right, "OUTSIG 1 ON", "OUTSIG 9 ON"));
   changeAll(s, c.leftUri, 2, left + "\n");
   s.idle();
-  const std::vector<Json> notes = withCode(s.diagnostics(c.leftUri), "run-not-made");
+  const std::vector<Json> notes = diagnosticsWithCode(s.diagnostics(c.leftUri), "run-not-made");
   REQUIRE(notes.size() == 1);
   CHECK(notes[0]["message"].get<std::string>().starts_with(
       "not run in the editor: robot right's program right.rsp has errors (the cell runs every robot's program "
       "together)"));
-  CHECK(withCode(s.diagnostics(c.leftUri), "deadlock").empty());
+  CHECK(diagnosticsWithCode(s.diagnostics(c.leftUri), "deadlock").empty());
 }
 
 namespace {
@@ -274,7 +274,7 @@ TEST_CASE("lsp cell run: a program put in another's place does not speak for the
   s.open(scratchUri, scratch);
   s.idle();
   CHECK(errors(s.diagnostics(c.rightUri)).empty());
-  const std::vector<Json> d = withCode(s.diagnostics(scratchUri), "deadlock");
+  const std::vector<Json> d = diagnosticsWithCode(s.diagnostics(scratchUri), "deadlock");
   REQUIRE(d.size() == 1);
   CHECK(d[0]["message"].get<std::string>().starts_with("deadlock: left waits at " + c.dir.file("scratch.rsp") + ":11 "));
   CHECK(errors(s.diagnostics(scratchUri)).size() == 1);

@@ -75,37 +75,6 @@ Json diagnosticsJson(std::span<const diag::Diagnostic> diags) {
   return out;
 }
 
-// What the cell's stop says, as diagnostics: the failing robot's own words
-// at its line (launch/run_diagnostics.h), or the deadlock or limit at each
-// waiting robot's line.
-std::vector<diag::Diagnostic> cellDiagnostics(const runtime::CellRun& cell, const vm::RunOutcome& outcome,
-                                              runtime::CollisionMode collisions) {
-  std::vector<diag::Diagnostic> out;
-  for (std::size_t p = 0; p < cell.size(); ++p) {
-    const runtime::Run& run = cell.robot(p);
-    const std::string& file = run.spec().image->sourceName;
-    std::vector<diag::Diagnostic> said = launch::runDiagnostics(run, collisions, file);
-    for (diag::Diagnostic& d : said)
-      if (d.severity == diag::Severity::Error) d.hint += fmt::format("{}robot {} stopped the cell", d.hint.empty() ? "" : "; ", cell.label(p));
-    out.insert(out.end(), said.begin(), said.end());
-  }
-  if (!outcome.ok() && !cell.failed()) {
-    // The cell stopped them all: one error, at the first waiting robot's line.
-    for (std::size_t p = 0; p < cell.size(); ++p) {
-      if (cell.end(p) != runtime::RobotEnd::Stopped) continue;
-      const runtime::Run& run = cell.robot(p);
-      out.push_back({run.spec().image->sourceName, {run.view().line, 1}, diag::Severity::Error, outcome.message,
-                     outcome.reason == vm::StopReason::Deadlock ? "deadlock" : "",
-                     outcome.reason == vm::StopReason::Deadlock
-                         ? "a robot waits for an input that only another waiting robot's output drives: change the "
-                           "order of an OUTSIG and a WAITFOR in one program"
-                         : ""});
-      break;
-    }
-  }
-  return out;
-}
-
 void printErrorJson(std::ostream& out, std::span<const diag::Diagnostic> diags) {
   out << Json{{"status", "error"}, {"robots", Json::array()}, {"diagnostics", diagnosticsJson(diags)}}.dump(
              -1, ' ', false, nlohmann::json::error_handler_t::replace)
@@ -145,6 +114,34 @@ void printSummary(std::ostream& out, const runtime::CellRun& cell, const vm::Run
 }
 
 }  // namespace
+
+std::vector<diag::Diagnostic> cellRunDiagnostics(const runtime::CellRun& cell, const vm::RunOutcome& outcome,
+                                                 runtime::CollisionMode collisions) {
+  std::vector<diag::Diagnostic> out;
+  for (std::size_t p = 0; p < cell.size(); ++p) {
+    const runtime::Run& run = cell.robot(p);
+    const std::string& file = run.spec().image->sourceName;
+    std::vector<diag::Diagnostic> said = launch::runDiagnostics(run, collisions, file);
+    for (diag::Diagnostic& d : said)
+      if (d.severity == diag::Severity::Error) d.hint += fmt::format("{}robot {} stopped the cell", d.hint.empty() ? "" : "; ", cell.label(p));
+    out.insert(out.end(), said.begin(), said.end());
+  }
+  if (!outcome.ok() && !cell.failed()) {
+    // The cell stopped them all: one error, at the first waiting robot's line.
+    for (std::size_t p = 0; p < cell.size(); ++p) {
+      if (cell.end(p) != runtime::RobotEnd::Stopped) continue;
+      const runtime::Run& run = cell.robot(p);
+      out.push_back({run.spec().image->sourceName, {run.view().line, 1}, diag::Severity::Error, outcome.message,
+                     outcome.reason == vm::StopReason::Deadlock ? "deadlock" : "",
+                     outcome.reason == vm::StopReason::Deadlock
+                         ? "a robot waits for an input that only another waiting robot's output drives: change the "
+                           "order of an OUTSIG and a WAITFOR in one program"
+                         : ""});
+      break;
+    }
+  }
+  return out;
+}
 
 std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err) {
   launch::ProgramRequest request = o.program;
@@ -217,7 +214,7 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std:
     }
   const vm::RunOutcome outcome = cell.runToEnd();
   for (auto& t : traces) t->finish();
-  std::vector<diag::Diagnostic> said = cellDiagnostics(cell, outcome, spec->collisions);
+  std::vector<diag::Diagnostic> said = cellRunDiagnostics(cell, outcome, spec->collisions);
   const bool failedStrict = strict && promoteWarnings(said);
   printRunWarnings(err, said, programs.loaded.front());
   diags.insert(diags.end(), said.begin(), said.end());

@@ -9,6 +9,7 @@
 #include <optional>
 #include <ostream>
 
+#include "runtime/run/cell_run.h"
 #include "tools/cli/lib/run_command.h"
 
 namespace rs::cli {
@@ -20,5 +21,12 @@ namespace rs::cli {
 /// is well, --strict's warnings failing it, and nullopt when a program does
 /// not compile (each is then checked alone, in its own file).
 std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err);
+
+/// What the cell's stop says, as diagnostics: the failing robot's own words
+/// at its line (launch/run_diagnostics.h), or the deadlock or limit at the
+/// first waiting robot's line. Also what render, animate and plot of a
+/// cell print (cell_draw.h).
+std::vector<diag::Diagnostic> cellRunDiagnostics(const runtime::CellRun& cell, const vm::RunOutcome& outcome,
+                                                 runtime::CollisionMode collisions);
 
 }  // namespace rs::cli

@@ -12,6 +12,7 @@
 #include "launch/run_diagnostics.h"
 #include "runtime/render/chart_draw.h"
 #include "runtime/run/empty_close.h"
+#include "tools/cli/lib/cell_draw_commands.h"
 #include "tools/cli/lib/exit_codes.h"
 #include "tools/cli/lib/number_args.h"
 #include "tools/cli/lib/options.h"
@@ -98,6 +99,12 @@ int plotCommand(const PlotOptions& o, std::ostream& out, std::ostream& err) {
     }
   }
 
+  if (const std::optional<int> code = plotCellIfSeveral(o, format, every, out, err)) return *code;
+  if (o.program.file.empty()) {
+    err << "robotsim: error: which program? give a program file, or --cell CELL to plot every PROGRAM its ROBOT "
+           "lines name (LABEL=FILE gives or overrides one)\n";
+    return kExitBadInput;
+  }
   const launch::LoadedProgram loaded = launch::loadProgramToDraw(o.program);
   std::vector<diag::Diagnostic> diags = loaded.diagnostics;
   std::optional<runtime::RunSpec> spec;
@@ -140,41 +147,50 @@ int plotCommand(const PlotOptions& o, std::ostream& out, std::ostream& err) {
   const std::vector<std::uint32_t> lineOf = image.lines.toVector();
   input.lineOf = lineOf;
   const render::Chart chart = render::chartOf(input);
+  if (!writeChart(o, format, chart, base::safeText(o.program.file), out, err)) return kExitBadInput;
+  return outcome.ok() ? kExitOk : kExitRunFailed;
+}
 
+bool writeChart(const PlotOptions& o, const std::string& format, const render::Chart& chart, const std::string& what,
+                std::ostream& out, std::ostream& err) {
   std::vector<std::uint8_t> bytes;
-  std::string what;
+  std::string written;
   if (format == "csv") {
     const std::string csv = render::chartCsv(chart);
     if (o.output.empty()) {
       out << csv;
-      return outcome.ok() ? kExitOk : kExitRunFailed;
+      return true;
     }
     bytes.assign(csv.begin(), csv.end());
-    what = fmt::format("{} samples", chart.times.size());
+    written = fmt::format("{} samples", chart.times.size());
   } else {
     const render::ChartLayout layout = render::chartLayout(chart, o.width);
     diag::Result<std::vector<std::uint8_t>> encoded =
         render::encodeChart(chart, layout, format == "png" ? render::ImageFormat::Png : render::ImageFormat::Svg);
     if (!encoded) {
       err << fmt::format("{}: error: {}\n", base::safeText(o.output), encoded.failure().message);
-      return kExitBadInput;
+      return false;
     }
     bytes = std::move(encoded).value();
-    what = fmt::format("{}x{} pixels, {} samples", layout.width, layout.height, chart.times.size());
+    written = fmt::format("{}x{} pixels, {} samples", layout.width, layout.height, chart.times.size());
   }
   std::string error;
   const std::size_t size = bytes.size();
   if (!base::writeFileAtomically(o.output, bytes, error)) {
     err << fmt::format("{}: error: cannot write: {}\n", base::safeText(o.output), error);
-    return kExitBadInput;
+    return false;
   }
-  out << fmt::format("{} -> {} ({}, {} bytes, {} s simulated)\n", base::safeText(o.program.file),
-                     base::safeText(o.output), what, size, base::formatSeconds(log.end));
-  return outcome.ok() ? kExitOk : kExitRunFailed;
+  out << fmt::format("{} -> {} ({}, {} bytes, {} s simulated)\n", what, base::safeText(o.output), written, size,
+                     base::formatSeconds(chart.end));
+  return true;
 }
 
 void addPlotOptions(CLI::App* cmd, PlotOptions& o) {
-  cmd->add_option("program", o.program.file, "Program source (.rsp) or compiled image (.rsb)")->required();
+  cmd->add_option("program", o.program.file,
+                  "Program source (.rsp) or compiled image (.rsb); without it, every PROGRAM of --cell");
+  cmd->add_option("programs", o.programs,
+                  "With --cell: LABEL=FILE gives or overrides the program of the cell's robot LABEL; every robot "
+                  "with a program runs it on the cell's one clock, each a lane group of the chart");
   addCellOptions(cmd, o.program);
   addMaxErrorsOption(cmd, o.program);
   cmd->add_option("-o,--output", o.output, "Chart to write: FILE.svg, FILE.png, or FILE.csv for the samples");

@@ -26,6 +26,7 @@ struct PlotOptions {
   std::string format;              // --format svg|png|csv; empty: from -o
   std::string every;               // --every SECONDS
   int width = 1200;                // --width PIXELS
+  std::vector<std::string> programs = {};  // with --cell: LABEL=FILE for its robots (cell_draw.h)
 };
 
 /// The moments a chart of `run` (finished) marks: each collision (with
@@ -35,6 +36,12 @@ struct PlotOptions {
 std::vector<render::ChartMark> chartMarks(const runtime::Run& run, const std::string& stop);
 
 int plotCommand(const PlotOptions& o, std::ostream& out, std::ostream& err);
+
+/// Writes `chart` as `format` ("svg", "png", "csv") to -o (CSV without -o:
+/// to `out`), then the line that says what was written, of `what`. False
+/// when it cannot be encoded or written (printed).
+bool writeChart(const PlotOptions& o, const std::string& format, const render::Chart& chart, const std::string& what,
+                std::ostream& out, std::ostream& err);
 void addPlotOptions(CLI::App* cmd, PlotOptions& o);
 
 }  // namespace rs::cli

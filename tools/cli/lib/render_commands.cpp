@@ -11,12 +11,14 @@
 #include "base/file_io.h"
 #include "base/seconds.h"
 #include "base/text.h"
+#include "tools/cli/lib/cell_draw_commands.h"
 #include "tools/cli/lib/exit_codes.h"
 #include "tools/cli/lib/number_args.h"
 #include "tools/cli/lib/options.h"
 #include "tools/cli/lib/plot_command.h"
 #include "tools/cli/lib/report.h"
 #include "tools/cli/lib/run_warnings.h"
+#include "launch/cell_programs.h"
 #include "launch/run_diagnostics.h"
 #include "runtime/render/animation.h"
 #include "runtime/render/collision_marks.h"
@@ -181,7 +183,25 @@ std::optional<Eigen::Vector3d> zoomPivot(const workcell::Workcell& cell) {
 
 // ---- render -------------------------------------------------------------------
 
-int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) {
+int renderCommand(const RenderOptions& given, std::ostream& out, std::ostream& err) {
+  RenderOptions o = given;
+  if (!o.cellArgument.empty()) {
+    if (o.program.cell.empty()) {
+      o.program.cell = o.cellArgument;
+    } else if (launch::isProgramAssignment(o.cellArgument)) {
+      o.programs.insert(o.programs.begin(), o.cellArgument);
+    } else {
+      err << fmt::format("robotsim: error: two cells: {} and --cell {}\n  hint: name the cell once: as the first "
+                         "argument, or with --cell\n",
+                         base::safeText(o.cellArgument), base::safeText(o.program.cell));
+      return kExitBadInput;
+    }
+    o.cellArgument.clear();
+  }
+  if (o.program.cell.empty()) {
+    err << "robotsim: error: which workcell? give CELL (a description file or a library name), or --cell CELL\n";
+    return kExitBadInput;
+  }
   render::Camera camera;
   if (!cameraFrom(o, camera, err)) return kExitBadInput;
   std::optional<render::ImageFormat> format;
@@ -197,15 +217,19 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     err << fmt::format("robotsim: error: --dump-lines takes text or json, not '{}'\n", o.dump);
     return kExitBadInput;
   }
-  if (const std::string_view runOption = withoutProgram(o); !runOption.empty()) {
-    err << fmt::format("robotsim: error: {} needs --program\n", runOption);
-    return kExitBadInput;
-  }
   vm::Micros at = 0;
   if (!o.at.empty() && !parseSecondsArg(o.at, "--at", at, err)) return kExitBadInput;
   std::optional<Eigen::Vector3d> center;
   if (!o.center.empty() && !parseTriple(o.center, "--center", rules::kCoordinate, center.emplace(), err))
     return kExitBadInput;
+  // A cell whose robots run programs together: each drawn where its motors are.
+  const bool runs = !o.program.file.empty() || !o.programs.empty() || !withoutProgram(o).empty();
+  if (runs)
+    if (const std::optional<int> code = renderCellIfSeveral(o, camera, format, center, out, err)) return *code;
+  if (const std::string_view runOption = withoutProgram(o); !runOption.empty()) {
+    err << fmt::format("robotsim: error: {} needs --program\n", runOption);
+    return kExitBadInput;
+  }
   launch::LoadedProgram loaded;
   if (o.program.file.empty()) {
     loaded.cell = launch::loadCell(o.program, loaded);
@@ -288,6 +312,15 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     if (o.collisionShapes) render::addLines(picture, render::collisionShapeLines(cell, encoders, objectPoses));
     render::markColliding(picture, render::contactsAt(cell, encoders, objectPoses, held));
   }
+  const std::string what = run ? fmt::format("{} on {}", base::safeText(o.program.file), base::safeText(cell.name))
+                               : base::safeText(cell.name);
+  if (!writeStill(o, picture, cell, format, camera, what, moment, out, err)) return kExitBadInput;
+  return stoppedByCollision ? kExitRunFailed : kExitOk;
+}
+
+bool writeStill(const RenderOptions& o, const render::Picture& picture, const workcell::Workcell& cell,
+                std::optional<render::ImageFormat> format, const render::Camera& camera, const std::string& what,
+                std::optional<vm::Micros> moment, std::ostream& out, std::ostream& err) {
   if (o.dump == "json")
     render::dumpJson(out, picture, cell);
   else if (!o.dump.empty())
@@ -296,23 +329,41 @@ int renderCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) 
     diag::Result<std::vector<std::uint8_t>> encoded = render::encodePicture(picture, *format);
     if (!encoded) {
       err << fmt::format("{}: error: {}\n", base::safeText(o.output), encoded.failure().message);
-      return kExitBadInput;
+      return false;
     }
     const std::size_t bytes = encoded->size();
-    if (!write(o.output, *encoded, err)) return kExitBadInput;
+    if (!write(o.output, *encoded, err)) return false;
     // What was written, as animate says it; on stderr when stdout carries
     // the --dump-lines listing.
-    const std::string what = run ? fmt::format("{} on {}", base::safeText(o.program.file), base::safeText(cell.name))
-                                 : base::safeText(cell.name);
     (o.dump.empty() ? out : err) << fmt::format(
         "{} -> {} ({}x{} pixels, {}, {} bytes{})\n", what, base::safeText(o.output), camera.width, camera.height,
         *format == render::ImageFormat::Png ? "PNG" : "SVG", bytes,
         moment ? fmt::format(", at {} s", base::formatSeconds(*moment)) : "");
   }
-  return stoppedByCollision ? kExitRunFailed : kExitOk;
+  return true;
 }
 
 // ---- animate ------------------------------------------------------------------
+
+void addCollisionMarks(const runtime::Run& run, render::AnimationInput& input) {
+  const runtime::CollisionWatch* watch = run.rig().collisionWatch();
+  if (!watch || !run.log()) return;
+  const runtime::RunLog& recording = *run.log();
+  const auto robotBodies = watch->model().robotBodies();
+  for (const runtime::CollisionEvent& e : run.rig().collisions()) {
+    render::CollisionMark mark{e.at, e.at, {}, {}};
+    if (const std::optional<std::uint32_t> step = stepOfCollision(recording, e)) {  // its move: an event
+      mark.end = recording.steps[*step].end;
+      input.eventSteps.push_back(*step);
+    }
+    for (const workcell::BodyRef& b : {e.contact.a, e.contact.b}) {
+      if (b.kind == workcell::BodyKind::Object) mark.objects.push_back(b.index);
+      for (std::size_t k = 0; k < robotBodies.size(); ++k)
+        if (robotBodies[k].ref == b) mark.robotParts.push_back(static_cast<int>(k));
+    }
+    input.collisions.push_back(std::move(mark));
+  }
+}
 
 int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   if (!endsWithHtml(o.output)) {
@@ -321,6 +372,12 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   }
   render::Camera camera;
   if (!cameraFrom(o, camera, err)) return kExitBadInput;
+  if (const std::optional<int> code = animateCellIfSeveral(o, camera, out, err)) return *code;
+  if (o.program.file.empty()) {
+    err << "robotsim: error: which program? give a program file, or --cell CELL to animate every PROGRAM its "
+           "ROBOT lines name (LABEL=FILE gives or overrides one)\n";
+    return kExitBadInput;
+  }
   const launch::LoadedProgram loaded = launch::loadProgramToDraw(o.program);
   const Prepared prepared = prepare(loaded, o, kAnimateMaxSteps, std::nullopt, err, /*log=*/true);
   const std::unique_ptr<runtime::Run>& run = prepared.run;
@@ -333,22 +390,7 @@ int animateCommand(const RenderOptions& o, std::ostream& out, std::ostream& err)
   input.run = &recording;
   input.listing = listing(loaded);
   input.camera = camera;
-  if (const runtime::CollisionWatch* watch = run->rig().collisionWatch()) {
-    const auto robotBodies = watch->model().robotBodies();
-    for (const runtime::CollisionEvent& e : run->rig().collisions()) {
-      render::CollisionMark mark{e.at, e.at, {}, {}};
-      if (const std::optional<std::uint32_t> step = stepOfCollision(recording, e)) {  // its move: an event
-        mark.end = recording.steps[*step].end;
-        input.eventSteps.push_back(*step);
-      }
-      for (const workcell::BodyRef& b : {e.contact.a, e.contact.b}) {
-        if (b.kind == workcell::BodyKind::Object) mark.objects.push_back(b.index);
-        for (std::size_t k = 0; k < robotBodies.size(); ++k)
-          if (robotBodies[k].ref == b) mark.robotParts.push_back(static_cast<int>(k));
-      }
-      input.collisions.push_back(std::move(mark));
-    }
-  }
+  addCollisionMarks(*run, input);
   if (!outcome.ok()) {
     const vm::Image& image = *run->spec().image;
     const diag::Diagnostic d = launch::stopDiagnostic(image, outcome, image.sourceName);
@@ -397,7 +439,12 @@ void addCommon(CLI::App* cmd, RenderOptions& o, const std::string& maxStepsDefau
 }  // namespace
 
 void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
-  cmd->add_option("cell", o.program.cell, "Workcell (or robot) description file or library name")->required();
+  cmd->add_option("cell", o.cellArgument, "Workcell (or robot) description file or library name (or give --cell)");
+  cmd->add_option("--cell", o.program.cell, "The workcell, as the first argument names it");
+  cmd->add_option("programs", o.programs,
+                  "LABEL=FILE gives or overrides the program of the cell's robot LABEL; with it (or --at, "
+                  "--path) every robot with a program runs it on the cell's one clock, each drawn where its motors "
+                  "are");
   cmd->add_option("--program", o.program.file, "Run this program on the workcell's first robot");
   cmd->add_option("--at", o.at,
                   "The moment of the run to draw, in seconds (default: its end, or the collision that stopped it)")
@@ -407,7 +454,7 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
                 "magenta; parts that overlap are drawn red either way");
   cmd->add_flag("--path", o.path,
                 "Also draw the path of the tool centre point up to the moment drawn (in cyan): a straight line for "
-                "MOVES, APPRO and DEPART, a curve for MOVEP (needs --program)");
+                "MOVES, APPRO and DEPART, a curve for MOVEP (needs --program, or a cell whose robots have PROGRAMs)");
   cmd->add_option("-o,--output", o.output, "Picture to write: FILE.png or FILE.svg");
   cmd->add_option("--size", o.size, "Picture size WIDTHxHEIGHT in pixels (default 1024x768)");
   cmd->add_option("--center", o.center,
@@ -420,7 +467,11 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
 }
 
 void addAnimateOptions(CLI::App* cmd, RenderOptions& o) {
-  cmd->add_option("program", o.program.file, "Program source (.rsp) or compiled image (.rsb)")->required();
+  cmd->add_option("program", o.program.file,
+                  "Program source (.rsp) or compiled image (.rsb); without it, every PROGRAM of --cell");
+  cmd->add_option("programs", o.programs,
+                  "With --cell: LABEL=FILE gives or overrides the program of the cell's robot LABEL; every robot "
+                  "with a program runs it on the cell's one clock");
   addCellOptions(cmd, o.program);
   addMaxErrorsOption(cmd, o.program);
   cmd->add_option("-o,--output", o.output, "HTML file to write")->required();
