@@ -407,3 +407,37 @@ TEST_CASE("cell run: a robot run alone meets the others standing at home", "[cel
   INFO(far.err);
   CHECK(far.code == 0);
 }
+
+// --profile of a cell: each robot's own profile and its share of the
+// cell's cycle. By hand (the interlock's timeline above): each robot makes
+// four moves of 1 s (4 s moving) and waits the rest of the cell's 8.5 s:
+// left at its WAITFOR 2-4.25 and 6.25-8.5 (4.5 s, both ended by the wire
+// from right.OUT 1); right 0-2 and 4.25-6.25 for ON, 4-4.25 and 8.25-8.5
+// for OFF (4.5 s in four waits, by the wire from left.OUT 1). In the relay
+// the giver ends at 9.512 s, the cell at 14.486 s: 4.974 s ended.
+TEST_CASE("cell run: --profile gives each robot's profile and its share of the cell's cycle", "[cell-run][robots][profile]") {
+  const std::string cell = std::string(ROBOTSIM_SOURCE_DIR) + "/examples/two_robots/interlock.rsd";
+  const nlohmann::json j = runJson({"run", "--cell", cell, "--profile", "--format=json"});
+  for (const auto& r : j.at("robots")) {
+    INFO(r.at("name"));
+    const auto& share = r.at("profile").at("cell_share");
+    CHECK(share.at("cell_us") == 8500000);
+    CHECK(share.at("moving_us") == 4000000);
+    CHECK(share.at("waiting_us") == 4500000);
+    CHECK(share.at("ended_us") == 0);
+    const auto& waits = r.at("profile").at("input_waits");
+    REQUIRE(waits.size() == 1);
+    const bool left = r.at("name") == "left";
+    CHECK(waits.at(0).at("driver") == (left ? "wire from right.OUT 1" : "wire from left.OUT 1"));
+    CHECK(waits.at(0).at("waits") == (left ? 2 : 4));
+    CHECK(waits.at(0).at("waiting_us") == 4500000);
+  }
+  const auto text = rs::testing::runCli({"run", "--cell", std::string(ROBOTSIM_SOURCE_DIR) + "/examples/two_robots/relay.rsd",
+                                         "--profile"});
+  INFO(text.err);
+  REQUIRE(text.code == 0);
+  CHECK(text.out.find("profile of robot giver (") != std::string::npos);
+  CHECK(text.out.find("profile of robot taker (") != std::string::npos);
+  CHECK(text.out.find("share of the cell's cycle (14.486 s): ") != std::string::npos);
+  CHECK(text.out.find("ended 34.3 %") != std::string::npos);  // 4.974 / 14.486
+}

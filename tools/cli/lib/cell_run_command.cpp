@@ -15,6 +15,7 @@
 #include "runtime/run/cell_run.h"
 #include "runtime/run/labelled_trace.h"
 #include "runtime/run/trace.h"
+#include "tools/cli/lib/cell_profile.h"
 #include "tools/cli/lib/exit_codes.h"
 #include "tools/cli/lib/report.h"
 #include "tools/cli/lib/run_warnings.h"
@@ -83,14 +84,17 @@ void printErrorJson(std::ostream& out, std::span<const diag::Diagnostic> diags) 
 
 void printSummary(std::ostream& out, const runtime::CellRun& cell, const vm::RunOutcome& outcome,
                   const launch::CellPrograms& programs, std::span<const diag::Diagnostic> diags, bool json,
-                  bool checkOk) {
+                  bool checkOk, const std::vector<std::optional<runtime::Profile>>& profiles) {
   const bool ok = outcome.ok() && !diag::hasErrors(diags);
   if (json) {
     Json j;
     j["status"] = ok ? vm::stopReasonName(vm::StopReason::End) : "error";
     j["time"] = static_cast<double>(cell.clock()) / 1e6;
     Json robots = Json::array();
-    for (std::size_t p = 0; p < cell.size(); ++p) robots.push_back(robotJson(cell, p, programs.files[p]));
+    for (std::size_t p = 0; p < cell.size(); ++p) {
+      robots.push_back(robotJson(cell, p, programs.files[p]));
+      if (profiles[p]) robots.back()["profile"] = cellProfileJson(cell, p, *profiles[p]);
+    }
     j["robots"] = robots;
     addCellJson(j, cell.robot(0));
     j["diagnostics"] = diagnosticsJson(diags);
@@ -176,10 +180,9 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std:
     one.program.file = programs.files[0], one.program.robot = programs.labels[0], one.programs.clear();
     return runOrCheck(one, check, out, err);
   }
-  if (o.profile || o.serial.active()) {
-    err << fmt::format("{}: error: a run of several robots does not take {} yet\n  hint: run one robot's program "
-                       "with PROG --cell CELL --robot LABEL for that\n",
-                       o.profile ? "--profile" : "--device", o.profile ? "--profile" : "--device");
+  if (o.serial.active()) {
+    err << "--device: error: a run of several robots does not take --device yet\n  hint: run one robot's program "
+           "with PROG --cell CELL --robot LABEL for that\n";
     return kExitBadInput;
   }
   launch::compileAssignedPrograms(request, programs);
@@ -196,8 +199,12 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std:
   // --strict: a compile warning fails the check before anything runs.
   const bool strict = check && o.strict;
   const bool compileFailed = strict && promoteWarnings(diags);
-  const std::optional<runtime::CellRunSpec> spec =
-      compileFailed ? std::nullopt : launch::prepareCellRun(programs, o.run, diags);
+  // A profile reads each robot's log: --max-steps then defaults as for one robot's.
+  std::optional<runtime::CellRunSpec> spec =
+      compileFailed ? std::nullopt
+                    : launch::prepareCellRun(programs, o.run, diags,
+                                             o.profile ? kProfileMaxSteps : vm::RunLimits{}.maxSteps);
+  if (spec && o.profile) spec->log = true;
   launch::printDiagnostics(err, diags, sourceOf, request.maxErrors, {});
   if (!spec) {
     if (o.format == "json") printErrorJson(out, diags);
@@ -220,7 +227,10 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std:
   diags.insert(diags.end(), said.begin(), said.end());
 
   const bool ok = outcome.ok() && !diag::hasErrors(diags);
-  printSummary(out, cell, outcome, programs, diags, o.format == "json", check && ok);
+  const std::vector<std::optional<runtime::Profile>> profiles =
+      o.profile ? cellProfiles(cell) : std::vector<std::optional<runtime::Profile>>(cell.size());
+  printSummary(out, cell, outcome, programs, diags, o.format == "json", check && ok, profiles);
+  if (o.profile && o.format != "json") printCellProfiles(out, cell, profiles);
   return ok && !failedStrict ? kExitOk : kExitRunFailed;
 }
 
