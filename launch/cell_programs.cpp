@@ -22,6 +22,23 @@ const diag::SourceFile* CellPrograms::sourceOf(const std::string& file) const {
   return cellLoad.sourceOf(file);
 }
 
+std::vector<diag::Diagnostic> CellPrograms::allDiagnostics() const {
+  std::vector<diag::Diagnostic> all = cellLoad.diagnostics;
+  for (const LoadedProgram& l : loaded) all.insert(all.end(), l.diagnostics.begin(), l.diagnostics.end());
+  return all;
+}
+
+std::vector<diag::Diagnostic> CellPrograms::diagnosticsOnce() const {
+  std::vector<diag::Diagnostic> diags = cellLoad.diagnostics;
+  for (const LoadedProgram& l : loaded)
+    for (const diag::Diagnostic& d : l.diagnostics)
+      if (std::none_of(diags.begin(), diags.end(), [&](const diag::Diagnostic& e) {
+            return e.file == d.file && e.pos == d.pos && e.message == d.message;
+          }))
+        diags.push_back(d);
+  return diags;
+}
+
 bool isProgramAssignment(std::string_view arg) {
   const std::size_t eq = arg.find('=');
   return eq != std::string_view::npos && eq > 0 && arg.substr(0, eq).find('/') == std::string_view::npos;

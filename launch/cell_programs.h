@@ -24,6 +24,11 @@ struct CellPrograms {
   std::vector<runtime::CellProgram> programs;      ///< per program: its robot and image (once compiled)
   /// Every problem so far is in cellLoad or a program's own diagnostics.
   bool ok() const;
+  /// Every diagnostic so far: the cell's, then each program's.
+  std::vector<diag::Diagnostic> allDiagnostics() const;
+  /// The same, each said once: every program's load read the cell again,
+  /// so the cell's warnings would come once a program.
+  std::vector<diag::Diagnostic> diagnosticsOnce() const;
   /// The diagnostic's file's text, from whichever load read it.
   const diag::SourceFile* sourceOf(const std::string& file) const;
 };

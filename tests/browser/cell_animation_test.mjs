@@ -31,11 +31,14 @@ const cells = [
   // The giver takes the bar at 3.736 s, the taker takes it over at 7.394 s,
   // the giver opens 7.394 .. 7.994 s, the taker carries it on.
   { cell: 'relay.rsd', times: [3, 5, 7.5, 7.9, 10, 14] },
-  // Both robots running left.rsp move at once: render stops the cell at
-  // --at in the middle of the other robot's move.
-  { cell: 'interlock.rsd', times: [0.5, 1.5], programs: ['right=' + path.join(source, 'examples', 'two_robots', 'left.rsp')],
+  // Both robots moving at once (right runs two moves, then turns on the
+  // output left waits for, and ends: written below; two copies of left.rsp
+  // would deadlock, each one's OUTSIG answered at that instant): at 0.5
+  // and 1.5 s both are mid-move.
+  { cell: 'interlock.rsd', times: [0.5, 1.5], programs: ['right=' + path.join(out, 'both_move.rsp')],
     page: 'both_left' },
 ];
+fs.writeFileSync(path.join(out, 'both_move.rsp'), '        MOVE 300 0 0 0 0 0\n        MOVE -300 0 0 0 0 0\n        OUTSIG 1 ON\n        END\n');
 
 // Largest difference between the page's lines and tools and render's.
 function difference(mine, reference) {

@@ -55,9 +55,7 @@ void keepSources(const launch::CellPrograms& programs, bool grading, TestResult&
   for (const launch::LoadedProgram& l : programs.loaded)
     if (l.source) keep(*l.source);
   if (grading) return;
-  std::vector<diag::Diagnostic> all = programs.cellLoad.diagnostics;
-  for (const launch::LoadedProgram& l : programs.loaded) all.insert(all.end(), l.diagnostics.begin(), l.diagnostics.end());
-  for (const diag::Diagnostic& d : all)
+  for (const diag::Diagnostic& d : programs.allDiagnostics())
     if (const diag::SourceFile* s = programs.sourceOf(d.file)) keep(*s);
 }
 
@@ -140,8 +138,7 @@ CellCheck checkCell(const launch::ProgramRequest& request, const ParsedExpectati
   if (!launch::assignCellPrograms(request, assignments, programs)) {
     if (!request.file.empty() && assignments.empty()) return {};  // the run of one says why, as always
     r.status = TestStatus::Error;
-    std::vector<diag::Diagnostic> all = programs.cellLoad.diagnostics;
-    for (const launch::LoadedProgram& l : programs.loaded) all.insert(all.end(), l.diagnostics.begin(), l.diagnostics.end());
+    std::vector<diag::Diagnostic> all = programs.allDiagnostics();
     placeAtLines(all, lines, assignments, files, settingsFile);
     for (diag::Diagnostic& d : all)
       if (d.severity == diag::Severity::Error) {

@@ -57,8 +57,7 @@ std::optional<CellDrawChoice> chooseCellDraw(const launch::ProgramRequest& given
   if (!launch::assignCellPrograms(request, assignments, programs)) {
     // A program alone on a cell that does not load: the run of one says why, as always.
     if (!request.file.empty() && assignments.empty()) return std::nullopt;
-    std::vector<diag::Diagnostic> all = programs.cellLoad.diagnostics;
-    for (const launch::LoadedProgram& l : programs.loaded) all.insert(all.end(), l.diagnostics.begin(), l.diagnostics.end());
+    std::vector<diag::Diagnostic> all = programs.allDiagnostics();
     launch::printDiagnostics(err, all, sourceOf, request.maxErrors, {});
     return failed();
   }
@@ -73,13 +72,7 @@ std::optional<CellDrawChoice> chooseCellDraw(const launch::ProgramRequest& given
   }
   launch::compileAssignedPrograms(request, programs);
   // Each program's load read the cell again: its warnings are said once.
-  std::vector<diag::Diagnostic> diags = programs.cellLoad.diagnostics;
-  for (const launch::LoadedProgram& l : programs.loaded)
-    for (const diag::Diagnostic& d : l.diagnostics)
-      if (std::none_of(diags.begin(), diags.end(), [&](const diag::Diagnostic& e) {
-            return e.file == d.file && e.pos == d.pos && e.message == d.message;
-          }))
-        diags.push_back(d);
+  std::vector<diag::Diagnostic> diags = programs.diagnosticsOnce();
   std::optional<runtime::CellRunSpec> spec = launch::prepareCellRun(programs, run, diags, defaultMaxSteps);
   launch::printDiagnostics(err, diags, sourceOf, request.maxErrors, {});
   if (!spec) return failed();

@@ -166,8 +166,7 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std:
   if (!launch::assignCellPrograms(request, assignments, programs)) {
     // A program alone on a cell that does not load: the run of one says why, as always.
     if (!request.file.empty() && assignments.empty()) return std::nullopt;
-    std::vector<diag::Diagnostic> all = programs.cellLoad.diagnostics;
-    for (const launch::LoadedProgram& l : programs.loaded) all.insert(all.end(), l.diagnostics.begin(), l.diagnostics.end());
+    std::vector<diag::Diagnostic> all = programs.allDiagnostics();
     launch::printDiagnostics(err, all, sourceOf, request.maxErrors, {});
     if (o.format == "json") printErrorJson(out, all);
     return kExitBadInput;
@@ -189,13 +188,7 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std:
   // check: a program that does not compile is checked alone, each in its file.
   if (check && !programs.ok()) return std::nullopt;
   // Each program's load read the cell again: its warnings are said once.
-  std::vector<diag::Diagnostic> diags = programs.cellLoad.diagnostics;
-  for (const launch::LoadedProgram& l : programs.loaded)
-    for (const diag::Diagnostic& d : l.diagnostics)
-      if (std::none_of(diags.begin(), diags.end(), [&](const diag::Diagnostic& e) {
-            return e.file == d.file && e.pos == d.pos && e.message == d.message;
-          }))
-        diags.push_back(d);
+  std::vector<diag::Diagnostic> diags = programs.diagnosticsOnce();
   // --strict: a compile warning fails the check before anything runs.
   const bool strict = check && o.strict;
   const bool compileFailed = strict && promoteWarnings(diags);

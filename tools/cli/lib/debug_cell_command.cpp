@@ -34,8 +34,7 @@ std::optional<int> debugCellIfSeveral(const DebugOptions& o, std::istream& in, s
   launch::CellPrograms programs;
   const auto sourceOf = [&programs](const std::string& file) { return programs.sourceOf(file); };
   if (!launch::assignCellPrograms(request, assignments, programs)) {
-    std::vector<diag::Diagnostic> all = programs.cellLoad.diagnostics;
-    for (const launch::LoadedProgram& l : programs.loaded) all.insert(all.end(), l.diagnostics.begin(), l.diagnostics.end());
+    std::vector<diag::Diagnostic> all = programs.allDiagnostics();
     launch::printDiagnostics(err, all, sourceOf, request.maxErrors, {});
     return kExitBadInput;
   }
@@ -52,13 +51,7 @@ std::optional<int> debugCellIfSeveral(const DebugOptions& o, std::istream& in, s
   }
   launch::compileAssignedPrograms(request, programs);
   // Each program's load read the cell again: its warnings are said once.
-  std::vector<diag::Diagnostic> diags = programs.cellLoad.diagnostics;
-  for (const launch::LoadedProgram& l : programs.loaded)
-    for (const diag::Diagnostic& d : l.diagnostics)
-      if (std::none_of(diags.begin(), diags.end(), [&](const diag::Diagnostic& e) {
-            return e.file == d.file && e.pos == d.pos && e.message == d.message;
-          }))
-        diags.push_back(d);
+  std::vector<diag::Diagnostic> diags = programs.diagnosticsOnce();
   const std::optional<runtime::CellRunSpec> spec = launch::prepareCellRun(programs, o.run, diags);
   launch::printDiagnostics(err, diags, sourceOf, request.maxErrors, {});
   if (!spec) return kExitBadInput;
