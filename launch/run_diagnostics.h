@@ -18,6 +18,12 @@
 
 namespace rs::launch {
 
+/// The hint of a deadlock across the robots of a cell (`run --cell`, the
+/// language server's cell run).
+inline constexpr const char* kCellDeadlockHint =
+    "a robot waits for an input that only another waiting robot's output drives: change the order of an OUTSIG "
+    "and a WAITFOR in one program";
+
 /// A run that stopped early, as an error at the instruction's source
 /// position: "collision: collision at 1.2 s: link 2 ... (instruction 7)",
 /// with a hint where the command line can help (--max-steps, --input).

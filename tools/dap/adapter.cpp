@@ -331,16 +331,23 @@ std::string Adapter::qualify(int id, const Json& b) {
 // The custom request of goto-time: {"time": SECONDS} (a number, or a
 // string as the terminal's goto-time takes it); answered, then stopped
 // with reason goto at that moment, forwards or backwards.
-Adapter::Reply Adapter::gotoTime(const Json& args) {
+std::optional<Adapter::Error> Adapter::gotoTimeArgument(const Json& args, vm::Micros& at) {
   const Json& t = args.contains("time") ? args["time"] : Json();
   std::string text;
   if (t.is_string()) text = t.get<std::string>();
   else if (t.is_number_integer()) text = t.dump();
   else if (t.is_number_float()) text = fmt::format("{:.6f}", t.get<double>());
   else return Error{"gotoTime needs a time: {\"time\": SECONDS}"};
-  const auto at = debug::parseSeconds(text);
-  if (!at) return Error{at.failure().message};
-  pending_ = [this, micros = *at] {
+  const auto parsed = debug::parseSeconds(text);
+  if (!parsed) return Error{parsed.failure().message};
+  at = *parsed;
+  return std::nullopt;
+}
+
+Adapter::Reply Adapter::gotoTime(const Json& args) {
+  vm::Micros at = 0;
+  if (std::optional<Error> bad = gotoTimeArgument(args, at)) return *bad;
+  pending_ = [this, micros = at] {
     const debug::Stop stop = session_->gotoTime(micros);
     // Past the end: the session stands at the end and can still go back, as the terminal's does.
     if (stop.reason == debug::StopReason::End)

@@ -85,6 +85,9 @@ class Adapter {
   Reply dataBreakpointInfo(const Json& args);
   Reply setDataBreakpoints(const Json& args);
   Reply gotoTime(const Json& args);
+  /// gotoTime's {"time": SECONDS} (a number, or a string as the
+  /// terminal's goto-time takes it) into `at`, or what is wrong with it.
+  static std::optional<Error> gotoTimeArgument(const Json& args, vm::Micros& at);
   /// A breakpoint's condition and hitCondition (DAP's fields) on session
   /// breakpoint `id`: the problem with them, or "" when they are set.
   std::string qualify(int id, const Json& breakpoint);

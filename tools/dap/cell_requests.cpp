@@ -153,15 +153,9 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
   const std::optional<std::size_t> thread = cellThread(args);
   if (!thread) return Error{fmt::format("no thread {}: the cell's threads are 1 to {}", args.at("threadId").dump(), cell_->size())};
   if (command == "gotoTime") {
-    const Json& t = args.contains("time") ? args["time"] : Json();
-    std::string text;
-    if (t.is_string()) text = t.get<std::string>();
-    else if (t.is_number_integer()) text = t.dump();
-    else if (t.is_number_float()) text = fmt::format("{:.6f}", t.get<double>());
-    else return Error{"gotoTime needs a time: {\"time\": SECONDS}"};
-    const auto at = debug::parseSeconds(text);
-    if (!at) return Error{at.failure().message};
-    pending_ = [this, micros = *at] {
+    vm::Micros at = 0;
+    if (std::optional<Error> bad = gotoTimeArgument(args, at)) return *bad;
+    pending_ = [this, micros = at] {
       const debug::CellStop stop = cell_->gotoTime(micros);
       // Past the end: the cell stands at its end and can still go back, as the terminal's does.
       if (stop.reason == debug::StopReason::End)

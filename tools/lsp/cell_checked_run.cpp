@@ -17,11 +17,6 @@ namespace rs::lsp {
 
 namespace {
 
-// The same hint as `robotsim run --cell`'s deadlock (tools/cli/lib/cell_run_command.cpp).
-constexpr const char* kDeadlockHint =
-    "a robot waits for an input that only another waiting robot's output drives: change the order of an OUTSIG "
-    "and a WAITFOR in one program";
-
 std::string_view codeOfCellStop(vm::StopReason reason) {
   switch (reason) {
     case vm::StopReason::Deadlock: return "deadlock";
@@ -179,7 +174,7 @@ std::vector<CheckedRun> checkCellRun(const ProgramAnalysis& analysis, const Cell
     if (cell.failed()) continue;  // the failing robot's program says why
     diag::Diagnostic d{members[m].file, posOf(image, at), diag::Severity::Error, outcome.message,
                        codeOfCellStop(outcome.reason),
-                       outcome.reason == vm::StopReason::Deadlock ? kDeadlockHint : ""};
+                       outcome.reason == vm::StopReason::Deadlock ? launch::kCellDeadlockHint : ""};
     if (m == 0 && outcome.reason == vm::StopReason::Deadlock) ownDeadlock = d;
     r.diagnostics.insert(r.diagnostics.begin(), std::move(d));
   }

@@ -137,10 +137,7 @@ std::vector<diag::Diagnostic> cellRunDiagnostics(const runtime::CellRun& cell, c
       const runtime::Run& run = cell.robot(p);
       out.push_back({run.spec().image->sourceName, {run.view().line, 1}, diag::Severity::Error, outcome.message,
                      outcome.reason == vm::StopReason::Deadlock ? "deadlock" : "",
-                     outcome.reason == vm::StopReason::Deadlock
-                         ? "a robot waits for an input that only another waiting robot's output drives: change the "
-                           "order of an OUTSIG and a WAITFOR in one program"
-                         : ""});
+                     outcome.reason == vm::StopReason::Deadlock ? launch::kCellDeadlockHint : ""});
       break;
     }
   }
