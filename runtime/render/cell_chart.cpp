@@ -19,6 +19,7 @@ Chart cellChartOf(const CellChartInput& input) {
     one.every = every;
     one.robot = r.robot;
     one.end = chart.end;
+    one.robotLogs = input.robotLogs;
     for (ChartMark m : r.marks) {
       m.text = r.label + ": " + m.text;
       one.marks.push_back(std::move(m));

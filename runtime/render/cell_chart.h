@@ -28,6 +28,10 @@ struct CellChartInput {
   std::vector<RobotChart> robots;            ///< in the cell's order
   vm::Micros every = 0;                      ///< the sample interval; 0: chartInterval's of the cell's end
   std::string title;
+  /// Each robot's log by Workcell::robots index (null: none), for the belts
+  /// a robot's output runs. The devices' lanes are sampled from the first
+  /// robot's log: give it every robot's device events (runtime/run/cell_log.h).
+  std::vector<const runtime::RunLog*> robotLogs;
 };
 
 /// The chart: each robot's lanes (ChartLane::group its label) and its CSV

@@ -55,26 +55,34 @@ CellMoment cellMomentOf(const runtime::CellRun& run, vm::Micros at) {
     return a.event->at != b.event->at ? a.event->at < b.event->at : a.robot < b.robot;
   });
 
-  // Where the run left the parts no grasp moved (a belt's, a feeder's); the
-  // grasps then put the others where they were at `at`.
-  const std::vector<runtime::ObjectView> left =
-      run.size() ? run.robot(0).rig().objects() : std::vector<runtime::ObjectView>{};
-  std::vector<bool> grasped(cell.objects.size(), false);
-  for (const CellGrasp& g : grasps)
-    if (g.event->object < grasped.size()) grasped[g.event->object] = true;
+  // Each part's last motion by then (a belt's, a feeder's, a sink's, a
+  // settle): the devices log each in the log of the robot whose step it
+  // came in, so every log is looked at.
+  std::vector<const runtime::PartMotion*> motion(cell.objects.size(), nullptr);
+  for (std::size_t p = 0; p < run.size(); ++p)
+    if (const runtime::RunLog* log = run.robot(p).log())
+      for (const runtime::MotionRecord& r : log->motions)
+        if (r.motion.at <= at && r.motion.object < motion.size() &&
+            (!motion[r.motion.object] || motion[r.motion.object]->at <= r.motion.at))
+          motion[r.motion.object] = &r.motion;
   std::vector<std::optional<std::size_t>> carrier(cell.objects.size());
   std::vector<Eigen::Isometry3d> offset(cell.objects.size(), Eigen::Isometry3d::Identity());
-  for (std::size_t o = 0; o < cell.objects.size(); ++o)
-    m.objects.push_back(grasped[o] || o >= left.size() ? cell.objects[o].F_world_design : left[o].pose);
+  std::vector<vm::Micros> letGo(cell.objects.size(), -1);  // its last let-go by then
+  for (std::size_t o = 0; o < cell.objects.size(); ++o) m.objects.push_back(cell.objects[o].F_world_design);
   for (const CellGrasp& g : grasps) {
     const runtime::GraspEvent& e = *g.event;
     if (e.at > at || e.object >= cell.objects.size()) continue;
     if (e.held) {
       carrier[e.object] = g.robot, offset[e.object] = e.pose;
     } else if (!e.other) {  // a hand-over's let-go: the other robot has it now
-      carrier[e.object].reset(), m.objects[e.object] = e.pose;
+      carrier[e.object].reset(), m.objects[e.object] = e.pose, letGo[e.object] = e.at;
     }
   }
+  // A motion logged at or after the part's let-go is where it went next
+  // (no further than where the run stopped it).
+  const vm::Micros until = std::min(at, run.clock());
+  for (std::size_t o = 0; o < cell.objects.size(); ++o)
+    if (!carrier[o] && motion[o] && motion[o]->at >= letGo[o]) m.objects[o] = motion[o]->poseAt(until);
   for (std::size_t o = 0; o < cell.objects.size(); ++o) {
     if (!carrier[o]) continue;
     const std::size_t r = *carrier[o];

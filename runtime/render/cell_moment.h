@@ -32,8 +32,8 @@ struct CellMoment {
 /// `at` (or ended before it: then everything is where the run left it). A
 /// take counts from the end of its closing move, a let-go from the start of
 /// its opening move; a hand-over's let-go leaves the part with the robot
-/// that took it over. Parts the cell's devices move are where the run left
-/// them.
+/// that took it over. A part the cell's devices move (a belt, a feeder, a
+/// sink) is where its last logged motion has it at `at`.
 CellMoment cellMomentOf(const runtime::CellRun& run, vm::Micros at);
 
 }  // namespace rs::render

@@ -122,7 +122,7 @@ Chart chartOf(const ChartInput& input) {
   if (devices)
     for (const workcell::Conveyor& c : devices->conveyors) chart.series.push_back({"belt_" + c.name, {}});
   std::optional<runtime::DeviceHistory> history;
-  if (devices) history.emplace(log, *input.cell);
+  if (devices) history.emplace(log, *input.cell, input.robotLogs);
   for (ChartSeries& s : chart.series) s.values.reserve(n);
   chart.lines.reserve(n);
 

@@ -72,6 +72,9 @@ struct ChartInput {
   /// later than this robot's end (0: the log's end).
   std::size_t robot = 0;
   vm::Micros end = 0;
+  /// In a cell of several robots, each robot's log by Workcell::robots
+  /// index: a belt another robot's output runs (runtime/run/device_history.h).
+  std::span<const runtime::RunLog* const> robotLogs;
 };
 
 struct Chart {

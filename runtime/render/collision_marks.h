@@ -20,7 +20,8 @@ namespace rs::render {
 inline constexpr workcell::Color kCollisionShapeColor = workcell::Color::LightMagenta;
 inline constexpr workcell::Color kCollidingColor = workcell::Color::Red;
 
-/// Every overlap of the driven robot (Workcell::drivenRobot) at motors `encoders` with the objects at
+/// Every overlap of robot `robot` of the cell (Workcell::robots; the driven
+/// robot by default) at motors `encoders` with the objects at
 /// `objectPoses` (F_world_design each); the gripper's parts may overlap the
 /// object whose box holds the tool centre point (what it holds or takes).
 /// `held`: the object the gripper carries, at its pose in `objectPoses`;
@@ -29,19 +30,19 @@ inline constexpr workcell::Color kCollidingColor = workcell::Color::Red;
 /// another resting one).
 std::vector<workcell::Contact> contactsAt(const workcell::Workcell& cell, std::span<const std::int32_t> encoders,
                                           std::span<const Eigen::Isometry3d> objectPoses,
-                                          std::optional<std::size_t> held = std::nullopt);
+                                          std::optional<std::size_t> held = std::nullopt, std::size_t robot = 0);
 
-/// The edges of every collision piece at that pose, in world coordinates,
+/// The edges of every collision piece of robot `robot` and the objects at that pose, in world coordinates,
 /// each with its part: a box's 12 edges, a hull's lines between each pair
 /// of its points (up to 12 points; beyond, each point to the next).
 std::vector<Line3> collisionShapeLines(const workcell::Workcell& cell, std::span<const std::int32_t> encoders,
-                                       std::span<const Eigen::Isometry3d> objectPoses);
+                                       std::span<const Eigen::Isometry3d> objectPoses, std::size_t robot = 0);
 
 /// Projects `lines` into the picture with the picture's own projection.
 void addLines(Picture& picture, std::span<const Line3> lines);
 
-/// Marks every line of the parts in `contacts`: kCollidingColor, drawn
-/// wider and on top (draw.h, kCollidingLineWidth).
-void markColliding(Picture& picture, std::span<const workcell::Contact> contacts);
+/// Marks every line of the parts in `contacts` (of robot `robot`'s
+/// contactsAt): kCollidingColor, drawn wider and on top (draw.h, kCollidingLineWidth).
+void markColliding(Picture& picture, std::span<const workcell::Contact> contacts, std::size_t robot = 0);
 
 }  // namespace rs::render

@@ -18,7 +18,8 @@ int orderAtOneTime(const GraspRecord* g) { return !g ? 1 : g->event.held ? 2 : 0
 
 }  // namespace
 
-DeviceHistory::DeviceHistory(const RunLog& log, const workcell::Workcell& cell) : log_(log), cell_(cell) {
+DeviceHistory::DeviceHistory(const RunLog& log, const workcell::Workcell& cell, std::span<const RunLog* const> robotLogs)
+    : log_(log), cell_(cell), robotLogs_(robotLogs) {
   sensorEdges_.resize(cell.devices.sensors.size());
   for (const DeviceRecord& r : log.devices) {
     const DeviceEvent& e = r.event;
@@ -53,11 +54,15 @@ bool DeviceHistory::sensorOn(std::size_t s, vm::Micros t) const {
 }
 
 bool DeviceHistory::signalAt(const workcell::Signal& s, vm::Micros t) const {
-  const bool driven = s.robot.empty() || cell_.robotLabeled(s.robot) == cell_.drivenRobotIndex();
+  const std::size_t robot = s.robot.empty() ? cell_.drivenRobotIndex() : cell_.robotLabeled(s.robot);
+  const RunLog* outputs = robot < robotLogs_.size() ? robotLogs_[robot]
+                          : robot == cell_.drivenRobotIndex() ? &log_
+                                                              : nullptr;
   switch (s.kind) {
     case workcell::Signal::Kind::On: return true;
     case workcell::Signal::Kind::Off: return false;
-    case workcell::Signal::Kind::Output: return driven && !log_.steps.empty() && vm::lineIsOn(stateAt(log_, t).outputs, s.number);
+    case workcell::Signal::Kind::Output:
+      return outputs && !outputs->steps.empty() && vm::lineIsOn(stateAt(*outputs, t).outputs, s.number);
     case workcell::Signal::Kind::Input: return false;  // another robot's input: issue 36
     case workcell::Signal::Kind::Sensor: return sensorOn(s.sensor, t);
   }

@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "model/workcell/model.h"
@@ -17,13 +18,15 @@ namespace rs::runtime {
 class DeviceHistory {
  public:
   /// `cell` is the run's (Rig::cell(): with its feeders' slots); both must
-  /// outlive the history.
-  DeviceHistory(const RunLog& log, const workcell::Workcell& cell);
+  /// outlive the history. In a cell of several robots, `robotLogs` holds
+  /// each robot's log (by Workcell::robots index; null: it kept none), so
+  /// that a belt another robot's output runs is seen running.
+  DeviceHistory(const RunLog& log, const workcell::Workcell& cell, std::span<const RunLog* const> robotLogs = {});
 
   /// Sensor `s` (in Workcell::devices.sensors) is ON at `t` (after every edge due at t).
   bool sensorOn(std::size_t s, vm::Micros t) const;
-  /// Conveyor `c`'s belt runs at `t`: its RUN signal is ON (ON, the
-  /// driven robot's output, a sensor; another robot's signal is OFF).
+  /// Conveyor `c`'s belt runs at `t`: its RUN signal is ON (ON, a robot's
+  /// output, a sensor; another robot's output without its log is OFF).
   bool conveyorRunning(std::size_t c, vm::Micros t) const;
   /// Where object `o` rests at `t` (F_world_design), or nullopt while the
   /// gripper holds it (it goes with the gripper: its take's pose). Before
@@ -45,6 +48,7 @@ class DeviceHistory {
 
   const RunLog& log_;
   const workcell::Workcell& cell_;
+  std::span<const RunLog* const> robotLogs_;
   std::vector<std::vector<Edge>> sensorEdges_;  // per sensor, in time order
   std::vector<std::vector<Entry>> entries_;     // per object, in the order they happened
 };

@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -59,6 +60,25 @@ nlohmann::json cellPageModel(const std::string& html) {
   const std::size_t b = html.find("</script>", a);
   REQUIRE(b != std::string::npos);
   return nlohmann::json::parse(html.substr(a + open.size(), b - a - open.size()));
+}
+
+// A cell of two robots and a belt (tests/runtime/belt_and_part.h's, x
+// 0..1000) that runs while b's output 1 is on, with a beam across it at
+// x 500; a ends at 1 s, b turns its output on at once and waits 8 s.
+void writeBeltCell(const TempDir& dir, const std::string& name) {
+  dir.write(name,
+            "OBJECT belt\n  BOX 0 1000 10 0 50 0\n  BELT 0 1000 10 0 45 5 DIRECTION 1 0 0\nEND\n"
+            "OBJECT blk\n  PART\n  BOX 0 10 10 0 10 0\nEND\n"
+            "WORKCELL c\n"
+            "  ROBOT adept-one AT 0 0 -900    AS a PROGRAM a.rsp\n"
+            "  ROBOT adept-one AT 5000 0 -900 AS b PROGRAM b.rsp\n"
+            "  OBJECT belt AT 0 0 50 AS line\n"
+            "  OBJECT blk AT 17 10 30\n"
+            "  CONVEYOR line SPEED 100 RUN b.OUT 1\n"
+            "  SENSOR eye BEAM 500 15 0  500 15 60\n"
+            "END\n");
+  dir.write("a.rsp", "        DELAY 1\n        END\n");
+  dir.write("b.rsp", "        OUTSIG 1 ON\n        DELAY 8\n        END\n");
 }
 
 }  // namespace cell_pictures_test
@@ -199,4 +219,92 @@ TEST_CASE("animate of a cell replays every robot, the others by time", "[render]
   INFO(one.err);
   REQUIRE(one.code != 2);
   CHECK_FALSE(cellPageModel(readBytes(dir.file("one.html"))).at("run").contains("others"));
+}
+
+TEST_CASE("plot and animate of a cell: the devices act in every robot's steps", "[render][cell-run][robots][devices]") {
+  // The belt of tests/runtime/belt_and_part.h (x 0..1000) runs while b's
+  // output 1 is on (from 0 s); its part's front (x 27) meets the beam at
+  // x 500 after 473 / 100 = 4.73 s and its back (x 17) leaves it 0.1 s
+  // later, while a has long ended (at 1 s): the edges come in b's step,
+  // b's log has them, yet the cell's lanes and page must show them.
+  const TempDir dir;
+  writeBeltCell(dir, "c.rsd");
+  const auto csv = runCli({"plot", "--cell", dir.file("c.rsd"), "--format=csv", "--every", "0.05"});
+  INFO(csv.err);
+  REQUIRE(csv.code == 0);
+  std::istringstream rows(csv.out);
+  std::string header;
+  std::getline(rows, header);
+  const auto split = [](const std::string& row) {
+    std::vector<std::string> cells;
+    std::istringstream in(row);
+    for (std::string c; std::getline(in, c, ',');) cells.push_back(c);
+    return cells;
+  };
+  const std::vector<std::string> head = split(header);
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(head.begin(), head.end(), name) - head.begin());
+  };
+  REQUIRE(column("sensor_eye") < head.size());
+  REQUIRE(column("belt_line") < head.size());
+  std::map<std::string, std::vector<std::string>> at;  // the rows of 0.05, 4.7, 4.75, 4.8 and 4.85 s
+  for (std::string row; std::getline(rows, row);)
+    for (const char* t : {"0.050000", "4.700000", "4.750000", "4.800000", "4.850000"})
+      if (row.starts_with(std::string(t) + ",")) at[t] = split(row);
+  REQUIRE(at.size() == 5);
+  CHECK(at["0.050000"][column("belt_line")] == "1");
+  CHECK(at["4.700000"][column("sensor_eye")] == "0");
+  CHECK(at["4.750000"][column("sensor_eye")] == "1");
+  CHECK(at["4.800000"][column("sensor_eye")] == "1");
+  CHECK(at["4.850000"][column("sensor_eye")] == "0");
+
+  // The page: the sensor's edge and the part's motion, from b's steps.
+  const auto page = runCli({"animate", "--cell", dir.file("c.rsd"), "-o", dir.file("cell.html")});
+  INFO(page.err);
+  REQUIRE(page.code == 0);
+  const nlohmann::json run = cellPageModel(readBytes(dir.file("cell.html"))).at("run");
+  REQUIRE(run.at("sensors").at("at").size() >= 1);
+  CHECK(run.at("sensors").at("at")[0] == 4'730'000);
+  CHECK(run.at("motions").at("object").size() >= 1);
+}
+
+TEST_CASE("render --at of a cell marks every robot's overlaps and draws the sensors that are on",
+          "[render][cell-run][robots][devices]") {
+  const TempDir dir;
+  // The interlock cell with a 40-unit block over the right robot's tool
+  // centre point at home, (3238.1, 1070.7, 0) (its run's trace): the block
+  // spans y 1130..1170, clear of the tool centre point, into the wrist. At
+  // 0.5 s the right robot still stands at home (it waits until 2 s), the
+  // left one far away (3000 apart): only the right robot's parts and the
+  // block are red.
+  dir.write("left.rsp", readBytes(kTwoRobots + "left.rsp"));
+  dir.write("right.rsp", readBytes(kTwoRobots + "right.rsp"));
+  dir.write("c.rsd",
+            "WORKCELL interlock\n"
+            "  ROBOT rhino-xr4 AT 0 750 0    AS left  PROGRAM left.rsp\n"
+            "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM right.rsp\n"
+            "  OBJECT block AT 3218 1130 20\n"
+            "  WIRE left.OUT 1  TO right.IN 1\n"
+            "  WIRE right.OUT 1 TO left.IN 1 AFTER 0.25\n"
+            "END\n");
+  const nlohmann::json still = cellDump({"render", dir.file("c.rsd"), "--at", "0.5", "--dump-lines=json"});
+  std::map<std::string, int> red;
+  for (const auto& l : still.at("lines"))
+    if (l.at("color") == "RED") ++red[l.at("owner").get<std::string>() + std::to_string(l.at("index").get<int>())];
+  CHECK(red["robot1"] > 0);
+  CHECK(red["object0"] == 12);  // the block's 12 edges
+  CHECK(red.count("robot0") == 0);
+
+  // The belt cell of the test above: its beam is broken 4.73 .. 4.83 s, in b's steps.
+  writeBeltCell(dir, "b.rsd");
+  const auto sensorLines = [&](const char* at) {
+    int n = 0;
+    const nlohmann::json d = cellDump({"render", dir.file("b.rsd"), "--at", at, "--dump-lines=json"});
+    for (const auto& l : d.at("lines"))
+      n += l.at("owner") == "sensor";
+    return n;
+  };
+  CHECK(sensorLines("4.7") == 0);
+  CHECK(sensorLines("4.75") == 1);  // a beam: one line
+  CHECK(sensorLines("4.9") == 0);
 }

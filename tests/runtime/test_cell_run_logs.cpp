@@ -14,12 +14,14 @@
 #include "runtime/render/cell_moment.h"
 #include "runtime/run/cell_run.h"
 #include "tests/render/render_test_util.h"
+#include "tests/runtime/belt_and_part.h"
 
 namespace cell_run_logs_test {
 
-rs::runtime::CellRunSpec relaySpec() {
+// The cell run of `cell`'s PROGRAMs, every robot keeping its log.
+rs::runtime::CellRunSpec loggedCellSpec(const std::string& cell) {
   rs::launch::ProgramRequest request;
-  request.cell = rendertest::kSourceDir + "/examples/two_robots/relay.rsd";
+  request.cell = cell;
   rs::launch::CellPrograms programs;
   REQUIRE(rs::launch::assignCellPrograms(request, {}, programs));
   rs::launch::compileAssignedPrograms(request, programs);
@@ -30,6 +32,8 @@ rs::runtime::CellRunSpec relaySpec() {
   spec->log = true;
   return *spec;
 }
+
+rs::runtime::CellRunSpec relaySpec() { return loggedCellSpec(rendertest::kSourceDir + "/examples/two_robots/relay.rsd"); }
 
 }  // namespace cell_run_logs_test
 
@@ -78,4 +82,37 @@ TEST_CASE("cell moment: at the end every part is where the world has it", "[cell
     const auto motors = cell.robot(p).rig().motors();
     CHECK(m.encoders[cell.robot(p).rig().robotIndex()] == std::vector<std::int32_t>(motors.begin(), motors.end()));
   }
+}
+
+TEST_CASE("cell moment: a belt's part is where the belt has it at the moment, not at the run's end",
+          "[cell-run][robots][render][devices]") {
+  rs::testing::TempDir dir;
+  // The belt of tests/runtime/belt_and_part.h at its drawn place, its part's
+  // box at x 17..27 on it; two robots far apart, each waiting 20 s.
+  dir.write("c.rsd", std::string(celltest::kBeltAndPart) +
+                         "WORKCELL c\n"
+                         "  ROBOT adept-one AT 0 0 -900    AS a PROGRAM a.rsp\n"
+                         "  ROBOT adept-one AT 5000 0 -900 AS b PROGRAM b.rsp\n"
+                         "  OBJECT belt AT 0 0 50 AS line\n"
+                         "  OBJECT blk AT 17 10 30\n"
+                         "  CONVEYOR line SPEED 100 RUN ON\n"
+                         "END\n");
+  dir.write("a.rsp", "        DELAY 20\n        END\n");
+  dir.write("b.rsp", "        DELAY 20\n        END\n");
+  rs::runtime::CellRunSpec spec = loggedCellSpec(dir.file("c.rsd"));
+  spec.collisions = rs::runtime::CollisionMode::Off;
+  rs::runtime::CellRun cell(spec);
+  REQUIRE(cell.runToEnd().ok());
+  REQUIRE(cell.clock() == 20'000'000);
+  const std::size_t blk = 1;
+  const Eigen::Vector3d design = cell.cell().objects[blk].F_world_design.translation();
+  const auto shiftAt = [&](rs::vm::Micros t) {
+    return Eigen::Vector3d(rs::render::cellMomentOf(cell, t).objects[blk].translation() - design);
+  };
+  // At 100 a second the part has gone 250 along +x at 2.5 s; its front
+  // (27) reaches the belt's end (1000) after 9.73 s and stays there: 973.
+  CHECK(shiftAt(0).norm() < 1e-9);
+  CHECK(shiftAt(2'500'000).isApprox(Eigen::Vector3d(250, 0, 0), 1e-9));
+  CHECK(shiftAt(15'000'000).isApprox(Eigen::Vector3d(973, 0, 0), 1e-9));
+  CHECK(shiftAt(30'000'000).isApprox(Eigen::Vector3d(973, 0, 0), 1e-9));
 }

@@ -7,6 +7,7 @@
 
 #include "base/text.h"
 #include "launch/run_diagnostics.h"
+#include "runtime/run/cell_log.h"
 #include "tools/cli/lib/cell_run_command.h"
 #include "tools/cli/lib/exit_codes.h"
 #include "tools/cli/lib/plot_command.h"
@@ -98,8 +99,12 @@ render::Chart cellChart(const CellDraw& draw, const vm::RunOutcome& outcome, vm:
   const runtime::CellRun& cell = *draw.run;
   std::vector<std::vector<std::uint32_t>> lineOf;  // per robot: what its chart's span looks at
   for (std::size_t p = 0; p < cell.size(); ++p) lineOf.push_back(cell.robot(p).spec().image->lines.toVector());
+  // The devices' lanes come from the first robot's log: with every robot's device events.
+  const runtime::RunLog first = runtime::cellLogOf(cell, 0);
   render::CellChartInput input;
   input.cell = &cell.cell();
+  input.robotLogs.assign(cell.cell().robots.size(), nullptr);
+  for (std::size_t p = 0; p < cell.size(); ++p) input.robotLogs[cell.robot(p).rig().robotIndex()] = cell.robot(p).log();
   input.every = every;
   input.title = cellDrawTitle(draw);
   for (std::size_t p = 0; p < cell.size(); ++p) {
@@ -117,7 +122,7 @@ render::Chart cellChart(const CellDraw& draw, const vm::RunOutcome& outcome, vm:
         if (!earlier && cell.end(p) == runtime::RobotEnd::Stopped) stop = outcome.message;
       }
     }
-    input.robots.push_back({cell.label(p), run.rig().robotIndex(), run.log(), lineOf[p], chartMarks(run, stop)});
+    input.robots.push_back({cell.label(p), run.rig().robotIndex(), p == 0 ? &first : run.log(), lineOf[p], chartMarks(run, stop)});
   }
   return render::cellChartOf(input);
 }

@@ -11,6 +11,8 @@
 #include "runtime/render/collision_marks.h"
 #include "runtime/render/picture.h"
 #include "runtime/render/tool_path.h"
+#include "runtime/run/cell_log.h"
+#include "runtime/run/device_history.h"
 #include "tools/cli/lib/cell_draw.h"
 #include "tools/cli/lib/exit_codes.h"
 #include "tools/cli/lib/number_args.h"
@@ -85,6 +87,12 @@ std::optional<int> renderCellIfSeveral(const RenderOptions& o, const render::Cam
   for (std::size_t r = 0; r < cell.robots.size(); ++r)
     if (!m.encoders[r].empty()) poser.setEncoders(r, m.encoders[r]);
   for (std::size_t i = 0; i < m.objects.size(); ++i) poser.setObjectPose(i, m.objects[i]);
+  // The sensors that are ON then, whichever robot's step their edges came in.
+  if (!cell.devices.sensors.empty() && run.size()) {
+    const runtime::RunLog devices = runtime::cellLogOf(run, 0);
+    const runtime::DeviceHistory history(devices, cell);
+    for (std::size_t s = 0; s < cell.devices.sensors.size(); ++s) poser.setSensorOn(s, history.sensorOn(s, moment));
+  }
   // The first program's VIEW and WINDOW turn the picture, as for one robot.
   if (const runtime::RunLog* log = run.robot(0).log()) {
     const runtime::RunState state = runtime::stateAt(*log, moment);
@@ -100,12 +108,11 @@ std::optional<int> renderCellIfSeveral(const RenderOptions& o, const render::Cam
           *run.robot(p).log(), cell.robots[r], fit.radius * render::kPathTolerance / camera.zoom);
       render::addPath(picture, render::pathUntil(path, moment, poser.tool(r)));
     }
-  // The collision marks are the first robot's, as the still of one robot checks them.
-  std::vector<std::int32_t> first = m.encoders.empty() ? std::vector<std::int32_t>{} : m.encoders[0];
-  if (first.empty() && !cell.robots.empty()) first.assign(poser.encoders(0).size(), 0);
-  if (!cell.robots.empty()) {
-    if (o.collisionShapes) render::addLines(picture, render::collisionShapeLines(cell, first, m.objects));
-    render::markColliding(picture, render::contactsAt(cell, first, m.objects, m.held.empty() ? std::nullopt : m.held[0]));
+  // Every robot's overlaps with the objects, as the still of one robot checks them.
+  for (std::size_t r = 0; r < cell.robots.size(); ++r) {
+    const std::span<const std::int32_t> motors = m.encoders[r].empty() ? poser.encoders(r) : std::span(m.encoders[r]);
+    if (o.collisionShapes) render::addLines(picture, render::collisionShapeLines(cell, motors, m.objects, r));
+    render::markColliding(picture, render::contactsAt(cell, motors, m.objects, m.held[r], r), r);
   }
   if (!writeStill(o, picture, cell, format, camera, what, moment, out, err)) return kExitBadInput;
   return hit ? kExitRunFailed : kExitOk;
@@ -128,7 +135,8 @@ std::optional<int> animateCellIfSeveral(const RenderOptions& o, const render::Ca
   // The page plays the first program as its own run (its listing, lamps
   // and steps), and every other robot's moves and grasps by time.
   const runtime::Run& first = cell.robot(0);
-  const runtime::RunLog& recording = *first.log();
+  // Its log with every robot's device events and part motions: the page's belts and beams.
+  const runtime::RunLog recording = runtime::cellLogOf(cell, 0);
   render::AnimationInput input;
   input.cell = &cell.cell();
   input.robot = first.rig().robotIndex();
