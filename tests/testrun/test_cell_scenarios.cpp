@@ -394,3 +394,41 @@ TEST_CASE("cell scenarios: a cell's golden trace is what run --cell --trace prin
   CHECK(differs.code == 1);
   CHECK(mentions(differs.out, "error: the trace differs from "));
 }
+
+TEST_CASE("robotsim test --coverage of a cell: each robot's program, counted over every scenario",
+          "[testrun][cli][robots]") {
+  const TempDir dir;
+  interlockIn(dir);
+  // Scenario 1 (the interlock as it is): left runs its 9 instruction lines,
+  // lines 7-13 twice (the JMPVAR jumps once, goes on once), SET and END
+  // once; right the same, its SET once. Scenario 2: both robots run
+  // right.rsp, each does SET (line 4) and waits at line 5 for ever (a
+  // deadlock: a WAITFOR that never ends is not counted). So right.rsp's
+  // SET ran 3 times, its other lines as in scenario 1; left.rsp only in
+  // scenario 1. The paths differ (PROGRAM beside the cell, `program` beside
+  // the scenario file) yet name one file: listed once.
+  const std::string spec = dir.write("s.rstest",
+                                     "test: cell interlock.rsd\n"
+                                     "scenario turns\n"
+                                     "expect: finished\n"
+                                     "scenario both wait\n"
+                                     "program left right.rsp\n"
+                                     "expect: deadlock\n");
+  const std::string info = dir.file("c.info");
+  const CliResult r = runCli({"test", spec, "--coverage", "--lcov", info});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  CHECK(mentions(r.out, "left.rsp: 9 of 9 instruction lines ran, 2 of 2 jump directions taken\n"));
+  CHECK(mentions(r.out, "right.rsp: 10 of 10 instruction lines ran, 2 of 2 jump directions taken\n"));
+  CHECK(mentions(r.out, "        3:     4:         SET TURNS 0\n"));
+  CHECK(mentions(r.out, "        2:    12:         JMPVAR TURNS < 2 again   [jumped 1, went on 1]\n"));
+  // Not the scenario file's lines: the programs'.
+  CHECK_FALSE(mentions(r.out, "coverage of " + spec));
+  std::size_t listings = 0;
+  for (std::size_t at = r.out.find("coverage of "); at != std::string::npos; at = r.out.find("coverage of ", at + 1))
+    ++listings;
+  CHECK(listings == 2);
+  const std::string lcov = rs::testing::readBytes(info);
+  CHECK(mentions(lcov, "left.rsp\nBRDA:13,0,0,1\nBRDA:13,0,1,1\nDA:6,1\nDA:7,2\n"));
+  CHECK(mentions(lcov, "right.rsp\nBRDA:12,0,0,1\nBRDA:12,0,1,1\nDA:4,3\nDA:5,2\n"));
+}

@@ -631,3 +631,24 @@ TEST_CASE("robotsim test: a golden trace, written by --update, refused to be wri
   CHECK(refused.err == "robotsim: error: --update refuses to write golden traces when CI is set: a CI run checks them\n");
   CHECK(rs::testing::readBytes(golden) == trace);  // untouched
 }
+
+TEST_CASE("robotsim test --coverage of a scenario file lists its program, once over its scenarios", "[testrun][cli]") {
+  const TempDir dir;
+  // Two scenarios of one program: input 1 on (the JMPIN jumps) and off (it
+  // goes on): each line's count is the two runs' sum.
+  dir.write("p.rsp",
+            "JMPIN 1 ON yes\n"  // 1: twice: jumps once, goes on once
+            "END\n"             // 2: once (input off)
+            "yes: END\n");      // 3: once (input on)
+  const std::string spec = dir.write("s.rstest",
+                                     "program p.rsp\n"
+                                     "scenario on\ntest: input 1=on@0\nexpect: finished\n"
+                                     "scenario off\nexpect: finished\n");
+  const CliResult r = runCli({"test", spec, "--coverage"});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("p.rsp: 3 of 3 instruction lines ran, 2 of 2 jump directions taken\n") != std::string::npos);
+  CHECK(r.out.find("        2:     1: JMPIN 1 ON yes   [jumped 1, went on 1]\n") != std::string::npos);
+  CHECK(r.out.find("coverage of " + spec) == std::string::npos);
+  CHECK(r.out.find("coverage of ") == r.out.rfind("coverage of "));  // one listing
+}

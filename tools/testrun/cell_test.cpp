@@ -224,7 +224,18 @@ CellCheck checkCell(const launch::ProgramRequest& request, const ParsedExpectati
   CellChecker checker(cell, outcome, parsed.expectations, under, settingsFile);
   std::vector<runtime::LabelledTrace*> writers;
   for (GoldenTrace& t : traces) labelTraces(cell, *t.stream, t.writers, writers);
+  std::vector<std::unique_ptr<CoverageCounter>> counters;  // per program, with --coverage
+  if (options.coverage)
+    for (std::size_t p = 0; p < cell.size(); ++p) {
+      counters.push_back(std::make_unique<CoverageCounter>(cell.robot(p).spec().image));
+      cell.observe(p, *counters.back());
+    }
   outcome = cell.runToEnd();
+  for (std::size_t p = 0; p < counters.size(); ++p) {
+    const launch::LoadedProgram& l = programs.loaded[p];
+    r.coverage.push_back({programs.files[p], l.source ? std::make_shared<const diag::SourceFile>(*l.source) : nullptr,
+                          counters[p]->coverage()});
+  }
   for (runtime::LabelledTrace* w : writers) w->finish();
   r.ran = true;
   r.simulated = cell.clock();

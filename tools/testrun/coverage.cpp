@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 
 #include "base/text.h"
@@ -107,6 +108,36 @@ std::string lcovRecord(const std::string& file, const Coverage& coverage) {
     hit += l.runs > 0;
   }
   out += fmt::format("BRF:{}\nBRH:{}\nLF:{}\nLH:{}\nend_of_record\n", branches, branchesHit, lines.size(), hit);
+  return out;
+}
+
+std::vector<ProgramCoverage> mergedCoverage(const std::vector<std::vector<ProgramCoverage>>& tests) {
+  // A cell's PROGRAM and a scenario's `program` line may name one file by two paths.
+  const auto key = [](const std::string& file) {
+    std::error_code ec;
+    const std::filesystem::path p = std::filesystem::weakly_canonical(file, ec);
+    return ec ? file : p.string();
+  };
+  std::vector<ProgramCoverage> out;
+  std::vector<std::string> keys;
+  for (const std::vector<ProgramCoverage>& test : tests)
+    for (const ProgramCoverage& c : test) {
+      const std::string k = key(c.file);
+      std::size_t i = 0;
+      while (i < out.size() && !(keys[i] == k && out[i].counts.image && c.counts.image &&
+                                 out[i].counts.image->code == c.counts.image->code))
+        ++i;
+      if (i == out.size()) {
+        out.push_back(c), keys.push_back(k);
+        continue;
+      }
+      ProgramCoverage* same = &out[i];
+      for (std::size_t i = 0; i < c.counts.runs.size(); ++i) {
+        same->counts.runs[i] += c.counts.runs[i];
+        same->counts.jumped[i] += c.counts.jumped[i];
+        same->counts.fellThrough[i] += c.counts.fellThrough[i];
+      }
+    }
   return out;
 }
 

@@ -22,6 +22,19 @@ struct Coverage {
   std::vector<std::uint64_t> fellThrough;  ///< ... and times it went on to the next instruction
 };
 
+/// What one program ran in a test (a cell's test runs several): the
+/// program's file, its text (for the listing) and the counts.
+struct ProgramCoverage {
+  std::string file;
+  std::shared_ptr<const diag::SourceFile> source;
+  Coverage counts;
+};
+
+/// The programs of `tests`, each once, in the order they first appear, the
+/// counts of every test that ran it summed (the same file compiled to
+/// another image, on another cell, is listed again).
+std::vector<ProgramCoverage> mergedCoverage(const std::vector<std::vector<ProgramCoverage>>& tests);
+
 /// Counts every step of a run into a Coverage (sized for its image).
 class CoverageCounter final : public vm::StepObserver {
  public:

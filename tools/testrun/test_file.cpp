@@ -227,7 +227,9 @@ void check(const std::string& programGiven, const ParsedExpectations& parsed, co
   const vm::RunOutcome outcome = running.runToEnd();
   r.ran = true;
   if (watch) watch->finish(outcome);
-  if (counter) r.coverage = counter->coverage();
+  if (counter)
+    r.coverage.push_back({program, loaded.source ? std::make_shared<const diag::SourceFile>(*loaded.source) : nullptr,
+                          counter->coverage()});
   r.simulated = running.rig().clock();
   r.steps = outcome.steps;
   r.expectations = parsed.expectations.size() + (checked.statesStatus() ? 0 : 1);

@@ -41,8 +41,9 @@ struct TestResult {
   /// The texts of the files the problems and warnings point into, for their carets.
   std::vector<std::shared_ptr<const diag::SourceFile>> sources;
   const diag::SourceFile* sourceOf(const std::string& file) const;
-  /// With coverage asked for and a run made: what it ran.
-  std::optional<Coverage> coverage;
+  /// With coverage asked for and a run made: what each program ran (one
+  /// program, or each robot's of a cell).
+  std::vector<ProgramCoverage> coverage;
   /// Golden traces written by --update.
   std::vector<std::string> updated;
   /// A scenario's grade, in hundredths of a point (scenario_file.h): what

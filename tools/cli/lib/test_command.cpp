@@ -153,13 +153,16 @@ int testCommand(const TestOptions& o, std::ostream& out, std::ostream& err) {
                        seconds);
     if (!o.spec.empty()) out << '\n' << gradeText(results);
   }
+  // Each program once, over every test that ran it.
+  std::vector<std::vector<testrun::ProgramCoverage>> ran;
+  for (const testrun::TestResult& r : results) ran.push_back(r.coverage);
+  const std::vector<testrun::ProgramCoverage> coverage = testrun::mergedCoverage(ran);
   if (o.coverage && text)
-    for (const testrun::TestResult& r : results)
-      if (r.coverage && !r.sources.empty()) out << '\n' << testrun::annotatedListing(*r.sources.front(), *r.coverage);
+    for (const testrun::ProgramCoverage& c : coverage)
+      if (c.source) out << '\n' << testrun::annotatedListing(*c.source, c.counts);
   if (!o.lcov.empty()) {
     std::string tracefile;
-    for (const testrun::TestResult& r : results)
-      if (r.coverage) tracefile += testrun::lcovRecord(r.file, *r.coverage);
+    for (const testrun::ProgramCoverage& c : coverage) tracefile += testrun::lcovRecord(c.file, c.counts);
     std::string error;
     if (!base::writeFileAtomically(o.lcov, tracefile, error)) {
       printTestCommandError(err, o.lcov, "cannot write: " + error);
