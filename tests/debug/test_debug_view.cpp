@@ -24,16 +24,17 @@ namespace {
 using nlohmann::json;
 
 struct Viewed {
-  rs::debug::DebugSession session{debugtest::specOnCell("gantry_pick.rsp", "gantry-cell")};
+  rs::debug::DebugSession session;
   std::ostringstream out;
   rs::debug::Console console{session, nullptr, out};
   std::shared_ptr<rs::cli::DebugView> view;
   int port = 0;
   std::string token;
 
-  Viewed() {
+  explicit Viewed(const std::string& program = "gantry_pick.rsp", const std::string& cell = "gantry-cell")
+      : session(debugtest::specOnCell(program, cell)) {
     std::string error;
-    view = rs::cli::DebugView::start(session, "gantry_pick.rsp", error);
+    view = rs::cli::DebugView::start(session, program, error);
     INFO(error);
     REQUIRE(view);
     const std::string url = view->url();  // http://127.0.0.1:PORT/?token=TOKEN
@@ -184,4 +185,36 @@ TEST_CASE("robotsim debug --view prints the page's address, and without a workce
   CHECK(bare.err.find("--view draws the workcell: give one with --cell CELL") != std::string::npos);
   const rs::testing::CliResult open = rs::testing::runCli({"debug", quit, "--open"});
   CHECK(open.code == 2);  // --open needs --view
+}
+
+TEST_CASE("debug --view shows the cell's devices where the run stopped", "[debug][view][devices]") {
+  Viewed v("adept_production.rsp", "adept-cell");
+  const json before = v.state().at("devices");
+  REQUIRE(before.at("sensors").size() == 1);
+  CHECK(before.at("sensors")[0].at("name") == "eye");
+  CHECK(before.at("sensors")[0].at("on") == false);
+  CHECK(before.at("sensors")[0].at("count") == 0);
+  v.run("break sensor eye on");
+  v.run("continue");
+  // What `print devices` says at this stop: the sensor ON once, the infeed
+  // running with the parts it carried.
+  const std::string printed = v.run("print devices");
+  INFO(printed);
+  REQUIRE(printed.find("sensor eye         ON, turned ON 1 time\n") != std::string::npos);
+  const json after = v.state().at("devices");
+  CHECK(after.at("sensors")[0].at("on") == true);
+  CHECK(after.at("sensors")[0].at("count") == 1);
+  bool infeed = false;
+  for (const json& c : after.at("conveyors"))
+    if (c.at("name") == "infeed") {
+      infeed = true;
+      CHECK(c.at("running") == true);
+      CHECK(printed.find(fmt::format("conveyor infeed    running, carried {} parts", c.at("carried").get<int>())) !=
+            std::string::npos);
+    }
+  CHECK(infeed);
+  // Back to the start: the devices as they were.
+  v.run("reverse-continue");
+  v.run("goto-time 0");
+  CHECK(v.state().at("devices").at("sensors")[0].at("count") == 0);
 }

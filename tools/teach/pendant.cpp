@@ -443,12 +443,7 @@ PendantState Pendant::state() const {
   s.outputs = rig_->machine().outputs();
   for (const runtime::ObjectView& o : rig_->objects())
     s.objects.push_back({std::string(o.name), o.pose, o.held, o.moved, o.present});
-  if (const runtime::CellDevices* d = rig_->devices()) {
-    for (std::size_t i = 0; i < cell_->devices.sensors.size(); ++i)
-      s.sensors.push_back({cell_->devices.sensors[i].name, d->sensorOn(i), d->sensorCount(i)});
-    for (std::size_t i = 0; i < cell_->devices.conveyors.size(); ++i)
-      s.conveyors.push_back({cell_->devices.conveyors[i].name, d->running(i), d->carried(i)});
-  }
+  addDeviceStates(*cell_, rig_->devices(), s);
   for (const PointRow& p : file_.points().points()) s.points.push_back({p.name, p.values, p.line + 1, p.readable, p.pose});
   s.clock = rig_->clock();
   s.motion = frames();

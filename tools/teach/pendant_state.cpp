@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "runtime/render/animation.h"
+#include "runtime/run/rig.h"
 #include "vm/io_lines.h"
 
 namespace rs::teach {
@@ -54,6 +55,14 @@ GripperState gripperState(const std::vector<vm::MotorSpec>& motors, const std::v
              : encoders[i] == motors[i].max ? GripperState::Closed
                                             : GripperState::Between;
   return GripperState::None;
+}
+
+void addDeviceStates(const workcell::Workcell& cell, const runtime::CellDevices* devices, PendantState& state) {
+  if (!devices) return;
+  for (std::size_t i = 0; i < cell.devices.sensors.size(); ++i)
+    state.sensors.push_back({cell.devices.sensors[i].name, devices->sensorOn(i), devices->sensorCount(i)});
+  for (std::size_t i = 0; i < cell.devices.conveyors.size(); ++i)
+    state.conveyors.push_back({cell.devices.conveyors[i].name, devices->running(i), devices->carried(i)});
 }
 
 Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& placed) {

@@ -12,8 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "model/workcell/model.h"
 #include "vm/image.h"
 #include "vm/machine.h"
+
+namespace rs::runtime {
+class CellDevices;
+}
 
 namespace rs::teach {
 
@@ -93,6 +98,10 @@ std::string_view gripperName(GripperState g);
 /// The gripper of a robot with `motors` standing at `encoders` (None when
 /// no motor is a gripper).
 GripperState gripperState(const std::vector<vm::MotorSpec>& motors, const std::vector<std::int32_t>& encoders);
+
+/// The cell's sensors (on, times turned ON) and conveyors (running, parts
+/// carried) as `devices` has them now, into `state`; nothing without devices.
+void addDeviceStates(const workcell::Workcell& cell, const runtime::CellDevices* devices, PendantState& state);
 
 /// The page's JSON: {"revision", "program", "cell", "device", "motors":
 /// [{"letter", "kind", "min", "max", "speed"}], "encoders", "tcp" (or

@@ -35,6 +35,7 @@ void RunSource::publish(const runtime::Run& run, const std::string& message) {
   s.inputs = v.inputs;
   s.outputs = v.outputs;
   for (const runtime::ObjectView& o : v.objects) s.objects.push_back({std::string(o.name), o.pose, o.held, o.moved, o.present});
+  if (run.rig().cell()) addDeviceStates(*run.rig().cell(), run.rig().devices(), s);
   s.clock = v.clock;
   s.message = message;
   std::vector<Eigen::Isometry3d> placed;
