@@ -365,3 +365,71 @@ test('with collisions warn the run goes on past the collision, and the Collision
     await dc.stop();
   }
 });
+
+test('a device breakpoint: a sensor\'s edge stops the run, the stop says when, going back restores the devices', async () => {
+  // examples/adept_production.rsp on adept-cell: the infeed carries the
+  // first block into the beam at 1.100 s (the program's comments; the
+  // terminal debugger's `break sensor eye on` stops there too).
+  const program = path.join(root, 'examples', 'adept_production.rsp');
+  const dc = await client();
+  try {
+    let answer;
+    const { stop } = await started(dc, { program, cell: 'adept-cell' }, {
+      breakpoints: async (c) => {
+        answer = (await c.setFunctionBreakpointsRequest({
+          breakpoints: [{ name: 'sensor eye on' }, { name: 'sensor nosuch' }],
+        })).body.breakpoints;
+      },
+    });
+    assert.equal(answer[0].verified, true);
+    assert.equal(answer[1].verified, false);
+    assert.match(answer[1].message, /eye/);  // names the cell's sensors
+    assert.equal(stop.body.reason, 'function breakpoint');
+    assert.match(stop.body.description, /sensor eye ON at 1\.100 s/);
+    const printed = terminal(program, ['break sensor eye on', 'continue', 'print devices'], ['--cell', 'adept-cell']);
+    assert.match(printed, /sensor eye {9}ON, turned ON 1 time/);
+    assert.match((await evaluate(dc, 'devices')).result, /^sensor eye = ON, turned ON 1 time, /);
+    // One instruction back: before the one during which the beam broke, the
+    // sensor off and never on, as it was then.
+    await moved(dc, dc.stepBackRequest({ threadId: 1 }));
+    assert.match((await evaluate(dc, 'devices')).result, /^sensor eye = OFF, turned ON 0 times, /);
+  } finally {
+    await dc.stop();
+  }
+});
+
+test('a cell of two robots: a thread per robot, every stop stops both, step back for the whole cell', async () => {
+  // examples/two_robots/interlock.rsd: right waits for left's output 1
+  // (on at 2 s) and then makes its two 1 s moves; right's line 6 is its
+  // first MOVE, reached at 2 s, while left waits at its line 10.
+  const two = path.join(root, 'examples', 'two_robots');
+  const dc = await client();
+  try {
+    const { stop } = await started(dc, {
+      cell: path.join(two, 'interlock.rsd'),
+      programs: { left: path.join(two, 'left.rsp'), right: path.join(two, 'right.rsp') },
+    }, {
+      breakpoints: async (c) => {
+        await c.setBreakpointsRequest({ source: { path: path.join(two, 'right.rsp') }, breakpoints: [{ line: 6 }] });
+      },
+    });
+    const threads = (await dc.threadsRequest()).body.threads;
+    assert.deepEqual(threads.map((t) => t.name), ['left', 'right']);
+    assert.equal(stop.body.reason, 'breakpoint');
+    assert.equal(stop.body.allThreadsStopped, true);
+    const right = threads[1].id, left = threads[0].id;
+    assert.equal(stop.body.threadId, right);
+    const rightTop = (await dc.stackTraceRequest({ threadId: right })).body.stackFrames[0];
+    const leftTop = (await dc.stackTraceRequest({ threadId: left })).body.stackFrames[0];
+    assert.deepEqual([rightTop.source.name, rightTop.line], ['right.rsp', 6]);
+    assert.deepEqual([leftTop.source.name, leftTop.line], ['left.rsp', 10]);
+    const stepped = await moved(dc, dc.stepInRequest({ threadId: right }));
+    assert.equal(stepped.body.allThreadsStopped, true);
+    const back = await moved(dc, dc.stepBackRequest({ threadId: right }));
+    assert.equal(back.body.threadId, right);
+    const again = (await dc.stackTraceRequest({ threadId: right })).body.stackFrames[0];
+    assert.equal(again.line, 6);
+  } finally {
+    await dc.stop();
+  }
+});
