@@ -47,6 +47,7 @@ struct EmulateOptions {
   std::string settingsFile;
   std::string link;     // also make this symlink to the device
   double duration = 0;  // stop after this many seconds (0: never)
+  int controllers = 1;  // each on its own pseudo-terminal (a cell of several robots)
   bool noStdin = false;
   bool quiet = false;
   bool verbose = false;

@@ -1,0 +1,235 @@
+// A cell of several robots, each on its own controller (run --cell CELL
+// --device LABEL=DEV ...): examples/two_robots/interlock.rsd, two Rhino
+// XR-4s whose outputs 1 are wired to each other's inputs 1, run with both
+// robots on emulated controllers. The expected commands are derived from
+// left.rsp and right.rsp by hand (Mark IV: a move is "PD,<motor>,<target>"
+// for each motor that moves, then "MC"; OUTSIG n ON/OFF is "OB,n,1"/"OB,n,0";
+// WAITFOR is the cell's, not the controller's): each robot twice reaches in
+// (F to 300), comes back (F to 0), turns output 1 ON, then OFF.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <sys/stat.h>
+
+#include "compiler/description/library.h"
+#include "launch/cell_programs.h"
+#include "launch/run_request.h"
+#include "runtime/run/cell_run.h"
+#include "tests/cli/cli_support.h"
+#include "tests/render/render_test_util.h"
+#include "tests/rhino/serial_support.h"
+
+namespace {
+
+using namespace rs::rhino;
+using rs::testing::runCli;
+using rs::testing::TempDir;
+
+const std::string kInterlock = rendertest::kSourceDir + "/examples/two_robots/interlock.rsd";
+
+const std::vector<std::string> kEachRobotSends = {"PD,F,300", "PD,F,0", "OB,1,1", "OB,1,0",
+                                                  "PD,F,300", "PD,F,0", "OB,1,1", "OB,1,0"};
+
+std::vector<rs::vm::MotorSpec> xr4Motors() {
+  rs::compiler::Library library(rs::compiler::librarySearchPath({}));
+  const std::optional<rs::workcell::Robot> robot = library.robot("rhino-xr4");
+  REQUIRE(robot);
+  return rs::compiler::motorTable(*robot);
+}
+
+// The moves and outputs a controller was given (its polls and queries left out).
+std::vector<std::string> movesAndOutputs(const std::vector<std::string>& received) {
+  std::vector<std::string> out;
+  for (const std::string& c : received)
+    if (c.starts_with("PD,") || c.starts_with("OB,")) out.push_back(c);
+  return out;
+}
+
+std::unique_ptr<PtyEmulator> xr4Emulator() {
+  EmulatorConfig c;
+  c.settings = defaultSettings(Dialect::Mark4);
+  c.motors = xr4Motors();
+  c.rateScale = 20;
+  std::string error;
+  auto emu = PtyEmulator::open(c, error);
+  INFO(error);
+  REQUIRE(emu);
+  emu->start();
+  return emu;
+}
+
+nlohmann::json cellSummary(const std::string& out) { return nlohmann::json::parse(out); }
+
+rs::runtime::CellRunSpec interlockSpec() {
+  rs::launch::ProgramRequest request;
+  request.cell = kInterlock;
+  rs::launch::CellPrograms programs;
+  REQUIRE(rs::launch::assignCellPrograms(request, {}, programs));
+  rs::launch::compileAssignedPrograms(request, programs);
+  REQUIRE(programs.ok());
+  std::vector<rs::diag::Diagnostic> diags;
+  std::optional<rs::runtime::CellRunSpec> spec = rs::launch::prepareCellRun(programs, {}, diags);
+  REQUIRE(spec);
+  return *spec;
+}
+
+// Both robots of the interlock cell on in-process controllers on manual
+// clocks: each controller's serial log, and where the cell ended.
+struct FollowedInterlock {
+  std::vector<std::string> logs;
+  rs::vm::RunOutcome outcome;
+  std::vector<std::vector<std::int32_t>> motors;
+  std::vector<std::vector<std::int32_t>> variables;
+};
+
+FollowedInterlock runFollowed(bool followed) {
+  const RhinoSettings settings = rs::rhino::testing::testSettings(Dialect::Mark4);
+  const std::vector<rs::vm::MotorSpec> motors = xr4Motors();
+  std::vector<std::unique_ptr<rs::rhino::testing::LoopbackRig>> rigs;
+  rs::runtime::CellRunSpec spec = interlockSpec();
+  FollowedInterlock r;
+  {
+    for (auto& p : spec.programs) {
+      if (!followed) break;
+      rigs.push_back(std::make_unique<rs::rhino::testing::LoopbackRig>(
+          settings, motors, rs::rhino::testing::emulatorFor(settings, motors)));
+      REQUIRE(rigs.back()->machine.open());
+      p.follower = &rigs.back()->machine;
+    }
+    rs::runtime::CellRun cell(spec);
+    r.outcome = cell.runToEnd();
+    for (std::size_t p = 0; p < cell.size(); ++p) {
+      const auto pos = cell.robot(p).rig().machine().positions();
+      r.motors.emplace_back(pos.begin(), pos.end());
+      const auto vars = cell.robot(p).interpreter().variables();
+      r.variables.emplace_back(vars.begin(), vars.end());
+    }
+  }
+  for (auto& rig : rigs) {
+    const auto& received = rig->engine.received();
+    CHECK(movesAndOutputs({received.begin(), received.end()}) == kEachRobotSends);
+    r.logs.push_back(rig->logText.str());
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("a cell run with each robot on its own controller ends as the simulated one, with the same logs every run",
+          "[serial][cell-run]") {
+  const FollowedInterlock simulated = runFollowed(false);
+  INFO(simulated.outcome.message);
+  REQUIRE(simulated.outcome.ok());
+  const FollowedInterlock first = runFollowed(true);
+  INFO(first.outcome.message);
+  REQUIRE(first.outcome.ok());
+  CHECK(first.motors == simulated.motors);
+  CHECK(first.variables == simulated.variables);
+  const FollowedInterlock second = runFollowed(true);
+  REQUIRE(second.logs.size() == 2);
+  CHECK(second.logs == first.logs);  // byte for byte: each controller on its own manual clock
+  CHECK_THAT(first.logs[0], Catch::Contains("\"PD,F,300\\r\""));
+}
+
+TEST_CASE("robotsim run --cell --device LABEL=DEV drives one controller a robot, in lock-step with the cell",
+          "[serial][cell-run]") {
+  TempDir dir;
+  const auto sim = runCli({"run", "--cell", kInterlock, "--format", "json"});
+  INFO(sim.err);
+  REQUIRE(sim.code == 0);
+  auto left = xr4Emulator();
+  auto right = xr4Emulator();
+  const std::string leftLog = (dir.path() / "left.log").string();
+  const std::string rightLog = (dir.path() / "right.log").string();
+  const auto real = runCli({"run", "--cell", kInterlock, "--format", "json", "--dialect", "mark4", "--device",
+                            "left=" + left->path(), "--device", "right=" + right->path(), "--log-serial",
+                            "left=" + leftLog, "--log-serial", "right=" + rightLog, "--serial-set", "timeout=0.5"});
+  INFO(real.err);
+  REQUIRE(real.code == 0);
+  // The summary is the cell's, on its one clock: the simulated run's. The
+  // right robot only moves once the wire from the left's output 1 says so:
+  // had the wire not worked, the run would have ended in a deadlock.
+  CHECK(cellSummary(real.out) == cellSummary(sim.out));
+  CHECK(movesAndOutputs(left->received()) == kEachRobotSends);
+  CHECK(movesAndOutputs(right->received()) == kEachRobotSends);
+  CHECK(left->snapshot().outputs == 0);
+  CHECK(right->snapshot().motors[5].position == 0);  // F back at 0
+  std::ifstream in(leftLog);
+  std::string header;
+  std::getline(in, header);
+  CHECK_THAT(header, Catch::StartsWith("# robotsim serial log: mark4 on " + left->path()));
+  CHECK(std::filesystem::file_size(rightLog) > 0);
+}
+
+TEST_CASE("robotsim run --cell --device: mistakes are refused before anything is opened", "[serial][cell-run]") {
+  TempDir dir;
+  auto emu = xr4Emulator();
+  const std::string dev = emu->path();
+  const auto refused = [&](std::vector<std::string> devices, const std::string& message, const std::string& hint) {
+    std::vector<std::string> args = {"run", "--cell", kInterlock, "--dialect", "mark4"};
+    for (const std::string& d : devices) args.push_back("--device"), args.push_back(d);
+    const auto r = runCli(args);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("--device: error: " + message));
+    CHECK_THAT(r.err, Catch::Contains("hint: " + hint));
+  };
+  refused({"middle=" + dev}, "workcell interlock has no robot labelled `middle`", "the cell's robots are left, right");
+  refused({dev}, "'" + dev + "' names no robot: a cell of several robots takes --device LABEL=DEVICE",
+          "the cell's robots are left, right");
+  refused({"left=" + dev, "left=/dev/null"}, "robot left is given two devices", "give each robot's label once");
+  refused({"left=" + dev, "right=" + dev}, "robots left and right are given the same device " + dev,
+          "each robot drives its own controller");
+  CHECK(emu->received().empty());  // nothing was sent to the controller
+
+  // A robot that is not a Rhino: the gantry's motors are X, Y, Z.
+  const std::string cell = dir.write("mixed.rsd",
+                                     "WORKCELL mixed\n"
+                                     "  ROBOT rhino-xr4 AT 0 750 0 AS arm PROGRAM arm.rsp\n"
+                                     "  ROBOT gantry AT 3000 0 0 AS crane PROGRAM crane.rsp\n"
+                                     "END\n");
+  dir.write("arm.rsp", "MOVE 10 0 0 0 0 0\nEND\n");
+  dir.write("crane.rsp", "DELAY 0.1\nEND\n");
+  const auto gantry = runCli({"run", "--cell", cell, "--device", "crane=" + dev});
+  INFO(gantry.err);
+  CHECK(gantry.code == 2);
+  CHECK_THAT(gantry.err, Catch::Contains("--device: error: robot crane (gantry) cannot run on a Rhino controller"));
+  CHECK_THAT(gantry.err, Catch::Contains("hint: only a robot whose motors are a Rhino controller's (A..H)"));
+}
+
+TEST_CASE("robotsim run --cell --device: a regular file or a FIFO is no controller", "[serial][cell-run]") {
+  TempDir dir;
+  const std::string file = dir.write("not-a-port", "");
+  const std::string fifo = (dir.path() / "fifo").string();
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  for (const std::string& path : {file, fifo}) {
+    const auto r = runCli({"run", "--cell", kInterlock, "--device", "left=" + path});
+    INFO(r.err);
+    CHECK(r.code == 1);
+    CHECK_THAT(r.err, Catch::Contains("robotsim: error: " + path + " is not a serial device (not a terminal)"));
+  }
+}
+
+TEST_CASE("robotsim emulate --controllers 2 plays two controllers, each on its own terminal", "[serial]") {
+  const auto r = runCli({"emulate", "--controllers", "2", "--robot", "rhino-xr4", "--dialect", "mark4", "--duration",
+                         "0.1", "--no-stdin", "--quiet"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  std::istringstream lines(r.out);
+  std::string line;
+  std::getline(lines, line);
+  CHECK(line == "2 Rhino Mark IV controller emulators:");
+  std::vector<std::string> paths;
+  for (int k = 1; k <= 2; ++k) {
+    std::getline(lines, line);
+    const std::string prefix = "controller " + std::to_string(k) + " on /dev/";
+    CHECK_THAT(line, Catch::StartsWith(prefix));
+    paths.push_back(line.substr(std::string("controller 1 on ").size()));
+  }
+  CHECK(paths[0] != paths[1]);
+  CHECK_THAT(r.out, Catch::Contains("connect: robotsim run --cell CELL --device LABEL1=" + paths[0] +
+                                    " --device LABEL2=" + paths[1] + " --dialect mark4"));
+  const auto bad = runCli({"emulate", "--controllers", "0", "--duration", "0.1", "--no-stdin"});
+  CHECK(bad.code != 0);
+  CHECK_THAT(bad.err, Catch::Contains("--controllers"));
+}
