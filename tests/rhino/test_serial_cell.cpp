@@ -9,7 +9,14 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <signal.h>
 #include <sys/stat.h>
+#include <chrono>
+#include <thread>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "runtime/rhino/interrupt.h"
 
 #include "compiler/description/library.h"
 #include "launch/cell_programs.h"
@@ -26,13 +33,14 @@ using rs::testing::runCli;
 using rs::testing::TempDir;
 
 const std::string kInterlock = rendertest::kSourceDir + "/examples/two_robots/interlock.rsd";
+const std::string kXr4 = rendertest::kSourceDir + "/stdlib/robots/rhino-xr4.rsd";
 
 const std::vector<std::string> kEachRobotSends = {"PD,F,300", "PD,F,0", "OB,1,1", "OB,1,0",
                                                   "PD,F,300", "PD,F,0", "OB,1,1", "OB,1,0"};
 
 std::vector<rs::vm::MotorSpec> xr4Motors() {
   rs::compiler::Library library(rs::compiler::librarySearchPath({}));
-  const std::optional<rs::workcell::Robot> robot = library.robot("rhino-xr4");
+  const std::optional<rs::workcell::Robot> robot = library.robot(kXr4);
   REQUIRE(robot);
   return rs::compiler::motorTable(*robot);
 }
@@ -45,11 +53,24 @@ std::vector<std::string> movesAndOutputs(const std::vector<std::string>& receive
   return out;
 }
 
-std::unique_ptr<PtyEmulator> xr4Emulator() {
+// What the emulator on its thread has received once the last commands the
+// run wrote (outputs, which are not answered) have reached it: at most 5 s.
+std::vector<std::string> settledMovesAndOutputs(PtyEmulator& emu, std::size_t expected) {
+  std::vector<std::string> got;
+  for (int i = 0; i < 500; ++i) {
+    got = movesAndOutputs(emu.received());
+    if (got.size() >= expected) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return got;
+}
+
+std::unique_ptr<PtyEmulator> xr4Emulator(FaultPlan fault = {}) {
   EmulatorConfig c;
   c.settings = defaultSettings(Dialect::Mark4);
   c.motors = xr4Motors();
   c.rateScale = 20;
+  c.fault = fault;
   std::string error;
   auto emu = PtyEmulator::open(c, error);
   INFO(error);
@@ -150,8 +171,9 @@ TEST_CASE("robotsim run --cell --device LABEL=DEV drives one controller a robot,
   // right robot only moves once the wire from the left's output 1 says so:
   // had the wire not worked, the run would have ended in a deadlock.
   CHECK(cellSummary(real.out) == cellSummary(sim.out));
-  CHECK(movesAndOutputs(left->received()) == kEachRobotSends);
-  CHECK(movesAndOutputs(right->received()) == kEachRobotSends);
+  CHECK(cellSummary(real.out)["robots"][1]["variables"]["TURNS"] == 2);  // right.rsp's two turns, each on the wire
+  CHECK(settledMovesAndOutputs(*left, kEachRobotSends.size()) == kEachRobotSends);
+  CHECK(settledMovesAndOutputs(*right, kEachRobotSends.size()) == kEachRobotSends);
   CHECK(left->snapshot().outputs == 0);
   CHECK(right->snapshot().motors[5].position == 0);  // F back at 0
   std::ifstream in(leftLog);
@@ -174,10 +196,11 @@ TEST_CASE("robotsim run --cell --device: mistakes are refused before anything is
     CHECK_THAT(r.err, Catch::Contains("--device: error: " + message));
     CHECK_THAT(r.err, Catch::Contains("hint: " + hint));
   };
-  refused({"middle=" + dev}, "workcell interlock has no robot labelled `middle`", "the cell's robots are left, right");
+  refused({"middle=" + dev}, "workcell interlock has no robot labelled `middle`", "the cell's robots are `left`, `right`");
   refused({dev}, "'" + dev + "' names no robot: a cell of several robots takes --device LABEL=DEVICE",
-          "the cell's robots are left, right");
-  refused({"left=" + dev, "left=/dev/null"}, "robot left is given two devices", "give each robot's label once");
+          "the cell's robots are `left`, `right`");
+  refused({"left=" + dev, "left=/dev/null"}, "robot left is given two devices",
+          "one controller a robot: give each robot's label once");
   refused({"left=" + dev, "right=" + dev}, "robots left and right are given the same device " + dev,
           "each robot drives its own controller");
   CHECK(emu->received().empty());  // nothing was sent to the controller
@@ -211,7 +234,7 @@ TEST_CASE("robotsim run --cell --device: a regular file or a FIFO is no controll
 }
 
 TEST_CASE("robotsim emulate --controllers 2 plays two controllers, each on its own terminal", "[serial]") {
-  const auto r = runCli({"emulate", "--controllers", "2", "--robot", "rhino-xr4", "--dialect", "mark4", "--duration",
+  const auto r = runCli({"emulate", "--controllers", "2", "--robot", kXr4, "--dialect", "mark4", "--duration",
                          "0.1", "--no-stdin", "--quiet"});
   INFO(r.err);
   REQUIRE(r.code == 0);
@@ -232,4 +255,51 @@ TEST_CASE("robotsim emulate --controllers 2 plays two controllers, each on its o
   const auto bad = runCli({"emulate", "--controllers", "0", "--duration", "0.1", "--no-stdin"});
   CHECK(bad.code != 0);
   CHECK_THAT(bad.err, Catch::Contains("--controllers"));
+}
+
+TEST_CASE("robotsim run --cell --device: a controller that fails stops the cell at its robot's move", "[serial][cell-run]") {
+  // The handshake (TH, SE, PA for each of the six motors) and the first
+  // move's PD,F,300 and MI are answered; the first "SA" (is it done?) is not.
+  auto left = xr4Emulator({FaultKind::Silence, 10, 0});
+  const auto r = runCli({"run", "--cell", kInterlock, "--dialect", "mark4", "--device", "left=" + left->path(),
+                         "--serial-set", "timeout=0.2"});
+  INFO(r.err);
+  CHECK(r.code == 1);
+  // left.rsp's line 7 is its first MOVE; the right robot, simulated, is stopped with the cell.
+  CHECK_THAT(r.err, Catch::Contains("left.rsp:7:9: error: runtime error: no reply from the controller to \"SA\""));
+  CHECK_THAT(r.err, Catch::Contains("stop sent to every motor (MA)"));
+  CHECK_THAT(r.err, Catch::Contains("hint: robot left stopped the cell"));
+  CHECK_THAT(r.out, Catch::Contains("robot right: "));
+  CHECK_THAT(r.out, Catch::Contains("stopped at line 5"));
+}
+
+TEST_CASE("a second Ctrl-C writes the stop to every controller of a cell run", "[serial][cell-run]") {
+  // Two guards, one a controller, as a cell run of two robots on devices
+  // has (launch/rhino.cpp): pipes stand in for the two ports.
+  int left[2], right[2];
+  REQUIRE(::pipe(left) == 0);
+  REQUIRE(::pipe(right) == 0);
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    InterruptGuard a, b;
+    a.setEmergencyStop(left[1], "MA\r");
+    b.setEmergencyStop(right[1], "FX\rEX\r");
+    ::raise(SIGINT);
+    ::raise(SIGINT);  // exits 130 after writing both
+    ::_exit(1);
+  }
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 130);
+  const auto readAll = [](int fd) {
+    char buf[64];
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    return std::string(buf, n > 0 ? static_cast<std::size_t>(n) : 0);
+  };
+  ::close(left[1]), ::close(right[1]);
+  CHECK(readAll(left[0]) == "MA\r");
+  CHECK(readAll(right[0]) == "FX\rEX\r");
+  ::close(left[0]), ::close(right[0]);
 }
