@@ -19,12 +19,11 @@
 #include "runtime/rhino/interrupt.h"
 
 #include "compiler/description/library.h"
-#include "launch/cell_programs.h"
-#include "launch/run_request.h"
 #include "runtime/run/cell_run.h"
 #include "tests/cli/cli_support.h"
 #include "tests/render/render_test_util.h"
 #include "tests/rhino/serial_support.h"
+#include "tests/runtime/cell_spec_support.h"
 
 namespace {
 
@@ -81,19 +80,6 @@ std::unique_ptr<PtyEmulator> xr4Emulator(FaultPlan fault = {}) {
 
 nlohmann::json cellSummary(const std::string& out) { return nlohmann::json::parse(out); }
 
-rs::runtime::CellRunSpec interlockSpec() {
-  rs::launch::ProgramRequest request;
-  request.cell = kInterlock;
-  rs::launch::CellPrograms programs;
-  REQUIRE(rs::launch::assignCellPrograms(request, {}, programs));
-  rs::launch::compileAssignedPrograms(request, programs);
-  REQUIRE(programs.ok());
-  std::vector<rs::diag::Diagnostic> diags;
-  std::optional<rs::runtime::CellRunSpec> spec = rs::launch::prepareCellRun(programs, {}, diags);
-  REQUIRE(spec);
-  return *spec;
-}
-
 // Both robots of the interlock cell on in-process controllers on manual
 // clocks: each controller's serial log, and where the cell ended.
 struct FollowedInterlock {
@@ -107,7 +93,7 @@ FollowedInterlock runFollowed(bool followed) {
   const RhinoSettings settings = rs::rhino::testing::testSettings(Dialect::Mark4);
   const std::vector<rs::vm::MotorSpec> motors = xr4Motors();
   std::vector<std::unique_ptr<rs::rhino::testing::LoopbackRig>> rigs;
-  rs::runtime::CellRunSpec spec = interlockSpec();
+  rs::runtime::CellRunSpec spec = rs::testing::cellRunSpecOf(kInterlock);
   FollowedInterlock r;
   {
     for (auto& p : spec.programs) {

@@ -69,35 +69,35 @@ CLI::Validator settingValidator() {
       "KEY=VALUE");
 }
 
+// Repeatable for a cell of several robots (LABEL=VALUE each): `first`
+// keeps the first value, which is all a run of one robot takes.
+CLI::Option* addRepeatable(CLI::App* cmd, const std::string& name, std::vector<std::string>& all, std::string& first,
+                           const std::string& type, const std::string& help) {
+  return cmd
+      ->add_option_function<std::vector<std::string>>(
+          name,
+          [&all, &first](const std::vector<std::string>& v) {
+            all = v;
+            first = v.front();
+          },
+          help)
+      ->type_name(type)
+      ->allow_extra_args(false);
+}
+
 }  // namespace
 
 void addSerialOptions(CLI::App* cmd, launch::SerialRequest& o) {
-  // Repeatable for a cell of several robots (LABEL=DEVICE each); `device`
-  // and `logFile` keep the first, which is all a run of one robot takes.
   CLI::Option* device =
-      cmd->add_option_function<std::vector<std::string>>(
-             "--device",
-             [&o](const std::vector<std::string>& v) {
-               o.devices = v;
-               o.device = v.front();
-             },
-             "Run on a Rhino controller on this serial device, in lock-step (robotsim ports lists them); with "
-             "--cell of several robots LABEL=DEVICE, repeatable, one controller a robot")
-          ->type_name("DEVICE")
-          ->allow_extra_args(false);
+      addRepeatable(cmd, "--device", o.devices, o.device, "DEVICE",
+                    "Run on a Rhino controller on this serial device, in lock-step (robotsim ports lists them); with "
+                    "--cell of several robots LABEL=DEVICE, repeatable, one controller a robot");
   cmd->add_option("--dialect", o.dialect, "Controller protocol: mark3 (default) or mark4")
       ->check(CLI::IsMember({"mark3", "mark4"}))
       ->needs(device);
-  cmd->add_option_function<std::vector<std::string>>(
-         "--log-serial",
-         [&o](const std::vector<std::string>& v) {
-           o.logFiles = v;
-           o.logFile = v.front();
-         },
-         "Write every serial byte each way, with timestamps, to FILE (a cell of several robots: LABEL=FILE, "
-         "repeatable)")
-      ->type_name("FILE")
-      ->allow_extra_args(false)
+  addRepeatable(cmd, "--log-serial", o.logFiles, o.logFile, "FILE",
+                "Write every serial byte each way, with timestamps, to FILE (a cell of several robots: LABEL=FILE, "
+                "repeatable)")
       ->needs(device);
   cmd->add_option("--serial-set", o.settings,
                   "Override a serial setting KEY=VALUE (repeatable; keys: " + helpSettingsList() + ", ...)")
