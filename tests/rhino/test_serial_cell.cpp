@@ -64,11 +64,11 @@ std::vector<std::string> settledMovesAndOutputs(PtyEmulator& emu, std::size_t ex
   return got;
 }
 
-std::unique_ptr<PtyEmulator> xr4Emulator(FaultPlan fault = {}) {
+std::unique_ptr<PtyEmulator> xr4Emulator(FaultPlan fault = {}, double rateScale = 20) {
   EmulatorConfig c;
   c.settings = defaultSettings(Dialect::Mark4);
   c.motors = xr4Motors();
-  c.rateScale = 20;
+  c.rateScale = rateScale;
   c.fault = fault;
   std::string error;
   auto emu = PtyEmulator::open(c, error);
@@ -288,4 +288,35 @@ TEST_CASE("a second Ctrl-C writes the stop to every controller of a cell run", "
   CHECK(readAll(left[0]) == "MA\r");
   CHECK(readAll(right[0]) == "FX\rEX\r");
   ::close(left[0]), ::close(right[0]);
+}
+
+TEST_CASE("robotsim run --cell --device: the cell does not pass a move's end before the controller is done",
+          "[serial][cell-run]") {
+  // Robot a's move of 300 steps ends at 1 s on the cell's clock (F at its
+  // description's 300 steps/s), and takes its controller 1 s too (the
+  // emulator at the robot's speeds). Robot b waits 1.5 s of the cell's
+  // clock, then moves: lock-step holds the cell at 1 s until a's controller
+  // is done, so b's move reaches b's controller a second after the start,
+  // not at once (the cell's clock alone runs through 1.5 s in microseconds).
+  TempDir dir;
+  const std::string cell = dir.write("pair.rsd",
+                                     "WORKCELL pair\n"
+                                     "  ROBOT rhino-xr4 AT 0 750 0 AS a PROGRAM a.rsp\n"
+                                     "  ROBOT rhino-xr4 AT 3000 750 0 AS b PROGRAM b.rsp\n"
+                                     "END\n");
+  dir.write("a.rsp", "MOVE 300 0 0 0 0 0\nEND\n");
+  dir.write("b.rsp", "DELAY 1.5\nMOVE 10 0 0 0 0 0\nEND\n");
+  auto a = xr4Emulator({}, 1);
+  auto b = xr4Emulator({}, 20);
+  const std::string bLog = (dir.path() / "b.log").string();
+  const auto r = runCli({"run", "--cell", cell, "--dialect", "mark4", "--device", "a=" + a->path(), "--device",
+                         "b=" + b->path(), "--log-serial", "b=" + bLog});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  std::ifstream in(bLog);
+  double sentAt = -1;  // b's log: "   1.012345 > ... "PD,F,10\r""
+  for (std::string line; std::getline(in, line);)
+    if (line.find("\"PD,F,10\\r\"") != std::string::npos) sentAt = std::stod(line);
+  INFO(rs::testing::readBytes(bLog));
+  CHECK(sentAt > 0.8);
 }
