@@ -191,6 +191,12 @@ TEST_CASE("robotsim run --cell --device: mistakes are refused before anything is
           "each robot drives its own controller");
   CHECK(emu->received().empty());  // nothing was sent to the controller
 
+  // A run of one robot's program drives one controller.
+  const std::string prog = dir.write("one.rsp", "MOVE 10 0 0 0 0 0\nEND\n");
+  const auto one = runCli({"run", prog, "--device", dev, "--device", "/dev/null"});
+  CHECK(one.code == 2);
+  CHECK_THAT(one.err, Catch::Contains("--device: error: a run of one robot drives one controller"));
+
   // A robot that is not a Rhino: the gantry's motors are X, Y, Z.
   const std::string cell = dir.write("mixed.rsd",
                                      "WORKCELL mixed\n"

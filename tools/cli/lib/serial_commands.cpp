@@ -109,6 +109,13 @@ void addSerialOptions(CLI::App* cmd, launch::SerialRequest& o) {
     if (CLI::Option* stimuli = cmd->get_option_no_throw(name)) device->excludes(stimuli);
 }
 
+bool refuseSeveralDevices(const launch::SerialRequest& o, std::ostream& err) {
+  if (o.devices.size() <= 1 && o.logFiles.size() <= 1) return false;
+  err << "--device: error: a run of one robot drives one controller\n  hint: several --device LABEL=DEVICE are for "
+         "run --cell CELL with several robots running programs\n";
+  return true;
+}
+
 // --- robotsim ports --------------------------------------------------------------
 
 void addPortsOptions(CLI::App* cmd, PortsOptions& o) {
