@@ -89,8 +89,18 @@ struct FollowedInterlock {
   std::vector<std::vector<std::int32_t>> variables;
 };
 
-FollowedInterlock runFollowed(bool followed) {
-  const RhinoSettings settings = rs::rhino::testing::testSettings(Dialect::Mark4);
+// The steps a Mark III host sent motor F ("F+95", "F-40", ...), added up
+// by sign: the interlock's robots each reach in twice (2 x 300 forward,
+// 2 x 300 back), in whatever chunks the polls let the host send.
+std::pair<int, int> mark3StepsOfF(const std::vector<std::string>& received) {
+  int forward = 0, back = 0;
+  for (const std::string& c : received)
+    if (c.size() > 2 && c[0] == 'F' && (c[1] == '+' || c[1] == '-')) (c[1] == '+' ? forward : back) += std::stoi(c.substr(2));
+  return {forward, back};
+}
+
+FollowedInterlock runFollowed(bool followed, Dialect dialect = Dialect::Mark4) {
+  const RhinoSettings settings = rs::rhino::testing::testSettings(dialect);
   const std::vector<rs::vm::MotorSpec> motors = xr4Motors();
   std::vector<std::unique_ptr<rs::rhino::testing::LoopbackRig>> rigs;
   rs::runtime::CellRunSpec spec = rs::testing::cellRunSpecOf(kInterlock);
@@ -113,8 +123,9 @@ FollowedInterlock runFollowed(bool followed) {
     }
   }
   for (auto& rig : rigs) {
-    const auto& received = rig->engine.received();
-    CHECK(movesAndOutputs({received.begin(), received.end()}) == kEachRobotSends);
+    const std::vector<std::string> received(rig->engine.received().begin(), rig->engine.received().end());
+    if (dialect == Dialect::Mark4) CHECK(movesAndOutputs(received) == kEachRobotSends);
+    else CHECK(mark3StepsOfF(received) == std::pair<int, int>{600, 600});
     r.logs.push_back(rig->logText.str());
   }
   return r;
@@ -136,6 +147,12 @@ TEST_CASE("a cell run with each robot on its own controller ends as the simulate
   REQUIRE(second.logs.size() == 2);
   CHECK(second.logs == first.logs);  // byte for byte: each controller on its own manual clock
   CHECK_THAT(first.logs[0], Catch::Contains("\"PD,F,300\\r\""));
+  // The same on the Mark III, which is fed in chunks and polled.
+  const FollowedInterlock mark3 = runFollowed(true, Dialect::Mark3);
+  INFO(mark3.outcome.message);
+  REQUIRE(mark3.outcome.ok());
+  CHECK(mark3.motors == simulated.motors);
+  CHECK(runFollowed(true, Dialect::Mark3).logs == mark3.logs);
 }
 
 TEST_CASE("robotsim run --cell --device LABEL=DEV drives one controller a robot, in lock-step with the cell",
