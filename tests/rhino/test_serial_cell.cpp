@@ -261,6 +261,15 @@ TEST_CASE("robotsim emulate --controllers 2 plays two controllers, each on its o
   CHECK(paths[0] != paths[1]);
   CHECK_THAT(r.out, Catch::Contains("connect: robotsim run --cell CELL --device LABEL1=" + paths[0] +
                                     " --device LABEL2=" + paths[1] + " --dialect mark4"));
+  // A console line "K: COMMAND" is for controller K; one without, for controller 1.
+  TempDir dir;
+  const std::string script = dir.write("two.txt", "2: in 3 on\nin 1 on\n3: status\n");
+  const auto typed = runCli({"emulate", "--controllers", "2", "--script", script, "--duration", "0.3", "--no-stdin"});
+  INFO(typed.err);
+  CHECK_THAT(typed.out, Catch::Contains(script + ":3: '3: status': K: COMMAND names a controller 1..2"));
+  CHECK_THAT(typed.out, Catch::Contains("controller 1: emulator stopped: "));
+  CHECK_THAT(typed.out, Catch::Contains("| in 1....... |"));
+  CHECK_THAT(typed.out, Catch::Contains("| in ..3..... |"));
   const auto bad = runCli({"emulate", "--controllers", "0", "--duration", "0.1", "--no-stdin"});
   CHECK(bad.code != 0);
   CHECK_THAT(bad.err, Catch::Contains("--controllers"));
