@@ -78,6 +78,21 @@ std::unique_ptr<PtyEmulator> xr4Emulator(FaultPlan fault = {}, double rateScale 
   return emu;
 }
 
+// A robot of a test cell: "MODEL AT x y z", its label, its program's text.
+struct TestRobot {
+  std::string placed, label, program;
+};
+
+// cell.rsd in `dir`: the two robots, each with its program (LABEL.rsp).
+std::string writeTwoRobotCell(TempDir& dir, const TestRobot& first, const TestRobot& second) {
+  std::string text = "WORKCELL pair\n";
+  for (const TestRobot* r : {&first, &second}) {
+    text += "  ROBOT " + r->placed + " AS " + r->label + " PROGRAM " + r->label + ".rsp\n";
+    dir.write(r->label + ".rsp", r->program);
+  }
+  return dir.write("cell.rsd", text + "END\n");
+}
+
 nlohmann::json cellSummary(const std::string& out) { return nlohmann::json::parse(out); }
 
 // Both robots of the interlock cell on in-process controllers on manual
@@ -215,13 +230,8 @@ TEST_CASE("robotsim run --cell --device: mistakes are refused before anything is
   CHECK_THAT(one.err, Catch::Contains("--device: error: a run of one robot drives one controller"));
 
   // A robot that is not a Rhino: the gantry's motors are X, Y, Z.
-  const std::string cell = dir.write("mixed.rsd",
-                                     "WORKCELL mixed\n"
-                                     "  ROBOT rhino-xr4 AT 0 750 0 AS arm PROGRAM arm.rsp\n"
-                                     "  ROBOT gantry AT 3000 0 0 AS crane PROGRAM crane.rsp\n"
-                                     "END\n");
-  dir.write("arm.rsp", "MOVE 10 0 0 0 0 0\nEND\n");
-  dir.write("crane.rsp", "DELAY 0.1\nEND\n");
+  const std::string cell = writeTwoRobotCell(dir, {"rhino-xr4 AT 0 750 0", "arm", "MOVE 10 0 0 0 0 0\nEND\n"},
+                                             {"gantry AT 3000 0 0", "crane", "DELAY 0.1\nEND\n"});
   const auto gantry = runCli({"run", "--cell", cell, "--device", "crane=" + dev});
   INFO(gantry.err);
   CHECK(gantry.code == 2);
@@ -331,13 +341,8 @@ TEST_CASE("robotsim run --cell --device: the cell does not pass a move's end bef
   // is done, so b's move reaches b's controller a second after the start,
   // not at once (the cell's clock alone runs through 1.5 s in microseconds).
   TempDir dir;
-  const std::string cell = dir.write("pair.rsd",
-                                     "WORKCELL pair\n"
-                                     "  ROBOT rhino-xr4 AT 0 750 0 AS a PROGRAM a.rsp\n"
-                                     "  ROBOT rhino-xr4 AT 3000 750 0 AS b PROGRAM b.rsp\n"
-                                     "END\n");
-  dir.write("a.rsp", "MOVE 300 0 0 0 0 0\nEND\n");
-  dir.write("b.rsp", "DELAY 1.5\nMOVE 10 0 0 0 0 0\nEND\n");
+  const std::string cell = writeTwoRobotCell(dir, {"rhino-xr4 AT 0 750 0", "a", "MOVE 300 0 0 0 0 0\nEND\n"},
+                                             {"rhino-xr4 AT 3000 750 0", "b", "DELAY 1.5\nMOVE 10 0 0 0 0 0\nEND\n"});
   auto a = xr4Emulator({}, 1);
   auto b = xr4Emulator({}, 20);
   const std::string bLog = (dir.path() / "b.log").string();
