@@ -9,17 +9,26 @@
 
 #include <string>
 
+#include "launch/cell_programs.h"
+#include "launch/run_request.h"
 #include "runtime/render/cell_moment.h"
 #include "runtime/run/cell_run.h"
-#include "tests/runtime/cell_spec_support.h"
 #include "tests/render/render_test_util.h"
 
 namespace cell_run_logs_test {
 
 rs::runtime::CellRunSpec relaySpec() {
-  rs::runtime::CellRunSpec spec = rs::testing::cellRunSpecOf(rendertest::kSourceDir + "/examples/two_robots/relay.rsd");
-  spec.log = true;
-  return spec;
+  rs::launch::ProgramRequest request;
+  request.cell = rendertest::kSourceDir + "/examples/two_robots/relay.rsd";
+  rs::launch::CellPrograms programs;
+  REQUIRE(rs::launch::assignCellPrograms(request, {}, programs));
+  rs::launch::compileAssignedPrograms(request, programs);
+  REQUIRE(programs.ok());
+  std::vector<rs::diag::Diagnostic> diags;
+  std::optional<rs::runtime::CellRunSpec> spec = rs::launch::prepareCellRun(programs, {}, diags);
+  REQUIRE(spec);
+  spec->log = true;
+  return *spec;
 }
 
 }  // namespace cell_run_logs_test
