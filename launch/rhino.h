@@ -19,9 +19,13 @@ namespace rs::launch {
 
 /// --device, --dialect, --log-serial, --serial-set, --serial-config.
 struct SerialRequest {
-  std::string device;  ///< empty: simulation
+  std::string device;  ///< empty: simulation; the first of `devices`
   std::string dialect = "mark3";
-  std::string logFile;
+  std::string logFile;  ///< the first of `logFiles`
+  /// Every --device and --log-serial given: a cell run of several robots
+  /// takes LABEL=DEVICE and LABEL=FILE, one per robot (cell_controllers.h).
+  std::vector<std::string> devices;
+  std::vector<std::string> logFiles;
   std::vector<std::string> settings;  ///< KEY=VALUE
   std::string settingsFile;
   bool active() const { return !device.empty(); }

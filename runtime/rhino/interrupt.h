@@ -18,12 +18,18 @@ class InterruptGuard {
   InterruptGuard(const InterruptGuard&) = delete;
   InterruptGuard& operator=(const InterruptGuard&) = delete;
 
-  /// What a second Ctrl-C writes to `fd` before exiting (at most 255 bytes).
+  /// What a second Ctrl-C writes to `fd` before exiting (at most 255 bytes),
+  /// until this guard goes. Each guard keeps its own: a cell run's
+  /// controllers, one guard each, are all stopped (at most kStopSlots).
   void setEmergencyStop(int fd, const std::string& bytes);
+  static constexpr int kStopSlots = 16;
   /// Set once SIGINT arrived.
   const std::atomic<bool>& flag() const;
   /// Clears the flag (tests).
   void clear();
+
+ private:
+  int slot_ = -1;  // this guard's emergency stop, once set
 };
 
 }  // namespace rs::rhino

@@ -62,7 +62,7 @@ CellRun::CellRun(CellRunSpec spec)
     one.collisions = spec.collisions;
     one.log = spec.log;
     one.lines = spec.lines;
-    runs_.push_back(std::make_unique<Run>(std::move(one), shared_, p.robot));
+    runs_.push_back(std::make_unique<Run>(std::move(one), shared_, p.robot, p.follower));
     ios[p.robot] = &runs_.back()->rig().io();
   }
   // Every robot is an obstacle to every other, where its machine has it.

@@ -45,6 +45,9 @@ namespace rs::runtime {
 struct CellProgram {
   std::size_t robot = 0;                   ///< its index in Workcell::robots
   std::shared_ptr<const vm::Image> image;  ///< verified, compiled for that robot
+  /// A real controller that follows the robot's motions and outputs in
+  /// lock-step (followed_machine.h), or null; it must outlive the run.
+  vm::Machine* follower = nullptr;
 };
 
 /// What a cell run is made of.

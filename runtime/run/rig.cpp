@@ -23,12 +23,14 @@ Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSp
 }
 
 Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, Cell& shared, std::size_t robot,
-         std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli, CollisionMode collisions)
+         std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli, CollisionMode collisions,
+         vm::Machine* follower)
     : robotIndex_(robot), cell_(std::move(cell)), running_(&shared) {
   auto sim = std::make_unique<SimMachine>(std::move(motors), std::move(stimuli), running_->clock());
   sim_ = sim.get();
   motion_ = std::move(sim);
-  build(*motion_, collisions);
+  if (follower) followed_ = std::make_unique<FollowedMachine>(*sim_, *follower);
+  build(followed_ ? *followed_ : *motion_, collisions);
   io_.sim = sim_;
   if (world_) world_->handMotors(robot, sim_);
 }

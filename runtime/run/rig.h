@@ -23,6 +23,7 @@
 #include "runtime/cell/cell.h"
 #include "runtime/cell/devices.h"
 #include "runtime/cell/input_cause.h"
+#include "runtime/run/followed_machine.h"
 #include "runtime/run/robot_obstacles.h"
 #include "runtime/sim/cell_machine.h"
 #include "runtime/sim/collision_watch.h"
@@ -79,9 +80,12 @@ class Rig {
   /// simulated machine: it runs on `shared`'s clock and world (`cell` is
   /// withFeederSlots' copy, the one `shared` was made of; it must outlive
   /// the rig), and the cell's devices are attached later (attachDevices).
-  /// No snapshots yet: a cell's snapshot is the cell run's.
+  /// No snapshots yet: a cell's snapshot is the cell run's. A `follower`
+  /// (a real controller; it must outlive the rig) is given every motion
+  /// and output of the simulated machine (followed_machine.h).
   Rig(std::shared_ptr<const workcell::Workcell> cell, Cell& shared, std::size_t robot,
-      std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli, CollisionMode collisions);
+      std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli, CollisionMode collisions,
+      vm::Machine* follower = nullptr);
   Rig(const Rig&) = delete;
   Rig& operator=(const Rig&) = delete;
   ~Rig();
@@ -250,6 +254,7 @@ class Rig {
   World* world_ = nullptr;               // running_'s, on a workcell
   std::unique_ptr<vm::Machine> motion_;  // moves the motors, when the rig owns them
   SimMachine* sim_ = nullptr;            // motion_, when simulated
+  std::unique_ptr<FollowedMachine> followed_;  // in front of sim_, when a controller follows it
   std::optional<CellMachine> cellMachine_;
   std::optional<CollisionWatch> watch_;
   CollisionMode collisions_ = CollisionMode::Off;

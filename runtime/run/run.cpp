@@ -68,8 +68,10 @@ Run::Run(RunSpec spec, vm::Machine& machine) : spec_(std::move(spec)) {
   build(std::make_unique<Rig>(spec_.cell, machine));
 }
 
-Run::Run(RunSpec spec, Cell& shared, std::size_t robot) : spec_(std::move(spec)), inCellRun_(true) {
-  build(std::make_unique<Rig>(spec_.cell, shared, robot, spec_.image->motors, spec_.stimuli, spec_.collisions));
+Run::Run(RunSpec spec, Cell& shared, std::size_t robot, vm::Machine* follower)
+    : spec_(std::move(spec)), inCellRun_(true) {
+  build(std::make_unique<Rig>(spec_.cell, shared, robot, spec_.image->motors, spec_.stimuli, spec_.collisions,
+                              follower));
 }
 
 Run::~Run() = default;

@@ -113,8 +113,9 @@ class Run {
   /// made of). Its waits return to the caller: runUntil answers an outcome
   /// with `waiting` set, and the cell run moves the clock. Its log (when
   /// the spec asks) keeps this robot's steps, moves and grasps. No
-  /// snapshots yet.
-  Run(RunSpec spec, Cell& shared, std::size_t robot);
+  /// snapshots yet. A `follower` (a real controller, which must outlive
+  /// the run) is given the robot's motions and outputs (followed_machine.h).
+  Run(RunSpec spec, Cell& shared, std::size_t robot, vm::Machine* follower = nullptr);
   Run(const Run&) = delete;
   Run& operator=(const Run&) = delete;
   ~Run();

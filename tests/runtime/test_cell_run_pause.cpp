@@ -6,23 +6,13 @@
 
 #include <string>
 
-#include "launch/cell_programs.h"
-#include "launch/run_request.h"
 #include "runtime/run/cell_run.h"
+#include "tests/runtime/cell_spec_support.h"
 
 namespace cell_run_pause_test {
 
 rs::runtime::CellRunSpec interlock() {
-  rs::launch::ProgramRequest request;
-  request.cell = std::string(ROBOTSIM_SOURCE_DIR) + "/examples/two_robots/interlock.rsd";
-  rs::launch::CellPrograms programs;
-  REQUIRE(rs::launch::assignCellPrograms(request, {}, programs));
-  rs::launch::compileAssignedPrograms(request, programs);
-  REQUIRE(programs.ok());
-  std::vector<rs::diag::Diagnostic> diags;
-  const auto spec = rs::launch::prepareCellRun(programs, {}, diags);
-  REQUIRE(spec);
-  return *spec;
+  return rs::testing::cellRunSpecOf(std::string(ROBOTSIM_SOURCE_DIR) + "/examples/two_robots/interlock.rsd");
 }
 
 // Everything a run's end shows of each robot.

@@ -9,6 +9,7 @@
 
 #include "base/seconds.h"
 #include "base/text.h"
+#include "launch/cell_controllers.h"
 #include "launch/cell_programs.h"
 #include "launch/run_diagnostics.h"
 #include "launch/run_request.h"
@@ -174,12 +175,10 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std:
     if (!request.file.empty()) return std::nullopt;
     RunCommandOptions one = o;
     one.program.file = programs.files[0], one.program.robot = programs.labels[0], one.programs.clear();
+    // --device LABEL=DEVICE naming that robot is its --device.
+    for (std::string* arg : {&one.serial.device, &one.serial.logFile})
+      if (arg->starts_with(programs.labels[0] + "=")) arg->erase(0, programs.labels[0].size() + 1);
     return runOrCheck(one, check, out, err);
-  }
-  if (o.serial.active()) {
-    err << "--device: error: a run of several robots does not take --device yet\n  hint: run one robot's program "
-           "with PROG --cell CELL --robot LABEL for that\n";
-    return kExitBadInput;
   }
   launch::compileAssignedPrograms(request, programs);
   // check: a program that does not compile is checked alone, each in its file.
@@ -201,6 +200,23 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std:
     return kExitBadInput;
   }
 
+  // Each robot named by --device drives its own controller; opened last,
+  // once everything else is known to be right, and kept until the run is gone.
+  std::vector<std::unique_ptr<rhino::RhinoMachine>> controllers;
+  if (o.serial.active()) {
+    std::vector<diag::Diagnostic> problems;
+    const std::optional<std::vector<launch::SerialRequest>> devices =
+        launch::cellDevices(o.serial, programs, problems);
+    std::optional<std::vector<std::unique_ptr<rhino::RhinoMachine>>> opened;
+    if (devices) opened = launch::openCellControllers(*devices, programs, spec->limits.maxTime, problems);
+    launch::printDiagnostics(err, problems, sourceOf, request.maxErrors, {});
+    if (!opened) {
+      if (o.format == "json") printErrorJson(out, problems);
+      return devices ? kExitRunFailed : kExitBadInput;
+    }
+    controllers = std::move(*opened);
+    for (std::size_t p = 0; p < controllers.size(); ++p) spec->programs[p].follower = controllers[p].get();
+  }
   runtime::CellRun cell(*spec);
   std::vector<std::unique_ptr<runtime::LabelledTrace>> traces;
   if (!o.trace.empty())

@@ -15,6 +15,7 @@
 #include "tools/cli/lib/dap_command.h"
 #include "tools/cli/lib/describe_command.h"
 #include "tools/cli/lib/exit_codes.h"
+#include "tools/cli/lib/serial_commands.h"
 #include "tools/cli/lib/help.h"
 #include "tools/cli/lib/teach_tui_command.h"
 
@@ -117,6 +118,7 @@ constexpr std::array kCommands{
     Command{"teach", "Jog the robot in its workcell on a live page and teach points into the program's POINTS section",
             RS_IN_HELPER([](CLI::App* c, Values& v) { addTeachOptions(c, v.teach); }),
             RS_IN_HELPER([](const Values& v, const Io& io) {
+              if (refuseSeveralDevices(v.teach.request.serial, io.err)) return int{kExitBadInput};
               return v.teach.tui ? teachTuiCommand(v.teach, io.out, io.err) : teachCommand(v.teach, io.out, io.err);
             }),
             true},

@@ -70,6 +70,8 @@ inline constexpr NumberRule kSpeedFactor{
 inline constexpr NumberRule kLatency{"a latency in seconds", 0.0, 10.0, false, false, "e.g. 0.005"};
 inline constexpr NumberRule kSwitchWidth{"a switch width in steps", 0.0, 10000.0, true, false, "e.g. 20"};
 inline constexpr NumberRule kCommandCount{"a number of commands", 0.0, 4611686018427387904.0, true, false, "e.g. 10"};
+inline constexpr NumberRule kControllers{
+    "a number of controllers", 1.0, 16.0, true, false, "one a robot of the cell, e.g. 2"};
 inline constexpr NumberRule kSlowDelay{"a delay in seconds", 0.0, 3600.0, false, false, "e.g. 2"};
 inline constexpr NumberRule kDuration{
     "a duration in seconds", 0.0, 1e7, false, false, "e.g. 60; 0 runs until Ctrl-C or quit"};

@@ -41,6 +41,7 @@ int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::o
     err << "--profile: error: a profile is computed from the simulated run's log: leave out --device\n";
     return kExitBadInput;
   }
+  if (refuseSeveralDevices(o.serial, err)) return kExitBadInput;
   launch::LoadedProgram program = launch::loadProgram(o.program);
   const bool strict = check && o.strict;
   if (strict) promoteCompileWarnings(program);

@@ -69,16 +69,35 @@ CLI::Validator settingValidator() {
       "KEY=VALUE");
 }
 
+// Repeatable for a cell of several robots (LABEL=VALUE each): `first`
+// keeps the first value, which is all a run of one robot takes.
+CLI::Option* addRepeatable(CLI::App* cmd, const std::string& name, std::vector<std::string>& all, std::string& first,
+                           const std::string& type, const std::string& help) {
+  return cmd
+      ->add_option_function<std::vector<std::string>>(
+          name,
+          [&all, &first](const std::vector<std::string>& v) {
+            all = v;
+            first = v.front();
+          },
+          help)
+      ->type_name(type)
+      ->allow_extra_args(false);
+}
+
 }  // namespace
 
 void addSerialOptions(CLI::App* cmd, launch::SerialRequest& o) {
   CLI::Option* device =
-      cmd->add_option("--device", o.device,
-                      "Run on a Rhino controller on this serial device, in lock-step (robotsim ports lists them)");
+      addRepeatable(cmd, "--device", o.devices, o.device, "DEVICE",
+                    "Run on a Rhino controller on this serial device, in lock-step (robotsim ports lists them); with "
+                    "--cell of several robots LABEL=DEVICE, repeatable, one controller a robot");
   cmd->add_option("--dialect", o.dialect, "Controller protocol: mark3 (default) or mark4")
       ->check(CLI::IsMember({"mark3", "mark4"}))
       ->needs(device);
-  cmd->add_option("--log-serial", o.logFile, "Write every serial byte each way, with timestamps, to FILE")
+  addRepeatable(cmd, "--log-serial", o.logFiles, o.logFile, "FILE",
+                "Write every serial byte each way, with timestamps, to FILE (a cell of several robots: LABEL=FILE, "
+                "repeatable)")
       ->needs(device);
   cmd->add_option("--serial-set", o.settings,
                   "Override a serial setting KEY=VALUE (repeatable; keys: " + helpSettingsList() + ", ...)")
@@ -88,6 +107,13 @@ void addSerialOptions(CLI::App* cmd, launch::SerialRequest& o) {
   cmd->add_option("--serial-config", o.settingsFile, "Serial settings file: one KEY = VALUE per line")->needs(device);
   for (const char* name : {"--stimuli", "--input"})
     if (CLI::Option* stimuli = cmd->get_option_no_throw(name)) device->excludes(stimuli);
+}
+
+bool refuseSeveralDevices(const launch::SerialRequest& o, std::ostream& err) {
+  if (o.devices.size() <= 1 && o.logFiles.size() <= 1) return false;
+  err << "--device: error: a run of one robot drives one controller\n  hint: several --device LABEL=DEVICE are for "
+         "run --cell CELL with several robots running programs\n";
+  return true;
 }
 
 // --- robotsim ports --------------------------------------------------------------
@@ -143,6 +169,7 @@ void addEmulateOptions(CLI::App* cmd, EmulateOptions& o) {
       "  status                   print the whole state\n"
       "  wait SECONDS             pause the script\n"
       "  quit                     stop the emulator\n"
+      "With --controllers N, 'K: COMMAND' is for controller K (1..N); without it, for controller 1.\n"
       "See docs/serial.md, \"The emulator\".");
   cmd->add_option("--dialect", o.dialect, "Controller to play: mark3 (default) or mark4")
       ->check(CLI::IsMember({"mark3", "mark4"}));
@@ -166,7 +193,11 @@ void addEmulateOptions(CLI::App* cmd, EmulateOptions& o) {
       ->allow_extra_args(false)
       ->check(settingValidator());
   cmd->add_option("--serial-config", o.settingsFile, "Serial settings file, as for run");
-  cmd->add_option("--link", o.link, "Also make this symbolic link to the device (e.g. /tmp/rhino)");
+  cmd->add_option("--link", o.link,
+                  "Also make this symbolic link to the device (e.g. /tmp/rhino; with --controllers N: LINK1..LINKN)");
+  cmd->add_option("--controllers", o.controllers,
+                  "Play N controllers at once, each on its own pseudo-terminal (one a robot of a cell; default 1)")
+      ->transform(numberArg(rules::kControllers));
   cmd->add_option("--duration", o.duration, "Stop after this many seconds (default: run until Ctrl-C or quit)")
       ->transform(numberArg(rules::kDuration));
   cmd->add_flag("--no-stdin", o.noStdin, "Do not read console commands from standard input");
@@ -180,14 +211,37 @@ namespace {
 constexpr std::uint64_t kMaxFaultAfter = 1'000'000'000'000;
 
 struct EmulatorSession {
-  rhino::PtyEmulator& emu;
+  std::vector<std::unique_ptr<rhino::PtyEmulator>>& emus;
   std::ostream& out;
   bool quit = false;
   vm::Micros waitUntil = 0;  // script: next line not before
 };
 
-// One console line: "" when fine, else what is wrong.
+struct ControllerConsole {
+  rhino::PtyEmulator& emu;
+  std::ostream& out;
+  bool& quit;
+  vm::Micros& waitUntil;
+};
+
+std::string consoleCommand(ControllerConsole s, const std::string& line);
+
+// One console line, "K: COMMAND" for controller K: "" when fine, else what is wrong.
 std::string consoleCommand(EmulatorSession& s, const std::string& line) {
+  std::size_t k = 1;
+  std::string rest = line;
+  const std::size_t first = line.find_first_not_of(' ');
+  const std::size_t colon = line.find(':');
+  if (first != std::string::npos && colon != std::string::npos && colon > first &&
+      line.find_first_not_of("0123456789", first) == colon) {
+    const auto n = parseWhole<std::size_t>(std::string_view(line).substr(first, colon - first), 1, s.emus.size());
+    if (!n) return fmt::format("'{}': K: COMMAND names a controller 1..{}", line, s.emus.size());
+    k = *n, rest = line.substr(colon + 1);
+  }
+  return consoleCommand(ControllerConsole{*s.emus[k - 1], s.out, s.quit, s.waitUntil}, rest);
+}
+
+std::string consoleCommand(ControllerConsole s, const std::string& line) {
   std::istringstream in(line);
   std::vector<std::string> w;
   for (std::string word; in >> word;) {
@@ -306,44 +360,70 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
     for (std::string line; std::getline(lines, line);) script.push_back(line);
   }
 
-  std::unique_ptr<rhino::PtyEmulator> emu = rhino::PtyEmulator::open(config, error);
-  if (!emu) {
-    err << "robotsim: error: " << error << '\n';
-    return kExitRunFailed;
+  std::vector<std::unique_ptr<rhino::PtyEmulator>> emus;
+  for (int k = 0; k < o.controllers; ++k) {
+    emus.push_back(rhino::PtyEmulator::open(config, error));
+    if (!emus.back()) {
+      err << "robotsim: error: " << error << '\n';
+      return kExitRunFailed;
+    }
   }
-  if (!o.link.empty()) {
+  const bool several = emus.size() > 1;
+  // With several controllers, each has a label (its number) and a link of its own.
+  const auto linkOf = [&](std::size_t k) { return o.link.empty() || !several ? o.link : o.link + std::to_string(k + 1); };
+  const auto named = [&](std::size_t k) { return several ? fmt::format("controller {}: ", k + 1) : std::string(); };
+  for (std::size_t k = 0; k < emus.size() && !o.link.empty(); ++k) {
     std::error_code ec;
-    if (std::filesystem::is_symlink(std::filesystem::symlink_status(o.link, ec)))
-      std::filesystem::remove(o.link, ec);  // a stale link from an earlier run; never a file
-    std::filesystem::create_symlink(emu->path(), o.link, ec);
-    if (ec) err << fmt::format("robotsim: warning: cannot make the link {}: {}\n", o.link, ec.message());
+    const std::string link = linkOf(k);
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(link, ec)))
+      std::filesystem::remove(link, ec);  // a stale link from an earlier run; never a file
+    std::filesystem::create_symlink(emus[k]->path(), link, ec);
+    if (ec) err << fmt::format("robotsim: warning: cannot make the link {}: {}\n", link, ec.message());
   }
   const std::string dialect(rhino::dialectName(config.settings.dialect));
-  out << fmt::format("Rhino {} controller emulator on {}{}\n", rhino::dialectTitle(config.settings.dialect), emu->path(),
-                     o.link.empty() ? "" : " (also " + o.link + ")");
+  const auto deviceOf = [&](std::size_t k) { return o.link.empty() ? emus[k]->path() : linkOf(k); };
+  if (several) {
+    out << fmt::format("{} Rhino {} controller emulators:\n", emus.size(), rhino::dialectTitle(config.settings.dialect));
+    for (std::size_t k = 0; k < emus.size(); ++k)
+      out << fmt::format("controller {} on {}{}\n", k + 1, emus[k]->path(),
+                         o.link.empty() ? "" : " (also " + linkOf(k) + ")");
+  } else {
+    out << fmt::format("Rhino {} controller emulator on {}{}\n", rhino::dialectTitle(config.settings.dialect),
+                       emus[0]->path(), o.link.empty() ? "" : " (also " + o.link + ")");
+  }
   out << fmt::format("robot {}: motors {}; line {}\n", o.robot, motorList(config.motors),
                      describe(config.settings.line));
-  out << fmt::format("connect: robotsim run PROGRAM --device {} --dialect {}\n", o.link.empty() ? emu->path() : o.link,
-                     dialect);
+  if (several) {
+    std::string devices;
+    for (std::size_t k = 0; k < emus.size(); ++k) devices += fmt::format(" --device LABEL{}={}", k + 1, deviceOf(k));
+    out << fmt::format("connect: robotsim run --cell CELL{} --dialect {}\n", devices, dialect);
+  } else {
+    out << fmt::format("connect: robotsim run PROGRAM --device {} --dialect {}\n", deviceOf(0), dialect);
+  }
   if (config.fault.kind != rhino::FaultKind::None)
-    out << fmt::format("fault: {} after {} commands\n", rhino::faultName(config.fault.kind), config.fault.after);
+    out << fmt::format("fault: {} after {} commands{}\n", rhino::faultName(config.fault.kind), config.fault.after,
+                       several ? ", on every controller" : "");
   out << (o.noStdin ? "Ctrl-C quits.\n" : "Type 'help' for commands; Ctrl-C or 'quit' stops.\n");
   out.flush();
 
+  // The first controller is pumped here, with the console; the others each on a thread of their own.
+  for (std::size_t k = 1; k < emus.size(); ++k) emus[k]->start();
+  rhino::PtyEmulator& first = *emus[0];
   rhino::InterruptGuard guard;
-  EmulatorSession session{*emu, out};
+  EmulatorSession session{emus, out};
   const bool statusLine = !o.quiet && &out == &std::cout && ::isatty(STDOUT_FILENO);
   bool stdinOpen = !o.noStdin;
   std::string typed;
   std::size_t scriptLine = 0;
-  std::uint64_t echoed = 0;  // commands received and already echoed (--verbose)
+  std::vector<std::uint64_t> echoed(emus.size(), 0);  // commands received and already echoed (--verbose)
   vm::Micros lastStatus = -1'000'000;
-  const vm::Micros end = o.duration > 0 ? emu->now() + static_cast<vm::Micros>(std::llround(o.duration * 1e6)) : 0;
+  const vm::Micros end = o.duration > 0 ? first.now() + static_cast<vm::Micros>(std::llround(o.duration * 1e6)) : 0;
   const auto clearStatus = [&] {
     if (statusLine) out << "\r\x1b[K";
   };
-  while (!guard.flag() && !session.quit && !(end && emu->now() >= end)) {
-    if (emu->pump(20'000, stdinOpen ? STDIN_FILENO : -1)) {
+  bool hungUp = false;
+  while (!guard.flag() && !session.quit && !hungUp && !(end && first.now() >= end)) {
+    if (first.pump(20'000, stdinOpen ? STDIN_FILENO : -1)) {
       char buf[512];
       const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
       if (n <= 0)
@@ -356,39 +436,46 @@ int emulateCommand(const EmulateOptions& o, std::ostream& out, std::ostream& err
       if (std::string e = consoleCommand(session, typed.substr(0, nl)); !e.empty()) out << e << '\n';
       typed.erase(0, nl + 1);
     }
-    while (scriptLine < script.size() && emu->now() >= session.waitUntil && !session.quit) {
+    while (scriptLine < script.size() && first.now() >= session.waitUntil && !session.quit) {
       clearStatus();
       if (std::string e = consoleCommand(session, script[scriptLine]); !e.empty())
         out << fmt::format("{}:{}: {}\n", o.script, scriptLine + 1, e);
       ++scriptLine;
     }
-    if (o.verbose)
-      for (const std::string& c : emu->receivedSince(echoed)) {
+    for (std::size_t k = 0; k < emus.size(); ++k) {
+      rhino::PtyEmulator& emu = *emus[k];
+      if (o.verbose)
+        for (const std::string& c : emu.receivedSince(echoed[k])) {
+          clearStatus();
+          out << named(k) << "host: " << c << '\n';
+        }
+      if (!o.quiet)
+        for (const std::string& e : emu.takeEvents()) {
+          clearStatus();
+          out << named(k) << e << '\n';
+        }
+      if (emu.hungUp()) {
         clearStatus();
-        out << "host: " << c << '\n';
+        out << named(k) << "The emulator hung up as asked (--fault hangup); start it again to reconnect.\n";
+        hungUp = true;
       }
-    if (!o.quiet)
-      for (const std::string& e : emu->takeEvents()) {
-        clearStatus();
-        out << e << '\n';
-      }
-    if (emu->hungUp()) {
-      clearStatus();
-      out << "The emulator hung up as asked (--fault hangup); start it again to reconnect.\n";
-      break;
     }
-    if (statusLine && emu->now() - lastStatus >= 100'000) {
-      out << '\r' << emu->statusLine() << "\x1b[K";
+    if (statusLine && first.now() - lastStatus >= 100'000) {
+      out << '\r' << first.statusLine() << "\x1b[K";
       out.flush();
-      lastStatus = emu->now();
+      lastStatus = first.now();
     }
     out.flush();
   }
   clearStatus();
-  out << "emulator stopped: " << emu->statusLine() << '\n';
-  if (!o.link.empty()) {
+  for (std::size_t k = 0; k < emus.size(); ++k) {
+    emus[k]->stop();
+    out << named(k) << "emulator stopped: " << emus[k]->statusLine() << '\n';
+  }
+  for (std::size_t k = 0; k < emus.size() && !o.link.empty(); ++k) {
     std::error_code ec;
-    if (std::filesystem::is_symlink(std::filesystem::symlink_status(o.link, ec))) std::filesystem::remove(o.link, ec);
+    const std::string link = linkOf(k);
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(link, ec))) std::filesystem::remove(link, ec);
   }
   return kExitOk;
 }

@@ -22,6 +22,9 @@ namespace rs::cli {
 /// --device then excludes --stimuli and --input (inputs come from the
 /// controller), and the other serial options need --device.
 void addSerialOptions(CLI::App* cmd, launch::SerialRequest& o);
+/// A run of one robot (or teach) drives one controller: true, with the
+/// error said on `err`, when several --device or --log-serial were given.
+bool refuseSeveralDevices(const launch::SerialRequest& o, std::ostream& err);
 
 struct PortsOptions {
   bool all = false;  // also /dev/ttyS* nodes with no UART behind them
@@ -47,6 +50,7 @@ struct EmulateOptions {
   std::string settingsFile;
   std::string link;     // also make this symlink to the device
   double duration = 0;  // stop after this many seconds (0: never)
+  int controllers = 1;  // each on its own pseudo-terminal (a cell of several robots)
   bool noStdin = false;
   bool quiet = false;
   bool verbose = false;
