@@ -93,6 +93,7 @@ CollisionModel::CollisionModel(const Workcell& cell, std::size_t robot) : cell_(
   }
   if (!r.chain) return;
   const Eigen::Isometry3d F_world_0 = placed.F_world_design * r.frames.front();
+  baseOrigin_ = F_world_0.translation();
   chain_.emplace(r.chain->placedAt(F_world_0));
   kinematics::ChainData home(*chain_);
   M_.resize(static_cast<std::size_t>(n) + 1);
@@ -146,6 +147,10 @@ CollisionModel::CollisionModel(const Workcell& cell, std::size_t robot) : cell_(
       bodyReach[b] = reachOf(body, M);
     }
   }
+  std::vector<double> toFrame0(length.size(), 0.0);  // Σ lengths 1..f: frame f's origin from frame 0's
+  for (std::size_t f = 1; f < length.size(); ++f) toFrame0[f] = toFrame0[f - 1] + length[f];
+  for (std::size_t b = 0; b < robotBodies_.size(); ++b)
+    reach_ = std::max(reach_, toFrame0[static_cast<std::size_t>(robotBodies_[b].frame)] + bodyReach[b]);
   gripperMotor_ = motors;
   hasGripper_ = r.hasGripper;
   const std::size_t columns = motors + (r.hasGripper ? 1 : 0);
@@ -433,6 +438,19 @@ std::vector<Contact> checkAtHome(const Workcell& cell) {
   query.objectPoses = poses;
   const std::vector<std::int32_t> home(model.motorWeights().size(), 0);
   return data.allContacts(home, query, true);
+}
+
+double carriedReach(const Workcell& cell) {
+  double reach = 0;
+  for (const PlacedObject& object : cell.objects) {
+    if (object.kind == ObjectKind::Fixture) continue;
+    Eigen::AlignedBox3d box;
+    for (const Segment& s : object.shape.segments) box.extend(s.a), box.extend(s.b);
+    for (const ConvexPiece& piece : object.shape.collision)
+      for (const Vector3d& p : piece.points) box.extend(p);
+    if (!box.isEmpty()) reach = std::max(reach, (1 + std::sqrt(3.0)) * box.diagonal().norm() / 2);
+  }
+  return reach;
 }
 
 }  // namespace rs::workcell

@@ -137,6 +137,18 @@ class CollisionModel {
   /// resolution below which the sweep cannot go).
   double countStep() const;
   bool movable() const { return chain_.has_value(); }
+  /// Where the robot's frame 0 (its base) stands in the world, and a bound
+  /// on the distance from there to every point of its parts over every
+  /// pose (the sum of the D-H translations' bounds up to each part's
+  /// frame, plus the part's reach from that frame): two robots whose bases
+  /// are farther apart than the sum of their reaches never meet.
+  Eigen::Vector3d baseOrigin() const { return baseOrigin_; }
+  double reach() const { return reach_; }
+  /// The same for an object carried with its points within `carried` of
+  /// the tool centre point.
+  double reachCarrying(double carried) const {
+    return std::max(reach_, (toReach_.empty() ? 0.0 : toReach_.front()) + carried);
+  }
 
  private:
   friend class CollisionData;
@@ -158,7 +170,16 @@ class CollisionModel {
   std::size_t gripperMotor_ = 0;
   bool hasGripper_ = false;
   double fingerWeight_ = 0;
+  Eigen::Vector3d baseOrigin_ = Eigen::Vector3d::Zero();
+  double reach_ = 0;
 };
+
+/// A bound on the distance from a gripper's tool centre point to every
+/// point of any part of `cell` it holds (not a fixture): it takes a part
+/// only with the tool centre point inside the part's world box, which lies
+/// within √3·ρ of the centre of a ball of radius ρ round the part's lines
+/// and pieces, so every point of the part is within (1 + √3)·ρ of it.
+double carriedReach(const Workcell& cell);
 
 /// The world box round each piece of `body` at pose `T` (into `out`, one
 /// per piece): the exact test is asked about two pieces only when their

@@ -40,9 +40,7 @@ void Rig::avoidOtherRobots() {
   obstacles_ = std::make_unique<RobotObstacles>(*cell_, robotIndex_);
   if (!obstacles_->any()) return;
   watch_.emplace(obstacles_->view(), robotIndex_);
-  watch_->alsoAvoid(obstacles_->firstPart(),
-                    [this](vm::Micros t, std::span<Eigen::Isometry3d> poses) { obstacles_->pose(t, poses); },
-                    cell_->robots[robotIndex_].labelOf());
+  watch_->alsoAvoid(obstacles_->firstPart(), *obstacles_, cell_->robots[robotIndex_].labelOf());
   cellMachine_->watchCollisions(*sim_, *watch_, collisions_);
 }
 

@@ -29,10 +29,10 @@ CollisionWatch::CollisionWatch(const workcell::Workcell& cell, std::size_t robot
     : hand_(robot), model_(cell, robot), data_(model_), bounds_(model_), clearance_(model_.robotBodies().size() + 1),
       poses_(cell.objects.size()), worldObjects_(cell.objects.size()) {}
 
-void CollisionWatch::alsoAvoid(std::size_t worldObjects, OthersPoses poses, std::string label) {
+void CollisionWatch::alsoAvoid(std::size_t worldObjects, MovingParts& others, std::string label) {
   label_ = std::move(label);
   worldObjects_ = std::min(worldObjects, poses_.size());
-  others_ = std::move(poses);
+  others_ = &others;
   memo_ = SweepMemo();
 }
 
@@ -112,23 +112,29 @@ const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const Wor
   // The line this knot belongs to has collided already: one move, one report.
   if (knot && events_.size() > lineFirstEvent_ && events_.back().instruction == instruction_) return nullptr;
   ++moves_;
-  if (!others_) return sweepPosed(machine, world, before, after, start, end, lineFrom, lineTo);
-  // Other robots stand where they are at the move's start, then where they
-  // are at its end (a second look only when one moved meanwhile).
-  othersAt_ = start;
-  othersPose();
-  const std::vector<Eigen::Isometry3d> atStart(poses_.begin() + static_cast<std::ptrdiff_t>(worldObjects_), poses_.end());
-  if (const CollisionEvent* hit = sweepPosed(machine, world, before, after, start, end, lineFrom, lineTo)) return hit;
-  othersAt_ = end;
-  othersPose();
-  bool moved = false;
-  for (std::size_t i = 0; i < atStart.size() && !moved; ++i)
-    moved = atStart[i].matrix() != poses_[worldObjects_ + i].matrix();
-  return moved ? sweepPosed(machine, world, before, after, start, end, lineFrom, lineTo) : nullptr;
+  // The other robots stand where they are at the move's start, or move
+  // with each check (advance). The sweep runs at the move's end, when
+  // each other robot's motion since it began its latest move is known
+  // (SimMachine::positionAt; before then it stood where that move began):
+  // of two moves at once, the check of the one that ends first sees both.
+  othersMove_ = false;
+  if (others_) othersAt_ = start, othersMove_ = others_->travel(start, end) > 0;
+  return sweepPosed(machine, world, before, after, start, end, lineFrom, lineTo);
 }
 
 void CollisionWatch::othersPose() {
-  others_(othersAt_, std::span(poses_).subspan(worldObjects_));
+  others_->pose(othersAt_, std::span(poses_).subspan(worldObjects_));
+}
+
+// The other robots, and the parts they carry, where they are at time t;
+// how far they can go from there by the move's end.
+void CollisionWatch::othersAt(const World& world, vm::Micros t, vm::Micros end) {
+  othersAt_ = checkAt_ = t;
+  othersPose();
+  for (const auto& [o, hand] : carried_)
+    if (const std::span<const std::int32_t> motors = others_->motorsAt(hand, t); !motors.empty())
+      poses_[o] = world.objectPose(o, motors, t, hand);
+  bounds_.othersMove(others_->travel(t, end));
 }
 
 const CollisionEvent* CollisionWatch::sweepPosed(const SimMachine& machine, const World& world,
@@ -142,7 +148,9 @@ const CollisionEvent* CollisionWatch::sweepPosed(const SimMachine& machine, cons
   // memory answers while one does.
   bool othersCarry = false;
   for (std::size_t h = 0; h < world.handCount(); ++h) othersCarry |= h != hand_ && world.held(h).has_value();
-  const SweepVerdict* verdict = othersCarry ? nullptr : memo_.find(key_);
+  // Nor while one of them moves: the verdict hangs on how.
+  const bool remember = !othersCarry && !othersMove_;
+  const SweepVerdict* verdict = remember ? memo_.find(key_) : nullptr;
   SweepVerdict fresh;
   if (verdict) {
     ++remembered_;
@@ -150,14 +158,19 @@ const CollisionEvent* CollisionWatch::sweepPosed(const SimMachine& machine, cons
     workcell::CollisionQuery query = world.collisionQuery(knot ? lineFrom : before, knot ? lineTo : after,
                                                           std::span(poses_).first(worldObjects_), hand_);
     query.objectPoses = poses_;  // the other robots' parts too
-    fresh = advance(machine, query, before, after, start, end);
+    carried_.clear();
+    if (othersMove_)
+      for (std::size_t o = 0; o < worldObjects_; ++o)
+        if (const std::optional<std::size_t> by = world.holder(o); by && *by != hand_ && !world.shared(o))
+          carried_.emplace_back(o, *by);
+    fresh = advance(machine, world, query, before, after, start, end);
     if (fresh.collides) {
       fresh.depth = data_.overlap(fresh.contact, query).depth;
       // Where the move ends: the same two parts, still in each other by a little?
       const std::optional<workcell::Overlap> o = data_.overlapAt(knot ? lineTo : after, query, fresh.contact);
       if (o && o->depth <= kEndsInBy) fresh.endsIn = o;
     }
-    if (!othersCarry) memo_.remember(key_, fresh);
+    if (remember) memo_.remember(key_, fresh);
     verdict = &fresh;
   }
   if (!verdict->collides) return nullptr;
@@ -166,10 +179,11 @@ const CollisionEvent* CollisionWatch::sweepPosed(const SimMachine& machine, cons
   return &events_.back();
 }
 
-// The largest share of its allowance any limit has used by time t.
+// The largest share of its allowance any limit has used by time t, with
+// what the other robots moved since the check when they move.
 double CollisionWatch::used(const SimMachine& machine, vm::Micros t) {
   for (std::size_t m = 0; m < probe_.size(); ++m) probe_[m] = machine.positionAt(m, t);
-  return bounds_.used(probe_);
+  return bounds_.used(probe_, othersMove_ ? others_->travel(checkAt_, t) : 0.0);
 }
 
 // The motors `k`/`steps` of the way from `from` to `to`, each rounded
@@ -180,7 +194,7 @@ void CollisionWatch::partWay(std::span<const std::int32_t> from, std::span<const
     probe_[m] = static_cast<std::int32_t>(from[m] + (static_cast<std::int64_t>(to[m]) - from[m]) * k / steps);
 }
 
-SweepVerdict CollisionWatch::advance(const SimMachine& machine, const workcell::CollisionQuery& query,
+SweepVerdict CollisionWatch::advance(const SimMachine& machine, const World& world, const workcell::CollisionQuery& query,
                                      std::span<const std::int32_t> before, std::span<const std::int32_t> after,
                                      vm::Micros start, vm::Micros end) {
   std::optional<double> carried;
@@ -191,6 +205,7 @@ SweepVerdict CollisionWatch::advance(const SimMachine& machine, const workcell::
     carried = reach;
   }
   bounds_.startMove(carried);
+  bounds_.othersMove(0);
   at_.assign(before.begin(), before.end());
   probe_.assign(before.begin(), before.end());
   next_.assign(before.begin(), before.end());
@@ -199,9 +214,11 @@ SweepVerdict CollisionWatch::advance(const SimMachine& machine, const workcell::
   // than a count in one microsecond (a speed over 1,000,000 counts a
   // second) and that microsecond goes farther than the limits allow, the
   // checks step through it by counts, from the motors at t towards their
-  // positions at t + 1 (`between`: the last check lies on that way).
+  // positions at t + 1 (`between`: the last check lies on that way), the
+  // other robots where they are at t.
   bool between = false;
   while (true) {
+    if (othersMove_ && !between) othersAt(world, t, end);
     ++checks_;
     bounds_.setCheck(at_, after);
     if (const std::optional<workcell::Contact> c = data_.findContactOrClearance(at_, query, bounds_, clearance_))

@@ -20,13 +20,13 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "model/workcell/collision_model.h"
+#include "runtime/sim/moving_parts.h"
 #include "runtime/sim/sim_machine.h"
 #include "runtime/sim/sweep_memo.h"
 #include "runtime/sim/sweep_motion.h"
@@ -74,15 +74,15 @@ class CollisionWatch {
                               std::span<const std::int32_t> after, vm::Micros start, vm::Micros end,
                               std::span<const std::int32_t> lineFrom = {}, std::span<const std::int32_t> lineTo = {});
 
-  /// Where parts that are not the world's stand at time t: the objects of
-  /// the watch's cell past the world's (a cell run's other robots,
-  /// runtime/run/robot_obstacles.h), written into the span.
-  using OthersPoses = std::function<void(vm::Micros, std::span<Eigen::Isometry3d>)>;
   /// The watch's cell is the world's with parts appended from
-  /// `worldObjects` on, posed by `poses`: each move is checked with them
-  /// where they stand at its start, then (when one moved) at its end.
+  /// `worldObjects` on, which `others` poses and moves (a cell run's other
+  /// robots; it must outlive the watch). While none of them moves during a
+  /// move, they stand where they are; while one does, each check poses
+  /// them (and the parts they carry) at its time, and the next check comes
+  /// before the moving part and they together could close the gap between
+  /// them (kSweepStep where it is less, down to one microsecond of theirs).
   /// `label` names the moving robot in messages ("link 4 (wrist) of robot 'left'").
-  void alsoAvoid(std::size_t worldObjects, OthersPoses poses, std::string label);
+  void alsoAvoid(std::size_t worldObjects, MovingParts& others, std::string label);
 
   /// The moves checked from now on are instruction `instruction`'s (the
   /// run says so before each step): the collisions they find carry it.
@@ -121,9 +121,10 @@ class CollisionWatch {
   static constexpr double kEndsInBy = workcell::kSweepStep;
 
  private:
-  SweepVerdict advance(const SimMachine& machine, const workcell::CollisionQuery& query,
+  SweepVerdict advance(const SimMachine& machine, const World& world, const workcell::CollisionQuery& query,
                        std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
                        vm::Micros end);
+  void othersAt(const World& world, vm::Micros t, vm::Micros end);
   const CollisionEvent* sweepPosed(const SimMachine& machine, const World& world, std::span<const std::int32_t> before,
                                    std::span<const std::int32_t> after, vm::Micros start, vm::Micros end,
                                    std::span<const std::int32_t> lineFrom, std::span<const std::int32_t> lineTo);
@@ -148,9 +149,12 @@ class CollisionWatch {
   std::vector<std::uint64_t> key_;         // scratch: this move's key
   std::vector<Eigen::Isometry3d> poses_;   // scratch: every object's resting pose
   std::size_t worldObjects_ = 0;           // poses_ past these are others_'
-  OthersPoses others_;
+  MovingParts* others_ = nullptr;
   std::string label_;                      // the moving robot's, in a cell of several
   vm::Micros othersAt_ = 0;                // the time others_ poses them at
+  bool othersMove_ = false;                // one of them moves during the move checked
+  vm::Micros checkAt_ = 0;                 // the time of the last check, while they move
+  std::vector<std::pair<std::size_t, std::size_t>> carried_;  // scratch: (object, hand) other hands carry
   std::vector<std::int32_t> at_, probe_;   // scratch: motors at the last check, at a time tried
   std::vector<std::int32_t> next_;         // scratch: motors at the microsecond after the last check's
   std::uint64_t checks_ = 0, moves_ = 0, remembered_ = 0;

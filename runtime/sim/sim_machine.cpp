@@ -155,6 +155,23 @@ std::int32_t SimMachine::positionAt(std::size_t motor, Micros t) const {
   return runtime::positionAt(segments_[motor], motors_[motor], t);
 }
 
+std::int64_t SimMachine::coveredBetween(std::size_t motor, Micros t0, Micros t1) const {
+  if (motor >= segments_.size()) return 0;
+  std::int64_t covered = 0;
+  Micros from = t0;
+  std::int32_t at = positionAt(motor, t0);
+  const std::size_t n = segments_.size();
+  for (std::size_t k = 1; k < path_.size() / n; ++k) {
+    const Micros start = path_[k * n + motor].start;
+    if (start <= from) continue;
+    if (start >= t1) break;
+    const std::int32_t there = positionAt(motor, start);
+    covered += std::abs(std::int64_t{there} - at);
+    from = start, at = there;
+  }
+  return covered + std::abs(std::int64_t{positionAt(motor, t1)} - at);
+}
+
 Status SimMachine::hardHome() { return moveTo(home_); }
 
 Status SimMachine::reset() {

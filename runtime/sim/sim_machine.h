@@ -124,6 +124,10 @@ class SimMachine final : public vm::Machine {
   /// answers its start (older moves are not kept); 0 for a motor index out
   /// of range.
   std::int32_t positionAt(std::size_t motor, vm::Micros t) const;
+  /// Encoder counts `motor` covers from t0 to t1 (t0 <= t1) as positionAt
+  /// has it: each knot of a line moves one way, so the counts between the
+  /// knots' starts, added up (a motor may turn back from knot to knot).
+  std::int64_t coveredBetween(std::size_t motor, vm::Micros t0, vm::Micros t1) const;
 
   CameraTriple windowShift() const { return windowShift_; }
   CameraTriple viewRotation() const { return viewRotation_; }

@@ -116,7 +116,7 @@ void MotionBounds::face(std::size_t p, const Eigen::Vector3d& n, std::size_t fro
 
 double MotionBounds::along(std::size_t part, const Eigen::Vector3d& normal, std::size_t from) {
   face(part, normal, from, scratch_.data());
-  return partTravel(part, from, scratch_.data());
+  return partTravel(part, from, scratch_.data()) + others(part, from);
 }
 
 // From the part's frame down to `from`: each joint moves the part by its
@@ -146,7 +146,7 @@ bool MotionBounds::limit(std::span<const workcell::PartClearance> clearance) {
     if (need_[p] <= 0) continue;
     const workcell::PartClearance& c = clearance[p];
     double anyWay = std::numeric_limits<double>::infinity();
-    if (c.elsewhere - kGapMargin < need_[p])
+    if (c.elsewhere - kGapMargin < need_[p] + others(p, 0))
       anyWay = c.elsewhere >= workcell::kSweepStep ? c.elsewhere - kGapMargin : workcell::kSweepStep;
     for (std::size_t k = 0; k < c.count; ++k) {
       const workcell::Gap& gap = c.gaps[k];
@@ -163,12 +163,13 @@ bool MotionBounds::limit(std::span<const workcell::PartClearance> clearance) {
   return !limits_.empty();
 }
 
-double MotionBounds::used(std::span<const std::int32_t> to) {
+double MotionBounds::used(std::span<const std::int32_t> to, double othersMoved) {
   jointTravel(to);
   double worst = 0;
   for (const Limit& l : limits_) {
     const double* facing = l.facing == kAnyWay ? nullptr : &facing_[l.facing];
-    worst = std::max(worst, partTravel(l.part, l.from, facing) / l.allowed);
+    const double others = l.from == 0 ? othersMoved : 0.0;
+    worst = std::max(worst, (partTravel(l.part, l.from, facing) + others) / l.allowed);
   }
   return worst;
 }

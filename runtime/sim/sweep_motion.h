@@ -40,9 +40,13 @@ class MotionBounds final : public workcell::SweepMotion {
   /// A check with the motors at `at`; the move ends with them at `end`
   /// (both must stay valid until the next check).
   void setCheck(std::span<const std::int32_t> at, std::span<const std::int32_t> end);
+  /// What the gaps to the world are to (another robot's parts) may move
+  /// this far by the move's end (from this check on): a moving part's gap
+  /// to them closes by their travel too. Gaps to the arm's own parts do not.
+  void othersMove(double toEnd) { othersToEnd_ = toEnd; }
 
   void posed(const workcell::CollisionData& data) override;
-  double anyWay(std::size_t part) override { return need_[part]; }
+  double anyWay(std::size_t part) override { return need_[part] + others(part, 0); }
   double along(std::size_t part, const Eigen::Vector3d& normal, std::size_t from) override;
 
   /// The limits this check's gaps put on each part until the next check:
@@ -52,7 +56,7 @@ class MotionBounds final : public workcell::SweepMotion {
   bool limit(std::span<const workcell::PartClearance> clearance);
   /// The largest share of its allowance any limit has used with the
   /// motors at `to` (at most 1: within every limit).
-  double used(std::span<const std::int32_t> to);
+  double used(std::span<const std::int32_t> to, double othersMoved = 0);
 
  private:
   struct Limit {
@@ -66,6 +70,10 @@ class MotionBounds final : public workcell::SweepMotion {
   // How far part p moves relative to frame `from`, along the direction
   // whose facings (per joint) are given, or in any direction (null).
   double partTravel(std::size_t p, std::size_t from, const double* facing) const;
+  // What others' travel adds to part p's travel towards the world
+  // (`from` 0): nothing for a part that does not move (docs/models.md:
+  // the other's own check has it where it stands).
+  double others(std::size_t p, std::size_t from) const { return from == 0 && need_[p] > 0 ? othersToEnd_ : 0.0; }
   // The facings of direction n for part p's joints from `from` on.
   void face(std::size_t p, const Eigen::Vector3d& n, std::size_t from, double* out) const;
 
@@ -84,6 +92,7 @@ class MotionBounds final : public workcell::SweepMotion {
   // far joint i's turn can tilt axis j (tilt_, joints × (joints + 1)).
   std::vector<double> skew_, lean_, tilt_;
   double gripperTurn_ = 0;        // counts the gripper motor covers
+  double othersToEnd_ = 0;        // othersMove()
   std::vector<double> facing_;    // the limits' facings, joints each
   std::vector<double> scratch_;   // one direction's facings
   std::vector<Limit> limits_;

@@ -251,7 +251,10 @@ TEST_CASE("cell run: a robot that moved out of the way is no obstacle there", "[
   const auto r = rs::testing::runCli({"run", "--cell", dir.file("c.rsd")});
   INFO(r.err);
   CHECK(r.code == 0);
-  // Without waiting for it, right reaches in while left is still there.
+  // Without waiting for it, right reaches in while left is still there
+  // (left waits 3 s before it turns; right's reach takes 2 s): right's
+  // check poses left where it is at each moment, here at home.
+  dir.write("l.rsp", "        DELAY 3\n        MOVE 900 0 0 0 0 0\n        OUTSIG 1 ON\n        END\n");
   dir.write("r.rsp", "        MOVE 0 600 0 0 0 0\n        END\n");
   const auto early = rs::testing::runCli({"run", "--cell", dir.file("c.rsd")});
   CHECK(early.code == 1);
@@ -440,4 +443,45 @@ TEST_CASE("cell run: --profile gives each robot's profile and its share of the c
   CHECK(text.out.find("profile of robot taker (") != std::string::npos);
   CHECK(text.out.find("share of the cell's cycle (14.486 s): ") != std::string::npos);
   CHECK(text.out.find("ended 34.3 %") != std::string::npos);  // 4.974 / 14.486
+}
+
+// Two XR-4s 400 apart, both placed ROTATE Y -90 so that at home each arm
+// points along +z; left turns its waist +175 degrees (through +x, towards
+// right), right -175 (through -x, towards left), both from time 0 at 300
+// counts (30 degrees) a second: 5.833 s each. Neither the start poses
+// (both along +z, 400 apart) nor the end ones (both near -z, the tips at
+// x = 20.75 and 379.25) overlap; the check at each move's start and end
+// saw nothing. Worked out by hand: at waist angle phi a design point
+// (X, Z) of left is at world x = X sin(phi) - Z cos(phi); right is left's
+// mirror image in the plane x = 200, so they first touch when left's
+// farthest point reaches x = 200: the palm's corner (263.1, -36), at
+// radius 265.55 and 7.79 degrees off the arm, so at phi = asin(200 /
+// 265.55) - 7.79 = 41.07 degrees, t = 41.07 / 30 = 1.369 s. The check
+// may see it up to a sweep step (1 unit, both palms closing at 91 units a
+// second each) later: within [1.369, 1.380]. Apart by 534, the palms'
+// corners pass 534 - 2 x 265.55 = 2.9 from each other: no collision.
+TEST_CASE("cell run: two robots whose arms cross within one move each collide, at the time worked out by hand",
+          "[cell-run][robots][collision]") {
+  rs::testing::TempDir dir;
+  const auto cellAt = [&](int x) {
+    dir.write("c.rsd", "WORKCELL cross\n  ROBOT rhino-xr4 AT 0 750 0 ROTATE Y -90 AS left PROGRAM l.rsp\n"
+                       "  ROBOT rhino-xr4 AT " + std::to_string(x) + " 750 0 ROTATE Y -90 AS right PROGRAM r.rsp\nEND\n");
+  };
+  dir.write("l.rsp", "        MOVE 1750 0 0 0 0 0\n        END\n");
+  dir.write("r.rsp", "        MOVE -1750 0 0 0 0 0\n        END\n");
+  cellAt(400);
+  const auto cross = rs::testing::runCli({"run", "--cell", dir.file("c.rsd")});
+  INFO(cross.err);
+  CHECK(cross.code == 1);
+  const std::string::size_type at = cross.err.find("collision at ");
+  REQUIRE(at != std::string::npos);
+  const double seconds = std::stod(cross.err.substr(at + 13));
+  CHECK(seconds >= 1.369);
+  CHECK(seconds <= 1.380);
+  CHECK(cross.err.find("(xr4_palm) of robot 'left' hits the gripper's base (xr4_palm) of robot 'right'") !=
+        std::string::npos);
+  cellAt(534);
+  const auto miss = rs::testing::runCli({"run", "--cell", dir.file("c.rsd")});
+  INFO(miss.err);
+  CHECK(miss.code == 0);
 }

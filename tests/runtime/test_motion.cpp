@@ -210,3 +210,23 @@ TEST_CASE("a lock-step move: every motor at a constant rate, all arriving togeth
     CHECK(sim.segment(0).end == sim.segment(1).end);
   }
 }
+
+TEST_CASE("counts covered between two times add up the knots of a line that turns back", "[motion][straight]") {
+  // One motor at 1000 counts a second: the line's first knot goes 0 -> 10
+  // in 10 ms, the second back to 0 in the next 10 ms. Between 0 and 20 ms
+  // it covers 20 counts though it ends where it began; from 5 to 15 ms,
+  // 5 out and 5 back; within the first knot, what it went.
+  const MotorSpec fast{'A', JointKind::Revolute, 1.0, -100, 100, 1000};
+  rs::runtime::SimMachine sim({fast}, {});
+  sim.beginPath();
+  REQUIRE(sim.moveLockStep(std::vector<std::int32_t>{10}, 0));
+  REQUIRE(sim.moveLockStep(std::vector<std::int32_t>{0}, 0));
+  CHECK(sim.now() == 20'000);
+  CHECK(sim.coveredBetween(0, 0, 20'000) == 20);
+  CHECK(sim.coveredBetween(0, 5'000, 15'000) == 10);
+  CHECK(sim.coveredBetween(0, 2'000, 7'000) == 5);
+  CHECK(sim.coveredBetween(0, 20'000, 30'000) == 0);
+  // A plain move: the counts between its positions.
+  REQUIRE(sim.moveTo(std::vector<std::int32_t>{-50}));
+  CHECK(sim.coveredBetween(0, 20'000, 70'000) == 50);
+}
