@@ -187,3 +187,60 @@ TEST_CASE("dap cell: gotoTime and reverseContinue put the whole cell back", "[de
   CHECK(stops[4].at("allThreadsStopped") == true);
   CHECK(valueOf(responseTo(m, 11), "time") == "4.250 s");  // right's clock: the cell's one
 }
+
+// A cell of several robots with devices (tests/debug/programs/belt_pair.rsd,
+// worked out at the top of tests/debug/test_debug_cell_devices.cpp): the
+// beam's ON edge at 1.5 s stops the cell with left's second MOVE at 2 s,
+// as a function breakpoint; left's TURNS changes with its ADD at 4.25 s, a
+// data breakpoint; reverseContinue goes back to the beam's stop, where
+// the Devices scope shows what it showed going forwards.
+TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devices scope", "[debug][dap][cell-debug]") {
+  const std::string cell = rendertest::kSourceDir + "/tests/debug/programs/belt_pair.rsd";
+  const std::vector<Json> m = serveRequests({
+      request("initialize"),                                                                           // 1
+      request("launch", {{"cell", cell},
+                         {"programs", {{"left", kTwo + "left.rsp"}, {"right", kTwo + "right.rsp"}}}}),  // 2
+      request("setFunctionBreakpoints",
+              {{"breakpoints", {{{"name", "sensor eye on"}}, {{"name", "again"}}, {{"name", "sensor nope"}}}}}),  // 3
+      request("dataBreakpointInfo", {{"name", "TURNS"}, {"variablesReference", 1001}}),                // 4
+      request("dataBreakpointInfo", {{"name", "time"}, {"variablesReference", 1004}}),                 // 5
+      request("setDataBreakpoints", {{"breakpoints", {{{"dataId", "1:TURNS"}}, {{"dataId", "9:TURNS"}}}}}),  // 6
+      request("configurationDone"),                                                                    // 7
+      request("scopes", {{"frameId", 1000}}),                                                          // 8
+      request("variables", {{"variablesReference", 1005}}),                                            // 9
+      request("continue", {{"threadId", 1}}),                                                          // 10
+      request("stepOut", {{"threadId", 1}}),                                                           // 11
+      request("reverseContinue", {{"threadId", 1}}),                                                   // 12
+      request("variables", {{"variablesReference", 2005}}),                                            // 13
+      request("disconnect"),                                                                           // 14
+  });
+  REQUIRE(responseTo(m, 2).at("success") == true);
+  const Json& fb = responseTo(m, 3).at("body").at("breakpoints");
+  REQUIRE(fb.size() == 3);
+  CHECK(fb[0].at("verified") == true);
+  CHECK(fb[1].at("verified") == false);  // a label: one robot's, a line breakpoint says which
+  CHECK(fb[2].at("verified") == false);
+  CHECK(fb[2].at("message").get<std::string>().find("its sensors are eye") != std::string::npos);
+  CHECK(responseTo(m, 4).at("body").at("dataId") == "1:TURNS");
+  CHECK(responseTo(m, 5).at("body").at("dataId").is_null());  // the clock cannot be watched
+  const Json& db = responseTo(m, 6).at("body").at("breakpoints");
+  REQUIRE(db.size() == 2);
+  CHECK(db[0].at("verified") == true);
+  CHECK(db[1].at("verified") == false);  // no thread 9
+  const std::vector<Json> stops = stoppedEvents(m);
+  REQUIRE(stops.size() == 3);
+  CHECK(stops[0].at("reason") == "function breakpoint");
+  CHECK(stops[0].at("threadId") == 1);
+  CHECK(stops[0].at("description") == "breakpoint 1 (sensor eye ON): sensor eye ON at 1.500 s");
+  const Json& scopes = responseTo(m, 8).at("body").at("scopes");
+  REQUIRE(scopes.size() == 5);
+  CHECK(scopes[4].at("name") == "Devices");
+  CHECK(valueOf(responseTo(m, 9), "sensor eye") == "OFF, turned ON 1 time");
+  CHECK(valueOf(responseTo(m, 9), "block (object 2)") == "at (-540.000, 500.000, 2870.000), riding belt");
+  CHECK(stops[1].at("reason") == "data breakpoint");
+  CHECK(stops[1].at("description") == "watch 2: TURNS of left changed from 0 to 1");
+  CHECK(responseTo(m, 11).at("success") == false);  // left is in no subroutine
+  CHECK(stops[2].at("reason") == "function breakpoint");
+  // Right's view of the same devices, back at 2 s.
+  CHECK(valueOf(responseTo(m, 13), "block (object 2)") == "at (-540.000, 500.000, 2870.000), riding belt");
+}

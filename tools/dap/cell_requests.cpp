@@ -15,17 +15,14 @@
 #include "base/text.h"
 #include "launch/cell_programs.h"
 #include "tools/dap/adapter.h"
+#include "tools/dap/scopes.h"
+#include "tools/debug/device_points.h"
 #include "vm/disasm.h"
 #include "vm/io_lines.h"
 
 namespace rs::dap {
 
 namespace {
-
-// A frame id and a scope's variablesReference carry their thread: thread
-// t's frame d is t * kPerThread + d, its scope s t * kPerThread + s.
-constexpr std::int64_t kPerThread = 1000;
-enum CellScope : std::int64_t { kCellVariables = 1, kCellMotors, kCellIo, kCellClock };
 
 std::string programPath(const std::string& file) {
   std::error_code ec;
@@ -109,6 +106,9 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
     return Json{{"threads", threads}};
   }
   if (command == "setBreakpoints") return cellSetBreakpoints(args);
+  if (command == "setFunctionBreakpoints") return cellSetFunctionBreakpoints(args);
+  if (command == "dataBreakpointInfo") return cellDataBreakpointInfo(args);
+  if (command == "setDataBreakpoints") return cellSetDataBreakpoints(args);
   if (command == "setExceptionBreakpoints") {
     stopOnDeadlock_ = stopOnRuntimeError_ = stopOnLimit_ = false;
     Json out = Json::array();
@@ -141,10 +141,9 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
     return Json(nullptr);
   }
   if (command == "pause") return Json(nullptr);  // a stopped cell stays stopped
-  const bool moves = command == "continue" || command == "next" || command == "stepIn" || command == "stepBack" ||
-                     command == "reverseContinue" || command == "gotoTime";
-  if (command == "setVariable" || command == "stepOut" || command == "setFunctionBreakpoints" ||
-      command == "setDataBreakpoints" || command == "dataBreakpointInfo")
+  const bool moves = command == "continue" || command == "next" || command == "stepIn" || command == "stepOut" ||
+                     command == "stepBack" || command == "reverseContinue" || command == "gotoTime";
+  if (command == "setVariable")
     return Error{fmt::format("{} is not offered on a cell of several robots yet: debug one robot's program "
                              "(program, cell and its robot) for it", command)};
   if (!moves) return Error{fmt::format("unknown request '{}'", base::safeText(command.substr(0, 60)))};
@@ -164,9 +163,9 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
     };
     return Json(nullptr);
   }
-  if (command == "next" || command == "stepIn") {
+  if (command == "next" || command == "stepIn" || command == "stepOut") {
     cell_->select(*thread);
-    auto r = command == "next" ? cell_->next() : cell_->step();
+    auto r = command == "next" ? cell_->next() : command == "stepOut" ? cell_->finish() : cell_->step();
     if (!r) return Error{r.failure().message};
     pending_ = [this, stop = *r] { reportCellStop(stop); };  // the step has run: its response still goes first
     return Json(nullptr);
@@ -174,7 +173,7 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
   cell_->select(*thread);
   pending_ = [this, command] {
     if (command == "continue") reportCellStop(cell_->resume());
-    else if (command == "stepBack") reportCellStop(cell_->reverseStep());
+    else if (command == "stepBack") reportCellStop(cell_->reverseNext());  // over a GOSUB, as the one robot's
     else reportCellStop(cell_->reverseContinue());
   };
   if (command == "continue") return Json{{"allThreadsContinued", true}};
@@ -204,6 +203,15 @@ Adapter::Reply Adapter::cellSetBreakpoints(const Json& args) {
       out.push_back(result);
       continue;
     }
+    std::optional<debug::Condition> condition;
+    std::optional<debug::HitCondition> hits;
+    if (std::string problem = qualifiers(b, *cell_->cell().robot(p).spec().image, condition, hits); !problem.empty()) {
+      cell_->remove(*made);
+      result["message"] = std::move(problem);
+      out.push_back(result);
+      continue;
+    }
+    cell_->qualify(*made, condition, hits);
     cellBreakpoints_[p].push_back(*made);
     out.push_back({{"id", *made}, {"verified", true},
                    {"line", clientLine(cell_->lineWithCode(p, static_cast<std::uint32_t>(line)))}});
@@ -230,7 +238,7 @@ Adapter::Reply Adapter::cellStackTrace(const Json& args) {
   const auto column = [&](std::uint32_t instruction) {
     return clientColumn(image.columns.empty() ? 1 : image.columns[instruction]);
   };
-  const std::int64_t base = static_cast<std::int64_t>(p + 1) * kPerThread;
+  const std::int64_t base = static_cast<std::int64_t>(p + 1) * kCellPerThread;
   Json frames = Json::array();
   frames.push_back({{"id", base}, {"name", name(v.line, v.instruction)}, {"source", source},
                     {"line", clientLine(v.line)}, {"column", column(v.instruction)}});
@@ -243,42 +251,50 @@ Adapter::Reply Adapter::cellStackTrace(const Json& args) {
 
 Adapter::Reply Adapter::cellScopes(const Json& args) {
   const std::int64_t frame = args.at("frameId").get<std::int64_t>();
-  const std::int64_t thread = frame / kPerThread;
+  const std::int64_t thread = frame / kCellPerThread;
   if (thread < 1 || thread > static_cast<std::int64_t>(cell_->size())) return Error{fmt::format("no frame {}", frame)};
   const runtime::RunView v = cell_->view(static_cast<std::size_t>(thread - 1));
   const auto scope = [&](std::string_view name, std::int64_t kind, std::size_t count) {
-    return Json{{"name", name}, {"variablesReference", thread * kPerThread + kind}, {"namedVariables", count}, {"expensive", false}};
+    return Json{{"name", name}, {"variablesReference", thread * kCellPerThread + kind}, {"namedVariables", count}, {"expensive", false}};
   };
-  return Json{{"scopes", Json::array({scope("Variables", kCellVariables, v.variables.size()),
-                                      scope("Motors", kCellMotors, v.motors.size() + (v.tcp ? 1 : 0)),
-                                      scope("Inputs/Outputs", kCellIo, 2 * vm::kIoCount), scope("Clock", kCellClock, 2)})}};
+  Json scopes = Json::array({scope("Variables", kCellVariablesScope, v.variables.size()),
+                             scope("Motors", kCellMotorsScope, v.motors.size() + (v.tcp ? 1 : 0)),
+                             scope("Inputs/Outputs", kCellIoScope, 2 * vm::kIoCount), scope("Clock", kCellClockScope, 2)});
+  const runtime::Run& run = cell_->cell().robot(static_cast<std::size_t>(thread - 1));
+  if (const std::vector<debug::DeviceRow> rows = debug::deviceRows(run, v); !rows.empty())
+    scopes.push_back(scope("Devices", kCellDevicesScope, rows.size()));
+  return Json{{"scopes", scopes}};
 }
 
 Adapter::Reply Adapter::cellVariables(const Json& args) {
   const std::int64_t ref = args.at("variablesReference").get<std::int64_t>();
-  const std::int64_t thread = ref / kPerThread;
+  const std::int64_t thread = ref / kCellPerThread;
   if (thread < 1 || thread > static_cast<std::int64_t>(cell_->size()))
     return Error{fmt::format("no variables with reference {}", ref)};
   const auto p = static_cast<std::size_t>(thread - 1);
   const runtime::RunView v = cell_->view(p);
   const vm::Image& image = *cell_->cell().robot(p).spec().image;
   Json out = Json::array();
-  switch (ref % kPerThread) {
-    case kCellVariables:
+  switch (ref % kCellPerThread) {
+    case kCellVariablesScope:
       for (const auto& [name, value] : v.variables) out.push_back(cellVariable(base::safeText(name), std::to_string(value)));
       break;
-    case kCellMotors:
+    case kCellMotorsScope:
       for (std::size_t m = 0; m < v.motors.size(); ++m)
         out.push_back(cellVariable(std::string(1, image.motors[m].letter), std::to_string(v.motors[m])));
       if (v.tcp) out.push_back(cellVariable("TCP", fmt::format("({:.3f}, {:.3f}, {:.3f})", (*v.tcp)[0], (*v.tcp)[1], (*v.tcp)[2])));
       break;
-    case kCellIo:
+    case kCellIoScope:
       for (int i = 1; i <= vm::kIoCount; ++i) out.push_back(cellVariable(fmt::format("in {}", i), vm::lineIsOn(v.inputs, i) ? "on" : "off"));
       for (int i = 1; i <= vm::kIoCount; ++i) out.push_back(cellVariable(fmt::format("out {}", i), vm::lineIsOn(v.outputs, i) ? "on" : "off"));
       break;
-    case kCellClock:
+    case kCellClockScope:
       out.push_back(cellVariable("time", fmt::format("{} s", base::formatSeconds(v.clock))));
       out.push_back(cellVariable("steps", std::to_string(v.steps)));
+      break;
+    case kCellDevicesScope:
+      for (debug::DeviceRow& row : debug::deviceRows(cell_->cell().robot(p), v))
+        out.push_back(cellVariable(std::move(row.name), std::move(row.value)));
       break;
     default:
       return Error{fmt::format("no variables with reference {}", ref)};
@@ -290,7 +306,7 @@ Adapter::Reply Adapter::cellVariables(const Json& args) {
 Adapter::Reply Adapter::cellEvaluate(const Json& args) {
   std::size_t p = cell_->current();
   if (args.contains("frameId")) {
-    const std::int64_t thread = args.at("frameId").get<std::int64_t>() / kPerThread;
+    const std::int64_t thread = args.at("frameId").get<std::int64_t>() / kCellPerThread;
     if (thread < 1 || thread > static_cast<std::int64_t>(cell_->size())) return Error{"no such frame"};
     p = static_cast<std::size_t>(thread - 1);
   }
@@ -312,6 +328,16 @@ void Adapter::reportCellStop(const debug::CellStop& stop) {
     if (stop.finished()) body["text"] = stop.message;
     event("stopped", std::move(body));
   };
+  // A device's breakpoint is the client's function breakpoint (a line's too: the line's reason).
+  const bool atLine = std::any_of(cellBreakpoints_.begin(), cellBreakpoints_.end(), [&stop](const std::vector<int>& ids) {
+    return std::any_of(ids.begin(), ids.end(), [&stop](int id) {
+      return std::find(stop.breakpoints.begin(), stop.breakpoints.end(), id) != stop.breakpoints.end();
+    });
+  });
+  const bool atDevice = std::any_of(functionBreakpoints_.begin(), functionBreakpoints_.end(), [&stop](int id) {
+    return std::find(stop.breakpoints.begin(), stop.breakpoints.end(), id) != stop.breakpoints.end();
+  });
+  if (!stop.finished() && atDevice && !atLine) return stopped("function breakpoint");
   if (!stop.finished()) return stopped(vm::adapterReason(stop.reason));
   if (stop.reason == StopReason::End) {
     output("console", stop.message + "\n");

@@ -28,4 +28,18 @@ std::string Breakpoint::describe() const {
   return text;
 }
 
+std::string stopText(const std::vector<int>& ids, const std::function<std::optional<std::string>(int)>& describe,
+                     const std::vector<std::string>& notes, const std::vector<std::string>& happened) {
+  std::string text;
+  for (std::size_t i = 0, w = 0; i < ids.size(); ++i) {
+    std::string part;
+    if (const std::optional<std::string> d = describe(ids[i])) part = fmt::format("breakpoint {} ({})", ids[i], *d);
+    else if (w < notes.size()) part = fmt::format("watch {}: {}", ids[i], notes[w++]);
+    else continue;
+    text += (text.empty() ? "" : ", ") + part;
+  }
+  for (std::size_t h = 0; h < happened.size(); ++h) text += (h == 0 ? ": " : ", ") + happened[h];
+  return text;
+}
+
 }  // namespace rs::debug

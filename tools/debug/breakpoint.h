@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,5 +46,13 @@ struct Watch {
   int id = 0;
   Expression what;
 };
+
+/// What stopped a run, one line: "breakpoint 1 (line 6), watch 2: N changed
+/// from 0 to 1: sensor eye ON at 1.100 s". `ids`: the breakpoints' and
+/// watches' ids, in the order they were found; `describe(id)`: a
+/// breakpoint's description (nullopt: a watch, whose `notes` say in turn
+/// what changed); `happened`: what the devices did, after them.
+std::string stopText(const std::vector<int>& ids, const std::function<std::optional<std::string>(int)>& describe,
+                     const std::vector<std::string>& notes, const std::vector<std::string>& happened);
 
 }  // namespace rs::debug

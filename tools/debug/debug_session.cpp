@@ -182,16 +182,12 @@ void DebugSession::removeAll() {
 
 // --- where the run stops ------------------------------------------------------
 
-namespace {
-
-// What the devices did that stopped the run, after the breakpoints named.
-std::string happenedText(const std::vector<std::string>& happened) {
-  std::string text;
-  for (const std::string& h : happened) text += (text.empty() ? ": " : ", ") + h;
-  return text;
+std::function<std::optional<std::string>(int)> DebugSession::describer() {
+  return [this](int id) -> std::optional<std::string> {
+    if (const Breakpoint* b = find(id)) return b->describe();
+    return std::nullopt;
+  };
 }
-
-}  // namespace
 
 // Does a breakpoint or watch stop the run at this moment (`before` holds
 // the moment before)? `counting`: going forwards, so hits count and hit
@@ -401,13 +397,7 @@ Stop DebugSession::forward(const Target& target) {
     const bool onlyWatches = std::none_of(ids.begin(), ids.end(), [this](int id) { return find(id) != nullptr; });
     s.reason = onlyWatches ? StopReason::Watch : StopReason::Breakpoint;
     s.breakpoints = ids;
-    std::vector<std::string> parts;
-    for (int id : ids)
-      if (const Breakpoint* b = find(id)) parts.push_back(fmt::format("breakpoint {} ({})", id, b->describe()));
-    for (std::size_t i = 0, w = 0; i < ids.size(); ++i)
-      if (!find(ids[i]) && w < notes.size()) parts.push_back(fmt::format("watch {}: {}", ids[i], notes[w++]));
-    for (const std::string& p : parts) s.message += (s.message.empty() ? "" : ", ") + p;
-    s.message += happenedText(happened);
+    s.message = stopText(ids, describer(), notes, happened);
     if (standAtCollision(ids)) s.message += ": " + collisionText();
   } else if (done || run_->interpreter().steps() >= target.steps) {
     s = {StopReason::Step, "step done", {}};
@@ -501,13 +491,7 @@ Stop DebugSession::reverseContinue() {
   const bool onlyWatches = std::none_of(foundIds.begin(), foundIds.end(), [this](int id) { return find(id) != nullptr; });
   s.reason = onlyWatches ? StopReason::Watch : StopReason::Breakpoint;
   s.breakpoints = foundIds;
-  for (std::size_t i = 0, w = 0; i < foundIds.size(); ++i) {
-    std::string part;
-    if (const Breakpoint* b = find(foundIds[i])) part = fmt::format("breakpoint {} ({})", foundIds[i], b->describe());
-    else if (w < foundNotes.size()) part = fmt::format("watch {}: {}", foundIds[i], foundNotes[w++]);
-    s.message += (s.message.empty() ? "" : ", ") + part;
-  }
-  s.message += happenedText(foundHappened);
+  s.message = stopText(foundIds, describer(), foundNotes, foundHappened);
   if (standAtCollision(foundIds)) s.message += ": " + collisionText();
   return stopped(std::move(s));
 }

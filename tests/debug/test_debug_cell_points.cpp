@@ -1,0 +1,98 @@
+// `debug --cell` on examples/two_robots/interlock.rsd: breakpoints at a
+// time and on a condition, conditions and hit counts, watches, finish and
+// reverse-next of the current robot, disasm. The robots' steps and times
+// are worked out by hand at the top of tests/debug/test_debug_cell.cpp:
+// right's MOVEs 2-3 and 3-4 s, its OUTSIG 1 ON at 4 (step 5), left's
+// WAITFOR ending at 4.25 (step 5), its ADD TURNS 1 (step 7) at 4.25;
+// right's second pass reaches line 6 at 6.25 (its tenth step), left's at
+// line 11 at 8.5 (right's second OUTSIG 1 ON at 8.25 plus the wire's 0.25).
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "tests/debug/cell_debug_util.h"
+#include "tests/debug/debug_test_util.h"
+
+namespace {
+
+using debugtest::afterCommand;
+
+rs::testing::CliResult debugInterlock(const std::string& commands) {
+  return debugtest::runCellDebugger(debugtest::kExamples + "two_robots/interlock.rsd", commands);
+}
+
+}  // namespace
+
+TEST_CASE("debug cell: break at a time, when a condition becomes true, and watches", "[debug][cell-debug]") {
+  const auto r = debugInterlock("break at 3\nthread right\nbreak when output 1 on\nthread left\nwatch TURNS\n"
+                                "info breakpoints\ncontinue\ncontinue\ncontinue\nreverse-continue\nwatch nope\n");
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  CHECK(afterCommand(r.out, "break when output 1 on") == "breakpoint 2: when out 1 = 1 on right\n");
+  CHECK(afterCommand(r.out, "watch TURNS") == "watch 3: TURNS of left (now 0)\n");
+  CHECK(afterCommand(r.out, "info breakpoints") == "id  what\n1   break at 3.000 s (reached 0 times)\n"
+                                                   "2   break when out 1 = 1 on right (reached 0 times)\n"
+                                                   "3   watch TURNS of left (now 0)\n");
+  // Right's first MOVE ends at 3 s exactly, which is not past 3: the step that passes it is its second MOVE, at 4.
+  CHECK(afterCommand(r.out, "continue") == "breakpoint 1 (at 3.000 s)\nright: line 8 @5, step 4, clock 4.000 s\n"
+                                           "    8 |         OUTSIG 1 ON             ; your turn\n");
+  CHECK(afterCommand(r.out, "continue", 2).starts_with("breakpoint 2 (when out 1 = 1 on right)\n"
+                                                       "right: line 9 @6, step 5, clock 4.000 s\n"));
+  CHECK(afterCommand(r.out, "continue", 3).starts_with("watch 3: TURNS of left changed from 0 to 1\n"
+                                                       "left: line 13 @8, step 7, clock 4.250 s\n"));
+  // Back: the last stop before 4.25 s is the condition's at 4 s.
+  CHECK(afterCommand(r.out, "reverse-continue").starts_with("breakpoint 2 (when out 1 = 1 on right)\n"
+                                                            "right: line 9 @6, step 5, clock 4.000 s\n"));
+  CHECK(afterCommand(r.out, "watch nope").starts_with("error: 'nope' is not a variable of the program"));
+}
+
+TEST_CASE("debug cell: if and hits on a cell's breakpoints", "[debug][cell-debug]") {
+  const auto r = debugInterlock("break right.rsp:6 hits 2\nbreak left.rsp:11 if TURNS = 1\ninfo breakpoints\n"
+                                "continue\ncontinue\nreverse-continue\ninfo breakpoints\nbreak 6 if nope\n");
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  CHECK(afterCommand(r.out, "info breakpoints") ==
+        "id  what\n1   break right.rsp line 6 hits >= 2 (robot right, reached 0 times)\n"
+        "2   break left.rsp line 11 if TURNS = 1 (robot left, reached 0 times)\n");
+  // right's first pass (2 s) is its first hit, left's first line 11 (4.25 s) has TURNS 0: right's second pass.
+  CHECK(afterCommand(r.out, "continue").starts_with("breakpoint 1 (right.rsp line 6 hits >= 2)\n"
+                                                    "right: line 6 @3, step 10, clock 6.250 s\n"));
+  CHECK(afterCommand(r.out, "continue", 2).starts_with("breakpoint 2 (left.rsp line 11 if TURNS = 1)\n"
+                                                       "left: line 11 @6, step 12, clock 8.500 s\n"));
+  // Going back, hit counts aside: right's line 6 at 6.25 s is the last before.
+  CHECK(afterCommand(r.out, "reverse-continue").starts_with("breakpoint 1 (right.rsp line 6 hits >= 2)\n"
+                                                            "right: line 6 @3, step 10, clock 6.250 s\n"));
+  CHECK(afterCommand(r.out, "info breakpoints", 2).find("(robot right, reached 2 times)") != std::string::npos);
+  CHECK(afterCommand(r.out, "break 6 if nope").starts_with("error: 'nope' is not a variable of the program"));
+}
+
+// left: SET N 0 (line 1), GOSUB sub (2), SET N 1 (3), END; sub: two 1 s
+// moves of motor F (lines 5, 6) and RETURN (7). right's DELAY 5 goes on
+// meanwhile. After two steps left is at the subroutine's first MOVE at 0 s;
+// one more is that move (1 s); finish runs the second and the RETURN: line
+// 3 at 2 s, step 5. reverse-next goes back over the GOSUB to line 2, after
+// the SET (step 1) at 0 s, and once more to the start.
+TEST_CASE("debug cell: finish and reverse-next of the current robot", "[debug][cell-debug]") {
+  rs::testing::TempDir dir;
+  const std::string cell = dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n"
+                                              "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\nEND\n");
+  dir.write("l.rsp", "        SET N 0\n        GOSUB sub\n        SET N 1\n        END\nsub:    MOVE 300 0 0 0 0 0\n"
+                     "        MOVE -300 0 0 0 0 0\n        RETURN\n");
+  dir.write("r.rsp", "        DELAY 5\n        END\n");
+  const auto r = debugtest::runCellDebugger(cell, "finish\nstep 2\nstep\nfinish\nreverse-next\nnext\nreverse-next\n"
+                                                  "reverse-next\nreverse-next\ndisasm\ndisasm @9\n");
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  CHECK(afterCommand(r.out, "finish") == "error: not in a subroutine: the call stack of left is empty\n");
+  CHECK(afterCommand(r.out, "finish", 2) == "left: line 3 @3, step 5, clock 2.000 s\n    3 |         SET N 1\n");
+  CHECK(afterCommand(r.out, "reverse-next") == "left: line 2 @2, step 1, clock 0.000 s\n    2 |         GOSUB sub\n");
+  CHECK(afterCommand(r.out, "next") == "left: line 3 @3, step 5, clock 2.000 s\n    3 |         SET N 1\n");
+  CHECK(afterCommand(r.out, "reverse-next", 2).starts_with("left: line 2 @2, step 1, clock 0.000 s\n"));
+  CHECK(afterCommand(r.out, "reverse-next", 3).starts_with("at the start of the run\nleft: line 1 @1, step 0"));
+  CHECK(afterCommand(r.out, "reverse-next", 4).starts_with("already at the start of the run\n"));
+  // left's seven instructions, the current one (@1) marked.
+  const std::string listing = afterCommand(r.out, "disasm");
+  CHECK(listing.starts_with("=>  0001     1            SET     N 0\n"));
+  CHECK(std::count(listing.begin(), listing.end(), '\n') == 7);
+  CHECK(afterCommand(r.out, "disasm @9") == "error: '@9': disasm takes @N, N from 1 to 7\n");
+}
