@@ -63,7 +63,7 @@ TEST_CASE("debug cell: if and hits on a cell's breakpoints", "[debug][cell-debug
   CHECK(afterCommand(r.out, "reverse-continue").starts_with("breakpoint 1 (right.rsp line 6 hits >= 2)\n"
                                                             "right: line 6 @3, step 10, clock 6.250 s\n"));
   CHECK(afterCommand(r.out, "info breakpoints", 2).find("(robot right, reached 2 times)") != std::string::npos);
-  CHECK(afterCommand(r.out, "break 6 if nope").starts_with("error: 'nope' is not a variable of the program"));
+  CHECK(afterCommand(r.out, "break 6 if nope").starts_with("error: 'nope': a condition is NAME OP VALUE"));
 }
 
 // left: SET N 0 (line 1), GOSUB sub (2), SET N 1 (3), END; sub: two 1 s

@@ -148,7 +148,10 @@ void CellConsole::breakCommand(std::string_view args) {
   if (!made) return error(made.failure().message);
   session_.qualify(*made, words->condition, words->hits);
   for (const CellBreakpoint& b : session_.breakpoints())
-    if (b.id == *made) out_ << fmt::format("breakpoint {}: {}{}\n", b.id, session_.describe(b), note);
+    if (b.id == *made)
+      out_ << fmt::format("breakpoint {}: {}{}{}\n", b.id, session_.describe(b),
+                          b.kind == Breakpoint::Kind::Line ? fmt::format(" (robot {})", base::safeText(session_.label(b.robot))) : "",
+                          note);
 }
 
 // LINE, FILE:LINE or ROBOT:LINE; `note` says when the line asked has no instruction.
