@@ -212,7 +212,9 @@ TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devic
       request("stepOut", {{"threadId", 1}}),                                                           // 11
       request("reverseContinue", {{"threadId", 1}}),                                                   // 12
       request("variables", {{"variablesReference", 2005}}),                                            // 13
-      request("disconnect"),                                                                           // 14
+      request("evaluate", {{"expression", "devices"}, {"frameId", 2000}}),                             // 14
+      request("evaluate", {{"expression", "objects"}, {"frameId", 2000}}),                             // 15
+      request("disconnect"),                                                                           // 16
   });
   REQUIRE(responseTo(m, 2).at("success") == true);
   const Json& fb = responseTo(m, 3).at("body").at("breakpoints");
@@ -243,4 +245,10 @@ TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devic
   CHECK(stops[2].at("reason") == "function breakpoint");
   // Right's view of the same devices, back at 2 s.
   CHECK(valueOf(responseTo(m, 13), "block (object 2)") == "at (-540.000, 500.000, 2870.000), riding belt");
+  // evaluate answers a whole scope as for one robot, with the thread's Devices scope to open (no Objects scope here).
+  const Json& devices = responseTo(m, 14).at("body");
+  CHECK(devices.at("result").get<std::string>().starts_with("sensor eye = OFF, turned ON 1 time, conveyor belt = "));
+  CHECK(devices.at("variablesReference") == 2005);
+  CHECK(responseTo(m, 15).at("body").at("result") == "1 conveyor, 2 block");
+  CHECK(responseTo(m, 15).at("body").at("variablesReference") == 0);
 }

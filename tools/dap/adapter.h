@@ -111,6 +111,14 @@ class Adapter {
   Reply cellScopes(const Json& args);
   Reply cellVariables(const Json& args);
   Reply cellEvaluate(const Json& args);
+  /// The variablesReference of each scope that evaluate answers a whole
+  /// scope with (0: the client has no such scope to open).
+  struct ScopeRefs {
+    std::int64_t variables = 0, motors = 0, io = 0, objects = 0, devices = 0;
+  };
+  /// What evaluate answers for `text` on `run` as `view` shows it (one
+  /// robot's, or one robot of a cell's).
+  static Reply evaluateIn(const runtime::Run& run, const runtime::RunView& view, std::string_view text, const ScopeRefs& refs);
   Reply cellSetFunctionBreakpoints(const Json& args);
   Reply cellDataBreakpointInfo(const Json& args);
   Reply cellSetDataBreakpoints(const Json& args);

@@ -310,14 +310,10 @@ Adapter::Reply Adapter::cellEvaluate(const Json& args) {
     if (thread < 1 || thread > static_cast<std::int64_t>(cell_->size())) return Error{"no such frame"};
     p = static_cast<std::size_t>(thread - 1);
   }
-  const runtime::RunView v = cell_->view(p);
-  auto e = debug::parseExpression(*cell_->cell().robot(p).spec().image, debug::ioWords(args.at("expression").get<std::string>()));
-  if (!e) return Error{e.failure().message};
-  const std::int64_t value = debug::valueIn(v, *e);
-  std::string shown = std::to_string(value);
-  if (e->kind == debug::Expression::Kind::Input || e->kind == debug::Expression::Kind::Output) shown = value ? "on" : "off";
-  if (e->kind == debug::Expression::Kind::Clock) shown = fmt::format("{} s", base::formatSeconds(value));
-  return Json{{"result", shown}, {"variablesReference", 0}};
+  const std::int64_t base = static_cast<std::int64_t>(p + 1) * kCellPerThread;
+  const std::string asked = args.at("expression").get<std::string>();
+  return evaluateIn(cell_->cell().robot(p), cell_->view(p), debug::trimmed(asked),
+                    {base + kCellVariablesScope, base + kCellMotorsScope, base + kCellIoScope, 0, base + kCellDevicesScope});
 }
 
 void Adapter::reportCellStop(const debug::CellStop& stop) {

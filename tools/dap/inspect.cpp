@@ -139,9 +139,12 @@ Adapter::Reply Adapter::variables(const Json& args) {
 // client to open.
 Adapter::Reply Adapter::evaluate(const Json& args) {
   const std::string asked = args.at("expression").get<std::string>();
-  const std::string_view text = debug::trimmed(asked);
-  const runtime::RunView v = session_->view();
-  const vm::Image& image = *session_->run().spec().image;
+  return evaluateIn(session_->run(), session_->view(), debug::trimmed(asked), {kVariables, kMotors, kIo, kObjects, kDevices});
+}
+
+Adapter::Reply Adapter::evaluateIn(const runtime::Run& run, const runtime::RunView& v, std::string_view text,
+                                   const ScopeRefs& refs) {
+  const vm::Image& image = *run.spec().image;
   const auto listed = [](const std::vector<std::pair<std::string, std::string>>& items, int ref) {
     std::string shown;
     for (const auto& [name, value] : items) shown += fmt::format("{}{} = {}", shown.empty() ? "" : ", ", name, value);
@@ -151,13 +154,13 @@ Adapter::Reply Adapter::evaluate(const Json& args) {
     if (v.variables.empty()) return Error{"the program has no variables"};
     std::vector<std::pair<std::string, std::string>> items;
     for (const auto& [name, value] : v.variables) items.emplace_back(base::safeText(name), std::to_string(value));
-    return listed(items, kVariables);
+    return listed(items, refs.variables);
   }
   if (text == "motors") {
     std::vector<std::pair<std::string, std::string>> items;
     for (std::size_t m = 0; m < v.motors.size(); ++m)
       items.emplace_back(std::string(1, image.motors[m].letter), std::to_string(v.motors[m]));
-    return listed(items, kMotors);
+    return listed(items, refs.motors);
   }
   if (text == "tcp") {
     if (!v.tcp) return Error{"no tool centre point: the program runs without a workcell (cell)"};
@@ -170,7 +173,7 @@ Adapter::Reply Adapter::evaluate(const Json& args) {
       return s;
     };
     return Json{{"result", fmt::format("inputs 1-{0}:{1}, outputs 1-{0}:{2}", vm::kIoCount, bits(v.inputs), bits(v.outputs))},
-                {"variablesReference", kIo}};
+                {"variablesReference", refs.io}};
   }
   if (text == "objects") {
     if (v.objects.empty()) return Error{"no objects: the program runs without a workcell (cell), or it has none"};
@@ -178,13 +181,13 @@ Adapter::Reply Adapter::evaluate(const Json& args) {
     for (const runtime::ObjectView& o : v.objects)
       if (o.present)
         names += fmt::format("{}{} {}{}", names.empty() ? "" : ", ", o.number, base::safeText(o.name), o.held ? " (held)" : "");
-    return Json{{"result", names}, {"variablesReference", kObjects}};
+    return Json{{"result", names}, {"variablesReference", refs.objects}};
   }
   if (text == "devices") {
     std::vector<std::pair<std::string, std::string>> items;
-    for (debug::DeviceRow& row : debug::deviceRows(session_->run(), v)) items.emplace_back(std::move(row.name), std::move(row.value));
+    for (debug::DeviceRow& row : debug::deviceRows(run, v)) items.emplace_back(std::move(row.name), std::move(row.value));
     if (items.empty()) return Error{"no devices: the cell has no sensors, conveyors, feeders or sinks (or no workcell: cell)"};
-    return listed(items, kDevices);
+    return listed(items, refs.devices);
   }
   auto e = debug::parseExpression(image, debug::ioWords(text));
   if (!e) return Error{e.failure().message};
