@@ -96,3 +96,31 @@ TEST_CASE("debug cell: finish and reverse-next of the current robot", "[debug][c
   CHECK(std::count(listing.begin(), listing.end(), '\n') == 7);
   CHECK(afterCommand(r.out, "disasm @9") == "error: '@9': disasm takes @N, N from 1 to 7\n");
 }
+
+// left waits for its input 3, which nothing drives; right's DELAY 2 ends
+// the run at 2 s (without the set, a deadlock then). `set input 3 on` at
+// 1 s (after until 1) is a stimulus at 1 s: left's WAITFOR ends there, and
+// going back to the start and on again replays it. Input 1 of the
+// interlock's left is wired: refused.
+TEST_CASE("debug cell: set input is a stimulus at the present moment, replayed going back", "[debug][cell-debug]") {
+  rs::testing::TempDir dir;
+  const std::string cell = dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n"
+                                              "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\n"
+                                              "  WIRE right.OUT 1 TO left.IN 1\nEND\n");
+  dir.write("l.rsp", "        WAITFOR 3 ON\n        SET N 1\n        END\n");
+  dir.write("r.rsp", "        DELAY 2\n        END\n");
+  const auto r = debugtest::runCellDebugger(cell, "set input 9 on\nset N = 3\nset input 1 on\nuntil 1\nset input 3 on\n"
+                                                  "step\nbreak 2\nreverse-step\ncontinue\ncontinue\nset input 3 off\n");
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  CHECK(afterCommand(r.out, "set input 9 on") == "error: '9': inputs are 1..8\n");
+  CHECK(afterCommand(r.out, "set N = 3").starts_with("error: usage: set input N on|off"));
+  CHECK(afterCommand(r.out, "set input 1 on") == "error: input 1 of left is wired (line 4 of the cell): the wire drives it\n");
+  CHECK(afterCommand(r.out, "set input 3 on") == "input 3 of left is on from 1.000 s on\n");
+  CHECK(afterCommand(r.out, "step") == "left: line 2 @2, step 1, clock 1.000 s\n    2 |         SET N 1\n");
+  CHECK(afterCommand(r.out, "reverse-step").starts_with("at the start of the run\n"));
+  CHECK(afterCommand(r.out, "continue") == "breakpoint 1 (l.rsp line 2)\nleft: line 2 @2, step 1, clock 1.000 s\n"
+                                           "    2 |         SET N 1\n");
+  CHECK(afterCommand(r.out, "continue", 2).starts_with("every program ended\n"));
+  CHECK(afterCommand(r.out, "set input 3 off").starts_with("error: the run is over"));
+}

@@ -8,6 +8,7 @@
 #include "tools/debug/device_points.h"
 #include "tools/debug/expression.h"
 #include "vm/disasm.h"
+#include "vm/io_lines.h"
 
 namespace rs::debug {
 
@@ -40,6 +41,9 @@ const std::vector<Command>& CellConsole::commands() {
        "show a value of the current robot, the cell's objects (as the current robot sees them: held is by its "
        "gripper), or the cell's devices (each sensor, conveyor, feeder and sink, and every part and where it is)"},
       {"watch", "w", "watch VAR|output N|input N|LETTER", "stop when a value of the current robot changes"},
+      {"set", "", "set input N on|off",
+       "turn an input of the current robot on or off from the cell's present moment on (a stimulus then, "
+       "replayed whenever the cell runs again from its start)"},
       {"backtrace", "bt", "backtrace", "the current robot's GOSUB stack, innermost first, with lines"},
       {"list", "l", "list [LINE]", "the current robot's source around its line (or LINE)"},
       {"disasm", "da", "disasm [@N]", "the current robot's instructions around its current one, as robotsim disasm lists them"},
@@ -103,6 +107,7 @@ bool CellConsole::execute(std::string_view text) {
   else if (name == "thread") threadCommand(args);
   else if (name == "print") printCommand(args);
   else if (name == "watch") watchCommand(args);
+  else if (name == "set") setCommand(args);
   else if (name == "list") listCommand(args);
   else if (name == "disasm") {
     const std::size_t c = session_.current();
@@ -265,6 +270,20 @@ void CellConsole::watchCommand(std::string_view args) {
   const int id = session_.watch(c, *e);
   out_ << fmt::format("watch {}: {} of {} (now {})\n", id, base::safeText(e->name), base::safeText(session_.label(c)),
                       valueIn(session_.view(c), *e));
+}
+
+void CellConsole::setCommand(std::string_view args) {
+  const auto w = base::splitWords(args);
+  if (w.size() != 3 || !base::sameName(w[0], "input") || !(base::sameName(w[2], "on") || base::sameName(w[2], "off")))
+    return error("usage: set input N on|off (on a cell of several robots a variable cannot be set yet)");
+  const auto n = wholeCount(w[1]);
+  const bool on = base::sameName(w[2], "on");
+  if (!n || *n > static_cast<std::uint64_t>(vm::kIoCount))
+    return error(fmt::format("'{}': inputs are 1..{}", shownText(w[1]), vm::kIoCount));
+  const std::size_t c = session_.current();
+  if (auto problem = session_.setInput(c, static_cast<int>(*n), on)) return error(*problem);
+  out_ << fmt::format("input {} of {} is {} from {} s on\n", *n, base::safeText(session_.label(c)), on ? "on" : "off",
+                      base::formatSeconds(session_.clock()));
 }
 
 void CellConsole::listCommand(std::string_view args) {

@@ -36,6 +36,7 @@ class CellConsole {
   void threadCommand(std::string_view args);
   void printCommand(std::string_view args);
   void watchCommand(std::string_view args);
+  void setCommand(std::string_view args);
   diag::Result<int> lineBreakpoint(std::string_view args, std::string& note);
   void listCommand(std::string_view args);
   void backtrace();

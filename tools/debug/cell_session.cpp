@@ -7,6 +7,7 @@
 
 #include "base/seconds.h"
 #include "base/text.h"
+#include "vm/io_lines.h"
 #include "tools/debug/device_points.h"
 
 namespace rs::debug {
@@ -407,6 +408,32 @@ CellStop CellSession::gotoTime(vm::Micros t) {
   }
   at_ = t;
   return stopped({StopReason::Time, fmt::format("at {} s", base::formatSeconds(t)), current_, {}});
+}
+
+std::optional<std::string> CellSession::setInput(std::size_t robot, int input, bool on) {
+  if (run_->finished()) return std::string("the run is over: go back first (reverse-step, goto-time)");
+  if (!vm::isIoLine(input)) return fmt::format("there is no input {}: inputs are 1..{}", input, vm::kIoCount);
+  const workcell::Workcell& cell = run_->cell();
+  const std::size_t index = run_->robot(robot).rig().robotIndex();
+  for (const workcell::Wire& w : cell.devices.wires)
+    if (w.input == input && (w.robot.empty() ? index == cell.drivenRobotIndex() : cell.robotLabeled(w.robot) == index))
+      return fmt::format("input {} of {} is wired (line {} of the cell): the wire drives it", input,
+                         base::safeText(label(robot)), w.pos.line);
+  stimuli::InputChange change;
+  change.at = clock();
+  change.input = input;
+  change.on = on;
+  change.robot = label(robot);
+  spec_.stimuli.changes.push_back(std::move(change));
+  // The same present again (the same steps done, the moment shown), with the change ahead of it.
+  const std::optional<vm::Micros> moment = at_;
+  const std::uint64_t present = run_->steps();
+  restart();
+  runtime::CellUntil until;
+  until.steps = present;
+  run_->runUntil(until);
+  at_ = moment;
+  return std::nullopt;
 }
 
 }  // namespace rs::debug

@@ -125,6 +125,16 @@ class CellSession {
   /// Asked every few thousand steps of a forward run; yes pauses it (Pause).
   void setInterrupt(std::function<bool()> interrupted) { interrupted_ = std::move(interrupted); }
 
+  /// Input `input` of robot `robot` turns `on` at the cell's present moment
+  /// and stays so until something else turns it: a stimulus at that time
+  /// (the cell's clock, or the moment between two instants after
+  /// goto-time), kept with the cell, so that every run of the cell from its
+  /// start (going back) has it. The cell runs again from its start to the
+  /// same count of steps of all robots (the moment shown kept). An error
+  /// message when the run is over, the input is not 1..vm::kIoCount, or a
+  /// wire of the cell drives it.
+  std::optional<std::string> setInput(std::size_t robot, int input, bool on);
+
   // --- backwards ------------------------------------------------------------
   /// The whole cell back to where the current robot had run `n` fewer
   /// instructions (from inside one under way: that one is the first).
