@@ -214,7 +214,11 @@ TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devic
       request("variables", {{"variablesReference", 2005}}),                                            // 13
       request("evaluate", {{"expression", "devices"}, {"frameId", 2000}}),                             // 14
       request("evaluate", {{"expression", "objects"}, {"frameId", 2000}}),                             // 15
-      request("disconnect"),                                                                           // 16
+      request("setVariable", {{"variablesReference", 1003}, {"name", "in 2"}, {"value", "on"}}),      // 16
+      request("setVariable", {{"variablesReference", 1003}, {"name", "in 5"}, {"value", "on"}}),      // 17
+      request("setVariable", {{"variablesReference", 1001}, {"name", "TURNS"}, {"value", "3"}}),      // 18
+      request("variables", {{"variablesReference", 1003}}),                                            // 19
+      request("disconnect"),                                                                           // 20
   });
   REQUIRE(responseTo(m, 2).at("success") == true);
   const Json& fb = responseTo(m, 3).at("body").at("breakpoints");
@@ -251,4 +255,10 @@ TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devic
   CHECK(devices.at("variablesReference") == 2005);
   CHECK(responseTo(m, 15).at("body").at("result") == "1 conveyor, 2 block");
   CHECK(responseTo(m, 15).at("body").at("variablesReference") == 0);
+  // setVariable: an input as the terminal's set input (a stimulus now); left's input 2 is the beam's wire: refused.
+  CHECK(responseTo(m, 16).at("success") == false);
+  CHECK(responseTo(m, 16).at("message").get<std::string>().find("is wired") != std::string::npos);
+  CHECK(responseTo(m, 17).at("body").at("value") == "on");
+  CHECK(responseTo(m, 18).at("success") == false);
+  CHECK(valueOf(responseTo(m, 19), "in 5") == "on");  // at the cell's present instant: the run stands there
 }

@@ -120,6 +120,10 @@ class Adapter {
   /// robot's, or one robot of a cell's).
   static Reply evaluateIn(const runtime::Run& run, const runtime::RunView& view, std::string_view text, const ScopeRefs& refs);
   Reply cellSetFunctionBreakpoints(const Json& args);
+  Reply cellSetVariable(const Json& args);
+  /// setVariable's `in N` = on|off on `image`'s program: the input and its value, or what is wrong.
+  static std::optional<Error> inputSetting(const vm::Image& image, const std::string& name, std::string_view typed,
+                                           int& input, bool& on);
   Reply cellDataBreakpointInfo(const Json& args);
   Reply cellSetDataBreakpoints(const Json& args);
   /// The robot a request's threadId names (the current one without it); nullopt: none.

@@ -143,9 +143,7 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
   if (command == "pause") return Json(nullptr);  // a stopped cell stays stopped
   const bool moves = command == "continue" || command == "next" || command == "stepIn" || command == "stepOut" ||
                      command == "stepBack" || command == "reverseContinue" || command == "gotoTime";
-  if (command == "setVariable")
-    return Error{fmt::format("{} is not offered on a cell of several robots yet: debug one robot's program "
-                             "(program, cell and its robot) for it", command)};
+  if (command == "setVariable") return cellSetVariable(args);
   if (!moves) return Error{fmt::format("unknown request '{}'", base::safeText(command.substr(0, 60)))};
   if (state_ == State::Launched) return Error{fmt::format("{} before configurationDone", command)};
   if (state_ == State::Terminated) return Error{fmt::format("{}: the debug session has been terminated", command)};
@@ -300,6 +298,27 @@ Adapter::Reply Adapter::cellVariables(const Json& args) {
       return Error{fmt::format("no variables with reference {}", ref)};
   }
   return Json{{"variables", out}};
+}
+
+// An input of a thread's Inputs/Outputs, as the terminal's `set input N
+// on|off`: a stimulus at the cell's present moment (CellSession::setInput).
+Adapter::Reply Adapter::cellSetVariable(const Json& args) {
+  const std::int64_t ref = args.at("variablesReference").get<std::int64_t>();
+  const std::int64_t thread = ref / kCellPerThread;
+  if (thread < 1 || thread > static_cast<std::int64_t>(cell_->size()) || ref % kCellPerThread < 1 ||
+      ref % kCellPerThread > kCellLastScope)
+    return Error{fmt::format("no variables with reference {}", ref)};
+  if (ref % kCellPerThread != kCellIoScope)
+    return Error{"on a cell of several robots only inputs can be set: the variables, motors, clock and devices are the run's"};
+  const auto p = static_cast<std::size_t>(thread - 1);
+  const std::string value = args.at("value").get<std::string>();
+  int input = 0;
+  bool on = false;
+  if (auto bad = inputSetting(*cell_->cell().robot(p).spec().image, args.at("name").get<std::string>(),
+                              debug::trimmed(value), input, on))
+    return *bad;
+  if (auto problem = cell_->setInput(p, input, on)) return Error{*problem};
+  return Json{{"value", on ? "on" : "off"}, {"variablesReference", 0}};
 }
 
 // One value of a robot (the frame's thread, else the current robot): what the terminal's print takes.

@@ -213,6 +213,17 @@ std::optional<bool> onOrOff(std::string_view text) {
 
 // A variable of the program, or an input (as the terminal's `set input N
 // on|off`): from this moment on, replayed going back and forth.
+std::optional<Adapter::Error> Adapter::inputSetting(const vm::Image& image, const std::string& name, std::string_view typed,
+                                                    int& input, bool& on) {
+  auto e = debug::parseExpression(image, name);
+  if (!e || e->kind != debug::Expression::Kind::Input)
+    return Error{fmt::format("only inputs can be set ('in 1'..'in {}'): outputs are the program's", vm::kIoCount)};
+  const std::optional<bool> value = onOrOff(typed);
+  if (!value) return Error{fmt::format("'{}': an input is on or off", base::safeText(typed.substr(0, 60)))};
+  input = static_cast<int>(e->index), on = *value;
+  return std::nullopt;
+}
+
 Adapter::Reply Adapter::setVariable(const Json& args) {
   const std::int64_t ref = args.at("variablesReference").get<std::int64_t>();
   const std::string name = args.at("name").get<std::string>();
@@ -227,13 +238,11 @@ Adapter::Reply Adapter::setVariable(const Json& args) {
     return Json{{"value", std::to_string(n)}, {"variablesReference", 0}};
   }
   if (ref == kIo) {
-    auto e = debug::parseExpression(*session_->run().spec().image, name);
-    if (!e || e->kind != debug::Expression::Kind::Input)
-      return Error{fmt::format("only inputs can be set ('in 1'..'in {}'): outputs are the program's", vm::kIoCount)};
-    const std::optional<bool> on = onOrOff(typed);
-    if (!on) return Error{fmt::format("'{}': an input is on or off", base::safeText(typed.substr(0, 60)))};
-    if (auto problem = session_->setInput(static_cast<int>(e->index), *on)) return Error{*problem};
-    return Json{{"value", *on ? "on" : "off"}, {"variablesReference", 0}};
+    int input = 0;
+    bool on = false;
+    if (auto bad = inputSetting(*session_->run().spec().image, name, typed, input, on)) return *bad;
+    if (auto problem = session_->setInput(input, on)) return Error{*problem};
+    return Json{{"value", on ? "on" : "off"}, {"variablesReference", 0}};
   }
   if (ref >= kMotors && ref <= kDevices)
     return Error{"only variables and inputs can be set: the motors, objects, clock and devices are the run's"};
