@@ -22,6 +22,17 @@ inline rs::testing::CliResult runCellDebugger(const std::string& cell, const std
   return rs::testing::runCli(args);
 }
 
+/// A cell `two` of two XR-4s, `left` and `right` (as interlock.rsd places
+/// them), running `left` and `right` (program text), with `extra` lines
+/// in its WORKCELL block: the cell's file.
+inline std::string writeTwoRobotCell(rs::testing::TempDir& dir, const std::string& left, const std::string& right,
+                                     const std::string& extra = {}) {
+  dir.write("l.rsp", left);
+  dir.write("r.rsp", right);
+  return dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n"
+                            "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\n" + extra + "END\n");
+}
+
 /// What the console printed after the `nth` command `command` (up to the next prompt).
 inline std::string afterCommand(const std::string& out, const std::string& command, std::size_t nth = 1) {
   std::size_t at = 0;

@@ -74,11 +74,10 @@ TEST_CASE("debug cell: if and hits on a cell's breakpoints", "[debug][cell-debug
 // the SET (step 1) at 0 s, and once more to the start.
 TEST_CASE("debug cell: finish and reverse-next of the current robot", "[debug][cell-debug]") {
   rs::testing::TempDir dir;
-  const std::string cell = dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n"
-                                              "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\nEND\n");
-  dir.write("l.rsp", "        SET N 0\n        GOSUB sub\n        SET N 1\n        END\nsub:    MOVE 300 0 0 0 0 0\n"
-                     "        MOVE -300 0 0 0 0 0\n        RETURN\n");
-  dir.write("r.rsp", "        DELAY 5\n        END\n");
+  const std::string cell = debugtest::writeTwoRobotCell(
+      dir, "        SET N 0\n        GOSUB sub\n        SET N 1\n        END\nsub:    MOVE 300 0 0 0 0 0\n"
+           "        MOVE -300 0 0 0 0 0\n        RETURN\n",
+      "        DELAY 5\n        END\n");
   const auto r = debugtest::runCellDebugger(cell, "finish\nstep 2\nstep\nfinish\nreverse-next\nnext\nreverse-next\n"
                                                   "reverse-next\nreverse-next\ndisasm\ndisasm @9\n");
   INFO(r.out << r.err);
@@ -104,11 +103,8 @@ TEST_CASE("debug cell: finish and reverse-next of the current robot", "[debug][c
 // interlock's left is wired: refused.
 TEST_CASE("debug cell: set input is a stimulus at the present moment, replayed going back", "[debug][cell-debug]") {
   rs::testing::TempDir dir;
-  const std::string cell = dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left PROGRAM l.rsp\n"
-                                              "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\n"
-                                              "  WIRE right.OUT 1 TO left.IN 1\nEND\n");
-  dir.write("l.rsp", "        WAITFOR 3 ON\n        SET N 1\n        END\n");
-  dir.write("r.rsp", "        DELAY 2\n        END\n");
+  const std::string cell = debugtest::writeTwoRobotCell(dir, "        WAITFOR 3 ON\n        SET N 1\n        END\n",
+                                                       "        DELAY 2\n        END\n", "  WIRE right.OUT 1 TO left.IN 1\n");
   const auto r = debugtest::runCellDebugger(cell, "set input 9 on\nset N = 3\nset input 1 on\nuntil 1\nset input 3 on\n"
                                                   "step\nbreak 2\nreverse-step\ncontinue\ncontinue\nset input 3 off\n");
   INFO(r.out << r.err);
