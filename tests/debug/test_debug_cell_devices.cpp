@@ -20,9 +20,15 @@
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <vector>
 
+#include "base/seconds.h"
+#include "launch/cell_programs.h"
+#include "launch/run_request.h"
 #include "tests/debug/cell_debug_util.h"
 #include "tests/debug/debug_test_util.h"
+#include "tools/debug/cell_session.h"
+#include "tools/debug/device_points.h"
 
 namespace {
 
@@ -110,4 +116,46 @@ TEST_CASE("debug cell: going back restores the devices as they were going forwar
   CHECK(afterCommand(r.out, "continue", 2).starts_with("every program ended\n"));
   CHECK(afterCommand(r.out, "reverse-continue").starts_with("breakpoint 1 (sensor eye OFF if TURNS = 0 on left)"));
   CHECK(afterCommand(r.out, "print devices", 5) == kDevicesAt2);
+}
+
+// The property behind the two tests above, at every moment of the run: left
+// steps from the start to its end, the devices' rows (each one's state,
+// every part and its place) kept at each stop; then back one step at a
+// time, each stop shows the rows kept there going forwards. Nothing is
+// worked out by hand: the forward run is the reference.
+TEST_CASE("debug cell: at every reverse-step the devices are as they were going forwards", "[debug][cell-debug][devices]") {
+  const std::string two = debugtest::kExamples + "two_robots/";
+  rs::launch::ProgramRequest request;
+  request.cell = rendertest::kSourceDir + "/tests/debug/programs/belt_pair.rsd";
+  rs::launch::CellPrograms programs;
+  const std::vector<std::string> assignments = {"left=" + two + "left.rsp", "right=" + two + "right.rsp"};
+  REQUIRE(rs::launch::assignCellPrograms(request, assignments, programs));
+  rs::launch::compileAssignedPrograms(request, programs);
+  std::vector<rs::diag::Diagnostic> diags;
+  const auto spec = rs::launch::prepareCellRun(programs, {}, diags);
+  REQUIRE(spec);
+  rs::debug::CellSession session(*spec);
+  const auto rows = [&session] {
+    std::string text = rs::base::formatSeconds(session.clock()) + "\n";
+    for (const rs::debug::DeviceRow& r : rs::debug::deviceRows(session.cell().robot(0), session.view(0)))
+      text += r.name + " = " + r.value + "\n";
+    return text;
+  };
+  std::vector<std::string> forwards = {rows()};
+  while (true) {
+    session.select(0);
+    const auto stop = session.step();
+    REQUIRE(stop);
+    if (stop->finished() || session.cell().end(0) != rs::runtime::RobotEnd::Running) break;
+    forwards.push_back(rows());
+  }
+  // The start and after each of left's 16 steps (SET, two passes of its 7-instruction loop, END).
+  CHECK(forwards.size() == 17);
+  CHECK(forwards.back().find("feeder parts = fed 2 parts") != std::string::npos);  // the second block came at 6 s
+  for (std::size_t k = forwards.size() - 1; k-- > 0;) {
+    session.select(0);
+    session.reverseStep();
+    INFO("back to left's step " << k);
+    CHECK(rows() == forwards[k]);
+  }
 }
