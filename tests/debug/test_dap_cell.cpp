@@ -201,7 +201,8 @@ TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devic
       request("launch", {{"cell", cell},
                          {"programs", {{"left", kTwo + "left.rsp"}, {"right", kTwo + "right.rsp"}}}}),  // 2
       request("setFunctionBreakpoints",
-              {{"breakpoints", {{{"name", "sensor eye on"}}, {{"name", "again"}}, {{"name", "sensor nope"}}}}}),  // 3
+              {{"breakpoints", {{{"name", "sensor eye on"}}, {{"name", "again"}, {"condition", "TURNS = 5"}},
+                                {{"name", "sensor nope"}}}}}),  // 3: left's again never with TURNS 5
       request("dataBreakpointInfo", {{"name", "TURNS"}, {"variablesReference", 1001}}),                // 4
       request("dataBreakpointInfo", {{"name", "time"}, {"variablesReference", 1004}}),                 // 5
       request("setDataBreakpoints", {{"breakpoints", {{{"dataId", "1:TURNS"}}, {{"dataId", "9:TURNS"}}}}}),  // 6
@@ -224,7 +225,9 @@ TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devic
   const Json& fb = responseTo(m, 3).at("body").at("breakpoints");
   REQUIRE(fb.size() == 3);
   CHECK(fb[0].at("verified") == true);
-  CHECK(fb[1].at("verified") == false);  // a label: one robot's, a line breakpoint says which
+  CHECK(fb[1].at("verified") == true);  // a label of the current thread's robot, left: line 7 of left.rsp
+  CHECK(fb[1].at("line") == 7);
+  CHECK(fb[1].at("source").at("name") == "left.rsp");
   CHECK(fb[2].at("verified") == false);
   CHECK(fb[2].at("message").get<std::string>().find("its sensors are eye") != std::string::npos);
   CHECK(responseTo(m, 4).at("body").at("dataId") == "1:TURNS");
@@ -244,7 +247,7 @@ TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devic
   CHECK(valueOf(responseTo(m, 9), "sensor eye") == "OFF, turned ON 1 time");
   CHECK(valueOf(responseTo(m, 9), "block (object 2)") == "at (-540.000, 500.000, 2870.000), riding belt");
   CHECK(stops[1].at("reason") == "data breakpoint");
-  CHECK(stops[1].at("description") == "watch 2: TURNS of left changed from 0 to 1");
+  CHECK(stops[1].at("description") == "watch 3: TURNS of left changed from 0 to 1");  // ids 1 and 2: the function breakpoints
   CHECK(responseTo(m, 11).at("success") == false);  // left is in no subroutine
   CHECK(stops[2].at("reason") == "function breakpoint");
   // Right's view of the same devices, back at 2 s.

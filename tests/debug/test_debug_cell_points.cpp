@@ -120,3 +120,23 @@ TEST_CASE("debug cell: set input is a stimulus at the present moment, replayed g
   CHECK(afterCommand(r.out, "continue", 2).starts_with("every program ended\n"));
   CHECK(afterCommand(r.out, "set input 3 off").starts_with("error: the run is over"));
 }
+
+// Labels and instructions of a robot's program: left's `again` is its @2
+// (line 7), reached after its SET at 0 s; right's @3 is its first MOVE
+// (line 6), reached at 2 s (test_debug_cell.cpp's top).
+TEST_CASE("debug cell: break LABEL and @N, of the current robot or ROBOT:", "[debug][cell-debug]") {
+  const auto r = debugInterlock("break again\nbreak right:@3\nbreak left:nope\nbreak @99\ninfo breakpoints\n"
+                                "continue\ncontinue\nreverse-continue\n");
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  CHECK(afterCommand(r.out, "break again") == "breakpoint 1: left.rsp label again, line 7 (robot left)\n");
+  CHECK(afterCommand(r.out, "break right:@3") == "breakpoint 2: right.rsp @3, line 6 (robot right)\n");
+  CHECK(afterCommand(r.out, "break left:nope") ==
+        "error: 'left:nope' is not a line or a label of left.rsp: its program has no label 'nope'\n");
+  CHECK(afterCommand(r.out, "break @99") == "error: no instruction @99: the program has @1 to @9\n");
+  CHECK(afterCommand(r.out, "continue").starts_with("breakpoint 1 (left.rsp label again, line 7)\n"
+                                                    "left: line 7 @2, step 1, clock 0.000 s\n"));
+  CHECK(afterCommand(r.out, "continue", 2).starts_with("breakpoint 2 (right.rsp @3, line 6)\n"
+                                                       "right: line 6 @3, step 2, clock 2.000 s\n"));
+  CHECK(afterCommand(r.out, "reverse-continue").starts_with("breakpoint 1 (left.rsp label again, line 7)\n"));
+}

@@ -135,8 +135,9 @@ Adapter::Reply Adapter::setDataBreakpoints(const Json& args) {
 
 // --- a cell of several robots ------------------------------------------------------
 
-// Function breakpoints are the cell's devices' (a label is one robot's:
-// a line breakpoint says which); a condition reads the current robot.
+// Function breakpoints are the cell's devices' and labels (LABEL, of the
+// current thread's robot, or ROBOT:LABEL); a device's condition reads the
+// current robot, a label's its robot.
 Adapter::Reply Adapter::cellSetFunctionBreakpoints(const Json& args) {
   for (int id : functionBreakpoints_) cell_->remove(id);
   functionBreakpoints_.clear();
@@ -146,8 +147,33 @@ Adapter::Reply Adapter::cellSetFunctionBreakpoints(const Json& args) {
     const std::string name = b.at("name").get<std::string>();
     const std::vector<std::string_view> words = base::splitWords(name);
     if (words.size() < 2 || !debug::isDeviceWord(words[0])) {
-      out.push_back(unverified("on a cell of several robots a function breakpoint is a device's: sensor NAME [on|off], "
-                               "feeder NAME or sink NAME (a label: a line breakpoint in its robot's program)"));
+      // A label: of the current thread's robot, or ROBOT:LABEL.
+      std::size_t p = robot;
+      std::string_view label = debug::trimmed(name);
+      if (const std::size_t colon = label.find(':'); colon != std::string_view::npos) {
+        const auto named = cell_->robotNamed(label.substr(0, colon));
+        if (!named) {
+          out.push_back(unverified(fmt::format("'{}' names no robot of the cell", base::safeText(label.substr(0, colon)))));
+          continue;
+        }
+        p = *named, label = label.substr(colon + 1);
+      }
+      auto made = cell_->breakAtLabel(p, label);
+      std::optional<debug::Condition> condition;
+      std::optional<debug::HitCondition> hits;
+      std::string problem = made ? qualifiers(b, *cell_->cell().robot(p).spec().image, condition, hits) : made.failure().message;
+      if (!problem.empty()) {
+        if (made) cell_->remove(*made);
+        out.push_back(unverified(std::move(problem)));
+        continue;
+      }
+      cell_->qualify(*made, condition, hits);
+      functionBreakpoints_.push_back(*made);
+      const auto& all = cell_->breakpoints();
+      const auto at = std::find_if(all.begin(), all.end(), [&](const debug::CellBreakpoint& x) { return x.id == *made; });
+      out.push_back({{"id", *made}, {"verified", true},
+                     {"source", {{"name", std::filesystem::path(cellPaths_[p]).filename().string()}, {"path", cellPaths_[p]}}},
+                     {"line", clientLine(at->line)}});
       continue;
     }
     auto point = debug::parseDevicePoint(cell_->cell().robot(robot), words);

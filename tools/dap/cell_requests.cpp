@@ -343,7 +343,7 @@ void Adapter::reportCellStop(const debug::CellStop& stop) {
     if (stop.finished()) body["text"] = stop.message;
     event("stopped", std::move(body));
   };
-  // A device's breakpoint is the client's function breakpoint (a line's too: the line's reason).
+  // A device's or label's breakpoint is the client's function breakpoint (a line's too: the line's reason).
   const bool atLine = std::any_of(cellBreakpoints_.begin(), cellBreakpoints_.end(), [&stop](const std::vector<int>& ids) {
     return std::any_of(ids.begin(), ids.end(), [&stop](int id) {
       return std::find(stop.breakpoints.begin(), stop.breakpoints.end(), id) != stop.breakpoints.end();

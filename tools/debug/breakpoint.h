@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "diag/result.h"
 #include "tools/debug/device_points.h"
 #include "tools/debug/expression.h"
 
@@ -40,6 +41,8 @@ struct Breakpoint {
   std::string where() const;
   /// where() with " if N = 3" and " hits >= 2" when set.
   std::string describe() const;
+  /// It stands at a place in the program (a line, a label, an instruction).
+  bool inProgram() const { return kind == Kind::Line || kind == Kind::Label || kind == Kind::Instruction; }
 };
 
 struct Watch {
@@ -54,5 +57,11 @@ struct Watch {
 /// what changed); `happened`: what the devices did, after them.
 std::string stopText(const std::vector<int>& ids, const std::function<std::optional<std::string>(int)>& describe,
                      const std::vector<std::string>& notes, const std::vector<std::string>& happened);
+
+/// A breakpoint before label `label` of `image`'s program (any case; its
+/// kind, place and instructions set, no id yet), or why there is none.
+diag::Result<Breakpoint> labelBreakpoint(const vm::Image& image, std::string_view label);
+/// Before instruction `index` (0-based; messages number from 1, as disasm).
+diag::Result<Breakpoint> instructionBreakpoint(const vm::Image& image, std::uint32_t index);
 
 }  // namespace rs::debug

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
+
 #include "base/ascii.h"
 #include "base/seconds.h"
 #include "base/text.h"
@@ -15,9 +17,9 @@ namespace rs::debug {
 const std::vector<Command>& CellConsole::commands() {
   static const std::vector<Command> kCommands = {
       {"break", "b",
-       "break [FILE:|ROBOT:]LINE|at TIME|when COND|sensor NAME [on|off]|feeder NAME|sink NAME [if COND] [hits N]",
-       "stop before a line of a robot's program (LINE: the current robot's, FILE:LINE: FILE as given or its last "
-       "part, ROBOT:LINE: ROBOT its label), right after the cell's clock passes TIME, as COND on the current robot "
+       "break [FILE:|ROBOT:]LINE|LABEL|@N|at TIME|when COND|sensor NAME [on|off]|feeder NAME|sink NAME [if COND] [hits N]",
+       "stop before a line, a label or instruction @N of a robot's program (the current robot's, or FILE:... with "
+       "FILE as given or its last part, or ROBOT:... with ROBOT its label), right after the cell's clock passes TIME, as COND on the current robot "
        "becomes true (output N on|off, input N on|off, VAR = VALUE), or after the step during which a sensor of the "
        "cell turns on or off (either edge, or the one named), a feeder feeds a part or a sink takes one; "
        "if COND: only when COND (on the current robot) holds then; hits N: from the Nth time on (== N: only the "
@@ -155,7 +157,7 @@ void CellConsole::breakCommand(std::string_view args) {
   for (const CellBreakpoint& b : session_.breakpoints())
     if (b.id == *made)
       out_ << fmt::format("breakpoint {}: {}{}{}\n", b.id, session_.describe(b),
-                          b.kind == Breakpoint::Kind::Line ? fmt::format(" (robot {})", base::safeText(session_.label(b.robot))) : "",
+                          b.inProgram() ? fmt::format(" (robot {})", base::safeText(session_.label(b.robot))) : "",
                           note);
 }
 
@@ -176,7 +178,19 @@ diag::Result<int> CellConsole::lineBreakpoint(std::string_view args, std::string
     robot = *named;
     lineText = args.substr(colon + 1);
   }
+  if (!lineText.empty() && lineText.front() == '@') {
+    const auto n = wholeCount(lineText.substr(1));
+    if (!n || *n == 0 || *n > UINT32_MAX)
+      return diag::refusal(fmt::format("'{}': @N takes an instruction number from 1", shownText(lineText)));
+    return session_.breakAtInstruction(robot, static_cast<std::uint32_t>(*n - 1));
+  }
   const auto line = wholeCount(lineText);
+  if (!line && !lineText.empty() && !std::isdigit(static_cast<unsigned char>(lineText.front()))) {
+    auto made = session_.breakAtLabel(robot, lineText);
+    if (made) return made;
+    return diag::refusal(fmt::format("'{}' is not a line or a label of {}: its program has no label '{}'", shownText(args),
+                                     session_.fileName(robot), shownText(lineText)));
+  }
   if (!line || *line == 0 || *line > UINT32_MAX)
     return diag::refusal(fmt::format("'{}' is not a line: break takes LINE, FILE:LINE or ROBOT:LINE, lines from 1",
                                      shownText(args)));
@@ -224,7 +238,7 @@ void CellConsole::infoCommand(std::string_view args) {
   out_ << "id  what\n";
   for (const CellBreakpoint& b : session_.breakpoints()) {
     const std::string reached = fmt::format("reached {} time{}", b.hitCount, b.hitCount == 1 ? "" : "s");
-    if (b.kind == Breakpoint::Kind::Line)
+    if (b.inProgram())
       out_ << fmt::format("{:<3} break {} (robot {}, {})\n", b.id, session_.describe(b),
                           base::safeText(session_.label(b.robot)), reached);
     else out_ << fmt::format("{:<3} break {} ({})\n", b.id, session_.describe(b), reached);

@@ -85,6 +85,26 @@ diag::Result<int> CellSession::breakAtLine(std::size_t robot, std::uint32_t line
   return add(Breakpoint::Kind::Line, std::move(b));
 }
 
+diag::Result<int> CellSession::breakAtLabel(std::size_t robot, std::string_view label) {
+  if (robot >= size()) return diag::refusal("no such robot");
+  auto b = labelBreakpoint(*run_->robot(robot).spec().image, label);
+  if (!b) return b.failure();
+  CellBreakpoint c;
+  static_cast<Breakpoint&>(c) = std::move(*b);
+  c.robot = robot;
+  return add(Breakpoint::Kind::Label, std::move(c));
+}
+
+diag::Result<int> CellSession::breakAtInstruction(std::size_t robot, std::uint32_t index) {
+  if (robot >= size()) return diag::refusal("no such robot");
+  auto b = instructionBreakpoint(*run_->robot(robot).spec().image, index);
+  if (!b) return b.failure();
+  CellBreakpoint c;
+  static_cast<Breakpoint&>(c) = std::move(*b);
+  c.robot = robot;
+  return add(Breakpoint::Kind::Instruction, std::move(c));
+}
+
 diag::Result<int> CellSession::breakAtTime(vm::Micros t) {
   if (t < 0) return diag::refusal("a time is not negative");
   CellBreakpoint b;
@@ -135,7 +155,7 @@ bool CellSession::remove(int id) {
 }
 
 std::string CellSession::describe(const CellBreakpoint& b) const {
-  if (b.kind == Breakpoint::Kind::Line) return fmt::format("{} {}", fileName(b.robot), b.describe());
+  if (b.inProgram()) return fmt::format("{} {}", fileName(b.robot), b.describe());
   // A condition reads one robot's values: say whose.
   if (b.kind == Breakpoint::Kind::When || b.condition)
     return fmt::format("{} on {}", b.describe(), base::safeText(label(b.robot)));
@@ -177,6 +197,8 @@ CellSession::Found CellSession::matches(std::size_t robot, const Probe& before, 
     bool at = false;
     switch (b.kind) {
       case Breakpoint::Kind::Line:
+      case Breakpoint::Kind::Label:
+      case Breakpoint::Kind::Instruction:
         at = b.robot == robot && std::find(b.instructions.begin(), b.instructions.end(), pc) != b.instructions.end();
         break;
       case Breakpoint::Kind::Time: at = before.clock <= b.time && run_->clock() > b.time; break;

@@ -42,7 +42,8 @@ struct CellStop {
   bool finished() const { return vm::isOver(reason); }
 };
 
-/// A breakpoint of the cell: before a line of one robot's program (Line),
+/// A breakpoint of the cell: before a line, a label or an instruction of
+/// one robot's program (Line, Label, Instruction),
 /// as the cell's clock passes a time, as a condition on a robot becomes
 /// true, at a device's event; each with a condition and a hit count.
 /// `robot` (a program index) is the robot whose program it stands in, or
@@ -90,6 +91,10 @@ class CellSession {
   /// Before line `line` of robot `robot`'s program (or the first line with code after it).
   diag::Result<int> breakAtLine(std::size_t robot, std::uint32_t line);
   std::uint32_t lineWithCode(std::size_t robot, std::uint32_t line) const;
+  /// Before label `label` (any case) of robot `robot`'s program.
+  diag::Result<int> breakAtLabel(std::size_t robot, std::string_view label);
+  /// Before instruction `index` (0-based) of robot `robot`'s program.
+  diag::Result<int> breakAtInstruction(std::size_t robot, std::uint32_t index);
   /// Right after the cell's clock passes `t` (after the step of any robot that passes it).
   diag::Result<int> breakAtTime(vm::Micros t);
   /// As `condition` on robot `robot` becomes true (after a step of any robot: a wire may turn its input on).

@@ -88,26 +88,15 @@ diag::Result<int> DebugSession::breakAtLine(std::uint32_t line) {
 }
 
 diag::Result<int> DebugSession::breakAtLabel(std::string_view label) {
-  const std::optional<std::uint32_t> at = runtime::labelInstruction(*run_->spec().image, label);
-  if (!at) return diag::refusal(fmt::format("the program has no label '{}'", base::safeText(label.substr(0, 60))));
-  Breakpoint b;
-  for (const vm::Label& l : run_->spec().image->labels)
-    if (base::sameName(run_->spec().image->labelName(l), label)) b.label = run_->spec().image->labelName(l);
-  b.instruction = *at;
-  b.line = run_->spec().image->lines[*at];
-  b.instructions = {*at};
-  return add(Breakpoint::Kind::Label, std::move(b));
+  auto b = labelBreakpoint(*run_->spec().image, label);
+  if (!b) return b.failure();
+  return add(Breakpoint::Kind::Label, std::move(*b));
 }
 
 diag::Result<int> DebugSession::breakAtInstruction(std::uint32_t index) {
-  const std::size_t size = run_->spec().image->code.size();
-  if (index >= size)
-    return diag::refusal(fmt::format("no instruction @{}: the program has @1 to @{}", index + 1, size));
-  Breakpoint b;
-  b.instruction = index;
-  b.line = run_->spec().image->lines[index];
-  b.instructions = {index};
-  return add(Breakpoint::Kind::Instruction, std::move(b));
+  auto b = instructionBreakpoint(*run_->spec().image, index);
+  if (!b) return b.failure();
+  return add(Breakpoint::Kind::Instruction, std::move(*b));
 }
 
 diag::Result<int> DebugSession::breakAtTime(vm::Micros t) {
