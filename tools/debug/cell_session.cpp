@@ -87,22 +87,21 @@ diag::Result<int> CellSession::breakAtLine(std::size_t robot, std::uint32_t line
 
 diag::Result<int> CellSession::breakAtLabel(std::size_t robot, std::string_view label) {
   if (robot >= size()) return diag::refusal("no such robot");
-  auto b = labelBreakpoint(*run_->robot(robot).spec().image, label);
-  if (!b) return b.failure();
-  CellBreakpoint c;
-  static_cast<Breakpoint&>(c) = std::move(*b);
-  c.robot = robot;
-  return add(Breakpoint::Kind::Label, std::move(c));
+  return addOf(robot, labelBreakpoint(*run_->robot(robot).spec().image, label));
 }
 
 diag::Result<int> CellSession::breakAtInstruction(std::size_t robot, std::uint32_t index) {
   if (robot >= size()) return diag::refusal("no such robot");
-  auto b = instructionBreakpoint(*run_->robot(robot).spec().image, index);
-  if (!b) return b.failure();
+  return addOf(robot, instructionBreakpoint(*run_->robot(robot).spec().image, index));
+}
+
+diag::Result<int> CellSession::addOf(std::size_t robot, diag::Result<Breakpoint> made) {
+  if (!made) return made.failure();
   CellBreakpoint c;
-  static_cast<Breakpoint&>(c) = std::move(*b);
+  static_cast<Breakpoint&>(c) = std::move(*made);
   c.robot = robot;
-  return add(Breakpoint::Kind::Instruction, std::move(c));
+  const Breakpoint::Kind kind = c.kind;
+  return add(kind, std::move(c));
 }
 
 diag::Result<int> CellSession::breakAtTime(vm::Micros t) {

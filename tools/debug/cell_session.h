@@ -172,6 +172,8 @@ class CellSession {
   CellStop endStop() const;
   CellStop stopped(CellStop stop);
   int add(Breakpoint::Kind kind, CellBreakpoint b);
+  /// `made` (a breakpoint of robot `robot`'s program) added, or why not.
+  diag::Result<int> addOf(std::size_t robot, diag::Result<Breakpoint> made);
 
   runtime::CellRunSpec spec_;
   std::unique_ptr<runtime::CellRun> run_;
