@@ -140,3 +140,36 @@ TEST_CASE("debug cell: break LABEL and @N, of the current robot or ROBOT:", "[de
                                                        "right: line 6 @3, step 2, clock 2.000 s\n"));
   CHECK(afterCommand(r.out, "reverse-continue").starts_with("breakpoint 1 (left.rsp label again, line 7)\n"));
 }
+
+// The gantry of gantry-cell beside an XR-4 (whose DELAY 1 is all it does),
+// with --collisions warn. The gantry's program is test_moving_arm.cpp's
+// lowering by 1100 counts, then down 600 more: its line 1 ends at 2.8 s,
+// line 2 (1100 at 800 a second) at 4.175 s, line 3 closes the gripper 40
+// above the block's centre, on nothing, ending at 4.675 s (the stop after
+// it, with the words test_moving_arm.cpp checks); line 4 (600 at 800 a
+// second, 4.675 to 5.425 s) takes the fingers into the block, which the
+// swept check finds soon after 4.675 s: the stop after that step, at 5.425 s.
+TEST_CASE("debug cell: break warning and break collision on a cell of several robots", "[debug][cell-debug]") {
+  rs::testing::TempDir dir;
+  dir.write("arm.rsp", "        MOVETO -2800 2800 0 0\n        MOVE 0 0 1100 0\n        MOVE 0 0 0 100\n"
+                       "        MOVE 0 0 600 0\n        END\n");
+  dir.write("o.rsp", "        DELAY 1\n        END\n");
+  const std::string cell = dir.write("c.rsd", "WORKCELL gx\n  ROBOT gantry AT 0 1000 0 AS arm PROGRAM arm.rsp\n"
+                                              "  ROBOT rhino-xr4 AT 3000 750 0 AS other PROGRAM o.rsp\n"
+                                              "  OBJECT pallet AT 150 0 760\n  OBJECT block AT 200 30 700\n"
+                                              "  OBJECT block AT 280 30 700\n  OBJECT pallet AT 610 0 260\nEND\n");
+  const auto r = debugtest::runCellDebugger(cell, "break warning\nbreak collision\ncontinue\ncontinue\nreverse-continue\n",
+                                            {"--collisions", "warn"});
+  INFO(r.out << r.err);
+  CHECK(r.code == 0);
+  CHECK(afterCommand(r.out, "break collision") == "breakpoint 2: collision\n");
+  const std::string warning = "breakpoint 1 (warning: a gripper closing on nothing): a gripper closed on nothing: nearest: "
+                              "block (object 2), its centre 40 below the tool centre point, which is 20 outside its box\n"
+                              "arm: line 4 @4, step 3, clock 4.675 s\n";
+  CHECK(afterCommand(r.out, "continue").starts_with(warning));
+  const std::string collision = afterCommand(r.out, "continue", 2);
+  CHECK(collision.starts_with("breakpoint 2 (collision): finger "));
+  CHECK(collision.find("of robot 'arm' hits object 2 (block) at 4.7") != std::string::npos);
+  CHECK(collision.find("arm: line 5 @5, step 4, clock 5.425 s\n") != std::string::npos);
+  CHECK(afterCommand(r.out, "reverse-continue").starts_with(warning));
+}

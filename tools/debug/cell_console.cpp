@@ -17,10 +17,12 @@ namespace rs::debug {
 const std::vector<Command>& CellConsole::commands() {
   static const std::vector<Command> kCommands = {
       {"break", "b",
-       "break [FILE:|ROBOT:]LINE|LABEL|@N|at TIME|when COND|sensor NAME [on|off]|feeder NAME|sink NAME [if COND] [hits N]",
+       "break [FILE:|ROBOT:]LINE|LABEL|@N|at TIME|when COND|collision|warning|sensor NAME [on|off]|feeder NAME|sink NAME "
+       "[if COND] [hits N]",
        "stop before a line, a label or instruction @N of a robot's program (the current robot's, or FILE:... with "
        "FILE as given or its last part, or ROBOT:... with ROBOT its label), right after the cell's clock passes TIME, as COND on the current robot "
-       "becomes true (output N on|off, input N on|off, VAR = VALUE), or after the step during which a sensor of the "
+       "becomes true (output N on|off, input N on|off, VAR = VALUE), after the step of any robot during which it "
+       "collided (--collisions warn) or its gripper closed on nothing, or after the step during which a sensor of the "
        "cell turns on or off (either edge, or the one named), a feeder feeds a part or a sink takes one; "
        "if COND: only when COND (on the current robot) holds then; hits N: from the Nth time on (== N: only the "
        "Nth, % N: every Nth)"},
@@ -135,8 +137,8 @@ void CellConsole::breakCommand(std::string_view args) {
   if (!words) return error(words.failure().message);
   const std::span<const std::string_view> place = words->place;
   if (place.empty())
-    return error("break needs a place: LINE, FILE:LINE, ROBOT:LINE, at TIME, when COND, sensor NAME, feeder NAME or "
-                 "sink NAME (help break)");
+    return error("break needs a place: LINE, FILE:LINE, ROBOT:LINE, LABEL, @N, at TIME, when COND, collision, warning, "
+                 "sensor NAME, feeder NAME or sink NAME (help break)");
   diag::Result<int> made = diag::refusal("no place");  // every place below sets it
   std::string note;
   if (auto moment = readMomentPlace(run, place)) {
@@ -144,6 +146,8 @@ void CellConsole::breakCommand(std::string_view args) {
     const MomentPlace& m = **moment;
     if (m.kind == MomentPlace::Kind::Time) made = session_.breakAtTime(m.time);
     else if (m.kind == MomentPlace::Kind::When) made = session_.breakWhen(c, m.when);
+    else if (m.kind == MomentPlace::Kind::Collision) made = session_.breakOnCollision();
+    else if (m.kind == MomentPlace::Kind::Warning) made = session_.breakOnWarning();
     else made = session_.breakOnDevice(m.device);
   } else if (place.size() != 1) {
     return error(fmt::format("'{}' is not a place: LINE, FILE:LINE, ROBOT:LINE, at TIME, when COND, sensor NAME, "

@@ -8,6 +8,7 @@
 #include "base/seconds.h"
 #include "base/text.h"
 #include "vm/io_lines.h"
+#include "runtime/run/empty_close.h"
 #include "tools/debug/device_points.h"
 
 namespace rs::debug {
@@ -126,6 +127,18 @@ int CellSession::breakOnDevice(DevicePoint point) {
   return add(Breakpoint::Kind::Device, std::move(b));
 }
 
+int CellSession::breakOnCollision() {
+  CellBreakpoint b;
+  b.robot = current_;
+  return add(Breakpoint::Kind::Collision, std::move(b));
+}
+
+int CellSession::breakOnWarning() {
+  CellBreakpoint b;
+  b.robot = current_;
+  return add(Breakpoint::Kind::Warning, std::move(b));
+}
+
 bool CellSession::qualify(int id, std::optional<Condition> condition, std::optional<HitCondition> hits) {
   for (CellBreakpoint& b : breakpoints_)
     if (b.id == id) {
@@ -167,6 +180,8 @@ std::string CellSession::describe(const CellBreakpoint& b) const {
 // the clock (time breakpoints), each `when`'s truth, each watched value.
 struct CellSession::Probe {
   vm::Micros clock = 0;
+  std::size_t collisions = 0;     // of every robot
+  std::uint64_t emptyCloses = 0;  // in the cell's one world
   std::vector<bool> held;
   std::vector<std::int64_t> values;
 };
@@ -180,10 +195,40 @@ struct CellSession::Found {
 CellSession::Probe CellSession::probe() const {
   Probe p;
   p.clock = run_->clock();
+  p.collisions = probeCollisions();
+  if (const runtime::World* world = run_->robot(0).rig().world()) p.emptyCloses = world->emptyCloseCount();
   for (const CellBreakpoint& b : breakpoints_)
     p.held.push_back(b.kind == Breakpoint::Kind::When && b.when.holds(run_->robot(b.robot)));
   for (const CellWatch& w : watches_) p.values.push_back(valueOf(run_->robot(w.robot), w.what));
   return p;
+}
+
+std::size_t CellSession::probeCollisions() const {
+  std::size_t n = 0;
+  for (std::size_t r = 0; r < size(); ++r) n += run_->robot(r).rig().collisions().size();
+  return n;
+}
+
+// A collision's or a close on nothing's stop says it, as the run's report does, with its time.
+std::string CellSession::whatHappened(Breakpoint::Kind kind, const runtime::Run& stepped) const {
+  if (kind == Breakpoint::Kind::Collision) {
+    const runtime::Rig* latest = nullptr;  // the robot whose collision came last
+    for (std::size_t r = 0; r < size(); ++r) {
+      const runtime::Rig& rig = run_->robot(r).rig();
+      if (!rig.collisions().empty() && rig.collisionWatch() &&
+          (!latest || rig.collisions().back().at > latest->collisions().back().at))
+        latest = &rig;
+    }
+    if (latest) {
+      const runtime::CollisionEvent& e = latest->collisions().back();
+      return fmt::format("{} at {} s", latest->collisionWatch()->describe(e.contact), base::formatSeconds(e.at));
+    }
+  }
+  if (kind == Breakpoint::Kind::Warning && stepped.rig().world() && stepped.rig().cell()) {
+    const std::string nearest = runtime::emptyCloseText(stepped.rig().world()->lastEmptyClose(), *stepped.rig().cell());
+    return "a gripper closed on nothing" + (nearest.empty() ? std::string() : ": " + nearest);
+  }
+  return {};
 }
 
 CellSession::Found CellSession::matches(std::size_t robot, const Probe& before, bool counting) {
@@ -207,11 +252,17 @@ CellSession::Found CellSession::matches(std::size_t robot, const Probe& before, 
         at = std::any_of(events.begin(), events.end(), [&](const runtime::DeviceEvent& e) { return b.device.matches(e); });
         break;
       }
-      default: break;  // the one-robot session's kinds only
+      case Breakpoint::Kind::Collision: at = probeCollisions() > before.collisions; break;
+      case Breakpoint::Kind::Warning:
+        at = stepped.rig().world() && stepped.rig().world()->emptyCloseCount() > before.emptyCloses;
+        break;
     }
     if (!at || (b.condition && !b.condition->holds(own))) continue;
     if (counting && ++b.hitCount && b.hits && !b.hits->stopsAt(b.hitCount)) continue;
     f.ids.push_back(b.id);
+    if (std::string h = whatHappened(b.kind, stepped); !h.empty() &&
+        std::find(f.happened.begin(), f.happened.end(), h) == f.happened.end())
+      f.happened.push_back(std::move(h));
     if (b.kind == Breakpoint::Kind::Device)
       for (std::string& h : deviceHits(stepped, b.device))
         if (std::find(f.happened.begin(), f.happened.end(), h) == f.happened.end()) f.happened.push_back(std::move(h));

@@ -101,6 +101,12 @@ class CellSession {
   int breakWhen(std::size_t robot, Condition condition);
   /// After the step of any robot during which a device did what `point` says.
   int breakOnDevice(DevicePoint point);
+  /// After the step of any robot during which a robot collided (a cell run
+  /// with CollisionMode::Warn goes on after it; with Error, the default, the
+  /// collision ends the run there).
+  int breakOnCollision();
+  /// After the step of any robot during which a gripper closed on nothing.
+  int breakOnWarning();
   /// A condition (on breakpoint `id`'s robot) and a hit count for breakpoint `id`; false if none.
   bool qualify(int id, std::optional<Condition> condition, std::optional<HitCondition> hits);
   /// Stops when robot `robot`'s value `what` changes (after any robot's step).
@@ -163,6 +169,10 @@ class CellSession {
   /// forwards) counts hits and applies hit conditions.
   Found matches(std::size_t robot, const Probe& before, bool counting);
   Probe probe() const;
+  /// The collisions every robot has found so far.
+  std::size_t probeCollisions() const;
+  /// What a collision's or a warning's stop says happened (empty for the other kinds).
+  std::string whatHappened(Breakpoint::Kind kind, const runtime::Run& stepped) const;
   CellStop foundStop(std::size_t robot, const Found& found) const;
   CellStop forward(const runtime::CellUntil& limits, std::function<bool(std::size_t)> done);
   /// Why the current robot takes no step (its program has ended), or nullopt.

@@ -147,6 +147,10 @@ std::optional<diag::Result<MomentPlace>> readMomentPlace(const runtime::Run& run
     auto c = parseCondition(image, ioWords(joinedWords(place.subspan(1))));
     if (!c) return c.failure();
     m.kind = MomentPlace::Kind::When, m.when = *c;
+  } else if (place.size() == 1 && base::sameName(place[0], "collision")) {
+    m.kind = MomentPlace::Kind::Collision;
+  } else if (place.size() == 1 && base::sameName(place[0], "warning")) {
+    m.kind = MomentPlace::Kind::Warning;
   } else if (isDeviceWord(place[0]) && (place.size() > 1 || !runtime::labelInstruction(image, place[0]))) {
     auto point = parseDevicePoint(run, place);
     if (!point) return point.failure();

@@ -85,9 +85,10 @@ struct BreakWords {
 diag::Result<BreakWords> readBreak(const vm::Image& image, std::string_view args);
 /// A place both consoles take alike: `at TIME`, `when COND` (on the
 /// program of `run`), a device's event (`sensor NAME [on|off]`, `feeder
-/// NAME`, `sink NAME`, unless one word that is a label of the program).
+/// NAME`, `sink NAME`, unless one word that is a label of the program),
+/// `collision`, `warning`.
 struct MomentPlace {
-  enum class Kind : std::uint8_t { Time, When, Device };
+  enum class Kind : std::uint8_t { Time, When, Device, Collision, Warning };
   Kind kind = Kind::Time;
   vm::Micros time = 0;
   Condition when;

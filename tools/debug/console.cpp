@@ -138,11 +138,9 @@ void Console::breakCommand(std::string_view args) {
     const MomentPlace& m = **moment;
     if (m.kind == MomentPlace::Kind::Time) made = session_.breakAtTime(m.time);
     else if (m.kind == MomentPlace::Kind::When) made = session_.breakWhen(m.when);
+    else if (m.kind == MomentPlace::Kind::Collision) made = session_.breakOnCollision();
+    else if (m.kind == MomentPlace::Kind::Warning) made = session_.breakOnWarning();
     else made = session_.breakOnDevice(m.device);
-  } else if (place.size() == 1 && base::sameName(place[0], "collision")) {
-    made = session_.breakOnCollision();
-  } else if (place.size() == 1 && base::sameName(place[0], "warning")) {
-    made = session_.breakOnWarning();
   } else if (place.size() != 1) {
     return error(fmt::format("'{}' is not a place: LINE, LABEL, @N, at TIME, when COND, collision, warning, "
                              "sensor NAME, feeder NAME or sink NAME",
