@@ -33,6 +33,20 @@ inline std::string writeTwoRobotCell(rs::testing::TempDir& dir, const std::strin
                             "  ROBOT rhino-xr4 AT 3000 750 0 AS right PROGRAM r.rsp\n" + extra + "END\n");
 }
 
+/// gantry-cell's gantry (as `arm`) beside an XR-4 (`other`, a DELAY 1):
+/// the gantry lowers by 1100 counts, closes its gripper on nothing above
+/// a block and goes down 600 more into it (test_debug_cell_points.cpp
+/// works out the times). The cell's file.
+inline std::string writeGantryBeside(rs::testing::TempDir& dir) {
+  dir.write("arm.rsp", "        MOVETO -2800 2800 0 0\n        MOVE 0 0 1100 0\n        MOVE 0 0 0 100\n"
+                       "        MOVE 0 0 600 0\n        END\n");
+  dir.write("o.rsp", "        DELAY 1\n        END\n");
+  return dir.write("c.rsd", "WORKCELL gx\n  ROBOT gantry AT 0 1000 0 AS arm PROGRAM arm.rsp\n"
+                            "  ROBOT rhino-xr4 AT 3000 750 0 AS other PROGRAM o.rsp\n"
+                            "  OBJECT pallet AT 150 0 760\n  OBJECT block AT 200 30 700\n"
+                            "  OBJECT block AT 280 30 700\n  OBJECT pallet AT 610 0 260\nEND\n");
+}
+
 /// What the console printed after the `nth` command `command` (up to the next prompt).
 inline std::string afterCommand(const std::string& out, const std::string& command, std::size_t nth = 1) {
   std::size_t at = 0;

@@ -12,6 +12,7 @@
 
 #include <sstream>
 
+#include "tests/debug/cell_debug_util.h"
 #include "tests/debug/debug_test_util.h"
 #include "tools/dap/serve.h"
 #include "tools/wire/framing.h"
@@ -264,4 +265,35 @@ TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devic
   CHECK(responseTo(m, 17).at("body").at("value") == "on");
   CHECK(responseTo(m, 18).at("success") == false);
   CHECK(valueOf(responseTo(m, 19), "in 5") == "on");  // at the cell's present instant: the run stands there
+}
+
+// The collision and warning filters on a cell of several robots: the
+// gantry's close on nothing at 4.675 s and its fingers' collision, found in
+// its step 4.675-5.425 s (worked out in test_debug_cell_points.cpp), each
+// an exception stop of the whole cell; the cell goes on after them.
+TEST_CASE("dap cell: the collision and warning filters stop the cell as exceptions", "[debug][dap][cell-debug]") {
+  rs::testing::TempDir dir;
+  const std::string cell = debugtest::writeGantryBeside(dir);
+  const std::vector<Json> m = serveRequests({
+      request("initialize"),                                                                 // 1
+      request("launch", {{"cell", cell}, {"collisions", "warn"}}),                          // 2
+      request("setExceptionBreakpoints", {{"filters", {"collision", "warning", "nope"}}}),   // 3
+      request("configurationDone"),                                                          // 4
+      request("continue", {{"threadId", 1}}),                                                // 5
+      request("continue", {{"threadId", 1}}),                                                // 6
+      request("disconnect"),                                                                 // 7
+  });
+  REQUIRE(responseTo(m, 2).at("success") == true);
+  const Json& filters = responseTo(m, 3).at("body").at("breakpoints");
+  REQUIRE(filters.size() == 3);
+  CHECK(filters[0].at("verified") == true);
+  CHECK(filters[1].at("verified") == true);
+  CHECK(filters[2].at("verified") == false);
+  const std::vector<Json> stops = stoppedEvents(m);
+  REQUIRE(stops.size() == 2);
+  CHECK(stops[0].at("reason") == "exception");
+  CHECK(stops[0].at("text").get<std::string>().find("a gripper closed on nothing") != std::string::npos);
+  CHECK(stops[1].at("reason") == "exception");
+  CHECK(stops[1].at("text").get<std::string>().find("of robot 'arm' hits object 2 (block)") != std::string::npos);
+  CHECK(stops[1].at("threadId") == 1);
 }

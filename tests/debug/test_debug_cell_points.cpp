@@ -151,13 +151,7 @@ TEST_CASE("debug cell: break LABEL and @N, of the current robot or ROBOT:", "[de
 // swept check finds soon after 4.675 s: the stop after that step, at 5.425 s.
 TEST_CASE("debug cell: break warning and break collision on a cell of several robots", "[debug][cell-debug]") {
   rs::testing::TempDir dir;
-  dir.write("arm.rsp", "        MOVETO -2800 2800 0 0\n        MOVE 0 0 1100 0\n        MOVE 0 0 0 100\n"
-                       "        MOVE 0 0 600 0\n        END\n");
-  dir.write("o.rsp", "        DELAY 1\n        END\n");
-  const std::string cell = dir.write("c.rsd", "WORKCELL gx\n  ROBOT gantry AT 0 1000 0 AS arm PROGRAM arm.rsp\n"
-                                              "  ROBOT rhino-xr4 AT 3000 750 0 AS other PROGRAM o.rsp\n"
-                                              "  OBJECT pallet AT 150 0 760\n  OBJECT block AT 200 30 700\n"
-                                              "  OBJECT block AT 280 30 700\n  OBJECT pallet AT 610 0 260\nEND\n");
+  const std::string cell = debugtest::writeGantryBeside(dir);
   const auto r = debugtest::runCellDebugger(cell, "break warning\nbreak collision\ncontinue\ncontinue\nreverse-continue\n",
                                             {"--collisions", "warn"});
   INFO(r.out << r.err);

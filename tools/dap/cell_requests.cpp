@@ -111,14 +111,18 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
   if (command == "setDataBreakpoints") return cellSetDataBreakpoints(args);
   if (command == "setExceptionBreakpoints") {
     stopOnDeadlock_ = stopOnRuntimeError_ = stopOnLimit_ = false;
+    for (int id : exceptionBreakpoints_) cell_->remove(id);
+    exceptionBreakpoints_.clear();
     Json out = Json::array();
     for (const Json& f : args.value("filters", Json::array())) {
       const std::string name = f.is_string() ? f.get<std::string>() : f.dump();
       if (name == "deadlock") stopOnDeadlock_ = true;
       else if (name == "runtimeError") stopOnRuntimeError_ = true;
       else if (name == "limit") stopOnLimit_ = true;
+      else if (name == "collision") exceptionBreakpoints_.push_back(cell_->breakOnCollision());
+      else if (name == "warning") exceptionBreakpoints_.push_back(cell_->breakOnWarning());
       else {
-        out.push_back({{"verified", false}, {"message", "not in a cell of several robots yet: deadlock, runtimeError, limit"}});
+        out.push_back({{"verified", false}, {"message", "no such filter: deadlock, runtimeError, limit, collision, warning"}});
         continue;
       }
       out.push_back({{"verified", true}});
@@ -343,15 +347,20 @@ void Adapter::reportCellStop(const debug::CellStop& stop) {
     if (stop.finished()) body["text"] = stop.message;
     event("stopped", std::move(body));
   };
-  // A device's or label's breakpoint is the client's function breakpoint (a line's too: the line's reason).
-  const bool atLine = std::any_of(cellBreakpoints_.begin(), cellBreakpoints_.end(), [&stop](const std::vector<int>& ids) {
+  const auto among = [&stop](const std::vector<int>& ids) {
     return std::any_of(ids.begin(), ids.end(), [&stop](int id) {
       return std::find(stop.breakpoints.begin(), stop.breakpoints.end(), id) != stop.breakpoints.end();
     });
-  });
-  const bool atDevice = std::any_of(functionBreakpoints_.begin(), functionBreakpoints_.end(), [&stop](int id) {
-    return std::find(stop.breakpoints.begin(), stop.breakpoints.end(), id) != stop.breakpoints.end();
-  });
+  };
+  // The collision and warning filters' stops are exceptions, as for one robot.
+  if (!stop.finished() && among(exceptionBreakpoints_)) {
+    Json body = {{"reason", "exception"}, {"threadId", stop.robot + 1}, {"allThreadsStopped", true},
+                 {"description", stop.message}, {"text", stop.message}, {"hitBreakpointIds", stop.breakpoints}};
+    return event("stopped", std::move(body));
+  }
+  // A device's or label's breakpoint is the client's function breakpoint (a line's too: the line's reason).
+  const bool atLine = std::any_of(cellBreakpoints_.begin(), cellBreakpoints_.end(), among);
+  const bool atDevice = among(functionBreakpoints_);
   if (!stop.finished() && atDevice && !atLine) return stopped("function breakpoint");
   if (!stop.finished()) return stopped(vm::adapterReason(stop.reason));
   if (stop.reason == StopReason::End) {
