@@ -7,6 +7,7 @@
 // changes). Breakpoints and watches share one numbering, as in gdb.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -63,5 +64,14 @@ std::string stopText(const std::vector<int>& ids, const std::function<std::optio
 diag::Result<Breakpoint> labelBreakpoint(const vm::Image& image, std::string_view label);
 /// Before instruction `index` (0-based; messages number from 1, as disasm).
 diag::Result<Breakpoint> instructionBreakpoint(const vm::Image& image, std::uint32_t index);
+
+/// Erases the item of `items` (breakpoints or watches) whose id is `id`; false when there is none.
+template <class T>
+bool eraseId(std::vector<T>& items, int id) {
+  const auto at = std::find_if(items.begin(), items.end(), [id](const T& x) { return x.id == id; });
+  if (at == items.end()) return false;
+  items.erase(at);
+  return true;
+}
 
 }  // namespace rs::debug

@@ -154,17 +154,7 @@ int CellSession::watch(std::size_t robot, Expression what) {
   return watches_.back().id;
 }
 
-bool CellSession::remove(int id) {
-  const auto b = std::find_if(breakpoints_.begin(), breakpoints_.end(), [id](const CellBreakpoint& x) { return x.id == id; });
-  if (b != breakpoints_.end()) {
-    breakpoints_.erase(b);
-    return true;
-  }
-  const auto w = std::find_if(watches_.begin(), watches_.end(), [id](const CellWatch& x) { return x.id == id; });
-  if (w == watches_.end()) return false;
-  watches_.erase(w);
-  return true;
-}
+bool CellSession::remove(int id) { return eraseId(breakpoints_, id) || eraseId(watches_, id); }
 
 std::string CellSession::describe(const CellBreakpoint& b) const {
   if (b.inProgram()) return fmt::format("{} {}", fileName(b.robot), b.describe());

@@ -152,17 +152,7 @@ int DebugSession::watch(Expression what) {
   return watches_.back().id;
 }
 
-bool DebugSession::remove(int id) {
-  const auto bp = std::find_if(breakpoints_.begin(), breakpoints_.end(), [id](const Breakpoint& b) { return b.id == id; });
-  if (bp != breakpoints_.end()) {
-    breakpoints_.erase(bp);
-    return true;
-  }
-  const auto w = std::find_if(watches_.begin(), watches_.end(), [id](const Watch& x) { return x.id == id; });
-  if (w == watches_.end()) return false;
-  watches_.erase(w);
-  return true;
-}
+bool DebugSession::remove(int id) { return eraseId(breakpoints_, id) || eraseId(watches_, id); }
 
 void DebugSession::removeAll() {
   breakpoints_.clear();
