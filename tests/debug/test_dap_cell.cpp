@@ -12,6 +12,7 @@
 
 #include <sstream>
 
+#include "tests/debug/cell_debug_util.h"
 #include "tests/debug/debug_test_util.h"
 #include "tools/dap/serve.h"
 #include "tools/wire/framing.h"
@@ -186,4 +187,113 @@ TEST_CASE("dap cell: gotoTime and reverseContinue put the whole cell back", "[de
   CHECK(stops[4].at("reason") == "breakpoint");
   CHECK(stops[4].at("allThreadsStopped") == true);
   CHECK(valueOf(responseTo(m, 11), "time") == "4.250 s");  // right's clock: the cell's one
+}
+
+// A cell of several robots with devices (tests/debug/programs/belt_pair.rsd,
+// worked out at the top of tests/debug/test_debug_cell_devices.cpp): the
+// beam's ON edge at 1.5 s stops the cell with left's second MOVE at 2 s,
+// as a function breakpoint; left's TURNS changes with its ADD at 4.25 s, a
+// data breakpoint; reverseContinue goes back to the beam's stop, where
+// the Devices scope shows what it showed going forwards.
+TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devices scope", "[debug][dap][cell-debug]") {
+  const std::string cell = rendertest::kSourceDir + "/tests/debug/programs/belt_pair.rsd";
+  const std::vector<Json> m = serveRequests({
+      request("initialize"),                                                                           // 1
+      request("launch", {{"cell", cell},
+                         {"programs", {{"left", kTwo + "left.rsp"}, {"right", kTwo + "right.rsp"}}}}),  // 2
+      request("setFunctionBreakpoints",
+              {{"breakpoints", {{{"name", "sensor eye on"}}, {{"name", "again"}, {"condition", "TURNS = 5"}},
+                                {{"name", "sensor nope"}}}}}),  // 3: left's again never with TURNS 5
+      request("dataBreakpointInfo", {{"name", "TURNS"}, {"variablesReference", 1001}}),                // 4
+      request("dataBreakpointInfo", {{"name", "time"}, {"variablesReference", 1004}}),                 // 5
+      request("setDataBreakpoints", {{"breakpoints", {{{"dataId", "1:TURNS"}}, {{"dataId", "9:TURNS"}}}}}),  // 6
+      request("configurationDone"),                                                                    // 7
+      request("scopes", {{"frameId", 1000}}),                                                          // 8
+      request("variables", {{"variablesReference", 1005}}),                                            // 9
+      request("continue", {{"threadId", 1}}),                                                          // 10
+      request("stepOut", {{"threadId", 1}}),                                                           // 11
+      request("reverseContinue", {{"threadId", 1}}),                                                   // 12
+      request("variables", {{"variablesReference", 2005}}),                                            // 13
+      request("evaluate", {{"expression", "devices"}, {"frameId", 2000}}),                             // 14
+      request("evaluate", {{"expression", "objects"}, {"frameId", 2000}}),                             // 15
+      request("setVariable", {{"variablesReference", 1003}, {"name", "in 2"}, {"value", "on"}}),      // 16
+      request("setVariable", {{"variablesReference", 1003}, {"name", "in 5"}, {"value", "on"}}),      // 17
+      request("setVariable", {{"variablesReference", 1001}, {"name", "TURNS"}, {"value", "3"}}),      // 18
+      request("variables", {{"variablesReference", 1003}}),                                            // 19
+      request("disconnect"),                                                                           // 20
+  });
+  REQUIRE(responseTo(m, 2).at("success") == true);
+  const Json& fb = responseTo(m, 3).at("body").at("breakpoints");
+  REQUIRE(fb.size() == 3);
+  CHECK(fb[0].at("verified") == true);
+  CHECK(fb[1].at("verified") == true);  // a label of the current thread's robot, left: line 7 of left.rsp
+  CHECK(fb[1].at("line") == 7);
+  CHECK(fb[1].at("source").at("name") == "left.rsp");
+  CHECK(fb[2].at("verified") == false);
+  CHECK(fb[2].at("message").get<std::string>().find("its sensors are eye") != std::string::npos);
+  CHECK(responseTo(m, 4).at("body").at("dataId") == "1:TURNS");
+  CHECK(responseTo(m, 5).at("body").at("dataId").is_null());  // the clock cannot be watched
+  const Json& db = responseTo(m, 6).at("body").at("breakpoints");
+  REQUIRE(db.size() == 2);
+  CHECK(db[0].at("verified") == true);
+  CHECK(db[1].at("verified") == false);  // no thread 9
+  const std::vector<Json> stops = stoppedEvents(m);
+  REQUIRE(stops.size() == 3);
+  CHECK(stops[0].at("reason") == "function breakpoint");
+  CHECK(stops[0].at("threadId") == 1);
+  CHECK(stops[0].at("description") == "breakpoint 1 (sensor eye ON): sensor eye ON at 1.500 s");
+  const Json& scopes = responseTo(m, 8).at("body").at("scopes");
+  REQUIRE(scopes.size() == 5);
+  CHECK(scopes[4].at("name") == "Devices");
+  CHECK(valueOf(responseTo(m, 9), "sensor eye") == "OFF, turned ON 1 time");
+  CHECK(valueOf(responseTo(m, 9), "block (object 2)") == "at (-540.000, 500.000, 2870.000), riding belt");
+  CHECK(stops[1].at("reason") == "data breakpoint");
+  CHECK(stops[1].at("description") == "watch 3: TURNS of left changed from 0 to 1");  // ids 1 and 2: the function breakpoints
+  CHECK(responseTo(m, 11).at("success") == false);  // left is in no subroutine
+  CHECK(stops[2].at("reason") == "function breakpoint");
+  // Right's view of the same devices, back at 2 s.
+  CHECK(valueOf(responseTo(m, 13), "block (object 2)") == "at (-540.000, 500.000, 2870.000), riding belt");
+  // evaluate answers a whole scope as for one robot, with the thread's Devices scope to open (no Objects scope here).
+  const Json& devices = responseTo(m, 14).at("body");
+  CHECK(devices.at("result").get<std::string>().starts_with("sensor eye = OFF, turned ON 1 time, conveyor belt = "));
+  CHECK(devices.at("variablesReference") == 2005);
+  CHECK(responseTo(m, 15).at("body").at("result") == "1 conveyor, 2 block");
+  CHECK(responseTo(m, 15).at("body").at("variablesReference") == 0);
+  // setVariable: an input as the terminal's set input (a stimulus now); left's input 2 is the beam's wire: refused.
+  CHECK(responseTo(m, 16).at("success") == false);
+  CHECK(responseTo(m, 16).at("message").get<std::string>().find("is wired") != std::string::npos);
+  CHECK(responseTo(m, 17).at("body").at("value") == "on");
+  CHECK(responseTo(m, 18).at("success") == false);
+  CHECK(valueOf(responseTo(m, 19), "in 5") == "on");  // at the cell's present instant: the run stands there
+}
+
+// The collision and warning filters on a cell of several robots: the
+// gantry's close on nothing at 4.675 s and its fingers' collision, found in
+// its step 4.675-5.425 s (worked out in test_debug_cell_points.cpp), each
+// an exception stop of the whole cell; the cell goes on after them.
+TEST_CASE("dap cell: the collision and warning filters stop the cell as exceptions", "[debug][dap][cell-debug]") {
+  rs::testing::TempDir dir;
+  const std::string cell = debugtest::writeGantryBeside(dir);
+  const std::vector<Json> m = serveRequests({
+      request("initialize"),                                                                 // 1
+      request("launch", {{"cell", cell}, {"collisions", "warn"}}),                          // 2
+      request("setExceptionBreakpoints", {{"filters", {"collision", "warning", "nope"}}}),   // 3
+      request("configurationDone"),                                                          // 4
+      request("continue", {{"threadId", 1}}),                                                // 5
+      request("continue", {{"threadId", 1}}),                                                // 6
+      request("disconnect"),                                                                 // 7
+  });
+  REQUIRE(responseTo(m, 2).at("success") == true);
+  const Json& filters = responseTo(m, 3).at("body").at("breakpoints");
+  REQUIRE(filters.size() == 3);
+  CHECK(filters[0].at("verified") == true);
+  CHECK(filters[1].at("verified") == true);
+  CHECK(filters[2].at("verified") == false);
+  const std::vector<Json> stops = stoppedEvents(m);
+  REQUIRE(stops.size() == 2);
+  CHECK(stops[0].at("reason") == "exception");
+  CHECK(stops[0].at("text").get<std::string>().find("a gripper closed on nothing") != std::string::npos);
+  CHECK(stops[1].at("reason") == "exception");
+  CHECK(stops[1].at("text").get<std::string>().find("of robot 'arm' hits object 2 (block)") != std::string::npos);
+  CHECK(stops[1].at("threadId") == 1);
 }

@@ -23,6 +23,7 @@
 #include "launch/cell_programs.h"
 #include "launch/run_request.h"
 #include "tests/cli/cli_support.h"
+#include "tests/debug/cell_debug_util.h"
 #include "tests/debug/debug_test_util.h"
 #include "tools/debug/cell_session.h"
 
@@ -31,26 +32,10 @@ namespace {
 const std::string kInterlock = debugtest::kExamples + "two_robots/interlock.rsd";
 
 rs::testing::CliResult debugCell(const std::string& commands, std::vector<std::string> extra = {}) {
-  rs::testing::TempDir dir;
-  const std::string file = dir.write("session.cmds", commands);
-  std::vector<std::string> args = {"debug", "--cell", kInterlock};
-  args.insert(args.end(), extra.begin(), extra.end());
-  args.push_back("-x");
-  args.push_back(file);
-  return rs::testing::runCli(args);
+  return debugtest::runCellDebugger(kInterlock, commands, std::move(extra));
 }
 
-// What the console printed after the command `command` (up to the next prompt).
-std::string after(const std::string& out, const std::string& command, std::size_t nth = 1) {
-  std::size_t at = 0;
-  for (std::size_t i = 0; i < nth; ++i) {
-    at = out.find("(rsdb) " + command + "\n", at);
-    if (at == std::string::npos) return "(command not found: " + command + ")";
-    at += 8 + command.size();
-  }
-  const std::size_t end = out.find("(rsdb) ", at);
-  return out.substr(at, end == std::string::npos ? std::string::npos : end - at);
-}
+using debugtest::afterCommand;
 
 }  // namespace
 
@@ -62,27 +47,27 @@ TEST_CASE("debug cell: every robot is a thread, breakpoints per file, a stop sto
   CHECK(r.err.empty());
   CHECK(r.out.find("robotsim debug: cell interlock, 2 robots with programs") != std::string::npos);
   // Before anything ran: both at their first instruction.
-  CHECK(after(r.out, "info threads") == "  id  robot            program              where\n"
+  CHECK(afterCommand(r.out, "info threads") == "  id  robot            program              where\n"
                                         "* 1   left             left.rsp             line 6 @1, step 0\n"
                                         "  2   right            right.rsp            line 4 @1, step 0\n");
-  CHECK(after(r.out, "break right.rsp:6") == "breakpoint 1: right.rsp line 6 (robot right)\n");
+  CHECK(afterCommand(r.out, "break right.rsp:6") == "breakpoint 1: right.rsp line 6 (robot right)\n");
   // right reaches its first MOVE when its WAITFOR ends at 2 s; the stop makes right the current robot.
-  CHECK(after(r.out, "continue") == "breakpoint 1 (right.rsp line 6)\nright: line 6 @3, step 2, clock 2.000 s\n"
+  CHECK(afterCommand(r.out, "continue") == "breakpoint 1 (right.rsp line 6)\nright: line 6 @3, step 2, clock 2.000 s\n"
                                     "    6 |         MOVE 300 0 0 0 0 0\n");
   // One step of right is its 1 s move; left waits meanwhile.
-  CHECK(after(r.out, "step") == "right: line 7 @4, step 3, clock 3.000 s\n    7 |         MOVE -300 0 0 0 0 0\n");
-  CHECK(after(r.out, "print motors").starts_with("F = 300\nE = 0\n"));
-  CHECK(after(r.out, "thread left").starts_with("thread 1 (left): line 10 @5, step 4, clock 3.000 s\n"));
-  CHECK(after(r.out, "print clock") == "clock = 3.000 s (step 4 of left)\n");
-  CHECK(after(r.out, "info threads", 2).find("* 1   left             left.rsp             line 10 @5, step 4, in the "
+  CHECK(afterCommand(r.out, "step") == "right: line 7 @4, step 3, clock 3.000 s\n    7 |         MOVE -300 0 0 0 0 0\n");
+  CHECK(afterCommand(r.out, "print motors").starts_with("F = 300\nE = 0\n"));
+  CHECK(afterCommand(r.out, "thread left").starts_with("thread 1 (left): line 10 @5, step 4, clock 3.000 s\n"));
+  CHECK(afterCommand(r.out, "print clock") == "clock = 3.000 s (step 4 of left)\n");
+  CHECK(afterCommand(r.out, "info threads", 2).find("* 1   left             left.rsp             line 10 @5, step 4, in the "
                                              "instruction under way\n") != std::string::npos);
   // left's WAITFOR ends at 4.25 (right's OUT 1 at 4, the wire's AFTER 0.25).
-  CHECK(after(r.out, "continue", 2) == "breakpoint 2 (left.rsp line 11)\nleft: line 11 @6, step 5, clock 4.250 s\n"
+  CHECK(afterCommand(r.out, "continue", 2) == "breakpoint 2 (left.rsp line 11)\nleft: line 11 @6, step 5, clock 4.250 s\n"
                                        "   11 |         OUTSIG 1 OFF\n");
-  CHECK(after(r.out, "info breakpoints").find("2   break left.rsp line 11 (robot left, reached 1 time)") != std::string::npos);
+  CHECK(afterCommand(r.out, "info breakpoints").find("2   break left.rsp line 11 (robot left, reached 1 time)") != std::string::npos);
   // right's second pass reaches its line 6 first, when its IN 1 comes on at 6.25 (left's OUT 1 at 6.25, no
   // AFTER): its tenth step (SET, WAITFOR, MOVE, MOVE, OUTSIG, WAITFOR, OUTSIG, ADD, JMPVAR, WAITFOR).
-  CHECK(after(r.out, "until 100").starts_with("breakpoint 1 (right.rsp line 6)\nright: line 6 @3, step 10, clock 6.250 s\n"));
+  CHECK(afterCommand(r.out, "until 100").starts_with("breakpoint 1 (right.rsp line 6)\nright: line 6 @3, step 10, clock 6.250 s\n"));
 }
 
 TEST_CASE("debug cell: reverse-step, reverse-continue and goto-time put the whole cell back", "[debug][cell-debug]") {
@@ -91,40 +76,40 @@ TEST_CASE("debug cell: reverse-step, reverse-continue and goto-time put the whol
                            "reverse-step\ninfo threads\nreverse-step\nreverse-step\ngoto-time 100\nthread 7\n");
   INFO(r.out << r.err);
   CHECK(r.code == 0);
-  CHECK(after(r.out, "continue", 2).starts_with("breakpoint 2 (left.rsp line 11)\nleft: line 11 @6, step 5, clock 4.250 s\n"));
+  CHECK(afterCommand(r.out, "continue", 2).starts_with("breakpoint 2 (left.rsp line 11)\nleft: line 11 @6, step 5, clock 4.250 s\n"));
   // The last moment before 4.25 s a breakpoint would have stopped: right's at 2 s.
-  CHECK(after(r.out, "reverse-continue") == "breakpoint 1 (right.rsp line 6)\nright: line 6 @3, step 2, clock 2.000 s\n"
+  CHECK(afterCommand(r.out, "reverse-continue") == "breakpoint 1 (right.rsp line 6)\nright: line 6 @3, step 2, clock 2.000 s\n"
                                             "    6 |         MOVE 300 0 0 0 0 0\n");
-  CHECK(after(r.out, "goto-time 2.5").starts_with("at 2.500 s\nright: line 6 @3, step 2, clock 2.500 s\n"));
+  CHECK(afterCommand(r.out, "goto-time 2.5").starts_with("at 2.500 s\nright: line 6 @3, step 2, clock 2.500 s\n"));
   // Half way through right's move 2-3 s; left stands at home, waiting since 2 s.
-  CHECK(after(r.out, "print motors").starts_with("F = 150\n"));
-  CHECK(after(r.out, "print motors", 2).starts_with("F = 0\n"));
+  CHECK(afterCommand(r.out, "print motors").starts_with("F = 150\n"));
+  CHECK(afterCommand(r.out, "print motors", 2).starts_with("F = 0\n"));
   // left is inside its WAITFOR (step 4 done): back one puts it just before it, at 2 s.
-  CHECK(after(r.out, "reverse-step").starts_with("left: line 10 @5, step 4, clock 2.000 s\n"));
+  CHECK(afterCommand(r.out, "reverse-step").starts_with("left: line 10 @5, step 4, clock 2.000 s\n"));
   // right at 2 s, before its WAITFOR ended (step 1 done, at 0 s): its first reverse-step goes there.
-  CHECK(after(r.out, "reverse-step", 2).starts_with("right: line 5 @2, step 1, clock 0.000 s\n"));
-  CHECK(after(r.out, "reverse-step", 3).starts_with("at the start of the run\nright: line 4 @1, step 0, clock 0.000 s\n"));
-  CHECK(after(r.out, "reverse-step", 4).starts_with("already at the start of the run\n"));
+  CHECK(afterCommand(r.out, "reverse-step", 2).starts_with("right: line 5 @2, step 1, clock 0.000 s\n"));
+  CHECK(afterCommand(r.out, "reverse-step", 3).starts_with("at the start of the run\nright: line 4 @1, step 0, clock 0.000 s\n"));
+  CHECK(afterCommand(r.out, "reverse-step", 4).starts_with("already at the start of the run\n"));
   // At 0 s, after right's SET: left ran first (the cell's order) and is in its first move.
-  CHECK(after(r.out, "info threads").find("  1   left             left.rsp             line 7 @2, step 1, in the "
+  CHECK(afterCommand(r.out, "info threads").find("  1   left             left.rsp             line 7 @2, step 1, in the "
                                           "instruction under way\n") != std::string::npos);
-  CHECK(after(r.out, "goto-time 100").starts_with("every program ended before 100.000 s\n"));
-  CHECK(after(r.out, "thread 7").starts_with("error: no robot '7' in the cell: its robots are left, right"));
+  CHECK(afterCommand(r.out, "goto-time 100").starts_with("every program ended before 100.000 s\n"));
+  CHECK(afterCommand(r.out, "thread 7").starts_with("error: no robot '7' in the cell: its robots are left, right"));
 }
 
 TEST_CASE("debug cell: bad places and commands get one message and the session goes on", "[debug][cell-debug]") {
   const auto r = debugCell("break middle.rsp:3\nbreak 400\nbreak left.rsp:x\nfly\nstep 0\ninfo\nstep\n");
   INFO(r.out << r.err);
   CHECK(r.code == 0);
-  CHECK(after(r.out, "break middle.rsp:3") ==
+  CHECK(afterCommand(r.out, "break middle.rsp:3") ==
         "error: 'middle.rsp' names no robot of the cell and none of its programs: left (left.rsp), right (right.rsp)\n");
-  CHECK(after(r.out, "break 400") == "error: no instruction on line 400 of left.rsp or after it\n");
-  CHECK(after(r.out, "break left.rsp:x").starts_with("error: 'left.rsp:x' is not a line"));
-  CHECK(after(r.out, "fly").starts_with("error: unknown command 'fly'"));
-  CHECK(after(r.out, "step 0").starts_with("error: '0' is not a count"));
-  CHECK(after(r.out, "info").starts_with("error: info what?"));
+  CHECK(afterCommand(r.out, "break 400") == "error: no instruction on line 400 of left.rsp or after it\n");
+  CHECK(afterCommand(r.out, "break left.rsp:x").starts_with("error: 'left.rsp:x' is not a line"));
+  CHECK(afterCommand(r.out, "fly").starts_with("error: unknown command 'fly'"));
+  CHECK(afterCommand(r.out, "step 0").starts_with("error: '0' is not a count"));
+  CHECK(afterCommand(r.out, "info").starts_with("error: info what?"));
   // Still at the start: left's first step is its SET at 0 s.
-  CHECK(after(r.out, "step") == "left: line 7 @2, step 1, clock 0.000 s\n    7 | again:  MOVE 300 0 0 0 0 0      ; reach into the shared space ...\n");
+  CHECK(afterCommand(r.out, "step") == "left: line 7 @2, step 1, clock 0.000 s\n    7 | again:  MOVE 300 0 0 0 0 0      ; reach into the shared space ...\n");
 }
 
 TEST_CASE("debug cell: a program that does not compile is an error at its line, nothing is debugged",
@@ -192,8 +177,8 @@ TEST_CASE("debug cell: next steps the current robot over a GOSUB while the other
   INFO(r.out << r.err);
   CHECK(r.code == 0);
   // GOSUB, MOVE, MOVE, RETURN: 4 steps of left.
-  CHECK(after(r.out, "next") == "left: line 2 @2, step 4, clock 2.000 s\n    2 |         END\n");
-  CHECK(after(r.out, "info threads").find("  2   right            r.rsp                line 1 @1, step 0, in the "
+  CHECK(afterCommand(r.out, "next") == "left: line 2 @2, step 4, clock 2.000 s\n    2 |         END\n");
+  CHECK(afterCommand(r.out, "info threads").find("  2   right            r.rsp                line 1 @1, step 0, in the "
                                           "instruction under way\n") != std::string::npos);
 }
 
@@ -211,15 +196,15 @@ TEST_CASE("debug cell: a deadlock across robots stops the cell and can be gone b
                                       dir.write("s.cmds", "continue\ninfo threads\nthread right\nreverse-step\nstep\n")});
   INFO(r.out << r.err);
   CHECK(r.code == 0);
-  const std::string stop = after(r.out, "continue");
+  const std::string stop = afterCommand(r.out, "continue");
   CHECK(stop.starts_with("deadlock: left waits at "));
   CHECK(stop.find("l.rsp:1 for input 1 (wired from right.OUT 1); right waits at ") != std::string::npos);
   CHECK(stop.find("left: line 1 @1, step 0, clock 1.000 s (the run is over)\n") != std::string::npos);
-  CHECK(after(r.out, "info threads").find("  2   right            r.rsp                line 2 @2, step 1, stopped with "
+  CHECK(afterCommand(r.out, "info threads").find("  2   right            r.rsp                line 2 @2, step 1, stopped with "
                                           "the cell\n") != std::string::npos);
   // right's one step done was its DELAY (0-1 s): back before it, the start.
-  CHECK(after(r.out, "reverse-step").starts_with("at the start of the run\nright: line 1 @1, step 0, clock 0.000 s\n"));
-  CHECK(after(r.out, "step") == "right: line 2 @2, step 1, clock 1.000 s\n    2 |         WAITFOR 1 ON\n");
+  CHECK(afterCommand(r.out, "reverse-step").starts_with("at the start of the run\nright: line 1 @1, step 0, clock 0.000 s\n"));
+  CHECK(afterCommand(r.out, "step") == "right: line 2 @2, step 1, clock 1.000 s\n    2 |         WAITFOR 1 ON\n");
 }
 
 // A long run asks the interrupt (Ctrl-C at the terminal, the client's

@@ -310,10 +310,8 @@ Adapter::Reply Adapter::setBreakpoints(const Json& args) {
   return Json{{"breakpoints", out}};
 }
 
-std::string Adapter::qualify(int id, const Json& b) {
-  const vm::Image& image = *session_->run().spec().image;
-  std::optional<debug::Condition> condition;
-  std::optional<debug::HitCondition> hits;
+std::string Adapter::qualifiers(const Json& b, const vm::Image& image, std::optional<debug::Condition>& condition,
+                               std::optional<debug::HitCondition>& hits) {
   if (const std::string c = stringArg(b, "condition"); !c.empty()) {
     auto parsed = debug::parseCondition(image, debug::ioWords(c));
     if (!parsed) return parsed.failure().message;
@@ -324,6 +322,13 @@ std::string Adapter::qualify(int id, const Json& b) {
     if (!parsed) return parsed.failure().message;
     hits = *parsed;
   }
+  return {};
+}
+
+std::string Adapter::qualify(int id, const Json& b) {
+  std::optional<debug::Condition> condition;
+  std::optional<debug::HitCondition> hits;
+  if (std::string problem = qualifiers(b, *session_->run().spec().image, condition, hits); !problem.empty()) return problem;
   session_->qualify(id, condition, hits);
   return {};
 }

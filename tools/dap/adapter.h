@@ -91,6 +91,10 @@ class Adapter {
   /// A breakpoint's condition and hitCondition (DAP's fields) on session
   /// breakpoint `id`: the problem with them, or "" when they are set.
   std::string qualify(int id, const Json& breakpoint);
+  /// A breakpoint's condition and hitCondition, read on `image`'s program:
+  /// what is wrong with them, else empty.
+  static std::string qualifiers(const Json& breakpoint, const vm::Image& image, std::optional<debug::Condition>& condition,
+                                std::optional<debug::HitCondition>& hits);
   /// Lines and columns as the client counts them (from 1 or from 0), and back.
   std::int64_t clientLine(std::uint32_t line) const { return std::int64_t{line} - 1 + lineBase_; }
   std::int64_t clientColumn(std::uint32_t column) const { return std::int64_t{column} - 1 + columnBase_; }
@@ -107,6 +111,21 @@ class Adapter {
   Reply cellScopes(const Json& args);
   Reply cellVariables(const Json& args);
   Reply cellEvaluate(const Json& args);
+  /// The variablesReference of each scope that evaluate answers a whole
+  /// scope with (0: the client has no such scope to open).
+  struct ScopeRefs {
+    std::int64_t variables = 0, motors = 0, io = 0, objects = 0, devices = 0;
+  };
+  /// What evaluate answers for `text` on `run` as `view` shows it (one
+  /// robot's, or one robot of a cell's).
+  static Reply evaluateIn(const runtime::Run& run, const runtime::RunView& view, std::string_view text, const ScopeRefs& refs);
+  Reply cellSetFunctionBreakpoints(const Json& args);
+  Reply cellSetVariable(const Json& args);
+  /// setVariable's `in N` = on|off on `image`'s program: the input and its value, or what is wrong.
+  static std::optional<Error> inputSetting(const vm::Image& image, const std::string& name, std::string_view typed,
+                                           int& input, bool& on);
+  Reply cellDataBreakpointInfo(const Json& args);
+  Reply cellSetDataBreakpoints(const Json& args);
   /// The robot a request's threadId names (the current one without it); nullopt: none.
   std::optional<std::size_t> cellThread(const Json& args) const;
   void reportCellStop(const debug::CellStop& stop);

@@ -15,17 +15,14 @@
 #include "base/text.h"
 #include "launch/cell_programs.h"
 #include "tools/dap/adapter.h"
+#include "tools/dap/scopes.h"
+#include "tools/debug/device_points.h"
 #include "vm/disasm.h"
 #include "vm/io_lines.h"
 
 namespace rs::dap {
 
 namespace {
-
-// A frame id and a scope's variablesReference carry their thread: thread
-// t's frame d is t * kPerThread + d, its scope s t * kPerThread + s.
-constexpr std::int64_t kPerThread = 1000;
-enum CellScope : std::int64_t { kCellVariables = 1, kCellMotors, kCellIo, kCellClock };
 
 std::string programPath(const std::string& file) {
   std::error_code ec;
@@ -109,16 +106,23 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
     return Json{{"threads", threads}};
   }
   if (command == "setBreakpoints") return cellSetBreakpoints(args);
+  if (command == "setFunctionBreakpoints") return cellSetFunctionBreakpoints(args);
+  if (command == "dataBreakpointInfo") return cellDataBreakpointInfo(args);
+  if (command == "setDataBreakpoints") return cellSetDataBreakpoints(args);
   if (command == "setExceptionBreakpoints") {
     stopOnDeadlock_ = stopOnRuntimeError_ = stopOnLimit_ = false;
+    for (int id : exceptionBreakpoints_) cell_->remove(id);
+    exceptionBreakpoints_.clear();
     Json out = Json::array();
     for (const Json& f : args.value("filters", Json::array())) {
       const std::string name = f.is_string() ? f.get<std::string>() : f.dump();
       if (name == "deadlock") stopOnDeadlock_ = true;
       else if (name == "runtimeError") stopOnRuntimeError_ = true;
       else if (name == "limit") stopOnLimit_ = true;
+      else if (name == "collision") exceptionBreakpoints_.push_back(cell_->breakOnCollision());
+      else if (name == "warning") exceptionBreakpoints_.push_back(cell_->breakOnWarning());
       else {
-        out.push_back({{"verified", false}, {"message", "not in a cell of several robots yet: deadlock, runtimeError, limit"}});
+        out.push_back({{"verified", false}, {"message", "no such filter: deadlock, runtimeError, limit, collision, warning"}});
         continue;
       }
       out.push_back({{"verified", true}});
@@ -141,12 +145,9 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
     return Json(nullptr);
   }
   if (command == "pause") return Json(nullptr);  // a stopped cell stays stopped
-  const bool moves = command == "continue" || command == "next" || command == "stepIn" || command == "stepBack" ||
-                     command == "reverseContinue" || command == "gotoTime";
-  if (command == "setVariable" || command == "stepOut" || command == "setFunctionBreakpoints" ||
-      command == "setDataBreakpoints" || command == "dataBreakpointInfo")
-    return Error{fmt::format("{} is not offered on a cell of several robots yet: debug one robot's program "
-                             "(program, cell and its robot) for it", command)};
+  const bool moves = command == "continue" || command == "next" || command == "stepIn" || command == "stepOut" ||
+                     command == "stepBack" || command == "reverseContinue" || command == "gotoTime";
+  if (command == "setVariable") return cellSetVariable(args);
   if (!moves) return Error{fmt::format("unknown request '{}'", base::safeText(command.substr(0, 60)))};
   if (state_ == State::Launched) return Error{fmt::format("{} before configurationDone", command)};
   if (state_ == State::Terminated) return Error{fmt::format("{}: the debug session has been terminated", command)};
@@ -164,9 +165,9 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
     };
     return Json(nullptr);
   }
-  if (command == "next" || command == "stepIn") {
+  if (command == "next" || command == "stepIn" || command == "stepOut") {
     cell_->select(*thread);
-    auto r = command == "next" ? cell_->next() : cell_->step();
+    auto r = command == "next" ? cell_->next() : command == "stepOut" ? cell_->finish() : cell_->step();
     if (!r) return Error{r.failure().message};
     pending_ = [this, stop = *r] { reportCellStop(stop); };  // the step has run: its response still goes first
     return Json(nullptr);
@@ -174,7 +175,7 @@ Adapter::Reply Adapter::cellDispatch(const std::string& command, const Json& arg
   cell_->select(*thread);
   pending_ = [this, command] {
     if (command == "continue") reportCellStop(cell_->resume());
-    else if (command == "stepBack") reportCellStop(cell_->reverseStep());
+    else if (command == "stepBack") reportCellStop(cell_->reverseNext());  // over a GOSUB, as the one robot's
     else reportCellStop(cell_->reverseContinue());
   };
   if (command == "continue") return Json{{"allThreadsContinued", true}};
@@ -204,6 +205,15 @@ Adapter::Reply Adapter::cellSetBreakpoints(const Json& args) {
       out.push_back(result);
       continue;
     }
+    std::optional<debug::Condition> condition;
+    std::optional<debug::HitCondition> hits;
+    if (std::string problem = qualifiers(b, *cell_->cell().robot(p).spec().image, condition, hits); !problem.empty()) {
+      cell_->remove(*made);
+      result["message"] = std::move(problem);
+      out.push_back(result);
+      continue;
+    }
+    cell_->qualify(*made, condition, hits);
     cellBreakpoints_[p].push_back(*made);
     out.push_back({{"id", *made}, {"verified", true},
                    {"line", clientLine(cell_->lineWithCode(p, static_cast<std::uint32_t>(line)))}});
@@ -230,7 +240,7 @@ Adapter::Reply Adapter::cellStackTrace(const Json& args) {
   const auto column = [&](std::uint32_t instruction) {
     return clientColumn(image.columns.empty() ? 1 : image.columns[instruction]);
   };
-  const std::int64_t base = static_cast<std::int64_t>(p + 1) * kPerThread;
+  const std::int64_t base = static_cast<std::int64_t>(p + 1) * kCellPerThread;
   Json frames = Json::array();
   frames.push_back({{"id", base}, {"name", name(v.line, v.instruction)}, {"source", source},
                     {"line", clientLine(v.line)}, {"column", column(v.instruction)}});
@@ -243,42 +253,50 @@ Adapter::Reply Adapter::cellStackTrace(const Json& args) {
 
 Adapter::Reply Adapter::cellScopes(const Json& args) {
   const std::int64_t frame = args.at("frameId").get<std::int64_t>();
-  const std::int64_t thread = frame / kPerThread;
+  const std::int64_t thread = frame / kCellPerThread;
   if (thread < 1 || thread > static_cast<std::int64_t>(cell_->size())) return Error{fmt::format("no frame {}", frame)};
   const runtime::RunView v = cell_->view(static_cast<std::size_t>(thread - 1));
   const auto scope = [&](std::string_view name, std::int64_t kind, std::size_t count) {
-    return Json{{"name", name}, {"variablesReference", thread * kPerThread + kind}, {"namedVariables", count}, {"expensive", false}};
+    return Json{{"name", name}, {"variablesReference", thread * kCellPerThread + kind}, {"namedVariables", count}, {"expensive", false}};
   };
-  return Json{{"scopes", Json::array({scope("Variables", kCellVariables, v.variables.size()),
-                                      scope("Motors", kCellMotors, v.motors.size() + (v.tcp ? 1 : 0)),
-                                      scope("Inputs/Outputs", kCellIo, 2 * vm::kIoCount), scope("Clock", kCellClock, 2)})}};
+  Json scopes = Json::array({scope("Variables", kCellVariablesScope, v.variables.size()),
+                             scope("Motors", kCellMotorsScope, v.motors.size() + (v.tcp ? 1 : 0)),
+                             scope("Inputs/Outputs", kCellIoScope, 2 * vm::kIoCount), scope("Clock", kCellClockScope, 2)});
+  const runtime::Run& run = cell_->cell().robot(static_cast<std::size_t>(thread - 1));
+  if (const std::vector<debug::DeviceRow> rows = debug::deviceRows(run, v); !rows.empty())
+    scopes.push_back(scope("Devices", kCellDevicesScope, rows.size()));
+  return Json{{"scopes", scopes}};
 }
 
 Adapter::Reply Adapter::cellVariables(const Json& args) {
   const std::int64_t ref = args.at("variablesReference").get<std::int64_t>();
-  const std::int64_t thread = ref / kPerThread;
+  const std::int64_t thread = ref / kCellPerThread;
   if (thread < 1 || thread > static_cast<std::int64_t>(cell_->size()))
     return Error{fmt::format("no variables with reference {}", ref)};
   const auto p = static_cast<std::size_t>(thread - 1);
   const runtime::RunView v = cell_->view(p);
   const vm::Image& image = *cell_->cell().robot(p).spec().image;
   Json out = Json::array();
-  switch (ref % kPerThread) {
-    case kCellVariables:
+  switch (ref % kCellPerThread) {
+    case kCellVariablesScope:
       for (const auto& [name, value] : v.variables) out.push_back(cellVariable(base::safeText(name), std::to_string(value)));
       break;
-    case kCellMotors:
+    case kCellMotorsScope:
       for (std::size_t m = 0; m < v.motors.size(); ++m)
         out.push_back(cellVariable(std::string(1, image.motors[m].letter), std::to_string(v.motors[m])));
       if (v.tcp) out.push_back(cellVariable("TCP", fmt::format("({:.3f}, {:.3f}, {:.3f})", (*v.tcp)[0], (*v.tcp)[1], (*v.tcp)[2])));
       break;
-    case kCellIo:
+    case kCellIoScope:
       for (int i = 1; i <= vm::kIoCount; ++i) out.push_back(cellVariable(fmt::format("in {}", i), vm::lineIsOn(v.inputs, i) ? "on" : "off"));
       for (int i = 1; i <= vm::kIoCount; ++i) out.push_back(cellVariable(fmt::format("out {}", i), vm::lineIsOn(v.outputs, i) ? "on" : "off"));
       break;
-    case kCellClock:
+    case kCellClockScope:
       out.push_back(cellVariable("time", fmt::format("{} s", base::formatSeconds(v.clock))));
       out.push_back(cellVariable("steps", std::to_string(v.steps)));
+      break;
+    case kCellDevicesScope:
+      for (debug::DeviceRow& row : debug::deviceRows(cell_->cell().robot(p), v))
+        out.push_back(cellVariable(std::move(row.name), std::move(row.value)));
       break;
     default:
       return Error{fmt::format("no variables with reference {}", ref)};
@@ -286,22 +304,39 @@ Adapter::Reply Adapter::cellVariables(const Json& args) {
   return Json{{"variables", out}};
 }
 
+// An input of a thread's Inputs/Outputs, as the terminal's `set input N
+// on|off`: a stimulus at the cell's present moment (CellSession::setInput).
+Adapter::Reply Adapter::cellSetVariable(const Json& args) {
+  const std::int64_t ref = args.at("variablesReference").get<std::int64_t>();
+  const std::int64_t thread = ref / kCellPerThread;
+  if (thread < 1 || thread > static_cast<std::int64_t>(cell_->size()) || ref % kCellPerThread < 1 ||
+      ref % kCellPerThread > kCellLastScope)
+    return Error{fmt::format("no variables with reference {}", ref)};
+  if (ref % kCellPerThread != kCellIoScope)
+    return Error{"on a cell of several robots only inputs can be set: the variables, motors, clock and devices are the run's"};
+  const auto p = static_cast<std::size_t>(thread - 1);
+  const std::string value = args.at("value").get<std::string>();
+  int input = 0;
+  bool on = false;
+  if (auto bad = inputSetting(*cell_->cell().robot(p).spec().image, args.at("name").get<std::string>(),
+                              debug::trimmed(value), input, on))
+    return *bad;
+  if (auto problem = cell_->setInput(p, input, on)) return Error{*problem};
+  return Json{{"value", on ? "on" : "off"}, {"variablesReference", 0}};
+}
+
 // One value of a robot (the frame's thread, else the current robot): what the terminal's print takes.
 Adapter::Reply Adapter::cellEvaluate(const Json& args) {
   std::size_t p = cell_->current();
   if (args.contains("frameId")) {
-    const std::int64_t thread = args.at("frameId").get<std::int64_t>() / kPerThread;
+    const std::int64_t thread = args.at("frameId").get<std::int64_t>() / kCellPerThread;
     if (thread < 1 || thread > static_cast<std::int64_t>(cell_->size())) return Error{"no such frame"};
     p = static_cast<std::size_t>(thread - 1);
   }
-  const runtime::RunView v = cell_->view(p);
-  auto e = debug::parseExpression(*cell_->cell().robot(p).spec().image, debug::ioWords(args.at("expression").get<std::string>()));
-  if (!e) return Error{e.failure().message};
-  const std::int64_t value = debug::valueIn(v, *e);
-  std::string shown = std::to_string(value);
-  if (e->kind == debug::Expression::Kind::Input || e->kind == debug::Expression::Kind::Output) shown = value ? "on" : "off";
-  if (e->kind == debug::Expression::Kind::Clock) shown = fmt::format("{} s", base::formatSeconds(value));
-  return Json{{"result", shown}, {"variablesReference", 0}};
+  const std::int64_t base = static_cast<std::int64_t>(p + 1) * kCellPerThread;
+  const std::string asked = args.at("expression").get<std::string>();
+  return evaluateIn(cell_->cell().robot(p), cell_->view(p), debug::trimmed(asked),
+                    {base + kCellVariablesScope, base + kCellMotorsScope, base + kCellIoScope, 0, base + kCellDevicesScope});
 }
 
 void Adapter::reportCellStop(const debug::CellStop& stop) {
@@ -312,6 +347,21 @@ void Adapter::reportCellStop(const debug::CellStop& stop) {
     if (stop.finished()) body["text"] = stop.message;
     event("stopped", std::move(body));
   };
+  const auto among = [&stop](const std::vector<int>& ids) {
+    return std::any_of(ids.begin(), ids.end(), [&stop](int id) {
+      return std::find(stop.breakpoints.begin(), stop.breakpoints.end(), id) != stop.breakpoints.end();
+    });
+  };
+  // The collision and warning filters' stops are exceptions, as for one robot.
+  if (!stop.finished() && among(exceptionBreakpoints_)) {
+    Json body = {{"reason", "exception"}, {"threadId", stop.robot + 1}, {"allThreadsStopped", true},
+                 {"description", stop.message}, {"text", stop.message}, {"hitBreakpointIds", stop.breakpoints}};
+    return event("stopped", std::move(body));
+  }
+  // A device's or label's breakpoint is the client's function breakpoint (a line's too: the line's reason).
+  const bool atLine = std::any_of(cellBreakpoints_.begin(), cellBreakpoints_.end(), among);
+  const bool atDevice = among(functionBreakpoints_);
+  if (!stop.finished() && atDevice && !atLine) return stopped("function breakpoint");
   if (!stop.finished()) return stopped(vm::adapterReason(stop.reason));
   if (stop.reason == StopReason::End) {
     output("console", stop.message + "\n");

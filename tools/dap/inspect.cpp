@@ -139,9 +139,12 @@ Adapter::Reply Adapter::variables(const Json& args) {
 // client to open.
 Adapter::Reply Adapter::evaluate(const Json& args) {
   const std::string asked = args.at("expression").get<std::string>();
-  const std::string_view text = debug::trimmed(asked);
-  const runtime::RunView v = session_->view();
-  const vm::Image& image = *session_->run().spec().image;
+  return evaluateIn(session_->run(), session_->view(), debug::trimmed(asked), {kVariables, kMotors, kIo, kObjects, kDevices});
+}
+
+Adapter::Reply Adapter::evaluateIn(const runtime::Run& run, const runtime::RunView& v, std::string_view text,
+                                   const ScopeRefs& refs) {
+  const vm::Image& image = *run.spec().image;
   const auto listed = [](const std::vector<std::pair<std::string, std::string>>& items, int ref) {
     std::string shown;
     for (const auto& [name, value] : items) shown += fmt::format("{}{} = {}", shown.empty() ? "" : ", ", name, value);
@@ -151,13 +154,13 @@ Adapter::Reply Adapter::evaluate(const Json& args) {
     if (v.variables.empty()) return Error{"the program has no variables"};
     std::vector<std::pair<std::string, std::string>> items;
     for (const auto& [name, value] : v.variables) items.emplace_back(base::safeText(name), std::to_string(value));
-    return listed(items, kVariables);
+    return listed(items, refs.variables);
   }
   if (text == "motors") {
     std::vector<std::pair<std::string, std::string>> items;
     for (std::size_t m = 0; m < v.motors.size(); ++m)
       items.emplace_back(std::string(1, image.motors[m].letter), std::to_string(v.motors[m]));
-    return listed(items, kMotors);
+    return listed(items, refs.motors);
   }
   if (text == "tcp") {
     if (!v.tcp) return Error{"no tool centre point: the program runs without a workcell (cell)"};
@@ -170,7 +173,7 @@ Adapter::Reply Adapter::evaluate(const Json& args) {
       return s;
     };
     return Json{{"result", fmt::format("inputs 1-{0}:{1}, outputs 1-{0}:{2}", vm::kIoCount, bits(v.inputs), bits(v.outputs))},
-                {"variablesReference", kIo}};
+                {"variablesReference", refs.io}};
   }
   if (text == "objects") {
     if (v.objects.empty()) return Error{"no objects: the program runs without a workcell (cell), or it has none"};
@@ -178,13 +181,13 @@ Adapter::Reply Adapter::evaluate(const Json& args) {
     for (const runtime::ObjectView& o : v.objects)
       if (o.present)
         names += fmt::format("{}{} {}{}", names.empty() ? "" : ", ", o.number, base::safeText(o.name), o.held ? " (held)" : "");
-    return Json{{"result", names}, {"variablesReference", kObjects}};
+    return Json{{"result", names}, {"variablesReference", refs.objects}};
   }
   if (text == "devices") {
     std::vector<std::pair<std::string, std::string>> items;
-    for (debug::DeviceRow& row : debug::deviceRows(session_->run(), v)) items.emplace_back(std::move(row.name), std::move(row.value));
+    for (debug::DeviceRow& row : debug::deviceRows(run, v)) items.emplace_back(std::move(row.name), std::move(row.value));
     if (items.empty()) return Error{"no devices: the cell has no sensors, conveyors, feeders or sinks (or no workcell: cell)"};
-    return listed(items, kDevices);
+    return listed(items, refs.devices);
   }
   auto e = debug::parseExpression(image, debug::ioWords(text));
   if (!e) return Error{e.failure().message};
@@ -210,6 +213,17 @@ std::optional<bool> onOrOff(std::string_view text) {
 
 // A variable of the program, or an input (as the terminal's `set input N
 // on|off`): from this moment on, replayed going back and forth.
+std::optional<Adapter::Error> Adapter::inputSetting(const vm::Image& image, const std::string& name, std::string_view typed,
+                                                    int& input, bool& on) {
+  auto e = debug::parseExpression(image, name);
+  if (!e || e->kind != debug::Expression::Kind::Input)
+    return Error{fmt::format("only inputs can be set ('in 1'..'in {}'): outputs are the program's", vm::kIoCount)};
+  const std::optional<bool> value = onOrOff(typed);
+  if (!value) return Error{fmt::format("'{}': an input is on or off", base::safeText(typed.substr(0, 60)))};
+  input = static_cast<int>(e->index), on = *value;
+  return std::nullopt;
+}
+
 Adapter::Reply Adapter::setVariable(const Json& args) {
   const std::int64_t ref = args.at("variablesReference").get<std::int64_t>();
   const std::string name = args.at("name").get<std::string>();
@@ -224,13 +238,11 @@ Adapter::Reply Adapter::setVariable(const Json& args) {
     return Json{{"value", std::to_string(n)}, {"variablesReference", 0}};
   }
   if (ref == kIo) {
-    auto e = debug::parseExpression(*session_->run().spec().image, name);
-    if (!e || e->kind != debug::Expression::Kind::Input)
-      return Error{fmt::format("only inputs can be set ('in 1'..'in {}'): outputs are the program's", vm::kIoCount)};
-    const std::optional<bool> on = onOrOff(typed);
-    if (!on) return Error{fmt::format("'{}': an input is on or off", base::safeText(typed.substr(0, 60)))};
-    if (auto problem = session_->setInput(static_cast<int>(e->index), *on)) return Error{*problem};
-    return Json{{"value", *on ? "on" : "off"}, {"variablesReference", 0}};
+    int input = 0;
+    bool on = false;
+    if (auto bad = inputSetting(*session_->run().spec().image, name, typed, input, on)) return *bad;
+    if (auto problem = session_->setInput(input, on)) return Error{*problem};
+    return Json{{"value", on ? "on" : "off"}, {"variablesReference", 0}};
   }
   if (ref >= kMotors && ref <= kDevices)
     return Error{"only variables and inputs can be set: the motors, objects, clock and devices are the run's"};

@@ -7,11 +7,14 @@
 // changes). Breakpoints and watches share one numbering, as in gdb.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "diag/result.h"
 #include "tools/debug/device_points.h"
 #include "tools/debug/expression.h"
 
@@ -39,11 +42,36 @@ struct Breakpoint {
   std::string where() const;
   /// where() with " if N = 3" and " hits >= 2" when set.
   std::string describe() const;
+  /// It stands at a place in the program (a line, a label, an instruction).
+  bool inProgram() const { return kind == Kind::Line || kind == Kind::Label || kind == Kind::Instruction; }
 };
 
 struct Watch {
   int id = 0;
   Expression what;
 };
+
+/// What stopped a run, one line: "breakpoint 1 (line 6), watch 2: N changed
+/// from 0 to 1: sensor eye ON at 1.100 s". `ids`: the breakpoints' and
+/// watches' ids, in the order they were found; `describe(id)`: a
+/// breakpoint's description (nullopt: a watch, whose `notes` say in turn
+/// what changed); `happened`: what the devices did, after them.
+std::string stopText(const std::vector<int>& ids, const std::function<std::optional<std::string>(int)>& describe,
+                     const std::vector<std::string>& notes, const std::vector<std::string>& happened);
+
+/// A breakpoint before label `label` of `image`'s program (any case; its
+/// kind, place and instructions set, no id yet), or why there is none.
+diag::Result<Breakpoint> labelBreakpoint(const vm::Image& image, std::string_view label);
+/// Before instruction `index` (0-based; messages number from 1, as disasm).
+diag::Result<Breakpoint> instructionBreakpoint(const vm::Image& image, std::uint32_t index);
+
+/// Erases the item of `items` (breakpoints or watches) whose id is `id`; false when there is none.
+template <class T>
+bool eraseId(std::vector<T>& items, int id) {
+  const auto at = std::find_if(items.begin(), items.end(), [id](const T& x) { return x.id == id; });
+  if (at == items.end()) return false;
+  items.erase(at);
+  return true;
+}
 
 }  // namespace rs::debug

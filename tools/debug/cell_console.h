@@ -12,6 +12,7 @@
 
 #include "diag/source_file.h"
 #include "tools/debug/cell_session.h"
+#include "tools/debug/command_line.h"
 
 namespace rs::debug {
 
@@ -28,14 +29,15 @@ class CellConsole {
   static const std::vector<std::string>& commandNames();
 
  private:
-  struct Command;
   static const std::vector<Command>& commands();
-  void help(std::string_view topic);
   void breakCommand(std::string_view args);
   void deleteCommand(std::string_view args);
   void infoCommand(std::string_view args);
   void threadCommand(std::string_view args);
   void printCommand(std::string_view args);
+  void watchCommand(std::string_view args);
+  void setCommand(std::string_view args);
+  diag::Result<int> lineBreakpoint(std::string_view args, std::string& note);
   void listCommand(std::string_view args);
   void backtrace();
   void error(std::string_view message);

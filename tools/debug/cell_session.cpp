@@ -7,6 +7,9 @@
 
 #include "base/seconds.h"
 #include "base/text.h"
+#include "vm/io_lines.h"
+#include "runtime/run/empty_close.h"
+#include "tools/debug/device_points.h"
 
 namespace rs::debug {
 
@@ -62,6 +65,13 @@ std::uint32_t CellSession::lineWithCode(std::size_t robot, std::uint32_t line) c
   return best;
 }
 
+int CellSession::add(Breakpoint::Kind kind, CellBreakpoint b) {
+  b.id = nextId_++;
+  b.kind = kind;
+  breakpoints_.push_back(std::move(b));
+  return breakpoints_.back().id;
+}
+
 diag::Result<int> CellSession::breakAtLine(std::size_t robot, std::uint32_t line) {
   if (robot >= size()) return diag::refusal("no such robot");
   const std::uint32_t at = lineWithCode(robot, line);
@@ -69,33 +79,206 @@ diag::Result<int> CellSession::breakAtLine(std::size_t robot, std::uint32_t line
   if (at == 0)
     return diag::refusal(fmt::format("no instruction on line {} of {} or after it", line, fileName(robot)));
   CellBreakpoint b;
-  b.id = nextId_++;
   b.robot = robot;
   b.line = at;
   for (std::uint32_t i = 0; i < image.code.size(); ++i)
     if (image.lines[i] == at && (i == 0 || image.lines[i - 1] != at)) b.instructions.push_back(i);
-  breakpoints_.push_back(std::move(b));
-  return breakpoints_.back().id;
+  return add(Breakpoint::Kind::Line, std::move(b));
 }
 
-bool CellSession::remove(int id) {
-  const auto b = std::find_if(breakpoints_.begin(), breakpoints_.end(), [id](const CellBreakpoint& x) { return x.id == id; });
-  if (b == breakpoints_.end()) return false;
-  breakpoints_.erase(b);
-  return true;
+diag::Result<int> CellSession::breakAtLabel(std::size_t robot, std::string_view label) {
+  if (robot >= size()) return diag::refusal("no such robot");
+  return addOf(robot, labelBreakpoint(*run_->robot(robot).spec().image, label));
 }
 
-std::vector<int> CellSession::hits(std::size_t robot) const {
-  std::vector<int> ids;
-  const std::uint32_t pc = run_->robot(robot).interpreter().pc();
-  for (const CellBreakpoint& b : breakpoints_)
-    if (b.robot == robot && std::find(b.instructions.begin(), b.instructions.end(), pc) != b.instructions.end())
-      ids.push_back(b.id);
-  return ids;
+diag::Result<int> CellSession::breakAtInstruction(std::size_t robot, std::uint32_t index) {
+  if (robot >= size()) return diag::refusal("no such robot");
+  return addOf(robot, instructionBreakpoint(*run_->robot(robot).spec().image, index));
 }
+
+diag::Result<int> CellSession::addOf(std::size_t robot, diag::Result<Breakpoint> made) {
+  if (!made) return made.failure();
+  CellBreakpoint c;
+  static_cast<Breakpoint&>(c) = std::move(*made);
+  c.robot = robot;
+  const Breakpoint::Kind kind = c.kind;
+  return add(kind, std::move(c));
+}
+
+diag::Result<int> CellSession::breakAtTime(vm::Micros t) {
+  if (t < 0) return diag::refusal("a time is not negative");
+  CellBreakpoint b;
+  b.robot = current_;
+  b.time = t;
+  return add(Breakpoint::Kind::Time, std::move(b));
+}
+
+int CellSession::breakWhen(std::size_t robot, Condition condition) {
+  CellBreakpoint b;
+  b.robot = robot;
+  b.when = std::move(condition);
+  return add(Breakpoint::Kind::When, std::move(b));
+}
+
+int CellSession::breakOnDevice(DevicePoint point) {
+  CellBreakpoint b;
+  b.robot = current_;
+  b.device = std::move(point);
+  return add(Breakpoint::Kind::Device, std::move(b));
+}
+
+int CellSession::breakOnCollision() {
+  CellBreakpoint b;
+  b.robot = current_;
+  return add(Breakpoint::Kind::Collision, std::move(b));
+}
+
+int CellSession::breakOnWarning() {
+  CellBreakpoint b;
+  b.robot = current_;
+  return add(Breakpoint::Kind::Warning, std::move(b));
+}
+
+bool CellSession::qualify(int id, std::optional<Condition> condition, std::optional<HitCondition> hits) {
+  for (CellBreakpoint& b : breakpoints_)
+    if (b.id == id) {
+      b.condition = std::move(condition);
+      b.hits = hits;
+      return true;
+    }
+  return false;
+}
+
+int CellSession::watch(std::size_t robot, Expression what) {
+  watches_.push_back({nextId_++, robot, std::move(what)});
+  return watches_.back().id;
+}
+
+bool CellSession::remove(int id) { return eraseId(breakpoints_, id) || eraseId(watches_, id); }
 
 std::string CellSession::describe(const CellBreakpoint& b) const {
-  return fmt::format("{} line {}", fileName(b.robot), b.line);
+  if (b.inProgram()) return fmt::format("{} {}", fileName(b.robot), b.describe());
+  // A condition reads one robot's values: say whose.
+  if (b.kind == Breakpoint::Kind::When || b.condition)
+    return fmt::format("{} on {}", b.describe(), base::safeText(label(b.robot)));
+  return b.describe();
+}
+
+// --- where the cell stops -------------------------------------------------------
+
+// The values after the step before, for what stops as something changes:
+// the clock (time breakpoints), each `when`'s truth, each watched value.
+struct CellSession::Probe {
+  vm::Micros clock = 0;
+  std::size_t collisions = 0;     // of every robot
+  std::uint64_t emptyCloses = 0;  // in the cell's one world
+  std::vector<bool> held;
+  std::vector<std::int64_t> values;
+};
+
+struct CellSession::Found {
+  std::vector<int> ids;
+  std::vector<std::string> notes;     // the watches': what changed
+  std::vector<std::string> happened;  // the devices': what they did
+};
+
+CellSession::Probe CellSession::probe() const {
+  Probe p;
+  p.clock = run_->clock();
+  p.collisions = probeCollisions();
+  if (const runtime::World* world = run_->robot(0).rig().world()) p.emptyCloses = world->emptyCloseCount();
+  for (const CellBreakpoint& b : breakpoints_)
+    p.held.push_back(b.kind == Breakpoint::Kind::When && b.when.holds(run_->robot(b.robot)));
+  for (const CellWatch& w : watches_) p.values.push_back(valueOf(run_->robot(w.robot), w.what));
+  return p;
+}
+
+std::size_t CellSession::probeCollisions() const {
+  std::size_t n = 0;
+  for (std::size_t r = 0; r < size(); ++r) n += run_->robot(r).rig().collisions().size();
+  return n;
+}
+
+// A collision's or a close on nothing's stop says it, as the run's report does, with its time.
+std::string CellSession::whatHappened(Breakpoint::Kind kind, const runtime::Run& stepped) const {
+  if (kind == Breakpoint::Kind::Collision) {
+    const runtime::Rig* latest = nullptr;  // the robot whose collision came last
+    for (std::size_t r = 0; r < size(); ++r) {
+      const runtime::Rig& rig = run_->robot(r).rig();
+      if (!rig.collisions().empty() && rig.collisionWatch() &&
+          (!latest || rig.collisions().back().at > latest->collisions().back().at))
+        latest = &rig;
+    }
+    if (latest) {
+      const runtime::CollisionEvent& e = latest->collisions().back();
+      return fmt::format("{} at {} s", latest->collisionWatch()->describe(e.contact), base::formatSeconds(e.at));
+    }
+  }
+  if (kind == Breakpoint::Kind::Warning && stepped.rig().world() && stepped.rig().cell()) {
+    const std::string nearest = runtime::emptyCloseText(stepped.rig().world()->lastEmptyClose(), *stepped.rig().cell());
+    return "a gripper closed on nothing" + (nearest.empty() ? std::string() : ": " + nearest);
+  }
+  return {};
+}
+
+CellSession::Found CellSession::matches(std::size_t robot, const Probe& before, bool counting) {
+  Found f;
+  const runtime::Run& stepped = run_->robot(robot);
+  const std::uint32_t pc = stepped.interpreter().pc();
+  for (std::size_t i = 0; i < breakpoints_.size(); ++i) {
+    CellBreakpoint& b = breakpoints_[i];
+    const runtime::Run& own = run_->robot(b.robot);
+    bool at = false;
+    switch (b.kind) {
+      case Breakpoint::Kind::Line:
+      case Breakpoint::Kind::Label:
+      case Breakpoint::Kind::Instruction:
+        at = b.robot == robot && std::find(b.instructions.begin(), b.instructions.end(), pc) != b.instructions.end();
+        break;
+      case Breakpoint::Kind::Time: at = before.clock <= b.time && run_->clock() > b.time; break;
+      case Breakpoint::Kind::When: at = b.when.holds(own) && !(i < before.held.size() && before.held[i]); break;
+      case Breakpoint::Kind::Device: {
+        const auto events = stepped.rig().devicesOfLastStep();
+        at = std::any_of(events.begin(), events.end(), [&](const runtime::DeviceEvent& e) { return b.device.matches(e); });
+        break;
+      }
+      case Breakpoint::Kind::Collision: at = probeCollisions() > before.collisions; break;
+      case Breakpoint::Kind::Warning:
+        at = stepped.rig().world() && stepped.rig().world()->emptyCloseCount() > before.emptyCloses;
+        break;
+    }
+    if (!at || (b.condition && !b.condition->holds(own))) continue;
+    if (counting && ++b.hitCount && b.hits && !b.hits->stopsAt(b.hitCount)) continue;
+    f.ids.push_back(b.id);
+    if (std::string h = whatHappened(b.kind, stepped); !h.empty() &&
+        std::find(f.happened.begin(), f.happened.end(), h) == f.happened.end())
+      f.happened.push_back(std::move(h));
+    if (b.kind == Breakpoint::Kind::Device)
+      for (std::string& h : deviceHits(stepped, b.device))
+        if (std::find(f.happened.begin(), f.happened.end(), h) == f.happened.end()) f.happened.push_back(std::move(h));
+  }
+  for (std::size_t i = 0; i < watches_.size(); ++i) {
+    const std::int64_t now = valueOf(run_->robot(watches_[i].robot), watches_[i].what);
+    if (i < before.values.size() && now != before.values[i]) {
+      f.ids.push_back(watches_[i].id);
+      f.notes.push_back(fmt::format("{} of {} changed from {} to {}", base::safeText(watches_[i].what.name),
+                                    base::safeText(label(watches_[i].robot)), before.values[i], now));
+    }
+  }
+  return f;
+}
+
+CellStop CellSession::foundStop(std::size_t robot, const Found& found) const {
+  const bool onlyWatches = std::all_of(found.ids.begin(), found.ids.end(), [this](int id) {
+    return std::none_of(breakpoints_.begin(), breakpoints_.end(), [id](const CellBreakpoint& b) { return b.id == id; });
+  });
+  CellStop s{onlyWatches ? StopReason::Watch : StopReason::Breakpoint, {}, robot, found.ids};
+  s.message = stopText(found.ids, [this](int id) -> std::optional<std::string> {
+    for (const CellBreakpoint& b : breakpoints_)
+      if (b.id == id) return describe(b);
+    return std::nullopt;
+  }, found.notes, found.happened);
+  return s;
 }
 
 // --- stops ---------------------------------------------------------------------
@@ -124,7 +307,8 @@ CellStop CellSession::forward(const runtime::CellUntil& limits, std::function<bo
     return stopped(std::move(s));
   }
   at_.reset();
-  std::vector<int> ids;
+  Found found;
+  Probe before = probe();
   std::size_t who = current_;
   bool reached = false, interrupted = false;
   std::uint64_t sinceAsked = 0;
@@ -135,10 +319,10 @@ CellStop CellSession::forward(const runtime::CellUntil& limits, std::function<bo
       interrupted = true, who = p;
       return true;
     }
-    ids = hits(p);
-    for (CellBreakpoint& b : breakpoints_)
-      if (std::find(ids.begin(), ids.end(), b.id) != ids.end()) ++b.hitCount;
-    if (!ids.empty() || (done && done(p))) {
+    found = matches(p, before, true);
+    if (!watches_.empty() || !before.held.empty()) before = probe();
+    before.clock = run_->clock();
+    if (!found.ids.empty() || (done && done(p))) {
       reached = true, who = p;
       return true;
     }
@@ -146,36 +330,40 @@ CellStop CellSession::forward(const runtime::CellUntil& limits, std::function<bo
   };
   run_->runUntil(until);
   if (run_->finished()) return stopped(endStop());
-  if (!ids.empty()) {
-    CellStop s{StopReason::Breakpoint, {}, who, ids};
-    for (int id : ids)
-      for (const CellBreakpoint& b : breakpoints_)
-        if (b.id == id) s.message += fmt::format("{}breakpoint {} ({})", s.message.empty() ? "" : ", ", id, describe(b));
-    return stopped(std::move(s));
-  }
+  if (!found.ids.empty()) return stopped(foundStop(who, found));
   if (interrupted) return stopped({StopReason::Pause, "interrupted", who, {}});
   if (reached) return stopped({StopReason::Step, "step done", who, {}});
   at_ = limits.time;
   return stopped({StopReason::Time, fmt::format("at {} s", base::formatSeconds(limits.time)), current_, {}});
 }
 
+std::optional<std::string> CellSession::cannotStep() const {
+  if (run_->finished() || run_->end(current_) == runtime::RobotEnd::Running) return std::nullopt;
+  return fmt::format("robot {} has ended: choose another with thread LABEL, or continue", base::safeText(label(current_)));
+}
+
 diag::Result<CellStop> CellSession::step(std::uint64_t n) {
+  if (auto why = cannotStep()) return diag::refusal(*why);
   const std::size_t c = current_;
-  if (!run_->finished() && run_->end(c) != runtime::RobotEnd::Running)
-    return diag::refusal(fmt::format("robot {} has ended: choose another with thread LABEL, or continue",
-                                     base::safeText(label(c))));
   const std::uint64_t now = run_->robot(c).interpreter().steps();
   const std::uint64_t target = now + std::min(n, UINT64_MAX - now);
   return forward({}, [this, c, target](std::size_t p) { return p == c && run_->robot(c).interpreter().steps() >= target; });
 }
 
 diag::Result<CellStop> CellSession::next() {
+  if (auto why = cannotStep()) return diag::refusal(*why);
   const std::size_t c = current_;
-  if (!run_->finished() && run_->end(c) != runtime::RobotEnd::Running)
-    return diag::refusal(fmt::format("robot {} has ended: choose another with thread LABEL, or continue",
-                                     base::safeText(label(c))));
   const std::size_t depth = run_->robot(c).interpreter().callDepth();
   return forward({}, [this, c, depth](std::size_t p) { return p == c && run_->robot(c).interpreter().callDepth() <= depth; });
+}
+
+diag::Result<CellStop> CellSession::finish() {
+  if (auto why = cannotStep()) return diag::refusal(*why);
+  const std::size_t c = current_;
+  const std::size_t depth = run_->robot(c).interpreter().callDepth();
+  if (depth == 0 || run_->finished())
+    return diag::refusal(fmt::format("not in a subroutine: the call stack of {} is empty", base::safeText(label(c))));
+  return forward({}, [this, c, depth](std::size_t p) { return p == c && run_->robot(c).interpreter().callDepth() < depth; });
 }
 
 CellStop CellSession::resume() { return forward({}, nullptr); }
@@ -190,13 +378,8 @@ CellStop CellSession::until(vm::Micros t) {
 
 // --- backwards -----------------------------------------------------------------
 
-CellStop CellSession::reverseStep(std::uint64_t n) {
+CellStop CellSession::backTo(std::uint64_t target) {
   const std::size_t c = current_;
-  if (run_->steps() == 0 && !at_) return stopped({StopReason::Start, "already at the start of the run", c, {}});
-  const std::uint64_t k = run_->robot(c).interpreter().steps();
-  // Inside an instruction under way, the way back begins with it.
-  const std::uint64_t back = underWay(c) ? n - 1 : n;
-  const std::uint64_t target = k - std::min(back, k);
   restart();
   if (target > 0) {
     runtime::CellUntil until;
@@ -209,6 +392,38 @@ CellStop CellSession::reverseStep(std::uint64_t n) {
   return stopped({StopReason::Step, "step back done", c, {}});
 }
 
+CellStop CellSession::reverseStep(std::uint64_t n) {
+  const std::size_t c = current_;
+  if (run_->steps() == 0 && !at_) return stopped({StopReason::Start, "already at the start of the run", c, {}});
+  const std::uint64_t k = run_->robot(c).interpreter().steps();
+  // Inside an instruction under way, the way back begins with it.
+  const std::uint64_t back = underWay(c) ? n - 1 : n;
+  return backTo(k - std::min(back, k));
+}
+
+CellStop CellSession::reverseNext() {
+  const std::size_t c = current_;
+  if (run_->steps() == 0 && !at_) return stopped({StopReason::Start, "already at the start of the run", c, {}});
+  const std::uint64_t k = run_->robot(c).interpreter().steps();
+  const std::size_t depth = run_->robot(c).interpreter().callDepth();
+  // The moments before: after the robot's step j, j < k (from inside an instruction under way, j <= k).
+  const std::uint64_t last = underWay(c) ? k : (k > 0 ? k - 1 : 0);
+  std::uint64_t target = 0;
+  restart();
+  if (last > 0) {
+    runtime::CellUntil until;
+    until.afterStep = [&](const runtime::CellRun&, std::size_t p) {
+      if (p != c) return false;
+      const runtime::Run& r = run_->robot(c);
+      if (r.interpreter().steps() > last) return true;
+      if (r.interpreter().callDepth() <= depth) target = r.interpreter().steps();
+      return r.interpreter().steps() == last;
+    };
+    run_->runUntil(until);
+  }
+  return backTo(target);
+}
+
 CellStop CellSession::reverseContinue() {
   if (run_->steps() == 0 && !at_) return stopped({StopReason::Start, "already at the start of the run", current_, {}});
   // The present, to run the cell to again: a count of steps, or a time between two instants.
@@ -218,30 +433,29 @@ CellStop CellSession::reverseContinue() {
   struct Match {
     std::uint64_t steps = 0;
     std::size_t robot = 0;
-    std::vector<int> ids;
+    Found found;
   };
   std::optional<Match> last;
   restart();
+  Probe before = probe();
   runtime::CellUntil until;
   if (presentTime) until.time = *presentTime;
   else until.steps = present;
   until.afterStep = [&](const runtime::CellRun& cell, std::size_t p) {
     const std::uint64_t g = cell.steps();
     if (g < present || (pastLast && g == present))
-      if (std::vector<int> ids = hits(p); !ids.empty()) last = Match{g, p, std::move(ids)};
+      if (Found f = matches(p, before, false); !f.ids.empty()) last = Match{g, p, std::move(f)};
+    before = probe();
     return false;
   };
   run_->runUntil(until);
   restart();
-  if (!last) return stopped({StopReason::Start, "at the start of the run: no breakpoint stops before", current_, {}});
+  if (!last)
+    return stopped({StopReason::Start, "at the start of the run: no breakpoint or watch stops before", current_, {}});
   runtime::CellUntil to;
   to.steps = last->steps;
   run_->runUntil(to);
-  CellStop s{StopReason::Breakpoint, {}, last->robot, last->ids};
-  for (int id : last->ids)
-    for (const CellBreakpoint& b : breakpoints_)
-      if (b.id == id) s.message += fmt::format("{}breakpoint {} ({})", s.message.empty() ? "" : ", ", id, describe(b));
-  return stopped(std::move(s));
+  return stopped(foundStop(last->robot, last->found));
 }
 
 CellStop CellSession::gotoTime(vm::Micros t) {
@@ -256,6 +470,32 @@ CellStop CellSession::gotoTime(vm::Micros t) {
   }
   at_ = t;
   return stopped({StopReason::Time, fmt::format("at {} s", base::formatSeconds(t)), current_, {}});
+}
+
+std::optional<std::string> CellSession::setInput(std::size_t robot, int input, bool on) {
+  if (run_->finished()) return std::string("the run is over: go back first (reverse-step, goto-time)");
+  if (!vm::isIoLine(input)) return fmt::format("there is no input {}: inputs are 1..{}", input, vm::kIoCount);
+  const workcell::Workcell& cell = run_->cell();
+  const std::size_t index = run_->robot(robot).rig().robotIndex();
+  for (const workcell::Wire& w : cell.devices.wires)
+    if (w.input == input && (w.robot.empty() ? index == cell.drivenRobotIndex() : cell.robotLabeled(w.robot) == index))
+      return fmt::format("input {} of {} is wired (line {} of the cell): the wire drives it", input,
+                         base::safeText(label(robot)), w.pos.line);
+  stimuli::InputChange change;
+  change.at = clock();
+  change.input = input;
+  change.on = on;
+  change.robot = label(robot);
+  spec_.stimuli.changes.push_back(std::move(change));
+  // The same present again (the same steps done, the moment shown), with the change ahead of it.
+  const std::optional<vm::Micros> moment = at_;
+  const std::uint64_t present = run_->steps();
+  restart();
+  runtime::CellUntil until;
+  until.steps = present;
+  run_->runUntil(until);
+  at_ = moment;
+  return std::nullopt;
 }
 
 }  // namespace rs::debug

@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "diag/source_file.h"
+#include "tools/debug/command_line.h"
 #include "tools/debug/debug_session.h"
 
 namespace rs::debug {
@@ -29,9 +30,7 @@ class Console {
   static const std::vector<std::string>& commandNames();
 
  private:
-  struct Command;
   static const std::vector<Command>& commands();
-  void help(std::string_view topic);
   void breakCommand(std::string_view args);
   void deleteCommand(std::string_view args);
   void infoCommand(std::string_view args);

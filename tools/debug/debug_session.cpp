@@ -88,26 +88,15 @@ diag::Result<int> DebugSession::breakAtLine(std::uint32_t line) {
 }
 
 diag::Result<int> DebugSession::breakAtLabel(std::string_view label) {
-  const std::optional<std::uint32_t> at = runtime::labelInstruction(*run_->spec().image, label);
-  if (!at) return diag::refusal(fmt::format("the program has no label '{}'", base::safeText(label.substr(0, 60))));
-  Breakpoint b;
-  for (const vm::Label& l : run_->spec().image->labels)
-    if (base::sameName(run_->spec().image->labelName(l), label)) b.label = run_->spec().image->labelName(l);
-  b.instruction = *at;
-  b.line = run_->spec().image->lines[*at];
-  b.instructions = {*at};
-  return add(Breakpoint::Kind::Label, std::move(b));
+  auto b = labelBreakpoint(*run_->spec().image, label);
+  if (!b) return b.failure();
+  return add(Breakpoint::Kind::Label, std::move(*b));
 }
 
 diag::Result<int> DebugSession::breakAtInstruction(std::uint32_t index) {
-  const std::size_t size = run_->spec().image->code.size();
-  if (index >= size)
-    return diag::refusal(fmt::format("no instruction @{}: the program has @1 to @{}", index + 1, size));
-  Breakpoint b;
-  b.instruction = index;
-  b.line = run_->spec().image->lines[index];
-  b.instructions = {index};
-  return add(Breakpoint::Kind::Instruction, std::move(b));
+  auto b = instructionBreakpoint(*run_->spec().image, index);
+  if (!b) return b.failure();
+  return add(Breakpoint::Kind::Instruction, std::move(*b));
 }
 
 diag::Result<int> DebugSession::breakAtTime(vm::Micros t) {
@@ -163,17 +152,7 @@ int DebugSession::watch(Expression what) {
   return watches_.back().id;
 }
 
-bool DebugSession::remove(int id) {
-  const auto bp = std::find_if(breakpoints_.begin(), breakpoints_.end(), [id](const Breakpoint& b) { return b.id == id; });
-  if (bp != breakpoints_.end()) {
-    breakpoints_.erase(bp);
-    return true;
-  }
-  const auto w = std::find_if(watches_.begin(), watches_.end(), [id](const Watch& x) { return x.id == id; });
-  if (w == watches_.end()) return false;
-  watches_.erase(w);
-  return true;
-}
+bool DebugSession::remove(int id) { return eraseId(breakpoints_, id) || eraseId(watches_, id); }
 
 void DebugSession::removeAll() {
   breakpoints_.clear();
@@ -182,16 +161,12 @@ void DebugSession::removeAll() {
 
 // --- where the run stops ------------------------------------------------------
 
-namespace {
-
-// What the devices did that stopped the run, after the breakpoints named.
-std::string happenedText(const std::vector<std::string>& happened) {
-  std::string text;
-  for (const std::string& h : happened) text += (text.empty() ? ": " : ", ") + h;
-  return text;
+std::function<std::optional<std::string>(int)> DebugSession::describer() {
+  return [this](int id) -> std::optional<std::string> {
+    if (const Breakpoint* b = find(id)) return b->describe();
+    return std::nullopt;
+  };
 }
-
-}  // namespace
 
 // Does a breakpoint or watch stop the run at this moment (`before` holds
 // the moment before)? `counting`: going forwards, so hits count and hit
@@ -401,13 +376,7 @@ Stop DebugSession::forward(const Target& target) {
     const bool onlyWatches = std::none_of(ids.begin(), ids.end(), [this](int id) { return find(id) != nullptr; });
     s.reason = onlyWatches ? StopReason::Watch : StopReason::Breakpoint;
     s.breakpoints = ids;
-    std::vector<std::string> parts;
-    for (int id : ids)
-      if (const Breakpoint* b = find(id)) parts.push_back(fmt::format("breakpoint {} ({})", id, b->describe()));
-    for (std::size_t i = 0, w = 0; i < ids.size(); ++i)
-      if (!find(ids[i]) && w < notes.size()) parts.push_back(fmt::format("watch {}: {}", ids[i], notes[w++]));
-    for (const std::string& p : parts) s.message += (s.message.empty() ? "" : ", ") + p;
-    s.message += happenedText(happened);
+    s.message = stopText(ids, describer(), notes, happened);
     if (standAtCollision(ids)) s.message += ": " + collisionText();
   } else if (done || run_->interpreter().steps() >= target.steps) {
     s = {StopReason::Step, "step done", {}};
@@ -501,13 +470,7 @@ Stop DebugSession::reverseContinue() {
   const bool onlyWatches = std::none_of(foundIds.begin(), foundIds.end(), [this](int id) { return find(id) != nullptr; });
   s.reason = onlyWatches ? StopReason::Watch : StopReason::Breakpoint;
   s.breakpoints = foundIds;
-  for (std::size_t i = 0, w = 0; i < foundIds.size(); ++i) {
-    std::string part;
-    if (const Breakpoint* b = find(foundIds[i])) part = fmt::format("breakpoint {} ({})", foundIds[i], b->describe());
-    else if (w < foundNotes.size()) part = fmt::format("watch {}: {}", foundIds[i], foundNotes[w++]);
-    s.message += (s.message.empty() ? "" : ", ") + part;
-  }
-  s.message += happenedText(foundHappened);
+  s.message = stopText(foundIds, describer(), foundNotes, foundHappened);
   if (standAtCollision(foundIds)) s.message += ": " + collisionText();
   return stopped(std::move(s));
 }

@@ -178,6 +178,8 @@ class DebugSession {
   /// Breakpoint `b` of kind `kind` added with the next id: that id.
   int add(Breakpoint::Kind kind, Breakpoint b);
   Breakpoint* find(int id);
+  /// A breakpoint's description by id (stopText's); nullopt for a watch.
+  std::function<std::optional<std::string>(int)> describer();
 
   std::unique_ptr<runtime::Run> run_;
   std::unique_ptr<Timeline> timeline_;

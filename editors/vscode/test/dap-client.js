@@ -433,3 +433,44 @@ test('a cell of two robots: a thread per robot, every stop stops both, step back
     await dc.stop();
   }
 });
+
+// A cell of several robots with devices (tests/debug/programs/belt_pair.rsd,
+// its times worked out at the top of tests/debug/test_debug_cell_devices.cpp):
+// the beam's ON edge at 1.5 s, a device function breakpoint, stops the whole
+// cell with left's second MOVE at 2 s; the block is then 200 on from x -740;
+// left's TURNS, a data breakpoint, changes with its ADD at 4.25 s; going back
+// to the beam's stop shows the devices as they were.
+test('a cell of several robots with devices: threads, device and data breakpoints, the Devices scope', async () => {
+  const two = path.join(root, 'examples', 'two_robots');
+  const cell = path.join(root, 'tests', 'debug', 'programs', 'belt_pair.rsd');
+  const dc = await client();
+  try {
+    const { stop } = await started(dc, { cell, programs: { left: path.join(two, 'left.rsp'), right: path.join(two, 'right.rsp') } }, {
+      breakpoints: async (c) => {
+        const set = (await c.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'sensor eye on' }, { name: 'sensor lamp' }] }))
+          .body.breakpoints;
+        assert.deepEqual(set.map((b) => b.verified), [true, false]);
+      },
+    });
+    assert.equal(stop.body.reason, 'function breakpoint');
+    assert.equal(stop.body.threadId, 1);
+    assert.equal(stop.body.allThreadsStopped, true);
+    assert.equal(stop.body.description, 'breakpoint 1 (sensor eye ON): sensor eye ON at 1.500 s');
+    assert.deepEqual((await dc.threadsRequest()).body.threads.map((t) => t.name), ['left', 'right']);
+    const scopes = (await dc.scopesRequest({ frameId: 2000 })).body.scopes;  // right's frame
+    const devices = scopes.find((s) => s.name === 'Devices');
+    const rows = (await dc.variablesRequest({ variablesReference: devices.variablesReference })).body.variables;
+    assert.equal(rows.find((v) => v.name === 'block (object 2)').value, 'at (-540.000, 500.000, 2870.000), riding belt');
+    const info = (await dc.dataBreakpointInfoRequest({ variablesReference: 1001, name: 'TURNS' })).body;  // left's Variables
+    assert.equal(info.dataId, '1:TURNS');
+    await dc.setDataBreakpointsRequest({ breakpoints: [{ dataId: info.dataId }] });
+    const watched = await moved(dc, dc.continueRequest({ threadId: 1 }));
+    assert.equal(watched.body.reason, 'data breakpoint');
+    assert.match(watched.body.description, /TURNS of left changed from 0 to 1/);
+    const back = await moved(dc, dc.reverseContinueRequest({ threadId: 1 }));
+    assert.equal(back.body.reason, 'function breakpoint');
+    assert.deepEqual((await dc.variablesRequest({ variablesReference: devices.variablesReference })).body.variables, rows);
+  } finally {
+    await dc.stop();
+  }
+});
