@@ -276,6 +276,8 @@ void CellDevices::place(std::size_t o, const Eigen::Vector3d& shift) {
 
 void CellDevices::restore(const State& s) {
   state_ = s;
+  for (const auto& sight : sights_)
+    if (sight) sight->forget();
   nextSensor_ = s.sensorOn;
   events_.clear();
   fault_.reset();

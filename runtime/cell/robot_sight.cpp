@@ -182,27 +182,46 @@ std::optional<vm::Micros> RobotSight::search(const Probe& a, const Probe& b, con
   return search(m, b, start, at, budget, depth + 1);
 }
 
+bool RobotSight::remembers(const Last& last, vm::Micros from, vm::Micros to, const Probe& end,
+                           const std::optional<std::size_t>& carried) const {
+  if (last.to != to || from < last.from || (last.change && from >= *last.change) || last.carried != carried ||
+      last.end != end.encoders)
+    return false;
+  return !carried || last.offset == world_.heldOffset(robot_).affine();
+}
+
 std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at) {
   if (!matters_ || to <= from) return std::nullopt;
-  if (const std::optional<std::size_t> held = carriedPart()) {
+  const std::optional<std::size_t> held = carriedPart();
+  if (!held && !seesRobots_) return std::nullopt;  // nothing carried, and no sensor sees the robot
+  Probe& a = pool_[0];
+  Probe& b = pool_[1];
+  b.t = to;
+  b.encoders.assign(motors_, 0);
+  at(to, b.encoders);
+  if (last_ && remembers(*last_, from, to, b, held)) return last_->change;
+  if (held) {
     // How far the carried part's points lie from the tool centre point.
     const Eigen::AlignedBox3d box = workcell::boundsOf(cell_.objects[*held].shape);
     double reach = 0;
     for (int c = 0; c < 8; ++c)
       reach = std::max(reach, (world_.heldOffset(robot_) * box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c))).norm());
     model_->carriedWeights(reach, carried_);
-  } else if (!seesRobots_) {
-    return std::nullopt;  // nothing carried, and no sensor sees the robot
   } else {
     std::fill(carried_.begin(), carried_.end(), 0.0);
   }
-  Probe& a = pool_[0];
-  Probe& b = pool_[1];
+  look(b);
   probe(from, at, a);
-  probe(to, at, b);
   start_ = a.sees;
   int budget = kMaxProbes;
-  return search(a, b, start_, at, budget, 2);
+  const std::optional<vm::Micros> change = search(a, b, start_, at, budget, 2);
+  if (budget > 0) {
+    last_ = Last{from, to, change, b.encoders, held, Eigen::Matrix<double, 3, 4>::Zero()};
+    if (held) last_->offset = world_.heldOffset(robot_).affine();
+  } else {
+    last_.reset();
+  }
+  return change;
 }
 
 }  // namespace rs::runtime

@@ -48,6 +48,8 @@ class RobotSight {
   /// the microsecond it stopped at (a look there goes on from it).
   std::optional<vm::Micros> firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at);
   static constexpr int kMaxProbes = 20'000;
+  /// Forget the last search (the world or the motion was restored).
+  void forget() { last_.reset(); }
 
  private:
   struct Probe;
@@ -72,6 +74,20 @@ class RobotSight {
   std::vector<double> carried_;  // per motor: how far the carried part moves per count
   std::vector<Probe> pool_;      // per depth of the search: its look
   std::vector<bool> start_;
+  // The last search, whole (its budget not spent): what it found holds
+  // from any later start before its answer, in the same move (the same
+  // end, the motors there, the same part carried the same way), so the
+  // devices' wakes during a move ask again for nothing.
+  struct Last {
+    vm::Micros from = 0, to = 0;
+    std::optional<vm::Micros> change;
+    std::vector<std::int32_t> end;  // the motors at `to`
+    std::optional<std::size_t> carried;
+    Eigen::Matrix<double, 3, 4> offset;
+  };
+  bool remembers(const Last& last, vm::Micros from, vm::Micros to, const Probe& end,
+                 const std::optional<std::size_t>& carried) const;
+  std::optional<Last> last_;
 };
 
 }  // namespace rs::runtime
