@@ -60,6 +60,8 @@ class RobotSight {
   bool stays(const Probe& a, const Probe& b) const;
   std::optional<vm::Micros> search(const Probe& a, const Probe& b, const std::vector<bool>& start, const MotorsAt& at,
                                    int& budget, std::size_t depth);
+  std::optional<vm::Micros> locate(const Probe& a, const Probe& b, const std::vector<bool>& start, const MotorsAt& at,
+                                   int& budget);
   // Halvings of a move go at most this deep (2^62 microseconds).
   static constexpr std::size_t kDepth = 64;
 
@@ -73,6 +75,7 @@ class RobotSight {
   std::unique_ptr<workcell::CollisionData> data_;
   std::vector<double> carried_;  // per motor: how far the carried part moves per count
   std::vector<Probe> pool_;      // per depth of the search: its look
+  std::vector<Probe> guess_;     // locate's three: the low and high ends, the guess
   std::vector<bool> start_;
   // The last search, whole (its budget not spent): what it found holds
   // from any later start before its answer, in the same move (the same
