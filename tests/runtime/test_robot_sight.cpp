@@ -134,3 +134,41 @@ TEST_CASE("robot sight: a light curtain sees the second robot of a cell too", "[
   CHECK(summary.find("\"name\":\"a\",\"program\":\"" + dir.file("a.rsp") + "\",\"status\":\"finished\",\"time\":1.701") !=
         std::string::npos);
 }
+
+// The carried block lifted through a beam above it: it turns the beam ON
+// as its top passes and OFF as its bottom does, the OFF found from a look
+// that sees the block (RobotSight's search along the crossing face's gap).
+// The gantry cell above, the beam at y = 100.15 across the block's x.
+// The lift (the third motor, 800 counts/s, 0.1 per count) starts at
+// 5.1625 s (2.8 s over the block, 1.8625 s down, 0.5 s to close) with
+// the block at y 30..70: its top passes 100.15 at count 302 (top 100.2;
+// at 301 it is 100.1), 302 / 800 = 0.3775 s in: 5.540 s; its bottom at
+// count 702 (bottom 100.2; at 701, 100.1 still touches), 702 / 800 =
+// 0.8775 s in: 6.040 s.
+TEST_CASE("robot sight: a carried block lifted through a beam leaves it at the microsecond worked out by hand",
+          "[cell][devices]") {
+  rs::testing::TempDir dir;
+  dir.write("cell.rsd",
+            "WORKCELL lift\n"
+            "  ROBOT gantry    AT 0 1000 0\n"
+            "  OBJECT pallet   AT 150 0 760\n"
+            "  OBJECT block    AT 200 30 700\n"
+            "  SENSOR eye BEAM 220 100.15 600  220 100.15 760\n"
+            "  WIRE eye TO IN 1\n"
+            "END\n");
+  const std::string prog = dir.write("p.rsp",
+                                     "; cell: cell.rsd\n"
+                                     "        MOVETO -2800 2800 0 0\n"
+                                     "        MOVE 0 0 1490 0\n"
+                                     "        MOVE 0 0 0 100\n"
+                                     "        MOVE 0 0 -1490 0\n"
+                                     "        END\n");
+  const CliResult r = runCli({"run", prog, "--trace=json"});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("{\"event\":\"sensor\",\"time\":5.54,\"name\":\"eye\",\"on\":true") != std::string::npos);
+  CHECK(r.out.find("{\"event\":\"sensor\",\"time\":6.04,\"name\":\"eye\",\"on\":false") != std::string::npos);
+  const CliResult text = runCli({"run", prog, "--trace"});
+  CHECK(hasLine(text.out, "     5.540  sensor eye ON"));
+  CHECK(hasLine(text.out, "     6.040  sensor eye OFF"));
+}
