@@ -22,6 +22,23 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 bool seesParts(const workcell::Sensor& s) { return s.sees != workcell::Sensor::Sees::Robots; }
 bool seesRobot(const workcell::Sensor& s) { return s.sees != workcell::Sensor::Sees::Parts; }
 
+// Whether the arm's turns never change a point's height (y): every
+// revolute axis is vertical (turns about vertical axes keep them so), and
+// every sliding joint is driven by one motor, so a point's height moves
+// one way over a move, and a carried part's box keeps its height: a
+// SCARA's (the adept-one's).
+bool turnsKeepHeight(const workcell::CollisionModel& model, workcell::CollisionData& data, std::size_t motors) {
+  data.poseOnly(std::vector<std::int32_t>(motors, 0));
+  for (std::size_t j = 0; j < model.jointCount(); ++j) {
+    const Eigen::Vector3d axis = data.frame(j).linear().col(2);
+    if (model.revolute(j) ? std::abs(axis.y()) < 1 - 1e-12 : false) return false;
+    const auto rates = model.jointRates(j);
+    if (!model.revolute(j) && std::count_if(rates.begin(), rates.end(), [](double r) { return r != 0; }) > 1)
+      return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 // One look at the robot: its motors at time t, the box round the carried
@@ -43,6 +60,7 @@ RobotSight::RobotSight(const workcell::Workcell& cell, const World& world, std::
   model_ = std::make_unique<workcell::CollisionModel>(cell, robot);
   data_ = std::make_unique<workcell::CollisionData>(*model_);
   carried_.assign(motors_, 0.0);
+  levelTurns_ = turnsKeepHeight(*model_, *data_, motors_);
   pool_.resize(kDepth);
   guess_.resize(3);
   matters_ = model_->movable();
@@ -156,6 +174,21 @@ bool faceGaps(const workcell::Sensor& s, const Eigen::AlignedBox3d& b, std::arra
   return true;
 }
 
+// Per the last helper: the part's heights between two looks lie between
+// its heights at them, and the box keeps its height (all of it moves up or
+// down together), so `outer` and `inner` can be no looser in y than the
+// two boxes' hull and overlap (1e-9 of slack for rounding).
+void keepHeight(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, Eigen::AlignedBox3d& outer,
+                Eigen::AlignedBox3d& inner) {
+  constexpr double kSlack = 1e-9;
+  outer.min().y() = std::max(outer.min().y(), std::min(a.min().y(), b.min().y()) - kSlack);
+  outer.max().y() = std::min(outer.max().y(), std::max(a.max().y(), b.max().y()) + kSlack);
+  const double lo = std::max(a.min().y(), b.min().y()) + kSlack, hi = std::min(a.max().y(), b.max().y()) - kSlack;
+  if (inner.isEmpty() || lo > hi) return;
+  inner.min().y() = std::min(inner.min().y(), lo);
+  inner.max().y() = std::max(inner.max().y(), hi);
+}
+
 }  // namespace
 
 bool RobotSight::stays(const Probe& a, const Probe& b) const {
@@ -168,6 +201,7 @@ bool RobotSight::stays(const Probe& a, const Probe& b) const {
   }
   Eigen::AlignedBox3d outer, inner;
   if (!a.part.isEmpty()) carriedBounds(a.corners, b.corners, part, outer, inner);
+  if (levelTurns_ && !a.part.isEmpty()) keepHeight(a.part, b.part, outer, inner);
   const workcell::Devices& d = cell_.devices;
   for (std::size_t s = 0; s < d.sensors.size(); ++s) {
     const workcell::Sensor& sensor = d.sensors[s];

@@ -71,6 +71,7 @@ class RobotSight {
   std::size_t robot_;
   bool matters_ = false;
   bool seesRobots_ = false;
+  bool levelTurns_ = false;  // the arm's turns keep every height (a SCARA)
   std::unique_ptr<workcell::CollisionModel> model_;
   std::unique_ptr<workcell::CollisionData> data_;
   std::vector<double> carried_;  // per motor: how far the carried part moves per count
