@@ -9,7 +9,10 @@
 // round its two places: a part lifted straight up keeps its x and z):
 // a stretch whose boxes, grown (or shrunk) by that bound, cannot
 // change what a sensor sees is passed over whole; the others are halved,
-// down to one microsecond. Nothing is sampled and missed.
+// down to one microsecond. Nothing is sampled and missed. Faster, to the
+// same microsecond: a crossing sought along the crossing face's gap
+// first (locate), a SCARA's carried box keeping its height, and the last
+// search's answer given again to a wake later in the same move.
 #pragma once
 
 #include <cstdint>
