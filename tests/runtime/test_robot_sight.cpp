@@ -20,34 +20,41 @@ bool hasLine(const std::string& trace, const std::string& line) {
   return trace.find("\n" + line + "\n") != std::string::npos;
 }
 
+// The gantry over a block on a pallet, with the beam `beam` wired to
+// input 1; and the program's lines that take the block and lift it.
+std::string carryCell(const std::string& beam) {
+  return "WORKCELL carry\n"
+         "  ROBOT gantry    AT 0 1000 0\n"
+         "  OBJECT pallet   AT 150 0 760\n"
+         "  OBJECT block    AT 200 30 700\n"
+         "  SENSOR eye BEAM " + beam + "\n"
+         "  WIRE eye TO IN 1\n"
+         "END\n";
+}
+constexpr const char* kTakeAndLift =
+    "; cell: cell.rsd\n"
+    "        MOVETO -2800 2800 0 0\n"
+    "        MOVE 0 0 1490 0\n"
+    "        MOVE 0 0 0 100\n"
+    "        MOVE 0 0 -1490 0\n";
+
 }  // namespace robotsighttest
 
+using robotsighttest::carryCell;
 using robotsighttest::hasLine;
+using robotsighttest::kTakeAndLift;
 
 TEST_CASE("robot sight: a block the gripper carries breaks a beam at the microsecond worked out by hand",
           "[cell][devices]") {
   rs::testing::TempDir dir;
-  dir.write("cell.rsd",
-            "WORKCELL carry\n"
-            "  ROBOT gantry    AT 0 1000 0\n"
-            "  OBJECT pallet   AT 150 0 760\n"
-            "  OBJECT block    AT 200 30 700\n"
-            "  SENSOR eye BEAM 400 200 600  400 200 760\n"
-            "  WIRE eye TO IN 1\n"
-            "END\n");
+  dir.write("cell.rsd", carryCell("400 200 600  400 200 760"));
   // Over the block (2.8 s), down 1490 (1.8625 s), close (0.5 s), up
   // (1.8625 s): at 7.025 s the block (x 200..240, y 179..219 once lifted)
   // starts along +x at 100 mm/s. Its front face reaches the beam at
   // x = 400 after 1600 counts (7.025 + 1.600 = 8.625 s); its back face is
   // past it (x > 400) at count 2001 (200 + 200.1): 7.025 + 2.001 = 9.026 s.
-  const std::string prog = dir.write("p.rsp",
-                                     "; cell: cell.rsd\n"
-                                     "        MOVETO -2800 2800 0 0\n"
-                                     "        MOVE 0 0 1490 0\n"
-                                     "        MOVE 0 0 0 100\n"
-                                     "        MOVE 0 0 -1490 0\n"
-                                     "        MOVE 2800 0 0 0\n"
-                                     "        END\n");
+  const std::string prog =
+      dir.write("p.rsp", std::string(kTakeAndLift) + "        MOVE 2800 0 0 0\n        END\n");
   const CliResult r = runCli({"run", prog, "--trace"});
   INFO(r.out << r.err);
   REQUIRE(r.code == 0);
@@ -133,4 +140,29 @@ TEST_CASE("robot sight: a light curtain sees the second robot of a cell too", "[
   CHECK(summary.find("{\"name\":\"a\",\"program\"") != std::string::npos);
   CHECK(summary.find("\"name\":\"a\",\"program\":\"" + dir.file("a.rsp") + "\",\"status\":\"finished\",\"time\":1.701") !=
         std::string::npos);
+}
+
+// The carried block lifted through a beam above it: it turns the beam ON
+// as its top passes and OFF as its bottom does, the OFF found from a look
+// that sees the block (RobotSight's search along the crossing face's gap).
+// The gantry cell above, the beam at y = 100.15 across the block's x.
+// The lift (the third motor, 800 counts/s, 0.1 per count) starts at
+// 5.1625 s (2.8 s over the block, 1.8625 s down, 0.5 s to close) with
+// the block at y 30..70: its top passes 100.15 at count 302 (top 100.2;
+// at 301 it is 100.1), 302 / 800 = 0.3775 s in: 5.540 s; its bottom at
+// count 702 (bottom 100.2; at 701, 100.1 still touches), 702 / 800 =
+// 0.8775 s in: 6.040 s.
+TEST_CASE("robot sight: a carried block lifted through a beam leaves it at the microsecond worked out by hand",
+          "[cell][devices]") {
+  rs::testing::TempDir dir;
+  dir.write("cell.rsd", carryCell("220 100.15 600  220 100.15 760"));
+  const std::string prog = dir.write("p.rsp", std::string(kTakeAndLift) + "        END\n");
+  const CliResult r = runCli({"run", prog, "--trace=json"});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("{\"event\":\"sensor\",\"time\":5.54,\"name\":\"eye\",\"on\":true") != std::string::npos);
+  CHECK(r.out.find("{\"event\":\"sensor\",\"time\":6.04,\"name\":\"eye\",\"on\":false") != std::string::npos);
+  const CliResult text = runCli({"run", prog, "--trace"});
+  CHECK(hasLine(text.out, "     5.540  sensor eye ON"));
+  CHECK(hasLine(text.out, "     6.040  sensor eye OFF"));
 }
