@@ -33,7 +33,8 @@ CommandLine readCommand(std::string_view line, std::span<const Command> commands
   for (const Command& c : commands)
     if (c.is(word)) r.command = &c;
   if (!r.command) {
-    const std::string_view near = base::nearestName(word, commandNamesOf(commands));
+    const std::vector<std::string> names = commandNamesOf(commands);  // nearestName's answer points into it
+    const std::string_view near = base::nearestName(word, names);
     r.error = fmt::format("unknown command '{}'{}; help lists the commands", shownText(word),
                           near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near));
   }
