@@ -1,0 +1,213 @@
+// The belts' plan (devices.h, CellDevices::plan): who rides which running
+// belt from now, how far, and when a riding part next meets a sensor or a
+// sink, solved exactly on the microsecond clock.
+#include "runtime/cell/devices.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "runtime/cell/box_geometry.h"
+
+namespace rs::runtime {
+
+namespace {
+
+using workcell::Signal;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A part rests on a belt when its bottom is this near the belt's top (a
+// part let go 1 above the belt, as a gripper holding it 1 above its middle
+// does, rides it).
+constexpr double kRestTolerance = 1.0 + 1e-6;
+// Motion that never ends is solved for within this many seconds.
+constexpr double kHorizon = 1e9;
+
+struct Interval {
+  double from = kInf, to = -kInf;
+  bool empty() const { return from > to; }
+};
+
+// When, within [0, T], the box moving at w (from `box` at 0) meets the box `zone`.
+Interval zoneInterval(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& w, double T,
+                      const Eigen::AlignedBox3d& zone) {
+  Interval in{0, T};
+  for (int k = 0; k < 3; ++k) {
+    const double lo = zone.min()[k] - box.max()[k], hi = zone.max()[k] - box.min()[k];  // w_k τ in [lo, hi]
+    if (std::abs(w[k]) < 1e-15) {
+      if (lo > kTouch || hi < -kTouch) return {};
+      continue;
+    }
+    double t0 = lo / w[k], t1 = hi / w[k];
+    if (t0 > t1) std::swap(t0, t1);
+    in.from = std::max(in.from, t0), in.to = std::min(in.to, t1);
+  }
+  return in;
+}
+
+// When, within [0, T], the moving box meets the segment a..b: the τ range
+// of the polygon of (s, τ) with a + s(b - a) - wτ in the box, 0 <= s <= 1
+// (its extremes are at vertices of the constraints' lines).
+Interval beamInterval(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& w, double T, const Eigen::Vector3d& a,
+                      const Eigen::Vector3d& b) {
+  struct Half {
+    double s, t, c;  // s·S + t·τ <= c
+  };
+  // On the stack, and a vertex given up at its first broken constraint:
+  // every wake plans every moving part against every beam.
+  std::array<Half, 10> h;
+  const Eigen::Vector3d e = b - a;
+  for (int k = 0; k < 3; ++k) {
+    h[static_cast<std::size_t>(2 * k)] = {e[k], -w[k], box.max()[k] - a[k]};
+    h[static_cast<std::size_t>(2 * k + 1)] = {-e[k], w[k], a[k] - box.min()[k]};
+  }
+  h[6] = {1, 0, 1}, h[7] = {-1, 0, 0}, h[8] = {0, 1, T}, h[9] = {0, -1, 0};
+  Interval in;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    for (std::size_t j = i + 1; j < h.size(); ++j) {
+      const double det = h[i].s * h[j].t - h[i].t * h[j].s;
+      if (std::abs(det) < 1e-15) continue;
+      const double S = (h[i].c * h[j].t - h[i].t * h[j].c) / det;
+      const double tau = (h[i].s * h[j].c - h[i].c * h[j].s) / det;
+      const bool ok = std::none_of(h.begin(), h.end(), [&](const Half& q) {
+        return q.s * S + q.t * tau > q.c + 1e-9 * (1 + std::abs(q.c));
+      });
+      if (ok) in.from = std::min(in.from, tau), in.to = std::max(in.to, tau);
+    }
+  return in;
+}
+
+// The first microsecond at which something that begins at `now + tau` s is so.
+vm::Micros startMicro(vm::Micros now, double tau) {
+  return std::max(now + 1, static_cast<vm::Micros>(std::ceil(static_cast<double>(now) + tau * 1e6 - 1e-6)));
+}
+// The first microsecond after one that ends at `now + tau` s.
+vm::Micros afterMicro(vm::Micros now, double tau) {
+  return std::max(now + 1, static_cast<vm::Micros>(std::floor(static_cast<double>(now) + tau * 1e6 + 1e-6)) + 1);
+}
+
+}  // namespace
+
+// A running belt as the plan sees it: a part rides it when present, not
+// held, its bottom on the belt's top and its centre over the belt.
+struct CellDevices::Geometry {
+  Eigen::AlignedBox3d belt;
+  Eigen::Vector3d dir, lateral;
+  double end = 0;  // the belt's far end along dir
+};
+
+// Who rides which running belt from now, how far each goes (an
+// accumulating belt: a part stops at the part ahead's final place, the
+// first at the stop plate), and the next time anything happens.
+void CellDevices::plan(vm::Micros now) {
+  const workcell::Devices& d = cell_.devices;
+  const std::size_t n = state_.number.size();
+  for (std::size_t o = 0; o < n; ++o) state_.velocity[o].setZero(), state_.travel[o] = 0;
+  std::vector<bool> taken(n, false);
+  for (std::size_t c = 0; c < d.conveyors.size(); ++c) {
+    const workcell::Conveyor& conveyor = d.conveyors[c];
+    if (!running(c)) continue;
+    const workcell::PlacedObject& obj = cell_.objects[conveyor.object];
+    if (!obj.belt) continue;
+    Geometry g;
+    g.belt = transformedBox(obj.belt->surface, obj.F_world_design);
+    g.dir = (obj.F_world_design.linear() * obj.belt->direction).normalized();
+    g.lateral = Eigen::Vector3d::UnitY().cross(g.dir);
+    if (g.lateral.norm() < 1e-9) g.lateral = Eigen::Vector3d::UnitX();
+    g.lateral.normalize();
+    g.end = g.dir.dot(g.belt.center()) + g.dir.cwiseAbs().dot(g.belt.sizes() / 2);
+    struct Rider {
+      std::size_t o;
+      double lead, length, lo, hi, final = 0;
+    };
+    std::vector<Rider> riders;
+    for (std::size_t o = 0; o < n; ++o) {
+      if (taken[o] || !present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.holder(o)) continue;
+      const Eigen::AlignedBox3d b = box(o);
+      const Eigen::Vector3d centre = b.center();
+      if (std::abs(b.min().y() - g.belt.max().y()) > kRestTolerance) continue;
+      if (centre.x() < g.belt.min().x() || centre.x() > g.belt.max().x() || centre.z() < g.belt.min().z() ||
+          centre.z() > g.belt.max().z())
+        continue;
+      const Eigen::Vector3d half = b.sizes() / 2;
+      const double along = g.dir.cwiseAbs().dot(half), across = g.lateral.cwiseAbs().dot(half);
+      riders.push_back({o, g.dir.dot(centre) + along, 2 * along, g.lateral.dot(centre) - across,
+                        g.lateral.dot(centre) + across});
+      taken[o] = true;
+    }
+    std::sort(riders.begin(), riders.end(), [](const Rider& a, const Rider& b) {
+      return a.lead != b.lead ? a.lead > b.lead : a.o < b.o;
+    });
+    for (std::size_t i = 0; i < riders.size(); ++i) {
+      Rider& r = riders[i];
+      double limit = obj.belt->endOpen ? kInf : g.end;
+      for (std::size_t k = 0; k < i; ++k)
+        if (riders[k].lo < r.hi - 1e-9 && r.lo < riders[k].hi - 1e-9)
+          limit = std::min(limit, riders[k].final - riders[k].length);
+      const double travel = std::max(0.0, limit - r.lead);
+      r.final = r.lead + travel;
+      if (travel <= 1e-9) continue;
+      state_.velocity[r.o] = g.dir * conveyor.speed;
+      state_.travel[r.o] = travel;
+      if (state_.ridden[r.o] != c + 1) ++state_.carried[c];
+      state_.ridden[r.o] = c + 1;
+    }
+  }
+  // The next time something may change.
+  vm::Micros next = INT64_MAX;
+  for (std::size_t f = 0; f < d.feeders.size(); ++f) next = std::min(next, state_.nextDue[f]);
+  for (std::size_t o = 0; o < n; ++o) {
+    const Eigen::Vector3d& w = state_.velocity[o];
+    if (w.isZero()) continue;
+    const double speed = w.norm();
+    const double T = std::isinf(state_.travel[o]) ? kHorizon : state_.travel[o] / speed;
+    const Eigen::AlignedBox3d b = box(o);
+    const bool isPart = cell_.objects[o].kind == workcell::ObjectKind::Part;
+    // All the box can cover on its way, grown by a unit (far more than
+    // beamInterval's slack): a beam that misses it is never met, and its
+    // interval (45 vertices of 10 constraints) need not be solved.
+    Eigen::AlignedBox3d way = b;
+    way.extend(b.translated(w * T));
+    way = Eigen::AlignedBox3d(way.min().array() - 1.0, way.max().array() + 1.0);
+    for (const workcell::Sensor& s : d.sensors) {
+      if (s.sees == workcell::Sensor::Sees::Robots || !isPart) continue;
+      if (s.shape == workcell::Sensor::Shape::Beam && !beamTouches(s.a, s.b, way)) continue;
+      const Interval in = s.shape == workcell::Sensor::Shape::Beam ? beamInterval(b, w, T, s.a, s.b)
+                                                                  : zoneInterval(b, w, T, s.zone);
+      if (in.empty()) continue;
+      if (in.from > 1e-9) next = std::min(next, startMicro(now, in.from));
+      if (in.to < T - 1e-9) next = std::min(next, afterMicro(now, in.to));
+    }
+    const Eigen::AlignedBox3d centre(b.center(), b.center());
+    for (const workcell::Sink& s : d.sinks) {
+      const Interval in = zoneInterval(centre, w, T, s.zone);
+      if (!in.empty()) next = std::min(next, startMicro(now, std::max(in.from, 0.0)));
+    }
+    if (std::isinf(state_.travel[o])) {
+      // The centre passes the open end.
+      const workcell::Conveyor& c = d.conveyors[state_.ridden[o] - 1];
+      const workcell::PlacedObject& obj = cell_.objects[c.object];
+      const Eigen::AlignedBox3d belt = transformedBox(obj.belt->surface, obj.F_world_design);
+      const Eigen::Vector3d dir = w / speed;
+      const double end = dir.dot(belt.center()) + dir.cwiseAbs().dot(belt.sizes() / 2);
+      next = std::min(next, startMicro(now, std::max(0.0, (end - dir.dot(b.center())) / speed)));
+    }
+    for (std::size_t f = 0; f < d.feeders.size(); ++f) {
+      if (!state_.waiting[f]) continue;
+      const workcell::Feeder& feeder = d.feeders[f];
+      const workcell::PlacedObject& part = cell_.fedParts[feeder.part];
+      const Eigen::AlignedBox3d spot =
+          workcell::boundsOf(part.shape).translated(feeder.at - workcell::atCorner(part.shape));
+      const Interval in = zoneInterval(b, w, T, spot);
+      if (!in.empty() && in.to < T - 1e-9) next = std::min(next, afterMicro(now, in.to));
+    }
+  }
+  // Its wake is tagged with the plan's number (never 0: an untagged wake
+  // always acts), so that the next plan makes it stale.
+  if (static_cast<std::uint32_t>(++state_.wakeTag) == 0) ++state_.wakeTag;
+  if (next != INT64_MAX) clock_.schedule(next, id_, static_cast<std::uint32_t>(state_.wakeTag));
+}
+
+
+}  // namespace rs::runtime
