@@ -128,6 +128,7 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, std::vect
   state_.whenLevel.assign(d.feeders.size(), false);
   state_.velocity.assign(n, Eigen::Vector3d::Zero());
   state_.travel.assign(n, 0);
+  state_.rides.assign(n, {});
   for (std::size_t f = 0; f < d.feeders.size(); ++f)
     if (!d.feeders[f].everyUs) state_.nextDue[f] = INT64_MAX;
   id_ = clock.add(*this);
@@ -216,10 +217,15 @@ void CellDevices::restore(const State& s) {
   emitted_.clear(), motions_.clear();
 }
 
+// A riding part's place is worked out from where its ride began and the
+// whole microseconds it has ridden since, not summed a wake at a time: a
+// part that rides the same way for the same time lands on the same bits,
+// so a production loop repeats exactly and the sweep's memory answers its
+// moves (runtime/sim/sweep_memo.h).
 void CellDevices::moveTo(vm::Micros now) {
-  const double dt = static_cast<double>(now - state_.planAt) / 1e6;
+  const vm::Micros dtUs = now - state_.planAt;
   state_.planAt = now;
-  if (dt <= 0) return;
+  if (dtUs <= 0) return;
   for (std::size_t o = 0; o < state_.velocity.size(); ++o) {
     const Eigen::Vector3d& w = state_.velocity[o];
     if (w.isZero() || state_.travel[o] <= 0) continue;
@@ -227,10 +233,26 @@ void CellDevices::moveTo(vm::Micros now) {
       state_.velocity[o].setZero();
       continue;
     }
+    Ride& ride = state_.rides[o];
+    Eigen::Isometry3d pose = world_.restingPose(o);
+    // Another ride, or moved by something else since: the ride begins here.
+    if (ride.velocity != w || pose.translation() != ride.at) {
+      ride.from = pose.translation(), ride.velocity = w, ride.micros = 0, ride.done = 0;
+    }
     const double speed = w.norm();
-    const double dist = std::min(speed * dt, state_.travel[o]);
-    place(o, w / speed * dist);
-    state_.travel[o] -= dist;
+    const double dist = std::min(speed * static_cast<double>(dtUs) / 1e6, state_.travel[o]);
+    if (dist >= state_.travel[o]) {
+      // To the end of its travel: the stop is where it rests now.
+      ride.done += state_.travel[o];
+      pose.translation() = ride.from + w / speed * (speed * static_cast<double>(ride.micros) / 1e6 + ride.done);
+      state_.travel[o] = 0;
+    } else {
+      ride.micros += dtUs;
+      pose.translation() = ride.from + w / speed * (speed * static_cast<double>(ride.micros) / 1e6 + ride.done);
+      state_.travel[o] -= dist;
+    }
+    ride.at = pose.translation();
+    world_.place(o, pose);
   }
 }
 

@@ -138,6 +138,14 @@ class CellDevices final : public CellProcess {
   /// The motions recorded since the last call, in time order.
   std::vector<PartMotion> takeMotions() { return std::exchange(motions_, {}); }
 
+  /// A part's ride along one belt (moveTo): where it began, at what velocity,
+  /// the whole microseconds ridden, the distance of travels run to their end.
+  struct Ride {
+    Eigen::Vector3d from = Eigen::Vector3d::Zero(), velocity = Eigen::Vector3d::Zero(), at = Eigen::Vector3d::Zero();
+    vm::Micros micros = 0;
+    double done = 0;
+    bool operator==(const Ride&) const = default;
+  };
   struct State {
     std::vector<std::uint32_t> number;  // per object; 0: not in the cell
     std::uint32_t nextNumber = 1;
@@ -150,6 +158,7 @@ class CellDevices final : public CellProcess {
     vm::Micros planAt = 0;                   // the motion below starts here
     std::vector<Eigen::Vector3d> velocity;   // per object, while it rides
     std::vector<double> travel;              // per object: how far it rides (may be infinite)
+    std::vector<Ride> rides;                 // per object
     std::uint64_t revision = 0;              // the world's, as the devices last left it
     std::uint64_t wakeTag = 0;               // the plan's wake (older ones are stale)
     std::vector<vm::Micros> moveUntil;       // per robot: its move under way ends here
