@@ -1,5 +1,6 @@
 #include "model/workcell/grasp.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rs::workcell {
@@ -20,6 +21,12 @@ Grasping::Grasping(const Workcell& cell) : cell_(&cell) {
   for (const PlacedObject& o : cell.objects) {
     resting_.push_back(o.F_world_design);
     boxes_.push_back(boundsOf(o.shape));
+    double r = 0;
+    if (!boxes_.back().isEmpty())
+      for (int c = 0; c < 8; ++c)
+        r = std::max(r, boxes_.back().corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)).norm());
+    boxReach_.push_back(r + 2 * kInsideSlack);
+    settleReach_.push_back(settleReach(o));
   }
   letGo_.assign(resting_.size(), std::nullopt);
   carried_ = resting_;
@@ -71,7 +78,11 @@ std::optional<std::size_t> Grasping::smallestAt(const Eigen::Vector3d& point, bo
     // A part another hand carries (and only that one) may be handed over.
     const bool handOver = by && takingHand && *by != *takingHand && !shared(o);
     if (by && !handOver) continue;
-    const Eigen::Vector3d local = (handOver ? carried_[o] : resting_[o]).inverse(Eigen::Isometry) * point;
+    const Eigen::Isometry3d& at = handOver ? carried_[o] : resting_[o];
+    // An isometry keeps distances: a point farther from the object's
+    // origin than its box's corners is in no slack of the box.
+    if ((point - at.translation()).squaredNorm() > boxReach_[o] * boxReach_[o]) continue;
+    const Eigen::Vector3d local = at.inverse(Eigen::Isometry) * point;
     const Eigen::AlignedBox3d slack(boxes_[o].min().array() - kInsideSlack, boxes_[o].max().array() + kInsideSlack);
     if (!slack.contains(local)) continue;
     const double volume = boxes_[o].volume();
@@ -152,11 +163,11 @@ Settled Grasping::settleFrom(std::size_t o, const Eigen::Isometry3d& pose) const
   // no support, so it is moved out of every footprint for the search.
   bool carried = false;
   for (std::size_t p = 0; p < resting_.size() && !carried; ++p) carried = p != o && holder(p);
-  if (!carried) return settle(*cell_, resting_, o, pose);
+  if (!carried) return settle(*cell_, resting_, o, pose, std::nullopt, settleReach_);
   std::vector<Eigen::Isometry3d> poses = resting_;
   for (std::size_t p = 0; p < poses.size(); ++p)
     if (p != o && holder(p)) poses[p].pretranslate(Eigen::Vector3d(kParked, 0, 0));
-  return settle(*cell_, poses, o, pose);
+  return settle(*cell_, poses, o, pose, std::nullopt, settleReach_);
 }
 
 void Grasping::reset() {

@@ -188,6 +188,10 @@ class Grasping {
   std::vector<std::optional<LetGo>> letGo_;  // per object, as State::letGo
   std::vector<Eigen::Isometry3d> carried_;   // per object: where a hand carries it (carriedAt); scratch
   std::vector<Eigen::AlignedBox3d> boxes_;  // in each object's design coordinates
+  // Per object: how far its box's corners lie from its design origin
+  // (smallestAt passes over what is farther from the point), and
+  // settleReach (settle passes over what cannot hold a part up).
+  std::vector<double> boxReach_, settleReach_;
 };
 
 }  // namespace rs::workcell

@@ -28,8 +28,18 @@ bool footprintsMeet(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) 
 
 }  // namespace
 
+double settleReach(const PlacedObject& o) {
+  double r = 0;
+  for (const ConvexPiece& piece : o.shape.collision)
+    for (const Eigen::Vector3d& p : piece.points) r = std::max(r, p.norm());
+  if (o.belt && !o.belt->surface.isEmpty())
+    for (int c = 0; c < 8; ++c)
+      r = std::max(r, o.belt->surface.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)).norm());
+  return r;
+}
+
 Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, std::size_t part,
-               const Eigen::Isometry3d& pose, std::optional<std::size_t> skip) {
+               const Eigen::Isometry3d& pose, std::optional<std::size_t> skip, std::span<const double> reach) {
   Settled s;
   s.pose = pose;
   Eigen::AlignedBox3d self;
@@ -47,6 +57,16 @@ Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, s
   };
   for (std::size_t o = 0; o < cell.objects.size() && o < poses.size(); ++o) {
     if (o == part || skip == o) continue;
+    if (o < reach.size()) {
+      // Every footprint of it lies within its reach of where it stands: a
+      // part let go beyond that (a feeder's parked slots, far corners of
+      // the cell) it cannot hold up.
+      const Eigen::Vector3d at = poses[o].translation();
+      const double r = reach[o] + 1e-6;
+      if (self.min().x() > at.x() + r || self.max().x() < at.x() - r || self.min().z() > at.z() + r ||
+          self.max().z() < at.z() - r)
+        continue;
+    }
     const PlacedObject& other = cell.objects[o];
     for (const ConvexPiece& piece : other.shape.collision) {
       const Eigen::AlignedBox3d b = boxOf(piece, poses[o]);

@@ -43,7 +43,15 @@ struct Settled {
 /// Part `part` of `cell`, let go at `pose`, with every other object at
 /// `poses` (indexed as Workcell::objects; `poses[part]` is ignored, and so
 /// is object `skip`, when given: one the gripper still carries).
+/// `reach`, when given (per object, settleReach), lets it pass over the
+/// objects too far aside to hold it up without looking at their pieces.
 Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, std::size_t part,
-               const Eigen::Isometry3d& pose, std::optional<std::size_t> skip = std::nullopt);
+               const Eigen::Isometry3d& pose, std::optional<std::size_t> skip = std::nullopt,
+               std::span<const double> reach = {});
+
+/// How far any point of object `o`'s collision pieces and belt lies from
+/// its design origin: where it rests, nothing of it is farther than this
+/// from its pose's translation.
+double settleReach(const PlacedObject& o);
 
 }  // namespace rs::workcell

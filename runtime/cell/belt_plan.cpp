@@ -51,13 +51,39 @@ Interval zoneInterval(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& w, 
 // (its extremes are at vertices of the constraints' lines).
 Interval beamInterval(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& w, double T, const Eigen::Vector3d& a,
                       const Eigen::Vector3d& b) {
+  const Eigen::Vector3d e = b - a;
+  // A beam across the belt (on each axis the box moves or the beam runs,
+  // not both: the library's cells, and most): the constraints part into
+  // ranges of s and of τ, and τ's range is the answer, no polygon to walk.
+  bool across = true;
+  for (int k = 0; k < 3; ++k) across &= std::abs(e[k]) < 1e-15 || std::abs(w[k]) < 1e-15;
+  if (across) {
+    double sLo = 0, sHi = 1;
+    Interval in{0, T};
+    for (int k = 0; k < 3; ++k) {
+      const double lo = box.min()[k] - a[k], hi = box.max()[k] - a[k];  // s e_k - w_k τ in [lo, hi]
+      if (std::abs(w[k]) >= 1e-15) {
+        double t0 = -hi / w[k], t1 = -lo / w[k];
+        if (t0 > t1) std::swap(t0, t1);
+        in.from = std::max(in.from, t0), in.to = std::min(in.to, t1);
+      } else if (std::abs(e[k]) >= 1e-15) {
+        double s0 = lo / e[k], s1 = hi / e[k];
+        if (s0 > s1) std::swap(s0, s1);
+        sLo = std::max(sLo, s0), sHi = std::min(sHi, s1);
+      } else if (lo > 1e-9 * (1 + std::abs(lo)) || hi < -1e-9 * (1 + std::abs(hi))) {
+        return {};
+      }
+    }
+    if (sLo > sHi + 1e-9 || in.from > in.to + 1e-9 * (1 + T)) return {};
+    in.to = std::max(in.to, in.from);
+    return in;
+  }
   struct Half {
     double s, t, c;  // s·S + t·τ <= c
   };
   // On the stack, and a vertex given up at its first broken constraint:
   // every wake plans every moving part against every beam.
   std::array<Half, 10> h;
-  const Eigen::Vector3d e = b - a;
   for (int k = 0; k < 3; ++k) {
     h[static_cast<std::size_t>(2 * k)] = {e[k], -w[k], box.max()[k] - a[k]};
     h[static_cast<std::size_t>(2 * k + 1)] = {-e[k], w[k], a[k] - box.min()[k]};
@@ -89,41 +115,23 @@ vm::Micros afterMicro(vm::Micros now, double tau) {
 
 }  // namespace
 
-// A running belt as the plan sees it: a part rides it when present, not
-// held, its bottom on the belt's top and its centre over the belt.
-struct CellDevices::Geometry {
-  Eigen::AlignedBox3d belt;
-  Eigen::Vector3d dir, lateral;
-  double end = 0;  // the belt's far end along dir
-};
-
 // Who rides which running belt from now, how far each goes (an
 // accumulating belt: a part stops at the part ahead's final place, the
 // first at the stop plate), and the next time anything happens.
 void CellDevices::plan(vm::Micros now) {
   const workcell::Devices& d = cell_.devices;
-  const std::size_t n = state_.number.size();
-  for (std::size_t o = 0; o < n; ++o) state_.velocity[o].setZero(), state_.travel[o] = 0;
-  std::vector<bool> taken(n, false);
+  for (const std::size_t o : parts_) state_.velocity[o].setZero(), state_.travel[o] = 0;
+  std::vector<bool>& taken = takenScratch_;
+  for (const std::size_t o : parts_) taken[o] = false;
   for (std::size_t c = 0; c < d.conveyors.size(); ++c) {
     const workcell::Conveyor& conveyor = d.conveyors[c];
-    if (!running(c)) continue;
+    if (!belts_[c] || !running(c)) continue;
     const workcell::PlacedObject& obj = cell_.objects[conveyor.object];
-    if (!obj.belt) continue;
-    Geometry g;
-    g.belt = transformedBox(obj.belt->surface, obj.F_world_design);
-    g.dir = (obj.F_world_design.linear() * obj.belt->direction).normalized();
-    g.lateral = Eigen::Vector3d::UnitY().cross(g.dir);
-    if (g.lateral.norm() < 1e-9) g.lateral = Eigen::Vector3d::UnitX();
-    g.lateral.normalize();
-    g.end = g.dir.dot(g.belt.center()) + g.dir.cwiseAbs().dot(g.belt.sizes() / 2);
-    struct Rider {
-      std::size_t o;
-      double lead, length, lo, hi, final = 0;
-    };
-    std::vector<Rider> riders;
-    for (std::size_t o = 0; o < n; ++o) {
-      if (taken[o] || !present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.holder(o)) continue;
+    const Geometry& g = *belts_[c];
+    std::vector<Rider>& riders = riders_;
+    riders.clear();
+    for (const std::size_t o : parts_) {
+      if (taken[o] || world_.holder(o)) continue;
       const Eigen::AlignedBox3d b = box(o);
       const Eigen::Vector3d centre = b.center();
       if (std::abs(b.min().y() - g.belt.max().y()) > kRestTolerance) continue;
@@ -157,7 +165,7 @@ void CellDevices::plan(vm::Micros now) {
   // The next time something may change.
   vm::Micros next = INT64_MAX;
   for (std::size_t f = 0; f < d.feeders.size(); ++f) next = std::min(next, state_.nextDue[f]);
-  for (std::size_t o = 0; o < n; ++o) {
+  for (const std::size_t o : parts_) {
     const Eigen::Vector3d& w = state_.velocity[o];
     if (w.isZero()) continue;
     const double speed = w.norm();
@@ -206,7 +214,12 @@ void CellDevices::plan(vm::Micros now) {
   // Its wake is tagged with the plan's number (never 0: an untagged wake
   // always acts), so that the next plan makes it stale.
   if (static_cast<std::uint32_t>(++state_.wakeTag) == 0) ++state_.wakeTag;
-  if (next != INT64_MAX) clock_.schedule(next, id_, static_cast<std::uint32_t>(state_.wakeTag));
+  // The replaced plan's wake would do nothing: it goes, so that the clock
+  // does not stop there for nothing (half the devices' wakes were such).
+  if (state_.planWakeAt >= 0) clock_.cancel(state_.planWakeAt, state_.planWakeSeq);
+  state_.planWakeAt = -1;
+  if (next != INT64_MAX && clock_.schedule(next, id_, static_cast<std::uint32_t>(state_.wakeTag)))
+    state_.planWakeAt = next, state_.planWakeSeq = clock_.lastSeq();
 }
 
 

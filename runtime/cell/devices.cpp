@@ -58,14 +58,14 @@ std::shared_ptr<const workcell::Workcell> withFeederSlots(std::shared_ptr<const 
 // writes the input in update.
 class CellDevices::Wire final : public CellProcess {
  public:
-  Wire(const workcell::Wire& wire, RobotIo& io) : wire_(wire), io_(io) {}
+  Wire(const workcell::Wire& wire, RobotIo& io) : wire_(wire), io_(io), source_(signalText(wire.source)) {}
   void wake(const CellEvent& event, Scheduler&) override { next_ = (event.tag != 0) != wire_.inverted, has_ = true; }
   bool update(Scheduler&) override {
     if (!std::exchange(has_, false)) return false;
     InputCause cause;
     cause.kind = InputCause::Kind::Wire;
     cause.input = wire_.input, cause.on = next_, cause.line = wire_.pos.line;
-    cause.source = signalText(wire_.source);
+    cause.source = source_;
     cause.robot = wire_.robot;
     io_.setInput(wire_.input, next_, cause);
     return true;
@@ -80,6 +80,7 @@ class CellDevices::Wire final : public CellProcess {
  private:
   const workcell::Wire& wire_;
   RobotIo& io_;
+  std::string source_;  // signalText(wire_.source), said with every change
   bool next_ = false, has_ = false;
 };
 
@@ -113,10 +114,32 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, std::vect
   }
   for (const workcell::PlacedObject& o : cell.objects) designBoxes_.push_back(workcell::boundsOf(o.shape));
   const std::size_t n = cell.objects.size();
+  Eigen::Isometry3d unknown;
+  unknown.matrix().setConstant(std::numeric_limits<double>::quiet_NaN());  // equal to no pose: box() works it out
+  boxPose_.assign(n, unknown);
+  boxOf_.assign(n, Eigen::AlignedBox3d());
+  takenScratch_.assign(n, false);
+  for (const workcell::Conveyor& conveyor : d.conveyors) {
+    const workcell::PlacedObject& obj = cell.objects[conveyor.object];
+    if (!obj.belt) {
+      belts_.emplace_back();
+      continue;
+    }
+    Geometry g;
+    g.belt = transformedBox(obj.belt->surface, obj.F_world_design);
+    g.dir = (obj.F_world_design.linear() * obj.belt->direction).normalized();
+    g.lateral = Eigen::Vector3d::UnitY().cross(g.dir);
+    if (g.lateral.norm() < 1e-9) g.lateral = Eigen::Vector3d::UnitX();
+    g.lateral.normalize();
+    g.end = g.dir.dot(g.belt.center()) + g.dir.cwiseAbs().dot(g.belt.sizes() / 2);
+    belts_.push_back(g);
+  }
   state_.number.assign(n, 0);
   for (std::size_t o = 0; o < firstSlot_; ++o) state_.number[o] = static_cast<std::uint32_t>(o + 1);
   state_.nextNumber = static_cast<std::uint32_t>(firstSlot_ + 1);
+  listParts();
   state_.sensorOn.assign(d.sensors.size(), false);
+  for (const workcell::Sensor& sensor : d.sensors) sensorSeesRobots_ |= sensor.sees != workcell::Sensor::Sees::Parts;
   nextSensor_ = state_.sensorOn;
   state_.sensorCount.assign(d.sensors.size(), 0);
   state_.carried.assign(d.conveyors.size(), 0);
@@ -138,7 +161,7 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, std::vect
     wires_.push_back(std::make_unique<Wire>(w, *to));
     wires_.back()->id = clock.add(*wires_.back());
   }
-  clock.schedule(clock.now(), id_);
+  wakeNow();
   for (const auto& w : wires_)
     if (signal(w->wire().source) != w->wire().inverted)
       clock.schedule(clock.now() + w->wire().afterUs, w->id, signal(w->wire().source) ? 1 : 0);
@@ -198,7 +221,21 @@ RobotIo* CellDevices::robotIo(const std::string& label) const {
 bool CellDevices::running(std::size_t c) const { return signal(cell_.devices.conveyors[c].run); }
 
 Eigen::AlignedBox3d CellDevices::box(std::size_t o) const {
-  return transformedBox(designBoxes_[o], world_.restingPose(o));
+  const Eigen::Isometry3d& pose = world_.restingPose(o);
+  if (pose.matrix() != boxPose_[o].matrix()) boxPose_[o] = pose, boxOf_[o] = transformedBox(designBoxes_[o], pose);
+  return boxOf_[o];
+}
+
+void CellDevices::listParts() {
+  parts_.clear();
+  for (std::size_t o = 0; o < state_.number.size(); ++o)
+    if (present(o) && cell_.objects[o].kind == workcell::ObjectKind::Part) parts_.push_back(o);
+}
+
+void CellDevices::wakeNow() {
+  if (state_.lookAt == clock_.now()) return;  // one waits for this instant already: it sees this change too
+  state_.lookAt = clock_.now();
+  clock_.schedule(clock_.now(), id_);
 }
 
 void CellDevices::place(std::size_t o, const Eigen::Vector3d& shift) {
@@ -209,6 +246,7 @@ void CellDevices::place(std::size_t o, const Eigen::Vector3d& shift) {
 
 void CellDevices::restore(const State& s) {
   state_ = s;
+  listParts();
   for (const auto& sight : sights_)
     if (sight) sight->forget();
   nextSensor_ = s.sensorOn;
@@ -226,7 +264,7 @@ void CellDevices::moveTo(vm::Micros now) {
   const vm::Micros dtUs = now - state_.planAt;
   state_.planAt = now;
   if (dtUs <= 0) return;
-  for (std::size_t o = 0; o < state_.velocity.size(); ++o) {
+  for (const std::size_t o : parts_) {
     const Eigen::Vector3d& w = state_.velocity[o];
     if (w.isZero() || state_.travel[o] <= 0) continue;
     if (world_.holder(o)) {
@@ -262,7 +300,7 @@ void CellDevices::commit() {
 }
 
 void CellDevices::sync() {
-  if (world_.revision() != state_.revision) clock_.schedule(clock_.now(), id_);
+  if (world_.revision() != state_.revision) wakeNow();
 }
 
 void CellDevices::outputChanged(int output, std::size_t robot) {
@@ -273,7 +311,7 @@ void CellDevices::outputChanged(int output, std::size_t robot) {
   };
   for (const workcell::Conveyor& c : d.conveyors) reads |= isOutput(c.run);
   for (const workcell::Feeder& f : d.feeders) reads |= f.when && isOutput(*f.when);
-  if (reads) clock_.schedule(clock_.now(), id_);
+  if (reads) wakeNow();
   for (const auto& w : wires_)
     if (isOutput(w->wire().source))
       clock_.schedule(clock_.now() + w->wire().afterUs, w->id, robots_[robot]->output(output) ? 1 : 0);
@@ -284,8 +322,8 @@ void CellDevices::feed(std::size_t f, vm::Micros now) {
   const workcell::PlacedObject& part = cell_.fedParts[feeder.part];
   const Eigen::Vector3d shift = feeder.at - workcell::atCorner(part.shape);
   const Eigen::AlignedBox3d spot = workcell::boundsOf(part.shape).translated(shift);
-  for (std::size_t o = 0; o < state_.number.size(); ++o) {
-    if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.holder(o)) continue;
+  for (const std::size_t o : parts_) {
+    if (world_.holder(o)) continue;
     if (boxesOverlap(box(o), spot)) {
       if (!state_.waiting[f]) events_.push_back({DeviceEvent::Kind::Waits, now, f, o, state_.number[o], feeder.at});
       state_.waiting[f] = true;
@@ -311,6 +349,7 @@ void CellDevices::feed(std::size_t f, vm::Micros now) {
   pose.translation() = shift;
   world_.replace(slot, pose);
   state_.number[slot] = state_.nextNumber++;
+  parts_.insert(std::lower_bound(parts_.begin(), parts_.end(), slot), slot);
   state_.ridden[slot] = 0;
   state_.velocity[slot].setZero(), state_.travel[slot] = 0;
   ++state_.fed[f];
@@ -325,11 +364,13 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   // growing with the square of the run's length).
   if (event.tag != 0 && event.tag != static_cast<std::uint32_t>(state_.wakeTag)) return;
   const vm::Micros now = clock.now();
+  if (event.tag == 0 && state_.lookAt == now) state_.lookAt = -1;
+  if (event.tag != 0) state_.planWakeAt = -1;  // the plan's wake, now
   const workcell::Devices& d = cell_.devices;
   moveTo(now);
   // Parts past an open end fall onto what is below them.
-  for (std::size_t o = 0; o < state_.number.size(); ++o) {
-    if (!present(o) || state_.ridden[o] == 0 || world_.holder(o)) continue;
+  for (const std::size_t o : parts_) {
+    if (state_.ridden[o] == 0 || world_.holder(o)) continue;
     const workcell::Conveyor& c = d.conveyors[state_.ridden[o] - 1];
     const workcell::PlacedObject& obj = cell_.objects[c.object];
     if (!obj.belt || !obj.belt->endOpen) continue;
@@ -352,18 +393,23 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
     state_.ridden[o] = 0, state_.velocity[o].setZero(), state_.travel[o] = 0;
   }
   // Sinks take the parts whose centre is in their zone.
-  for (std::size_t o = 0; o < state_.number.size(); ++o) {
-    if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || world_.holder(o)) continue;
-    const Eigen::Vector3d centre = box(o).center();
-    for (std::size_t s = 0; s < d.sinks.size(); ++s) {
-      if (!boxesTouch(Eigen::AlignedBox3d(centre, centre), d.sinks[s].zone)) continue;
-      events_.push_back({DeviceEvent::Kind::Taken, now, s, o, state_.number[o], centre});
-      ++state_.taken[s];
-      state_.number[o] = 0;
-      world_.replace(o, parkedPose());
-      state_.velocity[o].setZero(), state_.travel[o] = 0, state_.ridden[o] = 0;
-      break;
+  for (std::size_t i = 0; i < parts_.size();) {
+    const std::size_t o = parts_[i];
+    bool gone = false;
+    if (!world_.holder(o)) {
+      const Eigen::Vector3d centre = box(o).center();
+      for (std::size_t s = 0; s < d.sinks.size() && !gone; ++s) {
+        if (!boxesTouch(Eigen::AlignedBox3d(centre, centre), d.sinks[s].zone)) continue;
+        events_.push_back({DeviceEvent::Kind::Taken, now, s, o, state_.number[o], centre});
+        ++state_.taken[s];
+        state_.number[o] = 0;
+        world_.replace(o, parkedPose());
+        state_.velocity[o].setZero(), state_.travel[o] = 0, state_.ridden[o] = 0;
+        gone = true;
+      }
     }
+    if (gone) parts_.erase(parts_.begin() + static_cast<std::ptrdiff_t>(i));
+    else ++i;
   }
   // Feeders: a part due, or waiting for its place.
   for (std::size_t f = 0; f < d.feeders.size(); ++f) {
@@ -390,11 +436,11 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
     const workcell::Sensor& sensor = d.sensors[s];
     bool sees = false;
     if (sensor.sees != workcell::Sensor::Sees::Robots)
-      for (std::size_t o = 0; o < state_.number.size() && !sees; ++o) {
+      for (std::size_t i = 0; i < parts_.size() && !sees; ++i) {
         // A carried part shows itself through its robot's sight; one two
         // hands hold stays put where it rests.
-        if (!present(o) || cell_.objects[o].kind != workcell::ObjectKind::Part || (world_.holder(o) && !world_.shared(o)))
-          continue;
+        const std::size_t o = parts_[i];
+        if (world_.holder(o) && !world_.shared(o)) continue;
         const Eigen::AlignedBox3d b = box(o);
         sees = sensor.shape == workcell::Sensor::Shape::Beam ? beamTouches(sensor.a, sensor.b, b)
                                                              : boxesTouch(b, sensor.zone);
@@ -404,6 +450,12 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   // What the robot and the part it carries show them, where they are now.
   for (std::size_t r = 0; r < sights_.size(); ++r) {
     if (!sights_[r]) continue;
+    // Nothing carried, and no sensor sees robots: it shows them nothing.
+    const std::optional<std::size_t> held = world_.held(r);
+    if (!sensorSeesRobots_ && (!held || world_.shared(*held))) {
+      watchRobot(now, r);
+      continue;
+    }
     motorsNow_.assign(robots_[r]->motorCount(), 0);
     robots_[r]->motorsAt(now, motorsNow_);
     sights_[r]->sees(motorsNow_, robotSees_);
@@ -432,7 +484,7 @@ bool CellDevices::update(Scheduler& clock) {
     bool reads = false;
     for (const workcell::Conveyor& c : d.conveyors) reads |= c.run.kind == Signal::Kind::Sensor;
     for (const workcell::Feeder& f : d.feeders) reads |= f.when && f.when->kind == Signal::Kind::Sensor;
-    if (reads) clock.schedule(clock.now(), id_);
+    if (reads) wakeNow();
   }
   return changed;
 }

@@ -161,8 +161,11 @@ class CellDevices final : public CellProcess {
     std::vector<Ride> rides;                 // per object
     std::uint64_t revision = 0;              // the world's, as the devices last left it
     std::uint64_t wakeTag = 0;               // the plan's wake (older ones are stale)
+    vm::Micros planWakeAt = -1;              // the plan's wake waits for this time (-1: none), as
+    std::uint64_t planWakeSeq = 0;           //   this event of the clock: a new plan cancels it
     std::vector<vm::Micros> moveUntil;       // per robot: its move under way ends here
     std::vector<vm::Micros> sightWakeAt;     // per robot: the wake for what it shows the sensors next (-1: none)
+    vm::Micros lookAt = -1;                  // an untagged wake waits for this instant (wakeNow)
     bool operator==(const State&) const = default;
   };
   const State& state() const { return state_; }
@@ -170,7 +173,22 @@ class CellDevices final : public CellProcess {
 
  private:
   class Wire;
-  struct Geometry;
+  // A running belt as the plan sees it (fixed: a conveyor's object is
+  // where the cell placed it): a part rides it when present, not held,
+  // its bottom on the belt's top and its centre over the belt.
+  struct Geometry {
+    Eigen::AlignedBox3d belt;
+    Eigen::Vector3d dir, lateral;
+    double end = 0;  // the belt's far end along dir
+  };
+  struct Rider {
+    std::size_t o;
+    double lead, length, lo, hi, final = 0;
+  };
+  /// Look at the cell now (an untagged wake), once for each instant.
+  void wakeNow();
+  /// The present parts (parts_) again, from the numbers (after a restore).
+  void listParts();
   void plan(vm::Micros now);
   void moveTo(vm::Micros now);
   void feed(std::size_t f, vm::Micros now);
@@ -196,11 +214,22 @@ class CellDevices final : public CellProcess {
   std::vector<std::size_t> slotStart_;           // per feeder: its first slot
   std::vector<std::size_t> slotCount_;
   std::vector<Eigen::AlignedBox3d> designBoxes_;  // per object, its lines' bounds
+  // box(o) for the pose it was worked out at: a wake asks for a part's
+  // box many times, and only riding parts move between wakes.
+  mutable std::vector<Eigen::Isometry3d> boxPose_;
+  mutable std::vector<Eigen::AlignedBox3d> boxOf_;
+  std::vector<std::optional<Geometry>> belts_;  // per conveyor: none when its object has no belt
+  // The parts in the cell (present, kind Part), by index: what the
+  // devices loop over (a feeder's 64 slots are parked while empty).
+  std::vector<std::size_t> parts_;
+  std::vector<bool> takenScratch_;  // plan's: a part rides one belt
+  std::vector<Rider> riders_;
   std::vector<std::unique_ptr<Wire>> wires_;
   State state_;
   std::vector<bool> nextSensor_;  // evaluate's sensor values, committed in update
   std::vector<std::unique_ptr<RobotSight>> sights_;  // per robot that runs (and can show a sensor anything)
   std::vector<bool> robotSees_;   // scratch: what a robot shows each sensor now
+  bool sensorSeesRobots_ = false;  // a sensor SEES ROBOTS or ALL
   std::vector<std::int32_t> motorsNow_;
   std::vector<DeviceEvent> events_;
   std::optional<std::string> fault_;

@@ -19,6 +19,11 @@ bool Scheduler::schedule(vm::Micros at, std::uint32_t process, std::uint32_t tag
   return true;
 }
 
+bool Scheduler::cancel(vm::Micros at, std::uint64_t seq) {
+  // The order compares time and sequence number alone.
+  return state_.queue.erase(CellEvent{at, seq, 0, 0}) != 0;
+}
+
 std::optional<vm::Micros> Scheduler::nextTime() const {
   if (state_.queue.empty()) return std::nullopt;
   return state_.queue.begin()->at;
@@ -38,7 +43,7 @@ vm::Status Scheduler::advanceTo(vm::Micros t) {
 // began, then update every process; what either scheduled for this instant
 // runs in the next delta.
 vm::Status Scheduler::runInstant(vm::Micros at) {
-  std::vector<std::uint32_t> woken;  // in the latest delta: a loop's error names them
+  std::vector<std::uint32_t>& woken = woken_;  // in the latest delta: a loop's error names them
   for (std::uint64_t delta = 0;; ++delta) {
     const auto due = [&] { return !state_.queue.empty() && state_.queue.begin()->at == at; };
     if (!due()) {

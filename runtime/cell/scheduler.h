@@ -72,6 +72,12 @@ class Scheduler {
   /// for now runs in the next delta of this instant). False (nothing
   /// added) when kMaxCellEvents wait or `at` is in the past.
   bool schedule(vm::Micros at, std::uint32_t process, std::uint32_t tag = 0);
+  /// The sequence number the latest schedule() gave (meaningful after one succeeded).
+  std::uint64_t lastSeq() const { return state_.nextSeq - 1; }
+  /// The event scheduled at `at` with sequence number `seq` will not
+  /// happen (a process's plan that a later plan replaced); false when it
+  /// is not waiting (it ran, or was never scheduled).
+  bool cancel(vm::Micros at, std::uint64_t seq);
 
   /// The time of the next event, or nullopt when none waits.
   std::optional<vm::Micros> nextTime() const;
@@ -99,6 +105,7 @@ class Scheduler {
 
  private:
   vm::Status runInstant(vm::Micros at);
+  std::vector<std::uint32_t> woken_;  // runInstant's: the processes woken in the latest delta
 
   std::vector<CellProcess*> processes_;
   State state_;
