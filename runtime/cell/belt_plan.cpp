@@ -132,7 +132,7 @@ void CellDevices::plan(vm::Micros now) {
     riders.clear();
     for (const std::size_t o : parts_) {
       if (taken[o] || world_.holder(o)) continue;
-      const Eigen::AlignedBox3d b = box(o);
+      const Eigen::AlignedBox3d& b = partBox(o);
       const Eigen::Vector3d centre = b.center();
       if (std::abs(b.min().y() - g.belt.max().y()) > kRestTolerance) continue;
       if (centre.x() < g.belt.min().x() || centre.x() > g.belt.max().x() || centre.z() < g.belt.min().z() ||
@@ -170,7 +170,7 @@ void CellDevices::plan(vm::Micros now) {
     if (w.isZero()) continue;
     const double speed = w.norm();
     const double T = std::isinf(state_.travel[o]) ? kHorizon : state_.travel[o] / speed;
-    const Eigen::AlignedBox3d b = box(o);
+    const Eigen::AlignedBox3d& b = partBox(o);
     const bool isPart = cell_.objects[o].kind == workcell::ObjectKind::Part;
     // All the box can cover on its way, grown by a unit (far more than
     // beamInterval's slack): a beam that misses it is never met, and its

@@ -16,6 +16,9 @@ inline constexpr double kTouch = 1e-7;
 inline Eigen::AlignedBox3d transformedBox(const Eigen::AlignedBox3d& b, const Eigen::Isometry3d& pose) {
   Eigen::AlignedBox3d out;
   if (b.isEmpty()) return out;
+  // Unturned (a part on a belt, a fixture): each corner is c + t, the same
+  // bits the product below gives, without eight products.
+  if (pose.linear() == Eigen::Matrix3d::Identity()) return {b.min() + pose.translation(), b.max() + pose.translation()};
   for (int c = 0; c < 8; ++c) out.extend(pose * b.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
   return out;
 }

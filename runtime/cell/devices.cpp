@@ -188,8 +188,11 @@ void CellDevices::robotMoves(vm::Micros until, std::size_t robot) {
 void CellDevices::watchRobot(vm::Micros now, std::size_t robot) {
   if (!sights_[robot] || state_.moveUntil[robot] <= now) return;
   RobotIo* io = robots_[robot];
+  motionKey_.clear();
+  const bool keyed = io->motionKey(now, motionKey_);
   const std::optional<vm::Micros> next = sights_[robot]->firstChange(
-      now, state_.moveUntil[robot], [io](vm::Micros t, std::span<std::int32_t> out) { io->motorsAt(t, out); });
+      now, state_.moveUntil[robot], [io](vm::Micros t, std::span<std::int32_t> out) { io->motorsAt(t, out); },
+      keyed ? std::span<const std::int64_t>(motionKey_) : std::span<const std::int64_t>());
   if (!next || *next == state_.sightWakeAt[robot]) return;
   state_.sightWakeAt[robot] = *next;
   clock_.schedule(*next, id_);
@@ -220,7 +223,7 @@ RobotIo* CellDevices::robotIo(const std::string& label) const {
 
 bool CellDevices::running(std::size_t c) const { return signal(cell_.devices.conveyors[c].run); }
 
-Eigen::AlignedBox3d CellDevices::box(std::size_t o) const {
+const Eigen::AlignedBox3d& CellDevices::worldBox(std::size_t o) const {
   const Eigen::Isometry3d& pose = world_.restingPose(o);
   if (pose.matrix() != boxPose_[o].matrix()) boxPose_[o] = pose, boxOf_[o] = transformedBox(designBoxes_[o], pose);
   return boxOf_[o];
@@ -324,7 +327,7 @@ void CellDevices::feed(std::size_t f, vm::Micros now) {
   const Eigen::AlignedBox3d spot = workcell::boundsOf(part.shape).translated(shift);
   for (const std::size_t o : parts_) {
     if (world_.holder(o)) continue;
-    if (boxesOverlap(box(o), spot)) {
+    if (boxesOverlap(partBox(o), spot)) {
       if (!state_.waiting[f]) events_.push_back({DeviceEvent::Kind::Waits, now, f, o, state_.number[o], feeder.at});
       state_.waiting[f] = true;
       return;
@@ -348,6 +351,7 @@ void CellDevices::feed(std::size_t f, vm::Micros now) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.translation() = shift;
   world_.replace(slot, pose);
+  worldBox(slot);
   state_.number[slot] = state_.nextNumber++;
   parts_.insert(std::lower_bound(parts_.begin(), parts_.end(), slot), slot);
   state_.ridden[slot] = 0;
@@ -368,6 +372,7 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   if (event.tag != 0) state_.planWakeAt = -1;  // the plan's wake, now
   const workcell::Devices& d = cell_.devices;
   moveTo(now);
+  for (const std::size_t o : parts_) worldBox(o);  // partBox() holds from here on, kept so as the devices move parts
   // Parts past an open end fall onto what is below them.
   for (const std::size_t o : parts_) {
     if (state_.ridden[o] == 0 || world_.holder(o)) continue;
@@ -376,13 +381,13 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
     if (!obj.belt || !obj.belt->endOpen) continue;
     const Eigen::AlignedBox3d belt = transformedBox(obj.belt->surface, obj.F_world_design);
     const Eigen::Vector3d dir = (obj.F_world_design.linear() * obj.belt->direction).normalized();
-    const Eigen::AlignedBox3d b = box(o);
+    const Eigen::AlignedBox3d b = partBox(o);
     const double end = dir.dot(belt.center()) + dir.cwiseAbs().dot(belt.sizes() / 2);
     if (dir.dot(b.center()) < end - 1e-9) continue;
     double below = cell_.floor ? *cell_.floor : b.min().y();
     for (std::size_t k = 0; k < state_.number.size(); ++k) {
       if (k == o || !present(k)) continue;
-      const Eigen::AlignedBox3d other = box(k);
+      const Eigen::AlignedBox3d& other = worldBox(k);
       if (other.isEmpty() || other.max().y() > b.min().y() + 1e-6) continue;
       if (b.center().x() < other.min().x() || b.center().x() > other.max().x() || b.center().z() < other.min().z() ||
           b.center().z() > other.max().z())
@@ -390,6 +395,7 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
       below = std::max(below, other.max().y());
     }
     place(o, Eigen::Vector3d(0, below - b.min().y(), 0));
+    worldBox(o);
     state_.ridden[o] = 0, state_.velocity[o].setZero(), state_.travel[o] = 0;
   }
   // Sinks take the parts whose centre is in their zone.
@@ -397,7 +403,7 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
     const std::size_t o = parts_[i];
     bool gone = false;
     if (!world_.holder(o)) {
-      const Eigen::Vector3d centre = box(o).center();
+      const Eigen::Vector3d centre = partBox(o).center();
       for (std::size_t s = 0; s < d.sinks.size() && !gone; ++s) {
         if (!boxesTouch(Eigen::AlignedBox3d(centre, centre), d.sinks[s].zone)) continue;
         events_.push_back({DeviceEvent::Kind::Taken, now, s, o, state_.number[o], centre});
@@ -441,7 +447,7 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
         // hands hold stays put where it rests.
         const std::size_t o = parts_[i];
         if (world_.holder(o) && !world_.shared(o)) continue;
-        const Eigen::AlignedBox3d b = box(o);
+        const Eigen::AlignedBox3d& b = partBox(o);
         sees = sensor.shape == workcell::Sensor::Shape::Beam ? beamTouches(sensor.a, sensor.b, b)
                                                              : boxesTouch(b, sensor.zone);
       }

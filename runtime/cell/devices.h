@@ -50,6 +50,10 @@ class RobotIo {
   /// carried part looks at).
   virtual void motorsAt(vm::Micros t, std::span<std::int32_t> out) const = 0;
   virtual std::size_t motorCount() const = 0;
+  /// Appends words that fix the robot's motion from `origin` on (motorsAt
+  /// at every t >= origin): the same words, the same motion. False when it
+  /// cannot say (then nothing is remembered of it).
+  virtual bool motionKey(vm::Micros /*origin*/, std::vector<std::int64_t>& /*out*/) const { return false; }
 };
 
 /// One thing a device did, for the trace and the run log.
@@ -198,7 +202,12 @@ class CellDevices final : public CellProcess {
   RobotIo* robotIo(const std::string& label) const;
   /// Whether that label names robot `robot`.
   bool names(const std::string& label, std::size_t robot) const;
-  Eigen::AlignedBox3d box(std::size_t o) const;
+  /// Object `o`'s box in the world where it rests (worked out again when
+  /// it moved since).
+  const Eigen::AlignedBox3d& worldBox(std::size_t o) const;
+  /// A part's box in the world, as worldBox last worked it out: in a wake,
+  /// every part's is brought up to date once, after the belts' motion.
+  const Eigen::AlignedBox3d& partBox(std::size_t o) const { return boxOf_[o]; }
   bool rides(std::size_t o) const;
   void place(std::size_t o, const Eigen::Vector3d& shift);
   void sourceChanged(const workcell::Signal& source);
@@ -231,6 +240,7 @@ class CellDevices final : public CellProcess {
   std::vector<bool> robotSees_;   // scratch: what a robot shows each sensor now
   bool sensorSeesRobots_ = false;  // a sensor SEES ROBOTS or ALL
   std::vector<std::int32_t> motorsNow_;
+  std::vector<std::int64_t> motionKey_;  // watchRobot's scratch
   std::vector<DeviceEvent> events_;
   std::optional<std::string> fault_;
   void recordChangedMotions(vm::Micros now);

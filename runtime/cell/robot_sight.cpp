@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -304,7 +305,16 @@ bool RobotSight::remembers(const Last& last, vm::Micros from, vm::Micros to, con
   return !carried || last.offset == world_.heldOffset(robot_).affine();
 }
 
-std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at) {
+std::size_t RobotSight::KeyHash::operator()(const std::vector<std::int64_t>& key) const {
+  std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ key.size();
+  for (std::int64_t w : key) h = (std::rotl(h, 23) ^ static_cast<std::uint64_t>(w)) * 0x9e3779b97f4a7c15ULL;
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+  return static_cast<std::size_t>(h ^ (h >> 31));
+}
+
+std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at,
+                                                  std::span<const std::int64_t> motion) {
   if (!matters_ || to <= from) return std::nullopt;
   const std::optional<std::size_t> held = carriedPart();
   if (!held && !seesRobots_) return std::nullopt;  // nothing carried, and no sensor sees the robot
@@ -314,6 +324,20 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
   b.encoders.assign(motors_, 0);
   at(to, b.encoders);
   if (last_ && remembers(*last_, from, to, b, held)) return last_->change;
+  if (!motion.empty()) {
+    key_.assign(motion.begin(), motion.end());
+    key_.push_back(to - from);
+    key_.push_back(held ? static_cast<std::int64_t>(*held) + 1 : 0);
+    if (held) {
+      const Eigen::Matrix<double, 3, 4> offset = world_.heldOffset(robot_).affine();
+      for (int i = 0; i < 12; ++i) key_.push_back(std::bit_cast<std::int64_t>(offset.data()[i]));
+    }
+    if (const auto it = memory_.find(key_); it != memory_.end()) {
+      ++remembered_;
+      return it->second < 0 ? std::nullopt : std::optional<vm::Micros>(from + it->second);
+    }
+  }
+  ++searched_;
   if (held) {
     // How far the carried part's points lie from the tool centre point.
     const Eigen::AlignedBox3d box = workcell::boundsOf(cell_.objects[*held].shape);
@@ -333,6 +357,10 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
   if (budget > 0) {
     last_ = Last{from, to, change, b.encoders, held, Eigen::Matrix<double, 3, 4>::Zero()};
     if (held) last_->offset = world_.heldOffset(robot_).affine();
+    if (!motion.empty()) {
+      if (memory_.size() >= kRemembered) memory_.clear();
+      memory_.emplace(key_, change ? *change - from : -1);
+    }
   } else {
     last_.reset();
   }

@@ -20,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "model/workcell/collision_model.h"
@@ -49,7 +50,17 @@ class RobotSight {
   /// than at `from`, while the motors move as `at` says; none when it
   /// does not change. At most kMaxProbes poses are looked at: past them,
   /// the microsecond it stopped at (a look there goes on from it).
-  std::optional<vm::Micros> firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at);
+  /// `motion`, when given, fixes the motion from `from` on (RobotIo::
+  /// motionKey): a search made once is answered again for the same motion
+  /// with the same part carried the same way, as the sweep's memory
+  /// answers a move made again (a production loop asks the same each cycle).
+  std::optional<vm::Micros> firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at,
+                                        std::span<const std::int64_t> motion = {});
+  /// Searches answered from memory, and searches made.
+  std::uint64_t remembered() const { return remembered_; }
+  std::uint64_t searched() const { return searched_; }
+  /// Searches remembered at most (then all are forgotten at once).
+  static constexpr std::size_t kRemembered = 4096;
   static constexpr int kMaxProbes = 20'000;
   /// Forget the last search (the world or the motion was restored).
   void forget() { last_.reset(); }
@@ -95,6 +106,15 @@ class RobotSight {
   bool remembers(const Last& last, vm::Micros from, vm::Micros to, const Probe& end,
                  const std::optional<std::size_t>& carried) const;
   std::optional<Last> last_;
+  struct KeyHash {
+    std::size_t operator()(const std::vector<std::int64_t>& key) const;
+  };
+  // Whole searches by everything their answer depends on: the time to the
+  // move's end, the motion, the part carried and how; the answer counted
+  // from the search's start (-1: none).
+  std::unordered_map<std::vector<std::int64_t>, vm::Micros, KeyHash> memory_;
+  std::vector<std::int64_t> key_;
+  std::uint64_t remembered_ = 0, searched_ = 0;
 };
 
 }  // namespace rs::runtime

@@ -155,6 +155,19 @@ std::int32_t SimMachine::positionAt(std::size_t motor, Micros t) const {
   return runtime::positionAt(segments_[motor], motors_[motor], t);
 }
 
+bool SimMachine::motionKey(vm::Micros origin, std::vector<std::int64_t>& out) const {
+  const std::size_t n = segments_.size();
+  if (n == 0 || path_.size() / n > kMotionKeyKnots) return false;
+  const auto add = [&](const MotorSegment& s) {
+    out.push_back(s.from), out.push_back(s.to), out.push_back(s.start - origin), out.push_back(s.end - origin);
+    out.push_back((s.lockStep ? 1 : 0) | (s.lead ? 2 : 0));
+  };
+  out.push_back(static_cast<std::int64_t>(path_.size()));
+  for (const MotorSegment& s : segments_) add(s);
+  for (const MotorSegment& s : path_) add(s);
+  return true;
+}
+
 std::int64_t SimMachine::coveredBetween(std::size_t motor, Micros t0, Micros t1) const {
   if (motor >= segments_.size()) return 0;
   std::int64_t covered = 0;

@@ -124,6 +124,13 @@ class SimMachine final : public vm::Machine {
   /// answers its start (older moves are not kept); 0 for a motor index out
   /// of range.
   std::int32_t positionAt(std::size_t motor, vm::Micros t) const;
+  /// Appends to `out` everything positionAt answers from, its times
+  /// counted from `origin`: the motion from `origin` on is the same
+  /// whenever the words are (the motors' specs are the image's, fixed for
+  /// a run). False (nothing appended) for a line of more than
+  /// kMotionKeyKnots knots: too long a key to be worth keeping.
+  bool motionKey(vm::Micros origin, std::vector<std::int64_t>& out) const;
+  static constexpr std::size_t kMotionKeyKnots = 64;
   /// Encoder counts `motor` covers from t0 to t1 (t0 <= t1) as positionAt
   /// has it: each knot of a line moves one way, so the counts between the
   /// knots' starts, added up (a motor may turn back from knot to knot).
