@@ -223,6 +223,18 @@ RobotIo* CellDevices::robotIo(const std::string& label) const {
 
 bool CellDevices::running(std::size_t c) const { return signal(cell_.devices.conveyors[c].run); }
 
+std::uint64_t CellDevices::sightsRemembered() const {
+  std::uint64_t n = 0;
+  for (const auto& sight : sights_) n += sight ? sight->remembered() : 0;
+  return n;
+}
+
+std::uint64_t CellDevices::sightsSearched() const {
+  std::uint64_t n = 0;
+  for (const auto& sight : sights_) n += sight ? sight->searched() : 0;
+  return n;
+}
+
 const Eigen::AlignedBox3d& CellDevices::worldBox(std::size_t o) const {
   const Eigen::Isometry3d& pose = world_.restingPose(o);
   if (pose.matrix() != boxPose_[o].matrix()) boxPose_[o] = pose, boxOf_[o] = transformedBox(designBoxes_[o], pose);

@@ -127,6 +127,9 @@ class CellDevices final : public CellProcess {
   std::uint64_t fed(std::size_t f) const { return state_.fed[f]; }
   std::uint64_t taken(std::size_t s) const { return state_.taken[s]; }
   bool running(std::size_t c) const;
+  /// The robots' sight searches answered from memory, and made (RobotSight).
+  std::uint64_t sightsRemembered() const;
+  std::uint64_t sightsSearched() const;
 
   /// What the devices did since the last call, in order.
   std::vector<DeviceEvent> takeEvents() { return std::exchange(events_, {}); }

@@ -227,3 +227,24 @@ TEST_CASE("a WAITFOR nothing will satisfy leaves the robot waiting on the schedu
   const Ending straight = runOnRig("        WAITFOR 5 ON\n        END\n", false);
   CHECK(straight.outcome.reason == rs::vm::StopReason::Deadlock);
 }
+
+TEST_CASE("the cell's clock: a cancelled event does not happen, and cancelling one that ran is refused", "[cell]") {
+  std::vector<std::string> log;
+  Recorder a("a", log);
+  Scheduler clock;
+  const std::uint32_t ia = clock.add(a);
+  REQUIRE(clock.schedule(100, ia, 1));
+  const std::uint64_t first = clock.lastSeq();
+  REQUIRE(clock.schedule(100, ia, 2));
+  const std::uint64_t second = clock.lastSeq();
+  REQUIRE(clock.schedule(200, ia, 3));
+  CHECK(first != second);
+  CHECK(clock.cancel(100, first));
+  CHECK_FALSE(clock.cancel(100, first));   // gone already
+  CHECK_FALSE(clock.cancel(200, second));  // no such event at that time
+  REQUIRE(clock.advanceTo(150));
+  CHECK(log == std::vector<std::string>{"a@100/2"});
+  CHECK_FALSE(clock.cancel(100, second));  // it ran
+  REQUIRE(clock.advanceTo(300));
+  CHECK(log == std::vector<std::string>{"a@100/2", "a@200/3"});
+}

@@ -9,6 +9,10 @@
 
 #include <string>
 
+#include "../render/render_test_util.h"
+#include "bench/adept_hour.h"
+#include "compiler/description/library.h"
+#include "runtime/run/run.h"
 #include "tests/cli/cli_support.h"
 
 using rs::testing::CliResult;
@@ -165,4 +169,57 @@ TEST_CASE("robot sight: a carried block lifted through a beam leaves it at the m
   const CliResult text = runCli({"run", prog, "--trace"});
   CHECK(hasLine(text.out, "     5.540  sensor eye ON"));
   CHECK(hasLine(text.out, "     6.040  sensor eye OFF"));
+}
+
+// The sight remembers a search by the motion it was made for (RobotSight::
+// firstChange, RobotSight::kRemembered): the second carry across the beam
+// from the same place is the first one again, answered from memory, and
+// a carry of the same length that also lifts the block (the same X motion,
+// another Y) is not. Each edge by hand, as above: a carry from x 200..240
+// breaks the beam at x = 400 1.600 s in and leaves it 2.001 s in; the way
+// back (from x 480..520) 0.800 s and 1.201 s in; a move of 2800 X counts
+// takes 2.8 s. The lift of 1000 Y counts (800 counts/s) raises the block's
+// bottom (y 179) past the beam's height (y 200) at count 211, 0.26375 s
+// in, long before its front reaches x = 400: no edge.
+TEST_CASE("robot sight: a carry made again is answered from memory at the same hand-computed microseconds",
+          "[cell][devices]") {
+  rs::testing::TempDir dir;
+  dir.write("cell.rsd", carryCell("400 200 600  400 200 760"));
+  const std::string prog = dir.write("p.rsp", std::string(kTakeAndLift) +
+                                                  "        MOVE 2800 0 0 0\n"      // 7.025 .. 9.825
+                                                  "        MOVE -2800 0 0 0\n"     //       .. 12.625
+                                                  "        MOVE 2800 0 0 0\n"      //       .. 15.425
+                                                  "        MOVE -2800 0 0 0\n"     //       .. 18.225
+                                                  "        MOVE 2800 0 -1000 0\n"  //       .. 21.025
+                                                  "        END\n");
+  const CliResult r = runCli({"run", prog, "--trace"});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  for (const char* line : {"     8.625  sensor eye ON", "     9.026  sensor eye OFF", "    10.625  sensor eye ON",
+                           "    11.026  sensor eye OFF", "    14.225  sensor eye ON", "    14.626  sensor eye OFF",
+                           "    16.225  sensor eye ON", "    16.626  sensor eye OFF"}) {
+    CAPTURE(line);
+    CHECK(hasLine(r.out, line));
+  }
+  CHECK(r.out.find("turned ON 4 times") != std::string::npos);
+}
+
+TEST_CASE("robot sight: a production loop's searches are answered from memory after its first cycles",
+          "[cell][devices]") {
+  rs::compiler::Library library(rs::compiler::librarySearchPath({}));
+  const auto cell = library.workcell("adept-cell");
+  REQUIRE(cell);
+  const auto run = rendertest::runOf(rendertest::compileText(rs::bench::adeptHourProgram(40), *cell), &*cell, {},
+                                     false, rs::runtime::CollisionMode::Off);
+  const rs::vm::RunOutcome outcome = run->runToEnd();
+  REQUIRE(outcome.ok());
+  const rs::runtime::CellDevices& devices = *run->rig().devices();
+  CHECK(devices.taken(0) == 40);
+  // The loop carries a block out of the beam and over to the outfeed each
+  // 6 s cycle, the same moves from the same places once the belts' timing
+  // repeats: the searches of a few cycles are made, the rest remembered.
+  INFO("searched " << devices.sightsSearched() << ", remembered " << devices.sightsRemembered());
+  CHECK(devices.sightsSearched() > 0);
+  CHECK(devices.sightsRemembered() > 30 * 3);
+  CHECK(devices.sightsSearched() < devices.sightsRemembered() / 4);
 }
