@@ -115,6 +115,36 @@ double PartClearance::least() const {
   return d;
 }
 
+// The objects whose gap to the box round every moving part (the links
+// that are checked against objects, the carried object as raised for rest)
+// is at least as long as the farthest any of them can still go: for each
+// part alone that gap is no shorter (its box lies in that box), so
+// pairGaps would find the part's box apart from the object's and the gap
+// not closable, and add nothing. Skipping them is the same answer at one
+// look per object instead of one per part and object: a feeder's parked
+// slots, far below the floor, cost next to nothing.
+void CollisionData::markOutOfReach(const CollisionQuery& query, SweepMotion& motion, bool holds) {
+  const auto& robot = model_.robotBodies_;
+  const auto& objects = model_.objectBodies_;
+  Eigen::AlignedBox3d moving;
+  double farthest = 0;
+  for (std::size_t b = 0; b < robot.size(); ++b) {
+    if (robot[b].pieces.empty() || robot[b].frame == 0) continue;
+    moving.extend(robotHull_[b]);
+    farthest = std::max(farthest, motion.anyWay(b));
+  }
+  if (holds) moving.extend(heldRaisedHull_), farthest = std::max(farthest, motion.anyWay(robot.size()));
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    outOfReach_[o] = 0;
+    if (moving.isEmpty() || objects[o].pieces.empty()) continue;
+    objectBoxes(o, query.objectPoses[o]);
+    if (objectHull_[o].isEmpty()) continue;
+    Eigen::Vector3d along;
+    const double gap = boxGap(moving, objectHull_[o], along);
+    outOfReach_[o] = gap > 0 && gap >= farthest;
+  }
+}
+
 std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std::int32_t> encoders,
                                                              const CollisionQuery& query, SweepMotion& motion,
                                                              std::span<PartClearance> clearance) {
@@ -139,6 +169,7 @@ std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std
       heldHull_.extend(heldBoxes_[i]), heldRaisedHull_.extend(heldRaisedBoxes_[i]);
   }
   motion.posed(*this);
+  markOutOfReach(query, motion, holds);
 
   const std::optional<double> floor = model_.cell_->floor;
   const int last = static_cast<int>(F_world_i_.size()) - 1;
@@ -171,7 +202,7 @@ std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std
     if (body.frame != 0) {
       if (underFloor(self, robotBoxes_[b].data())) return Contact{body.ref, {BodyKind::Floor, 0}};
       for (std::size_t o = 0; o < objects.size(); ++o) {
-        if (query.held == o || (isFinger(body) && query.exempt == o)) continue;
+        if (query.held == o || (isFinger(body) && query.exempt == o) || outOfReach_[o]) continue;
         if (against(self, objectSide(o), 0)) return Contact{body.ref, objects[o].ref};
       }
     }
@@ -188,7 +219,7 @@ std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std
   const Mover raised{heldIndex, Side{&held, &heldRaised, heldRaisedBoxes_.data(), &heldRaisedHull_}, self.anyWay};
   if (underFloor(raised, heldRaisedBoxes_.data())) return Contact{held.ref, {BodyKind::Floor, 0}};
   for (std::size_t o = 0; o < objects.size(); ++o) {
-    if (o == *query.held) continue;
+    if (o == *query.held || outOfReach_[o]) continue;
     if (against(raised, objectSide(o), 0)) return Contact{held.ref, objects[o].ref};
   }
   for (std::size_t c = 0; c < robot.size(); ++c) {

@@ -271,6 +271,7 @@ CollisionData::CollisionData(const CollisionModel& model) : model_(model) {
   heldRaisedBoxes_.assign(most, Eigen::AlignedBox3d());
   robotHull_.assign(model.robotBodies_.size(), Eigen::AlignedBox3d());
   objectHull_.assign(model.objectBodies_.size(), Eigen::AlignedBox3d());
+  outOfReach_.assign(model.objectBodies_.size(), 0);
   if (model.robot_ < model.cell_->robots.size() && !model.chain_) {  // a bare base: where it was placed
     const PlacedRobot& placed = model.cell_->robots[model.robot_];
     for (Eigen::Isometry3d& p : robotPoses_) p = placed.F_world_design;

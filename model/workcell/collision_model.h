@@ -319,6 +319,8 @@ class CollisionData {
   template <typename OnContact>
   void scan(std::span<const std::int32_t> encoders, const CollisionQuery& query, OnContact&& on);
   void pose(std::span<const std::int32_t> encoders);
+  // outOfReach_ for this check (clearance.cpp).
+  void markOutOfReach(const CollisionQuery& query, SweepMotion& motion, bool holds);
   // Object o's piece boxes at `pose`, kept until its pose changes.
   const Eigen::AlignedBox3d* objectBoxes(std::size_t o, const Eigen::Isometry3d& pose);
 
@@ -337,6 +339,7 @@ class CollisionData {
   // The union of each body's piece boxes (the broad phase of the clearance).
   std::vector<Eigen::AlignedBox3d> robotHull_, objectHull_;
   Eigen::AlignedBox3d heldHull_, heldRaisedHull_;
+  std::vector<char> outOfReach_;  // per object: no moving part can close its gap this check (clearance.cpp)
 };
 
 /// Every overlap of the robot the cell drives (Workcell::drivenRobot) at its home pose, objects where

@@ -115,8 +115,10 @@ void RobotSight::look(Probe& p) {
 
 void RobotSight::sees(std::span<const std::int32_t> encoders, std::vector<bool>& out) {
   out.assign(cell_.devices.sensors.size(), false);
-  if (!matters_) return;
-  Probe p;
+  // Nothing carried and no sensor that sees the robot: nothing to show
+  // (what look() would find, without posing the arm).
+  if (!matters_ || (!seesRobots_ && !carriedPart())) return;
+  Probe& p = pool_[0];  // free between searches; no allocation once warm
   p.encoders.assign(motors_, 0);
   std::copy_n(encoders.begin(), std::min(encoders.size(), motors_), p.encoders.begin());
   look(p);

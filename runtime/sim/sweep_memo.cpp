@@ -16,17 +16,24 @@ std::size_t SweepMemo::KeyHash::operator()(const std::vector<std::uint64_t>& key
   return static_cast<std::size_t>(h ^ (h >> 31));
 }
 
-std::uint64_t SweepMemo::placesId(std::span<const Eigen::Isometry3d> poses) {
-  std::string bytes(poses.size() * sizeof(double) * 12, '\0');
-  char* out = bytes.data();
-  for (const Eigen::Isometry3d& pose : poses) {
-    const Eigen::Matrix<double, 3, 4> m = pose.affine();
-    std::memcpy(out, m.data(), sizeof(double) * 12);
-    out += sizeof(double) * 12;
+void SweepMemo::encodePlaces(std::span<const Eigen::Isometry3d> poses, std::vector<std::uint64_t>& out) {
+  out.clear();
+  out.push_back(poses.size());
+  constexpr std::size_t kWords = 16;  // the whole matrix, as Eigen stores it
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const double* m = poses[i].matrix().data();
+    // Bit for bit: memcmp, not ==, so that -0.0 and 0.0 stay apart.
+    if (i > 0 && std::memcmp(m, poses[i - 1].matrix().data(), sizeof(double) * kWords) == 0) continue;
+    out.push_back(i);
+    for (std::size_t w = 0; w < kWords; ++w) out.push_back(std::bit_cast<std::uint64_t>(m[w]));
   }
-  if (const auto it = places_.find(bytes); it != places_.end()) return it->second;
+}
+
+std::uint64_t SweepMemo::placesId(std::span<const Eigen::Isometry3d> poses) {
+  encodePlaces(poses, placesWords_);
+  if (const auto it = places_.find(placesWords_); it != places_.end()) return it->second;
   if (places_.size() >= kPlaces) places_.clear();
-  places_.emplace(std::move(bytes), nextPlaces_);
+  places_.emplace(placesWords_, nextPlaces_);
   return nextPlaces_++;
 }
 

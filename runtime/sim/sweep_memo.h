@@ -15,7 +15,6 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <span>
-#include <string>
 #include <unordered_map>
 #include <optional>
 #include <vector>
@@ -44,6 +43,11 @@ class SweepMemo {
   /// the same number while they are remembered; a number is never given to
   /// other poses.
   std::uint64_t placesId(std::span<const Eigen::Isometry3d> poses);
+  /// The words placesId() tells sets of poses apart by: the count, then each
+  /// pose that differs from the one before it, after its index. Exact (the
+  /// poses follow from the words), and short where many poses are the same
+  /// in a row: a feeder's parked slots.
+  static void encodePlaces(std::span<const Eigen::Isometry3d> poses, std::vector<std::uint64_t>& out);
 
   /// The verdict remembered under `key`, or null.
   const SweepVerdict* find(const std::vector<std::uint64_t>& key) const;
@@ -55,7 +59,9 @@ class SweepMemo {
     std::size_t operator()(const std::vector<std::uint64_t>& key) const;
   };
   std::unordered_map<std::vector<std::uint64_t>, SweepVerdict, KeyHash> verdicts_;
-  std::unordered_map<std::string, std::uint64_t> places_;
+  std::unordered_map<std::vector<std::uint64_t>, std::uint64_t, KeyHash> places_;
+  std::vector<std::uint64_t> placesWords_;  // scratch: encodePlaces'
+
   std::uint64_t nextPlaces_ = 0;
 };
 
