@@ -115,6 +115,54 @@ double PartClearance::least() const {
   return d;
 }
 
+void CollisionData::boxParts(const CollisionQuery& query, bool holds) {
+  const auto& robot = model_.robotBodies_;
+  const auto& objects = model_.objectBodies_;
+  for (std::size_t b = 0; b < robot.size(); ++b) {
+    pieceBoxes(robot[b], robotPoses_[b], robotBoxes_[b].data());
+    robotHull_[b].setEmpty();
+    for (const Eigen::AlignedBox3d& box : robotBoxes_[b]) robotHull_[b].extend(box);
+  }
+  heldHull_.setEmpty();
+  heldRaisedHull_.setEmpty();
+  if (!holds) return;
+  const Eigen::Isometry3d heldPose = F_world_i_.back() * query.heldOffset;
+  pieceBoxes(objects[*query.held], heldPose, heldBoxes_.data());
+  pieceBoxes(objects[*query.held], raisedForRest(heldPose), heldRaisedBoxes_.data());
+  for (std::size_t i = 0; i < objects[*query.held].pieces.size(); ++i)
+    heldHull_.extend(heldBoxes_[i]), heldRaisedHull_.extend(heldRaisedBoxes_[i]);
+}
+
+// Each part's box at a later check lies within its travel since the start
+// of its box at the start, on every axis: its gap to an object shrinks by
+// at most sqrt(3) times that (a corner's way), so a gap of more than three
+// times the part's travel stays longer than the part can still go (and
+// longer than 0), and pairGaps adds nothing at any check (the reasoning of
+// markOutOfReach, for the whole move).
+void CollisionData::outOfReachOfMove(std::span<const std::int32_t> encoders, const CollisionQuery& query,
+                                     std::span<const double> travel, std::vector<char>& out) {
+  const auto& robot = model_.robotBodies_;
+  const auto& objects = model_.objectBodies_;
+  pose(encoders);
+  const bool holds = query.held && *query.held < objects.size();
+  boxParts(query, holds);
+  out.assign(objects.size(), 1);
+  const auto farFrom = [&](const Eigen::AlignedBox3d& part, double most, const Eigen::AlignedBox3d& object) {
+    if (part.isEmpty()) return true;
+    Eigen::Vector3d along;
+    const double gap = boxGap(part, object, along);
+    return gap > 3 * most + 1e-6 * (1 + gap);  // a margin for the rounding of the poses the checks compute
+  };
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    if (objects[o].pieces.empty()) continue;
+    objectBoxes(o, query.objectPoses[o]);
+    if (objectHull_[o].isEmpty()) continue;
+    for (std::size_t b = 0; b < robot.size() && out[o]; ++b)
+      if (!robot[b].pieces.empty() && robot[b].frame != 0) out[o] = farFrom(robotHull_[b], travel[b], objectHull_[o]);
+    if (holds && out[o]) out[o] = farFrom(heldRaisedHull_, travel[robot.size()], objectHull_[o]);
+  }
+}
+
 // The objects whose gap to the box round every moving part (the links
 // that are checked against objects, the carried object as raised for rest)
 // is at least as long as the farthest any of them can still go: for each
@@ -153,21 +201,9 @@ std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std
   const auto& objects = model_.objectBodies_;
   const std::size_t heldIndex = robot.size();
   for (PartClearance& c : clearance) c.reset();
-  for (std::size_t b = 0; b < robot.size(); ++b) {
-    pieceBoxes(robot[b], robotPoses_[b], robotBoxes_[b].data());
-    robotHull_[b].setEmpty();
-    for (const Eigen::AlignedBox3d& box : robotBoxes_[b]) robotHull_[b].extend(box);
-  }
   const bool holds = query.held && *query.held < objects.size();
   const Eigen::Isometry3d heldPose = F_world_i_.back() * query.heldOffset, heldRaised = raisedForRest(heldPose);
-  heldHull_.setEmpty();
-  heldRaisedHull_.setEmpty();
-  if (holds) {
-    pieceBoxes(objects[*query.held], heldPose, heldBoxes_.data());
-    pieceBoxes(objects[*query.held], heldRaised, heldRaisedBoxes_.data());
-    for (std::size_t i = 0; i < objects[*query.held].pieces.size(); ++i)
-      heldHull_.extend(heldBoxes_[i]), heldRaisedHull_.extend(heldRaisedBoxes_[i]);
-  }
+  boxParts(query, holds);
   motion.posed(*this);
   markOutOfReach(query, motion, holds);
 

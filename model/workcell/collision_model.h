@@ -278,6 +278,16 @@ class CollisionData {
   /// entries. No allocation.
   std::optional<Contact> findContactOrClearance(std::span<const std::int32_t> encoders, const CollisionQuery& query,
                                                 SweepMotion& motion, std::span<PartClearance> clearance);
+  /// Per object (`out`), whether no moving part can come near enough to
+  /// it during a move that starts with the motors at `encoders` for it to
+  /// count in any check of the move (findContactOrClearance adds no gap to
+  /// it, finds no contact with it), where part p (robotBodies() order, then
+  /// the carried object) moves at most `travel[p]` over the whole move and
+  /// can go no farther from any check: its gap to each moving part's box
+  /// at the start is more than three times that part's travel. Such
+  /// objects can stand anywhere: the move's verdict is the same.
+  void outOfReachOfMove(std::span<const std::int32_t> encoders, const CollisionQuery& query,
+                        std::span<const double> travel, std::vector<char>& out);
   /// Poses the arm at `encoders` and checks nothing: frame() and
   /// robotPose() answer for this pose (what a sensor that sees the robot
   /// asks, runtime/cell/robot_sight.h). No allocation.
@@ -319,6 +329,9 @@ class CollisionData {
   template <typename OnContact>
   void scan(std::span<const std::int32_t> encoders, const CollisionQuery& query, OnContact&& on);
   void pose(std::span<const std::int32_t> encoders);
+  // The robot's piece boxes and hulls at the pose, the carried object's
+  // true and raised for rest (clearance.cpp).
+  void boxParts(const CollisionQuery& query, bool holds);
   // outOfReach_ for this check (clearance.cpp).
   void markOutOfReach(const CollisionQuery& query, SweepMotion& motion, bool holds);
   // Object o's piece boxes at `pose`, kept until its pose changes.

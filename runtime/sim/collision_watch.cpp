@@ -158,6 +158,18 @@ const CollisionEvent* CollisionWatch::sweepPosed(const SimMachine& machine, cons
     workcell::CollisionQuery query = world.collisionQuery(knot ? lineFrom : before, knot ? lineTo : after,
                                                           std::span(poses_).first(worldObjects_), hand_);
     query.objectPoses = poses_;  // the other robots' parts too
+    // The same move among the same objects within its reach, the others
+    // anywhere: the same verdict (reachKeyOf).
+    const bool byReach = remember && !others_;
+    if (byReach) {
+      reachKeyOf(query, before, after);
+      if (const SweepVerdict* near = memo_.find(reachKey_)) {
+        ++remembered_;
+        fresh = *near;
+        memo_.remember(key_, fresh);
+        return noteVerdict(start, fresh);
+      }
+    }
     carried_.clear();
     if (othersMove_)
       for (std::size_t o = 0; o < worldObjects_; ++o)
@@ -171,12 +183,56 @@ const CollisionEvent* CollisionWatch::sweepPosed(const SimMachine& machine, cons
       if (o && o->depth <= kEndsInBy) fresh.endsIn = o;
     }
     if (remember) memo_.remember(key_, fresh);
+    if (byReach) memo_.remember(reachKey_, fresh);
     verdict = &fresh;
   }
-  if (!verdict->collides) return nullptr;
+  return noteVerdict(start, *verdict);
+}
+
+const CollisionEvent* CollisionWatch::noteVerdict(vm::Micros start, const SweepVerdict& verdict) {
+  if (!verdict.collides) return nullptr;
   events_.push_back(
-      {start + verdict->after, verdict->contact, verdict->encoders, instruction_, verdict->depth, verdict->endsIn});
+      {start + verdict.after, verdict.contact, verdict.encoders, instruction_, verdict.depth, verdict.endsIn});
   return &events_.back();
+}
+
+// How far the carried object's points lie from the tool centre point.
+std::optional<double> CollisionWatch::carriedReach(const workcell::CollisionQuery& query) const {
+  if (!query.held) return std::nullopt;
+  double reach = 0;
+  for (const workcell::CollisionPiece& piece : model_.objectBodies()[*query.held].pieces)
+    for (const Eigen::Vector3d& p : piece.points) reach = std::max(reach, (query.heldOffset * p).norm());
+  return reach;
+}
+
+// A move's key by what it can reach (a second chance for a move whose
+// world is new: the first cycles of a production loop, before the parts
+// upstream on a belt stand where they will stand in every later cycle):
+// the query whole but for the objects no moving part can come near during
+// the move (CollisionData::outOfReachOfMove), which it leaves out, and the
+// motors at both ends. Exact: the sweep's checks never look at the objects
+// left out, whatever their places. Starts with a word no places id reaches.
+void CollisionWatch::reachKeyOf(const workcell::CollisionQuery& query, std::span<const std::int32_t> before,
+                                std::span<const std::int32_t> after) {
+  bounds_.startMove(carriedReach(query));
+  travel_.resize(clearance_.size());
+  for (std::size_t p = 0; p < travel_.size(); ++p) travel_[p] = bounds_.mostTravel(p, before, after);
+  data_.outOfReachOfMove(before, query, travel_, outOfReach_);
+  reachKey_.clear();
+  reachKey_.push_back(~std::uint64_t{0});
+  reachKey_.push_back(query.objectPoses.size());
+  const auto words = [this](const Eigen::Isometry3d& pose) {
+    for (int i = 0; i < 16; ++i) reachKey_.push_back(std::bit_cast<std::uint64_t>(pose.matrix().data()[i]));
+  };
+  for (std::size_t o = 0; o < query.objectPoses.size(); ++o) {
+    if (o < outOfReach_.size() && outOfReach_[o]) continue;
+    reachKey_.push_back(o);
+    words(query.objectPoses[o]);
+  }
+  reachKey_.push_back(query.held ? *query.held + 1 : 0);
+  if (query.held) words(query.heldOffset);
+  reachKey_.push_back(query.exempt ? *query.exempt + 1 : 0);
+  appendPairs(reachKey_, before, after);
 }
 
 // The largest share of its allowance any limit has used by time t, with
@@ -197,14 +253,7 @@ void CollisionWatch::partWay(std::span<const std::int32_t> from, std::span<const
 SweepVerdict CollisionWatch::advance(const SimMachine& machine, const World& world, const workcell::CollisionQuery& query,
                                      std::span<const std::int32_t> before, std::span<const std::int32_t> after,
                                      vm::Micros start, vm::Micros end) {
-  std::optional<double> carried;
-  if (query.held) {
-    double reach = 0;
-    for (const workcell::CollisionPiece& piece : model_.objectBodies()[*query.held].pieces)
-      for (const Eigen::Vector3d& p : piece.points) reach = std::max(reach, (query.heldOffset * p).norm());
-    carried = reach;
-  }
-  bounds_.startMove(carried);
+  bounds_.startMove(carriedReach(query));
   bounds_.othersMove(0);
   at_.assign(before.begin(), before.end());
   probe_.assign(before.begin(), before.end());

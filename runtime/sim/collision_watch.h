@@ -129,6 +129,10 @@ class CollisionWatch {
                                    std::span<const std::int32_t> after, vm::Micros start, vm::Micros end,
                                    std::span<const std::int32_t> lineFrom, std::span<const std::int32_t> lineTo);
   void othersPose();
+  const CollisionEvent* noteVerdict(vm::Micros start, const SweepVerdict& verdict);
+  std::optional<double> carriedReach(const workcell::CollisionQuery& query) const;
+  void reachKeyOf(const workcell::CollisionQuery& query, std::span<const std::int32_t> before,
+                  std::span<const std::int32_t> after);
   void keyOf(const World& world, std::span<const std::int32_t> before, std::span<const std::int32_t> after,
              std::span<const std::int32_t> lineFrom, std::span<const std::int32_t> lineTo);
   double used(const SimMachine& machine, vm::Micros t);
@@ -147,6 +151,9 @@ class CollisionWatch {
   std::optional<std::uint64_t> worldRevision_;  // the world's revision placesId_ was taken at
   std::uint64_t placesId_ = 0;
   std::vector<std::uint64_t> key_;         // scratch: this move's key
+  std::vector<std::uint64_t> reachKey_;    // scratch: its key by what it can reach (reachKeyOf)
+  std::vector<double> travel_;             // scratch: per part, the most it travels in the move
+  std::vector<char> outOfReach_;           // scratch: per object, out of the move's reach
   std::vector<Eigen::Isometry3d> poses_;   // scratch: every object's resting pose
   std::size_t worldObjects_ = 0;           // poses_ past these are others_'
   MovingParts* others_ = nullptr;

@@ -44,6 +44,21 @@ void MotionBounds::startMove(std::optional<double> carriedReach) {
   if (carriedReach) model_.carriedRadii(*carriedReach, std::span<double>(&radii_[carried * joints_], joints_));
 }
 
+double MotionBounds::mostTravel(std::size_t part, std::span<const std::int32_t> from,
+                                std::span<const std::int32_t> to) const {
+  double sum = 0;
+  for (std::size_t j = 0; j < partFrame_[part]; ++j) {
+    const std::span<const double> rates = model_.jointRates(j);
+    double turn = 0;
+    for (std::size_t m = 0; m < rates.size() && m < from.size() && m < to.size(); ++m)
+      turn += std::abs(rates[m]) * std::abs(static_cast<double>(to[m]) - from[m]);
+    sum += turn * (model_.revolute(j) ? radii_[part * joints_ + j] : 1.0);
+  }
+  const std::optional<std::size_t> g = model_.gripperMotor();
+  if (g && *g < from.size() && *g < to.size()) sum += fingers_[part] * std::abs(static_cast<double>(to[*g]) - from[*g]);
+  return sum;
+}
+
 void MotionBounds::setCheck(std::span<const std::int32_t> at, std::span<const std::int32_t> end) {
   at_ = at, end_ = end;
   data_ = nullptr;

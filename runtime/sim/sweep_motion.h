@@ -45,6 +45,12 @@ class MotionBounds final : public workcell::SweepMotion {
   /// to them closes by their travel too. Gaps to the arm's own parts do not.
   void othersMove(double toEnd) { othersToEnd_ = toEnd; }
 
+  /// The most part `part` can move over a move from motors `from` to `to`
+  /// (after startMove), from any check of it to any later one or to its
+  /// end: each joint's whole turn at the part's bound on its distance from
+  /// the axis. At least what anyWay() says at any check of the move.
+  double mostTravel(std::size_t part, std::span<const std::int32_t> from, std::span<const std::int32_t> to) const;
+
   void posed(const workcell::CollisionData& data) override;
   double anyWay(std::size_t part) override { return need_[part] + others(part, 0); }
   double along(std::size_t part, const Eigen::Vector3d& normal, std::size_t from) override;

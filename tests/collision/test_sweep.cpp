@@ -8,12 +8,14 @@
 // as the bound allows, so the checks are as far apart as they ever get.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "../render/render_test_util.h"
 #include "compiler/description/library.h"
 #include "model/workcell/collision_model.h"
 #include "runtime/run/run.h"
+#include "runtime/sim/sweep_motion.h"
 
 namespace {
 
@@ -122,4 +124,42 @@ TEST_CASE("no plate thicker than the sweep bound is passed through unseen, thinn
   const Sweep near = sweepThrough(cell, image, thick, 45);
   CHECK(near.collisions == 1);
   CHECK(near.checks < 100);
+}
+
+// A move's key by what it can reach (CollisionWatch::reachKeyOf) leaves
+// out the objects it cannot come near: a plate the blade's tip passes
+// close to counts, plates far round the turn do not, until the turn is
+// long enough to come near them.
+TEST_CASE("the objects out of a move's reach are the ones it cannot come near", "[collision][sweep]") {
+  rs::workcell::Workcell cell = sweepCell();
+  cell.objects.push_back(plate(1, 2));    // 15 from the blade at the start
+  cell.objects.push_back(plate(1, 30));   // about 225
+  cell.objects.push_back(plate(1, -90));  // 450, behind it
+  const rs::workcell::CollisionModel model(cell, 0);
+  rs::workcell::CollisionData data(model);
+  rs::runtime::MotionBounds bounds(model);
+  bounds.startMove(std::nullopt);
+  std::vector<Eigen::Isometry3d> poses;
+  for (const rs::workcell::PlacedObject& o : cell.objects) poses.push_back(o.F_world_design);
+  rs::workcell::CollisionQuery query;
+  query.objectPoses = poses;
+  const auto outOfReach = [&](std::int32_t counts) {
+    const std::vector<std::int32_t> from{0}, to{counts};
+    std::vector<double> travel;
+    for (std::size_t p = 0; p <= model.robotBodies().size(); ++p) travel.push_back(bounds.mostTravel(p, from, to));
+    // The blade's tip goes 505 times the turn, and the bound is no less.
+    CHECK(*std::max_element(travel.begin(), travel.end()) >= 505 * counts * 0.01 * M_PI / 180);
+    std::vector<char> out;
+    data.outOfReachOfMove(from, query, travel, out);
+    REQUIRE(out.size() == 3);
+    return out;
+  };
+  const std::vector<char> degree = outOfReach(100);  // 1 degree: the tip goes 8.8
+  CHECK(!degree[0]);
+  CHECK(degree[1]);
+  CHECK(degree[2]);
+  const std::vector<char> twenty = outOfReach(2000);  // 20 degrees: 176
+  CHECK(!twenty[0]);
+  CHECK(!twenty[1]);
+  CHECK(!twenty[2]);
 }
