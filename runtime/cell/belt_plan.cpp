@@ -171,7 +171,6 @@ void CellDevices::plan(vm::Micros now) {
     const double speed = w.norm();
     const double T = std::isinf(state_.travel[o]) ? kHorizon : state_.travel[o] / speed;
     const Eigen::AlignedBox3d& b = partBox(o);
-    const bool isPart = cell_.objects[o].kind == workcell::ObjectKind::Part;
     // All the box can cover on its way, grown by a unit (far more than
     // beamInterval's slack): a beam that misses it is never met, and its
     // interval (45 vertices of 10 constraints) need not be solved.
@@ -179,7 +178,7 @@ void CellDevices::plan(vm::Micros now) {
     way.extend(b.translated(w * T));
     way = Eigen::AlignedBox3d(way.min().array() - 1.0, way.max().array() + 1.0);
     for (const workcell::Sensor& s : d.sensors) {
-      if (s.sees == workcell::Sensor::Sees::Robots || !isPart) continue;
+      if (s.sees == workcell::Sensor::Sees::Robots) continue;
       if (s.shape == workcell::Sensor::Shape::Beam && !beamTouches(s.a, s.b, way)) continue;
       const Interval in = s.shape == workcell::Sensor::Shape::Beam ? beamInterval(b, w, T, s.a, s.b)
                                                                   : zoneInterval(b, w, T, s.zone);
@@ -194,9 +193,7 @@ void CellDevices::plan(vm::Micros now) {
     }
     if (std::isinf(state_.travel[o])) {
       // The centre passes the open end.
-      const workcell::Conveyor& c = d.conveyors[state_.ridden[o] - 1];
-      const workcell::PlacedObject& obj = cell_.objects[c.object];
-      const Eigen::AlignedBox3d belt = transformedBox(obj.belt->surface, obj.F_world_design);
+      const Eigen::AlignedBox3d& belt = belts_[state_.ridden[o] - 1]->belt;
       const Eigen::Vector3d dir = w / speed;
       const double end = dir.dot(belt.center()) + dir.cwiseAbs().dot(belt.sizes() / 2);
       next = std::min(next, startMicro(now, std::max(0.0, (end - dir.dot(b.center())) / speed)));

@@ -139,7 +139,6 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, std::vect
   state_.nextNumber = static_cast<std::uint32_t>(firstSlot_ + 1);
   listParts();
   state_.sensorOn.assign(d.sensors.size(), false);
-  for (const workcell::Sensor& sensor : d.sensors) sensorSeesRobots_ |= sensor.sees != workcell::Sensor::Sees::Parts;
   nextSensor_ = state_.sensorOn;
   state_.sensorCount.assign(d.sensors.size(), 0);
   state_.carried.assign(d.conveyors.size(), 0);
@@ -192,7 +191,7 @@ void CellDevices::watchRobot(vm::Micros now, std::size_t robot) {
   const bool keyed = io->motionKey(now, motionKey_);
   const std::optional<vm::Micros> next = sights_[robot]->firstChange(
       now, state_.moveUntil[robot], [io](vm::Micros t, std::span<std::int32_t> out) { io->motorsAt(t, out); },
-      keyed ? std::span<const std::int64_t>(motionKey_) : std::span<const std::int64_t>());
+      keyed ? std::span<const std::uint64_t>(motionKey_) : std::span<const std::uint64_t>());
   if (!next || *next == state_.sightWakeAt[robot]) return;
   state_.sightWakeAt[robot] = *next;
   clock_.schedule(*next, id_);
@@ -293,17 +292,16 @@ void CellDevices::moveTo(vm::Micros now) {
       ride.from = pose.translation(), ride.velocity = w, ride.micros = 0, ride.done = 0;
     }
     const double speed = w.norm();
-    const double dist = std::min(speed * static_cast<double>(dtUs) / 1e6, state_.travel[o]);
+    const double dist = speed * static_cast<double>(dtUs) / 1e6;
     if (dist >= state_.travel[o]) {
       // To the end of its travel: the stop is where it rests now.
       ride.done += state_.travel[o];
-      pose.translation() = ride.from + w / speed * (speed * static_cast<double>(ride.micros) / 1e6 + ride.done);
       state_.travel[o] = 0;
     } else {
       ride.micros += dtUs;
-      pose.translation() = ride.from + w / speed * (speed * static_cast<double>(ride.micros) / 1e6 + ride.done);
       state_.travel[o] -= dist;
     }
+    pose.translation() = ride.from + w / speed * (speed * static_cast<double>(ride.micros) / 1e6 + ride.done);
     ride.at = pose.translation();
     world_.place(o, pose);
   }
@@ -388,14 +386,11 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   // Parts past an open end fall onto what is below them.
   for (const std::size_t o : parts_) {
     if (state_.ridden[o] == 0 || world_.holder(o)) continue;
-    const workcell::Conveyor& c = d.conveyors[state_.ridden[o] - 1];
-    const workcell::PlacedObject& obj = cell_.objects[c.object];
-    if (!obj.belt || !obj.belt->endOpen) continue;
-    const Eigen::AlignedBox3d belt = transformedBox(obj.belt->surface, obj.F_world_design);
-    const Eigen::Vector3d dir = (obj.F_world_design.linear() * obj.belt->direction).normalized();
+    const std::size_t c = state_.ridden[o] - 1;
+    const workcell::PlacedObject& obj = cell_.objects[d.conveyors[c].object];
+    if (!belts_[c] || !obj.belt->endOpen) continue;
     const Eigen::AlignedBox3d b = partBox(o);
-    const double end = dir.dot(belt.center()) + dir.cwiseAbs().dot(belt.sizes() / 2);
-    if (dir.dot(b.center()) < end - 1e-9) continue;
+    if (belts_[c]->dir.dot(b.center()) < belts_[c]->end - 1e-9) continue;
     double below = cell_.floor ? *cell_.floor : b.min().y();
     for (std::size_t k = 0; k < state_.number.size(); ++k) {
       if (k == o || !present(k)) continue;
@@ -468,12 +463,6 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   // What the robot and the part it carries show them, where they are now.
   for (std::size_t r = 0; r < sights_.size(); ++r) {
     if (!sights_[r]) continue;
-    // Nothing carried, and no sensor sees robots: it shows them nothing.
-    const std::optional<std::size_t> held = world_.held(r);
-    if (!sensorSeesRobots_ && (!held || world_.shared(*held))) {
-      watchRobot(now, r);
-      continue;
-    }
     motorsNow_.assign(robots_[r]->motorCount(), 0);
     robots_[r]->motorsAt(now, motorsNow_);
     sights_[r]->sees(motorsNow_, robotSees_);

@@ -53,7 +53,7 @@ class RobotIo {
   /// Appends words that fix the robot's motion from `origin` on (motorsAt
   /// at every t >= origin): the same words, the same motion. False when it
   /// cannot say (then nothing is remembered of it).
-  virtual bool motionKey(vm::Micros /*origin*/, std::vector<std::int64_t>& /*out*/) const { return false; }
+  virtual bool motionKey(vm::Micros /*origin*/, std::vector<std::uint64_t>& /*out*/) const { return false; }
 };
 
 /// One thing a device did, for the trace and the run log.
@@ -211,9 +211,7 @@ class CellDevices final : public CellProcess {
   /// A part's box in the world, as worldBox last worked it out: in a wake,
   /// every part's is brought up to date once, after the belts' motion.
   const Eigen::AlignedBox3d& partBox(std::size_t o) const { return boxOf_[o]; }
-  bool rides(std::size_t o) const;
   void place(std::size_t o, const Eigen::Vector3d& shift);
-  void sourceChanged(const workcell::Signal& source);
   /// The next time moving robot `robot` changes what a sensor sees, woken then.
   void watchRobot(vm::Micros now, std::size_t robot);
 
@@ -241,9 +239,8 @@ class CellDevices final : public CellProcess {
   std::vector<bool> nextSensor_;  // evaluate's sensor values, committed in update
   std::vector<std::unique_ptr<RobotSight>> sights_;  // per robot that runs (and can show a sensor anything)
   std::vector<bool> robotSees_;   // scratch: what a robot shows each sensor now
-  bool sensorSeesRobots_ = false;  // a sensor SEES ROBOTS or ALL
   std::vector<std::int32_t> motorsNow_;
-  std::vector<std::int64_t> motionKey_;  // watchRobot's scratch
+  std::vector<std::uint64_t> motionKey_;  // watchRobot's scratch
   std::vector<DeviceEvent> events_;
   std::optional<std::string> fault_;
   void recordChangedMotions(vm::Micros now);

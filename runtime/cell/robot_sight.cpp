@@ -307,16 +307,8 @@ bool RobotSight::remembers(const Last& last, vm::Micros from, vm::Micros to, con
   return !carried || last.offset == world_.heldOffset(robot_).affine();
 }
 
-std::size_t RobotSight::KeyHash::operator()(const std::vector<std::int64_t>& key) const {
-  std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ key.size();
-  for (std::int64_t w : key) h = (std::rotl(h, 23) ^ static_cast<std::uint64_t>(w)) * 0x9e3779b97f4a7c15ULL;
-  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
-  return static_cast<std::size_t>(h ^ (h >> 31));
-}
-
 std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at,
-                                                  std::span<const std::int64_t> motion) {
+                                                  std::span<const std::uint64_t> motion) {
   if (!matters_ || to <= from) return std::nullopt;
   const std::optional<std::size_t> held = carriedPart();
   if (!held && !seesRobots_) return std::nullopt;  // nothing carried, and no sensor sees the robot
@@ -328,11 +320,11 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
   if (last_ && remembers(*last_, from, to, b, held)) return last_->change;
   if (!motion.empty()) {
     key_.assign(motion.begin(), motion.end());
-    key_.push_back(to - from);
-    key_.push_back(held ? static_cast<std::int64_t>(*held) + 1 : 0);
+    key_.push_back(static_cast<std::uint64_t>(to - from));
+    key_.push_back(held ? *held + 1 : 0);
     if (held) {
       const Eigen::Matrix<double, 3, 4> offset = world_.heldOffset(robot_).affine();
-      for (int i = 0; i < 12; ++i) key_.push_back(std::bit_cast<std::int64_t>(offset.data()[i]));
+      for (int i = 0; i < 12; ++i) key_.push_back(std::bit_cast<std::uint64_t>(offset.data()[i]));
     }
     if (const auto it = memory_.find(key_); it != memory_.end()) {
       ++remembered_;

@@ -23,6 +23,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "base/word_hash.h"
 #include "model/workcell/collision_model.h"
 #include "model/workcell/model.h"
 #include "runtime/cell/world.h"
@@ -55,7 +56,7 @@ class RobotSight {
   /// with the same part carried the same way, as the sweep's memory
   /// answers a move made again (a production loop asks the same each cycle).
   std::optional<vm::Micros> firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at,
-                                        std::span<const std::int64_t> motion = {});
+                                        std::span<const std::uint64_t> motion = {});
   /// Searches answered from memory, and searches made.
   std::uint64_t remembered() const { return remembered_; }
   std::uint64_t searched() const { return searched_; }
@@ -106,14 +107,11 @@ class RobotSight {
   bool remembers(const Last& last, vm::Micros from, vm::Micros to, const Probe& end,
                  const std::optional<std::size_t>& carried) const;
   std::optional<Last> last_;
-  struct KeyHash {
-    std::size_t operator()(const std::vector<std::int64_t>& key) const;
-  };
   // Whole searches by everything their answer depends on: the time to the
   // move's end, the motion, the part carried and how; the answer counted
   // from the search's start (-1: none).
-  std::unordered_map<std::vector<std::int64_t>, vm::Micros, KeyHash> memory_;
-  std::vector<std::int64_t> key_;
+  std::unordered_map<std::vector<std::uint64_t>, vm::Micros, base::WordsHash> memory_;
+  std::vector<std::uint64_t> key_;
   std::uint64_t remembered_ = 0, searched_ = 0;
 };
 

@@ -238,7 +238,7 @@ class Rig {
       for (std::size_t m = 0; m < out.size(); ++m) out[m] = sim->positionAt(m, t);
     }
     std::size_t motorCount() const override { return sim->motors().size(); }
-    bool motionKey(vm::Micros origin, std::vector<std::int64_t>& out) const override {
+    bool motionKey(vm::Micros origin, std::vector<std::uint64_t>& out) const override {
       return sim->motionKey(origin, out);
     }
   };

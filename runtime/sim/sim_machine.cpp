@@ -155,14 +155,16 @@ std::int32_t SimMachine::positionAt(std::size_t motor, Micros t) const {
   return runtime::positionAt(segments_[motor], motors_[motor], t);
 }
 
-bool SimMachine::motionKey(vm::Micros origin, std::vector<std::int64_t>& out) const {
+bool SimMachine::motionKey(vm::Micros origin, std::vector<std::uint64_t>& out) const {
   const std::size_t n = segments_.size();
   if (n == 0 || path_.size() / n > kMotionKeyKnots) return false;
+  // Each number as its two's complement bits (a key's words only compare).
+  const auto word = [&](std::int64_t v) { out.push_back(static_cast<std::uint64_t>(v)); };
   const auto add = [&](const MotorSegment& s) {
-    out.push_back(s.from), out.push_back(s.to), out.push_back(s.start - origin), out.push_back(s.end - origin);
-    out.push_back((s.lockStep ? 1 : 0) | (s.lead ? 2 : 0));
+    word(s.from), word(s.to), word(s.start - origin), word(s.end - origin);
+    word((s.lockStep ? 1 : 0) | (s.lead ? 2 : 0));
   };
-  out.push_back(static_cast<std::int64_t>(path_.size()));
+  out.push_back(path_.size());
   for (const MotorSegment& s : segments_) add(s);
   for (const MotorSegment& s : path_) add(s);
   return true;

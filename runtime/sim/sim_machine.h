@@ -129,7 +129,7 @@ class SimMachine final : public vm::Machine {
   /// whenever the words are (the motors' specs are the image's, fixed for
   /// a run). False (nothing appended) for a line of more than
   /// kMotionKeyKnots knots: too long a key to be worth keeping.
-  bool motionKey(vm::Micros origin, std::vector<std::int64_t>& out) const;
+  bool motionKey(vm::Micros origin, std::vector<std::uint64_t>& out) const;
   static constexpr std::size_t kMotionKeyKnots = 64;
   /// Encoder counts `motor` covers from t0 to t1 (t0 <= t1) as positionAt
   /// has it: each knot of a line moves one way, so the counts between the

@@ -5,17 +5,6 @@
 
 namespace rs::runtime {
 
-std::size_t SweepMemo::KeyHash::operator()(const std::vector<std::uint64_t>& key) const {
-  // One multiply a word, then splitmix64's finaliser once: every move of a
-  // run is looked up here, so the hash was a fifth of a pick-and-place
-  // run's time with the finaliser on every word.
-  std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ key.size();
-  for (std::uint64_t w : key) h = (std::rotl(h, 23) ^ w) * 0x9e3779b97f4a7c15ULL;
-  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
-  return static_cast<std::size_t>(h ^ (h >> 31));
-}
-
 void SweepMemo::encodePlaces(std::span<const Eigen::Isometry3d> poses, std::vector<std::uint64_t>& out) {
   out.clear();
   out.push_back(poses.size());

@@ -19,6 +19,7 @@
 #include <optional>
 #include <vector>
 
+#include "base/word_hash.h"
 #include "model/workcell/collision_model.h"
 #include "vm/machine.h"
 
@@ -55,11 +56,8 @@ class SweepMemo {
   std::size_t size() const { return verdicts_.size(); }
 
  private:
-  struct KeyHash {
-    std::size_t operator()(const std::vector<std::uint64_t>& key) const;
-  };
-  std::unordered_map<std::vector<std::uint64_t>, SweepVerdict, KeyHash> verdicts_;
-  std::unordered_map<std::vector<std::uint64_t>, std::uint64_t, KeyHash> places_;
+  std::unordered_map<std::vector<std::uint64_t>, SweepVerdict, base::WordsHash> verdicts_;
+  std::unordered_map<std::vector<std::uint64_t>, std::uint64_t, base::WordsHash> places_;
   std::vector<std::uint64_t> placesWords_;  // scratch: encodePlaces'
 
   std::uint64_t nextPlaces_ = 0;
