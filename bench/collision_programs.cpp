@@ -92,7 +92,10 @@ RELEASE AT 620 781 0       GRIP 0
 )", 20'000});
   // xr4-cell: the first block across the pallet and back, lifted off the
   // pallet by the shoulder alone; taken and put back at the same height, as
-  // on puma-cell (a finger hit the block in the fifth loop).
+  // on puma-cell (a finger hit the block in the fifth loop). Put down at the
+  // height it was taken (1 above its middle), not 5 higher: a part let go
+  // settles onto its support (issue 35), and the block, dropped 5 and taken
+  // again, went 5 into the pallet at PICKC.
   out.push_back({"xr4-cell", "long loop", std::string(kLongLoop) + R"(P1 AT 250 950 0 APPROACH 0 -1 0 GRIP 0
 P2 AT 270 960 20 GRIP 0
 )", 333'335});
@@ -101,9 +104,9 @@ PICK    AT 240 801 -40     GRIP 0
 TAKE    AT 240 801 -40     GRIP 115
 LIFT    AT 240 900 -40     GRIP 115
 OVER    AT 320 900 0       GRIP 115
-PLACE   AT 320 806 0       GRIP 115
-DROP    AT 320 806 0       GRIP 0
-RETAKE  AT 320 806 0       GRIP 115
+PLACE   AT 320 801 0       GRIP 115
+DROP    AT 320 801 0       GRIP 0
+RETAKE  AT 320 801 0       GRIP 115
 OVERC   AT 320 900 0       GRIP 115
 LIFTC   AT 240 900 -40     GRIP 115
 PICKC   AT 240 801 -40     GRIP 115

@@ -93,6 +93,22 @@ void PartClearance::reset() {
   elsewhere = kFar;
 }
 
+namespace {
+
+// Gaps in a total order (by distance, then frame and direction): the
+// gaps a part keeps do not hang on the order they come in, so a move's
+// verdict is the same whatever numbers the objects have
+// (CollisionWatch::reachKeyOf keys moves by shapes and places, not numbers).
+bool narrower(const Gap& a, const Gap& b) {
+  if (a.distance != b.distance) return a.distance < b.distance;
+  if (a.from != b.from) return a.from < b.from;
+  for (int k = 0; k < 3; ++k)
+    if (a.normal[k] != b.normal[k]) return a.normal[k] < b.normal[k];
+  return false;
+}
+
+}  // namespace
+
 void PartClearance::add(const Gap& gap) {
   if (count < kGaps) {
     gaps[count++] = gap;
@@ -100,8 +116,8 @@ void PartClearance::add(const Gap& gap) {
   }
   std::size_t widest = 0;
   for (std::size_t i = 1; i < kGaps; ++i)
-    if (gaps[i].distance > gaps[widest].distance) widest = i;
-  if (gap.distance < gaps[widest].distance) {
+    if (narrower(gaps[widest], gaps[i])) widest = i;
+  if (narrower(gap, gaps[widest])) {
     elsewhere = std::min(elsewhere, gaps[widest].distance);
     gaps[widest] = gap;
   } else {
@@ -141,25 +157,44 @@ void CollisionData::boxParts(const CollisionQuery& query, bool holds) {
 // markOutOfReach, for the whole move).
 void CollisionData::outOfReachOfMove(std::span<const std::int32_t> encoders, const CollisionQuery& query,
                                      std::span<const double> travel, std::vector<char>& out) {
+  out.assign(model_.objectBodies_.size(), 1);
+  outOfReachOfStretch(encoders, query, travel, travel, out);
+}
+
+// The same reasoning for a stretch of a move, where a check looks no
+// farther than `look` (at most what the part can still go): a gap of more
+// than twice the part's travel over the stretch plus that stays longer
+// than the check looks, at every check of the stretch.
+void CollisionData::reachBoxes(std::span<const std::int32_t> encoders, const CollisionQuery& query,
+                               std::vector<Eigen::AlignedBox3d>& out) {
   const auto& robot = model_.robotBodies_;
-  const auto& objects = model_.objectBodies_;
   pose(encoders);
-  const bool holds = query.held && *query.held < objects.size();
+  const bool holds = query.held && *query.held < model_.objectBodies_.size();
   boxParts(query, holds);
-  out.assign(objects.size(), 1);
-  const auto farFrom = [&](const Eigen::AlignedBox3d& part, double most, const Eigen::AlignedBox3d& object) {
-    if (part.isEmpty()) return true;
-    Eigen::Vector3d along;
-    const double gap = boxGap(part, object, along);
-    return gap > 3 * most + 1e-6 * (1 + gap);  // a margin for the rounding of the poses the checks compute
-  };
+  out.assign(robot.size() + 1, Eigen::AlignedBox3d());
+  for (std::size_t b = 0; b < robot.size(); ++b)
+    if (!robot[b].pieces.empty() && robot[b].frame != 0) out[b] = robotHull_[b];
+  if (holds) out[robot.size()] = heldRaisedHull_;
+}
+
+bool CollisionData::outOfReach(const Eigen::AlignedBox3d& part, double reach, const Eigen::AlignedBox3d& object) {
+  if (part.isEmpty() || object.isEmpty()) return true;
+  Eigen::Vector3d along;
+  const double gap = boxGap(part, object, along);
+  return gap > reach + 1e-6 * (1 + gap);  // a margin for the rounding of the poses the checks compute
+}
+
+void CollisionData::outOfReachOfStretch(std::span<const std::int32_t> encoders, const CollisionQuery& query,
+                                        std::span<const double> travel, std::span<const double> look,
+                                        std::vector<char>& out) {
+  const auto& objects = model_.objectBodies_;
+  reachBoxes(encoders, query, reachBoxes_);
+  out.resize(objects.size(), 1);
   for (std::size_t o = 0; o < objects.size(); ++o) {
-    if (objects[o].pieces.empty()) continue;
-    objectBoxes(o, query.objectPoses[o]);
-    if (objectHull_[o].isEmpty()) continue;
-    for (std::size_t b = 0; b < robot.size() && out[o]; ++b)
-      if (!robot[b].pieces.empty() && robot[b].frame != 0) out[o] = farFrom(robotHull_[b], travel[b], objectHull_[o]);
-    if (holds && out[o]) out[o] = farFrom(heldRaisedHull_, travel[robot.size()], objectHull_[o]);
+    if (objects[o].pieces.empty() || !out[o]) continue;
+    const Eigen::AlignedBox3d& hull = objectHull(o, query.objectPoses[o]);
+    for (std::size_t p = 0; p < reachBoxes_.size() && out[o]; ++p)
+      out[o] = outOfReach(reachBoxes_[p], 2 * travel[p] + look[p], hull);
   }
 }
 

@@ -288,6 +288,30 @@ class CollisionData {
   /// objects can stand anywhere: the move's verdict is the same.
   void outOfReachOfMove(std::span<const std::int32_t> encoders, const CollisionQuery& query,
                         std::span<const double> travel, std::vector<char>& out);
+  /// The same for a stretch of a move that starts with the motors at
+  /// `encoders`, over which part p moves at most `travel[p]`, and at whose
+  /// checks it counts no gap of `look[p]` or more (the look-ahead, or what
+  /// it can still go): clears out[o] (grown to one per object, new
+  /// entries set) for each object some part could count in a check of the
+  /// stretch. A move's stretches, one after another, leave set the objects
+  /// no check of the move counts.
+  void outOfReachOfStretch(std::span<const std::int32_t> encoders, const CollisionQuery& query,
+                           std::span<const double> travel, std::span<const double> look, std::vector<char>& out);
+  /// The boxes outOfReachOfStretch measures objects from, with the motors
+  /// at `encoders`: per moving part (robotBodies() order, then the carried
+  /// object as raised for rest), its world box, empty for a part that is
+  /// not checked against objects.
+  void reachBoxes(std::span<const std::int32_t> encoders, const CollisionQuery& query,
+                  std::vector<Eigen::AlignedBox3d>& out);
+  /// Object o's world box at `pose` (its pieces' boxes, kept for the checks).
+  const Eigen::AlignedBox3d& objectHull(std::size_t o, const Eigen::Isometry3d& pose) {
+    objectBoxes(o, pose);
+    return objectHull_[o];
+  }
+  /// Whether an object's box is out of reach of a part's box from which
+  /// the part counts gaps shorter than `reach` at any check of a stretch:
+  /// the gap between them is longer, with a margin for rounding.
+  static bool outOfReach(const Eigen::AlignedBox3d& part, double reach, const Eigen::AlignedBox3d& object);
   /// Poses the arm at `encoders` and checks nothing: frame() and
   /// robotPose() answer for this pose (what a sensor that sees the robot
   /// asks, runtime/cell/robot_sight.h). No allocation.
@@ -352,6 +376,7 @@ class CollisionData {
   // The union of each body's piece boxes (the broad phase of the clearance).
   std::vector<Eigen::AlignedBox3d> robotHull_, objectHull_;
   Eigen::AlignedBox3d heldHull_, heldRaisedHull_;
+  std::vector<Eigen::AlignedBox3d> reachBoxes_;  // outOfReachOfStretch's
   std::vector<char> outOfReach_;  // per object: no moving part can close its gap this check (clearance.cpp)
 };
 

@@ -161,8 +161,9 @@ Settled Grasping::settleHeld(std::span<const std::int32_t> encoders, std::size_t
 Settled Grasping::settleFrom(std::size_t o, const Eigen::Isometry3d& pose) const {
   // Onto anything but a part a hand carries: where that one last rested is
   // no support, so it is moved out of every footprint for the search.
+  // (By hand, not by object: a cell has a hand or two and many objects.)
   bool carried = false;
-  for (std::size_t p = 0; p < resting_.size() && !carried; ++p) carried = p != o && holder(p);
+  for (const Hand& h : hands_) carried |= h.hold.held && *h.hold.held != o && *h.hold.held < resting_.size();
   if (!carried) return settle(*cell_, resting_, o, pose, std::nullopt, settleReach_);
   std::vector<Eigen::Isometry3d> poses = resting_;
   for (std::size_t p = 0; p < poses.size(); ++p)

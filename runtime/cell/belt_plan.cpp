@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <bit>
 #include <limits>
 
 #include "runtime/cell/box_geometry.h"
@@ -115,12 +116,60 @@ vm::Micros afterMicro(vm::Micros now, double tau) {
 
 }  // namespace
 
-// Who rides which running belt from now, how far each goes (an
-// accumulating belt: a part stops at the part ahead's final place, the
-// first at the stop plate), and the next time anything happens.
+// What a plan depends on, exactly: each present part's box, whether a
+// hand holds it and the belt it last rode; which belts run; which feeders
+// wait. The same words, the same plan (its times counted from the plan's
+// instant), so a production loop solves each of its plans once.
 void CellDevices::plan(vm::Micros now) {
   const workcell::Devices& d = cell_.devices;
-  for (const std::size_t o : parts_) state_.velocity[o].setZero(), state_.travel[o] = 0;
+  planKey_.clear();
+  planKey_.push_back(parts_.size());
+  for (const std::size_t o : parts_) {
+    const Eigen::AlignedBox3d& b = partBox(o);
+    planKey_.push_back(state_.ridden[o] << 1 | (world_.holder(o) ? 1 : 0));
+    for (int k = 0; k < 3; ++k)
+      planKey_.push_back(std::bit_cast<std::uint64_t>(b.min()[k])),
+          planKey_.push_back(std::bit_cast<std::uint64_t>(b.max()[k]));
+  }
+  for (std::size_t c = 0; c < d.conveyors.size(); ++c) planKey_.push_back(running(c));
+  for (std::size_t f = 0; f < d.feeders.size(); ++f) planKey_.push_back(state_.waiting[f]);
+  auto found = plans_.find(planKey_);
+  if (found == plans_.end()) {
+    if (plans_.size() >= kPlans) plans_.clear();  // all at once, the same way on every run
+    found = plans_.emplace(planKey_, solvePlan()).first;
+  }
+  const Plan& p = found->second;
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const std::size_t o = parts_[i];
+    state_.velocity[o] = p.parts[i].velocity, state_.travel[o] = p.parts[i].travel;
+    state_.ridden[o] = p.parts[i].ridden;
+  }
+  for (std::size_t c = 0; c < p.carried.size(); ++c) state_.carried[c] += p.carried[c];
+  // The next time something may change.
+  vm::Micros next = INT64_MAX;
+  for (std::size_t f = 0; f < d.feeders.size(); ++f) next = std::min(next, state_.nextDue[f]);
+  for (const auto& [tau, after] : p.times) next = std::min(next, after ? afterMicro(now, tau) : startMicro(now, tau));
+  // Its wake is tagged with the plan's number (never 0: an untagged wake
+  // always acts), so that the next plan makes it stale.
+  if (static_cast<std::uint32_t>(++state_.wakeTag) == 0) ++state_.wakeTag;
+  // The replaced plan's wake would do nothing: it goes, so that the clock
+  // does not stop there for nothing (half the devices' wakes were such).
+  if (state_.planWakeAt >= 0) clock_.cancel(state_.planWakeAt, state_.planWakeSeq);
+  state_.planWakeAt = -1;
+  if (next != INT64_MAX && clock_.schedule(next, id_, static_cast<std::uint32_t>(state_.wakeTag)))
+    state_.planWakeAt = next, state_.planWakeSeq = clock_.lastSeq();
+}
+
+// Who rides which running belt from now, how far each goes (an
+// accumulating belt: a part stops at the part ahead's final place, the
+// first at the stop plate), and when, counted from now, anything may
+// happen next.
+CellDevices::Plan CellDevices::solvePlan() {
+  const workcell::Devices& d = cell_.devices;
+  Plan plan;
+  plan.parts.resize(parts_.size());
+  plan.carried.assign(d.conveyors.size(), 0);
+  for (std::size_t i = 0; i < parts_.size(); ++i) plan.parts[i].ridden = state_.ridden[parts_[i]];
   std::vector<bool>& taken = takenScratch_;
   for (const std::size_t o : parts_) taken[o] = false;
   for (std::size_t c = 0; c < d.conveyors.size(); ++c) {
@@ -130,7 +179,8 @@ void CellDevices::plan(vm::Micros now) {
     const Geometry& g = *belts_[c];
     std::vector<Rider>& riders = riders_;
     riders.clear();
-    for (const std::size_t o : parts_) {
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+      const std::size_t o = parts_[i];
       if (taken[o] || world_.holder(o)) continue;
       const Eigen::AlignedBox3d& b = partBox(o);
       const Eigen::Vector3d centre = b.center();
@@ -140,7 +190,7 @@ void CellDevices::plan(vm::Micros now) {
         continue;
       const Eigen::Vector3d half = b.sizes() / 2;
       const double along = g.dir.cwiseAbs().dot(half), across = g.lateral.cwiseAbs().dot(half);
-      riders.push_back({o, g.dir.dot(centre) + along, 2 * along, g.lateral.dot(centre) - across,
+      riders.push_back({o, i, g.dir.dot(centre) + along, 2 * along, g.lateral.dot(centre) - across,
                         g.lateral.dot(centre) + across});
       taken[o] = true;
     }
@@ -156,21 +206,20 @@ void CellDevices::plan(vm::Micros now) {
       const double travel = std::max(0.0, limit - r.lead);
       r.final = r.lead + travel;
       if (travel <= 1e-9) continue;
-      state_.velocity[r.o] = g.dir * conveyor.speed;
-      state_.travel[r.o] = travel;
-      if (state_.ridden[r.o] != c + 1) ++state_.carried[c];
-      state_.ridden[r.o] = c + 1;
+      Plan::Part& part = plan.parts[r.at];
+      part.velocity = g.dir * conveyor.speed;
+      part.travel = travel;
+      if (part.ridden != c + 1) ++plan.carried[c];
+      part.ridden = c + 1;
     }
   }
-  // The next time something may change.
-  vm::Micros next = INT64_MAX;
-  for (std::size_t f = 0; f < d.feeders.size(); ++f) next = std::min(next, state_.nextDue[f]);
-  for (const std::size_t o : parts_) {
-    const Eigen::Vector3d& w = state_.velocity[o];
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const Plan::Part& part = plan.parts[i];
+    const Eigen::Vector3d& w = part.velocity;
     if (w.isZero()) continue;
     const double speed = w.norm();
-    const double T = std::isinf(state_.travel[o]) ? kHorizon : state_.travel[o] / speed;
-    const Eigen::AlignedBox3d& b = partBox(o);
+    const double T = std::isinf(part.travel) ? kHorizon : part.travel / speed;
+    const Eigen::AlignedBox3d& b = partBox(parts_[i]);
     // All the box can cover on its way, grown by a unit (far more than
     // beamInterval's slack): a beam that misses it is never met, and its
     // interval (45 vertices of 10 constraints) need not be solved.
@@ -183,41 +232,32 @@ void CellDevices::plan(vm::Micros now) {
       const Interval in = s.shape == workcell::Sensor::Shape::Beam ? beamInterval(b, w, T, s.a, s.b)
                                                                   : zoneInterval(b, w, T, s.zone);
       if (in.empty()) continue;
-      if (in.from > 1e-9) next = std::min(next, startMicro(now, in.from));
-      if (in.to < T - 1e-9) next = std::min(next, afterMicro(now, in.to));
+      if (in.from > 1e-9) plan.times.emplace_back(in.from, false);
+      if (in.to < T - 1e-9) plan.times.emplace_back(in.to, true);
     }
     const Eigen::AlignedBox3d centre(b.center(), b.center());
     for (const workcell::Sink& s : d.sinks) {
       const Interval in = zoneInterval(centre, w, T, s.zone);
-      if (!in.empty()) next = std::min(next, startMicro(now, std::max(in.from, 0.0)));
+      if (!in.empty()) plan.times.emplace_back(std::max(in.from, 0.0), false);
     }
-    if (std::isinf(state_.travel[o])) {
+    if (std::isinf(part.travel)) {
       // The centre passes the open end.
-      const Eigen::AlignedBox3d& belt = belts_[state_.ridden[o] - 1]->belt;
+      const Eigen::AlignedBox3d& belt = belts_[part.ridden - 1]->belt;
       const Eigen::Vector3d dir = w / speed;
       const double end = dir.dot(belt.center()) + dir.cwiseAbs().dot(belt.sizes() / 2);
-      next = std::min(next, startMicro(now, std::max(0.0, (end - dir.dot(b.center())) / speed)));
+      plan.times.emplace_back(std::max(0.0, (end - dir.dot(b.center())) / speed), false);
     }
     for (std::size_t f = 0; f < d.feeders.size(); ++f) {
       if (!state_.waiting[f]) continue;
       const workcell::Feeder& feeder = d.feeders[f];
-      const workcell::PlacedObject& part = cell_.fedParts[feeder.part];
+      const workcell::PlacedObject& fed = cell_.fedParts[feeder.part];
       const Eigen::AlignedBox3d spot =
-          workcell::boundsOf(part.shape).translated(feeder.at - workcell::atCorner(part.shape));
+          workcell::boundsOf(fed.shape).translated(feeder.at - workcell::atCorner(fed.shape));
       const Interval in = zoneInterval(b, w, T, spot);
-      if (!in.empty() && in.to < T - 1e-9) next = std::min(next, afterMicro(now, in.to));
+      if (!in.empty() && in.to < T - 1e-9) plan.times.emplace_back(in.to, true);
     }
   }
-  // Its wake is tagged with the plan's number (never 0: an untagged wake
-  // always acts), so that the next plan makes it stale.
-  if (static_cast<std::uint32_t>(++state_.wakeTag) == 0) ++state_.wakeTag;
-  // The replaced plan's wake would do nothing: it goes, so that the clock
-  // does not stop there for nothing (half the devices' wakes were such).
-  if (state_.planWakeAt >= 0) clock_.cancel(state_.planWakeAt, state_.planWakeSeq);
-  state_.planWakeAt = -1;
-  if (next != INT64_MAX && clock_.schedule(next, id_, static_cast<std::uint32_t>(state_.wakeTag)))
-    state_.planWakeAt = next, state_.planWakeSeq = clock_.lastSeq();
+  return plan;
 }
-
 
 }  // namespace rs::runtime

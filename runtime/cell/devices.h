@@ -19,7 +19,10 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <vector>
+
+#include "base/word_hash.h"
 
 #include "model/workcell/model.h"
 #include "runtime/cell/input_cause.h"
@@ -189,9 +192,26 @@ class CellDevices final : public CellProcess {
     double end = 0;  // the belt's far end along dir
   };
   struct Rider {
-    std::size_t o;
+    std::size_t o, at;  // the part, its place in parts_
     double lead, length, lo, hi, final = 0;
   };
+  // A plan, solved (solvePlan) for the words plan() keys it by: per part
+  // present (parts_ order) how it rides; per conveyor, the parts that
+  // begin to ride it; the times from the plan's instant at which
+  // something may happen (a start, or the first microsecond after an end).
+  struct Plan {
+    struct Part {
+      Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+      double travel = 0;
+      std::size_t ridden = 0;
+    };
+    std::vector<Part> parts;
+    std::vector<std::uint64_t> carried;
+    std::vector<std::pair<double, bool>> times;  // (seconds, after)
+  };
+  /// Plans kept at most (all forgotten at once when full).
+  static constexpr std::size_t kPlans = 4096;
+  Plan solvePlan();
   /// Look at the cell now (an untagged wake), once for each instant.
   void wakeNow();
   /// The present parts (parts_) again, from the numbers (after a restore).
@@ -234,6 +254,8 @@ class CellDevices final : public CellProcess {
   std::vector<std::size_t> parts_;
   std::vector<bool> takenScratch_;  // plan's: a part rides one belt
   std::vector<Rider> riders_;
+  std::unordered_map<std::vector<std::uint64_t>, Plan, base::WordsHash> plans_;
+  std::vector<std::uint64_t> planKey_;  // plan()'s scratch
   std::vector<std::unique_ptr<Wire>> wires_;
   State state_;
   std::vector<bool> nextSensor_;  // evaluate's sensor values, committed in update

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
+#include <map>
 #include <fmt/format.h>
 
 #include "base/number_text.h"
@@ -27,7 +29,21 @@ std::optional<CollisionMode> collisionModeByName(std::string_view name) {
 
 CollisionWatch::CollisionWatch(const workcell::Workcell& cell, std::size_t robot)
     : hand_(robot), model_(cell, robot), data_(model_), bounds_(model_), clearance_(model_.robotBodies().size() + 1),
-      poses_(cell.objects.size()), worldObjects_(cell.objects.size()) {}
+      poses_(cell.objects.size()), worldObjects_(cell.objects.size()) {
+  // Objects of the same shape (a feeder's slots, two blocks) get the same
+  // number: the same pieces, point for point.
+  std::map<std::vector<std::uint64_t>, std::uint64_t> shapes;
+  std::vector<std::uint64_t> points;
+  for (const workcell::CollisionBody& body : model_.objectBodies()) {
+    points.clear();
+    for (const workcell::CollisionPiece& piece : body.pieces) {
+      points.push_back(piece.points.size());
+      for (const Eigen::Vector3d& p : piece.points)
+        for (int k = 0; k < 3; ++k) points.push_back(std::bit_cast<std::uint64_t>(p[k]));
+    }
+    shapeOf_.push_back(shapes.try_emplace(points, shapes.size()).first->second);
+  }
+}
 
 void CollisionWatch::alsoAvoid(std::size_t worldObjects, MovingParts& others, std::string label) {
   label_ = std::move(label);
@@ -86,9 +102,32 @@ void CollisionWatch::keyOf(const World& world, std::span<const std::int32_t> bef
     othersPose();
     placesId_ = memo_.placesId(poses_);
     worldRevision_.reset();
-  } else if (worldRevision_ != world.revision()) {
-    for (std::size_t o = 0; o < poses_.size(); ++o) poses_[o] = world.restingPose(o);
-    placesId_ = memo_.placesId(poses_);
+  } else if (!worldRevision_) {
+    resting_.resize(worldObjects_);
+    for (std::size_t o = 0; o < resting_.size(); ++o) resting_[o] = world.restingPose(o);
+    placesId_ = memo_.placesId(resting_);
+    worldRevision_ = world.revision();
+  } else if (*worldRevision_ != world.revision()) {
+    // What changed since the last places: a change seen before gives the
+    // number at once (SweepMemo::changed); the parts a belt moves change
+    // the same way in every cycle of a loop.
+    change_.clear();
+    change_.push_back(placesId_);
+    for (std::size_t o = 0; o < resting_.size(); ++o) {
+      const Eigen::Isometry3d& now = world.restingPose(o);
+      if (std::memcmp(now.matrix().data(), resting_[o].matrix().data(), sizeof(double) * 16) == 0) continue;
+      resting_[o] = now;
+      change_.push_back(o);
+      for (int w = 0; w < 16; ++w) change_.push_back(std::bit_cast<std::uint64_t>(now.matrix().data()[w]));
+    }
+    if (change_.size() > 1) {
+      if (const std::optional<std::uint64_t> known = memo_.changed(change_)) {
+        placesId_ = *known;
+      } else {
+        placesId_ = memo_.placesId(resting_);
+        memo_.rememberChange(change_, placesId_);
+      }
+    }
     worldRevision_ = world.revision();
   }
   key_.clear();
@@ -162,7 +201,7 @@ const CollisionEvent* CollisionWatch::sweepPosed(const SimMachine& machine, cons
     // anywhere: the same verdict (reachKeyOf).
     const bool byReach = remember && !others_;
     if (byReach) {
-      reachKeyOf(query, before, after);
+      reachKeyOf(machine, query, before, after, start, end);
       if (const SweepVerdict* near = memo_.find(reachKey_)) {
         ++remembered_;
         fresh = *near;
@@ -183,7 +222,8 @@ const CollisionEvent* CollisionWatch::sweepPosed(const SimMachine& machine, cons
       if (o && o->depth <= kEndsInBy) fresh.endsIn = o;
     }
     if (remember) memo_.remember(key_, fresh);
-    if (byReach) memo_.remember(reachKey_, fresh);
+    // A collision names the object it hits: by number, under key_ alone.
+    if (byReach && !fresh.collides) memo_.remember(reachKey_, fresh);
     verdict = &fresh;
   }
   return noteVerdict(start, *verdict);
@@ -205,33 +245,125 @@ std::optional<double> CollisionWatch::carriedReach(const workcell::CollisionQuer
   return reach;
 }
 
+// A move cut into stretches over which no part goes much farther than a
+// check looks (MotionBounds::kLookAhead): each part's box at a stretch's
+// start, and how near an object must come to it to count in a check of
+// the stretch (CollisionData::outOfReachOfStretch's reasoning: twice its
+// travel over the stretch plus how far it looks).
+CollisionWatch::MoveReach CollisionWatch::moveReach(const SimMachine& machine, const workcell::CollisionQuery& query,
+                                                    std::span<const std::int32_t> before,
+                                                    std::span<const std::int32_t> after, vm::Micros start,
+                                                    vm::Micros end) {
+  bounds_.startMove(carriedReach(query));
+  MoveReach r;
+  r.parts = clearance_.size();
+  double farthest = 0;
+  for (std::size_t p = 0; p < r.parts; ++p) farthest = std::max(farthest, bounds_.mostTravel(p, before, after));
+  const auto stretches = static_cast<vm::Micros>(
+      std::clamp(std::ceil(farthest / MotionBounds::kLookAhead), 1.0, static_cast<double>(kStretches)));
+  stretchFrom_.assign(before.begin(), before.end());
+  for (vm::Micros i = 1; i <= stretches; ++i) {
+    const bool last = i == stretches || end <= start;
+    if (last) {
+      stretchTo_.assign(after.begin(), after.end());
+    } else {
+      const vm::Micros t = start + (end - start) * i / stretches;
+      stretchTo_.resize(before.size());
+      for (std::size_t m = 0; m < stretchTo_.size(); ++m) stretchTo_[m] = machine.positionAt(m, t);
+    }
+    data_.reachBoxes(stretchFrom_, query, boxes_);
+    Eigen::AlignedBox3d all;
+    double most = 0;
+    for (std::size_t p = 0; p < r.parts; ++p) {
+      const double reach = 2 * bounds_.mostTravel(p, stretchFrom_, stretchTo_) +
+                           std::min(MotionBounds::kLookAhead, bounds_.mostTravel(p, stretchFrom_, after));
+      const Eigen::AlignedBox3d box = p < boxes_.size() ? boxes_[p] : Eigen::AlignedBox3d();
+      r.boxes.push_back(box), r.reaches.push_back(reach);
+      if (!box.isEmpty()) all.extend(box), most = std::max(most, reach);
+    }
+    r.stretchAll.push_back(all), r.stretchReach.push_back(most);
+    if (!all.isEmpty()) r.all.extend(all), r.allReach = std::max(r.allReach, most);
+    if (last) break;
+    stretchFrom_.swap(stretchTo_);
+  }
+  return r;
+}
+
 // A move's key by what it can reach (a second chance for a move whose
 // world is new: the first cycles of a production loop, before the parts
 // upstream on a belt stand where they will stand in every later cycle):
-// the query whole but for the objects no moving part can come near during
-// the move (CollisionData::outOfReachOfMove), which it leaves out, and the
-// motors at both ends. Exact: the sweep's checks never look at the objects
-// left out, whatever their places. Starts with a word no places id reaches.
-void CollisionWatch::reachKeyOf(const workcell::CollisionQuery& query, std::span<const std::int32_t> before,
-                                std::span<const std::int32_t> after) {
-  bounds_.startMove(carriedReach(query));
-  travel_.resize(clearance_.size());
-  for (std::size_t p = 0; p < travel_.size(); ++p) travel_[p] = bounds_.mostTravel(p, before, after);
-  data_.outOfReachOfMove(before, query, travel_, outOfReach_);
+// the objects some check of the move could count, by shape and place, and
+// the motors at both ends. The move is cut into stretches over which no
+// part goes much farther than a check looks (MotionBounds::kLookAhead);
+// an object is left out when it lies out of every stretch's reach
+// (CollisionData::outOfReachOfStretch): no check looks at it, wherever it
+// stands. The objects go by shape, not number, in an order of their own
+// (the clearance keeps its gaps in a total order, so the checks are the
+// same whatever the numbers): the same block fed into another slot is the
+// same move. Only a clear verdict goes under this key (a collision names
+// its object). Starts with a word no places id reaches.
+void CollisionWatch::reachKeyOf(const SimMachine& machine, const workcell::CollisionQuery& query,
+                                std::span<const std::int32_t> before, std::span<const std::int32_t> after,
+                                vm::Micros start, vm::Micros end) {
+  // The move's stretches depend on the move and what it carries, not on
+  // the world: worked out once for each.
+  moveWords_.clear();
+  appendPairs(moveWords_, before, after);
+  moveWords_.push_back(query.held ? (*query.held < shapeOf_.size() ? shapeOf_[*query.held] : *query.held) + 1 : 0);
+  if (query.held) {
+    const Eigen::Matrix<double, 3, 4> offset = query.heldOffset.affine();
+    for (int i = 0; i < 12; ++i) moveWords_.push_back(std::bit_cast<std::uint64_t>(offset.data()[i]));
+  }
+  auto found = reaches_.find(moveWords_);
+  if (found == reaches_.end()) {
+    if (reaches_.size() >= kMoveReaches) reaches_.clear();  // all at once, as the memo forgets
+    found = reaches_.emplace(moveWords_, moveReach(machine, query, before, after, start, end)).first;
+  }
+  const MoveReach& r = found->second;
+  outOfReach_.assign(query.objectPoses.size(), 1);
+  for (std::size_t o = 0; o < query.objectPoses.size(); ++o) {
+    const Eigen::AlignedBox3d& hull = data_.objectHull(o, query.objectPoses[o]);
+    if (workcell::CollisionData::outOfReach(r.all, r.allReach, hull)) continue;
+    for (std::size_t s = 0; s < r.stretchAll.size() && outOfReach_[o]; ++s) {
+      if (workcell::CollisionData::outOfReach(r.stretchAll[s], r.stretchReach[s], hull)) continue;
+      for (std::size_t p = s * r.parts; p < (s + 1) * r.parts && outOfReach_[o]; ++p)
+        outOfReach_[o] = workcell::CollisionData::outOfReach(r.boxes[p], r.reaches[p], hull);
+    }
+  }
+  constexpr std::size_t kPoseWords = 12;  // the affine part (the last row is fixed)
+  const auto words = [](const Eigen::Isometry3d& pose, std::uint64_t* out) {
+    for (std::size_t i = 0; i < kPoseWords; ++i) out[i] = std::bit_cast<std::uint64_t>(pose.matrix().data()[i]);
+  };
+  // Per object: its shape, whether the fingers may overlap it, its place.
+  constexpr std::size_t kEntry = 2 + kPoseWords;
+  entries_.clear();
+  for (std::size_t o = 0; o < query.objectPoses.size(); ++o) {
+    if ((o < outOfReach_.size() && outOfReach_[o]) || query.held == o) continue;
+    const std::size_t at = entries_.size();
+    entries_.resize(at + kEntry);
+    entries_[at] = o < shapeOf_.size() ? shapeOf_[o] : o + shapeOf_.size();
+    entries_[at + 1] = query.exempt == o;
+    words(query.objectPoses[o], &entries_[at + 2]);
+  }
+  order_.clear();
+  for (std::size_t at = 0; at < entries_.size(); at += kEntry) order_.push_back(at);
+  std::sort(order_.begin(), order_.end(), [this](std::size_t a, std::size_t b) {
+    return std::lexicographical_compare(entries_.begin() + static_cast<std::ptrdiff_t>(a),
+                                        entries_.begin() + static_cast<std::ptrdiff_t>(a + kEntry),
+                                        entries_.begin() + static_cast<std::ptrdiff_t>(b),
+                                        entries_.begin() + static_cast<std::ptrdiff_t>(b + kEntry));
+  });
   reachKey_.clear();
   reachKey_.push_back(~std::uint64_t{0});
-  reachKey_.push_back(query.objectPoses.size());
-  const auto words = [this](const Eigen::Isometry3d& pose) {
-    for (int i = 0; i < 16; ++i) reachKey_.push_back(std::bit_cast<std::uint64_t>(pose.matrix().data()[i]));
-  };
-  for (std::size_t o = 0; o < query.objectPoses.size(); ++o) {
-    if (o < outOfReach_.size() && outOfReach_[o]) continue;
-    reachKey_.push_back(o);
-    words(query.objectPoses[o]);
+  reachKey_.push_back(order_.size());
+  for (const std::size_t at : order_)
+    reachKey_.insert(reachKey_.end(), entries_.begin() + static_cast<std::ptrdiff_t>(at),
+                     entries_.begin() + static_cast<std::ptrdiff_t>(at + kEntry));
+  reachKey_.push_back(query.held ? (*query.held < shapeOf_.size() ? shapeOf_[*query.held] : *query.held) + 1 : 0);
+  if (query.held) {
+    reachKey_.resize(reachKey_.size() + kPoseWords);
+    words(query.heldOffset, &reachKey_[reachKey_.size() - kPoseWords]);
   }
-  reachKey_.push_back(query.held ? *query.held + 1 : 0);
-  if (query.held) words(query.heldOffset);
-  reachKey_.push_back(query.exempt ? *query.exempt + 1 : 0);
   appendPairs(reachKey_, before, after);
 }
 

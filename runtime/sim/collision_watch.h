@@ -4,8 +4,10 @@
 // says, for every moving part, how far it can go before it could touch
 // anything (CollisionData::findContactOrClearance); the next check is the
 // latest time at which no part has gone farther than its clearance, or
-// than workcell::kSweepStep where its clearance is less: free space costs a
-// check or two, and only near contact are checks as close as the bound.
+// than workcell::kSweepStep where its clearance is less, or than the
+// look-ahead (MotionBounds::kLookAhead: a check counts nothing farther):
+// free space costs a check per look-ahead of travel, and only near contact
+// are checks as close as the bound.
 // How far a part has gone from time t to t' is bounded by the encoder
 // counts each motor covered times the part's weight for that motor
 // (CollisionModel::bodyWeights); each motor moves one way during a move,
@@ -16,13 +18,16 @@
 // by counts when it goes farther than the limits, so the bound holds at
 // every speed an image allows. Deterministic: the same move is checked at
 // the same times. A move made before in the same world is answered from
-// memory (runtime/sim/sweep_memo.h), with the same verdict.
+// memory (runtime/sim/sweep_memo.h), with the same verdict; so is one made
+// before among the same shapes at the same places near its way
+// (reachKeyOf), whatever stands farther off.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "model/workcell/collision_model.h"
@@ -131,8 +136,25 @@ class CollisionWatch {
   void othersPose();
   const CollisionEvent* noteVerdict(vm::Micros start, const SweepVerdict& verdict);
   std::optional<double> carriedReach(const workcell::CollisionQuery& query) const;
-  void reachKeyOf(const workcell::CollisionQuery& query, std::span<const std::int32_t> before,
-                  std::span<const std::int32_t> after);
+  void reachKeyOf(const SimMachine& machine, const workcell::CollisionQuery& query,
+                  std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
+                  vm::Micros end);
+  /// Stretches a move's reach is worked out over, at most; moves whose
+  /// stretches are kept, at most.
+  static constexpr std::size_t kStretches = 32, kMoveReaches = 4096;
+  // A move's stretches (moveReach): per stretch and part, the part's box
+  // at the stretch's start and how near an object must come to it to
+  // count; per stretch, their union and the largest; over all, the same.
+  struct MoveReach {
+    std::size_t parts = 0;
+    std::vector<Eigen::AlignedBox3d> boxes, stretchAll;
+    std::vector<double> reaches, stretchReach;
+    Eigen::AlignedBox3d all;
+    double allReach = 0;
+  };
+  MoveReach moveReach(const SimMachine& machine, const workcell::CollisionQuery& query,
+                      std::span<const std::int32_t> before, std::span<const std::int32_t> after, vm::Micros start,
+                      vm::Micros end);
   void keyOf(const World& world, std::span<const std::int32_t> before, std::span<const std::int32_t> after,
              std::span<const std::int32_t> lineFrom, std::span<const std::int32_t> lineTo);
   double used(const SimMachine& machine, vm::Micros t);
@@ -152,7 +174,15 @@ class CollisionWatch {
   std::uint64_t placesId_ = 0;
   std::vector<std::uint64_t> key_;         // scratch: this move's key
   std::vector<std::uint64_t> reachKey_;    // scratch: its key by what it can reach (reachKeyOf)
-  std::vector<double> travel_;             // scratch: per part, the most it travels in the move
+  std::unordered_map<std::vector<std::uint64_t>, MoveReach, base::WordsHash> reaches_;  // by moveWords_
+  std::vector<std::uint64_t> change_;      // scratch: keyOf's change of places
+  std::vector<Eigen::Isometry3d> resting_;  // where the objects rested at placesId_ (poses_ is the queries')
+  std::vector<std::uint64_t> moveWords_;   // scratch: a move and what it carries
+  std::vector<Eigen::AlignedBox3d> boxes_;  // scratch: reachBoxes'
+  std::vector<std::int32_t> stretchFrom_, stretchTo_;  // scratch: the motors at a stretch's ends
+  std::vector<std::uint64_t> shapeOf_;     // per object: a number per shape
+  std::vector<std::uint64_t> entries_;     // scratch: reachKeyOf's per object
+  std::vector<std::size_t> order_;         // scratch: their order
   std::vector<char> outOfReach_;           // scratch: per object, out of the move's reach
   std::vector<Eigen::Isometry3d> poses_;   // scratch: every object's resting pose
   std::size_t worldObjects_ = 0;           // poses_ past these are others_'

@@ -285,8 +285,10 @@ bool SimMachine::setInputBy(int input, bool on, const InputCause& cause) {
 // the clock still: the stop names the wires that did it at this instant.
 void SimMachine::noteWire(const InputCause& cause) {
   if (wiresAt_ != now()) instantWires_.clear(), wiresAt_ = now();
-  std::string wire = fmt::format("{} TO {}{}IN {} (line {})", cause.source, cause.robot, cause.robot.empty() ? "" : ".",
-                                 cause.input, cause.line);
+  // The wire, not the value it carries; put in words only if the run stops
+  // (an input change through a wire is frequent, a stop rare).
+  InputCause wire = cause;
+  wire.on = false;
   if (instantWires_.size() < kMaxStillWires &&
       std::find(instantWires_.begin(), instantWires_.end(), wire) == instantWires_.end())
     instantWires_.push_back(std::move(wire));
@@ -294,8 +296,11 @@ void SimMachine::noteWire(const InputCause& cause) {
 
 std::string SimMachine::stillReason() const {
   if (wiresAt_ != now() || instantWires_.empty()) return {};
-  return fmt::format("wires changed its inputs at that instant without end: {}",
-                     fmt::join(instantWires_, ", "));
+  std::vector<std::string> wires;
+  for (const InputCause& w : instantWires_)
+    wires.push_back(
+        fmt::format("{} TO {}{}IN {} (line {})", w.source, w.robot, w.robot.empty() ? "" : ".", w.input, w.line));
+  return fmt::format("wires changed its inputs at that instant without end: {}", fmt::join(wires, ", "));
 }
 
 Status SimMachine::resume() {

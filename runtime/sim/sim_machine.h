@@ -169,7 +169,7 @@ class SimMachine final : public vm::Machine {
     bool waitOn = false, waitMove = false;
     /// The wires that changed an input at `wiresAt` (stillReason).
     vm::Micros wiresAt = -1;
-    std::vector<std::string> instantWires;
+    std::vector<InputCause> instantWires;
     bool operator==(const State&) const = default;
   };
   State state() const;
@@ -207,7 +207,7 @@ class SimMachine final : public vm::Machine {
   vm::IoMask outputs_ = 0;
   vm::IoMask inputs_ = 0;
   vm::Micros wiresAt_ = -1;
-  std::vector<std::string> instantWires_;
+  std::vector<InputCause> instantWires_;
   CameraTriple windowShift_;
   CameraTriple viewRotation_;
   std::function<void(vm::Micros, vm::IoMask)> inputListener_;

@@ -50,6 +50,14 @@ class SweepMemo {
   /// in a row: a feeder's parked slots.
   static void encodePlaces(std::span<const Eigen::Isometry3d> poses, std::vector<std::uint64_t>& out);
 
+  /// What a set of poses becomes by a change: `change` is the number of a
+  /// set (placesId's), then for each pose that changes its index and its
+  /// 16 words. Exact (the set before and the change fix the set after), so
+  /// a loop whose belts move its parts the same way each cycle numbers its
+  /// places without encoding them whole. Null when not remembered.
+  std::optional<std::uint64_t> changed(const std::vector<std::uint64_t>& change) const;
+  void rememberChange(const std::vector<std::uint64_t>& change, std::uint64_t places);
+
   /// The verdict remembered under `key`, or null.
   const SweepVerdict* find(const std::vector<std::uint64_t>& key) const;
   void remember(const std::vector<std::uint64_t>& key, SweepVerdict verdict);
@@ -58,6 +66,7 @@ class SweepMemo {
  private:
   std::unordered_map<std::vector<std::uint64_t>, SweepVerdict, base::WordsHash> verdicts_;
   std::unordered_map<std::vector<std::uint64_t>, std::uint64_t, base::WordsHash> places_;
+  std::unordered_map<std::vector<std::uint64_t>, std::uint64_t, base::WordsHash> changes_;
   std::vector<std::uint64_t> placesWords_;  // scratch: encodePlaces'
 
   std::uint64_t nextPlaces_ = 0;

@@ -163,6 +163,8 @@ bool MotionBounds::limit(std::span<const workcell::PartClearance> clearance) {
     double anyWay = std::numeric_limits<double>::infinity();
     if (c.elsewhere - kGapMargin < need_[p] + others(p, 0))
       anyWay = c.elsewhere >= workcell::kSweepStep ? c.elsewhere - kGapMargin : workcell::kSweepStep;
+    // The gaps of kLookAhead or more were not counted: not that far.
+    if (need_[p] + others(p, 0) > kLookAhead) anyWay = std::min(anyWay, kLookAhead - kGapMargin);
     for (std::size_t k = 0; k < c.count; ++k) {
       const workcell::Gap& gap = c.gaps[k];
       if (gap.distance < workcell::kSweepStep) {

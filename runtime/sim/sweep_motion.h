@@ -20,6 +20,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -52,7 +53,17 @@ class MotionBounds final : public workcell::SweepMotion {
   double mostTravel(std::size_t part, std::span<const std::int32_t> from, std::span<const std::int32_t> to) const;
 
   void posed(const workcell::CollisionData& data) override;
-  double anyWay(std::size_t part) override { return need_[part] + others(part, 0); }
+  /// At most kLookAhead: a check looks no farther (limit() keeps every
+  /// part within it until the next check).
+  double anyWay(std::size_t part) override { return std::min(need_[part] + others(part, 0), kLookAhead); }
+
+  /// How far a check looks (length units): the gaps it counts are shorter,
+  /// and no part goes this far before the next check. What lies farther
+  /// from every part at a check cannot bear on it, so a move's verdict
+  /// depends only on what lies near its way (CollisionWatch::reachKeyOf),
+  /// and a long move through free space pays for the few pieces near it,
+  /// not for every piece in the cell.
+  static constexpr double kLookAhead = 200.0;
   double along(std::size_t part, const Eigen::Vector3d& normal, std::size_t from) override;
 
   /// The limits this check's gaps put on each part until the next check:

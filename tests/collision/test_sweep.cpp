@@ -126,6 +126,34 @@ TEST_CASE("no plate thicker than the sweep bound is passed through unseen, thinn
   CHECK(near.checks < 100);
 }
 
+// A check looks no farther than MotionBounds::kLookAhead: a plate behind
+// the blade's start (60 and 100 degrees behind, 450 and more from the
+// blade at radius 450) never counts in a check of the quarter turn, so
+// the turn is checked at the same times with it there, elsewhere, or not
+// at all (with a look as far as the whole turn, 793 at the tip, the plate
+// would be counted and the checks would hang on where it stands); and the
+// turn is checked at least once per kLookAhead of the tip's way.
+TEST_CASE("a check looks no farther than the look-ahead: what stands beyond it bears on nothing",
+          "[collision][sweep]") {
+  const rs::workcell::Workcell cell = sweepCell();
+  const rs::vm::Image image = rendertest::compileText("        MOVETO 9000\n        END\n", cell);
+  rs::runtime::RunSpec spec;
+  spec.image = std::make_shared<const rs::vm::Image>(image);
+  spec.cell = std::make_shared<const rs::workcell::Workcell>(cell);
+  spec.collisions = rs::runtime::CollisionMode::Warn;
+  rs::runtime::Run bare(std::move(spec));
+  REQUIRE(bare.runToEnd().ok());
+  const std::uint64_t alone = bare.rig().collisionWatch()->checks();
+  const double tipWay = 505 * M_PI / 2;
+  CHECK(alone >= static_cast<std::uint64_t>(std::ceil(tipWay / rs::runtime::MotionBounds::kLookAhead)));
+  for (const double behind : {-60.0, -100.0}) {
+    INFO("plate at " << behind << " degrees");
+    const Sweep s = sweepThrough(cell, image, 20, behind);
+    CHECK(s.collisions == 0);
+    CHECK(s.checks == alone);
+  }
+}
+
 // A move's key by what it can reach (CollisionWatch::reachKeyOf) leaves
 // out the objects it cannot come near: a plate the blade's tip passes
 // close to counts, plates far round the turn do not, until the turn is

@@ -223,3 +223,29 @@ TEST_CASE("robot sight: a production loop's searches are answered from memory af
   CHECK(devices.sightsRemembered() > 30 * 3);
   CHECK(devices.sightsSearched() < devices.sightsRemembered() / 4);
 }
+
+// The swept check's memory in the same loop (collisions on): the moves of
+// a cycle are swept in the first cycles and answered after. The parts
+// upstream on the infeed stand somewhere new each cycle until the queue
+// settles (about 13 cycles), and the feeder's parts come in three slots in
+// turn; a move's reach key counts only the objects some check of it could
+// look at (stretches of the move, a check looking no farther than
+// MotionBounds::kLookAhead) and names them by shape and place, not number.
+// At 8a59268, keyed by number and by the whole move's reach, 57 moves were
+// swept afresh in the first 13 cycles.
+TEST_CASE("sweep memory: a production loop's moves are swept in its first cycles only", "[cell][devices][collision]") {
+  rs::compiler::Library library(rs::compiler::librarySearchPath({}));
+  const auto cell = library.workcell("adept-cell");
+  REQUIRE(cell);
+  const auto run = rendertest::runOf(rendertest::compileText(rs::bench::adeptHourProgram(40), *cell), &*cell, {},
+                                     false, rs::runtime::CollisionMode::Error);
+  REQUIRE(run->runToEnd().ok());
+  REQUIRE(run->rig().devices()->taken(0) == 40);
+  const rs::runtime::CollisionWatch* watch = run->rig().collisionWatch();
+  REQUIRE(watch);
+  // 8 moves a cycle, then HRDHOME: 40 × 8 + 1.
+  CHECK(watch->moves() == 40 * 8 + 1);
+  // At most two cycles' moves and the last HRDHOME are swept afresh.
+  INFO("swept " << watch->moves() - watch->remembered() << " of " << watch->moves());
+  CHECK(watch->moves() - watch->remembered() <= 2 * 8 + 1);
+}
