@@ -149,22 +149,14 @@ void CollisionData::boxParts(const CollisionQuery& query, bool holds) {
     heldHull_.extend(heldBoxes_[i]), heldRaisedHull_.extend(heldRaisedBoxes_[i]);
 }
 
-// Each part's box at a later check lies within its travel since the start
-// of its box at the start, on every axis: its gap to an object shrinks by
-// at most sqrt(3) times that (a corner's way), so a gap of more than three
-// times the part's travel stays longer than the part can still go (and
-// longer than 0), and pairGaps adds nothing at any check (the reasoning of
-// markOutOfReach, for the whole move).
-void CollisionData::outOfReachOfMove(std::span<const std::int32_t> encoders, const CollisionQuery& query,
-                                     std::span<const double> travel, std::vector<char>& out) {
-  out.assign(model_.objectBodies_.size(), 1);
-  outOfReachOfStretch(encoders, query, travel, travel, out);
-}
-
-// The same reasoning for a stretch of a move, where a check looks no
-// farther than `look` (at most what the part can still go): a gap of more
-// than twice the part's travel over the stretch plus that stays longer
-// than the check looks, at every check of the stretch.
+// What a move's reach is measured from (runtime/sim/collision_watch.cpp,
+// CollisionWatch::moveReach): each part's box at the start of a stretch
+// of the move. A part's box at a later check of the stretch lies within
+// its travel since the stretch's start of that box, on every axis: its gap
+// to an object shrinks by at most sqrt(3) times that travel (a corner's
+// way), so a gap of more than twice the travel plus how far a check looks
+// stays longer than any check of the stretch looks, and pairGaps adds
+// nothing for it (the reasoning of markOutOfReach, for a stretch).
 void CollisionData::reachBoxes(std::span<const std::int32_t> encoders, const CollisionQuery& query,
                                std::vector<Eigen::AlignedBox3d>& out) {
   const auto& robot = model_.robotBodies_;
@@ -182,20 +174,6 @@ bool CollisionData::outOfReach(const Eigen::AlignedBox3d& part, double reach, co
   Eigen::Vector3d along;
   const double gap = boxGap(part, object, along);
   return gap > reach + 1e-6 * (1 + gap);  // a margin for the rounding of the poses the checks compute
-}
-
-void CollisionData::outOfReachOfStretch(std::span<const std::int32_t> encoders, const CollisionQuery& query,
-                                        std::span<const double> travel, std::span<const double> look,
-                                        std::vector<char>& out) {
-  const auto& objects = model_.objectBodies_;
-  reachBoxes(encoders, query, reachBoxes_);
-  out.resize(objects.size(), 1);
-  for (std::size_t o = 0; o < objects.size(); ++o) {
-    if (objects[o].pieces.empty() || !out[o]) continue;
-    const Eigen::AlignedBox3d& hull = objectHull(o, query.objectPoses[o]);
-    for (std::size_t p = 0; p < reachBoxes_.size() && out[o]; ++p)
-      out[o] = outOfReach(reachBoxes_[p], 2 * travel[p] + look[p], hull);
-  }
 }
 
 // The objects whose gap to the box round every moving part (the links

@@ -278,29 +278,14 @@ class CollisionData {
   /// entries. No allocation.
   std::optional<Contact> findContactOrClearance(std::span<const std::int32_t> encoders, const CollisionQuery& query,
                                                 SweepMotion& motion, std::span<PartClearance> clearance);
-  /// Per object (`out`), whether no moving part can come near enough to
-  /// it during a move that starts with the motors at `encoders` for it to
-  /// count in any check of the move (findContactOrClearance adds no gap to
-  /// it, finds no contact with it), where part p (robotBodies() order, then
-  /// the carried object) moves at most `travel[p]` over the whole move and
-  /// can go no farther from any check: its gap to each moving part's box
-  /// at the start is more than three times that part's travel. Such
-  /// objects can stand anywhere: the move's verdict is the same.
-  void outOfReachOfMove(std::span<const std::int32_t> encoders, const CollisionQuery& query,
-                        std::span<const double> travel, std::vector<char>& out);
-  /// The same for a stretch of a move that starts with the motors at
-  /// `encoders`, over which part p moves at most `travel[p]`, and at whose
-  /// checks it counts no gap of `look[p]` or more (the look-ahead, or what
-  /// it can still go): clears out[o] (grown to one per object, new
-  /// entries set) for each object some part could count in a check of the
-  /// stretch. A move's stretches, one after another, leave set the objects
-  /// no check of the move counts.
-  void outOfReachOfStretch(std::span<const std::int32_t> encoders, const CollisionQuery& query,
-                           std::span<const double> travel, std::span<const double> look, std::vector<char>& out);
-  /// The boxes outOfReachOfStretch measures objects from, with the motors
-  /// at `encoders`: per moving part (robotBodies() order, then the carried
-  /// object as raised for rest), its world box, empty for a part that is
-  /// not checked against objects.
+  /// What a move's reach is measured from, with the motors at `encoders`:
+  /// per moving part (robotBodies() order, then the carried object as
+  /// raised for rest), its world box, empty for a part that is not checked
+  /// against objects. An object whose box is out of reach (outOfReach) of
+  /// every part's box by twice that part's travel over a stretch of the
+  /// move from here plus how far a check looks (MotionBounds::kLookAhead,
+  /// or what the part can still go) gets no gap and no contact in any
+  /// check of the stretch: it may stand anywhere (clearance.cpp).
   void reachBoxes(std::span<const std::int32_t> encoders, const CollisionQuery& query,
                   std::vector<Eigen::AlignedBox3d>& out);
   /// Object o's world box at `pose` (its pieces' boxes, kept for the checks).
@@ -308,9 +293,8 @@ class CollisionData {
     objectBoxes(o, pose);
     return objectHull_[o];
   }
-  /// Whether an object's box is out of reach of a part's box from which
-  /// the part counts gaps shorter than `reach` at any check of a stretch:
-  /// the gap between them is longer, with a margin for rounding.
+  /// Whether the gap between a part's box and an object's is longer than
+  /// `reach`, with a margin for rounding (true when either is empty).
   static bool outOfReach(const Eigen::AlignedBox3d& part, double reach, const Eigen::AlignedBox3d& object);
   /// Poses the arm at `encoders` and checks nothing: frame() and
   /// robotPose() answer for this pose (what a sensor that sees the robot
@@ -376,7 +360,6 @@ class CollisionData {
   // The union of each body's piece boxes (the broad phase of the clearance).
   std::vector<Eigen::AlignedBox3d> robotHull_, objectHull_;
   Eigen::AlignedBox3d heldHull_, heldRaisedHull_;
-  std::vector<Eigen::AlignedBox3d> reachBoxes_;  // outOfReachOfStretch's
   std::vector<char> outOfReach_;  // per object: no moving part can close its gap this check (clearance.cpp)
 };
 

@@ -248,8 +248,8 @@ std::optional<double> CollisionWatch::carriedReach(const workcell::CollisionQuer
 // A move cut into stretches over which no part goes much farther than a
 // check looks (MotionBounds::kLookAhead): each part's box at a stretch's
 // start, and how near an object must come to it to count in a check of
-// the stretch (CollisionData::outOfReachOfStretch's reasoning: twice its
-// travel over the stretch plus how far it looks).
+// the stretch (CollisionData::reachBoxes' reasoning: twice its travel
+// over the stretch plus how far it looks).
 CollisionWatch::MoveReach CollisionWatch::moveReach(const SimMachine& machine, const workcell::CollisionQuery& query,
                                                     std::span<const std::int32_t> before,
                                                     std::span<const std::int32_t> after, vm::Micros start,
@@ -296,7 +296,7 @@ CollisionWatch::MoveReach CollisionWatch::moveReach(const SimMachine& machine, c
 // the motors at both ends. The move is cut into stretches over which no
 // part goes much farther than a check looks (MotionBounds::kLookAhead);
 // an object is left out when it lies out of every stretch's reach
-// (CollisionData::outOfReachOfStretch): no check looks at it, wherever it
+// (moveReach, CollisionData::reachBoxes): no check looks at it, wherever it
 // stands. The objects go by shape, not number, in an order of their own
 // (the clearance keeps its gaps in a total order, so the checks are the
 // same whatever the numbers): the same block fed into another slot is the
@@ -309,7 +309,7 @@ void CollisionWatch::reachKeyOf(const SimMachine& machine, const workcell::Colli
   // the world: worked out once for each.
   moveWords_.clear();
   appendPairs(moveWords_, before, after);
-  moveWords_.push_back(query.held ? (*query.held < shapeOf_.size() ? shapeOf_[*query.held] : *query.held) + 1 : 0);
+  moveWords_.push_back(query.held ? shapeNumber(*query.held) + 1 : 0);
   if (query.held) {
     const Eigen::Matrix<double, 3, 4> offset = query.heldOffset.affine();
     for (int i = 0; i < 12; ++i) moveWords_.push_back(std::bit_cast<std::uint64_t>(offset.data()[i]));
@@ -341,7 +341,7 @@ void CollisionWatch::reachKeyOf(const SimMachine& machine, const workcell::Colli
     if ((o < outOfReach_.size() && outOfReach_[o]) || query.held == o) continue;
     const std::size_t at = entries_.size();
     entries_.resize(at + kEntry);
-    entries_[at] = o < shapeOf_.size() ? shapeOf_[o] : o + shapeOf_.size();
+    entries_[at] = shapeNumber(o);
     entries_[at + 1] = query.exempt == o;
     words(query.objectPoses[o], &entries_[at + 2]);
   }
@@ -359,7 +359,7 @@ void CollisionWatch::reachKeyOf(const SimMachine& machine, const workcell::Colli
   for (const std::size_t at : order_)
     reachKey_.insert(reachKey_.end(), entries_.begin() + static_cast<std::ptrdiff_t>(at),
                      entries_.begin() + static_cast<std::ptrdiff_t>(at + kEntry));
-  reachKey_.push_back(query.held ? (*query.held < shapeOf_.size() ? shapeOf_[*query.held] : *query.held) + 1 : 0);
+  reachKey_.push_back(query.held ? shapeNumber(*query.held) + 1 : 0);
   if (query.held) {
     reachKey_.resize(reachKey_.size() + kPoseWords);
     words(query.heldOffset, &reachKey_[reachKey_.size() - kPoseWords]);

@@ -181,6 +181,9 @@ class CollisionWatch {
   std::vector<Eigen::AlignedBox3d> boxes_;  // scratch: reachBoxes'
   std::vector<std::int32_t> stretchFrom_, stretchTo_;  // scratch: the motors at a stretch's ends
   std::vector<std::uint64_t> shapeOf_;     // per object: a number per shape
+  // Object o's shape number; past the cell's objects (another robot's
+  // parts), a number of its own.
+  std::uint64_t shapeNumber(std::size_t o) const { return o < shapeOf_.size() ? shapeOf_[o] : shapeOf_.size() + o; }
   std::vector<std::uint64_t> entries_;     // scratch: reachKeyOf's per object
   std::vector<std::size_t> order_;         // scratch: their order
   std::vector<char> outOfReach_;           // scratch: per object, out of the move's reach

@@ -155,7 +155,7 @@ TEST_CASE("a check looks no farther than the look-ahead: what stands beyond it b
 }
 
 // A move's key by what it can reach (CollisionWatch::reachKeyOf) leaves
-// out the objects it cannot come near: a plate the blade's tip passes
+// out the objects it cannot come near (CollisionData::reachBoxes, outOfReach): a plate the blade's tip passes
 // close to counts, plates far round the turn do not, until the turn is
 // long enough to come near them.
 TEST_CASE("the objects out of a move's reach are the ones it cannot come near", "[collision][sweep]") {
@@ -177,9 +177,21 @@ TEST_CASE("the objects out of a move's reach are the ones it cannot come near", 
     for (std::size_t p = 0; p <= model.robotBodies().size(); ++p) travel.push_back(bounds.mostTravel(p, from, to));
     // The blade's tip goes 505 times the turn, and the bound is no less.
     CHECK(*std::max_element(travel.begin(), travel.end()) >= 505 * counts * 0.01 * M_PI / 180);
+    // The move as one stretch, measured as CollisionWatch::moveReach does:
+    // twice a part's travel plus how far a check looks (the look-ahead, or
+    // what the part can still go).
+    std::vector<Eigen::AlignedBox3d> boxes;
+    data.reachBoxes(from, query, boxes);
+    REQUIRE(boxes.size() == travel.size());
     std::vector<char> out;
-    data.outOfReachOfMove(from, query, travel, out);
-    REQUIRE(out.size() == 3);
+    for (std::size_t o = 0; o < poses.size(); ++o) {
+      bool far = true;
+      for (std::size_t p = 0; p < boxes.size(); ++p)
+        far = far && rs::workcell::CollisionData::outOfReach(
+                         boxes[p], 2 * travel[p] + std::min(rs::runtime::MotionBounds::kLookAhead, travel[p]),
+                         data.objectHull(o, poses[o]));
+      out.push_back(far);
+    }
     return out;
   };
   const std::vector<char> degree = outOfReach(100);  // 1 degree: the tip goes 8.8
