@@ -200,6 +200,13 @@ void CollisionData::markOutOfReach(const CollisionQuery& query, SweepMotion& mot
     if (moving.isEmpty() || objects[o].pieces.empty()) continue;
     objectBoxes(o, query.objectPoses[o]);
     if (objectHull_[o].isEmpty()) continue;
+    // Far above or below what moves (a feeder's parked slots): out of reach
+    // by the height alone, well past rounding (the gap is at least that).
+    const double apart = std::max(objectHull_[o].min().y() - moving.max().y(), moving.min().y() - objectHull_[o].max().y());
+    if (apart > farthest * (1 + 1e-9) + 1e-9) {
+      outOfReach_[o] = 1;
+      continue;
+    }
     Eigen::Vector3d along;
     const double gap = boxGap(moving, objectHull_[o], along);
     outOfReach_[o] = gap > 0 && gap >= farthest;

@@ -1,6 +1,7 @@
 #include "model/workcell/collision_model.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -337,7 +338,9 @@ bool belowFloor(const CollisionBody& body, const Eigen::AlignedBox3d* boxes, dou
 // Objects rarely move: their boxes (and the union of them) are kept until
 // their pose changes.
 const Eigen::AlignedBox3d* CollisionData::objectBoxes(std::size_t o, const Eigen::Isometry3d& pose) {
-  if (!objectBoxOk_[o] || objectBoxPose_[o].matrix() != pose.matrix()) {
+  // Bit for bit (a memcmp: every check of every move asks, for every object).
+  if (!objectBoxOk_[o] ||
+      std::memcmp(objectBoxPose_[o].matrix().data(), pose.matrix().data(), sizeof(double) * 16) != 0) {
     pieceBoxes(model_.objectBodies_[o], pose, objectBoxes_[o].data());
     objectHull_[o].setEmpty();
     for (const Eigen::AlignedBox3d& box : objectBoxes_[o]) objectHull_[o].extend(box);

@@ -39,12 +39,6 @@ Grasping::Grasping(const Workcell& cell) : cell_(&cell) {
   }
 }
 
-std::optional<std::size_t> Grasping::holder(std::size_t o) const {
-  for (std::size_t h = 0; h < hands_.size(); ++h)
-    if (hands_[h].hold.held == o) return h;
-  return std::nullopt;
-}
-
 bool Grasping::shared(std::size_t o) const {
   int holders = 0;
   for (const Hand& h : hands_) holders += h.hold.held == o;
@@ -73,15 +67,23 @@ std::optional<std::size_t> Grasping::smallestAt(const Eigen::Vector3d& point, bo
   std::optional<std::size_t> best;
   double bestVolume = 0;
   for (std::size_t o = 0; o < boxes_.size(); ++o) {
+    // An isometry keeps distances: a point farther from the object's
+    // origin than its box's corners is in no slack of the box. Most of a
+    // cell's objects (a feeder's parked slots among them) are passed over
+    // here, by their height alone, before anything else is asked of them.
+    const double reach = boxReach_[o];
+    const auto near = [&](const Eigen::Isometry3d& at) {
+      return std::abs(point.y() - at.translation().y()) <= reach &&
+             (point - at.translation()).squaredNorm() <= reach * reach;
+    };
+    if (!near(resting_[o]) && (!partsOnly || !near(carried_[o]))) continue;
     if (boxes_[o].isEmpty() || (partsOnly && cell_->objects[o].kind != ObjectKind::Part)) continue;
     const std::optional<std::size_t> by = partsOnly ? holder(o) : std::nullopt;
     // A part another hand carries (and only that one) may be handed over.
     const bool handOver = by && takingHand && *by != *takingHand && !shared(o);
     if (by && !handOver) continue;
     const Eigen::Isometry3d& at = handOver ? carried_[o] : resting_[o];
-    // An isometry keeps distances: a point farther from the object's
-    // origin than its box's corners is in no slack of the box.
-    if ((point - at.translation()).squaredNorm() > boxReach_[o] * boxReach_[o]) continue;
+    if (!near(at)) continue;
     const Eigen::Vector3d local = at.inverse(Eigen::Isometry) * point;
     const Eigen::AlignedBox3d slack(boxes_[o].min().array() - kInsideSlack, boxes_[o].max().array() + kInsideSlack);
     if (!slack.contains(local)) continue;
@@ -164,11 +166,11 @@ Settled Grasping::settleFrom(std::size_t o, const Eigen::Isometry3d& pose) const
   // (By hand, not by object: a cell has a hand or two and many objects.)
   bool carried = false;
   for (const Hand& h : hands_) carried |= h.hold.held && *h.hold.held != o && *h.hold.held < resting_.size();
-  if (!carried) return settle(*cell_, resting_, o, pose, std::nullopt, settleReach_);
+  if (!carried) return settle(*cell_, resting_, o, pose, std::nullopt, settleReach_, &supportBoxes_);
   std::vector<Eigen::Isometry3d> poses = resting_;
   for (std::size_t p = 0; p < poses.size(); ++p)
     if (p != o && holder(p)) poses[p].pretranslate(Eigen::Vector3d(kParked, 0, 0));
-  return settle(*cell_, poses, o, pose, std::nullopt, settleReach_);
+  return settle(*cell_, poses, o, pose, std::nullopt, settleReach_, &supportBoxes_);
 }
 
 void Grasping::reset() {

@@ -72,7 +72,11 @@ class Grasping {
     return hand < hands_.size() ? hands_[hand].hold.held : std::nullopt;
   }
   /// The hand that holds object `o`, if any (the first, while two do).
-  std::optional<std::size_t> holder(std::size_t o) const;
+  std::optional<std::size_t> holder(std::size_t o) const {  // inline: the devices ask per part per wake
+    for (std::size_t h = 0; h < hands_.size(); ++h)
+      if (hands_[h].hold.held == o) return h;
+    return std::nullopt;
+  }
   /// Whether two hands hold object `o` (a hand-over under way: it stays put).
   bool shared(std::size_t o) const;
   /// Object `o`, held by a hand, is at `pose` now (F_world_design): where a
@@ -192,6 +196,7 @@ class Grasping {
   // (smallestAt passes over what is farther from the point), and
   // settleReach (settle passes over what cannot hold a part up).
   std::vector<double> boxReach_, settleReach_;
+  mutable SupportBoxes supportBoxes_;  // settle's boxes of the objects, kept from one let-go to the next
 };
 
 }  // namespace rs::workcell

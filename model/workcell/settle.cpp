@@ -38,8 +38,29 @@ double settleReach(const PlacedObject& o) {
   return r;
 }
 
+namespace {
+
+// Object `o`'s pieces' and belt's world boxes at `pose`, from the cache when
+// it holds them for this very pose.
+const SupportBoxes::Object& supportBoxes(const PlacedObject& other, std::size_t o, const Eigen::Isometry3d& pose,
+                                         SupportBoxes& cache) {
+  if (cache.objects.size() <= o) cache.objects.resize(o + 1);
+  SupportBoxes::Object& c = cache.objects[o];
+  if (c.at == pose.matrix()) return c;
+  c.at = pose.matrix();
+  c.pieces.clear();
+  for (const ConvexPiece& piece : other.shape.collision) c.pieces.push_back(boxOf(piece, pose));
+  c.belt = other.belt ? other.belt->surface.transformed(pose) : Eigen::AlignedBox3d();
+  return c;
+}
+
+}  // namespace
+
 Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, std::size_t part,
-               const Eigen::Isometry3d& pose, std::optional<std::size_t> skip, std::span<const double> reach) {
+               const Eigen::Isometry3d& pose, std::optional<std::size_t> skip, std::span<const double> reach,
+               SupportBoxes* boxes) {
+  SupportBoxes once;
+  if (!boxes) boxes = &once;
   Settled s;
   s.pose = pose;
   Eigen::AlignedBox3d self;
@@ -68,12 +89,11 @@ Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, s
         continue;
     }
     const PlacedObject& other = cell.objects[o];
-    for (const ConvexPiece& piece : other.shape.collision) {
-      const Eigen::AlignedBox3d b = boxOf(piece, poses[o]);
+    const SupportBoxes::Object& world = supportBoxes(other, o, poses[o], *boxes);
+    for (const Eigen::AlignedBox3d& b : world.pieces)
       if (!b.isEmpty() && footprintsMeet(self, b)) consider(b.max().y(), Settled::On::Object, o);
-    }
     if (other.belt) {
-      const Eigen::AlignedBox3d b = other.belt->surface.transformed(poses[o]);
+      const Eigen::AlignedBox3d& b = world.belt;
       // The belt's surface is where its part rides: on a tie with the
       // object's own top, the belt.
       if (footprintsMeet(self, b) && b.max().y() <= highest && (!top || b.max().y() >= *top))

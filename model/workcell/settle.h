@@ -12,6 +12,8 @@
 
 #include <Eigen/Geometry>
 #include <cstddef>
+#include <limits>
+#include <vector>
 #include <optional>
 #include <span>
 
@@ -40,14 +42,28 @@ struct Settled {
   }
 };
 
+/// The world boxes settle() judges supports by, kept per object with the
+/// pose they were worked out for: a fixture, or a part that has not moved,
+/// is boxed once however often parts are let go onto it. A pure cache (the
+/// same boxes, bit for bit, as working them out again).
+struct SupportBoxes {
+  struct Object {
+    Eigen::Matrix4d at = Eigen::Matrix4d::Constant(std::numeric_limits<double>::quiet_NaN());  // equal to no pose
+    std::vector<Eigen::AlignedBox3d> pieces;
+    Eigen::AlignedBox3d belt;
+  };
+  std::vector<Object> objects;
+};
+
 /// Part `part` of `cell`, let go at `pose`, with every other object at
 /// `poses` (indexed as Workcell::objects; `poses[part]` is ignored, and so
 /// is object `skip`, when given: one the gripper still carries).
 /// `reach`, when given (per object, settleReach), lets it pass over the
-/// objects too far aside to hold it up without looking at their pieces.
+/// objects too far aside to hold it up without looking at their pieces;
+/// `boxes`, when given, keeps their boxes from one call to the next.
 Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, std::size_t part,
                const Eigen::Isometry3d& pose, std::optional<std::size_t> skip = std::nullopt,
-               std::span<const double> reach = {});
+               std::span<const double> reach = {}, SupportBoxes* boxes = nullptr);
 
 /// How far any point of object `o`'s collision pieces and belt lies from
 /// its design origin: where it rests, nothing of it is farther than this

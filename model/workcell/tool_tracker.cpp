@@ -18,9 +18,14 @@ std::array<double, 3> ToolTracker::tcp(std::span<const std::int32_t> encoders) {
 
 Eigen::Isometry3d ToolTracker::frame(std::span<const std::int32_t> encoders) {
   for (std::size_t i = 0; i < encoders_.size() && i < encoders.size(); ++i) encoders_[i] = encoders[i];
+  // The same motors as the last call: its frame (a take, the sensors'
+  // look and the trace ask at the same instant).
+  if (known_ && encoders_ == lastEncoders_) return last_;
   kinematics::jointValuesFromEncoders(chain_, std::span<const double>(encoders_), q_);
   kinematics::forwardKinematics(chain_, data_, q_);
-  return kinematics::toolPose(chain_, data_);
+  last_ = kinematics::toolPose(chain_, data_);
+  lastEncoders_ = encoders_, known_ = true;
+  return last_;
 }
 
 }  // namespace rs::workcell

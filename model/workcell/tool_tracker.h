@@ -29,6 +29,9 @@ class ToolTracker {
   kinematics::ChainModel chain_;  // placed in the world
   kinematics::ChainData data_;
   std::vector<double> encoders_, q_;
+  std::vector<double> lastEncoders_;  // the last frame worked out, and for what
+  Eigen::Isometry3d last_ = Eigen::Isometry3d::Identity();
+  bool known_ = false;
 };
 
 }  // namespace rs::workcell

@@ -122,17 +122,18 @@ vm::Micros afterMicro(vm::Micros now, double tau) {
 // instant), so a production loop solves each of its plans once.
 void CellDevices::plan(vm::Micros now) {
   const workcell::Devices& d = cell_.devices;
-  planKey_.clear();
-  planKey_.push_back(parts_.size());
+  // Written in place: every wake plans.
+  planKey_.resize(1 + 7 * parts_.size() + d.conveyors.size() + d.feeders.size());
+  std::uint64_t* w = planKey_.data();
+  *w++ = parts_.size();
   for (const std::size_t o : parts_) {
     const Eigen::AlignedBox3d& b = partBox(o);
-    planKey_.push_back(state_.ridden[o] << 1 | (world_.holder(o) ? 1 : 0));
+    *w++ = state_.ridden[o] << 1 | (world_.holder(o) ? 1 : 0);
     for (int k = 0; k < 3; ++k)
-      planKey_.push_back(std::bit_cast<std::uint64_t>(b.min()[k])),
-          planKey_.push_back(std::bit_cast<std::uint64_t>(b.max()[k]));
+      *w++ = std::bit_cast<std::uint64_t>(b.min()[k]), *w++ = std::bit_cast<std::uint64_t>(b.max()[k]);
   }
-  for (std::size_t c = 0; c < d.conveyors.size(); ++c) planKey_.push_back(running(c));
-  for (std::size_t f = 0; f < d.feeders.size(); ++f) planKey_.push_back(state_.waiting[f]);
+  for (std::size_t c = 0; c < d.conveyors.size(); ++c) *w++ = running(c);
+  for (std::size_t f = 0; f < d.feeders.size(); ++f) *w++ = state_.waiting[f];
   auto found = plans_.find(planKey_);
   if (found == plans_.end()) {
     if (plans_.size() >= kPlans) plans_.clear();  // all at once, the same way on every run

@@ -118,9 +118,11 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, std::vect
   unknown.matrix().setConstant(std::numeric_limits<double>::quiet_NaN());  // equal to no pose: box() works it out
   boxPose_.assign(n, unknown);
   boxOf_.assign(n, Eigen::AlignedBox3d());
+  boxSeen_.assign(n, 0);
   takenScratch_.assign(n, false);
   for (const workcell::Conveyor& conveyor : d.conveyors) {
     const workcell::PlacedObject& obj = cell.objects[conveyor.object];
+    runFrom_.push_back(conveyor.run.kind == Signal::Kind::Output ? robotIo(conveyor.run.robot) : nullptr);
     if (!obj.belt) {
       belts_.emplace_back();
       continue;
@@ -133,6 +135,7 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, std::vect
     g.lateral.normalize();
     g.end = g.dir.dot(g.belt.center()) + g.dir.cwiseAbs().dot(g.belt.sizes() / 2);
     belts_.push_back(g);
+    anyOpenEnd_ |= obj.belt->endOpen;
   }
   state_.number.assign(n, 0);
   for (std::size_t o = 0; o < firstSlot_; ++o) state_.number[o] = static_cast<std::uint32_t>(o + 1);
@@ -185,13 +188,11 @@ void CellDevices::robotMoves(vm::Micros until, std::size_t robot) {
 }
 
 void CellDevices::watchRobot(vm::Micros now, std::size_t robot) {
-  if (!sights_[robot] || state_.moveUntil[robot] <= now) return;
+  if (!sights_[robot] || state_.moveUntil[robot] <= now || !sights_[robot]->watches()) return;
   RobotIo* io = robots_[robot];
-  motionKey_.clear();
-  const bool keyed = io->motionKey(now, motionKey_);
   const std::optional<vm::Micros> next = sights_[robot]->firstChange(
       now, state_.moveUntil[robot], [io](vm::Micros t, std::span<std::int32_t> out) { io->motorsAt(t, out); },
-      keyed ? std::span<const std::uint64_t>(motionKey_) : std::span<const std::uint64_t>());
+      [io, now](std::vector<std::uint64_t>& key) { return io->motionKey(now, key); });
   if (!next || *next == state_.sightWakeAt[robot]) return;
   state_.sightWakeAt[robot] = *next;
   clock_.schedule(*next, id_);
@@ -220,7 +221,12 @@ RobotIo* CellDevices::robotIo(const std::string& label) const {
   return r < robots_.size() ? robots_[r] : nullptr;
 }
 
-bool CellDevices::running(std::size_t c) const { return signal(cell_.devices.conveyors[c].run); }
+bool CellDevices::running(std::size_t c) const {
+  // A robot's output, the usual RUN, by the robot found once (every wake asks).
+  const Signal& run = cell_.devices.conveyors[c].run;
+  if (run.kind == Signal::Kind::Output) return runFrom_[c] && runFrom_[c]->output(run.number);
+  return signal(run);
+}
 
 std::uint64_t CellDevices::sightsRemembered() const {
   std::uint64_t n = 0;
@@ -235,8 +241,11 @@ std::uint64_t CellDevices::sightsSearched() const {
 }
 
 const Eigen::AlignedBox3d& CellDevices::worldBox(std::size_t o) const {
+  // Worked out at a revision after which the world set no resting pose of it: as it was.
+  if (boxSeen_[o] != 0 && !world_.restMayDifferSince(o, boxSeen_[o] - 1)) return boxOf_[o];
   const Eigen::Isometry3d& pose = world_.restingPose(o);
   if (pose.matrix() != boxPose_[o].matrix()) boxPose_[o] = pose, boxOf_[o] = transformedBox(designBoxes_[o], pose);
+  boxSeen_[o] = world_.revision() + 1;
   return boxOf_[o];
 }
 
@@ -384,7 +393,7 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   moveTo(now);
   for (const std::size_t o : parts_) worldBox(o);  // partBox() holds from here on, kept so as the devices move parts
   // Parts past an open end fall onto what is below them.
-  for (const std::size_t o : parts_) {
+  for (const std::size_t o : anyOpenEnd_ ? std::span<const std::size_t>(parts_) : std::span<const std::size_t>()) {
     if (state_.ridden[o] == 0 || world_.holder(o)) continue;
     const std::size_t c = state_.ridden[o] - 1;
     const workcell::PlacedObject& obj = cell_.objects[d.conveyors[c].object];
@@ -462,7 +471,7 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   }
   // What the robot and the part it carries show them, where they are now.
   for (std::size_t r = 0; r < sights_.size(); ++r) {
-    if (!sights_[r]) continue;
+    if (!sights_[r] || !sights_[r]->watches()) continue;  // it shows them nothing now
     motorsNow_.assign(robots_[r]->motorCount(), 0);
     robots_[r]->motorsAt(now, motorsNow_);
     sights_[r]->sees(motorsNow_, robotSees_);

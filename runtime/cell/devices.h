@@ -248,6 +248,9 @@ class CellDevices final : public CellProcess {
   // box many times, and only riding parts move between wakes.
   mutable std::vector<Eigen::Isometry3d> boxPose_;
   mutable std::vector<Eigen::AlignedBox3d> boxOf_;
+  std::vector<RobotIo*> runFrom_;  // per conveyor: the robot whose output its RUN names (else null)
+  bool anyOpenEnd_ = false;        // some belt says END OPEN: parts may run off
+  mutable std::vector<std::uint64_t> boxSeen_;  // per object: 1 + the world's revision when boxOf_ was last right (0: never)
   std::vector<std::optional<Geometry>> belts_;  // per conveyor: none when its object has no belt
   // The parts in the cell (present, kind Part), by index: what the
   // devices loop over (a feeder's 64 slots are parked while empty).
@@ -262,7 +265,6 @@ class CellDevices final : public CellProcess {
   std::vector<std::unique_ptr<RobotSight>> sights_;  // per robot that runs (and can show a sensor anything)
   std::vector<bool> robotSees_;   // scratch: what a robot shows each sensor now
   std::vector<std::int32_t> motorsNow_;
-  std::vector<std::uint64_t> motionKey_;  // watchRobot's scratch
   std::vector<DeviceEvent> events_;
   std::optional<std::string> fault_;
   void recordChangedMotions(vm::Micros now);

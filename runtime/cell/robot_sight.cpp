@@ -4,6 +4,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "runtime/cell/box_geometry.h"
@@ -308,7 +309,7 @@ bool RobotSight::remembers(const Last& last, vm::Micros from, vm::Micros to, con
 }
 
 std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at,
-                                                  std::span<const std::uint64_t> motion) {
+                                                  const MotionKey& motion) {
   if (!matters_ || to <= from) return std::nullopt;
   const std::optional<std::size_t> held = carriedPart();
   if (!held && !seesRobots_) return std::nullopt;  // nothing carried, and no sensor sees the robot
@@ -318,13 +319,16 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
   b.encoders.assign(motors_, 0);
   at(to, b.encoders);
   if (last_ && remembers(*last_, from, to, b, held)) return last_->change;
-  if (!motion.empty()) {
-    key_.assign(motion.begin(), motion.end());
-    key_.push_back(static_cast<std::uint64_t>(to - from));
-    key_.push_back(held ? *held + 1 : 0);
+  key_.clear();
+  const bool keyed = motion && motion(key_);
+  if (keyed) {
+    const std::size_t words = key_.size();
+    key_.resize(words + 2 + (held ? 12 : 0));
+    key_[words] = static_cast<std::uint64_t>(to - from);
+    key_[words + 1] = held ? *held + 1 : 0;
     if (held) {
       const Eigen::Matrix<double, 3, 4> offset = world_.heldOffset(robot_).affine();
-      for (int i = 0; i < 12; ++i) key_.push_back(std::bit_cast<std::uint64_t>(offset.data()[i]));
+      std::memcpy(key_.data() + words + 2, offset.data(), sizeof(double) * 12);  // its words, as bits
     }
     if (const auto it = memory_.find(key_); it != memory_.end()) {
       ++remembered_;
@@ -351,7 +355,7 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
   if (budget > 0) {
     last_ = Last{from, to, change, b.encoders, held, Eigen::Matrix<double, 3, 4>::Zero()};
     if (held) last_->offset = world_.heldOffset(robot_).affine();
-    if (!motion.empty()) {
+    if (keyed) {
       if (memory_.size() >= kRemembered) memory_.clear();
       memory_.emplace(key_, change ? *change - from : -1);
     }

@@ -44,6 +44,10 @@ class RobotSight {
   /// Whether the robot can ever show a sensor anything (a sensor that sees
   /// parts, or one that sees robots, and a robot with a chain).
   bool matters() const { return matters_; }
+  /// Whether it can show a sensor anything now: a part carried, or a
+  /// sensor that sees the robot. Otherwise firstChange() finds nothing, and
+  /// need not be asked (nor its motion key made).
+  bool watches() const { return matters_ && (seesRobots_ || carriedPart()); }
   /// Per sensor (Devices::sensors), whether the carried part or the robot
   /// touches it with the motors at `encoders` (`out` sized for the sensors).
   void sees(std::span<const std::int32_t> encoders, std::vector<bool>& out);
@@ -55,8 +59,12 @@ class RobotSight {
   /// motionKey): a search made once is answered again for the same motion
   /// with the same part carried the same way, as the sweep's memory
   /// answers a move made again (a production loop asks the same each cycle).
+  /// Writes the words of the motion from `from` on (RobotIo::motionKey),
+  /// or returns false when it has none worth keeping; asked only when the
+  /// last search does not answer.
+  using MotionKey = std::function<bool(std::vector<std::uint64_t>&)>;
   std::optional<vm::Micros> firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at,
-                                        std::span<const std::uint64_t> motion = {});
+                                        const MotionKey& motion = {});
   /// Searches answered from memory, and searches made.
   std::uint64_t remembered() const { return remembered_; }
   std::uint64_t searched() const { return searched_; }

@@ -4,6 +4,7 @@ namespace rs::runtime {
 
 World::World(const workcell::Workcell& cell) : cell_(cell), grasping_(cell) {
   state_.rests.assign(cell.objects.size(), std::nullopt);
+  restRevision_.assign(cell.objects.size(), 0);
   const std::size_t hands = cell.robots.size();
   state_.heldSince.assign(hands, 0);
   step_.assign(hands, {});
@@ -36,7 +37,7 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
     step_[hand].closedEmpty = true;
   }
   if (!change) return;
-  ++revision_;
+  restRevision_[change->object] = ++revision_;
   if (change->held) ++state_.takes;
   const std::size_t o = change->object;
   const workcell::Settled& s = change->settled;
@@ -59,7 +60,7 @@ void World::reset(vm::Micros at, std::size_t hand) {
   for (std::size_t h = 0; h < grasping_.handCount() && !held; ++h)
     if (grasping_.held(h)) held = grasping_.held(h), from = h;
   grasping_.reset();
-  ++revision_;
+  restRevision_.assign(restRevision_.size(), ++revision_);
   state_.rests.assign(cell_.objects.size(), std::nullopt);
   if (!held) return;
   state_.last = {at, *held, false, grasping_.restingPose(*held)};
@@ -132,7 +133,7 @@ void World::restore(const State& s) {
   state_ = s;
   step_.assign(step_.size(), {});
   grasping_.restore(s.grasp);
-  ++revision_;
+  restRevision_.assign(restRevision_.size(), ++revision_);
 }
 
 }  // namespace rs::runtime

@@ -102,7 +102,7 @@ class World {
   /// move, put and take parts (runtime/cell/devices.h).
   void place(std::size_t o, const Eigen::Isometry3d& pose) {
     grasping_.setResting(o, pose);
-    ++revision_;
+    restRevision_[o] = ++revision_;
   }
   /// Object `o`'s slot holds a new part at `pose` (a feeder fed it) or
   /// none (a sink took it): no let-go put it there, so it has no restOf.
@@ -142,6 +142,10 @@ class World {
   /// depends on them is still good while this stays the same. Not part of
   /// the state: it only ever grows.
   std::uint64_t revision() const { return revision_; }
+  /// Whether object `o`'s resting pose may have changed after revision
+  /// `since`: false means it is bit for bit what it was then, so a cache
+  /// of the resting poses looks only at the objects this names.
+  bool restMayDifferSince(std::size_t o, std::uint64_t since) const { return restRevision_[o] > since; }
   /// The tool centre point in world coordinates, when the robot has a chain.
   std::optional<std::array<double, 3>> tcp(std::span<const std::int32_t> encoders, std::size_t hand = 0) const;
 
@@ -212,6 +216,7 @@ class World {
   State state_;  // all but the grasp, which grasping_ keeps
   std::vector<StepEffects> step_;  // per hand, since its last takeStepEffects (a restore forgets them)
   std::uint64_t revision_ = 0;
+  std::vector<std::uint64_t> restRevision_;  // per object: the revision that last set its resting pose
 };
 
 }  // namespace rs::runtime

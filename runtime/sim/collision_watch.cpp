@@ -78,7 +78,14 @@ std::string CollisionWatch::hint(const CollisionEvent& event) const {
 
 namespace {
 
-// Two motor vectors into a memo key: each motor's pair of values in one word.
+// Two motor vectors (of one length) into a memo key at `w`: each motor's
+// pair of values in one word.
+void writePairs(std::uint64_t*& w, std::span<const std::int32_t> from, std::span<const std::int32_t> to) {
+  for (std::size_t m = 0; m < from.size(); ++m)
+    *w++ = static_cast<std::uint64_t>(static_cast<std::uint32_t>(from[m])) << 32 | static_cast<std::uint32_t>(to[m]);
+}
+
+// The same, appended.
 void appendPairs(std::vector<std::uint64_t>& key, std::span<const std::int32_t> from,
                  std::span<const std::int32_t> to) {
   for (std::size_t m = 0; m < from.size() && m < to.size(); ++m)
@@ -114,11 +121,14 @@ void CollisionWatch::keyOf(const World& world, std::span<const std::int32_t> bef
     change_.clear();
     change_.push_back(placesId_);
     for (std::size_t o = 0; o < resting_.size(); ++o) {
+      if (!world.restMayDifferSince(o, *worldRevision_)) continue;  // as it was: no look at its pose
       const Eigen::Isometry3d& now = world.restingPose(o);
       if (std::memcmp(now.matrix().data(), resting_[o].matrix().data(), sizeof(double) * 16) == 0) continue;
       resting_[o] = now;
-      change_.push_back(o);
-      for (int w = 0; w < 16; ++w) change_.push_back(std::bit_cast<std::uint64_t>(now.matrix().data()[w]));
+      const std::size_t at = change_.size();
+      change_.resize(at + 17);
+      change_[at] = o;
+      std::memcpy(&change_[at + 1], now.matrix().data(), sizeof(double) * 16);  // its 16 words, as bits
     }
     if (change_.size() > 1) {
       if (const std::optional<std::uint64_t> known = memo_.changed(change_)) {
@@ -130,16 +140,21 @@ void CollisionWatch::keyOf(const World& world, std::span<const std::int32_t> bef
     }
     worldRevision_ = world.revision();
   }
-  key_.clear();
-  key_.push_back(placesId_);
+  // Written in place: every move asks.
   const std::optional<std::size_t> held = world.held(hand_);
-  key_.push_back(held ? *held + 1 : 0);
+  const std::size_t pairs = std::min(before.size(), after.size()),
+                    linePairs = lineFrom.empty() || lineTo.empty() ? 0 : std::min(lineFrom.size(), lineTo.size());
+  key_.resize(2 + (held ? 12 : 0) + pairs + linePairs);
+  std::uint64_t* w = key_.data();
+  *w++ = placesId_;
+  *w++ = held ? *held + 1 : 0;
   if (held) {
     const Eigen::Matrix<double, 3, 4> offset = world.heldOffset(hand_).affine();
-    for (int i = 0; i < 12; ++i) key_.push_back(std::bit_cast<std::uint64_t>(offset.data()[i]));
+    std::memcpy(w, offset.data(), sizeof(double) * 12);  // its words, as bits
+    w += 12;
   }
-  appendPairs(key_, before, after);
-  if (!lineFrom.empty() && !lineTo.empty()) appendPairs(key_, lineFrom, lineTo);
+  writePairs(w, before.first(pairs), after.first(pairs));
+  if (linePairs) writePairs(w, lineFrom.first(linePairs), lineTo.first(linePairs));
 }
 
 const CollisionEvent* CollisionWatch::sweep(const SimMachine& machine, const World& world,

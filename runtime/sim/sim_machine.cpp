@@ -158,13 +158,17 @@ std::int32_t SimMachine::positionAt(std::size_t motor, Micros t) const {
 bool SimMachine::motionKey(vm::Micros origin, std::vector<std::uint64_t>& out) const {
   const std::size_t n = segments_.size();
   if (n == 0 || path_.size() / n > kMotionKeyKnots) return false;
-  // Each number as its two's complement bits (a key's words only compare).
-  const auto word = [&](std::int64_t v) { out.push_back(static_cast<std::uint64_t>(v)); };
+  // Each number as its two's complement bits (a key's words only compare),
+  // written in place: the devices ask at every wake.
+  std::size_t at = out.size();
+  out.resize(at + 1 + 5 * (segments_.size() + path_.size()));
+  std::uint64_t* w = out.data() + at;
+  *w++ = path_.size();
   const auto add = [&](const MotorSegment& s) {
-    word(s.from), word(s.to), word(s.start - origin), word(s.end - origin);
-    word((s.lockStep ? 1 : 0) | (s.lead ? 2 : 0));
+    *w++ = static_cast<std::uint64_t>(std::int64_t{s.from}), *w++ = static_cast<std::uint64_t>(std::int64_t{s.to});
+    *w++ = static_cast<std::uint64_t>(s.start - origin), *w++ = static_cast<std::uint64_t>(s.end - origin);
+    *w++ = (s.lockStep ? 1 : 0) | (s.lead ? 2 : 0);
   };
-  out.push_back(path_.size());
   for (const MotorSegment& s : segments_) add(s);
   for (const MotorSegment& s : path_) add(s);
   return true;
