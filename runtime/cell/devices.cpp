@@ -472,11 +472,14 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   // What the robot and the part it carries show them, where they are now.
   for (std::size_t r = 0; r < sights_.size(); ++r) {
     if (!sights_[r] || !sights_[r]->watches()) continue;  // it shows them nothing now
-    motorsNow_.assign(robots_[r]->motorCount(), 0);
-    robots_[r]->motorsAt(now, motorsNow_);
-    sights_[r]->sees(motorsNow_, robotSees_);
-    for (std::size_t s = 0; s < d.sensors.size(); ++s) nextSensor_[s] = nextSensor_[s] || robotSees_[s];
     watchRobot(now, r);
+    // Mid-move, the search just asked knows what it shows them now.
+    if (state_.moveUntil[r] <= now || !sights_[r]->seenAsAsked(now, state_.moveUntil[r], robotSees_)) {
+      motorsNow_.assign(robots_[r]->motorCount(), 0);
+      robots_[r]->motorsAt(now, motorsNow_);
+      sights_[r]->sees(motorsNow_, robotSees_);
+    }
+    for (std::size_t s = 0; s < d.sensors.size(); ++s) nextSensor_[s] = nextSensor_[s] || robotSees_[s];
   }
   plan(now);
   state_.revision = world_.revision();

@@ -310,6 +310,7 @@ bool RobotSight::remembers(const Last& last, vm::Micros from, vm::Micros to, con
 
 std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at,
                                                   const MotionKey& motion) {
+  asked_.reset();
   if (!matters_ || to <= from) return std::nullopt;
   const std::optional<std::size_t> held = carriedPart();
   if (!held && !seesRobots_) return std::nullopt;  // nothing carried, and no sensor sees the robot
@@ -318,7 +319,10 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
   b.t = to;
   b.encoders.assign(motors_, 0);
   at(to, b.encoders);
-  if (last_ && remembers(*last_, from, to, b, held)) return last_->change;
+  if (last_ && remembers(*last_, from, to, b, held)) {
+    asked_.emplace(from, to);
+    return last_->change;
+  }
   key_.clear();
   const bool keyed = motion && motion(key_);
   if (keyed) {
@@ -332,7 +336,13 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
     }
     if (const auto it = memory_.find(key_); it != memory_.end()) {
       ++remembered_;
-      return it->second < 0 ? std::nullopt : std::optional<vm::Micros>(from + it->second);
+      const std::optional<vm::Micros> change =
+          it->second.after < 0 ? std::nullopt : std::optional<vm::Micros>(from + it->second.after);
+      // The answer holds as a search's would: a wake later in the move asks last_.
+      last_ = Last{from, to, change, b.encoders, held, Eigen::Matrix<double, 3, 4>::Zero(), it->second.start};
+      if (held) last_->offset = world_.heldOffset(robot_).affine();
+      asked_.emplace(from, to);
+      return change;
     }
   }
   ++searched_;
@@ -353,16 +363,26 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
   std::optional<vm::Micros> change = locate(a, b, start_, at, budget);
   if (!change) change = search(a, b, start_, at, budget, 2);
   if (budget > 0) {
-    last_ = Last{from, to, change, b.encoders, held, Eigen::Matrix<double, 3, 4>::Zero()};
+    last_ = Last{from, to, change, b.encoders, held, Eigen::Matrix<double, 3, 4>::Zero(), start_};
     if (held) last_->offset = world_.heldOffset(robot_).affine();
+    asked_.emplace(from, to);
     if (keyed) {
       if (memory_.size() >= kRemembered) memory_.clear();
-      memory_.emplace(key_, change ? *change - from : -1);
+      memory_.emplace(key_, Answer{change ? *change - from : -1, start_});
     }
   } else {
     last_.reset();
   }
   return change;
+}
+
+bool RobotSight::seenAsAsked(vm::Micros now, vm::Micros to, std::vector<bool>& out) const {
+  if (!last_ || !asked_ || asked_->first != now || asked_->second != to) return false;
+  // What it carries and how, as when it was asked (nothing between moves it).
+  const std::optional<std::size_t> held = carriedPart();
+  if (last_->carried != held || (held && last_->offset != world_.heldOffset(robot_).affine())) return false;
+  out = last_->start;
+  return true;
 }
 
 }  // namespace rs::runtime

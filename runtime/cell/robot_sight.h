@@ -65,6 +65,12 @@ class RobotSight {
   using MotionKey = std::function<bool(std::vector<std::uint64_t>&)>;
   std::optional<vm::Micros> firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at,
                                         const MotionKey& motion = {});
+  /// What sees() answers at `now`, without posing the arm, when the last
+  /// firstChange() was asked from `now` to `to` and answered (from its
+  /// last search, its memory, or a search): nothing changes from the
+  /// search's start until its answer, so it is what it saw at its start.
+  /// False: ask sees().
+  bool seenAsAsked(vm::Micros now, vm::Micros to, std::vector<bool>& out) const;
   /// Searches answered from memory, and searches made.
   std::uint64_t remembered() const { return remembered_; }
   std::uint64_t searched() const { return searched_; }
@@ -72,7 +78,7 @@ class RobotSight {
   static constexpr std::size_t kRemembered = 4096;
   static constexpr int kMaxProbes = 20'000;
   /// Forget the last search (the world or the motion was restored).
-  void forget() { last_.reset(); }
+  void forget() { last_.reset(), asked_.reset(); }
 
  private:
   struct Probe;
@@ -111,14 +117,21 @@ class RobotSight {
     std::vector<std::int32_t> end;  // the motors at `to`
     std::optional<std::size_t> carried;
     Eigen::Matrix<double, 3, 4> offset;
+    std::vector<bool> start;  // what sees() answered at `from`
   };
   bool remembers(const Last& last, vm::Micros from, vm::Micros to, const Probe& end,
                  const std::optional<std::size_t>& carried) const;
   std::optional<Last> last_;
   // Whole searches by everything their answer depends on: the time to the
   // move's end, the motion, the part carried and how; the answer counted
-  // from the search's start (-1: none).
-  std::unordered_map<std::vector<std::uint64_t>, vm::Micros, base::WordsHash> memory_;
+  // from the search's start (-1: none), and what it saw there.
+  struct Answer {
+    vm::Micros after = -1;
+    std::vector<bool> start;  // what sees() answered at the start
+  };
+  std::unordered_map<std::vector<std::uint64_t>, Answer, base::WordsHash> memory_;
+  // The span the last firstChange() was asked for, when last_ answers for it.
+  std::optional<std::pair<vm::Micros, vm::Micros>> asked_;
   std::vector<std::uint64_t> key_;
   std::uint64_t remembered_ = 0, searched_ = 0;
 };
