@@ -51,6 +51,10 @@ class RobotSight {
   /// Per sensor (Devices::sensors), whether the carried part or the robot
   /// touches it with the motors at `encoders` (`out` sized for the sensors).
   void sees(std::span<const std::int32_t> encoders, std::vector<bool>& out);
+  /// Writes the words of the motion from a search's start on
+  /// (RobotIo::motionKey), or returns false when it has none worth keeping;
+  /// firstChange() asks only when its last search does not answer.
+  using MotionKey = std::function<bool(std::vector<std::uint64_t>&)>;
   /// The first microsecond in (from, to] at which sees() answers other
   /// than at `from`, while the motors move as `at` says; none when it
   /// does not change. At most kMaxProbes poses are looked at: past them,
@@ -59,10 +63,6 @@ class RobotSight {
   /// motionKey): a search made once is answered again for the same motion
   /// with the same part carried the same way, as the sweep's memory
   /// answers a move made again (a production loop asks the same each cycle).
-  /// Writes the words of the motion from `from` on (RobotIo::motionKey),
-  /// or returns false when it has none worth keeping; asked only when the
-  /// last search does not answer.
-  using MotionKey = std::function<bool(std::vector<std::uint64_t>&)>;
   std::optional<vm::Micros> firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at,
                                         const MotionKey& motion = {});
   /// What sees() answers at `now`, without posing the arm, when the last

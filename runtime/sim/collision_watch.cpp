@@ -88,9 +88,10 @@ void writePairs(std::uint64_t*& w, std::span<const std::int32_t> from, std::span
 // The same, appended.
 void appendPairs(std::vector<std::uint64_t>& key, std::span<const std::int32_t> from,
                  std::span<const std::int32_t> to) {
-  for (std::size_t m = 0; m < from.size() && m < to.size(); ++m)
-    key.push_back(static_cast<std::uint64_t>(static_cast<std::uint32_t>(from[m])) << 32 |
-                  static_cast<std::uint32_t>(to[m]));
+  const std::size_t n = std::min(from.size(), to.size()), at = key.size();
+  key.resize(at + n);
+  std::uint64_t* w = key.data() + at;
+  writePairs(w, from.first(n), to.first(n));
 }
 
 }  // namespace
