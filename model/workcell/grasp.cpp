@@ -39,12 +39,6 @@ Grasping::Grasping(const Workcell& cell) : cell_(&cell) {
   }
 }
 
-bool Grasping::shared(std::size_t o) const {
-  int holders = 0;
-  for (const Hand& h : hands_) holders += h.hold.held == o;
-  return holders > 1;
-}
-
 std::optional<std::size_t> Grasping::otherHolder(std::size_t o, std::size_t hand) const {
   for (std::size_t h = 0; h < hands_.size(); ++h)
     if (h != hand && hands_[h].hold.held == o) return h;

@@ -78,7 +78,11 @@ class Grasping {
     return std::nullopt;
   }
   /// Whether two hands hold object `o` (a hand-over under way: it stays put).
-  bool shared(std::size_t o) const;
+  bool shared(std::size_t o) const {  // inline: the robot's sight asks at every move and wake
+    int holders = 0;
+    for (const Hand& h : hands_) holders += h.hold.held == o;
+    return holders > 1;
+  }
   /// Object `o`, held by a hand, is at `pose` now (F_world_design): where a
   /// closing gripper of another hand finds it. The caller knows where each
   /// robot's motors are; this does not.

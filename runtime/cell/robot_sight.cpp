@@ -70,12 +70,6 @@ RobotSight::RobotSight(const workcell::Workcell& cell, const World& world, std::
 
 RobotSight::~RobotSight() = default;
 
-std::optional<std::size_t> RobotSight::carriedPart() const {
-  // A part two hands hold stays put: the devices see it where it rests.
-  const std::optional<std::size_t> held = world_.held(robot_);
-  return held && !world_.shared(*held) ? held : std::nullopt;
-}
-
 void RobotSight::probe(vm::Micros t, const MotorsAt& at, Probe& p) {
   p.t = t;
   p.encoders.assign(motors_, 0);
@@ -308,6 +302,21 @@ bool RobotSight::remembers(const Last& last, vm::Micros from, vm::Micros to, con
   return !carried || last.offset == world_.heldOffset(robot_).affine();
 }
 
+// Written over the last one's storage: every move the robot makes while
+// it carries a part asks.
+void RobotSight::keepLast(vm::Micros from, vm::Micros to, std::optional<vm::Micros> change,
+                          const std::vector<std::int32_t>& end, std::optional<std::size_t> held,
+                          const std::vector<bool>& start) {
+  if (!last_) last_.emplace();
+  Last& l = *last_;
+  l.from = from, l.to = to, l.change = change, l.carried = held;
+  l.end.assign(end.begin(), end.end());
+  l.start = start;
+  if (held) l.offset = world_.heldOffset(robot_).affine();
+  else l.offset.setZero();
+  asked_.emplace(from, to);
+}
+
 std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to, const MotorsAt& at,
                                                   const MotionKey& motion) {
   asked_.reset();
@@ -339,9 +348,7 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
       const std::optional<vm::Micros> change =
           it->second.after < 0 ? std::nullopt : std::optional<vm::Micros>(from + it->second.after);
       // The answer holds as a search's would: a wake later in the move asks last_.
-      last_ = Last{from, to, change, b.encoders, held, Eigen::Matrix<double, 3, 4>::Zero(), it->second.start};
-      if (held) last_->offset = world_.heldOffset(robot_).affine();
-      asked_.emplace(from, to);
+      keepLast(from, to, change, b.encoders, held, it->second.start);
       return change;
     }
   }
@@ -363,9 +370,7 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
   std::optional<vm::Micros> change = locate(a, b, start_, at, budget);
   if (!change) change = search(a, b, start_, at, budget, 2);
   if (budget > 0) {
-    last_ = Last{from, to, change, b.encoders, held, Eigen::Matrix<double, 3, 4>::Zero(), start_};
-    if (held) last_->offset = world_.heldOffset(robot_).affine();
-    asked_.emplace(from, to);
+    keepLast(from, to, change, b.encoders, held, start_);
     if (keyed) {
       if (memory_.size() >= kRemembered) memory_.clear();
       memory_.emplace(key_, Answer{change ? *change - from : -1, start_});

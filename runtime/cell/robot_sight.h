@@ -82,8 +82,15 @@ class RobotSight {
 
  private:
   struct Probe;
-  /// The part this robot carries (moving with it), if any.
-  std::optional<std::size_t> carriedPart() const;
+  /// The part this robot carries (moving with it), if any. A part two
+  /// hands hold stays put: the devices see it where it rests. Inline: the
+  /// devices ask at every wake and move (out of line, its optionals went
+  /// through the stack and stalled).
+  std::optional<std::size_t> carriedPart() const {
+    const std::optional<std::size_t> held = world_.held(robot_);
+    if (!held || world_.shared(*held)) return std::nullopt;
+    return held;
+  }
   void probe(vm::Micros t, const MotorsAt& at, Probe& out);
   void look(Probe& p);
   bool stays(const Probe& a, const Probe& b) const;
@@ -122,6 +129,9 @@ class RobotSight {
   bool remembers(const Last& last, vm::Micros from, vm::Micros to, const Probe& end,
                  const std::optional<std::size_t>& carried) const;
   std::optional<Last> last_;
+  /// last_ := this search's answer, and asked_ its span.
+  void keepLast(vm::Micros from, vm::Micros to, std::optional<vm::Micros> change, const std::vector<std::int32_t>& end,
+                std::optional<std::size_t> held, const std::vector<bool>& start);
   // Whole searches by everything their answer depends on: the time to the
   // move's end, the motion, the part carried and how; the answer counted
   // from the search's start (-1: none), and what it saw there.
