@@ -29,6 +29,8 @@ Grasping::Grasping(const Workcell& cell) : cell_(&cell) {
     settleReach_.push_back(settleReach(o));
   }
   letGo_.assign(resting_.size(), std::nullopt);
+  for (const PlacedObject& o : cell.objects) present_.push_back(o.inCell ? 1 : 0);
+  listInCell();
   carried_ = resting_;
   hands_.resize(cell.robots.size());
   for (std::size_t r = 0; r < cell.robots.size(); ++r) {
@@ -46,7 +48,7 @@ std::optional<std::size_t> Grasping::otherHolder(std::size_t o, std::size_t hand
 }
 
 Grasping::State Grasping::state() const {
-  State s{{}, resting_, letGo_};
+  State s{{}, resting_, letGo_, present_};
   for (const Hand& h : hands_) s.hands.push_back(h.hold);
   return s;
 }
@@ -54,13 +56,30 @@ Grasping::State Grasping::state() const {
 void Grasping::restore(const State& s) {
   for (std::size_t h = 0; h < hands_.size() && h < s.hands.size(); ++h) hands_[h].hold = s.hands[h];
   resting_ = s.resting, letGo_ = s.letGo;
+  if (s.present.size() == present_.size()) present_ = s.present;
+  listInCell();
+}
+
+void Grasping::setInCell(std::size_t o, bool in) {
+  if (o >= present_.size() || (present_[o] != 0) == in) return;
+  present_[o] = in ? 1 : 0;
+  // In index order, by one insertion or erasure: a feeder feeds and a sink takes every cycle.
+  const auto at = std::lower_bound(inCell_.begin(), inCell_.end(), o);
+  if (in) inCell_.insert(at, o);
+  else inCell_.erase(at);
+}
+
+void Grasping::listInCell() {
+  inCell_.clear();
+  for (std::size_t o = 0; o < present_.size(); ++o)
+    if (present_[o]) inCell_.push_back(o);
 }
 
 std::optional<std::size_t> Grasping::smallestAt(const Eigen::Vector3d& point, bool partsOnly,
                                                 std::optional<std::size_t> takingHand) const {
   std::optional<std::size_t> best;
   double bestVolume = 0;
-  for (std::size_t o = 0; o < boxes_.size(); ++o) {
+  for (const std::size_t o : inCell_) {
     // An isometry keeps distances: a point farther from the object's
     // origin than its box's corners is in no slack of the box. Most of a
     // cell's objects (a feeder's parked slots among them) are passed over
@@ -89,7 +108,7 @@ std::optional<std::size_t> Grasping::smallestAt(const Eigen::Vector3d& point, bo
 
 std::optional<std::pair<std::size_t, double>> Grasping::nearestObject(const Eigen::Vector3d& point) const {
   std::optional<std::pair<std::size_t, double>> best;
-  for (std::size_t o = 0; o < boxes_.size(); ++o) {
+  for (const std::size_t o : inCell_) {
     if (boxes_[o].isEmpty()) continue;
     const Eigen::Vector3d local = resting_[o].inverse(Eigen::Isometry) * point;
     const double d = boxes_[o].exteriorDistance(local);
@@ -160,17 +179,19 @@ Settled Grasping::settleFrom(std::size_t o, const Eigen::Isometry3d& pose) const
   // (By hand, not by object: a cell has a hand or two and many objects.)
   bool carried = false;
   for (const Hand& h : hands_) carried |= h.hold.held && *h.hold.held != o && *h.hold.held < resting_.size();
-  if (!carried) return settle(*cell_, resting_, o, pose, std::nullopt, settleReach_, &supportBoxes_);
+  if (!carried) return settle(*cell_, resting_, o, pose, std::nullopt, settleReach_, &supportBoxes_, &inCell_);
   std::vector<Eigen::Isometry3d> poses = resting_;
   for (std::size_t p = 0; p < poses.size(); ++p)
     if (p != o && holder(p)) poses[p].pretranslate(Eigen::Vector3d(kParked, 0, 0));
-  return settle(*cell_, poses, o, pose, std::nullopt, settleReach_, &supportBoxes_);
+  return settle(*cell_, poses, o, pose, std::nullopt, settleReach_, &supportBoxes_, &inCell_);
 }
 
 void Grasping::reset() {
   for (Hand& h : hands_) h.hold.held.reset();
   for (std::size_t o = 0; o < resting_.size(); ++o) resting_[o] = cell_->objects[o].F_world_design;
   letGo_.assign(resting_.size(), std::nullopt);
+  for (std::size_t o = 0; o < present_.size(); ++o) present_[o] = cell_->objects[o].inCell ? 1 : 0;
+  listInCell();
 }
 
 Eigen::Isometry3d Grasping::toolFrame(std::span<const std::int32_t> encoders, std::size_t hand) {

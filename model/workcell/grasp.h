@@ -64,8 +64,16 @@ class Grasping {
   /// during a closing move, which has not ended yet.
   std::optional<GraspChange> step(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
                                   bool mayTake = true, std::size_t hand = 0);
-  /// RESET: nothing held by any hand, every object back at its placement.
+  /// RESET: nothing held by any hand, every object back at its placement
+  /// (and in the cell or out of it as PlacedObject::inCell says).
   void reset();
+  /// Object `o` comes into the cell, or goes out of it (a feeder fed its
+  /// slot; a sink took its part): out of the cell, nothing takes it and it
+  /// holds up nothing let go.
+  void setInCell(std::size_t o, bool in);
+  /// The objects in the cell, by index: what a grasp or a let-go looks
+  /// at (a feeder's 64 slots are out of it while empty).
+  const std::vector<std::size_t>& inCell() const { return inCell_; }
 
   std::size_t handCount() const { return hands_.size(); }
   std::optional<std::size_t> held(std::size_t hand = 0) const {
@@ -160,8 +168,10 @@ class Grasping {
     std::vector<Hold> hands;  ///< per robot
     std::vector<Eigen::Isometry3d> resting;
     std::vector<std::optional<LetGo>> letGo;  ///< per object: how it was let go where it rests (none: placed there)
+    std::vector<char> present;                ///< per object: in the cell (setInCell)
     bool operator==(const State& o) const {  // exact: a restored run must be bit for bit the same
-      if (hands != o.hands || resting.size() != o.resting.size() || letGo != o.letGo) return false;
+      if (hands != o.hands || resting.size() != o.resting.size() || letGo != o.letGo || present != o.present)
+        return false;
       for (std::size_t i = 0; i < resting.size(); ++i)
         if (resting[i].matrix() != o.resting[i].matrix()) return false;
       return true;
@@ -201,6 +211,9 @@ class Grasping {
   // settleReach (settle passes over what cannot hold a part up).
   std::vector<double> boxReach_, settleReach_;
   mutable SupportBoxes supportBoxes_;  // settle's boxes of the objects, kept from one let-go to the next
+  std::vector<char> present_;         // per object, as State::present
+  std::vector<std::size_t> inCell_;   // the objects present_, in order
+  void listInCell();
 };
 
 }  // namespace rs::workcell

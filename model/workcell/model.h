@@ -166,6 +166,10 @@ struct PlacedObject {
   /// (runtime/run/robot_obstacles.h): how messages name it, "link 2
   /// (upper_arm) of robot 'right'". Empty for the cell's own objects.
   std::string robotPart = {};
+  /// False for a feeder's slot (runtime/cell/devices.h): out of the cell
+  /// until a part is fed into it, and again once a sink takes that part.
+  /// What is out of the cell is never taken and holds up nothing.
+  bool inCell = true;
 };
 
 struct Workcell {

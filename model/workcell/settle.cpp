@@ -58,7 +58,7 @@ const SupportBoxes::Object& supportBoxes(const PlacedObject& other, std::size_t 
 
 Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, std::size_t part,
                const Eigen::Isometry3d& pose, std::optional<std::size_t> skip, std::span<const double> reach,
-               SupportBoxes* boxes) {
+               SupportBoxes* boxes, const std::vector<std::size_t>* among) {
   SupportBoxes once;
   if (!boxes) boxes = &once;
   Settled s;
@@ -76,7 +76,10 @@ Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, s
     if (t > highest || (top && t <= *top)) return;  // strictly higher wins: the first of equals
     top = t, s.on = on, s.support = o;
   };
-  for (std::size_t o = 0; o < cell.objects.size() && o < poses.size(); ++o) {
+  const std::size_t n = among ? among->size() : cell.objects.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t o = among ? (*among)[i] : i;
+    if (o >= cell.objects.size() || o >= poses.size()) break;
     if (o == part || skip == o) continue;
     if (o < reach.size()) {
       // Every footprint of it lies within its reach of where it stands: a

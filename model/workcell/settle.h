@@ -60,10 +60,13 @@ struct SupportBoxes {
 /// is object `skip`, when given: one the gripper still carries).
 /// `reach`, when given (per object, settleReach), lets it pass over the
 /// objects too far aside to hold it up without looking at their pieces;
-/// `boxes`, when given, keeps their boxes from one call to the next.
+/// `boxes`, when given, keeps their boxes from one call to the next;
+/// `among`, when given, names the objects to look at (in index order: the
+/// ones in the cell, Grasping::inCell), else every one.
 Settled settle(const Workcell& cell, std::span<const Eigen::Isometry3d> poses, std::size_t part,
                const Eigen::Isometry3d& pose, std::optional<std::size_t> skip = std::nullopt,
-               std::span<const double> reach = {}, SupportBoxes* boxes = nullptr);
+               std::span<const double> reach = {}, SupportBoxes* boxes = nullptr,
+               const std::vector<std::size_t>* among = nullptr);
 
 /// How far any point of object `o`'s collision pieces and belt lies from
 /// its design origin: where it rests, nothing of it is farther than this

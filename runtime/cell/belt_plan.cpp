@@ -134,12 +134,8 @@ void CellDevices::plan(vm::Micros now) {
   }
   for (std::size_t c = 0; c < d.conveyors.size(); ++c) *w++ = running(c);
   for (std::size_t f = 0; f < d.feeders.size(); ++f) *w++ = state_.waiting[f];
-  auto found = plans_.find(planKey_);
-  if (found == plans_.end()) {
-    if (plans_.size() >= kPlans) plans_.clear();  // all at once, the same way on every run
-    found = plans_.emplace(planKey_, solvePlan()).first;
-  }
-  const Plan& p = found->second;
+  const Plan* found = plans_.find(planKey_);
+  const Plan& p = found ? *found : plans_.put(planKey_, solvePlan());
   for (std::size_t i = 0; i < parts_.size(); ++i) {
     const std::size_t o = parts_[i];
     state_.velocity[o] = p.parts[i].velocity, state_.travel[o] = p.parts[i].travel;
@@ -149,7 +145,9 @@ void CellDevices::plan(vm::Micros now) {
   // The next time something may change.
   vm::Micros next = INT64_MAX;
   for (std::size_t f = 0; f < d.feeders.size(); ++f) next = std::min(next, state_.nextDue[f]);
-  for (const auto& [tau, after] : p.times) next = std::min(next, after ? afterMicro(now, tau) : startMicro(now, tau));
+  // Both microseconds grow with tau: the least of each kind is the first.
+  if (p.firstStart) next = std::min(next, startMicro(now, *p.firstStart));
+  if (p.firstAfter) next = std::min(next, afterMicro(now, *p.firstAfter));
   // Its wake is tagged with the plan's number (never 0: an untagged wake
   // always acts), so that the next plan makes it stale.
   if (static_cast<std::uint32_t>(++state_.wakeTag) == 0) ++state_.wakeTag;
@@ -233,20 +231,20 @@ CellDevices::Plan CellDevices::solvePlan() {
       const Interval in = s.shape == workcell::Sensor::Shape::Beam ? beamInterval(b, w, T, s.a, s.b)
                                                                   : zoneInterval(b, w, T, s.zone);
       if (in.empty()) continue;
-      if (in.from > 1e-9) plan.times.emplace_back(in.from, false);
-      if (in.to < T - 1e-9) plan.times.emplace_back(in.to, true);
+      if (in.from > 1e-9) plan.at(in.from, false);
+      if (in.to < T - 1e-9) plan.at(in.to, true);
     }
     const Eigen::AlignedBox3d centre(b.center(), b.center());
     for (const workcell::Sink& s : d.sinks) {
       const Interval in = zoneInterval(centre, w, T, s.zone);
-      if (!in.empty()) plan.times.emplace_back(std::max(in.from, 0.0), false);
+      if (!in.empty()) plan.at(std::max(in.from, 0.0), false);
     }
     if (std::isinf(part.travel)) {
       // The centre passes the open end.
       const Eigen::AlignedBox3d& belt = belts_[part.ridden - 1]->belt;
       const Eigen::Vector3d dir = w / speed;
       const double end = dir.dot(belt.center()) + dir.cwiseAbs().dot(belt.sizes() / 2);
-      plan.times.emplace_back(std::max(0.0, (end - dir.dot(b.center())) / speed), false);
+      plan.at(std::max(0.0, (end - dir.dot(b.center())) / speed), false);
     }
     for (std::size_t f = 0; f < d.feeders.size(); ++f) {
       if (!state_.waiting[f]) continue;
@@ -255,7 +253,7 @@ CellDevices::Plan CellDevices::solvePlan() {
       const Eigen::AlignedBox3d spot =
           workcell::boundsOf(fed.shape).translated(feeder.at - workcell::atCorner(fed.shape));
       const Interval in = zoneInterval(b, w, T, spot);
-      if (!in.empty() && in.to < T - 1e-9) plan.times.emplace_back(in.to, true);
+      if (!in.empty() && in.to < T - 1e-9) plan.at(in.to, true);
     }
   }
   return plan;

@@ -48,6 +48,7 @@ std::shared_ptr<const workcell::Workcell> withFeederSlots(std::shared_ptr<const 
     workcell::PlacedObject slot = cell->fedParts[f.part];
     slot.F_world_design = parkedPose();
     slot.kind = workcell::ObjectKind::Part;
+    slot.inCell = false;  // until a part is fed into it
     for (std::size_t i = 0; i < n; ++i) out->objects.push_back(slot);
   }
   return out;
@@ -369,7 +370,7 @@ void CellDevices::feed(std::size_t f, vm::Micros now) {
   state_.waiting[f] = false;
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.translation() = shift;
-  world_.replace(slot, pose);
+  world_.replace(slot, pose, true);
   worldBox(slot);
   state_.number[slot] = state_.nextNumber++;
   parts_.insert(std::lower_bound(parts_.begin(), parts_.end(), slot), slot);
@@ -425,7 +426,7 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
         events_.push_back({DeviceEvent::Kind::Taken, now, s, o, state_.number[o], centre});
         ++state_.taken[s];
         state_.number[o] = 0;
-        world_.replace(o, parkedPose());
+        world_.replace(o, parkedPose(), false);
         state_.velocity[o].setZero(), state_.travel[o] = 0, state_.ridden[o] = 0;
         gone = true;
       }

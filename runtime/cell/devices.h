@@ -22,7 +22,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "base/word_hash.h"
+#include "base/chained_memo.h"
 
 #include "model/workcell/model.h"
 #include "runtime/cell/input_cause.h"
@@ -197,8 +197,8 @@ class CellDevices final : public CellProcess {
   };
   // A plan, solved (solvePlan) for the words plan() keys it by: per part
   // present (parts_ order) how it rides; per conveyor, the parts that
-  // begin to ride it; the times from the plan's instant at which
-  // something may happen (a start, or the first microsecond after an end).
+  // begin to ride it; when, from the plan's instant, something may next
+  // happen (a start, or the first microsecond after an end).
   struct Plan {
     struct Part {
       Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
@@ -207,7 +207,13 @@ class CellDevices final : public CellProcess {
     };
     std::vector<Part> parts;
     std::vector<std::uint64_t> carried;
-    std::vector<std::pair<double, bool>> times;  // (seconds, after)
+    // The first time from the plan's instant at which something begins
+    // (startMicro), and the first at which something ends (afterMicro).
+    std::optional<double> firstStart, firstAfter;
+    void at(double tau, bool after) {
+      std::optional<double>& first = after ? firstAfter : firstStart;
+      if (!first || tau < *first) first = tau;
+    }
   };
   /// Plans kept at most (all forgotten at once when full).
   static constexpr std::size_t kPlans = 4096;
@@ -257,7 +263,7 @@ class CellDevices final : public CellProcess {
   std::vector<std::size_t> parts_;
   std::vector<bool> takenScratch_;  // plan's: a part rides one belt
   std::vector<Rider> riders_;
-  std::unordered_map<std::vector<std::uint64_t>, Plan, base::WordsHash> plans_;
+  base::ChainedMemo<Plan> plans_{kPlans};
   std::vector<std::uint64_t> planKey_;  // plan()'s scratch
   std::vector<std::unique_ptr<Wire>> wires_;
   State state_;

@@ -343,12 +343,11 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
       const Eigen::Matrix<double, 3, 4> offset = world_.heldOffset(robot_).affine();
       std::memcpy(key_.data() + words + 2, offset.data(), sizeof(double) * 12);  // its words, as bits
     }
-    if (const auto it = memory_.find(key_); it != memory_.end()) {
+    if (const Answer* hit = memory_.find(key_)) {
       ++remembered_;
-      const std::optional<vm::Micros> change =
-          it->second.after < 0 ? std::nullopt : std::optional<vm::Micros>(from + it->second.after);
+      const std::optional<vm::Micros> change = hit->after < 0 ? std::nullopt : std::optional<vm::Micros>(from + hit->after);
       // The answer holds as a search's would: a wake later in the move asks last_.
-      keepLast(from, to, change, b.encoders, held, it->second.start);
+      keepLast(from, to, change, b.encoders, held, hit->start);
       return change;
     }
   }
@@ -371,10 +370,7 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
   if (!change) change = search(a, b, start_, at, budget, 2);
   if (budget > 0) {
     keepLast(from, to, change, b.encoders, held, start_);
-    if (keyed) {
-      if (memory_.size() >= kRemembered) memory_.clear();
-      memory_.emplace(key_, Answer{change ? *change - from : -1, start_});
-    }
+    if (keyed) memory_.put(key_, Answer{change ? *change - from : -1, start_});
   } else {
     last_.reset();
   }

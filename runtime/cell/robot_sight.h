@@ -23,7 +23,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "base/word_hash.h"
+#include "base/chained_memo.h"
 #include "model/workcell/collision_model.h"
 #include "model/workcell/model.h"
 #include "runtime/cell/world.h"
@@ -139,7 +139,7 @@ class RobotSight {
     vm::Micros after = -1;
     std::vector<bool> start;  // what sees() answered at the start
   };
-  std::unordered_map<std::vector<std::uint64_t>, Answer, base::WordsHash> memory_;
+  base::ChainedMemo<Answer> memory_{kRemembered};
   // The span the last firstChange() was asked for, when last_ answers for it.
   std::optional<std::pair<vm::Micros, vm::Micros>> asked_;
   std::vector<std::uint64_t> key_;

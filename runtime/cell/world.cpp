@@ -1,5 +1,7 @@
 #include "runtime/cell/world.h"
 
+#include <algorithm>
+
 namespace rs::runtime {
 
 World::World(const workcell::Workcell& cell) : cell_(cell), grasping_(cell) {
@@ -37,7 +39,7 @@ void World::moved(std::span<const std::int32_t> before, std::span<const std::int
     step_[hand].closedEmpty = true;
   }
   if (!change) return;
-  restRevision_[change->object] = ++revision_;
+  noteRest(change->object);
   if (change->held) ++state_.takes;
   const std::size_t o = change->object;
   const workcell::Settled& s = change->settled;
@@ -60,7 +62,7 @@ void World::reset(vm::Micros at, std::size_t hand) {
   for (std::size_t h = 0; h < grasping_.handCount() && !held; ++h)
     if (grasping_.held(h)) held = grasping_.held(h), from = h;
   grasping_.reset();
-  restRevision_.assign(restRevision_.size(), ++revision_);
+  noteEveryRest();
   state_.rests.assign(cell_.objects.size(), std::nullopt);
   if (!held) return;
   state_.last = {at, *held, false, grasping_.restingPose(*held)};
@@ -123,6 +125,32 @@ void World::noteCarried(std::size_t hand) const {
   }
 }
 
+void World::noteRest(std::size_t o) {
+  restRevision_[o] = ++revision_;
+  restLog_.emplace_back(revision_, o);
+  if (restLog_.size() > kRestLog) {
+    const auto half = restLog_.begin() + static_cast<std::ptrdiff_t>(kRestLog / 2);
+    restLogFrom_ = half->first - 1;
+    restLog_.erase(restLog_.begin(), half);
+  }
+}
+
+void World::noteEveryRest() {
+  restRevision_.assign(restRevision_.size(), ++revision_);
+  restLog_.clear();
+  restLogFrom_ = revision_;
+}
+
+bool World::restChangedSince(std::uint64_t since, std::vector<std::size_t>& out) const {
+  out.clear();
+  if (since < restLogFrom_) return false;
+  // The entries after `since`, from the back (they are in revision order).
+  for (auto it = restLog_.rbegin(); it != restLog_.rend() && it->first > since; ++it) out.push_back(it->second);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return true;
+}
+
 World::State World::state() const {
   State s = state_;
   s.grasp = grasping_.state();
@@ -133,7 +161,7 @@ void World::restore(const State& s) {
   state_ = s;
   step_.assign(step_.size(), {});
   grasping_.restore(s.grasp);
-  restRevision_.assign(restRevision_.size(), ++revision_);
+  noteEveryRest();
 }
 
 }  // namespace rs::runtime

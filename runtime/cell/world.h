@@ -102,12 +102,14 @@ class World {
   /// move, put and take parts (runtime/cell/devices.h).
   void place(std::size_t o, const Eigen::Isometry3d& pose) {
     grasping_.setResting(o, pose);
-    restRevision_[o] = ++revision_;
+    noteRest(o);
   }
-  /// Object `o`'s slot holds a new part at `pose` (a feeder fed it) or
-  /// none (a sink took it): no let-go put it there, so it has no restOf.
-  void replace(std::size_t o, const Eigen::Isometry3d& pose) {
+  /// Object `o`'s slot holds a new part at `pose` (a feeder fed it: `inCell`)
+  /// or none (a sink took it: out of the cell, parked at `pose`): no let-go
+  /// put it there, so it has no restOf.
+  void replace(std::size_t o, const Eigen::Isometry3d& pose, bool inCell) {
     place(o, pose);
+    grasping_.setInCell(o, inCell);
     state_.rests[o].reset();
   }
 
@@ -146,6 +148,12 @@ class World {
   /// `since`: false means it is bit for bit what it was then, so a cache
   /// of the resting poses looks only at the objects this names.
   bool restMayDifferSince(std::size_t o, std::uint64_t since) const { return restRevision_[o] > since; }
+  /// The objects restMayDifferSince(o, since) names, in index order, into
+  /// `out` (cleared first), from the world's log of rests it set: a cell's
+  /// belts move a part or two between moves, among many objects. False
+  /// when the log no longer goes back that far (a RESET, a restore, or
+  /// long ago): then ask restMayDifferSince of each object.
+  bool restChangedSince(std::uint64_t since, std::vector<std::size_t>& out) const;
   /// The tool centre point in world coordinates, when the robot has a chain.
   std::optional<std::array<double, 3>> tcp(std::span<const std::int32_t> encoders, std::size_t hand = 0) const;
 
@@ -217,6 +225,13 @@ class World {
   std::vector<StepEffects> step_;  // per hand, since its last takeStepEffects (a restore forgets them)
   std::uint64_t revision_ = 0;
   std::vector<std::uint64_t> restRevision_;  // per object: the revision that last set its resting pose
+  // Every rest set after revision restLogFrom_, as (revision, object):
+  // restChangedSince's. Kept to kRestLog entries (the older half dropped).
+  static constexpr std::size_t kRestLog = 4096;
+  std::vector<std::pair<std::uint64_t, std::size_t>> restLog_;
+  std::uint64_t restLogFrom_ = 0;
+  void noteRest(std::size_t o);
+  void noteEveryRest();
 };
 
 }  // namespace rs::runtime

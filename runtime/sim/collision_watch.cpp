@@ -121,7 +121,13 @@ void CollisionWatch::keyOf(const World& world, std::span<const std::int32_t> bef
     // the same way in every cycle of a loop.
     change_.clear();
     change_.push_back(placesId_);
-    for (std::size_t o = 0; o < resting_.size(); ++o) {
+    // The objects the world set a rest for since (a part or two a belt
+    // moved, among a feeder's many slots), or else every one.
+    const bool logged = world.restChangedSince(*worldRevision_, restChanged_);
+    const std::size_t n = logged ? restChanged_.size() : resting_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t o = logged ? restChanged_[i] : i;
+      if (o >= resting_.size()) break;
       if (!world.restMayDifferSince(o, *worldRevision_)) continue;  // as it was: no look at its pose
       const Eigen::Isometry3d& now = world.restingPose(o);
       if (std::memcmp(now.matrix().data(), resting_[o].matrix().data(), sizeof(double) * 16) == 0) continue;

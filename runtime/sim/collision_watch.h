@@ -176,6 +176,7 @@ class CollisionWatch {
   std::vector<std::uint64_t> reachKey_;    // scratch: its key by what it can reach (reachKeyOf)
   std::unordered_map<std::vector<std::uint64_t>, MoveReach, base::WordsHash> reaches_;  // by moveWords_
   std::vector<std::uint64_t> change_;      // scratch: keyOf's change of places
+  std::vector<std::size_t> restChanged_;   // scratch: keyOf's objects whose rest the world set since
   std::vector<Eigen::Isometry3d> resting_;  // where the objects rested at placesId_ (poses_ is the queries')
   std::vector<std::uint64_t> moveWords_;   // scratch: a move and what it carries
   std::vector<Eigen::AlignedBox3d> boxes_;  // scratch: reachBoxes'

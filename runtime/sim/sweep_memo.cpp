@@ -28,25 +28,17 @@ std::uint64_t SweepMemo::placesId(std::span<const Eigen::Isometry3d> poses) {
 
 // A number is never given to other poses (placesId), so a change
 // remembered stays true after places_ forgets.
-std::optional<std::uint64_t> SweepMemo::changed(const std::vector<std::uint64_t>& change) const {
-  const auto it = changes_.find(change);
-  if (it == changes_.end()) return std::nullopt;
-  return it->second;
+std::optional<std::uint64_t> SweepMemo::changed(const std::vector<std::uint64_t>& change) {
+  const std::uint64_t* places = changes_.find(change);
+  return places ? std::optional<std::uint64_t>(*places) : std::nullopt;
 }
 
 void SweepMemo::rememberChange(const std::vector<std::uint64_t>& change, std::uint64_t places) {
-  if (changes_.size() >= 4 * kPlaces) changes_.clear();
-  changes_.emplace(change, places);
-}
-
-const SweepVerdict* SweepMemo::find(const std::vector<std::uint64_t>& key) const {
-  const auto it = verdicts_.find(key);
-  return it == verdicts_.end() ? nullptr : &it->second;
+  changes_.put(change, places);
 }
 
 void SweepMemo::remember(const std::vector<std::uint64_t>& key, SweepVerdict verdict) {
-  if (verdicts_.size() >= kMoves) verdicts_.clear();
-  verdicts_.insert_or_assign(key, std::move(verdict));
+  verdicts_.put(key, std::move(verdict));
 }
 
 }  // namespace rs::runtime

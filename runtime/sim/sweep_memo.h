@@ -19,6 +19,7 @@
 #include <optional>
 #include <vector>
 
+#include "base/chained_memo.h"
 #include "base/word_hash.h"
 #include "model/workcell/collision_model.h"
 #include "vm/machine.h"
@@ -55,18 +56,19 @@ class SweepMemo {
   /// 16 words. Exact (the set before and the change fix the set after), so
   /// a loop whose belts move its parts the same way each cycle numbers its
   /// places without encoding them whole. Null when not remembered.
-  std::optional<std::uint64_t> changed(const std::vector<std::uint64_t>& change) const;
+  std::optional<std::uint64_t> changed(const std::vector<std::uint64_t>& change);
   void rememberChange(const std::vector<std::uint64_t>& change, std::uint64_t places);
 
   /// The verdict remembered under `key`, or null.
-  const SweepVerdict* find(const std::vector<std::uint64_t>& key) const;
+  const SweepVerdict* find(const std::vector<std::uint64_t>& key) { return verdicts_.find(key); }
   void remember(const std::vector<std::uint64_t>& key, SweepVerdict verdict);
   std::size_t size() const { return verdicts_.size(); }
 
  private:
-  std::unordered_map<std::vector<std::uint64_t>, SweepVerdict, base::WordsHash> verdicts_;
+  // A loop's moves come in the same order every cycle, and so do its changes of places.
+  base::ChainedMemo<SweepVerdict> verdicts_{kMoves};
   std::unordered_map<std::vector<std::uint64_t>, std::uint64_t, base::WordsHash> places_;
-  std::unordered_map<std::vector<std::uint64_t>, std::uint64_t, base::WordsHash> changes_;
+  base::ChainedMemo<std::uint64_t> changes_{4 * kPlaces};
   std::vector<std::uint64_t> placesWords_;  // scratch: encodePlaces'
 
   std::uint64_t nextPlaces_ = 0;

@@ -199,3 +199,48 @@ TEST_CASE("a still of a moment shows the block where the gripper has it then", "
   // Without a cell the moment has no objects.
   CHECK(rs::render::momentOf(*rendertest::runOf(image, nullptr), 10'000'000).objects.empty());
 }
+
+TEST_CASE("what is out of the cell is never taken and holds up nothing let go", "[runtime][grasp]") {
+  // A feeder's empty slot is out of the cell (PlacedObject::inCell); here
+  // block 1 and then pallet 0 stand in for one. Block 1 rests on pallet 0
+  // (its bottom at y 30, the pallet's top); the floor is at y 0.
+  rs::workcell::Workcell cell = rendertest::cell("gantry-cell");
+  REQUIRE(cell.floor);
+  cell.objects[1].inCell = false;
+  rs::workcell::Grasping g(cell);
+  CHECK(g.inCell() == std::vector<std::size_t>{0, 2, 3});
+  const std::vector<std::int32_t> open = {-2800, 2800, 1500, 0}, closed = {-2800, 2800, 1500, 100};
+  CHECK_FALSE(g.step(open, closed));  // at block 1's centre: nothing to take
+  CHECK_FALSE(g.held());
+  g.setInCell(1, true);
+  CHECK(g.inCell() == std::vector<std::size_t>{0, 1, 2, 3});
+  const auto take = g.step(open, closed);
+  REQUIRE(take);
+  CHECK(take->object == 1);
+  CHECK(take->held);
+
+  // Let go where it was taken: on the pallet while the pallet is in the
+  // cell; onto the floor, 30 below, while it is not.
+  const rs::workcell::Grasping::State holding = g.state();
+  const auto onPallet = g.step(closed, open);
+  REQUIRE(onPallet);
+  CHECK(onPallet->settled.on == rs::workcell::Settled::On::Object);
+  CHECK(onPallet->settled.support == 0);
+  CHECK(onPallet->settled.drop == Approx(0).margin(1e-9));
+  g.restore(holding);
+  g.setInCell(0, false);
+  const rs::workcell::Grasping::State palletOut = g.state();
+  const auto onFloor = g.step(closed, open);
+  REQUIRE(onFloor);
+  CHECK(onFloor->settled.on == rs::workcell::Settled::On::Floor);
+  CHECK(onFloor->settled.drop == Approx(30).margin(1e-9));
+
+  // In the cell or not is part of the state: a restore brings it back, RESET
+  // puts every object back as the cell places it.
+  g.setInCell(0, true);
+  g.restore(palletOut);
+  CHECK(g.inCell() == std::vector<std::size_t>{1, 2, 3});
+  CHECK_FALSE(g.state() == holding);
+  g.reset();
+  CHECK(g.inCell() == std::vector<std::size_t>{0, 2, 3});
+}
