@@ -195,22 +195,25 @@ void CollisionData::markOutOfReach(const CollisionQuery& query, SweepMotion& mot
     farthest = std::max(farthest, motion.anyWay(b));
   }
   if (holds) moving.extend(heldRaisedHull_), farthest = std::max(farthest, motion.anyWay(robot.size()));
-  for (std::size_t o = 0; o < objects.size(); ++o) {
+  // Only the objects the query checks (not a feeder's empty slots): the
+  // loops below ask outOfReach_ of those alone.
+  query.anyObject(objects.size(), [&](std::size_t o) {
     outOfReach_[o] = 0;
-    if (moving.isEmpty() || objects[o].pieces.empty()) continue;
+    if (moving.isEmpty() || objects[o].pieces.empty()) return false;
     objectBoxes(o, query.objectPoses[o]);
-    if (objectHull_[o].isEmpty()) continue;
-    // Far above or below what moves (a feeder's parked slots): out of reach
-    // by the height alone, well past rounding (the gap is at least that).
+    if (objectHull_[o].isEmpty()) return false;
+    // Far above or below what moves: out of reach by the height alone,
+    // well past rounding (the gap is at least that).
     const double apart = std::max(objectHull_[o].min().y() - moving.max().y(), moving.min().y() - objectHull_[o].max().y());
     if (apart > farthest * (1 + 1e-9) + 1e-9) {
       outOfReach_[o] = 1;
-      continue;
+      return false;
     }
     Eigen::Vector3d along;
     const double gap = boxGap(moving, objectHull_[o], along);
     outOfReach_[o] = gap > 0 && gap >= farthest;
-  }
+    return false;
+  });
 }
 
 std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std::int32_t> encoders,
@@ -257,10 +260,12 @@ std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std
     const Mover self{b, robotSide(b), motion.anyWay(b)};
     if (body.frame != 0) {
       if (underFloor(self, robotBoxes_[b].data())) return Contact{body.ref, {BodyKind::Floor, 0}};
-      for (std::size_t o = 0; o < objects.size(); ++o) {
-        if (query.held == o || (isFinger(body) && query.exempt == o) || outOfReach_[o]) continue;
-        if (against(self, objectSide(o), 0)) return Contact{body.ref, objects[o].ref};
-      }
+      std::size_t hit = 0;
+      if (query.anyObject(objects.size(), [&](std::size_t o) {
+            if (query.held == o || (isFinger(body) && query.exempt == o) || outOfReach_[o]) return false;
+            return against(self, objectSide(o), 0) && (hit = o, true);
+          }))
+        return Contact{body.ref, objects[hit].ref};
     }
     for (std::size_t c = 0; c < robot.size(); ++c) {
       if (robot[c].frame > body.frame - 2 || robot[c].pieces.empty()) continue;
@@ -274,10 +279,12 @@ std::optional<Contact> CollisionData::findContactOrClearance(std::span<const std
   const Mover self{heldIndex, Side{&held, &heldPose, heldBoxes_.data(), &heldHull_}, motion.anyWay(heldIndex)};
   const Mover raised{heldIndex, Side{&held, &heldRaised, heldRaisedBoxes_.data(), &heldRaisedHull_}, self.anyWay};
   if (underFloor(raised, heldRaisedBoxes_.data())) return Contact{held.ref, {BodyKind::Floor, 0}};
-  for (std::size_t o = 0; o < objects.size(); ++o) {
-    if (o == *query.held || outOfReach_[o]) continue;
-    if (against(raised, objectSide(o), 0)) return Contact{held.ref, objects[o].ref};
-  }
+  std::size_t hit = 0;
+  if (query.anyObject(objects.size(), [&](std::size_t o) {
+        if (o == *query.held || outOfReach_[o]) return false;
+        return against(raised, objectSide(o), 0) && (hit = o, true);
+      }))
+    return Contact{held.ref, objects[hit].ref};
   for (std::size_t c = 0; c < robot.size(); ++c) {
     if (robot[c].frame > last - 2 || robot[c].pieces.empty()) continue;
     if (against(self, robotSide(c), static_cast<std::size_t>(robot[c].frame))) return Contact{held.ref, robot[c].ref};

@@ -371,11 +371,12 @@ void CollisionData::scan(std::span<const std::int32_t> encoders, const Collision
     } else {
       if (floor && belowFloor(body, robotBoxes_[b].data(), *floor))
         if (on({body.ref, {BodyKind::Floor, 0}})) return;
-      for (std::size_t o = 0; o < objects.size(); ++o) {
-        if (query.held == o || (isFinger(body) && query.exempt == o)) continue;
-        if (bodiesOverlap(body, robotPoses_[b], robotBoxes_[b].data(), objects[o], objectPose(o), objectBoxes(o)))
-          if (on({body.ref, objects[o].ref})) return;
-      }
+      if (query.anyObject(objects.size(), [&](std::size_t o) {
+            if (query.held == o || (isFinger(body) && query.exempt == o)) return false;
+            return bodiesOverlap(body, robotPoses_[b], robotBoxes_[b].data(), objects[o], objectPose(o), objectBoxes(o)) &&
+                   on({body.ref, objects[o].ref});
+          }))
+        return;
     }
     if (body.pieces.empty()) continue;
     for (std::size_t c = 0; c < robot.size(); ++c) {
@@ -391,11 +392,12 @@ void CollisionData::scan(std::span<const std::int32_t> encoders, const Collision
   pieceBoxes(held, raised, heldRaisedBoxes_.data());
   if (floor && belowFloor(held, heldRaisedBoxes_.data(), *floor))
     if (on({held.ref, {BodyKind::Floor, 0}})) return;
-  for (std::size_t o = 0; o < objects.size(); ++o) {
-    if (o == *query.held) continue;
-    if (bodiesOverlap(held, raised, heldRaisedBoxes_.data(), objects[o], objectPose(o), objectBoxes(o)))
-      if (on({held.ref, objects[o].ref})) return;
-  }
+  if (query.anyObject(objects.size(), [&](std::size_t o) {
+        return o != *query.held &&
+               bodiesOverlap(held, raised, heldRaisedBoxes_.data(), objects[o], objectPose(o), objectBoxes(o)) &&
+               on({held.ref, objects[o].ref});
+      }))
+    return;
   for (std::size_t c = 0; c < robot.size(); ++c) {
     if (robot[c].frame > last - 2 || robot[c].pieces.empty()) continue;
     if (bodiesOverlap(held, T, heldBoxes_.data(), robot[c], robotPoses_[c], robotBoxes_[c].data()))

@@ -204,6 +204,28 @@ struct CollisionQuery {
   /// they close round during a closing move, or open round during an
   /// opening one (runtime/cell/world.h decides).
   std::optional<std::size_t> exempt;
+  /// The cell's objects that are in it (Grasping::inCell, in index order)
+  /// when not every one is: the first `cellObjects` objects are checked
+  /// only when listed, the rest (another robot's parts) always. A feeder's
+  /// empty slot is out of the cell: nothing collides with it.
+  const std::vector<std::size_t>* inCell = nullptr;
+  std::size_t cellObjects = 0;
+  /// Calls f(o) for each object checked, in index order, of `count`, until
+  /// f returns true; whether it did.
+  template <typename F>
+  bool anyObject(std::size_t count, F&& f) const {
+    std::size_t from = 0;
+    if (inCell) {
+      for (const std::size_t o : *inCell) {
+        if (o >= count || o >= cellObjects) break;
+        if (f(o)) return true;
+      }
+      from = cellObjects;
+    }
+    for (std::size_t o = from; o < count; ++o)
+      if (f(o)) return true;
+    return false;
+  }
 };
 
 /// A gap between a moving part and what it is checked against, which

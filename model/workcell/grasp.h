@@ -76,8 +76,11 @@ class Grasping {
   const std::vector<std::size_t>& inCell() const { return inCell_; }
 
   std::size_t handCount() const { return hands_.size(); }
-  std::optional<std::size_t> held(std::size_t hand = 0) const {
-    return hand < hands_.size() ? hands_[hand].hold.held : std::nullopt;
+  /// What hand `hand` holds. By reference: a copy made here went through
+  /// the stack in parts and stalled every move's and wake's read of it.
+  const std::optional<std::size_t>& held(std::size_t hand = 0) const {
+    static const std::optional<std::size_t> kNothing;
+    return hand < hands_.size() ? hands_[hand].hold.held : kNothing;
   }
   /// The hand that holds object `o`, if any (the first, while two do).
   std::optional<std::size_t> holder(std::size_t o) const {  // inline: the devices ask per part per wake

@@ -339,10 +339,7 @@ std::optional<vm::Micros> RobotSight::firstChange(vm::Micros from, vm::Micros to
     key_.resize(words + 2 + (held ? 12 : 0));
     key_[words] = static_cast<std::uint64_t>(to - from);
     key_[words + 1] = held ? *held + 1 : 0;
-    if (held) {
-      const Eigen::Matrix<double, 3, 4> offset = world_.heldOffset(robot_).affine();
-      std::memcpy(key_.data() + words + 2, offset.data(), sizeof(double) * 12);  // its words, as bits
-    }
+    if (held) world_.writeHeldOffset(robot_, key_.data() + words + 2);
     if (const Answer* hit = memory_.find(key_)) {
       ++remembered_;
       const std::optional<vm::Micros> change = hit->after < 0 ? std::nullopt : std::optional<vm::Micros>(from + hit->after);

@@ -87,7 +87,7 @@ class RobotSight {
   /// devices ask at every wake and move (out of line, its optionals went
   /// through the stack and stalled).
   std::optional<std::size_t> carriedPart() const {
-    const std::optional<std::size_t> held = world_.held(robot_);
+    const std::optional<std::size_t>& held = world_.held(robot_);
     if (!held || world_.shared(*held)) return std::nullopt;
     return held;
   }

@@ -99,6 +99,7 @@ workcell::CollisionQuery World::collisionQuery(std::span<const std::int32_t> bef
   q.held = grasping_.held(hand);
   if (hand < grasping_.handCount()) q.heldOffset = grasping_.heldOffset(hand);
   q.objectPoses = poses;
+  q.inCell = &grasping_.inCell(), q.cellObjects = cell_.objects.size();
   if (!grasping_.hasGripper(hand)) return q;
   if (q.held && grasping_.shared(*q.held)) {
     // Two hands hold it: it stays put, with these fingers round it.

@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <span>
 #include <utility>
@@ -119,7 +120,7 @@ class World {
   const GraspEvent& lastEvent() const { return state_.last; }
 
   const workcell::Workcell& cell() const { return cell_; }
-  std::optional<std::size_t> held(std::size_t hand = 0) const { return grasping_.held(hand); }
+  const std::optional<std::size_t>& held(std::size_t hand = 0) const { return grasping_.held(hand); }
   /// The hand that holds object `o`, if any (the first, while two do).
   std::optional<std::size_t> holder(std::size_t o) const { return grasping_.holder(o); }
   /// Whether two hands hold object `o`: a hand-over under way, it stays put.
@@ -139,6 +140,13 @@ class World {
   const Eigen::Isometry3d& restingPose(std::size_t o) const { return grasping_.restingPose(o); }
   /// F_E_object of the held object (meaningful while one is held).
   const Eigen::Isometry3d& heldOffset(std::size_t hand = 0) const { return grasping_.heldOffset(hand); }
+  /// Writes heldOffset's affine part, 3 x 4 by columns, as its 12 words'
+  /// bits (what a memory's key holds of how a part is held), straight from
+  /// the transform: a copied matrix went through the stack and stalled.
+  void writeHeldOffset(std::size_t hand, std::uint64_t* out) const {
+    const double* m = heldOffset(hand).matrix().data();  // 4 x 4, by columns
+    for (int c = 0; c < 4; ++c) std::memcpy(out + 3 * c, m + 4 * c, sizeof(double) * 3);
+  }
   /// Changes whenever what is held or where an object rests may have
   /// changed (a take, a let-go, RESET, restore): a cache of anything that
   /// depends on them is still good while this stays the same. Not part of

@@ -148,7 +148,7 @@ void CollisionWatch::keyOf(const World& world, std::span<const std::int32_t> bef
     worldRevision_ = world.revision();
   }
   // Written in place: every move asks.
-  const std::optional<std::size_t> held = world.held(hand_);
+  const std::optional<std::size_t>& held = world.held(hand_);
   const std::size_t pairs = std::min(before.size(), after.size()),
                     linePairs = lineFrom.empty() || lineTo.empty() ? 0 : std::min(lineFrom.size(), lineTo.size());
   key_.resize(2 + (held ? 12 : 0) + pairs + linePairs);
@@ -156,8 +156,7 @@ void CollisionWatch::keyOf(const World& world, std::span<const std::int32_t> bef
   *w++ = placesId_;
   *w++ = held ? *held + 1 : 0;
   if (held) {
-    const Eigen::Matrix<double, 3, 4> offset = world.heldOffset(hand_).affine();
-    std::memcpy(w, offset.data(), sizeof(double) * 12);  // its words, as bits
+    world.writeHeldOffset(hand_, w);
     w += 12;
   }
   writePairs(w, before.first(pairs), after.first(pairs));
@@ -342,16 +341,18 @@ void CollisionWatch::reachKeyOf(const SimMachine& machine, const workcell::Colli
     found = reaches_.emplace(moveWords_, moveReach(machine, query, before, after, start, end)).first;
   }
   const MoveReach& r = found->second;
+  // What the query does not check (a feeder's empty slots) stays out of reach.
   outOfReach_.assign(query.objectPoses.size(), 1);
-  for (std::size_t o = 0; o < query.objectPoses.size(); ++o) {
+  query.anyObject(query.objectPoses.size(), [&](std::size_t o) {
     const Eigen::AlignedBox3d& hull = data_.objectHull(o, query.objectPoses[o]);
-    if (workcell::CollisionData::outOfReach(r.all, r.allReach, hull)) continue;
+    if (workcell::CollisionData::outOfReach(r.all, r.allReach, hull)) return false;
     for (std::size_t s = 0; s < r.stretchAll.size() && outOfReach_[o]; ++s) {
       if (workcell::CollisionData::outOfReach(r.stretchAll[s], r.stretchReach[s], hull)) continue;
       for (std::size_t p = s * r.parts; p < (s + 1) * r.parts && outOfReach_[o]; ++p)
         outOfReach_[o] = workcell::CollisionData::outOfReach(r.boxes[p], r.reaches[p], hull);
     }
-  }
+    return false;
+  });
   constexpr std::size_t kPoseWords = 12;  // the affine part (the last row is fixed)
   const auto words = [](const Eigen::Isometry3d& pose, std::uint64_t* out) {
     for (std::size_t i = 0; i < kPoseWords; ++i) out[i] = std::bit_cast<std::uint64_t>(pose.matrix().data()[i]);
