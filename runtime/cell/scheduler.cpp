@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "base/seconds.h"
 
@@ -10,6 +11,7 @@ namespace rs::runtime {
 
 std::uint32_t Scheduler::add(CellProcess& process) {
   processes_.push_back(&process);
+  wokenNow_.push_back(0);
   return static_cast<std::uint32_t>(processes_.size() - 1);
 }
 
@@ -61,13 +63,20 @@ vm::Status Scheduler::runInstant(vm::Micros at) {
     }
     woken.clear();
     const std::uint64_t deltaEnd = state_.nextSeq;
+    toUpdate_.clear();
     while (due() && state_.queue.begin()->seq < deltaEnd) {
       const CellEvent e = *state_.queue.begin();
       state_.queue.erase(state_.queue.begin());
       if (woken.size() < 64) woken.push_back(e.process);
+      if (!std::exchange(wokenNow_[e.process], 1)) toUpdate_.push_back(e.process);
       processes_[e.process]->wake(e, *this);
     }
-    for (CellProcess* p : processes_) p->update(*this);
+    // The processes woken, in the model's order.
+    std::sort(toUpdate_.begin(), toUpdate_.end());
+    for (const std::uint32_t p : toUpdate_) {
+      wokenNow_[p] = 0;
+      processes_[p]->update(*this);
+    }
   }
 }
 

@@ -6,8 +6,9 @@
 // on every machine. Events due at one instant run in delta cycles, as
 // SystemC's and VHDL's kernels do: the evaluate phase wakes every process
 // whose event is due (in sequence order), then the update phase lets each
-// process commit what it wrote; what the update scheduled at the same
-// instant runs in the next delta. A process that reads during evaluation
+// process woken commit what it wrote (in the model's order; one not woken
+// wrote nothing, as SystemC updates only the channels that asked); what
+// the update scheduled at the same instant runs in the next delta. A process that reads during evaluation
 // sees only what earlier deltas committed, so the order processes are
 // visited in one delta does not change what any of them reads.
 //
@@ -47,8 +48,9 @@ class CellProcess {
   virtual ~CellProcess() = default;
   /// Evaluate: the event is due. Reads see what earlier deltas committed.
   virtual void wake(const CellEvent& event, Scheduler& clock) = 0;
-  /// Update: commit what wake wrote (a signal's new value) and schedule
-  /// whoever it concerns; true when something changed.
+  /// Update, after a delta in which it was woken: commit what wake wrote
+  /// (a signal's new value) and schedule whoever it concerns; true when
+  /// something changed.
   virtual bool update(Scheduler& /*clock*/) { return false; }
   /// How an error names it ("wire eye TO IN 1").
   virtual std::string name() const = 0;
@@ -106,6 +108,8 @@ class Scheduler {
  private:
   vm::Status runInstant(vm::Micros at);
   std::vector<std::uint32_t> woken_;  // runInstant's: the processes woken in the latest delta
+  std::vector<std::uint32_t> toUpdate_;  // runInstant's: those to update after it, once each
+  std::vector<char> wokenNow_;           // per process: in toUpdate_
 
   std::vector<CellProcess*> processes_;
   State state_;

@@ -63,3 +63,22 @@ TEST_CASE("a chained memory's put replaces, and a full one forgets everything at
   CHECK(memo.size() == 0);
   CHECK_FALSE(memo.find({4}));
 }
+
+TEST_CASE("a chained memory answers a loop that goes one of two or three ways after the same entry", "[memo][base]") {
+  rs::base::ChainedMemo<int> memo(16);
+  memo.put({1}, 1);
+  memo.put({2}, 2);
+  memo.put({3}, 3);
+  memo.put({4}, 4);
+  // After {1}: {2}, then {3}, then {4}, round and round (more ways than an entry keeps followers for).
+  for (int round = 0; round < 6; ++round)
+    for (const std::uint64_t next : {2u, 3u, 4u, 3u}) {
+      const int* one = memo.find({1});
+      REQUIRE(one);
+      CHECK(*one == 1);
+      const int* v = memo.find({next});
+      REQUIRE(v);
+      CHECK(*v == static_cast<int>(next));
+    }
+  CHECK_FALSE(memo.find({5}));
+}

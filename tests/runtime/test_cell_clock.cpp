@@ -248,3 +248,28 @@ TEST_CASE("the cell's clock: a cancelled event does not happen, and cancelling o
   REQUIRE(clock.advanceTo(300));
   CHECK(log == std::vector<std::string>{"a@100/2", "a@200/3"});
 }
+
+namespace cellclocktest {
+// Counts its wakes and updates.
+struct Counter final : CellProcess {
+  int wakes = 0, updates = 0;
+  void wake(const CellEvent&, Scheduler&) override { ++wakes; }
+  bool update(Scheduler&) override { return ++updates, false; }
+  std::string name() const override { return "counter"; }
+};
+}  // namespace cellclocktest
+
+TEST_CASE("the cell's clock updates the processes a delta woke, once each, and no other", "[cell]") {
+  Counter a, b;
+  Scheduler clock;
+  const std::uint32_t ia = clock.add(a);
+  clock.add(b);
+  REQUIRE(clock.schedule(100, ia));
+  REQUIRE(clock.schedule(100, ia));  // woken twice in the delta: updated once
+  REQUIRE(clock.schedule(200, ia));
+  REQUIRE(clock.advanceTo(1000));
+  CHECK(a.wakes == 3);
+  CHECK(a.updates == 2);  // once at 100, once at 200
+  CHECK(b.wakes == 0);
+  CHECK(b.updates == 0);  // never woken: nothing of its to commit
+}
