@@ -92,9 +92,14 @@ std::optional<std::array<double, 3>> World::tcp(std::span<const std::int32_t> en
 workcell::CollisionQuery World::collisionQuery(std::span<const std::int32_t> before, std::span<const std::int32_t> after,
                                               std::span<Eigen::Isometry3d> poses, std::size_t hand) const {
   workcell::CollisionQuery q;
-  for (std::size_t o = 0; o < poses.size(); ++o) {
-    const std::optional<std::size_t> by = grasping_.holder(o);
-    poses[o] = by && *by != hand ? objectPose(o, {}, INT64_MAX, hand) : grasping_.restingPose(o);
+  // Where each rests, but a part another hand holds (its first holder not
+  // this one): where that hand carries it. By hand, not by object: a cell
+  // has a hand or two and many objects.
+  for (std::size_t o = 0; o < poses.size(); ++o) poses[o] = grasping_.restingPose(o);
+  for (std::size_t h = 0; h < grasping_.handCount(); ++h) {
+    const std::optional<std::size_t>& o = grasping_.held(h);
+    if (h == hand || !o || *o >= poses.size() || grasping_.holder(*o) == hand) continue;
+    poses[*o] = objectPose(*o, {}, INT64_MAX, hand);
   }
   q.held = grasping_.held(hand);
   if (hand < grasping_.handCount()) q.heldOffset = grasping_.heldOffset(hand);
