@@ -74,6 +74,7 @@ class Grasping {
   /// The objects in the cell, by index: what a grasp or a let-go looks
   /// at (a feeder's 64 slots are out of it while empty).
   const std::vector<std::size_t>& inCell() const { return inCell_; }
+  bool isInCell(std::size_t o) const { return o < present_.size() && present_[o] != 0; }
 
   std::size_t handCount() const { return hands_.size(); }
   /// What hand `hand` holds. By reference: a copy made here went through

@@ -391,6 +391,18 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   if (event.tag == 0 && state_.lookAt == now) state_.lookAt = -1;
   if (event.tag != 0) state_.planWakeAt = -1;  // the plan's wake, now
   const workcell::Devices& d = cell_.devices;
+  // A RESET put every object back where the workcell placed it: a fed
+  // part has no place there, so it left the cell with its slot.
+  for (std::size_t i = 0; i < parts_.size();) {
+    const std::size_t o = parts_[i];
+    if (o < firstSlot_ || world_.inCell(o)) {
+      ++i;
+      continue;
+    }
+    state_.number[o] = 0;
+    state_.velocity[o].setZero(), state_.travel[o] = 0, state_.ridden[o] = 0;
+    parts_.erase(parts_.begin() + static_cast<std::ptrdiff_t>(i));
+  }
   moveTo(now);
   for (const std::size_t o : parts_) worldBox(o);  // partBox() holds from here on, kept so as the devices move parts
   // Parts past an open end fall onto what is below them.

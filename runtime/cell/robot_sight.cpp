@@ -307,7 +307,7 @@ bool RobotSight::remembers(const Last& last, vm::Micros from, vm::Micros to, con
 void RobotSight::keepLast(vm::Micros from, vm::Micros to, std::optional<vm::Micros> change,
                           const std::vector<std::int32_t>& end, std::optional<std::size_t> held,
                           const std::vector<bool>& start) {
-  if (!last_) last_.emplace();
+  if (!last_) last_ = Last{};
   Last& l = *last_;
   l.from = from, l.to = to, l.change = change, l.carried = held;
   l.end.assign(end.begin(), end.end());

@@ -123,7 +123,7 @@ class RobotSight {
     std::optional<vm::Micros> change;
     std::vector<std::int32_t> end;  // the motors at `to`
     std::optional<std::size_t> carried;
-    Eigen::Matrix<double, 3, 4> offset;
+    Eigen::Matrix<double, 3, 4> offset = Eigen::Matrix<double, 3, 4>::Zero();
     std::vector<bool> start;  // what sees() answered at `from`
   };
   bool remembers(const Last& last, vm::Micros from, vm::Micros to, const Probe& end,

@@ -123,6 +123,8 @@ class World {
   const std::optional<std::size_t>& held(std::size_t hand = 0) const { return grasping_.held(hand); }
   /// The hand that holds object `o`, if any (the first, while two do).
   std::optional<std::size_t> holder(std::size_t o) const { return grasping_.holder(o); }
+  /// Whether object `o` is in the cell (a feeder's slot is not while empty; RESET empties every slot).
+  bool inCell(std::size_t o) const { return grasping_.isInCell(o); }
   /// Whether two hands hold object `o`: a hand-over under way, it stays put.
   bool shared(std::size_t o) const { return grasping_.shared(o); }
   /// When the object hand `hand` holds now was taken (the end of its closing move).

@@ -155,7 +155,7 @@ std::vector<ObjectView> Rig::objects(vm::Micros at) const {
     v.held = world_->held(robotIndex_) == o && at >= world_->heldSince(robotIndex_);
     v.moved = (v.pose.matrix() - placed.F_world_design.matrix()).cwiseAbs().maxCoeff() > 1e-9;
     v.number = objectNumber(o);
-    v.present = v.number != 0;
+    v.present = v.number != 0 && world_->inCell(o);  // a RESET empties a slot before the devices next look
     out.push_back(v);
   }
   return out;

@@ -6,6 +6,7 @@
 // same instant.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -210,4 +211,32 @@ TEST_CASE("a program that answers its own inputs through wires at one instant st
   REQUIRE(plain->outcome());
   CHECK(plain->outcome()->reason == rs::vm::StopReason::InstantLimit);
   CHECK(plain->outcome()->message.find("wires") == std::string::npos);
+}
+
+TEST_CASE("RESET takes the parts a feeder put out of the cell, and the feeder goes on", "[cell][devices]") {
+  // Parts every 2 s onto a running belt: objects 3 (at 0 s) and 4 (at 2 s)
+  // are in the cell when RESET at 3 s puts everything back where the
+  // workcell placed it, which places no fed part; the part fed at 4 s is
+  // the next number, 5.
+  const auto cell = cellOf(
+      "  CONVEYOR line SPEED 100 RUN ON\n"
+      "  FEEDER f blk AT 100 10 30 EVERY 2\n");
+  const auto r = runOn(cell, "        DELAY 3\n        RESET\n        DELAY 2.5\n        END\n");
+  REQUIRE(r.run->outcome());
+  REQUIRE(r.run->outcome()->ok());
+  CHECK(r.run->rig().devices()->fed(0) == 3);
+  std::vector<std::uint32_t> present;
+  for (const rs::runtime::ObjectView& v : r.run->rig().objects())
+    if (v.present) {
+      present.push_back(v.number);
+      CHECK(v.pose.translation().y() > -1000);  // nothing parked is shown
+    }
+  CHECK(present == std::vector<std::uint32_t>{1, 2, 5});
+  // The devices hold the same: the slots of 3 and 4 are free again.
+  std::vector<std::uint32_t> numbered;
+  for (std::size_t o = 0; o < r.run->rig().objects().size(); ++o)
+    if (const std::uint32_t n = r.run->rig().devices()->number(o)) numbered.push_back(n);
+  std::sort(numbered.begin(), numbered.end());
+  CHECK(numbered == std::vector<std::uint32_t>{1, 2, 5});
+  CHECK(r.trace.find("     4.000  feeder f: blk (object 5) at (100, 10, 30)\n") != std::string::npos);
 }
