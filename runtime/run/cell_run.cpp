@@ -180,6 +180,9 @@ vm::RunOutcome CellRun::runUntil(const CellUntil& until) {
       }
       turn_ = 0;
       if (std::none_of(ends_.begin(), ends_.end(), [](RobotEnd e) { return e == RobotEnd::Running; })) {
+        // The last END right after a take, a let-go or a RESET: the cell
+        // acts on it at this instant, before the summary (Run::runUntil).
+        if (vm::Status s = advanceCell(clock()); !s) return over(cellStops(vm::StopReason::RuntimeError, s.message));
         vm::RunOutcome last;
         last.reason = vm::StopReason::End;
         last.steps = endedSteps_;

@@ -108,6 +108,7 @@ void Rig::wakeRobotAt(vm::Micros at) {
 }
 
 void Rig::afterStep(std::uint32_t instruction) {
+  afterLastStep_ = false;
   lastStepInputs_.swap(pendingInputs_);
   pendingInputs_.clear();
   if (devices_) lastStepDevices_ = devices_->takeEvents(), lastStepMotions_ = devices_->takeMotions();

@@ -168,8 +168,14 @@ class Rig {
   /// What the devices did since the last step ended, as the step's (a run
   /// that stopped inside a step: afterStep never came).
   void takeDeviceRecords() {
+    lastStepInputs_.swap(pendingInputs_);
+    pendingInputs_.clear();
     if (devices_) lastStepDevices_ = devices_->takeEvents(), lastStepMotions_ = devices_->takeMotions();
+    afterLastStep_ = true;
   }
+  /// The records of the last step are those taken after it (takeDeviceRecords):
+  /// a trace shows them at its end.
+  bool recordsAfterLastStep() const { return afterLastStep_; }
 
   /// A program's next step runs instruction `instruction`: the collisions
   /// its moves find are that instruction's.
@@ -264,6 +270,7 @@ class Rig {
   std::unique_ptr<RobotObstacles> obstacles_;  // before watch_ is rebuilt on its view
   vm::Machine* front_ = nullptr;  // what is driven
   std::vector<InputChangeRecord> pendingInputs_, lastStepInputs_;
+  bool afterLastStep_ = false;  // takeDeviceRecords came after the last step
   bool lastStepGrasped_ = false;
   bool lastStepClosedEmpty_ = false;
   std::optional<std::pair<std::uint32_t, EmptyClose>> firstEmptyClose_;

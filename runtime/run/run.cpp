@@ -190,10 +190,22 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
     }
   }
   observers_->when = nullptr;
+  // END right after a take, a let-go or a RESET: the devices' look at that
+  // instant comes before the summary, which shows the cell as the instant ends.
+  // A fault of theirs then (a feeder with no slot left) is the run's.
+  if (finished() && outcome.ok() && !inCellRun_)
+    if (vm::Status s = rig_->advanceCell(rig_->running().clock().now()); !s) {
+      vm::InterpreterState failed = interpreter_->state();
+      failed.outcome.reason = vm::StopReason::RuntimeError, failed.outcome.message = s.message;
+      interpreter_->restore(failed);
+      outcome = failed.outcome;
+    }
+  // A step cut short (the time limit in a WAITFOR the devices end, a
+  // fault), or the instant of the last: what the devices did since is the
+  // log's last step's, and the trace's last lines (a cell run's robots
+  // share the devices: theirs go to whoever steps next).
+  if (finished() && (logger_ || !inCellRun_)) rig_->takeDeviceRecords();
   if (logger_ && finished()) {
-    // A step cut short (the time limit in a WAITFOR the devices end, a
-    // fault) is the log's last: what the devices did during it is its.
-    rig_->takeDeviceRecords();
     const auto step = static_cast<std::uint32_t>(logger_->log().steps.size());
     for (const DeviceEvent& e : rig_->devicesOfLastStep()) logger_->deviceEvent(step, e);
     for (const PartMotion& m : rig_->motionsOfLastStep()) logger_->partMotion(step, m);

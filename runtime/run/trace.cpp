@@ -79,7 +79,11 @@ bool TraceWriter::afterStep(const vm::Interpreter& vm, std::uint32_t index) {
   return false;
 }
 
-void TraceWriter::finish() { collisionEvents(); }
+void TraceWriter::finish() {
+  // What the cell did after the last step (at END's instant, or in a step cut short).
+  if (run_.rig().recordsAfterLastStep()) inputEvents();
+  collisionEvents();
+}
 
 // One line per input change during the step (or since the last step), at
 // its time and with its cause, before the step's own line.

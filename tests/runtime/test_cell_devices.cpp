@@ -53,6 +53,7 @@ Ran runOn(const rs::workcell::Workcell& cell, const std::string& program) {
   rs::runtime::TraceWriter trace(out, rs::runtime::TraceFormat::Text, *r.run);
   r.run->observe(trace);
   r.run->runToEnd();
+  trace.finish();  // as `run --trace` ends it
   r.trace = out.str();
   return r;
 }
@@ -239,4 +240,22 @@ TEST_CASE("RESET takes the parts a feeder put out of the cell, and the feeder go
   std::sort(numbered.begin(), numbered.end());
   CHECK(numbered == std::vector<std::uint32_t>{1, 2, 5});
   CHECK(r.trace.find("     4.000  feeder f: blk (object 5) at (100, 10, 30)\n") != std::string::npos);
+}
+
+TEST_CASE("END right after RESET: the summary shows the cell after the devices' look at that instant",
+          "[cell][devices]") {
+  // The part fed at 0 s into the zone is the only thing the zone sees;
+  // RESET at 1 s takes it out of the cell, and END at that same
+  // microsecond must not end the run before the sensor sees it gone.
+  const auto cell = cellOf(
+      "  FEEDER f blk AT 100 10 30 EVERY 5 COUNT 1\n"
+      "  SENSOR z ZONE 95 115 25 5 15 35\n");
+  const auto r = runOn(cell, "        DELAY 1\n        RESET\n        END\n");
+  REQUIRE(r.run->outcome());
+  REQUIRE(r.run->outcome()->ok());
+  INFO(r.trace);
+  CHECK(r.trace.find("     0.000  sensor z ON\n") != std::string::npos);
+  CHECK(r.trace.find("     1.000  sensor z OFF\n") != std::string::npos);
+  CHECK_FALSE(r.run->rig().devices()->sensorOn(0));
+  CHECK(r.run->rig().devices()->sensorCount(0) == 1);
 }
