@@ -29,9 +29,15 @@ class ToolTracker {
   kinematics::ChainModel chain_;  // placed in the world
   kinematics::ChainData data_;
   std::vector<double> encoders_, q_;
-  std::vector<double> lastEncoders_;  // the last frame worked out, and for what
-  Eigen::Isometry3d last_ = Eigen::Isometry3d::Identity();
-  bool known_ = false;
+  // The last few frames worked out, and for what: a loop takes and lets go
+  // at the same few poses, so the kinematics runs once for each.
+  struct Known {
+    std::vector<double> encoders;
+    Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
+  };
+  static constexpr std::size_t kKept = 4;
+  std::array<Known, kKept> known_;
+  std::size_t knownCount_ = 0, nextSlot_ = 0;
 };
 
 }  // namespace rs::workcell

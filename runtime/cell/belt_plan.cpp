@@ -148,6 +148,9 @@ void CellDevices::plan(vm::Micros now) {
   // Both microseconds grow with tau: the least of each kind is the first.
   if (p.firstStart) next = std::min(next, startMicro(now, *p.firstStart));
   if (p.firstAfter) next = std::min(next, afterMicro(now, *p.firstAfter));
+  // The same time as the wake of the plan before: that wake stays, tag and
+  // all (a wake acts on the plan of its instant, whichever scheduled it).
+  if (next != INT64_MAX && next == state_.planWakeAt) return;
   // Its wake is tagged with the plan's number (never 0: an untagged wake
   // always acts), so that the next plan makes it stale.
   if (static_cast<std::uint32_t>(++state_.wakeTag) == 0) ++state_.wakeTag;

@@ -185,7 +185,12 @@ TEST_CASE("cell wiring: --trace and the summary show the tool centre point", "[m
     REQUIRE(c);
     REQUIRE(c->robots.size() == 1);
     rs::workcell::ToolTracker tool(c->robots[0]);
-    for (const auto& [s, t] : std::vector<std::pair<int, int>>{{0, 0}, {60, 120}, {180, -360}, {-400, 720}, {37, -11}}) {
+    // Five poses, then back and forth among them: the tracker keeps the
+    // last four frames, and a kept one must be the right one.
+    const std::vector<std::pair<int, int>> poses{{0, 0}, {60, 120}, {180, -360}, {-400, 720}, {37, -11}};
+    std::vector<std::pair<int, int>> asked = poses;
+    for (const std::size_t i : {4, 3, 4, 0, 1, 4, 2, 2, 0, 3}) asked.push_back(poses[i]);
+    for (const auto& [s, t] : asked) {
       const std::vector<std::int32_t> enc{s, t};
       const double t1 = 0.5 * s * M_PI / 180, t2 = 0.25 * t * M_PI / 180;
       const auto p = tool.tcp(enc);
