@@ -175,6 +175,7 @@ vm::RunOutcome CellRun::runUntil(const CellUntil& until) {
         if (o.paused()) return paused;  // its turn goes on at the next call
         ends_[p] = RobotEnd::Finished;
         endAt_[p] = clock();
+        lastEnded_ = p;
         endedSteps_ += o.steps;
         if (!o.ok()) return over(stopAll(p, o));
       }
@@ -183,6 +184,7 @@ vm::RunOutcome CellRun::runUntil(const CellUntil& until) {
         // The last END right after a take, a let-go or a RESET: the cell
         // acts on it at this instant, before the summary (Run::runUntil).
         if (vm::Status s = advanceCell(clock()); !s) return over(cellStops(vm::StopReason::RuntimeError, s.message));
+        runs_[lastEnded_]->takeRecordsAfterEnd();
         vm::RunOutcome last;
         last.reason = vm::StopReason::End;
         last.steps = endedSteps_;

@@ -138,6 +138,7 @@ class CellRun {
   std::unique_ptr<CellDevices> devices_;
   std::vector<RobotEnd> ends_;
   std::vector<vm::Micros> endAt_;  // per program: when it ended (meaningful once it has)
+  std::size_t lastEnded_ = 0;       // the program that ended last: the last instant's records are its
   std::vector<vm::Micros> wakeAt_;  // per program: its wait under way ends here (kNever: an input)
   std::optional<std::size_t> failed_;
   vm::RunLimits limits_;

@@ -203,15 +203,19 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
   // A step cut short (the time limit in a WAITFOR the devices end, a
   // fault), or the instant of the last: what the devices did since is the
   // log's last step's, and the trace's last lines (a cell run's robots
-  // share the devices: theirs go to whoever steps next).
-  if (finished() && (logger_ || !inCellRun_)) rig_->takeDeviceRecords();
-  if (logger_ && finished()) {
-    const auto step = static_cast<std::uint32_t>(logger_->log().steps.size());
-    for (const DeviceEvent& e : rig_->devicesOfLastStep()) logger_->deviceEvent(step, e);
-    for (const PartMotion& m : rig_->motionsOfLastStep()) logger_->partMotion(step, m);
-  }
+  // share the devices: theirs go to whoever steps next, the last instant's
+  // to the robot that ended last, CellRun::runUntil).
+  if (finished() && (logger_ || !inCellRun_)) takeRecordsAfterEnd();
   if (logger_) logger_->finish(outcome);
   return outcome;
+}
+
+void Run::takeRecordsAfterEnd() {
+  rig_->takeDeviceRecords();
+  if (!logger_) return;
+  const auto step = static_cast<std::uint32_t>(logger_->log().steps.size());
+  for (const DeviceEvent& e : rig_->devicesOfLastStep()) logger_->deviceEvent(step, e);
+  for (const PartMotion& m : rig_->motionsOfLastStep()) logger_->partMotion(step, m);
 }
 
 void Run::waitOnCell(const vm::RunOutcome& waiting) {

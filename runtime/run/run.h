@@ -149,6 +149,9 @@ class Run {
   /// How the run finished (empty while it can go on).
   std::optional<vm::RunOutcome> outcome() const;
   bool finished() const { return interpreter_->finished(); }
+  /// What the devices did after the last step (at END's instant, in a step
+  /// cut short): the log's last step's, and what a trace's finish() shows.
+  void takeRecordsAfterEnd();
 
   /// The run at its current moment, to look at.
   RunView view() const;

@@ -485,3 +485,27 @@ TEST_CASE("cell run: two robots whose arms cross within one move each collide, a
   INFO(miss.err);
   CHECK(miss.code == 0);
 }
+
+TEST_CASE("cell run: the last END right after RESET: the devices' look at that instant is in the trace and the summary",
+          "[cell-run][robots][devices]") {
+  // The part fed at 0 s into the zone; robot a's RESET at 1 s takes it out
+  // of the cell and a's END, at the same microsecond, ends the cell (b
+  // ended at 0.5 s). The sensor sees it gone at 1 s, and the line is a's.
+  rs::testing::TempDir dir;
+  dir.write("two.rsd",
+            "OBJECT blk\n  PART\n  BOX 0 10 10 0 10 0\nEND\n"
+            "WORKCELL two\n"
+            "  ROBOT rhino-xr4 AT 0 750 0 AS a PROGRAM a.rsp\n"
+            "  ROBOT rhino-xr4 AT 3000 750 0 AS b PROGRAM b.rsp\n"
+            "  FEEDER f blk AT 1500 10 30 EVERY 5 COUNT 1\n"
+            "  SENSOR z ZONE 1495 1515 25 5 15 35\n"
+            "END\n");
+  dir.write("a.rsp", "        DELAY 1\n        RESET\n        END\n");
+  dir.write("b.rsp", "        DELAY 0.5\n        END\n");
+  const auto r = rs::testing::runCli({"run", "--cell", dir.file("two.rsd"), "--trace"});
+  INFO(r.out << r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("b:      0.000  sensor z ON\n") != std::string::npos);
+  CHECK(r.out.find("a:      1.000  sensor z OFF\n") != std::string::npos);
+  CHECK(r.out.find("  sensor z        OFF, turned ON 1 time\n") != std::string::npos);
+}
