@@ -115,6 +115,12 @@ class Interpreter {
   /// Puts back a state saved from this interpreter (the machine's state is
   /// the caller's to put back).
   void restore(const InterpreterState& state) { state_ = state; }
+  /// A run that ended (END) whose machine then failed at that instant (a
+  /// cell's devices, looking once more): the outcome becomes that fault.
+  RunOutcome failAfterEnd(std::string message) {
+    state_.outcome.reason = StopReason::RuntimeError, state_.outcome.message = std::move(message);
+    return state_.outcome;
+  }
 
  private:
   /// Every instruction that moves the motors (kMovesMotors).

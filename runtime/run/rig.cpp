@@ -107,11 +107,15 @@ void Rig::wakeRobotAt(vm::Micros at) {
   running_->clock().schedule(at, robotId_);
 }
 
-void Rig::afterStep(std::uint32_t instruction) {
-  afterLastStep_ = false;
+void Rig::takeStepRecords() {
   lastStepInputs_.swap(pendingInputs_);
   pendingInputs_.clear();
   if (devices_) lastStepDevices_ = devices_->takeEvents(), lastStepMotions_ = devices_->takeMotions();
+}
+
+void Rig::afterStep(std::uint32_t instruction) {
+  afterLastStep_ = false;
+  takeStepRecords();
   if (!world_) return;
   const World::StepEffects step = world_->takeStepEffects(robotIndex_);
   lastStepGrasped_ = step.grasped;

@@ -168,9 +168,7 @@ class Rig {
   /// What the devices did since the last step ended, as the step's (a run
   /// that stopped inside a step: afterStep never came).
   void takeDeviceRecords() {
-    lastStepInputs_.swap(pendingInputs_);
-    pendingInputs_.clear();
-    if (devices_) lastStepDevices_ = devices_->takeEvents(), lastStepMotions_ = devices_->takeMotions();
+    takeStepRecords();
     afterLastStep_ = true;
   }
   /// The records of the last step are those taken after it (takeDeviceRecords):
@@ -269,6 +267,8 @@ class Rig {
   CollisionMode collisions_ = CollisionMode::Off;
   std::unique_ptr<RobotObstacles> obstacles_;  // before watch_ is rebuilt on its view
   vm::Machine* front_ = nullptr;  // what is driven
+  /// The inputs' changes and the devices' records since the last take, as the last step's.
+  void takeStepRecords();
   std::vector<InputChangeRecord> pendingInputs_, lastStepInputs_;
   bool afterLastStep_ = false;  // takeDeviceRecords came after the last step
   bool lastStepGrasped_ = false;

@@ -194,12 +194,8 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
   // instant comes before the summary, which shows the cell as the instant ends.
   // A fault of theirs then (a feeder with no slot left) is the run's.
   if (finished() && outcome.ok() && !inCellRun_)
-    if (vm::Status s = rig_->advanceCell(rig_->running().clock().now()); !s) {
-      vm::InterpreterState failed = interpreter_->state();
-      failed.outcome.reason = vm::StopReason::RuntimeError, failed.outcome.message = s.message;
-      interpreter_->restore(failed);
-      outcome = failed.outcome;
-    }
+    if (vm::Status s = rig_->advanceCell(rig_->running().clock().now()); !s)
+      outcome = interpreter_->failAfterEnd(std::move(s.message));
   // A step cut short (the time limit in a WAITFOR the devices end, a
   // fault), or the instant of the last: what the devices did since is the
   // log's last step's, and the trace's last lines (a cell run's robots

@@ -259,3 +259,33 @@ TEST_CASE("END right after RESET: the summary shows the cell after the devices' 
   CHECK_FALSE(r.run->rig().devices()->sensorOn(0));
   CHECK(r.run->rig().devices()->sensorCount(0) == 1);
 }
+
+TEST_CASE("END right after an output a feeder reads: a flood at that instant fails the run", "[cell][devices]") {
+  // 64 rising edges of output 1, 0.03 s apart, each feed a part that the
+  // belt carries 30 away (a part is 10 long): the feeder's 64 slots are
+  // full. The 65th edge comes with END at the same microsecond: the
+  // devices' look then feeds a 65th part, which has no slot.
+  const auto cell = cellOf(
+      "  CONVEYOR line SPEED 1000 RUN ON\n"
+      "  FEEDER f blk AT 30 10 30 WHEN OUT 1\n");
+  const std::string edges =
+      "        SET N 0\n"
+      "l:      OUTSIG 1 ON\n"
+      "        DELAY 0.02\n"
+      "        OUTSIG 1 OFF\n"
+      "        DELAY 0.01\n"
+      "        ADD N 1\n"
+      "        JMPVAR N < 64 l\n";
+  const auto r = runOn(cell, edges + "        OUTSIG 1 ON\n        END\n");
+  REQUIRE(r.run->outcome());
+  CHECK_FALSE(r.run->outcome()->ok());
+  CHECK(r.run->outcome()->reason == rs::vm::StopReason::RuntimeError);
+  CHECK(r.run->outcome()->message.find("feeder f has 64 parts in the cell at once") != std::string::npos);
+  CHECK(r.run->rig().devices()->fed(0) == 64);
+  CHECK(r.run->rig().clock() == 64 * 30'000);
+  // One edge fewer at the end: the run ends as the program does.
+  const auto fine = runOn(cell, edges + "        END\n");
+  REQUIRE(fine.run->outcome());
+  CHECK(fine.run->outcome()->ok());
+  CHECK(fine.run->rig().devices()->fed(0) == 64);
+}
