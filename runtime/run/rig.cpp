@@ -51,6 +51,9 @@ void Rig::attachDevices(CellDevices& devices) {
   sim_->onOutputChange([this](int output, bool) { devices_->outputChanged(output, robotIndex_); });
   // The devices watch what every robot shows the sensors on the way.
   sim_->onMoveBegun([this](vm::Micros until) { devices_->robotMoves(until, robotIndex_); });
+  // A wait that finishes alone does what the run's wait on the cell and the
+  // robot's wake do for the devices: look again first, commit at its end.
+  sim_->onFinishAlone([this] { devices_->sync(); }, [this] { devices_->commit(); });
 }
 
 vm::Status Rig::advanceCell(vm::Micros t) {

@@ -156,6 +156,7 @@ vm::RunOutcome Run::runUntil(const RunUntil& until) {
 
   const std::uint64_t stepEnd = until.stepEnd(interpreter_->steps());
   rig_->beforeStep(interpreter_->pc());
+  if (rig_->sim()) rig_->sim()->finishAlone(!inCellRun_);
 
   vm::RunOutcome outcome;
   while (true) {

@@ -139,7 +139,7 @@ Status SimMachine::moveLockStep(std::span<const std::int32_t> targets, std::uint
   }
   path_.insert(path_.end(), segments_.begin(), segments_.end());
   ++knots_;
-  return advanceBy(longest, true);
+  return advanceBy(longest, true, true);
 }
 
 void SimMachine::beginPath() { path_.clear(); }
@@ -329,12 +329,26 @@ Status SimMachine::delay(Micros duration) {
 
 // The one place the machine moves the cell's clock: inputs always match
 // now(). Waiting on the scheduler, the wait begins and the clock is left to it.
-Status SimMachine::advanceBy(Micros duration, bool move) {
+bool SimMachine::finishesAlone(Micros until, bool knot) {
+  if (!finishAlone_ || knot) return false;
+  if (aloneBefore_) aloneBefore_();
+  const std::optional<Micros> next = clock_->nextTime();
+  return !next || *next > until;
+}
+
+Status SimMachine::advanceBy(Micros duration, bool move, bool knot) {
   const Micros until = now() + duration;
   if (move && duration > 0 && moveBegunListener_) moveBegunListener_(until);
   if (cooperative_ && duration > 0) {
-    waitUntil_ = until, waitInput_ = 0, waitMove_ = move;
-    return Status::notYet(until);
+    if (!finishesAlone(until, knot)) {
+      waitUntil_ = until, waitInput_ = 0, waitMove_ = move;
+      return Status::notYet(until);
+    }
+    Status status = clock_->advanceTo(until);  // nothing is due by then: the clock alone moves
+    if (aloneAfter_) aloneAfter_();
+    applyInputs();
+    if (move && moveListener_) moveListener_();
+    return status;
   }
   Status status = clock_->advanceTo(until);
   applyInputs();

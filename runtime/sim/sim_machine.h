@@ -46,6 +46,21 @@ class SimMachine final : public vm::Machine {
   /// scheduler moves it, and `resume` finishes the call once the clock has
   /// reached its end (for a WAITFOR, once the input reads as asked).
   void waitOnScheduler(bool on) { cooperative_ = on; }
+  /// Waiting on the scheduler, a move or a DELAY with nothing else due in
+  /// the cell by its end finishes at once, the clock moved to its end, as
+  /// a robot alone does: nothing else acts meanwhile, so nothing could tell
+  /// (the same bytes out), and a plain run does not pay a round trip through
+  /// the scheduler for each move. For a robot whose cell has no other
+  /// robot (Run sets it). A straight line's knots always wait: the debugger
+  /// and a pause slice a line by its knots.
+  void finishAlone(bool on) { finishAlone_ = on; }
+  /// The cell's part in it (its devices): `before` is called before it is
+  /// decided (they look again at a take or a let-go, which puts an event
+  /// on the clock now), `after` once the clock is at the end (the belts'
+  /// parts are where they are then), as the robot's wake on the clock does.
+  void onFinishAlone(std::function<void()> before, std::function<void()> after) {
+    aloneBefore_ = std::move(before), aloneAfter_ = std::move(after);
+  }
   bool waitsOnScheduler() const { return cooperative_; }
   vm::Status resume() override;
   /// The scheduler rules on the wait under way: the next `resume` answers
@@ -182,7 +197,7 @@ class SimMachine final : public vm::Machine {
   vm::Micros travelTime(std::size_t motor, std::int32_t target) const;
   /// The clock moves by `duration`, or, waiting on the scheduler, the
   /// call answers NotYet until then (`move`: a move's listener is told at its end).
-  vm::Status advanceBy(vm::Micros duration, bool move = false);
+  vm::Status advanceBy(vm::Micros duration, bool move = false, bool knot = false);
   vm::Status waitForInput(int input, bool on);
   vm::Status fireRules(int output, bool on);
   void applyInputs();
@@ -200,6 +215,10 @@ class SimMachine final : public vm::Machine {
   std::unique_ptr<Scheduler> ownClock_;  // a robot alone: its cell of one's clock
   Scheduler* clock_ = nullptr;
   bool cooperative_ = false;
+  bool finishAlone_ = false;
+  std::function<void()> aloneBefore_, aloneAfter_;
+  /// A wait to `until` that finishes alone now (finishAlone).
+  bool finishesAlone(vm::Micros until, bool knot);
   vm::Micros waitUntil_ = 0;  // the wait begun (State::waitUntil, ...)
   int waitInput_ = 0;
   bool waitOn_ = false, waitMove_ = false;

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -152,7 +153,11 @@ struct Ending {
   rs::vm::RunOutcome outcome;
 };
 
-Ending runOnRig(const std::string& program, bool onScheduler, int* wakes = nullptr) {
+// `alone`: the machine finishes a move or a DELAY at once when nothing
+// else in the cell is due by its end (SimMachine::finishAlone); `other`, a
+// time at which a process of the cell other than the robot wakes.
+Ending runOnRig(const std::string& program, bool onScheduler, int* wakes = nullptr, bool alone = false,
+                std::optional<Micros> other = std::nullopt, std::vector<std::string>* otherLog = nullptr) {
   auto cell = std::make_shared<const rs::workcell::Workcell>(rendertest::cell("gantry-cell"));
   const rs::vm::Image image = rendertest::compileText(program, *cell);
   auto stimuli = rs::stimuli::parseStimuli("at 7.5 input 3 on\n", "cell.stim");
@@ -164,12 +169,17 @@ Ending runOnRig(const std::string& program, bool onScheduler, int* wakes = nullp
     e.outcome = vm.run({});
   } else {
     rig.sim()->waitOnScheduler(true);
+    rig.sim()->finishAlone(alone);
     // The rig's cell clock is the one the machine runs on; the test drives it.
     Scheduler& clock = rig.running().clock();
     Robot robot;
     robot.vm = &vm;
     robot.id = clock.add(robot);
+    std::vector<std::string> ignored;
+    Recorder recorder("other", otherLog ? *otherLog : ignored);
+    const std::uint32_t otherId = clock.add(recorder);
     REQUIRE(clock.schedule(0, robot.id));
+    if (other) REQUIRE(clock.schedule(*other, otherId));
     while (!clock.idle()) REQUIRE(clock.advanceTo(*clock.nextTime()));
     e.outcome = robot.last;
     if (wakes) *wakes = robot.wakes;
@@ -272,4 +282,50 @@ TEST_CASE("the cell's clock updates the processes a delta woke, once each, and n
   CHECK(a.updates == 2);  // once at 100, once at 200
   CHECK(b.wakes == 0);
   CHECK(b.updates == 0);  // never woken: nothing of its to commit
+}
+
+TEST_CASE("a robot alone in its cell finishes a move or a DELAY at once, unless something else in the cell is due "
+          "before its end", "[cell]") {
+  const std::string program =
+      "        MOVES DIAG\n"
+      "        DELAY 1.5\n"
+      "        WAITFOR 3 ON\n"
+      "        OUTSIG 2 ON\n"
+      "        MOVETO 0 0 0 0\n"
+      "        END\n"
+      "POINTS\n"
+      "DIAG 40 16 0 0\n";
+  const Ending straight = runOnRig(program, false);
+  REQUIRE(straight.outcome.ok());
+  REQUIRE(straight.knots > 1);
+  int woken = 0, alone = 0;
+  const Ending waited = runOnRig(program, true, &woken);
+  const Ending finished = runOnRig(program, true, &alone, true);
+  REQUIRE(finished.outcome.ok());
+  CHECK(finished.clock == straight.clock);
+  CHECK(finished.motors == straight.motors);
+  CHECK(finished.steps == straight.steps);
+  CHECK(finished.knots == straight.knots);
+  CHECK(finished.outputs == straight.outputs);
+  CHECK(finished.inputs == straight.inputs);
+  // The line's knots and the WAITFOR still wait; the DELAY and the last
+  // move do not: two wakes fewer.
+  CHECK(alone == woken - 2);
+  CHECK(alone == 1 + static_cast<int>(straight.knots) + 1);
+
+  // Something else due during the DELAY (after the line): the DELAY waits,
+  // and the other process wakes at its own time with the clock there.
+  const Micros lineEnd = [&] {
+    const Ending line = runOnRig("        MOVES DIAG\n        END\nPOINTS\nDIAG 40 16 0 0\n", false);
+    return line.clock;
+  }();
+  std::vector<std::string> log;
+  int wakesWithOther = 0;
+  const Micros during = lineEnd + 700'000;
+  const Ending shared = runOnRig(program, true, &wakesWithOther, true, during, &log);
+  REQUIRE(shared.outcome.ok());
+  CHECK(shared.clock == straight.clock);
+  CHECK(shared.motors == straight.motors);
+  CHECK(log == std::vector<std::string>{"other@" + std::to_string(during) + "/0"});
+  CHECK(wakesWithOther == alone + 1);  // the DELAY's wake
 }

@@ -289,3 +289,20 @@ TEST_CASE("END right after an output a feeder reads: a flood at that instant fai
   CHECK(fine.run->outcome()->ok());
   CHECK(fine.run->rig().devices()->fed(0) == 64);
 }
+
+TEST_CASE("a DELAY right after RESET: the devices look at RESET's instant, not at the DELAY's end",
+          "[cell][devices]") {
+  // As above, with a DELAY after RESET that nothing else in the cell
+  // interrupts (the feeder is done): the robot's wait finishes alone on the
+  // clock (SimMachine::finishAlone), and the devices must still see RESET
+  // take the part at 1 s, not when the robot next waits on the cell.
+  const auto cell = cellOf(
+      "  FEEDER f blk AT 100 10 30 EVERY 5 COUNT 1\n"
+      "  SENSOR z ZONE 95 115 25 5 15 35\n");
+  const auto r = runOn(cell, "        DELAY 1\n        RESET\n        DELAY 2\n        END\n");
+  REQUIRE(r.run->outcome());
+  REQUIRE(r.run->outcome()->ok());
+  INFO(r.trace);
+  CHECK(r.trace.find("     1.000  sensor z OFF\n") != std::string::npos);
+  CHECK(r.run->rig().devices()->sensorCount(0) == 1);
+}
