@@ -57,6 +57,17 @@ struct Copier final : CellProcess {
   std::string name() const override { return invert ? "wire NOT" : "wire"; }
 };
 
+// A line, a DELAY, a WAITFOR the stimulus ends at 7.5 s, an output, a move.
+const char* const kLineDelayWait =
+    "        MOVES DIAG\n"
+    "        DELAY 1.5\n"
+    "        WAITFOR 3 ON\n"
+    "        OUTSIG 2 ON\n"
+    "        MOVETO 0 0 0 0\n"
+    "        END\n"
+    "POINTS\n"
+    "DIAG 40 16 0 0\n";
+
 }  // namespace cellclocktest
 
 using namespace cellclocktest;
@@ -196,15 +207,7 @@ Ending runOnRig(const std::string& program, bool onScheduler, int* wakes = nullp
 
 TEST_CASE("a program whose waits say not yet, woken by the cell's scheduler, ends where it ends run straight through",
           "[cell]") {
-  const std::string program =
-      "        MOVES DIAG\n"
-      "        DELAY 1.5\n"
-      "        WAITFOR 3 ON\n"
-      "        OUTSIG 2 ON\n"
-      "        MOVETO 0 0 0 0\n"
-      "        END\n"
-      "POINTS\n"
-      "DIAG 40 16 0 0\n";
+  const std::string program = kLineDelayWait;
   const Ending straight = runOnRig(program, false);
   int wakes = 0;
   const Ending woken = runOnRig(program, true, &wakes);
@@ -286,15 +289,7 @@ TEST_CASE("the cell's clock updates the processes a delta woke, once each, and n
 
 TEST_CASE("a robot alone in its cell finishes a move or a DELAY at once, unless something else in the cell is due "
           "before its end", "[cell]") {
-  const std::string program =
-      "        MOVES DIAG\n"
-      "        DELAY 1.5\n"
-      "        WAITFOR 3 ON\n"
-      "        OUTSIG 2 ON\n"
-      "        MOVETO 0 0 0 0\n"
-      "        END\n"
-      "POINTS\n"
-      "DIAG 40 16 0 0\n";
+  const std::string program = kLineDelayWait;
   const Ending straight = runOnRig(program, false);
   REQUIRE(straight.outcome.ok());
   REQUIRE(straight.knots > 1);
