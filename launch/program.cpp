@@ -178,6 +178,11 @@ std::string omittedNote(const diag::Omitted& omitted) {
 }
 
 std::shared_ptr<const workcell::Workcell> loadCell(const ProgramRequest& request, LoadedProgram& into) {
+  if (const LoadedCell* read = request.loadedCell.get()) {
+    into.descriptions = read->descriptions;
+    into.diagnostics.insert(into.diagnostics.end(), read->diagnostics.begin(), read->diagnostics.end());
+    return read->cell;
+  }
   auto library = std::make_shared<compiler::Library>(compiler::librarySearchPath(request.libDirs));
   if (request.cellFromLibraryOnly) library->lookUpNamesOnly();
   into.descriptions = library;

@@ -25,6 +25,8 @@ namespace rs::launch {
 /// size, before they are read.
 inline constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;
 
+struct LoadedCell;
+
 /// What the user named.
 struct ProgramRequest {
   std::string file;                  ///< program source or image
@@ -41,6 +43,10 @@ struct ProgramRequest {
   /// are counted, and printDiagnostics says how many.
   std::size_t maxErrors = 0;
   std::string robot = {};  ///< --robot: the cell's robot the program runs on ("" = robot_choice.h)
+  /// `cell` read and built already for this request (`run PROG --cell CELL`
+  /// first looks whether the cell has other programs to run): loadCell
+  /// gives it back, with its diagnostics, instead of reading it again.
+  std::shared_ptr<const LoadedCell> loadedCell = {};
 };
 
 struct LoadedProgram {
@@ -55,6 +61,14 @@ struct LoadedProgram {
   bool ok() const { return image != nullptr && !diag::hasErrors(diagnostics); }
   /// The source text of a diagnostic's file, if it was read.
   const diag::SourceFile* sourceOf(const std::string& file) const;
+};
+
+/// A cell loadCell read: what it gives back, and what a request may carry
+/// so that a later load of the same cell does not read the files again.
+struct LoadedCell {
+  std::shared_ptr<const workcell::Workcell> cell;
+  std::shared_ptr<const compiler::Library> descriptions;
+  std::vector<diag::Diagnostic> diagnostics;
 };
 
 /// What a program is loaded for: what it must meet besides compiling.

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "launch/program.h"
 #include "tests/cli/cli_support.h"
 
 namespace {
@@ -112,6 +113,37 @@ TEST_CASE("a robot that overlaps an object at home is reported when the cell is 
   CHECK(r.err.find("post-cell.rsd:6:9: warning: robot 'rhino-scara' collides at its home pose: link 2 "
                    "(rhino_scara_link2) overlaps object 2 (post)") != std::string::npos);
   CHECK(r.code == 1);  // and the first move starts in the post
+}
+
+TEST_CASE("run PROG --cell CELL reads the cell once: its warning comes once", "[collision][cli]") {
+  const TempDir dir;
+  std::string text = kCell;
+  text.replace(text.find("AT -150 750 120"), 15, "AT -150 750 10 ");
+  const std::string cell = dir.write("post-cell.rsd", text), program = dir.write("swing.rsp", kProgram);
+  const auto r = runCli({"run", program, "--cell", cell});
+  const std::string warning = "post-cell.rsd:6:9: warning: robot 'rhino-scara' collides at its home pose";
+  const std::size_t first = r.err.find(warning);
+  REQUIRE(first != std::string::npos);
+  CHECK(r.err.find(warning, first + 1) == std::string::npos);
+}
+
+TEST_CASE("a program's load takes the cell its request carries, without reading the file again", "[collision][cli]") {
+  const TempDir dir;
+  const std::string cell = dir.write("post-cell.rsd", kCell), program = dir.write("swing.rsp", kProgram);
+  rs::launch::ProgramRequest request;
+  request.file = program, request.cell = cell;
+  rs::launch::LoadedProgram first;
+  auto read = std::make_shared<rs::launch::LoadedCell>();
+  read->cell = rs::launch::loadCell(request, first);
+  REQUIRE(read->cell);
+  read->descriptions = first.descriptions;
+  // Gone from the disk: only the request's copy can give the cell now.
+  std::filesystem::remove(cell);
+  CHECK_FALSE(rs::launch::loadProgram(request).ok());
+  request.loadedCell = read;
+  const rs::launch::LoadedProgram again = rs::launch::loadProgram(request);
+  CHECK(again.ok());
+  CHECK(again.cell->name == "post-cell");
 }
 
 TEST_CASE("robotsim test: no collision, and collides with NAME at line N", "[collision][testrun][cli]") {

@@ -145,7 +145,8 @@ std::vector<diag::Diagnostic> cellRunDiagnostics(const runtime::CellRun& cell, c
   return out;
 }
 
-std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err) {
+std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err,
+                                    std::shared_ptr<const launch::LoadedCell>* readCell) {
   launch::ProgramRequest request = o.program;
   std::vector<std::string> assignments = o.programs;
   std::error_code ec;
@@ -169,7 +170,12 @@ std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std:
     if (o.format == "json") printErrorJson(out, all);
     return kExitBadInput;
   }
-  if (programs.programs.empty() && !request.file.empty()) return std::nullopt;
+  if (programs.programs.empty() && !request.file.empty()) {
+    if (readCell)
+      *readCell = std::make_shared<const launch::LoadedCell>(
+          launch::LoadedCell{programs.cell, programs.cellLoad.descriptions, programs.cellLoad.diagnostics});
+    return std::nullopt;
+  }
   if (programs.programs.size() == 1) {
     // One robot has a program: the run of one, as always.
     if (!request.file.empty()) return std::nullopt;

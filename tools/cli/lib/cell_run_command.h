@@ -20,7 +20,10 @@ namespace rs::cli {
 /// With `check`, the same as `check` does it: one line per robot when all
 /// is well, --strict's warnings failing it, and nullopt when a program does
 /// not compile (each is then checked alone, in its own file).
-std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err);
+/// `readCell`, when given, gets the cell read to decide a run of one, for
+/// that run's load (launch::ProgramRequest::loadedCell): read once, not twice.
+std::optional<int> runCellIfSeveral(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err,
+                                    std::shared_ptr<const launch::LoadedCell>* readCell = nullptr);
 
 /// What the cell's stop says, as diagnostics: the failing robot's own words
 /// at its line (launch/run_diagnostics.h), or the deadlock or limit at the

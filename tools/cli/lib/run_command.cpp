@@ -35,14 +35,15 @@ void promoteCompileWarnings(launch::LoadedProgram& program) {
 }  // namespace
 
 int runOrCheck(const RunCommandOptions& o, bool check, std::ostream& out, std::ostream& err) {
-  if (const std::optional<int> code = runCellIfSeveral(o, check, out, err)) return *code;
+  launch::ProgramRequest request = o.program;
+  if (const std::optional<int> code = runCellIfSeveral(o, check, out, err, &request.loadedCell)) return *code;
   const bool json = o.format == "json";
   if (o.profile && o.serial.active()) {
     err << "--profile: error: a profile is computed from the simulated run's log: leave out --device\n";
     return kExitBadInput;
   }
   if (refuseSeveralDevices(o.serial, err)) return kExitBadInput;
-  launch::LoadedProgram program = launch::loadProgram(o.program);
+  launch::LoadedProgram program = launch::loadProgram(request);
   const bool strict = check && o.strict;
   if (strict) promoteCompileWarnings(program);
   RunReport report;
