@@ -326,18 +326,23 @@ void CellDevices::sync() {
   if (world_.revision() != state_.revision) wakeNow();
 }
 
-void CellDevices::outputChanged(int output, std::size_t robot) {
+bool CellDevices::outputChanged(int output, std::size_t robot) {
   const workcell::Devices& d = cell_.devices;
-  bool reads = false;
+  bool reads = false, feeds = false, wiredNow = false;
   const auto isOutput = [&](const Signal& s) {
     return s.kind == Signal::Kind::Output && s.number == output && names(s.robot, robot);
   };
   for (const workcell::Conveyor& c : d.conveyors) reads |= isOutput(c.run);
-  for (const workcell::Feeder& f : d.feeders) reads |= f.when && isOutput(*f.when);
-  if (reads) wakeNow();
+  for (const workcell::Feeder& f : d.feeders) feeds |= f.when && isOutput(*f.when);
+  if (reads || feeds) wakeNow();
   for (const auto& w : wires_)
-    if (isOutput(w->wire().source))
+    if (isOutput(w->wire().source)) {
       clock_.schedule(clock_.now() + w->wire().afterUs, w->id, robots_[robot]->output(output) ? 1 : 0);
+      wiredNow |= w->wire().afterUs == 0;
+    }
+  // A belt started or stopped moves nothing at this instant; a part fed may
+  // be in a sensor's zone at once.
+  return wiredNow || (feeds && !wires_.empty());
 }
 
 void CellDevices::feed(std::size_t f, vm::Micros now) {

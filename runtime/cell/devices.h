@@ -107,7 +107,9 @@ class CellDevices final : public CellProcess {
   std::string name() const override { return "the cell's devices"; }
 
   /// Robot `robot`'s output changed now: the devices that read it act.
-  void outputChanged(int output, std::size_t robot = 0);
+  /// True when a wire from it turns an input at this same instant (no
+  /// AFTER), or a feeder it drives may put a part into a sensor now.
+  bool outputChanged(int output, std::size_t robot = 0);
   /// Robot `robot` moves from now until `until`: a sensor that sees the
   /// part it carries (or the robot) changes at the exact microsecond the
   /// move brings it there (robot_sight.h).

@@ -45,11 +45,15 @@ vm::Status FollowedMachine::resume() {
 }
 
 // Nothing moves while an output changes or the arm goes back: the follower
-// is told at once, after the simulation agreed.
+// is told at once, after the simulation agreed. An output a wire carries
+// to an input at once waits (NotYet) for the cell's rounds of the instant:
+// the controller is told all the same, and the wait is the simulation's.
 vm::Status FollowedMachine::setOutput(int output, bool on) {
-  if (vm::Status st = lead_.setOutput(output, on); !st) return st;
+  const vm::Status simulated = lead_.setOutput(output, on);
+  if (!simulated && !simulated.notYet()) return simulated;
   if (vm::Status st = settle(); !st) return st;
-  return follower_.setOutput(output, on);
+  if (vm::Status st = follower_.setOutput(output, on); !st) return st;
+  return simulated;
 }
 
 vm::Status FollowedMachine::reset() {

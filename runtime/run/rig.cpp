@@ -48,7 +48,7 @@ void Rig::attachDevices(CellDevices& devices) {
   if (!sim_) return;
   devices_ = &devices;
   robot_.devices = devices_;
-  sim_->onOutputChange([this](int output, bool) { devices_->outputChanged(output, robotIndex_); });
+  sim_->onOutputChange([this](int output, bool) { return devices_->outputChanged(output, robotIndex_); });
   // The devices watch what every robot shows the sensors on the way.
   sim_->onMoveBegun([this](vm::Micros until) { devices_->robotMoves(until, robotIndex_); });
   // A wait that finishes alone does what the run's wait on the cell and the
@@ -156,6 +156,7 @@ std::vector<ObjectView> Rig::objects(vm::Micros at) const {
     const workcell::PlacedObject& placed = cell_->objects[o];
     ObjectView v;
     v.name = placed.shape.name;
+    v.as = placed.name.empty() ? v.name : std::string_view(placed.name);
     v.pose = world_->objectPose(o, encoders, at, robotIndex_);
     v.at = v.pose * workcell::atCorner(placed.shape);
     const Eigen::AlignedBox3d bounds = workcell::boundsOf(placed.shape);

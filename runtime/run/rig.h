@@ -34,7 +34,9 @@ namespace rs::runtime {
 
 /// An object of the workcell at the rig's moment.
 struct ObjectView {
-  std::string_view name;
+  std::string_view name;  ///< its description's (`block`, `conveyor`)
+  /// The name its OBJECT line gives it with `AS` (`infeed`), else `name`.
+  std::string_view as;
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< F_world_design
   Eigen::Vector3d at = Eigen::Vector3d::Zero();            ///< its AT corner in the world
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();        ///< the centre of its box (its lines' bounds) in the world

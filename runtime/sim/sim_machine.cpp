@@ -209,7 +209,12 @@ Status SimMachine::setOutput(int output, bool on) {
   outputs_ = vm::withLine(outputs_, output, on);
   Status fired = fireRules(output, on);
   applyInputs();  // rules with no delay act at once
-  if (outputListener_) outputListener_(output, on);
+  if (outputListener_ && outputListener_(output, on) && cooperative_ && fired) {
+    // The wire acts at this instant, in the cell's rounds: a zero wait lets
+    // them run before the robot's next instruction reads the input.
+    waitUntil_ = now(), waitInput_ = 0, waitMove_ = false;
+    return Status::notYet(now());
+  }
   return fired;
 }
 

@@ -74,7 +74,11 @@ class SimMachine final : public vm::Machine {
   int waitingInput() const { return waitInput_; }
   bool waitingOn() const { return waitOn_; }
   /// Called with (output, on) after an output changes (the devices read outputs).
-  void onOutputChange(std::function<void(int, bool)> listener) { outputListener_ = std::move(listener); }
+  /// `listener` answers whether the change may turn an input at this same
+  /// instant (a wire from the output with no AFTER): on a cell's scheduler
+  /// the OUTSIG then waits for the instant's rounds, so that the robot's
+  /// next read of that input sees it (docs/language.md).
+  void onOutputChange(std::function<bool(int, bool)> listener) { outputListener_ = std::move(listener); }
   /// Input `input` turns `on` now because of `cause` (a wire): the stimuli
   /// due by now apply first, the listeners hear it. False out of range.
   bool setInputBy(int input, bool on, const InputCause& cause);
@@ -233,7 +237,7 @@ class SimMachine final : public vm::Machine {
   std::function<void(vm::Micros, const InputCause&)> causeListener_;
   std::function<void()> moveListener_;
   std::function<void(vm::Micros)> moveBegunListener_;
-  std::function<void(int, bool)> outputListener_;
+  std::function<bool(int, bool)> outputListener_;
   std::optional<vm::Status> endWait_;  // not state: set and used between two calls
 };
 

@@ -376,6 +376,7 @@ TEST_CASE("cli: the trace and the summary escape every name", "[cli]") {
   REQUIRE(cell);
   REQUIRE(!cell->objects.empty());
   cell->objects[0].shape.name = "block\x1b[31m";
+  cell->objects[0].name = "tray\x1b[1m";  // its AS name
   const rs::compiler::CompileResult compiled =
       rs::compiler::compile(rs::diag::SourceFile("p.rsp", "SET N 1\nEND\n"), rs::launch::cellTarget(*cell));
   REQUIRE(compiled.ok());
@@ -403,6 +404,6 @@ TEST_CASE("cli: the trace and the summary escape every name", "[cli]") {
   CHECK(text.str().find("SET     N\\x1b[2J 1") != std::string::npos);
   CHECK(text.str().find("N\\x1b[2J=1") != std::string::npos);
   CHECK(summary.str().rfind("run of \\x1b]0;pwned\\x07.rsp on robot\\x07: finished\n", 0) == 0);
-  CHECK(summary.str().find(" block\\x1b[31m at ") != std::string::npos);
+  CHECK(summary.str().find(" block\\x1b[31m AS tray\\x1b[1m at ") != std::string::npos);
   CHECK(summary.str().find("variables       N\\x1b[2J=1\n") != std::string::npos);
 }

@@ -17,6 +17,7 @@
 #include "launch/run_request.h"
 #include "runtime/run/run.h"
 #include "runtime/run/trace.h"
+#include "vm/io_lines.h"
 
 namespace celldevicestest {
 
@@ -212,6 +213,31 @@ TEST_CASE("a program that answers its own inputs through wires at one instant st
   REQUIRE(plain->outcome());
   CHECK(plain->outcome()->reason == rs::vm::StopReason::InstantLimit);
   CHECK(plain->outcome()->message.find("wires") == std::string::npos);
+}
+
+TEST_CASE("a JMPIN right after the OUTSIG that a wire carries to its input reads the new value", "[cell][devices]") {
+  // docs/language.md: a read sees every change due at the present
+  // microsecond, the wire's from the robot's own OUTSIG included.
+  const auto cell = cellOf("  WIRE OUT 1 TO IN 1\n  WIRE OUT 2 TO IN 2 INVERTED\n");
+  const auto r = runOn(cell,
+                      "        OUTSIG 1 ON\n"
+                      "        JMPIN 1 ON seen\n"
+                      "        OUTSIG 8 ON\n"  // not reached when the jump is taken
+                      "seen:   OUTSIG 2 ON\n"
+                      "        JMPIN 2 OFF gone\n"
+                      "        OUTSIG 7 ON\n"
+                      "gone:   END\n");
+  REQUIRE(r.run->outcome());
+  CHECK(r.run->outcome()->reason == rs::vm::StopReason::End);
+  const rs::vm::IoMask outputs = r.run->rig().machine().outputs();
+  CHECK(rs::vm::lineIsOn(outputs, 1));
+  CHECK(rs::vm::lineIsOn(outputs, 2));
+  CHECK_FALSE(rs::vm::lineIsOn(outputs, 8));
+  CHECK_FALSE(rs::vm::lineIsOn(outputs, 7));
+  CHECK(r.run->rig().clock() == 0);
+  // The wire's change is in the trace at the instant, before END.
+  INFO(r.trace);
+  CHECK(r.trace.find("input 1 ON: wire from OUT 1") < r.trace.find("END"));
 }
 
 TEST_CASE("RESET takes the parts a feeder put out of the cell, and the feeder goes on", "[cell][devices]") {

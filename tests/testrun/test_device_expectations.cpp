@@ -177,3 +177,27 @@ TEST_CASE("device expectations: objects by name are the ones in the cell, not a 
                    "(110.00, 500.00, 620.00), (260.00, 500.00, 620.00), (-630.00, 500.00, 620.00)") !=
         std::string::npos);
 }
+
+TEST_CASE("device expectations: an object by the name AS gives it, and the summary says both names",
+          "[testrun][devices][cli]") {
+  // adept-cell: OBJECT conveyor AT -750 0 750 AS infeed (object 1), and
+  // AT -750 0 -450 AS outfeed (object 4); fixtures, so still there.
+  const TempDir dir;
+  const std::string program = dir.write("p.rsp", std::string(kFirstBeam) +
+                                                     "; expect: object outfeed at -750 0 -450\n"
+                                                     "; expect: object infeed at -750 0 750\n"
+                                                     "; expect: object conveyor at -750 0 -450\n");
+  const CliResult ok = runCli({"test", program});
+  INFO(ok.out << ok.err);
+  CHECK(ok.code == 0);
+  // The outfeed is not where the infeed is: the name picks the one object.
+  const std::string wrong = dir.write("w.rsp", std::string(kFirstBeam) + "; expect: object outfeed at -750 0 750\n");
+  const CliResult r = runCli({"test", wrong});
+  INFO(r.out << r.err);
+  CHECK(r.code == 1);
+  CHECK(r.out.find("expected object 4 (conveyor) at (-750.00, 0.00, 750.00)") != std::string::npos);
+  const CliResult summary = runCli({"run", program, "--cell", "adept-cell"});
+  CHECK(summary.out.find("object 4        conveyor AS outfeed at (-750, 0, -450)") != std::string::npos);
+  const CliResult json = runCli({"run", program, "--cell", "adept-cell", "--format", "json"});
+  CHECK(json.out.find(R"("as":"outfeed")") != std::string::npos);
+}

@@ -320,7 +320,7 @@ Outcome Pendant::setOutput(int line, bool on) {
   if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
   moved_ = false;
   const vm::Status st = rig_->machine().setOutput(line, on);
-  if (!st) {
+  if (!st && !st.notYet()) {  // NotYet: a wire acts at this instant, when the cell next runs
     if (!device_.empty()) fault_ = st.message;
     return done({false, st.message});
   }

@@ -212,14 +212,16 @@ class Checker {
   // The objects an expectation names, among those in the cell at the end:
   // by number (the run's "object 5": the cell numbers its own from 1, a fed
   // part gets the next number when it is fed) or by name (every object of
-  // that name). A feeder's empty slot, or a part a sink took, is not there.
+  // that name, the description's or the one `AS` gives it on its OBJECT
+  // line). A feeder's empty slot, or a part a sink took, is not there.
   std::vector<std::size_t> objectsNamed(const Expectation& e, const std::vector<runtime::ObjectView>& all) {
     std::vector<std::size_t> found;
     std::uint32_t number = 0;
     const bool byNumber = !e.name.empty() && e.name.find_first_not_of("0123456789") == std::string::npos &&
                           e.name.size() < 10 && (number = static_cast<std::uint32_t>(std::stoul(e.name))) >= 1;
     for (std::size_t i = 0; i < all.size(); ++i)
-      if (all[i].present && (byNumber ? all[i].number == number : base::sameName(all[i].name, e.name)))
+      if (all[i].present && (byNumber ? all[i].number == number
+                                      : base::sameName(all[i].name, e.name) || base::sameName(all[i].as, e.name)))
         found.push_back(i);
     if (!found.empty()) return found;
     if (byNumber && run_.rig().devices())

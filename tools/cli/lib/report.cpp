@@ -136,7 +136,9 @@ void printCellLines(std::ostream& out, const runtime::Run& run) {
     std::string rest;  // where its last let-go settled it
     if (const auto& settled = world->restOf(o); settled && settled->settled())
       rest = "; " + runtime::settleText(run.rig().numbered(*settled), world->cell()).substr(std::string_view("settles ").size());
-    out << fmt::format("  {:<15} {} at {}, centre {}{}{}\n", fmt::format("object {}", e.number), base::safeText(e.name),
+    const std::string named = e.as == e.name ? base::safeText(e.name)
+                                             : fmt::format("{} AS {}", base::safeText(e.name), base::safeText(e.as));
+    out << fmt::format("  {:<15} {} at {}, centre {}{}{}\n", fmt::format("object {}", e.number), named,
                        runtime::pointText({e.at.x(), e.at.y(), e.at.z()}),
                        runtime::pointText({e.centre.x(), e.centre.y(), e.centre.z()}),
                        e.held ? ", held" : e.moved ? ", moved" : "", rest);
@@ -236,6 +238,7 @@ void addCellJson(nlohmann::ordered_json& j, const runtime::Run& run) {
       Json one = {{"name", e.name}, {"at", runtime::roundedPoint({e.at.x(), e.at.y(), e.at.z()})},
                   {"centre", runtime::roundedPoint({e.centre.x(), e.centre.y(), e.centre.z()})}, {"held", e.held},
                   {"moved", e.moved}};
+      if (e.as != e.name) one["as"] = e.as;     // its OBJECT line's AS name
       if (numbered) one["number"] = e.number;  // fed parts make the list's order no number
       // Where its last let-go settled it, and how far it dropped (to 1e-4).
       if (world && world->restOf(o) && world->restOf(o)->settled())
