@@ -103,12 +103,16 @@ TEST_CASE_METHOD(PostCell, "the gripper closing on nothing is traced, and a run 
   CHECK(r.err.find(program + ":3:9: warning: the gripper closed once but never took an object") != std::string::npos);
 }
 
-TEST_CASE("a robot that overlaps an object at home is reported when the cell is loaded", "[collision][cli]") {
-  const TempDir dir;
-  // The post moved onto the arm's path at home: link 2 lies along -x.
+// The post moved onto the arm's path at home: link 2 lies along -x.
+static std::string postInTheWay() {
   std::string text = kCell;
   text.replace(text.find("AT -150 750 120"), 15, "AT -150 750 10 ");
-  const std::string cell = dir.write("post-cell.rsd", text), program = dir.write("swing.rsp", kProgram);
+  return text;
+}
+
+TEST_CASE("a robot that overlaps an object at home is reported when the cell is loaded", "[collision][cli]") {
+  const TempDir dir;
+  const std::string cell = dir.write("post-cell.rsd", postInTheWay()), program = dir.write("swing.rsp", kProgram);
   const auto r = runCli({"check", program, "--cell", cell});
   CHECK(r.err.find("post-cell.rsd:6:9: warning: robot 'rhino-scara' collides at its home pose: link 2 "
                    "(rhino_scara_link2) overlaps object 2 (post)") != std::string::npos);
@@ -117,9 +121,7 @@ TEST_CASE("a robot that overlaps an object at home is reported when the cell is 
 
 TEST_CASE("run PROG --cell CELL reads the cell once: its warning comes once", "[collision][cli]") {
   const TempDir dir;
-  std::string text = kCell;
-  text.replace(text.find("AT -150 750 120"), 15, "AT -150 750 10 ");
-  const std::string cell = dir.write("post-cell.rsd", text), program = dir.write("swing.rsp", kProgram);
+  const std::string cell = dir.write("post-cell.rsd", postInTheWay()), program = dir.write("swing.rsp", kProgram);
   const auto r = runCli({"run", program, "--cell", cell});
   const std::string warning = "post-cell.rsd:6:9: warning: robot 'rhino-scara' collides at its home pose";
   const std::size_t first = r.err.find(warning);
