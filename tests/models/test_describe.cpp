@@ -230,3 +230,107 @@ TEST_CASE("describe: every library cell's gripper opens wider than the library's
     CHECK(doc["robots"][0]["fingers"]["opening"].get<double>() > 40);
   }
 }
+
+// adept-cell's device lines (stdlib/workcells/adept-cell.rsd), the numbers
+// as the file writes them: objects 1 infeed, 2 and 3 block, 4 outfeed;
+//   CONVEYOR infeed  SPEED 100 RUN OUT 1
+//   CONVEYOR outfeed SPEED 100 RUN ON
+//   FEEDER   parts   block AT -740 500 620 EVERY 6
+//   SENSOR   eye     BEAM 300 520 440  300 520 760
+//   WIRE     eye TO IN 1
+//   SINK     done    ZONE 640 760 600 500 -750 -450  (x 640..760, y 500..600, z -750..-450)
+TEST_CASE("describe: adept-cell's devices and the wire to input 1, in JSON", "[models][describe][devices]") {
+  const json j = describeJson("adept-cell");
+  const json& d = j["devices"];
+  REQUIRE(d["sensors"].size() == 1);
+  CHECK(d["sensors"][0]["name"] == "eye");
+  CHECK(d["sensors"][0]["kind"] == "beam");
+  checkVec(d["sensors"][0]["from"], 300, 520, 440);
+  checkVec(d["sensors"][0]["to"], 300, 520, 760);
+  CHECK(d["sensors"][0]["sees"] == "parts");
+  REQUIRE(d["conveyors"].size() == 2);
+  CHECK(d["conveyors"][0] == json({{"name", "infeed"}, {"object", 1}, {"speed", 100.0}, {"run", {{"kind", "output"}, {"number", 1}}}}));
+  CHECK(d["conveyors"][1] == json({{"name", "outfeed"}, {"object", 4}, {"speed", 100.0}, {"run", {{"kind", "on"}}}}));
+  REQUIRE(d["feeders"].size() == 1);
+  const json& f = d["feeders"][0];
+  CHECK(f["name"] == "parts");
+  CHECK(f["object"] == "block");
+  checkVec(f["at"], -740, 500, 620);
+  CHECK(f["every"] == 6.0);
+  CHECK(f["when"].is_null());
+  CHECK(f["count"].is_null());
+  REQUIRE(d["sinks"].size() == 1);
+  CHECK(d["sinks"][0]["name"] == "done");
+  checkVec(d["sinks"][0]["min"], 640, 500, -750);
+  checkVec(d["sinks"][0]["max"], 760, 600, -450);
+  CHECK(j["wires"] == json::array({{{"input", 1},
+                                    {"robot", nullptr},
+                                    {"source", {{"kind", "sensor"}, {"sensor", "eye"}}},
+                                    {"after", 0.0},
+                                    {"inverted", false}}}));
+  // A cell without devices lists none.
+  const json plain = describeJson("scara-pick");
+  CHECK(plain["devices"] == json({{"sensors", json::array()}, {"conveyors", json::array()}, {"feeders", json::array()},
+                                  {"sinks", json::array()}}));
+  CHECK(plain["wires"] == json::array());
+}
+
+TEST_CASE("describe: adept-cell's devices in text, the language server's hover sentences", "[models][describe][devices]") {
+  const auto r = runCli({"describe", "adept-cell"});
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out,
+             Catch::Contains("\ndevices\n"
+                             "  sensor `eye`: a beam from (300, 520, 440) to (300, 520, 760); on while it sees parts across it\n"
+                             "  conveyor `infeed`: runs its belt at 100 length units per second while output 1 is on "
+                             "(the belt of object 1)\n"
+                             "  conveyor `outfeed`: runs its belt at 100 length units per second always (the belt of object 4)\n"
+                             "  feeder `parts`: puts a `block` at (-740, 500, 620) at the start and then every 6 s\n"
+                             "  sink `done`: a part whose centre enters the zone from (640, 500, -750) to (760, 600, -450) "
+                             "leaves the cell, counted\n"
+                             "  wire: input 1 follows sensor `eye`\n"
+                             "\ninputs 1..8 and outputs"));
+  CHECK(runCli({"describe", "scara-pick"}).out.find("devices") == std::string::npos);
+}
+
+TEST_CASE("describe: a zone that sees all, a feeder on a signal, a wire AFTER and INVERTED", "[models][describe][devices]") {
+  // The ZONE's edges left right top bottom front back: x 0..100, y
+  // 500..600, z 650..700.
+  rs::testing::TempDir dir;
+  const std::string cell = dir.write("dev.rsd", rs::testing::lines({
+                                                    "WORKCELL dev",
+                                                    "  ROBOT adept-one AT 0 0 0",
+                                                    "  OBJECT conveyor AT -750 0 750 AS belt",
+                                                    "  SENSOR eye ZONE 0 100 600 500 700 650 SEES ALL",
+                                                    "  CONVEYOR belt SPEED 50 RUN eye",
+                                                    "  FEEDER more block AT -740 500 620 WHEN OUT 2 COUNT 3",
+                                                    "  WIRE eye TO IN 2 AFTER 0.5 INVERTED",
+                                                    "  WIRE OUT 3 TO IN 4",
+                                                    "END",
+                                                }));
+  const json j = describeJson(cell);
+  const json& d = j["devices"];
+  REQUIRE(d["sensors"].size() == 1);
+  CHECK(d["sensors"][0]["kind"] == "zone");
+  checkVec(d["sensors"][0]["min"], 0, 500, 650);
+  checkVec(d["sensors"][0]["max"], 100, 600, 700);
+  CHECK(d["sensors"][0]["sees"] == "all");
+  CHECK(d["conveyors"][0]["run"] == json({{"kind", "sensor"}, {"sensor", "eye"}}));
+  CHECK(d["feeders"][0]["every"].is_null());
+  CHECK(d["feeders"][0]["when"] == json({{"kind", "output"}, {"number", 2}}));
+  CHECK(d["feeders"][0]["count"] == 3);
+  REQUIRE(j["wires"].size() == 2);
+  CHECK(j["wires"][0]["input"] == 2);
+  CHECK(j["wires"][0]["after"] == 0.5);
+  CHECK(j["wires"][0]["inverted"] == true);
+  CHECK(j["wires"][1]["source"] == json({{"kind", "output"}, {"number", 3}}));
+  const auto r = runCli({"describe", cell});
+  REQUIRE(r.code == 0);
+  for (const char* line : {
+           "  sensor `eye`: a zone from (0, 500, 650) to (100, 600, 700); on while it sees parts and robots in it\n",
+           "  conveyor `belt`: runs its belt at 50 length units per second while sensor `eye` is on (the belt of object 1)\n",
+           "  feeder `more`: puts a `block` at (-740, 500, 620) on each rising edge of output 2, at most 3\n",
+           "  wire: input 2 follows sensor `eye`, 0.5 s later, inverted\n",
+           "  wire: input 4 follows output 3\n",
+       })
+    CHECK_THAT(r.out, Catch::Contains(line));
+}

@@ -82,6 +82,7 @@ TEST_CASE("pendant: shows the devices, an output runs its belt, the cell runs on
   const nlohmann::ordered_json j = rs::teach::pendantJson(s, p.placements());
   CHECK(j["devices"]["sensors"][0]["on"] == true);
   CHECK(j["devices"]["conveyors"][0]["running"] == true);
+  CHECK(j["devices"]["feeders"] == nlohmann::ordered_json::array({{{"name", "parts"}, {"fed", 1}}}));  // its first block, at 0 s
   CHECK(j["objects"][placed + 1]["present"] == false);
   // Any other operation leaves the cell's motion behind.
   REQUIRE(p.setOutput(1, false).ok);

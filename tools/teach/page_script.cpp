@@ -174,11 +174,12 @@ const std::string_view kScript = R"JS('use strict';
     buildAxes();
     [...el('inputs').children].forEach((d, i) => d.classList.toggle('on', st.inputs[i]));
     [...el('outputs').children].forEach((d, i) => d.classList.toggle('on', st.outputs[i]));
-    // The cell's devices: a sensor drawn while ON, and listed with its belts.
-    const dev = st.devices || { sensors: [], conveyors: [] };
+    // The cell's devices: a sensor drawn while ON, and listed with its belts and feeders.
+    const dev = st.devices || { sensors: [], conveyors: [], feeders: [] };
     dev.sensors.forEach((x, i) => D.setSensor(i, x.on));
     el('devices').textContent = dev.sensors.map((x) => 'sensor ' + x.name + (x.on ? ' ON' : ' off') + ' (' + x.count + ')')
       .concat(dev.conveyors.map((x) => 'belt ' + x.name + (x.running ? ' runs' : ' stopped')))
+      .concat((dev.feeders || []).map((x) => 'feeder ' + x.name + ' fed ' + x.fed))
       .join('  ·  ');
     const list = el('points');
     list.textContent = '';

@@ -9,6 +9,7 @@
 #include "base/number_text.h"
 #include "base/seconds.h"
 #include "tools/teach/point_target.h"
+#include "vm/io_lines.h"
 #include "vm/motor_range.h"
 
 namespace rs::teach {
@@ -308,15 +309,15 @@ Outcome Pendant::goTo(std::string_view name) {
 }
 
 Outcome Pendant::toggleInput(int line) {
-  if (line < 1 || line > 8) return refuse(fmt::format("inputs are 1..8, not {}", line), true);
+  if (!vm::isIoLine(line)) return refuse(fmt::format("inputs are 1..{}, not {}", vm::kIoCount, line), true);
   if (!device_.empty()) return refuse("with a device, the inputs are the controller's: they cannot be switched here");
   moved_ = false;
-  inputs_ ^= static_cast<std::uint8_t>(1u << (line - 1));
-  return done({true, fmt::format("input {} {}", line, (inputs_ >> (line - 1)) & 1 ? "ON" : "OFF")});
+  inputs_ = vm::withLine(inputs_, line, !vm::lineIsOn(inputs_, line));
+  return done({true, fmt::format("input {} {}", line, vm::lineIsOn(inputs_, line) ? "ON" : "OFF")});
 }
 
 Outcome Pendant::setOutput(int line, bool on) {
-  if (line < 1 || line > 8) return refuse(fmt::format("outputs are 1..8, not {}", line), true);
+  if (!vm::isIoLine(line)) return refuse(fmt::format("outputs are 1..{}, not {}", vm::kIoCount, line), true);
   if (!fault_.empty()) return refuse("the device failed, nothing is sent: " + fault_);
   moved_ = false;
   const vm::Status st = rig_->machine().setOutput(line, on);
@@ -439,7 +440,7 @@ PendantState Pendant::state() const {
   }
   s.gripper = gripperState(motors_, s.encoders);
   // In simulation, the pendant's switches and what the cell's wires drive.
-  s.inputs = device_.empty() ? static_cast<std::uint8_t>(inputs_ | rig_->machine().inputs()) : rig_->machine().inputs();
+  s.inputs = device_.empty() ? static_cast<vm::IoMask>(inputs_ | rig_->machine().inputs()) : rig_->machine().inputs();
   s.outputs = rig_->machine().outputs();
   for (const runtime::ObjectView& o : rig_->objects())
     s.objects.push_back({std::string(o.name), o.pose, o.held, o.moved, o.present});

@@ -25,6 +25,7 @@
 #include "runtime/run/rig.h"
 #include "tools/teach/pendant_state.h"
 #include "tools/teach/program_file.h"
+#include "vm/io_lines.h"
 #include "vm/machine.h"
 
 namespace rs::rhino {
@@ -87,7 +88,7 @@ class Pendant {
   /// the program's MOVEP takes the arm (point_target.h): resolved with the
   /// rows above it, the gripper left as it is when it writes no GRIP.
   Outcome goTo(std::string_view name);
-  /// Input `line` (1..8) flips (simulation: a switch on the pendant).
+  /// Input `line` (1..vm::kIoCount) flips (simulation: a switch on the pendant).
   Outcome toggleInput(int line);
   Outcome setOutput(int line, bool on);
   /// The cell's devices act for `seconds` of simulated time with the robot
@@ -133,7 +134,7 @@ class Pendant {
   std::string device_;
   rhino::RhinoMachine* rhino_ = nullptr;      // the device, when it is a Rhino (owned by rig_)
   std::optional<runtime::RigSnapshot> start_;  // simulation: what reset cell restores
-  std::uint8_t inputs_ = 0;                    // simulation: the pendant's input switches
+  vm::IoMask inputs_ = 0;                      // simulation: the pendant's input switches
   bool moved_ = false;                         // the last operation was a move
   vm::Micros moveStart_ = 0, moveEnd_ = 0;
   std::optional<workcell::CartesianJog> cartesian_;  // when the robot has a chain

@@ -63,6 +63,8 @@ void addDeviceStates(const workcell::Workcell& cell, const runtime::CellDevices*
     state.sensors.push_back({cell.devices.sensors[i].name, devices->sensorOn(i), devices->sensorCount(i)});
   for (std::size_t i = 0; i < cell.devices.conveyors.size(); ++i)
     state.conveyors.push_back({cell.devices.conveyors[i].name, devices->running(i), devices->carried(i)});
+  for (std::size_t i = 0; i < cell.devices.feeders.size(); ++i)
+    state.feeders.push_back({cell.devices.feeders[i].name, false, devices->fed(i)});
 }
 
 Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& placed) {
@@ -83,10 +85,11 @@ Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& pl
                        {"moved", ob.moved},
                        {"present", ob.present}});
   }
-  Json sensors = Json::array(), conveyors = Json::array();
+  Json sensors = Json::array(), conveyors = Json::array(), feeders = Json::array();
   for (const PendantDevice& d : s.sensors) sensors.push_back({{"name", d.name}, {"on", d.on}, {"count", d.count}});
   for (const PendantDevice& d : s.conveyors)
     conveyors.push_back({{"name", d.name}, {"running", d.on}, {"carried", d.count}});
+  for (const PendantDevice& d : s.feeders) feeders.push_back({{"name", d.name}, {"fed", d.count}});
   Json points = Json::array();
   for (const PendantPoint& p : s.points)
     points.push_back({{"name", p.name}, {"values", p.values}, {"line", p.line}, {"readable", p.readable}, {"pose", p.pose}});
@@ -117,7 +120,7 @@ Json pendantJson(const PendantState& s, const std::vector<Eigen::Isometry3d>& pl
           {"inputs", lines(s.inputs)},
           {"outputs", lines(s.outputs)},
           {"objects", objects},
-          {"devices", {{"sensors", sensors}, {"conveyors", conveyors}}},
+          {"devices", {{"sensors", sensors}, {"conveyors", conveyors}, {"feeders", feeders}}},
           {"points", points},
           {"clock", s.clock},
           {"motion", motion},

@@ -14,6 +14,7 @@
 
 #include "model/workcell/model.h"
 #include "vm/image.h"
+#include "vm/io_lines.h"
 #include "vm/machine.h"
 
 namespace rs::runtime {
@@ -79,9 +80,12 @@ struct PendantState {
   /// The axes of a world and of a tool jog at this pose (empty without a chain).
   std::vector<PendantJogAxis> worldAxes, toolAxes;
   GripperState gripper = GripperState::None;
-  std::uint8_t inputs = 0, outputs = 0;  ///< bit 0 = line 1
+  vm::IoMask inputs = 0, outputs = 0;  ///< bit 0 = line 1
   std::vector<PendantObject> objects;
-  std::vector<PendantDevice> sensors, conveyors;  ///< the cell's devices (none without them)
+  /// The cell's devices (none without them): a sensor's `count` is how often
+  /// it turned ON, a conveyor's the parts it carried, a feeder's (never `on`)
+  /// the parts it fed.
+  std::vector<PendantDevice> sensors, conveyors, feeders;
   std::vector<PendantPoint> points;
   vm::Micros clock = 0;  ///< the machine's clock
   std::vector<MotionFrame> motion;  ///< the last move, time-stepped (empty after a non-move)

@@ -12,6 +12,7 @@
 #include "compiler/stimuli/stimuli_text.h"
 #include "tools/testrun/expectation_words.h"
 #include "tools/testrun/golden_trace.h"
+#include "vm/io_lines.h"
 #include "vm/stop_reason.h"
 
 namespace rs::testrun {
@@ -244,7 +245,7 @@ bool subject(LineReader& r, Expectation& e) {
     const bool output = is(*first, "output");
     e.kind = output ? ExpectKind::Output : ExpectKind::Input;
     std::int64_t n = 0;
-    if (!r.integer(output ? "an output number" : "an input number", n, 1, 8)) return false;
+    if (!r.integer(output ? "an output number" : "an input number", n, 1, vm::kIoCount)) return false;
     e.number = static_cast<int>(n);
     if (output && r.accept("pulses")) {
       e.kind = ExpectKind::Pulses;
@@ -266,7 +267,7 @@ bool subject(LineReader& r, Expectation& e) {
       const bool secondOutput = r.accept("output");
       if (!secondOutput && !r.keyword("input")) return false;
       std::int64_t m = 0;
-      if (!r.integer(secondOutput ? "an output number" : "an input number", m, 1, 8)) return false;
+      if (!r.integer(secondOutput ? "an output number" : "an input number", m, 1, vm::kIoCount)) return false;
       e.second = {secondOutput, static_cast<int>(m), true};
       return r.onOff(e.second.on) && r.end();
     }

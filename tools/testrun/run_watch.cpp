@@ -1,17 +1,16 @@
 #include "tools/testrun/run_watch.h"
 
 #include "base/ascii.h"
+#include "vm/io_lines.h"
 
 namespace rs::testrun {
 
 namespace {
 
-bool lineIsOn(std::uint8_t mask, int number) { return ((mask >> (number - 1)) & 1) != 0; }
-
 // An event of an Order expectation, or an output turning ON for Pulses:
 // ON when the line is ON, OFF when it goes OFF after having been ON.
-bool turnsTo(const LineEvent& ev, std::uint8_t mask, bool& was) {
-  const bool now = lineIsOn(mask, ev.number);
+bool turnsTo(const LineEvent& ev, vm::IoMask mask, bool& was) {
+  const bool now = vm::lineIsOn(mask, ev.number);
   const bool happened = ev.on ? now : (was && !now);
   was = now;
   return happened;
@@ -102,7 +101,7 @@ RunWatch::RunWatch(runtime::Run& run, const std::vector<Expectation>& expectatio
   inputs_ = pendingMask_ = sim.inputs();
   pendingAt_ = sim.now();
   if (!inputProbes_.empty() || !onInputLevels_.empty())
-    run.onInputChange([this](vm::Micros at, std::uint8_t mask) { inputChanged(at, mask); });
+    run.onInputChange([this](vm::Micros at, vm::IoMask mask) { inputChanged(at, mask); });
 }
 
 void RunWatch::queue(ProbeQueue& q, std::uint32_t watcher, vm::Micros at, ProbeKind kind) {
@@ -149,7 +148,7 @@ void RunWatch::step(std::uint32_t index, const vm::Interpreter* vm) {
 // every change at one time) is settled once the clock has passed its time;
 // changes at one time that end where the level before them was leave no
 // level, as in a RunLog.
-void RunWatch::inputChanged(vm::Micros at, std::uint8_t mask) {
+void RunWatch::inputChanged(vm::Micros at, vm::IoMask mask) {
   settleInputs(at);
   if (pending_ && pendingAt_ == at) {
     pendingMask_ = mask;
@@ -167,7 +166,7 @@ void RunWatch::finishLevel() {
   level(pendingAt_, pendingMask_);
 }
 
-void RunWatch::level(vm::Micros at, std::uint8_t mask) {
+void RunWatch::level(vm::Micros at, vm::IoMask mask) {
   for (const std::uint32_t id : onInputLevels_) {
     Watcher& w = watchers_[id];
     const Expectation& e = of(w);
@@ -178,7 +177,7 @@ void RunWatch::level(vm::Micros at, std::uint8_t mask) {
       continue;
     }
     if (w.failed || at <= e.during->first || at >= e.during->second) continue;
-    if (lineIsOn(mask, e.number) != e.on) windowFailed(w, {at, e.on ? 0 : 1, std::nullopt});
+    if (vm::lineIsOn(mask, e.number) != e.on) windowFailed(w, {at, e.on ? 0 : 1, std::nullopt});
   }
 }
 
@@ -222,7 +221,7 @@ void RunWatch::settle(const Probe& p) {
   switch (p.kind) {
     case ProbeKind::Output: {
       const std::optional<Setter> by = setterAt(outputChanges_, p.at);
-      const WatchedMoment m{p.at, lineIsOn(outputs_, e.number) ? 1 : 0,
+      const WatchedMoment m{p.at, vm::lineIsOn(outputs_, e.number) ? 1 : 0,
                             by ? std::optional<std::uint32_t>(by->line) : std::nullopt};
       if (!w.window)
         a.moment = m;
@@ -231,7 +230,7 @@ void RunWatch::settle(const Probe& p) {
       break;
     }
     case ProbeKind::Input: {
-      const WatchedMoment m{p.at, lineIsOn(inputs_, e.number) ? 1 : 0, std::nullopt};
+      const WatchedMoment m{p.at, vm::lineIsOn(inputs_, e.number) ? 1 : 0, std::nullopt};
       if (!w.window) {
         a.moment = m;
         queue(stepProbes_, p.watcher, p.at, ProbeKind::InputCause);
@@ -253,7 +252,7 @@ void RunWatch::settle(const Probe& p) {
   }
 }
 
-void RunWatch::outputChanged(std::uint8_t outputs, std::uint32_t line, vm::Micros end) {
+void RunWatch::outputChanged(vm::IoMask outputs, std::uint32_t line, vm::Micros end) {
   outputs_ = outputs;
   outputChanges_.before = outputChanges_.last;
   outputChanges_.last = Setter{outputs, line, end};
@@ -262,7 +261,7 @@ void RunWatch::outputChanged(std::uint8_t outputs, std::uint32_t line, vm::Micro
     const Expectation& e = of(w);
     WatchAnswer& a = answers_[w.expectation];
     if (e.kind == ExpectKind::Pulses) {
-      const bool on = lineIsOn(outputs, e.number);
+      const bool on = vm::lineIsOn(outputs, e.number);
       if (on && !w.was[0]) ++a.pulses;
       w.was[0] = on;
     } else if (e.kind == ExpectKind::Order) {

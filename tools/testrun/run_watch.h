@@ -27,6 +27,7 @@
 
 #include "runtime/run/run.h"
 #include "tools/testrun/expectation.h"
+#include "vm/io_lines.h"
 
 namespace rs::testrun {
 
@@ -110,14 +111,14 @@ class RunWatch final : public vm::StepObserver {
   };
 
   void step(std::uint32_t index, const vm::Interpreter* vm);
-  void inputChanged(vm::Micros at, std::uint8_t mask);
+  void inputChanged(vm::Micros at, vm::IoMask mask);
   void finishLevel();
-  void level(vm::Micros at, std::uint8_t mask);
+  void level(vm::Micros at, vm::IoMask mask);
   void queue(ProbeQueue& q, std::uint32_t watcher, vm::Micros at, ProbeKind kind);
   void settleInputs(vm::Micros before);
   void settleSteps(vm::Micros before);
   void settle(const Probe& p);
-  void outputChanged(std::uint8_t outputs, std::uint32_t line, vm::Micros end);
+  void outputChanged(vm::IoMask outputs, std::uint32_t line, vm::Micros end);
   void variableWritten(std::uint32_t slot, std::int32_t value, std::uint32_t line, vm::Micros end);
   void moved(std::size_t motor, const runtime::MotorSegment& s, std::uint32_t line);
   void windowFailed(Watcher& w, WatchedMoment m);
@@ -136,18 +137,18 @@ class RunWatch final : public vm::StepObserver {
   // The run so far, as of the last step seen.
   vm::Micros lastNow_ = 0;
   std::optional<std::uint32_t> lastLine_;  // of the last step
-  std::uint8_t outputs_ = 0;
+  vm::IoMask outputs_ = 0;
   SlotHistory outputChanges_;           // values unused: the mask is outputs_
   std::vector<SlotHistory> variables_;  // per slot, when any variable is watched
   std::vector<runtime::MotorSegment> segments_;
   std::vector<std::int32_t> positions_;
   // Inputs: the mask now, the level at `pendingAt` that later changes at the
   // same time may still change (or undo), and the last settled level.
-  std::uint8_t inputs_ = 0;
+  vm::IoMask inputs_ = 0;
   bool pending_ = true;
   vm::Micros pendingAt_ = 0;
-  std::uint8_t pendingMask_ = 0;
-  std::optional<std::uint8_t> settledMask_;
+  vm::IoMask pendingMask_ = 0;
+  std::optional<vm::IoMask> settledMask_;
 };
 
 }  // namespace rs::testrun

@@ -14,6 +14,7 @@
 #include "model/kinematics/forward_kinematics.h"
 #include "model/workcell/reach.h"
 #include "model/workcell/support.h"
+#include "tools/cli/lib/describe_devices.h"
 #include "tools/cli/lib/exit_codes.h"
 #include "vm/io_lines.h"
 
@@ -236,6 +237,8 @@ int describeCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
       objects.push_back(o);
     }
     j["objects"] = objects;
+    j["devices"] = describeDevicesJson(*cell);
+    j["wires"] = describeWiresJson(*cell);
     j["inputs"] = kInputs;
     j["outputs"] = kOutputs;
     out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
@@ -261,6 +264,7 @@ int describeCommand(const RobotQuery& q, std::ostream& out, std::ostream& err) {
     out << fmt::format("  centre  {}\n", point(boxes[i].center()));
     out << fmt::format("  on      {}\n", supportText(workcell::supportOf(boxes[i], cell->objects, i), *cell));
   }
+  describeDevicesText(*cell, out);
   out << fmt::format("\ninputs 1..{} and outputs 1..{}: the controller's lines (descriptions do not name them)\n",
                      kInputs, kOutputs);
   out << "(values rounded to 4 decimals; --json gives full precision. Reach and span: found by search over whole "

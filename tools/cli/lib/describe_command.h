@@ -2,7 +2,8 @@
 // numbers a student can check a program against: the robot's motors
 // (letter, joint type, precision, range, speed, coupling), where it stands
 // and how far it reaches; every object's box, centre and what it stands
-// on; the inputs and outputs.
+// on; its devices and the wires to its inputs (describe_devices.h); the
+// inputs and outputs.
 #pragma once
 
 #include <ostream>

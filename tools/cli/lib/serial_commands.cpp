@@ -27,6 +27,7 @@
 #include "runtime/rhino/serial_port.h"
 #include "compiler/stimuli/stimuli_text.h"
 #include "stdlib/default_robot.h"
+#include "vm/io_lines.h"
 
 namespace rs::cli {
 namespace {
@@ -161,16 +162,17 @@ int portsCommand(const PortsOptions& o, std::ostream& out, std::ostream&) {
 // --- robotsim emulate --------------------------------------------------------------
 
 void addEmulateOptions(CLI::App* cmd, EmulateOptions& o) {
-  cmd->footer(
+  cmd->footer(fmt::format(
       "Console commands (standard input or --script, one per line):\n"
-      "  in N on|off              set input N (1..8)\n"
+      "  in N on|off              set input N (1..{})\n"
       "  switch L open|closed|auto  force motor L's home switch, or let position decide\n"
       "  fault KIND [after N]     start a fault: silence, garbage, slow, hangup; 'fault off' ends it\n"
       "  status                   print the whole state\n"
       "  wait SECONDS             pause the script\n"
       "  quit                     stop the emulator\n"
       "With --controllers N, 'K: COMMAND' is for controller K (1..N); without it, for controller 1.\n"
-      "See docs/serial.md, \"The emulator\".");
+      "See docs/serial.md, \"The emulator\".",
+      vm::kIoCount));
   cmd->add_option("--dialect", o.dialect, "Controller to play: mark3 (default) or mark4")
       ->check(CLI::IsMember({"mark3", "mark4"}));
   cmd->add_option("--robot", o.robot, "Robot whose motors to emulate: library name or .rsd file (default rhino-scara)");
@@ -254,10 +256,11 @@ std::string consoleCommand(ControllerConsole s, const std::string& line) {
     s.quit = true;
   } else if (verb == "help") {
     s.out << "in N on|off | switch L open|closed|auto | fault KIND [after N] | fault off | status | wait S | quit\n";
-  } else if (verb == "in" && w.size() == 3 && (w[2] == "on" || w[2] == "off") && w[1].size() == 1 && w[1][0] >= '1' &&
-             w[1][0] <= '8') {
-    s.emu.setInput(w[1][0] - '0', w[2] == "on");
-    s.out << fmt::format("input {} {}\n", w[1], w[2] == "on" ? "ON" : "OFF");
+  } else if (verb == "in" && w.size() == 3 && (w[2] == "on" || w[2] == "off")) {
+    const auto n = parseWhole<int>(w[1], 1, vm::kIoCount);
+    if (!n) return fmt::format("in N on|off: N is an input 1..{}, not {}", vm::kIoCount, stimuli::text::quoted(w[1]));
+    s.emu.setInput(*n, w[2] == "on");
+    s.out << fmt::format("input {} {}\n", *n, w[2] == "on" ? "ON" : "OFF");
   } else if (verb == "switch" && w.size() == 3 && w[1].size() == 1 && std::toupper(w[1][0]) >= 'A' &&
              std::toupper(w[1][0]) <= 'H' && (w[2] == "open" || w[2] == "closed" || w[2] == "auto")) {
     const char letter = static_cast<char>(std::toupper(w[1][0]));

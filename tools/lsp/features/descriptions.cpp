@@ -12,6 +12,7 @@
 #include "base/number_text.h"
 #include "compiler/description/description.h"
 #include "compiler/description/library.h"
+#include "tools/lsp/device_text.h"
 #include "tools/lsp/features/features.h"
 #include "tools/lsp/protocol.h"
 #include "tools/lsp/uri.h"
@@ -132,22 +133,6 @@ bool covers(diag::Pos name, std::size_t length, diag::Pos pos) {
   return name.line == pos.line && pos.col >= name.col && pos.col <= name.col + length;
 }
 
-std::string point(const Eigen::Vector3d& p) {
-  return fmt::format("({}, {}, {})", formatNumber(p.x()), formatNumber(p.y()), formatNumber(p.z()));
-}
-
-std::string signalText(const workcell::Signal& s) {
-  using K = workcell::Signal::Kind;
-  switch (s.kind) {
-    case K::On: return "always on";
-    case K::Off: return "always off";
-    case K::Output: return fmt::format("output {}", s.number);
-    case K::Input: return fmt::format("input {}", s.number);
-    case K::Sensor: return fmt::format("sensor `{}`", s.name);
-  }
-  return {};
-}
-
 // Every signal a workcell's devices read, for go to definition.
 std::vector<const workcell::Signal*> signalsIn(const workcell::Devices& d) {
   std::vector<const workcell::Signal*> out;
@@ -164,42 +149,21 @@ const workcell::Sensor* sensorNamed(const workcell::Devices& d, const std::strin
   return nullptr;
 }
 
-std::string sensorText(const workcell::Sensor& s) {
-  const char* sees = s.sees == workcell::Sensor::Sees::Parts ? "parts" : s.sees == workcell::Sensor::Sees::Robots ? "robots" : "parts and robots";
-  if (s.shape == workcell::Sensor::Shape::Beam)
-    return fmt::format("sensor `{}`: a beam from {} to {}; on while it sees {} across it", s.name, point(s.a), point(s.b), sees);
-  return fmt::format("sensor `{}`: a zone from {} to {}; on while it sees {} in it", s.name, point(s.zone.min()),
-                     point(s.zone.max()), sees);
-}
-
 // Hover on a device's name, where it is declared or where a signal names it.
 std::string deviceHover(const workcell::Devices& d, diag::Pos pos) {
   for (const workcell::Sensor& s : d.sensors)
-    if (covers(s.pos, s.name.size(), pos)) return sensorText(s);
+    if (covers(s.pos, s.name.size(), pos)) return sensorSentence(s);
   for (const workcell::Signal* s : signalsIn(d))
     if (s->kind == workcell::Signal::Kind::Sensor && covers(s->pos, s->name.size(), pos))
-      if (const workcell::Sensor* sensor = sensorNamed(d, s->name)) return sensorText(*sensor);
+      if (const workcell::Sensor* sensor = sensorNamed(d, s->name)) return sensorSentence(*sensor);
   for (const workcell::Conveyor& v : d.conveyors)
-    if (covers(v.pos, v.name.size(), pos))
-      return fmt::format("conveyor `{}`: runs its belt at {} length units per second {}", v.name, formatNumber(v.speed),
-                         v.run.kind == workcell::Signal::Kind::On    ? std::string("always")
-                         : v.run.kind == workcell::Signal::Kind::Off ? std::string("never")
-                                                                     : fmt::format("while {} is on", signalText(v.run)));
+    if (covers(v.pos, v.name.size(), pos)) return conveyorSentence(v);
   for (const workcell::Feeder& f : d.feeders)
-    if (covers(f.pos, f.name.size(), pos))
-      return fmt::format("feeder `{}`: puts a `{}` at {} {}{}", f.name, f.objectName, point(f.at),
-                         f.everyUs ? fmt::format("at the start and then every {} s", formatNumber(*f.everyUs / 1e6))
-                                   : fmt::format("on each rising edge of {}", signalText(*f.when)),
-                         f.count ? fmt::format(", at most {}", *f.count) : std::string());
+    if (covers(f.pos, f.name.size(), pos)) return feederSentence(f);
   for (const workcell::Sink& k : d.sinks)
-    if (covers(k.pos, k.name.size(), pos))
-      return fmt::format("sink `{}`: a part whose centre enters the zone from {} to {} leaves the cell, counted", k.name,
-                         point(k.zone.min()), point(k.zone.max()));
+    if (covers(k.pos, k.name.size(), pos)) return sinkSentence(k);
   for (const workcell::Wire& w : d.wires)
-    if (w.pos.line == pos.line)
-      return fmt::format("wire: input {} follows {}{}{}", w.input, signalText(w.source),
-                         w.afterUs ? fmt::format(", {} s later", formatNumber(w.afterUs / 1e6)) : std::string(),
-                         w.inverted ? ", inverted" : "");
+    if (w.pos.line == pos.line) return wireSentence(w);
   return {};
 }
 

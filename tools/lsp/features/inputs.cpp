@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "base/number_text.h"
+#include "tools/lsp/device_text.h"
 #include "tools/lsp/features/features.h"
 
 namespace rs::lsp {
@@ -13,17 +14,7 @@ using base::formatNumber;
 
 namespace {
 
-std::string point(const Eigen::Vector3d& v) {
-  return fmt::format("{} {} {}", formatNumber(v.x()), formatNumber(v.y()), formatNumber(v.z()));
-}
-
-std::string sensorText(const workcell::Sensor& s) {
-  if (s.shape == workcell::Sensor::Shape::Beam) return fmt::format("sensor {} (BEAM {} {})", s.name, point(s.a), point(s.b));
-  const Eigen::AlignedBox3d& z = s.zone;
-  return fmt::format("sensor {} (ZONE {} {} {} {} {} {})", s.name, formatNumber(z.min().x()), formatNumber(z.max().x()),
-                     formatNumber(z.max().y()), formatNumber(z.min().y()), formatNumber(z.max().z()),
-                     formatNumber(z.min().z()));
-}
+std::string sensorText(const workcell::Sensor& s) { return fmt::format("sensor {} ({})", s.name, sensorShape(s)); }
 
 std::string signalText(const workcell::Signal& s, const workcell::Workcell& cell) {
   using K = workcell::Signal::Kind;

@@ -137,7 +137,10 @@ int worldPanel(Canvas& c, const PendantState& s, int row, int bottom) {
         if (on) c.mark(row + 1 + k, 10 + 2 * i, 1, Paint::Lamp);
       }
     }
-    row += 4;
+    // A blank row before HOLDS, unless the device rows under it would
+    // then not fit (a five-motor robot's cell with three kinds at 80x24).
+    const int below = 1 + !s.sensors.empty() + !s.conveyors.empty() + !s.feeders.empty();
+    row += row + 4 + below <= bottom ? 4 : 3;
   }
   if (row < bottom) {
     std::string held = "nothing";
@@ -148,21 +151,21 @@ int worldPanel(Canvas& c, const PendantState& s, int row, int bottom) {
     c.put(row, 10, held, kLeftWidth);
     ++row;
   }
-  // The cell's devices: each sensor ON or off (with its count of ON edges),
-  // each belt running or stopped.
-  const auto devices = [&](const char* title, const std::vector<PendantDevice>& list, const char* on,
-                           const char* off) {
+  // The cell's devices, as the page lists them: each sensor ON or off with
+  // its count of ON edges, each belt running or stopped, each feeder's count.
+  const auto devices = [&](const char* title, const std::vector<PendantDevice>& list,
+                           const auto& says) {
     if (list.empty() || row >= bottom) return;
     std::string text;
-    for (const PendantDevice& d : list)
-      text += fmt::format("{}{} {}", text.empty() ? "" : ", ", d.name, d.on ? on : off);
+    for (const PendantDevice& d : list) text += fmt::format("{}{} {}", text.empty() ? "" : ", ", d.name, says(d));
     c.put(row, 1, title);
     c.mark(row, 1, static_cast<int>(std::string_view(title).size()), Paint::Title);
     c.put(row, 10, text, kLeftWidth);
     ++row;
   };
-  devices("SENSORS", s.sensors, "ON", "off");
-  devices("BELTS", s.conveyors, "runs", "stopped");
+  devices("SENSORS", s.sensors, [](const PendantDevice& d) { return fmt::format("{} ({})", d.on ? "ON" : "off", d.count); });
+  devices("BELTS", s.conveyors, [](const PendantDevice& d) { return std::string(d.on ? "runs" : "stopped"); });
+  devices("FEEDERS", s.feeders, [](const PendantDevice& d) { return fmt::format("fed {}", d.count); });
   return row;
 }
 
