@@ -178,8 +178,18 @@ void RunWatch::level(vm::Micros at, std::uint8_t mask) {
       continue;
     }
     if (w.failed || at <= e.during->first || at >= e.during->second) continue;
-    if (lineIsOn(mask, e.number) != e.on) windowFailed(w, {at, e.on ? 0 : 1, std::nullopt});
+    if (lineIsOn(mask, e.number) != e.on) windowFailed(w, inputMoment(at, mask, e.number));
   }
+}
+
+// The machine tells the watch of a change before the rig hears its cause,
+// so the rig's last change is the one in effect at any moment the watch
+// settles (no later change has come yet).
+WatchedMoment RunWatch::inputMoment(vm::Micros at, std::uint8_t mask, int input) const {
+  WatchedMoment m{at, lineIsOn(mask, input) ? 1 : 0, std::nullopt, std::nullopt};
+  if (const runtime::InputChangeRecord* last = run_.rig().lastInputChange(input); last && last->cause.on == (m.value != 0))
+    m.change = *last;
+  return m;
 }
 
 void RunWatch::windowFailed(Watcher& w, WatchedMoment m) {
@@ -231,7 +241,7 @@ void RunWatch::settle(const Probe& p) {
       break;
     }
     case ProbeKind::Input: {
-      const WatchedMoment m{p.at, lineIsOn(inputs_, e.number) ? 1 : 0, std::nullopt};
+      const WatchedMoment m = inputMoment(p.at, inputs_, e.number);
       if (!w.window) {
         a.moment = m;
         queue(stepProbes_, p.watcher, p.at, ProbeKind::InputCause);
