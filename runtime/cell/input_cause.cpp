@@ -29,4 +29,8 @@ std::string inputChangeText(const InputCause& c) {
   return fmt::format("input {} {}: {}", c.input, c.on ? "ON" : "OFF", inputCauseText(c));
 }
 
+std::string inputSinceText(std::string_view seconds, const InputCause& c) {
+  return fmt::format("since {} s: {}", seconds, inputCauseText(c));
+}
+
 }  // namespace rs::runtime

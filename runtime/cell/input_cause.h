@@ -2,11 +2,12 @@
 // reactive rule (an output's change, after the rule's delay), a wire from
 // a device, or the debugger's `set input`. Every change of an input is
 // reported with its cause in the same words, wherever it shows (the trace,
-// the run log, the JSON trace).
+// the run log, the JSON trace, the debugger, the adapter, robotsim test).
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace rs::runtime {
 
@@ -32,5 +33,9 @@ const char* inputCauseWord(InputCause::Kind kind);
 std::string inputCauseText(const InputCause& cause);
 /// "input 3 ON: stimulus, line 3": the trace's words for one change.
 std::string inputChangeText(const InputCause& cause);
+/// "since 10.000 s: wire from sensor eye": what set an input last and when
+/// (`seconds`, as the caller writes its times: "10.000", "0.0003"), as the
+/// front ends show it beside the input's value.
+std::string inputSinceText(std::string_view seconds, const InputCause& cause);
 
 }  // namespace rs::runtime

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 
+#include "runtime/sim/input_schedule.h"
+
 namespace rs::runtime {
 
 Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli,
          CollisionMode collisions)
     : cell_(withFeederSlots(std::move(cell))), ownCell_(std::make_unique<Cell>(cell_.get())), running_(ownCell_.get()) {
+  noteInputsAtStart(stimuli);
   auto sim = std::make_unique<SimMachine>(std::move(motors), std::move(stimuli), running_->clock());
   sim_ = sim.get();
   motion_ = std::move(sim);
@@ -26,6 +29,7 @@ Rig::Rig(std::shared_ptr<const workcell::Workcell> cell, Cell& shared, std::size
          std::vector<vm::MotorSpec> motors, stimuli::Stimuli stimuli, CollisionMode collisions,
          vm::Machine* follower)
     : robotIndex_(robot), cell_(std::move(cell)), running_(&shared) {
+  noteInputsAtStart(stimuli);
   auto sim = std::make_unique<SimMachine>(std::move(motors), std::move(stimuli), running_->clock());
   sim_ = sim.get();
   motion_ = std::move(sim);
@@ -89,6 +93,7 @@ void Rig::build(vm::Machine& motion, CollisionMode collisions) {
   if (sim_)
     sim_->onInputCause([this](vm::Micros at, const InputCause& c) {
       if (pendingInputs_.size() < kMaxInputsPerStep) pendingInputs_.push_back({at, c});
+      lastInputs_[static_cast<std::size_t>(c.input - 1)] = InputChangeRecord{at, c};
     });
   if (!cell_) return;
   world_ = running_->world();
@@ -99,6 +104,17 @@ void Rig::build(vm::Machine& motion, CollisionMode collisions) {
     watch_.emplace(*cell_, robotIndex_);
     cellMachine_->watchCollisions(*sim_, *watch_, collisions);
   }
+}
+
+// The machine applies the stimuli due at the start as it is made, before
+// anyone listens (the trace shows none of them): their causes are found
+// here, the same changes in the same order.
+void Rig::noteInputsAtStart(const stimuli::Stimuli& stimuli) {
+  InputSchedule start(stimuli.changes);
+  vm::IoMask inputs = 0;
+  start.applyUntil(running_->clock().now(), inputs, [this](vm::Micros at, vm::IoMask, const InputCause& c) {
+    lastInputs_[static_cast<std::size_t>(c.input - 1)] = InputChangeRecord{at, c};
+  });
 }
 
 void Rig::wakeRobotAt(vm::Micros at) {
@@ -174,6 +190,7 @@ RigSnapshot Rig::snapshot() const {
   RigSnapshot s;
   if (sim_) s.machine = sim_->state();
   s.cell = running_->state();
+  s.lastInputs = lastInputs_;
   if (watch_) s.collisions.assign(watch_->events().begin(), watch_->events().end());
   if (devices_) {
     s.devices = devices_->state(), s.pendingDevices = devices_->pendingEvents();
@@ -199,6 +216,7 @@ void Rig::restore(const RigSnapshot& s) {
   lastStepGrasped_ = false;
   lastStepClosedEmpty_ = false;
   pendingInputs_.clear(), lastStepInputs_.clear();
+  lastInputs_ = s.lastInputs;
   if (!world_ || world_->emptyCloseCount() == 0) firstEmptyClose_.reset();
   // Back to as many as the world had counted by then (kept in run order).
   fixtureCloses_.resize(std::min<std::size_t>(fixtureCloses_.size(), world_ ? world_->fixtureCloseCount() : 0));

@@ -46,6 +46,13 @@ struct ObjectView {
   std::uint32_t number = 0;  ///< "object 5": never given to another
 };
 
+/// A change of an input: when, and what made it (the trace's words).
+struct InputChangeRecord {
+  vm::Micros at = 0;
+  InputCause cause;
+  bool operator==(const InputChangeRecord&) const = default;
+};
+
 /// Everything that changes in a rig on the simulated machine.
 struct RigSnapshot {
   SimMachine::State machine;
@@ -64,6 +71,8 @@ struct RigSnapshot {
   /// is no state: it grows on every restore). `devices->revision` is kept
   /// as 0, so that a restored run's snapshot equals a fresh run's.
   bool devicesSawWorld = false;
+  /// Each input's last change (Rig::lastInputChange).
+  std::array<std::optional<InputChangeRecord>, vm::kIoCount> lastInputs;
   bool operator==(const RigSnapshot&) const = default;
 };
 
@@ -193,11 +202,17 @@ class Rig {
   /// The inputs that changed since the step before the one just run, each
   /// with its time and cause, in the order they changed (right after a
   /// restore, none).
-  struct InputChangeRecord {
-    vm::Micros at = 0;
-    InputCause cause;
-  };
+  using InputChangeRecord = runtime::InputChangeRecord;
   std::span<const InputChangeRecord> inputsOfLastStep() const { return lastStepInputs_; }
+  /// The last change of input `input` (1..vm::kIoCount) up to now, a
+  /// stimulus at the start included; null when nothing changed it (it is
+  /// OFF as every input starts) or on another machine than the simulated one.
+  /// What the debugger and robotsim test say set an input.
+  const InputChangeRecord* lastInputChange(int input) const {
+    if (!vm::isIoLine(input)) return nullptr;
+    const auto& last = lastInputs_[static_cast<std::size_t>(input - 1)];
+    return last ? &*last : nullptr;
+  }
   static constexpr std::size_t kMaxInputsPerStep = 4096;
   /// The instruction of the first closing move that took nothing, and
   /// where it left the tool centre point.
@@ -272,6 +287,8 @@ class Rig {
   /// The inputs' changes and the devices' records since the last take, as the last step's.
   void takeStepRecords();
   std::vector<InputChangeRecord> pendingInputs_, lastStepInputs_;
+  std::array<std::optional<InputChangeRecord>, vm::kIoCount> lastInputs_;
+  void noteInputsAtStart(const stimuli::Stimuli& stimuli);
   bool afterLastStep_ = false;  // takeDeviceRecords came after the last step
   bool lastStepGrasped_ = false;
   bool lastStepClosedEmpty_ = false;

@@ -264,7 +264,9 @@ TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devic
   CHECK(responseTo(m, 16).at("message").get<std::string>().find("is wired") != std::string::npos);
   CHECK(responseTo(m, 17).at("body").at("value") == "on");
   CHECK(responseTo(m, 18).at("success") == false);
-  CHECK(valueOf(responseTo(m, 19), "in 5") == "on");  // at the cell's present instant: the run stands there
+  // At the cell's present instant, the beam's stop at 2 s (the run stands there), with its cause: the
+  // cell's set input is a stimulus of no file.
+  CHECK(valueOf(responseTo(m, 19), "in 5") == "on (since 2.000 s: stimulus)");
 }
 
 // The collision and warning filters on a cell of several robots: the

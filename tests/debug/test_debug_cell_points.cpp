@@ -111,7 +111,8 @@ TEST_CASE("debug cell: set input is a stimulus at the present moment, replayed g
   CHECK(r.code == 0);
   CHECK(afterCommand(r.out, "set input 9 on") == "error: '9': inputs are 1..8\n");
   CHECK(afterCommand(r.out, "set N = 3").starts_with("error: usage: set input N on|off"));
-  CHECK(afterCommand(r.out, "set input 1 on") == "error: input 1 of left is wired (line 4 of the cell): the wire drives it\n");
+  CHECK(afterCommand(r.out, "set input 1 on") == "error: input 1 of left is wired from right.OUT 1 (line 4 of two): right's OUTSIG 1 "
+                                                   "turns it; to set it by hand, remove the WIRE\n");
   CHECK(afterCommand(r.out, "set input 3 on") == "input 3 of left is on from 1.000 s on\n");
   CHECK(afterCommand(r.out, "step") == "left: line 2 @2, step 1, clock 1.000 s\n    2 |         SET N 1\n");
   CHECK(afterCommand(r.out, "reverse-step").starts_with("at the start of the run\n"));

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "tests/cli/cli_support.h"
+#include "tests/debug/dap_test_util.h"
 #include "tests/debug/debug_test_util.h"
 #include "tools/dap/serve.h"
 #include "tools/debug/console.h"
@@ -174,38 +175,13 @@ TEST_CASE("debug: going back restores the devices and the parts as they were", "
   CHECK(devicesConsole(s, "print devices\n") == kDevicesAtStart);
 }
 
-namespace {
-
-std::vector<rs::wire::Json> devicesDapSession(const std::vector<rs::wire::Json>& requests) {
-  std::string bytes;
-  int seq = 1;
-  for (rs::wire::Json r : requests) {
-    r["seq"] = seq++;
-    r["type"] = "request";
-    bytes += rs::wire::frameMessage(r.dump());
-  }
-  std::istringstream in(bytes);
-  std::ostringstream out, log;
-  rs::wire::StreamInput input(in);
-  rs::wire::StreamOutput output(out);
-  rs::dap::serve(input, output, log);
-  std::vector<rs::wire::Json> messages;
-  for (const rs::wire::Frame& f : rs::wire::parseFrames(out.str())) messages.push_back(rs::wire::Json::parse(f.body));
-  return messages;
-}
-
-const rs::wire::Json* devicesDapResponse(const std::vector<rs::wire::Json>& messages, int seq) {
-  for (const rs::wire::Json& m : messages)
-    if (m.value("type", "") == "response" && m.value("request_seq", 0) == seq) return &m;
-  return nullptr;
-}
-
-}  // namespace
+using debugtest::dapResponse;
+using debugtest::dapSession;
 
 TEST_CASE("dap: device function breakpoints and the Devices scope", "[debug][dap][devices]") {
   using rs::wire::Json;
   const std::string program = debugtest::kExamples + "adept_production.rsp";
-  const auto messages = devicesDapSession({
+  const auto messages = dapSession({
       {{"command", "initialize"}, {"arguments", {{"adapterID", "robotsim"}}}},
       {{"command", "launch"}, {"arguments", {{"program", program}, {"cell", "adept-cell"}}}},
       {{"command", "setFunctionBreakpoints"},
@@ -217,7 +193,7 @@ TEST_CASE("dap: device function breakpoints and the Devices scope", "[debug][dap
       {{"command", "setVariable"}, {"arguments", {{"variablesReference", 6}, {"name", "sink done"}, {"value", "3"}}}},
       {{"command", "disconnect"}, {"arguments", Json::object()}},
   });
-  const Json* set = devicesDapResponse(messages, 3);
+  const Json* set = dapResponse(messages, 3);
   REQUIRE(set);
   const Json& answers = (*set)["body"]["breakpoints"];
   REQUIRE(answers.size() == 3);
@@ -232,14 +208,14 @@ TEST_CASE("dap: device function breakpoints and the Devices scope", "[debug][dap
     if (m.value("event", "") == "stopped") stops.push_back(m["body"]);
   REQUIRE(stops.size() == 1);
   CHECK(stops[0]["reason"] == "function breakpoint");
-  const Json* scopes = devicesDapResponse(messages, 5);
+  const Json* scopes = dapResponse(messages, 5);
   REQUIRE(scopes);
   const Json& list = (*scopes)["body"]["scopes"];
   REQUIRE(list.size() == 6);
   CHECK(list[5]["name"] == "Devices");
   CHECK(list[5]["variablesReference"] == 6);
   CHECK(list[5]["namedVariables"] == 8);  // 5 devices, 3 parts
-  const Json* vars = devicesDapResponse(messages, 6);
+  const Json* vars = dapResponse(messages, 6);
   REQUIRE(vars);
   const Json& rows = (*vars)["body"]["variables"];
   REQUIRE(rows.size() == 8);
@@ -250,14 +226,14 @@ TEST_CASE("dap: device function breakpoints and the Devices scope", "[debug][dap
   CHECK(rows[7]["name"] == "block (object 5)");
   CHECK(rows[7]["value"] == "at (-740.000, 500.000, 620.000)");
   // evaluate devices: the same rows on one line, and the scope to open.
-  const Json* evaluated = devicesDapResponse(messages, 7);
+  const Json* evaluated = dapResponse(messages, 7);
   REQUIRE(evaluated);
   CHECK((*evaluated)["body"]["variablesReference"] == 6);
   const std::string result = (*evaluated)["body"]["result"].get<std::string>();
   CHECK(result.rfind("sensor eye = OFF, turned ON 0 times, conveyor infeed = stopped, carried 0 parts, ", 0) == 0);
   CHECK(result.find("block (object 5) = at (-740.000, 500.000, 620.000)") != std::string::npos);
   // The devices are the run's: they cannot be set.
-  const Json* set2 = devicesDapResponse(messages, 8);
+  const Json* set2 = dapResponse(messages, 8);
   REQUIRE(set2);
   CHECK((*set2)["success"] == false);
   CHECK((*set2)["message"] == "only variables and inputs can be set: the motors, objects, clock and devices are the run's");
@@ -266,7 +242,7 @@ TEST_CASE("dap: device function breakpoints and the Devices scope", "[debug][dap
 TEST_CASE("dap: a device function breakpoint stops with what happened", "[debug][dap][devices]") {
   using rs::wire::Json;
   const std::string program = debugtest::kExamples + "adept_production.rsp";
-  const auto messages = devicesDapSession({
+  const auto messages = dapSession({
       {{"command", "initialize"}, {"arguments", {{"adapterID", "robotsim"}}}},
       {{"command", "launch"}, {"arguments", {{"program", program}, {"cell", "adept-cell"}}}},
       {{"command", "setFunctionBreakpoints"}, {"arguments", {{"breakpoints", Json::array({{{"name", "sensor eye on"}}})}}}},

@@ -6,7 +6,7 @@
 // stimuli (timed changes, changes and undos at one time, reactive rules with
 // and without a delay) and random expectations at random moments, many of
 // them on the times where things change; both must give the same answer
-// every time.
+// every time, an input's cause included (the change that made it so).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -94,12 +94,34 @@ std::optional<Micros> logFirstTime(const RunLog& log, const rs::testrun::LineEve
   return std::nullopt;
 }
 
-WatchAnswer fromLog(const RunLog& log, const rs::vm::Image& image, const Expectation& e) {
+// What made input `input` read `on` at t: its last change due at or before
+// t, from the log's list of changes and their causes; before those, the
+// stimuli due at 0 s, which change it as the run is made (in file order,
+// each one that alters it), before the log listens.
+std::optional<rs::runtime::InputChangeRecord> logChange(const RunLog& log, const rs::stimuli::Stimuli& stimuli,
+                                                        int input, Micros t, bool on) {
+  std::optional<rs::runtime::InputChangeRecord> last;
+  bool now = false;
+  for (const rs::stimuli::InputChange& c : stimuli.changes)
+    if (c.at == 0 && c.input == input && c.on != now) {
+      now = c.on;
+      last = rs::runtime::InputChangeRecord{0, {rs::runtime::InputCause::Kind::Stimulus, input, c.on, c.line, {}}};
+    }
+  for (const rs::runtime::InputRecord& r : log.inputChanges)
+    if (r.cause.input == input && r.at <= t) last = rs::runtime::InputChangeRecord{r.at, r.cause};
+  if (last && last->cause.on != on) last.reset();
+  return last;
+}
+
+WatchAnswer fromLog(const RunLog& log, const rs::runtime::RunSpec& spec, const Expectation& e) {
+  const rs::vm::Image& image = *spec.image;
   WatchAnswer a;
   std::uint32_t slot = 0;
   while (slot < image.variables.size() && image.variables[slot] != e.name) ++slot;
   const auto momentAt = [&](Micros t) {
-    return WatchedMoment{t, logValue(log, e, slot, t), logCause(log, image, e.kind, t, slot)};
+    WatchedMoment m{t, logValue(log, e, slot, t), logCause(log, image, e.kind, t, slot), std::nullopt};
+    if (e.kind == ExpectKind::Input) m.change = logChange(log, spec.stimuli, e.number, t, m.value != 0);
+    return m;
   };
   switch (e.kind) {
     case ExpectKind::Output:
@@ -240,6 +262,8 @@ std::string answerText(const WatchAnswer& a) {
   std::string s;
   if (a.moment)
     s += fmt::format("moment {} value {} line {}; ", a.moment->at, a.moment->value, a.moment->line.value_or(0));
+  if (a.moment && a.moment->change)
+    s += fmt::format("changed at {}: {}; ", a.moment->change->at, rs::runtime::inputChangeText(a.moment->change->cause));
   if (a.first) s += fmt::format("first {}; ", *a.first);
   if (a.second) s += fmt::format("second {}; ", *a.second);
   if (a.beyond)
@@ -279,7 +303,7 @@ TEST_CASE("RunWatch answers every expectation as the whole RunLog does, on rando
       if (expectations[i].kind == ExpectKind::Variable &&
           std::find(names.begin(), names.end(), expectations[i].name) == names.end())
         continue;  // evaluate says the program has no such variable
-      const WatchAnswer want = fromLog(*run.log(), *run.spec().image, expectations[i]);
+      const WatchAnswer want = fromLog(*run.log(), run.spec(), expectations[i]);
       const WatchAnswer& got = watch.answer(i);
       INFO("round " << round << ", expectation " << i << " (kind " << static_cast<int>(expectations[i].kind) << ")");
       CHECK(answerText(got) == answerText(want));

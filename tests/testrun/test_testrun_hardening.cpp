@@ -436,7 +436,8 @@ TEST_CASE("robotsim test: times written with more than three decimals are printe
   INFO(r.out << r.err);
   CHECK(r.code == 1);
   for (const std::string& want :
-       {program + ":2:3: error: expected input 1 OFF during 0.0001..0.0005 s; it was ON at 0.0003 s (line 5 running)\n",
+       {program + ":2:3: error: expected input 1 OFF during 0.0001..0.0005 s; it was ON at 0.0003 s (line 5 running; "
+        "ON since 0.0003 s: stimulus)\n",
         program + ":3:3: error: expected input 1 ON at 0.0002 s; it was OFF then (line 5 running)\n",
         program + ":4:3: error: expected the run's simulated time <= 0.0005 s; it ended at line 6, 1.000 s\n"}) {
     CAPTURE(want);

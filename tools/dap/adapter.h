@@ -119,6 +119,9 @@ class Adapter {
   /// What evaluate answers for `text` on `run` as `view` shows it (one
   /// robot's, or one robot of a cell's).
   static Reply evaluateIn(const runtime::Run& run, const runtime::RunView& view, std::string_view text, const ScopeRefs& refs);
+  /// An input's value as the Inputs scope and evaluate show it: "on", or
+  /// "on (since 10.000 s: wire from sensor eye)" when something changed it.
+  static std::string inputShown(const runtime::Run& run, int input, bool on);
   Reply cellSetFunctionBreakpoints(const Json& args);
   Reply cellSetVariable(const Json& args);
   /// setVariable's `in N` = on|off on `image`'s program: the input and its value, or what is wrong.

@@ -287,7 +287,8 @@ Adapter::Reply Adapter::cellVariables(const Json& args) {
       if (v.tcp) out.push_back(cellVariable("TCP", fmt::format("({:.3f}, {:.3f}, {:.3f})", (*v.tcp)[0], (*v.tcp)[1], (*v.tcp)[2])));
       break;
     case kCellIoScope:
-      for (int i = 1; i <= vm::kIoCount; ++i) out.push_back(cellVariable(fmt::format("in {}", i), vm::lineIsOn(v.inputs, i) ? "on" : "off"));
+      for (int i = 1; i <= vm::kIoCount; ++i)
+        out.push_back(cellVariable(fmt::format("in {}", i), inputShown(cell_->cell().robot(p), i, vm::lineIsOn(v.inputs, i))));
       for (int i = 1; i <= vm::kIoCount; ++i) out.push_back(cellVariable(fmt::format("out {}", i), vm::lineIsOn(v.outputs, i) ? "on" : "off"));
       break;
     case kCellClockScope:

@@ -13,6 +13,7 @@
 #include "base/text.h"
 #include "tools/dap/adapter.h"
 #include "tools/dap/scopes.h"
+#include "tools/debug/input_causes.h"
 #include "vm/disasm.h"
 #include "vm/io_lines.h"
 
@@ -101,7 +102,8 @@ Adapter::Reply Adapter::variables(const Json& args) {
       if (v.tcp) out.push_back(variable("TCP", point(*v.tcp)));
       break;
     case kIo:
-      for (int i = 1; i <= vm::kIoCount; ++i) out.push_back(variable(fmt::format("in {}", i), vm::lineIsOn(v.inputs, i) ? "on" : "off"));
+      for (int i = 1; i <= vm::kIoCount; ++i)
+        out.push_back(variable(fmt::format("in {}", i), inputShown(session_->run(), i, vm::lineIsOn(v.inputs, i))));
       for (int i = 1; i <= vm::kIoCount; ++i)
         out.push_back(variable(fmt::format("out {}", i), vm::lineIsOn(v.outputs, i) ? "on" : "off"));
       break;
@@ -194,9 +196,15 @@ Adapter::Reply Adapter::evaluateIn(const runtime::Run& run, const runtime::RunVi
   const debug::Expression& x = *e;
   const std::int64_t value = debug::valueIn(v, x);  // at the session's moment
   std::string shown = std::to_string(value);
-  if (x.kind == debug::Expression::Kind::Input || x.kind == debug::Expression::Kind::Output) shown = value ? "on" : "off";
+  if (x.kind == debug::Expression::Kind::Output) shown = value ? "on" : "off";
+  if (x.kind == debug::Expression::Kind::Input) shown = inputShown(run, static_cast<int>(x.index), value != 0);
   if (x.kind == debug::Expression::Kind::Clock) shown = fmt::format("{} s", base::formatSeconds(value));
   return Json{{"result", shown}, {"variablesReference", 0}};
+}
+
+std::string Adapter::inputShown(const runtime::Run& run, int input, bool on) {
+  const std::string note = debug::inputCauseNote(run, input, on);
+  return fmt::format("{}{}", on ? "on" : "off", note.empty() ? note : " (" + note + ")");
 }
 
 namespace {

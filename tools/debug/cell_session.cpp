@@ -10,6 +10,7 @@
 #include "vm/io_lines.h"
 #include "runtime/run/empty_close.h"
 #include "tools/debug/device_points.h"
+#include "tools/debug/input_causes.h"
 
 namespace rs::debug {
 
@@ -253,6 +254,10 @@ CellSession::Found CellSession::matches(std::size_t robot, const Probe& before, 
     if (std::string h = whatHappened(b.kind, stepped); !h.empty() &&
         std::find(f.happened.begin(), f.happened.end(), h) == f.happened.end())
       f.happened.push_back(std::move(h));
+    if (b.kind == Breakpoint::Kind::When)
+      if (std::string h = conditionCause(own, b.when);
+          !h.empty() && std::find(f.happened.begin(), f.happened.end(), h) == f.happened.end())
+        f.happened.push_back(std::move(h));
     if (b.kind == Breakpoint::Kind::Device)
       for (std::string& h : deviceHits(stepped, b.device))
         if (std::find(f.happened.begin(), f.happened.end(), h) == f.happened.end()) f.happened.push_back(std::move(h));
@@ -261,8 +266,9 @@ CellSession::Found CellSession::matches(std::size_t robot, const Probe& before, 
     const std::int64_t now = valueOf(run_->robot(watches_[i].robot), watches_[i].what);
     if (i < before.values.size() && now != before.values[i]) {
       f.ids.push_back(watches_[i].id);
-      f.notes.push_back(fmt::format("{} of {} changed from {} to {}", base::safeText(watches_[i].what.name),
-                                    base::safeText(label(watches_[i].robot)), before.values[i], now));
+      f.notes.push_back(fmt::format("{} of {} changed from {} to {}{}", base::safeText(watches_[i].what.name),
+                                    base::safeText(label(watches_[i].robot)), before.values[i], now,
+                                    causeAside(run_->robot(watches_[i].robot), watches_[i].what, now)));
     }
   }
   return f;
@@ -475,12 +481,8 @@ CellStop CellSession::gotoTime(vm::Micros t) {
 std::optional<std::string> CellSession::setInput(std::size_t robot, int input, bool on) {
   if (run_->finished()) return std::string("the run is over: go back first (reverse-step, goto-time)");
   if (!vm::isIoLine(input)) return fmt::format("there is no input {}: inputs are 1..{}", input, vm::kIoCount);
-  const workcell::Workcell& cell = run_->cell();
-  const std::size_t index = run_->robot(robot).rig().robotIndex();
-  for (const workcell::Wire& w : cell.devices.wires)
-    if (w.input == input && (w.robot.empty() ? index == cell.drivenRobotIndex() : cell.robotLabeled(w.robot) == index))
-      return fmt::format("input {} of {} is wired (line {} of the cell): the wire drives it", input,
-                         base::safeText(label(robot)), w.pos.line);
+  if (auto wired = wiredInputRefusal(run_->cell(), run_->robot(robot).rig().robotIndex(), input, label(robot)))
+    return wired;
   stimuli::InputChange change;
   change.at = clock();
   change.input = input;

@@ -9,6 +9,7 @@
 #include "base/near_names.h"
 #include "base/seconds.h"
 #include "base/text.h"
+#include "tools/debug/input_causes.h"
 #include "vm/disasm.h"
 #include "vm/io_lines.h"
 
@@ -180,6 +181,12 @@ bool printRunValue(std::ostream& out, const runtime::Run& run, const runtime::Ru
       return s;
     };
     out << fmt::format("inputs  1-{0}:{1}\noutputs 1-{0}:{2}\n", vm::kIoCount, bits(v.inputs), bits(v.outputs));
+    // What set each input that something changed (the trace's words).
+    for (int i = 1; i <= vm::kIoCount; ++i) {
+      const bool on = vm::lineIsOn(v.inputs, i);
+      if (const std::string note = inputCauseNote(run, i, on); !note.empty())
+        out << fmt::format("input {} {} {}\n", i, on ? "ON" : "OFF", note);
+    }
   } else if (args == "objects") {
     if (v.objects.empty()) out << "no objects: the program runs without a workcell (--cell), or it has none\n";
     // By the run's numbers (robotsim test's `object N`): the cell's own
@@ -210,7 +217,7 @@ bool printRunValue(std::ostream& out, const runtime::Run& run, const runtime::Ru
   } else {
     auto e = parseExpression(image, ioWords(args));
     if (!e) out << "error: " << e.failure().message << '\n';
-    else out << fmt::format("{} = {}\n", base::safeText(e->name), valueIn(v, *e));
+    else out << fmt::format("{} = {}{}\n", base::safeText(e->name), valueIn(v, *e), causeAside(run, *e, valueIn(v, *e)));
   }
   return true;
 }

@@ -8,6 +8,7 @@
 #include "base/seconds.h"
 #include "base/text.h"
 #include "runtime/run/empty_close.h"
+#include "tools/debug/input_causes.h"
 #include "vm/io_lines.h"
 
 namespace rs::debug {
@@ -204,6 +205,10 @@ bool DebugSession::stopsHere(const runtime::Run& r, const Probe& before, bool co
     if (!at || (b.condition && !b.condition->holds(r))) continue;
     if (counting && ++b.hitCount && b.hits && !b.hits->stopsAt(b.hitCount)) continue;
     ids.push_back(b.id);
+    if (b.kind == Breakpoint::Kind::When)
+      if (std::string h = conditionCause(r, b.when);
+          !h.empty() && std::find(happened.begin(), happened.end(), h) == happened.end())
+        happened.push_back(std::move(h));
     if (b.kind == Breakpoint::Kind::Device)
       for (std::string& h : deviceHits(r, b.device))
         if (std::find(happened.begin(), happened.end(), h) == happened.end()) happened.push_back(std::move(h));
@@ -212,7 +217,8 @@ bool DebugSession::stopsHere(const runtime::Run& r, const Probe& before, bool co
     const std::int64_t now = valueOf(r, watches_[i].what);
     if (i < before.values.size() && now != before.values[i]) {
       ids.push_back(watches_[i].id);
-      notes.push_back(fmt::format("{} changed from {} to {}", base::safeText(watches_[i].what.name), before.values[i], now));
+      notes.push_back(fmt::format("{} changed from {} to {}{}", base::safeText(watches_[i].what.name), before.values[i],
+                                  now, causeAside(r, watches_[i].what, now)));
     }
   }
   return !ids.empty();
@@ -505,6 +511,7 @@ Stop DebugSession::gotoTime(vm::Micros t) {
 std::optional<std::string> DebugSession::setInput(int input, bool on) {
   if (run_->finished()) return std::string("the run is over: go back first (reverse-step, goto-time)");
   if (!vm::isIoLine(input)) return fmt::format("there is no input {}: inputs are 1..{}", input, vm::kIoCount);
+  if (auto wired = wiredInputRefusal(*run_, input, {})) return wired;
   if (!timeline_->setInput(input, on)) return std::string("too many input changes are waiting");
   // A change applies between instructions: inside one under way, from its end.
   moment_.reset();

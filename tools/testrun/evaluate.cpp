@@ -8,6 +8,8 @@
 
 #include "base/ascii.h"
 #include "base/seconds.h"
+#include "base/text.h"
+#include "runtime/cell/input_cause.h"
 #include "vm/stop_reason.h"
 
 namespace rs::testrun {
@@ -20,6 +22,10 @@ std::string seconds(vm::Micros t) { return base::formatSeconds(t) + " s"; }
 // "0.000..0.001 s").
 std::string exactly(vm::Micros t) { return base::formatSecondsExactly(t) + " s"; }
 std::string onOff(bool on) { return on ? "ON" : "OFF"; }
+// "since 10 s: wire from sensor eye", its time with the digits it needs.
+std::string inputSet(const runtime::InputChangeRecord& change) {
+  return base::safeText(runtime::inputSinceText(base::formatSecondsExactly(change.at), change.cause));
+}
 
 class Checker {
  public:
@@ -94,9 +100,14 @@ class Checker {
   }
 
   // What set an output or a variable ("set by line 10"), or which line was
-  // running when an input was as it was.
+  // running when an input was as it was and what set the input ("line 9
+  // running; ON since 10.000 s: wire from sensor eye", the trace's words).
   static std::string cause(ExpectKind kind, const WatchedMoment& m) {
-    if (kind == ExpectKind::Input) return m.line ? fmt::format("line {} running", *m.line) : "before the first step";
+    if (kind == ExpectKind::Input) {
+      std::string running = m.line ? fmt::format("line {} running", *m.line) : "before the first step";
+      if (m.change) running += fmt::format("; {} {}", onOff(m.value != 0), inputSet(*m.change));
+      return running;
+    }
     if (kind == ExpectKind::Variable) return m.line ? fmt::format("set by line {}", *m.line) : "never set yet";
     return m.line ? fmt::format("set by line {}", *m.line) : "from the start";
   }
@@ -121,7 +132,12 @@ class Checker {
     }
     const std::uint8_t bits = output ? run_.rig().machine().outputs() : run_.rig().machine().inputs();
     const bool v = ((bits >> (e.number - 1)) & 1) != 0;
-    if (v != e.on) fail(e, fmt::format("expected {} {} at the end; it is {} {}", what, onOff(e.on), onOff(v), ending()));
+    if (v == e.on) return;
+    std::string set;  // what made an input so
+    if (const runtime::InputChangeRecord* last = output ? nullptr : run_.rig().lastInputChange(e.number);
+        last && last->cause.on == v)
+      set = " (" + inputSet(*last) + ")";
+    fail(e, fmt::format("expected {} {} at the end; it is {} {}{}", what, onOff(e.on), onOff(v), ending(), set));
   }
 
   static std::string eventText(const LineEvent& ev) {

@@ -177,8 +177,18 @@ void RunWatch::level(vm::Micros at, vm::IoMask mask) {
       continue;
     }
     if (w.failed || at <= e.during->first || at >= e.during->second) continue;
-    if (vm::lineIsOn(mask, e.number) != e.on) windowFailed(w, {at, e.on ? 0 : 1, std::nullopt});
+    if (vm::lineIsOn(mask, e.number) != e.on) windowFailed(w, inputMoment(at, mask, e.number));
   }
+}
+
+// The machine tells the watch of a change before the rig hears its cause,
+// so the rig's last change is the one in effect at any moment the watch
+// settles (no later change has come yet).
+WatchedMoment RunWatch::inputMoment(vm::Micros at, vm::IoMask mask, int input) const {
+  WatchedMoment m{at, vm::lineIsOn(mask, input) ? 1 : 0, std::nullopt, std::nullopt};
+  if (const runtime::InputChangeRecord* last = run_.rig().lastInputChange(input); last && last->cause.on == (m.value != 0))
+    m.change = *last;
+  return m;
 }
 
 void RunWatch::windowFailed(Watcher& w, WatchedMoment m) {
@@ -230,7 +240,7 @@ void RunWatch::settle(const Probe& p) {
       break;
     }
     case ProbeKind::Input: {
-      const WatchedMoment m{p.at, vm::lineIsOn(inputs_, e.number) ? 1 : 0, std::nullopt};
+      const WatchedMoment m = inputMoment(p.at, inputs_, e.number);
       if (!w.window) {
         a.moment = m;
         queue(stepProbes_, p.watcher, p.at, ProbeKind::InputCause);

@@ -14,7 +14,8 @@
 //   that started at or before t; an input's, after every change due at t;
 // - what set it: the last output change (variable write) whose step ended
 //   at or before t; for an input, the line of the last step that started at
-//   or before t ("line 9 running");
+//   or before t ("line 9 running"), and the input's last change due at or
+//   before t with its cause (a stimulus, a rule, a wire: Rig::lastInputChange);
 // - a window A..B is checked at A and at every change inside it, in order;
 // - inputs are seen as the log keeps them: several changes at one time are
 //   one level, the last.
@@ -37,6 +38,8 @@ struct WatchedMoment {
   vm::Micros at = 0;
   std::int32_t value = 0;  ///< 0 or 1 for a line
   std::optional<std::uint32_t> line;
+  /// An input's: the change that made it `value` (none: as it started).
+  std::optional<runtime::InputChangeRecord> change = {};
 };
 
 /// The first move of a motor past its bound.
@@ -122,6 +125,8 @@ class RunWatch final : public vm::StepObserver {
   void variableWritten(std::uint32_t slot, std::int32_t value, std::uint32_t line, vm::Micros end);
   void moved(std::size_t motor, const runtime::MotorSegment& s, std::uint32_t line);
   void windowFailed(Watcher& w, WatchedMoment m);
+  /// Input `input` at `at` in the level `mask`, with the change that made it so.
+  WatchedMoment inputMoment(vm::Micros at, vm::IoMask mask, int input) const;
   static std::optional<Setter> setterAt(const SlotHistory& h, vm::Micros t);
   const Expectation& of(const Watcher& w) const { return expectations_[w.expectation]; }
 

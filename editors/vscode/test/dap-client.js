@@ -218,7 +218,8 @@ test('setVariable: a variable from now on (replayed going back and forth), and a
     const io = await scope(dc2, 'Inputs/Outputs');
     const on = await dc2.setVariableRequest({ variablesReference: io.variablesReference, name: 'in 1', value: 'on' });
     assert.equal(on.body.value, 'on');
-    assert.equal((await evaluate(dc2, 'in 1')).result, 'on');
+    // With what set it, and when (the session stands at its start).
+    assert.equal((await evaluate(dc2, 'in 1')).result, 'on (since 0.000 s: set by the debugger)');
     await assert.rejects(dc2.setVariableRequest({ variablesReference: io.variablesReference, name: 'out 1', value: 'on' }),
       /only inputs can be set/);
     await Promise.all([dc2.waitForEvent('exited'), dc2.continueRequest({ threadId: 1 })]);
