@@ -119,6 +119,10 @@ nlohmann::json benchMoves(const Options& options);
 /// run's input changes (the same moves at the same times). Target: at most
 /// 2 times the stimuli run's CPU time; simulated seconds per CPU second.
 nlohmann::json benchCell(const Options& options);
+/// The description reader on 100,000 device and wire lines (issue 35):
+/// a valid cell and one with 49,992 errors, in-process and through
+/// `robotsim describe`. Target: under 1 s of CPU each.
+nlohmann::json benchDevices(const Options& options);
 /// Two robots on one clock that never interact against each alone (issue 36).
 nlohmann::json benchRobots(const Options& options);
 /// Reverse step in the two-robot example (tools/debug/cell_session.h): median and worst.

@@ -24,11 +24,11 @@ namespace {
 using rs::bench::Options;
 
 constexpr std::string_view kModes[] = {"memory", "testrun", "dispatch", "compile",  "startup",    "snapshot",
-                                       "test",   "errors",  "lsp",      "lsp_runs", "lsp_format", "debug", "moves", "cell", "robots", "cell_debug"};
+                                       "test",   "errors",  "lsp",      "lsp_runs", "lsp_format", "debug", "moves", "cell", "devices", "robots", "cell_debug"};
 
 constexpr std::string_view kUsage =
     "usage: robotsim_bench [--reps N] [--smoke] [--json FILE]\n"
-    "                      [--only memory|testrun|dispatch|compile|startup|snapshot|test|errors|lsp|lsp_runs|lsp_format|debug|moves|cell|robots|cell_debug]\n"
+    "                      [--only memory|testrun|dispatch|compile|startup|snapshot|test|errors|lsp|lsp_runs|lsp_format|debug|moves|cell|devices|robots|cell_debug]\n"
     "                      [--robotsim PATH] [--lua PATH] [--luajit PATH] [--luac PATH] [--workdir DIR]\n"
     "The benchmarks of docs/performance.md: prints their figures, and writes them to FILE as JSON.\n"
     "  --reps N      repetitions of each measurement, best and median printed (default 5)\n"
@@ -101,7 +101,7 @@ bool parse(int argc, char** argv, Options& o, std::string& only) {
   }
   if (!only.empty() && std::find(std::begin(kModes), std::end(kModes), only) == std::end(kModes)) {
     std::cerr << "robotsim_bench: error: --only takes memory, testrun, dispatch, compile, startup, snapshot, test, "
-                 "errors, lsp, lsp_runs, lsp_format, debug, moves, cell, robots or cell_debug, not '"
+                 "errors, lsp, lsp_runs, lsp_format, debug, moves, cell, devices, robots or cell_debug, not '"
               << only << "'\n";
     return false;
   }
@@ -144,6 +144,7 @@ int main(int argc, char** argv) {
     if (only.empty() || only == "debug") summary["debug"] = rs::bench::benchDebug(options);
     if (only.empty() || only == "moves") summary["moves"] = rs::bench::benchMoves(options);
     if (only.empty() || only == "cell") summary["cell"] = rs::bench::benchCell(options);
+    if (only.empty() || only == "devices") summary["devices"] = rs::bench::benchDevices(options);
     if (only.empty() || only == "robots") summary["robots"] = rs::bench::benchRobots(options);
     if (only.empty() || only == "cell_debug") summary["cell_debug"] = rs::bench::benchCellDebug(options);
   } catch (const std::exception& e) {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "base/seconds.h"
+#include "model/workcell/model.h"
 #include "runtime/run/empty_close.h"
 #include "runtime/run/placing.h"
 
@@ -41,6 +42,47 @@ std::string_view codeFor(vm::StopReason reason) {
     case vm::StopReason::InstantLimit: return "clock-standing-still";
     default: return {};  // it ended, or it paused: no diagnostic of its own
   }
+}
+
+// "sensor eye", "OUT 2", "left.OUT 1", "ON": a wire's source as its line writes it.
+std::string sourceWords(const workcell::Signal& s) {
+  using K = workcell::Signal::Kind;
+  switch (s.kind) {
+    case K::On: return "ON";
+    case K::Off: return "OFF";
+    case K::Sensor: return fmt::format("sensor {}", s.name);
+    case K::Output:
+    case K::Input:
+      return fmt::format("{}{} {}", s.robot.empty() ? "" : s.robot + ".", s.kind == K::Output ? "OUT" : "IN", s.number);
+  }
+  return {};
+}
+
+// What drives the input a WAITFOR stopped on, when the run's robot has a
+// wire to it: "input 1 is wired from sensor eye (line 7 of workcell c)",
+// and for a deadlock (nothing left on the cell's clock) why it stays.
+std::string wiredInputHint(const runtime::Run& run, const vm::RunOutcome& outcome) {
+  const vm::Image& image = *run.spec().image;
+  const workcell::Workcell* cell = run.rig().cell();
+  if (!cell || outcome.index >= image.code.size() || image.code[outcome.index].op != vm::Op::WaitFor) return {};
+  const int input = image.code[outcome.index].a;
+  const bool on = image.code[outcome.index].b != 0;
+  for (const workcell::Wire& w : cell->devices.wires) {
+    if (w.input != input || (!w.robot.empty() && cell->robotLabeled(w.robot) != run.rig().robotIndex())) continue;
+    std::string text = fmt::format("input {} is wired from {}{} (line {} of workcell {})", input, sourceWords(w.source),
+                                   w.inverted ? " INVERTED" : "", w.pos.line, cell->name);
+    if (outcome.reason != vm::StopReason::Deadlock) return text;
+    const std::string after = base::formatSeconds(run.rig().clock());
+    using K = workcell::Signal::Kind;
+    if (w.source.kind == K::On || w.source.kind == K::Off)
+      return fmt::format("{}: always {}", text, (w.source.kind == K::On) != w.inverted ? "ON" : "OFF");
+    if (w.source.kind != K::Sensor || w.source.sensor >= cell->devices.sensors.size()) return text;
+    const bool parts = cell->devices.sensors[w.source.sensor].sees == workcell::Sensor::Sees::Parts;
+    // The sensor has to turn ON (the wait's level, through INVERTED) or OFF.
+    if (on != w.inverted) return fmt::format("{}; {} crosses it after {} s", text, parts ? "no part" : "nothing", after);
+    return fmt::format("{}; what it sees stays there after {} s", text, after);
+  }
+  return {};
 }
 
 }  // namespace
@@ -85,6 +127,11 @@ std::vector<diag::Diagnostic> runDiagnostics(const runtime::Run& run, runtime::C
     if (watch && mode == runtime::CollisionMode::Error && !events.empty() &&
         events.back().instruction == outcome->index && stop.hint.empty())
       stop.hint = watch->hint(events.back());
+    // A WAITFOR on a wired input: what drives it, instead of (or after) --input and --max-time.
+    if (const std::string wired = wiredInputHint(run, *outcome); !wired.empty()) {
+      if (outcome->reason == vm::StopReason::Deadlock) stop.hint = wired;
+      else if (outcome->reason == vm::StopReason::TimeLimit) stop.hint += "; " + wired;
+    }
     out.push_back(std::move(stop));
   }
   for (diag::Diagnostic& w : runWarnings(run, mode, file)) out.push_back(std::move(w));

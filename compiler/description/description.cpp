@@ -72,7 +72,9 @@ void Parser::readLine(const std::vector<Word>& words, diag::Pos lineEnd) {
       if (i + 1 < words.size()) ++i;
       continue;
     }
-    if (w.type == MP::OTHER) return diag_.error(w.pos, fmt::format("unexpected character '{}'", diag::excerpt(w.text)));
+    if (w.type == MP::OTHER)
+      return diag_.error(w.pos, fmt::format("unexpected character '{}'", diag::excerpt(w.text)),
+                         diag::Hint{"a description line holds keywords, names and numbers; a comment starts with ';'"});
   }
   Cursor c(words, lineEnd, diag_);
   if (block_ == Block::None) return open(c, words[0]);

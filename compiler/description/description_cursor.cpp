@@ -45,16 +45,21 @@ bool Cursor::isKeyword(std::string_view kw) const {
 
 bool Cursor::isName() const { return !atEnd() && peek().type == MP::NAME; }
 
-bool Cursor::failAt(diag::Pos at, std::string message, std::string hint) {
+void Cursor::error(diag::Pos at, std::string message, std::string hint) {
+  if (hint.empty() && !form_.empty()) hint = fmt::format("a {} line reads {}", formKeyword_, form_);
   diag_.error(at, std::move(message), diag::Hint{std::move(hint)});
+}
+
+bool Cursor::failAt(diag::Pos at, std::string message, std::string hint) {
+  error(at, std::move(message), std::move(hint));
   return false;
 }
 
 bool Cursor::fail(std::string_view what, std::string hint) {
-  diag_.error(pos(),
+  error(pos(),
               atEnd() ? fmt::format("expected {} before the end of the line", what)
                       : fmt::format("expected {}, found '{}'", what, diag::excerpt(peek().text)),
-              diag::Hint{std::move(hint)});
+              std::move(hint));
   return false;
 }
 
@@ -65,9 +70,8 @@ bool Cursor::failOneOf(std::string_view keywords) {
 bool Cursor::number(double& out, std::string_view what) {
   if (atEnd() || peek().type != MP::NUMBER) return fail(what);
   if (std::string written, plain; exponent(written, plain)) {
-    diag_.error(pos(), fmt::format("'{}': exponents are not supported in descriptions", diag::excerpt(written)),
-                diag::Hint{plain.empty() ? std::string("write the number in full, with its decimals")
-                                         : fmt::format("write {}", plain)});
+    error(pos(), fmt::format("'{}': exponents are not supported in descriptions", diag::excerpt(written)),
+          plain.empty() ? std::string("write the number in full, with its decimals") : fmt::format("write {}", plain));
     return false;
   }
   const std::string& t = peek().text;
@@ -131,7 +135,7 @@ bool Cursor::integer(std::int32_t& out, std::string_view what) {
   const diag::Pos at = pos();
   if (!number(v, what)) return false;
   if (v != std::floor(v) || v < -2147483648.0 || v > 2147483647.0) {
-    diag_.error(at, fmt::format("expected {} (a whole number), found '{}'", what, diag::excerpt(w_[i_ - 1].text)));
+    error(at, fmt::format("expected {} (a whole number), found '{}'", what, diag::excerpt(w_[i_ - 1].text)), {});
     return false;
   }
   out = static_cast<std::int32_t>(v);

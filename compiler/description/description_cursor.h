@@ -39,6 +39,8 @@ class Cursor {
   Cursor(const std::vector<Word>& words, diag::Pos lineEnd, diag::Diagnostics& d) : w_(words), end_(lineEnd), diag_(d) {}
 
   bool atEnd() const { return i_ >= w_.size(); }
+  /// Whether no word of the line has been read yet.
+  bool atLineStart() const { return i_ == 0; }
   const Word& peek() const { return w_[i_]; }
   diag::Pos pos() const { return atEnd() ? end_ : w_[i_].pos; }
 
@@ -64,8 +66,14 @@ class Cursor {
   bool onOff(bool& out);
   bool color(workcell::Color& out);
   bool axis(int& out);
+  /// The hint of every later error of this line that has none of its own
+  /// ("a WIRE line reads WIRE SOURCE TO IN n ..."): the form of the
+  /// statement being read, so no mistake in a device line is left without
+  /// one. Both views must outlive the cursor (static text).
+  void setFormHint(std::string_view keyword, std::string_view form) { formKeyword_ = keyword, form_ = form; }
 
  private:
+  void error(diag::Pos at, std::string message, std::string hint);
   bool exponent(std::string& written, std::string& plain) const;
   static std::string withoutExponent(std::string_view mantissa, int k);
 
@@ -73,6 +81,7 @@ class Cursor {
   std::size_t i_ = 0;
   diag::Pos end_;
   diag::Diagnostics& diag_;
+  std::string_view formKeyword_, form_;
 };
 
 }  // namespace rs::compiler::description_detail

@@ -91,6 +91,59 @@ bool signal(Cursor& c, workcell::Signal& s) {
   return true;
 }
 
+// A device line's keyword, its whole form (the hint of any mistake in it
+// without one of its own) and the optional words that may end it.
+struct DeviceForm {
+  std::string_view keyword;
+  std::string_view form;
+  std::string_view optional;
+};
+
+constexpr DeviceForm kDeviceForms[] = {
+    {"CONVEYOR", "CONVEYOR NAME SPEED v RUN SIGNAL", ""},
+    {"FEEDER",
+     "FEEDER NAME OBJECT-NAME AT x y z EVERY s [COUNT n], or FEEDER NAME OBJECT-NAME AT x y z WHEN "
+     "SIGNAL [COUNT n]",
+     "COUNT"},
+    {"SENSOR",
+     "SENSOR NAME BEAM x y z x y z [SEES ROBOTS|ALL], or SENSOR NAME ZONE left right top bottom front "
+     "back [SEES ROBOTS|ALL]",
+     "SEES"},
+    {"SINK", "SINK NAME ZONE left right top bottom front back", ""},
+    {"WIRE", "WIRE SOURCE TO IN n [AFTER s] [INVERTED]", "AFTER or INVERTED"},
+};
+
+constexpr DeviceForm kBeltForm{"BELT", "BELT left right top bottom front back DIRECTION dx dy dz [END OPEN]",
+                               "END"};
+
+// A device line stands alone: it starts its line (checked before its
+// keyword is read) ...
+bool startsLine(Cursor& c, const DeviceForm& f) {
+  c.setFormHint(f.keyword, f.form);
+  if (c.atLineStart()) return true;
+  return c.failAt(c.pos(), fmt::format("{} starts a line of its own: it cannot follow other words", f.keyword),
+                  fmt::format("put the {} line on a new line", f.keyword));
+}
+
+// ... and ends it: nothing may follow a complete one.
+bool endsLine(Cursor& c, const DeviceForm& f) {
+  if (c.atEnd()) return true;
+  std::string hint;
+  if (c.isName()) {
+    const std::string_view word = c.peek().text;
+    for (std::size_t i = 0; i < f.optional.size();) {  // an optional word again, or out of its order
+      const std::size_t j = std::min(f.optional.find(' ', i), f.optional.size());
+      const std::string_view optional = f.optional.substr(i, j - i);
+      if (optional != "or" && base::sameName(word, optional))
+        hint = fmt::format("{} is written once, in its place: {}", optional, f.form);
+      i = j + 1;
+    }
+    if (hint.empty()) hint = didYouMean(word, f.optional);
+  }
+  if (hint.empty()) hint = fmt::format("a device line stands alone: {}; start the next one on a new line", f.form);
+  return c.fail(fmt::format("the end of the {} line", f.keyword), std::move(hint));
+}
+
 bool deviceName(Cursor& c, std::string& out, diag::Pos& pos, std::string_view what) {
   NameRef n;
   if (!c.name(n, what)) return false;
@@ -102,6 +155,8 @@ bool deviceName(Cursor& c, std::string& out, diag::Pos& pos, std::string_view wh
 }  // namespace
 
 bool Parser::belt(Cursor& c, ShapeDef& shape, diag::Pos at) {
+  if (!startsLine(c, kBeltForm)) return false;
+  c.keyword("BELT");
   workcell::Belt b;
   b.pos = at;
   if (!boxEdges(c, b.surface, "BELT")) return false;
@@ -128,12 +183,20 @@ bool Parser::belt(Cursor& c, ShapeDef& shape, diag::Pos at) {
     return false;
   }
   shape.belt = b;
-  return true;
+  return endsLine(c, kBeltForm);
 }
 
 bool Parser::deviceClause(Cursor& c, WorkcellDef& w, bool& handled) {
-  handled = true;
-  workcell::Devices& d = w.devices;
+  const DeviceForm* form = nullptr;
+  for (const DeviceForm& f : kDeviceForms)
+    if (c.isKeyword(f.keyword)) form = &f;
+  handled = form != nullptr;
+  if (!form) return false;
+  if (!startsLine(c, *form)) return false;
+  return deviceLine(c, w.devices) && endsLine(c, *form);
+}
+
+bool Parser::deviceLine(Cursor& c, workcell::Devices& d) {
   const diag::Pos at = c.pos();
   if (c.keyword("CONVEYOR")) {
     workcell::Conveyor v;
@@ -243,8 +306,7 @@ bool Parser::deviceClause(Cursor& c, WorkcellDef& w, bool& handled) {
     d.wires.push_back(std::move(wire));
     return true;
   }
-  handled = false;
-  return false;
+  return false;  // not reached: deviceClause found the keyword
 }
 
 bool Parser::noVolume(Cursor& c, const Eigen::AlignedBox3d& box, diag::Pos at) {

@@ -40,6 +40,8 @@ class Parser {
   bool workcellClause(Cursor& c, WorkcellDef& w);
   // description_devices.cpp: `handled` false when the word opens no device line.
   bool deviceClause(Cursor& c, WorkcellDef& w, bool& handled);
+  bool deviceLine(Cursor& c, workcell::Devices& d);
+  /// `c` at the word BELT.
   bool belt(Cursor& c, ShapeDef& shape, diag::Pos at);
   static bool noVolume(Cursor& c, const Eigen::AlignedBox3d& box, diag::Pos at);
   bool motorClause(Cursor& c, char& letter, diag::Pos& letterPos, double& precision, std::int32_t& min, std::int32_t& max,

@@ -122,7 +122,7 @@ bool Parser::shapeClause(Cursor& c, ShapeDef& shape) {
     const diag::Pos at = c.pos();
     if (c.keyword("PART")) return shape.kind = workcell::ObjectKind::Part, shape.kindPos = at, true;
     if (c.keyword("FIXTURE")) return shape.kind = workcell::ObjectKind::Fixture, shape.kindPos = at, true;
-    if (c.keyword("BELT")) return belt(c, shape, at);
+    if (c.isKeyword("BELT")) return belt(c, shape, at);
     return c.failOneOf("LINE, BOX, ROTATE, MOVE, COLOR, COLLIDE, PART, FIXTURE, BELT or END");
   }
   if (c.isKeyword("BELT") || c.isKeyword("PART") || c.isKeyword("FIXTURE"))

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "base/ascii.h"
+#include "base/near_names.h"
 #include "compiler/description/library.h"
 
 namespace rs::compiler {
@@ -23,6 +24,14 @@ std::string upper(std::string_view name) {
 }
 
 std::string lineOf(diag::Pos p) { return fmt::format("line {}", p.line); }
+
+// "did you mean 'eye'?" when `word` is a near miss of one of `names` (each
+// a string of the element `nameOf` gives), else `otherwise`.
+template <class Names, class NameOf>
+std::string nearNameHint(std::string_view word, const Names& names, NameOf nameOf, std::string otherwise) {
+  const std::string_view near = base::nearestNameBy(word, names, nameOf, base::typoDistance(word));
+  return near.empty() ? std::move(otherwise) : fmt::format("did you mean '{}'?", near);
+}
 
 // The box of everything placed (robots at home, objects), in the world.
 Eigen::AlignedBox3d cellBounds(const workcell::Workcell& cell) {
@@ -95,10 +104,14 @@ bool Library::buildDevices(const WorkcellDef& def, const DescriptionFile& from, 
       return;
     }
     const std::size_t i = cell.robotLabeled(label);
-    if (i == workcell::kNoIndex)
-      return fail(at, fmt::format("no robot labelled '{}' in this workcell", label),
-                  cell.robots.empty() ? std::string("the workcell places no robot")
-                                      : fmt::format("the robots are {} (a ROBOT line's AS label, else its name)", labels));
+    if (i == workcell::kNoIndex) {
+      const std::string all = cell.robots.empty()
+                                  ? std::string("the workcell places no robot")
+                                  : fmt::format("the robots are {} (a ROBOT line's AS label, else its name)", labels);
+      const std::string near =
+          nearNameHint(label, cell.robots, [](const workcell::PlacedRobot& r) -> const std::string& { return r.labelOf(); }, "");
+      return fail(at, fmt::format("no robot labelled '{}' in this workcell", label), near.empty() ? all : near + " " + all);
+    }
     label = cell.robots[i].labelOf();  // as the ROBOT line spells it
   };
 
@@ -109,7 +122,8 @@ bool Library::buildDevices(const WorkcellDef& def, const DescriptionFile& from, 
     const auto it = sensors.find(upper(s.name));
     if (it == sensors.end())
       return fail(s.pos, fmt::format("unknown sensor '{}'", s.name),
-                  "a signal is a SENSOR's name (declared in this WORKCELL), OUT n, LABEL.OUT n, ON or OFF");
+                  nearNameHint(s.name, d.sensors, [](const workcell::Sensor& n) -> const std::string& { return n.name; },
+                               "a signal is a SENSOR's name (declared in this WORKCELL), OUT n, LABEL.OUT n, ON or OFF"));
     s.sensor = it->second;
   };
 
@@ -125,7 +139,8 @@ bool Library::buildDevices(const WorkcellDef& def, const DescriptionFile& from, 
     const auto it = objects.find(upper(v.name));
     if (it == objects.end()) {
       fail(v.pos, fmt::format("unknown object '{}': no OBJECT line of this workcell places it or names it so", v.name),
-           "a CONVEYOR names an object placed in the cell, by its AS name when it has one");
+           nearNameHint(v.name, cell.objects, [](const workcell::PlacedObject& o) -> const std::string& { return o.name; },
+                        "a CONVEYOR names an object placed in the cell, by its AS name when it has one"));
       continue;
     }
     if (it->second == workcell::kNoIndex) {
@@ -178,6 +193,19 @@ bool Library::buildDevices(const WorkcellDef& def, const DescriptionFile& from, 
     const std::string key = upper(f.objectName);
     auto it = fed.find(key);
     if (it == fed.end()) {
+      if (!find<ShapeDef>(Kind::Object, f.objectName, &from)) {
+        // The names a near miss may have meant: this file's objects and those the cell places.
+        std::vector<std::string> known;
+        for (const ShapeDef& o : from.objects) known.push_back(o.name);
+        for (const workcell::PlacedObject& o : cell.objects) known.push_back(o.shape.name);
+        fail(f.objectPos,
+             fmt::format("unknown object '{0}': not defined in this file, and no {0}.rsd beside it or on the library path",
+                         f.objectName),
+             nearNameHint(f.objectName, known, [](const std::string& n) -> const std::string& { return n; },
+                          "a FEEDER copies an OBJECT description: one of this file, or NAME.rsd beside it or on the "
+                          "library path (robotsim list names the library's)"));
+        continue;
+      }
       auto s = shape(Kind::Object, {f.objectName, f.objectPos}, from);
       if (!s) {
         ok = false;

@@ -160,3 +160,20 @@ TEST_CASE("rsd: a device line's mistakes are diagnostics", "[lsp][rsd][devices]"
   CHECK(e[0]["message"] == "unknown sensor 'nosuch'\nhint: a signal is a SENSOR's name (declared in this WORKCELL), OUT n, LABEL.OUT n, ON or OFF");
   CHECK(e[0]["range"] == LspSession::range(5, 7, 5, 13));
 }
+
+TEST_CASE("rsd: a device line's hint reaches the editor: the name meant, the keyword meant", "[lsp][rsd][devices]") {
+  rs::testing::TempDir dir;
+  const std::string cell = "OBJECT o\n  BOX 0 10 10 0 10 0\nEND\nWORKCELL c\n  OBJECT o AT 0 0 0\n"
+                           "  SENSOR eye ZONE 0 10 20 10 10 0\n";
+  OpenFile f(dir.write("c.rsd", cell + "  WIRE ey TO IN 1\nEND\n"), "robotsim-description");
+  const Json d = f.s.diagnostics(f.uri);
+  REQUIRE(d.size() == 1);
+  CHECK(d[0]["message"] == "unknown sensor 'ey'\nhint: did you mean 'eye'?");
+  CHECK(d[0]["range"] == LspSession::range(6, 7, 6, 9));
+  // "  WIRE eye TO IN 1 INVERTD": the word after the line at character 19.
+  OpenFile g(dir.write("d.rsd", cell + "  WIRE eye TO IN 1 INVERTD\nEND\n"), "robotsim-description");
+  const Json e = g.s.diagnostics(g.uri);
+  REQUIRE(e.size() == 1);
+  CHECK(e[0]["message"] == "expected the end of the WIRE line, found 'INVERTD'\nhint: did you mean 'INVERTED'?");
+  CHECK(e[0]["range"]["start"] == Json({{"line", 6}, {"character", 19}}));
+}

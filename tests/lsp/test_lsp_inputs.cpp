@@ -39,6 +39,35 @@ const std::string kWiredInputsProgram =
     "        WAITFOR 6 OFF\n"     // 5: nothing, but inputs start OFF
     "done:   END\n";              // 6
 
+// The diagnostics the server published first for `uri`: the compile's,
+// before a run's replace any.
+Json firstPublished(const LspSession& s, const std::string& uri) {
+  for (const Json& m : s.sent())
+    if (m.value("method", "") == "textDocument/publishDiagnostics" && m["params"]["uri"] == uri)
+      return m["params"]["diagnostics"];
+  return nullptr;
+}
+
+// A cell whose wires hold inputs at one level: ON INVERTED and OFF never on,
+// OFF INVERTED always on; input 5 has no wire while 1..4 have.
+const std::string kHeldWiresCell =
+    "WORKCELL wired\n"                               // 1
+    "  ROBOT adept-one AT 0 0 0\n"                   // 2
+    "  SENSOR eye BEAM 300 520 440  300 520 760\n"   // 3
+    "  WIRE eye TO IN 1\n"                           // 4
+    "  WIRE ON TO IN 3 INVERTED\n"                   // 5
+    "  WIRE OFF TO IN 2\n"                           // 6
+    "  WIRE OFF TO IN 4 INVERTED\n"                  // 7
+    "END\n";
+
+const std::string kHeldWiresProgram =
+    "; cell: wired.rsd\n"    // 0
+    "        WAITFOR 3 ON\n"  // 1: ON INVERTED
+    "        WAITFOR 2 ON\n"  // 2: OFF
+    "        WAITFOR 4 ON\n"  // 3: OFF INVERTED: always ON
+    "        WAITFOR 5 ON\n"  // 4: no wire
+    "        END\n";
+
 }  // namespace lsp_inputs_test
 
 using namespace lsp_inputs_test;
@@ -74,8 +103,10 @@ TEST_CASE("lsp: hover on an input number says what drives it, a WAITFOR nothing 
   REQUIRE(warned.size() == 1);
   CHECK(warned[0]["severity"] == 2);
   CHECK(warned[0]["range"] == LspSession::range(4, 16, 4, 17));
+  // adept-cell wires input 1 only, and the message says so.
   CHECK(warned[0]["message"] ==
-        "WAITFOR 3 ON can never end: nothing turns input 3 on (no wire in the cell, p.stim never turns it on)\n"
+        "input 3 has no wire in adept-cell (input 1 does), and p.stim never turns it on: it is never ON, so WAITFOR 3 "
+        "ON can never end\n"
         "hint: wire a source to it in the cell (WIRE eye TO IN 3), or give it a stimulus "
         "(\"at 1 input 3 on\" in the program's .stim file)");
 }
@@ -99,4 +130,44 @@ TEST_CASE("lsp: without a cell or a stimuli file, every WAITFOR n ON warns and g
   const std::vector<Json> deadlocks = withCode(d, "deadlock");
   REQUIRE(deadlocks.size() == 1);
   CHECK(deadlocks[0]["range"]["start"]["line"] == 1);
+}
+
+TEST_CASE("lsp: input-never-on follows the wire: OFF and ON INVERTED are never ON", "[lsp][inputs][devices]") {
+  rs::testing::TempDir dir;
+  dir.write("wired.rsd", kHeldWiresCell);
+  const std::string program = rs::lsp::uriOfPath(dir.write("p.rsp", kHeldWiresProgram));
+  LspSession s;
+  s.initialize();
+  s.open(program, kHeldWiresProgram);
+  s.idle();
+  // The hover says what a held wire does.
+  CHECK(hoverText(s, program, 1, 16) == "input 3: ON INVERTED, wired on line 5 of wired.rsd: always OFF");
+  CHECK(hoverText(s, program, 2, 16) == "input 2: OFF, wired on line 6 of wired.rsd: always OFF");
+  CHECK(hoverText(s, program, 3, 16) == "input 4: OFF INVERTED, wired on line 7 of wired.rsd: always ON");
+  // Three of the four waits can never end; the compile's warnings, before the run's deadlock takes line 1's place.
+  const std::vector<Json> warned = withCode(firstPublished(s, program), "input-never-on");
+  REQUIRE(warned.size() == 3);
+  CHECK(warned[0]["range"] == LspSession::range(1, 16, 1, 17));
+  CHECK(warned[0]["message"] ==
+        "input 3 is wired from ON INVERTED (line 5 of wired.rsd): it is never ON, so WAITFOR 3 ON can never end\n"
+        "hint: drop INVERTED from the WIRE on line 5, or give it a stimulus (\"at 1 input 3 on\" in the program's "
+        ".stim file)");
+  CHECK(warned[1]["range"]["start"]["line"] == 2);
+  CHECK(warned[1]["message"] ==
+        "input 2 is wired from OFF (line 6 of wired.rsd): it is never ON, so WAITFOR 2 ON can never end\n"
+        "hint: wire a sensor or an output to it on line 6 instead of OFF, or give it a stimulus (\"at 1 input 2 on\" "
+        "in the program's .stim file)");
+  CHECK(warned[2]["range"]["start"]["line"] == 4);
+  CHECK_THAT(warned[2]["message"].get<std::string>(),
+             Catch::StartsWith("input 5 has no wire in wired.rsd (inputs 1, 2, 3 and 4 do), no stimulus and no rule: "
+                               "it is never ON, so WAITFOR 5 ON can never end\n"));
+  // A stimulus that turns input 3 on ends that wait after all: no warning on it.
+  dir.write("p.stim", "at 1 input 3 on\n");
+  LspSession t;
+  t.initialize();
+  t.open(program, kHeldWiresProgram);
+  t.idle();
+  const std::vector<Json> left = withCode(firstPublished(t, program), "input-never-on");
+  REQUIRE(left.size() == 2);
+  CHECK(left[0]["range"]["start"]["line"] == 2);
 }

@@ -43,6 +43,23 @@ Strings errors(const Strings& body) {
   return rs::testing::workcellErrors(dir, "c.rsd");
 }
 
+// The diagnostics of `text` as c.rsd, hints and all.
+std::vector<rs::diag::Diagnostic> diagnosticsOf(const std::string& text) {
+  TempDir dir;
+  dir.write("c.rsd", text);
+  rs::compiler::Library lib({dir.path()});
+  CHECK_FALSE(lib.workcell(dir.file("c.rsd")));
+  return lib.diagnostics();
+}
+
+// The one diagnostic of a workcell line (on line 13), as "col: message | hint".
+std::string mistake(const std::string& line) {
+  const std::vector<rs::diag::Diagnostic> d = diagnosticsOf(cell({line}));
+  REQUIRE(d.size() == 1);
+  CHECK(d[0].pos.line == 13);
+  return fmt::format("{}: {} | {}", d[0].pos.col, d[0].message, d[0].hint);
+}
+
 }  // namespace devices_test
 
 using devices_test::errors;
@@ -217,4 +234,140 @@ TEST_CASE("description devices: 100,000 device lines, each mistake reported once
   CHECK(d.back().pos.line == firstWire + kEach - 1);
   CHECK(d.back().message == fmt::format("input {} has a second source: the WIRE at line {} drives it already",
                                         (kEach - 1) % 8 + 1, firstWire + (kEach - 1) % 8));
+}
+
+TEST_CASE("description devices: every mistake in a device line has a hint", "[models][devices]") {
+  // One bad line for each error the reader and the resolver raise; the
+  // table test checks that each is alone, on its line, with a hint.
+  const devices_test::Strings bad{
+      "  CONVEYOR 5 SPEED 5 RUN ON",                       // a name expected
+      "  CONVEYOR line1 FAST 5 RUN ON",                    // SPEED expected
+      "  CONVEYOR line1 SPEED fast RUN ON",                // a number expected
+      "  CONVEYOR line1 SPEED 0 RUN ON",                   // out of range
+      "  CONVEYOR line1 SPEED 5 ON",                       // RUN expected
+      "  CONVEYOR line1 SPEED 5 RUN TO",                   // a signal expected
+      "  CONVEYOR line1 SPEED 5 RUN OUT 9",                // no such output
+      "  CONVEYOR line1 SPEED 5 RUN OUT 1.5",              // not a whole number
+      "  CONVEYOR line1 SPEED 1e3 RUN ON",                 // an exponent
+      "  CONVEYOR nowhere SPEED 5 RUN ON",                 // unknown object
+      "  CONVEYOR line1 SPEED 5 RUN eye",                  // unknown sensor
+      "  CONVEYOR line1 SPEED 5 RUN nobody.OUT 1",         // unknown robot label
+      "  CONVEYOR line1 SPEED 5 RUN ON AT 1 2 3",          // words after the line
+      "  OBJECT blk AT 0 10 20 CONVEYOR line1 SPEED 5 RUN ON",  // not at the line's start
+      "  FEEDER 7 blk AT 0 10 20 EVERY 1",                 // a name expected
+      "  FEEDER f 7 AT 0 10 20 EVERY 1",                   // an object name expected
+      "  FEEDER f blk 0 10 20 EVERY 1",                    // AT expected
+      "  FEEDER f blk AT 0 10 EVERY 1",                    // a point expected
+      "  FEEDER f blk AT 0 10 20 SOMETIMES",               // EVERY or WHEN expected
+      "  FEEDER f blk AT 0 10 20 EVERY soon",              // seconds expected
+      "  FEEDER f blk AT 0 10 20 EVERY 0",                 // out of range
+      "  FEEDER f blk AT 0 10 20 WHEN",                    // a signal expected
+      "  FEEDER f blk AT 0 10 20 EVERY 1 COUNT many",      // a count expected
+      "  FEEDER f blk AT 0 10 20 EVERY 1 COUNT 0",         // out of range
+      "  FEEDER f blk AT 0 10 20 EVERY 1 COUNT 2 COUNT 3", // COUNT twice
+      "  FEEDER f nothing AT 0 10 20 EVERY 1",             // unknown object description
+      "  FEEDER f blk AT 20 5 20 EVERY 1",                 // inside a fixture
+      "  SENSOR 3 BEAM 0 15 0 90 15 0",                    // a name expected
+      "  SENSOR s BOX 0 15 0 90 15 0",                     // BEAM or ZONE expected
+      "  SENSOR s BEAM 0 15 0 90 15",                      // a point expected
+      "  SENSOR s BEAM 1 2 3 1 2 3",                       // the same point
+      "  SENSOR s ZONE 0 10 20 10 50",                     // an edge expected
+      "  SENSOR s ZONE 0 0 20 10 50 0",                    // no volume
+      "  SENSOR s ZONE 0 10 20 10 50 0 SEES NOBODY",       // ROBOTS or ALL expected
+      "  SENSOR far ZONE 1000 1010 10 0 10 0",             // out of the cell
+      "  SENSOR low BEAM 0 -5 0 10 -5 0",                  // under the floor
+      "  SENSOR s ZONE 0 10 20 10 50 0 SEES ALL SEES ROBOTS",  // SEES twice
+      "  SINK 4 ZONE 0 10 20 10 50 0",                     // a name expected
+      "  SINK s BEAM 0 10 20 10 50 0",                     // ZONE expected
+      "  SINK s ZONE 0 10 20 10 50 x",                     // an edge expected
+      "  SINK s ZONE 0 0 10 0 10 0",                       // no volume
+      "  SINK far ZONE 1000 1010 10 0 10 0",               // out of the cell
+      "  WIRE ON IN 1",                                    // TO expected
+      "  WIRE ON TO OUT 1",                                // IN expected
+      "  WIRE ON TO IN",                                   // a number expected
+      "  WIRE ON TO IN 0",                                 // no such input
+      "  WIRE ON TO IN 1 AFTER -1",                        // out of range
+      "  WIRE ON TO IN 1 AFTER later",                     // seconds expected
+      "  WIRE ON TO nobody.IN 1",                          // unknown robot label
+      "  WIRE ey TO IN 1",                                 // unknown sensor
+      "  WIRE ON TO IN 1 INVERTED AFTER 1",                // out of order
+      "  WIRE ON TO IN 1 # a comment?",                    // an unexpected character
+  };
+  for (const std::string& line : bad) {
+    CAPTURE(line);
+    const std::string m = devices_test::mistake(line);
+    CAPTURE(m);
+    CHECK(m.size() > 3);
+    CHECK(m.substr(m.size() - 3) != " | ");  // a hint
+  }
+  // Two-line mistakes: the second line is the error.
+  const std::vector<devices_test::Strings> pairs{
+      {"  SENSOR eye BEAM 0 15 0 90 15 0", "  SINK eye ZONE 90 100 30 10 50 0"},  // a second device named so
+      {"  OBJECT belt AT 0 0 100", "  CONVEYOR belt SPEED 5 RUN ON"},             // two objects named so
+      {"  OBJECT blk AT 0 10 20 AS b", "  CONVEYOR b SPEED 5 RUN ON"},            // no BELT
+      {"  CONVEYOR line1 SPEED 5 RUN ON", "  CONVEYOR LINE1 SPEED 5 RUN OFF"},   // a second CONVEYOR
+      {"  WIRE ON TO IN 3", "  WIRE OFF TO IN 3"},                              // a second source
+  };
+  for (const devices_test::Strings& body : pairs) {
+    CAPTURE(body[1]);
+    const std::vector<rs::diag::Diagnostic> d = devices_test::diagnosticsOf(devices_test::cell(body));
+    REQUIRE(d.size() == 1);
+    CHECK(d[0].pos.line == 14);
+    CHECK_FALSE(d[0].hint.empty());
+  }
+}
+
+TEST_CASE("description devices: unknown names are offered the near one, extra words the line's form", "[models][devices]") {
+  using devices_test::mistake;
+  // The sensor, the object and the object description a near miss meant.
+  CHECK(devices_test::errors({"  SENSOR eye BEAM 0 15 0 90 15 0", "  WIRE ey TO IN 1"}) ==
+        devices_test::Strings{"c.rsd:14:8: unknown sensor 'ey'"});
+  const auto eye = devices_test::diagnosticsOf(devices_test::cell({"  SENSOR eye BEAM 0 15 0 90 15 0", "  WIRE ey TO IN 1"}));
+  REQUIRE(eye.size() == 1);
+  CHECK(eye[0].hint == "did you mean 'eye'?");
+  CHECK(mistake("  CONVEYOR lin1 SPEED 5 RUN ON") ==
+        "12: unknown object 'lin1': no OBJECT line of this workcell places it or names it so | did you mean 'line1'?");
+  CHECK(mistake("  FEEDER f blok AT 0 10 20 EVERY 1") ==
+        "12: unknown object 'blok': not defined in this file, and no blok.rsd beside it or on the library path | "
+        "did you mean 'blk'?");
+  CHECK(mistake("  WIRE nosuch TO IN 1") ==
+        "8: unknown sensor 'nosuch' | a signal is a SENSOR's name (declared in this WORKCELL), OUT n, LABEL.OUT n, ON or OFF");
+  // A keyword misspelled: the one meant; a word no keyword is near: the line's form.
+  CHECK(mistake("  CONVEYOR line1 SPED 5 RUN ON") == "18: expected SPEED, found 'SPED' | did you mean 'SPEED'?");
+  CHECK(mistake("  SINK s ZONE 0 10 20 10 50") ==
+        "28: expected the ZONE's back edge before the end of the line | a SINK line reads SINK NAME ZONE left right "
+        "top bottom front back");
+  // A device line stands alone: nothing after it, nothing before it.
+  CHECK(mistake("  WIRE ON TO IN 1 INVERTED AFTER 1") ==
+        "28: expected the end of the WIRE line, found 'AFTER' | AFTER is written once, in its place: WIRE SOURCE TO "
+        "IN n [AFTER s] [INVERTED]");
+  CHECK(mistake("  WIRE ON TO IN 1 INVERTD") ==
+        "19: expected the end of the WIRE line, found 'INVERTD' | did you mean 'INVERTED'?");
+  CHECK(mistake("  SINK s ZONE 0 10 20 10 50 0 SINK t ZONE 0 10 20 10 50 0") ==
+        "31: expected the end of the SINK line, found 'SINK' | a device line stands alone: SINK NAME ZONE left right "
+        "top bottom front back; start the next one on a new line");
+  CHECK(mistake("  OBJECT blk AT 0 10 20 WIRE ON TO IN 1") ==
+        "25: WIRE starts a line of its own: it cannot follow other words | put the WIRE line on a new line");
+}
+
+TEST_CASE("description devices: every mistake in a BELT line has a hint", "[models][devices]") {
+  const devices_test::Strings bad{
+      "  BELT 0 1 1 0 1",                                // an edge expected
+      "  BELT 0 0 1 0 1 0 DIRECTION 1 0 0",              // no area
+      "  BELT 0 1 1 0 1 0 TOWARDS 1 0 0",                // DIRECTION expected
+      "  BELT 0 1 1 0 1 0 DIRECTION 1 0",                // a point expected
+      "  BELT 0 1 1 0 1 0 DIRECTION 0 0 0",              // zero
+      "  BELT 0 1 1 0 1 0 DIRECTION 1 0 0 END SHUT",     // OPEN expected
+      "  BELT 0 1 1 0 1 0 DIRECTION 1 0 0 COLOR RED",    // words after the line
+      "  PART BELT 0 1 1 0 1 0 DIRECTION 1 0 0",         // not at the line's start
+      "  BELT 0 1 1 0 1 0 DIRECTION 1 0 0\n  BELT 0 1 1 0 1 0 DIRECTION 1 0 0",  // a second BELT
+  };
+  for (const std::string& line : bad) {
+    CAPTURE(line);
+    const std::vector<rs::diag::Diagnostic> d = devices_test::diagnosticsOf(
+        "OBJECT o\n  BOX 0 1 1 0 1 0\n" + line + "\nEND\nWORKCELL c\n  OBJECT o AT 0 0 0\nEND\n");
+    REQUIRE(d.size() == 1);
+    CHECK(d[0].pos.line >= 3);
+    CHECK_FALSE(d[0].hint.empty());
+  }
 }

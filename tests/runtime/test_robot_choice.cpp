@@ -4,7 +4,8 @@
 // cell lacks is an error at its place with the cell's labels. The robots
 // stand 3000 apart on x, so the tool centre's x says which one ran (the
 // XR-4 at home has its tool centre at x = 238.1 from its base, as the
-// one-robot runs print).
+// one-robot runs print). At the end, issue 35: a deadlock on a wired input
+// names the robot's own wire.
 #include <catch2/catch.hpp>
 
 #include <string>
@@ -174,4 +175,59 @@ TEST_CASE("a wire without AFTER answers a WAITFOR at the same instant, not a dea
   CHECK(j["status"] == "finished");
   CHECK(j["time"] == 0.0);  // the wire's change is at the OUTSIG's instant
   CHECK(j["inputs"][2] == true);
+}
+
+namespace robot_choice_test {
+
+// A deadlock on a wired input says what drives it (launch/run_diagnostics.cpp),
+// instead of the --input and --stimuli hint of an input nothing drives. The
+// time is the program's DELAY (past the feeder's last tick, at 5 s: nothing
+// is left on the clock after it); the line numbers are counted below:
+// a part fed at 0 s beside the beam, which nothing moves; the beam is wired to input 1.
+const std::string kBeamCell =
+    "OBJECT blk\n  PART\n  BOX 0 10 10 0 10 0\nEND\n"  // 1..4
+    "WORKCELL c\n"                                    // 5
+    "  ROBOT rhino-xr4 AT 0 750 0\n"                  // 6
+    "  FEEDER f blk AT 200 700 30 EVERY 5 COUNT 1\n"  // 7
+    "  SENSOR eye BEAM 100 705 0  100 705 60\n"       // 8
+    "  WIRE eye TO IN 1\n"                            // 9
+    "  WIRE ON TO IN 2 INVERTED\n"                    // 10
+    "END\n";
+
+}  // namespace robot_choice_test
+
+using robot_choice_test::kBeamCell;
+
+TEST_CASE("run: a deadlock on a wired input says what drives it", "[cli][devices]") {
+  rs::testing::TempDir dir;
+  const std::string cell = dir.write("c.rsd", kBeamCell);
+  const std::string beam = dir.write("beam.rsp", "        DELAY 7\n        WAITFOR 1 ON\n        END\n");
+  const auto r = rs::testing::runCli({"run", beam, "--cell", cell});
+  INFO(r.out << r.err);
+  CHECK(r.code != 0);
+  CHECK(r.err.find(beam + ":2:9: error: deadlock: input 1 never turns ON") != std::string::npos);
+  CHECK(r.err.find("hint: input 1 is wired from sensor eye (line 9 of workcell c); no part crosses it after 7.000 s\n") !=
+        std::string::npos);
+  CHECK(r.err.find("--stimuli") == std::string::npos);
+
+  const std::string held = dir.write("held.rsp", "        WAITFOR 2 ON\n        END\n");
+  const auto h = rs::testing::runCli({"run", held, "--cell", cell});
+  INFO(h.out << h.err);
+  CHECK(h.err.find("hint: input 2 is wired from ON INVERTED (line 10 of workcell c): always OFF\n") != std::string::npos);
+
+  // An input with no wire keeps the hint it had.
+  const std::string none = dir.write("none.rsp", "        WAITFOR 3 ON\n        END\n");
+  const auto n = rs::testing::runCli({"run", none, "--cell", cell});
+  CHECK(n.err.find("hint: inputs change only by --input N=ON@SECONDS or a --stimuli file\n") != std::string::npos);
+}
+
+TEST_CASE("a deadlock's wire is the robot's own: another robot's wired input is not named", "[cell][devices]") {
+  rs::testing::TempDir dir;
+  dir.write("c.rsd", "WORKCELL two\n  ROBOT rhino-xr4 AT 0 750 0 AS left\n  ROBOT rhino-xr4 AT 3000 750 0 AS right\n"
+                     "  WIRE ON TO left.IN 1 INVERTED\n  WIRE OFF TO right.IN 1\nEND\n");
+  dir.write("p.rsp", "        WAITFOR 1 ON\n        END\n");
+  const auto left = rs::testing::runCli({"run", dir.file("p.rsp"), "--cell", dir.file("c.rsd"), "--robot", "left"});
+  CHECK(left.err.find("hint: input 1 is wired from ON INVERTED (line 4 of workcell two): always OFF\n") != std::string::npos);
+  const auto right = rs::testing::runCli({"run", dir.file("p.rsp"), "--cell", dir.file("c.rsd"), "--robot", "right"});
+  CHECK(right.err.find("hint: input 1 is wired from OFF (line 5 of workcell two): always OFF\n") != std::string::npos);
 }

@@ -4,6 +4,9 @@
 // program (its timed changes and its reactive rules), or nothing.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <optional>
+
 #include "base/number_text.h"
 #include "tools/lsp/device_text.h"
 #include "tools/lsp/features/features.h"
@@ -43,6 +46,50 @@ std::string lines(const std::vector<std::uint32_t>& list) {
   return out;
 }
 
+// The level a wire holds its input at whatever happens (ON or OFF, inverted
+// or not), or nothing for a source that changes (a sensor, an output).
+std::optional<bool> heldLevel(const workcell::Wire& w) {
+  if (w.source.kind == workcell::Signal::Kind::On) return !w.inverted;
+  if (w.source.kind == workcell::Signal::Kind::Off) return w.inverted;
+  return std::nullopt;
+}
+
+// "OFF", "ON INVERTED": a held wire's source as its line writes it.
+std::string heldSource(const workcell::Wire& w) {
+  return fmt::format("{}{}", w.source.kind == workcell::Signal::Kind::On ? "ON" : "OFF", w.inverted ? " INVERTED" : "");
+}
+
+// The hover's words for a wire that holds its input at one level.
+std::optional<std::string> heldText(const workcell::Wire& w, const std::string& cell) {
+  const std::optional<bool> level = heldLevel(w);
+  if (!level) return std::nullopt;
+  // Inputs start OFF: a wire that holds one ON with AFTER turns it on then.
+  const std::string held = !*level ? "always OFF" : w.afterUs > 0 ? fmt::format("ON from {} s", formatSeconds(w.afterUs)) : "always ON";
+  return fmt::format("{}, wired on line {} of {}: {}", heldSource(w), w.pos.line, cell, held);
+}
+
+// The wire of the program's robot to `input`, or null (one input takes one wire).
+const workcell::Wire* wireTo(const workcell::Workcell& cell, std::int64_t input) {
+  for (const workcell::Wire& w : cell.devices.wires)
+    if (w.input == input && wiresDrivenRobot(cell, w.robot)) return &w;
+  return nullptr;
+}
+
+// "input 1 does", "inputs 1 and 2 do", "inputs 1, 2 and 4 do": the program's
+// robot's wired inputs; empty when it has none.
+std::string wiredInputs(const workcell::Workcell& cell) {
+  std::vector<int> inputs;
+  for (const workcell::Wire& w : cell.devices.wires)
+    if (wiresDrivenRobot(cell, w.robot)) inputs.push_back(w.input);
+  std::sort(inputs.begin(), inputs.end());
+  inputs.erase(std::unique(inputs.begin(), inputs.end()), inputs.end());
+  std::string out;
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    out += fmt::format("{}{}", i == 0 ? "" : i + 1 == inputs.size() ? " and " : ", ", inputs[i]);
+  if (inputs.empty()) return out;
+  return fmt::format("{} {} {}", inputs.size() > 1 ? "inputs" : "input", out, inputs.size() > 1 ? "do" : "does");
+}
+
 }  // namespace
 
 bool wiresDrivenRobot(const workcell::Workcell& cell, const std::string& robot) {
@@ -54,6 +101,10 @@ std::vector<std::string> inputDrivers(const ProgramAnalysis& a, std::int64_t inp
   if (const workcell::Workcell* cell = a.cell().cell.get())
     for (const workcell::Wire& w : cell->devices.wires)
       if (w.input == input && wiresDrivenRobot(*cell, w.robot)) {
+        if (std::optional<std::string> held = heldText(w, cellName(a))) {
+          out.push_back(std::move(*held));
+          continue;
+        }
         std::string text = signalText(w.source, *cell);
         if (w.afterUs > 0) text += fmt::format(", {} later", formatSeconds(w.afterUs));
         if (w.inverted) text += ", inverted";
@@ -77,12 +128,11 @@ std::vector<std::string> inputDrivers(const ProgramAnalysis& a, std::int64_t inp
 
 bool inputCanTurnOn(const ProgramAnalysis& a, std::int64_t input) {
   if (const workcell::Workcell* cell = a.cell().cell.get())
-    for (const workcell::Wire& w : cell->devices.wires)
-      if (w.input == input && wiresDrivenRobot(*cell, w.robot)) {
-        // OFF never turns it on; OFF INVERTED always does.
-        const bool off = w.source.kind == workcell::Signal::Kind::Off;
-        if (!off || w.inverted) return true;
-      }
+    if (const workcell::Wire* w = wireTo(*cell, input)) {
+      // OFF and ON INVERTED never turn it on (a stimulus still may).
+      const std::optional<bool> level = heldLevel(*w);
+      if (!level || *level) return true;
+    }
   if (const std::optional<stimuli::Stimuli>& s = a.stimuli().parsed) {
     for (const stimuli::InputChange& c : s->changes)
       if (c.input == input && c.on) return true;
@@ -107,20 +157,46 @@ std::string inputHover(const ProgramAnalysis& a, std::int64_t input) {
   return out;
 }
 
+namespace {
+
+// The warning on a WAITFOR n ON nothing turns on: the wire that holds the
+// input OFF, else that the cell wires other inputs but not this one, else
+// that nothing drives it at all.
+diag::Diagnostic unendingWait(const ProgramAnalysis& a, std::int64_t input, diag::Pos at) {
+  const std::string& file = a.stimuli().file;
+  const std::string stimulus = fmt::format("give it a stimulus (\"at 1 input {} on\" in the program's .stim file)", input);
+  const auto warning = [&](std::string message, std::string hint) {
+    return diag::Diagnostic{a.source().name(), at, diag::Severity::Warning, std::move(message), "input-never-on",
+                            std::move(hint)};
+  };
+  const std::string wireHint = fmt::format("wire a source to it in the cell (WIRE eye TO IN {}), or {}", input, stimulus);
+  const workcell::Workcell* cell = a.cell().cell.get();
+  if (const workcell::Wire* w = cell ? wireTo(*cell, input) : nullptr)
+    return warning(fmt::format("input {} is wired from {} (line {} of {}): it is never ON, so WAITFOR {} ON can never end",
+                               input, heldSource(*w), w->pos.line, cellName(a), input),
+                   fmt::format("{}, or {}",
+                               w->inverted ? fmt::format("drop INVERTED from the WIRE on line {}", w->pos.line)
+                                           : fmt::format("wire a sensor or an output to it on line {} instead of OFF", w->pos.line),
+                               stimulus));
+  if (const std::string others = cell ? wiredInputs(*cell) : std::string(); !others.empty())
+    return warning(fmt::format("input {} has no wire in {} ({}), {}: it is never ON, so WAITFOR {} ON can never end", input,
+                               cellName(a), others,
+                               file.empty() ? std::string("no stimulus and no rule") : fmt::format("and {} never turns it on", file),
+                               input),
+                   wireHint);
+  const std::string stim = file.empty() ? std::string("no stimuli file beside the program") : fmt::format("{} never turns it on", file);
+  return warning(fmt::format("WAITFOR {} ON can never end: nothing turns input {} on (no wire in the cell, {})", input, input, stim),
+                 wireHint);
+}
+
+}  // namespace
+
 std::vector<diag::Diagnostic> unendingWaits(const ProgramAnalysis& a) {
   std::vector<diag::Diagnostic> out;
   for (const IndexedInstruction& in : a.index().instructions()) {
     if (!in.known || !vm::has(in.op, vm::kWaits) || vm::info(in.op).format != vm::Format::Input || !in.inputOn || in.inputPos.line == 0) continue;
     if (inputCanTurnOn(a, in.input)) continue;
-    const std::string stim = a.stimuli().file.empty() ? std::string("no stimuli file beside the program")
-                                                      : fmt::format("{} never turns it on", a.stimuli().file);
-    out.push_back({a.source().name(), in.inputPos, diag::Severity::Warning,
-                   fmt::format("WAITFOR {} ON can never end: nothing turns input {} on (no wire in the cell, {})",
-                               in.input, in.input, stim),
-                   "input-never-on",
-                   fmt::format("wire a source to it in the cell (WIRE eye TO IN {0}), or give it a stimulus "
-                               "(\"at 1 input {0} on\" in the program's .stim file)",
-                               in.input)});
+    out.push_back(unendingWait(a, in.input, in.inputPos));
   }
   return out;
 }
