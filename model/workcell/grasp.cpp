@@ -173,17 +173,17 @@ Settled Grasping::settleHeld(std::span<const std::int32_t> encoders, std::size_t
   return settleFrom(o, h.tool->frame(encoders) * h.hold.offset);
 }
 
-Settled Grasping::settleFrom(std::size_t o, const Eigen::Isometry3d& pose) const {
+Settled Grasping::settleFrom(std::size_t o, const Eigen::Isometry3d& pose, std::optional<std::size_t> skip) const {
   // Onto anything but a part a hand carries: where that one last rested is
   // no support, so it is moved out of every footprint for the search.
   // (By hand, not by object: a cell has a hand or two and many objects.)
   bool carried = false;
   for (const Hand& h : hands_) carried |= h.hold.held && *h.hold.held != o && *h.hold.held < resting_.size();
-  if (!carried) return settle(*cell_, resting_, o, pose, std::nullopt, settleReach_, &supportBoxes_, &inCell_);
+  if (!carried) return settle(*cell_, resting_, o, pose, skip, settleReach_, &supportBoxes_, &inCell_);
   std::vector<Eigen::Isometry3d> poses = resting_;
   for (std::size_t p = 0; p < poses.size(); ++p)
     if (p != o && holder(p)) poses[p].pretranslate(Eigen::Vector3d(kParked, 0, 0));
-  return settle(*cell_, poses, o, pose, std::nullopt, settleReach_, &supportBoxes_, &inCell_);
+  return settle(*cell_, poses, o, pose, skip, settleReach_, &supportBoxes_, &inCell_);
 }
 
 void Grasping::reset() {

@@ -130,6 +130,10 @@ class Grasping {
   /// Where the held part would settle if it were let go with the robot's
   /// motors at `encoders` (meaningful while one is held).
   Settled settleHeld(std::span<const std::int32_t> encoders, std::size_t hand = 0);
+  /// Where resting part `o` settles from where it rests, on anything but
+  /// object `skip` and the parts hands carry: a part that ran off the open
+  /// end of `skip`'s belt (runtime/cell/devices.h) settles as a let-go does.
+  Settled settleResting(std::size_t o, std::size_t skip) const { return settleFrom(o, resting_[o], skip); }
   /// Whether a move from `before` to `after` turns the gripper towards open.
   bool opens(std::span<const std::int32_t> before, std::span<const std::int32_t> after, std::size_t hand = 0) const {
     const Hand* h = gripping(hand, before, after);
@@ -192,8 +196,8 @@ class Grasping {
   };
   std::optional<std::size_t> smallestAt(const Eigen::Vector3d& point, bool partsOnly,
                                         std::optional<std::size_t> takingHand = std::nullopt) const;
-  /// Where part `o`, let go at `pose`, comes to rest.
-  Settled settleFrom(std::size_t o, const Eigen::Isometry3d& pose) const;
+  /// Where part `o`, let go at `pose`, comes to rest (never on `skip`).
+  Settled settleFrom(std::size_t o, const Eigen::Isometry3d& pose, std::optional<std::size_t> skip = std::nullopt) const;
   /// A hand other than `hand` that holds object `o`.
   std::optional<std::size_t> otherHolder(std::size_t o, std::size_t hand) const;
   /// The hand, when it has a gripper whose motor both positions name.

@@ -1,6 +1,8 @@
 // The belts' plan (devices.h, CellDevices::plan): who rides which running
-// belt from now, how far, and when a riding part next meets a sensor or a
-// sink, solved exactly on the microsecond clock.
+// belt from now (with the parts piled on it), how far (behind the pile
+// ahead, a part a hand holds in the way, the stop plate), and when a riding
+// part next meets a sensor or a sink, solved exactly on the microsecond
+// clock. The parts that run off an open end: belt_run_off.cpp.
 #include "runtime/cell/devices.h"
 
 #include <algorithm>
@@ -18,10 +20,6 @@ namespace {
 using workcell::Signal;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// A part rests on a belt when its bottom is this near the belt's top (a
-// part let go 1 above the belt, as a gripper holding it 1 above its middle
-// does, rides it).
-constexpr double kRestTolerance = 1.0 + 1e-6;
 // Motion that never ends is solved for within this many seconds.
 constexpr double kHorizon = 1e9;
 
@@ -122,13 +120,29 @@ vm::Micros afterMicro(vm::Micros now, double tau) {
 // instant), so a production loop solves each of its plans once.
 void CellDevices::plan(vm::Micros now) {
   const workcell::Devices& d = cell_.devices;
+  // A held part stands where its hand has it now (a hand-over's, where it rests).
+  held_.clear();
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const std::size_t o = parts_[i];
+    const std::optional<std::size_t> hand = world_.holder(o);
+    if (!hand) continue;
+    held_.push_back(i);
+    if (belts_.empty() || world_.shared(o) || *hand >= robots_.size() || !robots_[*hand]) {
+      heldBox_[o] = partBox(o);
+      continue;
+    }
+    heldMotors_.assign(robots_[*hand]->motorCount(), 0);
+    robots_[*hand]->motorsAt(now, heldMotors_);
+    heldBox_[o] = transformedBox(designBoxes_[o], world_.objectPose(o, heldMotors_, now, *hand));
+  }
   // Written in place: every wake plans.
   planKey_.resize(1 + 7 * parts_.size() + d.conveyors.size() + d.feeders.size());
   std::uint64_t* w = planKey_.data();
   *w++ = parts_.size();
   for (const std::size_t o : parts_) {
-    const Eigen::AlignedBox3d& b = partBox(o);
-    *w++ = state_.ridden[o] << 1 | (world_.holder(o) ? 1 : 0);
+    const bool held = world_.holder(o).has_value();
+    const Eigen::AlignedBox3d& b = held ? heldBox_[o] : partBox(o);
+    *w++ = state_.ridden[o] << 1 | (held ? 1 : 0);
     for (int k = 0; k < 3; ++k)
       *w++ = std::bit_cast<std::uint64_t>(b.min()[k]), *w++ = std::bit_cast<std::uint64_t>(b.max()[k]);
   }
@@ -144,6 +158,16 @@ void CellDevices::plan(vm::Micros now) {
   for (std::size_t c = 0; c < p.carried.size(); ++c) state_.carried[c] += p.carried[c];
   // The next time something may change.
   vm::Micros next = INT64_MAX;
+  // A held part in riders' way, or over their belt: where it is at the end
+  // of its robot's move (and of every move it makes while so) is looked at.
+  std::fill(state_.heldWatched.begin(), state_.heldWatched.end(), false);
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    if (!p.parts[i].watch) continue;
+    const std::size_t hand = *world_.holder(parts_[i]);
+    if (hand >= state_.heldWatched.size()) continue;
+    state_.heldWatched[hand] = true;
+    if (state_.moveUntil[hand] > now) next = std::min(next, state_.moveUntil[hand]);
+  }
   for (std::size_t f = 0; f < d.feeders.size(); ++f) next = std::min(next, state_.nextDue[f]);
   // Both microseconds grow with tau: the least of each kind is the first.
   if (p.firstStart) next = std::min(next, startMicro(now, *p.firstStart));
@@ -171,9 +195,13 @@ CellDevices::Plan CellDevices::solvePlan() {
   Plan plan;
   plan.parts.resize(parts_.size());
   plan.carried.assign(d.conveyors.size(), 0);
-  for (std::size_t i = 0; i < parts_.size(); ++i) plan.parts[i].ridden = state_.ridden[parts_[i]];
+  // A part a hand took rides nothing: let go on a belt, even the one it
+  // was taken from, it begins a new ride there (and is counted).
+  for (std::size_t i = 0; i < parts_.size(); ++i)
+    plan.parts[i].ridden = world_.holder(parts_[i]) ? 0 : state_.ridden[parts_[i]];
   std::vector<bool>& taken = takenScratch_;
   for (const std::size_t o : parts_) taken[o] = false;
+  const auto watchHeld = [&](std::size_t i) { plan.parts[i].watch = true; };
   for (std::size_t c = 0; c < d.conveyors.size(); ++c) {
     const workcell::Conveyor& conveyor = d.conveyors[c];
     if (!belts_[c] || !running(c)) continue;
@@ -186,15 +214,38 @@ CellDevices::Plan CellDevices::solvePlan() {
       if (taken[o] || world_.holder(o)) continue;
       const Eigen::AlignedBox3d& b = partBox(o);
       const Eigen::Vector3d centre = b.center();
-      if (std::abs(b.min().y() - g.belt.max().y()) > kRestTolerance) continue;
+      if (!onBelt(b, g)) continue;
       if (centre.x() < g.belt.min().x() || centre.x() > g.belt.max().x() || centre.z() < g.belt.min().z() ||
           centre.z() > g.belt.max().z())
         continue;
+      // Its centre at or past an open end: it ran off (runOff), it rides this belt no more.
+      if (obj.belt->endOpen && g.dir.dot(centre) >= g.end - 1e-9) continue;
       const Eigen::Vector3d half = b.sizes() / 2;
       const double along = g.dir.cwiseAbs().dot(half), across = g.lateral.cwiseAbs().dot(half);
       riders.push_back({o, i, g.dir.dot(centre) + along, 2 * along, g.lateral.dot(centre) - across,
-                        g.lateral.dot(centre) + across});
+                        g.lateral.dot(centre) + across, 0, b.max().y()});
       taken[o] = true;
+    }
+    // The parts piled on a rider ride with it, and the pile is as long, wide
+    // and high as all its boxes (a part on two riders goes with the first
+    // in the objects' order).
+    pile_.clear();
+    for (Rider& r : riders) {
+      r.first = pile_.size();
+      pile_.push_back(r.at);
+      gatherPile(pile_, r.first);
+      r.count = pile_.size() - r.first;
+      for (std::size_t k = r.first + 1; k < pile_.size(); ++k) {
+        const Eigen::AlignedBox3d& b = partBox(parts_[pile_[k]]);
+        const Eigen::Vector3d half = b.sizes() / 2;
+        const double along = g.dir.cwiseAbs().dot(half), across = g.lateral.cwiseAbs().dot(half);
+        const double mid = g.dir.dot(b.center()), back = r.lead - r.length;
+        if (mid + along > r.lead) r.lead = mid + along, r.length = r.lead - back;
+        if (mid - along < r.lead - r.length) r.length = r.lead - (mid - along);
+        r.lo = std::min(r.lo, g.lateral.dot(b.center()) - across);
+        r.hi = std::max(r.hi, g.lateral.dot(b.center()) + across);
+        r.top = std::max(r.top, b.max().y());
+      }
     }
     std::sort(riders.begin(), riders.end(), [](const Rider& a, const Rider& b) {
       return a.lead != b.lead ? a.lead > b.lead : a.o < b.o;
@@ -205,15 +256,40 @@ CellDevices::Plan CellDevices::solvePlan() {
       for (std::size_t k = 0; k < i; ++k)
         if (riders[k].lo < r.hi - 1e-9 && r.lo < riders[k].hi - 1e-9)
           limit = std::min(limit, riders[k].final - riders[k].length);
+      // A part a hand holds does not ride: one that stands in the pile's
+      // lane, between the belt's top and the pile's, ahead of its middle, stops it at its back.
+      for (const std::size_t h : held_) {
+        const Eigen::AlignedBox3d& hb = heldBox_[parts_[h]];
+        const Eigen::Vector3d half = hb.sizes() / 2;
+        const double along = g.dir.cwiseAbs().dot(half), across = g.lateral.cwiseAbs().dot(half);
+        const double mid = g.dir.dot(hb.center()), side = g.lateral.dot(hb.center());
+        if (side - across >= r.hi - 1e-9 || r.lo >= side + across - 1e-9) continue;
+        if (hb.min().y() >= r.top - 1e-6 || hb.max().y() <= g.belt.max().y() + 1e-6) continue;
+        if (mid <= r.lead - r.length / 2) continue;
+        limit = std::min(limit, mid - along);
+        watchHeld(h);
+      }
       const double travel = std::max(0.0, limit - r.lead);
       r.final = r.lead + travel;
       if (travel <= 1e-9) continue;
-      Plan::Part& part = plan.parts[r.at];
-      part.velocity = g.dir * conveyor.speed;
-      part.travel = travel;
-      if (part.ridden != c + 1) ++plan.carried[c];
-      part.ridden = c + 1;
+      for (std::size_t k = r.first; k < r.first + r.count; ++k) {
+        Plan::Part& part = plan.parts[pile_[k]];
+        part.velocity = g.dir * conveyor.speed;
+        part.travel = travel;
+        part.stacked = k != r.first;
+        if (part.ridden != c + 1) ++plan.carried[c];
+        part.ridden = c + 1;
+      }
     }
+    // A held part over a belt that carries parts may be put in their way
+    // by the move under way: looked at again at its end.
+    if (!riders.empty())
+      for (const std::size_t h : held_) {
+        const Eigen::AlignedBox3d& hb = heldBox_[parts_[h]];
+        if (hb.min().x() < g.belt.max().x() && g.belt.min().x() < hb.max().x() && hb.min().z() < g.belt.max().z() &&
+            g.belt.min().z() < hb.max().z() && hb.max().y() > g.belt.max().y())
+          watchHeld(h);
+      }
   }
   for (std::size_t i = 0; i < parts_.size(); ++i) {
     const Plan::Part& part = plan.parts[i];
@@ -242,7 +318,7 @@ CellDevices::Plan CellDevices::solvePlan() {
       const Interval in = zoneInterval(centre, w, T, s.zone);
       if (!in.empty()) plan.at(std::max(in.from, 0.0), false);
     }
-    if (std::isinf(part.travel)) {
+    if (std::isinf(part.travel) && !part.stacked) {
       // The centre passes the open end.
       const Eigen::AlignedBox3d& belt = belts_[part.ridden - 1]->belt;
       const Eigen::Vector3d dir = w / speed;

@@ -172,6 +172,8 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, std::vect
   sights_.resize(robots_.size());
   state_.moveUntil.assign(robots_.size(), 0);
   state_.sightWakeAt.assign(robots_.size(), -1);
+  state_.heldWatched.assign(robots_.size(), false);
+  heldBox_.assign(n, Eigen::AlignedBox3d());
   for (std::size_t r = 0; r < robots_.size() && !d.sensors.empty(); ++r) {
     if (!robots_[r]) continue;
     sights_[r] = std::make_unique<RobotSight>(cell, world, robots_[r]->motorCount(), r);
@@ -182,8 +184,12 @@ CellDevices::CellDevices(const workcell::Workcell& cell, World& world, std::vect
 CellDevices::~CellDevices() = default;
 
 void CellDevices::robotMoves(vm::Micros until, std::size_t robot) {
-  if (robot >= sights_.size() || !sights_[robot] || until == state_.moveUntil[robot]) return;
+  if (robot >= state_.moveUntil.size() || until == state_.moveUntil[robot]) return;
   state_.moveUntil[robot] = until;
+  // Its part stands in riders' way (or over their belt): the devices look
+  // where it is at the move's end (docs/models.md, "Belts").
+  if (state_.heldWatched[robot]) clock_.schedule(until, id_);
+  if (robot >= sights_.size() || !sights_[robot]) return;
   sync();  // a take or a let-go just before the move: the sensors look again now
   watchRobot(clock_.now(), robot);
 }
@@ -410,28 +416,8 @@ void CellDevices::wake(const CellEvent& event, Scheduler& clock) {
   }
   moveTo(now);
   for (const std::size_t o : parts_) worldBox(o);  // partBox() holds from here on, kept so as the devices move parts
-  // Parts past an open end fall onto what is below them.
-  for (const std::size_t o : anyOpenEnd_ ? std::span<const std::size_t>(parts_) : std::span<const std::size_t>()) {
-    if (state_.ridden[o] == 0 || world_.holder(o)) continue;
-    const std::size_t c = state_.ridden[o] - 1;
-    const workcell::PlacedObject& obj = cell_.objects[d.conveyors[c].object];
-    if (!belts_[c] || !obj.belt->endOpen) continue;
-    const Eigen::AlignedBox3d b = partBox(o);
-    if (belts_[c]->dir.dot(b.center()) < belts_[c]->end - 1e-9) continue;
-    double below = cell_.floor ? *cell_.floor : b.min().y();
-    for (std::size_t k = 0; k < state_.number.size(); ++k) {
-      if (k == o || !present(k)) continue;
-      const Eigen::AlignedBox3d& other = worldBox(k);
-      if (other.isEmpty() || other.max().y() > b.min().y() + 1e-6) continue;
-      if (b.center().x() < other.min().x() || b.center().x() > other.max().x() || b.center().z() < other.min().z() ||
-          b.center().z() > other.max().z())
-        continue;
-      below = std::max(below, other.max().y());
-    }
-    place(o, Eigen::Vector3d(0, below - b.min().y(), 0));
-    worldBox(o);
-    state_.ridden[o] = 0, state_.velocity[o].setZero(), state_.travel[o] = 0;
-  }
+  // Parts past an open end run off and settle, as a let-go does.
+  if (anyOpenEnd_) runOff(now);
   // Sinks take the parts whose centre is in their zone.
   for (std::size_t i = 0; i < parts_.size();) {
     const std::size_t o = parts_[i];

@@ -61,16 +61,23 @@ class RobotIo {
 
 /// One thing a device did, for the trace and the run log.
 struct DeviceEvent {
-  enum class Kind : std::uint8_t { SensorOn, SensorOff, Fed, Waits, Taken };
+  /// RunsOff: a part ran off a conveyor's open end and settled (`device`
+  /// is the conveyor; `on`, `support`, `drop` as a let-go's GraspEvent).
+  enum class Kind : std::uint8_t { SensorOn, SensorOff, Fed, Waits, Taken, RunsOff };
   Kind kind = Kind::SensorOn;
   vm::Micros at = 0;
   std::size_t device = 0;         ///< in its kind's list of Workcell::devices
-  std::size_t object = 0;         ///< Fed, Taken, Waits (what takes the place): index in the objects
+  std::size_t object = 0;         ///< Fed, Taken, Waits (what takes the place), RunsOff: index in the objects
   std::uint32_t number = 0;       ///< that object's number
   Eigen::Vector3d place = Eigen::Vector3d::Zero();  ///< Fed: its AT corner
+  workcell::Settled::On on = workcell::Settled::On::Nothing;  ///< RunsOff: what it settled on
+  std::size_t support = 0;                                    ///<   (an index in the objects)
+  std::uint32_t supportNumber = 0;                            ///<   its number
+  double drop = 0;                                            ///<   and how far it dropped
   bool operator==(const DeviceEvent& o) const {
     return kind == o.kind && at == o.at && device == o.device && object == o.object && number == o.number &&
-           place == o.place;
+           place == o.place && on == o.on && support == o.support && supportNumber == o.supportNumber &&
+           drop == o.drop;
   }
 };
 
@@ -177,6 +184,7 @@ class CellDevices final : public CellProcess {
     std::uint64_t planWakeSeq = 0;           //   this event of the clock: a new plan cancels it
     std::vector<vm::Micros> moveUntil;       // per robot: its move under way ends here
     std::vector<vm::Micros> sightWakeAt;     // per robot: the wake for what it shows the sensors next (-1: none)
+    std::vector<bool> heldWatched;           // per robot: its hand's part stands in riders' way or over their belt
     vm::Micros lookAt = -1;                  // an untagged wake waits for this instant (wakeNow)
     bool operator==(const State&) const = default;
   };
@@ -193,9 +201,13 @@ class CellDevices final : public CellProcess {
     Eigen::Vector3d dir, lateral;
     double end = 0;  // the belt's far end along dir
   };
+  // A part riding a belt, with the parts piled on it (pile_[first, first +
+  // count), itself first): the pile's extent along the belt (lead, length),
+  // across it (lo, hi) and its top.
   struct Rider {
     std::size_t o, at;  // the part, its place in parts_
-    double lead, length, lo, hi, final = 0;
+    double lead, length, lo, hi, final = 0, top = 0;
+    std::size_t first = 0, count = 1;
   };
   // A plan, solved (solvePlan) for the words plan() keys it by: per part
   // present (parts_ order) how it rides; per conveyor, the parts that
@@ -206,6 +218,8 @@ class CellDevices final : public CellProcess {
       Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
       double travel = 0;
       std::size_t ridden = 0;
+      bool stacked = false;  // it rides on another part, not on the belt
+      bool watch = false;    // held: in riders' way or over their belt (its robot's moves' ends are looked at)
     };
     std::vector<Part> parts;
     std::vector<std::uint64_t> carried;
@@ -219,6 +233,10 @@ class CellDevices final : public CellProcess {
   };
   /// Plans kept at most (all forgotten at once when full).
   static constexpr std::size_t kPlans = 4096;
+  /// A part rests on a belt, or on a part, when its bottom is this near the
+  /// top (a part let go 1 above the belt, as a gripper holding it 1 above
+  /// its middle does, rides it).
+  static constexpr double kRestTolerance = 1.0 + 1e-6;
   Plan solvePlan();
   /// Look at the cell now (an untagged wake), once for each instant.
   void wakeNow();
@@ -226,6 +244,13 @@ class CellDevices final : public CellProcess {
   void listParts();
   void plan(vm::Micros now);
   void moveTo(vm::Micros now);
+  /// The parts whose centre passed an open end run off and settle (belt_run_off.cpp).
+  void runOff(vm::Micros now);
+  /// Appends to `pile` every part resting on one in it from `from` on
+  /// (transitively), neither held nor takenScratch_ (which it marks).
+  void gatherPile(std::vector<std::size_t>& pile, std::size_t from);
+  /// Whether box `b` rests on belt `g` (its bottom within the tolerance of the top).
+  static bool onBelt(const Eigen::AlignedBox3d& b, const Geometry& g);
   void feed(std::size_t f, vm::Micros now);
   bool signal(const workcell::Signal& s) const;
   /// The robot a signal's or a wire's label names (empty: the first), or
@@ -265,6 +290,11 @@ class CellDevices final : public CellProcess {
   std::vector<std::size_t> parts_;
   std::vector<bool> takenScratch_;  // plan's: a part rides one belt
   std::vector<Rider> riders_;
+  std::vector<std::size_t> pile_;           // the riders' piles (Rider::first, count)
+  std::vector<std::size_t> held_;           // plan's: the held parts present
+  std::vector<Eigen::AlignedBox3d> heldBox_;  // per object: a held part's box where its hand has it now
+  std::vector<std::int32_t> heldMotors_;    // scratch
+  std::vector<std::pair<std::size_t, std::size_t>> runOff_;  // runOff's: (part, conveyor)
   base::ChainedMemo<Plan> plans_{kPlans};
   std::vector<std::uint64_t> planKey_;  // plan()'s scratch
   std::vector<std::unique_ptr<Wire>> wires_;

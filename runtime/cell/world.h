@@ -114,6 +114,17 @@ class World {
     state_.rests[o].reset();
   }
 
+  /// Part `o` (resting) ran off the open end of object `from`'s belt: it
+  /// settles straight down from where it rests, as a let-go does (never
+  /// onto `from` nor a part a hand carries), and rests there. No let-go
+  /// put it there: it has no restOf.
+  workcell::Settled settleRunOff(std::size_t o, std::size_t from) {
+    const workcell::Settled s = grasping_.settleResting(o, from);
+    place(o, s.pose);
+    state_.rests[o].reset();
+    return s;
+  }
+
   /// Counts every take and let-go so far.
   std::uint64_t eventCount() const { return state_.events; }
   /// The latest take or let-go (meaningful once eventCount() > 0).

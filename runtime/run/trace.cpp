@@ -85,6 +85,17 @@ void TraceWriter::finish() {
   collisionEvents();
 }
 
+namespace {
+
+// A run-off's settling as a let-go's, for the words placing.h gives it.
+GraspEvent runOffSettling(const DeviceEvent& e) {
+  GraspEvent g{e.at, e.object, false, Eigen::Isometry3d::Identity(), e.on, e.support, e.drop};
+  g.number = e.number, g.supportNumber = e.supportNumber;
+  return g;
+}
+
+}  // namespace
+
 // One line per input change during the step (or since the last step), at
 // its time and with its cause, before the step's own line.
 std::string deviceEventText(const DeviceEvent& e, const workcell::Workcell& cell) {
@@ -102,6 +113,14 @@ std::string deviceEventText(const DeviceEvent& e, const workcell::Workcell& cell
       return fmt::format("feeder {}: waits, its place is taken by {}", base::safeText(d.feeders[e.device].name),
                          object());
     case DeviceEvent::Kind::Taken: return fmt::format("sink {}: takes {}", base::safeText(d.sinks[e.device].name), object());
+    case DeviceEvent::Kind::RunsOff: {
+      // Worded as a let-go's settling is.
+      const std::string how = e.on == workcell::Settled::On::Nothing
+                                  ? std::string("nothing under it, it stays there")
+                                  : "it " + runtime::settleText(runOffSettling(e), cell);
+      return fmt::format("conveyor {}: {} runs off its end: {}", base::safeText(d.conveyors[e.device].name), object(),
+                         how);
+    }
   }
   return "";
 }
@@ -115,10 +134,12 @@ void TraceWriter::deviceEvent(const DeviceEvent& e) {
   nlohmann::ordered_json j;
   const workcell::Devices& d = cell.devices;
   const bool sensor = e.kind == DeviceEvent::Kind::SensorOn || e.kind == DeviceEvent::Kind::SensorOff;
-  j["event"] = sensor ? "sensor" : e.kind == DeviceEvent::Kind::Taken ? "sink" : "feeder";
+  const bool runOff = e.kind == DeviceEvent::Kind::RunsOff;
+  j["event"] = sensor ? "sensor" : e.kind == DeviceEvent::Kind::Taken ? "sink" : runOff ? "conveyor" : "feeder";
   j["time"] = seconds(e.at);
   j["name"] = sensor ? d.sensors[e.device].name
               : e.kind == DeviceEvent::Kind::Taken ? d.sinks[e.device].name
+              : runOff                             ? d.conveyors[e.device].name
                                                    : d.feeders[e.device].name;
   if (sensor) j["on"] = e.kind == DeviceEvent::Kind::SensorOn;
   if (!sensor) {
@@ -127,6 +148,15 @@ void TraceWriter::deviceEvent(const DeviceEvent& e) {
   }
   if (e.kind == DeviceEvent::Kind::Fed) j["at"] = roundedPoint(std::array<double, 3>{e.place.x(), e.place.y(), e.place.z()});
   if (e.kind == DeviceEvent::Kind::Waits) j["waits"] = true;
+  if (runOff && e.on != workcell::Settled::On::Nothing) {
+    // As a let-go's "grasp": {"settled": ...}.
+    nlohmann::ordered_json settled;
+    settled["on"] = runtime::supportText(runOffSettling(e), cell);
+    if (e.on != workcell::Settled::On::Floor) settled["object"] = e.supportNumber;
+    settled["belt"] = e.on == workcell::Settled::On::Belt;
+    settled["drop"] = std::round(e.drop * 1e4) / 1e4 + 0.0;
+    j["settled"] = settled;
+  }
   j["text"] = deviceEventText(e, cell);
   out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
 }
