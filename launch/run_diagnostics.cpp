@@ -64,7 +64,9 @@ std::string sourceWords(const workcell::Signal& s) {
 std::string wiredInputHint(const runtime::Run& run, const vm::RunOutcome& outcome) {
   const vm::Image& image = *run.spec().image;
   const workcell::Workcell* cell = run.rig().cell();
-  if (!cell || outcome.index >= image.code.size() || image.code[outcome.index].op != vm::Op::WaitFor) return {};
+  if (!cell || outcome.index >= image.code.size()) return {};
+  const vm::Op op = image.code[outcome.index].op;  // a wait on an input (WAITFOR): a = input, b = state
+  if (!vm::has(op, vm::kWaits) || vm::info(op).format != vm::Format::Input) return {};
   const int input = image.code[outcome.index].a;
   const bool on = image.code[outcome.index].b != 0;
   for (const workcell::Wire& w : cell->devices.wires) {

@@ -108,7 +108,7 @@ TEST_CASE("debug cell: set input on a wired input is refused, print says what se
   CHECK(debugtest::afterCommand(r.out, "print in 2").find("in 2 = 0 (since 1.900 s: wire from sensor eye)") != std::string::npos);
 }
 
-TEST_CASE("dap: setVariable on a wired input is refused; Inputs, evaluate and a data breakpoint give the cause",
+TEST_CASE("dap: setVariable on a wired input is refused, and Inputs, evaluate and a data breakpoint give the cause",
           "[debug][dap][input-causes]") {
   using rs::wire::Json;
   const std::string program = debugtest::kExamples + "adept_production.rsp";

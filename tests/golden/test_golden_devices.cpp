@@ -34,7 +34,8 @@
 
 #include "tests/cli/cli_support.h"
 
-namespace {
+// A named namespace: the unity build may put this file beside test_golden.cpp.
+namespace golden_devices {
 
 const std::string kGoldenDir = std::string(ROBOTSIM_SOURCE_DIR) + "/tests/golden/";
 
@@ -59,7 +60,9 @@ void checkDeviceRun(const std::string& goldenName, const std::vector<std::string
   CHECK(actual == expected);
 }
 
-}  // namespace
+}  // namespace golden_devices
+
+using golden_devices::checkDeviceRun;
 
 TEST_CASE("golden: a device run's text trace and summary", "[golden][devices]") {
   checkDeviceRun("belt_cell.trace", {"--trace"});
