@@ -10,6 +10,7 @@
 #include "runtime/render/palette.h"
 #include "runtime/render/scene.h"
 #include "runtime/render/tool_path.h"
+#include "runtime/cell/input_cause.h"
 #include "runtime/run/device_history.h"
 #include "vm/io_lines.h"
 
@@ -123,6 +124,18 @@ Json motionModel(const runtime::RunLog& rec, const workcell::Workcell& cell) {
           {"velocity", velocity}, {"travel", travel}, {"present", present}};
 }
 
+// Every change of an input and what made it (a stimulus, a rule, a wire),
+// in the words the debugger prints beside an input ("since 1.100 s: wire
+// from sensor eye"): the page's lamps say it in their titles.
+Json inputCauseModel(const runtime::RunLog& rec) {
+  Json at = Json::array(), input = Json::array(), on = Json::array(), since = Json::array();
+  for (const runtime::InputRecord& r : rec.inputChanges) {
+    at.push_back(r.at), input.push_back(r.cause.input), on.push_back(r.cause.on);
+    since.push_back(runtime::inputSinceText(fmt::format("{:.3f}", static_cast<double>(r.at) / 1e6), r.cause));
+  }
+  return {{"at", at}, {"input", input}, {"on", on}, {"since", since}};
+}
+
 Json sensorEdgeModel(const runtime::RunLog& rec) {
   Json at = Json::array(), sensor = Json::array(), on = Json::array();
   for (const runtime::DeviceRecord& r : rec.devices) {
@@ -212,6 +225,7 @@ Json runModel(const runtime::RunLog& rec, const workcell::Workcell& cell, const 
   run["outputs"] = {{"step", outStep}, {"mask", outMask}};
   run["cameras"] = {{"step", camStep}, {"view", camView}, {"window", camWindow}};
   run["inputs"] = {{"at", inAt}, {"mask", inMask}};
+  if (!rec.inputChanges.empty()) run["inputCauses"] = inputCauseModel(rec);  // only with changes: other pages keep their bytes
   run["grasps"] = graspModel(rec, cell);
   if (!cell.devices.empty()) {  // only with devices: other pages keep their bytes
     run["motions"] = motionModel(rec, cell);

@@ -276,6 +276,20 @@ const std::string_view kScript = R"JS('use strict';
       el(side).append(d); lamps[side].push(d);
     }
   }
+  // What set each input last (run.inputCauses, in change order): a lamp's
+  // title says it, in the debugger's words ("input 1 ON since 1.100 s:
+  // wire from sensor eye").
+  const causes = run.inputCauses, causeAt = [], causeOf = [], shownCause = [];
+  for (let i = 0; i < run.lines; i++) causeAt.push([]), causeOf.push([]), shownCause.push(-1);
+  if (causes) causes.input.forEach((n, c) => { causeAt[n - 1].push(causes.at[c]); causeOf[n - 1].push(c); });
+  function showCauses(t) {
+    lamps.inputs.forEach((d, i) => {
+      const j = lastUpTo(causeAt[i], t), c = j < 0 ? -1 : causeOf[i][j];
+      if (c === shownCause[i]) return;
+      shownCause[i] = c;
+      d.title = 'input ' + (i + 1) + (c < 0 ? '' : ' ' + (causes.on[c] ? 'ON' : 'OFF') + ' ' + causes.since[c]);
+    });
+  }
   const timeline = el('timeline'), timeText = el('time'), status = el('status'), playButton = el('play');
   timeline.max = String(Math.max(run.end, 1));
   let shownLine = -1, shownIn = -1, shownOut = -1;
@@ -332,6 +346,7 @@ const std::string_view kScript = R"JS('use strict';
       const span = c.m.max - c.m.min;
       c.mark.style.left = (span > 0 ? (100 * (v - c.m.min)) / span : 50) + '%';
     });
+    if (causes) showCauses(S.t);
     if (current.inputs !== shownIn) {
       lamps.inputs.forEach((d, i) => d.classList.toggle('on', !!(current.inputs & (1 << i))));
       shownIn = current.inputs;

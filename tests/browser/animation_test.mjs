@@ -320,6 +320,19 @@ try {
         !devicesStills[0].still.lines.some((l) => l.owner === 'sensor'),
         'render --at draws the beam while it is broken (1.2 s), not before (0.5 s)');
   await compare(devicesStills);
+  // The input lamp's title says what set it last, in the debugger's words
+  // (the text trace: input 1 ON at 1.100 s and OFF at 1.485 s, both by the
+  // wire from sensor eye); before the first change it names the input only.
+  const inputTitle = async (t) => {
+    await page.evaluate((us) => window.robotsim.setTime(us), t * 1e6);
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    return page.evaluate(() => document.querySelector('#inputs .lamp').title);
+  };
+  for (const [t, want] of [[1.2, 'input 1 ON since 1.100 s: wire from sensor eye'],
+                           [2, 'input 1 OFF since 1.485 s: wire from sensor eye'], [0.5, 'input 1']]) {
+    const title = await inputTitle(t);
+    check(title === want, `at ${t} s the input lamp's title says what set it`, JSON.stringify(title));
+  }
 
   // ---- the carried block moves with the gripper; the other block does not
   await page.goto('file://' + gantryHtml);

@@ -10,9 +10,8 @@
 // counts a second); left meanwhile waits at line 10 for its input 1.
 #include <catch2/catch.hpp>
 
-#include <sstream>
-
 #include "tests/debug/cell_debug_util.h"
+#include "tests/debug/dap_test_util.h"
 #include "tests/debug/debug_test_util.h"
 #include "tools/dap/serve.h"
 #include "tools/wire/framing.h"
@@ -24,23 +23,7 @@ using rs::wire::Json;
 
 const std::string kTwo = debugtest::kExamples + "two_robots/";
 
-std::vector<Json> serveRequests(const std::vector<Json>& requests) {
-  std::string bytes;
-  int seq = 1;
-  for (Json r : requests) {
-    r["seq"] = seq++;
-    r["type"] = "request";
-    bytes += rs::wire::frameMessage(r.dump());
-  }
-  std::istringstream in(bytes);
-  std::ostringstream out, log;
-  rs::wire::StreamInput input(in);
-  rs::wire::StreamOutput output(out);
-  rs::dap::serve(input, output, log);
-  std::vector<Json> messages;
-  for (const rs::wire::Frame& f : rs::wire::parseFrames(out.str())) messages.push_back(Json::parse(f.body));
-  return messages;
-}
+std::vector<Json> serveRequests(const std::vector<Json>& requests) { return debugtest::dapSession(requests); }
 
 // The response to request number `seq`, and the events after it up to the next response.
 const Json& responseTo(const std::vector<Json>& m, int seq) {

@@ -62,4 +62,17 @@ class ScopedRobotsimPath {
   std::optional<std::string> old_;
 };
 
+/// The workcell of a whole `.rsd` text (its own OBJECT descriptions and the
+/// WORKCELL block), read as `robotsim` reads one from a directory of the
+/// library search path; fails the test, with the diagnostics, if it does not compile.
+inline rs::workcell::Workcell workcellFromText(const std::string& text) {
+  TempDir dir;
+  dir.write("c.rsd", text);
+  rs::compiler::Library lib(rs::compiler::librarySearchPath({dir.path().string()}));
+  const auto cell = lib.workcell(dir.file("c.rsd"));
+  for (const auto& d : lib.diagnostics()) INFO(d.message);
+  REQUIRE(cell);
+  return *cell;
+}
+
 }  // namespace rs::testing

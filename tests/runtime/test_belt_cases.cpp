@@ -12,7 +12,7 @@
 #include <string>
 
 #include "../render/render_test_util.h"
-#include "compiler/description/library.h"
+#include "tests/models/models_support.h"
 #include "runtime/run/placing.h"
 #include "runtime/run/run.h"
 #include "runtime/run/trace.h"
@@ -42,14 +42,8 @@ const std::string kDescriptions =
 
 // A cell of `lines`; one without a robot gets one out of the way, to run the program.
 rs::workcell::Workcell cellOf(const std::string& lines) {
-  rs::testing::TempDir dir;
   const std::string robot = lines.find("ROBOT") == std::string::npos ? "  ROBOT adept-one AT 0 0 -900\n" : "";
-  dir.write("c.rsd", kDescriptions + "WORKCELL c\n" + robot + lines + "END\n");
-  rs::compiler::Library lib(rs::compiler::librarySearchPath({dir.path().string()}));
-  const auto c = lib.workcell(dir.file("c.rsd"));
-  for (const auto& d : lib.diagnostics()) INFO(d.message);
-  REQUIRE(c);
-  return *c;
+  return rs::testing::workcellFromText(kDescriptions + "WORKCELL c\n" + robot + lines + "END\n");
 }
 
 struct Ran {

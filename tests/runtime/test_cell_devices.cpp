@@ -13,7 +13,7 @@
 
 #include "../render/render_test_util.h"
 #include "tests/runtime/belt_and_part.h"
-#include "compiler/description/library.h"
+#include "tests/models/models_support.h"
 #include "launch/run_request.h"
 #include "runtime/run/run.h"
 #include "runtime/run/trace.h"
@@ -24,21 +24,15 @@ namespace celldevicestest {
 const std::string kObjects = celltest::kBeltAndPart;
 
 rs::workcell::Workcell cellOf(const std::string& devices) {
-  rs::testing::TempDir dir;
   // The belt's AT corner (least x, least y, greatest z) at (0, 0, 50)
   // leaves it where it is drawn; the part's, (0, 0, 10), at (17, 10, 30)
   // puts its box at x 17..27, y 10..20 (on the belt), z 20..30.
-  dir.write("c.rsd", kObjects +
-                         "WORKCELL c\n"
-                         "  ROBOT adept-one AT 0 0 -900\n"
-                         "  OBJECT belt AT 0 0 50 AS line\n"
-                         "  OBJECT blk AT 17 10 30\n" +
-                         devices + "END\n");
-  rs::compiler::Library lib(rs::compiler::librarySearchPath({dir.path().string()}));
-  const auto c = lib.workcell(dir.file("c.rsd"));
-  for (const auto& d : lib.diagnostics()) INFO(d.message);
-  REQUIRE(c);
-  return *c;
+  return rs::testing::workcellFromText(kObjects +
+                                       "WORKCELL c\n"
+                                       "  ROBOT adept-one AT 0 0 -900\n"
+                                       "  OBJECT belt AT 0 0 50 AS line\n"
+                                       "  OBJECT blk AT 17 10 30\n" +
+                                       devices + "END\n");
 }
 
 struct Ran {

@@ -12,6 +12,8 @@
 
 #include "../render/render_test_util.h"
 #include "compiler/description/library.h"
+#include "tests/models/models_support.h"
+#include "tests/teach/carry_cell.h"
 #include "launch/program.h"
 #include "tests/cli/cli_support.h"
 #include "tools/teach/commands.h"
@@ -103,22 +105,10 @@ TEST_CASE("pendant: runCell refuses a bad duration", "[teach][devices]") {
 
 TEST_CASE("pendant: jogging a held block through a beam turns the input it is wired to on, then off",
           "[teach][devices]") {
-  // The library's gantry (Cartesian, 0.1 mm per count, the tool centre
-  // point at (500 + X/10, 200 - Y/10, 400 + Z/10)) over a block centred at
-  // (220, 50, 680); a beam across x = 400 at y = 200, wired to input 1.
+  // The gantry over a block, a beam at x = 400 wired to input 1 (tests/teach/carry_cell.h).
   rs::testing::TempDir dir;
-  dir.write("c.rsd",
-            "WORKCELL carry\n"
-            "  ROBOT gantry    AT 0 1000 0\n"
-            "  OBJECT pallet   AT 150 0 760\n"
-            "  OBJECT block    AT 200 30 700\n"
-            "  SENSOR eye BEAM 400 200 600  400 200 760\n"
-            "  WIRE eye TO IN 1\n"
-            "END\n");
-  rs::compiler::Library lib(rs::compiler::librarySearchPath({dir.path().string()}));
-  const auto built = lib.workcell(dir.file("c.rsd"));
-  REQUIRE(built);
-  const auto cell = std::make_shared<const rs::workcell::Workcell>(*built);
+  const rs::workcell::Workcell built = rs::testing::workcellFromText(teachtest::kCarryCell);
+  const auto cell = std::make_shared<const rs::workcell::Workcell>(built);
   const std::string path = dir.write("p.rsp", "        END\n");
   rs::diag::Result<rs::teach::ProgramFile> file = rs::teach::ProgramFile::load(path);
   REQUIRE(file);

@@ -19,7 +19,8 @@
 #include <string>
 
 #include "../render/render_test_util.h"
-#include "compiler/description/library.h"
+#include "tests/models/models_support.h"
+#include "tests/teach/carry_cell.h"
 #include "launch/program.h"
 #include "tests/cli/cli_support.h"
 #include "tools/teach/pendant.h"
@@ -89,19 +90,8 @@ TEST_CASE("tui: a block jogged through a beam turns the input row on, then off",
   // beam across x = 400 at y = 200 wired to input 1. Held 149 up (y
   // 179..219), the block's x is 200..240 at X -2800; the jog keys move X
   // by 100 counts, 10 mm.
-  rs::testing::TempDir dir;
-  dir.write("c.rsd",
-            "WORKCELL carry\n"
-            "  ROBOT gantry    AT 0 1000 0\n"
-            "  OBJECT pallet   AT 150 0 760\n"
-            "  OBJECT block    AT 200 30 700\n"
-            "  SENSOR eye BEAM 400 200 600  400 200 760\n"
-            "  WIRE eye TO IN 1\n"
-            "END\n");
-  rs::compiler::Library lib(rs::compiler::librarySearchPath({dir.path().string()}));
-  const auto built = lib.workcell(dir.file("c.rsd"));
-  REQUIRE(built);
-  TuiOnCell f(*built);
+  const rs::workcell::Workcell built = rs::testing::workcellFromText(teachtest::kCarryCell);
+  TuiOnCell f(built);
   rs::teach::Pendant& p = *f.pendant;
   const std::int32_t over[] = {-2800, 2800, 0, 0};
   REQUIRE(p.moveTo(over).ok);
