@@ -29,6 +29,9 @@ struct InputChange {
   /// the label stands on its line (1-based; 0: not from a file).
   std::string robot = {};
   std::uint32_t robotColumn = 0;
+  /// Made by the debugger's `set input` (the cell debugger replays the run
+  /// with it among the stimuli): its cause is "set by the debugger".
+  bool bySession = false;
   bool operator==(const InputChange&) const = default;
 };
 

@@ -109,6 +109,7 @@ void InputSchedule::applyUntil(vm::Micros t, vm::IoMask& inputs, OnChange&& onCh
     InputCause cause;
     if (timedDue && (!reactiveDue || timed->at <= reactive_.begin()->at)) {
       at = timed->at, after = withLine(inputs, timed->input, timed->on);
+      cause.kind = timed->bySession ? InputCause::Kind::Set : InputCause::Kind::Stimulus;
       cause.input = timed->input, cause.on = timed->on, cause.line = timed->line;
       ++nextTimed_;
     } else {

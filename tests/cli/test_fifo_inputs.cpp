@@ -27,6 +27,7 @@
 #include "tests/support/piped_process.h"
 #include "tools/wire/framing.h"
 #include "tools/wire/json.h"
+#include "tests/support/build_facts.h"
 
 extern char** environ;
 
@@ -37,7 +38,7 @@ using rs::testing::TempDir;
 
 constexpr const char* kFifoReason = "is a FIFO (a named pipe), not a regular file";
 
-// ROBOTSIM_BINARY with `args`, standard input /dev/null, both outputs in
+// this build's robotsim with `args`, standard input /dev/null, both outputs in
 // `dir`; killed after `seconds` (code -1 then).
 CliResult runWithDeadline(const TempDir& dir, std::vector<std::string> args, double seconds = 20) {
   const std::string out = dir.file("fifo.out"), err = dir.file("fifo.err");
@@ -46,7 +47,7 @@ CliResult runWithDeadline(const TempDir& dir, std::vector<std::string> args, dou
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  args.insert(args.begin(), ROBOTSIM_BINARY);
+  args.insert(args.begin(), rs::testing::robotsimBinary());
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

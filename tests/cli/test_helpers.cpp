@@ -19,6 +19,7 @@
 #include "tools/cli/lib/commands.h"
 #include "tools/cli/lib/helper_handshake.h"
 #include "tools/cli/lib/helpers.h"
+#include "tests/support/build_facts.h"
 
 namespace {
 
@@ -45,7 +46,7 @@ CliResult runProcess(const TempDir& dir, const std::string& program, const std::
   return r;
 }
 
-const fs::path kHelpersMainBinary = ROBOTSIM_BINARY;
+const fs::path kHelpersMainBinary = rs::testing::robotsimBinary();
 const fs::path kHelpersRender = kHelpersMainBinary.parent_path() / "libexec" / "robotsim" / "robotsim-render";
 
 }  // namespace
@@ -58,7 +59,7 @@ TEST_CASE("the main binary links none of the libraries only the helpers use", "[
   REQUIRE(helper.code == 0);
   INFO("ldd robotsim:\n" << main.out);
   // ROBOTSIM_STATIC (the default outside the sanitizer build): static-pie.
-  CHECK((main.out.find("statically linked") != std::string::npos) == bool(ROBOTSIM_STATIC_COMMAND));
+  CHECK((main.out.find("statically linked") != std::string::npos) == rs::testing::staticCommand());
   for (const char* library : {"libcairo", "libssl", "libncurses", "libedit.", "libbrotli", "libcpp-httplib", "libX11"}) {
     CAPTURE(library);
     CHECK(main.out.find(library) == std::string::npos);

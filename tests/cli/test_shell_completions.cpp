@@ -24,6 +24,7 @@
 #include "tools/cli/lib/fish_completion.h"
 #include "tools/cli/lib/man_page.h"
 #include "tools/cli/lib/zsh_completion.h"
+#include "tests/support/build_facts.h"
 
 namespace {
 
@@ -113,7 +114,7 @@ struct CompletionBench {
     dir.write("scripts/robotsim.bash", rs::cli::bashCompletion(commandLine));
     dir.write("scripts/_robotsim", rs::cli::zshCompletion(commandLine));
     dir.write("scripts/robotsim.fish", rs::cli::fishCompletion(commandLine));
-    const std::string bin = std::filesystem::path(ROBOTSIM_BINARY).parent_path().string();
+    const std::string bin = std::filesystem::path(rs::testing::robotsimBinary()).parent_path().string();
     env = "cd '" + empty + "' && env -u ROBOTSIM_PATH PATH='" + bin + "':\"$PATH\" ";
   }
   // bash: the function `complete -p robotsim` names, called with COMP_WORDS
@@ -259,7 +260,7 @@ TEST_CASE("fish completes robotsim from robotsim.fish", "[cli][completion]") {
 }
 
 TEST_CASE("the build wrote the man pages and completions of this command table", "[cli][completion][man]") {
-  const std::string docs = ROBOTSIM_GENERATED_DOCS;
+  const std::string docs = rs::testing::generatedDocs();
   const CommandLine commandLine;
   CHECK(rs::testing::readBytes(docs + "/robotsim.bash") == rs::cli::bashCompletion(commandLine));
   CHECK(rs::testing::readBytes(docs + "/_robotsim") == rs::cli::zshCompletion(commandLine));

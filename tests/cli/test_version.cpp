@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.h"
+#include "tests/support/build_facts.h"
 
 namespace {
 
@@ -39,7 +40,7 @@ std::string versionOfProject() {
 
 // The build type the tree running this test was configured with.
 std::string buildTypeOfThisBuild() {
-  const fs::path cache = fs::path(ROBOTSIM_BINARY).parent_path() / "CMakeCache.txt";
+  const fs::path cache = fs::path(rs::testing::robotsimBinary()).parent_path() / "CMakeCache.txt";
   const std::string text = versionFileText(cache);
   std::smatch m;
   REQUIRE(std::regex_search(text, m, std::regex(R"(CMAKE_BUILD_TYPE:[A-Z]+=([A-Za-z]*))")));
@@ -131,11 +132,11 @@ TEST_CASE("robotsim --version prints the library's path and the places looked in
   fs::create_directories(prefix / "bin");
   fs::create_directories(prefix / "share" / "robotsim" / "stdlib");  // an empty library is still one
   const fs::path found = prefix / "bin" / "robotsim";
-  fs::copy_file(ROBOTSIM_BINARY, found);
+  fs::copy_file(rs::testing::robotsimBinary(), found);
   // The same escape in a folder with no library near it: "not found (looked in ...)".
   fs::create_directories(prefix / "alone" / "x");
   const fs::path alone = prefix / "alone" / "x" / "robotsim";
-  fs::copy_file(ROBOTSIM_BINARY, alone);
+  fs::copy_file(rs::testing::robotsimBinary(), alone);
   const std::string shown = (dir.path() / "x\\x1b[2Jy\\x07z").string();
   for (const fs::path& exe : {found, alone}) {
     for (const char* format : {"text", "json"}) {

@@ -23,6 +23,7 @@
 
 #include "tests/cli/cli_support.h"
 #include "tests/debug/debug_test_util.h"
+#include "tests/support/build_facts.h"
 
 namespace {
 
@@ -100,7 +101,7 @@ TEST_CASE("the worked session's example: robotsim test fails the buggy copy and 
 TEST_CASE("robotsim debug reads its commands from standard input when it is not a terminal", "[debug][transcript]") {
   const rs::testing::TempDir dir;
   const std::string out = dir.file("out.txt");
-  const std::string command = "printf 'break grip\\ncontinue\\nprint GRIPS\\n' | '" + std::string(ROBOTSIM_BINARY) +
+  const std::string command = "printf 'break grip\\ncontinue\\nprint GRIPS\\n' | '" + std::string(rs::testing::robotsimBinary()) +
                               "' debug '" + debugtest::kExamples + "nested_subroutines.rsp' > '" + out + "' 2>&1";
   REQUIRE(std::system(command.c_str()) == 0);  // the end of input ends the session: exit 0
   const std::string text = rs::testing::readBytes(out);

@@ -242,14 +242,14 @@ TEST_CASE("dap cell: device function breakpoints, data breakpoints and the Devic
   CHECK(devices.at("variablesReference") == 2005);
   CHECK(responseTo(m, 15).at("body").at("result") == "1 conveyor, 2 block");
   CHECK(responseTo(m, 15).at("body").at("variablesReference") == 0);
-  // setVariable: an input as the terminal's set input (a stimulus now); left's input 2 is the beam's wire: refused.
+  // setVariable: an input as the terminal's set input (set by the debugger, from now on); left's input 2 is the beam's wire: refused.
   CHECK(responseTo(m, 16).at("success") == false);
   CHECK(responseTo(m, 16).at("message").get<std::string>().find("is wired") != std::string::npos);
   CHECK(responseTo(m, 17).at("body").at("value") == "on");
   CHECK(responseTo(m, 18).at("success") == false);
   // At the cell's present instant, the beam's stop at 2 s (the run stands there), with its cause: the
   // cell's set input is a stimulus of no file.
-  CHECK(valueOf(responseTo(m, 19), "in 5") == "on (since 2.000 s: stimulus)");
+  CHECK(valueOf(responseTo(m, 19), "in 5") == "on (since 2.000 s: set by the debugger)");
 }
 
 // The collision and warning filters on a cell of several robots: the

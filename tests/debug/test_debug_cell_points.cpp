@@ -98,15 +98,16 @@ TEST_CASE("debug cell: finish and reverse-next of the current robot", "[debug][c
 
 // left waits for its input 3, which nothing drives; right's DELAY 2 ends
 // the run at 2 s (without the set, a deadlock then). `set input 3 on` at
-// 1 s (after until 1) is a stimulus at 1 s: left's WAITFOR ends there, and
-// going back to the start and on again replays it. Input 1 of the
+// 1 s (after until 1) is replayed as a stimulus at 1 s whose cause is
+// "set by the debugger": left's WAITFOR ends there, and going back to the
+// start and on again replays it. Input 1 of the
 // interlock's left is wired: refused.
 TEST_CASE("debug cell: set input is a stimulus at the present moment, replayed going back", "[debug][cell-debug]") {
   rs::testing::TempDir dir;
   const std::string cell = debugtest::writeTwoRobotCell(dir, "        WAITFOR 3 ON\n        SET N 1\n        END\n",
                                                        "        DELAY 2\n        END\n", "  WIRE right.OUT 1 TO left.IN 1\n");
   const auto r = debugtest::runCellDebugger(cell, "set input 9 on\nset N = 3\nset input 1 on\nuntil 1\nset input 3 on\n"
-                                                  "step\nbreak 2\nreverse-step\ncontinue\ncontinue\nset input 3 off\n");
+                                                  "step\nprint in 3\nbreak 2\nreverse-step\ncontinue\ncontinue\nset input 3 off\n");
   INFO(r.out << r.err);
   CHECK(r.code == 0);
   CHECK(afterCommand(r.out, "set input 9 on") == "error: '9': inputs are 1..8\n");
@@ -115,6 +116,8 @@ TEST_CASE("debug cell: set input is a stimulus at the present moment, replayed g
                                                    "turns it; to set it by hand, remove the WIRE\n");
   CHECK(afterCommand(r.out, "set input 3 on") == "input 3 of left is on from 1.000 s on\n");
   CHECK(afterCommand(r.out, "step") == "left: line 2 @2, step 1, clock 1.000 s\n    2 |         SET N 1\n");
+  // The debugger's own change, not a stimulus (as the one-robot debugger says it).
+  CHECK(afterCommand(r.out, "print in 3") == "in 3 = 1 (since 1.000 s: set by the debugger)\n");
   CHECK(afterCommand(r.out, "reverse-step").starts_with("at the start of the run\n"));
   CHECK(afterCommand(r.out, "continue") == "breakpoint 1 (l.rsp line 2)\nleft: line 2 @2, step 1, clock 1.000 s\n"
                                            "    2 |         SET N 1\n");

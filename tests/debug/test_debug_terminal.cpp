@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "tests/debug/debug_test_util.h"
+#include "tests/support/build_facts.h"
 
 namespace {
 
@@ -33,7 +34,7 @@ class Terminal {
     if (pid_ == 0) {
       setenv("TERM", "xterm", 1);
       setenv("HOME", "/nonexistent", 1);  // no ~/.editrc
-      const std::string binary = ROBOTSIM_BINARY;
+      const std::string binary = rs::testing::robotsimBinary();
       args.insert(args.begin(), {binary, "debug"});
       std::vector<char*> argv;
       for (std::string& a : args) argv.push_back(a.data());

@@ -26,6 +26,7 @@
 #include "tests/support/measured_process.h"
 #include "runtime/run/run.h"
 #include "runtime/run/run_log.h"
+#include "tests/support/build_facts.h"
 
 extern char** environ;
 
@@ -75,7 +76,7 @@ struct Child : rstest::Measured {
   std::string out;
 };
 
-// ROBOTSIM_BINARY with `args`, its standard output kept (tests/support/measured_process.h).
+// this build's robotsim with `args`, its standard output kept (tests/support/measured_process.h).
 Child spawnMeasured(std::vector<std::string> args, const rs::testing::TempDir& dir) {
   const std::string out = (dir.path() / "stdout.txt").string();
   Child c{rstest::runMeasured(std::move(args), out, 3), {}};

@@ -1,4 +1,4 @@
-// A robotsim process whose peak memory a test bounds: ROBOTSIM_BINARY run
+// A robotsim process whose peak memory a test bounds: this build's robotsim run
 // with its output to a file, its high-water mark followed until it ends.
 #pragma once
 
@@ -17,6 +17,7 @@
 #include <string>
 #include <thread>
 #include <vector>
+#include "tests/support/build_facts.h"
 
 extern char** environ;
 
@@ -38,7 +39,7 @@ struct Measured {
   long rusageKiB = 0;  // wait4's ru_maxrss: the larger of its peak and the spawner's at the spawn
 };
 
-/// Runs ROBOTSIM_BINARY with `args` (standard output to `out`, standard
+/// Runs this build's robotsim with `args` (standard output to `out`, standard
 /// error to /dev/null) and follows its peak memory until it ends: the last
 /// reading is its peak but for what it took in its last few milliseconds.
 /// Killed, and the test failed, after `minutes`.
@@ -47,7 +48,7 @@ inline Measured runMeasured(std::vector<std::string> args, const std::string& ou
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  args.insert(args.begin(), ROBOTSIM_BINARY);
+  args.insert(args.begin(), rs::testing::robotsimBinary());
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

@@ -15,6 +15,7 @@
 #include <string>
 #include <thread>
 #include <vector>
+#include "tests/support/build_facts.h"
 
 extern char** environ;
 
@@ -26,7 +27,7 @@ struct PipedProcess {
   int out = -1;  // its standard output, ours to read
 };
 
-/// ROBOTSIM_BINARY with `args` after it.
+/// this build's robotsim with `args` after it.
 inline PipedProcess spawnRobotsim(std::vector<std::string> args) {
   int toChild[2], fromChild[2];
   REQUIRE(pipe(toChild) == 0);
@@ -38,7 +39,7 @@ inline PipedProcess spawnRobotsim(std::vector<std::string> args) {
   posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addclose(&actions, toChild[1]);
   posix_spawn_file_actions_addclose(&actions, fromChild[0]);
-  args.insert(args.begin(), ROBOTSIM_BINARY);
+  args.insert(args.begin(), rs::testing::robotsimBinary());
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

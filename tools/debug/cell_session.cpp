@@ -488,6 +488,7 @@ std::optional<std::string> CellSession::setInput(std::size_t robot, int input, b
   change.input = input;
   change.on = on;
   change.robot = label(robot);
+  change.bySession = true;
   spec_.stimuli.changes.push_back(std::move(change));
   // The same present again (the same steps done, the moment shown), with the change ahead of it.
   const std::optional<vm::Micros> moment = at_;
