@@ -112,6 +112,28 @@ TEST_CASE("dap session: malformed messages and requests in the wrong order get e
   checkSession("errors");
 }
 
+TEST_CASE("dap: a missing or mistyped argument is named without the JSON library's own codes", "[debug][dap]") {
+  const std::string program = kDapDir + "../programs/wait_forever.rsp";
+  std::string bytes;
+  for (const std::string& body :
+       {std::string(R"({"seq":1,"type":"request","command":"initialize","arguments":{}})"),
+        R"({"seq":2,"type":"request","command":"launch","arguments":{"program":")" + program + R"("}})",
+        std::string(R"({"seq":3,"type":"request","command":"setVariable","arguments":{"variablesReference":1,"name":"X"}})"),
+        std::string(R"({"seq":4,"type":"request","command":"setVariable","arguments":{"variablesReference":"x","name":"X","value":"1"}})"),
+        std::string(R"({"seq":5,"type":"request","command":"disconnect","arguments":{}})")})
+    bytes += rs::wire::frameMessage(body);
+  const Served s = serveBytes(bytes);
+  std::map<int, Json> responses;
+  for (const Json& m : s.messages)
+    if (m.value("type", "") == "response") responses[m.at("request_seq").get<int>()] = m;
+  REQUIRE(responses.count(3) == 1);
+  REQUIRE(responses.count(4) == 1);
+  CHECK(responses[3].at("message") == "bad arguments for setVariable: key 'value' not found");
+  CHECK(responses[4].at("message") == "bad arguments for setVariable: type must be number, but is string");
+  REQUIRE(responses.count(5) == 1);
+  CHECK(responses[5].at("success") == true);
+}
+
 TEST_CASE("dap: a launch argument of the wrong type is named in the error, and the adapter goes on", "[debug][dap]") {
   const std::string program = kDapDir + "../programs/wait_forever.rsp";
   std::string bytes;

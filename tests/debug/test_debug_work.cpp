@@ -141,7 +141,7 @@ TEST_CASE("dap: pause on a loop of MOVES is answered after a slice of W knots, n
   CHECK(steps <= 2 * (2 * rs::debug::kDefaultSnapshotKnots / loop.longest + 2) + 2);
 }
 
-TEST_CASE("dap: pause and disconnect are answered after the 65,536-knot line under way", "[debug][dap][straight]") {
+TEST_CASE("dap: pause and disconnect are answered after the 65,536-knot line under way", "[debug][dap][straight][slow]") {
   const rs::testing::TempDir dir;
   dir.write("big.rsd", std::string(rs::bench::kBigGantry));
   const std::string program = dir.write(

@@ -67,7 +67,7 @@ Eigen::Isometry3d fk(const ChainModel& chain, ChainData& data, const std::vector
 
 }  // namespace
 
-TEST_CASE("inverse kinematics of every library arm meets the pose it was given", "[kinematics][ik]") {
+TEST_CASE("inverse kinematics of every library arm meets the pose it was given", "[kinematics][ik][slow]") {
   const int count = samples();
   const auto files = libraryRobots();
   REQUIRE(files.size() >= 6);

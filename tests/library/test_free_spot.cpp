@@ -128,7 +128,7 @@ std::optional<FreeSpot> findFreeSpot(const Workcell& cell) {
 
 }  // namespace
 
-TEST_CASE("Every library workcell has a free spot its robot can reach and put a block down on", "[library][free-spot]") {
+TEST_CASE("Every library workcell has a free spot its robot can reach and put a block down on", "[library][free-spot][slow]") {
   const std::vector<std::string> names = freeSpotCellNames();
   REQUIRE(names.size() >= 8);
   for (const std::string& name : names) {

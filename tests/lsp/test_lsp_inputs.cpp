@@ -171,3 +171,33 @@ TEST_CASE("lsp: input-never-on follows the wire: OFF and ON INVERTED are never O
   REQUIRE(left.size() == 2);
   CHECK(left[0]["range"]["start"]["line"] == 2);
 }
+
+// A polling loop is a WAITFOR written out: its one way out is a JMPIN n ON,
+// and when nothing turns input n on it can never end. The loop on input 1
+// (adept-cell's sensor wire) can; the one on input 3 cannot. A JMPIN that
+// only skips ahead (line 7) is no loop, whatever its input.
+TEST_CASE("lsp: input-never-on covers a polling loop whose one way out is a JMPIN", "[lsp][inputs]") {
+  const std::string text =
+      "; cell: adept-cell\n"      // 0
+      "poll:   DELAY 0.1\n"       // 1
+      "        JMPIN 1 ON next\n" // 2
+      "        GOTO poll\n"       // 3
+      "next:   JMPIN 3 ON done\n" // 4
+      "        GOTO next\n"       // 5
+      "        JMPIN 6 ON done\n" // 6
+      "done:   END\n";            // 7
+  rs::testing::TempDir dir;
+  const std::string program = rs::lsp::uriOfPath(dir.write("poll.rsp", text));
+  LspSession s;
+  s.initialize();
+  s.open(program, text);
+  s.idle();
+  const std::vector<Json> warned = withCode(firstPublished(s, program), "input-never-on");
+  REQUIRE(warned.size() == 1);
+  CHECK(warned[0]["range"] == LspSession::range(4, 14, 4, 15));
+  CHECK(warned[0]["message"] ==
+        "input 3 has no wire in adept-cell (input 1 does), no stimulus and no rule: it is never ON, so the loop of "
+        "lines 5..6 can never end (its one way out is JMPIN 3 ON)\n"
+        "hint: wire a source to it in the cell (WIRE eye TO IN 3), or give it a stimulus "
+        "(\"at 1 input 3 on\" in the program's .stim file)");
+}

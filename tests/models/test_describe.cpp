@@ -194,7 +194,7 @@ TEST_CASE("describe: a gantry whose feet stand beside a pallet's runners is on t
   CHECK(j["objects"][1]["on"] == json({{"kind", "object"}, {"object", 1}, {"name", "pallet"}}));
 }
 
-TEST_CASE("describe: how far a gripper's fingers reach and how wide they open", "[models][describe][devices]") {
+TEST_CASE("describe: how far a gripper's fingers reach and how wide they open", "[models][describe][devices][slow]") {
   // abb-irb120.rsd by hand: the tool centre point at x = 454, a = +x; the
   // fingers' boxes run x 394..474 (20 past it) with inner faces at z = 24
   // and z = -24 (48 apart).
@@ -208,7 +208,7 @@ TEST_CASE("describe: how far a gripper's fingers reach and how wide they open", 
   CHECK(doc["robots"][0]["fingers"]["opening"].get<double>() == Approx(48));
 }
 
-TEST_CASE("describe: every library cell's gripper opens wider than the library's block", "[models][describe][devices]") {
+TEST_CASE("describe: every library cell's gripper opens wider than the library's block", "[models][describe][devices][slow]") {
   // block.rsd: a 40 cube. The five grippers widened for honest grasping
   // have their inner faces 24 either side of the tool axis by their files
   // (48 apart; the Adept One's 30, 60 apart, for a block turned any way);

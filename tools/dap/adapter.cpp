@@ -99,7 +99,7 @@ void Adapter::handle(const Json& request) {
   } catch (const Json::exception& e) {
     // nlohmann-json reports a missing or mistyped argument by exception: at
     // this edge it becomes the client's error, never the adapter's end.
-    reply = Error{fmt::format("bad arguments for {}: {}", command, e.what())};
+    reply = Error{fmt::format("bad arguments for {}: {}", command, wire::jsonProblem(e))};
     pending_ = nullptr;
   } catch (const BadArgument& e) {
     reply = Error{fmt::format("bad arguments for {}: {}", command, e.what())};

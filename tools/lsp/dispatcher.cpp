@@ -34,7 +34,7 @@ Reply Dispatcher::guarded(std::string_view method, const Json& params, const Req
     return RpcError{errc::kInvalidParams, fmt::format("invalid params for {}: {}", method, e.what())};
   } catch (const Json::exception& e) {
     // What a handler reads below the params reader: still the client's data.
-    return RpcError{errc::kInvalidParams, fmt::format("invalid params for {}: {}", method, e.what())};
+    return RpcError{errc::kInvalidParams, fmt::format("invalid params for {}: {}", method, wire::jsonProblem(e))};
   }
 }
 

@@ -159,10 +159,11 @@ std::string inputHover(const ProgramAnalysis& a, std::int64_t input) {
 
 namespace {
 
-// The warning on a WAITFOR n ON nothing turns on: the wire that holds the
-// input OFF, else that the cell wires other inputs but not this one, else
-// that nothing drives it at all.
-diag::Diagnostic unendingWait(const ProgramAnalysis& a, std::int64_t input, diag::Pos at) {
+// The warning on a wait for input n ON that nothing turns on (`ending`:
+// "WAITFOR 1 ON can never end", or a polling loop's words): the wire that
+// holds the input OFF, else that the cell wires other inputs but not this
+// one, else that nothing drives it at all.
+diag::Diagnostic unendingWait(const ProgramAnalysis& a, std::int64_t input, diag::Pos at, const std::string& ending) {
   const std::string& file = a.stimuli().file;
   const std::string stimulus = fmt::format("give it a stimulus (\"at 1 input {} on\" in the program's .stim file)", input);
   const auto warning = [&](std::string message, std::string hint) {
@@ -172,21 +173,43 @@ diag::Diagnostic unendingWait(const ProgramAnalysis& a, std::int64_t input, diag
   const std::string wireHint = fmt::format("wire a source to it in the cell (WIRE eye TO IN {}), or {}", input, stimulus);
   const workcell::Workcell* cell = a.cell().cell.get();
   if (const workcell::Wire* w = cell ? wireTo(*cell, input) : nullptr)
-    return warning(fmt::format("input {} is wired from {} (line {} of {}): it is never ON, so WAITFOR {} ON can never end",
-                               input, heldSource(*w), w->pos.line, cellName(a), input),
+    return warning(fmt::format("input {} is wired from {} (line {} of {}): it is never ON, so {}",
+                               input, heldSource(*w), w->pos.line, cellName(a), ending),
                    fmt::format("{}, or {}",
                                w->inverted ? fmt::format("drop INVERTED from the WIRE on line {}", w->pos.line)
                                            : fmt::format("wire a sensor or an output to it on line {} instead of OFF", w->pos.line),
                                stimulus));
   if (const std::string others = cell ? wiredInputs(*cell) : std::string(); !others.empty())
-    return warning(fmt::format("input {} has no wire in {} ({}), {}: it is never ON, so WAITFOR {} ON can never end", input,
+    return warning(fmt::format("input {} has no wire in {} ({}), {}: it is never ON, so {}", input,
                                cellName(a), others,
                                file.empty() ? std::string("no stimulus and no rule") : fmt::format("and {} never turns it on", file),
-                               input),
+                               ending),
                    wireHint);
   const std::string stim = file.empty() ? std::string("no stimuli file beside the program") : fmt::format("{} never turns it on", file);
-  return warning(fmt::format("WAITFOR {} ON can never end: nothing turns input {} on (no wire in the cell, {})", input, input, stim),
+  return warning(fmt::format("{}: nothing turns input {} on (no wire in the cell, {})", ending, input, stim),
                  wireHint);
+}
+
+// A polling loop whose one way out is `in` (an input jump that asks for
+// ON): the instruction after it jumps back, unconditionally, to it or to
+// a line before it, and every instruction from there to it falls through
+// and nothing else (no jump, call, return or end). The loop's first
+// instruction, or null when `in` is no such loop's exit.
+const IndexedInstruction* pollingLoopStart(const ProgramIndex& index, const IndexedInstruction& in) {
+  const IndexedInstruction* back = index.instructionNumbered(in.number + 1);
+  if (!back || !back->known || !vm::has(back->op, vm::kJumps) || vm::has(back->op, vm::kFallsThrough) ||
+      vm::has(back->op, vm::kBranches) || vm::has(back->op, vm::kCalls))
+    return nullptr;
+  const IndexedInstruction* start =
+      !back->targetLabel.empty() ? index.labelled(back->targetLabel) : index.instructionNumbered(back->targetNumber);
+  if (!start || start->number > in.number) return nullptr;
+  for (std::uint32_t n = start->number; n < in.number; ++n) {
+    const IndexedInstruction* body = index.instructionNumbered(n);
+    if (!body || !body->known || !vm::has(body->op, vm::kFallsThrough) || vm::has(body->op, vm::kJumps) ||
+        vm::has(body->op, vm::kCalls) || vm::has(body->op, vm::kReturns) || vm::has(body->op, vm::kEnds))
+      return nullptr;
+  }
+  return start;
 }
 
 }  // namespace
@@ -194,9 +217,19 @@ diag::Diagnostic unendingWait(const ProgramAnalysis& a, std::int64_t input, diag
 std::vector<diag::Diagnostic> unendingWaits(const ProgramAnalysis& a) {
   std::vector<diag::Diagnostic> out;
   for (const IndexedInstruction& in : a.index().instructions()) {
-    if (!in.known || !vm::has(in.op, vm::kWaits) || vm::info(in.op).format != vm::Format::Input || !in.inputOn || in.inputPos.line == 0) continue;
-    if (inputCanTurnOn(a, in.input)) continue;
-    out.push_back(unendingWait(a, in.input, in.inputPos));
+    if (!in.known || !in.inputOn || in.inputPos.line == 0 || in.input == 0) continue;
+    const vm::Format format = vm::info(in.op).format;
+    if (vm::has(in.op, vm::kWaits) && format == vm::Format::Input) {
+      if (!inputCanTurnOn(a, in.input))
+        out.push_back(unendingWait(a, in.input, in.inputPos, fmt::format("WAITFOR {} ON can never end", in.input)));
+    } else if (format == vm::Format::InputJump) {
+      const IndexedInstruction* start = pollingLoopStart(a.index(), in);
+      if (start && !inputCanTurnOn(a, in.input))
+        out.push_back(unendingWait(a, in.input, in.inputPos,
+                                   fmt::format("the loop of lines {}..{} can never end (its one way out is {} {} ON)",
+                                               start->pos.line, a.index().instructionNumbered(in.number + 1)->pos.line,
+                                               in.mnemonic, in.input)));
+    }
   }
   return out;
 }
