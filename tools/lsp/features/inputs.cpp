@@ -190,45 +190,50 @@ diag::Diagnostic unendingWait(const ProgramAnalysis& a, std::int64_t input, diag
                  wireHint);
 }
 
+// Whether an instruction only goes on to the next: no jump, call, return
+// or end (a polling loop's body is made of these).
+bool goesOn(const IndexedInstruction& in) {
+  return in.known && vm::has(in.op, vm::kFallsThrough) && !vm::has(in.op, vm::kJumps) && !vm::has(in.op, vm::kCalls) &&
+         !vm::has(in.op, vm::kReturns) && !vm::has(in.op, vm::kEnds);
+}
+
 // A polling loop whose one way out is `in` (an input jump that asks for
-// ON): the instruction after it jumps back, unconditionally, to it or to
-// a line before it, and every instruction from there to it falls through
-// and nothing else (no jump, call, return or end). The loop's first
-// instruction, or null when `in` is no such loop's exit.
-const IndexedInstruction* pollingLoopStart(const ProgramIndex& index, const IndexedInstruction& in) {
-  const IndexedInstruction* back = index.instructionNumbered(in.number + 1);
-  if (!back || !back->known || !vm::has(back->op, vm::kJumps) || vm::has(back->op, vm::kFallsThrough) ||
-      vm::has(back->op, vm::kBranches) || vm::has(back->op, vm::kCalls))
+// ON): the instruction after it (`back`) jumps back, unconditionally, to it
+// or to a line before it, and every instruction from there to it goes on
+// to the next. `lastStop[n]`: the number of the last instruction at or
+// before n that does not (0: none), so the check is one look whatever the
+// loop's length. The loop's first instruction, or null.
+const IndexedInstruction* pollingLoopStart(const ProgramIndex& index, const std::vector<std::uint32_t>& lastStop,
+                                           const IndexedInstruction& in, const IndexedInstruction& back) {
+  if (!back.known || !vm::has(back.op, vm::kJumps) || vm::has(back.op, vm::kFallsThrough) ||
+      vm::has(back.op, vm::kBranches) || vm::has(back.op, vm::kCalls))
     return nullptr;
   const IndexedInstruction* start =
-      !back->targetLabel.empty() ? index.labelled(back->targetLabel) : index.instructionNumbered(back->targetNumber);
+      !back.targetLabel.empty() ? index.labelled(back.targetLabel) : index.instructionNumbered(back.targetNumber);
   if (!start || start->number > in.number) return nullptr;
-  for (std::uint32_t n = start->number; n < in.number; ++n) {
-    const IndexedInstruction* body = index.instructionNumbered(n);
-    if (!body || !body->known || !vm::has(body->op, vm::kFallsThrough) || vm::has(body->op, vm::kJumps) ||
-        vm::has(body->op, vm::kCalls) || vm::has(body->op, vm::kReturns) || vm::has(body->op, vm::kEnds))
-      return nullptr;
-  }
-  return start;
+  return lastStop[in.number - 1] < start->number ? start : nullptr;
 }
 
 }  // namespace
 
 std::vector<diag::Diagnostic> unendingWaits(const ProgramAnalysis& a) {
   std::vector<diag::Diagnostic> out;
-  for (const IndexedInstruction& in : a.index().instructions()) {
+  const std::vector<IndexedInstruction>& all = a.index().instructions();
+  std::vector<std::uint32_t> lastStop(all.size() + 1, 0);  // built once: a loop's check is then one look
+  for (std::uint32_t n = 1; n <= all.size(); ++n) lastStop[n] = goesOn(all[n - 1]) ? lastStop[n - 1] : n;  // all[n - 1] is number n
+  for (const IndexedInstruction& in : all) {
     if (!in.known || !in.inputOn || in.inputPos.line == 0 || in.input == 0) continue;
     const vm::Format format = vm::info(in.op).format;
     if (vm::has(in.op, vm::kWaits) && format == vm::Format::Input) {
       if (!inputCanTurnOn(a, in.input))
         out.push_back(unendingWait(a, in.input, in.inputPos, fmt::format("WAITFOR {} ON can never end", in.input)));
     } else if (format == vm::Format::InputJump) {
-      const IndexedInstruction* start = pollingLoopStart(a.index(), in);
+      const IndexedInstruction* back = a.index().instructionNumbered(in.number + 1);
+      const IndexedInstruction* start = back ? pollingLoopStart(a.index(), lastStop, in, *back) : nullptr;
       if (start && !inputCanTurnOn(a, in.input))
         out.push_back(unendingWait(a, in.input, in.inputPos,
                                    fmt::format("the loop of lines {}..{} can never end (its one way out is {} {} ON)",
-                                               start->pos.line, a.index().instructionNumbered(in.number + 1)->pos.line,
-                                               in.mnemonic, in.input)));
+                                               start->pos.line, back->pos.line, in.mnemonic, in.input)));
     }
   }
   return out;
